@@ -1,0 +1,34 @@
+#pragma once
+// An output file that appears whole or not at all: written to a temporary name beside the
+// target and renamed over it on commit(). Destroyed without commit(), it leaves no trace, so
+// an error or an interrupted run never leaves a partial or truncated output.
+#include <fstream>
+#include <string>
+
+namespace granular {
+
+class AtomicFile {
+ public:
+  explicit AtomicFile(std::string path);
+  AtomicFile(const AtomicFile&) = delete;
+  AtomicFile& operator=(const AtomicFile&) = delete;
+  ~AtomicFile();
+
+  std::ostream& stream() { return out_; }
+  /// Flushes, fsyncs and renames onto the target; throws IoError on failure.
+  void commit();
+  const std::string& path() const { return path_; }
+
+ private:
+  std::string path_, temporary_;
+  std::ofstream out_;
+  bool committed_ = false;
+};
+
+/// Throws IoError unless `path`'s folder exists and is writable (checked before long work).
+void check_writable(const std::string& path);
+
+/// Writes `text` to `path` atomically.
+void write_file_atomically(const std::string& path, const std::string& text);
+
+}  // namespace granular

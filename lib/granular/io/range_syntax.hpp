@@ -1,0 +1,18 @@
+#pragma once
+// The command-line list syntax: "start:stop[:step]" (stop included) or "a,b,c".
+#include <string>
+#include <vector>
+
+namespace granular {
+
+/// Parses a list or range of finite numbers. Range values are rounded to 12 significant
+/// digits so that 0.1:1:0.1 gives 0.3, not 0.30000000000000004. `option` names the
+/// option in error messages (InvalidInput). A range without step uses `default_step`
+/// (an error when that is 0). At most `max_count` values.
+std::vector<double> parse_number_list(const std::string& text, const std::string& option, double default_step = 0,
+                                      std::size_t max_count = 1000000);
+
+/// Parses a comma list of positive integers (e.g. particle numbers).
+std::vector<long> parse_integer_list(const std::string& text, const std::string& option);
+
+}  // namespace granular

@@ -1,0 +1,41 @@
+#pragma once
+// Mean frequency and IPR of every mode over realizations, on a grid of (q, ξ) (SPEC §3;
+// the paper's IPR-map figure). Realization r of a cell uses the bead types of realization r
+// of the seed, so all ξ of one q share their configurations (common random numbers).
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "granular/ensemble/progress_meter.hpp"
+#include "granular/model/disorder.hpp"
+#include "granular/model/material.hpp"
+
+namespace granular {
+
+struct IprMapConfig {
+  Disorder disorder = Disorder::anderson;
+  std::vector<double> q_values{0.2, 0.5, 0.8};
+  std::vector<double> xi_values;      ///< size ratios R2/R1 in (0, 1]
+  std::size_t n = 100;                ///< beads per chain
+  double precompression = 10;         ///< F0 [N], > 0
+  std::size_t realizations = 100;
+  std::uint64_t seed = 1;
+  double r1 = 4.76e-3;                ///< type-1 radius [m]
+  Material material = steel;
+  int threads = 0;                    ///< 0 = every core
+  std::string solver = "lapack";      ///< see make_mode_ipr_solver
+};
+
+struct IprMapCell {
+  double q = 0, xi = 0;
+  std::vector<double> freq_khz;  ///< mean over realizations, mode k at index k-1
+  std::vector<double> ipr;       ///< mean over realizations
+};
+
+/// Throws InvalidInput on a bad config before any work starts.
+void validate(const IprMapConfig& config);
+
+/// One cell per (q, ξ), q-major. Bit-identical for any thread count.
+std::vector<IprMapCell> compute_ipr_map(const IprMapConfig& config, ProgressMeter* progress = nullptr);
+
+}  // namespace granular

@@ -1,0 +1,52 @@
+#pragma once
+// Full eigen-decomposition of a symmetric tridiagonal matrix through LAPACK.
+//
+// The matrix is scaled to unit largest entry before the call (raw SI dynamical matrices have
+// entries ~1e10 1/s², where dstemr is known to fail to converge), every `info` is checked, and
+// a failing driver falls back to the next one (stevr → stevd → steqr) instead of returning
+// garbage. Workspaces live in the solver, so a loop over realizations allocates nothing.
+#include <string_view>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "granular/linear/sym_tridiagonal.hpp"
+
+namespace granular {
+
+enum class LapackDriver {
+  stevr,  ///< MRRR (dstemr underneath), the fastest with vectors for mid-size n
+  stemr,  ///< MRRR called directly
+  stevd,  ///< divide and conquer
+  steqr,  ///< implicit QL/QR, the slow and sure one
+};
+std::string_view to_string(LapackDriver driver);
+LapackDriver parse_lapack_driver(std::string_view name);
+
+struct EigenDecomposition {
+  Eigen::VectorXd values;   ///< ascending
+  Eigen::MatrixXd vectors;  ///< orthonormal columns, empty unless asked for
+  LapackDriver driver = LapackDriver::stevr;  ///< the driver that succeeded
+  int fallbacks = 0;        ///< how many drivers failed before it
+};
+
+class LapackEigensolver {
+ public:
+  explicit LapackEigensolver(LapackDriver preferred = LapackDriver::stevr) : preferred_(preferred) {}
+
+  /// Eigenvalues (and eigenvectors) of `t`. Throws NumericalError if every driver fails.
+  void solve(const SymTridiagonal& t, bool want_vectors, EigenDecomposition& out);
+  EigenDecomposition solve(const SymTridiagonal& t, bool want_vectors) {
+    EigenDecomposition out;
+    solve(t, want_vectors, out);
+    return out;
+  }
+
+ private:
+  int run(LapackDriver driver, bool want_vectors, int n, EigenDecomposition& out);
+  LapackDriver preferred_;
+  std::vector<double> d_, e_, work_;
+  std::vector<int> iwork_, isuppz_;
+};
+
+}  // namespace granular

@@ -1,0 +1,24 @@
+#include "granular/linear/sym_tridiagonal.hpp"
+
+#include <cmath>
+
+namespace granular {
+
+void SymTridiagonal::multiply(const double* x, double* y) const {
+  const std::size_t n = size();
+  for (std::size_t i = 0; i < n; ++i) {
+    double s = diagonal[i] * x[i];
+    if (i > 0) s += off_diagonal[i - 1] * x[i - 1];
+    if (i + 1 < n) s += off_diagonal[i] * x[i + 1];
+    y[i] = s;
+  }
+}
+
+double SymTridiagonal::max_abs() const {
+  double m = 0;
+  for (double d : diagonal) m = std::fmax(m, std::fabs(d));
+  for (double e : off_diagonal) m = std::fmax(m, std::fabs(e));
+  return m;
+}
+
+}  // namespace granular

@@ -1,0 +1,73 @@
+#include "granular/model/configuration_file.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "granular/error.hpp"
+
+namespace granular {
+namespace {
+
+std::string read_text(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InvalidInput("cannot read file '" + path + "'");
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) throw InvalidInput("cannot read file '" + path + "'");
+  return text.str();
+}
+
+/// Calls `take(token, line_number)` for every value line, with comments and blanks stripped.
+template <class Take>
+void for_each_value(const std::string& text, const std::string& source, Take take) {
+  if (text.find('\0') != std::string::npos) throw InvalidInput(source + ": binary data, expected one value per line");
+  std::size_t line_number = 0, begin = 0;
+  while (begin <= text.size()) {
+    std::size_t end = text.find('\n', begin);
+    if (end == std::string::npos) end = text.size();
+    ++line_number;
+    std::string_view line(text.data() + begin, end - begin);
+    if (auto hash = line.find('#'); hash != std::string_view::npos) line = line.substr(0, hash);
+    while (!line.empty() && std::isspace(static_cast<unsigned char>(line.front()))) line.remove_prefix(1);
+    while (!line.empty() && std::isspace(static_cast<unsigned char>(line.back()))) line.remove_suffix(1);
+    if (!line.empty()) take(line, line_number);
+    begin = end + 1;
+  }
+}
+
+[[noreturn]] void bad_line(const std::string& source, std::size_t line, std::string_view token, const char* rule) {
+  throw InvalidInput(source + ":" + std::to_string(line) + ": '" + std::string(token.substr(0, 40)) + "' " + rule);
+}
+
+}  // namespace
+
+Configuration parse_configuration_text(const std::string& text, const std::string& source) {
+  Configuration types;
+  for_each_value(text, source, [&](std::string_view token, std::size_t line) {
+    if (token != "1" && token != "2") bad_line(source, line, token, "is not a bead type (1 or 2)");
+    types.push_back(token == "1" ? 1 : 2);
+  });
+  if (types.size() < 2) throw InvalidInput(source + ": needs at least 2 beads, found " + std::to_string(types.size()));
+  return types;
+}
+
+std::vector<double> parse_radii_text(const std::string& text, const std::string& source) {
+  std::vector<double> radii;
+  for_each_value(text, source, [&](std::string_view token, std::size_t line) {
+    double r = 0;
+    auto [end, ec] = std::from_chars(token.data(), token.data() + token.size(), r);
+    if (ec != std::errc() || end != token.data() + token.size()) bad_line(source, line, token, "is not a number");
+    if (!std::isfinite(r) || r <= 0) bad_line(source, line, token, "is not a radius (finite, > 0, metres)");
+    radii.push_back(r);
+  });
+  if (radii.size() < 2) throw InvalidInput(source + ": needs at least 2 beads, found " + std::to_string(radii.size()));
+  return radii;
+}
+
+Configuration read_configuration_file(const std::string& path) { return parse_configuration_text(read_text(path), path); }
+
+std::vector<double> read_radii_file(const std::string& path) { return parse_radii_text(read_text(path), path); }
+
+}  // namespace granular

@@ -1,0 +1,20 @@
+#pragma once
+// Chains loaded from text files: one value per line, '#' starts a comment, blank lines skipped.
+#include <string>
+#include <vector>
+
+#include "granular/model/disorder.hpp"
+
+namespace granular {
+
+/// One bead type (1 or 2) per line. Throws InvalidInput (file name and line) or IoError.
+Configuration read_configuration_file(const std::string& path);
+
+/// One radius in metres per line (finite, > 0). Throws InvalidInput or IoError.
+std::vector<double> read_radii_file(const std::string& path);
+
+/// The same parsers on text already in memory (what the fuzz targets drive).
+Configuration parse_configuration_text(const std::string& text, const std::string& source);
+std::vector<double> parse_radii_text(const std::string& text, const std::string& source);
+
+}  // namespace granular
