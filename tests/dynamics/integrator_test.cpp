@@ -44,6 +44,8 @@ struct OrderCase {
   double first_tau;  // largest τ of four
 };
 
+void PrintTo(const OrderCase& c, std::ostream* os) { *os << c.scheme.name; }
+
 class Order : public ::testing::TestWithParam<OrderCase> {};
 
 TEST_P(Order, ErrorFallsAsTauToTheOrder) {

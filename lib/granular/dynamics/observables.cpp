@@ -35,13 +35,13 @@ std::vector<double> site_energies(const ForceLaw& law, const Chain& chain, const
 double total_energy(const ForceLaw& law, const Chain& chain, const State& state) {
   double h = 0;
   for (double e : site_energies(law, chain, state)) h += e;
-  // The halves of the two wall bonds that no bead owns: without them H is not conserved once
-  // energy reaches a wall.
-  const std::size_t n = state.size();
-  h += std::visit([&](const auto& l) { return 0.5 * (l.potential(0, bond_strain(state.u, 0)) +
-                                                     l.potential(n, bond_strain(state.u, n))); },
-                  law);
-  return h;
+  return h + unowned_wall_energy(law, state.u);
+}
+
+double unowned_wall_energy(const ForceLaw& law, std::span<const double> u) {
+  const std::size_t n = u.size();
+  return std::visit(
+      [&](const auto& l) { return 0.5 * (l.potential(0, bond_strain(u, 0)) + l.potential(n, bond_strain(u, n))); }, law);
 }
 
 EnergySpread energy_spread(std::span<const double> energy) {

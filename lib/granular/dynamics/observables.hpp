@@ -23,6 +23,9 @@ std::vector<double> site_energies(const ForceLaw& law, const Chain& chain, const
 
 /// H = Σ E_n plus the halves of the two wall bonds that belong to no bead: the conserved energy.
 double total_energy(const ForceLaw& law, const Chain& chain, const State& state);
+/// (φ_0 + φ_N)/2: the halves of the wall bonds that no bead owns. Without them H is not
+/// conserved once energy reaches a wall.
+double unowned_wall_energy(const ForceLaw& law, std::span<const double> u);
 
 struct EnergySpread {
   double total = 0;   ///< Σ E_n
