@@ -141,9 +141,10 @@ int main(int argc, char** argv) {
       throw InvalidInput("--fit '" + fit_text + "': expected start:stop with 0 < start < stop");
     if (!(kappa > 0)) throw InvalidInput("--kappa: must be > 0");
 
-    if (site != 0 && (site < 1 || site > static_cast<long long>(beads)))
+    const bool site_given = app.count("--site") > 0;
+    if (site_given && (site < 1 || site > static_cast<long long>(beads)))
       throw InvalidInput("--site " + std::to_string(site) + ": outside the chain of " + std::to_string(beads) + " beads (1..N)");
-    const std::size_t kicked = site == 0 ? centre_site(beads) : static_cast<std::size_t>(site - 1);
+    const std::size_t kicked = site_given ? static_cast<std::size_t>(site - 1) : centre_site(beads);
     const ForceLaw law = make_force_law(config.force_law, chain);
     State initial;
     double beta = 0;
