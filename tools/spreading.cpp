@@ -161,6 +161,19 @@ int main(int argc, char** argv) {
       initial = velocity_kick(chain, kicked, beta);
     }
 
+    PowerLawFitConfig fit_config;
+    fit_config.t_begin = fit_range[0];
+    fit_config.t_end = fit_range[1];
+    fit_config.kappa = kappa;
+    const bool fit_possible = fit_range[1] <= duration * (1 + 1e-12);
+    if (fit_possible) {
+      // A fit that cannot work is bad input, found before the run rather than after it.
+      std::vector<double> times;
+      const auto steps = sample_steps(static_cast<std::uint64_t>(std::llround(duration / dt)), config.samples, config.sampling);
+      for (auto s : steps) times.push_back(static_cast<double>(s) * dt);
+      fit_power_law(times, std::vector<double>(times.size(), 1.0), fit_config);
+    }
+
     // Every output is checked before the run and written only after it.
     const std::string csv_path = output + ".csv", json_path = output + ".json";
     const std::string profile_path = output + "-profile.csv", forces_path = output + "-forces.csv";
@@ -172,15 +185,11 @@ int main(int argc, char** argv) {
     const SpreadingResult r = run_spreading(chain, initial, config);
 
     nlohmann::json fit = nullptr;
-    if (fit_range[1] <= duration * (1 + 1e-12)) {
-      PowerLawFitConfig fc;
-      fc.t_begin = fit_range[0];
-      fc.t_end = fit_range[1];
-      fc.kappa = kappa;
-      const PowerLawFit g = fit_power_law(r.t, r.m2, fc);
+    if (fit_possible) {
+      const PowerLawFit g = fit_power_law(r.t, r.m2, fit_config);
       std::vector<double> inverse_ipr;
       for (double p : r.ipr) inverse_ipr.push_back(1 / p);  // P⁻¹ ∝ t^−η  ⇔  1/P⁻¹ ∝ t^η
-      const PowerLawFit e = fit_power_law(r.t, inverse_ipr, fc);
+      const PowerLawFit e = fit_power_law(r.t, inverse_ipr, fit_config);
       fit = {{"gamma", g.slope}, {"gamma_err", g.slope_error}, {"eta", e.slope}, {"eta_err", e.slope_error},
              {"power_law", g.power_law}, {"max_log_derivative_deviation", g.max_deviation}};
     } else if (!quiet) {
