@@ -1,0 +1,183 @@
+// Speed of the dynamics (issue 4): the bare bond kernel, the SABA2C step, one realization of
+// the paper's problem (N = 2501, τ = 1 µs, T = 10 ms, F0 = 10 N, displacement kick, one Anderson
+// chain ξ = q = 0.5, seed 1 realization 0) with and without the active window against Boost.Odeint's
+// symplectic_rkn_sb3a_mclachlan at the same τ, and the cost–accuracy of every scheme.
+// Results and commands: docs/dynamics-performance.md.
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <vector>
+
+#include <benchmark/benchmark.h>
+#include <boost/numeric/odeint.hpp>
+
+#include "granular/dynamics/initial_conditions.hpp"
+#include "granular/dynamics/observables.hpp"
+#include "granular/dynamics/propagator.hpp"
+#include "granular/model/chain.hpp"
+#include "granular/model/disorder.hpp"
+
+namespace {
+
+using namespace granular;
+
+constexpr std::size_t beads = 2501;
+constexpr double tau = 1e-6, duration = 1e-2;
+
+const Chain& paper_chain() {
+  static const Chain chain =
+      make_chain(radii_of(realization_configuration(Disorder::anderson, 0.5, beads, 1, 0), 4.76e-3, 0.5), 10.0);
+  return chain;
+}
+const ForceLaw& paper_law() {
+  static const ForceLaw law = make_force_law(ForceLawKind::hertz, paper_chain());
+  return law;
+}
+const State& paper_kick() {
+  static const State s = displacement_kick(paper_chain(), centre_site(beads), 1e-7);
+  return s;
+}
+
+// The reference final state (Odeint RKF78 at 1e-16, smooth case): computed once, ~seconds.
+const std::vector<double>& reference_final() {
+  static const std::vector<double> u = [] {
+    auto p = make_reference_propagator(paper_law(), paper_chain(), tau, paper_kick(), {1e-16, 1e-16, 0});
+    p->advance(static_cast<std::size_t>(std::llround(duration / tau)));
+    return std::vector<double>(p->displacement().begin(), p->displacement().end());
+  }();
+  return u;
+}
+
+double relative_difference(std::span<const double> a, const std::vector<double>& b) {
+  double d = 0, s = 0;
+  for (std::size_t i = 0; i < b.size(); ++i) d += (a[i] - b[i]) * (a[i] - b[i]), s += b[i] * b[i];
+  return std::sqrt(d / s);
+}
+
+// The bare kernel: f_k = A_k [Δ_k + u_{k−1} − u_k]_+^{3/2} over N+1 bonds, exact sqrt.
+void BM_BareBondKernel(benchmark::State& state) {
+  const Chain& c = paper_chain();
+  std::vector<double> u(beads + 2, 0.0), f(beads + 1);
+  for (std::size_t i = 1; i <= beads; ++i) u[i] = 1e-8 * std::sin(0.1 * static_cast<double>(i));
+  const double* __restrict a = c.contact.data();
+  const double* __restrict d0 = c.overlap.data();
+  const double* __restrict up = u.data();
+  double* __restrict fp = f.data();
+  for (auto _ : state) {
+    for (std::size_t k = 0; k <= beads; ++k) {
+      const double d = std::max(d0[k] + up[k] - up[k + 1], 0.0);
+      fp[k] = a[k] * d * std::sqrt(d);
+    }
+    benchmark::DoNotOptimize(fp);
+    benchmark::ClobberMemory();
+  }
+  state.counters["bonds_per_s"] = benchmark::Counter(static_cast<double>(state.iterations()) * (beads + 1),
+                                                     benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_BareBondKernel);
+
+// Whole SABA2C steps on the full chain (window off): bond force evaluations per second.
+void BM_Saba2cStep(benchmark::State& state) {
+  auto p = make_splitting_propagator(paper_law(), paper_chain(), saba2c(), tau, paper_kick(), {false});
+  p->advance(2000);  // a developed wave, not the initial single bead
+  const auto before = p->bond_updates();
+  for (auto _ : state) p->advance(100);
+  state.counters["bond_updates_per_s"] =
+      benchmark::Counter(static_cast<double>(p->bond_updates() - before), benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_Saba2cStep)->Unit(benchmark::kMicrosecond);
+
+// One realization: 10 000 steps of SABA2C, with or without the active window; the energy error
+// is the max over 100 uniform samples (which also cost 100 extra corrector kicks).
+void BM_RealizationSaba2c(benchmark::State& state) {
+  const bool window = state.range(0) != 0;
+  double error = 0, state_error = 0;
+  for (auto _ : state) {
+    auto p = make_splitting_propagator(paper_law(), paper_chain(), saba2c(), tau, paper_kick(), {window});
+    p->advance(10000);
+    benchmark::DoNotOptimize(p->displacement().data());
+    state.PauseTiming();
+    const double h0 = total_energy(paper_law(), paper_chain(), paper_kick());
+    error = std::abs(total_energy(paper_law(), paper_chain(), p->state()) - h0) / h0;
+    state_error = relative_difference(p->displacement(), reference_final());
+    state.ResumeTiming();
+  }
+  state.counters["final_energy_error"] = error;
+  state.counters["final_state_error"] = state_error;
+}
+BENCHMARK(BM_RealizationSaba2c)->Arg(0)->Arg(1)->ArgName("window")->Unit(benchmark::kMillisecond)->MinTime(2.0);
+
+// Boost.Odeint's 4th-order symplectic RKN (McLachlan sb3a, 4 force evaluations a step) with the
+// same Hertz force kernel, at the same τ.
+void BM_RealizationOdeintSb3a(benchmark::State& state) {
+  using Vector = std::vector<double>;
+  const Chain& c = paper_chain();
+  const auto law = std::get<HertzLaw>(paper_law()).view();
+  Vector f(beads + 1), padded(beads + 2, 0.0);
+  auto force = [&](const Vector& q, Vector& dvdt) {
+    std::copy(q.begin(), q.end(), padded.begin() + 1);
+    const double* __restrict u = padded.data();
+    double* __restrict fk = f.data();
+    for (std::size_t k = 0; k <= beads; ++k) fk[k] = law.force(k, u[k] - u[k + 1]);
+    const double* __restrict im = c.inverse_mass.data();
+    double* __restrict a = dvdt.data();
+    for (std::size_t i = 0; i < beads; ++i) a[i] = im[i] * (fk[i] - fk[i + 1]);
+  };
+  double error = 0, state_error = 0;
+  for (auto _ : state) {
+    Vector q = paper_kick().u, v = paper_kick().v;
+    boost::numeric::odeint::symplectic_rkn_sb3a_mclachlan<Vector> stepper;
+    double t = 0;
+    for (int s = 0; s < 10000; ++s, t += tau) stepper.do_step(force, std::make_pair(std::ref(q), std::ref(v)), t, tau);
+    state.PauseTiming();
+    State end;
+    end.u = q;
+    end.v = v;
+    const double h0 = total_energy(paper_law(), c, paper_kick());
+    error = std::abs(total_energy(paper_law(), c, end) - h0) / h0;
+    state_error = relative_difference(q, reference_final());
+    state.ResumeTiming();
+  }
+  state.counters["final_energy_error"] = error;
+  state.counters["final_state_error"] = state_error;
+}
+BENCHMARK(BM_RealizationOdeintSb3a)->Unit(benchmark::kMillisecond)->MinTime(2.0);
+
+// Cost–accuracy: every scheme at several τ (ns in the argument), window off so that the schemes
+// alone are compared; max energy error over 100 uniform samples and the final-state error
+// against the RKF78 reference.
+void BM_CostAccuracy(benchmark::State& state) {
+  const SplittingScheme schemes[] = {saba2c(), aba864(), srkn14a()};
+  const SplittingScheme& scheme = schemes[state.range(0)];
+  const double step = static_cast<double>(state.range(1)) * 1e-9;
+  const auto steps = static_cast<std::size_t>(std::llround(duration / step));
+  const double h0 = total_energy(paper_law(), paper_chain(), paper_kick());
+  double max_error = 0, state_error = 0;
+  for (auto _ : state) {
+    auto p = make_splitting_propagator(paper_law(), paper_chain(), scheme, step, paper_kick(), {false});
+    max_error = 0;
+    for (std::size_t k = 1; k <= 100; ++k) {
+      p->advance(steps * k / 100 - p->steps_done());
+      state.PauseTiming();
+      max_error = std::max(max_error, std::abs(total_energy(paper_law(), paper_chain(), p->state()) - h0) / h0);
+      state.ResumeTiming();
+    }
+    state.PauseTiming();
+    state_error = relative_difference(p->displacement(), reference_final());
+    state.ResumeTiming();
+  }
+  state.SetLabel(scheme.name);
+  state.counters["max_energy_error"] = max_error;
+  state.counters["final_state_error"] = state_error;
+}
+BENCHMARK(BM_CostAccuracy)
+    ->ArgNames({"scheme", "tau_ns"})
+    ->ArgsProduct({{0}, {2000, 1000, 500, 250}})
+    ->ArgsProduct({{1}, {4000, 2000, 1000, 500}})
+    ->ArgsProduct({{2}, {8000, 4000, 2000, 1000}})
+    ->Unit(benchmark::kMillisecond)
+    ->MinTime(1.0);
+
+}  // namespace
+
+BENCHMARK_MAIN();

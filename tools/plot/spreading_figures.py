@@ -1,0 +1,112 @@
+#!/usr/bin/python3
+"""Figures of the `spreading` tool's outputs (issue 4), in the paper's layout.
+
+Run with Debian's /usr/bin/python3 (python3-matplotlib, python3-h5py):
+
+  spreading_figures.py map      MAP.h5 SPECTRUM.csv  -o map.png      energy map E_n(t) beside g(nu)
+  spreading_figures.py forces   PREFIX-forces.csv PREFIX-profile.csv -o forces.png
+                                                                     force vs t at each bead beside the force profile at T
+  spreading_figures.py spread   A.csv [B.csv ...] [--labels a,b]   -o spread.png
+                                                                     m2(t) and P^-1(t) on log-log axes
+
+Inputs are the tool's files as documented in DESIGN.md; nothing is recomputed here.
+"""
+import argparse
+import csv
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+
+
+def read_csv(path):
+    with open(path, newline="") as f:
+        rows = list(csv.DictReader(f))
+    if not rows:
+        sys.exit(f"{path}: no rows")
+    return {k: np.array([float(r[k]) for r in rows]) for k in rows[0]}
+
+
+def energy_map(args):
+    import h5py
+
+    with h5py.File(args.map, "r") as f:
+        energy = np.array(f["energy"])
+        t = np.array(f["t"])
+        site = np.array(f["site"])
+    spectrum = read_csv(args.spectrum)
+    fig, (ax, bx) = plt.subplots(1, 2, figsize=(10, 4.5), gridspec_kw={"width_ratios": [3, 1]})
+    # Relative energy on a log scale, as the paper shows it; zeros (outside the front) are masked.
+    total = energy.sum(axis=1, keepdims=True)
+    with np.errstate(divide="ignore"):
+        shown = np.log10(np.where(energy > 0, energy / total, np.nan))
+    image = ax.pcolormesh(site, t * 1e3, shown, shading="auto", cmap="viridis", vmin=args.floor, vmax=0)
+    fig.colorbar(image, ax=ax, label=r"$\log_{10} E_n / \sum E$")
+    ax.set_xlabel("bead n")
+    ax.set_ylabel("t [ms]")
+    bx.semilogx(np.maximum(spectrum["g"], 1e-12), spectrum["freq_khz"], lw=0.8)
+    bx.set_xlim(1e-6, 1.5)
+    bx.set_xlabel(r"$g(\nu)$")
+    bx.set_ylabel(r"$\nu$ [kHz]")
+    fig.tight_layout()
+    fig.savefig(args.output, dpi=150)
+
+
+def forces(args):
+    series = read_csv(args.forces)
+    profile = read_csv(args.profile)
+    fig, (ax, bx) = plt.subplots(1, 2, figsize=(10, 4))
+    for s in np.unique(series["site"]):
+        pick = series["site"] == s
+        ax.plot(series["t"][pick] * 1e3, series["force"][pick], lw=0.8, label=f"bead {int(s)}")
+    ax.set_xlabel("t [ms]")
+    ax.set_ylabel("force [N]")
+    ax.legend()
+    bx.plot(profile["site"], profile["force"], lw=0.6)
+    bx.set_xlabel("bead n")
+    bx.set_ylabel("force at T [N]")
+    fig.tight_layout()
+    fig.savefig(args.output, dpi=150)
+
+
+def spread(args):
+    labels = args.labels.split(",") if args.labels else args.inputs
+    fig, (ax, bx) = plt.subplots(1, 2, figsize=(10, 4))
+    for path, label in zip(args.inputs, labels):
+        d = read_csv(path)
+        keep = d["t"] > 0
+        ax.loglog(d["t"][keep] * 1e3, d["m2"][keep], label=label)
+        bx.loglog(d["t"][keep] * 1e3, d["ipr"][keep], label=label)
+    ax.set_xlabel("t [ms]")
+    ax.set_ylabel(r"$\tilde m_2$")
+    bx.set_xlabel("t [ms]")
+    bx.set_ylabel(r"$P^{-1}$")
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(args.output, dpi=150)
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    sub = p.add_subparsers(dest="figure", required=True)
+    m = sub.add_parser("map", help="energy map beside the spectral density")
+    m.add_argument("map")
+    m.add_argument("spectrum")
+    m.add_argument("--floor", type=float, default=-12, help="lowest log10 relative energy shown")
+    f = sub.add_parser("forces", help="force series beside the force profile at T")
+    f.add_argument("forces")
+    f.add_argument("profile")
+    s = sub.add_parser("spread", help="m2 and P^-1 versus t, log-log")
+    s.add_argument("inputs", nargs="+")
+    s.add_argument("--labels")
+    for q in (m, f, s):
+        q.add_argument("-o", "--output", required=True)
+    args = p.parse_args()
+    {"map": energy_map, "forces": forces, "spread": spread}[args.figure](args)
+
+
+if __name__ == "__main__":
+    main()
