@@ -3,6 +3,7 @@
 // optionally the final state, the energy/force profile, force series, an HDF5 energy map and
 // the spectral density.
 #include <cstdio>
+#include <filesystem>
 #include <optional>
 #include <string>
 
@@ -179,6 +180,17 @@ int main(int argc, char** argv) {
     const std::string profile_path = output + "-profile.csv", forces_path = output + "-forces.csv";
     for (const std::string* path : std::initializer_list<const std::string*>{&csv_path, &json_path, &final_state, &energy_map, &spectrum_file})
       if (!path->empty()) check_writable(*path);
+    {
+      std::vector<std::string> paths = {csv_path, json_path};
+      for (const std::string& p : {final_state, energy_map, spectrum_file})
+        if (!p.empty()) paths.push_back(p);
+      if (profile) paths.push_back(profile_path);
+      if (!config.force_sites.empty()) paths.push_back(forces_path);
+      for (std::size_t i = 0; i < paths.size(); ++i)
+        for (std::size_t j = i + 1; j < paths.size(); ++j)
+          if (std::filesystem::absolute(paths[i]).lexically_normal() == std::filesystem::absolute(paths[j]).lexically_normal())
+            throw InvalidInput("--output/--final-state/--energy-map/--spectrum: two outputs would both be " + paths[i]);
+    }
     if (profile) check_writable(profile_path);
     if (!config.force_sites.empty()) check_writable(forces_path);
 

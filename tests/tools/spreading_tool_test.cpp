@@ -129,7 +129,8 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInput{"--realizations 2", "--realizations"}, BadInput{"--forces-at 0", "--forces-at"},
                       BadInput{"--ic velocity --beta abc", "--beta"}, BadInput{"--ic push", "--ic"},
                       BadInput{"--samples 1", "--samples"}, BadInput{"--samples 10 --fit 4e-5:1e-4", "--fit"}, BadInput{"--fit 2e-3:1e-3", "--fit"},
-                      BadInput{"--active-window maybe", "--active-window"}),
+                      BadInput{"--active-window maybe", "--active-window"},
+                      BadInput{"--spectrum out.csv", "two outputs"}),
     [](const auto& info) { return "case" + std::to_string(info.index); });
 
 }  // namespace
