@@ -8,6 +8,8 @@ Run with Debian's /usr/bin/python3 (python3-matplotlib, python3-h5py):
                                                                      force vs t at each bead beside the force profile at T
   spreading_figures.py spread   A.csv [B.csv ...] [--labels a,b]   -o spread.png
                                                                      m2(t) and P^-1(t) on log-log axes
+  spreading_figures.py cost     BENCH.json -o cost.png             cost-accuracy of the schemes, from
+                          dynamics_benchmark --benchmark_filter=CostAccuracy --benchmark_out=BENCH.json
 
 Inputs are the tool's files as documented in DESIGN.md; nothing is recomputed here.
 """
@@ -89,6 +91,35 @@ def spread(args):
     fig.savefig(args.output, dpi=150)
 
 
+def cost(args):
+    import json
+
+    with open(args.bench) as f:
+        runs = json.load(f)["benchmarks"]
+    curves = {}
+    for r in runs:
+        if "max_energy_error" not in r:
+            continue
+        curves.setdefault(r.get("label", r["name"]), []).append(
+            (r["cpu_time"], r["max_energy_error"], r["final_state_error"], r["name"].split("tau_ns:")[1].split("/")[0]))
+    fig, (ax, bx) = plt.subplots(1, 2, figsize=(10, 4))
+    for label, points in sorted(curves.items()):
+        points.sort()
+        t = [p[0] for p in points]
+        ax.loglog(t, [p[1] for p in points], "o-", label=label)
+        bx.loglog(t, [p[2] for p in points], "o-", label=label)
+        for p in points:
+            ax.annotate(f"{int(p[3]) / 1000:g}", (p[0], p[1]), fontsize=6)
+    unit = runs[0].get("time_unit", "ms")
+    ax.set_xlabel(f"CPU time per realization [{unit}]")
+    ax.set_ylabel("max relative energy error")
+    bx.set_xlabel(f"CPU time per realization [{unit}]")
+    bx.set_ylabel("final-state error")
+    ax.legend(fontsize=8, title=r"labels: $\tau$ [$\mu$s]", title_fontsize=7)
+    fig.tight_layout()
+    fig.savefig(args.output, dpi=150)
+
+
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     sub = p.add_subparsers(dest="figure", required=True)
@@ -102,10 +133,12 @@ def main():
     s = sub.add_parser("spread", help="m2 and P^-1 versus t, log-log")
     s.add_argument("inputs", nargs="+")
     s.add_argument("--labels")
-    for q in (m, f, s):
+    c = sub.add_parser("cost", help="cost-accuracy curves from the benchmark's JSON output")
+    c.add_argument("bench")
+    for q in (m, f, s, c):
         q.add_argument("-o", "--output", required=True)
     args = p.parse_args()
-    {"map": energy_map, "forces": forces, "spread": spread}[args.figure](args)
+    {"map": energy_map, "forces": forces, "spread": spread, "cost": cost}[args.figure](args)
 
 
 if __name__ == "__main__":
