@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <charconv>
 #include <cstring>
 #include <filesystem>
@@ -56,8 +57,8 @@ std::string first_difference(const std::string& a, const std::string& b) {
 
 }  // namespace
 
-std::map<std::uint64_t, std::vector<double>> CheckpointLog::parse_records(const std::string& text, std::string* header) {
-  std::map<std::uint64_t, std::vector<double>> records;
+CheckpointRecords CheckpointLog::parse_records(const std::string& text, std::string* header) {
+  CheckpointRecords records;
   std::size_t begin = 0;
   bool first = true;
   while (begin < text.size()) {
@@ -104,44 +105,79 @@ std::map<std::uint64_t, std::vector<double>> CheckpointLog::parse_records(const 
   return records;
 }
 
-CheckpointLog::CheckpointLog(std::string path, std::string parameters, bool resume)
-    : path_(std::move(path)), parameters_(std::move(parameters)) {
-  if (resume && std::filesystem::exists(path_)) {
-    std::ifstream in(path_, std::ios::binary);
-    if (!in) throw IoError("cannot read checkpoint '" + path_ + "'");
-    std::stringstream text;
-    text << in.rdbuf();
-    std::string header;
-    try {
-      finished_ = parse_records(text.str(), &header);
-    } catch (const InvalidInput&) {
-      throw InvalidInput("--resume: '" + path_ + "' is not a checkpoint of this toolkit");
-    }
-    if (header != parameters_)
-      throw InvalidInput("--resume: checkpoint '" + path_ + "' was made with different parameters: " +
-                         first_difference(header, parameters_));
-    // Rewrite the log with only the complete records, so a torn tail never sits mid-file.
-    const std::string temporary = path_ + ".tmp";
-    std::FILE* clean = std::fopen(temporary.c_str(), "wb");
-    if (!clean) throw IoError("cannot write checkpoint '" + temporary + "'");
-    std::fprintf(clean, "%s%s\n", magic, parameters_.c_str());
-    std::fclose(clean);
-    if (std::rename(temporary.c_str(), path_.c_str()) != 0) throw IoError("cannot replace checkpoint '" + path_ + "'");
-    file_ = std::fopen(path_.c_str(), "ab");
-    if (!file_) throw IoError("cannot append to checkpoint '" + path_ + "'");
-    for (const auto& [index, values] : finished_) std::fputs(format_record(index, values).c_str(), file_);
-    std::fflush(file_);
-    return;
-  }
-  if (resume) throw InvalidInput("--resume: no checkpoint '" + path_ + "' to resume from");
-  file_ = std::fopen(path_.c_str(), "wb");
-  if (!file_) throw IoError("cannot create checkpoint '" + path_ + "'");
-  std::fprintf(file_, "%s%s\n", magic, parameters_.c_str());
-  std::fflush(file_);
+CheckpointLog::CheckpointLog(std::string path, std::string parameters, const CheckpointRecords& records)
+    : path_(std::move(path)) {
+  // Written whole under a temporary name, then renamed: a kill never leaves a half header.
+  const std::string temporary = path_ + ".tmp";
+  std::FILE* f = std::fopen(temporary.c_str(), "wb");
+  if (!f) throw IoError("cannot create checkpoint '" + temporary + "'");
+  std::string text = magic + parameters + "\n";
+  for (const auto& [index, values] : records) text += format_record(index, values);
+  const bool written = std::fwrite(text.data(), 1, text.size(), f) == text.size() && std::fflush(f) == 0;
+  ::fdatasync(::fileno(f));
+  std::fclose(f);
+  if (!written || std::rename(temporary.c_str(), path_.c_str()) != 0)
+    throw IoError("cannot write checkpoint '" + path_ + "'");
+  file_ = std::fopen(path_.c_str(), "ab");
+  if (!file_) throw IoError("cannot append to checkpoint '" + path_ + "'");
 }
 
 CheckpointLog::~CheckpointLog() {
   if (file_) std::fclose(file_);
+}
+
+std::string CheckpointLog::rank_path(const std::string& base, int rank) {
+  return rank == 0 ? base : base + ".rank" + std::to_string(rank);
+}
+
+namespace {
+
+std::vector<std::string> family(const std::string& base) {
+  namespace fs = std::filesystem;
+  std::vector<std::string> files;
+  if (fs::exists(base)) files.push_back(base);
+  fs::path folder = fs::path(base).parent_path();
+  if (folder.empty()) folder = ".";
+  const std::string prefix = fs::path(base).filename().string() + ".rank";
+  std::error_code ec;
+  for (const auto& entry : fs::directory_iterator(folder, ec)) {
+    const std::string name = entry.path().filename().string();
+    if (name.size() > prefix.size() && name.compare(0, prefix.size(), prefix) == 0 &&
+        name.find_first_not_of("0123456789", prefix.size()) == std::string::npos)
+      files.push_back(entry.path().string());
+  }
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+}  // namespace
+
+CheckpointRecords CheckpointLog::load(const std::string& base, const std::string& parameters) {
+  const auto files = family(base);
+  if (files.empty()) throw InvalidInput("--resume: no checkpoint '" + base + "' to resume from");
+  CheckpointRecords all;
+  for (const std::string& path : files) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw IoError("cannot read checkpoint '" + path + "'");
+    std::stringstream text;
+    text << in.rdbuf();
+    std::string header;
+    CheckpointRecords records;
+    try {
+      records = parse_records(text.str(), &header);
+    } catch (const InvalidInput&) {
+      throw InvalidInput("--resume: '" + path + "' is not a checkpoint of this toolkit");
+    }
+    if (header != parameters)
+      throw InvalidInput("--resume: checkpoint '" + path + "' was made with different parameters: " +
+                         first_difference(header, parameters));
+    all.merge(records);
+  }
+  return all;
+}
+
+void CheckpointLog::remove_all(const std::string& base) {
+  for (const std::string& path : family(base)) std::filesystem::remove(path);
 }
 
 void CheckpointLog::append(std::uint64_t index, const std::vector<double>& values) {
@@ -150,12 +186,6 @@ void CheckpointLog::append(std::uint64_t index, const std::vector<double>& value
   if (!file_ || std::fwrite(line.data(), 1, line.size(), file_) != line.size() || std::fflush(file_) != 0)
     throw IoError("cannot append to checkpoint '" + path_ + "'");
   ::fdatasync(::fileno(file_));
-}
-
-void CheckpointLog::remove() {
-  std::lock_guard lock(mutex_);
-  if (file_) { std::fclose(file_); file_ = nullptr; }
-  std::filesystem::remove(path_);
 }
 
 }  // namespace granular

@@ -18,36 +18,40 @@
 
 namespace granular {
 
+using CheckpointRecords = std::map<std::uint64_t, std::vector<double>>;
+
 class CheckpointLog {
  public:
-  /// Opens `path` for a run described by `parameters` (canonical one-line JSON).
-  /// resume = false: starts a new log (an existing one is replaced).
-  /// resume = true: loads finished realizations; throws InvalidInput if the log was made with
-  /// other parameters (naming the first that differs), IoError if it cannot be read.
-  CheckpointLog(std::string path, std::string parameters, bool resume);
+  /// Creates (or atomically replaces) the log at `path` for a run described by `parameters`
+  /// (canonical one-line JSON), holding `records` already finished, and opens it for appending.
+  CheckpointLog(std::string path, std::string parameters, const CheckpointRecords& records = {});
   ~CheckpointLog();
   CheckpointLog(const CheckpointLog&) = delete;
   CheckpointLog& operator=(const CheckpointLog&) = delete;
 
-  /// Realizations already finished (loaded on resume), by index.
-  const std::map<std::uint64_t, std::vector<double>>& finished() const { return finished_; }
+  /// Reads the finished realizations of a run: the log at `base` and those of other MPI ranks
+  /// (`base.rank<k>`). Throws InvalidInput when there is none (naming --resume), when a file is
+  /// not a checkpoint, or when it was made with other parameters (naming the first that differs).
+  static CheckpointRecords load(const std::string& base, const std::string& parameters);
+
+  /// The log file of an MPI rank: `base` for rank 0, `base.rank<k>` otherwise.
+  static std::string rank_path(const std::string& base, int rank);
+
+  /// Removes `base` and every `base.rank<k>` (after the outputs are safely written).
+  static void remove_all(const std::string& base);
 
   /// Appends one finished realization and flushes it to disk. Thread-safe.
   void append(std::uint64_t index, const std::vector<double>& values);
 
-  /// Deletes the log (call after the outputs are safely written).
-  void remove();
-
   const std::string& path() const { return path_; }
 
   /// Parses a log's text (what resume and the fuzz target use); corrupt lines are skipped.
-  static std::map<std::uint64_t, std::vector<double>> parse_records(const std::string& text, std::string* header);
+  static CheckpointRecords parse_records(const std::string& text, std::string* header);
 
  private:
-  std::string path_, parameters_;
+  std::string path_;
   std::FILE* file_ = nullptr;
   std::mutex mutex_;
-  std::map<std::uint64_t, std::vector<double>> finished_;
 };
 
 }  // namespace granular

@@ -5,6 +5,7 @@
 // thread count, interruption and resumption.
 #include <cstdint>
 #include <functional>
+#include <string>
 #include <vector>
 
 #include "granular/ensemble/checkpoint_log.hpp"
@@ -14,12 +15,17 @@ namespace granular {
 
 struct EnsembleOptions {
   std::size_t realizations = 1;
-  int threads = 0;                     ///< 0 = every core
-  CheckpointLog* checkpoint = nullptr; ///< optional
-  ProgressMeter* progress = nullptr;   ///< optional; advanced once per realization computed or loaded
+  int threads = 0;                    ///< per process; 0 = every core
+  std::string checkpoint;             ///< log of finished realizations; empty = none
+  std::string parameters = "{}";      ///< one-line JSON describing the run; a resume must match it
+  bool resume = false;                ///< continue from `checkpoint` instead of starting afresh
+  ProgressMeter* progress = nullptr;  ///< optional; advanced once per realization computed or loaded
 };
 
-/// `work(r, thread)` computes realization r. Rows loaded from the checkpoint are not recomputed.
+/// `work(r, thread)` computes realization r. Under mpirun the realizations still to do are dealt
+/// round-robin to the ranks and the rows gathered on rank 0, which alone gets a non-empty result.
+/// Rows loaded from the checkpoint are not recomputed. The checkpoint is left on disk: remove it
+/// (CheckpointLog::remove_all) once the outputs are written.
 std::vector<std::vector<double>> run_ensemble(
     const EnsembleOptions& options, const std::function<std::vector<double>(std::uint64_t r, int thread)>& work);
 
