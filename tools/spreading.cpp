@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 
+#include "common/chain_options.hpp"
 #include "common/metadata.hpp"
 #include "common/tool_main.hpp"
 #include "granular/analysis/power_law_fit.hpp"
@@ -17,8 +18,6 @@
 #include "granular/io/hdf5_file.hpp"
 #include "granular/io/number_format.hpp"
 #include "granular/io/range_syntax.hpp"
-#include "granular/model/configuration_file.hpp"
-#include "granular/model/disorder.hpp"
 
 int main(int argc, char** argv) {
   using namespace granular;
@@ -26,25 +25,19 @@ int main(int argc, char** argv) {
                "or another scheme. Writes PREFIX.csv (t,m2,ipr,energy_error) and PREFIX.json. Beads count from 1.",
                "spreading"};
   tool::describe_common(app);
-  std::string disorder = "A", config_file, radii_file, ic = "displacement", beta_text = "match", force_law = "hertz";
+  tool::ChainOptions chain_options;
+  chain_options.n = 2501;
+  std::string ic = "displacement", beta_text = "match", force_law = "hertz";
   std::string integrator = "saba2c", sampling = "log", fit_text = "4e-3:1e-2", output = "spreading", final_state;
   std::string forces_at, energy_map, spectrum_file, active_window = "on";
-  long long n = 2501, seed = 1, realization = 0, realizations = 1, site = 0, samples = 200, force_samples = 1000;
+  long long realizations = 1, site = 0, samples = 200, force_samples = 1000;
   long long map_samples = 500, map_stride = 1, spectrum_samples = 2000;
-  double xi = 0.5, q = 0.5, f0 = 10, r1 = 4.76e-3, alpha = 1e-7, duration = 1e-2, dt = 1e-6, kappa = 0.25;
+  double alpha = 1e-7, duration = 1e-2, dt = 1e-6;
+  PowerLawCriterion criterion;
   double window_threshold = 1e-30, reference_max_step = 0.01e-6;
   bool profile = false, quiet = false;
-  app.add_option("--disorder", disorder, "h | A | RDM1 | RDM2")->capture_default_str();
-  app.add_option("--xi", xi, "size ratio R2/R1 in (0,1]")->capture_default_str();
-  app.add_option("--q", q, "probability of type 1 (of dimer 11 / 12) in [0,1]")->capture_default_str();
-  app.add_option("--N", n, "beads (>= 2)")->capture_default_str();
-  app.add_option("--F0", f0, "static precompression [N], >= 0 (0: sonic vacuum, hertz only)")->capture_default_str();
-  app.add_option("--R1", r1, "radius of type-1 beads [m] (steel beads and walls)")->capture_default_str();
-  app.add_option("--seed", seed, "random seed")->capture_default_str();
-  app.add_option("--realization", realization, "which realization of the seed (the chain is a pure function of both)")->capture_default_str();
+  tool::add_chain_options(app, chain_options);
   app.add_option("--realizations", realizations, "realizations to average; only 1 for now")->capture_default_str();
-  app.add_option("--config", config_file, "chain from a file: one bead type (1 or 2) per line, '#' comments");
-  app.add_option("--radii", radii_file, "chain from a file: one radius [m] per line, '#' comments");
   app.add_option("--ic", ic, "initial condition: displacement | velocity")->capture_default_str();
   app.add_option("--alpha", alpha, "displacement kick [m] (also what --beta match matches)")->capture_default_str();
   app.add_option("--beta", beta_text, "velocity kick [m/s], or 'match': the energy of --alpha on this chain")->capture_default_str();
@@ -56,7 +49,7 @@ int main(int argc, char** argv) {
   app.add_option("--samples", samples, "sample times of t,m2,ipr,energy_error")->capture_default_str();
   app.add_option("--sampling", sampling, "log (tau..T) | uniform (0..T)")->capture_default_str();
   app.add_option("--fit", fit_text, "fit range start:stop [s] for gamma (m2 ~ t^gamma) and eta (ipr ~ t^-eta)")->capture_default_str();
-  app.add_option("--kappa", kappa, "'not a power law' when |L_d - gamma| >= kappa after the fit start")->capture_default_str();
+  app.add_option("--kappa", criterion.kappa, "'not a power law' when |L_d - gamma| >= kappa after the fit start")->capture_default_str();
   app.add_option("--output", output, "prefix: writes PREFIX.csv and PREFIX.json")->capture_default_str();
   app.add_option("--final-state", final_state, "CSV of site,u,v,energy at T");
   app.add_flag("--profile", profile, "also write PREFIX-profile.csv: site,energy,force at T");
@@ -75,39 +68,14 @@ int main(int argc, char** argv) {
   return tool::run(app, argc, argv, [&] {
     tool::Metadata meta("spreading", argc, argv);
     if (realizations != 1) throw InvalidInput("--realizations " + std::to_string(realizations) + ": only 1 is supported so far");
-    if (n < 2) throw InvalidInput("--N " + std::to_string(n) + ": a chain needs at least 2 beads");
-    if (seed < 0 || realization < 0) throw InvalidInput("--seed/--realization: must be >= 0");
-    if (!config_file.empty() && !radii_file.empty()) throw InvalidInput("--config and --radii: give one of them");
     if (ic != "displacement" && ic != "velocity") throw InvalidInput("--ic '" + ic + "': expected displacement or velocity");
     if (active_window != "on" && active_window != "off") throw InvalidInput("--active-window '" + active_window + "': on or off");
     for (auto [name, value] : {std::pair{"--samples", samples}, {"--force-samples", force_samples},
                                {"--map-samples", map_samples}, {"--map-stride", map_stride},
                                {"--spectrum-samples", spectrum_samples}})
       if (value < 1) throw InvalidInput(std::string(name) + " " + std::to_string(value) + ": must be >= 1");
-    if (!(r1 > 0) || !std::isfinite(r1)) throw InvalidInput("--R1 " + format_number(r1) + ": must be finite and > 0");
-
-    // The chain.
-    std::vector<double> radii;
-    std::string chain_source;
-    if (!radii_file.empty()) {
-      radii = read_radii_file(radii_file);
-      chain_source = "radii file " + radii_file;
-    } else {
-      Configuration types;
-      if (!config_file.empty()) {
-        types = read_configuration_file(config_file);
-        chain_source = "configuration file " + config_file;
-      } else {
-        validate_probability(q);
-        types = realization_configuration(parse_disorder(disorder), q, static_cast<std::size_t>(n),
-                                          static_cast<std::uint64_t>(seed), static_cast<std::uint64_t>(realization));
-        chain_source = "disorder " + to_string(parse_disorder(disorder));
-      }
-      validate_size_ratio(xi);
-      radii = radii_of(types, r1, xi);
-    }
-    if (!std::isfinite(f0) || f0 < 0) throw InvalidInput("--F0 " + format_number(f0) + ": must be finite and >= 0");
-    const Chain chain = make_chain(radii, f0);
+    const tool::SelectedChain selected = tool::build_chain(chain_options);
+    const Chain& chain = selected.chain;
     const std::size_t beads = chain.size();
 
     SpreadingConfig config;
@@ -140,7 +108,8 @@ int main(int argc, char** argv) {
     const std::vector<double> fit_range = parse_number_list(fit_list, "--fit", 0, 2);
     if (fit_range.size() != 2 || !(fit_range[0] > 0) || !(fit_range[1] > fit_range[0]))
       throw InvalidInput("--fit '" + fit_text + "': expected start:stop with 0 < start < stop");
-    if (!(kappa > 0)) throw InvalidInput("--kappa: must be > 0");
+    if (!(criterion.kappa > 0)) throw InvalidInput("--kappa: must be > 0");
+    criterion.t_start = fit_range[0];
 
     const bool site_given = app.count("--site") > 0;
     if (site_given && (site < 1 || site > static_cast<long long>(beads)))
@@ -162,17 +131,17 @@ int main(int argc, char** argv) {
       initial = velocity_kick(chain, kicked, beta);
     }
 
-    PowerLawFitConfig fit_config;
-    fit_config.t_begin = fit_range[0];
-    fit_config.t_end = fit_range[1];
-    fit_config.kappa = kappa;
     const bool fit_possible = fit_range[1] <= duration * (1 + 1e-12);
     if (fit_possible) {
       // A fit that cannot work is bad input, found before the run rather than after it.
       std::vector<double> times;
       const auto steps = sample_steps(static_cast<std::uint64_t>(std::llround(duration / dt)), config.samples, config.sampling);
       for (auto s : steps) times.push_back(static_cast<double>(s) * dt);
-      fit_power_law(times, std::vector<double>(times.size(), 1.0), fit_config);
+      try {
+        windowed_exponent(times, times, fit_range[0], fit_range[1]);
+      } catch (const InvalidInput& e) {
+        throw InvalidInput("--fit " + fit_text + ": too few --samples in a sub-window (" + e.what() + ")");
+      }
     }
 
     // Every output is checked before the run and written only after it.
@@ -198,12 +167,12 @@ int main(int argc, char** argv) {
 
     nlohmann::json fit = nullptr;
     if (fit_possible) {
-      const PowerLawFit g = fit_power_law(r.t, r.m2, fit_config);
+      const PowerLawAnalysis g = analyze_power_law(r.t, r.m2, fit_range[0], fit_range[1], criterion);
       std::vector<double> inverse_ipr;
       for (double p : r.ipr) inverse_ipr.push_back(1 / p);  // P⁻¹ ∝ t^−η  ⇔  1/P⁻¹ ∝ t^η
-      const PowerLawFit e = fit_power_law(r.t, inverse_ipr, fit_config);
-      fit = {{"gamma", g.slope}, {"gamma_err", g.slope_error}, {"eta", e.slope}, {"eta_err", e.slope_error},
-             {"power_law", g.power_law}, {"max_log_derivative_deviation", g.max_deviation}};
+      const ExponentEstimate e = windowed_exponent(r.t, inverse_ipr, fit_range[0], fit_range[1]);
+      fit = {{"gamma", g.exponent.value}, {"gamma_err", g.exponent.error}, {"eta", e.value}, {"eta_err", e.error},
+             {"power_law", g.verdict.power_law}, {"max_log_derivative_deviation", g.verdict.worst_deviation}};
     } else if (!quiet) {
       std::fprintf(stderr, "spreading: note: --fit %s reaches beyond --T; no exponents fitted\n", fit_text.c_str());
     }
@@ -248,16 +217,14 @@ int main(int argc, char** argv) {
     }
 
     meta["parameters"] = {
-        {"chain", chain_source}, {"N", beads}, {"xi", xi}, {"q", q}, {"F0_N", f0}, {"R1_m", r1},
-        {"seed", seed}, {"realization", realization}, {"realizations", realizations},
-        {"material", {{"E_Pa", steel.young}, {"nu", steel.poisson}, {"rho_kg_m3", steel.density}}},
-        {"walls", "flat, same material as the beads"},
+        {"chain", selected.description}, {"realizations", realizations},
         {"ic", ic}, {"site", kicked + 1}, {"alpha_m", ic == "displacement" ? alpha : 0.0}, {"beta_m_s", beta},
         {"beta_matched", ic == "velocity" && beta_text == "match"},
         {"T_s", duration}, {"dt_s", dt}, {"force_law", to_string(config.force_law)}, {"integrator", integrator},
-        {"samples", samples}, {"sampling", sampling}, {"fit_s", fit_range}, {"kappa", kappa},
-        {"active_window", active_window}, {"window_threshold", window_threshold},
+        {"samples", samples}, {"sampling", sampling}, {"fit_s", fit_range}, {"kappa", criterion.kappa},
+        {"t_star_s", criterion.t_start}, {"active_window", active_window}, {"window_threshold", window_threshold},
         {"reference_max_step_s", reference_max_step}};
+    meta["seed"] = chain_options.seed;
     if (fit.is_null()) {
       for (const char* key : {"gamma", "gamma_err", "eta", "eta_err", "power_law"}) meta[key] = nullptr;
     } else {

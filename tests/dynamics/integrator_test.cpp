@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-#include "fixtures.hpp"
+#include "dynamics_fixtures.hpp"
 #include "granular/dynamics/observables.hpp"
 
 namespace granular {

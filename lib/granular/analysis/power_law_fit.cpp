@@ -3,48 +3,72 @@
 #include <cmath>
 #include <string>
 
+#include "granular/analysis/log_derivative.hpp"
 #include "granular/error.hpp"
 
 namespace granular {
 
-std::vector<double> log_derivative(const std::vector<double>& t, const std::vector<double>& y) {
-  std::vector<double> d;
-  for (std::size_t i = 1; i < t.size(); ++i)
-    d.push_back(std::log(y[i] / y[i - 1]) / std::log(t[i] / t[i - 1]));
-  return d;
+LineFit fit_power_law(const std::vector<double>& t, const std::vector<double>& y, double lo, double hi) {
+  if (t.size() != y.size()) throw InvalidInput("fit_power_law: t and y differ in length");
+  double sx = 0, sy = 0, sxx = 0, sxy = 0;
+  std::size_t n = 0;
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    if (!(t[i] >= lo && t[i] <= hi && t[i] > 0 && y[i] > 0)) continue;
+    const double x = std::log(t[i]), v = std::log(y[i]);
+    sx += x; sy += v; sxx += x * x; sxy += x * v;
+    ++n;
+  }
+  if (n < 2) throw InvalidInput("fit window [" + std::to_string(lo) + ", " + std::to_string(hi) + "] s holds " +
+                                std::to_string(n) + " usable samples; need 2 (more --samples or a wider --fit)");
+  const double nn = static_cast<double>(n);
+  const double denominator = nn * sxx - sx * sx;
+  if (!(denominator > 0)) throw InvalidInput("fit window has a single distinct time");
+  LineFit f;
+  f.slope = (nn * sxy - sx * sy) / denominator;
+  f.intercept = (sy - f.slope * sx) / nn;
+  f.points = n;
+  return f;
 }
 
-PowerLawFit fit_power_law(const std::vector<double>& t, const std::vector<double>& y, const PowerLawFitConfig& c) {
-  if (!(c.t_begin > 0) || !(c.t_end > c.t_begin)) throw InvalidInput("--fit: needs 0 < start < stop");
-  if (c.windows < 1) throw InvalidInput("--fit: at least one sub-window");
-  const double width = c.windows == 1 ? c.t_end - c.t_begin : (c.t_end - c.t_begin) / 2;
-  const double shift = c.windows == 1 ? 0 : (c.t_end - c.t_begin - width) / static_cast<double>(c.windows - 1);
-  std::vector<double> slopes;
-  for (std::size_t w = 0; w < c.windows; ++w) {
-    const double a = c.t_begin + static_cast<double>(w) * shift, b = a + width;
-    double sx = 0, sy = 0, sxx = 0, sxy = 0;
-    std::size_t m = 0;
-    for (std::size_t i = 0; i < t.size(); ++i) {
-      if (t[i] < a * (1 - 1e-12) || t[i] > b * (1 + 1e-12)) continue;
-      if (!(y[i] > 0)) throw InvalidInput("--fit: non-positive value at t = " + std::to_string(t[i]));
-      const double x = std::log(t[i]), z = std::log(y[i]);
-      sx += x, sy += z, sxx += x * x, sxy += x * z, ++m;
-    }
-    if (m < 3) throw InvalidInput("--fit: fewer than 3 samples in a sub-window; use more --samples or a wider range");
-    const double mm = static_cast<double>(m);
-    slopes.push_back((mm * sxy - sx * sy) / (mm * sxx - sx * sx));
+ExponentEstimate windowed_exponent(const std::vector<double>& t, const std::vector<double>& y, double lo, double hi) {
+  if (!(hi > lo && lo >= 0)) throw InvalidInput("fit interval must satisfy 0 <= start < stop");
+  double p[5];
+  for (int i = 0; i <= 4; ++i) p[i] = lo + (hi - lo) * i / 4.0;
+  p[4] = hi;
+  const int windows[6][2] = {{0, 2}, {1, 3}, {2, 4}, {0, 3}, {1, 4}, {0, 4}};
+  ExponentEstimate e;
+  for (const auto& w : windows) e.slopes.push_back(fit_power_law(t, y, p[w[0]], p[w[1]]).slope);
+  double mean = 0;
+  for (double s : e.slopes) mean += s;
+  mean /= static_cast<double>(e.slopes.size());
+  double var = 0;
+  for (double s : e.slopes) var += (s - mean) * (s - mean);
+  e.value = mean;
+  e.error = std::sqrt(var / static_cast<double>(e.slopes.size() - 1));
+  return e;
+}
+
+PowerLawVerdict judge_power_law(const std::vector<double>& t, const std::vector<double>& y, double gamma,
+                                const PowerLawCriterion& c) {
+  const LogDerivative d = log_derivative(t, y, c.log_step);
+  PowerLawVerdict v;
+  bool any = false;
+  for (std::size_t i = 0; i < d.t.size(); ++i) {
+    if (d.t[i] < c.t_start) continue;
+    any = true;
+    const double dev = std::fabs(d.slope[i] - gamma);
+    if (dev > v.worst_deviation) { v.worst_deviation = dev; v.worst_time = d.t[i]; }
   }
-  PowerLawFit f;
-  for (double s : slopes) f.slope += s;
-  f.slope /= static_cast<double>(slopes.size());
-  for (double s : slopes) f.slope_error += (s - f.slope) * (s - f.slope);
-  f.slope_error = slopes.size() > 1 ? std::sqrt(f.slope_error / static_cast<double>(slopes.size() - 1)) : 0.0;
-  const double t_star = c.t_star < 0 ? c.t_begin : c.t_star;
-  const auto ld = log_derivative(t, y);
-  for (std::size_t i = 0; i < ld.size(); ++i)
-    if (t[i + 1] >= t_star) f.max_deviation = std::max(f.max_deviation, std::abs(ld[i] - f.slope));
-  f.power_law = f.max_deviation < c.kappa;
-  return f;
+  v.power_law = any && v.worst_deviation < c.kappa;
+  return v;
+}
+
+PowerLawAnalysis analyze_power_law(const std::vector<double>& t, const std::vector<double>& y, double lo, double hi,
+                                   const PowerLawCriterion& criterion) {
+  PowerLawAnalysis a;
+  a.exponent = windowed_exponent(t, y, lo, hi);
+  a.verdict = judge_power_law(t, y, a.exponent.value, criterion);
+  return a;
 }
 
 }  // namespace granular

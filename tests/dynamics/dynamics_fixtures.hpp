@@ -1,5 +1,7 @@
 #pragma once
-// Named test chains and helpers shared by the dynamics tests.
+// Test chains and helpers of the dynamics tests, on top of the shared tests/fixtures.hpp.
+// Random chains here use seed 1 (the tool's default), so a test's chain is the one
+// `spreading --seed 1 --realization r` integrates.
 #include <cmath>
 #include <cstdint>
 #include <span>
@@ -8,10 +10,9 @@
 #include "granular/dynamics/propagator.hpp"
 #include "granular/model/chain.hpp"
 #include "granular/model/disorder.hpp"
+#include "fixtures.hpp"
 
 namespace granular::fixtures {
-
-inline constexpr double r1 = 4.76e-3;  // SPEC §1 type-1 radius [m]
 
 inline Chain disordered(Disorder disorder, std::size_t n, double f0, std::uint64_t realization = 0,
                         double xi = 0.5, double q = 0.5) {
@@ -20,7 +21,6 @@ inline Chain disordered(Disorder disorder, std::size_t n, double f0, std::uint64
 inline Chain anderson(std::size_t n, double f0, std::uint64_t realization = 0) {
   return disordered(Disorder::anderson, n, f0, realization);
 }
-inline Chain homogeneous(std::size_t n, double f0) { return disordered(Disorder::homogeneous, n, f0); }
 
 /// ‖a − b‖₂ / ‖b‖₂
 inline double relative_difference(std::span<const double> a, std::span<const double> b) {
