@@ -2,15 +2,22 @@
 
 #include <algorithm>
 #include <cstring>
+#include <mutex>
 
 #include <fftw3.h>
 
 #include "granular/error.hpp"
 
 namespace granular {
+namespace {
+// FFTW's planner is not thread-safe (execute is): realizations running on several threads
+// each plan their own transform under this lock.
+std::mutex planner;
+}  // namespace
 
 SpectralDensity::SpectralDensity(std::size_t sites, std::size_t samples) : sites_(sites), samples_(samples) {
   if (samples < 2 || sites < 1) throw InvalidInput("spectral density: needs >= 2 samples and >= 1 site");
+  const std::lock_guard<std::mutex> lock(planner);
   in_ = fftw_alloc_real(sites * samples);
   auto* out = fftw_alloc_complex(sites * (samples / 2 + 1));
   out_ = out;
@@ -26,6 +33,7 @@ SpectralDensity::SpectralDensity(std::size_t sites, std::size_t samples) : sites
 }
 
 SpectralDensity::~SpectralDensity() {
+  const std::lock_guard<std::mutex> lock(planner);
   fftw_destroy_plan(static_cast<fftw_plan>(plan_));
   fftw_free(in_);
   fftw_free(out_);

@@ -10,7 +10,7 @@ namespace granular {
 class SpectralDensity {
  public:
   /// For `sites` displacement series of `samples` (≥ 2) values each. Throws NumericalError if
-  /// FFTW cannot plan. Not thread-safe to construct (FFTW planning is global).
+  /// FFTW cannot plan. Planning is serialized by a lock, so threads may each own one.
   SpectralDensity(std::size_t sites, std::size_t samples);
   ~SpectralDensity();
   SpectralDensity(const SpectralDensity&) = delete;
