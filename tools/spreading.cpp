@@ -81,7 +81,13 @@ int main(int argc, char** argv) {
     SpreadingConfig config;
     config.force_law = parse_force_law(force_law);
     config.integrator = integrator;
-    if (integrator != "reference") parse_scheme(integrator);
+    if (integrator != "reference") {
+      try {
+        parse_scheme(integrator);
+      } catch (const InvalidInput&) {
+        throw InvalidInput("--integrator '" + integrator + "': expected saba2c, saba2, aba864, srkn14a or reference");
+      }
+    }
     config.duration = duration;
     config.time_step = dt;
     config.samples = static_cast<std::size_t>(samples);
