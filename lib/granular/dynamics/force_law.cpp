@@ -1,0 +1,71 @@
+#include "granular/dynamics/force_law.hpp"
+
+#include <cctype>
+
+#include "granular/error.hpp"
+#include "granular/linear/weak_nonlinearity.hpp"
+
+namespace granular {
+
+ForceLawKind parse_force_law(std::string_view name) {
+  std::string lower(name);
+  for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (lower == "hertz") return ForceLawKind::hertz;
+  if (lower == "fpu") return ForceLawKind::fpu;
+  if (lower == "linear") return ForceLawKind::linear;
+  throw InvalidInput("--force-law '" + std::string(name) + "': expected hertz, fpu or linear");
+}
+
+std::string to_string(ForceLawKind kind) {
+  switch (kind) {
+    case ForceLawKind::hertz: return "hertz";
+    case ForceLawKind::fpu: return "fpu";
+    case ForceLawKind::linear: return "linear";
+  }
+  return "?";
+}
+
+HertzLaw::HertzLaw(const Chain& chain)
+    : contact_(chain.contact), overlap_(chain.overlap), rest_(chain.bonds(), 0.0), rest_potential_(chain.bonds()) {
+  // The rest force through the kernel itself (rest_ = 0 here), so force(k, 0) == 0 exactly.
+  for (std::size_t k = 0; k < bonds(); ++k) rest_[k] = view().force(k, 0.0);
+  for (std::size_t k = 0; k < bonds(); ++k) {
+    const double d = overlap_[k];
+    rest_potential_[k] = 0.4 * contact_[k] * d * d * std::sqrt(d);
+  }
+}
+
+double HertzLaw::potential(std::size_t k, double x) const {
+  // φ = (2/5) A [δ]_+^{5/2} − (2/5) A Δ^{5/2} − F0 x, with F0 the rest force of this bond.
+  const double d = std::max(overlap_[k] + x, 0.0);
+  return 0.4 * contact_[k] * d * d * std::sqrt(d) - rest_potential_[k] - rest_[k] * x;
+}
+
+PolynomialLaw::PolynomialLaw(const Chain& chain, int degree) : precompression_(chain.precompression) {
+  if (!(chain.precompression > 0))
+    throw InvalidInput("--force-law " + std::string(degree == 1 ? "linear" : "fpu") +
+                       ": needs F0 > 0 (the sonic vacuum has no expansion about rest)");
+  const std::size_t n = chain.bonds();
+  c1_.resize(n);
+  c2_.assign(n, 0.0);
+  c3_.assign(n, 0.0);
+  for (std::size_t k = 0; k < n; ++k) {
+    const FpuCoefficients b = fpu_coefficients(chain.contact[k], chain.precompression);
+    c1_[k] = b.b1;
+    if (degree == 3) {
+      c2_[k] = b.b2;
+      c3_[k] = b.b3;
+    }
+  }
+}
+
+ForceLaw make_force_law(ForceLawKind kind, const Chain& chain) {
+  switch (kind) {
+    case ForceLawKind::hertz: return HertzLaw(chain);
+    case ForceLawKind::fpu: return PolynomialLaw(chain, 3);
+    case ForceLawKind::linear: return PolynomialLaw(chain, 1);
+  }
+  throw InvalidInput("unknown force law");
+}
+
+}  // namespace granular

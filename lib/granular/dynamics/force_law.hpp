@@ -1,0 +1,115 @@
+#pragma once
+// Bond force laws of the chain (SPEC §1, §3, §4): Hertz, its FPU cubic expansion, linear.
+//
+// Every law answers, for bond k and strain x = u_{k-1} − u_k (positive = more compression):
+//   force(k, x)        the force beyond the static one, f_k(x) − f_k(0); the equation of motion
+//                      is m_i a_i = f_i(x_i) − f_{i+1}(x_{i+1})
+//   stiffness(k, x)    f_k'(x), used by the SABA2C corrector
+//   potential(k, x)    φ_k(x) with φ_k(0) = 0 and φ_k' = force (the static force F0 x term
+//                      cancels between bonds, SPEC §4)
+//   contact_force(k,x) the full compressive contact force (static + dynamic), ≥ 0 for Hertz
+// The rest force f_k(0) is subtracted per bond with the very expression the kernel uses, so
+// the undisturbed chain is an exact equilibrium in floating point: quiescent particles stay
+// exactly at rest, which the active window relies on.
+//
+// Hot loops use `view()`: a trivially copyable struct of restrict pointers whose inline
+// functions the compiler vectorizes; the law object owns the arrays.
+#include <algorithm>
+#include <cmath>
+#include <concepts>
+#include <cstddef>
+#include <string>
+#include <string_view>
+#include <variant>
+#include <vector>
+
+#include "granular/model/chain.hpp"
+
+namespace granular {
+
+enum class ForceLawKind {
+  hertz,   ///< A [Δ + x]_+^{3/2}: beads may separate; F0 = 0 allowed
+  fpu,     ///< B1 x + B2 x² + B3 x³, the cubic expansion of Hertz about F0 > 0
+  linear,  ///< B1 x, the linearization about F0 > 0
+};
+ForceLawKind parse_force_law(std::string_view name);
+std::string to_string(ForceLawKind kind);
+
+class HertzLaw {
+ public:
+  explicit HertzLaw(const Chain& chain);
+
+  struct View {
+    const double* __restrict contact;
+    const double* __restrict overlap;
+    const double* __restrict rest;
+    double force(std::size_t k, double x) const {
+      const double d = std::max(overlap[k] + x, 0.0);  // [δ]_+ branch-free (maxsd)
+      return contact[k] * d * std::sqrt(d) - rest[k];
+    }
+    void force_stiffness(std::size_t k, double x, double& f, double& stiff) const {
+      const double d = std::max(overlap[k] + x, 0.0);
+      const double s = std::sqrt(d);
+      f = contact[k] * d * s - rest[k];
+      stiff = 1.5 * contact[k] * s;
+    }
+  };
+  View view() const { return {contact_.data(), overlap_.data(), rest_.data()}; }
+
+  double force(std::size_t k, double x) const { return view().force(k, x); }
+  double stiffness(std::size_t k, double x) const { return 1.5 * contact_[k] * std::sqrt(std::max(overlap_[k] + x, 0.0)); }
+  double potential(std::size_t k, double x) const;
+  double contact_force(std::size_t k, double x) const { return force(k, x) + rest_[k]; }
+  std::size_t bonds() const { return contact_.size(); }
+
+ private:
+  std::vector<double> contact_, overlap_, rest_, rest_potential_;
+};
+
+/// Polynomial bond force f(x) = c1 x + c2 x² + c3 x³ (c2 = c3 = 0: linear). Needs F0 > 0.
+class PolynomialLaw {
+ public:
+  PolynomialLaw(const Chain& chain, int degree);
+
+  struct View {
+    const double* __restrict c1;
+    const double* __restrict c2;
+    const double* __restrict c3;
+    double force(std::size_t k, double x) const { return x * (c1[k] + x * (c2[k] + x * c3[k])); }
+    void force_stiffness(std::size_t k, double x, double& f, double& stiff) const {
+      f = force(k, x);
+      stiff = c1[k] + x * (2 * c2[k] + x * 3 * c3[k]);
+    }
+  };
+  View view() const { return {c1_.data(), c2_.data(), c3_.data()}; }
+
+  double force(std::size_t k, double x) const { return view().force(k, x); }
+  double stiffness(std::size_t k, double x) const { return c1_[k] + x * (2 * c2_[k] + x * 3 * c3_[k]); }
+  double potential(std::size_t k, double x) const {
+    return x * x * (c1_[k] / 2 + x * (c2_[k] / 3 + x * c3_[k] / 4));
+  }
+  double contact_force(std::size_t k, double x) const { return precompression_ + force(k, x); }
+  std::size_t bonds() const { return c1_.size(); }
+
+ private:
+  std::vector<double> c1_, c2_, c3_;
+  double precompression_ = 0;
+};
+
+/// What an integrator needs from a force law.
+template <class L>
+concept BondForceLaw = requires(const L& law, std::size_t k, double x, double& out) {
+  { law.force(k, x) } -> std::same_as<double>;
+  { law.stiffness(k, x) } -> std::same_as<double>;
+  { law.potential(k, x) } -> std::same_as<double>;
+  { law.contact_force(k, x) } -> std::same_as<double>;
+  { law.bonds() } -> std::same_as<std::size_t>;
+  law.view().force_stiffness(k, x, out, out);
+};
+
+using ForceLaw = std::variant<HertzLaw, PolynomialLaw>;
+
+/// The law of `kind` on this chain's bonds. Throws InvalidInput for fpu/linear at F0 = 0.
+ForceLaw make_force_law(ForceLawKind kind, const Chain& chain);
+
+}  // namespace granular

@@ -1,0 +1,86 @@
+#include "granular/dynamics/observables.hpp"
+
+#include <algorithm>
+#include <variant>
+
+namespace granular {
+
+void site_energies(const ForceLaw& law, const Chain& chain, std::span<const double> u, std::span<const double> v,
+                   std::span<double> energy, std::size_t begin, std::size_t end) {
+  const std::size_t n = u.size();
+  end = std::min(end, n);
+  std::fill(energy.begin(), energy.end(), 0.0);
+  std::visit(
+      [&](const auto& l) {
+        // Bonds begin … end: bond begin and bond end may reach one bead outside, at rest.
+        double left = l.potential(begin, bond_strain(u, begin));
+        for (std::size_t i = begin; i < end; ++i) {
+          const double right = l.potential(i + 1, bond_strain(u, i + 1));
+          energy[i] = 0.5 * chain.mass[i] * v[i] * v[i] + 0.5 * (left + right);
+          left = right;
+        }
+        // Half of an edge bond's energy belongs to the (resting) bead just outside the range.
+        if (begin > 0) energy[begin - 1] += 0.5 * l.potential(begin, bond_strain(u, begin));
+        if (end < n) energy[end] += 0.5 * l.potential(end, bond_strain(u, end));
+      },
+      law);
+}
+
+std::vector<double> site_energies(const ForceLaw& law, const Chain& chain, const State& state) {
+  std::vector<double> e(state.size());
+  site_energies(law, chain, state.u, state.v, e);
+  return e;
+}
+
+double total_energy(const ForceLaw& law, const Chain& chain, const State& state) {
+  double h = 0;
+  for (double e : site_energies(law, chain, state)) h += e;
+  return h + unowned_wall_energy(law, state.u);
+}
+
+double unowned_wall_energy(const ForceLaw& law, std::span<const double> u) {
+  const std::size_t n = u.size();
+  return std::visit(
+      [&](const auto& l) { return 0.5 * (l.potential(0, bond_strain(u, 0)) + l.potential(n, bond_strain(u, n))); }, law);
+}
+
+EnergySpread energy_spread(std::span<const double> energy) {
+  EnergySpread s;
+  double weighted = 0, squares = 0;
+  for (std::size_t i = 0; i < energy.size(); ++i) {
+    s.total += energy[i];
+    weighted += static_cast<double>(i) * energy[i];
+    squares += energy[i] * energy[i];
+  }
+  if (!(s.total > 0)) return s;
+  s.centre = weighted / s.total;
+  double m2 = 0;
+  for (std::size_t i = 0; i < energy.size(); ++i) {
+    const double d = static_cast<double>(i) - s.centre;
+    m2 += d * d * energy[i];
+  }
+  s.m2 = m2 / s.total;
+  s.ipr = squares / (s.total * s.total);
+  return s;
+}
+
+void particle_forces(const ForceLaw& law, std::span<const double> u, std::span<double> force) {
+  std::visit(
+      [&](const auto& l) {
+        double left = l.contact_force(0, bond_strain(u, 0));
+        for (std::size_t i = 0; i < u.size(); ++i) {
+          const double right = l.contact_force(i + 1, bond_strain(u, i + 1));
+          force[i] = 0.5 * (left + right);
+          left = right;
+        }
+      },
+      law);
+}
+
+std::vector<double> particle_forces(const ForceLaw& law, const State& state) {
+  std::vector<double> f(state.size());
+  particle_forces(law, state.u, f);
+  return f;
+}
+
+}  // namespace granular

@@ -1,0 +1,65 @@
+#pragma once
+// One realization of energy spreading (SPEC §4): integrate a chain from an initial state to T,
+// measuring on a schedule of exact multiples of τ. A pure function of (chain, initial state,
+// config), so ensembles can run it per realization and reduce in index order.
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "granular/dynamics/force_law.hpp"
+#include "granular/dynamics/propagator.hpp"
+#include "granular/dynamics/state.hpp"
+
+namespace granular {
+
+enum class Sampling { logarithmic, uniform };
+Sampling parse_sampling(const std::string& name);
+
+struct SpreadingConfig {
+  ForceLawKind force_law = ForceLawKind::hertz;
+  std::string integrator = "saba2c";   ///< saba2c | saba2 | aba864 | srkn14a | reference
+  double duration = 1e-2;              ///< T [s], a whole number of steps
+  double time_step = 1e-6;             ///< τ [s]
+  std::size_t samples = 200;           ///< times of t, m̃2, P⁻¹, energy error (≥ 2)
+  Sampling sampling = Sampling::logarithmic;  ///< log: τ … T; uniform: 0 … T
+  ActiveWindow window;                 ///< ignored by the reference integrator
+  ReferenceTolerance reference{1e-15, 1e-15, 0.01e-6};  ///< step capped at 0.01 µs (contacts open)
+  std::vector<std::size_t> force_sites;  ///< 0-based beads whose force is recorded
+  std::size_t force_samples = 1000;      ///< uniform times of those forces
+  std::size_t map_samples = 0;           ///< uniform times of the energy map; 0 = none
+  std::size_t map_stride = 1;            ///< beads summed per map column
+  std::size_t spectrum_samples = 0;      ///< uniform samples of u for g(ν); 0 = none
+  double wall_warning = 1e-10;           ///< flag when (E_first + E_last)/H0 exceeds it
+};
+
+/// Throws InvalidInput naming the option (--T, --dt, --samples, …) on a bad config.
+void validate(const SpreadingConfig& config, std::size_t beads);
+
+struct SpreadingResult {
+  std::vector<double> t, m2, ipr, energy_error;  ///< on the sample times
+  double initial_energy = 0;
+  double max_energy_error = 0;
+  State final_state;
+  std::vector<double> final_energy;  ///< E_n(T)
+  std::vector<double> final_force;   ///< bead forces at T [N]
+  std::vector<double> force_t;       ///< times of the force series
+  std::vector<std::vector<double>> forces;  ///< [site][sample]
+  std::vector<double> map_t;         ///< times of the energy map rows
+  std::vector<double> map_energy;    ///< rows × map_columns, row-major
+  std::size_t map_columns = 0;
+  std::vector<double> spectrum_khz, spectrum;  ///< g(ν) normalized to max 1
+  double wall_energy = 0;            ///< max over samples of (E_first + E_last)/H0
+  bool reached_walls = false;        ///< wall_energy > config.wall_warning
+  std::uint64_t steps = 0, bond_updates = 0;
+  std::size_t window_begin = 0, window_end = 0;  ///< final active window
+  double seconds = 0;                ///< wall time of the integration
+};
+
+SpreadingResult run_spreading(const Chain& chain, const State& initial, const SpreadingConfig& config);
+
+/// Step numbers of `count` log-spaced (1 … total, duplicates removed) or uniform
+/// (0, stride, 2·stride …, stride = ⌊total/(count−1)⌋) samples.
+std::vector<std::uint64_t> sample_steps(std::uint64_t total, std::size_t count, Sampling sampling);
+
+}  // namespace granular

@@ -1,0 +1,41 @@
+#pragma once
+// Named test chains and helpers shared by the dynamics tests.
+#include <cmath>
+#include <cstdint>
+#include <span>
+
+#include "granular/dynamics/initial_conditions.hpp"
+#include "granular/dynamics/propagator.hpp"
+#include "granular/model/chain.hpp"
+#include "granular/model/disorder.hpp"
+
+namespace granular::fixtures {
+
+inline constexpr double r1 = 4.76e-3;  // SPEC §1 type-1 radius [m]
+
+inline Chain disordered(Disorder disorder, std::size_t n, double f0, std::uint64_t realization = 0,
+                        double xi = 0.5, double q = 0.5) {
+  return make_chain(radii_of(realization_configuration(disorder, q, n, 1, realization), r1, xi), f0);
+}
+inline Chain anderson(std::size_t n, double f0, std::uint64_t realization = 0) {
+  return disordered(Disorder::anderson, n, f0, realization);
+}
+inline Chain homogeneous(std::size_t n, double f0) { return disordered(Disorder::homogeneous, n, f0); }
+
+/// ‖a − b‖₂ / ‖b‖₂
+inline double relative_difference(std::span<const double> a, std::span<const double> b) {
+  double d = 0, s = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    d += (a[i] - b[i]) * (a[i] - b[i]);
+    s += b[i] * b[i];
+  }
+  return std::sqrt(d / s);
+}
+
+/// Runs `p` for `steps` steps and returns it, for one-line use in tests.
+inline std::unique_ptr<Propagator> run(std::unique_ptr<Propagator> p, std::size_t steps) {
+  p->advance(steps);
+  return p;
+}
+
+}  // namespace granular::fixtures

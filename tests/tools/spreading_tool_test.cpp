@@ -1,0 +1,135 @@
+// The spreading tool's contract (DESIGN.md): outputs and their columns, and bad input →
+// one line on stderr naming the option, exit code 2, no output file.
+#include <algorithm>
+#include <cstdio>
+#include <sys/wait.h>
+#include <unistd.h>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct ToolRun {
+  int code;
+  std::string err;
+};
+
+ToolRun run_spreading(const std::string& args, const fs::path& dir) {
+  const fs::path err = dir / "stderr.txt";
+  const std::string command = "cd '" + dir.string() + "' && '" + std::string(GRANULAR_BINARY_DIR) + "/spreading' " + args +
+                              " > /dev/null 2> '" + err.string() + "'";
+  const int status = std::system(command.c_str());
+  std::ifstream in(err);
+  std::stringstream text;
+  text << in.rdbuf();
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, text.str()};
+}
+
+fs::path fresh_dir(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / ("granular-spreading-" + name + "-" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+std::string first_line(const fs::path& file) {
+  std::ifstream in(file);
+  std::string line;
+  std::getline(in, line);
+  return line;
+}
+
+TEST(SpreadingTool, WritesEveryOutputWithTheContractColumns) {
+  const fs::path dir = fresh_dir("ok");
+  const ToolRun r = run_spreading("--N 201 --T 2.5e-3 --dt 1e-6 --samples 50 --fit 1e-3:2.5e-3 --output out --final-state final.csv "
+                              "--profile --forces-at 90,101,111 --force-samples 20 --energy-map map.h5 --map-samples 10 "
+                              "--spectrum spectrum.csv --spectrum-samples 100 --ic velocity --beta match",
+                              dir);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(first_line(dir / "out.csv"), "t,m2,ipr,energy_error");
+  EXPECT_EQ(first_line(dir / "final.csv"), "site,u,v,energy");
+  EXPECT_EQ(first_line(dir / "out-profile.csv"), "site,energy,force");
+  EXPECT_EQ(first_line(dir / "out-forces.csv"), "t,site,force");
+  EXPECT_EQ(first_line(dir / "spectrum.csv"), "freq_khz,g");
+  EXPECT_TRUE(fs::exists(dir / "map.h5"));
+  std::ifstream json(dir / "out.json");
+  const auto meta = nlohmann::json::parse(json);
+  for (const char* key : {"gamma", "gamma_err", "eta", "eta_err", "power_law", "parameters", "version", "wall_time_s"})
+    EXPECT_TRUE(meta.contains(key)) << key;
+  EXPECT_EQ(meta["parameters"]["site"], 101);
+  EXPECT_NEAR(meta["run"]["max_energy_error"].get<double>(), 0, 1e-4);
+  // N = 201 is too short for 2.5 ms at F0 = 10 N (the front runs Ω T/2 ≈ 142 > 100 beads each way): the tool warns.
+  EXPECT_NE(r.err.find("reached the walls"), std::string::npos) << r.err;
+  fs::remove_all(dir);
+}
+
+// Homogeneous: the front runs Ω T/2 ≈ 142 < 200 beads. (Light beads of a disordered chain
+// carry a faster precursor, so an Anderson chain of this length does warn.)
+TEST(SpreadingTool, NoWallWarningWhenTheChainIsLongEnough) {
+  const fs::path dir = fresh_dir("long-enough");
+  const ToolRun r = run_spreading("--disorder h --N 401 --T 2.5e-3 --samples 100 --fit 1e-3:2.5e-3 --output out", dir);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(r.err.find("reached the walls"), std::string::npos) << r.err;
+  fs::remove_all(dir);
+}
+
+TEST(SpreadingTool, ReadsAConfigurationFile) {
+  const fs::path dir = fresh_dir("config");
+  {
+    std::ofstream c(dir / "chain.txt");
+    c << "# a short dimer chain\n";
+    for (int i = 0; i < 60; ++i) c << (i % 2 ? "2\n" : "1\n");
+  }
+  const ToolRun r = run_spreading("--config chain.txt --xi 0.5 --T 2e-4 --samples 10 --output out --final-state f.csv", dir);
+  ASSERT_EQ(r.code, 0) << r.err;
+  std::ifstream in(dir / "f.csv");
+  std::string line;
+  int rows = -1;
+  while (std::getline(in, line)) ++rows;
+  EXPECT_EQ(rows, 60);
+  fs::remove_all(dir);
+}
+
+struct BadInput {
+  const char* args;
+  const char* names;  // what the message must mention
+};
+
+void PrintTo(const BadInput& b, std::ostream* os) { *os << b.args; }
+
+class SpreadingToolBadInput : public ::testing::TestWithParam<BadInput> {};
+
+TEST_P(SpreadingToolBadInput, ExitsWithCode2AndWritesNothing) {
+  const fs::path dir = fresh_dir("bad");
+  const ToolRun r = run_spreading(std::string("--N 101 --T 1e-4 --output out --final-state final.csv ") + GetParam().args, dir);
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_NE(r.err.find(GetParam().names), std::string::npos) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  for (const char* f : {"out.csv", "out.json", "final.csv"}) EXPECT_FALSE(fs::exists(dir / f)) << f;
+  fs::remove_all(dir);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Cases, SpreadingToolBadInput,
+    ::testing::Values(BadInput{"--dt 0", "--dt"}, BadInput{"--dt -1e-6", "--dt"}, BadInput{"--T 0", "--T"},
+                      BadInput{"--T -1", "--T"}, BadInput{"--T 1.5e-6 --dt 1e-6", "--T"}, BadInput{"--site 0", "--site"},
+                      BadInput{"--site 102", "--site"}, BadInput{"--alpha 5e-3", "--alpha"},
+                      BadInput{"--alpha 0", "--alpha"}, BadInput{"--disorder X", "disorder"}, BadInput{"--q 1.5", "q"},
+                      BadInput{"--xi 0", "xi"}, BadInput{"--N 1", "--N"}, BadInput{"--F0 -1", "--F0"},
+                      BadInput{"--config missing.txt", "missing.txt"}, BadInput{"--force-law fpu --F0 0", "--force-law"},
+                      BadInput{"--force-law cubic", "--force-law"}, BadInput{"--integrator rk4", "--integrator"},
+                      BadInput{"--realizations 2", "--realizations"}, BadInput{"--forces-at 0", "--forces-at"},
+                      BadInput{"--ic velocity --beta abc", "--beta"}, BadInput{"--ic push", "--ic"},
+                      BadInput{"--samples 1", "--samples"}, BadInput{"--samples 10 --fit 4e-5:1e-4", "--fit"}, BadInput{"--fit 2e-3:1e-3", "--fit"},
+                      BadInput{"--active-window maybe", "--active-window"}),
+    [](const auto& info) { return "case" + std::to_string(info.index); });
+
+}  // namespace

@@ -1,0 +1,265 @@
+// spreading: energy spreading from a single-site kick in one granular chain (SPEC §4).
+// Writes PREFIX.csv (t,m2,ipr,energy_error) and PREFIX.json (parameters, exponents, run info);
+// optionally the final state, the energy/force profile, force series, an HDF5 energy map and
+// the spectral density.
+#include <cstdio>
+#include <optional>
+#include <string>
+
+#include "common/metadata.hpp"
+#include "common/tool_main.hpp"
+#include "granular/analysis/power_law_fit.hpp"
+#include "granular/dynamics/initial_conditions.hpp"
+#include "granular/dynamics/spreading.hpp"
+#include "granular/io/atomic_file.hpp"
+#include "granular/io/csv_writer.hpp"
+#include "granular/io/hdf5_file.hpp"
+#include "granular/io/number_format.hpp"
+#include "granular/io/range_syntax.hpp"
+#include "granular/model/configuration_file.hpp"
+#include "granular/model/disorder.hpp"
+
+int main(int argc, char** argv) {
+  using namespace granular;
+  CLI::App app{"Energy spreading after a single-site kick in a (disordered) granular chain, integrated with SABA2C\n"
+               "or another scheme. Writes PREFIX.csv (t,m2,ipr,energy_error) and PREFIX.json. Beads count from 1.",
+               "spreading"};
+  tool::describe_common(app);
+  std::string disorder = "A", config_file, radii_file, ic = "displacement", beta_text = "match", force_law = "hertz";
+  std::string integrator = "saba2c", sampling = "log", fit_text = "4e-3:1e-2", output = "spreading", final_state;
+  std::string forces_at, energy_map, spectrum_file, active_window = "on";
+  long long n = 2501, seed = 1, realization = 0, realizations = 1, site = 0, samples = 200, force_samples = 1000;
+  long long map_samples = 500, map_stride = 1, spectrum_samples = 2000;
+  double xi = 0.5, q = 0.5, f0 = 10, r1 = 4.76e-3, alpha = 1e-7, duration = 1e-2, dt = 1e-6, kappa = 0.25;
+  double window_threshold = 1e-30, reference_max_step = 0.01e-6;
+  bool profile = false, quiet = false;
+  app.add_option("--disorder", disorder, "h | A | RDM1 | RDM2")->capture_default_str();
+  app.add_option("--xi", xi, "size ratio R2/R1 in (0,1]")->capture_default_str();
+  app.add_option("--q", q, "probability of type 1 (of dimer 11 / 12) in [0,1]")->capture_default_str();
+  app.add_option("--N", n, "beads (>= 2)")->capture_default_str();
+  app.add_option("--F0", f0, "static precompression [N], >= 0 (0: sonic vacuum, hertz only)")->capture_default_str();
+  app.add_option("--R1", r1, "radius of type-1 beads [m] (steel beads and walls)")->capture_default_str();
+  app.add_option("--seed", seed, "random seed")->capture_default_str();
+  app.add_option("--realization", realization, "which realization of the seed (the chain is a pure function of both)")->capture_default_str();
+  app.add_option("--realizations", realizations, "realizations to average; only 1 for now")->capture_default_str();
+  app.add_option("--config", config_file, "chain from a file: one bead type (1 or 2) per line, '#' comments");
+  app.add_option("--radii", radii_file, "chain from a file: one radius [m] per line, '#' comments");
+  app.add_option("--ic", ic, "initial condition: displacement | velocity")->capture_default_str();
+  app.add_option("--alpha", alpha, "displacement kick [m] (also what --beta match matches)")->capture_default_str();
+  app.add_option("--beta", beta_text, "velocity kick [m/s], or 'match': the energy of --alpha on this chain")->capture_default_str();
+  app.add_option("--site", site, "kicked bead, 1..N (default the centre, (N+1)/2)");
+  app.add_option("--T", duration, "duration [s], a whole number of --dt")->capture_default_str();
+  app.add_option("--dt", dt, "time step tau [s]")->capture_default_str();
+  app.add_option("--force-law", force_law, "hertz | fpu | linear")->capture_default_str();
+  app.add_option("--integrator", integrator, "saba2c | saba2 | aba864 | srkn14a | reference (Odeint RKF78)")->capture_default_str();
+  app.add_option("--samples", samples, "sample times of t,m2,ipr,energy_error")->capture_default_str();
+  app.add_option("--sampling", sampling, "log (tau..T) | uniform (0..T)")->capture_default_str();
+  app.add_option("--fit", fit_text, "fit range start:stop [s] for gamma (m2 ~ t^gamma) and eta (ipr ~ t^-eta)")->capture_default_str();
+  app.add_option("--kappa", kappa, "'not a power law' when |L_d - gamma| >= kappa after the fit start")->capture_default_str();
+  app.add_option("--output", output, "prefix: writes PREFIX.csv and PREFIX.json")->capture_default_str();
+  app.add_option("--final-state", final_state, "CSV of site,u,v,energy at T");
+  app.add_flag("--profile", profile, "also write PREFIX-profile.csv: site,energy,force at T");
+  app.add_option("--forces-at", forces_at, "beads (e.g. 601,631,661) whose force goes to PREFIX-forces.csv: t,site,force");
+  app.add_option("--force-samples", force_samples, "uniform times of the force series")->capture_default_str();
+  app.add_option("--energy-map", energy_map, "HDF5 file of E_n(t_k): datasets energy [time][column], t, site");
+  app.add_option("--map-samples", map_samples, "uniform times of the energy map")->capture_default_str();
+  app.add_option("--map-stride", map_stride, "beads summed into one map column")->capture_default_str();
+  app.add_option("--spectrum", spectrum_file, "CSV of the spectral density: freq_khz,g");
+  app.add_option("--spectrum-samples", spectrum_samples, "uniform samples of u_n(t) for the spectral density")->capture_default_str();
+  app.add_option("--active-window", active_window, "on | off: integrate only where the wave has arrived")->capture_default_str();
+  app.add_option("--window-threshold", window_threshold, "relative kinetic energy that grows the window")->capture_default_str();
+  app.add_option("--reference-max-step", reference_max_step, "largest step of --integrator reference [s], 0 = none")->capture_default_str();
+  app.add_flag("--quiet", quiet, "no warnings on stderr");
+
+  return tool::run(app, argc, argv, [&] {
+    tool::Metadata meta("spreading", argc, argv);
+    if (realizations != 1) throw InvalidInput("--realizations " + std::to_string(realizations) + ": only 1 is supported so far");
+    if (n < 2) throw InvalidInput("--N " + std::to_string(n) + ": a chain needs at least 2 beads");
+    if (seed < 0 || realization < 0) throw InvalidInput("--seed/--realization: must be >= 0");
+    if (!config_file.empty() && !radii_file.empty()) throw InvalidInput("--config and --radii: give one of them");
+    if (ic != "displacement" && ic != "velocity") throw InvalidInput("--ic '" + ic + "': expected displacement or velocity");
+    if (active_window != "on" && active_window != "off") throw InvalidInput("--active-window '" + active_window + "': on or off");
+    for (auto [name, value] : {std::pair{"--samples", samples}, {"--force-samples", force_samples},
+                               {"--map-samples", map_samples}, {"--map-stride", map_stride},
+                               {"--spectrum-samples", spectrum_samples}})
+      if (value < 1) throw InvalidInput(std::string(name) + " " + std::to_string(value) + ": must be >= 1");
+    if (!(r1 > 0) || !std::isfinite(r1)) throw InvalidInput("--R1 " + format_number(r1) + ": must be finite and > 0");
+
+    // The chain.
+    std::vector<double> radii;
+    std::string chain_source;
+    if (!radii_file.empty()) {
+      radii = read_radii_file(radii_file);
+      chain_source = "radii file " + radii_file;
+    } else {
+      Configuration types;
+      if (!config_file.empty()) {
+        types = read_configuration_file(config_file);
+        chain_source = "configuration file " + config_file;
+      } else {
+        validate_probability(q);
+        types = realization_configuration(parse_disorder(disorder), q, static_cast<std::size_t>(n),
+                                          static_cast<std::uint64_t>(seed), static_cast<std::uint64_t>(realization));
+        chain_source = "disorder " + to_string(parse_disorder(disorder));
+      }
+      validate_size_ratio(xi);
+      radii = radii_of(types, r1, xi);
+    }
+    if (!std::isfinite(f0) || f0 < 0) throw InvalidInput("--F0 " + format_number(f0) + ": must be finite and >= 0");
+    const Chain chain = make_chain(radii, f0);
+    const std::size_t beads = chain.size();
+
+    SpreadingConfig config;
+    config.force_law = parse_force_law(force_law);
+    config.integrator = integrator;
+    if (integrator != "reference") parse_scheme(integrator);
+    config.duration = duration;
+    config.time_step = dt;
+    config.samples = static_cast<std::size_t>(samples);
+    config.sampling = parse_sampling(sampling);
+    config.window.enabled = active_window == "on";
+    config.window.threshold = window_threshold;
+    if (!(reference_max_step >= 0)) throw InvalidInput("--reference-max-step: must be >= 0");
+    config.reference.max_step = reference_max_step;
+    if (!forces_at.empty())
+      for (long s : parse_integer_list(forces_at, "--forces-at")) {
+        if (s < 1 || static_cast<std::size_t>(s) > beads)
+          throw InvalidInput("--forces-at " + std::to_string(s) + ": outside the chain of " + std::to_string(beads) + " beads");
+        config.force_sites.push_back(static_cast<std::size_t>(s - 1));
+      }
+    config.force_samples = static_cast<std::size_t>(force_samples);
+    config.map_samples = energy_map.empty() ? 0 : static_cast<std::size_t>(map_samples);
+    config.map_stride = static_cast<std::size_t>(map_stride);
+    config.spectrum_samples = spectrum_file.empty() ? 0 : static_cast<std::size_t>(spectrum_samples);
+    validate(config, beads);
+
+    std::string fit_list = fit_text;  // start:stop is two numbers here, not a range to expand
+    for (char& c : fit_list)
+      if (c == ':') c = ',';
+    const std::vector<double> fit_range = parse_number_list(fit_list, "--fit", 0, 2);
+    if (fit_range.size() != 2 || !(fit_range[0] > 0) || !(fit_range[1] > fit_range[0]))
+      throw InvalidInput("--fit '" + fit_text + "': expected start:stop with 0 < start < stop");
+    if (!(kappa > 0)) throw InvalidInput("--kappa: must be > 0");
+
+    const bool site_given = app.count("--site") > 0;
+    if (site_given && (site < 1 || site > static_cast<long long>(beads)))
+      throw InvalidInput("--site " + std::to_string(site) + ": outside the chain of " + std::to_string(beads) + " beads (1..N)");
+    const std::size_t kicked = site_given ? static_cast<std::size_t>(site - 1) : centre_site(beads);
+    const ForceLaw law = make_force_law(config.force_law, chain);
+    State initial;
+    double beta = 0;
+    if (ic == "displacement") {
+      initial = displacement_kick(chain, kicked, alpha);
+    } else {
+      if (beta_text == "match") {
+        beta = matched_velocity(law, chain, kicked, alpha);
+      } else {
+        const auto b = parse_number_list(beta_text, "--beta", 0, 1);
+        if (b.size() != 1) throw InvalidInput("--beta '" + beta_text + "': one number or 'match'");
+        beta = b[0];
+      }
+      initial = velocity_kick(chain, kicked, beta);
+    }
+
+    PowerLawFitConfig fit_config;
+    fit_config.t_begin = fit_range[0];
+    fit_config.t_end = fit_range[1];
+    fit_config.kappa = kappa;
+    const bool fit_possible = fit_range[1] <= duration * (1 + 1e-12);
+    if (fit_possible) {
+      // A fit that cannot work is bad input, found before the run rather than after it.
+      std::vector<double> times;
+      const auto steps = sample_steps(static_cast<std::uint64_t>(std::llround(duration / dt)), config.samples, config.sampling);
+      for (auto s : steps) times.push_back(static_cast<double>(s) * dt);
+      fit_power_law(times, std::vector<double>(times.size(), 1.0), fit_config);
+    }
+
+    // Every output is checked before the run and written only after it.
+    const std::string csv_path = output + ".csv", json_path = output + ".json";
+    const std::string profile_path = output + "-profile.csv", forces_path = output + "-forces.csv";
+    for (const std::string* path : std::initializer_list<const std::string*>{&csv_path, &json_path, &final_state, &energy_map, &spectrum_file})
+      if (!path->empty()) check_writable(*path);
+    if (profile) check_writable(profile_path);
+    if (!config.force_sites.empty()) check_writable(forces_path);
+
+    const SpreadingResult r = run_spreading(chain, initial, config);
+
+    nlohmann::json fit = nullptr;
+    if (fit_possible) {
+      const PowerLawFit g = fit_power_law(r.t, r.m2, fit_config);
+      std::vector<double> inverse_ipr;
+      for (double p : r.ipr) inverse_ipr.push_back(1 / p);  // P⁻¹ ∝ t^−η  ⇔  1/P⁻¹ ∝ t^η
+      const PowerLawFit e = fit_power_law(r.t, inverse_ipr, fit_config);
+      fit = {{"gamma", g.slope}, {"gamma_err", g.slope_error}, {"eta", e.slope}, {"eta_err", e.slope_error},
+             {"power_law", g.power_law}, {"max_log_derivative_deviation", g.max_deviation}};
+    } else if (!quiet) {
+      std::fprintf(stderr, "spreading: note: --fit %s reaches beyond --T; no exponents fitted\n", fit_text.c_str());
+    }
+    if (r.reached_walls && !quiet)
+      std::fprintf(stderr, "spreading: warning: energy reached the walls ((E_1 + E_N)/H0 up to %s): the chain is too short for T\n",
+                   format_number(r.wall_energy).c_str());
+
+    AtomicFile csv(csv_path);
+    {
+      CsvWriter table(csv.stream(), {"t", "m2", "ipr", "energy_error"});
+      for (std::size_t i = 0; i < r.t.size(); ++i) table.row(r.t[i], r.m2[i], r.ipr[i], r.energy_error[i]);
+    }
+    std::optional<AtomicFile> state_file, profile_file, forces_file, spectrum_out;
+    if (!final_state.empty()) {
+      state_file.emplace(final_state);
+      CsvWriter t(state_file->stream(), {"site", "u", "v", "energy"});
+      for (std::size_t i = 0; i < beads; ++i) t.row(i + 1, r.final_state.u[i], r.final_state.v[i], r.final_energy[i]);
+    }
+    if (profile) {
+      profile_file.emplace(profile_path);
+      CsvWriter t(profile_file->stream(), {"site", "energy", "force"});
+      for (std::size_t i = 0; i < beads; ++i) t.row(i + 1, r.final_energy[i], r.final_force[i]);
+    }
+    if (!config.force_sites.empty()) {
+      forces_file.emplace(forces_path);
+      CsvWriter t(forces_file->stream(), {"t", "site", "force"});
+      for (std::size_t k = 0; k < r.force_t.size(); ++k)
+        for (std::size_t j = 0; j < config.force_sites.size(); ++j)
+          t.row(r.force_t[k], config.force_sites[j] + 1, r.forces[j][k]);
+    }
+    if (!spectrum_file.empty()) {
+      spectrum_out.emplace(spectrum_file);
+      CsvWriter t(spectrum_out->stream(), {"freq_khz", "g"});
+      for (std::size_t j = 0; j < r.spectrum.size(); ++j) t.row(r.spectrum_khz[j], r.spectrum[j]);
+    }
+    if (!energy_map.empty()) {
+      std::vector<double> sites;
+      for (std::size_t c = 0; c < r.map_columns; ++c) sites.push_back(static_cast<double>(c * config.map_stride + 1));
+      write_hdf5_atomically(energy_map, {{"energy", {r.map_t.size(), r.map_columns}, r.map_energy.data()},
+                                         {"t", {r.map_t.size()}, r.map_t.data()},
+                                         {"site", {sites.size()}, sites.data()}});
+    }
+
+    meta["parameters"] = {
+        {"chain", chain_source}, {"N", beads}, {"xi", xi}, {"q", q}, {"F0_N", f0}, {"R1_m", r1},
+        {"seed", seed}, {"realization", realization}, {"realizations", realizations},
+        {"material", {{"E_Pa", steel.young}, {"nu", steel.poisson}, {"rho_kg_m3", steel.density}}},
+        {"walls", "flat, same material as the beads"},
+        {"ic", ic}, {"site", kicked + 1}, {"alpha_m", ic == "displacement" ? alpha : 0.0}, {"beta_m_s", beta},
+        {"beta_matched", ic == "velocity" && beta_text == "match"},
+        {"T_s", duration}, {"dt_s", dt}, {"force_law", to_string(config.force_law)}, {"integrator", integrator},
+        {"samples", samples}, {"sampling", sampling}, {"fit_s", fit_range}, {"kappa", kappa},
+        {"active_window", active_window}, {"window_threshold", window_threshold},
+        {"reference_max_step_s", reference_max_step}};
+    if (fit.is_null()) {
+      for (const char* key : {"gamma", "gamma_err", "eta", "eta_err", "power_law"}) meta[key] = nullptr;
+    } else {
+      for (const char* key : {"gamma", "gamma_err", "eta", "eta_err", "power_law"}) meta[key] = fit[key];
+      meta["max_log_derivative_deviation"] = fit["max_log_derivative_deviation"];
+    }
+    meta["run"] = {{"initial_energy_J", r.initial_energy}, {"max_energy_error", r.max_energy_error},
+                   {"steps", r.steps}, {"bond_updates", r.bond_updates}, {"integration_s", r.seconds},
+                   {"window_final", {r.window_begin + 1, r.window_end}}, {"wall_energy", r.wall_energy},
+                   {"reached_walls", r.reached_walls}};
+    meta["output"] = csv_path;
+    csv.commit();
+    for (auto* f : {&state_file, &profile_file, &forces_file, &spectrum_out})
+      if (*f) (*f)->commit();
+    meta.write(json_path);
+  });
+}
