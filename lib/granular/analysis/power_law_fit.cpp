@@ -63,4 +63,12 @@ PowerLawVerdict judge_power_law(const std::vector<double>& t, const std::vector<
   return v;
 }
 
+PowerLawAnalysis analyze_power_law(const std::vector<double>& t, const std::vector<double>& y, double lo, double hi,
+                                   const PowerLawCriterion& criterion) {
+  PowerLawAnalysis a;
+  a.exponent = windowed_exponent(t, y, lo, hi);
+  a.verdict = judge_power_law(t, y, a.exponent.value, criterion);
+  return a;
+}
+
 }  // namespace granular

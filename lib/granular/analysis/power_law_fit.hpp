@@ -45,4 +45,12 @@ struct PowerLawVerdict {
 PowerLawVerdict judge_power_law(const std::vector<double>& t, const std::vector<double>& y, double gamma,
                                 const PowerLawCriterion& criterion);
 
+/// Both at once: the windowed exponent on [lo, hi] and the verdict on it.
+struct PowerLawAnalysis {
+  ExponentEstimate exponent;
+  PowerLawVerdict verdict;
+};
+PowerLawAnalysis analyze_power_law(const std::vector<double>& t, const std::vector<double>& y, double lo, double hi,
+                                   const PowerLawCriterion& criterion);
+
 }  // namespace granular
