@@ -161,17 +161,16 @@ int main(int argc, char** argv) {
       initial = velocity_kick(chain, kicked, beta);
     }
 
-    PowerLawFitConfig fit_config;
-    fit_config.t_begin = fit_range[0];
-    fit_config.t_end = fit_range[1];
-    fit_config.kappa = kappa;
+    PowerLawCriterion criterion;
+    criterion.kappa = kappa;
+    criterion.t_start = fit_range[0];
     const bool fit_possible = fit_range[1] <= duration * (1 + 1e-12);
     if (fit_possible) {
       // A fit that cannot work is bad input, found before the run rather than after it.
       std::vector<double> times;
       const auto steps = sample_steps(static_cast<std::uint64_t>(std::llround(duration / dt)), config.samples, config.sampling);
       for (auto s : steps) times.push_back(static_cast<double>(s) * dt);
-      fit_power_law(times, std::vector<double>(times.size(), 1.0), fit_config);
+      windowed_exponent(times, std::vector<double>(times.size(), 1.0), fit_range[0], fit_range[1]);
     }
 
     // Every output is checked before the run and written only after it.
@@ -186,12 +185,13 @@ int main(int argc, char** argv) {
 
     nlohmann::json fit = nullptr;
     if (fit_possible) {
-      const PowerLawFit g = fit_power_law(r.t, r.m2, fit_config);
+      const PowerLawAnalysis g = analyze_power_law(r.t, r.m2, fit_range[0], fit_range[1], criterion);
       std::vector<double> inverse_ipr;
       for (double p : r.ipr) inverse_ipr.push_back(1 / p);  // P⁻¹ ∝ t^−η  ⇔  1/P⁻¹ ∝ t^η
-      const PowerLawFit e = fit_power_law(r.t, inverse_ipr, fit_config);
-      fit = {{"gamma", g.slope}, {"gamma_err", g.slope_error}, {"eta", e.slope}, {"eta_err", e.slope_error},
-             {"power_law", g.power_law}, {"max_log_derivative_deviation", g.max_deviation}};
+      const PowerLawAnalysis e = analyze_power_law(r.t, inverse_ipr, fit_range[0], fit_range[1], criterion);
+      fit = {{"gamma", g.exponent.value}, {"gamma_err", g.exponent.error}, {"eta", e.exponent.value},
+             {"eta_err", e.exponent.error}, {"power_law", g.verdict.power_law},
+             {"max_log_derivative_deviation", g.verdict.worst_deviation}};
     } else if (!quiet) {
       std::fprintf(stderr, "spreading: note: --fit %s reaches beyond --T; no exponents fitted\n", fit_text.c_str());
     }
