@@ -176,6 +176,8 @@ CheckpointRecords CheckpointLog::load(const std::string& base, const std::string
   return all;
 }
 
+bool CheckpointLog::exists(const std::string& base) { return !family(base).empty(); }
+
 void CheckpointLog::remove_all(const std::string& base) {
   for (const std::string& path : family(base)) std::filesystem::remove(path);
 }

@@ -34,6 +34,9 @@ class CheckpointLog {
   /// not a checkpoint, or when it was made with other parameters (naming the first that differs).
   static CheckpointRecords load(const std::string& base, const std::string& parameters);
 
+  /// Whether `base` or any `base.rank<k>` exists.
+  static bool exists(const std::string& base);
+
   /// The log file of an MPI rank: `base` for rank 0, `base.rank<k>` otherwise.
   static std::string rank_path(const std::string& base, int rank);
 

@@ -80,4 +80,21 @@ std::vector<long> parse_integer_list(const std::string& text, const std::string&
   return values;
 }
 
+Interval parse_interval(const std::string& text, const std::string& option) {
+  const auto parts = split(text, ':');
+  if (parts.size() != 2) throw InvalidInput(option + " '" + text + "': expected start:stop");
+  const Interval i{parse_finite(parts[0], option), parse_finite(parts[1], option)};
+  if (!(i.start < i.stop)) throw InvalidInput(option + " '" + text + "': start must be below stop");
+  return i;
+}
+
+std::vector<std::string> parse_word_list(const std::string& text, const std::string& option) {
+  std::vector<std::string> words;
+  for (auto token : split(text, ',')) {
+    if (token.empty()) throw InvalidInput(option + " '" + text + "': empty item in the list");
+    words.emplace_back(token);
+  }
+  return words;
+}
+
 }  // namespace granular

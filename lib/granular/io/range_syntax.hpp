@@ -15,4 +15,13 @@ std::vector<double> parse_number_list(const std::string& text, const std::string
 /// Parses a comma list of positive integers (e.g. particle numbers).
 std::vector<long> parse_integer_list(const std::string& text, const std::string& option);
 
+/// An interval "start:stop" with finite start < stop (e.g. --fit 4e-3:1e-2).
+struct Interval {
+  double start, stop;
+};
+Interval parse_interval(const std::string& text, const std::string& option);
+
+/// Splits a comma list of words ("h,A,RDM1"); empty items are an error naming the option.
+std::vector<std::string> parse_word_list(const std::string& text, const std::string& option);
+
 }  // namespace granular

@@ -1,0 +1,39 @@
+#pragma once
+// The paper's whole protocol (SPEC §4): transport exponents γ (m̃2 ∝ t^γ) and η (P⁻¹ ∝ t^−η)
+// for every chain kind × precompression × kick, each an ensemble (transport_study.hpp).
+// Homogeneous chains are deterministic, so they run one realization whatever R is.
+#include <string>
+#include <vector>
+
+#include "granular/study/transport_study.hpp"
+
+namespace granular {
+
+struct ExponentTableConfig {
+  std::vector<Disorder> chains{Disorder::homogeneous, Disorder::anderson, Disorder::rdm1, Disorder::rdm2};
+  std::vector<double> precompressions{10, 0.5, 0.1, 0.01, 0};  ///< F0 [N]
+  std::vector<Kick> kicks{Kick::displacement, Kick::velocity};
+  TransportCase base;                        ///< everything else (N, T, τ, ξ, q, R, seed, …)
+  std::vector<double> profile_precompressions{10, 0.1, 0};  ///< F0s whose E_n(T) is averaged
+  std::size_t profile_realizations = 100;    ///< the paper averages profiles over 100
+};
+
+struct ExponentCell {
+  TransportCase definition;
+  TransportSummary summary;
+};
+
+struct ExponentRunOptions {
+  int threads = 0;
+  std::string checkpoint_prefix;  ///< case i logs to <prefix>.<i>; empty: no checkpoints
+  bool resume = false;
+  int progress = -1;              ///< ProgressMeter's enabled flag
+};
+
+/// The cases in table order (kick-major, then F0, then chain).
+std::vector<TransportCase> exponent_cases(const ExponentTableConfig& config);
+
+/// Runs every case; under mpirun only rank 0 gets filled summaries.
+std::vector<ExponentCell> run_exponent_table(const ExponentTableConfig& config, const ExponentRunOptions& options);
+
+}  // namespace granular

@@ -1,0 +1,82 @@
+#include "granular/study/transport_study.hpp"
+
+#include <gtest/gtest.h>
+
+#include "granular/error.hpp"
+#include "granular/study/exponent_table.hpp"
+
+namespace granular {
+namespace {
+
+TransportCase small_case(Disorder d, double f0) {
+  TransportCase c;
+  c.disorder = d;
+  c.n = 301;
+  c.site = 150;
+  c.precompression = f0;
+  c.realizations = 6;
+  c.dynamics.duration = 1e-3;
+  c.dynamics.samples = 40;
+  c.fit_begin = 4e-4;
+  c.fit_end = 1e-3;
+  c.criterion.t_start = 4e-4;
+  return c;
+}
+
+TEST(TransportStudy, BitIdenticalForOneAndTwoThreads) {
+  const TransportCase c = small_case(Disorder::anderson, 0.1);
+  const TransportSummary one = run_transport_study(c, {1, "", false, nullptr});
+  const TransportSummary two = run_transport_study(c, {2, "", false, nullptr});
+  EXPECT_EQ(one.m2.mean, two.m2.mean);
+  EXPECT_EQ(one.ipr.mean, two.ipr.mean);
+  EXPECT_EQ(one.m2.standard_error, two.m2.standard_error);
+  EXPECT_EQ(one.profile.mean, two.profile.mean);
+  EXPECT_EQ(one.gamma.exponent.value, two.gamma.exponent.value);
+  EXPECT_EQ(one.realizations, 6u);
+  EXPECT_EQ(one.profile.mean.size(), 301u);
+}
+
+TEST(TransportStudy, HomogeneousPrecompressedEnsembleIsBallistic) {
+  // SPEC §4: homogeneous linear-like chains spread ballistically, γ = 2. N = 1401 keeps the
+  // front off the walls for 10 ms (Ω T ≈ 1137).
+  TransportCase c;
+  c.disorder = Disorder::homogeneous;
+  c.n = 1401;
+  c.site = 700;
+  c.realizations = 2;
+  c.dynamics.samples = 100;
+  const TransportSummary s = run_transport_study(c, {0, "", false, nullptr});
+  EXPECT_NEAR(s.gamma.exponent.value, 2.0, 0.05);
+  EXPECT_TRUE(s.gamma.verdict.power_law) << "worst |L_d - γ| = " << s.gamma.verdict.worst_deviation;
+  EXPECT_EQ(s.reached_walls, 0u);
+  EXPECT_EQ(s.m2.standard_error[50], 0.0);  // identical realizations
+}
+
+TEST(TransportStudy, RejectsImpossibleCasesBeforeRunning) {
+  TransportCase c = small_case(Disorder::rdm1, 10);
+  c.site = 301;
+  EXPECT_THROW(run_transport_study(c, {}), InvalidInput);
+  c = small_case(Disorder::rdm1, 10);
+  c.fit_end = 2e-3;  // beyond T
+  EXPECT_THROW(run_transport_study(c, {}), InvalidInput);
+  c = small_case(Disorder::rdm1, -1);
+  EXPECT_THROW(run_transport_study(c, {}), InvalidInput);
+}
+
+TEST(ExponentTable, CasesInTableOrderWithOneHomogeneousRealization) {
+  ExponentTableConfig config;
+  config.base.realizations = 500;
+  const auto cases = exponent_cases(config);
+  ASSERT_EQ(cases.size(), 2u * 5u * 4u);
+  std::size_t runs = 0;
+  for (const auto& c : cases) runs += c.realizations;
+  EXPECT_EQ(runs, 2u * 5u * (3u * 500u + 1u));  // the 15,000 runs, plus 10 homogeneous ones
+  EXPECT_EQ(cases[0].disorder, Disorder::homogeneous);
+  EXPECT_EQ(cases[0].kick, Kick::displacement);
+  EXPECT_EQ(cases[0].profile_realizations, 1u);
+  EXPECT_EQ(cases[1].profile_realizations, 100u);  // F0 = 10: profile kept
+  EXPECT_EQ(cases[4].profile_realizations, 0u);    // F0 = 0.5: no profile
+}
+
+}  // namespace
+}  // namespace granular

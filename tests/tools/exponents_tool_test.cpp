@@ -1,0 +1,104 @@
+// exponents end to end: thread and MPI-rank invariance, resume after a kill, bad input.
+#include <signal.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <thread>
+
+#include <gtest/gtest.h>
+
+#include "tool_runner.hpp"
+
+namespace granular::testing {
+namespace {
+
+const std::string job = "--N 201 --T 1e-3 --fit 4e-4:1e-3 --samples 30 --F0 10,0.1 --chains h,A,RDM2 --quiet";
+
+std::string outputs(const std::string& prefix) {
+  return read_file(prefix + ".csv") + read_file(prefix + "-curves.csv") + read_file(prefix + "-profiles.csv");
+}
+
+TEST(ExponentsTool, ByteIdenticalForThreadCounts) {
+  const std::string dir = scratch_folder("exp-threads");
+  ASSERT_EQ(run_tool("exponents", job + " --realizations 6 --threads 1 --output " + dir + "/t1").exit_code, 0);
+  ASSERT_EQ(run_tool("exponents", job + " --realizations 6 --threads 2 --output " + dir + "/t2").exit_code, 0);
+  const std::string one = outputs(dir + "/t1");
+  EXPECT_GT(one.size(), 1000u);
+  EXPECT_EQ(one, outputs(dir + "/t2"));
+  EXPECT_FALSE(std::filesystem::exists(dir + "/t1.checkpoint.0")) << "checkpoints must go once the outputs exist";
+  std::filesystem::remove_all(dir);
+}
+
+#ifdef GRANULAR_MPIEXEC_PATH
+TEST(ExponentsTool, ByteIdenticalForOneAndTwoMpiRanks) {
+  const std::string dir = scratch_folder("exp-mpi");
+  const std::string mpirun = std::string(GRANULAR_MPIEXEC_PATH) + " --oversubscribe -np ";
+  auto run = [&](int ranks, const std::string& prefix) {
+    const std::string command = "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 " + mpirun +
+                                std::to_string(ranks) + " " + tool_path("exponents") + " " + job +
+                                " --realizations 6 --threads 1 --output " + prefix + " > /dev/null 2>&1";
+    return std::system(command.c_str());
+  };
+  ASSERT_EQ(run(1, dir + "/np1"), 0);
+  ASSERT_EQ(run(2, dir + "/np2"), 0);
+  EXPECT_EQ(outputs(dir + "/np1"), outputs(dir + "/np2"));
+  ASSERT_EQ(run_tool("exponents", job + " --realizations 6 --output " + dir + "/plain").exit_code, 0);
+  EXPECT_EQ(outputs(dir + "/np1"), outputs(dir + "/plain"));
+  std::filesystem::remove_all(dir);
+}
+#endif
+
+TEST(ExponentsTool, KilledRunResumesToTheSameBytes) {
+  const std::string dir = scratch_folder("exp-resume");
+  const std::string args = job + " --realizations 40 --threads 2";
+  ASSERT_EQ(run_tool("exponents", args + " --output " + dir + "/whole").exit_code, 0);
+
+  // Start the same run, kill -9 it once some realizations are logged, then resume.
+  const std::string prefix = dir + "/cut";
+  const pid_t child = fork();
+  if (child == 0) {
+    const std::string command = "exec " + tool_path("exponents") + " " + args + " --output " + prefix + " >/dev/null 2>&1";
+    execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  bool logged = false;
+  for (int i = 0; i < 2000 && !logged; ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    const std::string log = read_file(prefix + ".checkpoint.1");  // case 1: Anderson, F0 = 10
+    logged = std::count(log.begin(), log.end(), '\n') >= 5;
+  }
+  kill(child, SIGKILL);
+  int status = 0;
+  waitpid(child, &status, 0);
+  ASSERT_TRUE(logged) << "the run never logged 5 realizations";
+  ASSERT_TRUE(WIFSIGNALED(status)) << "the run finished before it could be killed; make it longer";
+  EXPECT_FALSE(std::filesystem::exists(prefix + ".csv")) << "a killed run must leave no output";
+
+  const ToolResult resumed = run_tool("exponents", args + " --resume --output " + prefix);
+  ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
+  EXPECT_EQ(outputs(prefix), outputs(dir + "/whole"));
+
+  // A resume with other parameters is refused, naming the parameter.
+  ASSERT_EQ(run_tool("exponents", job + " --realizations 40 --output " + dir + "/other").exit_code, 0);
+  {
+    std::ofstream(dir + "/other.checkpoint.1") << read_file(prefix + ".csv");  // not a checkpoint
+  }
+  const ToolResult foreign = run_tool("exponents", job + " --realizations 40 --resume --output " + dir + "/other");
+  EXPECT_EQ(foreign.exit_code, 2) << foreign.err;
+  std::filesystem::remove_all(dir);
+}
+
+TEST(ExponentsTool, RefusesACheckpointOfOtherParameters) {
+  const std::string dir = scratch_folder("exp-params");
+  {
+    std::ofstream(dir + "/x.checkpoint.0") << "granular-checkpoint 1 {\"F0_N\":99}\n";
+  }
+  const ToolResult r = run_tool("exponents", job + " --realizations 2 --resume --output " + dir + "/x");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("different parameters"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir + "/x.csv"));
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace granular::testing
