@@ -18,11 +18,17 @@
 #include "granular/io/hdf5_file.hpp"
 #include "granular/io/number_format.hpp"
 #include "granular/io/range_syntax.hpp"
+#include "granular/ensemble/checkpoint_log.hpp"
+#include "granular/ensemble/mpi_context.hpp"
+#include "granular/study/transport_study.hpp"
 
 int main(int argc, char** argv) {
   using namespace granular;
   CLI::App app{"Energy spreading after a single-site kick in a (disordered) granular chain, integrated with SABA2C\n"
-               "or another scheme. Writes PREFIX.csv (t,m2,ipr,energy_error) and PREFIX.json. Beads count from 1.",
+               "or another scheme. Writes PREFIX.csv (t,m2,ipr,energy_error) and PREFIX.json. Beads count from 1.\n"
+               "With --realizations R > 1: means over realizations 0..R-1 of --seed (PREFIX-sem.csv: standard errors;\n"
+               "--profile: the averaged profile), checkpointed in PREFIX.checkpoint; --resume continues a killed run.\n"
+               "--final-state, --forces-at, --energy-map and --spectrum always describe realization --realization.",
                "spreading"};
   tool::describe_common(app);
   tool::ChainOptions chain_options;
@@ -35,9 +41,12 @@ int main(int argc, char** argv) {
   double alpha = 1e-7, duration = 1e-2, dt = 1e-6;
   PowerLawCriterion criterion;
   double window_threshold = 1e-30, reference_max_step = 0.01e-6;
-  bool profile = false, quiet = false;
+  bool profile = false, quiet = false, resume = false;
+  int threads = 0;
   tool::add_chain_options(app, chain_options);
-  app.add_option("--realizations", realizations, "realizations to average; only 1 for now")->capture_default_str();
+  app.add_option("--realizations", realizations, "realizations to average (ensemble means and exponents)")->capture_default_str();
+  app.add_option("--threads", threads, "threads for the realizations (0 = all cores); results do not depend on it")->capture_default_str();
+  app.add_flag("--resume", resume, "continue an interrupted --realizations run with the same parameters");
   app.add_option("--ic", ic, "initial condition: displacement | velocity")->capture_default_str();
   app.add_option("--alpha", alpha, "displacement kick [m] (also what --beta match matches)")->capture_default_str();
   app.add_option("--beta", beta_text, "velocity kick [m/s], or 'match': the energy of --alpha on this chain")->capture_default_str();
@@ -63,11 +72,15 @@ int main(int argc, char** argv) {
   app.add_option("--active-window", active_window, "on | off: integrate only where the wave has arrived")->capture_default_str();
   app.add_option("--window-threshold", window_threshold, "relative kinetic energy that grows the window")->capture_default_str();
   app.add_option("--reference-max-step", reference_max_step, "largest step of --integrator reference [s], 0 = none")->capture_default_str();
-  app.add_flag("--quiet", quiet, "no warnings on stderr");
+  app.add_flag("--quiet", quiet, "no warnings or progress line on stderr");
 
   return tool::run(app, argc, argv, [&] {
     tool::Metadata meta("spreading", argc, argv);
-    if (realizations != 1) throw InvalidInput("--realizations " + std::to_string(realizations) + ": only 1 is supported so far");
+    if (realizations < 1) throw InvalidInput("--realizations " + std::to_string(realizations) + ": must be >= 1");
+    const bool ensemble = realizations > 1 || resume;
+    if (ensemble && (!chain_options.config.empty() || !chain_options.radii.empty()))
+      throw InvalidInput("--realizations/--resume: an ensemble draws random chains; --config/--radii give one chain");
+    if (threads < 0) throw InvalidInput("--threads " + std::to_string(threads) + ": must be >= 0");
     if (ic != "displacement" && ic != "velocity") throw InvalidInput("--ic '" + ic + "': expected displacement or velocity");
     if (active_window != "on" && active_window != "off") throw InvalidInput("--active-window '" + active_window + "': on or off");
     for (auto [name, value] : {std::pair{"--samples", samples}, {"--force-samples", force_samples},
@@ -169,10 +182,52 @@ int main(int argc, char** argv) {
     if (profile) check_writable(profile_path);
     if (!config.force_sites.empty()) check_writable(forces_path);
 
-    const SpreadingResult r = run_spreading(chain, initial, config);
+    const std::string sem_path = output + "-sem.csv", checkpoint = output + ".checkpoint";
+    if (ensemble) {
+      check_writable(sem_path);
+      check_writable(checkpoint);
+    }
+    // Realization --realization alone answers the single-chain outputs; an ensemble needs it
+    // only for those.
+    const bool single_outputs = !final_state.empty() || !config.force_sites.empty() || !energy_map.empty() ||
+                                !spectrum_file.empty();
+    std::optional<TransportSummary> summary;
+    if (ensemble) {
+      TransportCase c;
+      c.disorder = parse_disorder(chain_options.disorder);
+      c.q = chain_options.q;
+      c.xi = chain_options.xi;
+      c.n = beads;
+      c.precompression = chain_options.f0;
+      c.r1 = chain_options.r1;
+      c.kick = parse_kick(ic);
+      c.alpha = alpha;
+      c.beta = ic == "velocity" && beta_text != "match" ? beta : -1;
+      c.site = kicked;
+      c.dynamics = config;
+      c.seed = static_cast<std::uint64_t>(chain_options.seed);
+      c.realizations = static_cast<std::size_t>(realizations);
+      c.profile_realizations = profile ? c.realizations : 0;
+      c.fit = fit_possible;
+      c.fit_begin = fit_range[0];
+      c.fit_end = fit_range[1];
+      c.criterion = criterion;
+      const MpiContext& mpi = MpiContext::instance();
+      ProgressMeter progress(c.realizations, "spreading", quiet || !mpi.root() ? 0 : -1);
+      summary = run_transport_study(c, {threads, checkpoint, resume, &progress});
+      progress.finish();
+      if (!mpi.root()) return;
+    }
+    const SpreadingResult r = !ensemble || single_outputs ? run_spreading(chain, initial, config) : SpreadingResult{};
 
     nlohmann::json fit = nullptr;
-    if (fit_possible) {
+    if (fit_possible && summary) {
+      const PowerLawAnalysis& g = summary->gamma;
+      const PowerLawAnalysis& e = summary->eta;
+      fit = {{"gamma", g.exponent.value}, {"gamma_err", g.exponent.error}, {"eta", e.exponent.value},
+             {"eta_err", e.exponent.error}, {"power_law", g.verdict.power_law},
+             {"max_log_derivative_deviation", g.verdict.worst_deviation}};
+    } else if (fit_possible) {
       const PowerLawAnalysis g = analyze_power_law(r.t, r.m2, fit_range[0], fit_range[1], criterion);
       std::vector<double> inverse_ipr;
       for (double p : r.ipr) inverse_ipr.push_back(1 / p);  // P⁻¹ ∝ t^−η  ⇔  1/P⁻¹ ∝ t^η
@@ -185,19 +240,34 @@ int main(int argc, char** argv) {
     if (r.reached_walls && !quiet)
       std::fprintf(stderr, "spreading: warning: energy reached the walls ((E_1 + E_N)/H0 up to %s): the chain is too short for T\n",
                    format_number(r.wall_energy).c_str());
+    if (summary && summary->reached_walls > 0 && !quiet)
+      std::fprintf(stderr, "spreading: warning: energy reached the walls in %zu of %zu realizations: the chain is too short for T\n",
+                   summary->reached_walls, summary->realizations);
 
     AtomicFile csv(csv_path);
-    {
+    std::optional<AtomicFile> state_file, profile_file, forces_file, spectrum_out, sem_file;
+    if (summary) {
+      const TransportSummary& m = *summary;
+      CsvWriter table(csv.stream(), {"t", "m2", "ipr", "energy_error"});
+      for (std::size_t i = 0; i < m.t.size(); ++i) table.row(m.t[i], m.m2.mean[i], m.ipr.mean[i], m.energy_error.mean[i]);
+      sem_file.emplace(sem_path);
+      CsvWriter sem(sem_file->stream(), {"t", "m2_se", "ipr_se", "energy_error_se"});
+      for (std::size_t i = 0; i < m.t.size(); ++i)
+        sem.row(m.t[i], m.m2.standard_error[i], m.ipr.standard_error[i], m.energy_error.standard_error[i]);
+    } else {
       CsvWriter table(csv.stream(), {"t", "m2", "ipr", "energy_error"});
       for (std::size_t i = 0; i < r.t.size(); ++i) table.row(r.t[i], r.m2[i], r.ipr[i], r.energy_error[i]);
     }
-    std::optional<AtomicFile> state_file, profile_file, forces_file, spectrum_out;
     if (!final_state.empty()) {
       state_file.emplace(final_state);
       CsvWriter t(state_file->stream(), {"site", "u", "v", "energy"});
       for (std::size_t i = 0; i < beads; ++i) t.row(i + 1, r.final_state.u[i], r.final_state.v[i], r.final_energy[i]);
     }
-    if (profile) {
+    if (profile && summary) {
+      profile_file.emplace(profile_path);
+      CsvWriter t(profile_file->stream(), {"site", "energy", "energy_se"});
+      for (std::size_t i = 0; i < beads; ++i) t.row(i + 1, summary->profile.mean[i], summary->profile.standard_error[i]);
+    } else if (profile) {
       profile_file.emplace(profile_path);
       CsvWriter t(profile_file->stream(), {"site", "energy", "force"});
       for (std::size_t i = 0; i < beads; ++i) t.row(i + 1, r.final_energy[i], r.final_force[i]);
@@ -237,14 +307,21 @@ int main(int argc, char** argv) {
       for (const char* key : {"gamma", "gamma_err", "eta", "eta_err", "power_law"}) meta[key] = fit[key];
       meta["max_log_derivative_deviation"] = fit["max_log_derivative_deviation"];
     }
-    meta["run"] = {{"initial_energy_J", r.initial_energy}, {"max_energy_error", r.max_energy_error},
-                   {"steps", r.steps}, {"bond_updates", r.bond_updates}, {"integration_s", r.seconds},
-                   {"window_final", {r.window_begin + 1, r.window_end}}, {"wall_energy", r.wall_energy},
-                   {"reached_walls", r.reached_walls}};
+    if (summary) {
+      meta["ensemble"] = {{"realizations", summary->realizations}, {"threads", threads},
+                          {"mpi_ranks", MpiContext::instance().size()}, {"max_energy_error", summary->max_energy_error},
+                          {"reached_walls", summary->reached_walls}, {"eta_power_law", summary->eta.verdict.power_law}};
+    }
+    if (!summary || single_outputs)
+      meta["run"] = {{"realization", chain_options.realization}, {"initial_energy_J", r.initial_energy},
+                     {"max_energy_error", r.max_energy_error}, {"steps", r.steps}, {"bond_updates", r.bond_updates},
+                     {"integration_s", r.seconds}, {"window_final", {r.window_begin + 1, r.window_end}},
+                     {"wall_energy", r.wall_energy}, {"reached_walls", r.reached_walls}};
     meta["output"] = csv_path;
     csv.commit();
-    for (auto* f : {&state_file, &profile_file, &forces_file, &spectrum_out})
+    for (auto* f : {&state_file, &profile_file, &forces_file, &spectrum_out, &sem_file})
       if (*f) (*f)->commit();
     meta.write(json_path);
+    if (ensemble) CheckpointLog::remove_all(checkpoint);
   });
 }

@@ -11,6 +11,8 @@
 #include <string>
 
 #include <gtest/gtest.h>
+
+#include "tool_runner.hpp"
 #include <nlohmann/json.hpp>
 
 namespace {
@@ -126,7 +128,9 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInput{"--xi 0", "xi"}, BadInput{"--N 1", "--N"}, BadInput{"--F0 -1", "--F0"},
                       BadInput{"--config missing.txt", "missing.txt"}, BadInput{"--force-law fpu --F0 0", "--force-law"},
                       BadInput{"--force-law cubic", "--force-law"}, BadInput{"--integrator rk4", "--integrator"},
-                      BadInput{"--realizations 2", "--realizations"}, BadInput{"--forces-at 0", "--forces-at"},
+                      BadInput{"--realizations 0", "--realizations"},
+                      BadInput{"--realizations 2 --config x.txt", "--config"}, BadInput{"--resume", "--resume"},
+                      BadInput{"--threads -2", "--threads"}, BadInput{"--forces-at 0", "--forces-at"},
                       BadInput{"--ic velocity --beta abc", "--beta"}, BadInput{"--ic push", "--ic"},
                       BadInput{"--samples 1", "--samples"}, BadInput{"--samples 10 --fit 4e-5:1e-4", "--fit"}, BadInput{"--fit 2e-3:1e-3", "--fit"},
                       BadInput{"--active-window maybe", "--active-window"},
@@ -134,3 +138,24 @@ INSTANTIATE_TEST_SUITE_P(
     [](const auto& info) { return "case" + std::to_string(info.index); });
 
 }  // namespace
+
+namespace granular::testing {
+namespace {
+
+// An ensemble (--realizations > 1) is the same bytes for any thread count.
+TEST(SpreadingToolEnsemble, ThreadInvariant) {
+  const std::string dir = scratch_folder("spread-ens");
+  const std::string job = "--N 201 --T 1e-3 --fit 4e-4:1e-3 --samples 30 --disorder RDM1 --quiet --profile";
+  ASSERT_EQ(run_tool("spreading", job + " --realizations 5 --threads 1 --output " + dir + "/a").exit_code, 0);
+  ASSERT_EQ(run_tool("spreading", job + " --realizations 5 --threads 2 --output " + dir + "/b").exit_code, 0);
+  EXPECT_EQ(read_file(dir + "/a.csv"), read_file(dir + "/b.csv"));
+  EXPECT_EQ(read_file(dir + "/a-sem.csv"), read_file(dir + "/b-sem.csv"));
+  EXPECT_EQ(read_file(dir + "/a-profile.csv"), read_file(dir + "/b-profile.csv"));
+  EXPECT_FALSE(std::filesystem::exists(dir + "/a.checkpoint"));
+  const std::string means = read_file(dir + "/a.csv");
+  EXPECT_EQ(means.substr(0, means.find('\n')), "t,m2,ipr,energy_error");
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace granular::testing

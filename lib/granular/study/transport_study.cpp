@@ -29,8 +29,8 @@ void validate(const TransportCase& c) {
     throw InvalidInput("--F0 " + format_number(c.precompression) + ": must be finite and >= 0");
   if (c.site >= c.n) throw InvalidInput("--site " + std::to_string(c.site + 1) + ": outside the chain of " + std::to_string(c.n) + " beads");
   if (c.realizations < 1) throw InvalidInput("--realizations: must be >= 1");
-  if (!(c.fit_begin > 0) || !(c.fit_end > c.fit_begin)) throw InvalidInput("--fit: need 0 < start < stop");
-  if (c.fit_end > c.dynamics.duration * (1 + 1e-12))
+  if (c.fit && (!(c.fit_begin > 0) || !(c.fit_end > c.fit_begin))) throw InvalidInput("--fit: need 0 < start < stop");
+  if (c.fit && c.fit_end > c.dynamics.duration * (1 + 1e-12))
     throw InvalidInput("--fit " + format_number(c.fit_begin) + ":" + format_number(c.fit_end) + ": reaches beyond --T " +
                        format_number(c.dynamics.duration));
   if (!(c.criterion.kappa > 0)) throw InvalidInput("--kappa: must be > 0");
@@ -127,6 +127,7 @@ TransportSummary run_transport_study(const TransportCase& c, const StudyRunOptio
     const std::vector<std::vector<double>> with_profile(rows.begin(), rows.begin() + static_cast<long>(profiled));
     s.profile = summarize(slice(with_profile, width, c.n));
   }
+  if (!c.fit) return s;
   s.gamma = analyze_power_law(s.t, s.m2.mean, c.fit_begin, c.fit_end, c.criterion);
   std::vector<double> participation;  // P⁻¹ ∝ t^−η  ⇔  1/P⁻¹ ∝ t^η
   for (double p : s.ipr.mean) participation.push_back(1 / p);

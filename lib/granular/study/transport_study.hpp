@@ -37,6 +37,7 @@ struct TransportCase {
   std::uint64_t seed = 1;
   std::size_t realizations = 500;
   std::size_t profile_realizations = std::numeric_limits<std::size_t>::max();  ///< E_n(T) averaged over the first this many (0: none)
+  bool fit = true;                          ///< fit γ and η (needs fit_end ≤ T)
   double fit_begin = 4e-3, fit_end = 1e-2;  ///< exponents fitted on [fit_begin, fit_end] s
   PowerLawCriterion criterion;
 };
@@ -51,7 +52,7 @@ struct TransportSummary {
   std::vector<double> t;               ///< sample times [s]
   SeriesSummary m2, ipr, energy_error; ///< over realizations, at the sample times
   SeriesSummary profile;               ///< site energies E_n at T (empty if not asked for)
-  PowerLawAnalysis gamma;              ///< m̃2 ∝ t^γ on the fit window
+  PowerLawAnalysis gamma;              ///< m̃2 ∝ t^γ on the fit window (zero when not fitted)
   PowerLawAnalysis eta;                ///< P⁻¹ ∝ t^−η (fitted as 1/P⁻¹ ∝ t^η)
   double max_energy_error = 0;         ///< worst |H(t)−H0|/H0 of any realization
   std::size_t reached_walls = 0;       ///< realizations whose energy reached the walls
