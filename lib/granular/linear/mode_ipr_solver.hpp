@@ -31,7 +31,8 @@ class LapackModeIpr final : public ModeIprSolver {
   EigenDecomposition eig_;
 };
 
-/// "lapack" (LapackModeIpr with dstevr) or "lapack-<driver>"; other methods register here too.
+/// "fast" (TwistedModeIpr, twisted_ipr_solver.hpp), "lapack" (LapackModeIpr with dstevr) or
+/// "lapack-<driver>"; other methods register here too.
 std::unique_ptr<ModeIprSolver> make_mode_ipr_solver(std::string_view method);
 
 }  // namespace granular

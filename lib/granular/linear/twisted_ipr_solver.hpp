@@ -1,0 +1,89 @@
+#pragma once
+// Every mode's ω² and displacement IPR in O(N²) without forming the eigenvector matrix.
+//
+// Method (one chain, N beads, D the dynamical matrix):
+//  1. T = D / max|D_ij| (unit largest entry, as for the LAPACK path); eigenvalues of T by
+//     LAPACK dsterf (Pal–Walker–Kahan QL/QR, eigenvalues only, O(N²), absolute accuracy
+//     ~ε‖T‖).
+//  2. For each eigenvalue λ that is isolated (see the cluster criterion below), one twisted
+//     factorization of T − λI, as in LAPACK's dlar1v (MRRR): the stationary LDLᵀ from the
+//     top, the progressive UDUᵀ from the bottom, the twist index r minimizing
+//     |γ_r| = |D⁺_r − e_r U_r|, and z with z_r = 1 from the two bidiagonal recurrences.
+//     z solves (T − λI) z = γ_r e_r: one step of inverse iteration from the best unit vector,
+//     so its angle to the true eigenvector is ≲ (|λ̂ − λ| + O(ε)‖T‖)/gap. Its IPR
+//     Σ(z_n m_n^{-1/2})⁴ / (Σ(z_n m_n^{-1/2})²)² is accumulated on the fly; the recurrences
+//     stop once |z| < 1e-60 (what is left adds < 1e-120 relative to Σz² — a second localization
+//     centre that far below would mean a splitting no isolated mode has). Eight shifts go
+//     through the factorizations together so the compiler vectorizes them (the recurrences
+//     are serial in n, not across shifts). O(N) per mode, no allocation per solve.
+//  3. Clusters. Mode k is *isolated* when its relative gap
+//         relgap_k = min(λ_k − λ_{k−1}, λ_{k+1} − λ_k) / max|λ|
+//     is at least `cluster_gap` (default 1e-6); maximal runs of consecutive modes whose
+//     neighbouring eigenvalues are closer than cluster_gap·max|λ| form a *cluster*. In
+//     these chains clusters come from light beads isolated among heavy ones (small ξ):
+//     their localized modes have equal local environments, so their ω² agree to anything down
+//     to 1e-16 relative and their eigenvectors are not determined by the matrix to working
+//     precision — any orthonormal basis of the cluster's invariant subspace is as valid.
+//     Twisted vectors at nearly equal shifts may coincide, so each cluster is instead handed
+//     to LAPACK dstein (inverse iteration from deterministic pseudo-random starts, with
+//     reorthogonalization against the other vectors of the cluster, identical shifts
+//     separated by 10ε|λ|), and the IPRs of its orthonormal vectors are used. Those IPRs are
+//     one valid choice; another solver's basis (dstevr's, Eigen's) can give other IPRs for
+//     the modes of a tight cluster. Outside clusters the result is the IPR of the unique mode.
+//  4. Guards: dsterf or dstein failing (info ≠ 0), a non-finite value, an IPR outside
+//     (0, 1], or a twisted residual |γ_r|/‖z‖ above `max_residual`·N·ε·max|λ| make the
+//     whole chain fall back to LapackModeIpr (dstevr with its own fallbacks). `info()` counts
+//     how often each path ran.
+#include <cstddef>
+#include <vector>
+
+#include "granular/linear/mode_ipr_solver.hpp"
+
+namespace granular {
+
+struct TwistedIprConfig {
+  double cluster_gap = 1e-6;    ///< relative gap below which neighbouring modes form a cluster
+  double max_residual = 1e3;    ///< twisted residual limit, in units of N·ε·max|λ|
+};
+
+struct TwistedIprInfo {
+  std::size_t solves = 0;          ///< chains solved
+  std::size_t isolated_modes = 0;  ///< modes done by one twisted factorization
+  std::size_t clusters = 0;        ///< clusters handed to dstein
+  std::size_t cluster_modes = 0;   ///< modes inside those clusters
+  std::size_t fallbacks = 0;       ///< chains that fell back to the full LAPACK path
+};
+
+class TwistedModeIpr final : public ModeIprSolver {
+ public:
+  explicit TwistedModeIpr(TwistedIprConfig config = {});
+  void solve(const SymTridiagonal& d, const std::vector<double>& inverse_sqrt_mass, std::vector<double>& omega2,
+             std::vector<double>& ipr) override;
+  const TwistedIprInfo& info() const { return info_; }
+  const TwistedIprConfig& config() const { return config_; }
+
+  /// Batch width of the vectorized factorizations.
+  static constexpr std::size_t lanes = 8;
+
+ private:
+  bool solve_scaled(std::size_t n, std::vector<double>& ipr);
+  bool twisted_batch(std::size_t n, const std::size_t* modes, std::size_t count, std::vector<double>& ipr);
+  bool cluster(std::size_t n, std::size_t first, std::size_t count, std::vector<double>& ipr);
+  void reserve(std::size_t n);
+
+  TwistedIprConfig config_;
+  TwistedIprInfo info_;
+  LapackModeIpr fallback_;
+  std::size_t capacity_ = 0;
+  double residual_limit_ = 0;
+  // scaled matrix, its eigenvalues, scaled m^{-1/2}
+  std::vector<double> d_, e_, lambda_, work_e_, mass_;
+  // batched factorization: [i * lanes + lane]
+  std::vector<double> lplus_, dplus_, uminus_;
+  std::vector<std::size_t> isolated_;
+  // dstein workspace
+  std::vector<double> stein_w_, stein_z_, stein_work_;
+  std::vector<int> stein_iblock_, stein_isplit_, stein_iwork_, stein_ifail_;
+};
+
+}  // namespace granular
