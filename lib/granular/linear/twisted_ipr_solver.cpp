@@ -55,7 +55,11 @@ void TwistedModeIpr::solve(const SymTridiagonal& t, const std::vector<double>& s
   if (n < 1) throw InvalidInput("eigen-solve of an empty matrix");
   if (s.size() != n) throw InvalidInput("inverse_sqrt_mass: size differs from the matrix");
   ++info_.solves;
-  const double scale = t.max_abs();
+  if (t.off_diagonal.size() + 1 != n) throw InvalidInput("tridiagonal matrix: off-diagonal needs n-1 entries");
+  // max_abs() skips NaN (fmax), so check every entry: LAPACK may not return on NaN input.
+  double scale = 0;
+  for (double x : t.diagonal) scale = std::isfinite(x) ? std::fmax(scale, std::fabs(x)) : INFINITY;
+  for (double x : t.off_diagonal) scale = std::isfinite(x) ? std::fmax(scale, std::fabs(x)) : INFINITY;
   if (!std::isfinite(scale)) throw NumericalError("dynamical matrix has a non-finite entry");
   if (scale > 0 && n >= 2) {
     reserve(n);
