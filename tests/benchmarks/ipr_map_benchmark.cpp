@@ -6,7 +6,8 @@
 //   build/benchmarks/ipr_map_benchmark --benchmark_repetitions=3 --benchmark_report_aggregates_only=true
 //
 // BM_ModeIpr/<solver>: the solvers behind `ipr-map --solver` (LAPACK drivers with eigenvectors,
-// then Σv⁴/(Σv²)²; the fast twisted-factorization solver). BM_EigenvaluesOnly/dsterf: the
+// then Σv⁴/(Σv²)²; the fast twisted-factorization solver), one chain per call.
+// BM_ModeIprBatch/<solver>_batch4: four chains per solve_batch call, as ipr-map calls it. BM_EigenvaluesOnly/dsterf: the
 // O(N²) eigenvalue floor the fast solver sits on. BM_BuildChain: making the chain and its
 // dynamical matrix, the per-realization cost outside any solver.
 #include <benchmark/benchmark.h>
@@ -72,6 +73,28 @@ void BM_ModeIpr(benchmark::State& state, std::string method) {
   }
 }
 
+// Four chains per solve_batch call, as ipr-map calls it (the fast solver interleaves their QL
+// sweeps); time per chain = time per iteration / 4.
+void BM_ModeIprBatch(benchmark::State& state, std::string method) {
+  const Job& job = default_job();
+  auto solver = make_mode_ipr_solver(method);
+  constexpr std::size_t batch = 4;
+  std::vector<double> omega2[batch], ipr[batch];
+  ModeIprTask tasks[batch];
+  std::size_t i = 0;
+  for (auto _ : state) {
+    for (std::size_t j = 0; j < batch; ++j) {
+      tasks[j] = {&job.matrices[i], &job.inverse_sqrt_masses[i], &omega2[j], &ipr[j]};
+      if (++i == job.matrices.size()) i = 0;
+    }
+    solver->solve_batch(tasks);
+    benchmark::DoNotOptimize(ipr[0].data());
+  }
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * batch));
+  state.counters["us_per_chain"] =
+      benchmark::Counter(static_cast<double>(state.iterations() * batch), benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+
 void BM_EigenvaluesOnly(benchmark::State& state) {
   const Job& job = default_job();
   std::vector<double> d(beads), e(beads);
@@ -111,6 +134,8 @@ BENCHMARK_CAPTURE(BM_ModeIpr, lapack_stemr, std::string("lapack-stemr"))->Unit(b
 BENCHMARK_CAPTURE(BM_ModeIpr, lapack_stevd, std::string("lapack-stevd"))->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_ModeIpr, lapack_steqr, std::string("lapack-steqr"))->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_ModeIpr, fast, std::string("fast"))->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_ModeIprBatch, lapack_stevd_batch4, std::string("lapack-stevd"))->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_ModeIprBatch, fast_batch4, std::string("fast"))->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_EigenvaluesOnly)->Name("BM_EigenvaluesOnly/dsterf")->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_BuildChain)->Unit(benchmark::kMicrosecond);
 

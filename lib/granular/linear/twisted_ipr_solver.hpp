@@ -2,9 +2,14 @@
 // Every mode's ω² and displacement IPR in O(N²) without forming the eigenvector matrix.
 //
 // Method (one chain, N beads, D the dynamical matrix):
-//  1. T = D / max|D_ij| (unit largest entry, as for the LAPACK path); eigenvalues of T by
-//     LAPACK dsterf (Pal–Walker–Kahan QL/QR, eigenvalues only, O(N²), absolute accuracy
-//     ~ε‖T‖).
+//  1. T = D / max|D_ij| (unit largest entry, as for the LAPACK path); its eigenvalues by the
+//     root-free (Pal–Walker–Kahan) QL iteration with Wilkinson shifts, the algorithm of LAPACK's
+//     dsterf, O(N²), absolute accuracy ~ε‖T‖. It is implemented here rather than called because
+//     each QL step is a serial chain of two divisions (~40 cycles, the solver's bottleneck):
+//     solve_batch() runs the QL sweeps of up to `interleave` independent chains in lock-step so
+//     the CPU overlaps their chains (written so 1/r and 1/p are independent: one division on
+//     the critical path). Results do not depend on the batch: a chain's arithmetic is the same
+//     alone or interleaved. More than 30·N QL iterations counts as failure (see 4).
 //  2. For each eigenvalue λ that is isolated (see the cluster criterion below), one twisted
 //     factorization of T − λI, as in LAPACK's dlar1v (MRRR): the stationary LDLᵀ from the
 //     top, the progressive UDUᵀ from the bottom, the twist index r minimizing
@@ -32,11 +37,12 @@
 //     separated by 10ε|λ|), and the IPRs of its orthonormal vectors are used. Those IPRs are
 //     one valid choice; another solver's basis (dstevr's, Eigen's) can give other IPRs for
 //     the modes of a tight cluster. Outside clusters the result is the IPR of the unique mode.
-//  4. Guards: dsterf or dstein failing (info ≠ 0), a non-finite value, an IPR outside
+//  4. Guards: the QL iteration or dstein failing (dstein info ≠ 0), a non-finite value, an IPR outside
 //     (0, 1], or a twisted residual |γ_r|/‖z‖ above `max_residual`·N·ε·max|λ| make the
 //     whole chain fall back to LapackModeIpr (dstevr with its own fallbacks). `info()` counts
 //     how often each path ran.
 #include <cstddef>
+#include <span>
 #include <vector>
 
 #include "granular/linear/mode_ipr_solver.hpp"
@@ -61,16 +67,27 @@ class TwistedModeIpr final : public ModeIprSolver {
   explicit TwistedModeIpr(TwistedIprConfig config = {});
   void solve(const SymTridiagonal& d, const std::vector<double>& inverse_sqrt_mass, std::vector<double>& omega2,
              std::vector<double>& ipr) override;
+  void solve_batch(std::span<const ModeIprTask> tasks) override;
   const TwistedIprInfo& info() const { return info_; }
   const TwistedIprConfig& config() const { return config_; }
 
-  /// Batch width of the vectorized factorizations.
+  /// Batch width of the vectorized twisted factorizations.
   static constexpr std::size_t lanes = 8;
+  /// Chains whose QL iterations run interleaved.
+  static constexpr std::size_t interleave = 4;
 
  private:
-  bool solve_scaled(std::size_t n, std::vector<double>& ipr);
-  bool twisted_batch(std::size_t n, const std::size_t* modes, std::size_t count, std::vector<double>& ipr);
-  bool cluster(std::size_t n, std::size_t first, std::size_t count, std::vector<double>& ipr);
+  struct Slot {  // one chain's scaled matrix, eigenvalues and scaled m^{-1/2}
+    std::vector<double> d, e, e2, lambda, mass;
+    std::size_t n = 0;
+    double scale = 0;
+    bool ok = false;
+  };
+  void solve_group(std::span<const ModeIprTask> tasks);
+  bool load(Slot& slot, const ModeIprTask& task);
+  bool solve_modes(const Slot& slot, std::vector<double>& ipr);
+  bool twisted_batch(const Slot& slot, const std::size_t* modes, std::size_t count, std::vector<double>& ipr);
+  bool cluster(const Slot& slot, std::size_t first, std::size_t count, std::vector<double>& ipr);
   void reserve(std::size_t n);
 
   TwistedIprConfig config_;
@@ -78,8 +95,7 @@ class TwistedModeIpr final : public ModeIprSolver {
   LapackModeIpr fallback_;
   std::size_t capacity_ = 0;
   double residual_limit_ = 0;
-  // scaled matrix, its eigenvalues, scaled m^{-1/2}
-  std::vector<double> d_, e_, lambda_, work_e_, mass_;
+  Slot slots_[interleave];
   // batched factorization: [i * lanes + lane]
   std::vector<double> lplus_, dplus_, uminus_;
   std::vector<std::size_t> isolated_;
