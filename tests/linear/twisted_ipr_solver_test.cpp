@@ -13,8 +13,8 @@
 //    below 1e-10 (light beads isolated among heavy ones at small ξ: splittings down to 1e-16)
 //    any orthonormal basis of the cluster is as valid and IPRs are only checked to lie in (0, 1]
 //    and, on an exactly degenerate constructed case, to be those of an orthonormal basis.
-//    (The solver's own switch to dstein, TwistedIprConfig::cluster_gap = 1e-6, is an
-//    algorithmic choice inside this band; see twisted_ipr_solver.hpp.)
+//    (The solver hands exactly these modes, relgap < TwistedIprConfig::cluster_gap = 1e-10, to
+//    dstein; see twisted_ipr_solver.hpp.)
 //  * Eigenvalues from any backward-stable method carry absolute errors ~ε‖D‖, so a mode with
 //    ω² ≪ ‖D‖ has a relative error ~ε‖D‖/ω². At ξ = 0.1 the lowest ω² is ~1e-7‖D‖ and the two
 //    references differ by 4.6e-11 in relative frequency there. Frequencies are therefore checked
