@@ -36,7 +36,7 @@ class ModeIprSolver {
 /// Full eigen-decomposition by a LAPACK driver, then Σv⁴/(Σv²)² per eigenvector.
 class LapackModeIpr final : public ModeIprSolver {
  public:
-  explicit LapackModeIpr(LapackDriver driver = LapackDriver::stevr) : solver_(driver) {}
+  explicit LapackModeIpr(LapackDriver driver = LapackDriver::stevd) : solver_(driver) {}
   void solve(const SymTridiagonal& d, const std::vector<double>& inverse_sqrt_mass, std::vector<double>& omega2,
              std::vector<double>& ipr) override;
 
@@ -45,7 +45,7 @@ class LapackModeIpr final : public ModeIprSolver {
   EigenDecomposition eig_;
 };
 
-/// "fast" (TwistedModeIpr, twisted_ipr_solver.hpp), "lapack" (LapackModeIpr with dstevr) or
+/// "fast" (TwistedModeIpr, twisted_ipr_solver.hpp), "lapack" (LapackModeIpr with dstevd) or
 /// "lapack-<driver>"; other methods register here too.
 std::unique_ptr<ModeIprSolver> make_mode_ipr_solver(std::string_view method);
 

@@ -1,0 +1,74 @@
+#include "granular/analysis/power_law_fit.hpp"
+
+#include <cmath>
+#include <string>
+
+#include "granular/analysis/log_derivative.hpp"
+#include "granular/error.hpp"
+
+namespace granular {
+
+LineFit fit_power_law(const std::vector<double>& t, const std::vector<double>& y, double lo, double hi) {
+  if (t.size() != y.size()) throw InvalidInput("fit_power_law: t and y differ in length");
+  double sx = 0, sy = 0, sxx = 0, sxy = 0;
+  std::size_t n = 0;
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    if (!(t[i] >= lo && t[i] <= hi && t[i] > 0 && y[i] > 0)) continue;
+    const double x = std::log(t[i]), v = std::log(y[i]);
+    sx += x; sy += v; sxx += x * x; sxy += x * v;
+    ++n;
+  }
+  if (n < 2) throw InvalidInput("fit window [" + std::to_string(lo) + ", " + std::to_string(hi) + "] s holds " +
+                                std::to_string(n) + " usable samples; need 2 (more --samples or a wider --fit)");
+  const double nn = static_cast<double>(n);
+  const double denominator = nn * sxx - sx * sx;
+  if (!(denominator > 0)) throw InvalidInput("fit window has a single distinct time");
+  LineFit f;
+  f.slope = (nn * sxy - sx * sy) / denominator;
+  f.intercept = (sy - f.slope * sx) / nn;
+  f.points = n;
+  return f;
+}
+
+ExponentEstimate windowed_exponent(const std::vector<double>& t, const std::vector<double>& y, double lo, double hi) {
+  if (!(hi > lo && lo >= 0)) throw InvalidInput("fit interval must satisfy 0 <= start < stop");
+  double p[5];
+  for (int i = 0; i <= 4; ++i) p[i] = lo + (hi - lo) * i / 4.0;
+  p[4] = hi;
+  const int windows[6][2] = {{0, 2}, {1, 3}, {2, 4}, {0, 3}, {1, 4}, {0, 4}};
+  ExponentEstimate e;
+  for (const auto& w : windows) e.slopes.push_back(fit_power_law(t, y, p[w[0]], p[w[1]]).slope);
+  double mean = 0;
+  for (double s : e.slopes) mean += s;
+  mean /= static_cast<double>(e.slopes.size());
+  double var = 0;
+  for (double s : e.slopes) var += (s - mean) * (s - mean);
+  e.value = mean;
+  e.error = std::sqrt(var / static_cast<double>(e.slopes.size() - 1));
+  return e;
+}
+
+PowerLawVerdict judge_power_law(const std::vector<double>& t, const std::vector<double>& y, double gamma,
+                                const PowerLawCriterion& c) {
+  const LogDerivative d = log_derivative(t, y, c.log_step);
+  PowerLawVerdict v;
+  bool any = false;
+  for (std::size_t i = 0; i < d.t.size(); ++i) {
+    if (d.t[i] < c.t_start) continue;
+    any = true;
+    const double dev = std::fabs(d.slope[i] - gamma);
+    if (dev > v.worst_deviation) { v.worst_deviation = dev; v.worst_time = d.t[i]; }
+  }
+  v.power_law = any && v.worst_deviation < c.kappa;
+  return v;
+}
+
+PowerLawAnalysis analyze_power_law(const std::vector<double>& t, const std::vector<double>& y, double lo, double hi,
+                                   const PowerLawCriterion& criterion) {
+  PowerLawAnalysis a;
+  a.exponent = windowed_exponent(t, y, lo, hi);
+  a.verdict = judge_power_law(t, y, a.exponent.value, criterion);
+  return a;
+}
+
+}  // namespace granular

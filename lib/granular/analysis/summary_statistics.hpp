@@ -1,0 +1,16 @@
+#pragma once
+// Mean and standard error of per-realization series, summed in realization order so that the
+// result is bit-identical whatever the thread or rank count that produced the rows.
+#include <vector>
+
+namespace granular {
+
+struct SeriesSummary {
+  std::vector<double> mean;
+  std::vector<double> standard_error;  ///< sample std / sqrt(R); 0 when R = 1
+};
+
+/// `rows[r]` is realization r's series; all rows must have the same length.
+SeriesSummary summarize(const std::vector<std::vector<double>>& rows);
+
+}  // namespace granular

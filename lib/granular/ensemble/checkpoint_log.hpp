@@ -1,0 +1,57 @@
+#pragma once
+// Finished realizations survive an interrupted run. Each finished realization is appended to a
+// log as one self-checking line and flushed to disk; a resumed run reads the complete lines back
+// and computes only the rest. Because each realization is a pure function of (seed, index) and
+// results are reduced in index order, a resumed run's output equals an uninterrupted one's byte
+// for byte.
+//
+// Format (text, so it can be inspected):
+//   line 1:  granular-checkpoint 1 <parameters as one line of JSON>
+//   then:    <index> <count> <v_1> … <v_count> <checksum>      (values in shortest round-trip form)
+// A line cut short by a kill (no newline, wrong count or checksum) is ignored and recomputed.
+#include <cstdint>
+#include <cstdio>
+#include <map>
+#include <mutex>
+#include <string>
+#include <vector>
+
+namespace granular {
+
+using CheckpointRecords = std::map<std::uint64_t, std::vector<double>>;
+
+class CheckpointLog {
+ public:
+  /// Creates (or atomically replaces) the log at `path` for a run described by `parameters`
+  /// (canonical one-line JSON), holding `records` already finished, and opens it for appending.
+  CheckpointLog(std::string path, std::string parameters, const CheckpointRecords& records = {});
+  ~CheckpointLog();
+  CheckpointLog(const CheckpointLog&) = delete;
+  CheckpointLog& operator=(const CheckpointLog&) = delete;
+
+  /// Reads the finished realizations of a run: the log at `base` and those of other MPI ranks
+  /// (`base.rank<k>`). Throws InvalidInput when there is none (naming --resume), when a file is
+  /// not a checkpoint, or when it was made with other parameters (naming the first that differs).
+  static CheckpointRecords load(const std::string& base, const std::string& parameters);
+
+  /// The log file of an MPI rank: `base` for rank 0, `base.rank<k>` otherwise.
+  static std::string rank_path(const std::string& base, int rank);
+
+  /// Removes `base` and every `base.rank<k>` (after the outputs are safely written).
+  static void remove_all(const std::string& base);
+
+  /// Appends one finished realization and flushes it to disk. Thread-safe.
+  void append(std::uint64_t index, const std::vector<double>& values);
+
+  const std::string& path() const { return path_; }
+
+  /// Parses a log's text (what resume and the fuzz target use); corrupt lines are skipped.
+  static CheckpointRecords parse_records(const std::string& text, std::string* header);
+
+ private:
+  std::string path_;
+  std::FILE* file_ = nullptr;
+  std::mutex mutex_;
+};
+
+}  // namespace granular

@@ -1,0 +1,32 @@
+#pragma once
+// Runs R independent realizations, each producing a vector of numbers, on threads, with
+// optional checkpointing: finished realizations are logged as they complete and skipped on
+// resume. Returns the rows in realization order, so any reduction over them is independent of
+// thread count, interruption and resumption.
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "granular/ensemble/checkpoint_log.hpp"
+#include "granular/ensemble/progress_meter.hpp"
+
+namespace granular {
+
+struct EnsembleOptions {
+  std::size_t realizations = 1;
+  int threads = 0;                    ///< per process; 0 = every core
+  std::string checkpoint;             ///< log of finished realizations; empty = none
+  std::string parameters = "{}";      ///< one-line JSON describing the run; a resume must match it
+  bool resume = false;                ///< continue from `checkpoint` instead of starting afresh
+  ProgressMeter* progress = nullptr;  ///< optional; advanced once per realization computed or loaded
+};
+
+/// `work(r, thread)` computes realization r. Under mpirun the realizations still to do are dealt
+/// round-robin to the ranks and the rows gathered on rank 0, which alone gets a non-empty result.
+/// Rows loaded from the checkpoint are not recomputed. The checkpoint is left on disk: remove it
+/// (CheckpointLog::remove_all) once the outputs are written.
+std::vector<std::vector<double>> run_ensemble(
+    const EnsembleOptions& options, const std::function<std::vector<double>(std::uint64_t r, int thread)>& work);
+
+}  // namespace granular

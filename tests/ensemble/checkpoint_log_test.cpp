@@ -1,0 +1,121 @@
+#include "granular/ensemble/checkpoint_log.hpp"
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <atomic>
+#include <limits>
+
+#include <gtest/gtest.h>
+
+#include "granular/error.hpp"
+
+namespace granular {
+namespace {
+
+std::string temp_path(const char* name) {
+  return (std::filesystem::temp_directory_path() / (std::string("granular-ckpt-") + name + std::to_string(::getpid()))).string();
+}
+
+TEST(CheckpointLog, RoundTripsValuesExactlyAndResumes) {
+  const std::string path = temp_path("roundtrip");
+  const std::vector<double> a{0.1, 1e-300, -3.5, 1.0 / 3.0, std::numeric_limits<double>::quiet_NaN()}, b{2.0};
+  {
+    CheckpointLog log(path, R"({"N":10,"seed":1})");
+    log.append(3, a);
+    log.append(0, b);
+  }
+  const CheckpointRecords resumed = CheckpointLog::load(path, R"({"N":10,"seed":1})");
+  ASSERT_EQ(resumed.size(), 2u);
+  const auto& got = resumed.at(3);
+  ASSERT_EQ(got.size(), a.size());
+  for (std::size_t i = 0; i + 1 < a.size(); ++i) EXPECT_EQ(got[i], a[i]);  // bit-exact
+  EXPECT_TRUE(std::isnan(got.back()));
+  EXPECT_EQ(resumed.at(0), b);
+  {
+    CheckpointLog rank1(CheckpointLog::rank_path(path, 1), R"({"N":10,"seed":1})");
+    rank1.append(5, b);
+  }
+  EXPECT_EQ(CheckpointLog::load(path, R"({"N":10,"seed":1})").size(), 3u);  // rank files are read too
+  CheckpointLog::remove_all(path);
+  EXPECT_FALSE(std::filesystem::exists(path));
+  EXPECT_FALSE(std::filesystem::exists(path + ".rank1"));
+}
+
+TEST(CheckpointLog, IgnoresATornLastLineAndCorruptedRecords) {
+  const std::string path = temp_path("torn");
+  {
+    CheckpointLog log(path, "{}");
+    log.append(0, {1.0, 2.0});
+    log.append(1, {3.0, 4.0});
+  }
+  std::string text;
+  {
+    std::ifstream in(path);
+    text.assign(std::istreambuf_iterator<char>(in), {});
+  }
+  const auto second = text.find("\n1 ");
+  ASSERT_NE(second, std::string::npos);
+  std::string edited = text;
+  edited[second + 5] = '9';  // change a value of record 1: checksum mismatch
+  edited += "2 2 5 6";       // a torn line without newline
+  {
+    std::ofstream(path, std::ios::trunc) << edited;
+  }
+  const CheckpointRecords resumed = CheckpointLog::load(path, "{}");
+  EXPECT_EQ(resumed.size(), 1u);
+  EXPECT_TRUE(resumed.count(0));
+  CheckpointLog::remove_all(path);
+}
+
+TEST(CheckpointLog, RefusesACheckpointOfOtherParameters) {
+  const std::string path = temp_path("params");
+  { CheckpointLog log(path, R"({"F0":10,"N":100})"); }
+  try {
+    CheckpointLog::load(path, R"({"F0":0.5,"N":100})");
+    FAIL() << "accepted a checkpoint made with another F0";
+  } catch (const InvalidInput& e) {
+    EXPECT_NE(std::string(e.what()).find("F0"), std::string::npos) << e.what();
+  }
+  std::filesystem::remove(path);
+  EXPECT_THROW(CheckpointLog::load(path, "{}"), InvalidInput);  // nothing to resume
+  { std::ofstream(path) << "hello\n"; }
+  EXPECT_THROW(CheckpointLog::load(path, "{}"), InvalidInput);  // not a checkpoint
+  std::filesystem::remove(path);
+}
+
+}  // namespace
+}  // namespace granular
+
+#include "granular/ensemble/ensemble_runner.hpp"
+
+namespace granular {
+namespace {
+
+TEST(EnsembleRunner, ResumedRunSkipsFinishedRealizationsAndEqualsAFreshOne) {
+  const std::string path = temp_path("runner");
+  auto work = [](std::uint64_t r, int) { return std::vector<double>{std::sqrt(static_cast<double>(r)), 1.0 / (1.0 + static_cast<double>(r))}; };
+  EnsembleOptions fresh_options;
+  fresh_options.realizations = 20;
+  fresh_options.threads = 2;
+  const auto fresh = run_ensemble(fresh_options, work);
+
+  // "Interrupted" run: only the first 7 realizations made it into the log.
+  {
+    CheckpointLog log(path, "{}");
+    for (std::uint64_t r = 0; r < 7; ++r) log.append(r, work(r, 0));
+  }
+  std::atomic<int> computed{0};
+  EnsembleOptions resumed_options = fresh_options;
+  resumed_options.threads = 1;
+  resumed_options.checkpoint = path;
+  resumed_options.resume = true;
+  const auto resumed = run_ensemble(resumed_options, [&](std::uint64_t r, int t) { ++computed; return work(r, t); });
+  EXPECT_EQ(computed.load(), 13);
+  EXPECT_EQ(resumed, fresh);
+  EXPECT_EQ(CheckpointLog::load(path, "{}").size(), 20u);  // the log now holds every realization
+  CheckpointLog::remove_all(path);
+}
+
+}  // namespace
+}  // namespace granular

@@ -1,0 +1,49 @@
+#include "granular/io/range_syntax.hpp"
+
+#include <gtest/gtest.h>
+
+#include "granular/error.hpp"
+#include "granular/io/number_format.hpp"
+
+namespace granular {
+namespace {
+
+TEST(RangeSyntax, RangesIncludeStopAndRoundCleanly) {
+  const auto xi = parse_number_list("0.1:1", "--xi", 0.01);
+  ASSERT_EQ(xi.size(), 91u);
+  EXPECT_EQ(xi.front(), 0.1);
+  EXPECT_EQ(xi[20], 0.3);  // not 0.30000000000000004
+  EXPECT_EQ(xi.back(), 1.0);
+  EXPECT_EQ(parse_number_list("1:2:0.5", "--x"), (std::vector<double>{1, 1.5, 2}));
+  EXPECT_EQ(parse_number_list("0.2,0.5,0.8", "--q"), (std::vector<double>{0.2, 0.5, 0.8}));
+  EXPECT_EQ(parse_number_list("4e-3:1e-2:2e-3", "--fit"), (std::vector<double>{4e-3, 6e-3, 8e-3, 1e-2}));
+}
+
+TEST(RangeSyntax, RejectsMalformedInputNamingTheOption) {
+  for (const char* bad : {"", "a", "1:", ":1", "1:2:0", "1:2:-1", "2:1", "1:2:3:4", "nan", "1,inf", "1,,2", "0.1:1:1e-9"}) {
+    try {
+      parse_number_list(bad, "--xi", 0.01, 1000);
+      FAIL() << "accepted '" << bad << "'";
+    } catch (const InvalidInput& e) {
+      EXPECT_NE(std::string(e.what()).find("--xi"), std::string::npos) << e.what();
+    }
+  }
+  EXPECT_THROW(parse_number_list("0:1", "--xi"), InvalidInput);  // no default step
+}
+
+TEST(NumberFormat, ShortestRoundTrip) {
+  EXPECT_EQ(format_number(0.1), "0.1");
+  EXPECT_EQ(format_number(1e-7), "1e-07");
+  const double x = 0.30000000000000004;
+  EXPECT_EQ(std::stod(format_number(x)), x);
+  EXPECT_EQ(format_number(std::numeric_limits<double>::quiet_NaN()), "nan");
+}
+
+TEST(IntegerList, ParsesAndRejects) {
+  EXPECT_EQ(parse_integer_list("601,631,661", "--forces-at"), (std::vector<long>{601, 631, 661}));
+  EXPECT_THROW(parse_integer_list("1,a", "--forces-at"), InvalidInput);
+  EXPECT_THROW(parse_integer_list("1.5", "--forces-at"), InvalidInput);
+}
+
+}  // namespace
+}  // namespace granular

@@ -1,0 +1,44 @@
+#include "granular/model/configuration_file.hpp"
+
+#include <gtest/gtest.h>
+
+#include "granular/error.hpp"
+
+namespace granular {
+namespace {
+
+TEST(ConfigurationFile, ReadsTypesWithCommentsAndBlanks) {
+  EXPECT_EQ(parse_configuration_text("# header\n1\n\n 2  # light\n1", "t"), (Configuration{1, 2, 1}));
+  EXPECT_EQ(parse_configuration_text("1\r\n2\r\n", "t"), (Configuration{1, 2}));
+}
+
+TEST(ConfigurationFile, NamesTheLineOfABadValue) {
+  try {
+    parse_configuration_text("1\n2\n3\n", "chain.txt");
+    FAIL() << "accepted type 3";
+  } catch (const InvalidInput& e) {
+    EXPECT_NE(std::string(e.what()).find("chain.txt:3"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(parse_configuration_text("1\n", "t"), InvalidInput);                 // one bead
+  EXPECT_THROW(parse_configuration_text("", "t"), InvalidInput);                    // empty
+  EXPECT_THROW(parse_configuration_text(std::string("1\n\0\n2", 5), "t"), InvalidInput);  // binary
+  EXPECT_THROW(parse_configuration_text("1 2\n1\n", "t"), InvalidInput);            // two per line
+}
+
+TEST(ConfigurationFile, ReadsRadii) {
+  EXPECT_EQ(parse_radii_text("4.76e-3\n2.38e-3 # small\n", "r"), (std::vector<double>{4.76e-3, 2.38e-3}));
+  EXPECT_THROW(parse_radii_text("1e-3\n-1e-3\n", "r"), InvalidInput);
+  EXPECT_THROW(parse_radii_text("1e-3\nnan\n", "r"), InvalidInput);
+  EXPECT_THROW(parse_radii_text("1e-3\ninf\n", "r"), InvalidInput);
+  EXPECT_THROW(parse_radii_text("1e-3\n1e-3x\n", "r"), InvalidInput);
+  EXPECT_THROW(parse_radii_text("1e-3\n0\n", "r"), InvalidInput);
+}
+
+TEST(ConfigurationFile, ExampleFilesLoad) {
+  EXPECT_EQ(read_configuration_file(std::string(GRANULAR_DATA_DIR) + "/examples/diatomic-10.types").size(), 10u);
+  EXPECT_EQ(read_radii_file(std::string(GRANULAR_DATA_DIR) + "/examples/single-impurity-11.radii").size(), 11u);
+  EXPECT_THROW(read_radii_file("/nonexistent/file"), InvalidInput);
+}
+
+}  // namespace
+}  // namespace granular

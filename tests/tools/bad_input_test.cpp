@@ -1,0 +1,98 @@
+// Every tool's bad input: exit code 2, one line naming the option, and no output file
+// created or truncated (DESIGN.md, command-line contracts).
+#include <gtest/gtest.h>
+
+#include "tool_runner.hpp"
+
+namespace granular::testing {
+namespace {
+
+struct BadInput {
+  const char* tool;
+  const char* args;
+  const char* names;  ///< what the message must mention
+};
+
+std::ostream& operator<<(std::ostream& os, const BadInput& b) { return os << b.tool << " " << b.args; }
+
+class BadInputTest : public ::testing::TestWithParam<BadInput> {};
+
+TEST_P(BadInputTest, ExitsTwoWithOneLineAndNoOutput) {
+  const BadInput& b = GetParam();
+  const std::string dir = scratch_folder("bad");
+  const std::string fresh = dir + "/fresh.csv", existing = dir + "/existing.csv";
+  {
+    std::ofstream(existing) << "precious\n";
+  }
+  for (const std::string& out : {fresh, existing}) {
+    const ToolResult r = run_tool(b.tool, std::string(b.args) + " --output " + out);
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_NE(r.err.find(b.names), std::string::npos) << "message does not name " << b.names << ": " << r.err;
+  }
+  EXPECT_FALSE(std::filesystem::exists(fresh));
+  EXPECT_FALSE(std::filesystem::exists(dir + "/fresh.json"));
+  EXPECT_EQ(read_file(existing), "precious\n");
+  std::size_t files = 0;
+  for ([[maybe_unused]] const auto& entry : std::filesystem::directory_iterator(dir)) ++files;
+  EXPECT_EQ(files, 1u) << "a temporary file was left behind";
+  std::filesystem::remove_all(dir);
+}
+
+const BadInput cases[] = {
+    {"ipr-map", "--disorder X", "--disorder"},
+    {"ipr-map", "--q 1.5", "--q"},
+    {"ipr-map", "--q -0.1,0.5", "--q"},
+    {"ipr-map", "--xi 0", "--xi"},
+    {"ipr-map", "--xi 0.5:1.2", "--xi"},
+    {"ipr-map", "--xi 1:0.5", "--xi"},
+    {"ipr-map", "--xi abc", "--xi"},
+    {"ipr-map", "--xi nan", "--xi"},
+    {"ipr-map", "--N 1", "--N"},
+    {"ipr-map", "--N -5", "--N"},
+    {"ipr-map", "--N ten", "--N"},
+    {"ipr-map", "--F0 -1", "--F0"},
+    {"ipr-map", "--F0 0", "--F0"},
+    {"ipr-map", "--F0 nan", "--F0"},
+    {"ipr-map", "--F0 inf", "--F0"},
+    {"ipr-map", "--realizations 0", "--realizations"},
+    {"ipr-map", "--threads -1", "--threads"},
+    {"ipr-map", "--solver magic", "--solver"},
+    {"ipr-map", "--bogus 3", "bogus"},
+    {"spectrum", "--disorder RDM3", "--disorder"},
+    {"spectrum", "--q 2", "--q"},
+    {"spectrum", "--xi 1.01", "--xi"},
+    {"spectrum", "--xi -0.5", "--xi"},
+    {"spectrum", "--N 1", "--N"},
+    {"spectrum", "--F0 -3", "--F0"},
+    {"spectrum", "--F0 0", "F0"},
+    {"spectrum", "--method arnoldi", "--method"},
+    {"spectrum", "--config /nonexistent/chain.txt", "/nonexistent/chain.txt"},
+    {"spectrum", "--radii /nonexistent/radii.txt", "/nonexistent/radii.txt"},
+    {"spectrum", "--config " GRANULAR_DATA_DIR "/examples/single-impurity-11.radii", "single-impurity-11.radii:2"},
+    {"spectrum", "--config a --radii b", "--config"},
+    {"correlations", "--disorder Q", "--disorder"},
+    {"correlations", "--disorder h", "--disorder"},
+    {"correlations", "--q 1.2", "--q"},
+    {"correlations", "--N 1", "--N"},
+    {"correlations", "--realizations 0", "--realizations"},
+    {"correlations", "--max-distance 100", "--max-distance"},
+};
+
+INSTANTIATE_TEST_SUITE_P(Tools, BadInputTest, ::testing::ValuesIn(cases));
+
+TEST(ToolContract, HelpAndVersionExitZero) {
+  for (const char* tool : {"ipr-map", "spectrum", "correlations"}) {
+    EXPECT_EQ(run_tool(tool, "--help").exit_code, 0) << tool;
+    EXPECT_EQ(run_tool(tool, "--version").exit_code, 0) << tool;
+  }
+}
+
+TEST(ToolContract, UnwritableOutputFolderIsAnIoErrorWithNoOutput) {
+  const ToolResult r = run_tool("spectrum", "--N 5 --output /nonexistent-folder/x.csv");
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_NE(r.err.find("/nonexistent-folder"), std::string::npos) << r.err;
+}
+
+}  // namespace
+}  // namespace granular::testing

@@ -1,0 +1,49 @@
+// ipr-map end to end: determinism across thread counts and seeds.
+#include <unistd.h>
+
+#include <gtest/gtest.h>
+
+#include "tool_runner.hpp"
+
+namespace granular::testing {
+namespace {
+
+const std::string small_job = "--N 24 --xi 0.3:0.5:0.1 --q 0.2,0.8 --realizations 12 --quiet";
+
+TEST(IprMapTool, SameSeedIsByteIdenticalForOneAndTwoThreads) {
+  const std::string dir = scratch_folder("ipr-threads");
+  ASSERT_EQ(run_tool("ipr-map", small_job + " --seed 5 --threads 1 --output " + dir + "/t1.csv").exit_code, 0);
+  ASSERT_EQ(run_tool("ipr-map", small_job + " --seed 5 --threads 2 --output " + dir + "/t2.csv").exit_code, 0);
+  ASSERT_EQ(run_tool("ipr-map", small_job + " --seed 6 --threads 2 --output " + dir + "/s6.csv").exit_code, 0);
+  const std::string one = read_file(dir + "/t1.csv"), two = read_file(dir + "/t2.csv"), other = read_file(dir + "/s6.csv");
+  EXPECT_EQ(one.substr(0, one.find('\n')), "disorder,q,xi,mode,freq_khz,ipr");
+  EXPECT_EQ(std::count(one.begin(), one.end(), '\n'), 1 + 2 * 3 * 24);
+  EXPECT_EQ(one, two);
+  EXPECT_NE(one, other);
+  EXPECT_NE(read_file(dir + "/t1.json").find("\"seed\": 5"), std::string::npos);
+  std::filesystem::remove_all(dir);
+}
+
+TEST(IprMapTool, OneHomogeneousRealizationEqualsTheSpectrumTool) {
+  // h ignores q and the seed: the map's single realization is the chain `spectrum` solves.
+  // Same solver as `spectrum` (LAPACK) so the digits can match; ipr-map's default `fast` solver
+  // agrees to ~1e-12 (tests/linear/twisted_ipr_solver_test.cpp), not to the last digit.
+  const std::string dir = scratch_folder("ipr-h");
+  ASSERT_EQ(run_tool("ipr-map", "--disorder h --N 12 --xi 1 --q 0.5 --realizations 1 --solver lapack --quiet --output " + dir + "/h.csv").exit_code, 0);
+  ASSERT_EQ(run_tool("spectrum", "--disorder h --N 12 --xi 1 --output " + dir + "/s.csv").exit_code, 0);
+  std::istringstream map(read_file(dir + "/h.csv")), spec(read_file(dir + "/s.csv"));
+  std::string a, b;
+  std::getline(map, a);
+  std::getline(spec, b);
+  int rows = 0;
+  while (std::getline(map, a) && std::getline(spec, b)) {
+    // "h,0.5,1,k,f,ipr" versus "k,f,ipr": the mode columns must agree to the last digit.
+    EXPECT_EQ(a.substr(std::string("h,0.5,1,").size()), b);
+    ++rows;
+  }
+  EXPECT_EQ(rows, 12);
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace granular::testing
