@@ -1,5 +1,6 @@
 #include "granular/linear/ipr_map.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -34,6 +35,7 @@ std::vector<IprMapCell> compute_ipr_map(const IprMapConfig& c, ProgressMeter* pr
   for (int t = 0; t < threads; ++t) solvers.push_back(make_mode_ipr_solver(c.solver));
 
   const std::size_t n = c.n, realizations = c.realizations;
+  constexpr std::size_t batch = 4;  // chains per solve_batch call
   std::vector<double> omega2(realizations * n), ipr(realizations * n);  // slot r holds realization r
   std::vector<Configuration> types(realizations);
   std::vector<IprMapCell> cells;
@@ -42,16 +44,34 @@ std::vector<IprMapCell> compute_ipr_map(const IprMapConfig& c, ProgressMeter* pr
       types[r] = realization_configuration(c.disorder, q, n, c.seed, r);
     });
     for (double xi : c.xi_values) {
-      parallel_realizations(
-          realizations, threads,
-          [&](std::size_t r, int thread) {
-            const Chain chain = make_chain(radii_of(types[r], c.r1, xi), c.precompression, c.material);
-            thread_local std::vector<double> w2, p;
-            solvers[thread]->solve(dynamical_matrix(chain), inverse_sqrt_mass(chain.inverse_mass), w2, p);
-            std::copy(w2.begin(), w2.end(), omega2.begin() + static_cast<long>(r * n));
-            std::copy(p.begin(), p.end(), ipr.begin() + static_cast<long>(r * n));
-          },
-          progress);
+      // Realizations go to the solver in fixed batches [b·B, b·B + B): a solver may overlap the
+      // chains of a batch, and each chain's result is independent of the batch and the thread.
+      const std::size_t batches = (realizations + batch - 1) / batch;
+      parallel_realizations(batches, threads, [&](std::size_t b, int thread) {
+        struct Work {
+          std::vector<double> w2, p;
+          SymTridiagonal d;
+          std::vector<double> s;
+        };
+        thread_local std::vector<Work> work(batch);
+        thread_local std::vector<ModeIprTask> tasks;
+        tasks.clear();
+        const std::size_t first = b * batch, last = std::min(realizations, first + batch);
+        for (std::size_t r = first; r < last; ++r) {
+          Work& w = work[r - first];
+          const Chain chain = make_chain(radii_of(types[r], c.r1, xi), c.precompression, c.material);
+          w.d = dynamical_matrix(chain);
+          w.s = inverse_sqrt_mass(chain.inverse_mass);
+          tasks.push_back({&w.d, &w.s, &w.w2, &w.p});
+        }
+        solvers[thread]->solve_batch(tasks);
+        for (std::size_t r = first; r < last; ++r) {
+          const Work& w = work[r - first];
+          std::copy(w.w2.begin(), w.w2.end(), omega2.begin() + static_cast<long>(r * n));
+          std::copy(w.p.begin(), w.p.end(), ipr.begin() + static_cast<long>(r * n));
+        }
+        if (progress) progress->advance(last - first);
+      });
       IprMapCell cell{q, xi, std::vector<double>(n, 0.0), std::vector<double>(n, 0.0)};
       for (std::size_t r = 0; r < realizations; ++r)  // fixed order: thread-count independent
         for (std::size_t k = 0; k < n; ++k) {

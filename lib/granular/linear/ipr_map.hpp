@@ -23,7 +23,7 @@ struct IprMapConfig {
   double r1 = 4.76e-3;                ///< type-1 radius [m]
   Material material = steel;
   int threads = 0;                    ///< 0 = every core
-  std::string solver = "lapack";      ///< see make_mode_ipr_solver
+  std::string solver = "fast";        ///< see make_mode_ipr_solver
 };
 
 struct IprMapCell {

@@ -4,6 +4,7 @@
 
 #include "granular/error.hpp"
 #include "granular/linear/mode_ipr.hpp"
+#include "granular/linear/twisted_ipr_solver.hpp"
 
 namespace granular {
 
@@ -17,9 +18,10 @@ void LapackModeIpr::solve(const SymTridiagonal& d, const std::vector<double>& s,
 }
 
 std::unique_ptr<ModeIprSolver> make_mode_ipr_solver(std::string_view method) {
+  if (method == "fast") return std::make_unique<TwistedModeIpr>();
   if (method == "lapack") return std::make_unique<LapackModeIpr>(LapackDriver::stevd);
   if (method.starts_with("lapack-")) return std::make_unique<LapackModeIpr>(parse_lapack_driver(method.substr(7)));
-  throw InvalidInput("--solver '" + std::string(method) + "': expected lapack or lapack-<stevr|stemr|stevd|steqr>");
+  throw InvalidInput("--solver '" + std::string(method) + "': expected fast, lapack or lapack-<stevr|stemr|stevd|steqr>");
 }
 
 }  // namespace granular

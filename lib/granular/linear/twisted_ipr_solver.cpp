@@ -1,0 +1,335 @@
+#include "granular/linear/twisted_ipr_solver.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <optional>
+
+#include "granular/error.hpp"
+#include "granular/linear/lapack.hpp"
+
+namespace granular {
+
+namespace {
+
+constexpr std::size_t L = TwistedModeIpr::lanes;
+constexpr double pivot_floor = 1e-290;  // a zero pivot becomes -pivot_floor (|e| ≤ 1 after scaling)
+constexpr double negligible = 1e-60;    // |z| below this (z_r = 1) ends a recurrence
+
+// IPR accumulation of one component; returns false once the component is negligible.
+struct Sums {
+  double z2 = 0, v2 = 0, v4 = 0;
+  void add(double z, double s) {
+    const double v = z * s;
+    const double vv = v * v;
+    z2 += z * z;
+    v2 += vv;
+    v4 += vv * vv;
+  }
+};
+
+
+// Root-free QL iteration on one chain, advanced one inner step at a time so that several chains
+// can be interleaved. d: diagonal, e2: squared off-diagonal; eigenvalues end up in d (unsorted).
+class RationalQl {
+ public:
+  RationalQl(double* d, double* e2, std::size_t n) : d_(d), e2_(e2), n_(static_cast<long>(n)), max_iterations_(30 * n_) {}
+
+  /// Deflates what has converged and sets up the next sweep; false when finished (or failed).
+  bool prepare() {
+    constexpr double eps2 = std::numeric_limits<double>::epsilon() * std::numeric_limits<double>::epsilon();
+    while (l_ < n_) {
+      long m = l_;
+      while (m + 1 < n_ && !(e2_[m] <= eps2 * std::fabs(d_[m] * d_[m + 1]))) ++m;
+      if (m + 1 < n_) e2_[m] = 0;
+      if (m == l_) {
+        ++l_;
+        continue;
+      }
+      if (m == l_ + 1) {  // a 2×2 block
+        const double mean = 0.5 * (d_[l_] + d_[l_ + 1]), half = 0.5 * (d_[l_] - d_[l_ + 1]);
+        const double radius = std::hypot(half, std::sqrt(e2_[l_]));
+        d_[l_] = mean + radius;
+        d_[l_ + 1] = mean - radius;
+        e2_[l_] = 0;
+        l_ += 2;
+        continue;
+      }
+      if (++iterations_ > max_iterations_) {
+        failed_ = true;
+        return false;
+      }
+      // Wilkinson shift from the leading 2×2 of the block [l, m]
+      const double root_e = std::sqrt(e2_[l_]);
+      const double g = (d_[l_ + 1] - d_[l_]) / (2 * root_e);
+      sigma_ = d_[l_] - root_e / (g + std::copysign(std::hypot(g, 1.0), g));
+      m_ = m;
+      i_ = m - 1;
+      c_ = 1;
+      s_ = 0;
+      gamma_ = d_[m] - sigma_;
+      p_ = gamma_ * gamma_;
+      return true;
+    }
+    return false;
+  }
+  /// One inner step of the sweep; true while the sweep goes on.
+  bool step() {
+    const long i = i_;
+    const double bb = e2_[i];
+    const double r = p_ + bb;
+    const double r_inv = 1.0 / r, p_inv = 1.0 / p_;  // independent divisions
+    if (i != m_ - 1) e2_[i + 1] = s_ * r;
+    const double old_c = c_, old_gamma = gamma_, alpha = d_[i];
+    c_ = p_ * r_inv;
+    s_ = bb * r_inv;
+    gamma_ = c_ * (alpha - sigma_) - s_ * old_gamma;
+    d_[i + 1] = old_gamma + (alpha - gamma_);
+    p_ = p_ != 0 ? gamma_ * gamma_ * (r * p_inv) : old_c * bb;  // γ²/c
+    if (--i_ >= l_) return true;
+    e2_[l_] = s_ * p_;
+    d_[l_] = sigma_ + gamma_;
+    return false;
+  }
+  bool failed() const { return failed_; }
+
+ private:
+  double* d_;
+  double* e2_;
+  long n_, max_iterations_;
+  long l_ = 0, m_ = 0, i_ = 0, iterations_ = 0;
+  double sigma_ = 0, c_ = 1, s_ = 0, gamma_ = 0, p_ = 0;
+  bool failed_ = false;
+};
+
+}  // namespace
+
+TwistedModeIpr::TwistedModeIpr(TwistedIprConfig config) : config_(config), fallback_(LapackDriver::stevr) {
+  if (!(config_.cluster_gap >= 0) || !(config_.cluster_gap < 1))
+    throw InvalidInput("cluster_gap " + std::to_string(config_.cluster_gap) + ": must be in [0, 1)");
+  if (!(config_.max_residual > 0)) throw InvalidInput("max_residual: must be > 0");
+}
+
+void TwistedModeIpr::reserve(std::size_t n) {
+  if (n <= capacity_) return;
+  capacity_ = n;
+  for (Slot& slot : slots_)
+    for (auto* v : {&slot.d, &slot.e, &slot.e2, &slot.lambda, &slot.mass}) v->resize(n);
+  stein_w_.resize(n);
+  for (auto* v : {&lplus_, &dplus_, &uminus_}) v->resize(n * L);
+  isolated_.resize(n);
+  stein_z_.resize(n * n);
+  stein_work_.resize(5 * n);
+  stein_iblock_.resize(n);
+  stein_isplit_.resize(n);
+  stein_iwork_.resize(3 * n);
+  stein_ifail_.resize(n);
+}
+
+void TwistedModeIpr::solve(const SymTridiagonal& t, const std::vector<double>& s, std::vector<double>& omega2,
+                           std::vector<double>& ipr) {
+  const ModeIprTask task{&t, &s, &omega2, &ipr};
+  solve_group({&task, 1});
+}
+
+void TwistedModeIpr::solve_batch(std::span<const ModeIprTask> tasks) {
+  for (std::size_t first = 0; first < tasks.size(); first += interleave)
+    solve_group(tasks.subspan(first, std::min(interleave, tasks.size() - first)));
+}
+
+bool TwistedModeIpr::load(Slot& slot, const ModeIprTask& task) {
+  const SymTridiagonal& t = *task.matrix;
+  const std::vector<double>& s = *task.inverse_sqrt_mass;
+  const std::size_t n = t.size();
+  if (n < 1) throw InvalidInput("eigen-solve of an empty matrix");
+  if (s.size() != n) throw InvalidInput("inverse_sqrt_mass: size differs from the matrix");
+  if (t.off_diagonal.size() + 1 != n) throw InvalidInput("tridiagonal matrix: off-diagonal needs n-1 entries");
+  // max_abs() skips NaN (fmax), so check every entry: LAPACK may not return on NaN input.
+  double scale = 0;
+  for (double x : t.diagonal) scale = std::isfinite(x) ? std::fmax(scale, std::fabs(x)) : INFINITY;
+  for (double x : t.off_diagonal) scale = std::isfinite(x) ? std::fmax(scale, std::fabs(x)) : INFINITY;
+  if (!std::isfinite(scale)) throw NumericalError("dynamical matrix has a non-finite entry");
+  slot.n = n;
+  slot.scale = scale;
+  if (!(scale > 0) || n < 2) return false;
+  double smax = 0;
+  for (double x : s) smax = std::fmax(smax, x);
+  if (!std::isfinite(smax) || !(smax > 0)) return false;
+  const double inv = 1.0 / scale;
+  for (std::size_t i = 0; i < n; ++i) {
+    slot.d[i] = slot.lambda[i] = t.diagonal[i] * inv;
+    slot.mass[i] = s[i] / smax;
+  }
+  for (std::size_t i = 0; i + 1 < n; ++i) {
+    slot.e[i] = t.off_diagonal[i] * inv;
+    slot.e2[i] = slot.e[i] * slot.e[i];
+  }
+  return true;
+}
+
+void TwistedModeIpr::solve_group(std::span<const ModeIprTask> tasks) {
+  const std::size_t count = tasks.size();
+  std::size_t n_max = 0;
+  for (const ModeIprTask& t : tasks) n_max = std::max(n_max, t.matrix->size());
+  reserve(n_max);
+  for (std::size_t j = 0; j < count; ++j) slots_[j].ok = load(slots_[j], tasks[j]);
+
+  // 1. eigenvalues: the QL sweeps of all chains in lock-step
+  std::optional<RationalQl> ql[interleave];
+  bool sweeping[interleave] = {};
+  std::size_t busy = 0;
+  for (std::size_t j = 0; j < count; ++j)
+    if (slots_[j].ok) {
+      ql[j].emplace(slots_[j].lambda.data(), slots_[j].e2.data(), slots_[j].n);
+      sweeping[j] = ql[j]->prepare();
+      busy += sweeping[j];
+    }
+  while (busy > 0)
+    for (std::size_t j = 0; j < count; ++j)
+      if (sweeping[j] && !ql[j]->step() && !(sweeping[j] = ql[j]->prepare())) --busy;
+
+  // 2.-4. modes, per chain
+  for (std::size_t j = 0; j < count; ++j) {
+    Slot& slot = slots_[j];
+    const ModeIprTask& task = tasks[j];
+    ++info_.solves;
+    bool ok = slot.ok && !ql[j]->failed();
+    if (ok) {
+      std::sort(slot.lambda.begin(), slot.lambda.begin() + static_cast<long>(slot.n));
+      task.ipr->resize(slot.n);
+      ok = solve_modes(slot, *task.ipr);
+    }
+    if (ok) {
+      task.omega2->resize(slot.n);
+      for (std::size_t k = 0; k < slot.n; ++k) (*task.omega2)[k] = slot.lambda[k] * slot.scale;
+    } else {
+      ++info_.fallbacks;
+      fallback_.solve(*task.matrix, *task.inverse_sqrt_mass, *task.omega2, *task.ipr);
+    }
+  }
+}
+
+bool TwistedModeIpr::solve_modes(const Slot& slot, std::vector<double>& ipr) {
+  const std::size_t n = slot.n;
+  const double* lambda = slot.lambda.data();
+  for (std::size_t k = 0; k < n; ++k)
+    if (!std::isfinite(lambda[k])) return false;
+  const double norm = std::fmax(std::fabs(lambda[0]), std::fabs(lambda[n - 1]));
+  if (!(norm > 0)) return false;
+  residual_limit_ = config_.max_residual * static_cast<double>(n) * std::numeric_limits<double>::epsilon() * norm;
+
+  const double min_gap = config_.cluster_gap * norm;
+  std::size_t isolated = 0;
+  std::size_t k = 0;
+  while (k < n) {
+    std::size_t end = k + 1;  // the run [k, end) of modes closer than min_gap to a neighbour
+    while (end < n && lambda[end] - lambda[end - 1] < min_gap) ++end;
+    if (end - k == 1) {
+      isolated_[isolated++] = k;
+    } else if (!cluster(slot, k, end - k, ipr)) {
+      return false;
+    }
+    k = end;
+  }
+  for (std::size_t b = 0; b < isolated; b += L)
+    if (!twisted_batch(slot, isolated_.data() + b, std::min(L, isolated - b), ipr)) return false;
+  info_.isolated_modes += isolated;
+  return true;
+}
+
+bool TwistedModeIpr::twisted_batch(const Slot& slot, const std::size_t* modes, std::size_t count,
+                                   std::vector<double>& ipr) {
+  const std::size_t n = slot.n;
+  const double* d = slot.d.data();
+  const double* e = slot.e.data();
+  double* lp = lplus_.data();
+  double* dp = dplus_.data();
+  double* um = uminus_.data();
+  alignas(64) double sigma[L], piv[L], best[L];
+  alignas(64) std::size_t twist[L];
+  for (std::size_t l = 0; l < L; ++l) sigma[l] = slot.lambda[modes[std::min(l, count - 1)]];
+
+  // stationary L D Lᵀ = T − σ from the top: D⁺_{i+1} = d_{i+1} − σ − e_i L⁺_i, L⁺_i = e_i / D⁺_i
+  for (std::size_t l = 0; l < L; ++l) piv[l] = d[0] - sigma[l];
+  for (std::size_t i = 0; i + 1 < n; ++i) {
+    const double ei = e[i], dn = d[i + 1];
+    for (std::size_t l = 0; l < L; ++l) {
+      const double p = std::fabs(piv[l]) < pivot_floor ? -pivot_floor : piv[l];
+      const double li = ei / p;
+      dp[i * L + l] = p;
+      lp[i * L + l] = li;
+      piv[l] = (dn - sigma[l]) - ei * li;
+    }
+  }
+  for (std::size_t l = 0; l < L; ++l) {
+    dp[(n - 1) * L + l] = piv[l];
+    best[l] = std::fabs(piv[l]);  // γ_{n-1} = D⁺_{n-1}
+    twist[l] = n - 1;
+  }
+  // progressive U D Uᵀ from the bottom: U_i = e_i / D⁻_{i+1}; γ_i = D⁺_i − e_i U_i
+  for (std::size_t l = 0; l < L; ++l) piv[l] = d[n - 1] - sigma[l];
+  for (std::size_t i = n - 1; i-- > 0;) {
+    const double ei = e[i], di = d[i];
+    for (std::size_t l = 0; l < L; ++l) {
+      const double p = std::fabs(piv[l]) < pivot_floor ? -pivot_floor : piv[l];
+      const double ui = ei / p;
+      um[i * L + l] = ui;
+      piv[l] = (di - sigma[l]) - ei * ui;
+      const double g = std::fabs(dp[i * L + l] - ei * ui);
+      const bool better = g < best[l];
+      best[l] = better ? g : best[l];
+      twist[l] = better ? i : twist[l];
+    }
+  }
+  // z_r = 1; z_i = −L⁺_i z_{i+1} above the twist, z_{i+1} = −U_i z_i below it
+  const double* m = slot.mass.data();
+  for (std::size_t l = 0; l < count; ++l) {
+    const std::size_t r = twist[l];
+    Sums sums;
+    sums.add(1.0, m[r]);
+    double z = 1.0;
+    for (std::size_t i = r; i-- > 0;) {
+      z = -lp[i * L + l] * z;
+      if (!(std::fabs(z) >= negligible)) break;
+      sums.add(z, m[i]);
+    }
+    z = 1.0;
+    for (std::size_t i = r; i + 1 < n; ++i) {
+      z = -um[i * L + l] * z;
+      if (!(std::fabs(z) >= negligible)) break;
+      sums.add(z, m[i + 1]);
+    }
+    const double residual = best[l] / std::sqrt(sums.z2);
+    const double p = sums.v4 / (sums.v2 * sums.v2);
+    if (!(residual <= residual_limit_) || !(p > 0 && p <= 1 + 1e-12)) return false;
+    ipr[modes[l]] = std::fmin(p, 1.0);
+  }
+  return true;
+}
+
+bool TwistedModeIpr::cluster(const Slot& slot, std::size_t first, std::size_t count, std::vector<double>& ipr) {
+  const std::size_t n = slot.n;
+  const int ni = static_cast<int>(n), m = static_cast<int>(count);
+  for (std::size_t j = 0; j < count; ++j) {
+    stein_w_[j] = slot.lambda[first + j];
+    stein_iblock_[j] = 1;
+  }
+  stein_isplit_[0] = ni;
+  int info = 0;
+  dstein_(&ni, slot.d.data(), slot.e.data(), &m, stein_w_.data(), stein_iblock_.data(), stein_isplit_.data(),
+          stein_z_.data(), &ni, stein_work_.data(), stein_iwork_.data(), stein_ifail_.data(), &info);
+  if (info != 0) return false;
+  for (std::size_t j = 0; j < count; ++j) {
+    const double* z = stein_z_.data() + j * n;
+    Sums sums;
+    for (std::size_t i = 0; i < n; ++i) sums.add(z[i], slot.mass[i]);
+    const double p = sums.v4 / (sums.v2 * sums.v2);
+    if (!(p > 0 && p <= 1 + 1e-12)) return false;
+    ipr[first + j] = std::fmin(p, 1.0);
+  }
+  ++info_.clusters;
+  info_.cluster_modes += count;
+  return true;
+}
+
+}  // namespace granular

@@ -1,0 +1,142 @@
+// Per-solve cost of "ω² and the IPR of every mode" on the default ipr-map job's chains:
+// Anderson disorder, N = 100, F0 = 10 N, every (q, ξ) cell of q = 0.2/0.5/0.8 × ξ = 0.1:1:0.01,
+// a few realizations each (the same configurations ipr-map draws with seed 1). One benchmark
+// iteration solves one chain; the chains are cycled so every cell is visited.
+//
+//   build/benchmarks/ipr_map_benchmark --benchmark_repetitions=3 --benchmark_report_aggregates_only=true
+//
+// BM_ModeIpr/<solver>: the solvers behind `ipr-map --solver` (LAPACK drivers with eigenvectors,
+// then Σv⁴/(Σv²)²; the fast twisted-factorization solver), one chain per call.
+// BM_ModeIprBatch/<solver>_batch4: four chains per solve_batch call, as ipr-map calls it. BM_EigenvaluesOnly/dsterf: the
+// O(N²) eigenvalue floor the fast solver sits on. BM_BuildChain: making the chain and its
+// dynamical matrix, the per-realization cost outside any solver.
+#include <benchmark/benchmark.h>
+
+#include <string>
+#include <vector>
+
+#include "granular/linear/dynamical_matrix.hpp"
+#include "granular/linear/lapack.hpp"
+#include "granular/linear/mode_ipr.hpp"
+#include "granular/linear/mode_ipr_solver.hpp"
+#include "granular/linear/twisted_ipr_solver.hpp"
+#include "granular/model/chain.hpp"
+#include "granular/model/disorder.hpp"
+
+namespace {
+
+using namespace granular;
+
+constexpr std::size_t beads = 100;
+constexpr std::size_t realizations_per_cell = 4;
+
+struct Job {
+  std::vector<SymTridiagonal> matrices;
+  std::vector<std::vector<double>> inverse_sqrt_masses;
+  std::vector<std::vector<double>> radii;
+};
+
+const Job& default_job() {
+  static const Job job = [] {
+    Job j;
+    for (double q : {0.2, 0.5, 0.8})
+      for (int step = 0; step <= 90; ++step) {
+        const double xi = 0.1 + 0.01 * step;
+        for (std::size_t r = 0; r < realizations_per_cell; ++r) {
+          const auto types = realization_configuration(Disorder::anderson, q, beads, 1, r);
+          j.radii.push_back(radii_of(types, 4.76e-3, xi));
+          const Chain chain = make_chain(j.radii.back(), 10.0);
+          j.matrices.push_back(dynamical_matrix(chain));
+          j.inverse_sqrt_masses.push_back(inverse_sqrt_mass(chain.inverse_mass));
+        }
+      }
+    return j;
+  }();
+  return job;
+}
+
+void BM_ModeIpr(benchmark::State& state, std::string method) {
+  const Job& job = default_job();
+  auto solver = make_mode_ipr_solver(method);
+  std::vector<double> omega2, ipr;
+  std::size_t i = 0;
+  for (auto _ : state) {
+    solver->solve(job.matrices[i], job.inverse_sqrt_masses[i], omega2, ipr);
+    benchmark::DoNotOptimize(ipr.data());
+    if (++i == job.matrices.size()) i = 0;
+  }
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()));
+  if (auto* fast = dynamic_cast<TwistedModeIpr*>(solver.get())) {
+    const auto& info = fast->info();
+    state.counters["cluster_modes_per_solve"] = static_cast<double>(info.cluster_modes) / static_cast<double>(info.solves);
+    state.counters["fallbacks"] = static_cast<double>(info.fallbacks);
+  }
+}
+
+// Four chains per solve_batch call, as ipr-map calls it (the fast solver interleaves their QL
+// sweeps); time per chain = time per iteration / 4.
+void BM_ModeIprBatch(benchmark::State& state, std::string method) {
+  const Job& job = default_job();
+  auto solver = make_mode_ipr_solver(method);
+  constexpr std::size_t batch = 4;
+  std::vector<double> omega2[batch], ipr[batch];
+  ModeIprTask tasks[batch];
+  std::size_t i = 0;
+  for (auto _ : state) {
+    for (std::size_t j = 0; j < batch; ++j) {
+      tasks[j] = {&job.matrices[i], &job.inverse_sqrt_masses[i], &omega2[j], &ipr[j]};
+      if (++i == job.matrices.size()) i = 0;
+    }
+    solver->solve_batch(tasks);
+    benchmark::DoNotOptimize(ipr[0].data());
+  }
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * batch));
+  state.counters["us_per_chain"] =
+      benchmark::Counter(static_cast<double>(state.iterations() * batch), benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+
+void BM_EigenvaluesOnly(benchmark::State& state) {
+  const Job& job = default_job();
+  std::vector<double> d(beads), e(beads);
+  const int n = static_cast<int>(beads);
+  std::size_t i = 0;
+  for (auto _ : state) {
+    const SymTridiagonal& t = job.matrices[i];
+    const double inv = 1.0 / t.max_abs();
+    for (std::size_t k = 0; k < beads; ++k) d[k] = t.diagonal[k] * inv;
+    for (std::size_t k = 0; k + 1 < beads; ++k) e[k] = t.off_diagonal[k] * inv;
+    int info = 0;
+    dsterf_(&n, d.data(), e.data(), &info);
+    benchmark::DoNotOptimize(d.data());
+    if (++i == job.matrices.size()) i = 0;
+  }
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()));
+}
+
+void BM_BuildChain(benchmark::State& state) {
+  const Job& job = default_job();
+  std::size_t i = 0;
+  for (auto _ : state) {
+    const Chain chain = make_chain(job.radii[i], 10.0);
+    auto d = dynamical_matrix(chain);
+    auto s = inverse_sqrt_mass(chain.inverse_mass);
+    benchmark::DoNotOptimize(d.diagonal.data());
+    benchmark::DoNotOptimize(s.data());
+    if (++i == job.radii.size()) i = 0;
+  }
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()));
+}
+
+}  // namespace
+
+BENCHMARK_CAPTURE(BM_ModeIpr, lapack_stevr, std::string("lapack-stevr"))->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_ModeIpr, lapack_stemr, std::string("lapack-stemr"))->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_ModeIpr, lapack_stevd, std::string("lapack-stevd"))->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_ModeIpr, lapack_steqr, std::string("lapack-steqr"))->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_ModeIpr, fast, std::string("fast"))->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_ModeIprBatch, lapack_stevd_batch4, std::string("lapack-stevd"))->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_ModeIprBatch, fast_batch4, std::string("fast"))->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_EigenvaluesOnly)->Name("BM_EigenvaluesOnly/dsterf")->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_BuildChain)->Unit(benchmark::kMicrosecond);
+
+BENCHMARK_MAIN();
