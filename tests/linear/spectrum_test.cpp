@@ -2,12 +2,14 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <numbers>
 
 #include <Eigen/Dense>
 #include <gtest/gtest.h>
 
 #include "fixtures.hpp"
+#include "granular/error.hpp"
 #include "granular/linear/band_edges.hpp"
 #include "granular/linear/dynamical_matrix.hpp"
 #include "granular/linear/lapack_eigensolver.hpp"
@@ -146,6 +148,21 @@ TEST(Spectrum, IprOfALocalizedAndAnExtendedMode) {
   const Modes h = modes_of(fixtures::homogeneous_bulk_walls(100));
   // Exact sine modes: Σ sin⁴ / (Σ sin²)² = 3/(2(N+1)) for fixed ends.
   EXPECT_NEAR(h.ipr[10], 1.5 / 101.0, 1e-12);
+}
+
+}  // namespace
+}  // namespace granular
+
+namespace granular {
+namespace {
+
+TEST(Spectrum, NonFiniteMatrixIsANumericalErrorNotAHang) {
+  SymTridiagonal t{{1.0, std::numeric_limits<double>::quiet_NaN(), 1.0}, {0.5, 0.5}};
+  for (auto driver : {LapackDriver::stevr, LapackDriver::stevd, LapackDriver::steqr})
+    EXPECT_THROW(LapackEigensolver(driver).solve(t, true), NumericalError);
+  t.diagonal[1] = 1.0;
+  t.off_diagonal[0] = std::numeric_limits<double>::infinity();
+  EXPECT_THROW(LapackEigensolver().solve(t, false), NumericalError);
 }
 
 }  // namespace

@@ -29,7 +29,7 @@ void LapackEigensolver::solve(const SymTridiagonal& t, bool want_vectors, EigenD
   const int n = static_cast<int>(t.size());
   if (n < 1) throw InvalidInput("eigen-solve of an empty matrix");
   const double scale = t.max_abs();
-  if (!std::isfinite(scale)) throw NumericalError("dynamical matrix has a non-finite entry");
+  if (!std::isfinite(scale) || !t.all_finite()) throw NumericalError("dynamical matrix has a non-finite entry");
   const double inv = scale > 0 ? 1.0 / scale : 1.0;
 
   std::vector<LapackDriver> order{preferred_};

@@ -22,3 +22,15 @@ double SymTridiagonal::max_abs() const {
 }
 
 }  // namespace granular
+
+namespace granular {
+
+bool SymTridiagonal::all_finite() const {
+  for (double d : diagonal)
+    if (!std::isfinite(d)) return false;
+  for (double e : off_diagonal)
+    if (!std::isfinite(e)) return false;
+  return true;
+}
+
+}  // namespace granular

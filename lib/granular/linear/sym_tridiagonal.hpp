@@ -14,6 +14,8 @@ struct SymTridiagonal {
   void multiply(const double* x, double* y) const;
   /// max |entry|, the scale used to keep LAPACK's arithmetic away from over/underflow
   double max_abs() const;
+  /// false if any entry is NaN or infinite (max_abs alone would skip a NaN)
+  bool all_finite() const;
 };
 
 }  // namespace granular

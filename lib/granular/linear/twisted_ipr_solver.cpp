@@ -14,6 +14,7 @@ namespace {
 
 constexpr std::size_t L = TwistedModeIpr::lanes;
 constexpr double pivot_floor = 1e-290;  // a zero pivot becomes -pivot_floor (|e| ≤ 1 after scaling)
+constexpr double node_ratio = 1e3;     // |L⁺| or |U⁻| above this: a near-zero pivot, a node of z
 constexpr double negligible = 1e-60;    // |z| below this (z_r = 1) ends a recurrence
 
 // IPR accumulation of one component; returns false once the component is negligible.
@@ -288,15 +289,30 @@ bool TwistedModeIpr::twisted_batch(const Slot& slot, const std::size_t* modes, s
     Sums sums;
     sums.add(1.0, m[r]);
     double z = 1.0;
+    // Where a pivot is tiny the eigenvector has a node next to it (z_{i+1} ≈ 0 between two
+    // lumps of one mode), and the two-term product 0·∞ loses the far lump; there the three-term
+    // row of (T − σ) z = 0 carries z across instead (LAPACK's dlar1v does the same at exact zeros).
+    const double s_l = sigma[l];
+    double z1 = 0;  // the component one further from the twist
     for (std::size_t i = r; i-- > 0;) {
-      z = -lp[i * L + l] * z;
-      if (!(std::fabs(z) >= negligible)) break;
+      const double li = lp[i * L + l];
+      const double next = std::fabs(li) > node_ratio
+                              ? -((d[i + 1] - s_l) * z + (i + 2 < n ? e[i + 1] * z1 : 0.0)) / e[i]
+                              : -li * z;
+      z1 = z;
+      z = next;
+      if (!(std::fabs(z) >= negligible) && !(std::fabs(z1) >= negligible)) break;
       sums.add(z, m[i]);
     }
     z = 1.0;
+    z1 = 0;
     for (std::size_t i = r; i + 1 < n; ++i) {
-      z = -um[i * L + l] * z;
-      if (!(std::fabs(z) >= negligible)) break;
+      const double ui = um[i * L + l];
+      const double next = std::fabs(ui) > node_ratio ? -((d[i] - s_l) * z + (i > 0 ? e[i - 1] * z1 : 0.0)) / e[i]
+                                                     : -ui * z;
+      z1 = z;
+      z = next;
+      if (!(std::fabs(z) >= negligible) && !(std::fabs(z1) >= negligible)) break;
       sums.add(z, m[i + 1]);
     }
     const double residual = best[l] / std::sqrt(sums.z2);
