@@ -42,6 +42,8 @@ int main(int argc, char** argv) {
   PowerLawCriterion criterion;
   double window_threshold = 1e-30, reference_max_step = 0.01e-6;
   bool profile = false, quiet = false, resume = false;
+  std::string energy_guard = "stop";
+  double max_energy_error = 1e-3;
   int threads = 0;
   tool::add_chain_options(app, chain_options);
   app.add_option("--realizations", realizations, "realizations to average (ensemble means and exponents)")->capture_default_str();
@@ -72,6 +74,8 @@ int main(int argc, char** argv) {
   app.add_option("--active-window", active_window, "on | off: integrate only where the wave has arrived")->capture_default_str();
   app.add_option("--window-threshold", window_threshold, "relative kinetic energy that grows the window")->capture_default_str();
   app.add_option("--reference-max-step", reference_max_step, "largest step of --integrator reference [s], 0 = none")->capture_default_str();
+  app.add_option("--max-energy-error", max_energy_error, "guard: relative energy error that stops (or is reported), 0 = off")->capture_default_str();
+  app.add_option("--energy-guard", energy_guard, "stop | warn: what passing --max-energy-error does")->capture_default_str();
   app.add_flag("--quiet", quiet, "no warnings or progress line on stderr");
 
   return tool::run(app, argc, argv, [&] {
@@ -119,6 +123,11 @@ int main(int argc, char** argv) {
     config.map_samples = energy_map.empty() ? 0 : static_cast<std::size_t>(map_samples);
     config.map_stride = static_cast<std::size_t>(map_stride);
     config.spectrum_samples = spectrum_file.empty() ? 0 : static_cast<std::size_t>(spectrum_samples);
+    if (!(max_energy_error >= 0) || !std::isfinite(max_energy_error))
+      throw InvalidInput("--max-energy-error " + format_number(max_energy_error) + ": must be finite and >= 0");
+    if (energy_guard != "stop" && energy_guard != "warn") throw InvalidInput("--energy-guard '" + energy_guard + "': stop or warn");
+    config.max_energy_error = max_energy_error;
+    config.stop_on_energy_error = energy_guard == "stop";
     validate(config, beads);
 
     std::string fit_list = fit_text;  // start:stop is two numbers here, not a range to expand
@@ -240,6 +249,12 @@ int main(int argc, char** argv) {
     if (r.reached_walls && !quiet)
       std::fprintf(stderr, "spreading: warning: energy reached the walls ((E_1 + E_N)/H0 up to %s): the chain is too short for T\n",
                    format_number(r.wall_energy).c_str());
+    if (r.energy_guard_time >= 0 && !quiet)
+      std::fprintf(stderr, "spreading: warning: relative energy error passed --max-energy-error %s at t = %s s\n",
+                   format_number(max_energy_error).c_str(), format_number(r.energy_guard_time).c_str());
+    if (summary && summary->max_energy_error > max_energy_error && max_energy_error > 0 && !quiet)
+      std::fprintf(stderr, "spreading: warning: relative energy error reached %s, past --max-energy-error %s\n",
+                   format_number(summary->max_energy_error).c_str(), format_number(max_energy_error).c_str());
     if (summary && summary->reached_walls > 0 && !quiet)
       std::fprintf(stderr, "spreading: warning: energy reached the walls in %zu of %zu realizations: the chain is too short for T\n",
                    summary->reached_walls, summary->realizations);

@@ -159,3 +159,29 @@ TEST(SpreadingToolEnsemble, ThreadInvariant) {
 
 }  // namespace
 }  // namespace granular::testing
+
+namespace granular::testing {
+namespace {
+
+// Guards on long runs: a blown-up energy stops the run with the realization to replay, and
+// writes nothing; --energy-guard warn only reports it.
+TEST(SpreadingToolGuards, EnergyErrorStopsOrWarns) {
+  const std::string dir = scratch_folder("guard");
+  const std::string coarse = "--N 301 --T 1e-3 --dt 1e-5 --fit 4e-4:1e-3 ";
+  ToolResult r = run_tool("spreading", coarse + "--output " + dir + "/stop");
+  EXPECT_EQ(r.exit_code, 3) << r.err;
+  EXPECT_NE(r.err.find("--max-energy-error"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir + "/stop.csv"));
+  r = run_tool("spreading", coarse + "--realizations 3 --quiet --output " + dir + "/ens");
+  EXPECT_EQ(r.exit_code, 3) << r.err;
+  EXPECT_NE(r.err.find("(replay: spreading --seed 1 --realization "), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir + "/ens.csv"));
+  r = run_tool("spreading", coarse + "--energy-guard warn --output " + dir + "/warn");
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("passed --max-energy-error"), std::string::npos) << r.err;
+  EXPECT_TRUE(std::filesystem::exists(dir + "/warn.csv"));
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace granular::testing

@@ -123,7 +123,15 @@ SpreadingResult run_spreading(const Chain& chain, const State& initial, const Sp
         r.energy_error.push_back(error);
         r.max_energy_error = std::max(r.max_energy_error, error);
         r.wall_energy = std::max(r.wall_energy, (energy[0] + energy[n - 1]) / r.initial_energy);
-        if (!std::isfinite(h)) throw NumericalError("the energy became non-finite at t = " + format_number(t) + " s");
+        if (!std::isfinite(h) || !std::isfinite(s.m2))
+          throw NumericalError("the state became non-finite (NaN or inf) at t = " + format_number(t) + " s");
+        if (config.max_energy_error > 0 && error > config.max_energy_error) {
+          if (config.stop_on_energy_error)
+            throw NumericalError("relative energy error " + format_number(error) + " at t = " + format_number(t) +
+                                 " s exceeds --max-energy-error " + format_number(config.max_energy_error) +
+                                 " (a smaller --dt helps)");
+          if (r.energy_guard_time < 0) r.energy_guard_time = t;
+        }
       }
       if (what & map) {
         r.map_t.push_back(t);

@@ -31,6 +31,8 @@ struct SpreadingConfig {
   std::size_t map_stride = 1;            ///< beads summed per map column
   std::size_t spectrum_samples = 0;      ///< uniform samples of u for g(ν); 0 = none
   double wall_warning = 1e-10;           ///< flag when (E_first + E_last)/H0 exceeds it
+  double max_energy_error = 1e-3;        ///< guard on |H(t)−H0|/H0 at the samples; 0 = unwatched
+  bool stop_on_energy_error = true;      ///< past the guard: stop (NumericalError) or only record it
 };
 
 /// Throws InvalidInput naming the option (--T, --dt, --samples, …) on a bad config.
@@ -51,6 +53,7 @@ struct SpreadingResult {
   std::vector<double> spectrum_khz, spectrum;  ///< g(ν) normalized to max 1
   double wall_energy = 0;            ///< max over samples of (E_first + E_last)/H0
   bool reached_walls = false;        ///< wall_energy > config.wall_warning
+  double energy_guard_time = -1;     ///< first sample time past max_energy_error (when not stopping); -1: never
   std::uint64_t steps = 0, bond_updates = 0;
   std::size_t window_begin = 0, window_end = 0;  ///< final active window
   double seconds = 0;                ///< wall time of the integration

@@ -46,6 +46,7 @@ nlohmann::json describe(const TransportCase& c) {
           {"force_law", to_string(d.force_law)}, {"samples", d.samples},
           {"sampling", d.sampling == Sampling::logarithmic ? "log" : "uniform"},
           {"active_window", d.window.enabled}, {"window_threshold", d.window.threshold},
+          {"max_energy_error", d.max_energy_error}, {"stop_on_energy_error", d.stop_on_energy_error},
           {"seed", c.seed}, {"realizations", c.realizations},
           {"profile_realizations", std::min(c.profile_realizations, c.realizations)},
           {"material", {{"E_Pa", steel.young}, {"nu", steel.poisson}, {"rho_kg_m3", steel.density}}},
@@ -107,7 +108,15 @@ TransportSummary run_transport_study(const TransportCase& c, const StudyRunOptio
   ensemble.resume = options.resume;
   ensemble.parameters = describe(c).dump();
   ensemble.progress = options.progress;
-  const auto rows = run_ensemble(ensemble, [&](std::uint64_t r, int) { return realization_row(c, r); });
+  const auto rows = run_ensemble(ensemble, [&](std::uint64_t r, int) {
+    try {
+      return realization_row(c, r);
+    } catch (const NumericalError& e) {  // say which chain, so it can be replayed alone
+      throw NumericalError("realization " + std::to_string(r) + " of seed " + std::to_string(c.seed) +
+                           " (replay: spreading --seed " + std::to_string(c.seed) + " --realization " +
+                           std::to_string(r) + "): " + e.what());
+    }
+  });
   if (!MpiContext::instance().root()) return s;
 
   const std::size_t width = 3 * samples + 2;
