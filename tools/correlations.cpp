@@ -35,6 +35,7 @@ int main(int argc, char** argv) {
     if (kind == Disorder::homogeneous) throw InvalidInput("--disorder h: a one-type chain has no correlation coefficient");
     validate_probability(q);
     if (n < 2) throw InvalidInput("--N " + std::to_string(n) + ": a chain needs at least 2 beads");
+    if (n > 100000000) throw InvalidInput("--N " + std::to_string(n) + ": more than 1e8 beads");
     if (realizations < 1) throw InvalidInput("--realizations " + std::to_string(realizations) + ": must be >= 1");
     if (seed < 0) throw InvalidInput("--seed " + std::to_string(seed) + ": must be >= 0");
     if (max_distance < 0 || max_distance >= n)

@@ -95,6 +95,7 @@ int main(int argc, char** argv) {
     if (profile_realizations < 0) throw InvalidInput("--profile-realizations: must be >= 0");
     config.profile_realizations = static_cast<std::size_t>(profile_realizations);
     if (n < 2) throw InvalidInput("--N " + std::to_string(n) + ": a chain needs at least 2 beads");
+    if (n > 100000000) throw InvalidInput("--N " + std::to_string(n) + ": more than 1e8 beads");
     if (realizations < 1) throw InvalidInput("--realizations " + std::to_string(realizations) + ": must be >= 1");
     if (seed < 0) throw InvalidInput("--seed: must be >= 0");
     if (samples < 2) throw InvalidInput("--samples " + std::to_string(samples) + ": need at least 2");
@@ -110,7 +111,7 @@ int main(int argc, char** argv) {
     base.q = q;
     base.alpha = alpha;
     if (beta_text == "match") {
-      base.beta = -1;
+      base.match_beta = true;
     } else {
       const auto b = parse_number_list(beta_text, "--beta", 0, 1);
       if (b.size() != 1 || !(b[0] != 0)) throw InvalidInput("--beta '" + beta_text + "': a non-zero number or 'match'");

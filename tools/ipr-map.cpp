@@ -42,6 +42,7 @@ int main(int argc, char** argv) {
     config.xi_values = parse_number_list(xi_text, "--xi", 0.01);
     config.q_values = parse_number_list(q_text, "--q", 0.1);
     if (n < 2) throw InvalidInput("--N " + std::to_string(n) + ": a chain needs at least 2 beads");
+    if (n > 100000000) throw InvalidInput("--N " + std::to_string(n) + ": more than 1e8 beads");
     if (realizations < 1) throw InvalidInput("--realizations " + std::to_string(realizations) + ": must be >= 1");
     if (seed < 0) throw InvalidInput("--seed " + std::to_string(seed) + ": must be >= 0");
     if (threads < 0) throw InvalidInput("--threads " + std::to_string(threads) + ": must be >= 0");

@@ -111,7 +111,10 @@ int main(int argc, char** argv) {
     config.sampling = parse_sampling(sampling);
     config.window.enabled = active_window == "on";
     config.window.threshold = window_threshold;
-    if (!(reference_max_step >= 0)) throw InvalidInput("--reference-max-step: must be >= 0");
+    if (!(reference_max_step >= 0) || !std::isfinite(reference_max_step))
+      throw InvalidInput("--reference-max-step " + format_number(reference_max_step) + ": must be finite and >= 0");
+    if (!(window_threshold >= 0) || !std::isfinite(window_threshold))
+      throw InvalidInput("--window-threshold " + format_number(window_threshold) + ": must be finite and >= 0");
     config.reference.max_step = reference_max_step;
     if (!forces_at.empty())
       for (long s : parse_integer_list(forces_at, "--forces-at")) {
@@ -136,7 +139,8 @@ int main(int argc, char** argv) {
     const std::vector<double> fit_range = parse_number_list(fit_list, "--fit", 0, 2);
     if (fit_range.size() != 2 || !(fit_range[0] > 0) || !(fit_range[1] > fit_range[0]))
       throw InvalidInput("--fit '" + fit_text + "': expected start:stop with 0 < start < stop");
-    if (!(criterion.kappa > 0)) throw InvalidInput("--kappa: must be > 0");
+    if (!(criterion.kappa > 0) || !std::isfinite(criterion.kappa))
+      throw InvalidInput("--kappa " + format_number(criterion.kappa) + ": must be finite and > 0");
     criterion.t_start = fit_range[0];
 
     const bool site_given = app.count("--site") > 0;
@@ -211,7 +215,8 @@ int main(int argc, char** argv) {
       c.r1 = chain_options.r1;
       c.kick = parse_kick(ic);
       c.alpha = alpha;
-      c.beta = ic == "velocity" && beta_text != "match" ? beta : -1;
+      c.beta = beta;
+      c.match_beta = ic == "velocity" && beta_text == "match";
       c.site = kicked;
       c.dynamics = config;
       c.seed = static_cast<std::uint64_t>(chain_options.seed);

@@ -22,6 +22,11 @@ inline void describe_common(CLI::App& app) {
 /// Parses argv into `app`, then runs `body`, mapping every failure to a message and exit code.
 inline int run(CLI::App& app, int argc, char** argv, const std::function<void()>& body) {
   const std::string name = app.get_name();
+  for (int i = 1; i < argc; ++i)
+    if (argv[i][0] == '\0') {  // CLI11 would read "" as 0 for numbers
+      std::fprintf(stderr, "%s: error: %s: empty value\n", name.c_str(), i > 1 ? argv[i - 1] : "argument");
+      return bad_input;
+    }
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

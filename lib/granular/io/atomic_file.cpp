@@ -38,8 +38,13 @@ void check_writable(const std::string& path) {
   if (folder.empty()) folder = ".";
   std::error_code ec;
   if (!fs::is_directory(folder, ec)) throw IoError("output folder '" + folder.string() + "' does not exist");
-  if (::access(folder.c_str(), W_OK) != 0) throw IoError("output folder '" + folder.string() + "' is not writable");
   if (fs::is_directory(path, ec)) throw IoError("output path '" + path + "' is a folder");
+  // access(W_OK) says yes to root on a read-only mount: create and remove a probe instead.
+  const fs::path probe = folder / (".granular-probe." + std::to_string(::getpid()));
+  std::FILE* f = std::fopen(probe.c_str(), "wb");
+  if (!f) throw IoError("output folder '" + folder.string() + "' is not writable");
+  std::fclose(f);
+  fs::remove(probe, ec);
 }
 
 void write_file_atomically(const std::string& path, const std::string& text) {

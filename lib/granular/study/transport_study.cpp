@@ -33,7 +33,12 @@ void validate(const TransportCase& c) {
   if (c.fit && c.fit_end > c.dynamics.duration * (1 + 1e-12))
     throw InvalidInput("--fit " + format_number(c.fit_begin) + ":" + format_number(c.fit_end) + ": reaches beyond --T " +
                        format_number(c.dynamics.duration));
-  if (!(c.criterion.kappa > 0)) throw InvalidInput("--kappa: must be > 0");
+  if (!(c.criterion.kappa > 0) || !std::isfinite(c.criterion.kappa))
+    throw InvalidInput("--kappa " + format_number(c.criterion.kappa) + ": must be finite and > 0");
+  if (!std::isfinite(c.alpha) || c.alpha == 0) throw InvalidInput("--alpha " + format_number(c.alpha) + ": must be finite and non-zero [m]");
+  if (!c.match_beta && (!std::isfinite(c.beta) || c.beta == 0))
+    throw InvalidInput("--beta " + format_number(c.beta) + ": must be finite and non-zero [m/s], or 'match'");
+  if (c.n > 100000000) throw InvalidInput("--N " + std::to_string(c.n) + ": more than 1e8 beads");
   validate(c.dynamics, c.n);
 }
 
@@ -41,7 +46,7 @@ nlohmann::json describe(const TransportCase& c) {
   const SpreadingConfig& d = c.dynamics;
   return {{"disorder", to_string(c.disorder)}, {"q", c.q}, {"xi", c.xi}, {"N", c.n}, {"F0_N", c.precompression},
           {"R1_m", c.r1}, {"ic", to_string(c.kick)}, {"alpha_m", c.alpha},
-          {"beta_m_s", c.beta < 0 ? nlohmann::json("match") : nlohmann::json(c.beta)}, {"site", c.site + 1},
+          {"beta_m_s", c.match_beta ? nlohmann::json("match") : nlohmann::json(c.beta)}, {"site", c.site + 1},
           {"T_s", d.duration}, {"dt_s", d.time_step}, {"integrator", d.integrator},
           {"force_law", to_string(d.force_law)}, {"samples", d.samples},
           {"sampling", d.sampling == Sampling::logarithmic ? "log" : "uniform"},
@@ -65,7 +70,7 @@ std::vector<double> realization_row(const TransportCase& c, std::uint64_t r) {
     initial = displacement_kick(chain, c.site, c.alpha);
   } else {
     const double beta =
-        c.beta < 0 ? matched_velocity(make_force_law(c.dynamics.force_law, chain), chain, c.site, c.alpha) : c.beta;
+        c.match_beta ? matched_velocity(make_force_law(c.dynamics.force_law, chain), chain, c.site, c.alpha) : c.beta;
     initial = velocity_kick(chain, c.site, beta);
   }
   SpreadingConfig config = c.dynamics;

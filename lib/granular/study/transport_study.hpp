@@ -31,7 +31,8 @@ struct TransportCase {
   double r1 = 4.76e-3;                 ///< type-1 radius [m]
   Kick kick = Kick::displacement;
   double alpha = 1e-7;                 ///< displacement kick [m]
-  double beta = 8e-3;                  ///< velocity kick [m/s]; < 0: match the energy of α on each chain
+  double beta = 8e-3;                  ///< velocity kick [m/s]
+  bool match_beta = false;             ///< velocity kick carrying the energy of α on each chain instead
   std::size_t site = 1250;             ///< 0-based kicked bead (1251 counting from 1)
   SpreadingConfig dynamics;            ///< T, τ, integrator, force law, samples, window
   std::uint64_t seed = 1;
