@@ -35,8 +35,9 @@ void validate(const TransportCase& c) {
                        format_number(c.dynamics.duration));
   if (!(c.criterion.kappa > 0) || !std::isfinite(c.criterion.kappa))
     throw InvalidInput("--kappa " + format_number(c.criterion.kappa) + ": must be finite and > 0");
-  if (!std::isfinite(c.alpha) || c.alpha == 0) throw InvalidInput("--alpha " + format_number(c.alpha) + ": must be finite and non-zero [m]");
-  if (!c.match_beta && (!std::isfinite(c.beta) || c.beta == 0))
+  const bool uses_alpha = c.kick == Kick::displacement || c.match_beta;
+  if (uses_alpha && (!std::isfinite(c.alpha) || c.alpha == 0)) throw InvalidInput("--alpha " + format_number(c.alpha) + ": must be finite and non-zero [m]");
+  if (c.kick == Kick::velocity && !c.match_beta && (!std::isfinite(c.beta) || c.beta == 0))
     throw InvalidInput("--beta " + format_number(c.beta) + ": must be finite and non-zero [m/s], or 'match'");
   if (c.n > 100000000) throw InvalidInput("--N " + std::to_string(c.n) + ": more than 1e8 beads");
   validate(c.dynamics, c.n);
