@@ -6,6 +6,8 @@
 #include <mpi.h>
 #endif
 
+#include <cstdlib>
+
 #include "granular/error.hpp"
 
 namespace granular {
@@ -15,10 +17,23 @@ MpiContext& MpiContext::instance() {
   return context;
 }
 
+#ifdef GRANULAR_HAVE_MPI
+namespace {
+/// Started by mpirun/mpiexec (Open MPI, PMIx or MPICH-style launchers set these)? A plain
+/// process stays a single rank without paying for MPI_Init.
+bool launched_by_mpi() {
+  for (const char* v : {"OMPI_COMM_WORLD_SIZE", "PMIX_RANK", "PMI_SIZE", "PMI_RANK"})
+    if (std::getenv(v)) return true;
+  return false;
+}
+}  // namespace
+#endif
+
 MpiContext::MpiContext() {
 #ifdef GRANULAR_HAVE_MPI
   int initialized = 0;
   MPI_Initialized(&initialized);
+  if (!initialized && !launched_by_mpi()) return;
   if (!initialized) {
     int provided = 0;
     MPI_Init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &provided);
