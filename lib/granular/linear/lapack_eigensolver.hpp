@@ -42,8 +42,8 @@ class LapackEigensolver {
     return out;
   }
 
-  /// Eigenpairs number `first` … `last` (1-based, inclusive, ascending): dstevr with
-  /// RANGE = 'I' (MRRR, O(N) per pair), falling back to dstemr, then dstebz + dstein.
+  /// Eigenpairs number `first` … `last` (1-based, inclusive, ascending): dstemr with
+  /// RANGE = 'I' (MRRR, O(N) per pair), falling back to dstevr and then dstebz + dstein.
   /// `out.vectors` is N × (last − first + 1). Throws InvalidInput unless 1 ≤ first ≤ last ≤ N.
   void solve_indices(const SymTridiagonal& t, int first, int last, bool want_vectors, EigenDecomposition& out);
   /// Eigenpairs with lo ≤ λ ≤ hi: the index range from two inertia counts, then solve_indices.

@@ -12,6 +12,7 @@
 #include "granular/linear/lapack_eigensolver.hpp"
 #include "granular/linear/mode_ipr.hpp"
 #include "granular/linear/shift_invert_eigensolvers.hpp"
+#include "granular/linear/sturm_bisection.hpp"
 #include "granular/linear/tridiagonal_operator.hpp"
 
 namespace granular {
@@ -19,6 +20,7 @@ namespace granular {
 std::string_view to_string(PartialMethod method) {
   switch (method) {
     case PartialMethod::lapack: return "lapack";
+    case PartialMethod::bisect: return "bisect";
     case PartialMethod::arpack: return "arpack";
     case PartialMethod::slepc: return "slepc";
   }
@@ -26,9 +28,9 @@ std::string_view to_string(PartialMethod method) {
 }
 
 PartialMethod parse_partial_method(std::string_view name) {
-  for (auto m : {PartialMethod::lapack, PartialMethod::arpack, PartialMethod::slepc})
+  for (auto m : {PartialMethod::lapack, PartialMethod::bisect, PartialMethod::arpack, PartialMethod::slepc})
     if (name == to_string(m)) return m;
-  throw InvalidInput("--method '" + std::string(name) + "': expected lapack, arpack or slepc");
+  throw InvalidInput("--method '" + std::string(name) + "': expected lapack, bisect, arpack or slepc");
 }
 
 double omega_squared_of_khz(double khz) {
@@ -119,6 +121,26 @@ std::vector<std::size_t> nearest_in_frequency(const std::vector<double>& values,
   return idx;
 }
 
+/// Eigenpairs first..last (1-based) by dstemr (lapack) or many-shift bisection + dstein (bisect).
+Candidates by_index(PartialMethod method, const SymTridiagonal& t, long first, long last) {
+  Candidates out;
+  out.first_mode = first;
+  if (method == PartialMethod::lapack) {
+    LapackEigensolver solver;
+    EigenDecomposition eig;
+    solver.solve_indices(t, static_cast<int>(first), static_cast<int>(last), true, eig);
+    out.values.assign(eig.values.data(), eig.values.data() + eig.values.size());
+    out.vectors = std::move(eig.vectors);
+    out.method = "lapack-" + std::string(to_string(eig.driver));
+  } else {
+    // 1e-14: a shift this close makes inverse iteration converge in ~2 solves.
+    out.values = bisect_eigenvalues(t, static_cast<int>(first), static_cast<int>(last), 1e-14);
+    out.vectors = inverse_iteration(t, out.values);
+    out.method = "bisect";
+  }
+  return out;
+}
+
 Candidates shift_invert(PartialMethod method, const SymTridiagonal& t, double sigma, int count,
                         const PartialSpectrumConfig& config) {
   ShiftInvertConfig c;
@@ -153,13 +175,8 @@ PartialSpectrum partial_spectrum(const SymTridiagonal& t, const std::vector<doub
     const std::size_t below = op.count_below(lo);
     const std::size_t upto = op.count_below(std::nextafter(hi, std::numeric_limits<double>::infinity()));
     if (upto > below) {
-      if (config.method == PartialMethod::lapack) {
-        LapackEigensolver solver;
-        EigenDecomposition eig;
-        solver.solve_indices(t, static_cast<int>(below) + 1, static_cast<int>(upto), true, eig);
-        cand.values.assign(eig.values.data(), eig.values.data() + eig.values.size());
-        cand.vectors = std::move(eig.vectors);
-        cand.method = "lapack-" + std::string(to_string(eig.driver));
+      if (config.method == PartialMethod::lapack || config.method == PartialMethod::bisect) {
+        cand = by_index(config.method, t, static_cast<long>(below) + 1, static_cast<long>(upto));
       } else {
         // The window is symmetric about its centre in ω², so its modes are the (upto − below)
         // eigenvalues nearest the centre.
@@ -169,25 +186,28 @@ PartialSpectrum partial_spectrum(const SymTridiagonal& t, const std::vector<doub
       chosen.resize(cand.values.size());
       std::iota(chosen.begin(), chosen.end(), 0);
     } else {
-      cand.method = config.method == PartialMethod::lapack ? "lapack-stevr" : std::string(to_string(config.method));
+      cand.method = config.method == PartialMethod::lapack ? "lapack-stemr" : std::string(to_string(config.method));
     }
   } else {
     const double f0 = selection.near_khz;
     const auto k = static_cast<std::size_t>(selection.count);
     const double sigma = omega_squared_of_khz(f0);
-    if (config.method == PartialMethod::lapack) {
+    if (config.method == PartialMethod::lapack || config.method == PartialMethod::bisect) {
       // The K nearest form a run of consecutive modes that contains mode c or c + 1 (c = modes
       // below σ); one extra on each side absorbs a count off by one in round-off.
       const long c = static_cast<long>(op.count_below(sigma));
       const long first = std::max(1L, c - static_cast<long>(k)), last = std::min(static_cast<long>(n), c + static_cast<long>(k) + 1);
-      LapackEigensolver solver;
-      EigenDecomposition eig;
-      solver.solve_indices(t, static_cast<int>(first), static_cast<int>(last), true, eig);
-      cand.values.assign(eig.values.data(), eig.values.data() + eig.values.size());
-      cand.vectors = std::move(eig.vectors);
-      cand.first_mode = first;
-      cand.method = "lapack-" + std::string(to_string(eig.driver));
-      chosen = nearest_in_frequency(cand.values, f0, k);
+      if (config.method == PartialMethod::lapack) {
+        cand = by_index(config.method, t, first, last);
+        chosen = nearest_in_frequency(cand.values, f0, k);
+      } else {
+        // Values first (cheap), then vectors for the K chosen only.
+        const auto values = bisect_eigenvalues(t, static_cast<int>(first), static_cast<int>(last), 1e-10);
+        const auto pick = nearest_in_frequency(values, f0, k);
+        cand = by_index(config.method, t, first + static_cast<long>(pick.front()), first + static_cast<long>(pick.back()));
+        chosen.resize(cand.values.size());
+        std::iota(chosen.begin(), chosen.end(), 0);
+      }
     } else {
       // Shift-invert finds the nearest in ω², not in f. Ask for a few more and accept once the
       // K-th nearest in f lies strictly inside the ω² interval the candidates are known to cover.

@@ -1,7 +1,9 @@
 #pragma once
 // Partial spectra of long chains (issue 3): the K modes nearest a frequency, or every mode in a
-// frequency window, with their displacement IPRs, by one of three interchangeable methods:
-//   lapack  dstevr (MRRR) restricted to an index range found by two O(N) inertia counts;
+// frequency window, with their displacement IPRs, by one of four interchangeable methods:
+//   lapack  dstemr (MRRR) restricted to an index range found by two O(N) inertia counts;
+//   bisect  the same index range by many-shift Sturm bisection (sturm_bisection.hpp), vectors by
+//           LAPACK inverse iteration (dstein): the fastest for long chains;
 //   arpack  ARPACK shift-invert around σ = (2π f)², (T − σI)⁻¹ by an O(N) tridiagonal LU;
 //   slepc   SLEPc Krylov–Schur + shift-invert on a PETSc MPI matrix (collective: under mpirun
 //           every rank calls it with the same matrix and gets the same result).
@@ -19,9 +21,9 @@
 
 namespace granular {
 
-enum class PartialMethod { lapack, arpack, slepc };
+enum class PartialMethod { lapack, bisect, arpack, slepc };
 std::string_view to_string(PartialMethod method);
-/// "lapack" | "arpack" | "slepc"; throws InvalidInput naming --method.
+/// "lapack" | "bisect" | "arpack" | "slepc"; throws InvalidInput naming --method.
 PartialMethod parse_partial_method(std::string_view name);
 
 /// Which modes: the `count` nearest `near_khz`, or all in [lo_khz, hi_khz].
