@@ -48,6 +48,10 @@ int main(int argc, char** argv) {
   app.add_option("--vectors", vectors_file, "also write the eigenvectors to this HDF5 file");
   app.add_option("--output", output, "CSV file to write (the JSON goes beside it)")->capture_default_str();
   app.add_flag("--quiet", quiet, "no notes on stderr");
+  std::string dump_matrix;
+  app.add_option("--dump-matrix", dump_matrix,
+                 "also write the dynamical matrix as raw little-endian doubles PREFIX.diag.f64 (N) and "
+                 "PREFIX.offdiag.f64 (N-1), for comparisons with other codes on the very same matrix");
 
   const int code = tool::run(app, argc, argv, [&] {
     tool::Metadata meta("partial-spectrum", argc, argv);
@@ -90,6 +94,14 @@ int main(int argc, char** argv) {
     }
     std::vector<double>().swap(radii);
     if (m == PartialMethod::slepc) initialize_slepc(nullptr, nullptr);
+    if (writer && !dump_matrix.empty()) {
+      AtomicFile diag(dump_matrix + ".diag.f64"), off(dump_matrix + ".offdiag.f64");
+      diag.stream().write(reinterpret_cast<const char*>(d.diagonal.data()), static_cast<std::streamsize>(8 * d.diagonal.size()));
+      off.stream().write(reinterpret_cast<const char*>(d.off_diagonal.data()),
+                         static_cast<std::streamsize>(8 * d.off_diagonal.size()));
+      diag.commit();
+      off.commit();
+    }
 
     PartialSpectrumConfig config;
     config.method = m;

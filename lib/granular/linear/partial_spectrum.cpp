@@ -121,7 +121,29 @@ std::vector<std::size_t> nearest_in_frequency(const std::vector<double>& values,
   return idx;
 }
 
-/// Eigenpairs first..last (1-based) by dstemr (lapack) or many-shift bisection + dstein (bisect).
+/// bisect: an eigenvalue alone in its bracket is bisected only to this relative width; the
+/// Rayleigh-quotient iteration inside its bracket finishes it. Clustered ones go to 1e-14.
+constexpr double kIsolated = 1e-7;
+
+/// bisect: unit eigenvectors of modes first..last (1-based) and their eigenvalues. Up to 64 modes:
+/// isolated eigenvalues bisected to kIsolated, then lane (Rayleigh-quotient) inverse iteration;
+/// more modes, or lanes that do not converge: full-precision bisection and one-by-one inverse
+/// iteration. `values`/`brackets`, when given (non-empty), are that bisection already done.
+Eigen::MatrixXd bisect_pairs(const SymTridiagonal& t, long first, long last, std::vector<double>& values,
+                             std::vector<double> brackets = {}) {
+  const int f = static_cast<int>(first), l = static_cast<int>(last);
+  if (last - first + 1 <= 64) {
+    if (brackets.empty()) values = bisect_eigenvalues(t, f, l, 1e-14, kIsolated, &brackets);
+    try {
+      return lane_inverse_iteration(t, values, &brackets);
+    } catch (const NumericalError&) {
+    }
+  }
+  values = bisect_eigenvalues(t, f, l, 1e-14);
+  return inverse_iteration(t, values);
+}
+
+/// Eigenpairs first..last (1-based) by dstemr (lapack) or bisection + inverse iteration (bisect).
 Candidates by_index(PartialMethod method, const SymTridiagonal& t, long first, long last) {
   Candidates out;
   out.first_mode = first;
@@ -133,9 +155,7 @@ Candidates by_index(PartialMethod method, const SymTridiagonal& t, long first, l
     out.vectors = std::move(eig.vectors);
     out.method = "lapack-" + std::string(to_string(eig.driver));
   } else {
-    // 1e-14: a shift this close makes inverse iteration converge in ~2 solves.
-    out.values = bisect_eigenvalues(t, static_cast<int>(first), static_cast<int>(last), 1e-14);
-    out.vectors = inverse_iteration(t, out.values);
+    out.vectors = bisect_pairs(t, first, last, out.values);
     out.method = "bisect";
   }
   return out;
@@ -201,12 +221,22 @@ PartialSpectrum partial_spectrum(const SymTridiagonal& t, const std::vector<doub
         cand = by_index(config.method, t, first, last);
         chosen = nearest_in_frequency(cand.values, f0, k);
       } else {
-        // Values first (cheap), then vectors for the K chosen only.
-        const auto values = bisect_eigenvalues(t, static_cast<int>(first), static_cast<int>(last), 1e-10);
+        // Values first (coarse where isolated), then vectors for the K chosen plus one on each
+        // side, then the final choice on the refined values (a coarse ranking could swap two
+        // nearly equidistant modes).
+        const bool coarse = last - first + 1 <= 64;
+        std::vector<double> brackets;
+        const auto values =
+            bisect_eigenvalues(t, static_cast<int>(first), static_cast<int>(last), 1e-14, coarse ? kIsolated : 0, &brackets);
         const auto pick = nearest_in_frequency(values, f0, k);
-        cand = by_index(config.method, t, first + static_cast<long>(pick.front()), first + static_cast<long>(pick.back()));
-        chosen.resize(cand.values.size());
-        std::iota(chosen.begin(), chosen.end(), 0);
+        const long a = std::max(first, first + static_cast<long>(pick.front()) - 1);
+        const long b = std::min(last, first + static_cast<long>(pick.back()) + 1);
+        cand.values.assign(values.begin() + (a - first), values.begin() + (b - first) + 1);
+        std::vector<double> sub(brackets.begin() + 2 * (a - first), brackets.begin() + 2 * (b - first) + 2);
+        cand.vectors = bisect_pairs(t, a, b, cand.values, b - a + 1 <= 64 ? std::move(sub) : std::vector<double>{});
+        cand.first_mode = a;
+        cand.method = "bisect";
+        chosen = nearest_in_frequency(cand.values, f0, k);
       }
     } else {
       if (k > n - 1)

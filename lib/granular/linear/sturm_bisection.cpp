@@ -75,7 +75,8 @@ std::vector<long> count_below_many(const SymTridiagonal& t, const std::vector<do
   return c;
 }
 
-std::vector<double> bisect_eigenvalues(const SymTridiagonal& t, int first, int last, double relative_width) {
+std::vector<double> bisect_eigenvalues(const SymTridiagonal& t, int first, int last, double relative_width,
+                                       double isolated_width, std::vector<double>* brackets) {
   const int n = static_cast<int>(t.size());
   if (first < 1 || last < first || last > n)
     throw InvalidInput("eigenvalue index range " + std::to_string(first) + ".." + std::to_string(last) +
@@ -88,8 +89,11 @@ std::vector<double> bisect_eigenvalues(const SymTridiagonal& t, int first, int l
   const int m = last - first + 1;
   // Lane j brackets eigenvalue number first + j: count(lo) < first + j <= count(hi).
   std::vector<double> lo(m, glo), hi(m, ghi);
+  std::vector<long> count_lo(m, 0), count_hi(m, n);  // counts at the bracket ends
   auto done = [&](int j) {
-    return hi[j] - lo[j] <= relative_width * std::max(std::fabs(lo[j]), std::fabs(hi[j])) + 4 * pivmin;
+    const double scale = std::max(std::fabs(lo[j]), std::fabs(hi[j]));
+    const bool alone = count_lo[j] == first + j - 1 && count_hi[j] == first + j;
+    return hi[j] - lo[j] <= (alone ? std::max(relative_width, isolated_width) : relative_width) * scale + 4 * pivmin;
   };
   std::vector<double> shifts;
   std::vector<long> counts;
@@ -115,8 +119,12 @@ std::vector<double> bisect_eigenvalues(const SymTridiagonal& t, int first, int l
       const long c = counts[q];
       for (int j = 0; j < m; ++j) {
         const long k = first + j;
-        if (c >= k) hi[j] = std::min(hi[j], s);
-        else lo[j] = std::max(lo[j], s);
+        if (c >= k) {
+          if (s < hi[j]) { hi[j] = s; count_hi[j] = c; }
+        } else if (s > lo[j]) {
+          lo[j] = s;
+          count_lo[j] = c;
+        }
       }
     }
   }
@@ -124,6 +132,13 @@ std::vector<double> bisect_eigenvalues(const SymTridiagonal& t, int first, int l
   for (int j = 0; j < m; ++j) {
     if (!done(j)) throw NumericalError("bisection did not converge for eigenvalue " + std::to_string(first + j));
     values[j] = 0.5 * (lo[j] + hi[j]);
+  }
+  if (brackets) {
+    brackets->resize(2 * static_cast<std::size_t>(m));
+    for (int j = 0; j < m; ++j) {
+      (*brackets)[2 * j] = lo[j];
+      (*brackets)[2 * j + 1] = hi[j];
+    }
   }
   return values;
 }
@@ -174,6 +189,117 @@ Eigen::MatrixXd inverse_iteration(const SymTridiagonal& t, std::vector<double>& 
     if (!(residual <= 1e3 * eps * norm))
       throw NumericalError("inverse iteration: eigenvector " + std::to_string(j) + " did not converge (residual " +
                            std::to_string(residual / norm) + " of ||T||)");
+  }
+  return z;
+}
+
+Eigen::MatrixXd lane_inverse_iteration(const SymTridiagonal& t, std::vector<double>& values,
+                                       const std::vector<double>* brackets) {
+  const std::size_t n = t.size(), m = values.size();
+  if (m == 0) return Eigen::MatrixXd(static_cast<Eigen::Index>(n), 0);
+  if (m > 64) throw InvalidInput("lane_inverse_iteration: at most 64 lanes");
+  const double norm = t.max_abs(), eps = std::numeric_limits<double>::epsilon();
+  const double floor = eps * norm, target = 64 * eps * norm, cluster = 1e-7 * norm;
+  const double* a = t.diagonal.data();
+  const double* e = t.off_diagonal.data();
+  const std::size_t L = m;
+  std::vector<double> x(n * L), inv_d(n * L);  // row-major: entry i of lane j at i L + j
+  std::uint64_t seed = 0x2545F4914F6CDD1Dull;
+  for (auto& v : x) {  // fixed pseudo-random start (xorshift), reproducible
+    seed ^= seed << 13; seed ^= seed >> 7; seed ^= seed << 17;
+    v = static_cast<double>(seed >> 11) * 0x1.0p-53 - 0.5;
+  }
+  std::vector<double> mu(values), rho(values), res(m, std::numeric_limits<double>::infinity()), s2(m), xtx(m);
+  const std::vector<double> start(values);
+  const double slack = 64 * eps * norm;
+  auto inside = [&](std::size_t j, double v) {
+    if (!brackets) return std::fabs(v - start[j]) < cluster;
+    return v >= (*brackets)[2 * j] - slack && v <= (*brackets)[2 * j + 1] + slack;
+  };
+  bool converged = false;
+  for (int sweep = 0; sweep < 6 && !converged; ++sweep) {
+    // forward: factor and L y = x
+    for (std::size_t j = 0; j < L; ++j) {
+      double d = a[0] - mu[j];
+      if (std::fabs(d) < floor) d = d < 0 ? -floor : floor;
+      inv_d[j] = 1 / d;
+    }
+    for (std::size_t i = 1; i < n; ++i) {
+      const double ei = e[i - 1], ai = a[i];
+      double* xi = &x[i * L];
+      const double* xp = &x[(i - 1) * L];
+      double* di = &inv_d[i * L];
+      const double* dp = &inv_d[(i - 1) * L];
+#pragma GCC ivdep
+      for (std::size_t j = 0; j < L; ++j) {
+        const double l = ei * dp[j];
+        double d = (ai - mu[j]) - l * ei;
+        d = std::fabs(d) < floor ? (d < 0 ? -floor : floor) : d;
+        di[j] = 1 / d;
+        xi[j] -= l * xp[j];
+      }
+    }
+    // backward: D z = y, Lᵀ x = z
+    for (std::size_t j = 0; j < L; ++j) x[(n - 1) * L + j] *= inv_d[(n - 1) * L + j];
+    for (std::size_t i = n - 1; i-- > 0;) {
+      const double ei = e[i];
+      double* xi = &x[i * L];
+      const double* xn = &x[(i + 1) * L];
+      const double* di = &inv_d[i * L];
+#pragma GCC ivdep
+      for (std::size_t j = 0; j < L; ++j) xi[j] = (xi[j] - ei * xn[j]) * di[j];
+    }
+    // Gram–Schmidt within clusters (lanes in order), then unit length.
+    for (std::size_t j = 0; j < L; ++j)
+      for (std::size_t k = 0; k < j; ++k) {
+        if (std::fabs(mu[j] - mu[k]) >= cluster) continue;
+        double njk = 0, nk = 0;
+        for (std::size_t i = 0; i < n; ++i) {
+          njk += x[i * L + j] * x[i * L + k];
+          nk += x[i * L + k] * x[i * L + k];
+        }
+        const double f = njk / nk;
+        for (std::size_t i = 0; i < n; ++i) x[i * L + j] -= f * x[i * L + k];
+      }
+    std::fill(s2.begin(), s2.end(), 0.0);
+    for (std::size_t i = 0; i < n; ++i)
+      for (std::size_t j = 0; j < L; ++j) s2[j] += x[i * L + j] * x[i * L + j];
+    for (std::size_t j = 0; j < L; ++j) s2[j] = 1 / std::sqrt(s2[j]);
+    for (std::size_t i = 0; i < n; ++i)
+      for (std::size_t j = 0; j < L; ++j) x[i * L + j] *= s2[j];
+    // Rayleigh quotients, then residuals ‖T x − ρ x‖.
+    std::fill(xtx.begin(), xtx.end(), 0.0);
+    for (std::size_t i = 0; i < n; ++i)
+      for (std::size_t j = 0; j < L; ++j) {
+        double tx = a[i] * x[i * L + j];
+        if (i > 0) tx += e[i - 1] * x[(i - 1) * L + j];
+        if (i + 1 < n) tx += e[i] * x[(i + 1) * L + j];
+        xtx[j] += x[i * L + j] * tx;
+      }
+    for (std::size_t j = 0; j < L; ++j) { rho[j] = xtx[j]; res[j] = 0; }
+    for (std::size_t i = 0; i < n; ++i)
+      for (std::size_t j = 0; j < L; ++j) {
+        double tx = a[i] * x[i * L + j];
+        if (i > 0) tx += e[i - 1] * x[(i - 1) * L + j];
+        if (i + 1 < n) tx += e[i] * x[(i + 1) * L + j];
+        const double r = tx - rho[j] * x[i * L + j];
+        res[j] += r * r;
+      }
+    converged = true;
+    for (std::size_t j = 0; j < L; ++j) {
+      res[j] = std::sqrt(res[j]);
+      converged = converged && res[j] <= target && inside(j, rho[j]);
+      // RQI: take the Rayleigh quotient as the next shift unless it left the lane's bracket
+      // (then the vector is a mix and plain inverse iteration must continue).
+      if (inside(j, rho[j])) mu[j] = rho[j];
+    }
+  }
+  if (!converged) throw NumericalError("lane inverse iteration did not converge in 6 sweeps");
+  Eigen::MatrixXd z(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(m));
+  for (std::size_t j = 0; j < m; ++j) {
+    double* col = z.col(static_cast<Eigen::Index>(j)).data();
+    for (std::size_t i = 0; i < n; ++i) col[i] = x[i * L + j];
+    values[j] = rho[j];
   }
   return z;
 }

@@ -15,14 +15,31 @@
 namespace granular {
 
 /// Eigenvalues number first … last (1-based, inclusive), ascending, each bracketed to a width of
-/// `relative_width` × max|bracket end| (or ~ the pivot floor near 0). Throws InvalidInput on a bad range.
-std::vector<double> bisect_eigenvalues(const SymTridiagonal& t, int first, int last, double relative_width);
+/// `relative_width` × max|bracket end| (or ~ the pivot floor near 0) — or only to `isolated_width`
+/// (relative) once the bracket holds that eigenvalue alone, which is all a Rayleigh-quotient
+/// refinement needs (lane_inverse_iteration). Throws InvalidInput on a bad range.
+/// `brackets`, if given, receives each eigenvalue's final bracket [lo, hi] (2 m entries).
+std::vector<double> bisect_eigenvalues(const SymTridiagonal& t, int first, int last, double relative_width,
+                                       double isolated_width = 0, std::vector<double>* brackets = nullptr);
 
 /// Unit eigenvectors (N × values.size()) for accurate eigenvalues `values` (ascending) by inverse
 /// iteration: one O(N) pivoted LU of T − λI (dgttrf), then solves until the residual
 /// ‖Tw − ρw‖ ≤ 64 ε ‖T‖ (usually 2), Gram–Schmidt against earlier vectors whose eigenvalues lie
 /// within 1e-7 ‖T‖. Each value is replaced by the Rayleigh quotient ρ = wᵀTw. Throws NumericalError.
 Eigen::MatrixXd inverse_iteration(const SymTridiagonal& t, std::vector<double>& values);
+
+/// The same, for all vectors at once: each sweep factorizes T − μ_j I = L D Lᵀ (no pivoting; a
+/// pivot below ε‖T‖ is raised to ε‖T‖, as LAPACK's dlagtf does for inverse iteration) and solves
+/// for every lane j together, so the divisions of different lanes overlap in the vector units.
+/// μ_j starts at `values` and moves to the Rayleigh quotient while that keeps it inside the gap
+/// (Rayleigh-quotient iteration, cubic), until every residual ‖Tw − ρw‖ ≤ 64 ε ‖T‖. Lanes whose
+/// shifts are within 1e-7 ‖T‖ are Gram–Schmidt orthogonalized. At most 64 lanes; throws
+/// NumericalError when a lane does not converge in 6 sweeps (callers then bisect to full
+/// precision and use inverse_iteration). Memory: 2 N × m doubles besides the result.
+/// With `brackets` (from bisect_eigenvalues) a shift only moves, and a lane only counts as
+/// converged, inside its own bracket: a lane cannot drift to a neighbour's eigenvalue.
+Eigen::MatrixXd lane_inverse_iteration(const SymTridiagonal& t, std::vector<double>& values,
+                                       const std::vector<double>* brackets = nullptr);
 
 /// Counts of eigenvalues below each of `shifts` (one sweep over the matrix).
 std::vector<long> count_below_many(const SymTridiagonal& t, const std::vector<double>& shifts);
