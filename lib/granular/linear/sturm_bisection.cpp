@@ -91,9 +91,13 @@ std::vector<double> bisect_eigenvalues(const SymTridiagonal& t, int first, int l
   std::vector<double> lo(m, glo), hi(m, ghi);
   std::vector<long> count_lo(m, 0), count_hi(m, n);  // counts at the bracket ends
   auto done = [&](int j) {
-    const double scale = std::max(std::fabs(lo[j]), std::fabs(hi[j]));
+    const double scale = std::max(std::fabs(lo[j]), std::fabs(hi[j])), width = hi[j] - lo[j];
+    if (width <= relative_width * scale + 4 * pivmin) return true;
+    // Coarse is enough when the bracket holds this eigenvalue alone and the neighbouring lanes'
+    // brackets are ≥ 8 widths away: inverse iteration from the midpoint then gains ≥ 16× a sweep.
     const bool alone = count_lo[j] == first + j - 1 && count_hi[j] == first + j;
-    return hi[j] - lo[j] <= (alone ? std::max(relative_width, isolated_width) : relative_width) * scale + 4 * pivmin;
+    const double below = j > 0 ? lo[j] - hi[j - 1] : 8 * width, above = j + 1 < m ? lo[j + 1] - hi[j] : 8 * width;
+    return alone && width <= isolated_width * scale && std::min(below, above) >= 8 * width;
   };
   std::vector<double> shifts;
   std::vector<long> counts;
@@ -199,7 +203,10 @@ Eigen::MatrixXd lane_inverse_iteration(const SymTridiagonal& t, std::vector<doub
   if (m == 0) return Eigen::MatrixXd(static_cast<Eigen::Index>(n), 0);
   if (m > 64) throw InvalidInput("lane_inverse_iteration: at most 64 lanes");
   const double norm = t.max_abs(), eps = std::numeric_limits<double>::epsilon();
-  const double floor = eps * norm, target = 64 * eps * norm, cluster = 1e-7 * norm;
+  // Lanes closer than this (or with touching brackets) are made orthogonal explicitly: their
+  // shifts cannot tell them apart. Lanes farther apart converge to distinct eigenvectors inside
+  // disjoint brackets, orthogonal to ~ε‖T‖/gap without help.
+  const double floor = eps * norm, target = 64 * eps * norm, cluster = 1e-10 * norm;
   const double* a = t.diagonal.data();
   const double* e = t.off_diagonal.data();
   const std::size_t L = m;
@@ -217,8 +224,30 @@ Eigen::MatrixXd lane_inverse_iteration(const SymTridiagonal& t, std::vector<doub
     return v >= (*brackets)[2 * j] - slack && v <= (*brackets)[2 * j + 1] + slack;
   };
   bool converged = false;
-  for (int sweep = 0; sweep < 6 && !converged; ++sweep) {
-    // forward: factor and L y = x
+  // One sweep = 3 passes over the N × m lanes: factor + forward solve; backward solve + norms;
+  // normalize + Rayleigh quotients. Converged by the free residual estimate ‖x_old‖/‖y‖ of the
+  // solve (T − μ) y = x_old, then confirmed by one pass computing ‖T x − ρ x‖ exactly.
+  auto true_residuals = [&] {
+    std::fill(res.begin(), res.end(), 0.0);
+    for (std::size_t i = 0; i < n; ++i) {
+      const double* xi = &x[i * L];
+      for (std::size_t j = 0; j < L; ++j) {
+        double tx = a[i] * xi[j];
+        if (i > 0) tx += e[i - 1] * xi[j - L];
+        if (i + 1 < n) tx += e[i] * xi[j + L];
+        const double r = tx - rho[j] * xi[j];
+        res[j] += r * r;
+      }
+    }
+    bool ok = true;
+    for (std::size_t j = 0; j < L; ++j) {
+      res[j] = std::sqrt(res[j]);
+      ok = ok && res[j] <= target && inside(j, rho[j]);
+    }
+    return ok;
+  };
+  for (int sweep = 0; sweep < 8 && !converged; ++sweep) {
+    // forward: factor T − μI = L D Lᵀ and solve L y = x
     for (std::size_t j = 0; j < L; ++j) {
       double d = a[0] - mu[j];
       if (std::fabs(d) < floor) d = d < 0 ? -floor : floor;
@@ -239,20 +268,32 @@ Eigen::MatrixXd lane_inverse_iteration(const SymTridiagonal& t, std::vector<doub
         xi[j] -= l * xp[j];
       }
     }
-    // backward: D z = y, Lᵀ x = z
-    for (std::size_t j = 0; j < L; ++j) x[(n - 1) * L + j] *= inv_d[(n - 1) * L + j];
+    // backward: D z = y, Lᵀ x = z, and ‖x‖²
+    std::fill(s2.begin(), s2.end(), 0.0);
+    for (std::size_t j = 0; j < L; ++j) {
+      double& v = x[(n - 1) * L + j];
+      v *= inv_d[(n - 1) * L + j];
+      s2[j] += v * v;
+    }
     for (std::size_t i = n - 1; i-- > 0;) {
       const double ei = e[i];
       double* xi = &x[i * L];
       const double* xn = &x[(i + 1) * L];
       const double* di = &inv_d[i * L];
 #pragma GCC ivdep
-      for (std::size_t j = 0; j < L; ++j) xi[j] = (xi[j] - ei * xn[j]) * di[j];
+      for (std::size_t j = 0; j < L; ++j) {
+        const double v = (xi[j] - ei * xn[j]) * di[j];
+        xi[j] = v;
+        s2[j] += v * v;
+      }
     }
-    // Gram–Schmidt within clusters (lanes in order), then unit length.
+    // Gram–Schmidt within clusters (lanes in order; rare, so not fused).
+    bool any_cluster = false;
     for (std::size_t j = 0; j < L; ++j)
       for (std::size_t k = 0; k < j; ++k) {
-        if (std::fabs(mu[j] - mu[k]) >= cluster) continue;
+        const bool touching = brackets && (*brackets)[2 * j] - (*brackets)[2 * k + 1] < cluster;
+        if (!touching && std::fabs(mu[j] - mu[k]) >= cluster) continue;
+        any_cluster = true;
         double njk = 0, nk = 0;
         for (std::size_t i = 0; i < n; ++i) {
           njk += x[i * L + j] * x[i * L + k];
@@ -261,38 +302,38 @@ Eigen::MatrixXd lane_inverse_iteration(const SymTridiagonal& t, std::vector<doub
         const double f = njk / nk;
         for (std::size_t i = 0; i < n; ++i) x[i * L + j] -= f * x[i * L + k];
       }
-    std::fill(s2.begin(), s2.end(), 0.0);
-    for (std::size_t i = 0; i < n; ++i)
-      for (std::size_t j = 0; j < L; ++j) s2[j] += x[i * L + j] * x[i * L + j];
-    for (std::size_t j = 0; j < L; ++j) s2[j] = 1 / std::sqrt(s2[j]);
-    for (std::size_t i = 0; i < n; ++i)
-      for (std::size_t j = 0; j < L; ++j) x[i * L + j] *= s2[j];
-    // Rayleigh quotients, then residuals ‖T x − ρ x‖.
-    std::fill(xtx.begin(), xtx.end(), 0.0);
-    for (std::size_t i = 0; i < n; ++i)
-      for (std::size_t j = 0; j < L; ++j) {
-        double tx = a[i] * x[i * L + j];
-        if (i > 0) tx += e[i - 1] * x[(i - 1) * L + j];
-        if (i + 1 < n) tx += e[i] * x[(i + 1) * L + j];
-        xtx[j] += x[i * L + j] * tx;
-      }
-    for (std::size_t j = 0; j < L; ++j) { rho[j] = xtx[j]; res[j] = 0; }
-    for (std::size_t i = 0; i < n; ++i)
-      for (std::size_t j = 0; j < L; ++j) {
-        double tx = a[i] * x[i * L + j];
-        if (i > 0) tx += e[i - 1] * x[(i - 1) * L + j];
-        if (i + 1 < n) tx += e[i] * x[(i + 1) * L + j];
-        const double r = tx - rho[j] * x[i * L + j];
-        res[j] += r * r;
-      }
-    converged = true;
+    if (any_cluster) {
+      std::fill(s2.begin(), s2.end(), 0.0);
+      for (std::size_t i = 0; i < n; ++i)
+        for (std::size_t j = 0; j < L; ++j) s2[j] += x[i * L + j] * x[i * L + j];
+    }
+    // The solve's residual with respect to μ: the old x was a unit vector.
+    bool small = true;
     for (std::size_t j = 0; j < L; ++j) {
-      res[j] = std::sqrt(res[j]);
-      converged = converged && res[j] <= target && inside(j, rho[j]);
-      // RQI: take the Rayleigh quotient as the next shift unless it left the lane's bracket
-      // (then the vector is a mix and plain inverse iteration must continue).
+      res[j] = 1 / std::sqrt(s2[j]);
+      small = small && res[j] <= target;
+      s2[j] = res[j];  // now the scale to unit length
+    }
+    // normalize and Rayleigh quotients ρ = xᵀTx (x[i+1] is scaled on the fly)
+    std::fill(xtx.begin(), xtx.end(), 0.0);
+    for (std::size_t i = 0; i < n; ++i) {
+      double* xi = &x[i * L];
+      for (std::size_t j = 0; j < L; ++j) {
+        const double v = xi[j] * s2[j];
+        xi[j] = v;
+        double tx = a[i] * v;
+        if (i > 0) tx += e[i - 1] * xi[j - L];
+        if (i + 1 < n) tx += e[i] * xi[j + L] * s2[j];
+        xtx[j] += v * tx;
+      }
+    }
+    for (std::size_t j = 0; j < L; ++j) {
+      rho[j] = xtx[j];
+      // RQI: the Rayleigh quotient is the next shift unless it left the lane's bracket (then the
+      // vector is still a mix and plain inverse iteration continues).
       if (inside(j, rho[j])) mu[j] = rho[j];
     }
+    if (small) converged = true_residuals();
   }
   if (!converged) throw NumericalError("lane inverse iteration did not converge in 6 sweeps");
   Eigen::MatrixXd z(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(m));

@@ -33,7 +33,7 @@ Eigen::MatrixXd inverse_iteration(const SymTridiagonal& t, std::vector<double>& 
 /// for every lane j together, so the divisions of different lanes overlap in the vector units.
 /// μ_j starts at `values` and moves to the Rayleigh quotient while that keeps it inside the gap
 /// (Rayleigh-quotient iteration, cubic), until every residual ‖Tw − ρw‖ ≤ 64 ε ‖T‖. Lanes whose
-/// shifts are within 1e-7 ‖T‖ are Gram–Schmidt orthogonalized. At most 64 lanes; throws
+/// shifts (or brackets) are within 1e-10 ‖T‖ are Gram–Schmidt orthogonalized. At most 64 lanes; throws
 /// NumericalError when a lane does not converge in 6 sweeps (callers then bisect to full
 /// precision and use inverse_iteration). Memory: 2 N × m doubles besides the result.
 /// With `brackets` (from bisect_eigenvalues) a shift only moves, and a lane only counts as
