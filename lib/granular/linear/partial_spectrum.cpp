@@ -95,6 +95,7 @@ struct Candidates {
   long first_mode = -1;     // mode number of values[0] when the method knows it (LAPACK), else -1
   std::string method;
   int restarts = 0;
+  std::vector<double> ipr, residual;  // precomputed per candidate (bisect lanes), else empty
 };
 
 /// Mode number of the first of a contiguous run of eigenvalues: an inertia count in the widest gap
@@ -130,13 +131,23 @@ constexpr double kIsolated = 1e-7;
 /// more modes, or lanes that do not converge: full-precision bisection and one-by-one inverse
 /// iteration. `values`/`brackets`, when given (non-empty), are that bisection already done.
 Eigen::MatrixXd bisect_pairs(const SymTridiagonal& t, long first, long last, std::vector<double>& values,
-                             std::vector<double> brackets = {}) {
+                             std::vector<double> brackets, const std::vector<double>& inverse_sqrt_mass, bool keep,
+                             std::vector<double>& ipr, std::vector<double>& residual) {
   const int f = static_cast<int>(first), l = static_cast<int>(last);
+  ipr.clear();
+  residual.clear();
   if (last - first + 1 <= 64) {
     if (brackets.empty()) values = bisect_eigenvalues(t, f, l, 1e-14, kIsolated, &brackets);
+    LaneOptions lanes;
+    lanes.keep_vectors = keep;  // IPRs and residuals come from the lanes: no N × K copy needed
+    lanes.inverse_sqrt_mass = &inverse_sqrt_mass;
+    lanes.ipr = &ipr;
+    lanes.residual = &residual;
     try {
-      return lane_inverse_iteration(t, values, &brackets);
+      return lane_inverse_iteration(t, values, &brackets, lanes);
     } catch (const NumericalError&) {
+      ipr.clear();
+      residual.clear();
     }
   }
   values = bisect_eigenvalues(t, f, l, 1e-14);
@@ -144,7 +155,8 @@ Eigen::MatrixXd bisect_pairs(const SymTridiagonal& t, long first, long last, std
 }
 
 /// Eigenpairs first..last (1-based) by dstemr (lapack) or bisection + inverse iteration (bisect).
-Candidates by_index(PartialMethod method, const SymTridiagonal& t, long first, long last) {
+Candidates by_index(PartialMethod method, const SymTridiagonal& t, long first, long last,
+                    const std::vector<double>& inverse_sqrt_mass, bool keep) {
   Candidates out;
   out.first_mode = first;
   if (method == PartialMethod::lapack) {
@@ -155,7 +167,7 @@ Candidates by_index(PartialMethod method, const SymTridiagonal& t, long first, l
     out.vectors = std::move(eig.vectors);
     out.method = "lapack-" + std::string(to_string(eig.driver));
   } else {
-    out.vectors = bisect_pairs(t, first, last, out.values);
+    out.vectors = bisect_pairs(t, first, last, out.values, {}, inverse_sqrt_mass, keep, out.ipr, out.residual);
     out.method = "bisect";
   }
   return out;
@@ -196,7 +208,8 @@ PartialSpectrum partial_spectrum(const SymTridiagonal& t, const std::vector<doub
     const std::size_t upto = op.count_below(std::nextafter(hi, std::numeric_limits<double>::infinity()));
     if (upto > below) {
       if (config.method == PartialMethod::lapack || config.method == PartialMethod::bisect) {
-        cand = by_index(config.method, t, static_cast<long>(below) + 1, static_cast<long>(upto));
+        cand = by_index(config.method, t, static_cast<long>(below) + 1, static_cast<long>(upto), inverse_sqrt_mass,
+                        config.keep_vectors);
       } else {
         // The window is symmetric about its centre in ω², so its modes are the (upto − below)
         // eigenvalues nearest the centre.
@@ -218,7 +231,7 @@ PartialSpectrum partial_spectrum(const SymTridiagonal& t, const std::vector<doub
       const long c = static_cast<long>(op.count_below(sigma));
       const long first = std::max(1L, c - static_cast<long>(k)), last = std::min(static_cast<long>(n), c + static_cast<long>(k) + 1);
       if (config.method == PartialMethod::lapack) {
-        cand = by_index(config.method, t, first, last);
+        cand = by_index(config.method, t, first, last, inverse_sqrt_mass, config.keep_vectors);
         chosen = nearest_in_frequency(cand.values, f0, k);
       } else {
         // Values first (coarse where isolated), then vectors for the K chosen plus one on each
@@ -233,7 +246,8 @@ PartialSpectrum partial_spectrum(const SymTridiagonal& t, const std::vector<doub
         const long b = std::min(last, first + static_cast<long>(pick.back()) + 1);
         cand.values.assign(values.begin() + (a - first), values.begin() + (b - first) + 1);
         std::vector<double> sub(brackets.begin() + 2 * (a - first), brackets.begin() + 2 * (b - first) + 2);
-        cand.vectors = bisect_pairs(t, a, b, cand.values, b - a + 1 <= 64 ? std::move(sub) : std::vector<double>{});
+        cand.vectors = bisect_pairs(t, a, b, cand.values, b - a + 1 <= 64 ? std::move(sub) : std::vector<double>{},
+                                    inverse_sqrt_mass, config.keep_vectors, cand.ipr, cand.residual);
         cand.first_mode = a;
         cand.method = "bisect";
         chosen = nearest_in_frequency(cand.values, f0, k);
@@ -311,8 +325,17 @@ PartialSpectrum partial_spectrum(const SymTridiagonal& t, const std::vector<doub
   out.residual.resize(m);
   if (config.keep_vectors) out.vectors.resize(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(m));
   std::vector<double> tw(n);
+  const bool precomputed = !cand.ipr.empty();
   for (std::size_t j = 0; j < m; ++j) {
     const std::size_t i = chosen[j];
+    out.mode[j] = static_cast<std::size_t>(first + static_cast<long>(i));
+    out.omega2[j] = cand.values[i];
+    out.freq_khz[j] = frequency_khz(cand.values[i]);
+    if (precomputed) {
+      out.ipr[j] = cand.ipr[i];
+      out.residual[j] = cand.residual[i] / scale;
+    }
+    if (precomputed && !config.keep_vectors) continue;
     double* w = cand.vectors.col(static_cast<Eigen::Index>(i)).data();
     double norm2 = 0;
     std::size_t big = 0;
@@ -323,18 +346,17 @@ PartialSpectrum partial_spectrum(const SymTridiagonal& t, const std::vector<doub
     // Unit length and a fixed sign (largest entry > 0), so methods and runs compare and diff.
     const double f = (w[big] < 0 ? -1.0 : 1.0) / std::sqrt(norm2);
     for (std::size_t q = 0; q < n; ++q) w[q] *= f;
-    const double lambda = cand.values[i];
-    t.multiply(w, tw.data());
-    double r2 = 0;
-    for (std::size_t q = 0; q < n; ++q) {
-      const double d = tw[q] - lambda * w[q];
-      r2 += d * d;
+    if (!precomputed) {
+      const double lambda = cand.values[i];
+      t.multiply(w, tw.data());
+      double r2 = 0;
+      for (std::size_t q = 0; q < n; ++q) {
+        const double d = tw[q] - lambda * w[q];
+        r2 += d * d;
+      }
+      out.ipr[j] = displacement_ipr(w, inverse_sqrt_mass.data(), n);
+      out.residual[j] = std::sqrt(r2) / scale;
     }
-    out.mode[j] = static_cast<std::size_t>(first + static_cast<long>(i));
-    out.omega2[j] = lambda;
-    out.freq_khz[j] = frequency_khz(lambda);
-    out.ipr[j] = displacement_ipr(w, inverse_sqrt_mass.data(), n);
-    out.residual[j] = std::sqrt(r2) / scale;
     if (config.keep_vectors) std::copy(w, w + n, out.vectors.col(static_cast<Eigen::Index>(j)).data());
   }
   return out;

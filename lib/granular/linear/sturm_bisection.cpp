@@ -251,11 +251,13 @@ Eigen::MatrixXd inverse_iteration(const SymTridiagonal& t, std::vector<double>& 
   return z;
 }
 
-Eigen::MatrixXd lane_inverse_iteration(const SymTridiagonal& t, std::vector<double>& values,
-                                       const std::vector<double>* brackets) {
+namespace {
+
+/// One group of lanes of lane_inverse_iteration; results go to columns first… of z (if kept) and
+/// to options.ipr / options.residual at the same positions.
+void lane_group(const SymTridiagonal& t, std::vector<double>& values, const std::vector<double>* brackets,
+                const LaneOptions& options, Eigen::MatrixXd& z, std::size_t first) {
   const std::size_t n = t.size(), m = values.size();
-  if (m == 0) return Eigen::MatrixXd(static_cast<Eigen::Index>(n), 0);
-  if (m > 64) throw InvalidInput("lane_inverse_iteration: at most 64 lanes");
   const double norm = t.max_abs(), eps = std::numeric_limits<double>::epsilon();
   // Lanes closer than this (or with touching brackets) are made orthogonal explicitly: their
   // shifts cannot tell them apart. Lanes farther apart converge to distinct eigenvectors inside
@@ -395,18 +397,72 @@ Eigen::MatrixXd lane_inverse_iteration(const SymTridiagonal& t, std::vector<doub
     if (small) converged = true_residuals();
   }
   if (!converged) throw NumericalError("lane inverse iteration did not converge in 6 sweeps");
-  Eigen::MatrixXd z(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(m));
   // Lane-major to column-major in blocks of rows, so both sides stay in cache (a plain strided
   // copy per lane re-read the whole N × m array m times and took 40 % of the method's time).
   constexpr std::size_t block = 512;
-  for (std::size_t i0 = 0; i0 < n; i0 += block) {
-    const std::size_t i1 = std::min(n, i0 + block);
-    for (std::size_t j = 0; j < m; ++j) {
-      double* col = z.col(static_cast<Eigen::Index>(j)).data();
-      for (std::size_t i = i0; i < i1; ++i) col[i] = sc[j] * x[i * L + j];
+  if (options.keep_vectors)
+    for (std::size_t i0 = 0; i0 < n; i0 += block) {
+      const std::size_t i1 = std::min(n, i0 + block);
+      for (std::size_t j = 0; j < m; ++j) {
+        double* col = z.col(static_cast<Eigen::Index>(first + j)).data();
+        for (std::size_t i = i0; i < i1; ++i) col[i] = sc[j] * x[i * L + j];
+      }
     }
+  if (options.ipr && options.inverse_sqrt_mass) {  // Σv⁴/(Σv²)², v = w ⊙ m^{-1/2}, one row-major pass
+    std::vector<double> p2(m, 0.0), p4(m, 0.0);
+    const double* sm = options.inverse_sqrt_mass->data();
+    for (std::size_t i = 0; i < n; ++i)
+      for (std::size_t j = 0; j < m; ++j) {
+        const double v = x[i * L + j] * sm[i], v2 = v * v;
+        p2[j] += v2;
+        p4[j] += v2 * v2;
+      }
+    for (std::size_t j = 0; j < m; ++j) (*options.ipr)[first + j] = p4[j] / (p2[j] * p2[j]);
   }
-  for (std::size_t j = 0; j < m; ++j) values[j] = rho[j];
+  for (std::size_t j = 0; j < m; ++j) {
+    values[j] = rho[j];
+    if (options.residual) (*options.residual)[first + j] = res[j];
+  }
+}
+
+}  // namespace
+
+
+Eigen::MatrixXd lane_inverse_iteration(const SymTridiagonal& t, std::vector<double>& values,
+                                       const std::vector<double>* brackets, const LaneOptions& options) {
+  const std::size_t n = t.size(), m = values.size();
+  if (options.ipr) options.ipr->assign(m, 0.0);
+  if (options.residual) options.residual->assign(m, 0.0);
+  Eigen::MatrixXd z(static_cast<Eigen::Index>(n), options.keep_vectors ? static_cast<Eigen::Index>(m) : 0);
+  if (m == 0) return z;
+  if (m > 64) throw InvalidInput("lane_inverse_iteration: at most 64 lanes");
+  if (options.inverse_sqrt_mass && options.inverse_sqrt_mass->size() != n)
+    throw InvalidInput("lane_inverse_iteration: inverse_sqrt_mass must have N entries");
+  const double norm = t.max_abs();
+  // Lanes closer than this (or with touching brackets) are made orthogonal explicitly: their
+  // shifts cannot tell them apart. Lanes farther apart converge to distinct eigenvectors inside
+  // disjoint brackets, orthogonal to ~ε‖T‖/gap without help.
+  const double cluster = 1e-10 * norm;
+  auto touching = [&](std::size_t j, std::size_t k) {  // k < j
+    return (brackets && (*brackets)[2 * j] - (*brackets)[2 * k + 1] < cluster) || std::fabs(values[j] - values[k]) < cluster;
+  };
+  // Groups of at most options.group lanes (memory 2 N × group doubles), never splitting a cluster.
+  const std::size_t g = options.group == 0 ? m : options.group;
+  std::size_t j0 = 0;
+  std::vector<double> group_values, group_brackets;
+  while (j0 < m) {
+    std::size_t j1 = std::min(m, j0 + g);
+    while (j1 < m && j1 > j0 + 1 && touching(j1, j1 - 1)) --j1;  // move the cut out of a cluster
+    if (j1 < m && touching(j1, j1 - 1)) {                        // a cluster longer than a group
+      j1 = j0 + 1;
+      while (j1 < m && touching(j1, j1 - 1)) ++j1;
+    }
+    group_values.assign(values.begin() + static_cast<long>(j0), values.begin() + static_cast<long>(j1));
+    if (brackets) group_brackets.assign(brackets->begin() + 2 * static_cast<long>(j0), brackets->begin() + 2 * static_cast<long>(j1));
+    lane_group(t, group_values, brackets ? &group_brackets : nullptr, options, z, j0);
+    std::copy(group_values.begin(), group_values.end(), values.begin() + static_cast<long>(j0));
+    j0 = j1;
+  }
   return z;
 }
 

@@ -35,11 +35,19 @@ Eigen::MatrixXd inverse_iteration(const SymTridiagonal& t, std::vector<double>& 
 /// (Rayleigh-quotient iteration, cubic), until every residual ‖Tw − ρw‖ ≤ 64 ε ‖T‖. Lanes whose
 /// shifts (or brackets) are within 1e-10 ‖T‖ are Gram–Schmidt orthogonalized. At most 64 lanes; throws
 /// NumericalError when a lane does not converge in 6 sweeps (callers then bisect to full
-/// precision and use inverse_iteration). Memory: 2 N × m doubles besides the result.
+/// precision and use inverse_iteration). Memory: 2 N × group doubles besides the result; lanes
+/// are solved in groups that never split a cluster (8 lanes fill one AVX-512 register).
 /// With `brackets` (from bisect_eigenvalues) a shift only moves, and a lane only counts as
 /// converged, inside its own bracket: a lane cannot drift to a neighbour's eigenvalue.
+struct LaneOptions {
+  std::size_t group = 8;      ///< lanes solved together (memory 2 N × group doubles); 0 = all at once
+  bool keep_vectors = true;   ///< false: return an N × 0 matrix (IPR and residuals still computed)
+  const std::vector<double>* inverse_sqrt_mass = nullptr;  ///< with `ipr`: IPRs of v = w ⊙ this
+  std::vector<double>* ipr = nullptr;       ///< if set: the displacement IPR of each lane
+  std::vector<double>* residual = nullptr;  ///< if set: ‖Tw − ρw‖ of each unit vector
+};
 Eigen::MatrixXd lane_inverse_iteration(const SymTridiagonal& t, std::vector<double>& values,
-                                       const std::vector<double>* brackets = nullptr);
+                                       const std::vector<double>* brackets = nullptr, const LaneOptions& options = {});
 
 /// Counts of eigenvalues below each of `shifts` (one sweep over the matrix).
 std::vector<long> count_below_many(const SymTridiagonal& t, const std::vector<double>& shifts);
