@@ -19,13 +19,13 @@ for n in $sizes; do
       --output "$work/$m.csv" --dump-matrix "$work/matrix" 2> "$work/time.txt" > /dev/null || { echo "$m $n failed"; cat "$work/time.txt"; continue; }
     wall=$(grep -oP '"wall_time_s": \K[0-9.e+-]+' "$work/$m.json")
     rss=$(grep -oP 'Maximum resident set size \(kbytes\): \K[0-9]+' "$work/time.txt")
-    printf '%-8s %-10s %10.3f %12.1f %s\n' "$m" "$n" "$wall" "$(echo "$rss/1024" | bc -l)" "in-tool wall time (chain + matrix + solve + output)"
+    printf '%-8s %-10s %10.3f %12.1f %s\n' "$m" "$n" "$wall" "$(awk -v k="$rss" 'BEGIN{print k/1024}')" "in-tool wall time (chain + matrix + solve + output)"
   done
   if [[ $with_scipy == scipy ]]; then
     ref=$(ls "$work"/*.csv | head -1)
     /usr/bin/time -v /usr/bin/python3 "$here/scipy_eigsh.py" "$work/matrix" 15 20 "$ref" > "$work/scipy.json" 2> "$work/time.txt"
     rss=$(grep -oP 'Maximum resident set size \(kbytes\): \K[0-9]+' "$work/time.txt")
     printf '%-8s %-10s %10.3f %12.1f %s\n' scipy "$n" "$(grep -oP '"seconds": \K[0-9.e+-]+' "$work/scipy.json")" \
-      "$(echo "$rss/1024" | bc -l)" "eigsh only; $(grep -oP '"max_rel_freq_diff_vs_ours": \K[0-9.e+-]+' "$work/scipy.json") max rel freq diff"
+      "$(awk -v k="$rss" 'BEGIN{print k/1024}')" "eigsh only; $(grep -oP '"max_rel_freq_diff_vs_ours": \K[0-9.e+-]+' "$work/scipy.json") max rel freq diff"
   fi
 done
