@@ -45,6 +45,9 @@ int main(int argc, char** argv) {
   app.add_option("--window", window, "F1:F2: every mode with F1 <= f <= F2 [kHz]");
   app.add_option("--method", method, "lapack | arpack | slepc (slepc runs on every mpirun rank)")->capture_default_str();
   app.add_option("--tolerance", tolerance, "ARPACK/SLEPc Ritz tolerance (0 = tightest default)")->capture_default_str();
+  long lanes = 8;
+  app.add_option("--lanes", lanes, "bisect: eigenvectors computed together, 1..64 (memory 2 N x lanes doubles)")
+      ->capture_default_str();
   app.add_option("--vectors", vectors_file, "also write the eigenvectors to this HDF5 file");
   app.add_option("--output", output, "CSV file to write (the JSON goes beside it)")->capture_default_str();
   app.add_flag("--quiet", quiet, "no notes on stderr");
@@ -107,6 +110,8 @@ int main(int argc, char** argv) {
     config.method = m;
     config.keep_vectors = !vectors_file.empty();
     config.tolerance = tolerance;
+    if (lanes < 1 || lanes > 64) throw InvalidInput("--lanes " + std::to_string(lanes) + ": must be in 1..64");
+    config.lanes = static_cast<std::size_t>(lanes);
     const PartialSpectrum result = partial_spectrum(d, s, selection, config);
     if (!writer) return;
 

@@ -132,7 +132,7 @@ constexpr double kIsolated = 1e-7;
 /// iteration. `values`/`brackets`, when given (non-empty), are that bisection already done.
 Eigen::MatrixXd bisect_pairs(const SymTridiagonal& t, long first, long last, std::vector<double>& values,
                              std::vector<double> brackets, const std::vector<double>& inverse_sqrt_mass, bool keep,
-                             std::vector<double>& ipr, std::vector<double>& residual) {
+                             std::vector<double>& ipr, std::vector<double>& residual, std::size_t group) {
   const int f = static_cast<int>(first), l = static_cast<int>(last);
   ipr.clear();
   residual.clear();
@@ -140,6 +140,7 @@ Eigen::MatrixXd bisect_pairs(const SymTridiagonal& t, long first, long last, std
     if (brackets.empty()) values = bisect_eigenvalues(t, f, l, 1e-14, kIsolated, &brackets);
     LaneOptions lanes;
     lanes.keep_vectors = keep;  // IPRs and residuals come from the lanes: no N × K copy needed
+    lanes.group = group;
     lanes.inverse_sqrt_mass = &inverse_sqrt_mass;
     lanes.ipr = &ipr;
     lanes.residual = &residual;
@@ -156,7 +157,7 @@ Eigen::MatrixXd bisect_pairs(const SymTridiagonal& t, long first, long last, std
 
 /// Eigenpairs first..last (1-based) by dstemr (lapack) or bisection + inverse iteration (bisect).
 Candidates by_index(PartialMethod method, const SymTridiagonal& t, long first, long last,
-                    const std::vector<double>& inverse_sqrt_mass, bool keep) {
+                    const std::vector<double>& inverse_sqrt_mass, bool keep, std::size_t group) {
   Candidates out;
   out.first_mode = first;
   if (method == PartialMethod::lapack) {
@@ -167,7 +168,7 @@ Candidates by_index(PartialMethod method, const SymTridiagonal& t, long first, l
     out.vectors = std::move(eig.vectors);
     out.method = "lapack-" + std::string(to_string(eig.driver));
   } else {
-    out.vectors = bisect_pairs(t, first, last, out.values, {}, inverse_sqrt_mass, keep, out.ipr, out.residual);
+    out.vectors = bisect_pairs(t, first, last, out.values, {}, inverse_sqrt_mass, keep, out.ipr, out.residual, group);
     out.method = "bisect";
   }
   return out;
@@ -209,7 +210,7 @@ PartialSpectrum partial_spectrum(const SymTridiagonal& t, const std::vector<doub
     if (upto > below) {
       if (config.method == PartialMethod::lapack || config.method == PartialMethod::bisect) {
         cand = by_index(config.method, t, static_cast<long>(below) + 1, static_cast<long>(upto), inverse_sqrt_mass,
-                        config.keep_vectors);
+                        config.keep_vectors, config.lanes);
       } else {
         // The window is symmetric about its centre in ω², so its modes are the (upto − below)
         // eigenvalues nearest the centre.
@@ -231,7 +232,7 @@ PartialSpectrum partial_spectrum(const SymTridiagonal& t, const std::vector<doub
       const long c = static_cast<long>(op.count_below(sigma));
       const long first = std::max(1L, c - static_cast<long>(k)), last = std::min(static_cast<long>(n), c + static_cast<long>(k) + 1);
       if (config.method == PartialMethod::lapack) {
-        cand = by_index(config.method, t, first, last, inverse_sqrt_mass, config.keep_vectors);
+        cand = by_index(config.method, t, first, last, inverse_sqrt_mass, config.keep_vectors, config.lanes);
         chosen = nearest_in_frequency(cand.values, f0, k);
       } else {
         // Values first (coarse where isolated), then vectors for the K chosen plus one on each
@@ -247,7 +248,7 @@ PartialSpectrum partial_spectrum(const SymTridiagonal& t, const std::vector<doub
         cand.values.assign(values.begin() + (a - first), values.begin() + (b - first) + 1);
         std::vector<double> sub(brackets.begin() + 2 * (a - first), brackets.begin() + 2 * (b - first) + 2);
         cand.vectors = bisect_pairs(t, a, b, cand.values, b - a + 1 <= 64 ? std::move(sub) : std::vector<double>{},
-                                    inverse_sqrt_mass, config.keep_vectors, cand.ipr, cand.residual);
+                                    inverse_sqrt_mass, config.keep_vectors, cand.ipr, cand.residual, config.lanes);
         cand.first_mode = a;
         cand.method = "bisect";
         chosen = nearest_in_frequency(cand.values, f0, k);

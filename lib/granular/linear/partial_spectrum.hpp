@@ -53,6 +53,7 @@ struct PartialSpectrumConfig {
   bool keep_vectors = false;  ///< return the eigenvectors (N × K) too
   double tolerance = 0;       ///< ARPACK/SLEPc Ritz tolerance; 0 = each method's tightest default
   int subspace = 0;           ///< ARPACK/SLEPc Krylov basis size; 0 = max(2K + 1, 20)
+  std::size_t lanes = 8;      ///< bisect: eigenvectors computed together (memory 2 N × lanes doubles)
 };
 
 struct PartialSpectrum {
