@@ -209,7 +209,7 @@ Eigen::MatrixXd inverse_iteration(const SymTridiagonal& t, std::vector<double>& 
   const double eps = std::numeric_limits<double>::epsilon();
   // Vectors whose eigenvalues are closer than this are made orthogonal explicitly; farther ones
   // already are, to ~eps‖T‖/gap, by the accuracy of each vector.
-  const double cluster = 1e-7 * norm;
+  const double cluster = 1e-10 * norm;
   ShiftInvertOperator lu;
   std::vector<double> tw(n);
   std::uint64_t seed = 0x2545F4914F6CDD1Dull;

@@ -1,11 +1,13 @@
 #pragma once
-// Eigenvalues of a symmetric tridiagonal matrix by index, through inertia (Sturm) counts at many
-// shifts in one sweep over the matrix, and their eigenvectors by LAPACK's inverse iteration
-// (own, on the dgttrf LU; LAPACK's dstein reorthogonalizes every vector against all within
-// 1e-3‖T‖, i.e. all of them for long chains, and was 5× slower). The many-shift sweep is what makes this fast: LAPACK's own bisection (dlaebz) runs
-// one shift per sweep, so each O(N) sweep waits on a chain of dependent divisions; here 8–64
-// independent shifts share the sweep and fill the vector units. Shifts that share an interval
-// are spread over it (multisection) and every count narrows every eigenvalue's bracket.
+// The `bisect` partial-spectrum method: eigenvalues of a symmetric tridiagonal matrix by index,
+// from inertia (Sturm) counts at many shifts per sweep over the matrix, and their eigenvectors
+// by inverse iteration. LAPACK's own bisection (dlaebz, inside dstemr/dstebz) runs one shift per
+// O(N) sweep, a chain of dependent divisions; here up to 32 independent shifts share a sweep and
+// fill the vector units, shifts sharing a bracket are spread over it (multisection), and every
+// count narrows every bracket. Eigenvectors come from Rayleigh-quotient inverse iteration on
+// several vectors at once (lane_inverse_iteration), or one by one on the pivoted LU
+// (inverse_iteration; LAPACK's dstein was 5× slower: it reorthogonalizes every vector against
+// all others within 1e-3‖T‖, i.e. all of them in a long chain).
 #include <vector>
 
 #include <Eigen/Core>
@@ -25,7 +27,8 @@ std::vector<double> bisect_eigenvalues(const SymTridiagonal& t, int first, int l
 /// Unit eigenvectors (N × values.size()) for accurate eigenvalues `values` (ascending) by inverse
 /// iteration: one O(N) pivoted LU of T − λI (dgttrf), then solves until the residual
 /// ‖Tw − ρw‖ ≤ 64 ε ‖T‖ (usually 2), Gram–Schmidt against earlier vectors whose eigenvalues lie
-/// within 1e-7 ‖T‖. Each value is replaced by the Rayleigh quotient ρ = wᵀTw. Throws NumericalError.
+/// within 1e-10 ‖T‖ (closer than full-precision bisection separates). Each value is replaced by
+/// the Rayleigh quotient ρ = wᵀTw. Throws NumericalError.
 Eigen::MatrixXd inverse_iteration(const SymTridiagonal& t, std::vector<double>& values);
 
 /// The same, for all vectors at once: each sweep factorizes T − μ_j I = L D Lᵀ (no pivoting; a
