@@ -1,37 +1,82 @@
 #include "granular/io/hdf5_file.hpp"
 
+#include <unistd.h>
+
 #include <cstdio>
-#include <filesystem>
 
 #include <hdf5.h>
 
 #include "granular/error.hpp"
+#include "granular/io/atomic_file.hpp"
 
 namespace granular {
 
+Hdf5File::Hdf5File(std::string path) : path_(std::move(path)) {
+  check_writable(path_);
+  temporary_ = path_ + ".tmp." + std::to_string(::getpid());
+  file_ = H5Fcreate(temporary_.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+  if (file_ < 0) throw IoError("cannot create HDF5 file '" + temporary_ + "'");
+}
+
+Hdf5File::~Hdf5File() {
+  if (!committed_) {
+    if (file_ >= 0) H5Fclose(file_);
+    std::remove(temporary_.c_str());
+  }
+}
+
+namespace {
+
+void write_dataset(hid_t file, const std::string& name, hid_t type, const void* data, std::size_t rows,
+                   std::size_t cols, const std::string& where) {
+  const hsize_t dims[2] = {rows, cols};
+  const hid_t space = H5Screate_simple(cols == 1 ? 1 : 2, dims, nullptr);
+  if (space < 0) throw IoError("HDF5: cannot make a dataspace for '" + name + "' in '" + where + "'");
+  const hid_t set = H5Dcreate2(file, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+  herr_t status = -1;
+  if (set >= 0) status = (rows * cols == 0) ? 0 : H5Dwrite(set, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data);
+  if (set >= 0) H5Dclose(set);
+  H5Sclose(space);
+  if (set < 0 || status < 0) throw IoError("HDF5: cannot write dataset '" + name + "' to '" + where + "'");
+}
+
+}  // namespace
+
+void Hdf5File::write(const std::string& name, const double* data, std::size_t rows, std::size_t cols) {
+  write_dataset(file_, name, H5T_NATIVE_DOUBLE, data, rows, cols, temporary_);
+}
+
+void Hdf5File::write(const std::string& name, const std::vector<std::uint64_t>& data) {
+  write_dataset(file_, name, H5T_NATIVE_UINT64, data.data(), data.size(), 1, temporary_);
+}
+
+void Hdf5File::attribute(const std::string& name, const std::string& value) {
+  const hid_t type = H5Tcopy(H5T_C_S1);
+  H5Tset_size(type, value.size() + 1);
+  const hid_t space = H5Screate(H5S_SCALAR);
+  const hid_t attr = H5Acreate2(file_, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT);
+  const herr_t status = attr >= 0 ? H5Awrite(attr, type, value.c_str()) : -1;
+  if (attr >= 0) H5Aclose(attr);
+  H5Sclose(space);
+  H5Tclose(type);
+  if (status < 0) throw IoError("HDF5: cannot write attribute '" + name + "' to '" + temporary_ + "'");
+}
+
+void Hdf5File::commit() {
+  if (H5Fclose(file_) < 0) throw IoError("HDF5: closing '" + temporary_ + "' failed");
+  file_ = -1;
+  if (std::rename(temporary_.c_str(), path_.c_str()) != 0)
+    throw IoError("cannot rename '" + temporary_ + "' to '" + path_ + "'");
+  committed_ = true;
+}
+
 void write_hdf5_atomically(const std::string& path, const std::vector<Hdf5Array>& arrays) {
-  const std::string temporary = path + ".tmp";
-  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // errors become exceptions, not stderr noise
-  const hid_t file = H5Fcreate(temporary.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
-  if (file < 0) throw IoError("cannot create HDF5 file " + temporary);
-  bool ok = true;
+  Hdf5File file(path);
   for (const Hdf5Array& a : arrays) {
-    std::vector<hsize_t> dims(a.shape.begin(), a.shape.end());
-    const hid_t space = H5Screate_simple(static_cast<int>(dims.size()), dims.data(), nullptr);
-    const hid_t set = space < 0 ? -1
-                                : H5Dcreate2(file, a.name.c_str(), H5T_IEEE_F64LE, space, H5P_DEFAULT, H5P_DEFAULT,
-                                             H5P_DEFAULT);
-    ok = ok && set >= 0 && H5Dwrite(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, a.data) >= 0;
-    if (set >= 0) H5Dclose(set);
-    if (space >= 0) H5Sclose(space);
+    if (a.shape.empty() || a.shape.size() > 2) throw IoError("HDF5 dataset '" + a.name + "': only 1-D and 2-D arrays");
+    file.write(a.name, a.data, a.shape[0], a.shape.size() == 2 ? a.shape[1] : 1);
   }
-  ok = H5Fclose(file) >= 0 && ok;
-  std::error_code ec;
-  if (ok) std::filesystem::rename(temporary, path, ec);
-  if (!ok || ec) {
-    std::filesystem::remove(temporary, ec);
-    throw IoError("writing HDF5 file " + path + " failed");
-  }
+  file.commit();
 }
 
 }  // namespace granular

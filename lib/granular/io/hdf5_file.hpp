@@ -1,19 +1,44 @@
 #pragma once
-// Large numeric arrays in HDF5 (the C API), written atomically like every other output.
+// An HDF5 file of named 1-D and 2-D double / integer arrays that appears whole or not at all:
+// written under a temporary name and renamed on commit() (like AtomicFile).
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <vector>
 
 namespace granular {
 
+class Hdf5File {
+ public:
+  /// Creates PATH.tmp.<pid>; throws IoError.
+  explicit Hdf5File(std::string path);
+  Hdf5File(const Hdf5File&) = delete;
+  Hdf5File& operator=(const Hdf5File&) = delete;
+  ~Hdf5File();
+
+  /// A rows × cols row-major dataset (cols = 1 writes a 1-D dataset of `rows`).
+  void write(const std::string& name, const double* data, std::size_t rows, std::size_t cols = 1);
+  void write(const std::string& name, const std::vector<double>& data) { write(name, data.data(), data.size()); }
+  void write(const std::string& name, const std::vector<std::uint64_t>& data);
+  /// A string attribute on the root group.
+  void attribute(const std::string& name, const std::string& value);
+  /// Closes and renames onto the target; throws IoError.
+  void commit();
+
+ private:
+  std::string path_, temporary_;
+  long long file_ = -1;  // hid_t
+  bool committed_ = false;
+};
+
+/// A named array for write_hdf5_atomically: 1-D or 2-D (row-major) doubles.
 struct Hdf5Array {
   std::string name;                ///< dataset name at the file's root
-  std::vector<std::size_t> shape;  ///< row-major dimensions
+  std::vector<std::size_t> shape;  ///< {n} or {rows, cols}
   const double* data = nullptr;    ///< product(shape) values
 };
 
-/// Writes the arrays as double datasets into a new file, via a temporary name renamed onto
-/// `path`. Throws IoError on any HDF5 failure, leaving nothing behind.
+/// Writes the arrays into a new file that appears whole or not at all; throws IoError.
 void write_hdf5_atomically(const std::string& path, const std::vector<Hdf5Array>& arrays);
 
 }  // namespace granular

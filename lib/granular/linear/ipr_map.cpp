@@ -26,10 +26,52 @@ void validate(const IprMapConfig& c) {
   if (!(c.r1 > 0) || !std::isfinite(c.r1)) throw InvalidInput("--R1 " + format_number(c.r1) + ": must be finite and > 0");
   validate(c.material, "material");
   make_mode_ipr_solver(c.solver);  // throws on an unknown method
+  if (c.selection) validate(*c.selection, c.n);
 }
+
+namespace {
+
+std::vector<IprMapCell> compute_partial_ipr_map(const IprMapConfig& c, ProgressMeter* progress) {
+  // ARPACK keeps its state in Fortran SAVE variables and SLEPc is MPI-collective: one thread.
+  const bool threadable = c.partial_method == PartialMethod::lapack || c.partial_method == PartialMethod::bisect;
+  const int threads = threadable ? resolve_threads(c.threads) : 1;
+  const std::size_t n = c.n, realizations = c.realizations;
+  PartialSpectrumConfig pc;
+  pc.method = c.partial_method;
+  std::vector<PartialSpectrum> slots(realizations);
+  std::vector<Configuration> types(realizations);
+  std::vector<IprMapCell> cells;
+  for (double q : c.q_values) {
+    parallel_realizations(realizations, threads, [&](std::size_t r, int) {
+      types[r] = realization_configuration(c.disorder, q, n, c.seed, r);
+    });
+    for (double xi : c.xi_values) {
+      parallel_realizations(
+          realizations, threads,
+          [&](std::size_t r, int) {
+            const Chain chain = make_chain(radii_of(types[r], c.r1, xi), c.precompression, c.material);
+            slots[r] = partial_spectrum(dynamical_matrix(chain), inverse_sqrt_mass(chain.inverse_mass), *c.selection, pc);
+          },
+          progress);
+      IprMapCell cell{q, xi, {}, {}, {}, {}};
+      for (std::size_t r = 0; r < realizations; ++r)  // fixed order: thread-count independent
+        for (std::size_t j = 0; j < slots[r].size(); ++j) {
+          cell.freq_khz.push_back(slots[r].freq_khz[j]);
+          cell.ipr.push_back(slots[r].ipr[j]);
+          cell.mode.push_back(slots[r].mode[j]);
+          cell.realization.push_back(r);
+        }
+      cells.push_back(std::move(cell));
+    }
+  }
+  return cells;
+}
+
+}  // namespace
 
 std::vector<IprMapCell> compute_ipr_map(const IprMapConfig& c, ProgressMeter* progress) {
   validate(c);
+  if (c.selection) return compute_partial_ipr_map(c, progress);
   const int threads = resolve_threads(c.threads);
   std::vector<std::unique_ptr<ModeIprSolver>> solvers;
   for (int t = 0; t < threads; ++t) solvers.push_back(make_mode_ipr_solver(c.solver));
@@ -72,7 +114,7 @@ std::vector<IprMapCell> compute_ipr_map(const IprMapConfig& c, ProgressMeter* pr
         }
         if (progress) progress->advance(last - first);
       });
-      IprMapCell cell{q, xi, std::vector<double>(n, 0.0), std::vector<double>(n, 0.0)};
+      IprMapCell cell{q, xi, std::vector<double>(n, 0.0), std::vector<double>(n, 0.0), {}, {}};
       for (std::size_t r = 0; r < realizations; ++r)  // fixed order: thread-count independent
         for (std::size_t k = 0; k < n; ++k) {
           cell.freq_khz[k] += frequency_khz(omega2[r * n + k]);

@@ -20,3 +20,13 @@ void dsterf_(const int* n, double* d, double* e, int* info);
 void dstein_(const int* n, const double* d, const double* e, const int* m, const double* w, const int* iblock,
              const int* isplit, double* z, const int* ldz, double* work, int* iwork, int* ifail, int* info);
 }
+
+// Partial spectra: general tridiagonal LU (shift-invert solves) and bisection + inverse iteration.
+extern "C" {
+void dgttrf_(const int* n, double* dl, double* d, double* du, double* du2, int* ipiv, int* info);
+void dgttrs_(const char* trans, const int* n, const int* nrhs, const double* dl, const double* d, const double* du,
+             const double* du2, const int* ipiv, double* b, const int* ldb, int* info, std::size_t);
+void dstebz_(const char* range, const char* order, const int* n, const double* vl, const double* vu, const int* il,
+             const int* iu, const double* abstol, const double* d, const double* e, int* m, int* nsplit, double* w,
+             int* iblock, int* isplit, double* work, int* iwork, int* info, std::size_t, std::size_t);
+}

@@ -42,8 +42,18 @@ class LapackEigensolver {
     return out;
   }
 
+  /// Eigenpairs number `first` … `last` (1-based, inclusive, ascending): dstemr with
+  /// RANGE = 'I' (MRRR, O(N) per pair), falling back to dstevr and then dstebz + dstein.
+  /// `out.vectors` is N × (last − first + 1). Throws InvalidInput unless 1 ≤ first ≤ last ≤ N.
+  void solve_indices(const SymTridiagonal& t, int first, int last, bool want_vectors, EigenDecomposition& out);
+  /// Eigenpairs with lo ≤ λ ≤ hi: the index range from two inertia counts, then solve_indices.
+  /// An empty window gives an empty result.
+  void solve_window(const SymTridiagonal& t, double lo, double hi, bool want_vectors, EigenDecomposition& out);
+
  private:
   int run(LapackDriver driver, bool want_vectors, int n, EigenDecomposition& out);
+  int run_indices(LapackDriver driver, bool want_vectors, int n, int first, int last, EigenDecomposition& out);
+  int run_bisection(bool want_vectors, int n, int first, int last, EigenDecomposition& out);
   LapackDriver preferred_;
   std::vector<double> d_, e_, work_;
   std::vector<int> iwork_, isuppz_;

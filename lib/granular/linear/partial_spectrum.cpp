@@ -1,0 +1,366 @@
+#include "granular/linear/partial_spectrum.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <numeric>
+
+#include "granular/error.hpp"
+#include "granular/io/number_format.hpp"
+#include "granular/linear/dynamical_matrix.hpp"
+#include "granular/linear/lapack_eigensolver.hpp"
+#include "granular/linear/mode_ipr.hpp"
+#include "granular/linear/shift_invert_eigensolvers.hpp"
+#include "granular/linear/sturm_bisection.hpp"
+#include "granular/linear/tridiagonal_operator.hpp"
+
+namespace granular {
+
+std::string_view to_string(PartialMethod method) {
+  switch (method) {
+    case PartialMethod::lapack: return "lapack";
+    case PartialMethod::bisect: return "bisect";
+    case PartialMethod::arpack: return "arpack";
+    case PartialMethod::slepc: return "slepc";
+  }
+  return "?";
+}
+
+PartialMethod parse_partial_method(std::string_view name) {
+  for (auto m : {PartialMethod::lapack, PartialMethod::bisect, PartialMethod::arpack, PartialMethod::slepc})
+    if (name == to_string(m)) return m;
+  throw InvalidInput("--method '" + std::string(name) + "': expected lapack, bisect, arpack or slepc");
+}
+
+double omega_squared_of_khz(double khz) {
+  const double omega = 2 * std::numbers::pi * khz * 1e3;
+  return omega * omega;
+}
+
+void validate(const SpectrumSelection& s, std::size_t n) {
+  if (s.kind == SpectrumSelection::Kind::nearest) {
+    if (!std::isfinite(s.near_khz) || s.near_khz < 0)
+      throw InvalidInput("--near " + format_number(s.near_khz) + ": must be a finite frequency >= 0 kHz");
+    if (s.count < 1) throw InvalidInput("--count " + std::to_string(s.count) + ": must be >= 1");
+    if (static_cast<unsigned long>(s.count) > n)
+      throw InvalidInput("--count " + std::to_string(s.count) + ": the chain has only N = " + std::to_string(n) +
+                         " modes");
+  } else {
+    if (!std::isfinite(s.lo_khz) || !std::isfinite(s.hi_khz) || s.lo_khz < 0 || s.hi_khz < s.lo_khz)
+      throw InvalidInput("--window " + format_number(s.lo_khz) + ":" + format_number(s.hi_khz) +
+                         ": need finite 0 <= F1 <= F2 (kHz)");
+  }
+}
+
+namespace {
+
+double parse_khz(const std::string& text, const std::string& whole) {
+  std::size_t used = 0;
+  double v = 0;
+  try {
+    v = std::stod(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used == 0 || used != text.size() || !std::isfinite(v))
+    throw InvalidInput("--window '" + whole + "': expected F1:F2, two frequencies in kHz");
+  return v;
+}
+
+}  // namespace
+
+SpectrumSelection parse_selection(const std::optional<double>& near_khz, const std::optional<long>& count,
+                                  const std::optional<std::string>& window) {
+  if (window) {
+    if (near_khz || count) throw InvalidInput("--window cannot be combined with --near/--count");
+    const auto colon = window->find(':');
+    if (colon == std::string::npos || window->find(':', colon + 1) != std::string::npos)
+      throw InvalidInput("--window '" + *window + "': expected F1:F2, two frequencies in kHz");
+    return SpectrumSelection::window(parse_khz(window->substr(0, colon), *window),
+                                     parse_khz(window->substr(colon + 1), *window));
+  }
+  if (near_khz && !count) throw InvalidInput("--near needs --count K (how many modes)");
+  if (count && !near_khz) throw InvalidInput("--count needs --near KHZ (the target frequency)");
+  if (!near_khz) throw InvalidInput("give --near KHZ --count K, or --window F1:F2");
+  return SpectrumSelection::nearest(*near_khz, *count);
+}
+
+namespace {
+
+/// Eigenpairs computed by a method, a contiguous run of the spectrum, ascending.
+struct Candidates {
+  std::vector<double> values;
+  Eigen::MatrixXd vectors;  // N × values.size()
+  long first_mode = -1;     // mode number of values[0] when the method knows it (LAPACK), else -1
+  std::string method;
+  int restarts = 0;
+  std::vector<double> ipr, residual;  // precomputed per candidate (bisect lanes), else empty
+};
+
+/// Mode number of the first of a contiguous run of eigenvalues: an inertia count in the widest gap
+/// of the run, so that round-off in the count cannot hit an eigenvalue.
+long first_mode_number(const TridiagonalOperator& op, const std::vector<double>& v, double scale) {
+  if (v.size() == 1)
+    return static_cast<long>(op.count_below(v[0] - 64 * std::numeric_limits<double>::epsilon() * scale)) + 1;
+  std::size_t widest = 0;
+  for (std::size_t i = 1; i + 1 < v.size(); ++i)
+    if (v[i + 1] - v[i] > v[widest + 1] - v[widest]) widest = i;
+  const double p = 0.5 * (v[widest] + v[widest + 1]);
+  return static_cast<long>(op.count_below(p)) - static_cast<long>(widest);
+}
+
+/// Indices into `values` (ascending) of the `count` nearest f0 in frequency, ascending. Ties: lower first.
+std::vector<std::size_t> nearest_in_frequency(const std::vector<double>& values, double f0, std::size_t count) {
+  std::vector<std::size_t> idx(values.size());
+  std::iota(idx.begin(), idx.end(), 0);
+  std::stable_sort(idx.begin(), idx.end(), [&](std::size_t a, std::size_t b) {
+    return std::fabs(frequency_khz(values[a]) - f0) < std::fabs(frequency_khz(values[b]) - f0);
+  });
+  idx.resize(std::min(count, idx.size()));
+  std::sort(idx.begin(), idx.end());
+  return idx;
+}
+
+/// bisect: an eigenvalue alone in its bracket is bisected only to this relative width; the
+/// Rayleigh-quotient iteration inside its bracket finishes it. Clustered ones go to 1e-14.
+constexpr double kIsolated = 1e-7;
+
+/// bisect: unit eigenvectors of modes first..last (1-based) and their eigenvalues. Up to 64 modes:
+/// isolated eigenvalues bisected to kIsolated, then lane (Rayleigh-quotient) inverse iteration;
+/// more modes, or lanes that do not converge: full-precision bisection and one-by-one inverse
+/// iteration. `values`/`brackets`, when given (non-empty), are that bisection already done.
+Eigen::MatrixXd bisect_pairs(const SymTridiagonal& t, long first, long last, std::vector<double>& values,
+                             std::vector<double> brackets, const std::vector<double>& inverse_sqrt_mass, bool keep,
+                             std::vector<double>& ipr, std::vector<double>& residual, std::size_t group) {
+  const int f = static_cast<int>(first), l = static_cast<int>(last);
+  ipr.clear();
+  residual.clear();
+  if (last - first + 1 <= 64) {
+    if (brackets.empty()) values = bisect_eigenvalues(t, f, l, 1e-14, kIsolated, &brackets);
+    LaneOptions lanes;
+    lanes.keep_vectors = keep;  // IPRs and residuals come from the lanes: no N × K copy needed
+    lanes.group = group;
+    lanes.inverse_sqrt_mass = &inverse_sqrt_mass;
+    lanes.ipr = &ipr;
+    lanes.residual = &residual;
+    try {
+      return lane_inverse_iteration(t, values, &brackets, lanes);
+    } catch (const NumericalError&) {
+      ipr.clear();
+      residual.clear();
+    }
+  }
+  values = bisect_eigenvalues(t, f, l, 1e-14);
+  return inverse_iteration(t, values);
+}
+
+/// Eigenpairs first..last (1-based) by dstemr (lapack) or bisection + inverse iteration (bisect).
+Candidates by_index(PartialMethod method, const SymTridiagonal& t, long first, long last,
+                    const std::vector<double>& inverse_sqrt_mass, bool keep, std::size_t group) {
+  Candidates out;
+  out.first_mode = first;
+  if (method == PartialMethod::lapack) {
+    LapackEigensolver solver;
+    EigenDecomposition eig;
+    solver.solve_indices(t, static_cast<int>(first), static_cast<int>(last), true, eig);
+    out.values.assign(eig.values.data(), eig.values.data() + eig.values.size());
+    out.vectors = std::move(eig.vectors);
+    out.method = "lapack-" + std::string(to_string(eig.driver));
+  } else {
+    out.vectors = bisect_pairs(t, first, last, out.values, {}, inverse_sqrt_mass, keep, out.ipr, out.residual, group);
+    out.method = "bisect";
+  }
+  return out;
+}
+
+Candidates shift_invert(PartialMethod method, const SymTridiagonal& t, double sigma, int count,
+                        const PartialSpectrumConfig& config) {
+  ShiftInvertConfig c;
+  c.count = count;
+  c.tolerance = config.tolerance;
+  c.subspace = config.subspace;
+  ShiftInvertResult r = method == PartialMethod::arpack ? arpack_nearest(t, sigma, c) : slepc_nearest(t, sigma, c);
+  Candidates out;
+  out.values = std::move(r.values);
+  out.vectors = std::move(r.vectors);
+  out.method = std::string(to_string(method));
+  out.restarts = r.restarts;
+  return out;
+}
+
+}  // namespace
+
+PartialSpectrum partial_spectrum(const SymTridiagonal& t, const std::vector<double>& inverse_sqrt_mass,
+                                 const SpectrumSelection& selection, const PartialSpectrumConfig& config) {
+  const std::size_t n = t.size();
+  if (n < 2) throw InvalidInput("partial spectrum: a chain needs at least 2 beads");
+  if (inverse_sqrt_mass.size() != n) throw InvalidInput("partial spectrum: inverse_sqrt_mass must have N entries");
+  validate(selection, n);
+  const TridiagonalOperator op(t);
+  const double scale = t.max_abs();
+  if (!std::isfinite(scale) || !(scale > 0)) throw NumericalError("dynamical matrix has a non-finite or zero scale");
+
+  Candidates cand;
+  std::vector<std::size_t> chosen;  // indices into cand.values
+  if (selection.kind == SpectrumSelection::Kind::window) {
+    const double lo = omega_squared_of_khz(selection.lo_khz), hi = omega_squared_of_khz(selection.hi_khz);
+    const std::size_t below = op.count_below(lo);
+    const std::size_t upto = op.count_below(std::nextafter(hi, std::numeric_limits<double>::infinity()));
+    if (upto > below) {
+      if (config.method == PartialMethod::lapack || config.method == PartialMethod::bisect) {
+        cand = by_index(config.method, t, static_cast<long>(below) + 1, static_cast<long>(upto), inverse_sqrt_mass,
+                        config.keep_vectors, config.lanes);
+      } else {
+        // The window is symmetric about its centre in ω², so its modes are the (upto − below)
+        // eigenvalues nearest the centre.
+        cand = shift_invert(config.method, t, 0.5 * (lo + hi), static_cast<int>(upto - below), config);
+      }
+      cand.first_mode = static_cast<long>(below) + 1;
+      chosen.resize(cand.values.size());
+      std::iota(chosen.begin(), chosen.end(), 0);
+    } else {
+      cand.method = config.method == PartialMethod::lapack ? "lapack-stemr" : std::string(to_string(config.method));
+    }
+  } else {
+    const double f0 = selection.near_khz;
+    const auto k = static_cast<std::size_t>(selection.count);
+    const double sigma = omega_squared_of_khz(f0);
+    if (config.method == PartialMethod::lapack || config.method == PartialMethod::bisect) {
+      // The K nearest form a run of consecutive modes that contains mode c or c + 1 (c = modes
+      // below σ); one extra on each side absorbs a count off by one in round-off.
+      const long c = static_cast<long>(op.count_below(sigma));
+      const long first = std::max(1L, c - static_cast<long>(k)), last = std::min(static_cast<long>(n), c + static_cast<long>(k) + 1);
+      if (config.method == PartialMethod::lapack) {
+        cand = by_index(config.method, t, first, last, inverse_sqrt_mass, config.keep_vectors, config.lanes);
+        chosen = nearest_in_frequency(cand.values, f0, k);
+      } else {
+        // Values first (coarse where isolated), then vectors for the K chosen plus one on each
+        // side, then the final choice on the refined values (a coarse ranking could swap two
+        // nearly equidistant modes).
+        const bool coarse = last - first + 1 <= 64;
+        std::vector<double> brackets;
+        const auto values =
+            bisect_eigenvalues(t, static_cast<int>(first), static_cast<int>(last), 1e-14, coarse ? kIsolated : 0, &brackets);
+        const auto pick = nearest_in_frequency(values, f0, k);
+        const long a = std::max(first, first + static_cast<long>(pick.front()) - 1);
+        const long b = std::min(last, first + static_cast<long>(pick.back()) + 1);
+        cand.values.assign(values.begin() + (a - first), values.begin() + (b - first) + 1);
+        std::vector<double> sub(brackets.begin() + 2 * (a - first), brackets.begin() + 2 * (b - first) + 2);
+        cand.vectors = bisect_pairs(t, a, b, cand.values, b - a + 1 <= 64 ? std::move(sub) : std::vector<double>{},
+                                    inverse_sqrt_mass, config.keep_vectors, cand.ipr, cand.residual, config.lanes);
+        cand.first_mode = a;
+        cand.method = "bisect";
+        chosen = nearest_in_frequency(cand.values, f0, k);
+      }
+    } else {
+      if (k > n - 1)
+        throw InvalidInput("--count " + std::to_string(k) + ": --method " + std::string(to_string(config.method)) +
+                           " needs K <= N - 1 = " + std::to_string(n - 1) + " (use --method lapack)");
+      // Shift-invert converges fast only when the wanted eigenvalues are the nearest to the shift
+      // *and* spread out compared with their distance from it. Inside a band (≥ 2K modes within
+      // ±0.1 % of f0) σ itself is a good shift. In a gap, or beyond the spectrum, the K nearest sit
+      // far away in a tight bunch (RDM2 at 15 kHz: ARPACK needed 340 s at N = 1e4); there the K
+      // nearest are first located by a coarse many-shift bisection and the shift goes to their centre.
+      const bool in_band = f0 > 0 && op.count_below(omega_squared_of_khz(f0 * (1 + 1e-3))) -
+                                             op.count_below(omega_squared_of_khz(f0 * (1 - 1e-3))) >=
+                                         2 * k;
+      const auto [glo, ghi] = op.spectrum_bounds();
+      const double s = std::clamp(sigma, glo, ghi);
+      std::size_t extra = std::max<std::size_t>(2, k / 5);
+      if (!in_band) {
+        const long c = static_cast<long>(op.count_below(sigma));
+        const long first = std::max(1L, c - static_cast<long>(k));
+        const long last = std::min(static_cast<long>(n), c + static_cast<long>(k) + 1);
+        const auto values = bisect_eigenvalues(t, static_cast<int>(first), static_cast<int>(last), 1e-9);
+        const auto pick = nearest_in_frequency(values, f0, k);
+        const double centre = 0.5 * (values[pick.front()] + values[pick.back()]);
+        cand = shift_invert(config.method, t, centre, static_cast<int>(k), config);
+        cand.first_mode = first + static_cast<long>(pick.front());
+        if (first_mode_number(op, cand.values, scale) != cand.first_mode)
+          throw NumericalError("--near: " + std::string(to_string(config.method)) +
+                               " converged to other modes than the located ones (use --method lapack)");
+        chosen.resize(k);
+        std::iota(chosen.begin(), chosen.end(), 0);
+      }
+      // Shift-invert finds the nearest in ω², not in f. Ask for a few more and accept once the
+      // K-th nearest in f lies strictly inside the ω² interval the candidates are known to cover.
+      while (in_band) {
+        const std::size_t want = std::min(k + extra, n - 1);
+        if (want < k)
+          throw InvalidInput("--count " + std::to_string(k) + ": --method " + std::string(to_string(config.method)) +
+                             " needs K <= N - 1 = " + std::to_string(n - 1) + " (use --method lapack)");
+        cand = shift_invert(config.method, t, s, static_cast<int>(want), config);
+        double r = 0;
+        for (double v : cand.values) r = std::max(r, std::fabs(v - s));
+        const double inf = std::numeric_limits<double>::infinity();
+        const double reach_down = s - r < glo ? inf : f0 - frequency_khz(s - r);
+        const double reach_up = s + r > ghi ? inf : frequency_khz(s + r) - f0;
+        chosen = nearest_in_frequency(cand.values, f0, k);
+        double dk = 0;
+        for (std::size_t i : chosen) dk = std::max(dk, std::fabs(frequency_khz(cand.values[i]) - f0));
+        if (dk < std::min(reach_down, reach_up) || want == n - 1) {
+          if (dk < std::min(reach_down, reach_up)) break;
+          throw NumericalError("--near: cannot certify the " + std::to_string(k) + " nearest modes with " +
+                               std::string(to_string(config.method)) + " (use --method lapack)");
+        }
+        extra *= 2;
+      }
+    }
+  }
+
+  PartialSpectrum out;
+  out.method = cand.method;
+  out.restarts = cand.restarts;
+  out.candidates = static_cast<int>(cand.values.size());
+  if (chosen.empty()) {
+    if (config.keep_vectors) out.vectors.resize(static_cast<Eigen::Index>(n), 0);
+    return out;
+  }
+  const long first = cand.first_mode > 0 ? cand.first_mode : first_mode_number(op, cand.values, scale);
+  const std::size_t m = chosen.size();
+  out.mode.resize(m);
+  out.omega2.resize(m);
+  out.freq_khz.resize(m);
+  out.ipr.resize(m);
+  out.residual.resize(m);
+  if (config.keep_vectors) out.vectors.resize(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(m));
+  std::vector<double> tw(n);
+  const bool precomputed = !cand.ipr.empty();
+  for (std::size_t j = 0; j < m; ++j) {
+    const std::size_t i = chosen[j];
+    out.mode[j] = static_cast<std::size_t>(first + static_cast<long>(i));
+    out.omega2[j] = cand.values[i];
+    out.freq_khz[j] = frequency_khz(cand.values[i]);
+    if (precomputed) {
+      out.ipr[j] = cand.ipr[i];
+      out.residual[j] = cand.residual[i] / scale;
+    }
+    if (precomputed && !config.keep_vectors) continue;
+    double* w = cand.vectors.col(static_cast<Eigen::Index>(i)).data();
+    double norm2 = 0;
+    std::size_t big = 0;
+    for (std::size_t q = 0; q < n; ++q) {
+      norm2 += w[q] * w[q];
+      if (std::fabs(w[q]) > std::fabs(w[big])) big = q;
+    }
+    // Unit length and a fixed sign (largest entry > 0), so methods and runs compare and diff.
+    const double f = (w[big] < 0 ? -1.0 : 1.0) / std::sqrt(norm2);
+    for (std::size_t q = 0; q < n; ++q) w[q] *= f;
+    if (!precomputed) {
+      const double lambda = cand.values[i];
+      t.multiply(w, tw.data());
+      double r2 = 0;
+      for (std::size_t q = 0; q < n; ++q) {
+        const double d = tw[q] - lambda * w[q];
+        r2 += d * d;
+      }
+      out.ipr[j] = displacement_ipr(w, inverse_sqrt_mass.data(), n);
+      out.residual[j] = std::sqrt(r2) / scale;
+    }
+    if (config.keep_vectors) std::copy(w, w + n, out.vectors.col(static_cast<Eigen::Index>(j)).data());
+  }
+  return out;
+}
+
+}  // namespace granular

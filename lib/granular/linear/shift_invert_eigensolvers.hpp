@@ -1,0 +1,48 @@
+#pragma once
+// Eigenpairs of a symmetric tridiagonal matrix nearest a shift σ, by shift-and-invert Krylov
+// methods: ARPACK (dsaupd/dseupd, mode 3) and SLEPc (Krylov–Schur + ST sinvert on a PETSc
+// MPI matrix). Both see the matrix only through TridiagonalOperator / ShiftInvertOperator
+// (ARPACK) or its rows (SLEPc); partial_spectrum.hpp is the one call users make.
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "granular/linear/sym_tridiagonal.hpp"
+
+namespace granular {
+
+struct ShiftInvertConfig {
+  int count = 1;             ///< eigenpairs wanted (the `count` nearest σ in |λ − σ|)
+  double tolerance = 0;      ///< relative residual of the Ritz pairs; 0 = machine precision (ARPACK),
+                             ///< 1e-14 for SLEPc
+  int max_restarts = 3000;   ///< ARPACK iparam(3) / SLEPc max_it
+  int subspace = 0;          ///< Krylov basis size (ncv); 0 = max(2 count + 1, 20), capped at N
+};
+
+struct ShiftInvertResult {
+  std::vector<double> values;  ///< ascending
+  Eigen::MatrixXd vectors;     ///< N × count, orthonormal columns (on every rank for SLEPc)
+  int restarts = 0;            ///< outer iterations the method reported
+  long operator_solves = 0;    ///< (T − σI)⁻¹ applications (ARPACK; SLEPc reports its iterations only)
+};
+
+/// ARPACK shift-invert. Throws InvalidInput unless 1 ≤ count ≤ N − 1, NumericalError when
+/// ARPACK fails or does not converge.
+ShiftInvertResult arpack_nearest(const SymTridiagonal& t, double sigma, const ShiftInvertConfig& config);
+
+/// SLEPc shift-invert, collective over MPI_COMM_WORLD: every rank passes the same matrix, owns
+/// a block of its rows, and receives the full result. Initializes SLEPc (and MPI) on first use.
+/// Throws InvalidInput when this build has no SLEPc.
+ShiftInvertResult slepc_nearest(const SymTridiagonal& t, double sigma, const ShiftInvertConfig& config);
+
+/// True when the library was built with SLEPc.
+bool have_slepc();
+/// This process's MPI rank and the number of ranks (0 and 1 without SLEPc/MPI or before MPI starts).
+int mpi_rank();
+int mpi_size();
+/// Starts SLEPc/PETSc/MPI now (passing the command line, e.g. -eps_view) instead of on first use;
+/// finalize_slepc() ends them (also registered with atexit). Both are no-ops without SLEPc.
+void initialize_slepc(int* argc, char*** argv);
+void finalize_slepc();
+
+}  // namespace granular

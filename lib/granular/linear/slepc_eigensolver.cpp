@@ -1,0 +1,189 @@
+// SLEPc shift-invert: Krylov–Schur on (T − σI)⁻¹ with the LU (MUMPS, partial pivoting, works
+// for one rank or many) of a PETSc MPIAIJ matrix whose rows are spread over MPI_COMM_WORLD.
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <numeric>
+#include <string>
+
+#include "granular/error.hpp"
+#include "granular/linear/shift_invert_eigensolvers.hpp"
+
+#if GRANULAR_HAVE_SLEPC
+#include <mpi.h>
+#include <slepceps.h>
+#endif
+
+namespace granular {
+
+#if GRANULAR_HAVE_SLEPC
+
+namespace {
+
+bool started_by_us = false;
+
+void check(PetscErrorCode code, const char* what) {
+  if (code != 0) throw NumericalError(std::string("SLEPc/PETSc: ") + what + " failed (error " + std::to_string(code) + ")");
+}
+
+void ensure_started() {
+  PetscBool up = PETSC_FALSE;
+  SlepcInitialized(&up);
+  if (!up) initialize_slepc(nullptr, nullptr);
+}
+
+/// Destroys PETSc objects on every exit path.
+template <class T, PetscErrorCode (*Destroy)(T*)>
+struct Owned {
+  T p = nullptr;
+  ~Owned() {
+    if (p) Destroy(&p);
+  }
+};
+
+}  // namespace
+
+bool have_slepc() { return true; }
+
+void initialize_slepc(int* argc, char*** argv) {
+  PetscBool up = PETSC_FALSE;
+  SlepcInitialized(&up);
+  if (up) return;
+  check(SlepcInitialize(argc, argv, nullptr, nullptr), "SlepcInitialize");
+  started_by_us = true;
+  std::atexit(finalize_slepc);
+}
+
+void finalize_slepc() {
+  PetscBool up = PETSC_FALSE, done = PETSC_FALSE;
+  SlepcInitialized(&up);
+  PetscFinalized(&done);
+  if (started_by_us && up && !done) SlepcFinalize();
+}
+
+int mpi_rank() {
+  int up = 0, fin = 0, rank = 0;
+  MPI_Initialized(&up);
+  MPI_Finalized(&fin);
+  if (up && !fin) MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  return rank;
+}
+
+int mpi_size() {
+  int up = 0, fin = 0, size = 1;
+  MPI_Initialized(&up);
+  MPI_Finalized(&fin);
+  if (up && !fin) MPI_Comm_size(MPI_COMM_WORLD, &size);
+  return size;
+}
+
+ShiftInvertResult slepc_nearest(const SymTridiagonal& t, double sigma, const ShiftInvertConfig& config) {
+  const PetscInt n = static_cast<PetscInt>(t.size());
+  const PetscInt nev = config.count;
+  if (nev < 1 || nev > n - 1)
+    throw InvalidInput("SLEPc: " + std::to_string(nev) + " eigenpairs of an N = " + std::to_string(n) +
+                       " matrix; it needs 1 <= count <= N - 1 (use --method lapack)");
+  if (!std::isfinite(sigma)) throw InvalidInput("SLEPc: the shift must be finite");
+  ensure_started();
+
+  Owned<Mat, MatDestroy> a;
+  check(MatCreateAIJ(PETSC_COMM_WORLD, PETSC_DECIDE, PETSC_DECIDE, n, n, 3, nullptr, 1, nullptr, &a.p), "MatCreateAIJ");
+  PetscInt first = 0, last = 0;
+  check(MatGetOwnershipRange(a.p, &first, &last), "MatGetOwnershipRange");
+  for (PetscInt i = first; i < last; ++i) {
+    PetscInt cols[3];
+    PetscScalar vals[3];
+    PetscInt k = 0;
+    if (i > 0) { cols[k] = i - 1; vals[k++] = t.off_diagonal[i - 1]; }
+    cols[k] = i; vals[k++] = t.diagonal[i];
+    if (i + 1 < n) { cols[k] = i + 1; vals[k++] = t.off_diagonal[i]; }
+    check(MatSetValues(a.p, 1, &i, k, cols, vals, INSERT_VALUES), "MatSetValues");
+  }
+  check(MatAssemblyBegin(a.p, MAT_FINAL_ASSEMBLY), "MatAssemblyBegin");
+  check(MatAssemblyEnd(a.p, MAT_FINAL_ASSEMBLY), "MatAssemblyEnd");
+
+  Owned<EPS, EPSDestroy> eps;
+  check(EPSCreate(PETSC_COMM_WORLD, &eps.p), "EPSCreate");
+  check(EPSSetOperators(eps.p, a.p, nullptr), "EPSSetOperators");
+  check(EPSSetProblemType(eps.p, EPS_HEP), "EPSSetProblemType");
+  check(EPSSetType(eps.p, EPSKRYLOVSCHUR), "EPSSetType");
+  const PetscInt ncv = config.subspace > 0 ? std::min<PetscInt>(n, std::max<PetscInt>(config.subspace, nev + 1))
+                                           : std::min<PetscInt>(n, std::max<PetscInt>(2 * nev + 1, 20));
+  check(EPSSetDimensions(eps.p, nev, ncv, PETSC_DEFAULT), "EPSSetDimensions");
+  check(EPSSetTarget(eps.p, sigma), "EPSSetTarget");
+  check(EPSSetWhichEigenpairs(eps.p, EPS_TARGET_MAGNITUDE), "EPSSetWhichEigenpairs");
+  // 1e-14: tight enough for 1e-10 relative eigenvalues; machine precision would not converge.
+  check(EPSSetTolerances(eps.p, config.tolerance > 0 ? config.tolerance : 1e-14, config.max_restarts),
+        "EPSSetTolerances");
+  ST st;
+  KSP ksp;
+  PC pc;
+  check(EPSGetST(eps.p, &st), "EPSGetST");
+  check(STSetType(st, STSINVERT), "STSetType");
+  check(STGetKSP(st, &ksp), "STGetKSP");
+  check(KSPSetType(ksp, KSPPREONLY), "KSPSetType");
+  check(KSPGetPC(ksp, &pc), "KSPGetPC");
+  check(PCSetType(pc, PCLU), "PCSetType");
+  // MUMPS pivots (T − σI is indefinite) and runs on any number of ranks, so -np 1 and -np P
+  // use the same factorization.
+  check(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS), "PCFactorSetMatSolverType");
+  check(EPSSetFromOptions(eps.p), "EPSSetFromOptions");
+  check(EPSSolve(eps.p), "EPSSolve");
+
+  PetscInt nconv = 0, its = 0;
+  check(EPSGetConverged(eps.p, &nconv), "EPSGetConverged");
+  check(EPSGetIterationNumber(eps.p, &its), "EPSGetIterationNumber");
+  if (nconv < nev)
+    throw NumericalError("SLEPc: " + std::to_string(nconv) + " of " + std::to_string(nev) + " eigenpairs converged in " +
+                         std::to_string(its) + " restarts");
+
+  std::vector<double> values(nconv);
+  for (PetscInt i = 0; i < nconv; ++i) {
+    PetscScalar kr = 0, ki = 0;
+    check(EPSGetEigenvalue(eps.p, i, &kr, &ki), "EPSGetEigenvalue");
+    values[i] = kr;
+  }
+  // The nev converged pairs nearest σ, ascending.
+  std::vector<PetscInt> order(nconv);
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(),
+                   [&](PetscInt x, PetscInt y) { return std::fabs(values[x] - sigma) < std::fabs(values[y] - sigma); });
+  order.resize(nev);
+  std::sort(order.begin(), order.end(), [&](PetscInt x, PetscInt y) { return values[x] < values[y]; });
+
+  ShiftInvertResult out;
+  out.restarts = static_cast<int>(its);
+  out.values.resize(nev);
+  out.vectors.resize(n, nev);
+  Owned<Vec, VecDestroy> x, all;
+  Owned<VecScatter, VecScatterDestroy> scatter;
+  check(MatCreateVecs(a.p, &x.p, nullptr), "MatCreateVecs");
+  check(VecScatterCreateToAll(x.p, &scatter.p, &all.p), "VecScatterCreateToAll");
+  for (PetscInt j = 0; j < nev; ++j) {
+    check(EPSGetEigenpair(eps.p, order[j], nullptr, nullptr, x.p, nullptr), "EPSGetEigenpair");
+    out.values[j] = values[order[j]];
+    check(VecScatterBegin(scatter.p, x.p, all.p, INSERT_VALUES, SCATTER_FORWARD), "VecScatterBegin");
+    check(VecScatterEnd(scatter.p, x.p, all.p, INSERT_VALUES, SCATTER_FORWARD), "VecScatterEnd");
+    const PetscScalar* p = nullptr;
+    check(VecGetArrayRead(all.p, &p), "VecGetArrayRead");
+    std::copy(p, p + n, out.vectors.col(j).data());
+    check(VecRestoreArrayRead(all.p, &p), "VecRestoreArrayRead");
+  }
+  if (!out.vectors.allFinite()) throw NumericalError("SLEPc returned non-finite eigenvectors");
+  return out;
+}
+
+#else  // no SLEPc in this build
+
+bool have_slepc() { return false; }
+void initialize_slepc(int*, char***) {}
+void finalize_slepc() {}
+int mpi_rank() { return 0; }
+int mpi_size() { return 1; }
+ShiftInvertResult slepc_nearest(const SymTridiagonal&, double, const ShiftInvertConfig&) {
+  throw InvalidInput("--method slepc: this build has no SLEPc (configure with -DGRANULAR_WITH_SLEPC=ON)");
+}
+
+#endif
+
+}  // namespace granular
