@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Whole-process time and peak memory of `partial-spectrum` for K = 20 modes nearest 15 kHz of an
+# Whole-process time and peak memory of `spectrum --near` for K = 20 modes nearest 15 kHz of an
 # Anderson chain (ξ = q = 0.5, F0 = 10 N, seed 1), per method and N, with SciPy's eigsh on the very
 # same matrix side by side (tests/benchmarks/scipy_eigsh.py, /usr/bin/python3). Prints a table.
 #   tests/benchmarks/partial_spectrum_scaling.sh BUILD_DIR "1e5 1e6 1e7" "bisect lapack arpack slepc" [scipy]
@@ -15,7 +15,7 @@ printf '%-8s %-10s %10s %12s %s\n' method N wall_s peak_rss_MB note
 for n in $sizes; do
   n=$(printf '%.0f' "$n")
   for m in $methods; do
-    /usr/bin/time -v "$build/partial-spectrum" --N "$n" --near 15 --count 20 --method "$m" --quiet \
+    /usr/bin/time -v "$build/spectrum" --N "$n" --near 15 --count 20 --method "$m" --quiet \
       --output "$work/$m.csv" --dump-matrix "$work/matrix" 2> "$work/time.txt" > /dev/null || { echo "$m $n failed"; cat "$work/time.txt"; continue; }
     wall=$(grep -oP '"wall_time_s": \K[0-9.e+-]+' "$work/$m.json")
     rss=$(grep -oP 'Maximum resident set size \(kbytes\): \K[0-9]+' "$work/time.txt")

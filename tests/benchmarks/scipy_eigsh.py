@@ -2,7 +2,7 @@
 """SciPy's answer on the very same matrix, for the side-by-side benchmark (issue 3).
 
 usage: scipy_eigsh.py PREFIX KHZ K [OURS.csv]
-PREFIX.diag.f64 / PREFIX.offdiag.f64 are written by `partial-spectrum --dump-matrix PREFIX`.
+PREFIX.diag.f64 / PREFIX.offdiag.f64 are written by `spectrum --dump-matrix PREFIX`.
 Times eigsh(D, k=K, sigma=(2π·KHZ·1e3)², which='LM') — ARPACK shift-invert with a SuperLU
 factorization of D − σI — and prints one line of JSON. With OURS.csv it also checks that the
 frequencies agree (same K nearest in ω², which for these targets equals the K nearest in f).

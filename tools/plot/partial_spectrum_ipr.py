@@ -1,11 +1,11 @@
 #!/usr/bin/python3
 """IPR versus frequency of the K modes nearest a frequency, for growing chain length N (issue 3).
 
-Runs the partial-spectrum tool (later: `spectrum --near`) once per N on the same disorder and
+Runs `spectrum --near` once per N on the same disorder and
 seed, then plots IPR (log) against f − f0, one colour per N. Extended modes have IPR ~ 1/N and
 drop as N grows; localized ones keep an N-independent IPR.
 
-usage: /usr/bin/python3 tools/plot/partial_spectrum_ipr.py --tool build/partial-spectrum
+usage: /usr/bin/python3 tools/plot/partial_spectrum_ipr.py --tool build/spectrum
            [--disorder A] [--xi 0.5] [--q 0.5] [--near 15] [--count 40]
            [--sizes 1000,10000,100000,1000000] [--method bisect] [-o partial-spectrum-ipr.png]
 """
@@ -37,7 +37,7 @@ def run(tool, n, args, folder):
 
 def main():
     p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    p.add_argument("--tool", default="build/partial-spectrum")
+    p.add_argument("--tool", default="build/spectrum")
     p.add_argument("--disorder", default="A")
     p.add_argument("--xi", type=float, default=0.5)
     p.add_argument("--q", type=float, default=0.5)
