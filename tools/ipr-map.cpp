@@ -1,6 +1,7 @@
 // ipr-map: mean frequency and inverse participation ratio of every mode of disordered
 // chains, over a grid of size ratios ξ and probabilities q (the paper's IPR-map figure).
 #include <cstdio>
+#include <optional>
 #include <string>
 
 #include "common/metadata.hpp"
@@ -10,6 +11,7 @@
 #include "granular/io/csv_writer.hpp"
 #include "granular/io/range_syntax.hpp"
 #include "granular/linear/ipr_map.hpp"
+#include "granular/linear/partial_spectrum.hpp"
 
 int main(int argc, char** argv) {
   using namespace granular;
@@ -33,6 +35,15 @@ int main(int argc, char** argv) {
   app.add_option("--threads", threads, "worker threads (0 = all cores); results do not depend on it")->capture_default_str();
   app.add_option("--solver", solver, "mode solver: fast (eigenvalues + one twisted factorization per mode, no eigenvector matrix; IPRs as LAPACK's to 1e-10 outside tight eigenvalue clusters) | lapack (= lapack-stevd) | lapack-stevr | lapack-stemr | lapack-stevd | lapack-steqr")->capture_default_str();
   app.add_option("--output", output, "CSV file to write (the JSON goes beside it)")->capture_default_str();
+  std::optional<double> near;
+  std::optional<long> count;
+  std::optional<std::string> window;
+  std::string method = "lapack";
+  app.add_option("--near", near, "partial spectra: the --count modes nearest this frequency [kHz] of every chain");
+  app.add_option("--count", count, "partial spectra: how many modes nearest --near");
+  app.add_option("--window", window, "partial spectra: every mode in F1:F2 [kHz] of every chain");
+  app.add_option("--method", method, "partial spectra: lapack | bisect | arpack | slepc (arpack/slepc: one thread)")
+      ->capture_default_str();
   app.add_flag("--quiet", quiet, "no progress line on stderr");
 
   return tool::run(app, argc, argv, [&] {
@@ -53,6 +64,15 @@ int main(int argc, char** argv) {
     config.seed = static_cast<std::uint64_t>(seed);
     config.threads = threads;
     config.solver = solver;
+    if (near || count || window) {
+      config.selection = parse_selection(near, count, window);
+      validate(*config.selection, config.n);
+      config.partial_method = parse_partial_method(method);
+      if (config.partial_method == PartialMethod::slepc)
+        throw InvalidInput("--method slepc: ipr-map runs one chain per thread; use lapack, bisect or arpack");
+    } else if (app.count("--method") > 0) {
+      throw InvalidInput("--method: only with --near/--count or --window (the full map uses --solver)");
+    }
     validate(config);
     check_writable(output);
     const std::string json_path = tool::json_path_for(output);
@@ -64,10 +84,18 @@ int main(int argc, char** argv) {
     progress.finish();
 
     AtomicFile csv(output);
-    CsvWriter table(csv.stream(), {"disorder", "q", "xi", "mode", "freq_khz", "ipr"});
     const std::string name = to_string(config.disorder);
-    for (const auto& cell : cells)
-      for (std::size_t k = 0; k < config.n; ++k) table.row(name, cell.q, cell.xi, k + 1, cell.freq_khz[k], cell.ipr[k]);
+    if (config.selection) {  // modes differ between chains: one row per mode of each realization
+      CsvWriter table(csv.stream(), {"disorder", "q", "xi", "realization", "mode", "freq_khz", "ipr"});
+      for (const auto& cell : cells)
+        for (std::size_t j = 0; j < cell.mode.size(); ++j)
+          table.row(name, cell.q, cell.xi, static_cast<std::size_t>(cell.realization[j]), cell.mode[j],
+                    cell.freq_khz[j], cell.ipr[j]);
+    } else {
+      CsvWriter table(csv.stream(), {"disorder", "q", "xi", "mode", "freq_khz", "ipr"});
+      for (const auto& cell : cells)
+        for (std::size_t k = 0; k < config.n; ++k) table.row(name, cell.q, cell.xi, k + 1, cell.freq_khz[k], cell.ipr[k]);
+    }
     meta["parameters"] = {{"disorder", name},          {"xi", config.xi_values},
                           {"q", config.q_values},      {"N", config.n},
                           {"F0_N", config.precompression}, {"R1_m", config.r1},
@@ -75,6 +103,11 @@ int main(int argc, char** argv) {
                           {"walls", "flat, same material as the beads"},
                           {"realizations", config.realizations}, {"seed", config.seed},
                           {"threads", resolve_threads(config.threads)}, {"solver", config.solver}};
+    if (config.selection)
+      meta["selection"] = {{"method", method},
+                           {"near_khz", near ? nlohmann::json(*near) : nlohmann::json(nullptr)},
+                           {"count", count ? nlohmann::json(*count) : nlohmann::json(nullptr)},
+                           {"window_khz", window ? nlohmann::json(*window) : nlohmann::json(nullptr)}};
     meta["output"] = output;
     csv.commit();
     meta.write(json_path);

@@ -47,3 +47,37 @@ TEST(IprMapTool, OneHomogeneousRealizationEqualsTheSpectrumTool) {
 
 }  // namespace
 }  // namespace granular::testing
+
+namespace granular::testing {
+namespace {
+
+// ipr-map --near/--count: the modes of each realization, identical for 1 and 2 threads, and those
+// of realization r equal `spectrum --near` on realization r of the same seed.
+TEST(IprMapTool, PartialSelectionMatchesSpectrumPerRealization) {
+  const std::string dir = scratch_folder("ipr-partial");
+  const std::string job = "--disorder RDM1 --N 3000 --xi 0.5 --q 0.5 --realizations 3 --near 15 --count 4 --method bisect --quiet";
+  ASSERT_EQ(run_tool("ipr-map", job + " --threads 1 --output " + dir + "/t1.csv").exit_code, 0);
+  ASSERT_EQ(run_tool("ipr-map", job + " --threads 2 --output " + dir + "/t2.csv").exit_code, 0);
+  const std::string map = read_file(dir + "/t1.csv");
+  EXPECT_EQ(map, read_file(dir + "/t2.csv"));
+  EXPECT_EQ(map.substr(0, map.find('\n')), "disorder,q,xi,realization,mode,freq_khz,ipr");
+  EXPECT_EQ(std::count(map.begin(), map.end(), '\n'), 1 + 3 * 4);
+  ASSERT_EQ(run_tool("spectrum", "--disorder RDM1 --N 3000 --xi 0.5 --q 0.5 --realization 2 --near 15 --count 4 "
+                                 "--method bisect --output " + dir + "/s.csv").exit_code, 0);
+  std::istringstream rows(map), spectrum(read_file(dir + "/s.csv"));
+  std::string row, line;
+  std::getline(spectrum, line);
+  int matched = 0;
+  while (std::getline(rows, row))
+    if (row.rfind("RDM1,0.5,0.5,2,", 0) == 0 && std::getline(spectrum, line)) {
+      EXPECT_EQ(row.substr(std::string("RDM1,0.5,0.5,2,").size()), line);
+      ++matched;
+    }
+  EXPECT_EQ(matched, 4);
+  EXPECT_EQ(run_tool("ipr-map", "--N 50 --near 15 --count 3 --method slepc --output " + dir + "/x.csv").exit_code, 2);
+  EXPECT_EQ(run_tool("ipr-map", "--N 50 --method bisect --output " + dir + "/x.csv").exit_code, 2);
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace granular::testing
