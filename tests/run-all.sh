@@ -23,7 +23,11 @@ cmake --build build-sanitize -j"$jobs"
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:suppressions="$top/tests/sanitizer-suppressions.txt"
 export LSAN_OPTIONS=suppressions="$top/tests/lsan-suppressions.txt"
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
-ctest --test-dir build-sanitize -j"$jobs" --output-on-failure -LE long
+mpi_tests='MpiRanks|slepc_mpi'
+ctest --test-dir build-sanitize -j"$jobs" --output-on-failure -LE long -E "$mpi_tests"
+# Under mpirun, Open MPI's dlopen'ed plugins leak by design and their frames cannot be named in
+# a suppression (they are unloaded before LeakSanitizer reports): leak checks off, the rest on.
+ASAN_OPTIONS=detect_leaks=0:abort_on_error=1 ctest --test-dir build-sanitize -j"$jobs" --output-on-failure -R "$mpi_tests"
 
 echo "== pass 3: fuzzers"
 bash tests/fuzz/run-fuzzers.sh "${FUZZ_SECONDS:-60}"
