@@ -3,31 +3,48 @@
 #   1. the Release build with warnings as errors: every GoogleTest suite and tool test (ctest);
 #   2. the same suites built with AddressSanitizer + UndefinedBehaviorSanitizer (any report fails);
 #   3. each libFuzzer target for FUZZ_SECONDS (default 60) from its seed corpus.
-# Set GRANULAR_QUICK=1 to run pass 1 only.
+# Set GRANULAR_QUICK=1 to run pass 1 only. Ends with one line "summary: N passed, 0 failed".
 set -euo pipefail
 top=$(cd "$(dirname "$0")/.." && pwd)
 cd "$top"
 jobs=${JOBS:-2}
+logs=$(mktemp -d)
+passed=0
+
+count() {  # adds the passed tests of a ctest log to $passed
+  local line total failed
+  line=$(grep -E '[0-9]+% tests passed, [0-9]+ tests? failed out of [0-9]+' "$1" | tail -n 1)
+  total=$(sed -E 's/.*out of ([0-9]+).*/\1/' <<<"$line")
+  failed=$(sed -E 's/.* ([0-9]+) tests? failed.*/\1/' <<<"$line")
+  passed=$((passed + total - failed))
+}
 
 echo "== pass 1: Release build, all tests"
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DGRANULAR_WERROR=ON >/dev/null
 cmake --build build -j"$jobs"
-ctest --test-dir build -j"$jobs" --output-on-failure
-[ "${GRANULAR_QUICK:-0}" = 1 ] && exit 0
+ctest --test-dir build -j"$jobs" --output-on-failure | tee "$logs/pass1"
+count "$logs/pass1"
 
-echo "== pass 2: AddressSanitizer + UndefinedBehaviorSanitizer"
-cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=RelWithDebInfo -DGRANULAR_SANITIZE=ON -DGRANULAR_BENCHMARKS=OFF \
-  -DGRANULAR_NATIVE=OFF >/dev/null
-cmake --build build-sanitize -j"$jobs"
-# MPI's own allocations are not ours to fix; any other leak or error fails the run.
-export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:suppressions="$top/tests/sanitizer-suppressions.txt"
-export LSAN_OPTIONS=suppressions="$top/tests/lsan-suppressions.txt"
-export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
-mpi_tests='MpiRanks|slepc_mpi'
-ctest --test-dir build-sanitize -j"$jobs" --output-on-failure -LE long -E "$mpi_tests"
-# Under mpirun, Open MPI's dlopen'ed plugins leak by design and their frames cannot be named in
-# a suppression (they are unloaded before LeakSanitizer reports): leak checks off, the rest on.
-ASAN_OPTIONS=detect_leaks=0:abort_on_error=1 ctest --test-dir build-sanitize -j"$jobs" --output-on-failure -R "$mpi_tests"
+if [ "${GRANULAR_QUICK:-0}" != 1 ]; then
+  echo "== pass 2: AddressSanitizer + UndefinedBehaviorSanitizer"
+  cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=RelWithDebInfo -DGRANULAR_SANITIZE=ON -DGRANULAR_BENCHMARKS=OFF \
+    -DGRANULAR_NATIVE=OFF >/dev/null
+  cmake --build build-sanitize -j"$jobs"
+  export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:suppressions="$top/tests/sanitizer-suppressions.txt"
+  export LSAN_OPTIONS=suppressions="$top/tests/lsan-suppressions.txt"
+  export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+  mpi_tests='MpiRanks|slepc_mpi'
+  ctest --test-dir build-sanitize -j"$jobs" --output-on-failure -LE long -E "$mpi_tests" | tee "$logs/pass2"
+  count "$logs/pass2"
+  # Under mpirun, Open MPI's dlopen'ed plugins leak by design and their frames cannot be named in
+  # a suppression (they are unloaded before LeakSanitizer reports): leak checks off, the rest on.
+  ASAN_OPTIONS=detect_leaks=0:abort_on_error=1 \
+    ctest --test-dir build-sanitize -j"$jobs" --output-on-failure -R "$mpi_tests" | tee "$logs/pass2-mpi"
+  count "$logs/pass2-mpi"
 
-echo "== pass 3: fuzzers"
-bash tests/fuzz/run-fuzzers.sh "${FUZZ_SECONDS:-60}"
+  echo "== pass 3: fuzzers"
+  bash tests/fuzz/run-fuzzers.sh "${FUZZ_SECONDS:-60}" | tee "$logs/pass3"
+  passed=$((passed + $(grep -c 'no findings' "$logs/pass3")))
+fi
+rm -rf "$logs"
+echo "summary: $passed passed, 0 failed"
