@@ -198,8 +198,8 @@ TEST(TwistedModeIpr, AgreesWithStevrOnTheDefaultIprMapGrid) {
 
 // Two identical chains joined by a vanishing bond: every eigenvalue is exactly double, the
 // cluster case in its purest form. Any orthonormal basis {c a + s b, −s a + c b} of a pair (a, b
-// the mode on either copy) gives both vectors the IPR (c⁴ + s⁴) P, P the single copy's IPR, so
-// the two IPRs of a pair must be equal and lie in [P/2, P].
+// the mode on either copy) gives both vectors the IPR (c⁴ + s⁴) P, P the single copy's IPR, in
+// [P/2, P]; the solver's localized basis must reach P (dstein alone gave anything in between).
 TEST(TwistedModeIpr, ExactlyDegeneratePairsGetAnOrthonormalBasis) {
   const auto types = realization_configuration(Disorder::anderson, 0.8, 40, 3, 0);
   const Chain one = make_chain(radii_of(types, 4.76e-3, 0.3), 10.0);
@@ -224,8 +224,10 @@ TEST(TwistedModeIpr, ExactlyDegeneratePairsGetAnOrthonormalBasis) {
       EXPECT_NEAR(w2[2 * k] / half.stevr.omega2[k], 1.0, 1e-12) << "pair " << k;
       EXPECT_NEAR(w2[2 * k + 1] / half.stevr.omega2[k], 1.0, 1e-12) << "pair " << k;
       EXPECT_NEAR(p[2 * k], p[2 * k + 1], 1e-10) << "pair " << k << " coupling " << coupling;
-      EXPECT_GE(p[2 * k], 0.5 * big - 1e-10) << "pair " << k;
-      EXPECT_LE(p[2 * k], big + 1e-10) << "pair " << k;
+      // The cluster basis is rotated to the most localized one: each vector of a pair sits on
+      // one copy, so its IPR is (at least, if neighbouring pairs mix too) the single copy's.
+      EXPECT_GE(p[2 * k], big - 1e-10) << "pair " << k;
+      EXPECT_LE(p[2 * k], 1.0) << "pair " << k;
     }
   }
 }

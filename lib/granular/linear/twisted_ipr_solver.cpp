@@ -323,6 +323,43 @@ bool TwistedModeIpr::twisted_batch(const Slot& slot, const std::size_t* modes, s
   return true;
 }
 
+// dstein's basis of a cluster is arbitrary: a pair of modes degenerate to 1e-16 on two isolated
+// light beads comes out as their sum and difference (IPR ≈ P/2 each) as readily as one bead
+// each (IPR = P). Rotate it to the most localized orthonormal basis instead — Jacobi sweeps of
+// plane rotations, each maximizing Σ_i (x_i⁴ + y_i⁴) over the displacement components of the
+// pair (closed form: 4θ = atan2(2Σuv, Σ(u² − v²)), u = a² − b², v = 2ab). This basis is a
+// property of the subspace, not of the solver, and it is the one an infinitesimal physical
+// imperfection would select; LAPACK's drivers return it too for decoupled lumps.
+void TwistedModeIpr::localize(const Slot& slot, std::size_t count) {
+  const std::size_t n = slot.n;
+  const double* m = slot.mass.data();
+  for (int sweep = 0; sweep < 50; ++sweep) {
+    double largest = 0;
+    for (std::size_t j = 0; j + 1 < count; ++j)
+      for (std::size_t k = j + 1; k < count; ++k) {
+        double* a = stein_z_.data() + j * n;
+        double* b = stein_z_.data() + k * n;
+        double suv = 0, suu_vv = 0;
+        for (std::size_t i = 0; i < n; ++i) {
+          const double x = a[i] * m[i], y = b[i] * m[i];
+          const double u = x * x - y * y, v = 2 * x * y;
+          suv += u * v;
+          suu_vv += u * u - v * v;
+        }
+        const double theta = 0.25 * std::atan2(2 * suv, suu_vv);
+        if (!(std::fabs(theta) > 1e-14)) continue;
+        largest = std::fmax(largest, std::fabs(theta));
+        const double c = std::cos(theta), s = std::sin(theta);
+        for (std::size_t i = 0; i < n; ++i) {
+          const double x = a[i], y = b[i];
+          a[i] = c * x + s * y;
+          b[i] = -s * x + c * y;
+        }
+      }
+    if (!(largest > 1e-12)) break;
+  }
+}
+
 bool TwistedModeIpr::cluster(const Slot& slot, std::size_t first, std::size_t count, std::vector<double>& ipr) {
   const std::size_t n = slot.n;
   const int ni = static_cast<int>(n), m = static_cast<int>(count);
@@ -335,6 +372,7 @@ bool TwistedModeIpr::cluster(const Slot& slot, std::size_t first, std::size_t co
   dstein_(&ni, slot.d.data(), slot.e.data(), &m, stein_w_.data(), stein_iblock_.data(), stein_isplit_.data(),
           stein_z_.data(), &ni, stein_work_.data(), stein_iwork_.data(), stein_ifail_.data(), &info);
   if (info != 0) return false;
+  localize(slot, count);
   for (std::size_t j = 0; j < count; ++j) {
     const double* z = stein_z_.data() + j * n;
     Sums sums;

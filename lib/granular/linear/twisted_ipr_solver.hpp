@@ -34,9 +34,11 @@
 //     Twisted vectors at nearly equal shifts may coincide, so each cluster is instead handed
 //     to LAPACK dstein (inverse iteration from deterministic pseudo-random starts, with
 //     reorthogonalization against the other vectors of the cluster, identical shifts
-//     separated by 10ε|λ|), and the IPRs of its orthonormal vectors are used. Those IPRs are
-//     one valid choice; another solver's basis (dstevr's, Eigen's) can give other IPRs for
-//     the modes of a tight cluster. Outside clusters the result is the IPR of the unique mode.
+//     separated by 10ε|λ|); its orthonormal basis is then rotated to the most localized one
+//     (Jacobi sweeps maximizing Σ v⁴, see localize()), and the IPRs of those vectors are used.
+//     That basis belongs to the subspace, not to the solver, and is what any small physical
+//     imperfection selects; other solvers (dstevr, Eigen) may return less localized bases.
+//     Outside clusters the result is the IPR of the unique mode.
 //  4. Guards: the QL iteration or dstein failing (dstein info ≠ 0), a non-finite value, an IPR
 //     outside (0, 1], or a twisted residual |γ_r|/‖z‖ above `max_residual`·N·ε·max|λ| make
 //     the whole chain fall back to LapackModeIpr (dstevr with its own fallbacks). `info()`
@@ -99,6 +101,7 @@ class TwistedModeIpr final : public ModeIprSolver {
   bool solve_modes(const Slot& slot, std::vector<double>& ipr);
   bool twisted_batch(const Slot& slot, const std::size_t* modes, std::size_t count, std::vector<double>& ipr);
   bool cluster(const Slot& slot, std::size_t first, std::size_t count, std::vector<double>& ipr);
+  void localize(const Slot& slot, std::size_t count);
   void reserve(std::size_t n);
 
   TwistedIprConfig config_;
