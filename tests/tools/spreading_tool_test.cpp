@@ -25,22 +25,11 @@ struct ToolRun {
 };
 
 ToolRun run_spreading(const std::string& args, const fs::path& dir) {
-  const fs::path err = dir / "stderr.txt";
-  const std::string command = "cd '" + dir.string() + "' && '" + std::string(GRANULAR_BINARY_DIR) + "/spreading' " + args +
-                              " > /dev/null 2> '" + err.string() + "'";
-  const int status = std::system(command.c_str());
-  std::ifstream in(err);
-  std::stringstream text;
-  text << in.rdbuf();
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, text.str()};
+  const granular::testing::ToolResult r = granular::testing::run_tool_in(dir.string(), "spreading", args);
+  return {r.exit_code, r.err};
 }
 
-fs::path fresh_dir(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("granular-spreading-" + name + "-" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
+fs::path fresh_dir(const std::string& name) { return granular::testing::scratch_folder("spreading-" + name); }
 
 std::string first_line(const fs::path& file) {
   std::ifstream in(file);

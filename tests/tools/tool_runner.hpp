@@ -2,7 +2,10 @@
 // Runs a tool from the build tree as a user would, capturing exit code and stderr.
 #include <sys/wait.h>
 
+#include <unistd.h>
+
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -17,10 +20,12 @@ struct ToolResult {
 
 inline std::string tool_path(const std::string& name) { return std::string(GRANULAR_BINARY_DIR) + "/" + name; }
 
-/// Runs `tool args` with stderr captured (stdout discarded).
-inline ToolResult run_tool(const std::string& tool, const std::string& args) {
+/// Runs `tool args` with stderr captured (stdout discarded), in folder `dir` if one is given
+/// (so relative output paths land there).
+inline ToolResult run_tool_in(const std::string& dir, const std::string& tool, const std::string& args) {
   const std::string err_file = std::filesystem::temp_directory_path() / ("granular-err-" + std::to_string(::getpid()));
-  const std::string command = tool_path(tool) + " " + args + " >/dev/null 2>" + err_file;
+  const std::string cd = dir.empty() ? "" : "cd '" + dir + "' && ";
+  const std::string command = cd + "'" + tool_path(tool) + "' " + args + " >/dev/null 2>" + err_file;
   const int status = std::system(command.c_str());
   ToolResult r;
   r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
@@ -31,6 +36,8 @@ inline ToolResult run_tool(const std::string& tool, const std::string& args) {
   std::filesystem::remove(err_file);
   return r;
 }
+
+inline ToolResult run_tool(const std::string& tool, const std::string& args) { return run_tool_in("", tool, args); }
 
 inline std::string read_file(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
