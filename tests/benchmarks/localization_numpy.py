@@ -18,7 +18,8 @@ E, NU, RHO, R1 = 193e9, 0.3, 8027.17, 4.76e-3
 
 def stiffness(r_a, r_b, f0):
     """Linear stiffness of the Hertz bond between radii r_a and r_b (np.inf: a flat wall)."""
-    r_eff = np.where(np.isinf(r_a), r_b, np.where(np.isinf(r_b), r_a, r_a * r_b / (r_a + r_b)))
+    with np.errstate(invalid="ignore"):  # inf/inf at the walls, replaced by np.where
+        r_eff = np.where(np.isinf(r_a), r_b, np.where(np.isinf(r_b), r_a, r_a * r_b / (r_a + r_b)))
     a = 2 * E / (3 * (1 - NU**2)) * np.sqrt(r_eff)
     return 1.5 * a ** (2 / 3) * f0 ** (1 / 3)
 
