@@ -19,6 +19,17 @@ namespace {
 constexpr std::size_t piece_beads = 1024;    // beads read from the source at once (40 kB of coefficients)
 constexpr std::size_t renormalize_every = 8;  // growth per bead stays far below 1e38 for any sane frequency
 
+/// a·b + c with one rounding where the CPU has FMA (built with -march=native), else with two:
+/// std::fma without the instruction is a library call, ~50× slower. Either way every lane,
+/// vector or scalar, rounds alike within one build.
+inline double multiply_add(double a, double b, double c) {
+#ifdef __FMA__
+  return std::fma(a, b, c);
+#else
+  return a * b + c;  // -ffp-contract=off: not fused behind our back
+#endif
+}
+
 /// The recursion state of W frequencies, one per vector lane. u = u_{n+1}, up = u_n (after n
 /// beads); the true values are u · 2^exponent.
 template <std::size_t W>
@@ -63,8 +74,8 @@ void sweep(std::size_t count, const double* alpha, const double* beta, const dou
     for (; i < stop; ++i) {
       const double a = alpha[i], b = beta[i], g = gamma[i];
       for (std::size_t j = 0; j < W; ++j) {
-        const double c = std::fma(-b, s.w2[j], a);
-        const double next = std::fma(c, s.u[j], -(g * s.up[j]));
+        const double c = multiply_add(-b, s.w2[j], a);
+        const double next = multiply_add(c, s.u[j], -(g * s.up[j]));
         s.nodes[j] += static_cast<std::int64_t>((std::bit_cast<std::uint64_t>(next) ^ std::bit_cast<std::uint64_t>(s.u[j])) >> 63);
         s.up[j] = s.u[j];
         s.u[j] = next;
