@@ -12,7 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "granular/error.hpp"
-#include "granular/io/number_format.hpp"
+#include "granular/number_format.hpp"
 
 namespace granular {
 namespace {
@@ -154,7 +154,7 @@ std::vector<std::string> family(const std::string& base) {
 
 CheckpointRecords CheckpointLog::load(const std::string& base, const std::string& parameters) {
   const auto files = family(base);
-  if (files.empty()) throw InvalidInput("--resume: no checkpoint '" + base + "' to resume from");
+  if (files.empty()) throw InvalidInput("resume", ": no checkpoint '" + base + "' to resume from");
   CheckpointRecords all;
   for (const std::string& path : files) {
     std::ifstream in(path, std::ios::binary);
@@ -166,10 +166,10 @@ CheckpointRecords CheckpointLog::load(const std::string& base, const std::string
     try {
       records = parse_records(text.str(), &header);
     } catch (const InvalidInput&) {
-      throw InvalidInput("--resume: '" + path + "' is not a checkpoint of this toolkit");
+      throw InvalidInput("resume", ": '" + path + "' is not a checkpoint of this toolkit");
     }
     if (header != parameters)
-      throw InvalidInput("--resume: checkpoint '" + path + "' was made with different parameters: " +
+      throw InvalidInput("resume", ": checkpoint '" + path + "' was made with different parameters: " +
                          first_difference(header, parameters));
     all.merge(records);
   }
