@@ -53,7 +53,6 @@ inline const std::map<std::string, std::string>& flag_synonyms() {
   static const std::map<std::string, std::string> names{
       {"precompression", "--F0"}, {"n", "--N"},         {"r1", "--R1"},      {"near_khz", "--near"},
       {"time_step", "--dt"},      {"duration", "--T"},  {"realizations", "--realizations"},
-      {"bin_khz", "--bin-khz"},
   };
   return names;
 }
