@@ -12,10 +12,14 @@
 namespace granular {
 namespace {
 
-// The periodic diatomic chain 1 2 1 2 … (RDM2 at q = 1: every dimer "1 2") has no mode in the gap
-// (fb1, fb2) of the infinite chain — mode-number averaging of a disordered chain does put points
-// there; frequency bins cannot. Bins lying wholly inside the gap must be empty.
-TEST(IprMapBins, NoBinInsideTheDiatomicGapHoldsAMode) {
+// The periodic diatomic chain 1 2 1 2 … (RDM2 at q = 1: every dimer "1 2") has no bulk mode in
+// the gap (fb1, fb2) of the infinite chain; frequency bins show that, where mode-number averaging
+// of a disordered ensemble puts points in the gap. The finite chain between flat walls does have
+// a wall (surface) mode in the gap (found here at 12.5–12.75 kHz, IPR ≈ 0.46, for N = 200,
+// ξ = 0.5): physics, not a binning artefact. So: bins wholly inside the gap hold at most one
+// mode per wall per realization, and only strongly localized ones (IPR > 0.2; the band modes of
+// 200 beads have IPR ~ 1/100), every other gap bin is empty with IPR NaN.
+TEST(IprMapBins, NoBulkModeInTheDiatomicGap) {
   IprMapConfig c;
   c.disorder = Disorder::rdm2;
   c.q_values = {1.0};
@@ -28,17 +32,22 @@ TEST(IprMapBins, NoBinInsideTheDiatomicGapHoldsAMode) {
   const BandEdges e = band_edges(c.material, c.r1, 0.5, c.precompression);
   const double fb1 = e.fb1 / 1e3, fb2 = e.fb2 / 1e3;
   ASSERT_GT(fb2 - fb1, 4 * c.bin_khz);
-  std::size_t inside = 0, total = 0;
+  std::size_t inside = 0, total = 0, in_gap = 0;
   for (std::size_t b = 0; b < cells[0].bin_modes.size(); ++b) {
     total += cells[0].bin_modes[b];
     const double lo = static_cast<double>(b) * c.bin_khz, hi = lo + c.bin_khz;
     if (lo > fb1 && hi < fb2) {
       ++inside;
-      EXPECT_EQ(cells[0].bin_modes[b], 0u) << "bin [" << lo << ", " << hi << ") kHz in the gap (" << fb1 << ", " << fb2 << ")";
-      EXPECT_TRUE(std::isnan(cells[0].bin_ipr[b]));
+      in_gap += cells[0].bin_modes[b];
+      if (cells[0].bin_modes[b] == 0)
+        EXPECT_TRUE(std::isnan(cells[0].bin_ipr[b]));
+      else
+        EXPECT_GT(cells[0].bin_ipr[b], 0.2) << "bin [" << lo << ", " << hi << ") kHz in the gap (" << fb1 << ", " << fb2
+                                            << ") holds an extended mode";
     }
   }
-  EXPECT_GT(inside, 0u);
+  EXPECT_GT(inside, 50u);
+  EXPECT_LE(in_gap, 2 * c.realizations) << "more gap modes than walls";
   EXPECT_EQ(total, c.n * c.realizations) << "every mode of every realization is in one bin";
 }
 
