@@ -45,7 +45,7 @@ TEST(SpreadingTool, WritesEveryOutputWithTheContractColumns) {
                               "--spectrum spectrum.csv --spectrum-samples 100 --ic velocity --beta match",
                               dir);
   ASSERT_EQ(r.code, 0) << r.err;
-  EXPECT_EQ(first_line(dir / "out.csv"), "t,m2,ipr,energy_error");
+  EXPECT_EQ(first_line(dir / "out.csv"), "t,m2,ipr,energy_error,m2_centroid");
   EXPECT_EQ(first_line(dir / "final.csv"), "site,u,v,energy");
   EXPECT_EQ(first_line(dir / "out-profile.csv"), "site,energy,force");
   EXPECT_EQ(first_line(dir / "out-forces.csv"), "t,site,force");
@@ -111,7 +111,7 @@ TEST_P(SpreadingToolBadInput, ExitsWithCode2AndWritesNothing) {
 INSTANTIATE_TEST_SUITE_P(
     Cases, SpreadingToolBadInput,
     ::testing::Values(BadInput{"--dt 0", "--dt"}, BadInput{"--dt -1e-6", "--dt"}, BadInput{"--T 0", "--T"},
-                      BadInput{"--T -1", "--T"}, BadInput{"--T 1.5e-6 --dt 1e-6", "--T"}, BadInput{"--site 0", "--site"},
+                      BadInput{"--T -1", "--T"}, BadInput{"--T 1.5e-6 --dt 1e-6", "--T"}, BadInput{"--site -1", "--site"},
                       BadInput{"--site 102", "--site"}, BadInput{"--alpha 5e-3", "--alpha"},
                       BadInput{"--alpha 0", "--alpha"}, BadInput{"--disorder X", "disorder"}, BadInput{"--q 1.5", "q"},
                       BadInput{"--xi 0", "xi"}, BadInput{"--N 1", "--N"}, BadInput{"--F0 -1", "--F0"},
@@ -121,7 +121,10 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInput{"--realizations 2 --config x.txt", "--config"}, BadInput{"--resume", "--resume"},
                       BadInput{"--threads -2", "--threads"}, BadInput{"--forces-at 0", "--forces-at"},
                       BadInput{"--ic velocity --beta abc", "--beta"}, BadInput{"--ic push", "--ic"},
-                      BadInput{"--samples 1", "--samples"}, BadInput{"--samples 10 --fit 4e-5:1e-4", "--fit"}, BadInput{"--fit 2e-3:1e-3", "--fit"},
+                      BadInput{"--samples 1", "--samples"}, BadInput{"--fit 4e-5:1e-4 --fit-step 5e-5", "--fit"},
+                      BadInput{"--fit 4e-5:1e-4 --fit-step 1.5e-6", "--fit-step"}, BadInput{"--t-star -1", "--t-star"},
+                      BadInput{"--bootstrap 1", "--bootstrap"}, BadInput{"--centre middle", "--centre"},
+                      BadInput{"--spectrum s.csv --spectrum-of force", "--spectrum-of"}, BadInput{"--fit 2e-3:1e-3", "--fit"},
                       BadInput{"--active-window maybe", "--active-window"},
                       BadInput{"--spectrum out.csv", "two outputs"}),
     [](const auto& info) { return "case" + std::to_string(info.index); });
@@ -142,7 +145,7 @@ TEST(SpreadingToolEnsemble, ThreadInvariant) {
   EXPECT_EQ(read_file(dir + "/a-profile.csv"), read_file(dir + "/b-profile.csv"));
   EXPECT_FALSE(std::filesystem::exists(dir + "/a.checkpoint"));
   const std::string means = read_file(dir + "/a.csv");
-  EXPECT_EQ(means.substr(0, means.find('\n')), "t,m2,ipr,energy_error");
+  EXPECT_EQ(means.substr(0, means.find('\n')), "t,m2,ipr,energy_error,m2_centroid");
   std::filesystem::remove_all(dir);
 }
 
@@ -167,7 +170,7 @@ TEST(SpreadingToolGuards, EnergyErrorStopsOrWarns) {
   EXPECT_FALSE(std::filesystem::exists(dir + "/ens.csv"));
   r = run_tool("spreading", coarse + "--energy-guard warn --output " + dir + "/warn");
   EXPECT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_NE(r.err.find("passed --max-energy-error"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("passed the guard max_energy_error"), std::string::npos) << r.err;
   EXPECT_TRUE(std::filesystem::exists(dir + "/warn.csv"));
   std::filesystem::remove_all(dir);
 }
