@@ -55,10 +55,34 @@ TEST(SpreadingTool, WritesEveryOutputWithTheContractColumns) {
   const auto meta = nlohmann::json::parse(json);
   for (const char* key : {"gamma", "gamma_err", "eta", "eta_err", "power_law", "parameters", "version", "wall_time_s"})
     EXPECT_TRUE(meta.contains(key)) << key;
+  EXPECT_TRUE(meta["gamma"].is_number() && meta["eta"].is_number() && meta["power_law"].is_boolean());
+  EXPECT_TRUE(meta["gamma_real_err"].is_null()) << "one chain has no realization error";
   EXPECT_EQ(meta["parameters"]["site"], 101);
+  // The values used: the matched β of this chain and the α it matches; the spectrum's series named.
+  EXPECT_GT(meta["parameters"]["beta_m_s"].get<double>(), 0);
+  EXPECT_NE(meta["parameters"]["beta_m_s"].get<double>(), 8e-3);
+  EXPECT_EQ(meta["parameters"]["alpha_m"], 1e-7);
+  EXPECT_EQ(meta["spectrum"]["of"], "displacement");
   EXPECT_NEAR(meta["run"]["max_energy_error"].get<double>(), 0, 1e-4);
   // N = 201 is too short for 2.5 ms at F0 = 10 N (the front runs Ω T/2 ≈ 142 > 100 beads each way): the tool warns.
   EXPECT_NE(r.err.find("reached the walls"), std::string::npos) << r.err;
+  fs::remove_all(dir);
+}
+
+// The velocity kick's JSON holds the β used (the paper's 8e-3 by default) and no α; the spectrum of
+// the velocities is named as such.
+TEST(SpreadingTool, JsonHoldsTheKickUsedAndTheSpectrumSeries) {
+  const fs::path dir = fresh_dir("kick");
+  const ToolRun r = run_spreading("--disorder h --N 101 --F0 0 --T 2e-4 --fit 1e-4:2e-4 --ic velocity --output out "
+                                  "--spectrum g.csv --spectrum-samples 64 --spectrum-of velocity --quiet", dir);
+  ASSERT_EQ(r.code, 0) << r.err;
+  std::ifstream json(dir / "out.json");
+  const auto meta = nlohmann::json::parse(json);
+  EXPECT_EQ(meta["parameters"]["beta_m_s"], 8e-3);
+  EXPECT_TRUE(meta["parameters"]["alpha_m"].is_null());
+  EXPECT_EQ(meta["parameters"]["m2_centre"], "site");
+  EXPECT_EQ(meta["spectrum"]["of"], "velocity");
+  EXPECT_EQ(first_line(dir / "g.csv"), "freq_khz,g");
   fs::remove_all(dir);
 }
 
