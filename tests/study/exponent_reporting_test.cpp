@@ -78,8 +78,9 @@ TEST(PaperComparison, ReadsTableIFromData) {
 TEST(PaperComparison, ZScoresByHand) {
   // Ours 1.800 ± 0.010 (sub-windows) ± 0.020 (bootstrap, R = 125); paper 1.763 ± 0.012 (R = 500).
   // The paper's realization error is estimated as ours scaled to R = 500: 0.020 √(125/500) = 0.010.
-  // Δ = 0.037; z_w = 0.037 / √(0.010² + 0.012²) = 2.3688…; z = 0.037 / √(0.010² + 0.012² + 0.020² + 0.010²)
-  //   = 0.037 / √0.000744 = 1.3565….
+  // The paper's rounding to 3 decimals adds p² = 0.0005²/3 = 8.33e-8.
+  // Δ = 0.037; z_w = 0.037 / √(0.010² + 0.012² + p²) = 2.3684…;
+  // z = 0.037 / √(0.010² + 0.012² + p² + 0.020² + 0.010²) = 0.037 / √0.00074408 = 1.3564….
   ExponentCell cell;
   cell.definition.kick = Kick::velocity;
   cell.definition.precompression = 0;
@@ -97,10 +98,21 @@ TEST(PaperComparison, ZScoresByHand) {
   const PaperCell paper{Kick::velocity, 0, Disorder::anderson, 1.763, 0.012, false};
   const auto rows = compare_with_paper({cell}, {paper, PaperCell{Kick::velocity, 10, Disorder::anderson, 1.457, 0.011, false}});
   ASSERT_EQ(rows.size(), 1u);  // the 10 N cell is not in our run
-  EXPECT_NEAR(rows[0].site.z_window, 0.037 / std::sqrt(0.0001 + 0.000144), 1e-9);
-  EXPECT_NEAR(rows[0].site.z, 0.037 / std::sqrt(0.000744), 1e-9);
+  const double p2 = 0.0005 * 0.0005 / 3;
+  EXPECT_NEAR(rows[0].site.z_window, 0.037 / std::sqrt(0.0001 + 0.000144 + p2), 1e-9);
+  EXPECT_NEAR(rows[0].site.z, 0.037 / std::sqrt(0.000744 + p2), 1e-9);
   EXPECT_TRUE(rows[0].centroid.starred);
   EXPECT_NEAR(rows[0].centroid.z, 0.0, 1e-12);
+  // A homogeneous cell: no ± anywhere, only the paper's rounding: 2.0003 vs 2.000 is z = 0.0003/p ≈ 1.04.
+  ExponentCell h = cell;
+  h.definition.disorder = Disorder::homogeneous;
+  h.summary.exponents->gamma_site = ExponentReport{};
+  h.summary.exponents->gamma_site.fit = {2.0003, 0.0, {}};
+  h.summary.exponents->gamma_site.verdict.power_law = true;
+  h.summary.realizations = 1;
+  const auto homogeneous = compare_with_paper({h}, {PaperCell{Kick::velocity, 0, Disorder::homogeneous, 2.0, 0.0, false}});
+  ASSERT_EQ(homogeneous.size(), 1u);
+  EXPECT_NEAR(homogeneous[0].site.z, 0.0003 / std::sqrt(p2), 1e-6);
   std::ostringstream csv;
   write_comparison_csv(csv, rows);
   EXPECT_EQ(csv.str().substr(0, csv.str().find('\n')),

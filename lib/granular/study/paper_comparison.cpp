@@ -38,7 +38,7 @@ CentreComparison compare(const PaperCell& p, const ExponentReport& r, std::size_
   c.realization_error = std::isnan(r.shown_realization_error()) ? 0 : r.shown_realization_error();
   c.starred = r.starred();
   const double delta = c.value - p.gamma;
-  const double window = c.window_error * c.window_error + p.error * p.error;
+  const double window = c.window_error * c.window_error + p.error * p.error + paper_rounding * paper_rounding;
   const double paper_real = c.realization_error * std::sqrt(static_cast<double>(realizations) / paper_realizations);
   c.z_window = z_score(delta, window);
   c.z = z_score(delta, window + c.realization_error * c.realization_error + paper_real * paper_real);

@@ -5,11 +5,13 @@
 //
 // For each cell and each m̃2 centre, Δ = ours − paper (the values each table shows: a fit, or the
 // mean L_d where starred) and two z-scores:
-//   z_window = Δ / sqrt(w_ours² + w_paper²)            (the paper's ±: sub-window spreads only)
-//   z        = Δ / sqrt(w_ours² + w_paper² + r_ours² + r_paper²)
+//   z_window = Δ / sqrt(w_ours² + w_paper² + p²)             (the paper's ±: sub-window spreads only)
+//   z        = Δ / sqrt(w_ours² + w_paper² + p² + r_ours² + r_paper²)
 // where r is the realization error: ours from the bootstrap, the paper's estimated as ours scaled
 // to its 500 realizations, r_paper = r_ours sqrt(R_ours / 500) (same ensemble, same estimator: the
-// paper's average carries the same realization noise, which its ± leaves out).
+// paper's average carries the same realization noise, which its ± leaves out); and p = 0.0005/√3,
+// the paper's printing to three decimals (a uniform ±0.0005), which alone is left for the
+// homogeneous chains (no ± printed, one deterministic run on our side).
 #include <iosfwd>
 #include <string>
 #include <vector>
@@ -33,6 +35,8 @@ std::vector<PaperCell> read_paper_table(const std::string& path);
 
 /// Realizations per case in the paper.
 inline constexpr double paper_realizations = 500;
+/// Standard deviation of the paper's rounding to three decimals, 0.0005/√3.
+inline constexpr double paper_rounding = 0.0005 / 1.7320508075688772;
 
 struct CentreComparison {
   double value = 0, window_error = 0, realization_error = 0;
