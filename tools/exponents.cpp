@@ -53,7 +53,11 @@ int main(int argc, char** argv) {
     const MpiContext& mpi = MpiContext::instance();
     ExponentTableConfig config;
     config.chains.clear();
-    for (const auto& name : parse_word_list(chains, "--chains")) config.chains.push_back(parse_disorder(name));
+    for (const auto& name : parse_word_list(chains, "--chains")) try {
+        config.chains.push_back(parse_disorder(name));
+      } catch (const InvalidInput&) {
+        throw InvalidInput("--chains '" + name + "': expected h, A, RDM1 or RDM2");
+      }
     config.precompressions = parse_number_list(f0_text, "--F0");
     config.kicks.clear();
     for (const auto& name : parse_word_list(kicks, "--ic")) config.kicks.push_back(parse_kick(name));

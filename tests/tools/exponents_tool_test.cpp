@@ -108,6 +108,23 @@ TEST(ExponentsTool, RefusesACheckpointOfOtherParameters) {
   std::filesystem::remove_all(dir);
 }
 
+// Errors name the flag typed; the paper's table missing is an I/O error; nothing is written.
+TEST(ExponentsTool, BadInputNamesTheFlag) {
+  const std::string dir = scratch_folder("exp-bad");
+  const std::string base = "--N 51 --T 1e-4 --fit 2e-5:1e-4 --realizations 2 --F0 1 --quiet --output " + dir + "/x ";
+  for (auto [args, flag] : {std::pair{"--chains RDM3", "--chains"}, {"--chains A --fit-step 3e-6 --dt 2e-6", "--fit-step"},
+                            {"--chains A --centre middle", "--centre"}, {"--chains A --t-star nan", "--t-star"},
+                            {"--chains A --bootstrap 0", "--bootstrap"}, {"--chains A --ic both", "--ic"}}) {
+    const ToolResult r = run_tool("exponents", base + args);
+    EXPECT_EQ(r.exit_code, 2) << args << ": " << r.err;
+    EXPECT_NE(r.err.find(flag), std::string::npos) << args << ": " << r.err;
+  }
+  const ToolResult missing = run_tool("exponents", base + "--chains A --compare-paper --paper-table /nonexistent/t.csv");
+  EXPECT_EQ(missing.exit_code, 1) << missing.err;
+  EXPECT_FALSE(std::filesystem::exists(dir + "/x.csv"));
+  std::filesystem::remove_all(dir);
+}
+
 // The columns of the exponents CSV: γ about both centres, shown value, fit and mean L_d, both
 // error sources; JSON holding the values used.
 TEST(ExponentsTool, CsvCarriesBothCentresAndBothErrorSources) {

@@ -28,12 +28,14 @@ const std::vector<Tool>& tools() {
       {"spreading", {{"--N", "51"}, {"--T", "1e-4"}, {"--fit", "2e-5:1e-4"}, {"--samples", "20"}},
        {"--xi", "--q", "--N", "--F0", "--R1", "--seed", "--realization", "--alpha", "--T", "--dt", "--samples",
         "--force-samples", "--map-samples", "--map-stride", "--spectrum-samples", "--window-threshold",
-        "--reference-max-step", "--max-energy-error", "--kappa", "--realizations", "--threads", "--site"}},
+        "--reference-max-step", "--max-energy-error", "--kappa", "--realizations", "--threads", "--site",
+        "--fit-step", "--t-star", "--bootstrap"}},
       {"exponents",
        {{"--N", "51"}, {"--T", "1e-4"}, {"--fit", "2e-5:1e-4"}, {"--samples", "20"}, {"--realizations", "2"},
         {"--chains", "A"}, {"--F0", "1"}, {"--ic", "displacement"}},
        {"--N", "--site", "--xi", "--q", "--T", "--dt", "--alpha", "--realizations", "--seed", "--samples", "--kappa",
-        "--profile-realizations", "--threads", "--F0", "--beta"}},
+        "--profile-realizations", "--threads", "--F0", "--beta", "--fit-step", "--t-star", "--bootstrap",
+        "--window-threshold", "--reference-max-step", "--max-energy-error"}},
   };
   return all;
 }
