@@ -49,7 +49,7 @@ int main(int argc, char** argv) {
   app.add_option("--map-stride", map_stride, "beads summed into one map column")->capture_default_str();
   app.add_option("--spectrum", spectrum_file, "CSV of the spectral density: freq_khz,g");
   app.add_option("--spectrum-samples", spectrum_samples, "uniform samples of the series for the spectral density")->capture_default_str();
-  app.add_option("--spectrum-of", spectrum_of, "displacement (the paper's g) | velocity (no 0-Hz peak from a permanent step)")->capture_default_str();
+  app.add_option("--spectrum-of", spectrum_of, "displacement (the paper's g) | velocity (a permanent step in u adds a flat floor, not a 1/nu^2 tail)")->capture_default_str();
   app.add_flag("--quiet", quiet, "no warnings or progress line on stderr");
 
   return tool::run(app, argc, argv, [&] {
