@@ -8,7 +8,7 @@
 #include "common/metadata.hpp"
 #include "common/tool_main.hpp"
 #include "granular/ensemble/checkpoint_log.hpp"
-#include "granular/ensemble/mpi_context.hpp"
+#include "granular/parallel/mpi_context.hpp"
 #include "granular/io/atomic_file.hpp"
 #include "granular/study/paper_comparison.hpp"
 
@@ -53,11 +53,7 @@ int main(int argc, char** argv) {
     const MpiContext& mpi = MpiContext::instance();
     ExponentTableConfig config;
     config.chains.clear();
-    for (const auto& name : parse_word_list(chains, "--chains")) try {
-        config.chains.push_back(parse_disorder(name));
-      } catch (const InvalidInput&) {
-        throw InvalidInput("--chains '" + name + "': expected h, A, RDM1 or RDM2");
-      }
+    for (const auto& name : parse_word_list(chains, "--chains")) config.chains.push_back(parse_disorder(name));
     config.precompressions = parse_number_list(f0_text, "--F0");
     config.kicks.clear();
     for (const auto& name : parse_word_list(kicks, "--ic")) config.kicks.push_back(parse_kick(name));
@@ -77,11 +73,9 @@ int main(int argc, char** argv) {
     base.realizations = static_cast<std::size_t>(realizations);
     std::vector<PaperCell> paper;
     std::vector<std::string> paths{output + ".csv", output + "-curves.csv", output + "-profiles.csv", output + ".json"};
-    tool::with_flag_names([&] {
-      tool::apply(dynamics, base);
-      for (const auto& c : exponent_cases(config)) validate(c);
-      if (compare) paper = read_paper_table(paper_table);
-    });
+    tool::apply(dynamics, base);
+    for (const auto& c : exponent_cases(config)) validate(c);
+    if (compare) paper = read_paper_table(paper_table);
     if (compare) paths.push_back(output + "-paper.csv");
     for (const auto& p : paths) check_writable(p);
     ExponentRunOptions run;
@@ -123,5 +117,5 @@ int main(int argc, char** argv) {
     if (comparison) comparison->commit();
     meta.write(paths[3]);
     for (std::size_t i = 0; i < cells.size(); ++i) CheckpointLog::remove_all(run.checkpoint_prefix + "." + std::to_string(i));
-  });
+  }, {{"disorder", "--chains"}});  // the library's `disorder` is --chains here
 }

@@ -11,7 +11,7 @@
 #include "common/output_paths.hpp"
 #include "common/tool_main.hpp"
 #include "granular/ensemble/checkpoint_log.hpp"
-#include "granular/ensemble/mpi_context.hpp"
+#include "granular/parallel/mpi_context.hpp"
 #include "granular/io/hdf5_file.hpp"
 #include "granular/study/spreading_files.hpp"
 
@@ -69,21 +69,19 @@ int main(int argc, char** argv) {
     c.realizations = static_cast<std::size_t>(realizations);
     c.profile_realizations = profile ? c.realizations : 0;
     SpreadingConfig& d = c.dynamics;
-    tool::with_flag_names([&] {
-      tool::apply(dynamics, c);
-      c.fit = c.fit_end <= d.duration * (1 + 1e-12);  // a window beyond T: no exponents, a note
-      for (long s : forces_at.empty() ? std::vector<long>{} : parse_integer_list(forces_at, "--forces-at")) {
-        if (s < 1 || static_cast<std::size_t>(s) > c.n)
-          throw InvalidInput("--forces-at " + std::to_string(s) + ": outside the chain of " + std::to_string(c.n) + " beads");
-        d.force_sites.push_back(static_cast<std::size_t>(s - 1));
-      }
-      d.force_samples = static_cast<std::size_t>(force_samples);
-      d.map_samples = energy_map.empty() ? 0 : static_cast<std::size_t>(map_samples);
-      d.map_stride = static_cast<std::size_t>(map_stride);
-      d.spectrum_samples = spectrum_file.empty() ? 0 : static_cast<std::size_t>(spectrum_samples);
-      d.spectrum_source = parse_spectrum_source(spectrum_of);
-      validate(c);
-    });
+    tool::apply(dynamics, c);
+    c.fit = c.fit_end <= d.duration * (1 + 1e-12);  // a window beyond T: no exponents, a note
+    for (long s : forces_at.empty() ? std::vector<long>{} : parse_integer_list(forces_at, "--forces-at")) {
+      if (s < 1 || static_cast<std::size_t>(s) > c.n)
+        throw InvalidInput("--forces-at " + std::to_string(s) + ": outside the chain of " + std::to_string(c.n) + " beads");
+      d.force_sites.push_back(static_cast<std::size_t>(s - 1));
+    }
+    d.force_samples = static_cast<std::size_t>(force_samples);
+    d.map_samples = energy_map.empty() ? 0 : static_cast<std::size_t>(map_samples);
+    d.map_stride = static_cast<std::size_t>(map_stride);
+    d.spectrum_samples = spectrum_file.empty() ? 0 : static_cast<std::size_t>(spectrum_samples);
+    d.spectrum_source = parse_spectrum_source(spectrum_of);
+    validate(c);
     const std::string csv_path = output + ".csv", json_path = output + ".json", sem_path = output + "-sem.csv";
     const std::string profile_path = profile ? output + "-profile.csv" : "", checkpoint = output + ".checkpoint";
     const std::string forces_path = d.force_sites.empty() ? "" : output + "-forces.csv";
@@ -145,5 +143,5 @@ int main(int argc, char** argv) {
     for (auto& f : files) f->commit();
     meta.write(json_path);
     if (ensemble) CheckpointLog::remove_all(checkpoint);
-  });
+  }, {{"spectrum_source", "--spectrum-of"}});
 }

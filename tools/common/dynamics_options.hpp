@@ -2,17 +2,15 @@
 // The options of a kicked-chain run, shared by `spreading` and `exponents` so that the same case
 // gives the same numbers from both: one default for every physical choice (the paper's: α = 1e-7 m,
 // β = 8e-3 m/s, the kick at the centre bead, m̃2 about the excited site, fits on 4–10 ms sampled
-// every 10 µs, t* = 4 ms, κ = 0.1), one --fit and one --beta parser, and the names of these flags
-// put into the library's messages, which name parameters.
-#include <functional>
+// every 10 µs, t* = 4 ms, κ = 0.1), one --fit and one --beta parser. The library's messages name
+// parameters (`fit_step`, `t_star`); tool::run tells them as these flags (`--fit-step`, `--t-star`).
 #include <string>
-#include <utility>
 
 #include <CLI/CLI.hpp>
 
 #include "chain_options.hpp"
 #include "granular/error.hpp"
-#include "granular/io/number_format.hpp"
+#include "granular/number_format.hpp"
 #include "granular/dynamics/scheme.hpp"
 #include "granular/io/range_syntax.hpp"
 #include "granular/study/transport_study.hpp"
@@ -103,22 +101,6 @@ inline void apply(const ChainOptions& o, std::size_t beads, TransportCase& c) {
   c.precompression = o.f0;
   c.r1 = o.r1;
   c.seed = static_cast<std::uint64_t>(o.seed);
-}
-
-/// Runs `body`; an InvalidInput whose message starts with a library parameter name is rethrown
-/// with the flag that sets it.
-inline void with_flag_names(const std::function<void()>& body) {
-  static const std::pair<const char*, const char*> names[] = {
-      {"fit_step", "--fit-step"}, {"t_star", "--t-star"}, {"bootstrap resamples", "--bootstrap"},
-      {"dense grid", "--fit"}, {"site", "--site"}, {"centre", "--centre"}, {"spectrum source", "--spectrum-of"}};
-  try {
-    body();
-  } catch (const InvalidInput& e) {
-    const std::string message = e.what();
-    for (const auto& [parameter, flag] : names)
-      if (message.rfind(parameter, 0) == 0) throw InvalidInput(flag + message.substr(std::string(parameter).size()));
-    throw;
-  }
 }
 
 }  // namespace granular::tool

@@ -49,7 +49,7 @@ double unowned_wall_energy(const ForceLaw& law, std::span<const double> u) {
 SpreadCentre parse_spread_centre(const std::string& name) {
   if (name == "site") return SpreadCentre::site;
   if (name == "centroid") return SpreadCentre::centroid;
-  throw InvalidInput("centre '" + name + "': expected site or centroid");
+  throw InvalidInput("centre", " '" + name + "': expected site or centroid");
 }
 
 std::string to_string(SpreadCentre centre) { return centre == SpreadCentre::site ? "site" : "centroid"; }

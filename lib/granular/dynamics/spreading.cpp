@@ -10,20 +10,20 @@
 #include "granular/dynamics/observables.hpp"
 #include "granular/dynamics/spectral_density.hpp"
 #include "granular/error.hpp"
-#include "granular/io/number_format.hpp"
+#include "granular/number_format.hpp"
 
 namespace granular {
 
 Sampling parse_sampling(const std::string& name) {
   if (name == "log") return Sampling::logarithmic;
   if (name == "uniform") return Sampling::uniform;
-  throw InvalidInput("--sampling '" + name + "': expected log or uniform");
+  throw InvalidInput("sampling", " '" + name + "': expected log or uniform");
 }
 
 SpectrumSource parse_spectrum_source(const std::string& name) {
   if (name == "displacement") return SpectrumSource::displacement;
   if (name == "velocity") return SpectrumSource::velocity;
-  throw InvalidInput("spectrum source '" + name + "': expected displacement or velocity");
+  throw InvalidInput("spectrum_source", " '" + name + "': expected displacement or velocity");
 }
 
 std::string to_string(SpectrumSource source) {
@@ -40,38 +40,38 @@ std::uint64_t total_steps(const SpreadingConfig& c) {
 
 void validate(const SpreadingConfig& c, std::size_t beads) {
   if (!std::isfinite(c.time_step) || !(c.time_step > 0))
-    throw InvalidInput("--dt " + format_number(c.time_step) + ": the time step must be finite and > 0");
+    throw InvalidInput("time_step", " " + format_number(c.time_step) + ": the time step must be finite and > 0");
   if (!std::isfinite(c.duration) || !(c.duration > 0))
-    throw InvalidInput("--T " + format_number(c.duration) + ": the duration must be finite and > 0");
+    throw InvalidInput("duration", " " + format_number(c.duration) + ": the duration must be finite and > 0");
   const double ratio = c.duration / c.time_step;
-  if (ratio > 1e12) throw InvalidInput("--T / --dt: more than 1e12 steps");
+  if (ratio > 1e12) throw InvalidInput("duration", " " + format_number(c.duration) + " s / time_step " + format_number(c.time_step) + " s: more than 1e12 steps");
   if (ratio < 1 || std::abs(ratio - std::round(ratio)) > 1e-6 * ratio)
-    throw InvalidInput("--T " + format_number(c.duration) + ": must be a whole number (>= 1) of steps --dt " +
+    throw InvalidInput("duration", " " + format_number(c.duration) + ": must be a whole number (>= 1) of time steps " +
                        format_number(c.time_step));
-  if (c.samples < 2) throw InvalidInput("--samples: at least 2");
+  if (c.samples < 2) throw InvalidInput("samples", ": at least 2");
   if (c.integrator != "reference") parse_scheme(c.integrator);
   for (std::size_t s : c.force_sites)
     if (s >= beads)
-      throw InvalidInput("--forces-at " + std::to_string(s + 1) + ": outside the chain of " + std::to_string(beads) +
+      throw InvalidInput("forces_at", " " + std::to_string(s + 1) + ": outside the chain of " + std::to_string(beads) +
                          " beads (counting from 1)");
-  if (!c.force_sites.empty() && c.force_samples < 2) throw InvalidInput("--force-samples: at least 2");
-  if (c.map_samples == 1) throw InvalidInput("--map-samples: 0 (none) or at least 2");
-  if (c.map_stride < 1) throw InvalidInput("--map-stride: at least 1");
-  if (c.spectrum_samples == 1) throw InvalidInput("--spectrum-samples: 0 (none) or at least 2");
-  if (c.spectrum_samples * beads > (std::size_t{1} << 31)) throw InvalidInput("--spectrum-samples: too many for N");
-  if (!(c.window.threshold >= 0)) throw InvalidInput("--window-threshold: must be >= 0");
+  if (!c.force_sites.empty() && c.force_samples < 2) throw InvalidInput("force_samples", ": at least 2");
+  if (c.map_samples == 1) throw InvalidInput("map_samples", ": 0 (none) or at least 2");
+  if (c.map_stride < 1) throw InvalidInput("map_stride", ": at least 1");
+  if (c.spectrum_samples == 1) throw InvalidInput("spectrum_samples", ": 0 (none) or at least 2");
+  if (c.spectrum_samples * beads > (std::size_t{1} << 31)) throw InvalidInput("spectrum_samples", ": too many for N");
+  if (!(c.window.threshold >= 0)) throw InvalidInput("window_threshold", ": must be >= 0");
   if (c.site != static_cast<std::size_t>(-1) && c.site >= beads)
-    throw InvalidInput("site " + std::to_string(c.site + 1) + ": outside the chain of " + std::to_string(beads) + " beads");
+    throw InvalidInput("site", " " + std::to_string(c.site + 1) + ": outside the chain of " + std::to_string(beads) + " beads");
   if (!c.dense.empty()) {
     const DenseGrid& g = c.dense;
     if (!std::isfinite(g.begin) || !std::isfinite(g.end) || g.begin < 0 || g.end > c.duration * (1 + 1e-12))
-      throw InvalidInput("dense grid [" + format_number(g.begin) + ", " + format_number(g.end) +
+      throw InvalidInput("fit", " [" + format_number(g.begin) + ", " + format_number(g.end) +
                          "] s: must lie inside [0, T = " + format_number(c.duration) + "]");
     const double stride = g.step / c.time_step;
     if (!std::isfinite(stride) || stride < 1 - 1e-9 || std::abs(stride - std::round(stride)) > 1e-6 * stride)
-      throw InvalidInput("fit_step " + format_number(g.step) + " s: must be a whole number (>= 1) of time steps " +
+      throw InvalidInput("fit_step", " " + format_number(g.step) + " s: must be a whole number (>= 1) of time steps " +
                          format_number(c.time_step) + " s");
-    if ((g.end - g.begin) / g.step > 1e8) throw InvalidInput("fit_step " + format_number(g.step) + " s: more than 1e8 samples");
+    if ((g.end - g.begin) / g.step > 1e8) throw InvalidInput("fit_step", " " + format_number(g.step) + " s: more than 1e8 samples");
   }
 }
 

@@ -8,7 +8,7 @@
 
 #include "granular/error.hpp"
 #include "granular/io/csv_writer.hpp"
-#include "granular/io/number_format.hpp"
+#include "granular/number_format.hpp"
 
 namespace granular {
 namespace {

@@ -6,9 +6,9 @@
 #include "granular/dynamics/force_law.hpp"
 #include "granular/dynamics/initial_conditions.hpp"
 #include "granular/ensemble/ensemble_runner.hpp"
-#include "granular/ensemble/mpi_context.hpp"
+#include "granular/parallel/mpi_context.hpp"
 #include "granular/error.hpp"
-#include "granular/io/number_format.hpp"
+#include "granular/number_format.hpp"
 #include "granular/model/chain.hpp"
 
 namespace granular {
@@ -16,7 +16,7 @@ namespace granular {
 Kick parse_kick(const std::string& name) {
   if (name == "displacement") return Kick::displacement;
   if (name == "velocity") return Kick::velocity;
-  throw InvalidInput("--ic '" + name + "': expected displacement or velocity");
+  throw InvalidInput("ic", " '" + name + "': expected displacement or velocity");
 }
 
 std::string to_string(Kick kick) { return kick == Kick::displacement ? "displacement" : "velocity"; }
@@ -24,28 +24,28 @@ std::string to_string(Kick kick) { return kick == Kick::displacement ? "displace
 void validate(const TransportCase& c) {
   validate_probability(c.q);
   validate_size_ratio(c.xi);
-  if (c.n < 2) throw InvalidInput("--N " + std::to_string(c.n) + ": a chain needs at least 2 beads");
+  if (c.n < 2) throw InvalidInput("N", " " + std::to_string(c.n) + ": a chain needs at least 2 beads");
   if (!std::isfinite(c.precompression) || c.precompression < 0)
-    throw InvalidInput("--F0 " + format_number(c.precompression) + ": must be finite and >= 0");
-  if (c.site >= c.n) throw InvalidInput("--site " + std::to_string(c.site + 1) + ": outside the chain of " + std::to_string(c.n) + " beads");
-  if (c.realizations < 1) throw InvalidInput("--realizations: must be >= 1");
+    throw InvalidInput("F0", " " + format_number(c.precompression) + ": must be finite and >= 0");
+  if (c.site >= c.n) throw InvalidInput("site", " " + std::to_string(c.site + 1) + ": outside the chain of " + std::to_string(c.n) + " beads");
+  if (c.realizations < 1) throw InvalidInput("realizations", ": must be >= 1");
   if (c.fit && (!(c.fit_begin > 0) || !(c.fit_end > c.fit_begin) || !std::isfinite(c.fit_end)))
-    throw InvalidInput("--fit: need 0 < start < stop");
+    throw InvalidInput("fit", ": need 0 < start < stop");
   if (c.fit && c.fit_end > c.dynamics.duration * (1 + 1e-12))
-    throw InvalidInput("--fit " + format_number(c.fit_begin) + ":" + format_number(c.fit_end) + ": reaches beyond --T " +
+    throw InvalidInput("fit", " " + format_number(c.fit_begin) + ":" + format_number(c.fit_end) + ": reaches beyond the duration T = " +
                        format_number(c.dynamics.duration));
   if (!(c.criterion.kappa > 0) || !std::isfinite(c.criterion.kappa))
-    throw InvalidInput("--kappa " + format_number(c.criterion.kappa) + ": must be finite and > 0");
+    throw InvalidInput("kappa", " " + format_number(c.criterion.kappa) + ": must be finite and > 0");
   if (!(c.criterion.t_start >= 0) || !std::isfinite(c.criterion.t_start))
-    throw InvalidInput("t_star " + format_number(c.criterion.t_start) + " s: must be finite and >= 0");
-  if (c.fit && c.bootstrap.resamples < 2) throw InvalidInput("bootstrap resamples: need at least 2");
+    throw InvalidInput("t_star", " " + format_number(c.criterion.t_start) + " s: must be finite and >= 0");
+  if (c.fit && c.bootstrap.resamples < 2) throw InvalidInput("bootstrap", ": need at least 2 resamples");
   const bool uses_alpha = c.kick == Kick::displacement || c.match_beta;
-  if (uses_alpha && (!std::isfinite(c.alpha) || c.alpha == 0)) throw InvalidInput("--alpha " + format_number(c.alpha) + ": must be finite and non-zero [m]");
+  if (uses_alpha && (!std::isfinite(c.alpha) || c.alpha == 0)) throw InvalidInput("alpha", " " + format_number(c.alpha) + ": must be finite and non-zero [m]");
   if (c.kick == Kick::velocity && !c.match_beta && (!std::isfinite(c.beta) || c.beta == 0))
-    throw InvalidInput("--beta " + format_number(c.beta) + ": must be finite and non-zero [m/s], or 'match'");
-  if (c.n > 100000000) throw InvalidInput("--N " + std::to_string(c.n) + ": more than 1e8 beads");
+    throw InvalidInput("beta", " " + format_number(c.beta) + ": must be finite and non-zero [m/s], or 'match'");
+  if (c.n > 100000000) throw InvalidInput("N", " " + std::to_string(c.n) + ": more than 1e8 beads");
   if (c.fit && !(std::isfinite(c.fit_step) && c.fit_step > 0))
-    throw InvalidInput("fit_step " + format_number(c.fit_step) + " s: must be finite and > 0");
+    throw InvalidInput("fit_step", " " + format_number(c.fit_step) + " s: must be finite and > 0");
   const SpreadingConfig config = spreading_config(c);
   validate(config, c.n);
   if (c.fit) {  // a fit that cannot work is bad input, found before the run rather than after it
@@ -54,7 +54,7 @@ void validate(const TransportCase& c) {
     try {
       windowed_exponent(t, t, c.fit_begin, c.fit_end);
     } catch (const InvalidInput& e) {
-      throw InvalidInput("--fit " + format_number(c.fit_begin) + ":" + format_number(c.fit_end) +
+      throw InvalidInput("fit", " " + format_number(c.fit_begin) + ":" + format_number(c.fit_end) +
                          ": too few samples in a sub-window (" + e.what() + ")");
     }
   }

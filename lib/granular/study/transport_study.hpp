@@ -21,7 +21,7 @@
 #include "granular/analysis/summary_statistics.hpp"
 #include "granular/dynamics/observables.hpp"
 #include "granular/dynamics/spreading.hpp"
-#include "granular/ensemble/progress_meter.hpp"
+#include "granular/ensemble/run_options.hpp"
 #include "granular/model/disorder.hpp"
 #include "granular/model/material.hpp"
 
@@ -96,12 +96,8 @@ struct TransportSummary {
   std::size_t realizations = 0;
 };
 
-struct StudyRunOptions {
-  int threads = 0;
-  std::string checkpoint;   ///< empty: none
-  bool resume = false;
-  ProgressMeter* progress = nullptr;
-};
+/// Threads, checkpoint, resume, progress: the library's one run-options type.
+using StudyRunOptions = RunOptions;
 
 /// Runs (or resumes) the ensemble; under mpirun only rank 0 gets a filled summary.
 /// Bit-identical for any thread count, rank count or interruption. Memory: the R records of
