@@ -111,11 +111,11 @@ int main(int argc, char** argv) {
       write_comparison_csv(comparison->stream(), rows);
       meta["paper_table"] = paper_table;
     }
-    csv.commit();
-    curves.commit();
-    profiles.commit();
-    if (comparison) comparison->commit();
-    meta.write(paths[3]);
+    meta["output"] = paths[0];
+    if (comparison)  // the JSON first, then the CSVs: never a CSV without its metadata
+      meta.write(paths[3], {&csv, &curves, &profiles, &*comparison});
+    else
+      meta.write(paths[3], {&csv, &curves, &profiles});
     for (std::size_t i = 0; i < cells.size(); ++i) CheckpointLog::remove_all(run.checkpoint_prefix + "." + std::to_string(i));
   }, {{"disorder", "--chains"}});  // the library's `disorder` is --chains here
 }

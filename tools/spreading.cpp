@@ -140,8 +140,8 @@ int main(int argc, char** argv) {
                      {"integration_s", r.seconds}, {"window_final", {r.window_begin + 1, r.window_end}},
                      {"wall_energy", r.wall_energy}, {"reached_walls", r.reached_walls}};
     meta["output"] = csv_path;
+    meta.write(json_path);  // the JSON first, then the CSVs: never a CSV without its metadata
     for (auto& f : files) f->commit();
-    meta.write(json_path);
     if (ensemble) CheckpointLog::remove_all(checkpoint);
   }, {{"spectrum_source", "--spectrum-of"}});
 }

@@ -29,6 +29,7 @@ void validate(const TransportCase& c) {
     throw InvalidInput("F0", " " + format_number(c.precompression) + ": must be finite and >= 0");
   if (c.site >= c.n) throw InvalidInput("site", " " + std::to_string(c.site + 1) + ": outside the chain of " + std::to_string(c.n) + " beads");
   if (c.realizations < 1) throw InvalidInput("realizations", ": must be >= 1");
+  validate(c.dynamics, c.n);  // T and τ first: a fit window is judged against them
   if (c.fit && (!(c.fit_begin > 0) || !(c.fit_end > c.fit_begin) || !std::isfinite(c.fit_end)))
     throw InvalidInput("fit", ": need 0 < start < stop");
   if (c.fit && c.fit_end > c.dynamics.duration * (1 + 1e-12))
