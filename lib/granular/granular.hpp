@@ -33,6 +33,8 @@
 #include "granular/ensemble/parallel_realizations.hpp"
 #include "granular/ensemble/run_options.hpp"
 
+#include "granular/analysis/bootstrap.hpp"
+#include "granular/analysis/exponent_report.hpp"
 #include "granular/analysis/log_derivative.hpp"
 #include "granular/analysis/power_law_fit.hpp"
 #include "granular/analysis/summary_statistics.hpp"
@@ -41,5 +43,7 @@
 #include "granular/study/exponent_table.hpp"
 #include "granular/study/ipr_map.hpp"
 #include "granular/study/localization_scan.hpp"
+#include "granular/study/paper_comparison.hpp"
 #include "granular/study/spectrum_file.hpp"
+#include "granular/study/spreading_files.hpp"
 #include "granular/study/transport_study.hpp"
