@@ -42,21 +42,19 @@ set(GRANULAR_PC_CFLAGS "-DEIGEN_MAX_ALIGN_BYTES=${GRANULAR_EIGEN_ALIGN} -DEIGEN_
 if(NOT RANDOM123_INCLUDE_DIR IN_LIST CMAKE_CXX_IMPLICIT_INCLUDE_DIRECTORIES)
   string(APPEND GRANULAR_PC_CFLAGS " -I${RANDOM123_INCLUDE_DIR}")
 endif()
-# A static libgranular needs its private dependencies at the final link (a shared one has them).
-set(GRANULAR_PC_REQUIRES_PRIVATE "")
+# A static libgranular needs its private dependencies at the final link (a shared one has them):
+# the exact libraries this build linked, by path (PETSc's own .pc asks for an HDF5 that Debian
+# keeps elsewhere, so Requires.private would not link).
 set(GRANULAR_PC_LIBS_PRIVATE "")
 if(GRANULAR_LIBRARY_TYPE STREQUAL "STATIC_LIBRARY")
-  set(requires "fftw3 arpack lapack")
-  if(GRANULAR_WITH_SLEPC)
-    string(APPEND requires " slepc PETSc")
-  endif()
   set(libs "${OpenMP_CXX_FLAGS}")
-  foreach(lib ${HDF5_C_LIBRARIES} ${MPI_CXX_LIBRARIES} ${MPI_C_LIBRARIES})
+  foreach(lib ${SLEPC_LINK_LIBRARIES} ${PETSC_LINK_LIBRARIES} ${ARPACK_LINK_LIBRARIES} ${FFTW3_LINK_LIBRARIES}
+              ${LAPACK_LIBRARIES} ${HDF5_C_LIBRARIES} ${MPI_CXX_LIBRARIES} ${MPI_C_LIBRARIES})
     string(APPEND libs " ${lib}")
   endforeach()
-  set(GRANULAR_PC_REQUIRES_PRIVATE "Requires.private: ${requires}\n")
   set(GRANULAR_PC_LIBS_PRIVATE "Libs.private: ${libs}\n")
 endif()
 file(RELATIVE_PATH GRANULAR_PC_TO_PREFIX ${CMAKE_INSTALL_PREFIX}/${CMAKE_INSTALL_LIBDIR}/pkgconfig ${CMAKE_INSTALL_PREFIX})
+string(REGEX REPLACE "/$" "" GRANULAR_PC_TO_PREFIX "${GRANULAR_PC_TO_PREFIX}")
 configure_file(${CMAKE_CURRENT_LIST_DIR}/granular.pc.in ${CMAKE_BINARY_DIR}/granular.pc @ONLY)
 install(FILES ${CMAKE_BINARY_DIR}/granular.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig)
