@@ -7,7 +7,7 @@
 #include "common/metadata.hpp"
 #include "common/tool_main.hpp"
 #include "granular/ensemble/checkpoint_log.hpp"
-#include "granular/ensemble/mpi_context.hpp"
+#include "granular/parallel/mpi_context.hpp"
 #include "granular/io/atomic_file.hpp"
 #include "granular/io/csv_writer.hpp"
 #include "granular/io/range_syntax.hpp"

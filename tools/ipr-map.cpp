@@ -1,17 +1,15 @@
 // ipr-map: mean frequency and inverse participation ratio of every mode of disordered
 // chains, over a grid of size ratios ξ and probabilities q (the paper's IPR-map figure).
-#include <cstdio>
-#include <optional>
 #include <string>
 
 #include "common/metadata.hpp"
+#include "common/spectrum_options.hpp"
 #include "common/tool_main.hpp"
 #include "granular/ensemble/parallel_realizations.hpp"
 #include "granular/io/atomic_file.hpp"
 #include "granular/io/csv_writer.hpp"
 #include "granular/io/range_syntax.hpp"
-#include "granular/linear/ipr_map.hpp"
-#include "granular/linear/partial_spectrum.hpp"
+#include "granular/study/ipr_map.hpp"
 
 int main(int argc, char** argv) {
   using namespace granular;
@@ -20,58 +18,45 @@ int main(int argc, char** argv) {
                "ipr-map"};
   tool::describe_common(app);
   std::string disorder = "A", xi_text = "0.1:1", q_text = "0.2,0.5,0.8", output = "ipr-map.csv", solver = "fast";
-  long long n = 100, realizations = 100, seed = 1;
-  double f0 = 10, r1 = 4.76e-3;
-  int threads = 0;
+  std::string method = "lapack";
+  IprMapConfig config;
+  RunOptions run;
+  tool::SelectionOptions selection;
   bool quiet = false;
   app.add_option("--disorder", disorder, "h | A | RDM1 | RDM2 (homogeneous, Anderson, random dimer 1/2)")->capture_default_str();
   app.add_option("--xi", xi_text, "size ratios R2/R1 in (0,1]: start:stop[:step] (step 0.01) or a,b,c")->capture_default_str();
   app.add_option("--q", q_text, "probabilities of type 1 (or of dimer 11 / 12) in [0,1]: list or range")->capture_default_str();
-  app.add_option("--N", n, "beads per chain (>= 2)")->capture_default_str();
-  app.add_option("--F0", f0, "static precompression [N], > 0")->capture_default_str();
-  app.add_option("--R1", r1, "radius of type-1 beads [m]; type 2 has xi*R1 (steel beads, steel walls)")->capture_default_str();
-  app.add_option("--realizations", realizations, "chains averaged per (q, xi)")->capture_default_str();
-  app.add_option("--seed", seed, "random seed; realization r of seed s is always the same chain")->capture_default_str();
-  app.add_option("--threads", threads, "worker threads (0 = all cores); results do not depend on it")->capture_default_str();
+  tool::add_integer(app, "--N", config.n, "beads per chain (>= 2)");
+  app.add_option("--F0", config.precompression, "static precompression [N], > 0")->capture_default_str();
+  app.add_option("--R1", config.r1, "radius of type-1 beads [m]; type 2 has xi*R1 (steel beads, steel walls)")->capture_default_str();
+  tool::add_integer(app, "--realizations", config.realizations, "chains averaged per (q, xi)");
+  tool::add_integer(app, "--seed", config.seed, "random seed; realization r of seed s is always the same chain");
+  tool::add_integer(app, "--threads", run.threads, "worker threads (0 = all cores); results do not depend on it");
   app.add_option("--solver", solver, "mode solver: fast (eigenvalues + one twisted factorization per mode, no eigenvector matrix; IPRs as LAPACK's to 1e-10 outside tight eigenvalue clusters) | lapack (= lapack-stevd) | lapack-stevr | lapack-stemr | lapack-stevd | lapack-steqr")->capture_default_str();
   app.add_option("--output", output, "CSV file to write (the JSON goes beside it)")->capture_default_str();
-  std::optional<double> near;
-  std::optional<long> count;
-  std::optional<std::string> window;
-  std::string method = "lapack";
-  app.add_option("--near", near, "partial spectra: the --count modes nearest this frequency [kHz] of every chain");
-  app.add_option("--count", count, "partial spectra: how many modes nearest --near");
-  app.add_option("--window", window, "partial spectra: every mode in F1:F2 [kHz] of every chain");
+  tool::add_selection_options(app, selection, "partial spectra: ");
   app.add_option("--method", method, "partial spectra: lapack | bisect | arpack | slepc (arpack/slepc: one thread)")
       ->capture_default_str();
   app.add_flag("--quiet", quiet, "no progress line on stderr");
 
   return tool::run(app, argc, argv, [&] {
     tool::Metadata meta("ipr-map", argc, argv);
-    IprMapConfig config;
     config.disorder = parse_disorder(disorder);
     config.xi_values = parse_number_list(xi_text, "--xi", 0.01);
     config.q_values = parse_number_list(q_text, "--q", 0.1);
-    if (n < 2) throw InvalidInput("--N " + std::to_string(n) + ": a chain needs at least 2 beads");
-    if (n > 100000000) throw InvalidInput("--N " + std::to_string(n) + ": more than 1e8 beads");
-    if (realizations < 1) throw InvalidInput("--realizations " + std::to_string(realizations) + ": must be >= 1");
-    if (seed < 0) throw InvalidInput("--seed " + std::to_string(seed) + ": must be >= 0");
-    if (threads < 0) throw InvalidInput("--threads " + std::to_string(threads) + ": must be >= 0");
-    config.n = static_cast<std::size_t>(n);
-    config.precompression = f0;
-    config.r1 = r1;
-    config.realizations = static_cast<std::size_t>(realizations);
-    config.seed = static_cast<std::uint64_t>(seed);
-    config.threads = threads;
-    config.solver = solver;
-    if (near || count || window) {
-      config.selection = parse_selection(near, count, window);
-      validate(*config.selection, config.n);
-      config.partial_method = parse_partial_method(method);
-      if (config.partial_method == PartialMethod::slepc)
-        throw InvalidInput("--method slepc: ipr-map runs one chain per thread; use lapack, bisect or arpack");
+    if (config.n > 100000000) throw InvalidInput("N", " " + std::to_string(config.n) + ": more than 1e8 beads");
+    if (run.threads < 0) throw InvalidInput("threads", " " + std::to_string(run.threads) + ": must be >= 0");
+    if (solver != "fast" && solver != "lapack" && !solver.starts_with("lapack-"))
+      throw InvalidInput("--solver", " '" + solver + "': expected fast, lapack or lapack-<stevr|stemr|stevd|steqr>");
+    config.spectrum.method = solver == "fast" ? SpectrumMethod::fast : SpectrumMethod::lapack;
+    if (solver.starts_with("lapack-")) config.spectrum.driver = parse_lapack_driver(solver.substr(7));
+    config.selection = tool::parse_selection(selection);
+    if (selection.given()) {
+      config.spectrum.method = parse_spectrum_method(method);
+      if (config.spectrum.method == SpectrumMethod::fast)
+        throw InvalidInput("--method", " fast: computes every mode; use lapack, bisect or arpack with --near/--window");
     } else if (app.count("--method") > 0) {
-      throw InvalidInput("--method: only with --near/--count or --window (the full map uses --solver)");
+      throw InvalidInput("--method", ": only with --near/--count or --window (the full map uses --solver)");
     }
     validate(config);
     check_writable(output);
@@ -80,12 +65,13 @@ int main(int argc, char** argv) {
 
     ProgressMeter progress(config.q_values.size() * config.xi_values.size() * config.realizations, "ipr-map",
                            quiet ? 0 : -1);
-    const auto cells = compute_ipr_map(config, &progress);
+    run.progress = &progress;
+    const auto cells = compute_ipr_map(config, run);
     progress.finish();
 
     AtomicFile csv(output);
     const std::string name = to_string(config.disorder);
-    if (config.selection) {  // modes differ between chains: one row per mode of each realization
+    if (selection.given()) {  // modes differ between chains: one row per mode of each realization
       CsvWriter table(csv.stream(), {"disorder", "q", "xi", "realization", "mode", "freq_khz", "ipr"});
       for (const auto& cell : cells)
         for (std::size_t j = 0; j < cell.mode.size(); ++j)
@@ -102,14 +88,13 @@ int main(int argc, char** argv) {
                           {"material", {{"E_Pa", config.material.young}, {"nu", config.material.poisson}, {"rho_kg_m3", config.material.density}}},
                           {"walls", "flat, same material as the beads"},
                           {"realizations", config.realizations}, {"seed", config.seed},
-                          {"threads", resolve_threads(config.threads)}, {"solver", config.solver}};
-    if (config.selection)
+                          {"threads", resolve_threads(run.threads)}, {"solver", solver}};
+    if (selection.given())
       meta["selection"] = {{"method", method},
-                           {"near_khz", near ? nlohmann::json(*near) : nlohmann::json(nullptr)},
-                           {"count", count ? nlohmann::json(*count) : nlohmann::json(nullptr)},
-                           {"window_khz", window ? nlohmann::json(*window) : nlohmann::json(nullptr)}};
+                           {"near_khz", selection.near ? nlohmann::json(*selection.near) : nlohmann::json(nullptr)},
+                           {"count", selection.count ? nlohmann::json(*selection.count) : nlohmann::json(nullptr)},
+                           {"window_khz", selection.window ? nlohmann::json(*selection.window) : nlohmann::json(nullptr)}};
     meta["output"] = output;
-    csv.commit();
-    meta.write(json_path);
+    meta.write(json_path, {&csv});
   });
 }

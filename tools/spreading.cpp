@@ -16,10 +16,10 @@
 #include "granular/io/atomic_file.hpp"
 #include "granular/io/csv_writer.hpp"
 #include "granular/io/hdf5_file.hpp"
-#include "granular/io/number_format.hpp"
+#include "granular/number_format.hpp"
 #include "granular/io/range_syntax.hpp"
 #include "granular/ensemble/checkpoint_log.hpp"
-#include "granular/ensemble/mpi_context.hpp"
+#include "granular/parallel/mpi_context.hpp"
 #include "granular/study/transport_study.hpp"
 
 int main(int argc, char** argv) {

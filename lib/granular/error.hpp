@@ -1,15 +1,29 @@
 #pragma once
-// The exceptions the library throws. Tools map them to exit codes:
-// InvalidInput -> 2 (the user asked for something impossible), IoError -> 1,
-// NumericalError -> 3 (a solver failed; never silently returns garbage).
+// The exceptions the library throws. Front ends map them: the command-line tools to exit codes
+// (InvalidInput -> 2: the user asked for something impossible; IoError -> 1; NumericalError -> 3:
+// a solver failed, never silently returns garbage), the Python module to ValueError, OSError and
+// granular.NumericalError.
 #include <stdexcept>
 #include <string>
 
 namespace granular {
 
-/// A parameter or input file is invalid; the message names it, its value and the rule.
+/// A parameter or input file is invalid. The message names the parameter in the library's
+/// vocabulary (`time_step`, `N`, `q`), its value and the rule; front ends translate the name into
+/// their own (`--dt`, the keyword `dt=`), which is why it is also kept apart.
 struct InvalidInput : std::invalid_argument {
-  using std::invalid_argument::invalid_argument;
+  /// `parameter` is the name, `problem` the rest, starting with its own separator (" 0: must be
+  /// > 0", ": no values"); what() is their concatenation.
+  InvalidInput(const std::string& parameter, const std::string& problem)
+      : std::invalid_argument(parameter + problem), parameter_(parameter), problem_(problem) {}
+  /// A message that names no single parameter (a file's content, a combination).
+  explicit InvalidInput(const std::string& message) : std::invalid_argument(message), problem_(message) {}
+
+  const std::string& parameter() const { return parameter_; }  ///< empty when none
+  const std::string& problem() const { return problem_; }
+
+ private:
+  std::string parameter_, problem_;
 };
 
 /// Reading or writing a file failed.

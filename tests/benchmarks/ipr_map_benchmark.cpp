@@ -16,10 +16,10 @@
 #include <vector>
 
 #include "granular/linear/dynamical_matrix.hpp"
-#include "granular/linear/lapack.hpp"
+#include "granular/linear/detail/lapack.hpp"
 #include "granular/linear/mode_ipr.hpp"
-#include "granular/linear/mode_ipr_solver.hpp"
-#include "granular/linear/twisted_ipr_solver.hpp"
+#include "granular/linear/detail/mode_ipr_solver.hpp"
+#include "granular/linear/detail/twisted_ipr_solver.hpp"
 #include "granular/model/chain.hpp"
 #include "granular/model/disorder.hpp"
 

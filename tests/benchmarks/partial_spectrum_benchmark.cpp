@@ -9,39 +9,31 @@
 
 #include "granular/linear/dynamical_matrix.hpp"
 #include "granular/linear/mode_ipr.hpp"
-#include "granular/linear/partial_spectrum.hpp"
-#include "granular/linear/shift_invert_eigensolvers.hpp"
-#include "granular/linear/sturm_bisection.hpp"
+#include "granular/linear/spectrum.hpp"
+#include "granular/linear/detail/shift_invert_eigensolvers.hpp"
+#include "granular/linear/detail/sturm_bisection.hpp"
 #include "granular/linear/tridiagonal_operator.hpp"
-#include "granular/model/chain.hpp"
-#include "granular/model/disorder.hpp"
+#include "granular/model/named_chains.hpp"
 
 namespace {
 
 using namespace granular;
 
 struct Problem {
-  SymTridiagonal t;
-  std::vector<double> s;
+  DynamicalMatrix t;
 };
 
 const Problem& problem(std::size_t n) {
   static std::map<std::size_t, std::unique_ptr<Problem>> cache;
   auto& p = cache[n];
-  if (!p) {
-    const auto types = realization_configuration(Disorder::anderson, 0.5, n, 1, 0);
-    const Chain chain = make_chain(radii_of(types, 4.76e-3, 0.5), 10.0);
-    p = std::make_unique<Problem>(Problem{dynamical_matrix(chain), inverse_sqrt_mass(chain.inverse_mass)});
-  }
+  if (!p) p = std::make_unique<Problem>(Problem{dynamical_matrix(anderson({.N = n, .q = 0.5, .xi = 0.5, .seed = 1}))});
   return *p;
 }
 
-void run(benchmark::State& state, PartialMethod method) {
+void run(benchmark::State& state, SpectrumMethod method) {
   const auto& p = problem(static_cast<std::size_t>(state.range(0)));
-  PartialSpectrumConfig config;
-  config.method = method;
   for (auto _ : state) {
-    auto r = partial_spectrum(p.t, p.s, SpectrumSelection::nearest(15.0, 20), config);
+    auto r = spectrum(p.t, nearest(15.0, 20), {.method = method});
     benchmark::DoNotOptimize(r.ipr.data());
   }
   state.counters["ns_per_bead"] =
@@ -49,10 +41,10 @@ void run(benchmark::State& state, PartialMethod method) {
                                                                    benchmark::Counter::kInvert);
 }
 
-void BM_partial_bisect(benchmark::State& s) { run(s, PartialMethod::bisect); }
-void BM_partial_lapack(benchmark::State& s) { run(s, PartialMethod::lapack); }
-void BM_partial_arpack(benchmark::State& s) { run(s, PartialMethod::arpack); }
-void BM_partial_slepc(benchmark::State& s) { run(s, PartialMethod::slepc); }
+void BM_partial_bisect(benchmark::State& s) { run(s, SpectrumMethod::bisect); }
+void BM_partial_lapack(benchmark::State& s) { run(s, SpectrumMethod::lapack); }
+void BM_partial_arpack(benchmark::State& s) { run(s, SpectrumMethod::arpack); }
+void BM_partial_slepc(benchmark::State& s) { run(s, SpectrumMethod::slepc); }
 
 // The building blocks, per sweep over the matrix.
 void BM_count_below_1_shift(benchmark::State& state) {

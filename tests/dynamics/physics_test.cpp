@@ -13,7 +13,7 @@
 #include "granular/dynamics/spreading.hpp"
 #include "granular/error.hpp"
 #include "granular/linear/dynamical_matrix.hpp"
-#include "granular/linear/lapack_eigensolver.hpp"
+#include "granular/linear/detail/lapack_eigensolver.hpp"
 
 namespace granular {
 namespace {

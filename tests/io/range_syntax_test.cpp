@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "granular/error.hpp"
-#include "granular/io/number_format.hpp"
+#include "granular/number_format.hpp"
 
 namespace granular {
 namespace {

@@ -22,12 +22,12 @@
 #include "granular/error.hpp"
 #include "granular/linear/band_edges.hpp"
 #include "granular/linear/dynamical_matrix.hpp"
-#include "granular/linear/lapack_eigensolver.hpp"
+#include "granular/linear/detail/lapack_eigensolver.hpp"
 #include "granular/linear/mode_ipr.hpp"
-#include "granular/linear/partial_spectrum.hpp"
-#include "granular/linear/shift_invert_eigensolvers.hpp"
-#include "granular/model/chain.hpp"
-#include "granular/model/disorder.hpp"
+#include "granular/linear/detail/shift_invert_eigensolvers.hpp"
+#include "granular/linear/spectrum.hpp"
+#include "granular/model/named_chains.hpp"
+#include "granular/study/spectrum_file.hpp"
 
 namespace granular {
 namespace {
@@ -41,20 +41,13 @@ bool separated(double relative_gap, double r1, double r2) {
   return kSafety * std::max({r1, r2, 1e-16}) / relative_gap <= kIprTol;
 }
 
-struct TestChain {
-  SymTridiagonal t;
-  std::vector<double> s;  // m^{-1/2}
-};
-
-TestChain make(Disorder disorder, std::size_t n, std::uint64_t seed = 1) {
-  const auto types = realization_configuration(disorder, 0.5, n, seed, 0);
-  const Chain chain = make_chain(radii_of(types, 4.76e-3, 0.5), 10.0);
-  return {dynamical_matrix(chain), inverse_sqrt_mass(chain.inverse_mass)};
+DynamicalMatrix make(Disorder disorder, std::size_t n, std::uint64_t seed = 1) {
+  return dynamical_matrix(random_chain(disorder, {.N = n, .q = 0.5, .xi = 0.5, .seed = seed}));
 }
 
-std::vector<PartialMethod> all_methods() {
-  std::vector<PartialMethod> m{PartialMethod::lapack, PartialMethod::bisect, PartialMethod::arpack};
-  if (have_slepc()) m.push_back(PartialMethod::slepc);
+std::vector<SpectrumMethod> all_methods() {
+  std::vector<SpectrumMethod> m{SpectrumMethod::lapack, SpectrumMethod::bisect, SpectrumMethod::arpack};
+  if (have_slepc()) m.push_back(SpectrumMethod::slepc);
   return m;
 }
 
@@ -72,7 +65,7 @@ std::vector<double> relative_gaps(const Eigen::VectorXd& full, double norm) {
 }
 
 /// Checks `got` against a reference on the same modes; returns how many IPRs were compared.
-int expect_same_modes(const PartialSpectrum& ref, const PartialSpectrum& got, const std::vector<double>& gaps,
+int expect_same_modes(const Spectrum& ref, const Spectrum& got, const std::vector<double>& gaps,
                       const std::string& what) {
   EXPECT_EQ(got.mode, ref.mode) << what;
   if (got.mode != ref.mode) return 0;
@@ -87,7 +80,7 @@ int expect_same_modes(const PartialSpectrum& ref, const PartialSpectrum& got, co
   return compared;
 }
 
-void expect_invariants(const PartialSpectrum& p, const SymTridiagonal& t, const std::string& what) {
+void expect_invariants(const Spectrum& p, const SymTridiagonal& t, const std::string& what) {
   for (std::size_t j = 0; j < p.size(); ++j) {
     EXPECT_LE(p.residual[j], 1e-13) << what << " residual of mode " << p.mode[j];
     EXPECT_GT(p.ipr[j], 0.0);
@@ -111,24 +104,24 @@ class MethodsAgree : public ::testing::TestWithParam<Case> {};
 
 TEST_P(MethodsAgree, OnTwentyModesOfATenThousandBeadChain) {
   const Case c = GetParam();
-  const TestChain chain = make(c.disorder, 10000);
-  const auto full = LapackEigensolver().solve(chain.t, false).values;  // for the gaps only
-  const auto gaps = relative_gaps(full, chain.t.max_abs());
-  const auto selection = SpectrumSelection::nearest(c.near_khz, 20);
-  PartialSpectrumConfig config;
-  config.method = PartialMethod::lapack;
-  const PartialSpectrum ref = partial_spectrum(chain.t, chain.s, selection, config);
+  const DynamicalMatrix chain = make(c.disorder, 10000);
+  const auto full = LapackEigensolver().solve(chain, false).values;  // for the gaps only
+  const auto gaps = relative_gaps(full, chain.max_abs());
+  const auto selection = nearest(c.near_khz, 20);
+  SpectrumConfig config;
+  config.method = SpectrumMethod::lapack;
+  const Spectrum ref = spectrum(chain, selection, config);
   ASSERT_EQ(ref.size(), 20u);
-  expect_invariants(ref, chain.t, "lapack");
+  expect_invariants(ref, chain, "lapack");
   for (std::size_t j = 0; j < ref.size(); ++j)
     EXPECT_NEAR(ref.omega2[j], full[ref.mode[j] - 1], kValueTol * full[ref.mode[j] - 1]);
   int compared = 0;
-  for (PartialMethod m : all_methods()) {
-    if (m == PartialMethod::lapack) continue;
+  for (SpectrumMethod m : all_methods()) {
+    if (m == SpectrumMethod::lapack) continue;
     config.method = m;
-    const PartialSpectrum got = partial_spectrum(chain.t, chain.s, selection, config);
+    const Spectrum got = spectrum(chain, selection, config);
     const std::string what = std::string(to_string(m)) + " " + c.label;
-    expect_invariants(got, chain.t, what);
+    expect_invariants(got, chain, what);
     compared += expect_same_modes(ref, got, gaps, what);
   }
   RecordProperty("iprs_compared", compared);
@@ -152,32 +145,32 @@ INSTANTIATE_TEST_SUITE_P(
     [](const auto& info) { return std::string(info.param.label); });
 
 TEST(PartialSpectrum, EqualsTheRowsOfTheFullLapackSpectrum) {
-  const TestChain chain = make(Disorder::anderson, 2000, 7);
-  const auto full = LapackEigensolver().solve(chain.t, true);
-  const auto gaps = relative_gaps(full.values, chain.t.max_abs());
-  for (const auto& selection : {SpectrumSelection::nearest(15.0, 25), SpectrumSelection::window(20.0, 30.0),
-                                SpectrumSelection::nearest(35.0, 7)}) {
-    for (PartialMethod m : all_methods()) {
-      PartialSpectrumConfig config;
+  const DynamicalMatrix chain = make(Disorder::anderson, 2000, 7);
+  const auto full = LapackEigensolver().solve(chain, true);
+  const auto gaps = relative_gaps(full.values, chain.max_abs());
+  for (const auto& selection : {nearest(15.0, 25), window(20.0, 30.0),
+                                nearest(35.0, 7)}) {
+    for (SpectrumMethod m : all_methods()) {
+      SpectrumConfig config;
       config.method = m;
-      config.keep_vectors = true;
-      const PartialSpectrum p = partial_spectrum(chain.t, chain.s, selection, config);
+      config.vectors = true;
+      const Spectrum p = spectrum(chain, selection, config);
       ASSERT_GT(p.size(), 0u);
       const std::string what(to_string(m));
-      expect_invariants(p, chain.t, what);
+      expect_invariants(p, chain, what);
       int compared = 0;
       for (std::size_t j = 0; j < p.size(); ++j) {
         const auto row = static_cast<Eigen::Index>(p.mode[j] - 1);
         EXPECT_NEAR(p.omega2[j], full.values[row], kValueTol * full.values[row]) << what;
         EXPECT_DOUBLE_EQ(p.freq_khz[j], frequency_khz(p.omega2[j]));
         if (separated(gaps[row], p.residual[j], 1e-16)) {  // full LAPACK: residual ~ε (dstevr)
-          const double ipr_full = displacement_ipr(full.vectors.col(row).data(), chain.s.data(), 2000);
+          const double ipr_full = displacement_ipr(full.vectors.col(row).data(), chain.inverse_sqrt_mass.data(), 2000);
           EXPECT_NEAR(p.ipr[j], ipr_full, kIprTol * ipr_full) << what << " mode " << p.mode[j];
           ++compared;
         }
       }
       EXPECT_GT(compared, 0) << what;
-      if (selection.kind == SpectrumSelection::Kind::window) {
+      if (selection.kind == ModeSelection::Kind::window) {
         // exactly the modes of the full spectrum inside [20, 30] kHz
         std::size_t inside = 0;
         for (Eigen::Index k = 0; k < full.values.size(); ++k) {
@@ -200,73 +193,63 @@ TEST(PartialSpectrum, EqualsTheRowsOfTheFullLapackSpectrum) {
 }
 
 TEST(PartialSpectrum, NearOutsideTheSpectrumGivesTheEdgeModes) {
-  const TestChain chain = make(Disorder::anderson, 500);
-  for (PartialMethod m : all_methods()) {
-    PartialSpectrumConfig config;
+  const DynamicalMatrix chain = make(Disorder::anderson, 500);
+  for (SpectrumMethod m : all_methods()) {
+    SpectrumConfig config;
     config.method = m;
-    const auto top = partial_spectrum(chain.t, chain.s, SpectrumSelection::nearest(1000.0, 5), config);
+    const auto top = spectrum(chain, nearest(1000.0, 5), config);
     ASSERT_EQ(top.size(), 5u) << to_string(m);
     EXPECT_EQ(top.mode.front(), 496u) << to_string(m);
     EXPECT_EQ(top.mode.back(), 500u) << to_string(m);
-    const auto bottom = partial_spectrum(chain.t, chain.s, SpectrumSelection::nearest(0.0, 3), config);
+    const auto bottom = spectrum(chain, nearest(0.0, 3), config);
     ASSERT_EQ(bottom.size(), 3u) << to_string(m);
     EXPECT_EQ(bottom.mode.front(), 1u) << to_string(m);
   }
 }
 
 TEST(PartialSpectrum, BadCountsAreErrorsAndEmptyWindowsAreEmpty) {
-  const TestChain chain = make(Disorder::rdm1, 200);
-  for (PartialMethod m : all_methods()) {
-    PartialSpectrumConfig config;
+  const DynamicalMatrix chain = make(Disorder::rdm1, 200);
+  for (SpectrumMethod m : all_methods()) {
+    SpectrumConfig config;
     config.method = m;
-    EXPECT_THROW(partial_spectrum(chain.t, chain.s, SpectrumSelection::nearest(15, 0), config), InvalidInput);
-    EXPECT_THROW(partial_spectrum(chain.t, chain.s, SpectrumSelection::nearest(15, -3), config), InvalidInput);
-    EXPECT_THROW(partial_spectrum(chain.t, chain.s, SpectrumSelection::nearest(15, 201), config), InvalidInput);
-    EXPECT_THROW(partial_spectrum(chain.t, chain.s, SpectrumSelection::nearest(-1, 3), config), InvalidInput);
-    EXPECT_THROW(partial_spectrum(chain.t, chain.s, SpectrumSelection::nearest(std::nan(""), 3), config), InvalidInput);
-    EXPECT_THROW(partial_spectrum(chain.t, chain.s, SpectrumSelection::window(30, 20), config), InvalidInput);
+    EXPECT_THROW(spectrum(chain, nearest(15, 0), config), InvalidInput);
+    EXPECT_THROW(spectrum(chain, nearest(15, -3), config), InvalidInput);
+    EXPECT_THROW(spectrum(chain, nearest(15, 201), config), InvalidInput);
+    EXPECT_THROW(spectrum(chain, nearest(-1, 3), config), InvalidInput);
+    EXPECT_THROW(spectrum(chain, nearest(std::nan(""), 3), config), InvalidInput);
+    EXPECT_THROW(spectrum(chain, window(30, 20), config), InvalidInput);
     // above the spectrum, and a window narrower than any mode spacing
-    const auto empty = partial_spectrum(chain.t, chain.s, SpectrumSelection::window(100, 200), config);
+    const auto empty = spectrum(chain, window(100, 200), config);
     EXPECT_EQ(empty.size(), 0u);
     EXPECT_TRUE(empty.mode.empty() && empty.ipr.empty() && empty.freq_khz.empty());
-    const auto one = partial_spectrum(chain.t, chain.s, SpectrumSelection::nearest(15, 1), config);
+    const auto one = spectrum(chain, nearest(15, 1), config);
     ASSERT_EQ(one.size(), 1u);
     const double f = one.freq_khz[0];
-    EXPECT_EQ(partial_spectrum(chain.t, chain.s, SpectrumSelection::window(f * (1 + 1e-9), f * (1 + 2e-9)), config).size(),
+    EXPECT_EQ(spectrum(chain, window(f * (1 + 1e-9), f * (1 + 2e-9)), config).size(),
               0u);
   }
   // K = N: the whole spectrum, with LAPACK; the Krylov methods need K <= N - 1 and say so.
-  PartialSpectrumConfig config;
-  EXPECT_EQ(partial_spectrum(chain.t, chain.s, SpectrumSelection::nearest(15, 200), config).size(), 200u);
-  config.method = PartialMethod::bisect;
-  EXPECT_EQ(partial_spectrum(chain.t, chain.s, SpectrumSelection::nearest(15, 200), config).size(), 200u);
-  config.method = PartialMethod::arpack;
-  EXPECT_THROW(partial_spectrum(chain.t, chain.s, SpectrumSelection::nearest(15, 200), config), InvalidInput);
+  SpectrumConfig config;
+  EXPECT_EQ(spectrum(chain, nearest(15, 200), config).size(), 200u);
+  config.method = SpectrumMethod::bisect;
+  EXPECT_EQ(spectrum(chain, nearest(15, 200), config).size(), 200u);
+  config.method = SpectrumMethod::arpack;
+  EXPECT_THROW(spectrum(chain, nearest(15, 200), config), InvalidInput);
 }
 
-TEST(PartialSpectrum, ParsesTheCommandLineForm) {
-  EXPECT_EQ(parse_selection(15.0, 20L, std::nullopt).count, 20);
-  const auto w = parse_selection(std::nullopt, std::nullopt, std::string("10:12.5"));
-  EXPECT_EQ(w.kind, SpectrumSelection::Kind::window);
-  EXPECT_DOUBLE_EQ(w.lo_khz, 10.0);
-  EXPECT_DOUBLE_EQ(w.hi_khz, 12.5);
-  EXPECT_THROW(parse_selection(15.0, std::nullopt, std::nullopt), InvalidInput);
-  EXPECT_THROW(parse_selection(std::nullopt, 3L, std::nullopt), InvalidInput);
-  EXPECT_THROW(parse_selection(std::nullopt, std::nullopt, std::nullopt), InvalidInput);
-  EXPECT_THROW(parse_selection(15.0, 3L, std::string("1:2")), InvalidInput);
-  for (const char* bad : {"12", "1:2:3", "a:2", "1:", ":2", "1:2x", "1:nan"})
-    EXPECT_THROW(parse_selection(std::nullopt, std::nullopt, std::string(bad)), InvalidInput) << bad;
-  EXPECT_THROW(parse_partial_method("lapak"), InvalidInput);
-  EXPECT_EQ(parse_partial_method("slepc"), PartialMethod::slepc);
+TEST(PartialSpectrum, ParsesMethodNames) {
+  EXPECT_THROW(parse_spectrum_method("lapak"), InvalidInput);
+  EXPECT_EQ(parse_spectrum_method("slepc"), SpectrumMethod::slepc);
+  EXPECT_EQ(parse_spectrum_method("fast"), SpectrumMethod::fast);
 }
 
 TEST(PartialSpectrum, WritesEigenvectorsToHdf5) {
-  const TestChain chain = make(Disorder::anderson, 300);
-  PartialSpectrumConfig config;
-  config.keep_vectors = true;
-  const auto p = partial_spectrum(chain.t, chain.s, SpectrumSelection::nearest(20, 4), config);
-  const std::string path = std::string(GRANULAR_BINARY_DIR) + "/partial_spectrum_test.h5";
-  write_partial_spectrum_hdf5(path, p, chain.s);
+  const DynamicalMatrix chain = make(Disorder::anderson, 300);
+  SpectrumConfig config;
+  config.vectors = true;
+  const auto p = spectrum(chain, nearest(20, 4), config);
+  const std::string path = std::string(GRANULAR_BINARY_DIR) + "/partial_spectrum_test.h5";;
+  write_spectrum_hdf5(path, p, chain);
   const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
   ASSERT_GE(file, 0);
   const hid_t set = H5Dopen2(file, "eigenvectors", H5P_DEFAULT);
@@ -280,8 +263,8 @@ TEST(PartialSpectrum, WritesEigenvectorsToHdf5) {
   std::vector<double> data(4 * 300);
   ASSERT_GE(H5Dread(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()), 0);
   for (int j = 0; j < 4; ++j) {
-    EXPECT_DOUBLE_EQ(displacement_ipr(&data[j * 300], chain.s.data(), 300), p.ipr[j]);  // row j is mode j
-    EXPECT_DOUBLE_EQ(data[j * 300 + 17], p.vectors(17, j));
+    EXPECT_DOUBLE_EQ(displacement_ipr(&data[j * 300], chain.inverse_sqrt_mass.data(), 300), p.ipr[j]);  // row j is mode j
+    EXPECT_DOUBLE_EQ(data[j * 300 + 17], p.vector(static_cast<std::size_t>(j))[17]);
   }
   H5Sclose(space);
   H5Dclose(set);

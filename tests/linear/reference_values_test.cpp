@@ -6,8 +6,8 @@
 #include "fixtures.hpp"
 #include "granular/error.hpp"
 #include "granular/linear/band_edges.hpp"
-#include "granular/linear/weak_nonlinearity.hpp"
-#include "granular/model/hertz_contact.hpp"
+#include "granular/model/contact_law.hpp"
+#include "granular/model/contact_law.hpp"
 
 namespace granular {
 namespace {

@@ -8,13 +8,15 @@
 #include <Eigen/Dense>
 #include <gtest/gtest.h>
 
+#include "granular/linear/spectrum.hpp"
+
 #include "fixtures.hpp"
 #include "granular/error.hpp"
 #include "granular/linear/band_edges.hpp"
 #include "granular/linear/dynamical_matrix.hpp"
-#include "granular/linear/lapack_eigensolver.hpp"
+#include "granular/linear/detail/lapack_eigensolver.hpp"
 #include "granular/linear/mode_ipr.hpp"
-#include "granular/linear/mode_ipr_solver.hpp"
+#include "granular/linear/detail/mode_ipr_solver.hpp"
 
 namespace granular {
 namespace {
@@ -156,13 +158,25 @@ TEST(Spectrum, IprOfALocalizedAndAnExtendedMode) {
 namespace granular {
 namespace {
 
-TEST(Spectrum, NonFiniteMatrixIsANumericalErrorNotAHang) {
+// A NaN or infinite entry is rejected where it enters (max_abs, every solver) as invalid input,
+// never handed to LAPACK (dsterf does not return on NaN).
+TEST(Spectrum, NonFiniteMatrixIsRejectedNotAHang) {
   SymTridiagonal t{{1.0, std::numeric_limits<double>::quiet_NaN(), 1.0}, {0.5, 0.5}};
+  EXPECT_THROW(t.max_abs(), InvalidInput);
   for (auto driver : {LapackDriver::stevr, LapackDriver::stevd, LapackDriver::steqr})
-    EXPECT_THROW(LapackEigensolver(driver).solve(t, true), NumericalError);
+    EXPECT_THROW(LapackEigensolver(driver).solve(t, true), InvalidInput);
+  DynamicalMatrix d;
+  static_cast<SymTridiagonal&>(d) = t;
+  d.inverse_sqrt_mass = {1.0, 1.0, 1.0};
+  for (auto method : {SpectrumMethod::lapack, SpectrumMethod::fast}) EXPECT_THROW(spectrum(d, all_modes(), {.method = method}), InvalidInput);
+  EXPECT_THROW(spectrum(d, nearest(1e-3, 1), {.method = SpectrumMethod::bisect}), InvalidInput);
   t.diagonal[1] = 1.0;
   t.off_diagonal[0] = std::numeric_limits<double>::infinity();
-  EXPECT_THROW(LapackEigensolver().solve(t, false), NumericalError);
+  EXPECT_THROW(t.max_abs(), InvalidInput);
+  EXPECT_THROW(LapackEigensolver().solve(t, false), InvalidInput);
+  d.diagonal[1] = 1.0;
+  d.inverse_sqrt_mass[2] = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_THROW(spectrum(d), InvalidInput);
 }
 
 }  // namespace

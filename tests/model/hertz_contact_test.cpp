@@ -1,4 +1,4 @@
-#include "granular/model/hertz_contact.hpp"
+#include "granular/model/contact_law.hpp"
 
 #include <cmath>
 

@@ -7,17 +7,15 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
-#include "granular/error.hpp"
-#include "granular/io/number_format.hpp"
-#include "granular/model/chain.hpp"
+#include "tool_main.hpp"
 #include "granular/model/configuration_file.hpp"
-#include "granular/model/disorder.hpp"
+#include "granular/model/named_chains.hpp"
 
 namespace granular::tool {
 
 struct ChainOptions {
   std::string disorder = "A";
-  double xi = 0.5, q = 0.5, f0 = 10, r1 = 4.76e-3;
+  double xi = 0.5, q = 0.5, f0 = 10, r1 = paper_r1;
   long long n = 100, seed = 1, realization = 0;
   std::string config, radii;
 };
@@ -26,11 +24,11 @@ inline void add_chain_options(CLI::App& app, ChainOptions& o) {
   app.add_option("--disorder", o.disorder, "h | A | RDM1 | RDM2 (homogeneous, Anderson, random dimer 1/2)")->capture_default_str();
   app.add_option("--xi", o.xi, "size ratio R2/R1 in (0,1]")->capture_default_str();
   app.add_option("--q", o.q, "probability of a type-1 bead (A), dimer 11 (RDM1) or dimer 12 (RDM2), in [0,1]")->capture_default_str();
-  app.add_option("--N", o.n, "beads in the chain (>= 2)")->capture_default_str();
+  add_integer(app, "--N", o.n, "beads in the chain (>= 2)");
   app.add_option("--F0", o.f0, "static precompression [N]")->capture_default_str();
   app.add_option("--R1", o.r1, "radius of type-1 beads [m] (steel beads and flat steel walls)")->capture_default_str();
-  app.add_option("--seed", o.seed, "random seed")->capture_default_str();
-  app.add_option("--realization", o.realization, "which realization of the seed (0-based)")->capture_default_str();
+  add_integer(app, "--seed", o.seed, "random seed");
+  add_integer(app, "--realization", o.realization, "which realization of the seed (0-based)");
   auto* config = app.add_option("--config", o.config, "file with one bead type (1 or 2) per line, '#' comments; overrides --disorder/--q/--N");
   auto* radii = app.add_option("--radii", o.radii, "file with one radius [m] per line, '#' comments; overrides --disorder/--q/--N/--xi");
   config->excludes(radii);
@@ -43,42 +41,40 @@ struct SelectedChain {
 };
 
 inline SelectedChain build_chain(const ChainOptions& o) {
-  if (!std::isfinite(o.f0) || o.f0 < 0) throw InvalidInput("--F0 " + format_number(o.f0) + ": must be finite and >= 0");
-  if (!std::isfinite(o.r1) || o.r1 <= 0) throw InvalidInput("--R1 " + format_number(o.r1) + ": must be finite and > 0");
+  if (o.seed < 0) throw InvalidInput("seed", " " + std::to_string(o.seed) + ": must be >= 0");
+  if (o.realization < 0) throw InvalidInput("realization", " " + std::to_string(o.realization) + ": must be >= 0");
+  if (o.n < 2) throw InvalidInput("N", " " + std::to_string(o.n) + ": a chain needs at least 2 beads");
+  ChainParameters p{.N = static_cast<std::size_t>(o.n), .q = o.q, .xi = o.xi, .seed = static_cast<std::uint64_t>(o.seed),
+                    .realization = static_cast<std::uint64_t>(o.realization), .F0 = o.f0, .R1 = o.r1};
   SelectedChain s;
   nlohmann::json& d = s.description;
   d["F0_N"] = o.f0;
   d["material"] = {{"E_Pa", steel.young}, {"nu", steel.poisson}, {"rho_kg_m3", steel.density}};
   d["walls"] = "flat, same material as the beads";
-  std::vector<double> radii;
   if (!o.radii.empty()) {
-    radii = read_radii_file(o.radii);
+    if (!std::isfinite(o.f0) || o.f0 < 0) throw InvalidInput("F0", " " + format_number(o.f0) + ": must be finite and >= 0");
+    s.chain = from_radii(read_radii_file(o.radii), o.f0);
     d["radii_file"] = o.radii;
   } else {
-    validate_size_ratio(o.xi);
     d["R1_m"] = o.r1;
     d["xi"] = o.xi;
     if (!o.config.empty()) {
+      p.N = 2;  // from the file
+      validate(p);
       s.types = read_configuration_file(o.config);
       d["config_file"] = o.config;
     } else {
       const Disorder kind = parse_disorder(o.disorder);
-      validate_probability(o.q);
-      if (o.n < 2) throw InvalidInput("--N " + std::to_string(o.n) + ": a chain needs at least 2 beads");
-      if (o.n > 100000000) throw InvalidInput("--N " + std::to_string(o.n) + ": more than 1e8 beads");
-      if (o.seed < 0) throw InvalidInput("--seed " + std::to_string(o.seed) + ": must be >= 0");
-      if (o.realization < 0) throw InvalidInput("--realization " + std::to_string(o.realization) + ": must be >= 0");
-      s.types = realization_configuration(kind, o.q, static_cast<std::size_t>(o.n), static_cast<std::uint64_t>(o.seed),
-                                          static_cast<std::uint64_t>(o.realization));
+      validate(p);
+      s.types = realization_configuration(kind, o.q, p.N, p.seed, p.realization);
       d["disorder"] = to_string(kind);
       d["q"] = o.q;
       d["seed"] = o.seed;
       d["realization"] = o.realization;
     }
-    radii = radii_of(s.types, o.r1, o.xi);
+    s.chain = from_types(s.types, p);
   }
-  d["N"] = radii.size();
-  s.chain = make_chain(radii, o.f0);
+  d["N"] = s.chain.size();
   return s;
 }
 

@@ -1,14 +1,19 @@
 #pragma once
 // What every tool shares: option parsing errors and library exceptions become one line on
 // stderr and an exit code (2 bad input, 1 I/O, 3 numerical failure); --help and --version
-// exit 0. The body only runs after every option parsed.
+// exit 0. The body only runs after every option parsed. Library errors name parameters in the
+// library's vocabulary (`time_step`); here they are told in the flag the user typed (`--dt`).
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <functional>
+#include <map>
 #include <string>
 
 #include <CLI/CLI.hpp>
 
 #include "granular/error.hpp"
+#include "granular/number_format.hpp"
 
 namespace granular::tool {
 
@@ -20,8 +25,85 @@ inline void describe_common(CLI::App& app) {
   app.footer("Physics and units: docs/physics.md (installed to share/doc/granular/physics.md)");
 }
 
+/// An integer option that also takes scientific notation (--N 1e7), rejecting non-integers.
+template <class Integer>
+CLI::Option* add_integer(CLI::App& app, const std::string& name, Integer& value, const std::string& description) {
+  return app
+      .add_option(name, value, description)
+      ->transform(CLI::Validator(
+          [name](std::string& text) -> std::string {
+            if (text.find_first_of("eE.") == std::string::npos) return {};
+            std::size_t used = 0;
+            double v = 0;
+            try {
+              v = std::stod(text, &used);
+            } catch (const std::exception&) {
+              return {};  // CLI11's own conversion reports it
+            }
+            if (used != text.size() || !std::isfinite(v) || v != std::floor(v) || std::fabs(v) > 9.2e18)
+              return name + " " + text + ": not an integer";
+            text = std::to_string(static_cast<long long>(v));
+            return {};
+          },
+          "", "integer notation"))
+      ->capture_default_str();
+}
+
+/// Library parameter names that are not simply the flag without its dashes.
+inline const std::map<std::string, std::string>& flag_synonyms() {
+  static const std::map<std::string, std::string> names{
+      {"precompression", "--F0"}, {"n", "--N"},         {"r1", "--R1"},      {"near_khz", "--near"},
+      {"time_step", "--dt"},      {"duration", "--T"},  {"realizations", "--realizations"},
+  };
+  return names;
+}
+
+/// The flag of `app` that a library parameter stands for ("" when none: the message is kept).
+inline std::string flag_for(const CLI::App& app, const std::string& parameter,
+                            const std::map<std::string, std::string>& overrides) {
+  if (parameter.empty() || parameter.starts_with("--")) return parameter;
+  if (auto it = overrides.find(parameter); it != overrides.end()) return it->second;
+  std::string flag = "--" + parameter;
+  std::replace(flag.begin() + 2, flag.end(), '_', '-');
+  if (app.get_option_no_throw(flag)) return flag;
+  if (auto it = flag_synonyms().find(parameter); it != flag_synonyms().end() && app.get_option_no_throw(it->second))
+    return it->second;
+  return "";
+}
+
+/// The option of `app` nearest `typed` by edit distance (for "did you mean"), or "".
+inline std::string nearest_option(const CLI::App& app, const std::string& typed) {
+  auto distance = [](const std::string& a, const std::string& b) {
+    std::vector<std::size_t> row(b.size() + 1);
+    for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+    for (std::size_t i = 1; i <= a.size(); ++i) {
+      std::size_t diagonal = row[0];
+      row[0] = i;
+      for (std::size_t j = 1; j <= b.size(); ++j) {
+        const std::size_t up = row[j];
+        row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (std::tolower(a[i - 1]) == std::tolower(b[j - 1]) ? 0 : 1)});
+        diagonal = up;
+      }
+    }
+    return row[b.size()];
+  };
+  const std::string word = typed.substr(0, typed.find('='));
+  std::string best;
+  std::size_t best_distance = 3;  // further than 2 edits is no suggestion
+  for (const CLI::Option* o : app.get_options()) {
+    for (const std::string& name : o->get_lnames()) {
+      const std::size_t d = distance(word, "--" + name);
+      if (d < best_distance) best_distance = d, best = "--" + name;
+    }
+  }
+  return best;
+}
+
 /// Parses argv into `app`, then runs `body`, mapping every failure to a message and exit code.
-inline int run(CLI::App& app, int argc, char** argv, const std::function<void()>& body) {
+/// `overrides` maps library parameters to this tool's flags where the usual rule (parameter
+/// `time_step` → `--time-step` if the tool has it, else a common synonym such as `--dt`) is wrong.
+inline int run(CLI::App& app, int argc, char** argv, const std::function<void()>& body,
+               const std::map<std::string, std::string>& overrides = {}) {
   const std::string name = app.get_name();
   for (int i = 1; i < argc; ++i)
     if (argv[i][0] == '\0') {  // CLI11 would read "" as 0 for numbers
@@ -36,6 +118,16 @@ inline int run(CLI::App& app, int argc, char** argv, const std::function<void()>
     return app.exit(e);
   } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
+  } catch (const CLI::ExtrasError& e) {
+    std::string hint;
+    for (const std::string& extra : app.remaining())
+      if (extra.starts_with("-")) {
+        const std::string near = nearest_option(app, extra);
+        if (!near.empty()) hint = " (did you mean " + near + "?)";
+        break;
+      }
+    std::fprintf(stderr, "%s: error: %s%s (see %s --help)\n", name.c_str(), e.what(), hint.c_str(), name.c_str());
+    return bad_input;
   } catch (const CLI::ParseError& e) {
     std::fprintf(stderr, "%s: error: %s (see %s --help)\n", name.c_str(), e.what(), name.c_str());
     return bad_input;
@@ -44,7 +136,9 @@ inline int run(CLI::App& app, int argc, char** argv, const std::function<void()>
     body();
     return ok;
   } catch (const InvalidInput& e) {
-    std::fprintf(stderr, "%s: error: %s\n", name.c_str(), e.what());
+    const std::string flag = flag_for(app, e.parameter(), overrides);
+    const std::string message = flag.empty() ? std::string(e.what()) : flag + e.problem();
+    std::fprintf(stderr, "%s: error: %s\n", name.c_str(), message.c_str());
     return bad_input;
   } catch (const IoError& e) {
     std::fprintf(stderr, "%s: I/O error: %s\n", name.c_str(), e.what());

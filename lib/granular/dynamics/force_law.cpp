@@ -3,7 +3,7 @@
 #include <cctype>
 
 #include "granular/error.hpp"
-#include "granular/linear/weak_nonlinearity.hpp"
+#include "granular/model/contact_law.hpp"
 
 namespace granular {
 

@@ -9,7 +9,7 @@
 #include "granular/dynamics/observables.hpp"
 #include "granular/dynamics/spectral_density.hpp"
 #include "granular/error.hpp"
-#include "granular/io/number_format.hpp"
+#include "granular/number_format.hpp"
 
 namespace granular {
 

@@ -2,7 +2,7 @@
 
 #include <memory>
 
-#include "granular/ensemble/mpi_context.hpp"
+#include "granular/parallel/mpi_context.hpp"
 #include "granular/ensemble/parallel_realizations.hpp"
 #include "granular/error.hpp"
 

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "granular/io/number_format.hpp"
+#include "granular/number_format.hpp"
 
 namespace granular {
 

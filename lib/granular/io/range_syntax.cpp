@@ -16,7 +16,7 @@ double parse_finite(std::string_view token, const std::string& option) {
   double v = 0;
   auto [end, ec] = std::from_chars(token.data(), token.data() + token.size(), v);
   if (token.empty() || ec != std::errc() || end != token.data() + token.size() || !std::isfinite(v))
-    throw InvalidInput(option + " '" + std::string(token.substr(0, 40)) + "': not a finite number");
+    throw InvalidInput(option, " '" + std::string(token.substr(0, 40)) + "': not a finite number");
   return v;
 }
 
@@ -43,38 +43,38 @@ std::vector<std::string_view> split(std::string_view text, char sep) {
 
 std::vector<double> parse_number_list(const std::string& text, const std::string& option, double default_step,
                                       std::size_t max_count) {
-  if (text.empty()) throw InvalidInput(option + ": empty value");
+  if (text.empty()) throw InvalidInput(option, ": empty value");
   std::vector<double> values;
   if (text.find(':') != std::string::npos) {
     const auto parts = split(text, ':');
-    if (parts.size() > 3) throw InvalidInput(option + " '" + text + "': expected start:stop[:step]");
+    if (parts.size() > 3) throw InvalidInput(option, " '" + text + "': expected start:stop[:step]");
     const double start = parse_finite(parts[0], option);
     const double stop = parse_finite(parts[1], option);
     const double step = parts.size() == 3 ? parse_finite(parts[2], option) : default_step;
-    if (!(step > 0)) throw InvalidInput(option + " '" + text + "': the step must be > 0");
-    if (stop < start) throw InvalidInput(option + " '" + text + "': stop is below start");
+    if (!(step > 0)) throw InvalidInput(option, " '" + text + "': the step must be > 0");
+    if (stop < start) throw InvalidInput(option, " '" + text + "': stop is below start");
     const double span = (stop - start) / step;
     if (!(span < static_cast<double>(max_count)))
-      throw InvalidInput(option + " '" + text + "': more than " + std::to_string(max_count) + " values");
+      throw InvalidInput(option, " '" + text + "': more than " + std::to_string(max_count) + " values");
     const auto count = static_cast<std::size_t>(std::floor(span + 1e-9)) + 1;
     for (std::size_t i = 0; i < count; ++i) values.push_back(round12(start + static_cast<double>(i) * step));
     return values;
   }
   for (auto token : split(text, ',')) {
     values.push_back(parse_finite(token, option));
-    if (values.size() > max_count) throw InvalidInput(option + ": more than " + std::to_string(max_count) + " values");
+    if (values.size() > max_count) throw InvalidInput(option, ": more than " + std::to_string(max_count) + " values");
   }
   return values;
 }
 
 std::vector<long> parse_integer_list(const std::string& text, const std::string& option) {
-  if (text.empty()) throw InvalidInput(option + ": empty value");
+  if (text.empty()) throw InvalidInput(option, ": empty value");
   std::vector<long> values;
   for (auto token : split(text, ',')) {
     long v = 0;
     auto [end, ec] = std::from_chars(token.data(), token.data() + token.size(), v);
     if (token.empty() || ec != std::errc() || end != token.data() + token.size())
-      throw InvalidInput(option + " '" + std::string(token.substr(0, 40)) + "': not an integer");
+      throw InvalidInput(option, " '" + std::string(token.substr(0, 40)) + "': not an integer");
     values.push_back(v);
   }
   return values;
@@ -82,16 +82,16 @@ std::vector<long> parse_integer_list(const std::string& text, const std::string&
 
 Interval parse_interval(const std::string& text, const std::string& option) {
   const auto parts = split(text, ':');
-  if (parts.size() != 2) throw InvalidInput(option + " '" + text + "': expected start:stop");
+  if (parts.size() != 2) throw InvalidInput(option, " '" + text + "': expected start:stop");
   const Interval i{parse_finite(parts[0], option), parse_finite(parts[1], option)};
-  if (!(i.start < i.stop)) throw InvalidInput(option + " '" + text + "': start must be below stop");
+  if (!(i.start < i.stop)) throw InvalidInput(option, " '" + text + "': start must be below stop");
   return i;
 }
 
 std::vector<std::string> parse_word_list(const std::string& text, const std::string& option) {
   std::vector<std::string> words;
   for (auto token : split(text, ',')) {
-    if (token.empty()) throw InvalidInput(option + " '" + text + "': empty item in the list");
+    if (token.empty()) throw InvalidInput(option, " '" + text + "': empty item in the list");
     words.emplace_back(token);
   }
   return words;

@@ -7,7 +7,7 @@
 #include <string>
 
 #include "granular/error.hpp"
-#include "granular/linear/shift_invert_eigensolvers.hpp"
+#include "granular/linear/detail/shift_invert_eigensolvers.hpp"
 #include "granular/linear/tridiagonal_operator.hpp"
 
 extern "C" {
@@ -43,7 +43,7 @@ ShiftInvertResult arpack_nearest(const SymTridiagonal& t, double sigma, const Sh
   const int n = static_cast<int>(t.size());
   const int nev = config.count;
   if (nev < 1 || nev > n - 1)
-    throw InvalidInput("ARPACK: " + std::to_string(nev) + " eigenpairs of an N = " + std::to_string(n) +
+    throw InvalidInput("ARPACK", ": " + std::to_string(nev) + " eigenpairs of an N = " + std::to_string(n) +
                        " matrix; it needs 1 <= count <= N - 1 (use --method lapack)");
   const int ncv = std::min(n, config.subspace > 0 ? std::max(config.subspace, nev + 1) : std::max(2 * nev + 1, 20));
   ShiftInvertOperator op;

@@ -6,15 +6,15 @@
 #include "granular/error.hpp"
 #include "granular/linear/dynamical_matrix.hpp"
 #include "granular/model/disorder.hpp"
-#include "granular/model/hertz_contact.hpp"
+#include "granular/model/contact_law.hpp"
 
 namespace granular {
 
 BandEdges band_edges(const Material& material, double r1, double xi, double f0) {
   validate(material, "material");
   validate_size_ratio(xi);
-  if (!(f0 > 0) || !std::isfinite(f0)) throw InvalidInput("F0: band edges need a finite F0 > 0");
-  if (!(r1 > 0) || !std::isfinite(r1)) throw InvalidInput("R1: must be finite and > 0");
+  if (!(f0 > 0) || !std::isfinite(f0)) throw InvalidInput("F0", ": band edges need a finite F0 > 0");
+  if (!(r1 > 0) || !std::isfinite(r1)) throw InvalidInput("R1", ": must be finite and > 0");
   const double r2 = xi * r1;
   auto mass = [&](double r) { return material.density * (4.0 / 3.0) * std::numbers::pi * r * r * r; };
   const double m1 = mass(r1), m2 = mass(r2), m3 = m1 * m2 / (m1 + m2);

@@ -1,7 +1,8 @@
 #pragma once
-// The linearized chain (SPEC §3): bond stiffness B_k = (3/2) A_k^{2/3} F0^{1/3} and the
-// symmetric dynamical matrix D = M^{-1/2} K M^{-1/2}, whose eigenvalues are ω² ≥ 0.
-// An eigenvector w of D gives the displacement mode v = M^{-1/2} w.
+// The linearized chain (SPEC §3): the symmetric dynamical matrix D = M^{-1/2} K M^{-1/2} [1/s²],
+// K the tridiagonal stiffness matrix of the bonds' linear stiffnesses B_k (model/contact_law.hpp).
+// Its eigenvalues are ω² ≥ 0; an eigenvector w of D gives the displacement mode v = M^{-1/2} w,
+// which is why the matrix carries M^{-1/2}: every IPR is computed from v, not w.
 #include <vector>
 
 #include "granular/linear/sym_tridiagonal.hpp"
@@ -9,17 +10,18 @@
 
 namespace granular {
 
-/// Linear stiffness of a Hertz bond with coefficient A under precompression F0 [N/m].
-double linear_stiffness(double contact, double precompression);
-
-/// B_k for every bond of the chain (N+1 values).
-std::vector<double> linear_stiffness(const Chain& chain);
+struct DynamicalMatrix : SymTridiagonal {
+  std::vector<double> inverse_sqrt_mass;  ///< m_n^{-1/2} [kg^{-1/2}], N entries
+};
 
 /// D(i,i) = (B_i + B_{i+1})/m_i, D(i,i+1) = -B_{i+1}/sqrt(m_i m_{i+1}) [1/s²].
 /// Throws InvalidInput when F0 = 0 (the sonic vacuum has no linear limit).
-SymTridiagonal dynamical_matrix(const Chain& chain);
+DynamicalMatrix dynamical_matrix(const Chain& chain);
 
-/// Frequency in kHz of an eigenvalue ω² (negative round-off clamps to 0).
+/// Frequency in kHz of an eigenvalue ω² [1/s²] (negative round-off clamps to 0).
 double frequency_khz(double omega_squared);
+
+/// ω² [1/s²] of a frequency in kHz.
+double omega_squared_of_khz(double khz);
 
 }  // namespace granular

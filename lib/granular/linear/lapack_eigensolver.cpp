@@ -1,4 +1,4 @@
-#include "granular/linear/lapack_eigensolver.hpp"
+#include "granular/linear/detail/lapack_eigensolver.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,7 @@
 #include <string>
 
 #include "granular/error.hpp"
-#include "granular/linear/lapack.hpp"
+#include "granular/linear/detail/lapack.hpp"
 #include "granular/linear/tridiagonal_operator.hpp"
 
 namespace granular {
@@ -24,7 +24,7 @@ std::string_view to_string(LapackDriver driver) {
 LapackDriver parse_lapack_driver(std::string_view name) {
   for (auto d : {LapackDriver::stevr, LapackDriver::stemr, LapackDriver::stevd, LapackDriver::steqr})
     if (name == to_string(d)) return d;
-  throw InvalidInput("LAPACK driver '" + std::string(name) + "': expected stevr, stemr, stevd or steqr");
+  throw InvalidInput("driver", " '" + std::string(name) + "': expected stevr, stemr, stevd or steqr");
 }
 
 void LapackEigensolver::solve(const SymTridiagonal& t, bool want_vectors, EigenDecomposition& out) {

@@ -1,10 +1,10 @@
-#include "granular/linear/mode_ipr_solver.hpp"
+#include "granular/linear/detail/mode_ipr_solver.hpp"
 
 #include <string>
 
 #include "granular/error.hpp"
 #include "granular/linear/mode_ipr.hpp"
-#include "granular/linear/twisted_ipr_solver.hpp"
+#include "granular/linear/detail/twisted_ipr_solver.hpp"
 
 namespace granular {
 
@@ -21,7 +21,7 @@ std::unique_ptr<ModeIprSolver> make_mode_ipr_solver(std::string_view method) {
   if (method == "fast") return std::make_unique<TwistedModeIpr>();
   if (method == "lapack") return std::make_unique<LapackModeIpr>(LapackDriver::stevd);
   if (method.starts_with("lapack-")) return std::make_unique<LapackModeIpr>(parse_lapack_driver(method.substr(7)));
-  throw InvalidInput("--solver '" + std::string(method) + "': expected fast, lapack or lapack-<stevr|stemr|stevd|steqr>");
+  throw InvalidInput("solver", " '" + std::string(method) + "': expected fast, lapack or lapack-<stevr|stemr|stevd|steqr>");
 }
 
 }  // namespace granular

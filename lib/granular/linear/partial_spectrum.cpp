@@ -1,4 +1,4 @@
-#include "granular/linear/partial_spectrum.hpp"
+#include "granular/linear/detail/partial_spectrum.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -7,84 +7,14 @@
 #include <numeric>
 
 #include "granular/error.hpp"
-#include "granular/io/number_format.hpp"
 #include "granular/linear/dynamical_matrix.hpp"
-#include "granular/linear/lapack_eigensolver.hpp"
+#include "granular/linear/detail/lapack_eigensolver.hpp"
 #include "granular/linear/mode_ipr.hpp"
-#include "granular/linear/shift_invert_eigensolvers.hpp"
-#include "granular/linear/sturm_bisection.hpp"
+#include "granular/linear/detail/shift_invert_eigensolvers.hpp"
+#include "granular/linear/detail/sturm_bisection.hpp"
 #include "granular/linear/tridiagonal_operator.hpp"
 
 namespace granular {
-
-std::string_view to_string(PartialMethod method) {
-  switch (method) {
-    case PartialMethod::lapack: return "lapack";
-    case PartialMethod::bisect: return "bisect";
-    case PartialMethod::arpack: return "arpack";
-    case PartialMethod::slepc: return "slepc";
-  }
-  return "?";
-}
-
-PartialMethod parse_partial_method(std::string_view name) {
-  for (auto m : {PartialMethod::lapack, PartialMethod::bisect, PartialMethod::arpack, PartialMethod::slepc})
-    if (name == to_string(m)) return m;
-  throw InvalidInput("--method '" + std::string(name) + "': expected lapack, bisect, arpack or slepc");
-}
-
-double omega_squared_of_khz(double khz) {
-  const double omega = 2 * std::numbers::pi * khz * 1e3;
-  return omega * omega;
-}
-
-void validate(const SpectrumSelection& s, std::size_t n) {
-  if (s.kind == SpectrumSelection::Kind::nearest) {
-    if (!std::isfinite(s.near_khz) || s.near_khz < 0)
-      throw InvalidInput("--near " + format_number(s.near_khz) + ": must be a finite frequency >= 0 kHz");
-    if (s.count < 1) throw InvalidInput("--count " + std::to_string(s.count) + ": must be >= 1");
-    if (static_cast<unsigned long>(s.count) > n)
-      throw InvalidInput("--count " + std::to_string(s.count) + ": the chain has only N = " + std::to_string(n) +
-                         " modes");
-  } else {
-    if (!std::isfinite(s.lo_khz) || !std::isfinite(s.hi_khz) || s.lo_khz < 0 || s.hi_khz < s.lo_khz)
-      throw InvalidInput("--window " + format_number(s.lo_khz) + ":" + format_number(s.hi_khz) +
-                         ": need finite 0 <= F1 <= F2 (kHz)");
-  }
-}
-
-namespace {
-
-double parse_khz(const std::string& text, const std::string& whole) {
-  std::size_t used = 0;
-  double v = 0;
-  try {
-    v = std::stod(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used == 0 || used != text.size() || !std::isfinite(v))
-    throw InvalidInput("--window '" + whole + "': expected F1:F2, two frequencies in kHz");
-  return v;
-}
-
-}  // namespace
-
-SpectrumSelection parse_selection(const std::optional<double>& near_khz, const std::optional<long>& count,
-                                  const std::optional<std::string>& window) {
-  if (window) {
-    if (near_khz || count) throw InvalidInput("--window cannot be combined with --near/--count");
-    const auto colon = window->find(':');
-    if (colon == std::string::npos || window->find(':', colon + 1) != std::string::npos)
-      throw InvalidInput("--window '" + *window + "': expected F1:F2, two frequencies in kHz");
-    return SpectrumSelection::window(parse_khz(window->substr(0, colon), *window),
-                                     parse_khz(window->substr(colon + 1), *window));
-  }
-  if (near_khz && !count) throw InvalidInput("--near needs --count K (how many modes)");
-  if (count && !near_khz) throw InvalidInput("--count needs --near KHZ (the target frequency)");
-  if (!near_khz) throw InvalidInput("give --near KHZ --count K, or --window F1:F2");
-  return SpectrumSelection::nearest(*near_khz, *count);
-}
 
 namespace {
 
@@ -156,11 +86,11 @@ Eigen::MatrixXd bisect_pairs(const SymTridiagonal& t, long first, long last, std
 }
 
 /// Eigenpairs first..last (1-based) by dstemr (lapack) or bisection + inverse iteration (bisect).
-Candidates by_index(PartialMethod method, const SymTridiagonal& t, long first, long last,
+Candidates by_index(SpectrumMethod method, const SymTridiagonal& t, long first, long last,
                     const std::vector<double>& inverse_sqrt_mass, bool keep, std::size_t group) {
   Candidates out;
   out.first_mode = first;
-  if (method == PartialMethod::lapack) {
+  if (method == SpectrumMethod::lapack) {
     LapackEigensolver solver;
     EigenDecomposition eig;
     solver.solve_indices(t, static_cast<int>(first), static_cast<int>(last), true, eig);
@@ -174,13 +104,13 @@ Candidates by_index(PartialMethod method, const SymTridiagonal& t, long first, l
   return out;
 }
 
-Candidates shift_invert(PartialMethod method, const SymTridiagonal& t, double sigma, int count,
+Candidates shift_invert(SpectrumMethod method, const SymTridiagonal& t, double sigma, int count,
                         const PartialSpectrumConfig& config) {
   ShiftInvertConfig c;
   c.count = count;
   c.tolerance = config.tolerance;
   c.subspace = config.subspace;
-  ShiftInvertResult r = method == PartialMethod::arpack ? arpack_nearest(t, sigma, c) : slepc_nearest(t, sigma, c);
+  ShiftInvertResult r = method == SpectrumMethod::arpack ? arpack_nearest(t, sigma, c) : slepc_nearest(t, sigma, c);
   Candidates out;
   out.values = std::move(r.values);
   out.vectors = std::move(r.vectors);
@@ -192,10 +122,10 @@ Candidates shift_invert(PartialMethod method, const SymTridiagonal& t, double si
 }  // namespace
 
 PartialSpectrum partial_spectrum(const SymTridiagonal& t, const std::vector<double>& inverse_sqrt_mass,
-                                 const SpectrumSelection& selection, const PartialSpectrumConfig& config) {
+                                 const ModeSelection& selection, const PartialSpectrumConfig& config) {
   const std::size_t n = t.size();
-  if (n < 2) throw InvalidInput("partial spectrum: a chain needs at least 2 beads");
-  if (inverse_sqrt_mass.size() != n) throw InvalidInput("partial spectrum: inverse_sqrt_mass must have N entries");
+  if (n < 2) throw InvalidInput("N", " " + std::to_string(n) + ": a chain needs at least 2 beads");
+  if (inverse_sqrt_mass.size() != n) throw InvalidInput("inverse_sqrt_mass", ": must have N = " + std::to_string(n) + " entries");
   validate(selection, n);
   const TridiagonalOperator op(t);
   const double scale = t.max_abs();
@@ -203,12 +133,12 @@ PartialSpectrum partial_spectrum(const SymTridiagonal& t, const std::vector<doub
 
   Candidates cand;
   std::vector<std::size_t> chosen;  // indices into cand.values
-  if (selection.kind == SpectrumSelection::Kind::window) {
+  if (selection.kind == ModeSelection::Kind::window) {
     const double lo = omega_squared_of_khz(selection.lo_khz), hi = omega_squared_of_khz(selection.hi_khz);
     const std::size_t below = op.count_below(lo);
     const std::size_t upto = op.count_below(std::nextafter(hi, std::numeric_limits<double>::infinity()));
     if (upto > below) {
-      if (config.method == PartialMethod::lapack || config.method == PartialMethod::bisect) {
+      if (config.method == SpectrumMethod::lapack || config.method == SpectrumMethod::bisect) {
         cand = by_index(config.method, t, static_cast<long>(below) + 1, static_cast<long>(upto), inverse_sqrt_mass,
                         config.keep_vectors, config.lanes);
       } else {
@@ -220,18 +150,18 @@ PartialSpectrum partial_spectrum(const SymTridiagonal& t, const std::vector<doub
       chosen.resize(cand.values.size());
       std::iota(chosen.begin(), chosen.end(), 0);
     } else {
-      cand.method = config.method == PartialMethod::lapack ? "lapack-stemr" : std::string(to_string(config.method));
+      cand.method = config.method == SpectrumMethod::lapack ? "lapack-stemr" : std::string(to_string(config.method));
     }
   } else {
     const double f0 = selection.near_khz;
     const auto k = static_cast<std::size_t>(selection.count);
     const double sigma = omega_squared_of_khz(f0);
-    if (config.method == PartialMethod::lapack || config.method == PartialMethod::bisect) {
+    if (config.method == SpectrumMethod::lapack || config.method == SpectrumMethod::bisect) {
       // The K nearest form a run of consecutive modes that contains mode c or c + 1 (c = modes
       // below σ); one extra on each side absorbs a count off by one in round-off.
       const long c = static_cast<long>(op.count_below(sigma));
       const long first = std::max(1L, c - static_cast<long>(k)), last = std::min(static_cast<long>(n), c + static_cast<long>(k) + 1);
-      if (config.method == PartialMethod::lapack) {
+      if (config.method == SpectrumMethod::lapack) {
         cand = by_index(config.method, t, first, last, inverse_sqrt_mass, config.keep_vectors, config.lanes);
         chosen = nearest_in_frequency(cand.values, f0, k);
       } else {
@@ -255,8 +185,8 @@ PartialSpectrum partial_spectrum(const SymTridiagonal& t, const std::vector<doub
       }
     } else {
       if (k > n - 1)
-        throw InvalidInput("--count " + std::to_string(k) + ": --method " + std::string(to_string(config.method)) +
-                           " needs K <= N - 1 = " + std::to_string(n - 1) + " (use --method lapack)");
+        throw InvalidInput("count", " " + std::to_string(k) + ": method " + std::string(to_string(config.method)) +
+                           " needs K <= N - 1 = " + std::to_string(n - 1) + " (use method lapack)");
       // Shift-invert converges fast only when the wanted eigenvalues are the nearest to the shift
       // *and* spread out compared with their distance from it. Inside a band (≥ 2K modes within
       // ±0.1 % of f0) σ itself is a good shift. In a gap, or beyond the spectrum, the K nearest sit
@@ -278,7 +208,7 @@ PartialSpectrum partial_spectrum(const SymTridiagonal& t, const std::vector<doub
         cand = shift_invert(config.method, t, centre, static_cast<int>(k), config);
         cand.first_mode = first + static_cast<long>(pick.front());
         if (first_mode_number(op, cand.values, scale) != cand.first_mode)
-          throw NumericalError("--near: " + std::string(to_string(config.method)) +
+          throw NumericalError("near_khz: " + std::string(to_string(config.method)) +
                                " converged to other modes than the located ones (use --method lapack)");
         chosen.resize(k);
         std::iota(chosen.begin(), chosen.end(), 0);
@@ -288,8 +218,8 @@ PartialSpectrum partial_spectrum(const SymTridiagonal& t, const std::vector<doub
       while (in_band) {
         const std::size_t want = std::min(k + extra, n - 1);
         if (want < k)
-          throw InvalidInput("--count " + std::to_string(k) + ": --method " + std::string(to_string(config.method)) +
-                             " needs K <= N - 1 = " + std::to_string(n - 1) + " (use --method lapack)");
+          throw InvalidInput("count", " " + std::to_string(k) + ": method " + std::string(to_string(config.method)) +
+                             " needs K <= N - 1 = " + std::to_string(n - 1) + " (use method lapack)");
         cand = shift_invert(config.method, t, s, static_cast<int>(want), config);
         double r = 0;
         for (double v : cand.values) r = std::max(r, std::fabs(v - s));
@@ -301,8 +231,8 @@ PartialSpectrum partial_spectrum(const SymTridiagonal& t, const std::vector<doub
         for (std::size_t i : chosen) dk = std::max(dk, std::fabs(frequency_khz(cand.values[i]) - f0));
         if (dk < std::min(reach_down, reach_up) || want == n - 1) {
           if (dk < std::min(reach_down, reach_up)) break;
-          throw NumericalError("--near: cannot certify the " + std::to_string(k) + " nearest modes with " +
-                               std::string(to_string(config.method)) + " (use --method lapack)");
+          throw NumericalError("near_khz: cannot certify the " + std::to_string(k) + " nearest modes with " +
+                               std::string(to_string(config.method)) + " (use method lapack)");
         }
         extra *= 2;
       }

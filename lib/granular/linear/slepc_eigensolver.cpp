@@ -7,7 +7,8 @@
 #include <string>
 
 #include "granular/error.hpp"
-#include "granular/linear/shift_invert_eigensolvers.hpp"
+#include "granular/linear/detail/shift_invert_eigensolvers.hpp"
+#include "granular/parallel/mpi_context.hpp"
 
 #if GRANULAR_HAVE_SLEPC
 #include <mpi.h>
@@ -49,6 +50,7 @@ void initialize_slepc(int* argc, char*** argv) {
   PetscBool up = PETSC_FALSE;
   SlepcInitialized(&up);
   if (up) return;
+  MpiContext::instance().require();  // MPI has one owner; PETSc then leaves MPI_Finalize to it
   check(SlepcInitialize(argc, argv, nullptr, nullptr), "SlepcInitialize");
   started_by_us = true;
   std::atexit(finalize_slepc);
@@ -61,29 +63,13 @@ void finalize_slepc() {
   if (started_by_us && up && !done) SlepcFinalize();
 }
 
-int mpi_rank() {
-  int up = 0, fin = 0, rank = 0;
-  MPI_Initialized(&up);
-  MPI_Finalized(&fin);
-  if (up && !fin) MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-  return rank;
-}
-
-int mpi_size() {
-  int up = 0, fin = 0, size = 1;
-  MPI_Initialized(&up);
-  MPI_Finalized(&fin);
-  if (up && !fin) MPI_Comm_size(MPI_COMM_WORLD, &size);
-  return size;
-}
-
 ShiftInvertResult slepc_nearest(const SymTridiagonal& t, double sigma, const ShiftInvertConfig& config) {
   const PetscInt n = static_cast<PetscInt>(t.size());
   const PetscInt nev = config.count;
   if (nev < 1 || nev > n - 1)
-    throw InvalidInput("SLEPc: " + std::to_string(nev) + " eigenpairs of an N = " + std::to_string(n) +
+    throw InvalidInput("SLEPc", ": " + std::to_string(nev) + " eigenpairs of an N = " + std::to_string(n) +
                        " matrix; it needs 1 <= count <= N - 1 (use --method lapack)");
-  if (!std::isfinite(sigma)) throw InvalidInput("SLEPc: the shift must be finite");
+  if (!std::isfinite(sigma)) throw InvalidInput("SLEPc", ": the shift must be finite");
   ensure_started();
 
   Owned<Mat, MatDestroy> a;
@@ -178,10 +164,8 @@ ShiftInvertResult slepc_nearest(const SymTridiagonal& t, double sigma, const Shi
 bool have_slepc() { return false; }
 void initialize_slepc(int*, char***) {}
 void finalize_slepc() {}
-int mpi_rank() { return 0; }
-int mpi_size() { return 1; }
 ShiftInvertResult slepc_nearest(const SymTridiagonal&, double, const ShiftInvertConfig&) {
-  throw InvalidInput("--method slepc: this build has no SLEPc (configure with -DGRANULAR_WITH_SLEPC=ON)");
+  throw InvalidInput("method", " slepc: this build has no SLEPc (configure with -DGRANULAR_WITH_SLEPC=ON)");
 }
 
 #endif

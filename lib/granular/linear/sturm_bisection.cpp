@@ -1,4 +1,4 @@
-#include "granular/linear/sturm_bisection.hpp"
+#include "granular/linear/detail/sturm_bisection.hpp"
 
 #include <algorithm>
 #include <cstdint>
@@ -7,7 +7,7 @@
 #include <string>
 
 #include "granular/error.hpp"
-#include "granular/linear/lapack.hpp"
+#include "granular/linear/detail/lapack.hpp"
 #include "granular/linear/tridiagonal_operator.hpp"
 
 #if defined(__AVX512F__)
@@ -435,9 +435,9 @@ Eigen::MatrixXd lane_inverse_iteration(const SymTridiagonal& t, std::vector<doub
   if (options.residual) options.residual->assign(m, 0.0);
   Eigen::MatrixXd z(static_cast<Eigen::Index>(n), options.keep_vectors ? static_cast<Eigen::Index>(m) : 0);
   if (m == 0) return z;
-  if (m > 64) throw InvalidInput("lane_inverse_iteration: at most 64 lanes");
+  if (m > 64) throw InvalidInput("lane_inverse_iteration", ": at most 64 lanes");
   if (options.inverse_sqrt_mass && options.inverse_sqrt_mass->size() != n)
-    throw InvalidInput("lane_inverse_iteration: inverse_sqrt_mass must have N entries");
+    throw InvalidInput("lane_inverse_iteration", ": inverse_sqrt_mass must have N entries");
   const double norm = t.max_abs();
   // Lanes closer than this (or with touching brackets) are made orthogonal explicitly: their
   // shifts cannot tell them apart. Lanes farther apart converge to distinct eigenvectors inside

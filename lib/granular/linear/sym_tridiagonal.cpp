@@ -1,6 +1,9 @@
 #include "granular/linear/sym_tridiagonal.hpp"
 
 #include <cmath>
+#include <string>
+
+#include "granular/error.hpp"
 
 namespace granular {
 
@@ -15,15 +18,13 @@ void SymTridiagonal::multiply(const double* x, double* y) const {
 }
 
 double SymTridiagonal::max_abs() const {
+  // fmax alone would skip a NaN and hand a solver a finite scale for a broken matrix.
   double m = 0;
   for (double d : diagonal) m = std::fmax(m, std::fabs(d));
   for (double e : off_diagonal) m = std::fmax(m, std::fabs(e));
+  if (!std::isfinite(m) || !all_finite()) throw InvalidInput("matrix", ": has NaN or infinite entries");
   return m;
 }
-
-}  // namespace granular
-
-namespace granular {
 
 bool SymTridiagonal::all_finite() const {
   for (double d : diagonal)

@@ -12,7 +12,8 @@ struct SymTridiagonal {
   std::size_t size() const { return diagonal.size(); }
   /// y = T x
   void multiply(const double* x, double* y) const;
-  /// max |entry|, the scale used to keep LAPACK's arithmetic away from over/underflow
+  /// max |entry|, the scale used to keep LAPACK's arithmetic away from over/underflow;
+  /// throws InvalidInput when an entry is NaN or infinite
   double max_abs() const;
   /// false if any entry is NaN or infinite (max_abs alone would skip a NaN)
   bool all_finite() const;

@@ -6,8 +6,8 @@
 #include <string>
 
 #include "granular/error.hpp"
-#include "granular/io/number_format.hpp"
-#include "granular/linear/lapack.hpp"
+#include "granular/number_format.hpp"
+#include "granular/linear/detail/lapack.hpp"
 
 namespace granular {
 
@@ -49,7 +49,7 @@ std::pair<double, double> TridiagonalOperator::spectrum_bounds() const {
 void ShiftInvertOperator::factorize(const SymTridiagonal& t, double sigma) {
   const int n = static_cast<int>(t.size());
   if (n < 1) throw InvalidInput("shift-invert of an empty matrix");
-  if (!std::isfinite(sigma)) throw InvalidInput("shift " + format_number(sigma) + ": must be finite");
+  if (!std::isfinite(sigma)) throw InvalidInput("shift", " " + format_number(sigma) + ": must be finite");
   const double scale = std::max(t.max_abs(), std::fabs(sigma));
   for (int attempt = 0; attempt < 8; ++attempt) {
     dl_.assign(t.off_diagonal.begin(), t.off_diagonal.end());

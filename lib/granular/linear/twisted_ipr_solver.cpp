@@ -1,4 +1,4 @@
-#include "granular/linear/twisted_ipr_solver.hpp"
+#include "granular/linear/detail/twisted_ipr_solver.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,7 @@
 #include <optional>
 
 #include "granular/error.hpp"
-#include "granular/linear/lapack.hpp"
+#include "granular/linear/detail/lapack.hpp"
 
 namespace granular {
 
@@ -107,8 +107,8 @@ class RationalQl {
 
 TwistedModeIpr::TwistedModeIpr(TwistedIprConfig config) : config_(config), fallback_(LapackDriver::stevr) {
   if (!(config_.cluster_gap >= 0) || !(config_.cluster_gap < 1))
-    throw InvalidInput("cluster_gap " + std::to_string(config_.cluster_gap) + ": must be in [0, 1)");
-  if (!(config_.max_residual > 0)) throw InvalidInput("max_residual: must be > 0");
+    throw InvalidInput("cluster_gap", " " + std::to_string(config_.cluster_gap) + ": must be in [0, 1)");
+  if (!(config_.max_residual > 0)) throw InvalidInput("max_residual", ": must be > 0");
 }
 
 void TwistedModeIpr::reserve(std::size_t n) {
@@ -143,7 +143,7 @@ bool TwistedModeIpr::load(Slot& slot, const ModeIprTask& task) {
   const std::vector<double>& s = *task.inverse_sqrt_mass;
   const std::size_t n = t.size();
   if (n < 1) throw InvalidInput("eigen-solve of an empty matrix");
-  if (s.size() != n) throw InvalidInput("inverse_sqrt_mass: size differs from the matrix");
+  if (s.size() != n) throw InvalidInput("inverse_sqrt_mass", ": size differs from the matrix");
   if (t.off_diagonal.size() + 1 != n) throw InvalidInput("tridiagonal matrix: off-diagonal needs n-1 entries");
   // max_abs() skips NaN (fmax), so check every entry: LAPACK may not return on NaN input.
   double scale = 0;

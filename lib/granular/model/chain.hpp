@@ -7,7 +7,7 @@
 #include <cstddef>
 #include <vector>
 
-#include "granular/model/hertz_contact.hpp"
+#include "granular/model/contact_law.hpp"
 #include "granular/model/material.hpp"
 
 namespace granular {
@@ -43,6 +43,9 @@ struct Chain {
 
 /// Builds masses, contact coefficients and static overlaps; throws InvalidInput on bad specs.
 Chain make_chain(const ChainSpec& spec);
+
+/// B_k = (3/2) A_k^{2/3} F0^{1/3} of every bond (N+1 values) [N/m]: the linearized chain.
+std::vector<double> linear_stiffness(const Chain& chain);
 
 /// Convenience: beads of one material with the given radii, flat walls of the same material.
 Chain make_chain(const std::vector<double>& radii, double precompression, const Material& material = steel);

@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "granular/error.hpp"
-#include "granular/io/number_format.hpp"
+#include "granular/number_format.hpp"
 
 namespace granular {
 
@@ -16,7 +16,7 @@ Disorder parse_disorder(std::string_view name) {
   if (s == "A" || s == "ANDERSON") return Disorder::anderson;
   if (s == "RDM1") return Disorder::rdm1;
   if (s == "RDM2") return Disorder::rdm2;
-  throw InvalidInput("--disorder '" + std::string(name) + "': expected one of h, A, RDM1, RDM2");
+  throw InvalidInput("disorder", " '" + std::string(name) + "': expected one of h, A, RDM1, RDM2");
 }
 
 std::string to_string(Disorder d) {
@@ -30,11 +30,11 @@ std::string to_string(Disorder d) {
 }
 
 void validate_probability(double q) {
-  if (!(q >= 0 && q <= 1)) throw InvalidInput("--q " + format_number(q) + ": must be in [0, 1]");
+  if (!(q >= 0 && q <= 1)) throw InvalidInput("q", " " + format_number(q) + ": must be in [0, 1]");
 }
 
 void validate_size_ratio(double xi) {
-  if (!(xi > 0 && xi <= 1)) throw InvalidInput("--xi " + format_number(xi) + ": must be in (0, 1]");
+  if (!(xi > 0 && xi <= 1)) throw InvalidInput("xi", " " + format_number(xi) + ": must be in (0, 1]");
 }
 
 Configuration sample_configuration(Disorder disorder, double q, std::size_t n, RandomStream& stream) {

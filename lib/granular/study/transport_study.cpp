@@ -6,9 +6,9 @@
 #include "granular/dynamics/force_law.hpp"
 #include "granular/dynamics/initial_conditions.hpp"
 #include "granular/ensemble/ensemble_runner.hpp"
-#include "granular/ensemble/mpi_context.hpp"
+#include "granular/parallel/mpi_context.hpp"
 #include "granular/error.hpp"
-#include "granular/io/number_format.hpp"
+#include "granular/number_format.hpp"
 #include "granular/model/chain.hpp"
 
 namespace granular {

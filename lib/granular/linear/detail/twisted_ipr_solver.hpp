@@ -58,7 +58,7 @@
 #include <span>
 #include <vector>
 
-#include "granular/linear/mode_ipr_solver.hpp"
+#include "granular/linear/detail/mode_ipr_solver.hpp"
 
 namespace granular {
 

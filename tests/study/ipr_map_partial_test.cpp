@@ -1,14 +1,12 @@
 // ipr-map with a partial selection (--near/--count or --window): the rows are the selected modes
-// of every realization, the same as partial_spectrum on that chain, for any thread count.
+// of every realization, the same as spectrum() on that chain, for any thread count.
 #include <gtest/gtest.h>
 
 #include "granular/error.hpp"
 #include "granular/linear/dynamical_matrix.hpp"
-#include "granular/linear/ipr_map.hpp"
-#include "granular/linear/mode_ipr.hpp"
-#include "granular/linear/partial_spectrum.hpp"
-#include "granular/model/chain.hpp"
-#include "granular/model/disorder.hpp"
+#include "granular/study/ipr_map.hpp"
+#include "granular/linear/spectrum.hpp"
+#include "granular/model/named_chains.hpp"
 
 namespace granular {
 namespace {
@@ -26,22 +24,17 @@ IprMapConfig small_config() {
 
 TEST(IprMapPartial, RowsAreThePartialSpectraOfEachRealization) {
   IprMapConfig c = small_config();
-  c.selection = SpectrumSelection::nearest(15.0, 6);
-  for (PartialMethod m : {PartialMethod::lapack, PartialMethod::bisect, PartialMethod::arpack}) {
-    c.partial_method = m;
-    c.threads = 2;
-    const auto cells = compute_ipr_map(c);
+  c.selection = nearest(15.0, 6);
+  for (SpectrumMethod m : {SpectrumMethod::lapack, SpectrumMethod::bisect, SpectrumMethod::arpack}) {
+    c.spectrum.method = m;
+    const auto cells = compute_ipr_map(c, {.threads = 2});
     ASSERT_EQ(cells.size(), 2u);
     for (const auto& cell : cells) {
       ASSERT_EQ(cell.ipr.size(), 18u);
       ASSERT_EQ(cell.mode.size(), 18u);
       for (std::size_t r = 0; r < 3; ++r) {
-        const auto types = realization_configuration(c.disorder, 0.5, c.n, c.seed, r);
-        const Chain chain = make_chain(radii_of(types, c.r1, cell.xi), c.precompression);
-        PartialSpectrumConfig pc;
-        pc.method = m;
-        const auto p = partial_spectrum(dynamical_matrix(chain), inverse_sqrt_mass(chain.inverse_mass),
-                                        *c.selection, pc);
+        const Chain chain = rdm1({.N = c.n, .q = 0.5, .xi = cell.xi, .seed = c.seed, .realization = r});
+        const Spectrum p = spectrum(dynamical_matrix(chain), c.selection, {.method = m});
         for (std::size_t j = 0; j < 6; ++j) {
           EXPECT_EQ(cell.realization[6 * r + j], r);
           EXPECT_EQ(cell.mode[6 * r + j], p.mode[j]);
@@ -50,15 +43,15 @@ TEST(IprMapPartial, RowsAreThePartialSpectraOfEachRealization) {
         }
       }
     }
-    c.threads = 1;
-    const auto serial = compute_ipr_map(c);
+    const auto serial = compute_ipr_map(c, {.threads = 1});
     for (std::size_t i = 0; i < cells.size(); ++i) EXPECT_EQ(serial[i].ipr, cells[i].ipr);
   }
 }
 
 TEST(IprMapPartial, WindowsPoolModesAndTheFullPathIsUnchanged) {
   IprMapConfig c = small_config();
-  c.selection = SpectrumSelection::window(20.0, 25.0);
+  c.selection = window(20.0, 25.0);
+  c.spectrum.method = SpectrumMethod::lapack;
   const auto cells = compute_ipr_map(c);
   for (const auto& cell : cells) {
     EXPECT_EQ(cell.mode.size(), cell.ipr.size());
@@ -67,9 +60,10 @@ TEST(IprMapPartial, WindowsPoolModesAndTheFullPathIsUnchanged) {
       EXPECT_LE(f, 25.0);
     }
   }
-  c.selection = SpectrumSelection::nearest(15.0, 401);
+  c.selection = nearest(15.0, 401);
   EXPECT_THROW(compute_ipr_map(c), InvalidInput);
-  c.selection.reset();
+  c.selection = all_modes();
+  c.spectrum.method = SpectrumMethod::fast;
   const auto full = compute_ipr_map(c);
   ASSERT_EQ(full.size(), 2u);
   EXPECT_EQ(full[0].ipr.size(), 400u);

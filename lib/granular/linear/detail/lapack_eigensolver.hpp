@@ -10,18 +10,10 @@
 
 #include <Eigen/Core>
 
+#include "granular/linear/spectrum.hpp"
 #include "granular/linear/sym_tridiagonal.hpp"
 
 namespace granular {
-
-enum class LapackDriver {
-  stevr,  ///< MRRR (dstemr underneath, with a dstebz+dstein fallback of its own)
-  stemr,  ///< MRRR called directly; fails (info 22) on some chains with tight clusters
-  stevd,  ///< divide and conquer: the default, fastest here at n ~ 100 and orthogonal to O(nε)
-  steqr,  ///< implicit QL/QR, the slow and sure one
-};
-std::string_view to_string(LapackDriver driver);
-LapackDriver parse_lapack_driver(std::string_view name);
 
 struct EigenDecomposition {
   Eigen::VectorXd values;   ///< ascending

@@ -37,11 +37,9 @@ ShiftInvertResult slepc_nearest(const SymTridiagonal& t, double sigma, const Shi
 
 /// True when the library was built with SLEPc.
 bool have_slepc();
-/// This process's MPI rank and the number of ranks (0 and 1 without SLEPc/MPI or before MPI starts).
-int mpi_rank();
-int mpi_size();
-/// Starts SLEPc/PETSc/MPI now (passing the command line, e.g. -eps_view) instead of on first use;
-/// finalize_slepc() ends them (also registered with atexit). Both are no-ops without SLEPc.
+/// Starts SLEPc/PETSc now (passing the command line, e.g. -eps_view) instead of on first use;
+/// MPI itself is started by MpiContext (parallel/mpi_context.hpp). finalize_slepc() ends SLEPc
+/// (also registered with atexit). Both are no-ops without SLEPc.
 void initialize_slepc(int* argc, char*** argv);
 void finalize_slepc();
 

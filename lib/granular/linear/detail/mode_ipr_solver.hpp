@@ -7,7 +7,7 @@
 #include <string_view>
 #include <vector>
 
-#include "granular/linear/lapack_eigensolver.hpp"
+#include "granular/linear/detail/lapack_eigensolver.hpp"
 #include "granular/linear/sym_tridiagonal.hpp"
 
 namespace granular {

@@ -1,4 +1,4 @@
-#include "granular/ensemble/mpi_context.hpp"
+#include "granular/parallel/mpi_context.hpp"
 
 #ifdef GRANULAR_HAVE_MPI
 #define OMPI_SKIP_MPICXX 1  // the C API only: no MPI C++ bindings to link
@@ -33,7 +33,18 @@ MpiContext::MpiContext() {
 #ifdef GRANULAR_HAVE_MPI
   int initialized = 0;
   MPI_Initialized(&initialized);
-  if (!initialized && !launched_by_mpi()) return;
+  if (initialized || launched_by_mpi()) start();
+#endif
+}
+
+void MpiContext::require() {
+  if (!active_) start();
+}
+
+void MpiContext::start() {
+#ifdef GRANULAR_HAVE_MPI
+  int initialized = 0;
+  MPI_Initialized(&initialized);
   if (!initialized) {
     int provided = 0;
     MPI_Init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &provided);
@@ -41,6 +52,7 @@ MpiContext::MpiContext() {
   }
   MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
   MPI_Comm_size(MPI_COMM_WORLD, &size_);
+  active_ = true;
 #endif
 }
 

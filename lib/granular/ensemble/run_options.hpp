@@ -1,0 +1,17 @@
+#pragma once
+// How a long computation runs, as opposed to what it computes: threads, checkpoint and resume,
+// progress. Every study and ensemble takes this one type beside its own config.
+#include <string>
+
+#include "granular/ensemble/progress_meter.hpp"
+
+namespace granular {
+
+struct RunOptions {
+  int threads = 0;                    ///< worker threads in this process; 0 = every core. Results do not depend on it.
+  std::string checkpoint{};           ///< file (or prefix) logging finished realizations; empty = none
+  bool resume = false;                ///< continue from `checkpoint` instead of starting afresh
+  ProgressMeter* progress = nullptr;  ///< optional; advanced once per realization done
+};
+
+}  // namespace granular

@@ -1,0 +1,198 @@
+#include "granular/linear/spectrum.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "granular/error.hpp"
+#include "granular/linear/detail/lapack_eigensolver.hpp"
+#include "granular/linear/detail/mode_ipr_solver.hpp"
+#include "granular/linear/detail/partial_spectrum.hpp"
+#include "granular/linear/detail/twisted_ipr_solver.hpp"
+#include "granular/linear/mode_ipr.hpp"
+#include "granular/number_format.hpp"
+
+namespace granular {
+
+std::string_view to_string(SpectrumMethod method) {
+  switch (method) {
+    case SpectrumMethod::lapack: return "lapack";
+    case SpectrumMethod::fast: return "fast";
+    case SpectrumMethod::bisect: return "bisect";
+    case SpectrumMethod::arpack: return "arpack";
+    case SpectrumMethod::slepc: return "slepc";
+  }
+  return "?";
+}
+
+SpectrumMethod parse_spectrum_method(std::string_view name) {
+  for (auto m : {SpectrumMethod::lapack, SpectrumMethod::fast, SpectrumMethod::bisect, SpectrumMethod::arpack,
+                 SpectrumMethod::slepc})
+    if (name == to_string(m)) return m;
+  throw InvalidInput("method", " '" + std::string(name) + "': expected lapack, fast, bisect, arpack or slepc");
+}
+
+void validate(const ModeSelection& s, std::size_t n) {
+  switch (s.kind) {
+    case ModeSelection::Kind::all: return;
+    case ModeSelection::Kind::nearest:
+      if (!std::isfinite(s.near_khz) || s.near_khz < 0)
+        throw InvalidInput("near_khz", " " + format_number(s.near_khz) + ": must be a finite frequency >= 0 kHz");
+      if (s.count < 1) throw InvalidInput("count", " " + std::to_string(s.count) + ": must be >= 1");
+      if (static_cast<unsigned long>(s.count) > n)
+        throw InvalidInput("count", " " + std::to_string(s.count) + ": the chain has only N = " + std::to_string(n) +
+                           " modes");
+      return;
+    case ModeSelection::Kind::window:
+      if (!std::isfinite(s.lo_khz) || !std::isfinite(s.hi_khz) || s.lo_khz < 0 || s.hi_khz < s.lo_khz)
+        throw InvalidInput("window", " " + format_number(s.lo_khz) + ":" + format_number(s.hi_khz) +
+                           ": need finite 0 <= lo_khz <= hi_khz (kHz)");
+      return;
+  }
+}
+
+void validate(const SpectrumConfig& c, const ModeSelection& s) {
+  const bool every = s.kind == ModeSelection::Kind::all;
+  if (every && c.method != SpectrumMethod::lapack && c.method != SpectrumMethod::fast)
+    throw InvalidInput("method", " " + std::string(to_string(c.method)) +
+                       ": computes selected modes; for every mode use lapack or fast");
+  if (!every && c.method == SpectrumMethod::fast)
+    throw InvalidInput("method", " fast: computes every mode; for nearest/window use lapack, bisect, arpack or slepc");
+  if (c.method == SpectrumMethod::fast && c.vectors)
+    throw InvalidInput("vectors", ": method fast computes no eigenvectors (use lapack)");
+  if (c.lanes < 1 || c.lanes > 64) throw InvalidInput("lanes", " " + std::to_string(c.lanes) + ": must be in 1..64");
+  if (!std::isfinite(c.tolerance) || c.tolerance < 0)
+    throw InvalidInput("tolerance", " " + format_number(c.tolerance) + ": must be finite and >= 0");
+  if (c.subspace < 0) throw InvalidInput("subspace", " " + std::to_string(c.subspace) + ": must be >= 0");
+}
+
+struct SpectrumSolver::Workspace {
+  TwistedModeIpr fast;
+  LapackEigensolver lapack;
+  EigenDecomposition eig;
+  explicit Workspace(LapackDriver driver) : lapack(driver) {}
+};
+
+SpectrumSolver::SpectrumSolver(const SpectrumConfig& config)
+    : config_(config), work_(std::make_unique<Workspace>(config.driver)) {}
+SpectrumSolver::~SpectrumSolver() = default;
+SpectrumSolver::SpectrumSolver(SpectrumSolver&&) noexcept = default;
+SpectrumSolver& SpectrumSolver::operator=(SpectrumSolver&&) noexcept = default;
+
+namespace {
+
+void check_matrix(const DynamicalMatrix& d) {
+  const std::size_t n = d.size();
+  if (n < 2) throw InvalidInput("N", " " + std::to_string(n) + ": a chain needs at least 2 beads");
+  if (d.off_diagonal.size() != n - 1)
+    throw InvalidInput("off_diagonal", ": must have N - 1 = " + std::to_string(n - 1) + " entries");
+  if (d.inverse_sqrt_mass.size() != n)
+    throw InvalidInput("inverse_sqrt_mass", ": must have N = " + std::to_string(n) + " entries");
+  if (!d.all_finite()) throw InvalidInput("matrix", ": has NaN or infinite entries");
+  for (double s : d.inverse_sqrt_mass)
+    if (!std::isfinite(s) || !(s > 0)) throw InvalidInput("inverse_sqrt_mass", ": entries must be finite and > 0");
+}
+
+/// Unit length and a fixed sign (largest entry > 0), so methods and runs compare and diff.
+void normalize(double* w, std::size_t n) {
+  double norm2 = 0;
+  std::size_t big = 0;
+  for (std::size_t q = 0; q < n; ++q) {
+    norm2 += w[q] * w[q];
+    if (std::fabs(w[q]) > std::fabs(w[big])) big = q;
+  }
+  const double f = (w[big] < 0 ? -1.0 : 1.0) / std::sqrt(norm2);
+  for (std::size_t q = 0; q < n; ++q) w[q] *= f;
+}
+
+void number_modes(Spectrum& s) {
+  s.mode.resize(s.omega2.size());
+  s.freq_khz.resize(s.omega2.size());
+  for (std::size_t k = 0; k < s.omega2.size(); ++k) {
+    s.mode[k] = k + 1;
+    s.freq_khz[k] = frequency_khz(s.omega2[k]);
+  }
+}
+
+}  // namespace
+
+Spectrum SpectrumSolver::solve(const DynamicalMatrix& d, const ModeSelection& selection) {
+  check_matrix(d);
+  validate(selection, d.size());
+  validate(config_, selection);
+  const std::size_t n = d.size();
+  Spectrum out;
+  out.beads = n;
+  if (selection.kind == ModeSelection::Kind::all) {
+    if (config_.method == SpectrumMethod::fast) {
+      const TwistedIprInfo before = work_->fast.info();
+      work_->fast.solve(d, d.inverse_sqrt_mass, out.omega2, out.ipr);
+      const TwistedIprInfo& after = work_->fast.info();
+      out.info.method = "fast";
+      out.info.fallbacks = static_cast<int>(after.fallbacks - before.fallbacks);
+      out.info.clusters = after.clusters - before.clusters;
+    } else {
+      EigenDecomposition& eig = work_->eig;
+      work_->lapack.solve(d, true, eig);  // the IPRs need the vectors
+      out.omega2.assign(eig.values.data(), eig.values.data() + n);
+      out.ipr.resize(n);
+      for (std::size_t k = 0; k < n; ++k)
+        out.ipr[k] = displacement_ipr(eig.vectors.col(static_cast<Eigen::Index>(k)).data(), d.inverse_sqrt_mass.data(), n);
+      if (config_.vectors) {
+        out.vectors.assign(eig.vectors.data(), eig.vectors.data() + n * n);
+        for (std::size_t k = 0; k < n; ++k) normalize(out.vectors.data() + k * n, n);
+      }
+      out.info.method = "lapack-" + std::string(to_string(eig.driver));
+      out.info.fallbacks = eig.fallbacks;
+    }
+    out.info.candidates = static_cast<int>(n);
+    number_modes(out);
+    return out;
+  }
+  PartialSpectrumConfig pc;
+  pc.method = config_.method;
+  pc.keep_vectors = config_.vectors;
+  pc.tolerance = config_.tolerance;
+  pc.subspace = config_.subspace;
+  pc.lanes = config_.lanes;
+  PartialSpectrum p = partial_spectrum(d, d.inverse_sqrt_mass, selection, pc);
+  out.mode = std::move(p.mode);
+  out.omega2 = std::move(p.omega2);
+  out.freq_khz = std::move(p.freq_khz);
+  out.ipr = std::move(p.ipr);
+  out.residual = std::move(p.residual);
+  if (config_.vectors) out.vectors.assign(p.vectors.data(), p.vectors.data() + p.vectors.size());
+  out.info.method = std::move(p.method);
+  out.info.restarts = p.restarts;
+  out.info.candidates = p.candidates;
+  for (double r : out.residual) out.info.max_residual = std::max(out.info.max_residual, r);
+  return out;
+}
+
+void SpectrumSolver::solve_all(std::span<const DynamicalMatrix* const> matrices, std::span<Spectrum> out) {
+  if (out.size() != matrices.size()) throw InvalidInput("out", ": must have one Spectrum per matrix");
+  if (config_.method != SpectrumMethod::fast) {
+    for (std::size_t i = 0; i < matrices.size(); ++i) out[i] = solve(*matrices[i]);
+    return;
+  }
+  std::vector<ModeIprTask> tasks(matrices.size());
+  for (std::size_t i = 0; i < matrices.size(); ++i) {
+    const DynamicalMatrix& d = *matrices[i];
+    check_matrix(d);
+    out[i] = Spectrum{};
+    out[i].beads = d.size();
+    tasks[i] = {&d, &d.inverse_sqrt_mass, &out[i].omega2, &out[i].ipr};
+  }
+  work_->fast.solve_batch(tasks);
+  for (Spectrum& s : out) {  // clusters and fallbacks of a batch are not split per chain: left 0
+    number_modes(s);
+    s.info.method = "fast";
+    s.info.candidates = static_cast<int>(s.beads);
+  }
+}
+
+Spectrum spectrum(const DynamicalMatrix& d, const ModeSelection& selection, const SpectrumConfig& config) {
+  return SpectrumSolver(config).solve(d, selection);
+}
+
+}  // namespace granular

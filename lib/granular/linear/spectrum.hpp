@@ -1,0 +1,138 @@
+#pragma once
+// The linear spectrum of a chain in one call (SPEC §3): every mode, the K modes nearest a
+// frequency, or every mode in a frequency window — frequencies, displacement IPRs and, if asked,
+// the eigenvectors — by any of the solvers, with a separate report of what ran.
+//
+//   auto d    = granular::dynamical_matrix(chain);
+//   auto all  = granular::spectrum(d);                                     // every mode
+//   auto near = granular::spectrum(d, granular::nearest(15.0, 20),         // 20 modes nearest 15 kHz
+//                                  {.method = granular::SpectrumMethod::bisect});
+//
+// Modes are numbered 1…N by increasing frequency in the full spectrum; a partial result carries
+// those numbers. "Nearest" means nearest in frequency |f − f0| (ties: the lower mode first).
+// Which method for which job:
+//   every mode:   lapack (default; LAPACK driver `driver`, eigenvectors available) or fast
+//                 (eigenvalues + one twisted factorization per mode: ~5× faster, no eigenvectors;
+//                 the IPR map's default);
+//   nearest/window: lapack (dstemr by index), bisect (many-shift Sturm bisection + inverse
+//                 iteration: the fastest for long chains, O(N) memory per 8 modes), arpack or slepc
+//                 (shift-invert Krylov; slepc is collective over MPI ranks: under mpirun every rank
+//                 calls it with the same matrix and gets the same result).
+#include <cstddef>
+#include <memory>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "granular/linear/dynamical_matrix.hpp"
+
+namespace granular {
+
+/// Which modes.
+struct ModeSelection {
+  enum class Kind { all, nearest, window } kind = Kind::all;
+  double near_khz = 0;  ///< nearest: target frequency [kHz], finite, ≥ 0
+  long count = 0;       ///< nearest: how many modes, 1 ≤ count ≤ N
+  double lo_khz = 0;    ///< window: [lo_khz, hi_khz] in kHz, 0 ≤ lo ≤ hi, both ends included
+  double hi_khz = 0;
+};
+/// Every mode.
+inline ModeSelection all_modes() { return {}; }
+/// The `count` modes nearest `khz` [kHz] in frequency.
+inline ModeSelection nearest(double khz, long count) { return {ModeSelection::Kind::nearest, khz, count, 0, 0}; }
+/// Every mode with lo_khz ≤ f ≤ hi_khz [kHz] (may be empty).
+inline ModeSelection window(double lo_khz, double hi_khz) {
+  return {ModeSelection::Kind::window, 0, 0, lo_khz, hi_khz};
+}
+
+/// Throws InvalidInput (naming near_khz, count or window) unless the selection makes sense for an
+/// N-bead chain: count ≤ 0 or > N is an error; near_khz above the spectrum is not (it selects the
+/// top modes); a window without modes is valid and gives an empty result.
+void validate(const ModeSelection& selection, std::size_t beads);
+
+enum class SpectrumMethod { lapack, fast, bisect, arpack, slepc };
+std::string_view to_string(SpectrumMethod method);
+/// "lapack" | "fast" | "bisect" | "arpack" | "slepc"; throws InvalidInput naming `method`.
+SpectrumMethod parse_spectrum_method(std::string_view name);
+
+/// LAPACK driver of the full spectrum (method lapack, every mode).
+enum class LapackDriver {
+  stevr,  ///< MRRR (dstemr underneath, with a dstebz+dstein fallback of its own)
+  stemr,  ///< MRRR called directly; fails (info 22) on some chains with tight clusters
+  stevd,  ///< divide and conquer: the default, fastest here at n ~ 100 and orthogonal to O(nε)
+  steqr,  ///< implicit QL/QR, the slow and sure one
+};
+std::string_view to_string(LapackDriver driver);
+/// "stevr" | "stemr" | "stevd" | "steqr"; throws InvalidInput naming `driver`.
+LapackDriver parse_lapack_driver(std::string_view name);
+
+struct SpectrumConfig {
+  SpectrumMethod method = SpectrumMethod::lapack;
+  LapackDriver driver = LapackDriver::stevd;  ///< lapack, every mode: preferred driver (others are fallbacks)
+  bool vectors = false;       ///< also return the eigenvectors (not with fast)
+  double tolerance = 0;       ///< arpack/slepc: Ritz tolerance; 0 = each method's tightest default
+  int subspace = 0;           ///< arpack/slepc: Krylov basis size; 0 = max(2K + 1, 20)
+  std::size_t lanes = 8;      ///< bisect: eigenvectors computed together, 1…64 (memory 2 N × lanes doubles)
+};
+
+/// Throws InvalidInput (naming the field) on a method that cannot do the selection, fast with
+/// vectors, or lanes outside 1…64.
+void validate(const SpectrumConfig& config, const ModeSelection& selection);
+
+/// What the solver did: for reports and for reproducing a result.
+struct SpectrumInfo {
+  std::string method;         ///< what ran: "fast", "lapack-stevd", "lapack-stemr", "bisect", "arpack", "slepc"
+  int fallbacks = 0;          ///< drivers that failed before the one that ran (lapack), chains that fell back (fast)
+  int restarts = 0;           ///< arpack/slepc outer iterations
+  int candidates = 0;         ///< eigenpairs computed to select from (≥ the modes returned)
+  double max_residual = 0;    ///< max ‖D w − ω² w‖ / max|D_ij| over returned unit vectors (0 when not computed)
+  std::size_t clusters = 0;   ///< fast: near-degenerate clusters (relative gap < 1e-10) given their most localized basis
+};
+
+/// The selected modes, by increasing frequency.
+struct Spectrum {
+  std::vector<std::size_t> mode;  ///< mode numbers 1…N in the full spectrum
+  std::vector<double> omega2;     ///< eigenvalues ω² of D [1/s²]
+  std::vector<double> freq_khz;   ///< f = ω/2π [kHz]
+  std::vector<double> ipr;        ///< displacement IPR Σv⁴/(Σv²)², v = M^{-1/2} w, in (0, 1]
+  std::vector<double> residual;   ///< per mode ‖D w − ω² w‖ / max|D_ij| (partial methods; empty for every-mode)
+  /// N × size() unit eigenvectors w of D, column-major (mode j at [j·N, (j+1)·N)), sign fixed by a
+  /// positive largest entry; empty unless SpectrumConfig::vectors. Displacements: v = w ⊙ m^{-1/2}.
+  std::vector<double> vectors;
+  std::size_t beads = 0;          ///< N
+  SpectrumInfo info;
+
+  std::size_t size() const { return omega2.size(); }
+  /// Eigenvector w of mode j (0-based position in this result); needs vectors.
+  std::span<const double> vector(std::size_t j) const { return {vectors.data() + j * beads, beads}; }
+};
+
+/// Keeps the solvers' workspaces between calls: use one per thread for loops over many chains.
+class SpectrumSolver {
+ public:
+  explicit SpectrumSolver(const SpectrumConfig& config = {});
+  ~SpectrumSolver();
+  SpectrumSolver(SpectrumSolver&&) noexcept;
+  SpectrumSolver& operator=(SpectrumSolver&&) noexcept;
+
+  /// The selected modes of `d`. Throws InvalidInput (bad selection/config, non-finite matrix) or
+  /// NumericalError (every solver failed).
+  Spectrum solve(const DynamicalMatrix& d, const ModeSelection& selection = all_modes());
+  /// Every mode of several chains; out[i] is exactly what solve(*matrices[i]) gives (fast
+  /// overlaps the chains' serial recurrences, up to 4 at a time), except that info.clusters and
+  /// info.fallbacks stay 0.
+  void solve_all(std::span<const DynamicalMatrix* const> matrices, std::span<Spectrum> out);
+  const SpectrumConfig& config() const { return config_; }
+
+ private:
+  struct Workspace;
+  SpectrumConfig config_;
+  std::unique_ptr<Workspace> work_;
+};
+
+/// One call: SpectrumSolver(config).solve(d, selection).
+Spectrum spectrum(const DynamicalMatrix& d, const ModeSelection& selection = all_modes(),
+                  const SpectrumConfig& config = {});
+
+}  // namespace granular

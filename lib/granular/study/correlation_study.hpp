@@ -1,0 +1,36 @@
+#pragma once
+// The ensemble of bead-type correlations (SPEC §2 "Correlations"): the mean and spread over
+// realizations of the Pearson coefficient ρ(d) of a configuration with its cyclic shift by d,
+// beside the infinite-chain formula the ensemble mean should approach.
+#include <cstdint>
+#include <vector>
+
+#include "granular/ensemble/run_options.hpp"
+#include "granular/model/disorder.hpp"
+
+namespace granular {
+
+struct CorrelationConfig {
+  Disorder disorder = Disorder::anderson;  ///< A, RDM1 or RDM2 (h has one type: no coefficient)
+  double q = 0.5;                          ///< probability in [0, 1]
+  std::size_t n = 100;                     ///< beads per chain, ≥ 2
+  std::size_t realizations = 100;
+  std::uint64_t seed = 1;
+  std::size_t max_distance = 10;           ///< largest shift d, < N
+};
+
+struct CorrelationResult {
+  std::vector<double> mean;       ///< ρ(d) averaged over the realizations used, d = 0 … max_distance
+  std::vector<double> deviation;  ///< their sample standard deviation (0 with one realization)
+  std::vector<double> theory;     ///< infinite-chain ρ(d) (NaN where undefined)
+  std::size_t used = 0;           ///< realizations with both types (a one-type chain has no ρ and is skipped)
+};
+
+/// Throws InvalidInput (naming the field) on a bad config.
+void validate(const CorrelationConfig& config);
+
+/// Bit-identical for any thread count (run.threads; run.progress advanced per realization).
+/// Throws InvalidInput when every realization has one bead type only.
+CorrelationResult correlation_study(const CorrelationConfig& config, const RunOptions& run = {});
+
+}  // namespace granular

@@ -1,0 +1,53 @@
+#pragma once
+// Mean frequency and IPR of every mode over realizations, on a grid of (q, ξ) (SPEC §3; the
+// paper's IPR-map figure), or the selected modes (nearest/window) of every realization.
+// Realization r of a cell uses the bead types of realization r of the seed, so all ξ of one q
+// share their configurations (common random numbers).
+#include <cstdint>
+#include <vector>
+
+#include "granular/ensemble/run_options.hpp"
+#include "granular/linear/spectrum.hpp"
+#include "granular/model/disorder.hpp"
+#include "granular/model/material.hpp"
+
+namespace granular {
+
+struct IprMapConfig {
+  Disorder disorder = Disorder::anderson;
+  std::vector<double> q_values{0.2, 0.5, 0.8};  ///< probabilities in [0, 1]
+  std::vector<double> xi_values;      ///< size ratios R2/R1 in (0, 1]
+  std::size_t n = 100;                ///< beads per chain, ≥ 2
+  double precompression = 10;         ///< F0 [N], > 0
+  std::size_t realizations = 100;
+  std::uint64_t seed = 1;
+  double r1 = 4.76e-3;                ///< type-1 radius [m]
+  Material material = steel;
+  /// Every mode (averaged over realizations by mode number) or a nearest/window selection (every
+  /// selected mode of every realization, not averaged: mode numbers and counts differ between chains).
+  ModeSelection selection = all_modes();
+  /// The solver: every mode by fast (default) or lapack; a selection by lapack, bisect or arpack
+  /// (arpack runs on one thread: ARPACK keeps state in Fortran SAVE variables; slepc is refused:
+  /// the map solves one chain per thread, while SLEPc is collective over MPI ranks).
+  SpectrumConfig spectrum{.method = SpectrumMethod::fast};
+};
+
+struct IprMapCell {
+  double q = 0, xi = 0;
+  std::vector<double> freq_khz;  ///< every mode: mean over realizations, mode k at index k-1
+  std::vector<double> ipr;       ///< every mode: mean over realizations
+  /// With a selection: every selected mode of every realization is one row, realization-major,
+  /// by increasing frequency; `mode` holds its mode number and `realization` its realization.
+  /// Both stay empty for every mode.
+  std::vector<std::size_t> mode;
+  std::vector<std::uint64_t> realization;
+};
+
+/// Throws InvalidInput (naming the field) on a bad config, before any work starts.
+void validate(const IprMapConfig& config);
+
+/// One cell per (q, ξ), q-major. Bit-identical for any thread count. Uses run.threads and
+/// run.progress (advanced once per chain solved); no checkpoints (the default map takes seconds).
+std::vector<IprMapCell> compute_ipr_map(const IprMapConfig& config, const RunOptions& run = {});
+
+}  // namespace granular
