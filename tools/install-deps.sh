@@ -12,7 +12,7 @@ packages=(
   libcli11-dev nlohmann-json3-dev librandom123-dev
   openmpi-bin libopenmpi-dev petsc-dev slepc-dev
   python3 python3-numpy python3-scipy python3-matplotlib python3-h5py
-  clang libclang-rt-14-dev
+  clang libclang-rt-14-dev clang-format
 )
 
 missing=()
