@@ -4,6 +4,7 @@
 // model (which chain), dynamics (how one realization evolves), ensemble (how many, where) and
 // analysis (what the averages say) meet; none of them knows about the others.
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <string>
 #include <vector>
@@ -65,6 +66,7 @@ struct StudyRunOptions {
   std::string checkpoint;   ///< empty: none
   bool resume = false;
   ProgressMeter* progress = nullptr;
+  std::function<bool()> cancelled{};  ///< see RunOptions::cancelled
 };
 
 /// Runs (or resumes) the ensemble; under mpirun only rank 0 gets a filled summary.

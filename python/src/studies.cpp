@@ -1,0 +1,255 @@
+// The linear studies: granular.ipr_map (the paper's IPR map) and granular.correlations (the
+// ensemble of bead-type correlations). Both run long: the GIL is released, threads= spreads the
+// chains over cores (results do not depend on it), progress=True draws a bar, Ctrl-C stops them.
+#include <string>
+
+#include "bindings.hpp"
+#include "granular/error.hpp"
+#include "granular/ensemble/parallel_realizations.hpp"
+#include "granular/ensemble/run_options.hpp"
+#include "granular/model/named_chains.hpp"
+#include "granular/study/correlation_study.hpp"
+#include "granular/study/ipr_map.hpp"
+
+namespace granular::python {
+namespace {
+
+struct PyIprMap {
+  IprMapConfig config;
+  std::vector<IprMapCell> cells;
+  nlohmann::json metadata;
+  bool selection() const { return config.selection.kind != ModeSelection::Kind::all; }
+};
+
+/// Every mode: Q × X × N of one field of the cells; with a selection: the rows, concatenated.
+py::array_t<double> gather(const PyIprMap& map, std::vector<double> IprMapCell::*field) {
+  std::vector<double> out;
+  for (const auto& cell : map.cells) out.insert(out.end(), (cell.*field).begin(), (cell.*field).end());
+  if (map.selection()) return to_numpy(std::move(out));
+  const std::size_t q = map.config.q_values.size(), x = map.config.xi_values.size(), n = map.config.n;
+  auto* owner = new std::vector<double>(std::move(out));
+  py::capsule base(owner, [](void* p) { delete static_cast<std::vector<double>*>(p); });
+  return py::array_t<double>({q, x, n}, {x * n * sizeof(double), n * sizeof(double), sizeof(double)}, owner->data(),
+                             base);
+}
+
+py::dict ipr_map_rows(const PyIprMap& map) {
+  std::vector<double> q, xi, freq, ipr;
+  std::vector<long long> mode, realization;
+  for (const auto& cell : map.cells) {
+    const std::size_t rows = cell.freq_khz.size();
+    for (std::size_t j = 0; j < rows; ++j) {
+      q.push_back(cell.q);
+      xi.push_back(cell.xi);
+      mode.push_back(map.selection() ? static_cast<long long>(cell.mode[j]) : static_cast<long long>(j + 1));
+      if (map.selection()) realization.push_back(static_cast<long long>(cell.realization[j]));
+      freq.push_back(cell.freq_khz[j]);
+      ipr.push_back(cell.ipr[j]);
+    }
+  }
+  py::dict d;
+  d["q"] = to_numpy(std::move(q));
+  d["xi"] = to_numpy(std::move(xi));
+  if (map.selection()) d["realization"] = to_numpy(std::move(realization));
+  d["mode"] = to_numpy(std::move(mode));
+  d["freq_khz"] = to_numpy(std::move(freq));
+  d["ipr"] = to_numpy(std::move(ipr));
+  return d;
+}
+
+struct PyCorrelations {
+  CorrelationResult result;
+  nlohmann::json metadata;
+};
+
+int thread_count(long long threads) { return static_cast<int>(checked_size(threads, "threads", 0, 4096)); }
+
+}  // namespace
+
+void bind_studies(py::module_& m) {
+  py::class_<PyIprMap>(m, "IprMap",
+                       "The result of granular.ipr_map. Every mode: freq_khz and ipr are (len(q), len(xi), N) arrays "
+                       "of means over the realizations (mode k at index k-1). With near/count or window: one entry "
+                       "per selected mode of every realization (see rows()).")
+      .def_property_readonly("disorder", [](const PyIprMap& p) { return to_string(p.config.disorder); },
+                             "h | A | RDM1 | RDM2")
+      .def_property_readonly("q", [](const PyIprMap& p) { return to_numpy(p.config.q_values); }, "the q grid")
+      .def_property_readonly("xi", [](const PyIprMap& p) { return to_numpy(p.config.xi_values); },
+                             "the xi grid (R2/R1)")
+      .def_property_readonly("N", [](const PyIprMap& p) { return p.config.n; }, "beads per chain")
+      .def_property_readonly("selection", &PyIprMap::selection, "True when made with near/count or window")
+      .def_property_readonly(
+          "freq_khz", [](const PyIprMap& p) { return gather(p, &IprMapCell::freq_khz); },
+          "mean mode frequencies [kHz], (len(q), len(xi), N); with a selection, one per row")
+      .def_property_readonly(
+          "ipr", [](const PyIprMap& p) { return gather(p, &IprMapCell::ipr); },
+          "mean displacement IPRs, (len(q), len(xi), N); with a selection, one per row")
+      .def("rows", &ipr_map_rows,
+           "The ipr-map tool's CSV columns as arrays: q, xi, [realization,] mode, freq_khz [kHz], ipr (one row per "
+           "(q, xi, mode), or per selected mode of each realization)")
+      .def_property_readonly("metadata", [](const PyIprMap& p) { return to_python(p.metadata); },
+                             "the ipr-map tool's JSON: parameters (disorder, xi, q, N, F0_N, R1_m, material, "
+                             "realizations, seed, threads, solver), selection, version")
+      .def("__repr__", [](const PyIprMap& p) {
+        return "<granular.IprMap " + to_string(p.config.disorder) + ", " + std::to_string(p.config.q_values.size()) +
+               " q x " + std::to_string(p.config.xi_values.size()) + " xi, N=" + std::to_string(p.config.n) + ">";
+      });
+
+  m.def(
+      "ipr_map",
+      [](const std::string& disorder, const py::object& xi, const py::object& q, long long N, double F0, double R1,
+         long long realizations, long long seed, const std::string& solver, const py::object& near,
+         const py::object& count, const py::object& window, const py::object& method, long long threads,
+         bool progress) {
+        PyIprMap map;
+        IprMapConfig& c = map.config;
+        c.disorder = disorder_of(disorder);
+        c.xi_values = number_list(xi, "xi", 0.01);
+        c.q_values = number_list(q, "q", 0.1);
+        c.n = checked_size(N, "N", 2, 100000000);
+        c.precompression = F0;
+        c.r1 = R1;
+        c.realizations = checked_size(realizations, "realizations", 1);
+        c.seed = checked_size(seed, "seed");
+        const int thread_request = thread_count(threads);
+        if (solver != "fast" && solver != "lapack" && !solver.starts_with("lapack-"))
+          bad_value("solver", " '" + solver + "': expected fast, lapack or lapack-<stevr|stemr|stevd|steqr>");
+        c.spectrum.method = solver == "fast" ? SpectrumMethod::fast : SpectrumMethod::lapack;
+        if (solver.starts_with("lapack-")) c.spectrum.driver = parse_lapack_driver(solver.substr(7));
+        const bool selected = !near.is_none() || !count.is_none() || !window.is_none();
+        std::string method_name = method.is_none() ? "lapack" : method.cast<std::string>();
+        if (selected) {
+          if (!window.is_none()) {
+            if (!near.is_none() || !count.is_none()) bad_value("window", ": cannot be combined with near/count");
+            const std::vector<double> w = double_vector(window, "window", false);
+            if (w.size() != 2) bad_value("window", ": expected (lo, hi) in kHz");
+            c.selection = granular::window(w[0], w[1]);
+          } else {
+            if (count.is_none()) bad_value("near", ": needs count (how many modes)");
+            if (near.is_none()) bad_value("count", ": needs near (the target frequency in kHz)");
+            const long long k = count.cast<long long>();
+            if (k < 1) bad_value("count", " " + std::to_string(k) + ": must be >= 1");
+            c.selection = nearest(near.cast<double>(), static_cast<long>(std::min<long long>(k, 1LL << 40)));
+          }
+          c.spectrum.method = parse_spectrum_method(method_name);
+          if (c.spectrum.method == SpectrumMethod::fast)
+            bad_value("method", " fast: computes every mode; use lapack, bisect or arpack with near/window");
+        } else if (!method.is_none()) {
+          bad_value("method", ": only with near/count or window (the full map uses solver=)");
+        }
+        validate(c);
+
+        run_long("ipr_map", c.q_values.size() * c.xi_values.size() * c.realizations, progress,
+                 [&](const LongRun& control) {
+                   RunOptions run;
+                   run.threads = thread_request;
+                   run.progress = control.meter;
+                   run.cancelled = control.cancelled;
+                   map.cells = compute_ipr_map(c, run);
+                 });
+
+        nlohmann::json meta = metadata_head("ipr_map");
+        meta["parameters"] = {{"disorder", to_string(c.disorder)},
+                              {"xi", c.xi_values},
+                              {"q", c.q_values},
+                              {"N", c.n},
+                              {"F0_N", c.precompression},
+                              {"R1_m", c.r1},
+                              {"material", material_json(c.material)},
+                              {"walls", "flat, same material as the beads"},
+                              {"realizations", c.realizations},
+                              {"seed", c.seed},
+                              {"threads", resolve_threads(thread_request)},
+                              {"solver", solver}};
+        if (selected) {
+          const ModeSelection& s = c.selection;
+          const bool by_window = s.kind == ModeSelection::Kind::window;
+          meta["selection"] = {
+              {"method", method_name},
+              {"near_khz", by_window ? nlohmann::json(nullptr) : nlohmann::json(s.near_khz)},
+              {"count", by_window ? nlohmann::json(nullptr) : nlohmann::json(s.count)},
+              {"window_khz", by_window ? nlohmann::json{s.lo_khz, s.hi_khz} : nlohmann::json(nullptr)}};
+        }
+        map.metadata = std::move(meta);
+        return map;
+      },
+      py::kw_only(), py::arg("disorder") = "A", py::arg("xi") = "0.1:1", py::arg("q") = "0.2,0.5,0.8",
+      py::arg("N") = 100, py::arg("F0") = 10.0, py::arg("R1") = paper_r1, py::arg("realizations") = 100,
+      py::arg("seed") = 1, py::arg("solver") = "fast", py::arg("near") = py::none(), py::arg("count") = py::none(),
+      py::arg("window") = py::none(), py::arg("method") = py::none(), py::arg("threads") = 0,
+      py::arg("progress") = false,
+      "Mean frequency [kHz] and displacement IPR of every mode of disordered chains over realizations, on a (q, xi) "
+      "grid: the paper's IPR map, as the ipr-map tool computes it (same numbers for the same keywords).\n\n"
+      "    disorder: 'h' | 'A' | 'RDM1' | 'RDM2'\n"
+      "    xi, q: size ratios R2/R1 in (0, 1] and probabilities in [0, 1]: sequences, numbers, or the tools' range "
+      "strings ('0.1:1' = 0.1, 0.11, ..., 1; '0.1:1:0.05'; '0.2,0.5,0.8')\n"
+      "    N: beads per chain; F0: precompression [N] (> 0); R1: type-1 radius [m]\n"
+      "    realizations, seed: chains averaged per cell; realization r of seed s is always the same chain, and all "
+      "xi of one q share the bead sequences\n"
+      "    solver: 'fast' (default) | 'lapack' | 'lapack-stevr' | 'lapack-stemr' | 'lapack-stevd' | 'lapack-steqr'\n"
+      "    near, count / window: partial spectra (every selected mode of every realization, not averaged) by "
+      "method = 'lapack' | 'bisect' | 'arpack'\n"
+      "    threads: worker threads (0: every core); the result does not depend on it\n"
+      "    progress: draw a progress bar on stderr\n"
+      "Returns a granular.IprMap. Releases the GIL; Ctrl-C stops it (KeyboardInterrupt) after the cell in flight.");
+
+  py::class_<PyCorrelations>(m, "Correlations",
+                             "The result of granular.correlations: rho(d) for d = 0..max_distance over realizations, "
+                             "with the infinite-chain formula.")
+      .def_property_readonly(
+          "distance",
+          [](const PyCorrelations& p) {
+            std::vector<long long> d(p.result.mean.size());
+            for (std::size_t i = 0; i < d.size(); ++i) d[i] = static_cast<long long>(i);
+            return to_numpy(std::move(d));
+          },
+          "d = 0..max_distance [beads]")
+      .def_property_readonly("rho_mean", [](const PyCorrelations& p) { return to_numpy(p.result.mean); },
+                             "ensemble mean of rho(d)")
+      .def_property_readonly("rho_std", [](const PyCorrelations& p) { return to_numpy(p.result.deviation); },
+                             "sample standard deviation of rho(d) over the realizations")
+      .def_property_readonly("rho_theory", [](const PyCorrelations& p) { return to_numpy(p.result.theory); },
+                             "infinite-chain rho(d) (NaN where undefined)")
+      .def_property_readonly("used", [](const PyCorrelations& p) { return p.result.used; },
+                             "realizations with both bead types (one-type chains have no rho and are skipped)")
+      .def_property_readonly("metadata", [](const PyCorrelations& p) { return to_python(p.metadata); },
+                             "the correlations tool's JSON: parameters, realizations_used, version");
+
+  m.def(
+      "correlations",
+      [](const std::string& disorder, double q, long long N, long long realizations, long long seed,
+         long long max_distance, long long threads, bool progress) {
+        CorrelationConfig c;
+        c.disorder = disorder_of(disorder);
+        c.q = q;
+        c.n = checked_size(N, "N", 2, 100000000);
+        c.realizations = checked_size(realizations, "realizations", 1);
+        c.seed = checked_size(seed, "seed");
+        c.max_distance = checked_size(max_distance, "max_distance");
+        const int thread_request = thread_count(threads);
+        validate(c);
+        PyCorrelations out;
+        run_long("correlations", c.realizations, progress, [&](const LongRun& control) {
+          RunOptions run;
+          run.threads = thread_request;
+          run.progress = control.meter;
+          run.cancelled = control.cancelled;
+          out.result = correlation_study(c, run);
+        });
+        out.metadata = metadata_head("correlations");
+        out.metadata["parameters"] = {{"disorder", to_string(c.disorder)}, {"q", c.q},
+                                      {"N", c.n},                          {"realizations", c.realizations},
+                                      {"seed", c.seed},                    {"max_distance", c.max_distance}};
+        out.metadata["realizations_used"] = out.result.used;
+        return out;
+      },
+      py::kw_only(), py::arg("disorder") = "A", py::arg("q") = 0.5, py::arg("N") = 100, py::arg("realizations") = 100,
+      py::arg("seed") = 1, py::arg("max_distance") = 10, py::arg("threads") = 0, py::arg("progress") = false,
+      "Ensemble mean and spread of the Pearson coefficient rho(d) of bead types (type 1 -> 0, type 2 -> 1) with their "
+      "cyclic shift by d, beside the infinite-chain formula: the correlations tool.\n\n"
+      "    disorder: 'A' | 'RDM1' | 'RDM2'; q in [0, 1]; N beads; realizations, seed; max_distance < N\n"
+      "    threads: worker threads (0: every core); progress: draw a progress bar\n"
+      "Returns a granular.Correlations (distance, rho_mean, rho_std, rho_theory, used, metadata).");
+}
+
+}  // namespace granular::python
