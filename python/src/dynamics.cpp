@@ -448,7 +448,15 @@ void bind_dynamics(py::module_& m) {
          long long threads, const py::object& checkpoint, bool resume, bool progress) {
         ExponentTableConfig config;
         config.chains.clear();
-        for (const auto& name : chains) config.chains.push_back(disorder_of(name));
+        for (const auto& name : chains) {
+          try {
+            config.chains.push_back(parse_disorder(name));
+          } catch (const InvalidInput&) {
+            bad_value("chains", " '" + name + "': expected h, A, RDM1 or RDM2");
+          }
+        }
+        if (config.chains.empty()) bad_value("chains", ": none given");
+        if (ic.empty()) bad_value("ic", ": none given");
         config.precompressions = number_list(F0, "F0", 0);
         config.kicks.clear();
         for (const auto& name : ic) config.kicks.push_back(parse_kick(name));

@@ -115,7 +115,13 @@ void bind_studies(py::module_& m) {
         if (solver != "fast" && solver != "lapack" && !solver.starts_with("lapack-"))
           bad_value("solver", " '" + solver + "': expected fast, lapack or lapack-<stevr|stemr|stevd|steqr>");
         c.spectrum.method = solver == "fast" ? SpectrumMethod::fast : SpectrumMethod::lapack;
-        if (solver.starts_with("lapack-")) c.spectrum.driver = parse_lapack_driver(solver.substr(7));
+        if (solver.starts_with("lapack-")) {
+          try {
+            c.spectrum.driver = parse_lapack_driver(solver.substr(7));
+          } catch (const InvalidInput&) {
+            bad_value("solver", " '" + solver + "': expected fast, lapack or lapack-<stevr|stemr|stevd|steqr>");
+          }
+        }
         const bool selected = !near.is_none() || !count.is_none() || !window.is_none();
         std::string method_name = method.is_none() ? "lapack" : method.cast<std::string>();
         if (selected) {

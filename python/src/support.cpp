@@ -23,7 +23,7 @@ std::string keyword_of(const std::string& parameter) {
   static const std::map<std::string, std::string> synonyms{
       {"precompression", "F0"}, {"n", "N"},           {"r1", "R1"},           {"near_khz", "near"},
       {"lo_khz", "window"},     {"hi_khz", "window"}, {"time_step", "dt"},    {"duration", "T"},
-      {"selection", "near"},    {"driver", "solver"}, {"max_distance", "max_distance"}};
+      {"selection", "near"}};
   std::string name = parameter;
   if (name.starts_with("--")) {  // a legacy message naming a flag: --force-law → force_law
     name = name.substr(2);
