@@ -1,6 +1,7 @@
 """One look for every figure: sizes that read on a slide, units on every axis, log axes with
 decades labelled, the band edges drawn the same way everywhere."""
 import contextlib
+import io
 import math
 
 import matplotlib
@@ -43,10 +44,19 @@ def style():
         yield
 
 
+class GranularFigure(Figure):
+    """A matplotlib Figure that needs no pyplot: a notebook shows it (as PNG) when a cell returns it,
+    once, and it is garbage-collected when dropped (pyplot would keep every figure open)."""
+
+    def _repr_png_(self):
+        buffer = io.BytesIO()
+        self.savefig(buffer, format="png", dpi=100, bbox_inches="tight")
+        return buffer.getvalue()
+
+
 def figure(width, height, **kwargs):
-    """A Figure not registered with pyplot: returned to the caller (a notebook shows it once),
-    saved by the command line, garbage-collected when dropped."""
-    return Figure(figsize=(width, height), layout="constrained", **kwargs)
+    """A new figure of width x height inches with constrained layout."""
+    return GranularFigure(figsize=(width, height), layout="constrained", **kwargs)
 
 
 def log_ticks(axis):
