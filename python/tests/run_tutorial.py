@@ -21,7 +21,8 @@ def main():
     p.add_argument("--budget", type=float, default=120, help="seconds (the tutorial aims at < 60 on an idle machine)")
     args = p.parse_args()
     os.makedirs(args.output_dir, exist_ok=True)
-    env = dict(os.environ, PYDEVD_DISABLE_FILE_VALIDATION="1", MPLBACKEND="module://matplotlib_inline.backend_inline")
+    env = dict(os.environ, PYDEVD_DISABLE_FILE_VALIDATION="1")
+    env.pop("MPLBACKEND", None)  # the kernel's own inline backend, as in a reader's notebook
     start = time.monotonic()
     done = subprocess.run(["jupyter-nbconvert", "--to", "notebook", "--execute", "--ExecutePreprocessor.timeout=300",
                            args.notebook, "--output-dir", args.output_dir, "--output", "tutorial.executed.ipynb"],
