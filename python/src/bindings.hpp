@@ -9,10 +9,10 @@
 #include <utility>
 #include <vector>
 
-#include <nlohmann/json.hpp>
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
+#include <nlohmann/json.hpp>
 
 #include "granular/ensemble/progress_meter.hpp"
 #include "granular/model/chain.hpp"
@@ -46,8 +46,7 @@ std::string keyword_of(const std::string& parameter);
 /// Throws InvalidInput(keyword, " <value>: <rule>") — the message format of the library.
 [[noreturn]] void bad_value(const std::string& keyword, const std::string& problem);
 /// A size-like integer keyword: ValueError naming it unless lo ≤ value (≤ hi).
-std::size_t checked_size(long long value, const char* keyword, long long lo = 0,
-                         long long hi = 100000000000000000LL);
+std::size_t checked_size(long long value, const char* keyword, long long lo = 0, long long hi = 100000000000000000LL);
 /// A finite float keyword (NaN and infinities rejected, naming it).
 double finite(double value, const char* keyword);
 

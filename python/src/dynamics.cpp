@@ -62,11 +62,13 @@ struct FitWindow {
 };
 FitWindow fit_window(const py::object& fit, const SpreadingConfig& c) {
   const std::vector<double> f = double_vector(fit, "fit");
-  if (f.size() != 2 || !(f[0] > 0) || !(f[1] > f[0])) bad_value("fit", ": expected (start, stop) [s] with 0 < start < stop");
+  if (f.size() != 2 || !(f[0] > 0) || !(f[1] > f[0]))
+    bad_value("fit", ": expected (start, stop) [s] with 0 < start < stop");
   FitWindow w{f[0], f[1], f[1] <= c.duration * (1 + 1e-12)};
   if (w.possible) {  // a fit that cannot work is bad input, found before the run
     std::vector<double> times;
-    for (auto s : sample_steps(static_cast<std::uint64_t>(std::llround(c.duration / c.time_step)), c.samples, c.sampling))
+    for (auto s :
+         sample_steps(static_cast<std::uint64_t>(std::llround(c.duration / c.time_step)), c.samples, c.sampling))
       times.push_back(static_cast<double>(s) * c.time_step);
     try {
       windowed_exponent(times, times, w.begin, w.end);
@@ -104,7 +106,8 @@ struct Beta {
 };
 Beta beta_of(const py::object& beta) {
   if (py::isinstance<py::str>(beta)) {
-    if (beta.cast<std::string>() != "match") bad_value("beta", " '" + beta.cast<std::string>() + "': a number [m/s] or 'match'");
+    if (beta.cast<std::string>() != "match")
+      bad_value("beta", " '" + beta.cast<std::string>() + "': a number [m/s] or 'match'");
     return {true, 0};
   }
   return {false, finite(beta.cast<double>(), "beta")};
@@ -161,26 +164,38 @@ void bind_dynamics(py::module_& m) {
          long long force_samples, bool energy_map, long long map_samples, long long map_stride, bool spectral_density,
          long long spectrum_samples, bool active_window, double window_threshold, double reference_max_step,
          double max_energy_error, const std::string& energy_guard, bool progress) {
-        const DynamicsKeywords k{T,       dt,           force_law,        integrator,         sampling, energy_guard,
-                                 samples, active_window, window_threshold, reference_max_step, max_energy_error};
+        const DynamicsKeywords k{T,
+                                 dt,
+                                 force_law,
+                                 integrator,
+                                 sampling,
+                                 energy_guard,
+                                 samples,
+                                 active_window,
+                                 window_threshold,
+                                 reference_max_step,
+                                 max_energy_error};
         SpreadingConfig config = spreading_config(k);
         const std::size_t beads = chain.chain.size();
-        if (ic != "displacement" && ic != "velocity") bad_value("ic", " '" + ic + "': expected displacement or velocity");
+        if (ic != "displacement" && ic != "velocity")
+          bad_value("ic", " '" + ic + "': expected displacement or velocity");
         if (!forces_at.is_none())
           for (double s : double_vector(forces_at, "forces_at")) {
             if (s != std::floor(s) || s < 1 || s > static_cast<double>(beads))
-              bad_value("forces_at", " " + format_number(s) + ": outside the chain of " + std::to_string(beads) +
-                                         " beads (1..N)");
+              bad_value("forces_at",
+                        " " + format_number(s) + ": outside the chain of " + std::to_string(beads) + " beads (1..N)");
             config.force_sites.push_back(static_cast<std::size_t>(s) - 1);
           }
         config.force_samples = checked_size(force_samples, "force_samples", 1, 100000000);
         config.map_samples = energy_map ? checked_size(map_samples, "map_samples", 2, 100000000) : 0;
         config.map_stride = checked_size(map_stride, "map_stride", 1, 100000000);
-        config.spectrum_samples = spectral_density ? checked_size(spectrum_samples, "spectrum_samples", 2, 100000000) : 0;
+        config.spectrum_samples =
+            spectral_density ? checked_size(spectrum_samples, "spectrum_samples", 2, 100000000) : 0;
         validate(config, beads);
         PowerLawCriterion criterion;
         criterion.kappa = kappa;
-        if (!(kappa > 0) || !std::isfinite(kappa)) bad_value("kappa", " " + format_number(kappa) + ": must be finite and > 0");
+        if (!(kappa > 0) || !std::isfinite(kappa))
+          bad_value("kappa", " " + format_number(kappa) + ": must be finite and > 0");
         const FitWindow w = fit_window(fit, config);
         criterion.t_start = w.begin;
 
@@ -191,8 +206,9 @@ void bind_dynamics(py::module_& m) {
         if (ic == "displacement") {
           initial = displacement_kick(chain.chain, kicked, alpha);
         } else {
-          beta_used = b.match ? matched_velocity(make_force_law(config.force_law, chain.chain), chain.chain, kicked, alpha)
-                              : b.value;
+          beta_used = b.match
+                          ? matched_velocity(make_force_law(config.force_law, chain.chain), chain.chain, kicked, alpha)
+                          : b.value;
           initial = velocity_kick(chain.chain, kicked, beta_used);
         }
 
@@ -266,7 +282,8 @@ void bind_dynamics(py::module_& m) {
         if (config.map_samples > 0) {
           py::dict e;
           std::vector<long long> sites;
-          for (std::size_t c = 0; c < r.map_columns; ++c) sites.push_back(static_cast<long long>(c * config.map_stride + 1));
+          for (std::size_t c = 0; c < r.map_columns; ++c)
+            sites.push_back(static_cast<long long>(c * config.map_stride + 1));
           const std::size_t rows = r.map_t.size();
           e["t"] = to_numpy(std::move(r.map_t));
           e["site"] = to_numpy(std::move(sites));
@@ -316,8 +333,17 @@ void bind_dynamics(py::module_& m) {
          const std::string& sampling, const py::object& fit, double kappa, bool active_window, double window_threshold,
          double reference_max_step, double max_energy_error, const std::string& energy_guard, bool profile,
          long long threads, const py::object& checkpoint, bool resume, bool progress) {
-        const DynamicsKeywords k{T,       dt,           force_law,        integrator,         sampling, energy_guard,
-                                 samples, active_window, window_threshold, reference_max_step, max_energy_error};
+        const DynamicsKeywords k{T,
+                                 dt,
+                                 force_law,
+                                 integrator,
+                                 sampling,
+                                 energy_guard,
+                                 samples,
+                                 active_window,
+                                 window_threshold,
+                                 reference_max_step,
+                                 max_energy_error};
         TransportCase c;
         c.disorder = disorder_of(disorder);
         c.q = q;
@@ -329,7 +355,8 @@ void bind_dynamics(py::module_& m) {
         c.realizations = checked_size(realizations, "realizations", 1);
         c.dynamics = spreading_config(k);
         validate(c.dynamics, c.n);
-        if (!(kappa > 0) || !std::isfinite(kappa)) bad_value("kappa", " " + format_number(kappa) + ": must be finite and > 0");
+        if (!(kappa > 0) || !std::isfinite(kappa))
+          bad_value("kappa", " " + format_number(kappa) + ": must be finite and > 0");
         const FitWindow w = fit_window(fit, c.dynamics);
         c.kick = parse_kick(ic);
         c.alpha = alpha;
@@ -347,7 +374,8 @@ void bind_dynamics(py::module_& m) {
         c.beta = 0;                      // a displacement kick has none (the checkpoint's identity, as the tool's)
         if (c.kick == Kick::velocity) {  // the β of realization 0, as the tool reports it
           const Chain first = random_chain(c.disorder, p);
-          c.beta = b.match ? matched_velocity(make_force_law(c.dynamics.force_law, first), first, c.site, alpha) : b.value;
+          c.beta =
+              b.match ? matched_velocity(make_force_law(c.dynamics.force_law, first), first, c.site, alpha) : b.value;
         }
         validate(c);
         const int thread_request = static_cast<int>(checked_size(threads, "threads", 0, 4096));
@@ -364,15 +392,20 @@ void bind_dynamics(py::module_& m) {
           run.cancelled = control.cancelled;
           s = run_transport_study(c, run);
         });
-        if (!log.empty()) CheckpointLog::remove_all(log);  // finished: the result is in memory, as the tool's in its files
+        if (!log.empty())
+          CheckpointLog::remove_all(log);  // finished: the result is in memory, as the tool's in its files
 
         nlohmann::json meta = metadata_head("transport");
-        nlohmann::json chain = {{"F0_N", F0},       {"material", material_json(steel)},
+        nlohmann::json chain = {{"F0_N", F0},
+                                {"material", material_json(steel)},
                                 {"walls", "flat, same material as the beads"},
-                                {"R1_m", R1},       {"xi", xi},
+                                {"R1_m", R1},
+                                {"xi", xi},
                                 {"disorder", to_string(c.disorder)},
-                                {"q", q},           {"seed", c.seed},
-                                {"realization", 0}, {"N", c.n}};
+                                {"q", q},
+                                {"seed", c.seed},
+                                {"realization", 0},
+                                {"N", c.n}};
         meta["parameters"] = dynamics_parameters(ic, c.site, alpha, c.beta, c.match_beta, k, w, kappa);
         meta["parameters"]["chain"] = chain;
         meta["parameters"]["realizations"] = c.realizations;
@@ -422,8 +455,8 @@ void bind_dynamics(py::module_& m) {
       py::arg("samples") = 200, py::arg("sampling") = "log", py::arg("fit") = py::make_tuple(4e-3, 1e-2),
       py::arg("kappa") = 0.1, py::arg("active_window") = true, py::arg("window_threshold") = 1e-30,
       py::arg("reference_max_step") = 0.01e-6, py::arg("max_energy_error") = 1e-3, py::arg("energy_guard") = "stop",
-      py::arg("profile") = false, py::arg("threads") = 0, py::arg("checkpoint") = py::none(),
-      py::arg("resume") = false, py::arg("progress") = false,
+      py::arg("profile") = false, py::arg("threads") = 0, py::arg("checkpoint") = py::none(), py::arg("resume") = false,
+      py::arg("progress") = false,
       (std::string("An ensemble of spreading runs: realizations 0..R-1 of seed `seed` of a disordered chain, each "
                    "kicked and integrated to T, averaged and fitted (the spreading tool's --realizations R).\n\n"
                    "    disorder, N, q, xi, F0 [N], R1 [m], seed: the chains, as granular.random_chain's\n"
@@ -443,9 +476,9 @@ void bind_dynamics(py::module_& m) {
       "exponent_table",
       [](const std::vector<std::string>& chains, const py::object& F0, const std::vector<std::string>& ic, long long N,
          long long site, double xi, double q, double T, double dt, double alpha, const py::object& beta,
-         const std::string& integrator, long long realizations, long long seed, long long samples, const py::object& fit,
-         double kappa, const py::object& profile_F0, long long profile_realizations, bool active_window,
-         long long threads, const py::object& checkpoint, bool resume, bool progress) {
+         const std::string& integrator, long long realizations, long long seed, long long samples,
+         const py::object& fit, double kappa, const py::object& profile_F0, long long profile_realizations,
+         bool active_window, long long threads, const py::object& checkpoint, bool resume, bool progress) {
         ExponentTableConfig config;
         config.chains.clear();
         for (const auto& name : chains) {
@@ -460,7 +493,8 @@ void bind_dynamics(py::module_& m) {
         config.precompressions = number_list(F0, "F0", 0);
         config.kicks.clear();
         for (const auto& name : ic) config.kicks.push_back(parse_kick(name));
-        config.profile_precompressions = profile_F0.is_none() ? std::vector<double>{} : number_list(profile_F0, "profile_F0", 0);
+        config.profile_precompressions =
+            profile_F0.is_none() ? std::vector<double>{} : number_list(profile_F0, "profile_F0", 0);
         config.profile_realizations = checked_size(profile_realizations, "profile_realizations");
         TransportCase& base = config.base;
         base.n = checked_size(N, "N", 2, 100000000);
@@ -555,8 +589,9 @@ void bind_dynamics(py::module_& m) {
         std::string kick_list;
         for (const auto& name : ic) kick_list += (kick_list.empty() ? "" : ",") + name;
         nlohmann::json meta = metadata_head("exponent_table");
-        meta["parameters"] = {{"chains", chain_list}, {"F0", config.precompressions}, {"ic", kick_list},
-                              {"fit_s", f},           {"kappa", kappa},               {"log_step", base.criterion.log_step},
+        meta["parameters"] = {{"chains", chain_list}, {"F0", config.precompressions},
+                              {"ic", kick_list},      {"fit_s", f},
+                              {"kappa", kappa},       {"log_step", base.criterion.log_step},
                               {"threads", threads},   {"mpi_ranks", MpiContext::instance().size()}};
         meta["cases"] = described;
         py::dict out;

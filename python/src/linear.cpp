@@ -179,8 +179,8 @@ void bind_linear(py::module_& m) {
              d.off_diagonal = double_vector(off_diagonal, "off_diagonal");
              if (d.diagonal.empty()) bad_value("diagonal", ": empty (a matrix needs at least one row)");
              if (d.off_diagonal.size() + 1 != d.diagonal.size())
-               bad_value("off_diagonal", ": has " + std::to_string(d.off_diagonal.size()) + " entries; need N - 1 = " +
-                                             std::to_string(d.diagonal.size() - 1));
+               bad_value("off_diagonal", ": has " + std::to_string(d.off_diagonal.size()) +
+                                             " entries; need N - 1 = " + std::to_string(d.diagonal.size() - 1));
              if (inverse_sqrt_mass.is_none()) {
                d.inverse_sqrt_mass.assign(d.diagonal.size(), 1.0);
              } else {
@@ -208,14 +208,15 @@ void bind_linear(py::module_& m) {
           "inverse_sqrt_mass",
           [](py::object self) { return view(self.cast<const DynamicalMatrix&>().inverse_sqrt_mass, self); },
           "m_n^(-1/2) [kg^(-1/2)], N entries")
-      .def("__repr__", [](const DynamicalMatrix& d) { return "<granular.DynamicalMatrix N=" + std::to_string(d.size()) + ">"; });
+      .def("__repr__",
+           [](const DynamicalMatrix& d) { return "<granular.DynamicalMatrix N=" + std::to_string(d.size()) + ">"; });
 
   m.def(
       "dynamical_matrix", [](const PyChain& c) { return dynamical_matrix(c.chain); }, py::arg("chain"),
       "The dynamical matrix of a chain (ValueError naming F0 at F0 = 0: the sonic vacuum has no linear limit).");
   m.def(
-      "frequency_khz", [](py::array_t<double> omega2) { return py::vectorize(frequency_khz)(omega2); }, py::arg("omega2"),
-      "Frequency f = omega/2pi [kHz] of eigenvalues omega^2 [1/s^2] (a number or an array).");
+      "frequency_khz", [](py::array_t<double> omega2) { return py::vectorize(frequency_khz)(omega2); },
+      py::arg("omega2"), "Frequency f = omega/2pi [kHz] of eigenvalues omega^2 [1/s^2] (a number or an array).");
   m.def(
       "omega2_of_khz", [](py::array_t<double> khz) { return py::vectorize(omega_squared_of_khz)(khz); }, py::arg("khz"),
       "omega^2 [1/s^2] of frequencies in kHz (a number or an array).");
@@ -265,7 +266,8 @@ void bind_linear(py::module_& m) {
             return to_numpy_2d(std::move(v), n, k);
           },
           "N x K displacement modes v = w * m^(-1/2) [kg^(-1/2)] (column j: mode j), or None without vectors")
-      .def_property_readonly("N", [](const PySpectrum& p) { return p.s.beads; }, "beads of the chain")
+      .def_property_readonly(
+          "N", [](const PySpectrum& p) { return p.s.beads; }, "beads of the chain")
       .def("__len__", [](const PySpectrum& p) { return p.s.size(); })
       .def_property_readonly(
           "info",
@@ -279,9 +281,10 @@ void bind_linear(py::module_& m) {
                               {"clusters", i.clusters}});
           },
           "what the solver did: method that ran, fallbacks, restarts, candidates, max_residual, clusters")
-      .def_property_readonly("metadata", [](const PySpectrum& p) { return to_python(p.metadata); },
-                             "the spectrum tool's JSON for this result: chain, method, solver, selection, "
-                             "band_edges_khz, version")
+      .def_property_readonly(
+          "metadata", [](const PySpectrum& p) { return to_python(p.metadata); },
+          "the spectrum tool's JSON for this result: chain, method, solver, selection, "
+          "band_edges_khz, version")
       .def("__repr__", [](const PySpectrum& p) {
         return "<granular.Spectrum " + std::to_string(p.s.size()) + " of " + std::to_string(p.s.beads) + " modes, " +
                p.s.info.method + ">";

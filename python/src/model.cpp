@@ -109,7 +109,9 @@ void bind_model(py::module_& m) {
   m.attr("flat_wall") = flat_wall;
 
   py::class_<Material>(m, "Material", "Elastic material of beads and walls, SI units.")
-      .def(py::init([](double young, double poisson, double density) { return Material{young, poisson, density}; }),
+      .def(py::init([](double young, double poisson, double density) {
+             return Material{young, poisson, density};
+           }),
            py::arg("young") = steel.young, py::arg("poisson") = steel.poisson, py::arg("density") = steel.density,
            "young: Young modulus E [Pa]; poisson: Poisson ratio nu [-]; density: rho [kg/m^3]. Defaults: the paper's "
            "stainless steel.")
@@ -128,7 +130,8 @@ void bind_model(py::module_& m) {
                       "bead k-1 and bead k (bond 0 and bond N touch the walls). The arrays are read-only views.\n"
                       "Make one with granular.anderson/rdm1/rdm2/homogeneous/diatomic, random_chain, from_types "
                       "or from_radii.")
-      .def_property_readonly("N", [](const PyChain& c) { return c.chain.size(); }, "number of beads")
+      .def_property_readonly(
+          "N", [](const PyChain& c) { return c.chain.size(); }, "number of beads")
       .def("__len__", [](const PyChain& c) { return c.chain.size(); })
       .def_property_readonly(
           "radius", [](py::object self) { return view(self.cast<const PyChain&>().chain.radius, self); },
@@ -145,13 +148,14 @@ void bind_model(py::module_& m) {
       .def_property_readonly(
           "overlap", [](py::object self) { return view(self.cast<const PyChain&>().chain.overlap, self); },
           "static overlaps Delta_k = (F0/A_k)^(2/3) [m] of the N+1 bonds")
-      .def_property_readonly("F0", [](const PyChain& c) { return c.chain.precompression; },
-                             "static precompression [N]")
+      .def_property_readonly(
+          "F0", [](const PyChain& c) { return c.chain.precompression; }, "static precompression [N]")
       .def_property_readonly("types", &chain_types,
                              "bead types (1 or 2) as a uint8 array, or None for a chain built from radii")
-      .def_property_readonly("metadata", [](const PyChain& c) { return to_python(c.description); },
-                             "the chain as the tools describe it in their JSON ('chain' entry): F0_N, R1_m, xi, "
-                             "disorder, q, seed, realization, N, material, walls")
+      .def_property_readonly(
+          "metadata", [](const PyChain& c) { return to_python(c.description); },
+          "the chain as the tools describe it in their JSON ('chain' entry): F0_N, R1_m, xi, "
+          "disorder, q, seed, realization, N, material, walls")
       .def(
           "linear_stiffness", [](const PyChain& c) { return to_numpy(linear_stiffness(c.chain)); },
           "B_k = (3/2) A_k^(2/3) F0^(1/3) [N/m] of the N+1 bonds: the linearized chain")
@@ -170,8 +174,8 @@ void bind_model(py::module_& m) {
   bind_random(m, "homogeneous", Disorder::homogeneous, "N type-1 beads (q, xi, seed and realization do not matter).");
   m.def(
       "random_chain",
-      [](const std::string& disorder, long long N, double q, double xi, long long seed, long long realization, double F0,
-         double R1, const Material& material) {
+      [](const std::string& disorder, long long N, double q, double xi, long long seed, long long realization,
+         double F0, double R1, const Material& material) {
         return random_py_chain(disorder_of(disorder), chain_parameters(N, q, xi, seed, realization, F0, R1, material));
       },
       py::arg("disorder") = "A", py::arg("N") = 100, py::arg("q") = 0.5, py::arg("xi") = 0.5, py::arg("seed") = 1,
@@ -198,13 +202,12 @@ void bind_model(py::module_& m) {
       "from_types",
       [](const py::object& types, double xi, double F0, double R1, const Material& material) {
         Configuration t = types_vector(types, "types");
-        const ChainParameters p = chain_parameters(static_cast<long long>(std::max<std::size_t>(t.size(), 2)), 0.5,
-                                                   xi, 1, 0, F0, R1, material);
+        const ChainParameters p = chain_parameters(static_cast<long long>(std::max<std::size_t>(t.size(), 2)), 0.5, xi,
+                                                   1, 0, F0, R1, material);
         if (t.size() < 2) bad_value("types", ": " + std::to_string(t.size()) + " beads; a chain needs at least 2");
         return typed_chain(std::move(t), p, base_description(F0, material));
       },
-      py::arg("types"), py::arg("xi") = 0.5, py::arg("F0") = 10.0, py::arg("R1") = paper_r1,
-      py::arg("material") = steel,
+      py::arg("types"), py::arg("xi") = 0.5, py::arg("F0") = 10.0, py::arg("R1") = paper_r1, py::arg("material") = steel,
       "A chain of given bead types: `types` is any array-like of 1 and 2 (type 1 has radius R1 [m], type 2 xi*R1), "
       "as a --config file holds them. F0 [N].");
   m.def(
@@ -230,8 +233,7 @@ void bind_model(py::module_& m) {
                                            checked_size(seed, "seed"), checked_size(realization, "realization"));
         return to_numpy(std::vector<std::uint8_t>(t.begin(), t.end()));
       },
-      py::arg("disorder") = "A", py::arg("q") = 0.5, py::arg("N") = 100, py::arg("seed") = 1,
-      py::arg("realization") = 0,
+      py::arg("disorder") = "A", py::arg("q") = 0.5, py::arg("N") = 100, py::arg("seed") = 1, py::arg("realization") = 0,
       "The bead types (uint8 array of 1 and 2) of realization `realization` of seed `seed`: what random_chain builds "
       "its chain from. All xi of one (disorder, q, N, seed, realization) share it.");
   m.def(
@@ -250,8 +252,7 @@ void bind_model(py::module_& m) {
         check_readable(path);
         return to_numpy(read_radii_file(path));
       },
-      py::arg("path"),
-      "Radii [m] from a text file with one radius per line, '#' comments (the tools' --radii).");
+      py::arg("path"), "Radii [m] from a text file with one radius per line, '#' comments (the tools' --radii).");
 
   // --- the contact law -------------------------------------------------------------------------
   m.def(
@@ -261,8 +262,7 @@ void bind_model(py::module_& m) {
           bad_value(radius_a > 0 ? "radius_b" : "radius_a", ": must be > 0 [m] (granular.flat_wall for a wall)");
         return hertz_coefficient(a, radius_a, b, radius_b);
       },
-      py::arg("radius_a"), py::arg("radius_b") = flat_wall, py::arg("material_a") = steel,
-      py::arg("material_b") = steel,
+      py::arg("radius_a"), py::arg("radius_b") = flat_wall, py::arg("material_a") = steel, py::arg("material_b") = steel,
       "Hertz contact coefficient A [N/m^(3/2)] of two bodies of radii radius_a, radius_b [m] (force A delta^(3/2) at "
       "overlap delta); granular.flat_wall (infinity) for a flat wall.");
   m.def(
@@ -272,8 +272,9 @@ void bind_model(py::module_& m) {
         finite(F0, "F0");
         return static_overlap(contact, F0);
       },
-      py::arg("contact"), py::arg("F0"), "Static overlap Delta = (F0/A)^(2/3) [m] of a bond with coefficient A [N/m^(3/2)] "
-                                         "under precompression F0 [N].");
+      py::arg("contact"), py::arg("F0"),
+      "Static overlap Delta = (F0/A)^(2/3) [m] of a bond with coefficient A [N/m^(3/2)] "
+      "under precompression F0 [N].");
   m.def(
       "linear_stiffness",
       [](double contact, double F0) {
@@ -315,8 +316,8 @@ void bind_model(py::module_& m) {
   m.def(
       "cyclic_correlation",
       [](const py::object& types, long long max_distance) {
-        Configuration t = py::isinstance<PyChain>(types) ? types.cast<const PyChain&>().types
-                                                         : types_vector(types, "types");
+        Configuration t =
+            py::isinstance<PyChain>(types) ? types.cast<const PyChain&>().types : types_vector(types, "types");
         if (t.empty()) bad_value("types", ": the chain was built from radii and has no bead types");
         const std::size_t d = checked_size(max_distance, "max_distance", 0, static_cast<long long>(t.size()) - 1);
         return to_numpy(cyclic_correlation(t, d));
@@ -335,8 +336,8 @@ void bind_model(py::module_& m) {
         std::vector<double> out(d.size());
         for (std::size_t i = 0; i < d.size(); ++i) {
           if (d[i] < 0 || d[i] != std::floor(d[i]))
-            bad_value("distance", ": entry " + std::to_string(i) + " is " + format_number(d[i]) +
-                                      " (must be a whole number >= 0)");
+            bad_value("distance",
+                      ": entry " + std::to_string(i) + " is " + format_number(d[i]) + " (must be a whole number >= 0)");
           out[i] = correlation_theory(kind, q, static_cast<std::size_t>(d[i]));
         }
         return to_numpy(std::move(out));

@@ -4,9 +4,9 @@
 #include <string>
 
 #include "bindings.hpp"
-#include "granular/error.hpp"
 #include "granular/ensemble/parallel_realizations.hpp"
 #include "granular/ensemble/run_options.hpp"
+#include "granular/error.hpp"
 #include "granular/model/named_chains.hpp"
 #include "granular/study/correlation_study.hpp"
 #include "granular/study/ipr_map.hpp"
@@ -71,12 +71,14 @@ void bind_studies(py::module_& m) {
                        "The result of granular.ipr_map. Every mode: freq_khz and ipr are (len(q), len(xi), N) arrays "
                        "of means over the realizations (mode k at index k-1). With near/count or window: one entry "
                        "per selected mode of every realization (see rows()).")
-      .def_property_readonly("disorder", [](const PyIprMap& p) { return to_string(p.config.disorder); },
-                             "h | A | RDM1 | RDM2")
-      .def_property_readonly("q", [](const PyIprMap& p) { return to_numpy(p.config.q_values); }, "the q grid")
-      .def_property_readonly("xi", [](const PyIprMap& p) { return to_numpy(p.config.xi_values); },
-                             "the xi grid (R2/R1)")
-      .def_property_readonly("N", [](const PyIprMap& p) { return p.config.n; }, "beads per chain")
+      .def_property_readonly(
+          "disorder", [](const PyIprMap& p) { return to_string(p.config.disorder); }, "h | A | RDM1 | RDM2")
+      .def_property_readonly(
+          "q", [](const PyIprMap& p) { return to_numpy(p.config.q_values); }, "the q grid")
+      .def_property_readonly(
+          "xi", [](const PyIprMap& p) { return to_numpy(p.config.xi_values); }, "the xi grid (R2/R1)")
+      .def_property_readonly(
+          "N", [](const PyIprMap& p) { return p.config.n; }, "beads per chain")
       .def_property_readonly("selection", &PyIprMap::selection, "True when made with near/count or window")
       .def_property_readonly(
           "freq_khz", [](const PyIprMap& p) { return gather(p, &IprMapCell::freq_khz); },
@@ -87,9 +89,10 @@ void bind_studies(py::module_& m) {
       .def("rows", &ipr_map_rows,
            "The ipr-map tool's CSV columns as arrays: q, xi, [realization,] mode, freq_khz [kHz], ipr (one row per "
            "(q, xi, mode), or per selected mode of each realization)")
-      .def_property_readonly("metadata", [](const PyIprMap& p) { return to_python(p.metadata); },
-                             "the ipr-map tool's JSON: parameters (disorder, xi, q, N, F0_N, R1_m, material, "
-                             "realizations, seed, threads, solver), selection, version")
+      .def_property_readonly(
+          "metadata", [](const PyIprMap& p) { return to_python(p.metadata); },
+          "the ipr-map tool's JSON: parameters (disorder, xi, q, N, F0_N, R1_m, material, "
+          "realizations, seed, threads, solver), selection, version")
       .def("__repr__", [](const PyIprMap& p) {
         return "<granular.IprMap " + to_string(p.config.disorder) + ", " + std::to_string(p.config.q_values.size()) +
                " q x " + std::to_string(p.config.xi_values.size()) + " xi, N=" + std::to_string(p.config.n) + ">";
@@ -99,8 +102,7 @@ void bind_studies(py::module_& m) {
       "ipr_map",
       [](const std::string& disorder, const py::object& xi, const py::object& q, long long N, double F0, double R1,
          long long realizations, long long seed, const std::string& solver, const py::object& near,
-         const py::object& count, const py::object& window, const py::object& method, long long threads,
-         bool progress) {
+         const py::object& count, const py::object& window, const py::object& method, long long threads, bool progress) {
         PyIprMap map;
         IprMapConfig& c = map.config;
         c.disorder = disorder_of(disorder);
@@ -170,11 +172,10 @@ void bind_studies(py::module_& m) {
         if (selected) {
           const ModeSelection& s = c.selection;
           const bool by_window = s.kind == ModeSelection::Kind::window;
-          meta["selection"] = {
-              {"method", method_name},
-              {"near_khz", by_window ? nlohmann::json(nullptr) : nlohmann::json(s.near_khz)},
-              {"count", by_window ? nlohmann::json(nullptr) : nlohmann::json(s.count)},
-              {"window_khz", by_window ? nlohmann::json{s.lo_khz, s.hi_khz} : nlohmann::json(nullptr)}};
+          meta["selection"] = {{"method", method_name},
+                               {"near_khz", by_window ? nlohmann::json(nullptr) : nlohmann::json(s.near_khz)},
+                               {"count", by_window ? nlohmann::json(nullptr) : nlohmann::json(s.count)},
+                               {"window_khz", by_window ? nlohmann::json{s.lo_khz, s.hi_khz} : nlohmann::json(nullptr)}};
         }
         map.metadata = std::move(meta);
         return map;
@@ -210,16 +211,20 @@ void bind_studies(py::module_& m) {
             return to_numpy(std::move(d));
           },
           "d = 0..max_distance [beads]")
-      .def_property_readonly("rho_mean", [](const PyCorrelations& p) { return to_numpy(p.result.mean); },
-                             "ensemble mean of rho(d)")
-      .def_property_readonly("rho_std", [](const PyCorrelations& p) { return to_numpy(p.result.deviation); },
-                             "sample standard deviation of rho(d) over the realizations")
-      .def_property_readonly("rho_theory", [](const PyCorrelations& p) { return to_numpy(p.result.theory); },
-                             "infinite-chain rho(d) (NaN where undefined)")
-      .def_property_readonly("used", [](const PyCorrelations& p) { return p.result.used; },
-                             "realizations with both bead types (one-type chains have no rho and are skipped)")
-      .def_property_readonly("metadata", [](const PyCorrelations& p) { return to_python(p.metadata); },
-                             "the correlations tool's JSON: parameters, realizations_used, version");
+      .def_property_readonly(
+          "rho_mean", [](const PyCorrelations& p) { return to_numpy(p.result.mean); }, "ensemble mean of rho(d)")
+      .def_property_readonly(
+          "rho_std", [](const PyCorrelations& p) { return to_numpy(p.result.deviation); },
+          "sample standard deviation of rho(d) over the realizations")
+      .def_property_readonly(
+          "rho_theory", [](const PyCorrelations& p) { return to_numpy(p.result.theory); },
+          "infinite-chain rho(d) (NaN where undefined)")
+      .def_property_readonly(
+          "used", [](const PyCorrelations& p) { return p.result.used; },
+          "realizations with both bead types (one-type chains have no rho and are skipped)")
+      .def_property_readonly(
+          "metadata", [](const PyCorrelations& p) { return to_python(p.metadata); },
+          "the correlations tool's JSON: parameters, realizations_used, version");
 
   m.def(
       "correlations",
@@ -243,9 +248,9 @@ void bind_studies(py::module_& m) {
           out.result = correlation_study(c, run);
         });
         out.metadata = metadata_head("correlations");
-        out.metadata["parameters"] = {{"disorder", to_string(c.disorder)}, {"q", c.q},
-                                      {"N", c.n},                          {"realizations", c.realizations},
-                                      {"seed", c.seed},                    {"max_distance", c.max_distance}};
+        out.metadata["parameters"] = {
+            {"disorder", to_string(c.disorder)}, {"q", c.q},       {"N", c.n},
+            {"realizations", c.realizations},    {"seed", c.seed}, {"max_distance", c.max_distance}};
         out.metadata["realizations_used"] = out.result.used;
         return out;
       },

@@ -21,9 +21,8 @@ namespace granular::python {
 std::string keyword_of(const std::string& parameter) {
   // Library names that are not the keyword itself (the keywords are the tools' option names).
   static const std::map<std::string, std::string> synonyms{
-      {"precompression", "F0"}, {"n", "N"},           {"r1", "R1"},           {"near_khz", "near"},
-      {"lo_khz", "window"},     {"hi_khz", "window"}, {"time_step", "dt"},    {"duration", "T"},
-      {"selection", "near"}};
+      {"precompression", "F0"}, {"n", "N"},          {"r1", "R1"},      {"near_khz", "near"}, {"lo_khz", "window"},
+      {"hi_khz", "window"},     {"time_step", "dt"}, {"duration", "T"}, {"selection", "near"}};
   std::string name = parameter;
   if (name.starts_with("--")) {  // a legacy message naming a flag: --force-law → force_law
     name = name.substr(2);
@@ -89,8 +88,7 @@ void bind_errors(py::module_& m) {
 // --- arrays ------------------------------------------------------------------------------------
 
 namespace {
-py::array_t<double, py::array::c_style | py::array::forcecast> as_doubles(const py::handle& values,
-                                                                         const char* keyword) {
+py::array_t<double, py::array::c_style | py::array::forcecast> as_doubles(const py::handle& values, const char* keyword) {
   if (py::isinstance<py::str>(values) || py::isinstance<py::bytes>(values))
     bad_value(keyword, ": expected numbers (an array or a sequence), not a string");
   auto array = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(values);
@@ -122,7 +120,8 @@ Configuration types_vector(const py::handle& values, const char* keyword) {
   Configuration types(numbers.size());
   for (std::size_t i = 0; i < numbers.size(); ++i) {
     if (numbers[i] != 1 && numbers[i] != 2)
-      bad_value(keyword, ": bead " + std::to_string(i + 1) + " has type " + format_number(numbers[i]) + " (must be 1 or 2)");
+      bad_value(keyword,
+                ": bead " + std::to_string(i + 1) + " has type " + format_number(numbers[i]) + " (must be 1 or 2)");
     types[i] = static_cast<std::uint8_t>(numbers[i]);
   }
   return types;

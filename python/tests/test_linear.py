@@ -31,7 +31,7 @@ def test_every_mode_equals_the_spectrum_tool(tools, method):
         assert mine[key] == meta[key], key
 
 
-@pytest.mark.parametrize("method", ["lapack", "bisect", "arpack"])
+@pytest.mark.parametrize("method", ["lapack", "bisect", "arpack", "slepc"])
 def test_nearest_modes_equal_the_spectrum_tool(tools, method):
     csv, meta = tools.run("spectrum", *CHAIN, "--near", "15", "--count", "7", "--method", method)
     result = gr.spectrum(chain(), near=15.0, count=7, method=method)
