@@ -47,7 +47,6 @@ int main(int argc, char** argv) {
                           {"max_distance", config.max_distance}};
     meta["realizations_used"] = result.used;
     meta["output"] = output;
-    csv.commit();
-    meta.write(json_path);
+    meta.write(json_path, {&csv});
   });
 }

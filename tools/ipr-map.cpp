@@ -95,7 +95,6 @@ int main(int argc, char** argv) {
                            {"count", selection.count ? nlohmann::json(*selection.count) : nlohmann::json(nullptr)},
                            {"window_khz", selection.window ? nlohmann::json(*selection.window) : nlohmann::json(nullptr)}};
     meta["output"] = output;
-    csv.commit();
-    meta.write(json_path);
+    meta.write(json_path, {&csv});
   });
 }

@@ -99,7 +99,6 @@ int main(int argc, char** argv) {
       write_spectrum_hdf5(vectors_file, result, d);
       meta["vectors"] = vectors_file;
     }
-    csv.commit();
-    meta.write(tool::json_path_for(output));
+    meta.write(tool::json_path_for(output), {&csv});
   });
 }

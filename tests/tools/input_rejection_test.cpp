@@ -34,6 +34,8 @@ const std::vector<Tool>& tools() {
         {"--chains", "A"}, {"--F0", "1"}, {"--ic", "displacement"}},
        {"--N", "--site", "--xi", "--q", "--T", "--dt", "--alpha", "--realizations", "--seed", "--samples", "--kappa",
         "--profile-realizations", "--threads", "--F0", "--beta"}},
+      {"localization", {{"--N", "1000"}, {"--f", "1:5"}},
+       {"--xi", "--q", "--N", "--F0", "--R1", "--seed", "--realization", "--segments", "--threads"}},
   };
   return all;
 }
@@ -63,7 +65,7 @@ std::vector<Case> matrix() {
     cases.push_back({tool.name, command_line(tool, {{"--N", "100000000000000000000"}}), "--N"});
   }
   const std::string data = GRANULAR_DATA_DIR;
-  for (const char* tool : {"spectrum", "spreading"}) {
+  for (const char* tool : {"spectrum", "spreading", "localization"}) {
     const Tool& t = *std::find_if(tools().begin(), tools().end(), [&](const Tool& x) { return x.name == std::string(tool); });
     auto base = t.baseline;
     base.erase("--N");
@@ -116,8 +118,8 @@ TEST_P(InputRejection, ExitCodeOneLineNoOutput) {
     output = "/proc/granular-out";
     replace("@OUT-IN-PROC@", "");
   }
-  const std::string out_arg = std::string(c.tool) == "spreading" || std::string(c.tool) == "exponents"
-                                  ? output : output + ".csv";
+  const std::string out_arg =
+      c.tool == "spreading" || c.tool == "exponents" || c.tool == "localization" ? output : output + ".csv";
   {
     std::ofstream(dir + "/out.csv") << "precious\n";  // an existing output must survive
   }

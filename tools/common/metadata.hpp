@@ -1,6 +1,7 @@
 #pragma once
 // The JSON that sits beside every CSV: enough to reproduce the run.
 #include <chrono>
+#include <initializer_list>
 #include <cstdio>
 #include <string_view>
 #include <ctime>
@@ -17,7 +18,7 @@ class Metadata {
   Metadata(const std::string& tool, int argc, char** argv) : start_(std::chrono::steady_clock::now()) {
     std::string command;
     for (int i = 0; i < argc; ++i) {
-      command += (i ? " " : "") + std::string(argv[i]);
+      command += (i ? " " : "") + shell_quote(argv[i]);
       if (std::string_view(argv[i]) == "--quiet") quiet_ = true;
     }
     json_["tool"] = tool;
@@ -29,25 +30,54 @@ class Metadata {
     json_["started_utc"] = stamp;
   }
   nlohmann::json& operator[](const char* key) { return json_[key]; }
+  /// The command line as typed, quoted for a POSIX shell: paste it back and it runs.
+  std::string command() const { return json_.at("command").get<std::string>(); }
+
+  /// Writes the JSON, then commits `outputs` (already written under temporary names): a crash
+  /// can leave metadata without its CSV, never a CSV without its metadata. Then the final line.
+  void write(const std::string& path, std::initializer_list<AtomicFile*> outputs) {
+    write_json(path);
+    for (AtomicFile* f : outputs) f->commit();
+    report(path);
+  }
   /// Adds the wall time, writes the file atomically, and (unless --quiet) ends the run with one
   /// line on stderr saying what was written where and how long it took.
   void write(const std::string& path) {
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-    json_["wall_time_s"] = seconds;
-    write_file_atomically(path, json_.dump(2) + "\n");
-    if (quiet_) return;
-    std::string files;
-    for (const char* key : {"output", "vectors"})
-      if (json_.contains(key) && json_[key].is_string()) files += json_[key].get<std::string>() + ", ";
-    char line[64];
-    std::snprintf(line, sizeof line, " in %.3g s", seconds);
-    std::fprintf(stderr, "%s: wrote %s%s%s\n", json_["tool"].get<std::string>().c_str(), files.c_str(), path.c_str(), line);
+    write_json(path);
+    report(path);
+  }
+
+  static std::string shell_quote(const std::string& word) {
+    if (!word.empty() && word.find_first_not_of("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789_@%+=:,./-") ==
+                             std::string::npos)
+      return word;
+    std::string quoted = "'";
+    for (char c : word) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return quoted + "'";
   }
 
  private:
+  void write_json(const std::string& path) {
+    seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    json_["wall_time_s"] = seconds_;
+    write_file_atomically(path, json_.dump(2) + "\n");
+  }
+
+  void report(const std::string& path) const {
+    if (quiet_) return;
+    const double seconds = seconds_;
+    std::string files;
+    for (const char* key : {"output", "vectors"})
+      if (json_.contains(key) && json_.at(key).is_string()) files += json_.at(key).get<std::string>() + ", ";
+    char line[64];
+    std::snprintf(line, sizeof line, " in %.3g s", seconds);
+    std::fprintf(stderr, "%s: wrote %s%s%s\n", json_.at("tool").get<std::string>().c_str(), files.c_str(), path.c_str(), line);
+  }
+
   nlohmann::json json_;
   std::chrono::steady_clock::time_point start_;
   bool quiet_ = false;
+  double seconds_ = 0;
 };
 
 }  // namespace granular::tool

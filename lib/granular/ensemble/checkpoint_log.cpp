@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <charconv>
 #include <cstring>
 #include <filesystem>
@@ -109,17 +110,21 @@ CheckpointLog::CheckpointLog(std::string path, std::string parameters, const Che
     : path_(std::move(path)) {
   // Written whole under a temporary name, then renamed: a kill never leaves a half header.
   const std::string temporary = path_ + ".tmp";
+  errno = 0;
   std::FILE* f = std::fopen(temporary.c_str(), "wb");
-  if (!f) throw IoError("cannot create checkpoint '" + temporary + "'");
+  if (!f) throw IoError("cannot create checkpoint '" + temporary + "': " + std::strerror(errno));
   std::string text = magic + parameters + "\n";
   for (const auto& [index, values] : records) text += format_record(index, values);
-  const bool written = std::fwrite(text.data(), 1, text.size(), f) == text.size() && std::fflush(f) == 0;
-  ::fdatasync(::fileno(f));
-  std::fclose(f);
-  if (!written || std::rename(temporary.c_str(), path_.c_str()) != 0)
-    throw IoError("cannot write checkpoint '" + path_ + "'");
+  bool written = std::fwrite(text.data(), 1, text.size(), f) == text.size() && std::fflush(f) == 0 &&
+                 ::fdatasync(::fileno(f)) == 0;
+  const int cause = errno;
+  written = std::fclose(f) == 0 && written;
+  if (!written || std::rename(temporary.c_str(), path_.c_str()) != 0) {
+    std::remove(temporary.c_str());
+    throw IoError("cannot write checkpoint '" + path_ + "': " + std::strerror(cause ? cause : errno));
+  }
   file_ = std::fopen(path_.c_str(), "ab");
-  if (!file_) throw IoError("cannot append to checkpoint '" + path_ + "'");
+  if (!file_) throw IoError("cannot append to checkpoint '" + path_ + "': " + std::strerror(errno));
 }
 
 CheckpointLog::~CheckpointLog() {
@@ -185,9 +190,11 @@ void CheckpointLog::remove_all(const std::string& base) {
 void CheckpointLog::append(std::uint64_t index, const std::vector<double>& values) {
   const std::string line = format_record(index, values);
   std::lock_guard lock(mutex_);
-  if (!file_ || std::fwrite(line.data(), 1, line.size(), file_) != line.size() || std::fflush(file_) != 0)
-    throw IoError("cannot append to checkpoint '" + path_ + "'");
-  ::fdatasync(::fileno(file_));
+  errno = 0;
+  // A line cut short here (disk full) is torn: load() skips it, and a resumed run rewrites the log whole.
+  if (!file_ || std::fwrite(line.data(), 1, line.size(), file_) != line.size() || std::fflush(file_) != 0 ||
+      ::fdatasync(::fileno(file_)) != 0)
+    throw IoError("cannot append to checkpoint '" + path_ + "': " + std::strerror(errno ? errno : EIO));
 }
 
 }  // namespace granular

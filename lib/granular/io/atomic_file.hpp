@@ -2,7 +2,8 @@
 // An output file that appears whole or not at all: written to a temporary name beside the
 // target and renamed over it on commit(). Destroyed without commit(), it leaves no trace, so
 // an error or an interrupted run never leaves a partial or truncated output.
-#include <fstream>
+#include <memory>
+#include <ostream>
 #include <string>
 
 namespace granular {
@@ -15,13 +16,16 @@ class AtomicFile {
   ~AtomicFile();
 
   std::ostream& stream() { return out_; }
-  /// Flushes, fsyncs and renames onto the target; throws IoError on failure.
+  /// Flushes, closes and fsyncs the file, renames it onto the target and fsyncs the folder;
+  /// throws IoError naming the file and the cause ("No space left on device") on failure.
   void commit();
   const std::string& path() const { return path_; }
 
  private:
+  class Buffer;  // writes through to the file descriptor and remembers the first errno
   std::string path_, temporary_;
-  std::ofstream out_;
+  std::unique_ptr<Buffer> buffer_;
+  std::ostream out_;
   bool committed_ = false;
 };
 

@@ -2,7 +2,9 @@
 
 #include <unistd.h>
 
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 
 #include <hdf5.h>
 
@@ -11,11 +13,27 @@
 
 namespace granular {
 
+namespace {
+
+/// HDF5 prints its whole internal error stack on stderr by default; failures here become one
+/// IoError naming the file and the system's cause instead.
+void silence_hdf5() {
+  static const bool silenced = [] { return H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr) >= 0; }();
+  (void)silenced;
+}
+
+/// ": No space left on device" when the C library recorded why; "" otherwise.
+std::string cause() { return errno ? std::string(": ") + std::strerror(errno) : std::string(); }
+
+}  // namespace
+
 Hdf5File::Hdf5File(std::string path) : path_(std::move(path)) {
+  silence_hdf5();
   check_writable(path_);
   temporary_ = path_ + ".tmp." + std::to_string(::getpid());
+  errno = 0;
   file_ = H5Fcreate(temporary_.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
-  if (file_ < 0) throw IoError("cannot create HDF5 file '" + temporary_ + "'");
+  if (file_ < 0) throw IoError("cannot create HDF5 file '" + temporary_ + "'" + cause());
 }
 
 Hdf5File::~Hdf5File() {
@@ -32,12 +50,13 @@ void write_dataset(hid_t file, const std::string& name, hid_t type, const void* 
   const hsize_t dims[2] = {rows, cols};
   const hid_t space = H5Screate_simple(cols == 1 ? 1 : 2, dims, nullptr);
   if (space < 0) throw IoError("HDF5: cannot make a dataspace for '" + name + "' in '" + where + "'");
+  errno = 0;
   const hid_t set = H5Dcreate2(file, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
   herr_t status = -1;
   if (set >= 0) status = (rows * cols == 0) ? 0 : H5Dwrite(set, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data);
   if (set >= 0) H5Dclose(set);
   H5Sclose(space);
-  if (set < 0 || status < 0) throw IoError("HDF5: cannot write dataset '" + name + "' to '" + where + "'");
+  if (set < 0 || status < 0) throw IoError("HDF5: cannot write dataset '" + name + "' to '" + where + "'" + cause());
 }
 
 }  // namespace
@@ -63,10 +82,12 @@ void Hdf5File::attribute(const std::string& name, const std::string& value) {
 }
 
 void Hdf5File::commit() {
-  if (H5Fclose(file_) < 0) throw IoError("HDF5: closing '" + temporary_ + "' failed");
+  errno = 0;
+  const herr_t closed = H5Fclose(file_);
   file_ = -1;
+  if (closed < 0) throw IoError("HDF5: closing '" + temporary_ + "' failed" + cause());
   if (std::rename(temporary_.c_str(), path_.c_str()) != 0)
-    throw IoError("cannot rename '" + temporary_ + "' to '" + path_ + "'");
+    throw IoError("cannot rename '" + temporary_ + "' to '" + path_ + "'" + cause());
   committed_ = true;
 }
 

@@ -1,0 +1,151 @@
+#include "granular/model/bead_source.hpp"
+
+#include <array>
+#include <cmath>
+#include <string>
+#include <utility>
+
+#include "granular/error.hpp"
+#include "granular/io/number_format.hpp"
+#include "granular/linear/dynamical_matrix.hpp"  // linear_stiffness: the contact law's B
+#include "granular/model/random_stream.hpp"
+
+namespace granular {
+namespace {
+
+void require_linear_limit(double precompression) {
+  if (!(precompression > 0) || !std::isfinite(precompression))
+    throw InvalidInput("precompression = " + format_number(precompression) +
+                       " N: must be finite and > 0 (the sonic vacuum has no linear limit)");
+}
+
+/// Masses and bond stiffnesses of two bead types, index 1 and 2 (0 unused). Taken from
+/// two-bead chains built by make_chain, so they are the very numbers a whole chain built by
+/// make_chain(radii_of(types)) holds, bit for bit.
+struct TypeTable {
+  std::array<double, 3> mass{}, left_wall{}, right_wall{};
+  std::array<std::array<double, 3>, 3> bond{};
+
+  explicit TypeTable(const BidisperseBeads& b) {
+    require_linear_limit(b.precompression);
+    if (!(b.r1 > 0) || !std::isfinite(b.r1)) throw InvalidInput("r1 = " + format_number(b.r1) + " m: must be finite and > 0");
+    const std::vector<double> radius = radii_of({1, 2}, b.r1, b.xi);  // validates ξ
+    for (int a = 1; a <= 2; ++a)
+      for (int c = 1; c <= 2; ++c) {
+        const Chain pair = make_chain({radius[a - 1], radius[c - 1]}, b.precompression, b.material);
+        mass[a] = pair.mass[0];
+        left_wall[a] = linear_stiffness(pair.contact[0], b.precompression);
+        bond[a][c] = linear_stiffness(pair.contact[1], b.precompression);
+        right_wall[c] = linear_stiffness(pair.contact[2], b.precompression);
+      }
+  }
+
+  /// Fills a piece given `type_of(i)` ∈ {1, 2} for bead i of an n-bead chain.
+  template <class TypeOf>
+  void fill(std::size_t n, std::size_t first, std::size_t count, TypeOf&& type_of, double* m, double* b) const {
+    if (first + count > n || first > n)
+      throw InvalidInput("bead piece " + std::to_string(first) + " + " + std::to_string(count) + " beyond N = " +
+                         std::to_string(n));
+    int left = first == 0 ? 0 : type_of(first - 1);  // 0: the wall
+    for (std::size_t i = 0; i < count; ++i) {
+      const int here = type_of(first + i);
+      m[i] = mass[here];
+      b[i] = left == 0 ? left_wall[here] : bond[left][here];
+      left = here;
+    }
+    const std::size_t k = first + count;  // the last bond of the piece
+    if (k == n) b[count] = right_wall[left];
+    else if (left == 0) b[count] = left_wall[type_of(k)];
+    else b[count] = bond[left][type_of(k)];
+  }
+};
+
+class RandomBeads final : public BeadSource {
+ public:
+  RandomBeads(Disorder disorder, double q, std::size_t n, std::uint64_t seed, std::uint64_t realization,
+              const BidisperseBeads& beads)
+      : table_(beads), disorder_(disorder), q_(q), n_(n), stream_(seed, realization) {
+    validate_probability(q);
+    if (n < 2) throw InvalidInput("N = " + std::to_string(n) + ": a chain needs at least 2 beads");
+  }
+  std::size_t size() const override { return n_; }
+  void read(std::size_t first, std::size_t count, double* mass, double* stiffness) const override {
+    // The same rule as sample_configuration: bead i of A from uniform i; dimer j = i/2 of RDM1/RDM2
+    // from uniform j, its second bead the same type (RDM1) or the other one (RDM2).
+    std::uint64_t cached = ~std::uint64_t{0};
+    std::array<double, 4> block{};
+    auto uniform = [&](std::uint64_t j) {
+      if (j / 4 != cached) block = stream_.uniform_block(cached = j / 4);
+      return block[j % 4];
+    };
+    auto type_of = [&](std::size_t i) -> int {
+      switch (disorder_) {
+        case Disorder::homogeneous: return 1;
+        case Disorder::anderson: return uniform(i) < q_ ? 1 : 2;
+        case Disorder::rdm1: return uniform(i / 2) < q_ ? 1 : 2;
+        case Disorder::rdm2: return (uniform(i / 2) < q_) == (i % 2 == 0) ? 1 : 2;
+      }
+      return 1;
+    };
+    table_.fill(n_, first, count, type_of, mass, stiffness);
+  }
+
+ private:
+  TypeTable table_;
+  Disorder disorder_;
+  double q_;
+  std::size_t n_;
+  RandomStream stream_;
+};
+
+class TypedBeads final : public BeadSource {
+ public:
+  TypedBeads(Configuration types, const BidisperseBeads& beads) : table_(beads), types_(std::move(types)) {
+    if (types_.size() < 2) throw InvalidInput("N = " + std::to_string(types_.size()) + ": a chain needs at least 2 beads");
+    for (std::size_t i = 0; i < types_.size(); ++i)
+      if (types_[i] != 1 && types_[i] != 2)
+        throw InvalidInput("type of bead " + std::to_string(i + 1) + " = " + std::to_string(types_[i]) + ": must be 1 or 2");
+  }
+  std::size_t size() const override { return types_.size(); }
+  void read(std::size_t first, std::size_t count, double* mass, double* stiffness) const override {
+    table_.fill(types_.size(), first, count, [&](std::size_t i) -> int { return types_[i]; }, mass, stiffness);
+  }
+
+ private:
+  TypeTable table_;
+  Configuration types_;
+};
+
+class ChainBeads final : public BeadSource {
+ public:
+  explicit ChainBeads(const Chain& chain) : mass_(chain.mass) {
+    require_linear_limit(chain.precompression);
+    stiffness_ = linear_stiffness(chain);
+  }
+  std::size_t size() const override { return mass_.size(); }
+  void read(std::size_t first, std::size_t count, double* mass, double* stiffness) const override {
+    if (first > mass_.size() || count > mass_.size() - first)
+      throw InvalidInput("bead piece " + std::to_string(first) + " + " + std::to_string(count) + " beyond N = " +
+                         std::to_string(mass_.size()));
+    for (std::size_t i = 0; i < count; ++i) mass[i] = mass_[first + i];
+    for (std::size_t i = 0; i <= count; ++i) stiffness[i] = stiffness_[first + i];
+  }
+
+ private:
+  std::vector<double> mass_, stiffness_;
+};
+
+}  // namespace
+
+std::unique_ptr<BeadSource> random_beads(Disorder disorder, double q, std::size_t n, std::uint64_t seed,
+                                         std::uint64_t realization, const BidisperseBeads& beads) {
+  return std::make_unique<RandomBeads>(disorder, q, n, seed, realization, beads);
+}
+
+std::unique_ptr<BeadSource> typed_beads(Configuration types, const BidisperseBeads& beads) {
+  return std::make_unique<TypedBeads>(std::move(types), beads);
+}
+
+std::unique_ptr<BeadSource> chain_beads(const Chain& chain) { return std::make_unique<ChainBeads>(chain); }
+
+}  // namespace granular

@@ -1,0 +1,56 @@
+#pragma once
+// The beads of a linearized chain, read a piece at a time (SPEC §3, "Infinite chains"): what
+// the transfer-matrix methods need, which walk the chain once from wall to wall and never need
+// all of it at once. A random realization is drawn lazily from its counter-based stream, so a
+// 10⁸-bead chain costs memory O(piece), not O(N), and gives exactly the beads that
+// `realization_configuration` + `make_chain` give.
+//
+// Indexing as in chain.hpp: beads 0 … N-1; bond k (0 … N) joins bead k-1 and bead k, bond 0 and
+// bond N are the walls.
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "granular/model/chain.hpp"
+#include "granular/model/disorder.hpp"
+#include "granular/model/material.hpp"
+
+namespace granular {
+
+class BeadSource {
+ public:
+  virtual ~BeadSource() = default;
+  /// N, the number of beads.
+  virtual std::size_t size() const = 0;
+  /// Masses m_n [kg] of beads first … first+count-1 into `mass` (count values) and linear
+  /// stiffnesses B_k [N/m] of bonds first … first+count, the bonds on either side of them, into
+  /// `stiffness` (count+1 values). Requires first + count ≤ N. Const and thread-safe: any thread
+  /// may read any piece, in any order.
+  virtual void read(std::size_t first, std::size_t count, double* mass, double* stiffness) const = 0;
+};
+
+/// Beads of two types (type 1: radius r1, type 2: ξ r1), one material, flat walls of the same
+/// material — the chains of the `Disorder` kinds.
+struct BidisperseBeads {
+  double r1 = 4.76e-3;          ///< type-1 radius [m], > 0
+  double xi = 0.5;              ///< size ratio R2/R1 in (0, 1]
+  double precompression = 10;   ///< F0 [N], > 0 (the sonic vacuum has no linear limit)
+  Material material = steel;
+};
+
+/// Realization `realization` of seed `seed` of a disordered chain of N beads, drawn on demand:
+/// bead i (dimer j) from the i-th (j-th) uniform of the Philox stream keyed by (seed,
+/// realization), exactly as `realization_configuration(disorder, q, n, seed, realization)`.
+/// Memory O(1). Throws InvalidInput naming the parameter (q, xi, N, r1, precompression).
+std::unique_ptr<BeadSource> random_beads(Disorder disorder, double q, std::size_t n, std::uint64_t seed,
+                                         std::uint64_t realization, const BidisperseBeads& beads = {});
+
+/// A given sequence of bead types (1 or 2), e.g. from a configuration file. Memory N bytes.
+std::unique_ptr<BeadSource> typed_beads(Configuration types, const BidisperseBeads& beads = {});
+
+/// Any chain (radii file, several materials, other walls): masses and B_k = linear_stiffness
+/// of its contact coefficients, copied (memory 2N doubles). Throws InvalidInput if F0 = 0.
+std::unique_ptr<BeadSource> chain_beads(const Chain& chain);
+
+}  // namespace granular

@@ -1,0 +1,54 @@
+#include "granular/study/localization_scan.hpp"
+
+#include <cmath>
+#include <limits>
+#include <string>
+#include <utility>
+
+#include "granular/error.hpp"
+#include "granular/io/number_format.hpp"
+#include "granular/linear/density_of_states.hpp"
+#include "granular/linear/transfer_matrix.hpp"
+
+namespace granular {
+
+void validate(const LocalizationScanConfig& config) {
+  const auto& f = config.frequency_khz;
+  if (f.empty()) throw InvalidInput("frequencies: the list is empty");
+  for (std::size_t k = 0; k < f.size(); ++k) {
+    if (!std::isfinite(f[k]) || f[k] < 0)
+      throw InvalidInput("frequencies: value " + std::to_string(k + 1) + " = " + format_number(f[k]) +
+                         " kHz (must be finite and >= 0)");
+    if (k > 0 && !(f[k] > f[k - 1]))
+      throw InvalidInput("frequencies: must increase strictly (value " + std::to_string(k + 1) + " = " +
+                         format_number(f[k]) + " kHz after " + format_number(f[k - 1]) + ")");
+  }
+  if (config.segments < 2) throw InvalidInput("segments = " + std::to_string(config.segments) + ": must be >= 2");
+  if (config.threads < 0) throw InvalidInput("threads = " + std::to_string(config.threads) + ": must be >= 0");
+}
+
+LocalizationScan localization_scan(const BeadSource& chain, const LocalizationScanConfig& config,
+                                   ProgressMeter* progress) {
+  validate(config);
+  TransferMatrixConfig tm;
+  tm.segments = config.segments;
+  tm.threads = config.threads;
+  if (progress) tm.progress = [progress](std::size_t steps) { progress->advance(steps); };
+  TransferMatrixScan scan = transfer_matrix_scan(chain, config.frequency_khz, tm);
+
+  LocalizationScan out;
+  out.beads = scan.beads;
+  out.segments = scan.segments;
+  out.idos = integrated_density_of_states(scan.modes_below, scan.beads);
+  out.dos = density_of_states(scan.frequency_khz, out.idos);
+  out.localization_length.resize(scan.lyapunov.size());
+  for (std::size_t k = 0; k < scan.lyapunov.size(); ++k)
+    out.localization_length[k] = scan.lyapunov[k] > 0 ? 1.0 / scan.lyapunov[k] : std::numeric_limits<double>::infinity();
+  out.frequency_khz = std::move(scan.frequency_khz);
+  out.lyapunov = std::move(scan.lyapunov);
+  out.lyapunov_error = std::move(scan.lyapunov_error);
+  out.modes_below = std::move(scan.modes_below);
+  return out;
+}
+
+}  // namespace granular
