@@ -33,7 +33,11 @@ LocalizationScan localization_scan(const BeadSource& chain, const LocalizationSc
   TransferMatrixConfig tm;
   tm.segments = config.segments;
   tm.threads = config.threads;
-  if (progress) tm.progress = [progress](std::size_t steps) { progress->advance(steps); };
+  if (progress || config.cancelled)
+    tm.progress = [progress, &config](std::size_t steps) {
+      if (config.cancelled && config.cancelled()) throw Cancelled();  // every worker stops at its next piece
+      if (progress) progress->advance(steps);
+    };
   TransferMatrixScan scan = transfer_matrix_scan(chain, config.frequency_khz, tm);
 
   LocalizationScan out;

@@ -5,6 +5,7 @@
 // the columns of the `localization` tool (SPEC §3, "Infinite chains").
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "granular/ensemble/progress_meter.hpp"
@@ -16,6 +17,7 @@ struct LocalizationScanConfig {
   std::vector<double> frequency_khz;  ///< [kHz], finite, ≥ 0, strictly increasing (the DOS differences them)
   std::size_t segments = 32;          ///< pieces of the chain for λ's error, ≥ 2 (see TransferMatrixScan)
   int threads = 0;                    ///< 0 = every core; results do not depend on it
+  std::function<bool()> cancelled{};  ///< optional; true stops the scan with Cancelled (see RunOptions::cancelled)
 };
 
 struct LocalizationScan {
