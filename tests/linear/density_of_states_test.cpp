@@ -10,7 +10,7 @@
 #include "granular/error.hpp"
 #include "granular/linear/density_of_states.hpp"
 #include "granular/linear/dynamical_matrix.hpp"
-#include "granular/linear/lapack_eigensolver.hpp"
+#include "granular/linear/detail/lapack_eigensolver.hpp"
 
 namespace granular {
 namespace {

@@ -8,7 +8,7 @@
 
 #include "fixtures.hpp"
 #include "granular/linear/dynamical_matrix.hpp"
-#include "granular/linear/lapack_eigensolver.hpp"
+#include "granular/linear/detail/lapack_eigensolver.hpp"
 #include "granular/linear/transfer_matrix.hpp"
 
 namespace granular {
