@@ -10,6 +10,10 @@
 #include "granular/model/named_chains.hpp"
 #include "granular/study/correlation_study.hpp"
 #include "granular/study/ipr_map.hpp"
+#include "granular/study/localization_scan.hpp"
+#include "granular/linear/band_edges.hpp"
+#include "granular/model/bead_source.hpp"
+#include "granular/number_format.hpp"
 
 namespace granular::python {
 namespace {
@@ -63,6 +67,30 @@ struct PyCorrelations {
 };
 
 int thread_count(long long threads) { return static_cast<int>(checked_size(threads, "threads", 0, 4096)); }
+
+struct PyLocalization {
+  LocalizationScan scan;
+  nlohmann::json metadata;
+};
+
+/// The beads of a Chain argument, as the localization tool reads a --config (types) or --radii
+/// (radii) file; or a random realization drawn on demand (memory independent of N).
+struct Beads {
+  std::unique_ptr<BeadSource> source;
+  nlohmann::json description;
+};
+Beads beads_of(const PyChain& c) {
+  Beads b;
+  b.description = c.description;
+  if (!(c.chain.precompression > 0))
+    bad_value("F0", " 0: the sonic vacuum has no linear limit (needs F0 > 0)");
+  if (!c.types.empty() && c.description.contains("xi"))
+    b.source = typed_beads(c.types, {c.description["R1_m"].get<double>(), c.description["xi"].get<double>(),
+                                     c.chain.precompression, c.material});
+  else
+    b.source = chain_beads(c.chain);
+  return b;
+}
 
 }  // namespace
 
@@ -199,6 +227,109 @@ void bind_studies(py::module_& m) {
       "    threads: worker threads (0: every core); the result does not depend on it\n"
       "    progress: draw a progress bar on stderr\n"
       "Returns a granular.IprMap. Releases the GIL; Ctrl-C stops it (KeyboardInterrupt) after the cell in flight.");
+
+  py::class_<PyLocalization>(m, "Localization",
+                             "The result of granular.localization: per frequency the transfer-matrix Lyapunov "
+                             "exponent, the localization length and the density of states (the localization tool's "
+                             "columns).")
+      .def_property_readonly("freq_khz", [](const PyLocalization& p) { return to_numpy(p.scan.frequency_khz); },
+                             "frequencies f [kHz]")
+      .def_property_readonly("lyapunov", [](const PyLocalization& p) { return to_numpy(p.scan.lyapunov); },
+                             "lambda = (1/N) ln ||(u_(N+1), u_N)|| [1/bead]: the inverse localization length")
+      .def_property_readonly("lyapunov_err", [](const PyLocalization& p) { return to_numpy(p.scan.lyapunov_error); },
+                             "standard error of lambda from the chain's segments [1/bead]")
+      .def_property_readonly("loc_length",
+                             [](const PyLocalization& p) { return to_numpy(p.scan.localization_length); },
+                             "localization length 1/lambda [beads]; inf where lambda <= 0 (inside a band)")
+      .def_property_readonly(
+          "modes_below",
+          [](const PyLocalization& p) {
+            return to_numpy(std::vector<long long>(p.scan.modes_below.begin(), p.scan.modes_below.end()));
+          },
+          "eigenfrequencies of the finite chain below f (exact node counts)")
+      .def_property_readonly("idos", [](const PyLocalization& p) { return to_numpy(p.scan.idos); },
+                             "integrated density of states: modes below f per bead")
+      .def_property_readonly("dos", [](const PyLocalization& p) { return to_numpy(p.scan.dos); },
+                             "density of states d idos / df [1/(bead kHz)]")
+      .def_property_readonly("N", [](const PyLocalization& p) { return p.scan.beads; }, "beads of the chain")
+      .def_property_readonly("metadata", [](const PyLocalization& p) { return to_python(p.metadata); },
+                             "the localization tool's JSON: chain, parameters, band_edges_khz, version");
+
+  m.def(
+      "localization",
+      [](const py::object& chain, const std::string& disorder, const py::object& N, double q, double xi, long long seed,
+         long long realization, double F0, double R1, const py::object& f, long long segments, long long threads,
+         bool progress) {
+        LocalizationScanConfig config;
+        config.frequency_khz = number_list(f, "f", 0.01);
+        for (std::size_t k = 0; k < config.frequency_khz.size(); ++k) {
+          const double v = config.frequency_khz[k];
+          if (v < 0) bad_value("f", ": frequency " + format_number(v) + " kHz is negative");
+          if (k > 0 && !(v > config.frequency_khz[k - 1]))
+            bad_value("f", ": frequencies must increase (the DOS differences neighbours)");
+        }
+        config.segments = checked_size(segments, "segments", 2, 1000000);
+        config.threads = thread_count(threads);
+        Beads beads;
+        if (!chain.is_none()) {
+          if (!py::isinstance<PyChain>(chain)) throw py::type_error("chain: expected a granular.Chain or None");
+          beads = beads_of(chain.cast<const PyChain&>());
+        } else {
+          const double n = N.cast<double>();
+          if (!(n >= 2) || !(n <= 1e12) || n != std::floor(n))
+            bad_value("N", " " + format_number(n) + ": must be a whole number of beads in [2, 1e12]");
+          if (!std::isfinite(F0) || !(F0 > 0))
+            bad_value("F0", " " + format_number(F0) + ": must be finite and > 0 (the sonic vacuum has no linear limit)");
+          if (!std::isfinite(R1) || !(R1 > 0)) bad_value("R1", " " + format_number(R1) + ": must be finite and > 0");
+          validate_size_ratio(xi);
+          validate_probability(q);
+          const Disorder kind = disorder_of(disorder);
+          beads.source = random_beads(kind, q, static_cast<std::size_t>(n), checked_size(seed, "seed"),
+                                      checked_size(realization, "realization"), {R1, xi, F0, steel});
+          beads.description = {{"F0_N", F0},       {"material", material_json(steel)},
+                               {"walls", "flat, same material as the beads"},
+                               {"R1_m", R1},       {"xi", xi},
+                               {"disorder", to_string(kind)},
+                               {"q", q},           {"seed", seed},
+                               {"realization", realization}};
+        }
+        beads.description["N"] = beads.source->size();
+        validate(config);
+        PyLocalization out;
+        run_long("localization", beads.source->size() * config.frequency_khz.size(), progress,
+                 [&](const LongRun& control) {
+                   config.cancelled = control.cancelled;
+                   out.scan = localization_scan(*beads.source, config, control.meter);
+                 });
+        nlohmann::json meta = metadata_head("localization");
+        meta["chain"] = beads.description;
+        meta["parameters"] = {{"frequencies_khz", py::isinstance<py::str>(f) ? nlohmann::json(f.cast<std::string>())
+                                                                             : nlohmann::json(config.frequency_khz)},
+                              {"frequency_count", out.scan.frequency_khz.size()},
+                              {"segments", out.scan.segments},
+                              {"threads", resolve_threads(config.threads)}};
+        const auto& d = beads.description;
+        if (d.contains("xi")) {
+          const BandEdges e = band_edges(steel, d["R1_m"].get<double>(), d["xi"].get<double>(), d["F0_N"].get<double>());
+          meta["band_edges_khz"] = {{"f1", e.f1 * 1e-3}, {"f2", e.f2 * 1e-3}, {"fb1", e.fb1 * 1e-3},
+                                    {"fb2", e.fb2 * 1e-3}, {"fb3", e.fb3 * 1e-3}};
+        }
+        out.metadata = std::move(meta);
+        return out;
+      },
+      py::arg("chain") = py::none(), py::kw_only(), py::arg("disorder") = "A", py::arg("N") = 1000000,
+      py::arg("q") = 0.5, py::arg("xi") = 0.5, py::arg("seed") = 1, py::arg("realization") = 0, py::arg("F0") = 10.0,
+      py::arg("R1") = paper_r1, py::arg("f") = "0:50:0.01", py::arg("segments") = 32, py::arg("threads") = 0,
+      py::arg("progress") = false,
+      "Localization length and density of states of one long chain by transfer matrices (SPEC §3, 'Infinite "
+      "chains'): the localization tool.\n\n"
+      "    chain: a granular.Chain; or None and a random realization (disorder, N, q, xi, seed, realization, F0 [N], "
+      "R1 [m]) drawn a piece at a time, so N = 1e8 needs no more memory than N = 100\n"
+      "    f: frequencies [kHz], increasing: a sequence or the tools' range string ('0:50:0.01')\n"
+      "    segments: chain pieces whose exponents give lyapunov_err (2 ... 1e6)\n"
+      "    threads: workers over blocks of frequencies (0: every core); results do not depend on it\n"
+      "Returns a granular.Localization (freq_khz, lyapunov [1/bead], lyapunov_err, loc_length [beads], modes_below, "
+      "idos, dos, metadata). Releases the GIL; Ctrl-C stops it.");
 
   py::class_<PyCorrelations>(m, "Correlations",
                              "The result of granular.correlations: rho(d) for d = 0..max_distance over realizations, "

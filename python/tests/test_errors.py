@@ -128,6 +128,15 @@ def test_study_keywords():
     raises_naming("disorder", gr.correlations, disorder="h")
     raises_naming("max_distance", gr.correlations, N=10, max_distance=10)
     raises_naming("realizations", gr.correlations, realizations=-3)
+    raises_naming("f", gr.localization, N=100, f="-1:5")
+    raises_naming("f", gr.localization, N=100, f=[5.0, 4.0])
+    raises_naming("f", gr.localization, N=100, f=[1.0, NAN])
+    raises_naming("segments", gr.localization, N=100, segments=1)
+    raises_naming("N", gr.localization, N=2.5)
+    raises_naming("N", gr.localization, N=1e13)
+    raises_naming("F0", gr.localization, N=100, F0=0.0)
+    raises_naming("F0", gr.localization, gr.anderson(N=10, F0=0.0))
+    raises_naming("xi", gr.localization, N=100, xi=0.0)
 
 
 def test_dynamics_keywords(tmp_path):

@@ -48,6 +48,7 @@ def test_linear_figures_from_results():
     check_axes(gp.correlations([gr.correlations(disorder="RDM2", q=0.8), gr.correlations(q=0.5)]))
     check_axes(gp.partial_spectrum_ipr([gr.spectrum(gr.anderson(N=n), near=15, count=5, method="bisect")
                                         for n in (100, 1000)]))
+    check_axes(gp.localization(gr.localization(N=2000, f="0:40:0.5"), [gr.spectrum(gr.anderson(N=200))]))
     with pytest.raises(ValueError, match="partial"):
         gp.ipr_map(gr.ipr_map(xi=0.5, q=0.5, N=100, realizations=2, near=15, count=2, method="bisect"))
 
@@ -101,13 +102,14 @@ def test_command_line_figures_from_the_tools_files(tools):
     tools.run("exponents", "--chains", "h,A", "--F0", "10", "--ic", "displacement", "--N", "151", "--T", "1e-3",
               "--fit", "2e-4:1e-3", "--realizations", "2", "--samples", "50", "--profile-F0", "10", "--quiet",
               output="exp")
-    runs = [("ipr-map", "ipr-map.csv"), ("spectrum", "spectrum.csv"), ("correlations", "correlations.csv"),
+    tools.run("localization", "--N", "2000", "--f", "0:40:1", "--quiet", output="loc")
+    runs = [("localization", "loc.csv", "--spectrum", "spectrum.csv"), ("ipr-map", "ipr-map.csv"), ("spectrum", "spectrum.csv"), ("correlations", "correlations.csv"),
             ("map", "map.h5", "g.csv", "--t-window", "0:5e-4", "--sites", "50:150"),
             ("forces", "one-forces.csv", "one-profile.csv"), ("spread", "one.csv"), ("exponents", "exp", "--profiles")]
     for args in runs:
         done = cli("-m", "granular.plot", *args, cwd=folder)
         assert done.returncode == 0, (args, done.stderr)
-    for png in ("ipr-map.png", "spectrum.png", "correlations.png", "map.png", "one-forces.png", "one.png",
+    for png in ("loc.png", "ipr-map.png", "spectrum.png", "correlations.png", "map.png", "one-forces.png", "one.png",
                 "exp-spreading-displacement.png", "exp-profiles.png"):
         assert (folder / png).stat().st_size > 10000, png
     bad = cli("-m", "granular.plot", "spectrum", "missing.csv", cwd=folder)
@@ -124,7 +126,7 @@ def test_the_readme_main_job_figure_command_keeps_working(tools):
                           capture_output=True, text=True, cwd=tools.folder, env=env)
     assert done.returncode == 0, done.stderr
     assert (tools.folder / "ipr-map.png").stat().st_size > 10000
-    for script in ("ipr_map.py", "spectrum.py", "correlations.py", "partial_spectrum_ipr.py"):
+    for script in ("ipr_map.py", "spectrum.py", "correlations.py", "partial_spectrum_ipr.py", "localization.py"):
         helped = subprocess.run([sys.executable, SOURCE / "tools" / "plot" / script, "--help"], capture_output=True,
                                 text=True, env=env)
         assert helped.returncode == 0 and "usage" in helped.stdout and not helped.stderr, script

@@ -77,3 +77,30 @@ def test_progress_bar_is_drawn_on_stderr(capfd):
     assert "ipr_map:" in err and "44/44" in err and "100%" in err
     gr.ipr_map(xi="0.5:0.6", q=0.5, N=20, realizations=4)
     assert capfd.readouterr().err == ""
+
+
+def test_localization_equals_the_tool_for_a_streamed_chain_and_a_types_file(tools, data_dir):
+    csv, meta = tools.run("localization", "--disorder", "RDM1", "--N", "2e5", "--f", "1:40:0.5", "--segments", "16",
+                          "--seed", "3", "--quiet", output="loc")
+    scan = gr.localization(disorder="RDM1", N=2e5, f="1:40:0.5", segments=16, seed=3)
+    for key in ("freq_khz", "lyapunov", "lyapunov_err", "loc_length", "idos", "dos"):
+        assert_identical(getattr(scan, key), csv[key])
+    assert scan.metadata["chain"] == meta["chain"]
+    assert scan.metadata["parameters"] == meta["parameters"]
+    assert scan.metadata["band_edges_khz"] == meta["band_edges_khz"]
+    types_file = data_dir / "examples" / "diatomic-10.types"
+    csv, _ = tools.run("localization", "--config", types_file, "--f", "0:40:1", "--segments", "2", "--quiet",
+                       output="loc2")
+    scan = gr.localization(gr.from_types(gr.read_types(str(types_file))), f="0:40:1", segments=2)
+    assert_identical(scan.lyapunov, csv["lyapunov"])
+    assert_identical(scan.idos, csv["idos"])
+
+
+def test_localization_node_counts_are_the_spectrum_and_streaming_gives_the_built_chain():
+    chain = gr.anderson(N=300, seed=2, realization=1)
+    modes = gr.spectrum(chain)
+    f = np.sort(np.concatenate([(modes.freq_khz[:-1] + modes.freq_khz[1:]) / 2, [modes.freq_khz[-1] + 1]]))
+    built = gr.localization(chain, f=f)
+    assert_identical(built.modes_below, np.arange(1, 301))  # Dean's method: exactly one mode between midpoints
+    streamed = gr.localization(N=300, seed=2, realization=1, f=f)
+    assert_identical(streamed.lyapunov, built.lyapunov)

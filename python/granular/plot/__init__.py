@@ -12,6 +12,7 @@ From a shell, ``python3 -m granular.plot <kind> FILE... [-o out.png]`` draws the
     spectrum(result_or_csv)                    f versus mode and the IPR beside it (paper Fig. 3)
     correlations(results_or_csvs)              rho(d) with its spread and the infinite-chain formula
     partial_spectrum_ipr(spectra)              IPR versus f - f0 of the modes nearest f0, several N
+    localization(scan_or_csv, spectra)         localization length l(f) beside the IPR of finite chains
     energy_map(run_or_h5, spectral_density)    E_n(t) beside g(nu), zoomable in t and n
     forces(run_or_csv, profile)                force versus t at chosen beads, force profile at T
     spreading(runs_or_csvs)                    m2(t) and P^-1(t), log-log, with L_d insets
@@ -29,7 +30,7 @@ from matplotlib.colors import LogNorm
 from . import _io
 from ._style import EDGE_LABELS, chain_title, figure, guides, log_derivative, log_ticks, mark_edges, style
 
-__all__ = ["ipr_map", "spectrum", "correlations", "partial_spectrum_ipr", "energy_map", "forces", "spreading",
+__all__ = ["ipr_map", "spectrum", "correlations", "partial_spectrum_ipr", "localization", "energy_map", "forces", "spreading",
            "exponents", "profiles", "cost"]
 
 
@@ -203,6 +204,59 @@ def partial_spectrum_ipr(spectra, near=None, labels=None):
         ax.set_ylabel(r"mode IPR $P^{-1}$")
         ax.set_title("modes nearest a frequency (dotted: 3/(2N), an extended mode)")
         ax.legend()
+    return fig
+
+
+def localization(source, spectra=(), finite_N=None):
+    """Localization length l(f) = 1/lambda of the infinite chain (transfer matrices, with its
+    statistical error) beside the IPR of every mode of finite chains of the same disorder: a mode
+    is extended in a finite chain where l(f) exceeds its length. Band edges dashed.
+
+    source: a granular.Localization or the localization tool's CSV. spectra: granular.Spectrum
+    results or spectrum CSVs of finite chains (optional). finite_N: their length, drawn as a line
+    on the left (default: from the spectra)."""
+    if _io.is_path(source):
+        rows = _io.read_csv(source)
+        meta = _io.read_json_beside(source)
+        f, lam, err = rows["freq_khz"], rows["lyapunov"], rows["lyapunov_err"]
+    else:
+        meta = source.metadata
+        f, lam, err = source.freq_khz, source.lyapunov, source.lyapunov_err
+    f, lam, err = (np.asarray(x, float) for x in (f, lam, err))
+    with np.errstate(divide="ignore", invalid="ignore"):
+        ell = np.where(lam > 0, 1 / lam, np.nan)
+        ell_lo = np.where(lam > 0, 1 / (lam + err), np.nan)
+        ell_hi = np.where(lam > err, 1 / (lam - err), np.nan)
+    modes = [_spectrum_data(s) for s in spectra]
+    if finite_N is None and modes:
+        finite_N = modes[0][3].get("chain", {}).get("N") or len(modes[0][0])
+    with style():
+        fig = figure(11, 4.6)
+        left, right = fig.subplots(1, 2, sharex=True)
+        left.fill_between(f, ell_lo, ell_hi, color="C0", alpha=0.3, lw=0, label="± statistical error")
+        left.plot(f, ell, color="C0", lw=1.2, label=r"$\ell = 1/\lambda$ (transfer matrix)")
+        left.set_yscale("log")
+        log_ticks(left.yaxis)
+        left.set_xlabel("frequency f [kHz]")
+        left.set_ylabel(r"localization length $\ell$ [beads]")
+        if finite_N:
+            left.axhline(finite_N, ls=":", color="0.3", lw=1.2, label=f"N = {finite_N} (the finite chains)")
+        for _, freq, ipr, _ in modes:
+            right.plot(freq, ipr, ".", ms=3, color="C3")
+        right.set_yscale("log")
+        log_ticks(right.yaxis)
+        right.set_xlabel("frequency f [kHz]")
+        right.set_ylabel(r"mode IPR $P^{-1}$")
+        right.set_title(f"modes of {len(modes)} finite chain(s)" + (f" of {finite_N} beads" if finite_N else "")
+                        if modes else "no finite chains given", fontsize=11)
+        left.legend(loc="lower left")
+        edges = meta.get("band_edges_khz", {})
+        left.set_xlim(f.min(), f.max())
+        mark_edges(left, edges, orientation="vertical")
+        mark_edges(right, edges, orientation="vertical", labels=False)
+        title = chain_title(meta.get("chain", {}))
+        if title:
+            fig.suptitle(title, fontsize=11)
     return fig
 
 

@@ -44,6 +44,10 @@ def parser(prog=None):
     q.add_argument("csv", nargs="+")
     q.add_argument("--near", type=float, help="f0 [kHz] (default: from the JSON beside the first CSV)")
     q.add_argument("--labels", help="comma list, one per CSV")
+    q = kind("localization", "localization length l(f) beside the IPR of finite chains, from localization CSVs")
+    q.add_argument("csv", nargs="?", default="localization.csv", help="the localization tool's CSV")
+    q.add_argument("--spectrum", nargs="+", default=[], metavar="CSV", help="spectrum CSVs of finite chains")
+    q.add_argument("--finite-N", type=int, help="their length (default: from the first spectrum)")
     q = kind("map", "energy map E_n(t) beside the spectral density, from spreading --energy-map/--spectrum files")
     q.add_argument("map", help="HDF5 file of spreading --energy-map")
     q.add_argument("spectrum", nargs="?", help="CSV of spreading --spectrum (optional)")
@@ -89,6 +93,8 @@ def main(argv=None, prog=None):
         elif args.kind == "partial-spectrum-ipr":
             save(plot.partial_spectrum_ipr(args.csv, near=args.near, labels=labels),
                  args.output or _default_output(args.csv[0]))
+        elif args.kind == "localization":
+            save(plot.localization(args.csv, args.spectrum, args.finite_N), args.output or _default_output(args.csv))
         elif args.kind == "map":
             save(plot.energy_map(args.map, args.spectrum, t_window=args.t_window, site_window=args.sites,
                                  floor=args.floor), args.output or _default_output(args.map))

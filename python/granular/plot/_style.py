@@ -66,7 +66,7 @@ def log_ticks(axis):
     axis.set_minor_formatter(NullFormatter())
 
 
-def mark_edges(ax, edges, orientation="horizontal", names=None):
+def mark_edges(ax, edges, orientation="horizontal", names=None, labels=True):
     """Dashed lines at the band edges [kHz], labelled outside the axis; labels of close edges are
     spread apart so they stay readable. Call after the data are drawn (the limits are final)."""
     if not edges:
@@ -83,12 +83,14 @@ def mark_edges(ax, edges, orientation="horizontal", names=None):
         placed.append(where)
         if orientation == "horizontal":
             ax.axhline(value, ls="--", lw=0.9, color="0.35", zorder=0.5)
-            ax.annotate(EDGE_SHORT.get(name, name), (1.01, where), xycoords=("axes fraction", "data"), fontsize=10,
-                        ha="left", va="center", color="0.25", annotation_clip=False)
+            if labels:
+                ax.annotate(EDGE_SHORT.get(name, name), (1.01, where), xycoords=("axes fraction", "data"),
+                            fontsize=10, ha="left", va="center", color="0.25", annotation_clip=False)
         else:
             ax.axvline(value, ls="--", lw=0.9, color="0.35", zorder=0.5)
-            ax.annotate(EDGE_SHORT.get(name, name), (where, 1.01), xycoords=("data", "axes fraction"), fontsize=10,
-                        ha="center", va="bottom", color="0.25", annotation_clip=False)
+            if labels:
+                ax.annotate(EDGE_SHORT.get(name, name), (where, 1.01), xycoords=("data", "axes fraction"),
+                            fontsize=10, ha="center", va="bottom", color="0.25", annotation_clip=False)
 
 
 def chain_title(chain):
