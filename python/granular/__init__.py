@@ -12,7 +12,7 @@ every result carries the metadata dict the tools write as JSON.
     near = gr.spectrum(chain, near=15.0, count=20, method="bisect")
     grid = gr.ipr_map(disorder="A", xi="0.1:1", q=(0.2, 0.5, 0.8), threads=2, progress=True)
     run = gr.spreading(chain, ic="displacement", T=1e-3, energy_map=True)
-    fig = gr.plot.spectrum(modes)                           # figures: granular.plot
+    fig = gr.plot.spectrum(modes)                           # figures: granular.plot (matplotlib)
 
 Errors: ValueError naming the keyword of a bad value, OSError for files, granular.NumericalError
 when a solver or a guard fails. Long calls release the GIL, take threads=, draw a progress bar with
@@ -77,11 +77,18 @@ if _core is not None:
 else:
     __version__ = "unknown"
 
-    def __getattr__(name):
+
+def __getattr__(name):
+    if name == "plot":  # granular.plot on first use (it imports matplotlib)
+        import importlib
+
+        return importlib.import_module(".plot", __name__)
+    if _core is None and not name.startswith("_"):
         raise ImportError(
             f"granular.{name} needs the compiled extension granular._core, which did not load "
             f"({_core_error}). Build it with CMake (option GRANULAR_PYTHON, on by default) and put "
             "build/python on PYTHONPATH, or install with `cmake --install`.")
+    raise AttributeError(f"module 'granular' has no attribute {name!r}")
 
 
 def __dir__():

@@ -101,11 +101,4 @@ struct LongRun {
 void run_long(const std::string& label, std::size_t total, bool progress,
               const std::function<void(const LongRun&)>& work);
 
-/// Runs `work` with the GIL released (short calls: one spectrum).
-template <class F>
-auto without_gil(F&& work) {
-  py::gil_scoped_release release;
-  return work();
-}
-
 }  // namespace granular::python
