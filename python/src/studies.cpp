@@ -7,13 +7,13 @@
 #include "granular/ensemble/parallel_realizations.hpp"
 #include "granular/ensemble/run_options.hpp"
 #include "granular/error.hpp"
+#include "granular/linear/band_edges.hpp"
+#include "granular/model/bead_source.hpp"
 #include "granular/model/named_chains.hpp"
+#include "granular/number_format.hpp"
 #include "granular/study/correlation_study.hpp"
 #include "granular/study/ipr_map.hpp"
 #include "granular/study/localization_scan.hpp"
-#include "granular/linear/band_edges.hpp"
-#include "granular/model/bead_source.hpp"
-#include "granular/number_format.hpp"
 
 namespace granular::python {
 namespace {
@@ -82,13 +82,11 @@ struct Beads {
 Beads beads_of(const PyChain& c) {
   Beads b;
   b.description = c.description;
-  if (!(c.chain.precompression > 0))
-    bad_value("F0", " 0: the sonic vacuum has no linear limit (needs F0 > 0)");
+  if (!(c.chain.precompression > 0)) bad_value("F0", " 0: the sonic vacuum has no linear limit (needs F0 > 0)");
   if (!c.types.empty() && c.description.contains("xi"))
     b.source = typed_beads(c.types, {c.description["R1_m"].get<double>(), c.description["xi"].get<double>(),
                                      c.chain.precompression, c.material});
-  else
-    b.source = chain_beads(c.chain);
+  else b.source = chain_beads(c.chain);
   return b;
 }
 
@@ -232,28 +230,34 @@ void bind_studies(py::module_& m) {
                              "The result of granular.localization: per frequency the transfer-matrix Lyapunov "
                              "exponent, the localization length and the density of states (the localization tool's "
                              "columns).")
-      .def_property_readonly("freq_khz", [](const PyLocalization& p) { return to_numpy(p.scan.frequency_khz); },
-                             "frequencies f [kHz]")
-      .def_property_readonly("lyapunov", [](const PyLocalization& p) { return to_numpy(p.scan.lyapunov); },
-                             "lambda = (1/N) ln ||(u_(N+1), u_N)|| [1/bead]: the inverse localization length")
-      .def_property_readonly("lyapunov_err", [](const PyLocalization& p) { return to_numpy(p.scan.lyapunov_error); },
-                             "standard error of lambda from the chain's segments [1/bead]")
-      .def_property_readonly("loc_length",
-                             [](const PyLocalization& p) { return to_numpy(p.scan.localization_length); },
-                             "localization length 1/lambda [beads]; inf where lambda <= 0 (inside a band)")
+      .def_property_readonly(
+          "freq_khz", [](const PyLocalization& p) { return to_numpy(p.scan.frequency_khz); }, "frequencies f [kHz]")
+      .def_property_readonly(
+          "lyapunov", [](const PyLocalization& p) { return to_numpy(p.scan.lyapunov); },
+          "lambda = (1/N) ln ||(u_(N+1), u_N)|| [1/bead]: the inverse localization length")
+      .def_property_readonly(
+          "lyapunov_err", [](const PyLocalization& p) { return to_numpy(p.scan.lyapunov_error); },
+          "standard error of lambda from the chain's segments [1/bead]")
+      .def_property_readonly(
+          "loc_length", [](const PyLocalization& p) { return to_numpy(p.scan.localization_length); },
+          "localization length 1/lambda [beads]; inf where lambda <= 0 (inside a band)")
       .def_property_readonly(
           "modes_below",
           [](const PyLocalization& p) {
             return to_numpy(std::vector<long long>(p.scan.modes_below.begin(), p.scan.modes_below.end()));
           },
           "eigenfrequencies of the finite chain below f (exact node counts)")
-      .def_property_readonly("idos", [](const PyLocalization& p) { return to_numpy(p.scan.idos); },
-                             "integrated density of states: modes below f per bead")
-      .def_property_readonly("dos", [](const PyLocalization& p) { return to_numpy(p.scan.dos); },
-                             "density of states d idos / df [1/(bead kHz)]")
-      .def_property_readonly("N", [](const PyLocalization& p) { return p.scan.beads; }, "beads of the chain")
-      .def_property_readonly("metadata", [](const PyLocalization& p) { return to_python(p.metadata); },
-                             "the localization tool's JSON: chain, parameters, band_edges_khz, version");
+      .def_property_readonly(
+          "idos", [](const PyLocalization& p) { return to_numpy(p.scan.idos); },
+          "integrated density of states: modes below f per bead")
+      .def_property_readonly(
+          "dos", [](const PyLocalization& p) { return to_numpy(p.scan.dos); },
+          "density of states d idos / df [1/(bead kHz)]")
+      .def_property_readonly(
+          "N", [](const PyLocalization& p) { return p.scan.beads; }, "beads of the chain")
+      .def_property_readonly(
+          "metadata", [](const PyLocalization& p) { return to_python(p.metadata); },
+          "the localization tool's JSON: chain, parameters, band_edges_khz, version");
 
   m.def(
       "localization",
@@ -286,11 +290,14 @@ void bind_studies(py::module_& m) {
           const Disorder kind = disorder_of(disorder);
           beads.source = random_beads(kind, q, static_cast<std::size_t>(n), checked_size(seed, "seed"),
                                       checked_size(realization, "realization"), {R1, xi, F0, steel});
-          beads.description = {{"F0_N", F0},       {"material", material_json(steel)},
+          beads.description = {{"F0_N", F0},
+                               {"material", material_json(steel)},
                                {"walls", "flat, same material as the beads"},
-                               {"R1_m", R1},       {"xi", xi},
+                               {"R1_m", R1},
+                               {"xi", xi},
                                {"disorder", to_string(kind)},
-                               {"q", q},           {"seed", seed},
+                               {"q", q},
+                               {"seed", seed},
                                {"realization", realization}};
         }
         beads.description["N"] = beads.source->size();
@@ -311,8 +318,11 @@ void bind_studies(py::module_& m) {
         const auto& d = beads.description;
         if (d.contains("xi")) {
           const BandEdges e = band_edges(steel, d["R1_m"].get<double>(), d["xi"].get<double>(), d["F0_N"].get<double>());
-          meta["band_edges_khz"] = {{"f1", e.f1 * 1e-3}, {"f2", e.f2 * 1e-3}, {"fb1", e.fb1 * 1e-3},
-                                    {"fb2", e.fb2 * 1e-3}, {"fb3", e.fb3 * 1e-3}};
+          meta["band_edges_khz"] = {{"f1", e.f1 * 1e-3},
+                                    {"f2", e.f2 * 1e-3},
+                                    {"fb1", e.fb1 * 1e-3},
+                                    {"fb2", e.fb2 * 1e-3},
+                                    {"fb3", e.fb3 * 1e-3}};
         }
         out.metadata = std::move(meta);
         return out;
