@@ -22,20 +22,18 @@ int main(int argc, char** argv) {
                "localization"};
   tool::describe_common(app);
   tool::ChainOptions chain_options;
-  double n = 1e6;
-  tool::add_streamed_chain_options(app, chain_options, n);
+  chain_options.n = 1000000;
+  tool::add_chain_options(app, chain_options);
   std::string frequencies = "0:50:0.01", output = "localization";
   long long segments = 32;
-  int threads = 0;
+  RunOptions run;
   bool quiet = false;
   app.add_option("--f", frequencies, "frequencies [kHz]: start:stop[:step] (step 0.01, stop included) or a,b,c; increasing")
       ->capture_default_str();
-  app.add_option("--segments", segments, "chain pieces whose exponents give lyapunov_err (2 ... 1e6, at most N)")
-      ->capture_default_str();
-  app.add_option("--threads", threads, "worker threads over blocks of frequencies (0 = all cores); output does not depend on it")
-      ->capture_default_str();
+  tool::add_integer(app, "--segments", segments, "chain pieces whose exponents give lyapunov_err (2 ... 1e6, at most N)");
+  tool::add_integer(app, "--threads", run.threads, "worker threads over blocks of frequencies (0 = all cores); output does not depend on it");
   app.add_option("--output", output, "prefix: writes PREFIX.csv and PREFIX.json")->capture_default_str();
-  app.add_flag("--quiet", quiet, "no progress line on stderr");
+  app.add_flag("--quiet", quiet, "no progress line and no final report on stderr");
 
   return tool::run(app, argc, argv, [&] {
     tool::Metadata meta("localization", argc, argv);
@@ -43,23 +41,23 @@ int main(int argc, char** argv) {
     config.frequency_khz = parse_number_list(frequencies, "--f", 0.01);
     for (std::size_t k = 0; k < config.frequency_khz.size(); ++k) {
       const double f = config.frequency_khz[k];
-      if (f < 0) throw InvalidInput("--f " + frequencies + ": frequency " + format_number(f) + " kHz is negative");
+      if (f < 0) throw InvalidInput("--f", " " + frequencies + ": frequency " + format_number(f) + " kHz is negative");
       if (k > 0 && !(f > config.frequency_khz[k - 1]))
-        throw InvalidInput("--f " + frequencies + ": frequencies must increase (the DOS differences neighbours)");
+        throw InvalidInput("--f", " " + frequencies + ": frequencies must increase (the DOS differences neighbours)");
     }
     if (segments < 2 || segments > 1000000)
-      throw InvalidInput("--segments " + std::to_string(segments) + ": must be in [2, 1e6]");
-    if (threads < 0) throw InvalidInput("--threads " + std::to_string(threads) + ": must be >= 0");
+      throw InvalidInput("segments", " " + std::to_string(segments) + ": must be in [2, 1e6]");
+    if (run.threads < 0) throw InvalidInput("threads", " " + std::to_string(run.threads) + ": must be >= 0");
     config.segments = static_cast<std::size_t>(segments);
-    config.threads = threads;
     const std::string csv_path = output + ".csv", json_path = output + ".json";
-    const tool::StreamedChain chain = tool::build_bead_source(chain_options, n);
+    const tool::StreamedChain chain = tool::build_bead_source(chain_options);
     validate(config);
     check_writable(csv_path);
     check_writable(json_path);
 
     ProgressMeter progress(chain.source->size() * config.frequency_khz.size(), "localization", quiet ? 0 : -1);
-    const LocalizationScan scan = localization_scan(*chain.source, config, &progress);
+    run.progress = &progress;
+    const LocalizationScan scan = localization_scan(*chain.source, config, run);
     progress.finish();
 
     AtomicFile csv(csv_path);
@@ -71,7 +69,7 @@ int main(int argc, char** argv) {
     meta["parameters"] = {{"frequencies_khz", frequencies},
                           {"frequency_count", scan.frequency_khz.size()},
                           {"segments", scan.segments},
-                          {"threads", resolve_threads(threads)}};
+                          {"threads", resolve_threads(run.threads)}};
     meta["columns"] = {
         {"freq_khz", "frequency f [kHz]"},
         {"lyapunov", "lambda = (1/N) ln ||(u_{N+1}, u_N)|| of the transfer-matrix recursion from u_0 = 0, u_1 = 1 [1/bead]"},
@@ -85,8 +83,7 @@ int main(int argc, char** argv) {
       meta["band_edges_khz"] = {{"f1", e.f1 * 1e-3}, {"f2", e.f2 * 1e-3}, {"fb1", e.fb1 * 1e-3},
                                 {"fb2", e.fb2 * 1e-3}, {"fb3", e.fb3 * 1e-3}};
     }
-    meta["output"] = {{"csv", csv_path}, {"json", json_path}};
-    csv.commit();
-    meta.write(json_path);
-  });
+    meta["output"] = csv_path;
+    meta.write(json_path, {&csv});
+  }, {{"frequencies", "--f"}});
 }

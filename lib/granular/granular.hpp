@@ -5,6 +5,7 @@
 #include "granular/error.hpp"
 #include "granular/number_format.hpp"
 
+#include "granular/model/bead_source.hpp"
 #include "granular/model/chain.hpp"
 #include "granular/model/configuration_file.hpp"
 #include "granular/model/contact_law.hpp"
@@ -14,9 +15,11 @@
 #include "granular/model/named_chains.hpp"
 
 #include "granular/linear/band_edges.hpp"
+#include "granular/linear/density_of_states.hpp"
 #include "granular/linear/dynamical_matrix.hpp"
 #include "granular/linear/mode_ipr.hpp"
 #include "granular/linear/spectrum.hpp"
+#include "granular/linear/transfer_matrix.hpp"
 #include "granular/linear/tridiagonal_operator.hpp"
 
 #include "granular/dynamics/force_law.hpp"
@@ -30,6 +33,8 @@
 #include "granular/ensemble/parallel_realizations.hpp"
 #include "granular/ensemble/run_options.hpp"
 
+#include "granular/analysis/bootstrap.hpp"
+#include "granular/analysis/exponent_report.hpp"
 #include "granular/analysis/log_derivative.hpp"
 #include "granular/analysis/power_law_fit.hpp"
 #include "granular/analysis/summary_statistics.hpp"
@@ -37,5 +42,8 @@
 #include "granular/study/correlation_study.hpp"
 #include "granular/study/exponent_table.hpp"
 #include "granular/study/ipr_map.hpp"
+#include "granular/study/localization_scan.hpp"
+#include "granular/study/paper_comparison.hpp"
 #include "granular/study/spectrum_file.hpp"
+#include "granular/study/spreading_files.hpp"
 #include "granular/study/transport_study.hpp"

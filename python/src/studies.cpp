@@ -83,10 +83,16 @@ Beads beads_of(const PyChain& c) {
   Beads b;
   b.description = c.description;
   if (!(c.chain.precompression > 0)) bad_value("F0", " 0: the sonic vacuum has no linear limit (needs F0 > 0)");
-  if (!c.types.empty() && c.description.contains("xi"))
-    b.source = typed_beads(c.types, {c.description["R1_m"].get<double>(), c.description["xi"].get<double>(),
-                                     c.chain.precompression, c.material});
-  else b.source = chain_beads(c.chain);
+  if (!c.types.empty() && c.description.contains("xi")) {
+    ChainParameters p;
+    p.xi = c.description["xi"].get<double>();
+    p.R1 = c.description["R1_m"].get<double>();
+    p.F0 = c.chain.precompression;
+    p.material = c.material;
+    b.source = typed_beads(c.types, p);
+  } else {
+    b.source = chain_beads(c.chain);
+  }
   return b;
 }
 
@@ -273,7 +279,7 @@ void bind_studies(py::module_& m) {
             bad_value("f", ": frequencies must increase (the DOS differences neighbours)");
         }
         config.segments = checked_size(segments, "segments", 2, 1000000);
-        config.threads = thread_count(threads);
+        const int thread_request = thread_count(threads);
         Beads beads;
         if (!chain.is_none()) {
           if (!py::isinstance<PyChain>(chain)) throw py::type_error("chain: expected a granular.Chain or None");
@@ -282,14 +288,15 @@ void bind_studies(py::module_& m) {
           const double n = N.cast<double>();
           if (!(n >= 2) || !(n <= 1e12) || n != std::floor(n))
             bad_value("N", " " + format_number(n) + ": must be a whole number of beads in [2, 1e12]");
-          if (!std::isfinite(F0) || !(F0 > 0))
-            bad_value("F0", " " + format_number(F0) + ": must be finite and > 0 (the sonic vacuum has no linear limit)");
-          if (!std::isfinite(R1) || !(R1 > 0)) bad_value("R1", " " + format_number(R1) + ": must be finite and > 0");
-          validate_size_ratio(xi);
-          validate_probability(q);
           const Disorder kind = disorder_of(disorder);
-          beads.source = random_beads(kind, q, static_cast<std::size_t>(n), checked_size(seed, "seed"),
-                                      checked_size(realization, "realization"), {R1, xi, F0, steel});
+          const ChainParameters p{.N = static_cast<std::size_t>(n),
+                                  .q = q,
+                                  .xi = xi,
+                                  .seed = checked_size(seed, "seed"),
+                                  .realization = checked_size(realization, "realization"),
+                                  .F0 = F0,
+                                  .R1 = R1};
+          beads.source = random_beads(kind, p);
           beads.description = {{"F0_N", F0},
                                {"material", material_json(steel)},
                                {"walls", "flat, same material as the beads"},
@@ -305,8 +312,11 @@ void bind_studies(py::module_& m) {
         PyLocalization out;
         run_long("localization", beads.source->size() * config.frequency_khz.size(), progress,
                  [&](const LongRun& control) {
-                   config.cancelled = control.cancelled;
-                   out.scan = localization_scan(*beads.source, config, control.meter);
+                   RunOptions run;
+                   run.threads = thread_request;
+                   run.progress = control.meter;
+                   run.cancelled = control.cancelled;
+                   out.scan = localization_scan(*beads.source, config, run);
                  });
         nlohmann::json meta = metadata_head("localization");
         meta["chain"] = beads.description;
@@ -314,7 +324,7 @@ void bind_studies(py::module_& m) {
                                                                              : nlohmann::json(config.frequency_khz)},
                               {"frequency_count", out.scan.frequency_khz.size()},
                               {"segments", out.scan.segments},
-                              {"threads", resolve_threads(config.threads)}};
+                              {"threads", resolve_threads(thread_request)}};
         const auto& d = beads.description;
         if (d.contains("xi")) {
           const BandEdges e = band_edges(steel, d["R1_m"].get<double>(), d["xi"].get<double>(), d["F0_N"].get<double>());

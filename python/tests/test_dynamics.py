@@ -30,7 +30,7 @@ def test_one_run_with_every_observer_equals_the_spreading_tool(tools):
     csv, meta = tools.run("spreading", *args, output="one")
     run = gr.spreading(gr.anderson(N=201, F0=10, seed=3, realization=1), **SHORT, energy_map=True, map_samples=50,
                        spectral_density=True, spectrum_samples=100, forces_at=[90, 101], force_samples=50)
-    for key in ("t", "m2", "ipr", "energy_error"):
+    for key in ("t", "m2", "ipr", "energy_error", "m2_centroid"):
         assert_identical(run[key], csv[key])
     final = read_csv(tools.path("f.csv"))
     for key in ("u", "v", "energy"):
@@ -47,9 +47,10 @@ def test_one_run_with_every_observer_equals_the_spreading_tool(tools):
         assert_identical(run.energy_map["energy"], np.array(f["energy"]))
         assert_identical(run.energy_map["t"], np.array(f["t"]))
         assert_identical(run.energy_map["site"], np.array(f["site"]))
-    mine = without_process_keys(run.metadata)
-    assert mine == without_process_keys(meta)
-    assert run.gamma["value"] == meta["gamma"] and run.eta["value"] == meta["eta"]
+    mine, theirs = without_process_keys(run.metadata), without_process_keys(meta)
+    assert theirs["spectrum"].pop("file") == str(tools.path("s.csv"))
+    assert mine == theirs
+    assert run.gamma == meta["gamma"] and run.eta == meta["eta"] and run.exponents == meta["exponents"]
 
 
 def test_velocity_kick_at_a_chosen_site_equals_the_spreading_tool(tools):
@@ -59,8 +60,10 @@ def test_velocity_kick_at_a_chosen_site_equals_the_spreading_tool(tools):
     run = gr.spreading(gr.rdm2(N=151, F0=0.5), ic="velocity", beta="match", site=60, integrator="aba864", samples=80,
                        **SHORT)
     assert_identical(run.m2, csv["m2"])
+    assert_identical(run.m2_centroid, csv["m2_centroid"])
     assert_identical(run.ipr, csv["ipr"])
     assert run.metadata["parameters"]["beta_m_s"] == meta["parameters"]["beta_m_s"] > 0
+    assert without_process_keys(run.metadata) == without_process_keys(meta)
 
 
 def test_energy_is_conserved_and_a_homogeneous_chain_spreads_ballistically():
@@ -69,24 +72,26 @@ def test_energy_is_conserved_and_a_homogeneous_chain_spreads_ballistically():
     total = run.final_state["energy"].sum()
     assert total == pytest.approx(run.initial_energy, rel=1e-6)  # walls not reached: sum E_n is H
     assert not run.reached_walls
-    assert run.gamma["value"] == pytest.approx(2.0, abs=0.05)  # SPEC §4: ballistic, m2 ~ t^2
+    assert run.gamma == pytest.approx(2.0, abs=0.05)  # SPEC §4: ballistic, m2 ~ t^2
+    # m2 about the site = m2 about the centroid + (centroid - site)^2 >= m2 about the centroid
+    assert np.all(run.m2 >= run.m2_centroid * (1 - 1e-12))
 
 
 def test_ensemble_equals_the_spreading_tool(tools):
     csv, meta = tools.run("spreading", "--disorder", "A", "--N", "201", "--realizations", "4", "--threads", "2",
                           "--profile", *SHORT_FLAGS, output="ens")
     t = gr.transport(disorder="A", N=201, realizations=4, threads=2, profile=True, **SHORT)
-    for key in ("t", "m2", "ipr", "energy_error"):
+    for key in ("t", "m2", "ipr", "energy_error", "m2_centroid"):
         assert_identical(t[key], csv[key])
     sem = read_csv(tools.path("ens-sem.csv"))
-    assert_identical(t.m2_se, sem["m2_se"])
-    assert_identical(t.ipr_se, sem["ipr_se"])
+    for key in ("m2_se", "ipr_se", "energy_error_se", "m2_centroid_se"):
+        assert_identical(t[key], sem[key])
     profile = read_csv(tools.path("ens-profile.csv"))
     assert_identical(t.profile["energy"], profile["energy"])
     assert_identical(t.profile["energy_se"], profile["energy_se"])
     mine, theirs = without_process_keys(t.metadata), without_process_keys(meta)
-    assert mine.pop("version") == theirs.pop("version")
     assert mine == theirs
+    assert t.gamma_real_err == meta["gamma_real_err"] > 0  # the realization bootstrap
 
 
 def test_ensemble_mean_is_the_mean_of_the_single_runs():
@@ -98,18 +103,29 @@ def test_ensemble_mean_is_the_mean_of_the_single_runs():
 
 def test_exponent_table_equals_the_exponents_tool(tools):
     flags = ["--chains", "h,A", "--F0", "10,0", "--ic", "displacement,velocity", "--N", "151", "--realizations", "3",
-             "--samples", "60", "--profile-F0", "10", "--profile-realizations", "2", *SHORT_FLAGS, "--quiet"]
+             "--samples", "60", "--profile-F0", "10", "--profile-realizations", "2", "--bootstrap", "50", *SHORT_FLAGS,
+             "--compare-paper", "--quiet"]
     csv, meta = tools.run("exponents", *flags, output="exp")
     table = gr.exponent_table(chains=["h", "A"], F0=[10, 0], ic=["displacement", "velocity"], N=151, realizations=3,
-                              samples=60, profile_F0=[10], profile_realizations=2, **SHORT)
-    assert [r["disorder"] for r in table.table] == csv["disorder"]
-    for key in ("F0", "gamma", "gamma_err", "eta", "eta_err", "worst_deviation_m2", "max_energy_error",
-                "realizations"):
-        assert_identical(table.column(key), csv[key])
-    assert [str(v).lower() for v in table.column("power_law_m2")] == csv["power_law_m2"]
+                              samples=60, profile_F0=[10], profile_realizations=2, bootstrap=50, compare_paper=True,
+                              **SHORT)
+    assert set(table.table) == set(csv)
+    for key, column in csv.items():
+        mine = table.column(key)
+        if mine.dtype == bool:
+            assert [str(v).lower() for v in mine] == column, key
+        elif isinstance(column, list):
+            assert list(mine) == column, key
+        else:
+            assert_identical(mine, column)
     curves = read_csv(tools.path("exp-curves.csv"))
-    assert_identical(np.concatenate([c["m2"] for c in table.curves]), curves["m2"])
+    for key in ("t", "m2", "m2_centroid", "ipr", "m2_se"):
+        assert_identical(np.concatenate([c[key] for c in table.curves]), curves[key])
     profiles = read_csv(tools.path("exp-profiles.csv"))
     assert_identical(np.concatenate([p["energy"] for p in table.profiles]), profiles["energy"])
     assert table.metadata["cases"] == meta["cases"]
-    assert "| F0 [N] | h | A |" in table.markdown("gamma", "velocity")
+    paper = read_csv(tools.path("exp-paper.csv"))
+    assert_identical(table.paper["site_z"], paper["site_z"])
+    assert "| F0 [N] | h | A |" in table.markdown
+    row = table.cell("velocity", 0.0, "A")
+    assert row["realizations"] == 3 and row["gamma"] == table.column("gamma")[7]  # kick-major, then F0, then chain

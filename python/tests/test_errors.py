@@ -149,7 +149,7 @@ def test_dynamics_keywords(tmp_path):
     raises_naming("integrator", gr.spreading, c, integrator="euler")
     raises_naming("force_law", gr.spreading, c, force_law="spring")
     raises_naming("sampling", gr.spreading, c, sampling="random")
-    raises_naming("site", gr.spreading, c, site=0)
+    raises_naming("site", gr.spreading, c, site=-1)
     raises_naming("site", gr.spreading, c, site=22)
     raises_naming("forces_at", gr.spreading, c, forces_at=[0])
     raises_naming("forces_at", gr.spreading, c, forces_at=[2.5])
@@ -161,6 +161,10 @@ def test_dynamics_keywords(tmp_path):
     raises_naming("alpha", gr.spreading, c, alpha=0.0)
     raises_naming("alpha", gr.spreading, c, alpha=1.0)  # past the beads' radii
     raises_naming("energy_guard", gr.spreading, c, energy_guard="ignore")
+    raises_naming("centre", gr.spreading, c, centre="middle")
+    raises_naming("spectrum_of", gr.spreading, c, spectral_density=True, spectrum_of="force")
+    raises_naming("fit_step", gr.spreading, c, fit_step=1.5e-6)
+    raises_naming("bootstrap", gr.transport, N=21, bootstrap=1)
     raises_naming("kappa", gr.spreading, c, kappa=0.0)
     raises_naming("force_law", gr.spreading, gr.anderson(N=21, F0=0.0), force_law="fpu")
     raises_naming("realizations", gr.transport, realizations=0)
@@ -186,4 +190,5 @@ def test_numerical_failures_raise_granular_numerical_error():
     assert issubclass(gr.NumericalError, RuntimeError)
     # dt far too large for the contact: the energy guard trips (a NumericalError, not garbage)
     with pytest.raises(gr.NumericalError, match="energy"):
-        gr.spreading(gr.anderson(N=21), alpha=5e-6, dt=1e-4, T=1e-2, fit=(4e-3, 1e-2), max_energy_error=1e-6)
+        gr.spreading(gr.anderson(N=21), alpha=5e-6, dt=1e-4, T=1e-2, fit=(4e-3, 1e-2), fit_step=1e-4,
+                     max_energy_error=1e-6)

@@ -45,18 +45,18 @@ void run(benchmark::State& state, const BeadSource& chain, int threads) {
 }
 
 void streamed(benchmark::State& state) {
-  const auto chain = random_beads(Disorder::anderson, 0.5, static_cast<std::size_t>(state.range(1)), 1, 0);
+  const auto chain = random_beads(Disorder::anderson, {.N = static_cast<std::size_t>(state.range(1)), .q = 0.5, .seed = 1, .realization = 0});
   run(state, *chain, 1);
 }
 void streamed_two_threads(benchmark::State& state) {
-  const auto chain = random_beads(Disorder::anderson, 0.5, static_cast<std::size_t>(state.range(1)), 1, 0);
+  const auto chain = random_beads(Disorder::anderson, {.N = static_cast<std::size_t>(state.range(1)), .q = 0.5, .seed = 1, .realization = 0});
   run(state, *chain, 2);
 }
 void stored_chain(benchmark::State& state) { run(state, stored(static_cast<std::size_t>(state.range(1))), 1); }
 
 /// The bead source alone: one pass over the chain in the kernel's pieces.
 void generate(benchmark::State& state) {
-  const auto chain = random_beads(Disorder::anderson, 0.5, static_cast<std::size_t>(state.range(0)), 1, 0);
+  const auto chain = random_beads(Disorder::anderson, {.N = static_cast<std::size_t>(state.range(0)), .q = 0.5, .seed = 1, .realization = 0});
   std::vector<double> m(1024), b(1025);
   for (auto _ : state)
     for (std::size_t p = 0; p < chain->size(); p += 1024) {

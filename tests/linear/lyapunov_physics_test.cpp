@@ -8,7 +8,7 @@
 
 #include "fixtures.hpp"
 #include "granular/linear/dynamical_matrix.hpp"
-#include "granular/linear/detail/lapack_eigensolver.hpp"
+#include "granular/linear/spectrum.hpp"
 #include "granular/linear/transfer_matrix.hpp"
 
 namespace granular {
@@ -21,7 +21,7 @@ TEST(LyapunovPhysics, AndersonChainLambdaGrowsAsFSquaredAtLowFrequency) {
   // (f⁴) terms make the slope ~2.01 here and ~2.03 on 0.5–5 kHz.
   std::vector<double> f;
   for (int k = 0; k <= 10; ++k) f.push_back(0.3 * std::pow(10.0, k / 10.0));
-  const auto scan = transfer_matrix_scan(*random_beads(Disorder::anderson, 0.5, 10000000, 1, 0), f);
+  const auto scan = transfer_matrix_scan(*random_beads(Disorder::anderson, {.N = 10000000, .q = 0.5, .seed = 1, .realization = 0}), f);
   double sw = 0, sx = 0, sy = 0, sxx = 0, sxy = 0;
   for (std::size_t k = 0; k < f.size(); ++k) {
     ASSERT_GT(scan.lyapunov[k], 5 * scan.lyapunov_error[k]) << f[k] << " kHz";
@@ -52,23 +52,24 @@ TEST(LyapunovPhysics, EigenvectorsOfFiniteChainsDecayAtLambda) {
   // asks that z = (slope − λ)/that error be distributed as it says: mean 0, spread 1.
   const std::size_t n = 4000, reference_n = 1000000;
   const Chain chain = fixtures::random_chain(Disorder::anderson, n, 0.5, 0.5, 0);
-  const EigenDecomposition eig = LapackEigensolver().solve(dynamical_matrix(chain), true);
-  std::vector<int> modes;
+  const Spectrum eig = spectrum(dynamical_matrix(chain), all_modes(), {.vectors = true});  // LAPACK dstevd
+  std::vector<std::size_t> modes;
   std::vector<double> f;
-  for (int k = 0; k < static_cast<int>(n); ++k)
-    if (const double fk = frequency_khz(eig.values[k]); fk >= 6 && fk <= 14) {
+  for (std::size_t k = 0; k < n; ++k)
+    if (const double fk = eig.freq_khz[k]; fk >= 6 && fk <= 14) {
       modes.push_back(k);
       f.push_back(fk);
     }
-  const auto reference = transfer_matrix_scan(*random_beads(Disorder::anderson, 0.5, reference_n, 7, 1), f);
+  const auto reference = transfer_matrix_scan(*random_beads(Disorder::anderson, {.N = reference_n, .q = 0.5, .seed = 7, .realization = 1}), f);
 
   std::vector<double> z;
   int skipped_floor = 0;
   for (std::size_t j = 0; j < modes.size(); ++j) {
     std::vector<double> profile(n - 1);
+    const auto w = eig.vector(modes[j]);
     for (std::size_t i = 0; i + 1 < n; ++i) {
-      const double a = eig.vectors(i, modes[j]) * std::sqrt(chain.inverse_mass[i]);
-      const double b = eig.vectors(i + 1, modes[j]) * std::sqrt(chain.inverse_mass[i + 1]);
+      const double a = w[i] * std::sqrt(chain.inverse_mass[i]);
+      const double b = w[i + 1] * std::sqrt(chain.inverse_mass[i + 1]);
       profile[i] = 0.5 * std::log(a * a + b * b);
     }
     const long centre = std::max_element(profile.begin(), profile.end()) - profile.begin();

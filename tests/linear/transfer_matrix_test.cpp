@@ -119,7 +119,7 @@ TEST(TransferMatrix, FlatWallsChangeLambdaOnlyByOneOverN) {
   // Flat walls (stiffer end bonds) change the starting vector, not the growth rate.
   const std::vector<double> f{20, 30};
   for (std::size_t n : {10000u, 100000u}) {
-    const auto flat = transfer_matrix_scan(*random_beads(Disorder::homogeneous, 0.5, n, 1, 0), f);
+    const auto flat = transfer_matrix_scan(*random_beads(Disorder::homogeneous, {.N = n, .q = 0.5, .seed = 1, .realization = 0}), f);
     const auto bulk_walls = transfer_matrix_scan(*chain_beads(fixtures::homogeneous_bulk_walls(n)), f);
     for (std::size_t k = 0; k < f.size(); ++k) {
       const double shift = (flat.lyapunov[k] - bulk_walls.lyapunov[k]) * double(n);  // an N-independent constant
@@ -168,7 +168,7 @@ TEST(TransferMatrix, DiatomicChainMatchesTheUnitCell) {
 }
 
 TEST(TransferMatrix, BitIdenticalForAnyThreadCountAndBlock) {
-  const auto chain = random_beads(Disorder::rdm2, 0.3, 200001, 4, 2);
+  const auto chain = random_beads(Disorder::rdm2, {.N = 200001, .q = 0.3, .seed = 4, .realization = 2});
   std::vector<double> f;
   for (int k = 0; k <= 150; ++k) f.push_back(0.33 * k);
   TransferMatrixConfig one, two, three;
@@ -193,9 +193,9 @@ TEST(TransferMatrix, ErrorShrinksLikeOneOverRootN) {
   // Anderson chain at 15 kHz (ℓ of a few beads): the segment error falls ~ N^{-1/2}, and chains
   // of other realizations agree with each other within a few errors.
   const std::vector<double> f{15};
-  const auto small = transfer_matrix_scan(*random_beads(Disorder::anderson, 0.5, 100000, 1, 0), f);
-  const auto large = transfer_matrix_scan(*random_beads(Disorder::anderson, 0.5, 1600000, 1, 0), f);
-  const auto other = transfer_matrix_scan(*random_beads(Disorder::anderson, 0.5, 1600000, 1, 1), f);
+  const auto small = transfer_matrix_scan(*random_beads(Disorder::anderson, {.N = 100000, .q = 0.5, .seed = 1, .realization = 0}), f);
+  const auto large = transfer_matrix_scan(*random_beads(Disorder::anderson, {.N = 1600000, .q = 0.5, .seed = 1, .realization = 0}), f);
+  const auto other = transfer_matrix_scan(*random_beads(Disorder::anderson, {.N = 1600000, .q = 0.5, .seed = 1, .realization = 1}), f);
   EXPECT_NEAR(small.lyapunov_error[0] / large.lyapunov_error[0], 4.0, 1.2);
   const double combined = std::hypot(large.lyapunov_error[0], other.lyapunov_error[0]);
   EXPECT_LT(std::fabs(large.lyapunov[0] - other.lyapunov[0]), 4 * combined);
@@ -203,7 +203,7 @@ TEST(TransferMatrix, ErrorShrinksLikeOneOverRootN) {
 }
 
 TEST(TransferMatrix, RejectsBadParameters) {
-  const auto chain = random_beads(Disorder::anderson, 0.5, 100, 1, 0);
+  const auto chain = random_beads(Disorder::anderson, {.N = 100, .q = 0.5, .seed = 1, .realization = 0});
   auto message = [&](const std::vector<double>& f, TransferMatrixConfig config) {
     try {
       transfer_matrix_scan(*chain, f, config);

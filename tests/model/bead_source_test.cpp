@@ -6,7 +6,6 @@
 
 #include "fixtures.hpp"
 #include "granular/error.hpp"
-#include "granular/linear/dynamical_matrix.hpp"
 #include "granular/model/bead_source.hpp"
 #include "granular/model/random_stream.hpp"
 
@@ -55,34 +54,49 @@ TEST(RandomStream, BlocksAreTheSequentialDraws) {
 }
 
 TEST(BeadSource, StreamedRealizationIsExactlyTheBuiltChain) {
-  const BidisperseBeads beads{fixtures::r1, 0.4, 2.5, steel};
   for (Disorder kind : {Disorder::homogeneous, Disorder::anderson, Disorder::rdm1, Disorder::rdm2})
     for (std::size_t n : {2u, 3u, 1000u, 4097u})
       for (std::uint64_t r : {0u, 5u}) {
-        const Chain chain =
-            make_chain(radii_of(realization_configuration(kind, 0.3, n, 17, r), beads.r1, beads.xi), beads.precompression);
-        const auto source = random_beads(kind, 0.3, n, 17, r, beads);
+        const ChainParameters p{.N = n, .q = 0.3, .xi = 0.4, .seed = 17, .realization = r, .F0 = 2.5};
+        // The chain as the rest of the toolkit builds it: types from realization_configuration.
+        const Chain chain = make_chain(radii_of(realization_configuration(kind, p.q, n, p.seed, r), p.R1, p.xi), p.F0);
+        const auto source = random_beads(kind, p);
         ASSERT_EQ(source->size(), n);
         const Beads got = read_in_pieces(*source, static_cast<unsigned>(n + r));
         EXPECT_EQ(got.mass, chain.mass) << to_string(kind) << " N=" << n << " r=" << r;
         EXPECT_EQ(got.stiffness, linear_stiffness(chain)) << to_string(kind) << " N=" << n << " r=" << r;
+        EXPECT_EQ(got.mass, random_chain(kind, p).mass);
       }
 }
 
 TEST(BeadSource, OtherSeedsAndRealizationsGiveOtherChains) {
   std::vector<double> a(500), b(500), c(500), s(501);
-  random_beads(Disorder::anderson, 0.5, 500, 1, 0)->read(0, 500, a.data(), s.data());
-  random_beads(Disorder::anderson, 0.5, 500, 1, 1)->read(0, 500, b.data(), s.data());
-  random_beads(Disorder::anderson, 0.5, 500, 2, 0)->read(0, 500, c.data(), s.data());
+  random_beads(Disorder::anderson, {.N = 500, .seed = 1, .realization = 0})->read(0, 500, a.data(), s.data());
+  random_beads(Disorder::anderson, {.N = 500, .seed = 1, .realization = 1})->read(0, 500, b.data(), s.data());
+  random_beads(Disorder::anderson, {.N = 500, .seed = 2, .realization = 0})->read(0, 500, c.data(), s.data());
   EXPECT_NE(a, b);
   EXPECT_NE(a, c);
 }
 
+TEST(BeadSource, StreamsAreNotLimitedToStoredChainSizes) {
+  // 10⁹ beads: nothing is stored, and the last piece is as cheap as the first.
+  const ChainParameters p{.N = 1000000000, .q = 0.5};
+  const auto source = random_beads(Disorder::rdm2, p);
+  std::vector<double> m(4), b(5);
+  source->read(999999996, 4, m.data(), b.data());
+  EXPECT_NE(m[2], m[3]);  // an RDM2 dimer holds one bead of each type
+  const double m1 = from_types({1, 1}, p).mass[0];
+  const Configuration last{std::uint8_t(m[2] == m1 ? 1 : 2), std::uint8_t(m[3] == m1 ? 1 : 2)};
+  const auto tail = linear_stiffness(from_types(last, p));  // wall, bond, wall
+  EXPECT_EQ(b[3], tail[1]);
+  EXPECT_EQ(b[4], tail[2]);  // the right wall, a billion beads away
+}
+
 TEST(BeadSource, TypesAndChainsGiveTheirOwnBeads) {
   const Configuration types{1, 2, 2, 1, 2, 1, 1, 1, 2};
-  const BidisperseBeads beads{fixtures::r1, 0.7, 10, steel};
-  const Chain chain = make_chain(radii_of(types, beads.r1, beads.xi), beads.precompression);
-  const Beads typed = read_in_pieces(*typed_beads(types, beads), 1);
+  const ChainParameters p{.xi = 0.7, .F0 = 10};
+  const Chain chain = from_types(types, p);
+  const Beads typed = read_in_pieces(*typed_beads(types, p), 1);
   EXPECT_EQ(typed.mass, chain.mass);
   EXPECT_EQ(typed.stiffness, linear_stiffness(chain));
 
@@ -98,26 +112,23 @@ TEST(BeadSource, TypesAndChainsGiveTheirOwnBeads) {
 }
 
 TEST(BeadSource, BadParametersAreNamed) {
-  auto message = [](auto make) {
+  auto parameter = [](auto make) {
     try {
       make();
     } catch (const InvalidInput& e) {
-      return std::string(e.what());
+      return e.parameter();
     }
     return std::string("no exception");
   };
-  EXPECT_NE(message([] { random_beads(Disorder::anderson, 0.5, 100, 1, 0, {fixtures::r1, 0.5, 0, steel}); })
-                .find("precompression"), std::string::npos);
-  EXPECT_NE(message([] { random_beads(Disorder::anderson, 0.5, 1, 1, 0); }).find("N = 1"), std::string::npos);
-  EXPECT_NE(message([] { random_beads(Disorder::anderson, 1.5, 10, 1, 0); }).find("q"), std::string::npos);
-  EXPECT_NE(message([] { random_beads(Disorder::anderson, 0.5, 10, 1, 0, {fixtures::r1, 0, 10, steel}); }).find("xi"),
-            std::string::npos);
-  EXPECT_NE(message([] { random_beads(Disorder::anderson, 0.5, 10, 1, 0, {-1, 0.5, 10, steel}); }).find("r1"),
-            std::string::npos);
-  EXPECT_NE(message([] { typed_beads({1, 3}); }).find("bead 2"), std::string::npos);
-  EXPECT_NE(message([] { chain_beads(fixtures::homogeneous(5, 0)); }).find("precompression"), std::string::npos);
+  EXPECT_EQ(parameter([] { random_beads(Disorder::anderson, {.N = 100, .F0 = 0}); }), "F0");
+  EXPECT_EQ(parameter([] { random_beads(Disorder::anderson, {.N = 1}); }), "N");
+  EXPECT_EQ(parameter([] { random_beads(Disorder::anderson, {.N = 10, .q = 1.5}); }), "q");
+  EXPECT_EQ(parameter([] { random_beads(Disorder::anderson, {.N = 10, .xi = 0}); }), "xi");
+  EXPECT_EQ(parameter([] { random_beads(Disorder::anderson, {.N = 10, .R1 = -1}); }), "R1");
+  EXPECT_EQ(parameter([] { typed_beads({1, 3}); }), "types");
+  EXPECT_EQ(parameter([] { chain_beads(fixtures::homogeneous(5, 0)); }), "F0");
   std::vector<double> m(5), s(6);
-  EXPECT_THROW(random_beads(Disorder::anderson, 0.5, 10, 1, 0)->read(6, 5, m.data(), s.data()), InvalidInput);
+  EXPECT_THROW(random_beads(Disorder::anderson, {.N = 10})->read(6, 5, m.data(), s.data()), InvalidInput);
 }
 
 }  // namespace

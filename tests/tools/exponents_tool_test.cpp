@@ -3,19 +3,26 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <fstream>
+#include <sstream>
 #include <thread>
 
 #include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
 
 #include "tool_runner.hpp"
 
 namespace granular::testing {
 namespace {
 
-const std::string job = "--N 201 --T 1e-3 --fit 4e-4:1e-3 --samples 30 --F0 10,0.1 --chains h,A,RDM2 --quiet";
+const std::string job =
+    "--N 201 --T 1e-3 --fit 4e-4:1e-3 --samples 30 --F0 10,0.1 --chains h,A,RDM2 --bootstrap 200 --compare-paper --quiet";
 
+// Every output but the JSON (which holds the command line and the wall time).
 std::string outputs(const std::string& prefix) {
-  return read_file(prefix + ".csv") + read_file(prefix + "-curves.csv") + read_file(prefix + "-profiles.csv");
+  return read_file(prefix + ".csv") + read_file(prefix + "-curves.csv") + read_file(prefix + "-profiles.csv") +
+         read_file(prefix + "-paper.csv");
 }
 
 TEST(ExponentsTool, ByteIdenticalForThreadCounts) {
@@ -24,6 +31,7 @@ TEST(ExponentsTool, ByteIdenticalForThreadCounts) {
   ASSERT_EQ(run_tool("exponents", job + " --realizations 6 --threads 2 --output " + dir + "/t2").exit_code, 0);
   const std::string one = outputs(dir + "/t1");
   EXPECT_GT(one.size(), 1000u);
+  EXPECT_GT(read_file(dir + "/t1-paper.csv").size(), 200u) << "the comparison must be among the outputs compared";
   EXPECT_EQ(one, outputs(dir + "/t2"));
   EXPECT_FALSE(std::filesystem::exists(dir + "/t1.checkpoint.0")) << "checkpoints must go once the outputs exist";
   std::filesystem::remove_all(dir);
@@ -97,6 +105,69 @@ TEST(ExponentsTool, RefusesACheckpointOfOtherParameters) {
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("different parameters"), std::string::npos) << r.err;
   EXPECT_FALSE(std::filesystem::exists(dir + "/x.csv"));
+  std::filesystem::remove_all(dir);
+}
+
+// Errors name the flag typed; the paper's table missing is an I/O error; nothing is written.
+TEST(ExponentsTool, BadInputNamesTheFlag) {
+  const std::string dir = scratch_folder("exp-bad");
+  const std::string base = "--N 51 --T 1e-4 --fit 2e-5:1e-4 --realizations 2 --F0 1 --quiet --output " + dir + "/x ";
+  for (auto [args, flag] : {std::pair{"--chains RDM3", "--chains"}, {"--chains A --fit-step 3e-6 --dt 2e-6", "--fit-step"},
+                            {"--chains A --centre middle", "--centre"}, {"--chains A --t-star nan", "--t-star"},
+                            {"--chains A --bootstrap 0", "--bootstrap"}, {"--chains A --ic both", "--ic"}}) {
+    const ToolResult r = run_tool("exponents", base + args);
+    EXPECT_EQ(r.exit_code, 2) << args << ": " << r.err;
+    EXPECT_NE(r.err.find(flag), std::string::npos) << args << ": " << r.err;
+  }
+  const ToolResult missing = run_tool("exponents", base + "--chains A --compare-paper --paper-table /nonexistent/t.csv");
+  EXPECT_EQ(missing.exit_code, 1) << missing.err;
+  EXPECT_FALSE(std::filesystem::exists(dir + "/x.csv"));
+  std::filesystem::remove_all(dir);
+}
+
+// The columns of the exponents CSV: γ about both centres, shown value, fit and mean L_d, both
+// error sources; JSON holding the values used.
+TEST(ExponentsTool, CsvCarriesBothCentresAndBothErrorSources) {
+  const std::string dir = scratch_folder("exp-columns");
+  const ToolResult r = run_tool("exponents", "--N 201 --T 1e-3 --fit 4e-4:1e-3 --F0 10 --chains A --ic velocity "
+                                             "--realizations 4 --bootstrap 100 --quiet --output " + dir + "/x");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string csv = read_file(dir + "/x.csv");
+  EXPECT_EQ(csv.substr(0, csv.find('\n')),
+            "ic,F0,disorder,centre,gamma,gamma_err,gamma_real_err,gamma_star,gamma_fit,gamma_fit_err,gamma_fit_real_err,"
+            "gamma_mean_ld,gamma_mean_ld_err,gamma_mean_ld_real_err,worst_deviation_m2,other_centre,gamma_other,"
+            "gamma_other_err,gamma_other_real_err,gamma_other_star,gamma_other_fit,gamma_other_mean_ld,eta,eta_err,"
+            "eta_real_err,eta_star,eta_fit,eta_fit_err,eta_fit_real_err,eta_mean_ld,eta_mean_ld_err,eta_mean_ld_real_err,"
+            "worst_deviation_ipr,realizations,max_energy_error,reached_walls");
+  EXPECT_NE(csv.find("\nvelocity,10,A,site,"), std::string::npos) << csv;
+  const auto meta = nlohmann::json::parse(read_file(dir + "/x.json"));
+  const auto& c = meta["cases"][0];
+  EXPECT_EQ(c["beta_m_s"], 8e-3);  // the paper's β, the default of both tools
+  EXPECT_TRUE(c["alpha_m"].is_null()) << "a fixed-β velocity kick uses no α";
+  EXPECT_EQ(c["m2_centre"], "site");
+  EXPECT_TRUE(c["exponents"]["gamma_site"]["fit"]["realization_error"].is_number());
+  std::filesystem::remove_all(dir);
+}
+
+// One default for every physical choice: the same case gives the same numbers from both tools.
+TEST(ExponentsTool, SameCaseSameNumbersAsSpreading) {
+  const std::string dir = scratch_folder("exp-spreading");
+  const std::string common = "--N 201 --T 1e-3 --fit 4e-4:1e-3 --F0 0.1 --ic velocity --realizations 5 --bootstrap 100 --quiet";
+  ASSERT_EQ(run_tool("exponents", common + " --chains RDM1 --output " + dir + "/e").exit_code, 0);
+  ASSERT_EQ(run_tool("spreading", common + " --disorder RDM1 --output " + dir + "/s").exit_code, 0);
+  const auto meta = nlohmann::json::parse(read_file(dir + "/s.json"));
+  std::ifstream csv(dir + "/e.csv");
+  std::string header, row;
+  std::getline(csv, header);
+  std::getline(csv, row);
+  std::vector<std::string> cells;
+  std::stringstream fields(row);
+  for (std::string cell; std::getline(fields, cell, ',');) cells.push_back(cell);
+  ASSERT_GT(cells.size(), 25u);
+  EXPECT_EQ(std::stod(cells[4]), meta["gamma"].get<double>());            // gamma (shown)
+  EXPECT_EQ(std::stod(cells[6]), meta["gamma_real_err"].get<double>());   // its bootstrap error
+  EXPECT_EQ(std::stod(cells[22]), meta["eta"].get<double>());
+  EXPECT_EQ(meta["parameters"]["beta_m_s"], 8e-3);
   std::filesystem::remove_all(dir);
 }
 

@@ -45,7 +45,7 @@ TEST(SpreadingTool, WritesEveryOutputWithTheContractColumns) {
                               "--spectrum spectrum.csv --spectrum-samples 100 --ic velocity --beta match",
                               dir);
   ASSERT_EQ(r.code, 0) << r.err;
-  EXPECT_EQ(first_line(dir / "out.csv"), "t,m2,ipr,energy_error");
+  EXPECT_EQ(first_line(dir / "out.csv"), "t,m2,ipr,energy_error,m2_centroid");
   EXPECT_EQ(first_line(dir / "final.csv"), "site,u,v,energy");
   EXPECT_EQ(first_line(dir / "out-profile.csv"), "site,energy,force");
   EXPECT_EQ(first_line(dir / "out-forces.csv"), "t,site,force");
@@ -55,10 +55,34 @@ TEST(SpreadingTool, WritesEveryOutputWithTheContractColumns) {
   const auto meta = nlohmann::json::parse(json);
   for (const char* key : {"gamma", "gamma_err", "eta", "eta_err", "power_law", "parameters", "version", "wall_time_s"})
     EXPECT_TRUE(meta.contains(key)) << key;
+  EXPECT_TRUE(meta["gamma"].is_number() && meta["eta"].is_number() && meta["power_law"].is_boolean());
+  EXPECT_TRUE(meta["gamma_real_err"].is_null()) << "one chain has no realization error";
   EXPECT_EQ(meta["parameters"]["site"], 101);
+  // The values used: the matched β of this chain and the α it matches; the spectrum's series named.
+  EXPECT_GT(meta["parameters"]["beta_m_s"].get<double>(), 0);
+  EXPECT_NE(meta["parameters"]["beta_m_s"].get<double>(), 8e-3);
+  EXPECT_EQ(meta["parameters"]["alpha_m"], 1e-7);
+  EXPECT_EQ(meta["spectrum"]["of"], "displacement");
   EXPECT_NEAR(meta["run"]["max_energy_error"].get<double>(), 0, 1e-4);
   // N = 201 is too short for 2.5 ms at F0 = 10 N (the front runs Ω T/2 ≈ 142 > 100 beads each way): the tool warns.
   EXPECT_NE(r.err.find("reached the walls"), std::string::npos) << r.err;
+  fs::remove_all(dir);
+}
+
+// The velocity kick's JSON holds the β used (the paper's 8e-3 by default) and no α; the spectrum of
+// the velocities is named as such.
+TEST(SpreadingTool, JsonHoldsTheKickUsedAndTheSpectrumSeries) {
+  const fs::path dir = fresh_dir("kick");
+  const ToolRun r = run_spreading("--disorder h --N 101 --F0 0 --T 2e-4 --fit 1e-4:2e-4 --ic velocity --output out "
+                                  "--spectrum g.csv --spectrum-samples 64 --spectrum-of velocity --quiet", dir);
+  ASSERT_EQ(r.code, 0) << r.err;
+  std::ifstream json(dir / "out.json");
+  const auto meta = nlohmann::json::parse(json);
+  EXPECT_EQ(meta["parameters"]["beta_m_s"], 8e-3);
+  EXPECT_TRUE(meta["parameters"]["alpha_m"].is_null());
+  EXPECT_EQ(meta["parameters"]["m2_centre"], "site");
+  EXPECT_EQ(meta["spectrum"]["of"], "velocity");
+  EXPECT_EQ(first_line(dir / "g.csv"), "freq_khz,g");
   fs::remove_all(dir);
 }
 
@@ -111,7 +135,7 @@ TEST_P(SpreadingToolBadInput, ExitsWithCode2AndWritesNothing) {
 INSTANTIATE_TEST_SUITE_P(
     Cases, SpreadingToolBadInput,
     ::testing::Values(BadInput{"--dt 0", "--dt"}, BadInput{"--dt -1e-6", "--dt"}, BadInput{"--T 0", "--T"},
-                      BadInput{"--T -1", "--T"}, BadInput{"--T 1.5e-6 --dt 1e-6", "--T"}, BadInput{"--site 0", "--site"},
+                      BadInput{"--T -1", "--T"}, BadInput{"--T 1.5e-6 --dt 1e-6", "--T"}, BadInput{"--site -1", "--site"},
                       BadInput{"--site 102", "--site"}, BadInput{"--alpha 5e-3", "--alpha"},
                       BadInput{"--alpha 0", "--alpha"}, BadInput{"--disorder X", "disorder"}, BadInput{"--q 1.5", "q"},
                       BadInput{"--xi 0", "xi"}, BadInput{"--N 1", "--N"}, BadInput{"--F0 -1", "--F0"},
@@ -121,7 +145,10 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInput{"--realizations 2 --config x.txt", "--config"}, BadInput{"--resume", "--resume"},
                       BadInput{"--threads -2", "--threads"}, BadInput{"--forces-at 0", "--forces-at"},
                       BadInput{"--ic velocity --beta abc", "--beta"}, BadInput{"--ic push", "--ic"},
-                      BadInput{"--samples 1", "--samples"}, BadInput{"--samples 10 --fit 4e-5:1e-4", "--fit"}, BadInput{"--fit 2e-3:1e-3", "--fit"},
+                      BadInput{"--samples 1", "--samples"}, BadInput{"--fit 4e-5:1e-4 --fit-step 5e-5", "--fit"},
+                      BadInput{"--fit 4e-5:1e-4 --fit-step 1.5e-6", "--fit-step"}, BadInput{"--t-star -1", "--t-star"},
+                      BadInput{"--bootstrap 1", "--bootstrap"}, BadInput{"--centre middle", "--centre"},
+                      BadInput{"--spectrum s.csv --spectrum-of force", "--spectrum-of"}, BadInput{"--fit 2e-3:1e-3", "--fit"},
                       BadInput{"--active-window maybe", "--active-window"},
                       BadInput{"--spectrum out.csv", "two outputs"}),
     [](const auto& info) { return "case" + std::to_string(info.index); });
@@ -142,7 +169,7 @@ TEST(SpreadingToolEnsemble, ThreadInvariant) {
   EXPECT_EQ(read_file(dir + "/a-profile.csv"), read_file(dir + "/b-profile.csv"));
   EXPECT_FALSE(std::filesystem::exists(dir + "/a.checkpoint"));
   const std::string means = read_file(dir + "/a.csv");
-  EXPECT_EQ(means.substr(0, means.find('\n')), "t,m2,ipr,energy_error");
+  EXPECT_EQ(means.substr(0, means.find('\n')), "t,m2,ipr,energy_error,m2_centroid");
   std::filesystem::remove_all(dir);
 }
 
@@ -167,7 +194,7 @@ TEST(SpreadingToolGuards, EnergyErrorStopsOrWarns) {
   EXPECT_FALSE(std::filesystem::exists(dir + "/ens.csv"));
   r = run_tool("spreading", coarse + "--energy-guard warn --output " + dir + "/warn");
   EXPECT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_NE(r.err.find("passed --max-energy-error"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("passed the guard max_energy_error"), std::string::npos) << r.err;
   EXPECT_TRUE(std::filesystem::exists(dir + "/warn.csv"));
   std::filesystem::remove_all(dir);
 }

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Runs `spreading` on the paper's set-ups (one realization each) and draws the issue-4 figures.
-# Usage: tools/plot/make_spreading_figures.sh BUILD_DIR OUTPUT_DIR   (about 10 s on 2 cores)
+# Usage: tools/plot/make_spreading_figures.sh BUILD_DIR OUTPUT_DIR   (about 15 s on 2 cores)
 set -euo pipefail
 build=$(realpath "${1:-build}")
 out=${2:-figures}
@@ -24,4 +24,14 @@ for d in h A RDM1 RDM2; do
   $spreading --disorder $d --N 2501 --F0 10 --output spread-$d --quiet
 done
 $plot spread spread-h.csv spread-A.csv spread-RDM1.csv spread-RDM2.csv --labels h,A,RDM1,RDM2 -o spread.png
-echo "figures in $(pwd): map-A.png forces-A.png spread.png"
+# The spectral density of one sonic-vacuum run (Anderson, velocity kick 8e-3 m/s, N = 2501) and of the
+# same kick at F0 = 10 N, each of the displacements (the paper's g) and of the velocities.
+for f0 in 0 10; do
+  for of in displacement velocity; do
+    $spreading --disorder A --N 2501 --F0 $f0 --ic velocity --output run-F$f0-$of --spectrum g-F$f0-$of.csv \
+      --spectrum-samples 2000 --spectrum-of $of --quiet
+  done
+done
+$plot spectra g-F0-displacement.csv g-F0-velocity.csv g-F10-displacement.csv g-F10-velocity.csv \
+  --titles "A, F0 = 0 (sonic vacuum), velocity kick;A, F0 = 10 N, velocity kick" -o spectral-density.png
+echo "figures in $(pwd): map-A.png forces-A.png spread.png spectral-density.png"

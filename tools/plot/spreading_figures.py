@@ -8,6 +8,9 @@ Run with Debian's /usr/bin/python3 (python3-matplotlib, python3-h5py):
                                                                      force vs t at each bead beside the force profile at T
   spreading_figures.py spread   A.csv [B.csv ...] [--labels a,b]   -o spread.png
                                                                      m2(t) and P^-1(t) on log-log axes
+  spreading_figures.py spectra  U.csv V.csv [U2.csv V2.csv ...] [--titles "a;b"] -o spectra.png
+                                                                     g(nu) of the displacements (the paper's) beside
+                                                                     that of the velocities, one panel per run
   spreading_figures.py cost     BENCH.json -o cost.png             cost-accuracy of the schemes, from
                           dynamics_benchmark --benchmark_filter=CostAccuracy --benchmark_out=BENCH.json
 
@@ -91,6 +94,29 @@ def spread(args):
     fig.savefig(args.output, dpi=150)
 
 
+def spectra(args):
+    """g(nu) of u and of v for each run: a permanent step in u_n(t) (a velocity kick's net
+    displacement) has power ~ 1/nu^2 and makes the displacement spectrum peak at 0 Hz; the
+    velocity spectrum is flat under it and shows what vibrates."""
+    if len(args.inputs) % 2:
+        sys.exit("spectra: give pairs of files: displacement spectrum, velocity spectrum")
+    pairs = [args.inputs[i:i + 2] for i in range(0, len(args.inputs), 2)]
+    titles = args.titles.split(";") if args.titles else [u for u, _ in pairs]
+    fig, axes = plt.subplots(1, len(pairs), figsize=(5 * len(pairs), 3.8), squeeze=False)
+    for ax, (u_path, v_path), title in zip(axes[0], pairs, titles):
+        for path, label, colour in ((u_path, "of $u_n$ (the paper's $g$)", "C0"), (v_path, r"of $\dot u_n$", "C1")):
+            d = read_csv(path)
+            ax.semilogy(d["freq_khz"], np.maximum(d["g"], 1e-14), lw=0.7, color=colour, label=label)
+        ax.set_xlim(0, args.fmax)
+        ax.set_ylim(1e-8, 2)
+        ax.set_xlabel(r"$\nu$ [kHz]")
+        ax.set_ylabel(r"$g(\nu)$ (max 1)")
+        ax.set_title(title, fontsize=9)
+        ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(args.output, dpi=150)
+
+
 def cost(args):
     import json
 
@@ -133,12 +159,16 @@ def main():
     s = sub.add_parser("spread", help="m2 and P^-1 versus t, log-log")
     s.add_argument("inputs", nargs="+")
     s.add_argument("--labels")
+    g = sub.add_parser("spectra", help="spectral density of u beside that of v, one panel per run")
+    g.add_argument("inputs", nargs="+")
+    g.add_argument("--titles")
+    g.add_argument("--fmax", type=float, default=60, help="highest frequency shown [kHz]")
     c = sub.add_parser("cost", help="cost-accuracy curves from the benchmark's JSON output")
     c.add_argument("bench")
-    for q in (m, f, s, c):
+    for q in (m, f, s, g, c):
         q.add_argument("-o", "--output", required=True)
     args = p.parse_args()
-    {"map": energy_map, "forces": forces, "spread": spread, "cost": cost}[args.figure](args)
+    {"map": energy_map, "forces": forces, "spread": spread, "spectra": spectra, "cost": cost}[args.figure](args)
 
 
 if __name__ == "__main__":

@@ -1,12 +1,18 @@
 #pragma once
 // Power laws y ∝ t^s fitted by least squares in log–log, on a family of sub-windows of the fit
-// interval, and the criterion that decides whether a curve is a power law at all (SPEC §4).
+// interval, the mean log derivative over it, and the criterion that decides whether a curve is
+// a power law at all (SPEC §4 "Ensembles and exponents").
 //
 // The sub-windows: [a, b] is cut into 4 equal parts at p0 = a < p1 < p2 < p3 < p4 = b (linear in
 // t, as the paper's "4–10 ms"), and every run of at least two consecutive parts is one window:
-// [p0,p2] [p1,p3] [p2,p4] [p0,p3] [p1,p4] [p0,p4]. The exponent is the mean slope over these six
-// windows and its error their standard deviation (sample, n−1): how much the answer depends on
-// where one looks, not a statistical error of one fit.
+// [p0,p2] [p1,p3] [p2,p4] [p0,p3] [p1,p4] [p0,p4]. The paper: "we fit for different intervals of
+// time between 4×10⁻³ s and 10⁻² s, then we average the slopes and calculate the standard
+// deviation". The exponent is the mean slope over these six windows and its error their standard
+// deviation (sample, n−1): how much the answer depends on where one looks, not a statistical
+// error over realizations (bootstrap.hpp gives that one).
+//
+// Window edges include samples within 1e-9 (relative) of them, so a sample at 4 ms computed as
+// 4000 × 1e-6 s belongs to a window starting at 4e-3 s whichever way it rounded.
 #include <vector>
 
 namespace granular {
@@ -21,18 +27,28 @@ struct LineFit {
 LineFit fit_power_law(const std::vector<double>& t, const std::vector<double>& y, double lo, double hi);
 
 struct ExponentEstimate {
-  double value = 0;             ///< mean slope over the sub-windows
-  double error = 0;             ///< standard deviation of the slopes
+  double value = 0;             ///< the estimate
+  double error = 0;             ///< standard deviation over the six sub-windows
   std::vector<double> slopes;   ///< one per sub-window, in the order documented above
 };
 
-/// Exponent on the six sub-windows of [lo, hi] (each must hold at least 2 samples).
+/// Exponent on the six sub-windows of [lo, hi] (each must hold at least 2 samples): value = the
+/// mean of the six slopes.
 ExponentEstimate windowed_exponent(const std::vector<double>& t, const std::vector<double>& y, double lo, double hi);
 
+/// Mean of the log derivative L_d = Δ ln y / Δ ln t over consecutive samples with both ends in
+/// [lo, hi]. Throws InvalidInput if there is no such pair.
+double mean_log_derivative(const std::vector<double>& t, const std::vector<double>& y, double lo, double hi);
+
+/// The paper's value for the cases it stars: "the reported exponents correspond to mean values of
+/// L_d(t) for t ∈ [4, 10] ms". value = mean L_d over [lo, hi]; error and slopes: the mean L_d on
+/// each of the six sub-windows and their standard deviation, as for the fitted exponent.
+ExponentEstimate windowed_mean_log_derivative(const std::vector<double>& t, const std::vector<double>& y, double lo,
+                                              double hi);
+
 struct PowerLawCriterion {
-  double kappa = 0.1;        ///< largest tolerated |L_d − γ|
-  double t_start = 4e-3;     ///< t*: deviations before it are ignored [s]
-  double log_step = 0.1;     ///< L_d is taken over steps of at least 0.1 in ln t (≈ 10 % in t)
+  double kappa = 0.1;     ///< largest tolerated |L_d − γ|
+  double t_start = 4e-3;  ///< t*: deviations before it are ignored [s]
 };
 
 struct PowerLawVerdict {
@@ -41,16 +57,10 @@ struct PowerLawVerdict {
   double worst_time = 0;     ///< where the worst deviation sits
 };
 
-/// Judges y ∝ t^γ by the log derivative after t*. No L_d sample after t* counts as not a power law.
+/// Judges y ∝ t^γ by the log derivative on the sampled times (consecutive samples, no
+/// smoothing: the paper computes L_d "where we discretize time as in our numerical
+/// integration") after t*. No L_d sample after t* counts as not a power law.
 PowerLawVerdict judge_power_law(const std::vector<double>& t, const std::vector<double>& y, double gamma,
                                 const PowerLawCriterion& criterion);
-
-/// Both at once: the windowed exponent on [lo, hi] and the verdict on it.
-struct PowerLawAnalysis {
-  ExponentEstimate exponent;
-  PowerLawVerdict verdict;
-};
-PowerLawAnalysis analyze_power_law(const std::vector<double>& t, const std::vector<double>& y, double lo, double hi,
-                                   const PowerLawCriterion& criterion);
 
 }  // namespace granular

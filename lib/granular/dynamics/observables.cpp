@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <variant>
 
+#include "granular/error.hpp"
+
 namespace granular {
 
 void site_energies(const ForceLaw& law, const Chain& chain, std::span<const double> u, std::span<const double> v,
@@ -44,7 +46,15 @@ double unowned_wall_energy(const ForceLaw& law, std::span<const double> u) {
       [&](const auto& l) { return 0.5 * (l.potential(0, bond_strain(u, 0)) + l.potential(n, bond_strain(u, n))); }, law);
 }
 
-EnergySpread energy_spread(std::span<const double> energy) {
+SpreadCentre parse_spread_centre(const std::string& name) {
+  if (name == "site") return SpreadCentre::site;
+  if (name == "centroid") return SpreadCentre::centroid;
+  throw InvalidInput("centre", " '" + name + "': expected site or centroid");
+}
+
+std::string to_string(SpreadCentre centre) { return centre == SpreadCentre::site ? "site" : "centroid"; }
+
+EnergySpread energy_spread(std::span<const double> energy, std::size_t site) {
   EnergySpread s;
   double weighted = 0, squares = 0;
   for (std::size_t i = 0; i < energy.size(); ++i) {
@@ -53,13 +63,18 @@ EnergySpread energy_spread(std::span<const double> energy) {
     squares += energy[i] * energy[i];
   }
   if (!(s.total > 0)) return s;
-  s.centre = weighted / s.total;
-  double m2 = 0;
+  s.centroid = weighted / s.total;
+  // Both moments summed directly (not one from the other through the identity), so that the
+  // identity m2_site = m2_centroid + (n̄ − n0)² is a test of the code, not of algebra.
+  const double n0 = static_cast<double>(site);
+  double about_centroid = 0, about_site = 0;
   for (std::size_t i = 0; i < energy.size(); ++i) {
-    const double d = static_cast<double>(i) - s.centre;
-    m2 += d * d * energy[i];
+    const double n = static_cast<double>(i);
+    about_centroid += (n - s.centroid) * (n - s.centroid) * energy[i];
+    about_site += (n - n0) * (n - n0) * energy[i];
   }
-  s.m2 = m2 / s.total;
+  s.m2_centroid = about_centroid / s.total;
+  s.m2_site = about_site / s.total;
   s.ipr = squares / (s.total * s.total);
   return s;
 }

@@ -4,6 +4,7 @@
 // are taken to be exactly at rest (the active window), which makes their energy exactly 0.
 #include <cstddef>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "granular/dynamics/force_law.hpp"
@@ -27,13 +28,29 @@ double total_energy(const ForceLaw& law, const Chain& chain, const State& state)
 /// conserved once energy reaches a wall.
 double unowned_wall_energy(const ForceLaw& law, std::span<const double> u);
 
-struct EnergySpread {
-  double total = 0;   ///< Σ E_n
-  double centre = 0;  ///< n_c = Σ n E_n / Σ E_n (0-based bead index)
-  double m2 = 0;      ///< m̃2 = Σ (n − n_c)² E_n / Σ E_n
-  double ipr = 0;     ///< P⁻¹ = Σ E_n² / (Σ E_n)²
+/// About which bead the second moment is taken (SPEC §4 "Observables").
+enum class SpreadCentre {
+  /// The excited bead n0: the paper's definition. It writes its kicks as δ_{n,n_c} and calls n_c
+  /// "the position of the center of the distribution", so n_c is the kicked site.
+  site,
+  /// The energy centroid n̄ = Σ n E_n / Σ E_n: the width of the packet about where it is, the
+  /// better measure when the energy leaves mostly to one side (velocity kicks near F0 = 0).
+  centroid,
 };
-EnergySpread energy_spread(std::span<const double> energy);
+SpreadCentre parse_spread_centre(const std::string& name);  ///< "site" | "centroid"
+std::string to_string(SpreadCentre centre);
+
+struct EnergySpread {
+  double total = 0;        ///< Σ E_n [J]
+  double centroid = 0;     ///< n̄ = Σ n E_n / Σ E_n (0-based bead index)
+  double m2_site = 0;      ///< m̃2 about the excited bead n0: Σ (n − n0)² E_n / Σ E_n [bead²]
+  double m2_centroid = 0;  ///< m̃2 about n̄; m2_site = m2_centroid + (n̄ − n0)² exactly
+  double ipr = 0;          ///< P⁻¹ = Σ E_n² / (Σ E_n)², in (0, 1]
+  double m2(SpreadCentre c) const { return c == SpreadCentre::site ? m2_site : m2_centroid; }
+};
+/// Spread of the energy profile `energy` about the excited bead `site` (0-based) and about its
+/// centroid. All zero when Σ E_n is not positive.
+EnergySpread energy_spread(std::span<const double> energy, std::size_t site);
 
 /// Force on each bead: the mean of its two compressive contact forces (static + dynamic),
 /// (f_n + f_{n+1})/2, what a sensor embedded in the bead reads. At rest it is F0.

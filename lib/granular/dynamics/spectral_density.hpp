@@ -1,7 +1,8 @@
 #pragma once
-// Spectral density of the displacements (SPEC §4): g(ν) = Σ_n |û_n(ν)|² / max_ν Σ_n |û_n(ν)|²,
-// û_n the DFT of u_n over K uniform samples. FFTW plans once per (N, K) — planning is where
-// its cost and its only failure are — and the plan is executed on every call.
+// Spectral density of N sampled series (SPEC §4): g(ν) = Σ_n |x̂_n(ν)|² / max_ν Σ_n |x̂_n(ν)|²,
+// x̂_n the DFT of x_n over K uniform samples. The paper's x is the displacement u; the velocity
+// is the other choice a run offers (spreading.hpp, SpectrumSource). FFTW plans once per (N, K) —
+// planning is where its cost and its only failure are — and the plan is executed on every call.
 #include <cstddef>
 #include <vector>
 
@@ -9,14 +10,14 @@ namespace granular {
 
 class SpectralDensity {
  public:
-  /// For `sites` displacement series of `samples` (≥ 2) values each. Throws NumericalError if
+  /// For `sites` series of `samples` (≥ 2) values each. Throws NumericalError if
   /// FFTW cannot plan. Planning is serialized by a lock, so threads may each own one.
   SpectralDensity(std::size_t sites, std::size_t samples);
   ~SpectralDensity();
   SpectralDensity(const SpectralDensity&) = delete;
   SpectralDensity& operator=(const SpectralDensity&) = delete;
 
-  /// `rows`: samples × sites, row k = u(t_k), t_k = k·dt. Fills g for the K/2+1 frequencies
+  /// `rows`: samples × sites, row k = x(t_k), t_k = k·dt. Fills g for the K/2+1 frequencies
   /// ν_j = j / (K dt) (frequency(j) in kHz).
   void compute(const std::vector<double>& rows, std::vector<double>& g);
   double frequency_khz(std::size_t j, double dt) const {

@@ -6,6 +6,7 @@
 #include <map>
 #include <memory>
 
+#include "granular/dynamics/initial_conditions.hpp"
 #include "granular/dynamics/observables.hpp"
 #include "granular/dynamics/spectral_density.hpp"
 #include "granular/error.hpp"
@@ -16,7 +17,17 @@ namespace granular {
 Sampling parse_sampling(const std::string& name) {
   if (name == "log") return Sampling::logarithmic;
   if (name == "uniform") return Sampling::uniform;
-  throw InvalidInput("--sampling '" + name + "': expected log or uniform");
+  throw InvalidInput("sampling", " '" + name + "': expected log or uniform");
+}
+
+SpectrumSource parse_spectrum_source(const std::string& name) {
+  if (name == "displacement") return SpectrumSource::displacement;
+  if (name == "velocity") return SpectrumSource::velocity;
+  throw InvalidInput("spectrum_source", " '" + name + "': expected displacement or velocity");
+}
+
+std::string to_string(SpectrumSource source) {
+  return source == SpectrumSource::displacement ? "displacement" : "velocity";
 }
 
 namespace {
@@ -29,26 +40,39 @@ std::uint64_t total_steps(const SpreadingConfig& c) {
 
 void validate(const SpreadingConfig& c, std::size_t beads) {
   if (!std::isfinite(c.time_step) || !(c.time_step > 0))
-    throw InvalidInput("--dt " + format_number(c.time_step) + ": the time step must be finite and > 0");
+    throw InvalidInput("time_step", " " + format_number(c.time_step) + ": the time step must be finite and > 0");
   if (!std::isfinite(c.duration) || !(c.duration > 0))
-    throw InvalidInput("--T " + format_number(c.duration) + ": the duration must be finite and > 0");
+    throw InvalidInput("duration", " " + format_number(c.duration) + ": the duration must be finite and > 0");
   const double ratio = c.duration / c.time_step;
-  if (ratio > 1e12) throw InvalidInput("--T / --dt: more than 1e12 steps");
+  if (ratio > 1e12) throw InvalidInput("duration", " " + format_number(c.duration) + " s / time_step " + format_number(c.time_step) + " s: more than 1e12 steps");
   if (ratio < 1 || std::abs(ratio - std::round(ratio)) > 1e-6 * ratio)
-    throw InvalidInput("--T " + format_number(c.duration) + ": must be a whole number (>= 1) of steps --dt " +
+    throw InvalidInput("duration", " " + format_number(c.duration) + ": must be a whole number (>= 1) of time steps " +
                        format_number(c.time_step));
-  if (c.samples < 2) throw InvalidInput("--samples: at least 2");
+  if (c.samples < 2) throw InvalidInput("samples", ": at least 2");
   if (c.integrator != "reference") parse_scheme(c.integrator);
   for (std::size_t s : c.force_sites)
     if (s >= beads)
-      throw InvalidInput("--forces-at " + std::to_string(s + 1) + ": outside the chain of " + std::to_string(beads) +
+      throw InvalidInput("forces_at", " " + std::to_string(s + 1) + ": outside the chain of " + std::to_string(beads) +
                          " beads (counting from 1)");
-  if (!c.force_sites.empty() && c.force_samples < 2) throw InvalidInput("--force-samples: at least 2");
-  if (c.map_samples == 1) throw InvalidInput("--map-samples: 0 (none) or at least 2");
-  if (c.map_stride < 1) throw InvalidInput("--map-stride: at least 1");
-  if (c.spectrum_samples == 1) throw InvalidInput("--spectrum-samples: 0 (none) or at least 2");
-  if (c.spectrum_samples * beads > (std::size_t{1} << 31)) throw InvalidInput("--spectrum-samples: too many for N");
-  if (!(c.window.threshold >= 0)) throw InvalidInput("--window-threshold: must be >= 0");
+  if (!c.force_sites.empty() && c.force_samples < 2) throw InvalidInput("force_samples", ": at least 2");
+  if (c.map_samples == 1) throw InvalidInput("map_samples", ": 0 (none) or at least 2");
+  if (c.map_stride < 1) throw InvalidInput("map_stride", ": at least 1");
+  if (c.spectrum_samples == 1) throw InvalidInput("spectrum_samples", ": 0 (none) or at least 2");
+  if (c.spectrum_samples * beads > (std::size_t{1} << 31)) throw InvalidInput("spectrum_samples", ": too many for N");
+  if (!(c.window.threshold >= 0)) throw InvalidInput("window_threshold", ": must be >= 0");
+  if (c.site != static_cast<std::size_t>(-1) && c.site >= beads)
+    throw InvalidInput("site", " " + std::to_string(c.site + 1) + ": outside the chain of " + std::to_string(beads) + " beads");
+  if (!c.dense.empty()) {
+    const DenseGrid& g = c.dense;
+    if (!std::isfinite(g.begin) || !std::isfinite(g.end) || g.begin < 0 || g.end > c.duration * (1 + 1e-12))
+      throw InvalidInput("fit", " [" + format_number(g.begin) + ", " + format_number(g.end) +
+                         "] s: must lie inside [0, T = " + format_number(c.duration) + "]");
+    const double stride = g.step / c.time_step;
+    if (!std::isfinite(stride) || stride < 1 - 1e-9 || std::abs(stride - std::round(stride)) > 1e-6 * stride)
+      throw InvalidInput("fit_step", " " + format_number(g.step) + " s: must be a whole number (>= 1) of time steps " +
+                         format_number(c.time_step) + " s");
+    if ((g.end - g.begin) / g.step > 1e8) throw InvalidInput("fit_step", " " + format_number(g.step) + " s: more than 1e8 samples");
+  }
 }
 
 std::vector<std::uint64_t> sample_steps(std::uint64_t total, std::size_t count, Sampling sampling) {
@@ -64,6 +88,21 @@ std::vector<std::uint64_t> sample_steps(std::uint64_t total, std::size_t count, 
     const std::uint64_t stride = std::max<std::uint64_t>(1, total / (count - 1));
     for (std::size_t j = 0; j < count && j * stride <= total; ++j) steps.push_back(j * stride);
   }
+  return steps;
+}
+
+std::vector<std::uint64_t> sample_steps(const SpreadingConfig& c) {
+  const std::uint64_t total = total_steps(c);
+  std::vector<std::uint64_t> steps = sample_steps(total, c.samples, c.sampling);
+  if (c.dense.empty()) return steps;
+  const auto at = [&](double t) { return static_cast<std::uint64_t>(std::llround(t / c.time_step)); };
+  const std::uint64_t begin = at(c.dense.begin), end = std::min(at(c.dense.end), total);
+  const std::uint64_t stride = std::max<std::uint64_t>(1, at(c.dense.step));
+  std::erase_if(steps, [&](std::uint64_t s) { return s >= begin && s <= end; });
+  for (std::uint64_t s = begin; s <= end; s += stride) steps.push_back(s);
+  steps.push_back(end);
+  std::sort(steps.begin(), steps.end());
+  steps.erase(std::unique(steps.begin(), steps.end()), steps.end());
   return steps;
 }
 
@@ -86,7 +125,7 @@ SpreadingResult run_spreading(const Chain& chain, const State& initial, const Sp
   // The schedule: step number → what to measure there.
   enum : unsigned { spread = 1, force = 2, map = 4, spectrum = 8 };
   std::map<std::uint64_t, unsigned> events;
-  for (auto s : sample_steps(total, config.samples, config.sampling)) events[s] |= spread;
+  for (auto s : sample_steps(config)) events[s] |= spread;
   if (!config.force_sites.empty())
     for (auto s : sample_steps(total, config.force_samples, Sampling::uniform)) events[s] |= force;
   if (config.map_samples > 0)
@@ -99,7 +138,8 @@ SpreadingResult run_spreading(const Chain& chain, const State& initial, const Sp
   }
   events[total] |= 0;  // always end at T
 
-  std::vector<double> energy(n), bead_force(n), u_rows;
+  const std::size_t site = config.site < n ? config.site : centre_site(n);
+  std::vector<double> energy(n), bead_force(n), spectrum_rows;
   r.forces.assign(config.force_sites.size(), {});
   r.map_columns = (n + config.map_stride - 1) / config.map_stride;
   double integration = 0;
@@ -114,16 +154,17 @@ SpreadingResult run_spreading(const Chain& chain, const State& initial, const Sp
       const std::size_t lo = p->window_begin(), hi = p->window_end();
       site_energies(law, chain, u, p->velocity(), energy, lo, hi);
       if (what & spread) {
-        const EnergySpread s = energy_spread(energy);
+        const EnergySpread s = energy_spread(energy, site);
         const double h = s.total + unowned_wall_energy(law, u);
         const double error = std::abs(h - r.initial_energy) / r.initial_energy;
         r.t.push_back(t);
-        r.m2.push_back(s.m2);
+        r.m2.push_back(s.m2_site);
+        r.m2_centroid.push_back(s.m2_centroid);
         r.ipr.push_back(s.ipr);
         r.energy_error.push_back(error);
         r.max_energy_error = std::max(r.max_energy_error, error);
         r.wall_energy = std::max(r.wall_energy, (energy[0] + energy[n - 1]) / r.initial_energy);
-        if (!std::isfinite(h) || !std::isfinite(s.m2))
+        if (!std::isfinite(h) || !std::isfinite(s.m2_site))
           throw NumericalError("the state became non-finite (NaN or inf) at t = " + format_number(t) + " s");
         if (config.max_energy_error > 0 && error > config.max_energy_error) {
           if (config.stop_on_energy_error)
@@ -147,7 +188,10 @@ SpreadingResult run_spreading(const Chain& chain, const State& initial, const Sp
       r.force_t.push_back(t);
       for (std::size_t j = 0; j < config.force_sites.size(); ++j) r.forces[j].push_back(bead_force[config.force_sites[j]]);
     }
-    if (what & spectrum) u_rows.insert(u_rows.end(), u.begin(), u.end());
+    if (what & spectrum) {
+      const auto series = config.spectrum_source == SpectrumSource::displacement ? u : p->velocity();
+      spectrum_rows.insert(spectrum_rows.end(), series.begin(), series.end());
+    }
   }
   r.seconds = integration;
   r.final_state = p->state();
@@ -158,10 +202,10 @@ SpreadingResult run_spreading(const Chain& chain, const State& initial, const Sp
   r.bond_updates = p->bond_updates();
   r.window_begin = p->window_begin();
   r.window_end = p->window_end();
-  if (!u_rows.empty()) {
-    const std::size_t k = u_rows.size() / n;
+  if (!spectrum_rows.empty()) {
+    const std::size_t k = spectrum_rows.size() / n;
     SpectralDensity density(n, k);
-    density.compute(u_rows, r.spectrum);
+    density.compute(spectrum_rows, r.spectrum);
     const double dt = static_cast<double>(spectrum_stride) * tau;
     for (std::size_t j = 0; j < density.frequencies(); ++j) r.spectrum_khz.push_back(density.frequency_khz(j, dt));
   }

@@ -11,7 +11,7 @@
 #include <string>
 
 #include "granular/error.hpp"
-#include "granular/io/number_format.hpp"
+#include "granular/number_format.hpp"
 
 namespace granular {
 namespace {
@@ -181,15 +181,15 @@ std::size_t lane_width(std::size_t frequencies, std::size_t threads) {
 
 TransferMatrixScan transfer_matrix_scan(const BeadSource& chain, const std::vector<double>& frequency_khz,
                                         const TransferMatrixConfig& config) {
-  if (frequency_khz.empty()) throw InvalidInput("frequencies: the list is empty");
+  if (frequency_khz.empty()) throw InvalidInput("frequencies", ": the list is empty");
   for (std::size_t k = 0; k < frequency_khz.size(); ++k)
     if (!std::isfinite(frequency_khz[k]) || frequency_khz[k] < 0)
-      throw InvalidInput("frequencies: value " + std::to_string(k + 1) + " = " + format_number(frequency_khz[k]) +
+      throw InvalidInput("frequencies", ": value " + std::to_string(k + 1) + " = " + format_number(frequency_khz[k]) +
                          " kHz (must be finite and >= 0)");
-  if (config.segments < 2) throw InvalidInput("segments = " + std::to_string(config.segments) + ": must be >= 2");
-  if (config.threads < 0) throw InvalidInput("threads = " + std::to_string(config.threads) + ": must be >= 0");
+  if (config.segments < 2) throw InvalidInput("segments", " " + std::to_string(config.segments) + ": must be >= 2");
+  if (config.threads < 0) throw InvalidInput("threads", " " + std::to_string(config.threads) + ": must be >= 0");
   const std::size_t n = chain.size();
-  if (n < 2) throw InvalidInput("N = " + std::to_string(n) + ": a chain needs at least 2 beads");
+  if (n < 2) throw InvalidInput("N", " " + std::to_string(n) + ": a chain needs at least 2 beads");
 
   const std::size_t f = frequency_khz.size();
   TransferMatrixScan out;

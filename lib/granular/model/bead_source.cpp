@@ -6,37 +6,36 @@
 #include <utility>
 
 #include "granular/error.hpp"
-#include "granular/io/number_format.hpp"
-#include "granular/linear/dynamical_matrix.hpp"  // linear_stiffness: the contact law's B
+#include "granular/model/contact_law.hpp"
 #include "granular/model/random_stream.hpp"
+#include "granular/number_format.hpp"
 
 namespace granular {
 namespace {
 
 void require_linear_limit(double precompression) {
   if (!(precompression > 0) || !std::isfinite(precompression))
-    throw InvalidInput("precompression = " + format_number(precompression) +
-                       " N: must be finite and > 0 (the sonic vacuum has no linear limit)");
+    throw InvalidInput("F0", " " + format_number(precompression) +
+                                 ": must be finite and > 0 (the sonic vacuum has no linear limit)");
 }
 
-/// Masses and bond stiffnesses of two bead types, index 1 and 2 (0 unused). Taken from
-/// two-bead chains built by make_chain, so they are the very numbers a whole chain built by
-/// make_chain(radii_of(types)) holds, bit for bit.
+/// Masses and bond stiffnesses of the two bead types, index 1 and 2 (0 unused). Taken from
+/// two-bead chains built by from_types, so they are the very numbers a whole chain built by
+/// from_types (or random_chain) holds, bit for bit.
 struct TypeTable {
   std::array<double, 3> mass{}, left_wall{}, right_wall{};
   std::array<std::array<double, 3>, 3> bond{};
 
-  explicit TypeTable(const BidisperseBeads& b) {
-    require_linear_limit(b.precompression);
-    if (!(b.r1 > 0) || !std::isfinite(b.r1)) throw InvalidInput("r1 = " + format_number(b.r1) + " m: must be finite and > 0");
-    const std::vector<double> radius = radii_of({1, 2}, b.r1, b.xi);  // validates ξ
-    for (int a = 1; a <= 2; ++a)
-      for (int c = 1; c <= 2; ++c) {
-        const Chain pair = make_chain({radius[a - 1], radius[c - 1]}, b.precompression, b.material);
+  explicit TypeTable(const ChainParameters& p) {
+    require_linear_limit(p.F0);
+    validate(p.material, "material");
+    for (std::uint8_t a = 1; a <= 2; ++a)
+      for (std::uint8_t c = 1; c <= 2; ++c) {
+        const Chain pair = from_types({a, c}, p);  // validates xi and R1
         mass[a] = pair.mass[0];
-        left_wall[a] = linear_stiffness(pair.contact[0], b.precompression);
-        bond[a][c] = linear_stiffness(pair.contact[1], b.precompression);
-        right_wall[c] = linear_stiffness(pair.contact[2], b.precompression);
+        left_wall[a] = linear_stiffness(pair.contact[0], p.F0);
+        bond[a][c] = linear_stiffness(pair.contact[1], p.F0);
+        right_wall[c] = linear_stiffness(pair.contact[2], p.F0);
       }
   }
 
@@ -44,8 +43,8 @@ struct TypeTable {
   template <class TypeOf>
   void fill(std::size_t n, std::size_t first, std::size_t count, TypeOf&& type_of, double* m, double* b) const {
     if (first + count > n || first > n)
-      throw InvalidInput("bead piece " + std::to_string(first) + " + " + std::to_string(count) + " beyond N = " +
-                         std::to_string(n));
+      throw InvalidInput("first", " " + std::to_string(first) + " + count " + std::to_string(count) + ": beyond N = " +
+                                      std::to_string(n));
     int left = first == 0 ? 0 : type_of(first - 1);  // 0: the wall
     for (std::size_t i = 0; i < count; ++i) {
       const int here = type_of(first + i);
@@ -62,11 +61,12 @@ struct TypeTable {
 
 class RandomBeads final : public BeadSource {
  public:
-  RandomBeads(Disorder disorder, double q, std::size_t n, std::uint64_t seed, std::uint64_t realization,
-              const BidisperseBeads& beads)
-      : table_(beads), disorder_(disorder), q_(q), n_(n), stream_(seed, realization) {
-    validate_probability(q);
-    if (n < 2) throw InvalidInput("N = " + std::to_string(n) + ": a chain needs at least 2 beads");
+  RandomBeads(Disorder disorder, const ChainParameters& p)
+      : table_(p), disorder_(disorder), q_(p.q), n_(p.N), stream_(p.seed, p.realization) {
+    ChainParameters stored = p;
+    stored.N = 2;  // validate(p) caps N for stored chains; a stream has no such limit
+    validate(stored);
+    if (p.N < 2) throw InvalidInput("N", " " + std::to_string(p.N) + ": a chain needs at least 2 beads");
   }
   std::size_t size() const override { return n_; }
   void read(std::size_t first, std::size_t count, double* mass, double* stiffness) const override {
@@ -100,11 +100,12 @@ class RandomBeads final : public BeadSource {
 
 class TypedBeads final : public BeadSource {
  public:
-  TypedBeads(Configuration types, const BidisperseBeads& beads) : table_(beads), types_(std::move(types)) {
-    if (types_.size() < 2) throw InvalidInput("N = " + std::to_string(types_.size()) + ": a chain needs at least 2 beads");
+  TypedBeads(Configuration types, const ChainParameters& p) : table_(p), types_(std::move(types)) {
+    if (types_.size() < 2) throw InvalidInput("N", " " + std::to_string(types_.size()) + ": a chain needs at least 2 beads");
     for (std::size_t i = 0; i < types_.size(); ++i)
       if (types_[i] != 1 && types_[i] != 2)
-        throw InvalidInput("type of bead " + std::to_string(i + 1) + " = " + std::to_string(types_[i]) + ": must be 1 or 2");
+        throw InvalidInput("types", ": bead " + std::to_string(i + 1) + " has type " + std::to_string(types_[i]) +
+                                        " (must be 1 or 2)");
   }
   std::size_t size() const override { return types_.size(); }
   void read(std::size_t first, std::size_t count, double* mass, double* stiffness) const override {
@@ -125,8 +126,8 @@ class ChainBeads final : public BeadSource {
   std::size_t size() const override { return mass_.size(); }
   void read(std::size_t first, std::size_t count, double* mass, double* stiffness) const override {
     if (first > mass_.size() || count > mass_.size() - first)
-      throw InvalidInput("bead piece " + std::to_string(first) + " + " + std::to_string(count) + " beyond N = " +
-                         std::to_string(mass_.size()));
+      throw InvalidInput("first", " " + std::to_string(first) + " + count " + std::to_string(count) + ": beyond N = " +
+                                      std::to_string(mass_.size()));
     for (std::size_t i = 0; i < count; ++i) mass[i] = mass_[first + i];
     for (std::size_t i = 0; i <= count; ++i) stiffness[i] = stiffness_[first + i];
   }
@@ -137,13 +138,12 @@ class ChainBeads final : public BeadSource {
 
 }  // namespace
 
-std::unique_ptr<BeadSource> random_beads(Disorder disorder, double q, std::size_t n, std::uint64_t seed,
-                                         std::uint64_t realization, const BidisperseBeads& beads) {
-  return std::make_unique<RandomBeads>(disorder, q, n, seed, realization, beads);
+std::unique_ptr<BeadSource> random_beads(Disorder disorder, const ChainParameters& p) {
+  return std::make_unique<RandomBeads>(disorder, p);
 }
 
-std::unique_ptr<BeadSource> typed_beads(Configuration types, const BidisperseBeads& beads) {
-  return std::make_unique<TypedBeads>(std::move(types), beads);
+std::unique_ptr<BeadSource> typed_beads(Configuration types, const ChainParameters& p) {
+  return std::make_unique<TypedBeads>(std::move(types), p);
 }
 
 std::unique_ptr<BeadSource> chain_beads(const Chain& chain) { return std::make_unique<ChainBeads>(chain); }

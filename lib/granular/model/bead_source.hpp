@@ -14,7 +14,7 @@
 
 #include "granular/model/chain.hpp"
 #include "granular/model/disorder.hpp"
-#include "granular/model/material.hpp"
+#include "granular/model/named_chains.hpp"
 
 namespace granular {
 
@@ -30,24 +30,17 @@ class BeadSource {
   virtual void read(std::size_t first, std::size_t count, double* mass, double* stiffness) const = 0;
 };
 
-/// Beads of two types (type 1: radius r1, type 2: ξ r1), one material, flat walls of the same
-/// material — the chains of the `Disorder` kinds.
-struct BidisperseBeads {
-  double r1 = 4.76e-3;          ///< type-1 radius [m], > 0
-  double xi = 0.5;              ///< size ratio R2/R1 in (0, 1]
-  double precompression = 10;   ///< F0 [N], > 0 (the sonic vacuum has no linear limit)
-  Material material = steel;
-};
+/// Realization p.realization of seed p.seed of a disordered chain of p.N beads — the chain
+/// random_chain(disorder, p) builds — drawn on demand: bead i (dimer j) from the i-th (j-th)
+/// uniform of the Philox stream keyed by (seed, realization), exactly as
+/// realization_configuration does. Memory O(1), so p.N is not limited to the 1e8 beads of a
+/// stored Chain. Throws InvalidInput naming the field (N, q, xi, F0, R1, material); F0 must be
+/// > 0 (the sonic vacuum has no linear limit).
+std::unique_ptr<BeadSource> random_beads(Disorder disorder, const ChainParameters& p);
 
-/// Realization `realization` of seed `seed` of a disordered chain of N beads, drawn on demand:
-/// bead i (dimer j) from the i-th (j-th) uniform of the Philox stream keyed by (seed,
-/// realization), exactly as `realization_configuration(disorder, q, n, seed, realization)`.
-/// Memory O(1). Throws InvalidInput naming the parameter (q, xi, N, r1, precompression).
-std::unique_ptr<BeadSource> random_beads(Disorder disorder, double q, std::size_t n, std::uint64_t seed,
-                                         std::uint64_t realization, const BidisperseBeads& beads = {});
-
-/// A given sequence of bead types (1 or 2), e.g. from a configuration file. Memory N bytes.
-std::unique_ptr<BeadSource> typed_beads(Configuration types, const BidisperseBeads& beads = {});
+/// A given sequence of bead types (1 or 2), e.g. from a configuration file: the chain
+/// from_types(types, p) builds (p.N, p.q, p.seed, p.realization ignored). Memory N bytes.
+std::unique_ptr<BeadSource> typed_beads(Configuration types, const ChainParameters& p = {});
 
 /// Any chain (radii file, several materials, other walls): masses and B_k = linear_stiffness
 /// of its contact coefficients, copied (memory 2N doubles). Throws InvalidInput if F0 = 0.

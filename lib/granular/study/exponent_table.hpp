@@ -3,6 +3,7 @@
 // for every chain kind × precompression × kick, each an ensemble (transport_study.hpp).
 // Homogeneous chains are deterministic, so they run one realization whatever R is.
 #include <functional>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -36,7 +37,22 @@ struct ExponentRunOptions {
 /// The cases in table order (kick-major, then F0, then chain).
 std::vector<TransportCase> exponent_cases(const ExponentTableConfig& config);
 
-/// Runs every case; under mpirun only rank 0 gets filled summaries.
+/// Runs every case; under mpirun only rank 0 gets filled summaries. Memory: one case's
+/// records at a time (transport_study.hpp), then its summary.
 std::vector<ExponentCell> run_exponent_table(const ExponentTableConfig& config, const ExponentRunOptions& options);
+
+/// One table cell: "1.763 ± 0.012 (± 0.020 real.)", the shown value ± its sub-window spread and
+/// (when an ensemble gave one) its realization error; a trailing * marks a starred cell (not a
+/// power law: the value is the mean L_d over the fit window).
+std::string cell_text(const ExponentReport& report);
+
+/// Markdown: for each kick, a table of γ (about the cells' m̃2 centre) and one of η.
+std::string markdown_tables(const std::vector<ExponentCell>& cells, const ExponentTableConfig& config);
+
+/// PREFIX.csv: one row per case, both centres' γ (shown, fit, mean L_d, spreads, realization
+/// errors, star) and η. PREFIX-curves.csv: the mean curves. PREFIX-profiles.csv: ⟨E_n(T)⟩.
+void write_exponents_csv(std::ostream& out, const std::vector<ExponentCell>& cells);
+void write_curves_csv(std::ostream& out, const std::vector<ExponentCell>& cells);
+void write_profiles_csv(std::ostream& out, const std::vector<ExponentCell>& cells);
 
 }  // namespace granular

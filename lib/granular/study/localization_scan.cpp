@@ -6,7 +6,7 @@
 #include <utility>
 
 #include "granular/error.hpp"
-#include "granular/io/number_format.hpp"
+#include "granular/number_format.hpp"
 #include "granular/linear/density_of_states.hpp"
 #include "granular/linear/transfer_matrix.hpp"
 
@@ -14,29 +14,28 @@ namespace granular {
 
 void validate(const LocalizationScanConfig& config) {
   const auto& f = config.frequency_khz;
-  if (f.empty()) throw InvalidInput("frequencies: the list is empty");
+  if (f.empty()) throw InvalidInput("frequencies", ": the list is empty");
   for (std::size_t k = 0; k < f.size(); ++k) {
     if (!std::isfinite(f[k]) || f[k] < 0)
-      throw InvalidInput("frequencies: value " + std::to_string(k + 1) + " = " + format_number(f[k]) +
+      throw InvalidInput("frequencies", ": value " + std::to_string(k + 1) + " = " + format_number(f[k]) +
                          " kHz (must be finite and >= 0)");
     if (k > 0 && !(f[k] > f[k - 1]))
-      throw InvalidInput("frequencies: must increase strictly (value " + std::to_string(k + 1) + " = " +
+      throw InvalidInput("frequencies", ": must increase strictly (value " + std::to_string(k + 1) + " = " +
                          format_number(f[k]) + " kHz after " + format_number(f[k - 1]) + ")");
   }
-  if (config.segments < 2) throw InvalidInput("segments = " + std::to_string(config.segments) + ": must be >= 2");
-  if (config.threads < 0) throw InvalidInput("threads = " + std::to_string(config.threads) + ": must be >= 0");
+  if (config.segments < 2) throw InvalidInput("segments", " " + std::to_string(config.segments) + ": must be >= 2");
 }
 
-LocalizationScan localization_scan(const BeadSource& chain, const LocalizationScanConfig& config,
-                                   ProgressMeter* progress) {
+LocalizationScan localization_scan(const BeadSource& chain, const LocalizationScanConfig& config, const RunOptions& run) {
   validate(config);
+  if (run.threads < 0) throw InvalidInput("threads", " " + std::to_string(run.threads) + ": must be >= 0");
   TransferMatrixConfig tm;
   tm.segments = config.segments;
-  tm.threads = config.threads;
-  if (progress || config.cancelled)
-    tm.progress = [progress, &config](std::size_t steps) {
-      if (config.cancelled && config.cancelled()) throw Cancelled();  // every worker stops at its next piece
-      if (progress) progress->advance(steps);
+  tm.threads = run.threads;
+  if (run.progress || run.cancelled)
+    tm.progress = [&run](std::size_t steps) {
+      if (run.cancelled && run.cancelled()) throw Cancelled();  // every worker stops at its next piece
+      if (run.progress) run.progress->advance(steps);
     };
   TransferMatrixScan scan = transfer_matrix_scan(chain, config.frequency_khz, tm);
 

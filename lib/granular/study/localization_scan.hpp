@@ -8,7 +8,7 @@
 #include <functional>
 #include <vector>
 
-#include "granular/ensemble/progress_meter.hpp"
+#include "granular/ensemble/run_options.hpp"
 #include "granular/model/bead_source.hpp"
 
 namespace granular {
@@ -16,8 +16,6 @@ namespace granular {
 struct LocalizationScanConfig {
   std::vector<double> frequency_khz;  ///< [kHz], finite, ≥ 0, strictly increasing (the DOS differences them)
   std::size_t segments = 32;          ///< pieces of the chain for λ's error, ≥ 2 (see TransferMatrixScan)
-  int threads = 0;                    ///< 0 = every core; results do not depend on it
-  std::function<bool()> cancelled{};  ///< optional; true stops the scan with Cancelled (see RunOptions::cancelled)
 };
 
 struct LocalizationScan {
@@ -31,12 +29,13 @@ struct LocalizationScan {
   std::size_t beads = 0, segments = 0;
 };
 
-/// Throws InvalidInput naming `frequencies`, `segments` or `threads`.
+/// Throws InvalidInput naming `frequencies` or `segments`.
 void validate(const LocalizationScanConfig& config);
 
-/// One walk of the chain per block of frequencies; `progress` (if given) advances by bead ×
-/// frequency steps and should be sized N × frequencies.
+/// One walk of the chain per thread (run.threads; results do not depend on it). run.progress, if
+/// set, advances by bead × frequency steps: size it N × frequencies. Checkpoints are not used
+/// (one chain takes seconds). Throws InvalidInput naming `frequencies`, `segments` or `threads`.
 LocalizationScan localization_scan(const BeadSource& chain, const LocalizationScanConfig& config,
-                                   ProgressMeter* progress = nullptr);
+                                   const RunOptions& run = {});
 
 }  // namespace granular

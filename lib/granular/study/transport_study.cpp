@@ -16,7 +16,7 @@ namespace granular {
 Kick parse_kick(const std::string& name) {
   if (name == "displacement") return Kick::displacement;
   if (name == "velocity") return Kick::velocity;
-  throw InvalidInput("--ic '" + name + "': expected displacement or velocity");
+  throw InvalidInput("ic", " '" + name + "': expected displacement or velocity");
 }
 
 std::string to_string(Kick kick) { return kick == Kick::displacement ? "displacement" : "velocity"; }
@@ -24,33 +24,71 @@ std::string to_string(Kick kick) { return kick == Kick::displacement ? "displace
 void validate(const TransportCase& c) {
   validate_probability(c.q);
   validate_size_ratio(c.xi);
-  if (c.n < 2) throw InvalidInput("--N " + std::to_string(c.n) + ": a chain needs at least 2 beads");
+  if (c.n < 2) throw InvalidInput("N", " " + std::to_string(c.n) + ": a chain needs at least 2 beads");
   if (!std::isfinite(c.precompression) || c.precompression < 0)
-    throw InvalidInput("--F0 " + format_number(c.precompression) + ": must be finite and >= 0");
-  if (c.site >= c.n) throw InvalidInput("--site " + std::to_string(c.site + 1) + ": outside the chain of " + std::to_string(c.n) + " beads");
-  if (c.realizations < 1) throw InvalidInput("--realizations: must be >= 1");
-  if (c.fit && (!(c.fit_begin > 0) || !(c.fit_end > c.fit_begin))) throw InvalidInput("--fit: need 0 < start < stop");
+    throw InvalidInput("F0", " " + format_number(c.precompression) + ": must be finite and >= 0");
+  if (c.site >= c.n) throw InvalidInput("site", " " + std::to_string(c.site + 1) + ": outside the chain of " + std::to_string(c.n) + " beads");
+  if (c.realizations < 1) throw InvalidInput("realizations", ": must be >= 1");
+  validate(c.dynamics, c.n);  // T and τ first: a fit window is judged against them
+  if (c.fit && (!(c.fit_begin > 0) || !(c.fit_end > c.fit_begin) || !std::isfinite(c.fit_end)))
+    throw InvalidInput("fit", ": need 0 < start < stop");
   if (c.fit && c.fit_end > c.dynamics.duration * (1 + 1e-12))
-    throw InvalidInput("--fit " + format_number(c.fit_begin) + ":" + format_number(c.fit_end) + ": reaches beyond --T " +
+    throw InvalidInput("fit", " " + format_number(c.fit_begin) + ":" + format_number(c.fit_end) + ": reaches beyond the duration T = " +
                        format_number(c.dynamics.duration));
   if (!(c.criterion.kappa > 0) || !std::isfinite(c.criterion.kappa))
-    throw InvalidInput("--kappa " + format_number(c.criterion.kappa) + ": must be finite and > 0");
+    throw InvalidInput("kappa", " " + format_number(c.criterion.kappa) + ": must be finite and > 0");
+  if (!(c.criterion.t_start >= 0) || !std::isfinite(c.criterion.t_start))
+    throw InvalidInput("t_star", " " + format_number(c.criterion.t_start) + " s: must be finite and >= 0");
+  if (c.fit && c.bootstrap.resamples < 2) throw InvalidInput("bootstrap", ": need at least 2 resamples");
   const bool uses_alpha = c.kick == Kick::displacement || c.match_beta;
-  if (uses_alpha && (!std::isfinite(c.alpha) || c.alpha == 0)) throw InvalidInput("--alpha " + format_number(c.alpha) + ": must be finite and non-zero [m]");
+  if (uses_alpha && (!std::isfinite(c.alpha) || c.alpha == 0)) throw InvalidInput("alpha", " " + format_number(c.alpha) + ": must be finite and non-zero [m]");
   if (c.kick == Kick::velocity && !c.match_beta && (!std::isfinite(c.beta) || c.beta == 0))
-    throw InvalidInput("--beta " + format_number(c.beta) + ": must be finite and non-zero [m/s], or 'match'");
-  if (c.n > 100000000) throw InvalidInput("--N " + std::to_string(c.n) + ": more than 1e8 beads");
-  validate(c.dynamics, c.n);
+    throw InvalidInput("beta", " " + format_number(c.beta) + ": must be finite and non-zero [m/s], or 'match'");
+  if (c.n > 100000000) throw InvalidInput("N", " " + std::to_string(c.n) + ": more than 1e8 beads");
+  if (c.fit && !(std::isfinite(c.fit_step) && c.fit_step > 0))
+    throw InvalidInput("fit_step", " " + format_number(c.fit_step) + " s: must be finite and > 0");
+  const SpreadingConfig config = spreading_config(c);
+  validate(config, c.n);
+  if (c.fit) {  // a fit that cannot work is bad input, found before the run rather than after it
+    std::vector<double> t;
+    for (auto step : sample_steps(config)) t.push_back(static_cast<double>(step) * config.time_step);
+    try {
+      windowed_exponent(t, t, c.fit_begin, c.fit_end);
+    } catch (const InvalidInput& e) {
+      throw InvalidInput("fit", " " + format_number(c.fit_begin) + ":" + format_number(c.fit_end) +
+                         ": too few samples in a sub-window (" + e.what() + ")");
+    }
+  }
+}
+
+SpreadingConfig spreading_config(const TransportCase& c) {
+  SpreadingConfig config = c.dynamics;
+  config.site = c.site;
+  config.dense = c.fit ? DenseGrid{c.fit_begin, c.fit_end, c.fit_step} : DenseGrid{};
+  return config;
+}
+
+KickedChain kick(const TransportCase& c, const Chain& chain) {
+  if (c.kick == Kick::displacement) return {displacement_kick(chain, c.site, c.alpha), 0.0};
+  const double beta =
+      c.match_beta ? matched_velocity(make_force_law(c.dynamics.force_law, chain), chain, c.site, c.alpha) : c.beta;
+  return {velocity_kick(chain, c.site, beta), beta};
 }
 
 nlohmann::json describe(const TransportCase& c) {
   const SpreadingConfig& d = c.dynamics;
+  const bool uses_alpha = c.kick == Kick::displacement || c.match_beta;
+  nlohmann::json beta = nullptr;  // the values used: α only where the kick uses it, β only for a velocity kick
+  if (c.kick == Kick::velocity) beta = c.match_beta ? nlohmann::json("match") : nlohmann::json(c.beta);
   return {{"disorder", to_string(c.disorder)}, {"q", c.q}, {"xi", c.xi}, {"N", c.n}, {"F0_N", c.precompression},
-          {"R1_m", c.r1}, {"ic", to_string(c.kick)}, {"alpha_m", c.alpha},
-          {"beta_m_s", c.match_beta ? nlohmann::json("match") : nlohmann::json(c.beta)}, {"site", c.site + 1},
+          {"R1_m", c.r1}, {"ic", to_string(c.kick)}, {"alpha_m", uses_alpha ? nlohmann::json(c.alpha) : nullptr},
+          {"beta_m_s", beta}, {"site", c.site + 1}, {"m2_centre", to_string(c.centre)},
           {"T_s", d.duration}, {"dt_s", d.time_step}, {"integrator", d.integrator},
           {"force_law", to_string(d.force_law)}, {"samples", d.samples},
           {"sampling", d.sampling == Sampling::logarithmic ? "log" : "uniform"},
+          {"fit_s", c.fit ? nlohmann::json({c.fit_begin, c.fit_end}) : nlohmann::json(nullptr)},
+          {"fit_step_s", c.fit_step}, {"kappa", c.criterion.kappa}, {"t_star_s", c.criterion.t_start},
+          {"bootstrap_resamples", c.bootstrap.resamples}, {"bootstrap_seed", c.bootstrap.seed},
           {"active_window", d.window.enabled}, {"window_threshold", d.window.threshold},
           {"max_energy_error", d.max_energy_error}, {"stop_on_energy_error", d.stop_on_energy_error},
           {"seed", c.seed}, {"realizations", c.realizations},
@@ -59,52 +97,150 @@ nlohmann::json describe(const TransportCase& c) {
           {"walls", "flat, same material as the beads"}};
 }
 
+TransportExponents transport_exponents(const TransportCase& c, const std::vector<double>& t,
+                                       const std::vector<double>& m2_site, const std::vector<double>& m2_centroid,
+                                       const std::vector<double>& ipr) {
+  TransportExponents e;
+  e.gamma_site = report_exponent(t, m2_site, c.fit_begin, c.fit_end, c.criterion);
+  e.gamma_centroid = report_exponent(t, m2_centroid, c.fit_begin, c.fit_end, c.criterion);
+  std::vector<double> participation;  // P⁻¹ ∝ t^−η  ⇔  1/P⁻¹ ∝ t^η
+  for (double p : ipr) participation.push_back(1 / p);
+  e.eta = report_exponent(t, participation, c.fit_begin, c.fit_end, c.criterion);
+  return e;
+}
+
+nlohmann::json to_json(const ExponentReport& r) {
+  const auto estimate = [](const ExponentEstimate& e, double realization_error) {
+    return nlohmann::json{{"value", e.value}, {"window_spread", e.error}, {"sub_windows", e.slopes},
+                          {"realization_error", std::isnan(realization_error) ? nlohmann::json(nullptr)
+                                                                              : nlohmann::json(realization_error)}};
+  };
+  return {{"shown", r.starred() ? "mean_log_derivative" : "fit"}, {"starred", r.starred()},
+          {"value", r.shown().value}, {"window_spread", r.shown().error},
+          {"fit", estimate(r.fit, r.fit_realization_error)},
+          {"mean_log_derivative", estimate(r.mean_ld, r.mean_ld_realization_error)},
+          {"power_law", r.verdict.power_law}, {"worst_log_derivative_deviation", r.verdict.worst_deviation},
+          {"worst_deviation_time_s", r.verdict.worst_time}};
+}
+
+nlohmann::json to_json(const TransportExponents& e, SpreadCentre shown) {
+  const ExponentReport& g = e.gamma(shown);
+  const auto real = [](double x) { return std::isnan(x) ? nlohmann::json(nullptr) : nlohmann::json(x); };
+  return {{"gamma", g.shown().value}, {"gamma_err", g.shown().error}, {"gamma_real_err", real(g.shown_realization_error())},
+          {"eta", e.eta.shown().value}, {"eta_err", e.eta.shown().error},
+          {"eta_real_err", real(e.eta.shown_realization_error())}, {"power_law", g.verdict.power_law},
+          {"m2_centre", to_string(shown)},
+          {"exponents", {{"gamma_site", to_json(e.gamma_site)}, {"gamma_centroid", to_json(e.gamma_centroid)},
+                         {"eta", to_json(e.eta)}}}};
+}
+
+std::vector<std::string> warnings(const SpreadingResult& r, const SpreadingConfig& config) {
+  std::vector<std::string> w;
+  if (r.reached_walls)
+    w.push_back("energy reached the walls ((E_1 + E_N)/H0 up to " + format_number(r.wall_energy) +
+                "): the chain is too short for T");
+  if (r.energy_guard_time >= 0)
+    w.push_back("relative energy error passed the guard max_energy_error = " + format_number(config.max_energy_error) +
+                " at t = " + format_number(r.energy_guard_time) + " s");
+  return w;
+}
+
+std::vector<std::string> warnings(const TransportSummary& s, const SpreadingConfig& config) {
+  std::vector<std::string> w;
+  if (config.max_energy_error > 0 && s.max_energy_error > config.max_energy_error)
+    w.push_back("relative energy error reached " + format_number(s.max_energy_error) +
+                ", past the guard max_energy_error = " + format_number(config.max_energy_error));
+  if (s.reached_walls > 0)
+    w.push_back("energy reached the walls in " + std::to_string(s.reached_walls) + " of " +
+                std::to_string(s.realizations) + " realizations: the chain is too short for T");
+  return w;
+}
+
 namespace {
 
-// One realization as a row: m̃2 (S) | P⁻¹ (S) | energy error (S) | max error | wall energy | E_n(T) (N, only
-// for the first profile_realizations: profiles are long, and checkpoints hold every row).
+// What one realization leaves behind, and its flat form in the ensemble's rows and checkpoints:
+// m̃2 about the site | m̃2 about the centroid | P⁻¹ | energy error (each on the S sample times) |
+// max energy error | wall energy | E_n(T) (N, only for the first profile_realizations: profiles
+// are long, and checkpoints hold every row).
+struct RealizationRecord {
+  static constexpr std::size_t series = 4;
+  enum Series { m2_site = 0, m2_centroid = 1, ipr = 2, energy_error = 3 };
+  static std::size_t offset(Series s, std::size_t samples) { return static_cast<std::size_t>(s) * samples; }
+  static std::size_t scalars(std::size_t samples) { return series * samples; }
+  static std::size_t profile(std::size_t samples) { return series * samples + 2; }
+
+  static std::vector<double> pack(const SpreadingResult& r, bool with_profile) {
+    std::vector<double> row;
+    row.reserve(profile(r.t.size()) + (with_profile ? r.final_energy.size() : 0));
+    for (const auto* s : {&r.m2, &r.m2_centroid, &r.ipr, &r.energy_error}) row.insert(row.end(), s->begin(), s->end());
+    row.push_back(r.max_energy_error);
+    row.push_back(r.wall_energy);
+    if (with_profile) row.insert(row.end(), r.final_energy.begin(), r.final_energy.end());
+    return row;
+  }
+};
+
 std::vector<double> realization_row(const TransportCase& c, std::uint64_t r) {
   const Configuration types = realization_configuration(c.disorder, c.q, c.n, c.seed, r);
   const Chain chain = make_chain(radii_of(types, c.r1, c.xi), c.precompression);
-  State initial;
-  if (c.kick == Kick::displacement) {
-    initial = displacement_kick(chain, c.site, c.alpha);
-  } else {
-    const double beta =
-        c.match_beta ? matched_velocity(make_force_law(c.dynamics.force_law, chain), chain, c.site, c.alpha) : c.beta;
-    initial = velocity_kick(chain, c.site, beta);
-  }
-  SpreadingConfig config = c.dynamics;
+  SpreadingConfig config = spreading_config(c);
   config.force_sites.clear();
   config.map_samples = 0;
   config.spectrum_samples = 0;
-  const SpreadingResult result = run_spreading(chain, initial, config);
-  std::vector<double> row;
-  row.reserve(3 * result.t.size() + c.n + 2);
-  row.insert(row.end(), result.m2.begin(), result.m2.end());
-  row.insert(row.end(), result.ipr.begin(), result.ipr.end());
-  row.insert(row.end(), result.energy_error.begin(), result.energy_error.end());
-  row.push_back(result.max_energy_error);
-  row.push_back(result.wall_energy);
-  if (r < c.profile_realizations) row.insert(row.end(), result.final_energy.begin(), result.final_energy.end());
-  return row;
+  return RealizationRecord::pack(run_spreading(chain, kick(c, chain).initial, config), r < c.profile_realizations);
 }
 
-std::vector<std::vector<double>> slice(const std::vector<std::vector<double>>& rows, std::size_t begin, std::size_t count) {
-  std::vector<std::vector<double>> out;
-  out.reserve(rows.size());
-  for (const auto& row : rows) out.emplace_back(row.begin() + static_cast<long>(begin), row.begin() + static_cast<long>(begin + count));
-  return out;
+// Realization errors of γ (both centres) and η: the bootstrap over the rows, on the fit window's
+// samples only (the only ones the statistics read).
+void add_realization_errors(const TransportCase& c, const std::vector<double>& t,
+                            const std::vector<std::vector<double>>& rows, int threads, TransportExponents& e) {
+  std::vector<std::size_t> window;
+  for (std::size_t i = 0; i < t.size(); ++i)
+    if (t[i] >= c.fit_begin * (1 - 1e-9) && t[i] <= c.fit_end * (1 + 1e-9)) window.push_back(i);
+  const std::size_t g = window.size(), samples = t.size();
+  std::vector<double> t_fit;
+  for (std::size_t i : window) t_fit.push_back(t[i]);
+  using R = RealizationRecord;
+  std::vector<double> matrix;  // R × 3g: m̃2 site | m̃2 centroid | 1/P⁻¹ on the window
+  matrix.reserve(rows.size() * 3 * g);
+  for (const auto& row : rows) {
+    for (std::size_t i : window) matrix.push_back(row[R::offset(R::m2_site, samples) + i]);
+    for (std::size_t i : window) matrix.push_back(row[R::offset(R::m2_centroid, samples) + i]);
+    for (std::size_t i : window) matrix.push_back(row[R::offset(R::ipr, samples) + i]);
+  }
+  std::vector<double> sd(6, 0.0);
+  if (rows.size() > 1) {
+    BootstrapConfig config = c.bootstrap;
+    config.threads = threads;
+    sd = bootstrap_standard_deviation(
+        matrix, 3 * g,
+        [&](const std::vector<double>& mean) {
+          std::vector<double> out;
+          for (std::size_t k = 0; k < 3; ++k) {
+            std::vector<double> y(mean.begin() + static_cast<long>(k * g), mean.begin() + static_cast<long>((k + 1) * g));
+            if (k == 2)
+              for (double& p : y) p = 1 / p;
+            out.push_back(windowed_exponent(t_fit, y, c.fit_begin, c.fit_end).value);
+            out.push_back(mean_log_derivative(t_fit, y, c.fit_begin, c.fit_end));
+          }
+          return out;
+        },
+        config);
+  }
+  ExponentReport* reports[] = {&e.gamma_site, &e.gamma_centroid, &e.eta};
+  for (std::size_t k = 0; k < 3; ++k) {
+    reports[k]->fit_realization_error = sd[2 * k];
+    reports[k]->mean_ld_realization_error = sd[2 * k + 1];
+  }
 }
 
 }  // namespace
 
 TransportSummary run_transport_study(const TransportCase& c, const StudyRunOptions& options) {
   validate(c);
-  const std::uint64_t total_steps = static_cast<std::uint64_t>(std::llround(c.dynamics.duration / c.dynamics.time_step));
+  const SpreadingConfig config = spreading_config(c);
   TransportSummary s;
-  for (auto step : sample_steps(total_steps, c.dynamics.samples, c.dynamics.sampling))
-    s.t.push_back(static_cast<double>(step) * c.dynamics.time_step);
+  for (auto step : sample_steps(config)) s.t.push_back(static_cast<double>(step) * config.time_step);
   const std::size_t samples = s.t.size();
 
   EnsembleOptions ensemble;
@@ -115,7 +251,7 @@ TransportSummary run_transport_study(const TransportCase& c, const StudyRunOptio
   ensemble.parameters = describe(c).dump();
   ensemble.progress = options.progress;
   ensemble.cancelled = options.cancelled;
-  const auto rows = run_ensemble(ensemble, [&](std::uint64_t r, int) {
+  std::vector<std::vector<double>> rows = run_ensemble(ensemble, [&](std::uint64_t r, int) {
     try {
       return realization_row(c, r);
     } catch (const NumericalError& e) {  // say which chain, so it can be replayed alone
@@ -126,28 +262,25 @@ TransportSummary run_transport_study(const TransportCase& c, const StudyRunOptio
   });
   if (!MpiContext::instance().root()) return s;
 
-  const std::size_t width = 3 * samples + 2;
+  using R = RealizationRecord;
+  const std::size_t width = R::profile(samples);
   const std::size_t profiled = std::min(c.profile_realizations, c.realizations);
   for (std::size_t r = 0; r < rows.size(); ++r)
     if (rows[r].size() != width + (r < profiled ? c.n : 0))
       throw NumericalError("realization " + std::to_string(r) + " has a row of the wrong length");
   s.realizations = rows.size();
-  s.m2 = summarize(slice(rows, 0, samples));
-  s.ipr = summarize(slice(rows, samples, samples));
-  s.energy_error = summarize(slice(rows, 2 * samples, samples));
+  s.m2 = summarize(rows, R::offset(R::m2_site, samples), samples);
+  s.m2_centroid = summarize(rows, R::offset(R::m2_centroid, samples), samples);
+  s.ipr = summarize(rows, R::offset(R::ipr, samples), samples);
+  s.energy_error = summarize(rows, R::offset(R::energy_error, samples), samples);
   for (const auto& row : rows) {
-    s.max_energy_error = std::fmax(s.max_energy_error, row[3 * samples]);
-    s.reached_walls += row[3 * samples + 1] > c.dynamics.wall_warning;
+    s.max_energy_error = std::fmax(s.max_energy_error, row[R::scalars(samples)]);
+    s.reached_walls += row[R::scalars(samples) + 1] > c.dynamics.wall_warning;
   }
-  if (profiled > 0) {
-    const std::vector<std::vector<double>> with_profile(rows.begin(), rows.begin() + static_cast<long>(profiled));
-    s.profile = summarize(slice(with_profile, width, c.n));
-  }
+  if (profiled > 0) s.profile = summarize(rows, width, c.n, profiled);
   if (!c.fit) return s;
-  s.gamma = analyze_power_law(s.t, s.m2.mean, c.fit_begin, c.fit_end, c.criterion);
-  std::vector<double> participation;  // P⁻¹ ∝ t^−η  ⇔  1/P⁻¹ ∝ t^η
-  for (double p : s.ipr.mean) participation.push_back(1 / p);
-  s.eta = analyze_power_law(s.t, participation, c.fit_begin, c.fit_end, c.criterion);
+  s.exponents = transport_exponents(c, s.t, s.m2.mean, s.m2_centroid.mean, s.ipr.mean);
+  add_realization_errors(c, s.t, rows, options.threads, *s.exponents);
   return s;
 }
 

@@ -471,7 +471,8 @@ def _exponent_data(source):
         return groups, prof, fits, meta
     groups = {(c["ic"], float(c["F0"]), c["disorder"]): c for c in source["curves"]}
     prof = {(p["ic"], float(p["F0"]), p["disorder"]): p["energy"] for p in source["profiles"]}
-    fits = {(r["ic"], float(r["F0"]), r["disorder"]): r["gamma"] for r in source["table"]}
+    table = source["table"]
+    fits = {(ic, float(f0), d): g for ic, f0, d, g in zip(table["ic"], table["F0"], table["disorder"], table["gamma"])}
     return groups, prof, fits, source["metadata"]
 
 
