@@ -83,6 +83,87 @@ Solution dense_eigen(const Reference& r) {
   return out;
 }
 
+/// Clusters of two modes (consecutive relgap < 1e-11, inside the solver's cluster_gap 1e-10, and ≥ 1e-6 from
+/// every other mode so the pair's subspace is well determined): their most localized basis,
+/// found independently of the solver — from the dense Eigen eigenvectors of the same subspace, by
+/// a brute-force search over the rotation angle (2000-point grid, then golden section) of the
+/// objective the solver maximizes, Σ_i (x_i⁴ + y_i⁴) over the displacements x = m^{-1/2} w. That
+/// objective is c₀ + A cos(4θ − φ): one maximum up to swapping and signs, so the two IPRs it gives
+/// are the cluster's, whatever basis a solver started from. Pairs with A below 1e-12 c₀ (no
+/// preferred basis) are skipped. Returns (first mode index, sorted IPRs) per pair.
+struct PairIpr {
+  std::size_t first;
+  double lo, hi;
+};
+std::vector<PairIpr> localized_pairs(const Reference& r) {
+  const Eigen::Index n = static_cast<Eigen::Index>(r.d.size());
+  const double scale = r.d.max_abs();
+  Eigen::MatrixXd a = Eigen::MatrixXd::Zero(n, n);
+  for (Eigen::Index i = 0; i < n; ++i) a(i, i) = r.d.diagonal[i] / scale;
+  for (Eigen::Index i = 0; i + 1 < n; ++i) a(i, i + 1) = a(i + 1, i) = r.d.off_diagonal[i] / scale;
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(a);
+  const Eigen::VectorXd& w = es.eigenvalues();
+  const double norm = std::max(std::fabs(w[0]), std::fabs(w[n - 1]));
+  std::vector<PairIpr> out;
+  for (Eigen::Index k = 0; k + 1 < n; ++k) {
+    if ((w[k + 1] - w[k]) / norm >= 1e-11) continue;  // well inside the solver's cluster_gap 1e-10
+    if (k > 0 && (w[k] - w[k - 1]) / norm < 1e-6) continue;
+    if (k + 2 < n && (w[k + 2] - w[k + 1]) / norm < 1e-6) continue;
+    std::vector<double> x(static_cast<std::size_t>(n)), y(x.size());
+    for (Eigen::Index i = 0; i < n; ++i) {
+      x[static_cast<std::size_t>(i)] = es.eigenvectors()(i, k) * r.s[static_cast<std::size_t>(i)];
+      y[static_cast<std::size_t>(i)] = es.eigenvectors()(i, k + 1) * r.s[static_cast<std::size_t>(i)];
+    }
+    auto objective = [&](double t) {
+      const double c = std::cos(t), sn = std::sin(t);
+      double sum = 0;
+      for (std::size_t i = 0; i < x.size(); ++i) {
+        const double p = c * x[i] + sn * y[i], q = -sn * x[i] + c * y[i];
+        sum += p * p * p * p + q * q * q * q;
+      }
+      return sum;
+    };
+    const double quarter = std::acos(-1.0) / 2;
+    double best = 0, fmax = -1, fmin = INFINITY;
+    for (int g = 0; g < 2000; ++g) {
+      const double t = quarter * g / 2000, f = objective(t);
+      if (f > fmax) fmax = f, best = t;
+      fmin = std::min(fmin, f);
+    }
+    if (fmax - fmin < 1e-12 * fmax) continue;
+    double lo = best - quarter / 2000, hi = best + quarter / 2000;
+    const double phi = 0.5 * (std::sqrt(5.0) - 1);
+    for (int it = 0; it < 80; ++it) {
+      const double m1 = hi - phi * (hi - lo), m2 = lo + phi * (hi - lo);
+      if (objective(m1) > objective(m2)) hi = m2; else lo = m1;
+    }
+    const double t = 0.5 * (lo + hi), c = std::cos(t), sn = std::sin(t);
+    std::vector<double> p(x.size()), q(x.size());
+    for (std::size_t i = 0; i < x.size(); ++i) {
+      p[i] = (c * x[i] + sn * y[i]) / r.s[i];  // back to w: displacement_ipr applies m^{-1/2}
+      q[i] = (-sn * x[i] + c * y[i]) / r.s[i];
+    }
+    const double ip = displacement_ipr(p.data(), r.s.data(), x.size());
+    const double iq = displacement_ipr(q.data(), r.s.data(), x.size());
+    out.push_back({static_cast<std::size_t>(k), std::min(ip, iq), std::max(ip, iq)});
+  }
+  return out;
+}
+
+/// The solver's IPRs of each isolated pair must be the localized pair's (a wrong rotation, or
+/// none — any other basis of the pair — fails). Returns the number of pairs checked.
+std::size_t check_pairs(const std::vector<double>& ipr, const Reference& r, const std::string& what) {
+  std::size_t checked = 0;
+  for (const PairIpr& pair : localized_pairs(r)) {
+    const double a = std::min(ipr[pair.first], ipr[pair.first + 1]);
+    const double b = std::max(ipr[pair.first], ipr[pair.first + 1]);
+    EXPECT_NEAR(a, pair.lo, 1e-8) << what << " pair at mode " << pair.first + 1;
+    EXPECT_NEAR(b, pair.hi, 1e-8) << what << " pair at mode " << pair.first + 1;
+    ++checked;
+  }
+  return checked;
+}
+
 /// relgap_k from a reference spectrum (ascending).
 std::vector<double> relative_gaps(const std::vector<double>& w) {
   const std::size_t n = w.size();
@@ -148,7 +229,7 @@ TEST(TwistedModeIpr, AgreesWithStevrAndDenseEigenOnRandomChains) {
   TwistedModeIpr fast;
   RandomStream xi_stream(2024, 7);
   Tally vs_stevr, vs_eigen;
-  std::size_t chains = 0;
+  std::size_t chains = 0, pairs = 0;
   for (Disorder disorder : all_disorders)
     for (double q : {0.2, 0.5, 0.8})
       for (std::uint64_t r = 0; r < 24; ++r) {
@@ -161,10 +242,13 @@ TEST(TwistedModeIpr, AgreesWithStevrAndDenseEigenOnRandomChains) {
                                  " r=" + std::to_string(r);
         compare(got, ref.stevr, "fast vs stevr, " + what, vs_stevr);
         compare(got, dense_eigen(ref), "fast vs Eigen, " + what, vs_eigen);
+        pairs += check_pairs(got.ipr, ref, "fast, " + what);
         ++chains;
       }
   EXPECT_EQ(fast.info().fallbacks, 0u);
   EXPECT_GT(fast.info().clusters, 0u) << "the sample should contain small-ξ clusters";
+  EXPECT_GT(pairs, 0u) << "isolated degenerate pairs should have been checked against the localized basis";
+  std::printf("[ info ] isolated pairs checked against the independently localized basis: %zu\n", pairs);
   EXPECT_GT(vs_stevr.checked_strict, 50u * chains);
   RecordProperty("worst_ipr_vs_stevr", std::to_string(vs_stevr.worst_strict));
   RecordProperty("worst_ipr_vs_eigen", std::to_string(vs_eigen.worst_strict));

@@ -28,6 +28,23 @@ struct Candidates {
   std::vector<double> ipr, residual;  // precomputed per candidate (bisect lanes), else empty
 };
 
+/// The test seam of detail/partial_spectrum.hpp: drops one candidate when asked to.
+void apply_test_seam(Candidates& c) {
+  if (!detail::hide_candidate) return;
+  const std::size_t m = c.values.size();
+  const std::size_t drop = detail::hide_candidate(c.method, c.values);
+  if (drop >= m) return;
+  c.values.erase(c.values.begin() + static_cast<long>(drop));
+  if (c.vectors.cols() == static_cast<Eigen::Index>(m)) {
+    Eigen::MatrixXd kept(c.vectors.rows(), static_cast<Eigen::Index>(m - 1));
+    for (std::size_t j = 0, k = 0; j < m; ++j)
+      if (j != drop) kept.col(static_cast<Eigen::Index>(k++)) = c.vectors.col(static_cast<Eigen::Index>(j));
+    c.vectors = std::move(kept);
+  }
+  if (c.ipr.size() == m) c.ipr.erase(c.ipr.begin() + static_cast<long>(drop));
+  if (c.residual.size() == m) c.residual.erase(c.residual.begin() + static_cast<long>(drop));
+}
+
 /// Mode number of the first of a contiguous run of eigenvalues: an inertia count in the widest gap
 /// of the run, so that round-off in the count cannot hit an eigenvalue.
 long first_mode_number(const TridiagonalOperator& op, const std::vector<double>& v, double scale) {
@@ -101,6 +118,7 @@ Candidates by_index(SpectrumMethod method, const SymTridiagonal& t, long first, 
     out.vectors = bisect_pairs(t, first, last, out.values, {}, inverse_sqrt_mass, keep, out.ipr, out.residual, group);
     out.method = "bisect";
   }
+  apply_test_seam(out);
   return out;
 }
 
@@ -116,20 +134,15 @@ Candidates shift_invert(SpectrumMethod method, const SymTridiagonal& t, double s
   out.vectors = std::move(r.vectors);
   out.method = std::string(to_string(method));
   out.restarts = r.restarts;
+  apply_test_seam(out);
   return out;
 }
 
-}  // namespace
-
-PartialSpectrum partial_spectrum(const SymTridiagonal& t, const std::vector<double>& inverse_sqrt_mass,
-                                 const ModeSelection& selection, const PartialSpectrumConfig& config) {
+/// One attempt by config.method, unchecked.
+PartialSpectrum solve_partial(const SymTridiagonal& t, const std::vector<double>& inverse_sqrt_mass,
+                              const ModeSelection& selection, const PartialSpectrumConfig& config,
+                              const TridiagonalOperator& op, double scale) {
   const std::size_t n = t.size();
-  if (n < 2) throw InvalidInput("N", " " + std::to_string(n) + ": a chain needs at least 2 beads");
-  if (inverse_sqrt_mass.size() != n) throw InvalidInput("inverse_sqrt_mass", ": must have N = " + std::to_string(n) + " entries");
-  validate(selection, n);
-  const TridiagonalOperator op(t);
-  const double scale = t.max_abs();
-  if (!std::isfinite(scale) || !(scale > 0)) throw NumericalError("dynamical matrix has a non-finite or zero scale");
 
   Candidates cand;
   std::vector<std::size_t> chosen;  // indices into cand.values
@@ -181,6 +194,7 @@ PartialSpectrum partial_spectrum(const SymTridiagonal& t, const std::vector<doub
                                     inverse_sqrt_mass, config.keep_vectors, cand.ipr, cand.residual, config.lanes);
         cand.first_mode = a;
         cand.method = "bisect";
+        apply_test_seam(cand);
         chosen = nearest_in_frequency(cand.values, f0, k);
       }
     } else {
@@ -207,9 +221,10 @@ PartialSpectrum partial_spectrum(const SymTridiagonal& t, const std::vector<doub
         const double centre = 0.5 * (values[pick.front()] + values[pick.back()]);
         cand = shift_invert(config.method, t, centre, static_cast<int>(k), config);
         cand.first_mode = first + static_cast<long>(pick.front());
-        if (first_mode_number(op, cand.values, scale) != cand.first_mode)
-          throw NumericalError("near_khz: " + std::string(to_string(config.method)) +
-                               " converged to other modes than the located ones (use --method lapack)");
+        // Modes other than the located ones (or a missed one) fail the node-count check below.
+        if (cand.values.size() != k)
+          throw NumericalError("near_khz: " + std::string(to_string(config.method)) + " returned " +
+                               std::to_string(cand.values.size()) + " of " + std::to_string(k) + " modes");
         chosen.resize(k);
         std::iota(chosen.begin(), chosen.end(), 0);
       }
@@ -290,6 +305,112 @@ PartialSpectrum partial_spectrum(const SymTridiagonal& t, const std::vector<doub
     }
     if (config.keep_vectors) std::copy(w, w + n, out.vectors.col(static_cast<Eigen::Index>(j)).data());
   }
+  return out;
+}
+
+/// The node-count check (issue 13 item 5). Every returned eigenvalue is within δ = max(64ε,
+/// 2·residual)·‖T‖ of a true one (Weyl), so the inertia count N(σ) decides, for points more than
+/// δ from every returned value, how many true eigenvalues the result should hold:
+///   - the result must be contiguous: N(v_max − δ) − N(v_min + δ) equals the returned values in
+///     [v_min + δ, v_max − δ), and each end zone [v ± δ] holds at least the returned values in it;
+///   - its numbering must match: mode(v_min) ∈ (N(v_min − δ), N(v_min + δ)];
+///   - window: exactly the count N(hi⁺) − N(lo) of modes, each inside [lo − δ, hi + δ];
+///   - nearest: no eigenvalue left out nearer to f0 than the farthest returned one: the true
+///     eigenvalues strictly (by δ) inside the frequency ball of the farthest returned mode are
+///     exactly the returned ones there.
+/// Returns an empty string when the result passes, else what failed.
+std::string node_count_check(const PartialSpectrum& p, const ModeSelection& selection, const TridiagonalOperator& op,
+                             double scale) {
+  const std::size_t m = p.size();
+  auto in = [&](double a, double b) {  // returned values in [a, b)
+    return static_cast<std::size_t>(std::count_if(p.omega2.begin(), p.omega2.end(), [&](double v) { return v >= a && v < b; }));
+  };
+  auto count = [&](double a, double b) { return b > a ? op.count_below(b) - op.count_below(a) : std::size_t{0}; };
+  double rmax = 0;
+  for (double r : p.residual) rmax = std::max(rmax, r);
+  const double delta = std::max(64 * std::numeric_limits<double>::epsilon(), 2 * rmax) * scale;
+  if (selection.kind == ModeSelection::Kind::window) {
+    const double lo = omega_squared_of_khz(selection.lo_khz), hi = omega_squared_of_khz(selection.hi_khz);
+    const std::size_t expect = op.count_below(std::nextafter(hi, std::numeric_limits<double>::infinity())) - op.count_below(lo);
+    if (m != expect)
+      return "the window holds " + std::to_string(expect) + " eigenvalues by node count, " + std::to_string(m) + " returned";
+    for (double v : p.omega2)
+      if (v < lo - delta || v > hi + delta) return "a returned eigenvalue lies outside the window";
+  }
+  if (m == 0) return {};
+  for (std::size_t j = 1; j < m; ++j)
+    if (p.mode[j] != p.mode[j - 1] + 1 || p.omega2[j] < p.omega2[j - 1]) return "the returned modes are not consecutive";
+  const double vmin = p.omega2.front(), vmax = p.omega2.back();
+  const std::size_t below_lo = op.count_below(vmin - delta), above_lo = op.count_below(vmin + delta);
+  if (!(p.mode.front() > below_lo && p.mode.front() <= above_lo))
+    return "mode " + std::to_string(p.mode.front()) + " is numbered " + std::to_string(below_lo + 1) + ".." +
+           std::to_string(above_lo) + " by node count";
+  // Returned values sit within δ/2 of their true eigenvalues: near a boundary either may fall on
+  // either side, so the true count must lie between the returned counts of the interval shrunk
+  // and widened by δ/2 (a missed eigenvalue makes it exceed the widened count).
+  auto agrees = [&](double a, double b) {
+    const std::size_t truth = count(a, b);
+    return truth >= in(a + 0.5 * delta, b - 0.5 * delta) && truth <= in(a - 0.5 * delta, b + 0.5 * delta);
+  };
+  if (vmax - vmin > 2 * delta) {
+    if (!agrees(vmin + delta, vmax - delta))
+      return "an eigenvalue inside the returned range was missed (node count " +
+             std::to_string(count(vmin + delta, vmax - delta)) + ", returned " + std::to_string(in(vmin + delta, vmax - delta)) + ")";
+    if (count(vmin - delta, vmin + delta) < in(vmin - delta, vmin + delta) ||
+        count(vmax - delta, vmax + delta) < in(vmax - delta, vmax + delta))
+      return "more eigenvalues returned at an end than exist there";
+  }
+  if (selection.kind == ModeSelection::Kind::nearest) {
+    const double f0 = selection.near_khz;
+    double dk = 0;
+    for (double f : p.freq_khz) dk = std::max(dk, std::fabs(f - f0));
+    const double a = f0 > dk ? omega_squared_of_khz(f0 - dk) + delta : -std::numeric_limits<double>::infinity();
+    const double b = omega_squared_of_khz(f0 + dk) - delta;
+    const std::size_t truth = b > a ? op.count_below(b) - (std::isfinite(a) ? op.count_below(a) : 0) : 0;
+    if (b > a && !(truth >= in(a + 0.5 * delta, b - 0.5 * delta) && truth <= in(a - 0.5 * delta, b + 0.5 * delta)))
+      return "an eigenvalue nearer to near_khz than the farthest returned mode was left out (node count " +
+             std::to_string(truth) + ", returned " + std::to_string(in(a, b)) + ")";
+  }
+  return {};
+}
+
+}  // namespace
+
+namespace detail {
+CandidateSeam hide_candidate = nullptr;
+}  // namespace detail
+
+PartialSpectrum partial_spectrum(const SymTridiagonal& t, const std::vector<double>& inverse_sqrt_mass,
+                                 const ModeSelection& selection, const PartialSpectrumConfig& config) {
+  const std::size_t n = t.size();
+  if (n < 2) throw InvalidInput("N", " " + std::to_string(n) + ": a chain needs at least 2 beads");
+  if (inverse_sqrt_mass.size() != n) throw InvalidInput("inverse_sqrt_mass", ": must have N = " + std::to_string(n) + " entries");
+  validate(selection, n);
+  const TridiagonalOperator op(t);
+  const double scale = t.max_abs();
+  if (!std::isfinite(scale) || !(scale > 0)) throw NumericalError("dynamical matrix has a non-finite or zero scale");
+  std::string failure;
+  try {
+    PartialSpectrum out = solve_partial(t, inverse_sqrt_mass, selection, config, op, scale);
+    failure = node_count_check(out, selection, op, scale);
+    if (failure.empty()) return out;
+    failure = out.method + ": " + failure;
+  } catch (const NumericalError& e) {
+    if (config.method == SpectrumMethod::bisect) throw;
+    failure = e.what();
+  }
+  // Recovery: bisection numbers its modes by the same inertia count, so it cannot skip one.
+  PartialSpectrumConfig again = config;
+  again.method = SpectrumMethod::bisect;
+  if (config.method == SpectrumMethod::bisect)
+    throw NumericalError("partial spectrum failed the node-count check: " + failure);
+  PartialSpectrum out = solve_partial(t, inverse_sqrt_mass, selection, again, op, scale);
+  const std::string second = node_count_check(out, selection, op, scale);
+  if (!second.empty())
+    throw NumericalError("partial spectrum failed the node-count check: " + failure + "; bisect fallback: " + second);
+  out.method = std::string(to_string(config.method)) + "→" + out.method;
+  out.fallbacks = 1;
+  out.note = failure;
   return out;
 }
 

@@ -165,6 +165,7 @@ Spectrum SpectrumSolver::solve(const DynamicalMatrix& d, const ModeSelection& se
   out.info.method = std::move(p.method);
   out.info.restarts = p.restarts;
   out.info.candidates = p.candidates;
+  out.info.fallbacks = p.fallbacks;
   for (double r : out.residual) out.info.max_residual = std::max(out.info.max_residual, r);
   return out;
 }

@@ -83,7 +83,9 @@ void validate(const SpectrumConfig& config, const ModeSelection& selection);
 /// What the solver did: for reports and for reproducing a result.
 struct SpectrumInfo {
   std::string method;         ///< what ran: "fast", "lapack-stevd", "lapack-stemr", "bisect", "arpack", "slepc"
-  int fallbacks = 0;          ///< drivers that failed before the one that ran (lapack), chains that fell back (fast)
+  int fallbacks = 0;          ///< drivers that failed before the one that ran (lapack), chains that fell back (fast),
+                              ///< 1 when a nearest/window result failed its node-count check and bisect recomputed it
+                              ///< (method then reads e.g. "arpack→bisect"); a failing bisect throws NumericalError
   int restarts = 0;           ///< arpack/slepc outer iterations
   int candidates = 0;         ///< eigenpairs computed to select from (≥ the modes returned)
   double max_residual = 0;    ///< max ‖D w − ω² w‖ / max|D_ij| over returned unit vectors (0 when not computed)

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "granular/ensemble/parallel_realizations.hpp"
@@ -26,6 +27,10 @@ void validate(const IprMapConfig& c) {
   validate(c.material, "material");
   validate(c.selection, c.n);
   validate(c.spectrum, c.selection);
+  if (!std::isfinite(c.bin_khz) || c.bin_khz < 0)
+    throw InvalidInput("bin_khz", " " + format_number(c.bin_khz) + ": must be finite and >= 0 (0 = average by mode number)");
+  if (c.bin_khz > 0 && c.selection.kind != ModeSelection::Kind::all)
+    throw InvalidInput("bin_khz", ": frequency bins average every mode; not with a nearest/window selection");
   if (c.spectrum.method == SpectrumMethod::slepc)
     throw InvalidInput("method", " slepc: the IPR map solves one chain per thread; use lapack, bisect or arpack");
 }
@@ -53,7 +58,7 @@ std::vector<IprMapCell> compute_partial_ipr_map(const IprMapConfig& c, const Run
           realizations, threads,
           [&](std::size_t r, int) { slots[r] = spectrum(matrix_of(c, types[r], xi), c.selection, c.spectrum); },
           run.progress);
-      IprMapCell cell{q, xi, {}, {}, {}, {}};
+      IprMapCell cell{q, xi, {}, {}, {}, {}, {}, {}};
       for (std::size_t r = 0; r < realizations; ++r)  // fixed order: thread-count independent
         for (std::size_t j = 0; j < slots[r].size(); ++j) {
           cell.freq_khz.push_back(slots[r].freq_khz[j]);
@@ -108,7 +113,7 @@ std::vector<IprMapCell> compute_ipr_map(const IprMapConfig& c, const RunOptions&
         }
         if (run.progress) run.progress->advance(last - first);
       });
-      IprMapCell cell{q, xi, std::vector<double>(n, 0.0), std::vector<double>(n, 0.0), {}, {}};
+      IprMapCell cell{q, xi, std::vector<double>(n, 0.0), std::vector<double>(n, 0.0), {}, {}, {}, {}};
       for (std::size_t r = 0; r < realizations; ++r)  // fixed order: thread-count independent
         for (std::size_t k = 0; k < n; ++k) {
           cell.freq_khz[k] += frequency_khz(omega2[r * n + k]);
@@ -117,6 +122,21 @@ std::vector<IprMapCell> compute_ipr_map(const IprMapConfig& c, const RunOptions&
       for (std::size_t k = 0; k < n; ++k) {
         cell.freq_khz[k] /= static_cast<double>(realizations);
         cell.ipr[k] /= static_cast<double>(realizations);
+      }
+      if (c.bin_khz > 0) {  // same fixed order: realization-major, then mode
+        double fmax = 0;
+        for (double w2 : omega2) fmax = std::max(fmax, frequency_khz(w2));
+        const auto bins = static_cast<std::size_t>(std::floor(fmax / c.bin_khz)) + 1;
+        cell.bin_modes.assign(bins, 0);
+        cell.bin_ipr.assign(bins, 0.0);
+        for (std::size_t i = 0; i < realizations * n; ++i) {
+          const auto b = std::min(bins - 1, static_cast<std::size_t>(std::floor(std::max(0.0, frequency_khz(omega2[i])) / c.bin_khz)));
+          ++cell.bin_modes[b];
+          cell.bin_ipr[b] += ipr[i];
+        }
+        for (std::size_t b = 0; b < bins; ++b)
+          cell.bin_ipr[b] = cell.bin_modes[b] > 0 ? cell.bin_ipr[b] / static_cast<double>(cell.bin_modes[b])
+                                                   : std::numeric_limits<double>::quiet_NaN();
       }
       cells.push_back(std::move(cell));
     }

@@ -30,6 +30,11 @@ struct IprMapConfig {
   /// (arpack runs on one thread: ARPACK keeps state in Fortran SAVE variables; slepc is refused:
   /// the map solves one chain per thread, while SLEPc is collective over MPI ranks).
   SpectrumConfig spectrum{.method = SpectrumMethod::fast};
+  /// Every mode only: 0 averages over realizations by mode number (the default); W > 0 [kHz]
+  /// averages in frequency bins [k W, (k + 1) W), k = 0 … ⌊f_max / W⌋, f_max the highest mode
+  /// of the cell's realizations: the ensemble's IPR as a function of f, which is what a reader
+  /// plotting against frequency wants (mode-number means put points inside band gaps).
+  double bin_khz = 0;
 };
 
 struct IprMapCell {
@@ -41,6 +46,10 @@ struct IprMapCell {
   /// Both stay empty for every mode.
   std::vector<std::size_t> mode;
   std::vector<std::uint64_t> realization;
+  /// With bin_khz > 0 (every mode): bin b is [b·bin_khz, (b+1)·bin_khz) kHz; bin_modes[b] counts
+  /// the modes of all realizations in it, bin_ipr[b] is their mean IPR (NaN when bin_modes = 0).
+  std::vector<std::size_t> bin_modes;
+  std::vector<double> bin_ipr;
 };
 
 /// Throws InvalidInput (naming the field) on a bad config, before any work starts.
