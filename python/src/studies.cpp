@@ -38,6 +38,28 @@ py::array_t<double> gather(const PyIprMap& map, std::vector<double> IprMapCell::
 }
 
 py::dict ipr_map_rows(const PyIprMap& map) {
+  if (map.config.bin_khz > 0 && !map.selection()) {  // frequency bins: the tool's binned CSV
+    std::vector<double> q, xi, lo, hi, ipr;
+    std::vector<long long> modes;
+    const double w = map.config.bin_khz;
+    for (const auto& cell : map.cells)
+      for (std::size_t b = 0; b < cell.bin_modes.size(); ++b) {
+        q.push_back(cell.q);
+        xi.push_back(cell.xi);
+        lo.push_back(static_cast<double>(b) * w);
+        hi.push_back(static_cast<double>(b + 1) * w);
+        modes.push_back(static_cast<long long>(cell.bin_modes[b]));
+        ipr.push_back(cell.bin_ipr[b]);
+      }
+    py::dict d;
+    d["q"] = to_numpy(std::move(q));
+    d["xi"] = to_numpy(std::move(xi));
+    d["freq_lo_khz"] = to_numpy(std::move(lo));
+    d["freq_hi_khz"] = to_numpy(std::move(hi));
+    d["modes"] = to_numpy(std::move(modes));
+    d["ipr"] = to_numpy(std::move(ipr));
+    return d;
+  }
   std::vector<double> q, xi, freq, ipr;
   std::vector<long long> mode, realization;
   for (const auto& cell : map.cells) {
@@ -118,9 +140,12 @@ void bind_studies(py::module_& m) {
       .def_property_readonly(
           "ipr", [](const PyIprMap& p) { return gather(p, &IprMapCell::ipr); },
           "mean displacement IPRs, (len(q), len(xi), N); with a selection, one per row")
+      .def_property_readonly("bin_khz", [](const PyIprMap& p) { return p.config.bin_khz; },
+                             "width of the frequency bins [kHz] (0: averaged by mode number)")
       .def("rows", &ipr_map_rows,
            "The ipr-map tool's CSV columns as arrays: q, xi, [realization,] mode, freq_khz [kHz], ipr (one row per "
-           "(q, xi, mode), or per selected mode of each realization)")
+           "(q, xi, mode), or per selected mode of each realization); with bin_khz > 0: q, xi, freq_lo_khz, "
+           "freq_hi_khz, modes (of all realizations in the bin), ipr (their mean; NaN for an empty bin)")
       .def_property_readonly(
           "metadata", [](const PyIprMap& p) { return to_python(p.metadata); },
           "the ipr-map tool's JSON: parameters (disorder, xi, q, N, F0_N, R1_m, material, "
@@ -134,7 +159,8 @@ void bind_studies(py::module_& m) {
       "ipr_map",
       [](const std::string& disorder, const py::object& xi, const py::object& q, long long N, double F0, double R1,
          long long realizations, long long seed, const std::string& solver, const py::object& near,
-         const py::object& count, const py::object& window, const py::object& method, long long threads, bool progress) {
+         const py::object& count, const py::object& window, const py::object& method, double bin_khz, long long threads,
+         bool progress) {
         PyIprMap map;
         IprMapConfig& c = map.config;
         c.disorder = disorder_of(disorder);
@@ -177,6 +203,7 @@ void bind_studies(py::module_& m) {
         } else if (!method.is_none()) {
           bad_value("method", ": only with near/count or window (the full map uses solver=)");
         }
+        c.bin_khz = bin_khz;
         validate(c);
 
         run_long("ipr_map", c.q_values.size() * c.xi_values.size() * c.realizations, progress,
@@ -201,6 +228,10 @@ void bind_studies(py::module_& m) {
                               {"seed", c.seed},
                               {"threads", resolve_threads(thread_request)},
                               {"solver", solver}};
+        if (!selected) {
+          meta["averaging"] = c.bin_khz > 0 ? "frequency-bin" : "mode";
+          if (c.bin_khz > 0) meta["bin_khz"] = c.bin_khz;
+        }
         if (selected) {
           const ModeSelection& s = c.selection;
           const bool by_window = s.kind == ModeSelection::Kind::window;
@@ -215,8 +246,8 @@ void bind_studies(py::module_& m) {
       py::kw_only(), py::arg("disorder") = "A", py::arg("xi") = "0.1:1", py::arg("q") = "0.2,0.5,0.8",
       py::arg("N") = 100, py::arg("F0") = 10.0, py::arg("R1") = paper_r1, py::arg("realizations") = 100,
       py::arg("seed") = 1, py::arg("solver") = "fast", py::arg("near") = py::none(), py::arg("count") = py::none(),
-      py::arg("window") = py::none(), py::arg("method") = py::none(), py::arg("threads") = 0,
-      py::arg("progress") = false,
+      py::arg("window") = py::none(), py::arg("method") = py::none(), py::arg("bin_khz") = 0.0,
+      py::arg("threads") = 0, py::arg("progress") = false,
       "Mean frequency [kHz] and displacement IPR of every mode of disordered chains over realizations, on a (q, xi) "
       "grid: the paper's IPR map, as the ipr-map tool computes it (same numbers for the same keywords).\n\n"
       "    disorder: 'h' | 'A' | 'RDM1' | 'RDM2'\n"
@@ -228,6 +259,8 @@ void bind_studies(py::module_& m) {
       "    solver: 'fast' (default) | 'lapack' | 'lapack-stevr' | 'lapack-stemr' | 'lapack-stevd' | 'lapack-steqr'\n"
       "    near, count / window: partial spectra (every selected mode of every realization, not averaged) by "
       "method = 'lapack' | 'bisect' | 'arpack'\n"
+      "    bin_khz: W > 0 averages every mode in frequency bins [k W, (k+1) W) [kHz] instead of by mode number "
+      "(see IprMap.rows())\n"
       "    threads: worker threads (0: every core); the result does not depend on it\n"
       "    progress: draw a progress bar on stderr\n"
       "Returns a granular.IprMap. Releases the GIL; Ctrl-C stops it (KeyboardInterrupt) after the cell in flight.");

@@ -18,6 +18,7 @@ def test_ipr_map_equals_the_tool(tools):
     assert_identical(grid.ipr.ravel(), csv["ipr"])
     assert_identical(grid.xi, [0.3, 0.4, 0.5])
     assert grid.metadata["parameters"] == meta["parameters"]
+    assert grid.metadata["averaging"] == meta["averaging"] == "mode"
 
 
 def test_ipr_map_lapack_solver_equals_the_tool(tools):
@@ -104,3 +105,15 @@ def test_localization_node_counts_are_the_spectrum_and_streaming_gives_the_built
     assert_identical(built.modes_below, np.arange(1, 301))  # Dean's method: exactly one mode between midpoints
     streamed = gr.localization(N=300, seed=2, realization=1, f=f)
     assert_identical(streamed.lyapunov, built.lyapunov)
+
+
+def test_frequency_binned_ipr_map_equals_the_tool(tools):
+    csv, meta = tools.run("ipr-map", "--disorder", "RDM2", "--xi", "0.5", "--q", "0.5", "--N", "50",
+                          "--realizations", "5", "--bin-khz", "2", "--quiet")
+    grid = gr.ipr_map(disorder="RDM2", xi=0.5, q=0.5, N=50, realizations=5, bin_khz=2.0)
+    rows = grid.rows()
+    for key in ("q", "xi", "freq_lo_khz", "freq_hi_khz", "modes", "ipr"):
+        assert_identical(rows[key], csv[key])
+    assert rows["modes"].sum() == 5 * 50  # every mode of every realization in one bin
+    assert grid.metadata["averaging"] == meta["averaging"] == "frequency-bin"
+    assert grid.metadata["bin_khz"] == meta["bin_khz"]

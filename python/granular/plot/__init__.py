@@ -41,6 +41,8 @@ def _ipr_map_data(source):
         rows = _io.read_csv(source)
         if "realization" in rows:
             raise ValueError(f"{os.fspath(source)}: a partial (near/window) map; plot it with partial_spectrum_ipr")
+        if "freq_lo_khz" in rows:
+            raise ValueError(f"{os.fspath(source)}: a frequency-binned map (--bin-khz); this figure is by mode number")
         meta = _io.read_json_beside(source).get("parameters", {})
         qs = sorted(set(rows["q"]))
         xis = sorted(set(rows["xi"]))
@@ -56,6 +58,8 @@ def _ipr_map_data(source):
         return disorder, np.array(qs), np.array(xis), freq, ipr, meta
     if getattr(source, "selection", False):
         raise ValueError("a partial (near/window) IPR map; plot it with partial_spectrum_ipr")
+    if getattr(source, "bin_khz", 0) > 0:
+        raise ValueError("a frequency-binned IPR map (bin_khz); this figure is by mode number")
     meta = source.metadata.get("parameters", {})
     return source.disorder, source.q, source.xi, source.freq_khz, source.ipr, meta
 
