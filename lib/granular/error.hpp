@@ -36,4 +36,10 @@ struct NumericalError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// The caller asked a long run to stop (RunOptions::cancelled returned true). Thrown once the
+/// realizations in flight have finished and been checkpointed, so the run can be resumed.
+struct Cancelled : std::runtime_error {
+  Cancelled() : std::runtime_error("cancelled") {}
+};
+
 }  // namespace granular

@@ -117,5 +117,30 @@ TEST(EnsembleRunner, ResumedRunSkipsFinishedRealizationsAndEqualsAFreshOne) {
   CheckpointLog::remove_all(path);
 }
 
+// The cancellation hook (how Python's Ctrl-C stops an ensemble): once `cancelled` says so, no new
+// realization starts, the ones already done stay in the log, and a resume gives the fresh rows.
+TEST(EnsembleRunner, CancelledRunKeepsFinishedRealizationsAndResumesToTheFreshResult) {
+  const std::string path = temp_path("cancel");
+  auto work = [](std::uint64_t r, int) { return std::vector<double>{std::exp(-static_cast<double>(r)), static_cast<double>(r)}; };
+  EnsembleOptions options;
+  options.realizations = 30;
+  options.threads = 2;
+  const auto fresh = run_ensemble(options, work);
+
+  std::atomic<int> started{0};
+  options.checkpoint = path;
+  options.cancelled = [&] { return started.load() >= 9; };
+  EXPECT_THROW(run_ensemble(options, [&](std::uint64_t r, int t) { ++started; return work(r, t); }), Cancelled);
+  const std::size_t kept = CheckpointLog::load(path, "{}").size();
+  EXPECT_GE(kept, 9u);  // every started realization finished and was logged
+  EXPECT_LT(kept, 30u);
+  EXPECT_EQ(kept, static_cast<std::size_t>(started.load()));
+
+  options.cancelled = nullptr;
+  options.resume = true;
+  EXPECT_EQ(run_ensemble(options, work), fresh);
+  CheckpointLog::remove_all(path);
+}
+
 }  // namespace
 }  // namespace granular

@@ -9,28 +9,19 @@ given with --spectrum. A mode is extended in a finite chain where l(f) exceeds i
 
 usage: /usr/bin/python3 tools/plot/localization.py loc.csv [-o loc.png]
            [--spectrum-tool build/spectrum --finite-N 1000 --realizations 5 | --spectrum a.csv b.csv]
+The figure is granular.plot.localization.
 """
 import argparse
-import csv
 import json
-import math
 import os
 import subprocess
 import sys
 import tempfile
 
-import matplotlib
-
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
+from _granular import plot_main
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 DEFAULT_TOOL = os.path.normpath(os.path.join(HERE, "..", "..", "build", "spectrum"))
-
-
-def read_rows(path):
-    with open(path, newline="") as f:
-        return list(csv.DictReader(f))
 
 
 def run_spectrum(tool, chain, n, realizations, folder):
@@ -65,57 +56,22 @@ def main():
     parser.add_argument("--realizations", type=int, default=5, help="finite chains to diagonalize (default: %(default)s)")
     args = parser.parse_args()
     out = args.output or os.path.splitext(args.csv)[0] + ".png"
-
-    rows = read_rows(args.csv)
     meta_path = os.path.splitext(args.csv)[0] + ".json"
-    meta = json.load(open(meta_path)) if os.path.exists(meta_path) else {}
-    chain = meta.get("chain", {})
-    f = [float(r["freq_khz"]) for r in rows]
-    lam = [float(r["lyapunov"]) for r in rows]
-    err = [float(r["lyapunov_err"]) for r in rows]
-    ell = [1 / x if x > 0 else math.nan for x in lam]
-    ell_lo = [1 / (x + e) if x > 0 else math.nan for x, e in zip(lam, err)]
-    ell_hi = [1 / (x - e) if x > e else math.nan for x, e in zip(lam, err)]
-
-    spectra, finite_n = args.spectrum or [], None
+    chain = json.load(open(meta_path)).get("chain", {}) if os.path.exists(meta_path) else {}
     with tempfile.TemporaryDirectory() as folder:
+        spectra, finite_n = args.spectrum or [], None
         if not spectra and chain and os.path.exists(args.spectrum_tool):
             spectra = run_spectrum(args.spectrum_tool, chain, args.finite_N, args.realizations, folder)
             finite_n = args.finite_N if "disorder" in chain else None
         elif not spectra:
             print(f"note: no spectrum CSVs and no {args.spectrum_tool}: plotting l(f) alone", file=sys.stderr)
-        modes = [(float(r["freq_khz"]), float(r["ipr"])) for path in spectra for r in read_rows(path)]
-        if finite_n is None and spectra:
-            finite_n = len(read_rows(spectra[0]))
-
-    fig, (left, right) = plt.subplots(1, 2, figsize=(10, 4.2), sharex=True)
-    left.fill_between(f, ell_lo, ell_hi, color="C0", alpha=0.3, lw=0, label="± statistical error")
-    left.plot(f, ell, color="C0", lw=1, label=r"$\ell = 1/\lambda$ (transfer matrix)")
-    left.set_yscale("log")
-    left.set_xlabel("frequency f [kHz]")
-    left.set_ylabel(r"localization length $\ell$ [beads]")
-    if finite_n:
-        left.axhline(finite_n, ls=":", color="0.3", lw=1)
-        left.annotate(f"N = {finite_n} (right)", (0.01, finite_n), xycoords=("axes fraction", "data"),
-                      fontsize=8, va="bottom")
-    if modes:
-        right.plot([m[0] for m in modes], [m[1] for m in modes], ".", ms=2, color="C3")
-    right.set_yscale("log")
-    right.set_xlabel("frequency f [kHz]")
-    right.set_ylabel(r"mode IPR $P^{-1}$")
-    right.set_title(f"modes of {len(spectra)} finite chain(s)" + (f" of {finite_n} beads" if finite_n else ""),
-                    fontsize=9)
-    for name, value in meta.get("band_edges_khz", {}).items():
-        for ax in (left, right):
-            ax.axvline(value, ls="--", lw=0.8, color="0.5")
-        left.annotate(name, (value, 1.0), xycoords=("data", "axes fraction"), fontsize=8, ha="center", va="bottom")
-    left.legend(fontsize=8, loc="lower left")
-    keys = ("disorder", "xi", "q", "F0_N", "seed", "realization", "N", "config_file", "radii_file")
-    fig.suptitle(", ".join(f"{k} = {chain[k]}" for k in keys if k in chain), fontsize=9)
-    fig.tight_layout()
-    fig.savefig(out, dpi=120)
-    print(f"wrote {out}")
+        argv = ["localization", args.csv, "-o", out]
+        if spectra:
+            argv += ["--spectrum", *spectra]
+        if finite_n:
+            argv += ["--finite-N", str(finite_n)]
+        return plot_main(argv, "localization.py")
 
 
 if __name__ == "__main__":
-    main()
+    sys.exit(main())

@@ -8,18 +8,15 @@ drop as N grows; localized ones keep an N-independent IPR.
 usage: /usr/bin/python3 tools/plot/partial_spectrum_ipr.py --tool build/spectrum
            [--disorder A] [--xi 0.5] [--q 0.5] [--near 15] [--count 40]
            [--sizes 1000,10000,100000,1000000] [--method bisect] [-o partial-spectrum-ipr.png]
+The figure is granular.plot.partial_spectrum_ipr.
 """
 import argparse
-import csv
 import os
 import subprocess
 import sys
 import tempfile
 
-import matplotlib
-
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
+from _granular import plot_main
 
 
 def run(tool, n, args, folder):
@@ -30,9 +27,7 @@ def run(tool, n, args, folder):
     done = subprocess.run(cmd, capture_output=True, text=True)
     if done.returncode != 0:
         sys.exit(f"partial_spectrum_ipr.py: {' '.join(cmd)} failed: {done.stderr.strip()}")
-    with open(out, newline="") as f:
-        rows = list(csv.DictReader(f))
-    return [float(r["freq_khz"]) for r in rows], [float(r["ipr"]) for r in rows]
+    return out
 
 
 def main():
@@ -49,23 +44,11 @@ def main():
     p.add_argument("-o", "--output", default="partial-spectrum-ipr.png")
     args = p.parse_args()
     sizes = [int(float(s)) for s in args.sizes.split(",")]
-    fig, ax = plt.subplots(figsize=(7, 4.5))
     with tempfile.TemporaryDirectory() as folder:
-        for n, colour in zip(sizes, plt.cm.viridis([i / max(1, len(sizes) - 1) for i in range(len(sizes))])):
-            f, ipr = run(args.tool, n, args, folder)
-            ax.semilogy([x - args.near for x in f], ipr, "o", ms=4, color=colour, label=f"N = {n:g}")
-            ax.axhline(1.5 / n, color=colour, lw=0.6, ls=":")  # a plane wave with fixed ends: 3/(2N)
-    # the K nearest span ~K/N of the band: a symmetric log axis keeps every N readable
-    ax.set_xscale("symlog", linthresh=1e-5)
-    ax.set_xlabel(f"f − {args.near:g} kHz [kHz] (symmetric log)")
-    ax.set_ylabel("mode IPR  Σv⁴/(Σv²)²")
-    ax.set_title(f"{args.disorder}, ξ = {args.xi:g}, q = {args.q:g}: {args.count} modes nearest {args.near:g} kHz "
-                 f"(dotted: 3/(2N))", fontsize=9)
-    ax.legend(fontsize=8)
-    fig.tight_layout()
-    fig.savefig(args.output, dpi=150)
-    print(args.output)
+        files = [run(args.tool, n, args, folder) for n in sizes]
+        return plot_main(["partial-spectrum-ipr", *files, "--near", str(args.near), "-o", args.output],
+                         "partial_spectrum_ipr.py")
 
 
 if __name__ == "__main__":
-    main()
+    sys.exit(main())

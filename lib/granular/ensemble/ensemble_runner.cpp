@@ -39,6 +39,7 @@ std::vector<std::vector<double>> run_ensemble(
     parallel_realizations(
         mine.size(), o.threads,
         [&](std::size_t i, int thread) {
+          if (o.cancelled && o.cancelled()) throw Cancelled();
           rows[i] = work(mine[i], thread);
           if (log) log->append(mine[i], rows[i]);
         },

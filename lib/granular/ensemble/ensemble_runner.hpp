@@ -20,6 +20,7 @@ struct EnsembleOptions {
   std::string parameters = "{}";      ///< one-line JSON describing the run; a resume must match it
   bool resume = false;                ///< continue from `checkpoint` instead of starting afresh
   ProgressMeter* progress = nullptr;  ///< optional; advanced once per realization computed or loaded
+  std::function<bool()> cancelled{};  ///< optional; true before a realization starts: throw Cancelled (run_options.hpp)
 };
 
 /// `work(r, thread)` computes realization r. Under mpirun the realizations still to do are dealt

@@ -1,6 +1,7 @@
 #pragma once
 // How a long computation runs, as opposed to what it computes: threads, checkpoint and resume,
 // progress. Every study and ensemble takes this one type beside its own config.
+#include <functional>
 #include <string>
 
 #include "granular/ensemble/progress_meter.hpp"
@@ -12,6 +13,10 @@ struct RunOptions {
   std::string checkpoint{};           ///< file (or prefix) logging finished realizations; empty = none
   bool resume = false;                ///< continue from `checkpoint` instead of starting afresh
   ProgressMeter* progress = nullptr;  ///< optional; advanced once per realization done
+  /// Optional; polled (from any worker thread) before each realization, or each cell of the IPR
+  /// map: true stops the run with granular::Cancelled once the work in flight is finished and
+  /// checkpointed (how the Python module turns Ctrl-C into a resumable stop).
+  std::function<bool()> cancelled{};
 };
 
 }  // namespace granular

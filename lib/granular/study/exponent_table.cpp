@@ -32,12 +32,13 @@ std::vector<ExponentCell> run_exponent_table(const ExponentTableConfig& config, 
   for (const auto& c : cases) validate(c);  // every case checked before the first one runs
   std::size_t total = 0;
   for (const auto& c : cases) total += c.realizations;
-  ProgressMeter progress(total, "exponents", options.progress);
+  ProgressMeter own(total, "exponents", options.meter ? 0 : options.progress);
   std::vector<ExponentCell> cells;
   for (std::size_t i = 0; i < cases.size(); ++i) {
     StudyRunOptions run;
     run.threads = options.threads;
-    run.progress = &progress;
+    run.progress = options.meter ? options.meter : &own;
+    run.cancelled = options.cancelled;
     if (!options.checkpoint_prefix.empty()) {
       run.checkpoint = options.checkpoint_prefix + "." + std::to_string(i);
       // A case not started before the interruption has no log yet: it simply starts.
@@ -45,7 +46,7 @@ std::vector<ExponentCell> run_exponent_table(const ExponentTableConfig& config, 
     }
     cells.push_back({cases[i], run_transport_study(cases[i], run)});
   }
-  progress.finish();
+  own.finish();
   return cells;
 }
 

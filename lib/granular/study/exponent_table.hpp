@@ -2,6 +2,7 @@
 // The paper's whole protocol (SPEC §4): transport exponents γ (m̃2 ∝ t^γ) and η (P⁻¹ ∝ t^−η)
 // for every chain kind × precompression × kick, each an ensemble (transport_study.hpp).
 // Homogeneous chains are deterministic, so they run one realization whatever R is.
+#include <functional>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -29,6 +30,8 @@ struct ExponentRunOptions {
   std::string checkpoint_prefix;  ///< case i logs to <prefix>.<i>; empty: no checkpoints
   bool resume = false;
   int progress = -1;              ///< ProgressMeter's enabled flag
+  ProgressMeter* meter = nullptr;  ///< optional: advance this meter (total: every case's realizations) instead of one of its own
+  std::function<bool()> cancelled{};  ///< see RunOptions::cancelled
 };
 
 /// The cases in table order (kick-major, then F0, then chain).

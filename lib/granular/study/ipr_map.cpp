@@ -53,6 +53,7 @@ std::vector<IprMapCell> compute_partial_ipr_map(const IprMapConfig& c, const Run
       types[r] = realization_configuration(c.disorder, q, n, c.seed, r);
     });
     for (double xi : c.xi_values) {
+      if (run.cancelled && run.cancelled()) throw Cancelled();
       parallel_realizations(
           realizations, threads,
           [&](std::size_t r, int) { slots[r] = spectrum(matrix_of(c, types[r], xi), c.selection, c.spectrum); },
@@ -90,6 +91,7 @@ std::vector<IprMapCell> compute_ipr_map(const IprMapConfig& c, const RunOptions&
       types[r] = realization_configuration(c.disorder, q, n, c.seed, r);
     });
     for (double xi : c.xi_values) {
+      if (run.cancelled && run.cancelled()) throw Cancelled();
       // Realizations go to the solver in fixed batches [b·B, b·B + B): a solver may overlap the
       // chains of a batch, and each chain's result is independent of the batch and the thread.
       const std::size_t batches = (realizations + batch - 1) / batch;

@@ -32,7 +32,11 @@ LocalizationScan localization_scan(const BeadSource& chain, const LocalizationSc
   TransferMatrixConfig tm;
   tm.segments = config.segments;
   tm.threads = run.threads;
-  if (ProgressMeter* progress = run.progress) tm.progress = [progress](std::size_t steps) { progress->advance(steps); };
+  if (run.progress || run.cancelled)
+    tm.progress = [&run](std::size_t steps) {
+      if (run.cancelled && run.cancelled()) throw Cancelled();  // every worker stops at its next piece
+      if (run.progress) run.progress->advance(steps);
+    };
   TransferMatrixScan scan = transfer_matrix_scan(chain, config.frequency_khz, tm);
 
   LocalizationScan out;

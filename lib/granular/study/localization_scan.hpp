@@ -5,6 +5,7 @@
 // the columns of the `localization` tool (SPEC §3, "Infinite chains").
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "granular/ensemble/run_options.hpp"

@@ -250,6 +250,7 @@ TransportSummary run_transport_study(const TransportCase& c, const StudyRunOptio
   ensemble.resume = options.resume;
   ensemble.parameters = describe(c).dump();
   ensemble.progress = options.progress;
+  ensemble.cancelled = options.cancelled;
   std::vector<std::vector<double>> rows = run_ensemble(ensemble, [&](std::uint64_t r, int) {
     try {
       return realization_row(c, r);

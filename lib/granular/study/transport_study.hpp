@@ -9,6 +9,7 @@
 // The mean m̃2 is taken about the excited bead (the paper's definition, the default) and about the
 // energy centroid; both are fitted, both are reported.
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <optional>
 #include <string>

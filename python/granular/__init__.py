@@ -1,0 +1,95 @@
+"""granular: disordered granular chains — linear spectra and Hertzian dynamics — from Python.
+
+The C++ toolkit's library under a Python face (Martínez, Kevrekidis & Porter, PRE 93, 022902 (2016)):
+build a chain, get its modes, map localization over disorder, run the nonlinear dynamics and
+ensembles. Keywords and units are those of the command-line tools: N, q, xi, seed, realization,
+F0 [N], R1 [m], near [kHz], count, window (lo, hi) [kHz], method, threads; arrays are NumPy arrays;
+every result carries the metadata dict the tools write as JSON.
+
+    import granular as gr
+    chain = gr.anderson(N=100, q=0.5, xi=0.5, seed=1)      # a chain (realization 0 of seed 1)
+    modes = gr.spectrum(chain)                              # every mode: freq_khz, ipr
+    near = gr.spectrum(chain, near=15.0, count=20, method="bisect")
+    grid = gr.ipr_map(disorder="A", xi="0.1:1", q=(0.2, 0.5, 0.8), threads=2, progress=True)
+    run = gr.spreading(chain, ic="displacement", T=1e-3, energy_map=True)
+    fig = gr.plot.spectrum(modes)                           # figures: granular.plot (matplotlib)
+
+Errors: ValueError naming the keyword of a bad value, OSError for files, granular.NumericalError
+when a solver or a guard fails. Long calls release the GIL, take threads=, draw a progress bar with
+progress=True and stop on Ctrl-C (KeyboardInterrupt; checkpointed ensembles resume with resume=True).
+"""
+
+try:
+    from . import _core
+except ImportError as error:  # the figures (granular.plot) work without the compiled part
+    _core = None
+    _core_error = error
+
+if _core is not None:
+    from ._core import (  # noqa: F401
+        BandEdges,
+        Chain,
+        Correlations,
+        DynamicalMatrix,
+        FpuCoefficients,
+        IprMap,
+        Localization,
+        Material,
+        NumericalError,
+        Spectrum,
+        SpectrumSolver,
+        anderson,
+        band_edges,
+        configuration,
+        correlation_theory,
+        correlations,
+        cyclic_correlation,
+        diatomic,
+        dynamical_matrix,
+        exponent_table,
+        flat_wall,
+        fpu_coefficients,
+        frequency_khz,
+        from_radii,
+        from_types,
+        hertz_coefficient,
+        homogeneous,
+        ipr_map,
+        linear_stiffness,
+        localization,
+        nonlinearity_ratio,
+        omega2_of_khz,
+        paper_r1,
+        random_chain,
+        rdm1,
+        rdm2,
+        read_radii,
+        read_types,
+        spectrum,
+        spreading,
+        static_overlap,
+        steel,
+        transport,
+    )
+    from ._results import ExponentTable, SpreadingRun, Transport  # noqa: F401
+
+    __version__ = _core.__version__
+else:
+    __version__ = "unknown"
+
+
+def __getattr__(name):
+    if name == "plot":  # granular.plot on first use (it imports matplotlib)
+        import importlib
+
+        return importlib.import_module(".plot", __name__)
+    if _core is None and not name.startswith("_"):
+        raise ImportError(
+            f"granular.{name} needs the compiled extension granular._core, which did not load "
+            f"({_core_error}). Build it with CMake (option GRANULAR_PYTHON, on by default) and put "
+            "build/python on PYTHONPATH, or install with `cmake --install`.")
+    raise AttributeError(f"module 'granular' has no attribute {name!r}")
+
+
+def __dir__():
+    return sorted(globals())

@@ -1,0 +1,129 @@
+"""python3 -m granular.plot <kind> FILE... [-o out.png]: the figures of granular.plot from the
+files the command-line tools write. `python3 -m granular.plot <kind> --help` describes each kind."""
+import argparse
+import os
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+
+
+def _pair(text):
+    """'a:b' -> (a, b) floats."""
+    try:
+        a, b = text.split(":")
+        return float(a), float(b)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected START:STOP, got {text!r}") from None
+
+
+def _default_output(path, suffix=""):
+    return os.path.splitext(os.fspath(path))[0] + suffix + ".png"
+
+
+def parser(prog=None):
+    p = argparse.ArgumentParser(prog=prog or "python3 -m granular.plot", description=__doc__.splitlines()[0])
+    sub = p.add_subparsers(dest="kind", required=True, metavar="KIND")
+
+    def kind(name, help_text):
+        q = sub.add_parser(name, help=help_text, description=help_text)
+        q.add_argument("-o", "--output", help="PNG (or PDF, SVG) to write; default: the input name with .png")
+        return q
+
+    q = kind("ipr-map", "mean IPR over (xi, mode number), one panel per q, from an ipr-map CSV (paper Fig. 4)")
+    q.add_argument("csv", nargs="?", default="ipr-map.csv")
+    q.add_argument("--log-color", action="store_true", help="IPR on a logarithmic colour scale")
+    q.add_argument("--no-band-edges", action="store_true", help="do not draw where the mean f crosses f1 and fb1")
+    q = kind("spectrum", "f versus mode number and the IPR beside it, band edges dashed, from a spectrum CSV")
+    q.add_argument("csv", nargs="?", default="spectrum.csv")
+    q = kind("correlations", "rho(d) with its spread and the infinite-chain formula, from correlations CSVs")
+    q.add_argument("csv", nargs="*", default=["correlations.csv"])
+    q.add_argument("--labels", help="comma list, one per CSV")
+    q = kind("partial-spectrum-ipr", "IPR versus f - f0 of the modes nearest f0, from spectrum --near CSVs")
+    q.add_argument("csv", nargs="+")
+    q.add_argument("--near", type=float, help="f0 [kHz] (default: from the JSON beside the first CSV)")
+    q.add_argument("--labels", help="comma list, one per CSV")
+    q = kind("localization", "localization length l(f) beside the IPR of finite chains, from localization CSVs")
+    q.add_argument("csv", nargs="?", default="localization.csv", help="the localization tool's CSV")
+    q.add_argument("--spectrum", nargs="+", default=[], metavar="CSV", help="spectrum CSVs of finite chains")
+    q.add_argument("--finite-N", type=int, help="their length (default: from the first spectrum)")
+    q = kind("map", "energy map E_n(t) beside the spectral density, from spreading --energy-map/--spectrum files")
+    q.add_argument("map", help="HDF5 file of spreading --energy-map")
+    q.add_argument("spectrum", nargs="?", help="CSV of spreading --spectrum (optional)")
+    q.add_argument("--t-window", type=_pair, metavar="T0:T1", help="time window [s], e.g. 0:2e-3")
+    q.add_argument("--sites", type=_pair, metavar="N0:N1", help="bead window (from 1), e.g. 700:900")
+    q.add_argument("--floor", type=float, default=-12, help="lowest log10 relative energy shown (default -12)")
+    q = kind("forces", "force versus t at chosen beads beside the force profile at T (spreading --forces-at --profile)")
+    q.add_argument("forces", help="PREFIX-forces.csv")
+    q.add_argument("profile", nargs="?", help="PREFIX-profile.csv (optional)")
+    q = kind("spread", "m2(t) and P^-1(t), log-log, with L_d insets, from spreading CSVs")
+    q.add_argument("csv", nargs="+")
+    q.add_argument("--labels", help="comma list, one per CSV")
+    q = kind("exponents", "the paper's transport panels per chain kind and F0, from an exponents run")
+    q.add_argument("prefix", nargs="?", default="exponents", help="the exponents --output prefix (default exponents)")
+    q.add_argument("--kick", action="append", help="displacement and/or velocity (default: every kick in the run)")
+    q.add_argument("--profiles", action="store_true", help="also draw PREFIX-profiles.png")
+    q = kind("profiles", "averaged energy profiles E_n(T), from an exponents run")
+    q.add_argument("prefix", nargs="?", default="exponents")
+    q.add_argument("--decades", type=float, default=15, help="decades shown below the largest energy")
+    q = kind("cost", "integrators' cost-accuracy curves, from dynamics_benchmark --benchmark_out JSON")
+    q.add_argument("bench")
+    return p
+
+
+def main(argv=None, prog=None):
+    args = parser(prog).parse_args(argv)
+    from granular import plot
+
+    def save(fig, out):
+        fig.savefig(out)
+        print(f"wrote {out}")
+
+    labels = getattr(args, "labels", None)
+    labels = labels.split(",") if labels else None
+    try:
+        if args.kind == "ipr-map":
+            save(plot.ipr_map(args.csv, band_edges=not args.no_band_edges, log_color=args.log_color),
+                 args.output or _default_output(args.csv))
+        elif args.kind == "spectrum":
+            save(plot.spectrum(args.csv), args.output or _default_output(args.csv))
+        elif args.kind == "correlations":
+            save(plot.correlations(args.csv, labels), args.output or _default_output(args.csv[0]))
+        elif args.kind == "partial-spectrum-ipr":
+            save(plot.partial_spectrum_ipr(args.csv, near=args.near, labels=labels),
+                 args.output or _default_output(args.csv[0]))
+        elif args.kind == "localization":
+            save(plot.localization(args.csv, args.spectrum, args.finite_N), args.output or _default_output(args.csv))
+        elif args.kind == "map":
+            save(plot.energy_map(args.map, args.spectrum, t_window=args.t_window, site_window=args.sites,
+                                 floor=args.floor), args.output or _default_output(args.map))
+        elif args.kind == "forces":
+            save(plot.forces(args.forces, args.profile), args.output or _default_output(args.forces))
+        elif args.kind == "spread":
+            save(plot.spreading(args.csv, labels), args.output or _default_output(args.csv[0]))
+        elif args.kind == "exponents":
+            import csv
+
+            kicks = args.kick
+            if not kicks:
+                with open(args.prefix + "-curves.csv", newline="") as f:
+                    kicks = list(dict.fromkeys(r["ic"] for r in csv.DictReader(f)))
+            for kick in kicks:
+                out = args.output if args.output and len(kicks) == 1 else f"{args.prefix}-spreading-{kick}.png"
+                save(plot.exponents(args.prefix, kick), out)
+            if args.profiles:
+                save(plot.profiles(args.prefix), f"{args.prefix}-profiles.png")
+        elif args.kind == "profiles":
+            save(plot.profiles(args.prefix, decades=args.decades), args.output or f"{args.prefix}-profiles.png")
+        elif args.kind == "cost":
+            save(plot.cost(args.bench), args.output or _default_output(args.bench))
+    except (OSError, ValueError, KeyError) as error:  # a missing or wrong file: one line, exit code 2
+        name = prog or "granular.plot"
+        print(f"{name}: error: {error}", file=sys.stderr)
+        return 2
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

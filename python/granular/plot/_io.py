@@ -1,0 +1,55 @@
+"""Reading what the figures draw: a result object of granular, or the files the tools write
+(CSV with the JSON beside it, HDF5 energy maps). Nothing here needs the compiled extension."""
+import csv
+import json
+import os
+
+import numpy as np
+
+
+def is_path(x):
+    return isinstance(x, (str, bytes, os.PathLike))
+
+
+def read_csv(path):
+    """Columns of a CSV file: numeric ones as float arrays, others as lists of str."""
+    with open(path, newline="") as f:
+        rows = list(csv.DictReader(f))
+    if not rows:
+        raise ValueError(f"{os.fspath(path)}: no rows")
+    out = {}
+    for key in rows[0]:
+        values = [r[key] for r in rows]
+        try:
+            out[key] = np.array([float(v) for v in values])
+        except ValueError:
+            out[key] = values
+    return out
+
+
+def read_json_beside(path):
+    """The tool's JSON beside a CSV (X.csv -> X.json), or {} when there is none."""
+    json_path = os.path.splitext(os.fspath(path))[0] + ".json"
+    if not os.path.exists(json_path):
+        return {}
+    with open(json_path) as f:
+        return json.load(f)
+
+
+def read_hdf5_map(path):
+    """An energy map file of the spreading tool: (t [s], site, energy [J] times x columns)."""
+    import h5py  # only for files; a granular result needs no HDF5 here
+
+    with h5py.File(path, "r") as f:
+        return np.array(f["t"]), np.array(f["site"]), np.array(f["energy"])
+
+
+def band_edges_khz(xi, F0, R1=None):
+    """The band edges [kHz] from the compiled core, or None without it (one home per formula)."""
+    try:
+        import granular
+
+        kwargs = {} if R1 is None else {"R1": R1}
+        return granular.band_edges(xi=xi, F0=F0, **kwargs).as_dict()
+    except Exception:  # no extension, or no edges for these parameters (F0 = 0)
+        return None

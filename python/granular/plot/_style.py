@@ -1,0 +1,163 @@
+"""One look for every figure: sizes that read on a slide, units on every axis, log axes with
+decades labelled, the band edges drawn the same way everywhere."""
+import contextlib
+import io
+import math
+
+import matplotlib
+from matplotlib.figure import Figure
+from matplotlib.ticker import LogLocator, NullFormatter
+
+STYLE = {
+    "font.size": 12,
+    "axes.titlesize": 12,
+    "axes.labelsize": 13,
+    "xtick.labelsize": 11,
+    "ytick.labelsize": 11,
+    "legend.fontsize": 10,
+    "legend.frameon": False,
+    "lines.linewidth": 1.6,
+    "axes.grid": False,
+    "xtick.direction": "in",
+    "ytick.direction": "in",
+    "xtick.top": True,
+    "ytick.right": True,
+    "savefig.bbox": "tight",
+    "savefig.dpi": 150,
+    "image.cmap": "viridis",
+}
+
+# How each band edge is written on a figure.
+EDGE_LABELS = {
+    "f1": r"$f_1$ (type 1)",
+    "f2": r"$f_2$ (type 2)",
+    "fb1": r"$f_{b1}$ (acoustic top)",
+    "fb2": r"$f_{b2}$ (optical bottom)",
+    "fb3": r"$f_{b3}$ (optical top)",
+}
+EDGE_SHORT = {"f1": r"$f_1$", "f2": r"$f_2$", "fb1": r"$f_{b1}$", "fb2": r"$f_{b2}$", "fb3": r"$f_{b3}$"}
+
+
+@contextlib.contextmanager
+def style():
+    with matplotlib.rc_context(STYLE):
+        yield
+
+
+class GranularFigure(Figure):
+    """A matplotlib Figure that needs no pyplot: a notebook shows it (as PNG) when a cell returns it,
+    once, and it is garbage-collected when dropped (pyplot would keep every figure open)."""
+
+    def _repr_png_(self):
+        buffer = io.BytesIO()
+        self.savefig(buffer, format="png", dpi=100, bbox_inches="tight")
+        return buffer.getvalue()
+
+
+def figure(width, height, **kwargs):
+    """A new figure of width x height inches with constrained layout."""
+    return GranularFigure(figsize=(width, height), layout="constrained", **kwargs)
+
+
+def log_ticks(axis):
+    """Decades labelled, minor ticks unlabelled (matplotlib's default crowds log axes)."""
+    axis.set_major_locator(LogLocator(base=10, numticks=12))
+    axis.set_minor_locator(LogLocator(base=10, subs=tuple(range(2, 10)), numticks=12))
+    axis.set_minor_formatter(NullFormatter())
+
+
+def mark_edges(ax, edges, orientation="horizontal", names=None, labels=True):
+    """Dashed lines at the band edges [kHz], labelled outside the axis; labels of close edges are
+    spread apart so they stay readable. Call after the data are drawn (the limits are final)."""
+    if not edges:
+        return
+    names = [n for n in (names or list(edges)) if edges.get(n) is not None and math.isfinite(edges[n])]
+    lo, hi = ax.get_ylim() if orientation == "horizontal" else ax.get_xlim()
+    names = [n for n in names if lo <= edges[n] <= hi]
+    names.sort(key=lambda n: edges[n])
+    gap = 0.055 * (hi - lo)
+    placed = []
+    for name in names:
+        value = edges[name]
+        where = max(value, placed[-1] + gap) if placed else value
+        placed.append(where)
+        if orientation == "horizontal":
+            ax.axhline(value, ls="--", lw=0.9, color="0.35", zorder=0.5)
+            if labels:
+                ax.annotate(EDGE_SHORT.get(name, name), (1.01, where), xycoords=("axes fraction", "data"),
+                            fontsize=10, ha="left", va="center", color="0.25", annotation_clip=False)
+        else:
+            ax.axvline(value, ls="--", lw=0.9, color="0.35", zorder=0.5)
+            if labels:
+                ax.annotate(EDGE_SHORT.get(name, name), (where, 1.01), xycoords=("data", "axes fraction"),
+                            fontsize=10, ha="center", va="bottom", color="0.25", annotation_clip=False)
+
+
+def chain_title(chain):
+    """'A, N = 100, ξ = 0.5, q = 0.5, F0 = 10 N, seed 1 (realization 0)' from a chain description."""
+    if not chain:
+        return ""
+    parts = []
+    kind = chain.get("disorder")
+    if kind:
+        parts.append({"h": "homogeneous", "A": "Anderson (A)"}.get(kind, kind))
+    if "N" in chain:
+        parts.append(f"N = {chain['N']}")
+    if "xi" in chain:
+        parts.append(rf"$\xi$ = {chain['xi']:g}")
+    if "q" in chain and kind not in (None, "h", "diatomic"):
+        parts.append(f"q = {chain['q']:g}")
+    if "F0_N" in chain:
+        parts.append(f"$F_0$ = {chain['F0_N']:g} N")
+    if "seed" in chain and kind not in (None, "h", "diatomic"):
+        parts.append(f"seed {chain['seed']}, realization {chain.get('realization', 0)}")
+    return ", ".join(parts)
+
+
+def log_derivative(t, y, step=0.1):
+    """L_d = Δ ln y / Δ ln t over steps of at least `step` in ln t (as the library's criterion)."""
+    import numpy as np
+
+    t, y = np.asarray(t, float), np.asarray(y, float)
+    out_t, out_s, j = [], [], 0
+    for i in range(len(t)):
+        if t[i] <= 0 or y[i] <= 0:
+            continue
+        j = max(j, i + 1)
+        while j < len(t) and math.log(t[j] / t[i]) < step:
+            j += 1
+        if j == len(t):
+            break
+        if y[j] > 0:
+            out_t.append(math.sqrt(t[i] * t[j]))
+            out_s.append(math.log(y[j] / y[i]) / math.log(t[j] / t[i]))
+    return np.array(out_t), np.array(out_s)
+
+
+def guide(ax, t0, t1, y0, slope, text, at_end=True):
+    """A dashed guide line y0 (t/t0)^slope from t0 to t1, labelled above its end (at_end) or to
+    the left of its start."""
+    if not (t1 > t0 > 0 and y0 > 0):
+        return
+    y1 = y0 * (t1 / t0) ** slope
+    ax.plot([t0, t1], [y0, y1], ls="--", lw=1.0, color="0.2")
+    if at_end:
+        ax.annotate(text, (t1, y1), fontsize=10, ha="right", va="bottom", color="0.2", xytext=(0, 3),
+                    textcoords="offset points")
+    else:
+        ax.annotate(text, (t0, y0), fontsize=10, ha="right", va="center", color="0.2", xytext=(-4, 0),
+                    textcoords="offset points")
+
+
+def guides(ax, curves, slopes, fit=None):
+    """Guide slopes over the late part of the run (the fit window when known), anchored on the
+    curves there: the first slope above them all, the second below them all."""
+    import numpy as np
+
+    t_end = max(t[-1] for t, _, _ in curves)
+    t_start = min(fit[0], t_end / 3) if fit else t_end / 10
+    values = [np.interp(math.log(t_start), np.log(t), y) for t, y, _ in curves]
+    top, bottom = max(values), min(values)
+    guide(ax, t_start, t_end, top * 2.5, slopes[0], f"slope {slopes[0]:g}".replace("-", "−"))
+    if len(slopes) > 1:
+        guide(ax, t_start, t_end, bottom / 2.5, slopes[1], f"slope {slopes[1]:g}".replace("-", "−"), at_end=False)

@@ -1,0 +1,104 @@
+#pragma once
+// What every binding source shares: NumPy arrays in and out, library errors as Python exceptions
+// naming the keyword, JSON metadata as dicts, and long runs that release the GIL, show progress
+// and stop on Ctrl-C. The binding layer is thin: it converts, checks shapes, calls the library.
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+#include <nlohmann/json.hpp>
+
+#include "granular/ensemble/progress_meter.hpp"
+#include "granular/model/chain.hpp"
+#include "granular/model/disorder.hpp"
+
+namespace granular::python {
+
+namespace py = pybind11;
+
+// --- the binding sources, one per library area -------------------------------------------
+void bind_errors(py::module_& m);
+void bind_model(py::module_& m);
+void bind_linear(py::module_& m);
+void bind_studies(py::module_& m);
+void bind_dynamics(py::module_& m);
+
+// --- a chain as Python holds it ------------------------------------------------------------
+/// A chain with what made it: the bead types (when it has them) and the description the tools
+/// write as the "chain" entry of their JSON.
+struct PyChain {
+  Chain chain;
+  Configuration types;  ///< empty when built from radii
+  Material material = steel;
+  nlohmann::json description;
+};
+
+// --- errors ----------------------------------------------------------------------------------
+/// The Python keyword a library parameter name stands for (`precompression` → `F0`, `time_step`
+/// → `dt`, a legacy flag `--force-law` → `force_law`); keywords are the tools' option names.
+std::string keyword_of(const std::string& parameter);
+/// Throws InvalidInput(keyword, " <value>: <rule>") — the message format of the library.
+[[noreturn]] void bad_value(const std::string& keyword, const std::string& problem);
+/// A size-like integer keyword: ValueError naming it unless lo ≤ value (≤ hi).
+std::size_t checked_size(long long value, const char* keyword, long long lo = 0, long long hi = 100000000000000000LL);
+/// A finite float keyword (NaN and infinities rejected, naming it).
+double finite(double value, const char* keyword);
+
+// --- arrays ----------------------------------------------------------------------------------
+/// A 1-D array of doubles from any array-like (lists, other dtypes, non-contiguous views are
+/// converted; a copy only when needed). ValueError naming `keyword` on the wrong shape, a
+/// non-numeric input or (when `require_finite`) NaN/infinity.
+std::vector<double> double_vector(const py::handle& values, const char* keyword, bool require_finite = true);
+/// Bead types 1 or 2 from any array-like of integers (floats must be whole numbers).
+Configuration types_vector(const py::handle& values, const char* keyword);
+
+/// A NumPy array that takes over `values` (no copy; freed with the array).
+template <class T>
+py::array_t<T> to_numpy(std::vector<T>&& values) {
+  auto* owner = new std::vector<T>(std::move(values));
+  py::capsule base(owner, [](void* p) { delete static_cast<std::vector<T>*>(p); });
+  return py::array_t<T>({owner->size()}, {sizeof(T)}, owner->data(), base);
+}
+template <class T>
+py::array_t<T> to_numpy(const std::vector<T>& values) {
+  return to_numpy(std::vector<T>(values));
+}
+/// rows × cols, row-major, taking over `values`.
+py::array_t<double> to_numpy_2d(std::vector<double>&& values, std::size_t rows, std::size_t cols);
+/// A read-only view of `data` (n entries) kept alive by `owner` (the Python object holding it).
+py::array_t<double> view(const std::vector<double>& data, const py::handle& owner);
+
+// --- metadata ----------------------------------------------------------------------------------
+py::object to_python(const nlohmann::json& value);
+/// {"function": "granular.<name>", "version": …}: the head of every result's metadata.
+nlohmann::json metadata_head(const std::string& function);
+nlohmann::json material_json(const Material& material);
+
+// --- parsing the tools' words --------------------------------------------------------------------
+Disorder disorder_of(const std::string& name);
+/// A list of numbers: a Python sequence / array, or a string in the tools' range syntax
+/// ("0.1:1", "0.1:1:0.05", "0.2,0.5,0.8"), with the tools' default step.
+std::vector<double> number_list(const py::handle& values, const char* keyword, double default_step);
+
+// --- long runs ------------------------------------------------------------------------------------
+/// What a long library call gets to cooperate: a cancellation flag for RunOptions::cancelled and
+/// a silent meter to advance (RunOptions::progress).
+struct LongRun {
+  std::function<bool()> cancelled;
+  ProgressMeter* meter = nullptr;
+};
+/// Runs `work` on a thread of its own with the GIL released while this (calling) thread polls
+/// every 50 ms for Ctrl-C (PyErr_CheckSignals) and draws a progress bar (granular._progress) when
+/// `progress`. On KeyboardInterrupt it sets the cancellation flag, waits for `work` to stop (the
+/// library finishes and checkpoints the realizations in flight) and raises KeyboardInterrupt.
+/// `work` must not touch Python objects. Library exceptions propagate.
+void run_long(const std::string& label, std::size_t total, bool progress,
+              const std::function<void(const LongRun&)>& work);
+
+}  // namespace granular::python

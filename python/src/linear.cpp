@@ -1,0 +1,379 @@
+// The linear chain: granular.DynamicalMatrix, granular.spectrum (every mode / the K nearest a
+// frequency / a window, by every method) and granular.SpectrumSolver, band edges. Frequencies in
+// kHz, as the tools give them.
+#include <cmath>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+
+#include "bindings.hpp"
+#include "granular/error.hpp"
+#include "granular/linear/band_edges.hpp"
+#include "granular/linear/dynamical_matrix.hpp"
+#include "granular/linear/spectrum.hpp"
+#include "granular/model/named_chains.hpp"
+#include "granular/number_format.hpp"
+#include "granular/parallel/mpi_context.hpp"
+
+namespace granular::python {
+namespace {
+
+/// A spectrum as Python sees it: the library's result (its vectors are viewed, not copied), the
+/// masses needed for displacements, and the metadata the spectrum tool writes.
+struct PySpectrum {
+  Spectrum s;
+  std::vector<long long> mode;  ///< mode numbers as signed integers (NumPy arithmetic stays integer)
+  std::vector<double> inverse_sqrt_mass;
+  nlohmann::json metadata;
+};
+
+/// ARPACK keeps state in Fortran SAVE variables and SLEPc talks MPI: one call at a time per process.
+std::mutex& serial_solvers() {
+  static std::mutex m;
+  return m;
+}
+
+struct SolverRequest {
+  ModeSelection selection;
+  SpectrumConfig config;
+  std::string method;
+};
+
+ModeSelection selection_of(const py::object& near, const py::object& count, const py::object& window) {
+  if (!window.is_none()) {
+    if (!near.is_none() || !count.is_none()) bad_value("window", ": cannot be combined with near/count");
+    const std::vector<double> w = double_vector(window, "window", false);
+    if (w.size() != 2) bad_value("window", ": expected (lo, hi) in kHz, got " + std::to_string(w.size()) + " values");
+    return granular::window(w[0], w[1]);
+  }
+  if (near.is_none() && count.is_none()) return all_modes();
+  if (count.is_none()) bad_value("near", ": needs count (how many modes)");
+  if (near.is_none()) bad_value("count", ": needs near (the target frequency in kHz)");
+  const double khz = near.cast<double>();
+  const long long k = count.cast<long long>();
+  if (k < 1) bad_value("count", " " + std::to_string(k) + ": must be >= 1");
+  return nearest(khz, static_cast<long>(std::min<long long>(k, 1LL << 40)));
+}
+
+SpectrumConfig config_of(const std::string& method, const std::string& driver, bool vectors, double tolerance,
+                         long long subspace, long long lanes) {
+  SpectrumConfig c;
+  c.method = parse_spectrum_method(method);
+  c.driver = parse_lapack_driver(driver);
+  c.vectors = vectors;
+  c.tolerance = tolerance;
+  if (subspace < 0 || subspace > 1000000000) bad_value("subspace", " " + std::to_string(subspace) + ": must be >= 0");
+  c.subspace = static_cast<int>(subspace);
+  c.lanes = checked_size(lanes, "lanes", 1, 64);
+  return c;
+}
+
+/// The matrix of a Chain or a DynamicalMatrix argument (the chain kept for the metadata).
+struct System {
+  DynamicalMatrix owned;
+  const DynamicalMatrix* matrix = nullptr;
+  const PyChain* chain = nullptr;
+};
+System system_of(const py::object& system) {
+  System s;
+  if (py::isinstance<PyChain>(system)) {
+    s.chain = &system.cast<const PyChain&>();
+  } else if (py::isinstance<DynamicalMatrix>(system)) {
+    s.matrix = &system.cast<const DynamicalMatrix&>();
+  } else {
+    throw py::type_error("expected a granular.Chain or a granular.DynamicalMatrix, got " +
+                         py::str(py::type::of(system)).cast<std::string>());
+  }
+  return s;
+}
+
+nlohmann::json band_edges_json(const BandEdges& e) {
+  return {{"f1", e.f1 * 1e-3}, {"f2", e.f2 * 1e-3}, {"fb1", e.fb1 * 1e-3}, {"fb2", e.fb2 * 1e-3}, {"fb3", e.fb3 * 1e-3}};
+}
+
+/// The spectrum tool's JSON for this result.
+nlohmann::json spectrum_metadata(const Spectrum& r, const System& s, const SolverRequest& q) {
+  nlohmann::json meta = metadata_head("spectrum");
+  if (s.chain) meta["chain"] = s.chain->description;
+  meta["method"] = q.method;
+  meta["solver"] = {{"method", r.info.method}, {"fallbacks", r.info.fallbacks}};
+  const ModeSelection& sel = q.selection;
+  if (sel.kind != ModeSelection::Kind::all) {
+    meta["selection"] = sel.kind == ModeSelection::Kind::nearest
+                            ? nlohmann::json{{"near_khz", sel.near_khz}, {"count", sel.count}}
+                            : nlohmann::json{{"window_khz", {sel.lo_khz, sel.hi_khz}}};
+    meta["solver"].update({{"restarts", r.info.restarts},
+                           {"candidates", r.info.candidates},
+                           {"max_relative_residual", r.info.max_residual},
+                           {"tolerance", q.config.tolerance},
+                           {"mpi_ranks", MpiContext::instance().size()}});
+  }
+  if (s.chain && s.chain->description.contains("xi") && s.chain->chain.precompression > 0) {
+    const auto& d = s.chain->description;
+    meta["band_edges_khz"] = band_edges_json(
+        band_edges(s.chain->material, d["R1_m"].get<double>(), d["xi"].get<double>(), s.chain->chain.precompression));
+  }
+  return meta;
+}
+
+py::object wrap(Spectrum&& r, const DynamicalMatrix& d, nlohmann::json metadata) {
+  PySpectrum out;
+  out.mode.assign(r.mode.begin(), r.mode.end());
+  out.s = std::move(r);
+  out.inverse_sqrt_mass = d.inverse_sqrt_mass;
+  out.metadata = std::move(metadata);
+  return py::cast(std::move(out));
+}
+
+/// One solve with the GIL released (holding `busy` when given); ARPACK and SLEPc one at a time.
+Spectrum solve(SpectrumSolver& solver, System& s, const ModeSelection& selection, std::mutex* busy = nullptr) {
+  py::gil_scoped_release release;
+  std::unique_lock<std::mutex> own;
+  if (busy) own = std::unique_lock(*busy);
+  if (!s.matrix) {
+    s.owned = dynamical_matrix(s.chain->chain);
+    s.matrix = &s.owned;
+  }
+  validate(selection, s.matrix->size());
+  const SpectrumMethod method = solver.config().method;
+  if (method == SpectrumMethod::arpack || method == SpectrumMethod::slepc) {
+    std::lock_guard lock(serial_solvers());
+    return solver.solve(*s.matrix, selection);
+  }
+  return solver.solve(*s.matrix, selection);
+}
+
+struct PyBandEdges {
+  double f1, f2, fb1, fb2, fb3;  ///< [kHz]
+};
+
+struct PySolver {
+  SpectrumSolver solver;
+  std::string method;
+  std::mutex busy;  ///< a solver's workspace serves one call at a time
+};
+
+const char* selection_doc =
+    "    near, count: the `count` modes nearest `near` [kHz] in frequency (both or neither)\n"
+    "    window: (lo, hi) [kHz]: every mode with lo <= f <= hi (may be empty)\n";
+const char* config_doc =
+    "    method: 'lapack' (default) | 'fast' (every mode: eigenvalues + one twisted factorization per mode, ~5x "
+    "faster, no eigenvectors) | 'bisect' | 'arpack' | 'slepc' (nearest/window)\n"
+    "    driver: LAPACK driver for every mode: 'stevd' (default) | 'stevr' | 'stemr' | 'steqr'\n"
+    "    vectors: also return the unit eigenvectors w of D (N x K array, column j = mode j)\n"
+    "    tolerance: arpack/slepc Ritz tolerance (0: the tightest default)\n"
+    "    subspace: arpack/slepc Krylov basis size (0: max(2K + 1, 20))\n"
+    "    lanes: bisect: eigenvectors computed together, 1..64\n";
+
+}  // namespace
+
+void bind_linear(py::module_& m) {
+  py::class_<DynamicalMatrix>(m, "DynamicalMatrix",
+                              "The symmetric tridiagonal dynamical matrix D = M^(-1/2) K M^(-1/2) [1/s^2] of a chain "
+                              "(SPEC §3): eigenvalues omega^2, eigenvectors w; the displacement mode is "
+                              "v = w * inverse_sqrt_mass. Arrays are read-only views.")
+      .def(py::init([](const py::object& diagonal, const py::object& off_diagonal, const py::object& inverse_sqrt_mass) {
+             DynamicalMatrix d;
+             d.diagonal = double_vector(diagonal, "diagonal");
+             d.off_diagonal = double_vector(off_diagonal, "off_diagonal");
+             if (d.diagonal.empty()) bad_value("diagonal", ": empty (a matrix needs at least one row)");
+             if (d.off_diagonal.size() + 1 != d.diagonal.size())
+               bad_value("off_diagonal", ": has " + std::to_string(d.off_diagonal.size()) +
+                                             " entries; need N - 1 = " + std::to_string(d.diagonal.size() - 1));
+             if (inverse_sqrt_mass.is_none()) {
+               d.inverse_sqrt_mass.assign(d.diagonal.size(), 1.0);
+             } else {
+               d.inverse_sqrt_mass = double_vector(inverse_sqrt_mass, "inverse_sqrt_mass");
+               if (d.inverse_sqrt_mass.size() != d.diagonal.size())
+                 bad_value("inverse_sqrt_mass", ": has " + std::to_string(d.inverse_sqrt_mass.size()) +
+                                                    " entries; need N = " + std::to_string(d.diagonal.size()));
+               for (double x : d.inverse_sqrt_mass)
+                 if (!(x > 0)) bad_value("inverse_sqrt_mass", ": entries must be > 0 [kg^(-1/2)]");
+             }
+             return d;
+           }),
+           py::arg("diagonal"), py::arg("off_diagonal"), py::arg("inverse_sqrt_mass") = py::none(),
+           "A matrix of your own: diagonal (N) and off_diagonal (N-1) [1/s^2], and m^(-1/2) (N) [kg^(-1/2)] for the "
+           "displacement IPRs (default 1: the IPR of w itself). Any 1-D array-likes; NaN/inf are refused.")
+      .def_property_readonly("N", &DynamicalMatrix::size, "rows")
+      .def("__len__", &DynamicalMatrix::size)
+      .def_property_readonly(
+          "diagonal", [](py::object self) { return view(self.cast<const DynamicalMatrix&>().diagonal, self); },
+          "D(i, i) = (B_i + B_(i+1)) / m_i [1/s^2], N entries")
+      .def_property_readonly(
+          "off_diagonal", [](py::object self) { return view(self.cast<const DynamicalMatrix&>().off_diagonal, self); },
+          "D(i, i+1) = -B_(i+1) / sqrt(m_i m_(i+1)) [1/s^2], N-1 entries")
+      .def_property_readonly(
+          "inverse_sqrt_mass",
+          [](py::object self) { return view(self.cast<const DynamicalMatrix&>().inverse_sqrt_mass, self); },
+          "m_n^(-1/2) [kg^(-1/2)], N entries")
+      .def("__repr__",
+           [](const DynamicalMatrix& d) { return "<granular.DynamicalMatrix N=" + std::to_string(d.size()) + ">"; });
+
+  m.def(
+      "dynamical_matrix", [](const PyChain& c) { return dynamical_matrix(c.chain); }, py::arg("chain"),
+      "The dynamical matrix of a chain (ValueError naming F0 at F0 = 0: the sonic vacuum has no linear limit).");
+  m.def(
+      "frequency_khz", [](py::array_t<double> omega2) { return py::vectorize(frequency_khz)(omega2); },
+      py::arg("omega2"), "Frequency f = omega/2pi [kHz] of eigenvalues omega^2 [1/s^2] (a number or an array).");
+  m.def(
+      "omega2_of_khz", [](py::array_t<double> khz) { return py::vectorize(omega_squared_of_khz)(khz); }, py::arg("khz"),
+      "omega^2 [1/s^2] of frequencies in kHz (a number or an array).");
+
+  py::class_<PySpectrum>(m, "Spectrum",
+                         "Modes of a chain by increasing frequency, as granular.spectrum returns them. Arrays are "
+                         "read-only NumPy views of the result (no copies).")
+      .def_property_readonly(
+          "mode",
+          [](py::object self) {
+            const auto& s = self.cast<const PySpectrum&>();
+            return py::array_t<long long>({s.mode.size()}, {sizeof(long long)}, s.mode.data(), self);
+          },
+          "mode numbers 1..N in the full spectrum (int64)")
+      .def_property_readonly(
+          "omega2", [](py::object self) { return view(self.cast<const PySpectrum&>().s.omega2, self); },
+          "eigenvalues omega^2 of D [1/s^2]")
+      .def_property_readonly(
+          "freq_khz", [](py::object self) { return view(self.cast<const PySpectrum&>().s.freq_khz, self); },
+          "frequencies f = omega/2pi [kHz]")
+      .def_property_readonly(
+          "ipr", [](py::object self) { return view(self.cast<const PySpectrum&>().s.ipr, self); },
+          "displacement IPR sum v^4 / (sum v^2)^2 of each mode, in (0, 1] (1/N: extended, ~1: one bead)")
+      .def_property_readonly(
+          "residual", [](py::object self) { return view(self.cast<const PySpectrum&>().s.residual, self); },
+          "per mode |D w - omega^2 w| / max|D_ij| (partial methods; empty for every mode)")
+      .def_property_readonly(
+          "vectors",
+          [](py::object self) -> py::object {
+            const auto& s = self.cast<const PySpectrum&>().s;
+            if (s.vectors.empty()) return py::none();
+            const std::size_t n = s.beads, k = s.size();
+            py::array_t<double> a({n, k}, {sizeof(double), n * sizeof(double)}, s.vectors.data(), self);
+            py::detail::array_proxy(a.ptr())->flags &= ~py::detail::npy_api::NPY_ARRAY_WRITEABLE_;
+            return a;
+          },
+          "N x K unit eigenvectors w of D (column j: mode j; Fortran order, a view), or None without vectors=True")
+      .def(
+          "displacements",
+          [](const PySpectrum& p) -> py::object {
+            const auto& s = p.s;
+            if (s.vectors.empty()) return py::none();
+            const std::size_t n = s.beads, k = s.size();
+            std::vector<double> v(n * k);
+            for (std::size_t j = 0; j < k; ++j)
+              for (std::size_t i = 0; i < n; ++i) v[i * k + j] = s.vectors[j * n + i] * p.inverse_sqrt_mass[i];
+            return to_numpy_2d(std::move(v), n, k);
+          },
+          "N x K displacement modes v = w * m^(-1/2) [kg^(-1/2)] (column j: mode j), or None without vectors")
+      .def_property_readonly(
+          "N", [](const PySpectrum& p) { return p.s.beads; }, "beads of the chain")
+      .def("__len__", [](const PySpectrum& p) { return p.s.size(); })
+      .def_property_readonly(
+          "info",
+          [](const PySpectrum& p) {
+            const SpectrumInfo& i = p.s.info;
+            return to_python({{"method", i.method},
+                              {"fallbacks", i.fallbacks},
+                              {"restarts", i.restarts},
+                              {"candidates", i.candidates},
+                              {"max_residual", i.max_residual},
+                              {"clusters", i.clusters}});
+          },
+          "what the solver did: method that ran, fallbacks, restarts, candidates, max_residual, clusters")
+      .def_property_readonly(
+          "metadata", [](const PySpectrum& p) { return to_python(p.metadata); },
+          "the spectrum tool's JSON for this result: chain, method, solver, selection, "
+          "band_edges_khz, version")
+      .def("__repr__", [](const PySpectrum& p) {
+        return "<granular.Spectrum " + std::to_string(p.s.size()) + " of " + std::to_string(p.s.beads) + " modes, " +
+               p.s.info.method + ">";
+      });
+
+  m.def(
+      "spectrum",
+      [](const py::object& system, const py::object& near, const py::object& count, const py::object& window,
+         const std::string& method, const std::string& driver, bool vectors, double tolerance, long long subspace,
+         long long lanes) {
+        const SolverRequest q{selection_of(near, count, window),
+                              config_of(method, driver, vectors, tolerance, subspace, lanes), method};
+        validate(q.config, q.selection);
+        System s = system_of(system);
+        SpectrumSolver solver(q.config);
+        Spectrum r = solve(solver, s, q.selection);
+        nlohmann::json meta = spectrum_metadata(r, s, q);
+        return wrap(std::move(r), *s.matrix, std::move(meta));
+      },
+      py::arg("system"), py::kw_only(), py::arg("near") = py::none(), py::arg("count") = py::none(),
+      py::arg("window") = py::none(), py::arg("method") = "lapack", py::arg("driver") = "stevd",
+      py::arg("vectors") = false, py::arg("tolerance") = 0.0, py::arg("subspace") = 0, py::arg("lanes") = 8,
+      (std::string("The linear spectrum of a granular.Chain or granular.DynamicalMatrix (SPEC §3), as the spectrum "
+                   "tool computes it: every mode by default, or\n") +
+       selection_doc + config_doc +
+       "Returns a granular.Spectrum (mode, freq_khz [kHz], ipr, omega2 [1/s^2], residual, vectors; info, metadata). "
+       "Releases the GIL while it solves. ValueError names the keyword of a bad value; granular.NumericalError when "
+       "every solver failed.")
+          .c_str());
+
+  py::class_<PySolver>(m, "SpectrumSolver",
+                       "A spectrum solver that keeps its workspaces between calls: for loops over many chains of one "
+                       "size (what the IPR map does per thread). solve() gives exactly what granular.spectrum gives.")
+      .def(py::init([](const std::string& method, const std::string& driver, bool vectors, double tolerance,
+                       long long subspace, long long lanes) {
+             auto p = std::make_unique<PySolver>();
+             p->solver = SpectrumSolver(config_of(method, driver, vectors, tolerance, subspace, lanes));
+             p->method = method;
+             return p;
+           }),
+           py::kw_only(), py::arg("method") = "lapack", py::arg("driver") = "stevd", py::arg("vectors") = false,
+           py::arg("tolerance") = 0.0, py::arg("subspace") = 0, py::arg("lanes") = 8,
+           (std::string("Keywords as granular.spectrum's:\n") + config_doc).c_str())
+      .def(
+          "solve",
+          [](PySolver& p, const py::object& system, const py::object& near, const py::object& count,
+             const py::object& window) {
+            const SolverRequest q{selection_of(near, count, window), p.solver.config(), p.method};
+            validate(q.config, q.selection);
+            System s = system_of(system);
+            Spectrum r = solve(p.solver, s, q.selection, &p.busy);
+            nlohmann::json meta = spectrum_metadata(r, s, q);
+            return wrap(std::move(r), *s.matrix, std::move(meta));
+          },
+          py::arg("system"), py::kw_only(), py::arg("near") = py::none(), py::arg("count") = py::none(),
+          py::arg("window") = py::none(),
+          (std::string("The selected modes of a granular.Chain or granular.DynamicalMatrix:\n") + selection_doc +
+           "Returns a granular.Spectrum.")
+              .c_str());
+
+  py::class_<PyBandEdges>(m, "BandEdges",
+                          "Analytic cut-off frequencies of the ordered chains [kHz] (SPEC §3): f1, f2 the tops of the "
+                          "monatomic chains of type-1 and type-2 beads; fb1 the diatomic acoustic band top, fb2 and "
+                          "fb3 the optical band's bottom and top.")
+      .def_readonly("f1", &PyBandEdges::f1, "top of the monatomic chain of type-1 beads [kHz]")
+      .def_readonly("f2", &PyBandEdges::f2, "top of the monatomic chain of type-2 beads [kHz]")
+      .def_readonly("fb1", &PyBandEdges::fb1, "diatomic acoustic band top [kHz]")
+      .def_readonly("fb2", &PyBandEdges::fb2, "diatomic optical band bottom [kHz]")
+      .def_readonly("fb3", &PyBandEdges::fb3, "diatomic optical band top [kHz]")
+      .def(
+          "as_dict",
+          [](const PyBandEdges& e) {
+            py::dict d;
+            d["f1"] = e.f1, d["f2"] = e.f2, d["fb1"] = e.fb1, d["fb2"] = e.fb2, d["fb3"] = e.fb3;
+            return d;
+          },
+          "{'f1': ..., 'f2': ..., 'fb1': ..., 'fb2': ..., 'fb3': ...} in kHz (the tools' band_edges_khz)")
+      .def("__repr__", [](const PyBandEdges& e) {
+        return "BandEdges(f1=" + format_number(e.f1) + ", f2=" + format_number(e.f2) + ", fb1=" + format_number(e.fb1) +
+               ", fb2=" + format_number(e.fb2) + ", fb3=" + format_number(e.fb3) + ") [kHz]";
+      });
+  m.def(
+      "band_edges",
+      [](double xi, double F0, double R1, const Material& material) {
+        const BandEdges e = band_edges(material, R1, xi, F0);
+        return PyBandEdges{e.f1 * 1e-3, e.f2 * 1e-3, e.fb1 * 1e-3, e.fb2 * 1e-3, e.fb3 * 1e-3};
+      },
+      py::arg("xi") = 0.5, py::arg("F0") = 10.0, py::arg("R1") = paper_r1, py::arg("material") = steel,
+      "Band edges [kHz] of beads of radius R1 [m] and xi*R1 of one material under precompression F0 > 0 [N].");
+}
+
+}  // namespace granular::python

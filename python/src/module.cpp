@@ -1,0 +1,17 @@
+// The extension module granular._core. The package granular (python/granular/__init__.py)
+// re-exports it beside the pure-Python layer (results, progress bar, figures).
+#include "bindings.hpp"
+#include "granular/parallel/mpi_context.hpp"
+
+PYBIND11_MODULE(_core, m) {
+  using namespace granular::python;
+  m.doc() = "The C++ core of granular: chains, spectra, studies and dynamics (see the package granular).";
+  m.attr("__version__") = GRANULAR_VERSION;
+  // Decide on MPI here, on the importing (main) thread: it starts only under mpirun.
+  granular::MpiContext::instance();
+  bind_errors(m);
+  bind_model(m);
+  bind_linear(m);
+  bind_studies(m);
+  bind_dynamics(m);
+}

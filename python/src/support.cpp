@@ -1,0 +1,258 @@
+// The shared helpers of bindings.hpp: conversions at the boundary and the long-run driver.
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <condition_variable>
+#include <exception>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <regex>
+#include <thread>
+
+#include "bindings.hpp"
+#include "granular/error.hpp"
+#include "granular/io/range_syntax.hpp"
+#include "granular/number_format.hpp"
+#include "granular/parallel/mpi_context.hpp"
+
+namespace granular::python {
+
+std::string keyword_of(const std::string& parameter) {
+  // Library names that are not the keyword itself (the keywords are the tools' option names).
+  static const std::map<std::string, std::string> synonyms{
+      {"precompression", "F0"}, {"n", "N"},          {"r1", "R1"},      {"near_khz", "near"}, {"lo_khz", "window"},
+      {"hi_khz", "window"},     {"time_step", "dt"}, {"duration", "T"}, {"selection", "near"}};
+  std::string name = parameter;
+  if (name.starts_with("--")) {  // a legacy message naming a flag: --force-law → force_law
+    name = name.substr(2);
+    for (char& c : name)
+      if (c == '-') c = '_';
+    return name;
+  }
+  if (auto it = synonyms.find(name); it != synonyms.end()) return it->second;
+  return name;
+}
+
+namespace {
+/// Messages written in flag vocabulary ("--T 0.5: …", "… beyond --T 0.01") told in keywords.
+std::string keywords_in(const std::string& message) {
+  static const std::regex flag(R"(--([A-Za-z][A-Za-z0-9-]*))");
+  std::string out;
+  auto begin = std::sregex_iterator(message.begin(), message.end(), flag);
+  std::size_t last = 0;
+  for (auto it = begin; it != std::sregex_iterator(); ++it) {
+    out += message.substr(last, static_cast<std::size_t>(it->position()) - last);
+    out += keyword_of(it->str());
+    last = static_cast<std::size_t>(it->position() + it->length());
+  }
+  return out + message.substr(last);
+}
+}  // namespace
+
+void bad_value(const std::string& keyword, const std::string& problem) { throw InvalidInput(keyword, problem); }
+
+std::size_t checked_size(long long value, const char* keyword, long long lo, long long hi) {
+  if (value < lo) bad_value(keyword, " " + std::to_string(value) + ": must be >= " + std::to_string(lo));
+  if (value > hi) bad_value(keyword, " " + std::to_string(value) + ": must be <= " + std::to_string(hi));
+  return static_cast<std::size_t>(value);
+}
+
+double finite(double value, const char* keyword) {
+  if (!std::isfinite(value)) bad_value(keyword, " " + format_number(value) + ": must be finite");
+  return value;
+}
+
+void bind_errors(py::module_& m) {
+  static py::exception<NumericalError> numerical(m, "NumericalError", PyExc_RuntimeError);
+  numerical.doc() =
+      "A numerical method failed: a solver did not converge, a guard tripped (energy error, NaN), or "
+      "every LAPACK driver failed. The message says which and how to replay it.";
+  py::register_exception_translator([](std::exception_ptr p) {
+    try {
+      if (p) std::rethrow_exception(p);
+    } catch (const InvalidInput& e) {
+      const std::string message =
+          e.parameter().empty() ? keywords_in(e.what()) : keyword_of(e.parameter()) + keywords_in(e.problem());
+      PyErr_SetString(PyExc_ValueError, message.c_str());
+    } catch (const IoError& e) {
+      PyErr_SetString(PyExc_OSError, e.what());
+    } catch (const NumericalError& e) {
+      PyErr_SetString(numerical.ptr(), e.what());
+    } catch (const Cancelled&) {
+      PyErr_SetNone(PyExc_KeyboardInterrupt);
+    }
+  });
+}
+
+// --- arrays ------------------------------------------------------------------------------------
+
+namespace {
+py::array_t<double, py::array::c_style | py::array::forcecast> as_doubles(const py::handle& values, const char* keyword) {
+  if (py::isinstance<py::str>(values) || py::isinstance<py::bytes>(values))
+    bad_value(keyword, ": expected numbers (an array or a sequence), not a string");
+  auto array = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(values);
+  if (!array) {
+    PyErr_Clear();
+    bad_value(keyword, ": expected an array of numbers");
+  }
+  return array;
+}
+}  // namespace
+
+std::vector<double> double_vector(const py::handle& values, const char* keyword, bool require_finite) {
+  auto array = as_doubles(values, keyword);
+  if (array.ndim() != 1) {
+    std::string shape;
+    for (py::ssize_t i = 0; i < array.ndim(); ++i) shape += (i ? ", " : "") + std::to_string(array.shape(i));
+    bad_value(keyword, ": expected a 1-D array, got shape (" + shape + (array.ndim() == 1 ? ",)" : ")"));
+  }
+  std::vector<double> out(array.data(), array.data() + array.size());
+  if (require_finite)
+    for (std::size_t i = 0; i < out.size(); ++i)
+      if (!std::isfinite(out[i]))
+        bad_value(keyword, ": entry " + std::to_string(i) + " is " + format_number(out[i]) + " (must be finite)");
+  return out;
+}
+
+Configuration types_vector(const py::handle& values, const char* keyword) {
+  const std::vector<double> numbers = double_vector(values, keyword, false);
+  Configuration types(numbers.size());
+  for (std::size_t i = 0; i < numbers.size(); ++i) {
+    if (numbers[i] != 1 && numbers[i] != 2)
+      bad_value(keyword,
+                ": bead " + std::to_string(i + 1) + " has type " + format_number(numbers[i]) + " (must be 1 or 2)");
+    types[i] = static_cast<std::uint8_t>(numbers[i]);
+  }
+  return types;
+}
+
+py::array_t<double> to_numpy_2d(std::vector<double>&& values, std::size_t rows, std::size_t cols) {
+  auto* owner = new std::vector<double>(std::move(values));
+  py::capsule base(owner, [](void* p) { delete static_cast<std::vector<double>*>(p); });
+  return py::array_t<double>({rows, cols}, {cols * sizeof(double), sizeof(double)}, owner->data(), base);
+}
+
+py::array_t<double> view(const std::vector<double>& data, const py::handle& owner) {
+  py::array_t<double> a({data.size()}, {sizeof(double)}, data.data(), owner);
+  py::detail::array_proxy(a.ptr())->flags &= ~py::detail::npy_api::NPY_ARRAY_WRITEABLE_;
+  return a;
+}
+
+// --- metadata ------------------------------------------------------------------------------------
+
+py::object to_python(const nlohmann::json& v) {
+  switch (v.type()) {
+    case nlohmann::json::value_t::null: return py::none();
+    case nlohmann::json::value_t::boolean: return py::bool_(v.get<bool>());
+    case nlohmann::json::value_t::number_integer: return py::int_(v.get<long long>());
+    case nlohmann::json::value_t::number_unsigned: return py::int_(v.get<unsigned long long>());
+    case nlohmann::json::value_t::number_float: return py::float_(v.get<double>());
+    case nlohmann::json::value_t::string: return py::str(v.get<std::string>());
+    case nlohmann::json::value_t::array: {
+      py::list list;
+      for (const auto& item : v) list.append(to_python(item));
+      return list;
+    }
+    case nlohmann::json::value_t::object: {
+      py::dict dict;
+      for (const auto& [key, item] : v.items()) dict[py::str(key)] = to_python(item);
+      return dict;
+    }
+    default: return py::none();
+  }
+}
+
+nlohmann::json metadata_head(const std::string& function) {
+  return {{"function", "granular." + function}, {"version", GRANULAR_VERSION}};
+}
+
+nlohmann::json material_json(const Material& m) {
+  return {{"E_Pa", m.young}, {"nu", m.poisson}, {"rho_kg_m3", m.density}};
+}
+
+Disorder disorder_of(const std::string& name) {
+  try {
+    return parse_disorder(name);
+  } catch (const InvalidInput&) {
+    bad_value("disorder", " '" + name + "': expected h, A, RDM1 or RDM2");
+  }
+}
+
+std::vector<double> number_list(const py::handle& values, const char* keyword, double default_step) {
+  if (py::isinstance<py::str>(values)) return parse_number_list(values.cast<std::string>(), keyword, default_step);
+  if (py::isinstance<py::float_>(values) || py::isinstance<py::int_>(values))
+    return {finite(values.cast<double>(), keyword)};
+  return double_vector(values, keyword);
+}
+
+// --- long runs -----------------------------------------------------------------------------------
+
+void run_long(const std::string& label, std::size_t total, bool progress,
+              const std::function<void(const LongRun&)>& work) {
+  ProgressMeter meter(total, label, 0);  // silent: the bar is drawn from Python
+  auto cancel = std::make_shared<std::atomic<bool>>(false);
+  LongRun control{[cancel] { return cancel->load(std::memory_order_relaxed); }, &meter};
+
+  // Under mpirun the ranks talk MPI from the thread that started it: stay on this thread.
+  if (MpiContext::instance().size() > 1) {
+    py::gil_scoped_release release;
+    work(control);
+    return;
+  }
+  py::object bar = progress ? py::module_::import("granular._progress").attr("ProgressBar")(total, label) : py::none();
+
+  std::mutex mutex;
+  std::condition_variable finished_cv;
+  bool finished = false;
+  std::exception_ptr failure;
+  std::thread worker([&] {
+    try {
+      work(control);
+    } catch (...) {
+      failure = std::current_exception();
+    }
+    std::lock_guard lock(mutex);
+    finished = true;
+    finished_cv.notify_all();
+  });
+  // Whatever happens on this thread (KeyboardInterrupt, an error drawing the bar), the worker is
+  // told to stop and joined before anything it uses goes out of scope.
+  auto stop_and_join = [&] {
+    cancel->store(true);
+    py::gil_scoped_release release;
+    if (worker.joinable()) worker.join();
+  };
+  try {
+    while (true) {
+      {
+        py::gil_scoped_release release;
+        std::unique_lock lock(mutex);
+        finished_cv.wait_for(lock, std::chrono::milliseconds(50), [&] { return finished; });
+        if (finished) break;
+      }
+      if (!bar.is_none()) bar.attr("update")(meter.done());
+      if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+    }
+  } catch (...) {
+    stop_and_join();
+    if (!bar.is_none()) {
+      try {
+        bar.attr("close")(false);
+      } catch (const py::error_already_set&) {  // the first exception is the one to report
+      }
+    }
+    throw;
+  }
+  {
+    py::gil_scoped_release release;
+    worker.join();
+  }
+  if (!bar.is_none()) {
+    bar.attr("update")(meter.done());
+    bar.attr("close")(failure == nullptr);
+  }
+  if (failure) std::rethrow_exception(failure);
+}
+
+}  // namespace granular::python

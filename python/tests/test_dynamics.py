@@ -1,0 +1,131 @@
+"""granular.spreading, granular.transport and granular.exponent_table: identical numbers to the
+spreading and exponents tools on the same chains and seeds, and the conservation law the
+integrator must keep."""
+import json
+
+import numpy as np
+import pytest
+
+import granular as gr
+from conftest import assert_identical, read_csv
+
+SHORT = dict(T=1e-3, fit=(2e-4, 1e-3))
+SHORT_FLAGS = ["--T", "1e-3", "--fit", "2e-4:1e-3"]
+PROCESS_KEYS = {"command", "started_utc", "wall_time_s", "output", "tool", "function"}
+
+
+def without_process_keys(meta):
+    """The metadata minus what only a process or a clock has (the integration's wall time)."""
+    meta = {k: v for k, v in meta.items() if k not in PROCESS_KEYS}
+    if "run" in meta:
+        meta["run"] = {k: v for k, v in meta["run"].items() if k != "integration_s"}
+    return meta
+
+
+def test_one_run_with_every_observer_equals_the_spreading_tool(tools):
+    args = ["--disorder", "A", "--N", "201", "--F0", "10", "--seed", "3", "--realization", "1", *SHORT_FLAGS,
+            "--final-state", tools.path("f.csv"), "--energy-map", tools.path("m.h5"), "--map-samples", "50",
+            "--spectrum", tools.path("s.csv"), "--spectrum-samples", "100", "--forces-at", "90,101",
+            "--force-samples", "50"]
+    csv, meta = tools.run("spreading", *args, output="one")
+    run = gr.spreading(gr.anderson(N=201, F0=10, seed=3, realization=1), **SHORT, energy_map=True, map_samples=50,
+                       spectral_density=True, spectrum_samples=100, forces_at=[90, 101], force_samples=50)
+    for key in ("t", "m2", "ipr", "energy_error", "m2_centroid"):
+        assert_identical(run[key], csv[key])
+    final = read_csv(tools.path("f.csv"))
+    for key in ("u", "v", "energy"):
+        assert_identical(run.final_state[key], final[key])
+    g = read_csv(tools.path("s.csv"))
+    assert_identical(run.spectral_density["freq_khz"], g["freq_khz"])
+    assert_identical(run.spectral_density["g"], g["g"])
+    forces = read_csv(tools.path("one-forces.csv"))
+    assert_identical(run.forces["force"].T.ravel(), forces["force"])  # the CSV is time-major
+    assert_identical(np.repeat(run.forces["t"], 2), forces["t"])
+    import h5py  # after granular: each loads its own HDF5 library, privately
+
+    with h5py.File(tools.path("m.h5"), "r") as f:
+        assert_identical(run.energy_map["energy"], np.array(f["energy"]))
+        assert_identical(run.energy_map["t"], np.array(f["t"]))
+        assert_identical(run.energy_map["site"], np.array(f["site"]))
+    mine, theirs = without_process_keys(run.metadata), without_process_keys(meta)
+    assert theirs["spectrum"].pop("file") == str(tools.path("s.csv"))
+    assert mine == theirs
+    assert run.gamma == meta["gamma"] and run.eta == meta["eta"] and run.exponents == meta["exponents"]
+
+
+def test_velocity_kick_at_a_chosen_site_equals_the_spreading_tool(tools):
+    csv, meta = tools.run("spreading", "--disorder", "RDM2", "--N", "151", "--F0", "0.5", "--ic", "velocity",
+                          "--beta", "match", "--site", "60", "--integrator", "aba864", "--samples", "80", *SHORT_FLAGS,
+                          output="vel")
+    run = gr.spreading(gr.rdm2(N=151, F0=0.5), ic="velocity", beta="match", site=60, integrator="aba864", samples=80,
+                       **SHORT)
+    assert_identical(run.m2, csv["m2"])
+    assert_identical(run.m2_centroid, csv["m2_centroid"])
+    assert_identical(run.ipr, csv["ipr"])
+    assert run.metadata["parameters"]["beta_m_s"] == meta["parameters"]["beta_m_s"] > 0
+    assert without_process_keys(run.metadata) == without_process_keys(meta)
+
+
+def test_energy_is_conserved_and_a_homogeneous_chain_spreads_ballistically():
+    run = gr.spreading(gr.homogeneous(N=1001, F0=10), T=2e-3, fit=(5e-4, 2e-3), integrator="srkn14a")
+    assert run.max_energy_error < 1e-8
+    total = run.final_state["energy"].sum()
+    assert total == pytest.approx(run.initial_energy, rel=1e-6)  # walls not reached: sum E_n is H
+    assert not run.reached_walls
+    assert run.gamma == pytest.approx(2.0, abs=0.05)  # SPEC §4: ballistic, m2 ~ t^2
+    # m2 about the site = m2 about the centroid + (centroid - site)^2 >= m2 about the centroid
+    assert np.all(run.m2 >= run.m2_centroid * (1 - 1e-12))
+
+
+def test_ensemble_equals_the_spreading_tool(tools):
+    csv, meta = tools.run("spreading", "--disorder", "A", "--N", "201", "--realizations", "4", "--threads", "2",
+                          "--profile", *SHORT_FLAGS, output="ens")
+    t = gr.transport(disorder="A", N=201, realizations=4, threads=2, profile=True, **SHORT)
+    for key in ("t", "m2", "ipr", "energy_error", "m2_centroid"):
+        assert_identical(t[key], csv[key])
+    sem = read_csv(tools.path("ens-sem.csv"))
+    for key in ("m2_se", "ipr_se", "energy_error_se", "m2_centroid_se"):
+        assert_identical(t[key], sem[key])
+    profile = read_csv(tools.path("ens-profile.csv"))
+    assert_identical(t.profile["energy"], profile["energy"])
+    assert_identical(t.profile["energy_se"], profile["energy_se"])
+    mine, theirs = without_process_keys(t.metadata), without_process_keys(meta)
+    assert mine == theirs
+    assert t.gamma_real_err == meta["gamma_real_err"] > 0  # the realization bootstrap
+
+
+def test_ensemble_mean_is_the_mean_of_the_single_runs():
+    t = gr.transport(disorder="RDM1", N=121, realizations=3, seed=2, **SHORT)
+    runs = [gr.spreading(gr.rdm1(N=121, seed=2, realization=r), **SHORT) for r in range(3)]
+    np.testing.assert_allclose(t.m2, np.mean([r.m2 for r in runs], axis=0), rtol=1e-14)
+    np.testing.assert_allclose(t.ipr, np.mean([r.ipr for r in runs], axis=0), rtol=1e-14)
+
+
+def test_exponent_table_equals_the_exponents_tool(tools):
+    flags = ["--chains", "h,A", "--F0", "10,0", "--ic", "displacement,velocity", "--N", "151", "--realizations", "3",
+             "--samples", "60", "--profile-F0", "10", "--profile-realizations", "2", "--bootstrap", "50", *SHORT_FLAGS,
+             "--compare-paper", "--quiet"]
+    csv, meta = tools.run("exponents", *flags, output="exp")
+    table = gr.exponent_table(chains=["h", "A"], F0=[10, 0], ic=["displacement", "velocity"], N=151, realizations=3,
+                              samples=60, profile_F0=[10], profile_realizations=2, bootstrap=50, compare_paper=True,
+                              **SHORT)
+    assert set(table.table) == set(csv)
+    for key, column in csv.items():
+        mine = table.column(key)
+        if mine.dtype == bool:
+            assert [str(v).lower() for v in mine] == column, key
+        elif isinstance(column, list):
+            assert list(mine) == column, key
+        else:
+            assert_identical(mine, column)
+    curves = read_csv(tools.path("exp-curves.csv"))
+    for key in ("t", "m2", "m2_centroid", "ipr", "m2_se"):
+        assert_identical(np.concatenate([c[key] for c in table.curves]), curves[key])
+    profiles = read_csv(tools.path("exp-profiles.csv"))
+    assert_identical(np.concatenate([p["energy"] for p in table.profiles]), profiles["energy"])
+    assert table.metadata["cases"] == meta["cases"]
+    paper = read_csv(tools.path("exp-paper.csv"))
+    assert_identical(table.paper["site_z"], paper["site_z"])
+    assert "| F0 [N] | h | A |" in table.markdown
+    row = table.cell("velocity", 0.0, "A")
+    assert row["realizations"] == 3 and row["gamma"] == table.column("gamma")[7]  # kick-major, then F0, then chain

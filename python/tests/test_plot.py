@@ -1,0 +1,154 @@
+"""granular.plot: every figure from results and from the tools' files, every axis labelled (with
+its unit where it has one), and the command-line wrappers, including the README's main job."""
+import os
+import subprocess
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import numpy as np  # noqa: E402
+import pytest  # noqa: E402
+from matplotlib.figure import Figure  # noqa: E402
+
+import granular as gr  # noqa: E402
+import granular.plot as gp  # noqa: E402
+from conftest import BUILD, SOURCE  # noqa: E402
+
+DIMENSIONLESS = ("IPR", "P^{-1}", "rho", "L_d", "mode number", "bead", "g(", "log_{10}", "error", "distance", "size ratio")
+
+
+def check_axes(fig):
+    """Every main axes (not colorbars, not insets) has both labels; dimensional ones carry [unit]."""
+    assert isinstance(fig, Figure)
+    main = [ax for ax in fig.axes if ax.get_visible() and ax.get_label() != "<colorbar>" and ax.get_xlabel()
+            or ax.get_ylabel()]
+    assert main
+    for ax in main:
+        for label in (ax.get_xlabel(), ax.get_ylabel()):
+            if not label:
+                continue
+            assert "[" in label or any(word in label for word in DIMENSIONLESS), label
+            assert "_N" not in label and "F0_N" not in label, label  # no raw JSON keys
+    fig.savefig(os.devnull, format="png")
+
+
+@pytest.fixture(scope="module")
+def run():
+    return gr.spreading(gr.anderson(N=301, F0=10), T=2e-3, fit=(5e-4, 2e-3), energy_map=True, map_samples=60,
+                        spectral_density=True, spectrum_samples=200, forces_at=[140, 151], force_samples=100)
+
+
+def test_linear_figures_from_results():
+    c = gr.anderson(N=60)
+    check_axes(gp.spectrum(gr.spectrum(c)))
+    check_axes(gp.spectrum(gr.spectrum(c, near=15, count=6, method="bisect")))
+    check_axes(gp.ipr_map(gr.ipr_map(xi="0.3:0.6:0.1", q=(0.2, 0.8), N=30, realizations=3)))
+    check_axes(gp.ipr_map(gr.ipr_map(xi="0.3:0.6:0.1", q=0.5, N=30, realizations=3), log_color=True))
+    check_axes(gp.correlations([gr.correlations(disorder="RDM2", q=0.8), gr.correlations(q=0.5)]))
+    check_axes(gp.partial_spectrum_ipr([gr.spectrum(gr.anderson(N=n), near=15, count=5, method="bisect")
+                                        for n in (100, 1000)]))
+    check_axes(gp.localization(gr.localization(N=2000, f="0:40:0.5"), [gr.spectrum(gr.anderson(N=200))]))
+    with pytest.raises(ValueError, match="partial"):
+        gp.ipr_map(gr.ipr_map(xi=0.5, q=0.5, N=100, realizations=2, near=15, count=2, method="bisect"))
+
+
+def test_spectrum_figure_marks_the_band_edges():
+    fig = gp.spectrum(gr.spectrum(gr.anderson(N=100, xi=0.5, F0=10)))
+    texts = [t.get_text() for ax in fig.axes for t in ax.texts]
+    assert {"$f_1$", "$f_{b1}$", "$f_{b2}$"} <= set(texts)
+    edges = gr.band_edges(xi=0.5, F0=10)
+    lines = [ln.get_ydata()[0] for ln in fig.axes[1].lines if ln.get_linestyle() == "--"]
+    assert any(abs(y - edges.fb1) < 1e-12 for y in lines)
+
+
+def test_dynamics_figures_from_results(run):
+    check_axes(gp.energy_map(run))
+    zoom = gp.energy_map(run, t_window=(0, 1e-3), site_window=(100, 200))
+    check_axes(zoom)
+    mesh = zoom.axes[0].collections[0]
+    assert mesh.get_coordinates().shape[1] == 102  # beads 100..200: 101 cells
+    with pytest.raises(ValueError, match="select no part"):
+        gp.energy_map(run, site_window=(5000, 6000))
+    check_axes(gp.forces(run))
+    check_axes(gp.spreading([run, gr.spreading(gr.homogeneous(N=301), T=2e-3, fit=(5e-4, 2e-3))]))
+    ensemble = gr.transport(N=201, realizations=2, T=1e-3, fit=(2e-4, 1e-3))
+    check_axes(gp.spreading(ensemble))
+    table = gr.exponent_table(chains=["h", "A"], F0=[10, 0], ic=["velocity"], N=151, realizations=2, T=1e-3,
+                              fit=(2e-4, 1e-3), samples=60, profile_F0=[10], profile_realizations=2)
+    check_axes(gp.exponents(table, "velocity"))
+    prof = gp.profiles(table)
+    check_axes(prof)
+    low, high = prof.axes[0].get_ylim()
+    assert low > 1e-30 and high / low == pytest.approx(3e15)  # no floor at 1e-30: 15 decades below the top
+    with pytest.raises(ValueError, match="no 'displacement' kick"):
+        gp.exponents(table, "displacement")
+
+
+def cli(*args, cwd):
+    env = dict(os.environ, PYTHONPATH=os.path.dirname(os.path.dirname(os.path.abspath(gr.__file__))))
+    return subprocess.run([sys.executable, *map(str, args)], capture_output=True, text=True, cwd=cwd, env=env)
+
+
+def test_command_line_figures_from_the_tools_files(tools):
+    folder = tools.folder
+    tools.run("ipr-map", "--xi", "0.2:0.5:0.1", "--q", "0.5", "--N", "30", "--realizations", "3", "--quiet",
+              output="ipr-map.csv")
+    tools.run("spectrum", "--N", "50", output="spectrum.csv")
+    tools.run("correlations", "--q", "0.5", output="correlations.csv")
+    tools.run("spreading", "--N", "201", "--T", "1e-3", "--fit", "2e-4:1e-3", "--energy-map", folder / "map.h5",
+              "--map-samples", "40", "--spectrum", folder / "g.csv", "--spectrum-samples", "100", "--forces-at",
+              "90,101", "--profile", output="one")
+    tools.run("exponents", "--chains", "h,A", "--F0", "10", "--ic", "displacement", "--N", "151", "--T", "1e-3",
+              "--fit", "2e-4:1e-3", "--realizations", "2", "--samples", "50", "--profile-F0", "10", "--quiet",
+              output="exp")
+    tools.run("localization", "--N", "2000", "--f", "0:40:1", "--quiet", output="loc")
+    runs = [("localization", "loc.csv", "--spectrum", "spectrum.csv"), ("ipr-map", "ipr-map.csv"), ("spectrum", "spectrum.csv"), ("correlations", "correlations.csv"),
+            ("map", "map.h5", "g.csv", "--t-window", "0:5e-4", "--sites", "50:150"),
+            ("forces", "one-forces.csv", "one-profile.csv"), ("spread", "one.csv"), ("exponents", "exp", "--profiles")]
+    for args in runs:
+        done = cli("-m", "granular.plot", *args, cwd=folder)
+        assert done.returncode == 0, (args, done.stderr)
+    for png in ("loc.png", "ipr-map.png", "spectrum.png", "correlations.png", "map.png", "one-forces.png", "one.png",
+                "exp-spreading-displacement.png", "exp-profiles.png"):
+        assert (folder / png).stat().st_size > 10000, png
+    bad = cli("-m", "granular.plot", "spectrum", "missing.csv", cwd=folder)
+    assert bad.returncode == 2 and "missing.csv" in bad.stderr and "Traceback" not in bad.stderr
+
+
+def test_the_readme_main_job_figure_command_keeps_working(tools):
+    """`/usr/bin/python3 tools/plot/ipr_map.py ipr-map.csv` writes ipr-map.png, also without
+    PYTHONPATH (the script finds the package in the tree)."""
+    tools.run("ipr-map", "--xi", "0.4,0.6", "--q", "0.5", "--N", "20", "--realizations", "2", "--quiet",
+              output="ipr-map.csv")
+    env = {k: v for k, v in os.environ.items() if k != "PYTHONPATH"}
+    done = subprocess.run([sys.executable, SOURCE / "tools" / "plot" / "ipr_map.py", "ipr-map.csv"],
+                          capture_output=True, text=True, cwd=tools.folder, env=env)
+    assert done.returncode == 0, done.stderr
+    assert (tools.folder / "ipr-map.png").stat().st_size > 10000
+    for script in ("ipr_map.py", "spectrum.py", "correlations.py", "partial_spectrum_ipr.py", "localization.py"):
+        helped = subprocess.run([sys.executable, SOURCE / "tools" / "plot" / script, "--help"], capture_output=True,
+                                text=True, env=env)
+        assert helped.returncode == 0 and "usage" in helped.stdout and not helped.stderr, script
+    helped = cli("-m", "granular.plot", "exponents", "--help", cwd=tools.folder)
+    assert helped.returncode == 0 and "prefix" in helped.stdout
+
+
+def test_partial_spectrum_script_runs_the_tool_and_draws(tools):
+    done = subprocess.run([sys.executable, SOURCE / "tools" / "plot" / "partial_spectrum_ipr.py", "--tool",
+                           BUILD / "spectrum", "--sizes", "200,2000", "--count", "6", "-o", "p.png"],
+                          capture_output=True, text=True, cwd=tools.folder)
+    assert done.returncode == 0, done.stderr
+    assert (tools.folder / "p.png").stat().st_size > 10000
+
+
+def test_figures_need_no_compiled_core_for_files(tools):
+    """granular.plot draws the tools' files with only the pure-Python package (no band edges then)."""
+    tools.run("spectrum", "--N", "40", output="s.csv")
+    code = ("import sys; sys.modules['granular._core'] = None\n"
+            "import granular.plot as gp\n"
+            "gp.spectrum('s.csv').savefig('s.png')\n")
+    env = dict(os.environ, PYTHONPATH=os.path.dirname(os.path.dirname(os.path.abspath(gr.__file__))))
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=tools.folder, env=env)
+    assert done.returncode == 0, done.stderr
+    assert np.isfinite((tools.folder / "s.png").stat().st_size)

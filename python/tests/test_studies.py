@@ -1,0 +1,119 @@
+"""granular.ipr_map and granular.correlations: identical numbers to the ipr-map and correlations
+tools on the same grid and seed, the tools' metadata, and independence of the thread count."""
+import numpy as np
+import pytest
+
+import granular as gr
+from conftest import assert_identical
+
+
+def test_ipr_map_equals_the_tool(tools):
+    csv, meta = tools.run("ipr-map", "--disorder", "RDM1", "--xi", "0.3:0.5:0.1", "--q", "0.2,0.7", "--N", "40",
+                          "--realizations", "6", "--seed", "5", "--quiet")
+    grid = gr.ipr_map(disorder="RDM1", xi="0.3:0.5:0.1", q=[0.2, 0.7], N=40, realizations=6, seed=5, threads=2)
+    rows = grid.rows()
+    for key in ("q", "xi", "mode", "freq_khz", "ipr"):
+        assert_identical(rows[key], csv[key])
+    assert grid.freq_khz.shape == grid.ipr.shape == (2, 3, 40)
+    assert_identical(grid.ipr.ravel(), csv["ipr"])
+    assert_identical(grid.xi, [0.3, 0.4, 0.5])
+    assert grid.metadata["parameters"] == meta["parameters"]
+    assert grid.metadata["averaging"] == meta["averaging"] == "mode"
+
+
+def test_ipr_map_lapack_solver_equals_the_tool(tools):
+    csv, meta = tools.run("ipr-map", "--xi", "0.2,0.9", "--q", "0.5", "--N", "25", "--realizations", "4",
+                          "--solver", "lapack-steqr", "--quiet")
+    grid = gr.ipr_map(xi=(0.2, 0.9), q=0.5, N=25, realizations=4, solver="lapack-steqr")
+    assert_identical(grid.rows()["ipr"], csv["ipr"])
+    assert grid.metadata["parameters"] == meta["parameters"]
+
+
+def test_partial_ipr_map_equals_the_tool(tools):
+    csv, meta = tools.run("ipr-map", "--disorder", "A", "--xi", "0.5", "--q", "0.5", "--N", "300",
+                          "--realizations", "3", "--near", "15", "--count", "4", "--method", "bisect", "--quiet")
+    grid = gr.ipr_map(disorder="A", xi=0.5, q=0.5, N=300, realizations=3, near=15, count=4, method="bisect")
+    rows = grid.rows()
+    for key in ("q", "xi", "realization", "mode", "freq_khz", "ipr"):
+        assert_identical(rows[key], csv[key])
+    assert grid.selection and grid.ipr.shape == (12,)
+    assert grid.metadata["selection"] == meta["selection"]
+
+
+def test_ipr_map_is_the_mean_of_the_single_chain_spectra():
+    grid = gr.ipr_map(disorder="RDM2", xi=[0.4], q=[0.3], N=30, realizations=5, seed=2, solver="lapack")
+    spectra = [gr.spectrum(gr.rdm2(N=30, q=0.3, xi=0.4, seed=2, realization=r)) for r in range(5)]
+    np.testing.assert_allclose(grid.ipr[0, 0], np.mean([s.ipr for s in spectra], axis=0), rtol=1e-14)
+    np.testing.assert_allclose(grid.freq_khz[0, 0], np.mean([s.freq_khz for s in spectra], axis=0), rtol=1e-14)
+
+
+def test_ipr_map_does_not_depend_on_the_thread_count():
+    a = gr.ipr_map(xi="0.1:0.3", q=0.5, N=50, realizations=9, threads=1)
+    b = gr.ipr_map(xi="0.1:0.3", q=0.5, N=50, realizations=9, threads=2)
+    assert_identical(a.ipr, b.ipr)
+    assert_identical(a.freq_khz, b.freq_khz)
+
+
+def test_correlations_equal_the_tool(tools):
+    csv, meta = tools.run("correlations", "--disorder", "RDM2", "--q", "0.8", "--N", "60", "--realizations", "30",
+                          "--seed", "4", "--max-distance", "6")
+    c = gr.correlations(disorder="RDM2", q=0.8, N=60, realizations=30, seed=4, max_distance=6)
+    assert_identical(c.distance, csv["distance"])
+    assert_identical(c.rho_mean, csv["rho_mean"])
+    assert_identical(c.rho_std, csv["rho_std"])
+    assert_identical(c.rho_theory, csv["rho_theory"])
+    assert c.metadata["parameters"] == meta["parameters"]
+    assert c.used == meta["realizations_used"] == 30
+
+
+def test_correlation_ensemble_approaches_the_infinite_chain_formula():
+    c = gr.correlations(disorder="RDM1", q=0.5, N=2000, realizations=20, max_distance=4)
+    np.testing.assert_allclose(c.rho_mean, c.rho_theory, atol=5 * c.rho_std.max() / np.sqrt(20) + 1e-12)
+    assert c.rho_theory[1] == pytest.approx(0.5)  # RDM1 at q = 1/2: the partner in the dimer
+
+
+def test_progress_bar_is_drawn_on_stderr(capfd):
+    gr.ipr_map(xi="0.5:0.6", q=0.5, N=20, realizations=4, progress=True)
+    err = capfd.readouterr().err
+    assert "ipr_map:" in err and "44/44" in err and "100%" in err
+    gr.ipr_map(xi="0.5:0.6", q=0.5, N=20, realizations=4)
+    assert capfd.readouterr().err == ""
+
+
+def test_localization_equals_the_tool_for_a_streamed_chain_and_a_types_file(tools, data_dir):
+    csv, meta = tools.run("localization", "--disorder", "RDM1", "--N", "2e5", "--f", "1:40:0.5", "--segments", "16",
+                          "--seed", "3", "--quiet", output="loc")
+    scan = gr.localization(disorder="RDM1", N=2e5, f="1:40:0.5", segments=16, seed=3)
+    for key in ("freq_khz", "lyapunov", "lyapunov_err", "loc_length", "idos", "dos"):
+        assert_identical(getattr(scan, key), csv[key])
+    assert scan.metadata["chain"] == meta["chain"]
+    assert scan.metadata["parameters"] == meta["parameters"]
+    assert scan.metadata["band_edges_khz"] == meta["band_edges_khz"]
+    types_file = data_dir / "examples" / "diatomic-10.types"
+    csv, _ = tools.run("localization", "--config", types_file, "--f", "0:40:1", "--segments", "2", "--quiet",
+                       output="loc2")
+    scan = gr.localization(gr.from_types(gr.read_types(str(types_file))), f="0:40:1", segments=2)
+    assert_identical(scan.lyapunov, csv["lyapunov"])
+    assert_identical(scan.idos, csv["idos"])
+
+
+def test_localization_node_counts_are_the_spectrum_and_streaming_gives_the_built_chain():
+    chain = gr.anderson(N=300, seed=2, realization=1)
+    modes = gr.spectrum(chain)
+    f = np.sort(np.concatenate([(modes.freq_khz[:-1] + modes.freq_khz[1:]) / 2, [modes.freq_khz[-1] + 1]]))
+    built = gr.localization(chain, f=f)
+    assert_identical(built.modes_below, np.arange(1, 301))  # Dean's method: exactly one mode between midpoints
+    streamed = gr.localization(N=300, seed=2, realization=1, f=f)
+    assert_identical(streamed.lyapunov, built.lyapunov)
+
+
+def test_frequency_binned_ipr_map_equals_the_tool(tools):
+    csv, meta = tools.run("ipr-map", "--disorder", "RDM2", "--xi", "0.5", "--q", "0.5", "--N", "50",
+                          "--realizations", "5", "--bin-khz", "2", "--quiet")
+    grid = gr.ipr_map(disorder="RDM2", xi=0.5, q=0.5, N=50, realizations=5, bin_khz=2.0)
+    rows = grid.rows()
+    for key in ("q", "xi", "freq_lo_khz", "freq_hi_khz", "modes", "ipr"):
+        assert_identical(rows[key], csv[key])
+    assert rows["modes"].sum() == 5 * 50  # every mode of every realization in one bin
+    assert grid.metadata["averaging"] == meta["averaging"] == "frequency-bin"
+    assert grid.metadata["bin_khz"] == meta["bin_khz"]
