@@ -140,8 +140,9 @@ void bind_studies(py::module_& m) {
       .def_property_readonly(
           "ipr", [](const PyIprMap& p) { return gather(p, &IprMapCell::ipr); },
           "mean displacement IPRs, (len(q), len(xi), N); with a selection, one per row")
-      .def_property_readonly("bin_khz", [](const PyIprMap& p) { return p.config.bin_khz; },
-                             "width of the frequency bins [kHz] (0: averaged by mode number)")
+      .def_property_readonly(
+          "bin_khz", [](const PyIprMap& p) { return p.config.bin_khz; },
+          "width of the frequency bins [kHz] (0: averaged by mode number)")
       .def("rows", &ipr_map_rows,
            "The ipr-map tool's CSV columns as arrays: q, xi, [realization,] mode, freq_khz [kHz], ipr (one row per "
            "(q, xi, mode), or per selected mode of each realization); with bin_khz > 0: q, xi, freq_lo_khz, "
@@ -246,8 +247,8 @@ void bind_studies(py::module_& m) {
       py::kw_only(), py::arg("disorder") = "A", py::arg("xi") = "0.1:1", py::arg("q") = "0.2,0.5,0.8",
       py::arg("N") = 100, py::arg("F0") = 10.0, py::arg("R1") = paper_r1, py::arg("realizations") = 100,
       py::arg("seed") = 1, py::arg("solver") = "fast", py::arg("near") = py::none(), py::arg("count") = py::none(),
-      py::arg("window") = py::none(), py::arg("method") = py::none(), py::arg("bin_khz") = 0.0,
-      py::arg("threads") = 0, py::arg("progress") = false,
+      py::arg("window") = py::none(), py::arg("method") = py::none(), py::arg("bin_khz") = 0.0, py::arg("threads") = 0,
+      py::arg("progress") = false,
       "Mean frequency [kHz] and displacement IPR of every mode of disordered chains over realizations, on a (q, xi) "
       "grid: the paper's IPR map, as the ipr-map tool computes it (same numbers for the same keywords).\n\n"
       "    disorder: 'h' | 'A' | 'RDM1' | 'RDM2'\n"
