@@ -1,5 +1,7 @@
 #!/usr/bin/env bash
-# Builds and runs every test, in three passes (CI runs this through the README's test command):
+# Builds and runs every test, in three passes (CI runs this through the README's test command),
+# after a cheap first check that every C++ file is formatted as .clang-format says
+# (tests/format-check.sh; GRANULAR_SKIP_FORMAT=1 skips it, for local runs on unformatted branches):
 #   1. the Release build with warnings as errors: every GoogleTest suite and tool test (ctest);
 #   2. the same suites built with AddressSanitizer + UndefinedBehaviorSanitizer (any report fails);
 #   3. each libFuzzer target for FUZZ_SECONDS (default 60) from its seed corpus.
@@ -18,6 +20,12 @@ count() {  # adds the passed tests of a ctest log to $passed
   failed=$(sed -E 's/.* ([0-9]+) tests? failed.*/\1/' <<<"$line")
   passed=$((passed + total - failed))
 }
+
+if [ "${GRANULAR_SKIP_FORMAT:-0}" != 1 ]; then
+  echo "== format check"
+  bash tests/format-check.sh
+  passed=$((passed + 1))
+fi
 
 echo "== pass 1: Release build, all tests"
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DGRANULAR_WERROR=ON >/dev/null

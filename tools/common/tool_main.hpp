@@ -22,6 +22,7 @@ enum ExitCode { ok = 0, io_failure = 1, bad_input = 2, numerical_failure = 3 };
 inline void describe_common(CLI::App& app) {
   app.set_version_flag("--version", std::string("granular ") + GRANULAR_VERSION);
   app.get_formatter()->column_width(34);
+  app.footer("Physics and units: docs/physics.md (installed to share/doc/granular/physics.md)");
 }
 
 /// An integer option that also takes scientific notation (--N 1e7), rejecting non-integers.

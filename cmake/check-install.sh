@@ -1,0 +1,69 @@
+#!/usr/bin/env bash
+# The install test (ctest label `install`): installs this build tree into a scratch prefix and
+# uses it as an outside project would, compiled WITHOUT -march=native (the library is built
+# with it): examples/ through find_package(granular), and a one-file program through
+# pkg-config. Fails on the first step that does not work, naming it.
+# Usage: check-install.sh SOURCE_DIR BUILD_DIR WORK_DIR CMAKE CTEST CXX PKG_CONFIG
+set -euo pipefail
+src=$1 build=$2 work=$3 cmake=$4 ctest=$5 cxx=$6 pkg_config=$7
+prefix=$work/prefix
+fail() { echo "install test: $*" >&2; exit 1; }
+
+rm -rf "$work"
+mkdir -p "$work"
+"$cmake" --install "$build" --prefix "$prefix" >"$work/install.log" || fail "cmake --install failed (see $work/install.log)"
+libdir=$(dirname "$(find "$prefix" -name 'libgranular.*' -print -quit)")
+[ -d "$libdir" ] || fail "no libgranular installed"
+
+# What must be there, and what must not.
+for f in include/granular/granular.hpp include/granular/error.hpp include/granular/linear/spectrum.hpp \
+         include/granular/model/chain.hpp share/doc/granular/physics.md bin/spectrum \
+         share/granular/plot/spectrum.py; do
+  [ -e "$prefix/$f" ] || fail "missing $f"
+done
+[ -z "$(find "$prefix/include" -type d -name detail)" ] || fail "a detail/ folder was installed"
+[ -f "$libdir/cmake/granular/granularConfig.cmake" ] || fail "missing granularConfig.cmake"
+[ -f "$libdir/cmake/granular/granularConfigVersion.cmake" ] || fail "missing granularConfigVersion.cmake"
+[ -f "$libdir/pkgconfig/granular.pc" ] || fail "missing granular.pc"
+# Build-only settings must not reach consumers: no -march, no source paths, no build macros.
+if grep -rn -e '-march=' -e "$src" -e "$build" "$libdir/cmake/granular" "$libdir/pkgconfig/granular.pc"; then
+  fail "the exported interface carries a build-only flag or path (above)"
+fi
+if grep -rln -e 'GRANULAR_HAVE_' -e 'GRANULAR_SOURCE_DIR' -e 'GRANULAR_VERSION' "$prefix/include"; then
+  fail "an installed header uses a macro only the in-tree build defines (files above)"
+fi
+# The installed tools find the installed library.
+"$prefix/bin/spectrum" --version >/dev/null || fail "installed bin/spectrum does not run"
+
+# 1. examples/ as a downstream CMake project: configure, build, run every example.
+"$cmake" -S "$src/examples" -B "$work/examples" -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_BUILD_TYPE=Release \
+  -DCMAKE_CXX_COMPILER="$cxx" -DCMAKE_EXPORT_COMPILE_COMMANDS=ON >"$work/examples-configure.log" 2>&1 \
+  || { cat "$work/examples-configure.log"; fail "configuring examples/ against the install failed"; }
+"$cmake" --build "$work/examples" -j2 >"$work/examples-build.log" 2>&1 \
+  || { cat "$work/examples-build.log"; fail "building examples/ against the install failed"; }
+if grep -n -e '-march=' "$work/examples/compile_commands.json"; then fail "examples were compiled with -march"; fi
+grep -q -- '-ffp-contract=off' "$work/examples/compile_commands.json" || fail "granular::granular does not carry -ffp-contract=off"
+grep -q -- "-I$src" "$work/examples/compile_commands.json" && fail "examples see the source tree's headers"
+"$ctest" --test-dir "$work/examples" --output-on-failure || fail "an example failed its check"
+
+# 2. pkg-config: one file that includes every installed header and calls the library.
+export PKG_CONFIG_PATH=$libdir/pkgconfig
+flags=$("$pkg_config" --cflags --libs granular) || fail "pkg-config --cflags --libs granular failed"
+echo "pkg-config --cflags --libs granular: $flags"
+{
+  (cd "$prefix/include" && find granular -name '*.hpp' | sort | sed 's/.*/#include <&>/')
+  cat <<'CPP'
+#include <cstdio>
+#include <vector>
+int main() {  // every installed header compiles on its own include path, and the library links
+  const auto chain = granular::from_radii(std::vector<double>(30, 4.76e-3), 10.0);
+  const auto modes = granular::spectrum(granular::dynamical_matrix(chain), granular::all_modes(), {.vectors = true});
+  std::printf("pkg-config program: %zu modes, highest %.6f kHz\n", modes.size(), modes.freq_khz.back());
+  return modes.size() == 30 && modes.vectors.size() == 30 * 30 ? 0 : 1;
+}
+CPP
+} >"$work/pc_program.cpp"
+# shellcheck disable=SC2086  # $flags is a list of words
+"$cxx" -std=c++20 -O2 "$work/pc_program.cpp" -o "$work/pc_program" $flags || fail "compiling with pkg-config flags failed"
+LD_LIBRARY_PATH=$libdir${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH} "$work/pc_program" || fail "the pkg-config program failed"
+echo "install test: installed, found by find_package and pkg-config, examples pass"
