@@ -17,7 +17,7 @@ int main() {
   spec.radii.assign(N, granular::paper_r1);
   spec.materials = {granular::steel};
   spec.left_wall.radius = spec.right_wall.radius = granular::paper_r1;  // wall bonds = bulk bonds
-  spec.precompression = 10.0;                                          // [N]
+  spec.precompression = 10.0;                                           // [N]
   const granular::Chain chain = granular::make_chain(spec);
 
   const granular::Spectrum modes =
@@ -32,9 +32,12 @@ int main() {
     const double f = modes.freq_khz[k - 1];
     worst_f = std::fmax(worst_f, std::fabs(f - exact) / exact);
     worst_ipr = std::fmax(worst_ipr, std::fabs(modes.ipr[k - 1] - standing_wave_ipr) / standing_wave_ipr);
-    if (k <= 2 || k == N) std::printf("mode %3d: %.12f kHz (closed form %.12f), IPR %.6f\n", k, f, exact, modes.ipr[k - 1]);
+    if (k <= 2 || k == N)
+      std::printf("mode %3d: %.12f kHz (closed form %.12f), IPR %.6f\n", k, f, exact, modes.ipr[k - 1]);
   }
-  std::printf("%zu modes by %s, %zu eigenvector entries; largest relative error: frequency %.2e, IPR %.2e "
-              "(limit 1e-10)\n", modes.size(), modes.info.method.c_str(), modes.vectors.size(), worst_f, worst_ipr);
+  std::printf(
+      "%zu modes by %s, %zu eigenvector entries; largest relative error: frequency %.2e, IPR %.2e "
+      "(limit 1e-10)\n",
+      modes.size(), modes.info.method.c_str(), modes.vectors.size(), worst_f, worst_ipr);
   return worst_f <= 1e-10 && worst_ipr <= 1e-10 && modes.vectors.size() == std::size_t{N} * N ? 0 : 1;
 }

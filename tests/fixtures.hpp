@@ -28,7 +28,10 @@ inline const std::map<std::string, Reference>& reference_values() {
     bool header = true;
     while (std::getline(in, line)) {
       if (line.empty() || line[0] == '#') continue;
-      if (header) { header = false; continue; }
+      if (header) {
+        header = false;
+        continue;
+      }
       std::stringstream row(line);
       std::string name, value, tolerance;
       std::getline(row, name, ',');

@@ -10,9 +10,10 @@
 
 int main(int argc, char** argv) {
   using namespace granular;
-  CLI::App app{"Pearson correlation rho(d) of bead types (type 1 -> 0, type 2 -> 1) with their cyclic shift by d,\n"
-               "averaged over realizations: columns distance,rho_mean,rho_std,rho_theory (theory: infinite chain).",
-               "correlations"};
+  CLI::App app{
+      "Pearson correlation rho(d) of bead types (type 1 -> 0, type 2 -> 1) with their cyclic shift by d,\n"
+      "averaged over realizations: columns distance,rho_mean,rho_std,rho_theory (theory: infinite chain).",
+      "correlations"};
   tool::describe_common(app);
   std::string disorder = "A", output = "correlations.csv";
   CorrelationConfig config;
@@ -42,9 +43,9 @@ int main(int argc, char** argv) {
     CsvWriter table(csv.stream(), {"distance", "rho_mean", "rho_std", "rho_theory"});
     for (std::size_t d = 0; d < result.mean.size(); ++d)
       table.row(d, result.mean[d], result.deviation[d], result.theory[d]);
-    meta["parameters"] = {{"disorder", to_string(config.disorder)}, {"q", config.q}, {"N", config.n},
-                          {"realizations", config.realizations}, {"seed", config.seed},
-                          {"max_distance", config.max_distance}};
+    meta["parameters"] = {
+        {"disorder", to_string(config.disorder)}, {"q", config.q},       {"N", config.n},
+        {"realizations", config.realizations},    {"seed", config.seed}, {"max_distance", config.max_distance}};
     meta["realizations_used"] = result.used;
     meta["output"] = output;
     meta.write(json_path, {&csv});

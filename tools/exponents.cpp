@@ -8,19 +8,20 @@
 #include "common/metadata.hpp"
 #include "common/tool_main.hpp"
 #include "granular/ensemble/checkpoint_log.hpp"
-#include "granular/parallel/mpi_context.hpp"
 #include "granular/io/atomic_file.hpp"
+#include "granular/parallel/mpi_context.hpp"
 #include "granular/study/paper_comparison.hpp"
 
 int main(int argc, char** argv) {
   using namespace granular;
-  CLI::App app{"The paper's transport exponents: for each kick, F0 and chain kind, R realizations of a kicked chain\n"
-               "integrated to T; gamma and eta fitted on the averaged m2(t) and P^-1(t) (or, where that is not a power\n"
-               "law, their mean log derivative), with sub-window spreads and realization (bootstrap) errors. Markdown\n"
-               "tables on stdout; PREFIX.csv (exponents), PREFIX-curves.csv (mean curves), PREFIX-profiles.csv (E_n(T)),\n"
-               "PREFIX.json; with --compare-paper, PREFIX-paper.csv and the side-by-side table. Interrupted runs\n"
-               "continue with --resume (finished realizations are kept in PREFIX.checkpoint.*).",
-               "exponents"};
+  CLI::App app{
+      "The paper's transport exponents: for each kick, F0 and chain kind, R realizations of a kicked chain\n"
+      "integrated to T; gamma and eta fitted on the averaged m2(t) and P^-1(t) (or, where that is not a power\n"
+      "law, their mean log derivative), with sub-window spreads and realization (bootstrap) errors. Markdown\n"
+      "tables on stdout; PREFIX.csv (exponents), PREFIX-curves.csv (mean curves), PREFIX-profiles.csv (E_n(T)),\n"
+      "PREFIX.json; with --compare-paper, PREFIX-paper.csv and the side-by-side table. Interrupted runs\n"
+      "continue with --resume (finished realizations are kept in PREFIX.checkpoint.*).",
+      "exponents"};
   tool::describe_common(app);
   tool::DynamicsOptions dynamics;
   std::string chains = "h,A,RDM1,RDM2", f0_text = "10,0.5,0.1,0.01,0", kicks = "displacement,velocity";
@@ -37,85 +38,100 @@ int main(int argc, char** argv) {
   app.add_option("--xi", xi, "size ratio R2/R1 in (0,1]")->capture_default_str();
   app.add_option("--q", q, "disorder probability in [0,1]")->capture_default_str();
   tool::add_dynamics_options(app, dynamics);
-  app.add_option("--realizations", realizations, "realizations per disordered case (h always runs 1)")->capture_default_str();
+  app.add_option("--realizations", realizations, "realizations per disordered case (h always runs 1)")
+      ->capture_default_str();
   app.add_option("--seed", seed, "random seed")->capture_default_str();
-  app.add_option("--profile-F0", profile_f0, "F0s whose energy profile E_n(T) is averaged (list; 'none')")->capture_default_str();
-  app.add_option("--profile-realizations", profile_realizations, "realizations averaged in those profiles")->capture_default_str();
-  app.add_flag("--compare-paper", compare, "also print (and write PREFIX-paper.csv) our gamma beside the paper's Table I");
-  app.add_option("--paper-table", paper_table, "the paper's Table I (CSV ic,F0_N,disorder,gamma,err,star)")->capture_default_str();
-  app.add_option("--threads", threads, "threads per process (0 = all cores); results do not depend on it")->capture_default_str();
+  app.add_option("--profile-F0", profile_f0, "F0s whose energy profile E_n(T) is averaged (list; 'none')")
+      ->capture_default_str();
+  app.add_option("--profile-realizations", profile_realizations, "realizations averaged in those profiles")
+      ->capture_default_str();
+  app.add_flag("--compare-paper", compare,
+               "also print (and write PREFIX-paper.csv) our gamma beside the paper's Table I");
+  app.add_option("--paper-table", paper_table, "the paper's Table I (CSV ic,F0_N,disorder,gamma,err,star)")
+      ->capture_default_str();
+  app.add_option("--threads", threads, "threads per process (0 = all cores); results do not depend on it")
+      ->capture_default_str();
   app.add_option("--output", output, "output prefix")->capture_default_str();
   app.add_flag("--resume", resume, "continue an interrupted run with the same parameters");
   app.add_flag("--quiet", quiet, "no progress line");
 
-  return tool::run(app, argc, argv, [&] {
-    tool::Metadata meta("exponents", argc, argv);
-    const MpiContext& mpi = MpiContext::instance();
-    ExponentTableConfig config;
-    config.chains.clear();
-    for (const auto& name : parse_word_list(chains, "--chains")) config.chains.push_back(parse_disorder(name));
-    config.precompressions = parse_number_list(f0_text, "--F0");
-    config.kicks.clear();
-    for (const auto& name : parse_word_list(kicks, "--ic")) config.kicks.push_back(parse_kick(name));
-    config.profile_precompressions = profile_f0 == "none" ? std::vector<double>{} : parse_number_list(profile_f0, "--profile-F0");
-    if (profile_realizations < 0) throw InvalidInput("--profile-realizations: must be >= 0");
-    config.profile_realizations = static_cast<std::size_t>(profile_realizations);
-    if (n < 2) throw InvalidInput("--N " + std::to_string(n) + ": a chain needs at least 2 beads");
-    if (n > 100000000) throw InvalidInput("--N " + std::to_string(n) + ": more than 1e8 beads");
-    if (realizations < 1) throw InvalidInput("--realizations " + std::to_string(realizations) + ": must be >= 1");
-    if (seed < 0) throw InvalidInput("--seed: must be >= 0");
-    if (threads < 0) throw InvalidInput("--threads: must be >= 0");
-    TransportCase& base = config.base;
-    base.n = static_cast<std::size_t>(n);
-    base.xi = xi;
-    base.q = q;
-    base.seed = static_cast<std::uint64_t>(seed);
-    base.realizations = static_cast<std::size_t>(realizations);
-    std::vector<PaperCell> paper;
-    std::vector<std::string> paths{output + ".csv", output + "-curves.csv", output + "-profiles.csv", output + ".json"};
-    tool::apply(dynamics, base);
-    for (const auto& c : exponent_cases(config)) validate(c);
-    if (compare) paper = read_paper_table(paper_table);
-    if (compare) paths.push_back(output + "-paper.csv");
-    for (const auto& p : paths) check_writable(p);
-    ExponentRunOptions run;
-    run.threads = threads;
-    run.checkpoint_prefix = output + ".checkpoint";
-    run.resume = resume;
-    run.progress = quiet || !mpi.root() ? 0 : -1;
-    const auto cells = run_exponent_table(config, run);
-    if (!mpi.root()) return;
+  return tool::run(app, argc, argv,
+                   [&] {
+                     tool::Metadata meta("exponents", argc, argv);
+                     const MpiContext& mpi = MpiContext::instance();
+                     ExponentTableConfig config;
+                     config.chains.clear();
+                     for (const auto& name : parse_word_list(chains, "--chains"))
+                       config.chains.push_back(parse_disorder(name));
+                     config.precompressions = parse_number_list(f0_text, "--F0");
+                     config.kicks.clear();
+                     for (const auto& name : parse_word_list(kicks, "--ic")) config.kicks.push_back(parse_kick(name));
+                     config.profile_precompressions =
+                         profile_f0 == "none" ? std::vector<double>{} : parse_number_list(profile_f0, "--profile-F0");
+                     if (profile_realizations < 0) throw InvalidInput("--profile-realizations: must be >= 0");
+                     config.profile_realizations = static_cast<std::size_t>(profile_realizations);
+                     if (n < 2) throw InvalidInput("--N " + std::to_string(n) + ": a chain needs at least 2 beads");
+                     if (n > 100000000) throw InvalidInput("--N " + std::to_string(n) + ": more than 1e8 beads");
+                     if (realizations < 1)
+                       throw InvalidInput("--realizations " + std::to_string(realizations) + ": must be >= 1");
+                     if (seed < 0) throw InvalidInput("--seed: must be >= 0");
+                     if (threads < 0) throw InvalidInput("--threads: must be >= 0");
+                     TransportCase& base = config.base;
+                     base.n = static_cast<std::size_t>(n);
+                     base.xi = xi;
+                     base.q = q;
+                     base.seed = static_cast<std::uint64_t>(seed);
+                     base.realizations = static_cast<std::size_t>(realizations);
+                     std::vector<PaperCell> paper;
+                     std::vector<std::string> paths{output + ".csv", output + "-curves.csv", output + "-profiles.csv",
+                                                    output + ".json"};
+                     tool::apply(dynamics, base);
+                     for (const auto& c : exponent_cases(config)) validate(c);
+                     if (compare) paper = read_paper_table(paper_table);
+                     if (compare) paths.push_back(output + "-paper.csv");
+                     for (const auto& p : paths) check_writable(p);
+                     ExponentRunOptions run;
+                     run.threads = threads;
+                     run.checkpoint_prefix = output + ".checkpoint";
+                     run.resume = resume;
+                     run.progress = quiet || !mpi.root() ? 0 : -1;
+                     const auto cells = run_exponent_table(config, run);
+                     if (!mpi.root()) return;
 
-    std::printf("%s", markdown_tables(cells, config).c_str());
-    AtomicFile csv(paths[0]), curves(paths[1]), profiles(paths[2]);
-    write_exponents_csv(csv.stream(), cells);
-    write_curves_csv(curves.stream(), cells);
-    write_profiles_csv(profiles.stream(), cells);
-    nlohmann::json cases = nlohmann::json::array();
-    for (const auto& c : cells) {
-      nlohmann::json one = describe(c.definition);
-      if (c.summary.exponents)
-        one["exponents"] = {{"gamma_site", to_json(c.summary.exponents->gamma_site)},
-                            {"gamma_centroid", to_json(c.summary.exponents->gamma_centroid)},
-                            {"eta", to_json(c.summary.exponents->eta)}};
-      cases.push_back(one);
-    }
-    meta["parameters"] = {{"chains", chains}, {"F0", config.precompressions}, {"ic", kicks},
-                          {"threads", threads}, {"mpi_ranks", mpi.size()}};
-    meta["cases"] = cases;
-    std::optional<AtomicFile> comparison;
-    if (compare) {
-      const auto rows = compare_with_paper(cells, paper);
-      std::printf("%s", markdown_comparison(rows).c_str());
-      comparison.emplace(paths[4]);
-      write_comparison_csv(comparison->stream(), rows);
-      meta["paper_table"] = paper_table;
-    }
-    meta["output"] = paths[0];
-    if (comparison)  // the JSON first, then the CSVs: never a CSV without its metadata
-      meta.write(paths[3], {&csv, &curves, &profiles, &*comparison});
-    else
-      meta.write(paths[3], {&csv, &curves, &profiles});
-    for (std::size_t i = 0; i < cells.size(); ++i) CheckpointLog::remove_all(run.checkpoint_prefix + "." + std::to_string(i));
-  }, {{"disorder", "--chains"}});  // the library's `disorder` is --chains here
+                     std::printf("%s", markdown_tables(cells, config).c_str());
+                     AtomicFile csv(paths[0]), curves(paths[1]), profiles(paths[2]);
+                     write_exponents_csv(csv.stream(), cells);
+                     write_curves_csv(curves.stream(), cells);
+                     write_profiles_csv(profiles.stream(), cells);
+                     nlohmann::json cases = nlohmann::json::array();
+                     for (const auto& c : cells) {
+                       nlohmann::json one = describe(c.definition);
+                       if (c.summary.exponents)
+                         one["exponents"] = {{"gamma_site", to_json(c.summary.exponents->gamma_site)},
+                                             {"gamma_centroid", to_json(c.summary.exponents->gamma_centroid)},
+                                             {"eta", to_json(c.summary.exponents->eta)}};
+                       cases.push_back(one);
+                     }
+                     meta["parameters"] = {{"chains", chains},
+                                           {"F0", config.precompressions},
+                                           {"ic", kicks},
+                                           {"threads", threads},
+                                           {"mpi_ranks", mpi.size()}};
+                     meta["cases"] = cases;
+                     std::optional<AtomicFile> comparison;
+                     if (compare) {
+                       const auto rows = compare_with_paper(cells, paper);
+                       std::printf("%s", markdown_comparison(rows).c_str());
+                       comparison.emplace(paths[4]);
+                       write_comparison_csv(comparison->stream(), rows);
+                       meta["paper_table"] = paper_table;
+                     }
+                     meta["output"] = paths[0];
+                     if (comparison)  // the JSON first, then the CSVs: never a CSV without its metadata
+                       meta.write(paths[3], {&csv, &curves, &profiles, &*comparison});
+                     else meta.write(paths[3], {&csv, &curves, &profiles});
+                     for (std::size_t i = 0; i < cells.size(); ++i)
+                       CheckpointLog::remove_all(run.checkpoint_prefix + "." + std::to_string(i));
+                   },
+                   {{"disorder", "--chains"}});  // the library's `disorder` is --chains here
 }

@@ -13,9 +13,10 @@
 
 int main(int argc, char** argv) {
   using namespace granular;
-  CLI::App app{"Mean mode frequency [kHz] and displacement IPR of disordered bidisperse chains on a (q, xi) grid.\n"
-               "Writes OUTPUT (columns disorder,q,xi,mode,freq_khz,ipr) and OUTPUT with .json (every parameter).",
-               "ipr-map"};
+  CLI::App app{
+      "Mean mode frequency [kHz] and displacement IPR of disordered bidisperse chains on a (q, xi) grid.\n"
+      "Writes OUTPUT (columns disorder,q,xi,mode,freq_khz,ipr) and OUTPUT with .json (every parameter).",
+      "ipr-map"};
   tool::describe_common(app);
   std::string disorder = "A", xi_text = "0.1:1", q_text = "0.2,0.5,0.8", output = "ipr-map.csv", solver = "fast";
   std::string method = "lapack";
@@ -23,21 +24,30 @@ int main(int argc, char** argv) {
   RunOptions run;
   tool::SelectionOptions selection;
   bool quiet = false;
-  app.add_option("--disorder", disorder, "h | A | RDM1 | RDM2 (homogeneous, Anderson, random dimer 1/2)")->capture_default_str();
-  app.add_option("--xi", xi_text, "size ratios R2/R1 in (0,1]: start:stop[:step] (step 0.01) or a,b,c")->capture_default_str();
-  app.add_option("--q", q_text, "probabilities of type 1 (or of dimer 11 / 12) in [0,1]: list or range")->capture_default_str();
+  app.add_option("--disorder", disorder, "h | A | RDM1 | RDM2 (homogeneous, Anderson, random dimer 1/2)")
+      ->capture_default_str();
+  app.add_option("--xi", xi_text, "size ratios R2/R1 in (0,1]: start:stop[:step] (step 0.01) or a,b,c")
+      ->capture_default_str();
+  app.add_option("--q", q_text, "probabilities of type 1 (or of dimer 11 / 12) in [0,1]: list or range")
+      ->capture_default_str();
   tool::add_integer(app, "--N", config.n, "beads per chain (>= 2)");
   app.add_option("--F0", config.precompression, "static precompression [N], > 0")->capture_default_str();
-  app.add_option("--R1", config.r1, "radius of type-1 beads [m]; type 2 has xi*R1 (steel beads, steel walls)")->capture_default_str();
+  app.add_option("--R1", config.r1, "radius of type-1 beads [m]; type 2 has xi*R1 (steel beads, steel walls)")
+      ->capture_default_str();
   tool::add_integer(app, "--realizations", config.realizations, "chains averaged per (q, xi)");
   tool::add_integer(app, "--seed", config.seed, "random seed; realization r of seed s is always the same chain");
   tool::add_integer(app, "--threads", run.threads, "worker threads (0 = all cores); results do not depend on it");
-  app.add_option("--solver", solver, "mode solver: fast (eigenvalues + one twisted factorization per mode, no eigenvector matrix; IPRs as LAPACK's to 1e-10 outside tight eigenvalue clusters) | lapack (= lapack-stevd) | lapack-stevr | lapack-stemr | lapack-stevd | lapack-steqr")->capture_default_str();
+  app.add_option("--solver", solver,
+                 "mode solver: fast (eigenvalues + one twisted factorization per mode, no eigenvector matrix; IPRs as "
+                 "LAPACK's to 1e-10 outside tight eigenvalue clusters) | lapack (= lapack-stevd) | lapack-stevr | "
+                 "lapack-stemr | lapack-stevd | lapack-steqr")
+      ->capture_default_str();
   app.add_option("--output", output, "CSV file to write (the JSON goes beside it)")->capture_default_str();
   tool::add_selection_options(app, selection, "partial spectra: ");
   app.add_option("--method", method, "partial spectra: lapack | bisect | arpack | slepc (arpack/slepc: one thread)")
       ->capture_default_str();
-  app.add_option("--bin-khz", config.bin_khz, "average in frequency bins of this width [kHz] instead of by mode number: "
+  app.add_option("--bin-khz", config.bin_khz,
+                 "average in frequency bins of this width [kHz] instead of by mode number: "
                  "columns disorder,q,xi,freq_lo_khz,freq_hi_khz,modes,ipr (empty bins: modes 0, ipr nan)");
   app.add_flag("--quiet", quiet, "no progress line on stderr");
 
@@ -88,15 +98,23 @@ int main(int argc, char** argv) {
     } else {
       CsvWriter table(csv.stream(), {"disorder", "q", "xi", "mode", "freq_khz", "ipr"});
       for (const auto& cell : cells)
-        for (std::size_t k = 0; k < config.n; ++k) table.row(name, cell.q, cell.xi, k + 1, cell.freq_khz[k], cell.ipr[k]);
+        for (std::size_t k = 0; k < config.n; ++k)
+          table.row(name, cell.q, cell.xi, k + 1, cell.freq_khz[k], cell.ipr[k]);
     }
-    meta["parameters"] = {{"disorder", name},          {"xi", config.xi_values},
-                          {"q", config.q_values},      {"N", config.n},
-                          {"F0_N", config.precompression}, {"R1_m", config.r1},
-                          {"material", {{"E_Pa", config.material.young}, {"nu", config.material.poisson}, {"rho_kg_m3", config.material.density}}},
-                          {"walls", "flat, same material as the beads"},
-                          {"realizations", config.realizations}, {"seed", config.seed},
-                          {"threads", resolve_threads(run.threads)}, {"solver", solver}};
+    meta["parameters"] = {
+        {"disorder", name},
+        {"xi", config.xi_values},
+        {"q", config.q_values},
+        {"N", config.n},
+        {"F0_N", config.precompression},
+        {"R1_m", config.r1},
+        {"material",
+         {{"E_Pa", config.material.young}, {"nu", config.material.poisson}, {"rho_kg_m3", config.material.density}}},
+        {"walls", "flat, same material as the beads"},
+        {"realizations", config.realizations},
+        {"seed", config.seed},
+        {"threads", resolve_threads(run.threads)},
+        {"solver", solver}};
     if (!selection.given()) {
       meta["averaging"] = config.bin_khz > 0 ? "frequency-bin" : "mode";
       if (config.bin_khz > 0) meta["bin_khz"] = config.bin_khz;
@@ -105,7 +123,8 @@ int main(int argc, char** argv) {
       meta["selection"] = {{"method", method},
                            {"near_khz", selection.near ? nlohmann::json(*selection.near) : nlohmann::json(nullptr)},
                            {"count", selection.count ? nlohmann::json(*selection.count) : nlohmann::json(nullptr)},
-                           {"window_khz", selection.window ? nlohmann::json(*selection.window) : nlohmann::json(nullptr)}};
+                           {"window_khz",
+                            selection.window ? nlohmann::json(*selection.window) : nlohmann::json(nullptr)}};
     meta["output"] = output;
     meta.write(json_path, {&csv});
   });

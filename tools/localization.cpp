@@ -16,10 +16,11 @@
 
 int main(int argc, char** argv) {
   using namespace granular;
-  CLI::App app{"Transfer-matrix Lyapunov exponent and node-count density of states of one chain, at a list of\n"
-               "frequencies. Writes PREFIX.csv (columns freq_khz,lyapunov,lyapunov_err,loc_length,idos,dos: kHz,\n"
-               "1/bead, 1/bead, beads, modes per bead, modes per bead per kHz) and PREFIX.json (every parameter).",
-               "localization"};
+  CLI::App app{
+      "Transfer-matrix Lyapunov exponent and node-count density of states of one chain, at a list of\n"
+      "frequencies. Writes PREFIX.csv (columns freq_khz,lyapunov,lyapunov_err,loc_length,idos,dos: kHz,\n"
+      "1/bead, 1/bead, beads, modes per bead, modes per bead per kHz) and PREFIX.json (every parameter).",
+      "localization"};
   tool::describe_common(app);
   tool::ChainOptions chain_options;
   chain_options.n = 1000000;
@@ -28,62 +29,75 @@ int main(int argc, char** argv) {
   long long segments = 32;
   RunOptions run;
   bool quiet = false;
-  app.add_option("--f", frequencies, "frequencies [kHz]: start:stop[:step] (step 0.01, stop included) or a,b,c; increasing")
+  app.add_option("--f", frequencies,
+                 "frequencies [kHz]: start:stop[:step] (step 0.01, stop included) or a,b,c; increasing")
       ->capture_default_str();
-  tool::add_integer(app, "--segments", segments, "chain pieces whose exponents give lyapunov_err (2 ... 1e6, at most N)");
-  tool::add_integer(app, "--threads", run.threads, "worker threads over blocks of frequencies (0 = all cores); output does not depend on it");
+  tool::add_integer(app, "--segments", segments,
+                    "chain pieces whose exponents give lyapunov_err (2 ... 1e6, at most N)");
+  tool::add_integer(app, "--threads", run.threads,
+                    "worker threads over blocks of frequencies (0 = all cores); output does not depend on it");
   app.add_option("--output", output, "prefix: writes PREFIX.csv and PREFIX.json")->capture_default_str();
   app.add_flag("--quiet", quiet, "no progress line and no final report on stderr");
 
-  return tool::run(app, argc, argv, [&] {
-    tool::Metadata meta("localization", argc, argv);
-    LocalizationScanConfig config;
-    config.frequency_khz = parse_number_list(frequencies, "--f", 0.01);
-    for (std::size_t k = 0; k < config.frequency_khz.size(); ++k) {
-      const double f = config.frequency_khz[k];
-      if (f < 0) throw InvalidInput("--f", " " + frequencies + ": frequency " + format_number(f) + " kHz is negative");
-      if (k > 0 && !(f > config.frequency_khz[k - 1]))
-        throw InvalidInput("--f", " " + frequencies + ": frequencies must increase (the DOS differences neighbours)");
-    }
-    if (segments < 2 || segments > 1000000)
-      throw InvalidInput("segments", " " + std::to_string(segments) + ": must be in [2, 1e6]");
-    if (run.threads < 0) throw InvalidInput("threads", " " + std::to_string(run.threads) + ": must be >= 0");
-    config.segments = static_cast<std::size_t>(segments);
-    const std::string csv_path = output + ".csv", json_path = output + ".json";
-    const tool::StreamedChain chain = tool::build_bead_source(chain_options);
-    validate(config);
-    check_writable(csv_path);
-    check_writable(json_path);
+  return tool::run(
+      app, argc, argv,
+      [&] {
+        tool::Metadata meta("localization", argc, argv);
+        LocalizationScanConfig config;
+        config.frequency_khz = parse_number_list(frequencies, "--f", 0.01);
+        for (std::size_t k = 0; k < config.frequency_khz.size(); ++k) {
+          const double f = config.frequency_khz[k];
+          if (f < 0)
+            throw InvalidInput("--f", " " + frequencies + ": frequency " + format_number(f) + " kHz is negative");
+          if (k > 0 && !(f > config.frequency_khz[k - 1]))
+            throw InvalidInput("--f",
+                               " " + frequencies + ": frequencies must increase (the DOS differences neighbours)");
+        }
+        if (segments < 2 || segments > 1000000)
+          throw InvalidInput("segments", " " + std::to_string(segments) + ": must be in [2, 1e6]");
+        if (run.threads < 0) throw InvalidInput("threads", " " + std::to_string(run.threads) + ": must be >= 0");
+        config.segments = static_cast<std::size_t>(segments);
+        const std::string csv_path = output + ".csv", json_path = output + ".json";
+        const tool::StreamedChain chain = tool::build_bead_source(chain_options);
+        validate(config);
+        check_writable(csv_path);
+        check_writable(json_path);
 
-    ProgressMeter progress(chain.source->size() * config.frequency_khz.size(), "localization", quiet ? 0 : -1);
-    run.progress = &progress;
-    const LocalizationScan scan = localization_scan(*chain.source, config, run);
-    progress.finish();
+        ProgressMeter progress(chain.source->size() * config.frequency_khz.size(), "localization", quiet ? 0 : -1);
+        run.progress = &progress;
+        const LocalizationScan scan = localization_scan(*chain.source, config, run);
+        progress.finish();
 
-    AtomicFile csv(csv_path);
-    CsvWriter table(csv.stream(), {"freq_khz", "lyapunov", "lyapunov_err", "loc_length", "idos", "dos"});
-    for (std::size_t k = 0; k < scan.frequency_khz.size(); ++k)
-      table.row(scan.frequency_khz[k], scan.lyapunov[k], scan.lyapunov_error[k], scan.localization_length[k],
-                scan.idos[k], scan.dos[k]);
-    meta["chain"] = chain.description;
-    meta["parameters"] = {{"frequencies_khz", frequencies},
-                          {"frequency_count", scan.frequency_khz.size()},
-                          {"segments", scan.segments},
-                          {"threads", resolve_threads(run.threads)}};
-    meta["columns"] = {
-        {"freq_khz", "frequency f [kHz]"},
-        {"lyapunov", "lambda = (1/N) ln ||(u_{N+1}, u_N)|| of the transfer-matrix recursion from u_0 = 0, u_1 = 1 [1/bead]"},
-        {"lyapunov_err", "standard error of lambda: sqrt(sum_s (lambda_s - mean)^2 / (S (S-1))) over S consecutive "
-                         "segments of the chain (batch means; valid for segments much longer than loc_length)"},
-        {"loc_length", "1/lambda [beads]; inf where lambda <= 0 (inside a band lambda is 0 up to O(1/N))"},
-        {"idos", "eigenfrequencies of this finite chain (fixed walls) below f, per bead (exact node count)"},
-        {"dos", "d idos/df by differences of neighbouring rows (central; one-sided at the ends) [1/(bead kHz)]"}};
-    if (chain.description.contains("xi")) {
-      const BandEdges e = band_edges(steel, chain_options.r1, chain_options.xi, chain_options.f0);
-      meta["band_edges_khz"] = {{"f1", e.f1 * 1e-3}, {"f2", e.f2 * 1e-3}, {"fb1", e.fb1 * 1e-3},
-                                {"fb2", e.fb2 * 1e-3}, {"fb3", e.fb3 * 1e-3}};
-    }
-    meta["output"] = csv_path;
-    meta.write(json_path, {&csv});
-  }, {{"frequencies", "--f"}});
+        AtomicFile csv(csv_path);
+        CsvWriter table(csv.stream(), {"freq_khz", "lyapunov", "lyapunov_err", "loc_length", "idos", "dos"});
+        for (std::size_t k = 0; k < scan.frequency_khz.size(); ++k)
+          table.row(scan.frequency_khz[k], scan.lyapunov[k], scan.lyapunov_error[k], scan.localization_length[k],
+                    scan.idos[k], scan.dos[k]);
+        meta["chain"] = chain.description;
+        meta["parameters"] = {{"frequencies_khz", frequencies},
+                              {"frequency_count", scan.frequency_khz.size()},
+                              {"segments", scan.segments},
+                              {"threads", resolve_threads(run.threads)}};
+        meta["columns"] = {
+            {"freq_khz", "frequency f [kHz]"},
+            {"lyapunov",
+             "lambda = (1/N) ln ||(u_{N+1}, u_N)|| of the transfer-matrix recursion from u_0 = 0, u_1 = 1 [1/bead]"},
+            {"lyapunov_err",
+             "standard error of lambda: sqrt(sum_s (lambda_s - mean)^2 / (S (S-1))) over S consecutive "
+             "segments of the chain (batch means; valid for segments much longer than loc_length)"},
+            {"loc_length", "1/lambda [beads]; inf where lambda <= 0 (inside a band lambda is 0 up to O(1/N))"},
+            {"idos", "eigenfrequencies of this finite chain (fixed walls) below f, per bead (exact node count)"},
+            {"dos", "d idos/df by differences of neighbouring rows (central; one-sided at the ends) [1/(bead kHz)]"}};
+        if (chain.description.contains("xi")) {
+          const BandEdges e = band_edges(steel, chain_options.r1, chain_options.xi, chain_options.f0);
+          meta["band_edges_khz"] = {{"f1", e.f1 * 1e-3},
+                                    {"f2", e.f2 * 1e-3},
+                                    {"fb1", e.fb1 * 1e-3},
+                                    {"fb2", e.fb2 * 1e-3},
+                                    {"fb3", e.fb3 * 1e-3}};
+        }
+        meta["output"] = csv_path;
+        meta.write(json_path, {&csv});
+      },
+      {{"frequencies", "--f"}});
 }

@@ -16,11 +16,12 @@
 
 int main(int argc, char** argv) {
   using namespace granular;
-  CLI::App app{"Linear spectrum of one precompressed chain: columns mode,freq_khz,ipr (modes numbered 1..N by\n"
-               "increasing frequency; IPR = sum v^4/(sum v^2)^2 of the displacement mode). Every mode by default;\n"
-               "--near KHZ --count K: the K modes nearest KHZ; --window F1:F2: every mode in [F1, F2] kHz.\n"
-               "Writes OUTPUT and OUTPUT with .json (parameters, band edges, solver report).",
-               "spectrum"};
+  CLI::App app{
+      "Linear spectrum of one precompressed chain: columns mode,freq_khz,ipr (modes numbered 1..N by\n"
+      "increasing frequency; IPR = sum v^4/(sum v^2)^2 of the displacement mode). Every mode by default;\n"
+      "--near KHZ --count K: the K modes nearest KHZ; --window F1:F2: every mode in [F1, F2] kHz.\n"
+      "Writes OUTPUT and OUTPUT with .json (parameters, band edges, solver report).",
+      "spectrum"};
   tool::describe_common(app);
   tool::ChainOptions chain_options;
   tool::add_chain_options(app, chain_options);
@@ -34,8 +35,10 @@ int main(int argc, char** argv) {
                  "bisect (Sturm bisection + inverse iteration, the fastest for long chains) | arpack | slepc\n"
                  "(shift-invert; slepc runs on every mpirun rank)")
       ->capture_default_str();
-  app.add_option("--tolerance", config.tolerance, "ARPACK/SLEPc Ritz tolerance (0 = tightest default)")->capture_default_str();
-  tool::add_integer(app, "--lanes", config.lanes, "bisect: eigenvectors computed together, 1..64 (memory 2 N x lanes doubles)");
+  app.add_option("--tolerance", config.tolerance, "ARPACK/SLEPc Ritz tolerance (0 = tightest default)")
+      ->capture_default_str();
+  tool::add_integer(app, "--lanes", config.lanes,
+                    "bisect: eigenvectors computed together, 1..64 (memory 2 N x lanes doubles)");
   app.add_option("--vectors", vectors_file, "also write the eigenvectors to this HDF5 file");
   app.add_option("--dump-matrix", dump_matrix,
                  "also write the dynamical matrix as raw little-endian doubles PREFIX.diag.f64 (N) and "
@@ -65,7 +68,8 @@ int main(int argc, char** argv) {
     }
     if (writer && !dump_matrix.empty()) {
       AtomicFile diag(dump_matrix + ".diag.f64"), off(dump_matrix + ".offdiag.f64");
-      diag.stream().write(reinterpret_cast<const char*>(d.diagonal.data()), static_cast<std::streamsize>(8 * d.diagonal.size()));
+      diag.stream().write(reinterpret_cast<const char*>(d.diagonal.data()),
+                          static_cast<std::streamsize>(8 * d.diagonal.size()));
       off.stream().write(reinterpret_cast<const char*>(d.off_diagonal.data()),
                          static_cast<std::streamsize>(8 * d.off_diagonal.size()));
       diag.commit();
@@ -85,14 +89,16 @@ int main(int argc, char** argv) {
       meta["selection"] = selection.kind == ModeSelection::Kind::nearest
                               ? nlohmann::json{{"near_khz", selection.near_khz}, {"count", selection.count}}
                               : nlohmann::json{{"window_khz", {selection.lo_khz, selection.hi_khz}}};
-      meta["solver"].update({{"restarts", result.info.restarts}, {"candidates", result.info.candidates},
-                             {"max_relative_residual", result.info.max_residual}, {"tolerance", config.tolerance},
+      meta["solver"].update({{"restarts", result.info.restarts},
+                             {"candidates", result.info.candidates},
+                             {"max_relative_residual", result.info.max_residual},
+                             {"tolerance", config.tolerance},
                              {"mpi_ranks", MpiContext::instance().size()}});
     }
     if (chain_description.contains("xi") && chain_options.f0 > 0) {
       const BandEdges e = band_edges(steel, chain_options.r1, chain_options.xi, chain_options.f0);
-      meta["band_edges_khz"] = {{"f1", e.f1 * 1e-3}, {"f2", e.f2 * 1e-3}, {"fb1", e.fb1 * 1e-3},
-                                {"fb2", e.fb2 * 1e-3}, {"fb3", e.fb3 * 1e-3}};
+      meta["band_edges_khz"] = {
+          {"f1", e.f1 * 1e-3}, {"f2", e.f2 * 1e-3}, {"fb1", e.fb1 * 1e-3}, {"fb2", e.fb2 * 1e-3}, {"fb3", e.fb3 * 1e-3}};
     }
     meta["output"] = output;
     if (!vectors_file.empty()) {

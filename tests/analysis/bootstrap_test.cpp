@@ -41,8 +41,9 @@ std::vector<double> exponent_of_mean(const std::vector<double>& t, const std::ve
 TEST(Bootstrap, ErrorOfTheEnsembleExponentIsSpreadOverRootR) {
   for (auto [realizations, spread] : {std::pair<std::size_t, double>{400, 0.1}, {100, 0.3}, {1000, 0.05}}) {
     const Synthetic s = power_laws(realizations, 1.5, spread, 11 + realizations);
-    const auto sd = bootstrap_standard_deviation(
-        s.rows, s.t.size(), [&](const std::vector<double>& mean) { return exponent_of_mean(s.t, mean); }, {});
+    const auto sd =
+        bootstrap_standard_deviation(s.rows, s.t.size(),
+                                     [&](const std::vector<double>& mean) { return exponent_of_mean(s.t, mean); }, {});
     const double analytic = spread / std::sqrt(static_cast<double>(realizations));
     EXPECT_NEAR(sd[0], analytic, 0.2 * analytic) << "R = " << realizations << ", s = " << spread;
     EXPECT_NEAR(sd[1], analytic, 0.2 * analytic) << "mean L_d, R = " << realizations;

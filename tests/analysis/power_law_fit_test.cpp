@@ -104,7 +104,8 @@ TEST(PowerLawFit, FlagsLogPeriodicModulationAsNotAPowerLaw) {
   // oscillates by ±0.3·2π/ln 2 ≈ ±2.7 around it.
   const auto t = log_times(1e-4, 1e-2, 400);
   std::vector<double> y;
-  for (double s : t) y.push_back(std::pow(s, 1.5) * (1 + 0.3 * std::sin(2 * std::numbers::pi * std::log(s) / std::log(2.0))));
+  for (double s : t)
+    y.push_back(std::pow(s, 1.5) * (1 + 0.3 * std::sin(2 * std::numbers::pi * std::log(s) / std::log(2.0))));
   const ExponentEstimate e = windowed_exponent(t, y, 4e-3, 1e-2);
   const PowerLawVerdict v = judge_power_law(t, y, e.value, {0.1, 4e-3});
   EXPECT_FALSE(v.power_law);

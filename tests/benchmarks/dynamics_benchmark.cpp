@@ -71,8 +71,8 @@ void BM_BareBondKernel(benchmark::State& state) {
     benchmark::DoNotOptimize(fp);
     benchmark::ClobberMemory();
   }
-  state.counters["bonds_per_s"] = benchmark::Counter(static_cast<double>(state.iterations()) * (beads + 1),
-                                                     benchmark::Counter::kIsRate);
+  state.counters["bonds_per_s"] =
+      benchmark::Counter(static_cast<double>(state.iterations()) * (beads + 1), benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_BareBondKernel);
 
@@ -181,7 +181,13 @@ void BM_CostAccuracyOdeint(benchmark::State& state) {
   state.counters["max_energy_error"] = max_error;
   state.counters["final_state_error"] = state_error;
 }
-BENCHMARK(BM_CostAccuracyOdeint)->ArgName("tau_ns")->Arg(2000)->Arg(1000)->Arg(500)->Unit(benchmark::kMillisecond)->MinTime(1.0);
+BENCHMARK(BM_CostAccuracyOdeint)
+    ->ArgName("tau_ns")
+    ->Arg(2000)
+    ->Arg(1000)
+    ->Arg(500)
+    ->Unit(benchmark::kMillisecond)
+    ->MinTime(1.0);
 
 // Cost–accuracy: every scheme at several τ (ns in the argument), window off so that the schemes
 // alone are compared; max energy error over 100 uniform samples and the final-state error

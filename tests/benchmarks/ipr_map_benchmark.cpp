@@ -15,11 +15,11 @@
 #include <string>
 #include <vector>
 
-#include "granular/linear/dynamical_matrix.hpp"
 #include "granular/linear/detail/lapack.hpp"
-#include "granular/linear/mode_ipr.hpp"
 #include "granular/linear/detail/mode_ipr_solver.hpp"
 #include "granular/linear/detail/twisted_ipr_solver.hpp"
+#include "granular/linear/dynamical_matrix.hpp"
+#include "granular/linear/mode_ipr.hpp"
 #include "granular/model/chain.hpp"
 #include "granular/model/disorder.hpp"
 
@@ -68,7 +68,8 @@ void BM_ModeIpr(benchmark::State& state, std::string method) {
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()));
   if (auto* fast = dynamic_cast<TwistedModeIpr*>(solver.get())) {
     const auto& info = fast->info();
-    state.counters["cluster_modes_per_solve"] = static_cast<double>(info.cluster_modes) / static_cast<double>(info.solves);
+    state.counters["cluster_modes_per_solve"] =
+        static_cast<double>(info.cluster_modes) / static_cast<double>(info.solves);
     state.counters["fallbacks"] = static_cast<double>(info.fallbacks);
   }
 }
@@ -91,8 +92,8 @@ void BM_ModeIprBatch(benchmark::State& state, std::string method) {
     benchmark::DoNotOptimize(ipr[0].data());
   }
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * batch));
-  state.counters["us_per_chain"] =
-      benchmark::Counter(static_cast<double>(state.iterations() * batch), benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+  state.counters["us_per_chain"] = benchmark::Counter(static_cast<double>(state.iterations() * batch),
+                                                      benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }
 
 void BM_EigenvaluesOnly(benchmark::State& state) {

@@ -27,7 +27,8 @@ const BeadSource& stored(std::size_t n) {
   static std::map<std::size_t, std::unique_ptr<BeadSource>> cache;
   auto& p = cache[n];
   if (!p)
-    p = chain_beads(make_chain(radii_of(realization_configuration(Disorder::anderson, 0.5, n, 1, 0), 4.76e-3, 0.5), 10.0));
+    p = chain_beads(
+        make_chain(radii_of(realization_configuration(Disorder::anderson, 0.5, n, 1, 0), 4.76e-3, 0.5), 10.0));
   return *p;
 }
 
@@ -45,31 +46,43 @@ void run(benchmark::State& state, const BeadSource& chain, int threads) {
 }
 
 void streamed(benchmark::State& state) {
-  const auto chain = random_beads(Disorder::anderson, {.N = static_cast<std::size_t>(state.range(1)), .q = 0.5, .seed = 1, .realization = 0});
+  const auto chain =
+      random_beads(Disorder::anderson,
+                   {.N = static_cast<std::size_t>(state.range(1)), .q = 0.5, .seed = 1, .realization = 0});
   run(state, *chain, 1);
 }
 void streamed_two_threads(benchmark::State& state) {
-  const auto chain = random_beads(Disorder::anderson, {.N = static_cast<std::size_t>(state.range(1)), .q = 0.5, .seed = 1, .realization = 0});
+  const auto chain =
+      random_beads(Disorder::anderson,
+                   {.N = static_cast<std::size_t>(state.range(1)), .q = 0.5, .seed = 1, .realization = 0});
   run(state, *chain, 2);
 }
 void stored_chain(benchmark::State& state) { run(state, stored(static_cast<std::size_t>(state.range(1))), 1); }
 
 /// The bead source alone: one pass over the chain in the kernel's pieces.
 void generate(benchmark::State& state) {
-  const auto chain = random_beads(Disorder::anderson, {.N = static_cast<std::size_t>(state.range(0)), .q = 0.5, .seed = 1, .realization = 0});
+  const auto chain =
+      random_beads(Disorder::anderson,
+                   {.N = static_cast<std::size_t>(state.range(0)), .q = 0.5, .seed = 1, .realization = 0});
   std::vector<double> m(1024), b(1025);
   for (auto _ : state)
     for (std::size_t p = 0; p < chain->size(); p += 1024) {
       chain->read(p, std::min<std::size_t>(1024, chain->size() - p), m.data(), b.data());
       benchmark::DoNotOptimize(m.data());
     }
-  state.counters["ns_per_bead"] = benchmark::Counter(static_cast<double>(state.range(0)) * 1e-9,
-                                                     benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+  state.counters["ns_per_bead"] =
+      benchmark::Counter(static_cast<double>(state.range(0)) * 1e-9,
+                         benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
 
 }  // namespace
 
-BENCHMARK(streamed)->Args({1, 1000000})->Args({16, 1000000})->Args({64, 1000000})->Args({1000, 1000000})->Unit(benchmark::kMillisecond);
+BENCHMARK(streamed)
+    ->Args({1, 1000000})
+    ->Args({16, 1000000})
+    ->Args({64, 1000000})
+    ->Args({1000, 1000000})
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK(stored_chain)->Args({64, 1000000})->Args({1000, 1000000})->Unit(benchmark::kMillisecond);
 BENCHMARK(streamed_two_threads)->Args({1000, 1000000})->Args({1000, 10000000})->Unit(benchmark::kMillisecond);
 BENCHMARK(generate)->Arg(1000000)->Unit(benchmark::kMillisecond);

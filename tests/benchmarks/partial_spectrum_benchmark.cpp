@@ -7,11 +7,11 @@
 
 #include <benchmark/benchmark.h>
 
+#include "granular/linear/detail/shift_invert_eigensolvers.hpp"
+#include "granular/linear/detail/sturm_bisection.hpp"
 #include "granular/linear/dynamical_matrix.hpp"
 #include "granular/linear/mode_ipr.hpp"
 #include "granular/linear/spectrum.hpp"
-#include "granular/linear/detail/shift_invert_eigensolvers.hpp"
-#include "granular/linear/detail/sturm_bisection.hpp"
 #include "granular/linear/tridiagonal_operator.hpp"
 #include "granular/model/named_chains.hpp"
 
@@ -37,8 +37,8 @@ void run(benchmark::State& state, SpectrumMethod method) {
     benchmark::DoNotOptimize(r.ipr.data());
   }
   state.counters["ns_per_bead"] =
-      benchmark::Counter(static_cast<double>(state.range(0)), benchmark::Counter::kIsIterationInvariantRate |
-                                                                   benchmark::Counter::kInvert);
+      benchmark::Counter(static_cast<double>(state.range(0)),
+                         benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
 
 void BM_partial_bisect(benchmark::State& s) { run(s, SpectrumMethod::bisect); }
@@ -66,7 +66,13 @@ void BM_shift_invert_factorize(benchmark::State& state) {
 
 }  // namespace
 
-BENCHMARK(BM_partial_bisect)->Arg(100000)->Arg(1000000)->Arg(10000000)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(3);
+BENCHMARK(BM_partial_bisect)
+    ->Arg(100000)
+    ->Arg(1000000)
+    ->Arg(10000000)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->Iterations(3);
 BENCHMARK(BM_partial_lapack)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
 BENCHMARK(BM_partial_arpack)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
 BENCHMARK(BM_partial_slepc)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);

@@ -6,16 +6,16 @@
 #include <cstdint>
 #include <span>
 
+#include "fixtures.hpp"
 #include "granular/dynamics/initial_conditions.hpp"
 #include "granular/dynamics/propagator.hpp"
 #include "granular/model/chain.hpp"
 #include "granular/model/disorder.hpp"
-#include "fixtures.hpp"
 
 namespace granular::fixtures {
 
-inline Chain disordered(Disorder disorder, std::size_t n, double f0, std::uint64_t realization = 0,
-                        double xi = 0.5, double q = 0.5) {
+inline Chain disordered(Disorder disorder, std::size_t n, double f0, std::uint64_t realization = 0, double xi = 0.5,
+                        double q = 0.5) {
   return make_chain(radii_of(realization_configuration(disorder, q, n, 1, realization), r1, xi), f0);
 }
 inline Chain anderson(std::size_t n, double f0, std::uint64_t realization = 0) {

@@ -12,8 +12,8 @@
 #include "granular/dynamics/observables.hpp"
 #include "granular/dynamics/spreading.hpp"
 #include "granular/error.hpp"
-#include "granular/linear/dynamical_matrix.hpp"
 #include "granular/linear/detail/lapack_eigensolver.hpp"
+#include "granular/linear/dynamical_matrix.hpp"
 
 namespace granular {
 namespace {
@@ -80,8 +80,8 @@ TEST(Spreading, HomogeneousPrecompressedChainIsBallistic) {
   config.dense = {4e-3, 1e-2, 1e-5};  // the study's fit grid
   const SpreadingResult r = run_spreading(chain, displacement_kick(chain, centre_site(1401), 1e-7), config);
   const ExponentReport fit = report_exponent(r.t, r.m2, 4e-3, 1e-2, {});
-  std::printf("  gamma = %.4f ± %.4f, max |L_d − gamma| = %.3f, wall energy %.2e\n", fit.fit.value,
-              fit.fit.error, fit.verdict.worst_deviation, r.wall_energy);
+  std::printf("  gamma = %.4f ± %.4f, max |L_d − gamma| = %.3f, wall energy %.2e\n", fit.fit.value, fit.fit.error,
+              fit.verdict.worst_deviation, r.wall_energy);
   EXPECT_NEAR(fit.fit.value, 2.0, 0.05);
   EXPECT_TRUE(fit.verdict.power_law);
   EXPECT_FALSE(r.reached_walls);
@@ -192,7 +192,8 @@ TEST(SpectralDensity, PeaksAtTheFrequencyOfAnExcitedMode) {
   config.duration = 5e-3;
   config.spectrum_samples = 2001;
   const SpreadingResult r = run_spreading(chain, s0, config);
-  const std::size_t peak = static_cast<std::size_t>(std::max_element(r.spectrum.begin(), r.spectrum.end()) - r.spectrum.begin());
+  const std::size_t peak =
+      static_cast<std::size_t>(std::max_element(r.spectrum.begin(), r.spectrum.end()) - r.spectrum.begin());
   const double expected = frequency_khz(e.values[static_cast<Eigen::Index>(mode)]);
   const double resolution = r.spectrum_khz[1];
   std::printf("  peak %.4f kHz, mode %.4f kHz, resolution %.4f kHz\n", r.spectrum_khz[peak], expected, resolution);
@@ -226,7 +227,8 @@ TEST(SpectralDensity, VelocitySpectrumShowsTheModesAPermanentStepBuries) {
     };
     const std::size_t at5 = static_cast<std::size_t>(std::lround(5.0 / u.spectrum_khz[1]));  // bin of 5 kHz
     std::printf("  F0 = %g N: displacement peak %.2f kHz, velocity peak %.2f kHz; g(5 kHz) %.2e vs %.2e\n", f0,
-                u.spectrum_khz[argmax(u.spectrum)], v.spectrum_khz[argmax(v.spectrum)], u.spectrum[at5], v.spectrum[at5]);
+                u.spectrum_khz[argmax(u.spectrum)], v.spectrum_khz[argmax(v.spectrum)], u.spectrum[at5],
+                v.spectrum[at5]);
     EXPECT_EQ(argmax(u.spectrum), 0u);
     EXPECT_GT(v.spectrum[at5], 10 * u.spectrum[at5]);  // measured 24× (10 N) and 48× (0 N)
     if (f0 > 0) {

@@ -1,9 +1,9 @@
 #include "granular/ensemble/checkpoint_log.hpp"
 
+#include <atomic>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <atomic>
 #include <limits>
 
 #include <gtest/gtest.h>
@@ -14,7 +14,8 @@ namespace granular {
 namespace {
 
 std::string temp_path(const char* name) {
-  return (std::filesystem::temp_directory_path() / (std::string("granular-ckpt-") + name + std::to_string(::getpid()))).string();
+  return (std::filesystem::temp_directory_path() / (std::string("granular-ckpt-") + name + std::to_string(::getpid())))
+      .string();
 }
 
 TEST(CheckpointLog, RoundTripsValuesExactlyAndResumes) {
@@ -59,9 +60,7 @@ TEST(CheckpointLog, IgnoresATornLastLineAndCorruptedRecords) {
   std::string edited = text;
   edited[second + 5] = '9';  // change a value of record 1: checksum mismatch
   edited += "2 2 5 6";       // a torn line without newline
-  {
-    std::ofstream(path, std::ios::trunc) << edited;
-  }
+  { std::ofstream(path, std::ios::trunc) << edited; }
   const CheckpointRecords resumed = CheckpointLog::load(path, "{}");
   EXPECT_EQ(resumed.size(), 1u);
   EXPECT_TRUE(resumed.count(0));
@@ -94,7 +93,9 @@ namespace {
 
 TEST(EnsembleRunner, ResumedRunSkipsFinishedRealizationsAndEqualsAFreshOne) {
   const std::string path = temp_path("runner");
-  auto work = [](std::uint64_t r, int) { return std::vector<double>{std::sqrt(static_cast<double>(r)), 1.0 / (1.0 + static_cast<double>(r))}; };
+  auto work = [](std::uint64_t r, int) {
+    return std::vector<double>{std::sqrt(static_cast<double>(r)), 1.0 / (1.0 + static_cast<double>(r))};
+  };
   EnsembleOptions fresh_options;
   fresh_options.realizations = 20;
   fresh_options.threads = 2;
@@ -110,7 +111,10 @@ TEST(EnsembleRunner, ResumedRunSkipsFinishedRealizationsAndEqualsAFreshOne) {
   resumed_options.threads = 1;
   resumed_options.checkpoint = path;
   resumed_options.resume = true;
-  const auto resumed = run_ensemble(resumed_options, [&](std::uint64_t r, int t) { ++computed; return work(r, t); });
+  const auto resumed = run_ensemble(resumed_options, [&](std::uint64_t r, int t) {
+    ++computed;
+    return work(r, t);
+  });
   EXPECT_EQ(computed.load(), 13);
   EXPECT_EQ(resumed, fresh);
   EXPECT_EQ(CheckpointLog::load(path, "{}").size(), 20u);  // the log now holds every realization
@@ -121,7 +125,9 @@ TEST(EnsembleRunner, ResumedRunSkipsFinishedRealizationsAndEqualsAFreshOne) {
 // realization starts, the ones already done stay in the log, and a resume gives the fresh rows.
 TEST(EnsembleRunner, CancelledRunKeepsFinishedRealizationsAndResumesToTheFreshResult) {
   const std::string path = temp_path("cancel");
-  auto work = [](std::uint64_t r, int) { return std::vector<double>{std::exp(-static_cast<double>(r)), static_cast<double>(r)}; };
+  auto work = [](std::uint64_t r, int) {
+    return std::vector<double>{std::exp(-static_cast<double>(r)), static_cast<double>(r)};
+  };
   EnsembleOptions options;
   options.realizations = 30;
   options.threads = 2;
@@ -130,7 +136,12 @@ TEST(EnsembleRunner, CancelledRunKeepsFinishedRealizationsAndResumesToTheFreshRe
   std::atomic<int> started{0};
   options.checkpoint = path;
   options.cancelled = [&] { return started.load() >= 9; };
-  EXPECT_THROW(run_ensemble(options, [&](std::uint64_t r, int t) { ++started; return work(r, t); }), Cancelled);
+  EXPECT_THROW(run_ensemble(options,
+                            [&](std::uint64_t r, int t) {
+                              ++started;
+                              return work(r, t);
+                            }),
+               Cancelled);
   const std::size_t kept = CheckpointLog::load(path, "{}").size();
   EXPECT_GE(kept, 9u);  // every started realization finished and was logged
   EXPECT_LT(kept, 30u);

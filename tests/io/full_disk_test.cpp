@@ -24,7 +24,8 @@ class FullDisk : public ::testing::Test {
     dir_ = std::filesystem::path(GRANULAR_BINARY_DIR) / ("full_disk_" + std::to_string(::getpid()));
     std::filesystem::create_directories(dir_);
     if (::geteuid() != 0 || ::mount("tmpfs", dir_.c_str(), "tmpfs", 0, "size=64k") != 0)
-      GTEST_SKIP() << "SKIPPED LOUDLY: mounting a 64 KiB tmpfs needs root (CAP_SYS_ADMIN); the full-disk checks did not run";
+      GTEST_SKIP()
+          << "SKIPPED LOUDLY: mounting a 64 KiB tmpfs needs root (CAP_SYS_ADMIN); the full-disk checks did not run";
     mounted_ = true;
   }
   void TearDown() override {

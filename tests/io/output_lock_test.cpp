@@ -62,7 +62,7 @@ TEST(OutputLock, AStaleLockOfAKilledProcessDoesNotBlock) {
   int status = 0;
   ::waitpid(child, &status, 0);
   EXPECT_TRUE(std::filesystem::exists(prefix + ".lock"));  // left behind by the kill
-  OutputLock resumed(prefix);                               // but the lock died with its process
+  OutputLock resumed(prefix);                              // but the lock died with its process
   ::close(ready[0]);
   ::close(ready[1]);
 }

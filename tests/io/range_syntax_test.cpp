@@ -20,7 +20,8 @@ TEST(RangeSyntax, RangesIncludeStopAndRoundCleanly) {
 }
 
 TEST(RangeSyntax, RejectsMalformedInputNamingTheOption) {
-  for (const char* bad : {"", "a", "1:", ":1", "1:2:0", "1:2:-1", "2:1", "1:2:3:4", "nan", "1,inf", "1,,2", "0.1:1:1e-9"}) {
+  for (const char* bad :
+       {"", "a", "1:", ":1", "1:2:0", "1:2:-1", "2:1", "1:2:3:4", "nan", "1,inf", "1,,2", "0.1:1:1e-9"}) {
     try {
       parse_number_list(bad, "--xi", 0.01, 1000);
       FAIL() << "accepted '" << bad << "'";

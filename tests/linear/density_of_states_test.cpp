@@ -17,7 +17,8 @@ namespace {
 
 std::vector<double> grid(double lo, double hi, double step) {
   std::vector<double> f;
-  for (long k = 0; lo + static_cast<double>(k) * step <= hi + 1e-9; ++k) f.push_back(lo + static_cast<double>(k) * step);
+  for (long k = 0; lo + static_cast<double>(k) * step <= hi + 1e-9; ++k)
+    f.push_back(lo + static_cast<double>(k) * step);
   return f;
 }
 
@@ -95,8 +96,8 @@ TEST(DensityOfStates, DifferencingIsCentralInsideAndOneSidedAtTheEnds) {
   std::vector<double> idos;
   for (double x : f) idos.push_back(x * x);  // central differences of x² at the midpoint of a symmetric pair are exact
   const auto dos = density_of_states(f, idos);
-  EXPECT_DOUBLE_EQ(dos[0], 0.5);                 // (0.25 − 0) / 0.5
-  EXPECT_DOUBLE_EQ(dos[1], 1.0);                 // (1 − 0) / 1
+  EXPECT_DOUBLE_EQ(dos[0], 0.5);  // (0.25 − 0) / 0.5
+  EXPECT_DOUBLE_EQ(dos[1], 1.0);  // (1 − 0) / 1
   EXPECT_DOUBLE_EQ(dos[2], (4 - 0.25) / 1.5);
   EXPECT_DOUBLE_EQ(dos[4], (16 - 4) / 2.0);
   EXPECT_TRUE(std::isnan(density_of_states({3}, {0.1})[0]));

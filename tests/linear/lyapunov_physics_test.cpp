@@ -21,7 +21,8 @@ TEST(LyapunovPhysics, AndersonChainLambdaGrowsAsFSquaredAtLowFrequency) {
   // (f⁴) terms make the slope ~2.01 here and ~2.03 on 0.5–5 kHz.
   std::vector<double> f;
   for (int k = 0; k <= 10; ++k) f.push_back(0.3 * std::pow(10.0, k / 10.0));
-  const auto scan = transfer_matrix_scan(*random_beads(Disorder::anderson, {.N = 10000000, .q = 0.5, .seed = 1, .realization = 0}), f);
+  const auto scan =
+      transfer_matrix_scan(*random_beads(Disorder::anderson, {.N = 10000000, .q = 0.5, .seed = 1, .realization = 0}), f);
   double sw = 0, sx = 0, sy = 0, sxx = 0, sxy = 0;
   for (std::size_t k = 0; k < f.size(); ++k) {
     ASSERT_GT(scan.lyapunov[k], 5 * scan.lyapunov_error[k]) << f[k] << " kHz";
@@ -60,7 +61,9 @@ TEST(LyapunovPhysics, EigenvectorsOfFiniteChainsDecayAtLambda) {
       modes.push_back(k);
       f.push_back(fk);
     }
-  const auto reference = transfer_matrix_scan(*random_beads(Disorder::anderson, {.N = reference_n, .q = 0.5, .seed = 7, .realization = 1}), f);
+  const auto reference =
+      transfer_matrix_scan(*random_beads(Disorder::anderson, {.N = reference_n, .q = 0.5, .seed = 7, .realization = 1}),
+                           f);
 
   std::vector<double> z;
   int skipped_floor = 0;

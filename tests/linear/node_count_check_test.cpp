@@ -60,7 +60,8 @@ void expect_same_modes(const Spectrum& got, const Spectrum& want) {
 TEST(NodeCountCheck, NormalRunsOfEveryMethodPassWithoutFallback) {
   for (Disorder dis : {Disorder::homogeneous, Disorder::rdm1, Disorder::rdm2}) {
     const auto d = chain(dis);
-    for (const auto& sel : {nearest(15.0, 12), window(20.0, 30.0), nearest(35.0, 5), nearest(0.0, 3), nearest(1000.0, 4)}) {
+    for (const auto& sel :
+         {nearest(15.0, 12), window(20.0, 30.0), nearest(35.0, 5), nearest(0.0, 3), nearest(1000.0, 4)}) {
       const auto ref = spectrum(d, sel);
       for (SpectrumMethod m : partial_methods()) {
         const auto s = spectrum(d, sel, {.method = m});

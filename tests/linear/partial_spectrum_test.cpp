@@ -21,10 +21,10 @@
 
 #include "granular/error.hpp"
 #include "granular/linear/band_edges.hpp"
-#include "granular/linear/dynamical_matrix.hpp"
 #include "granular/linear/detail/lapack_eigensolver.hpp"
-#include "granular/linear/mode_ipr.hpp"
 #include "granular/linear/detail/shift_invert_eigensolvers.hpp"
+#include "granular/linear/dynamical_matrix.hpp"
+#include "granular/linear/mode_ipr.hpp"
 #include "granular/linear/spectrum.hpp"
 #include "granular/model/named_chains.hpp"
 #include "granular/study/spectrum_file.hpp"
@@ -135,21 +135,22 @@ TEST_P(MethodsAgree, OnTwentyModesOfATenThousandBeadChain) {
 // band, so 10 kHz there). At a band edge: f1 = 18.0883 kHz (SPEC §3 table; the top of the
 // homogeneous spectrum) and, for RDM2, 15 kHz, whose nearest modes are the top of its lower band
 // (14.343–14.347 kHz at N = 1e4) — found through the gap, the hard case for shift-invert.
-INSTANTIATE_TEST_SUITE_P(
-    EveryDisorder, MethodsAgree,
-    ::testing::Values(Case{Disorder::homogeneous, 15.0, "h_inside", true},
-                      Case{Disorder::homogeneous, 18.0883, "h_edge", false},
-                      Case{Disorder::anderson, 15.0, "A_inside", true}, Case{Disorder::anderson, 18.0883, "A_edge", false},
-                      Case{Disorder::rdm1, 15.0, "RDM1_inside", true}, Case{Disorder::rdm1, 18.0883, "RDM1_edge", false},
-                      Case{Disorder::rdm2, 10.0, "RDM2_inside", true}, Case{Disorder::rdm2, 15.0, "RDM2_edge", false}),
-    [](const auto& info) { return std::string(info.param.label); });
+INSTANTIATE_TEST_SUITE_P(EveryDisorder, MethodsAgree,
+                         ::testing::Values(Case{Disorder::homogeneous, 15.0, "h_inside", true},
+                                           Case{Disorder::homogeneous, 18.0883, "h_edge", false},
+                                           Case{Disorder::anderson, 15.0, "A_inside", true},
+                                           Case{Disorder::anderson, 18.0883, "A_edge", false},
+                                           Case{Disorder::rdm1, 15.0, "RDM1_inside", true},
+                                           Case{Disorder::rdm1, 18.0883, "RDM1_edge", false},
+                                           Case{Disorder::rdm2, 10.0, "RDM2_inside", true},
+                                           Case{Disorder::rdm2, 15.0, "RDM2_edge", false}),
+                         [](const auto& info) { return std::string(info.param.label); });
 
 TEST(PartialSpectrum, EqualsTheRowsOfTheFullLapackSpectrum) {
   const DynamicalMatrix chain = make(Disorder::anderson, 2000, 7);
   const auto full = LapackEigensolver().solve(chain, true);
   const auto gaps = relative_gaps(full.values, chain.max_abs());
-  for (const auto& selection : {nearest(15.0, 25), window(20.0, 30.0),
-                                nearest(35.0, 7)}) {
+  for (const auto& selection : {nearest(15.0, 25), window(20.0, 30.0), nearest(35.0, 7)}) {
     for (SpectrumMethod m : all_methods()) {
       SpectrumConfig config;
       config.method = m;
@@ -225,8 +226,7 @@ TEST(PartialSpectrum, BadCountsAreErrorsAndEmptyWindowsAreEmpty) {
     const auto one = spectrum(chain, nearest(15, 1), config);
     ASSERT_EQ(one.size(), 1u);
     const double f = one.freq_khz[0];
-    EXPECT_EQ(spectrum(chain, window(f * (1 + 1e-9), f * (1 + 2e-9)), config).size(),
-              0u);
+    EXPECT_EQ(spectrum(chain, window(f * (1 + 1e-9), f * (1 + 2e-9)), config).size(), 0u);
   }
   // K = N: the whole spectrum, with LAPACK; the Krylov methods need K <= N - 1 and say so.
   SpectrumConfig config;
@@ -248,7 +248,8 @@ TEST(PartialSpectrum, WritesEigenvectorsToHdf5) {
   SpectrumConfig config;
   config.vectors = true;
   const auto p = spectrum(chain, nearest(20, 4), config);
-  const std::string path = std::string(GRANULAR_BINARY_DIR) + "/partial_spectrum_test.h5";;
+  const std::string path = std::string(GRANULAR_BINARY_DIR) + "/partial_spectrum_test.h5";
+  ;
   write_spectrum_hdf5(path, p, chain);
   const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
   ASSERT_GE(file, 0);
@@ -263,7 +264,8 @@ TEST(PartialSpectrum, WritesEigenvectorsToHdf5) {
   std::vector<double> data(4 * 300);
   ASSERT_GE(H5Dread(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()), 0);
   for (int j = 0; j < 4; ++j) {
-    EXPECT_DOUBLE_EQ(displacement_ipr(&data[j * 300], chain.inverse_sqrt_mass.data(), 300), p.ipr[j]);  // row j is mode j
+    EXPECT_DOUBLE_EQ(displacement_ipr(&data[j * 300], chain.inverse_sqrt_mass.data(), 300),
+                     p.ipr[j]);  // row j is mode j
     EXPECT_DOUBLE_EQ(data[j * 300 + 17], p.vector(static_cast<std::size_t>(j))[17]);
   }
   H5Sclose(space);

@@ -7,7 +7,6 @@
 #include "granular/error.hpp"
 #include "granular/linear/band_edges.hpp"
 #include "granular/model/contact_law.hpp"
-#include "granular/model/contact_law.hpp"
 
 namespace granular {
 namespace {
@@ -20,7 +19,7 @@ TEST(BandEdges, MatchSpecTableWithin1e3Khz) {
   const std::pair<const char*, double> computed[] = {
       {"f1", e.f1}, {"f2", e.f2}, {"fb1", e.fb1}, {"fb2", e.fb2}, {"fb3", e.fb3}};
   for (const auto& [name, hz] : computed) {
-    EXPECT_NEAR(hz * 1e-3, reference(name).value, 1e-3) << name;               // the tolerance
+    EXPECT_NEAR(hz * 1e-3, reference(name).value, 1e-3) << name;                       // the tolerance
     EXPECT_NEAR(hz * 1e-3, reference(name).value, reference(name).tolerance) << name;  // its printed digits
   }
 }
@@ -51,7 +50,8 @@ TEST(WeakNonlinearity, FpuCoefficientsAreTheHertzTaylorSeries) {
   const FpuCoefficients b = fpu_coefficients(a, f0);
   EXPECT_NEAR((force(h) - force(-h)) / (2 * h), b.b1, 1e-6 * b.b1);
   EXPECT_NEAR((force(h) - 2 * force(0) + force(-h)) / (2 * h * h), b.b2, 1e-5 * b.b2);
-  EXPECT_NEAR((force(2 * h) - 2 * force(h) + 2 * force(-h) - force(-2 * h)) / (12 * h * h * h), b.b3, 1e-4 * std::fabs(b.b3));
+  EXPECT_NEAR((force(2 * h) - 2 * force(h) + 2 * force(-h) - force(-2 * h)) / (12 * h * h * h), b.b3,
+              1e-4 * std::fabs(b.b3));
 }
 
 TEST(WeakNonlinearity, HertzIsNeverModulationallyUnstable) {
@@ -61,8 +61,10 @@ TEST(WeakNonlinearity, HertzIsNeverModulationallyUnstable) {
 
 TEST(WeakNonlinearity, NonlinearityRatioTable) {
   const double a11 = hertz_coefficient(steel, r1, steel, r1);
-  const std::pair<const char*, double> table[] = {{"epsilon_F0_10", 10},   {"epsilon_F0_1", 1},
-                                                  {"epsilon_F0_0.5", 0.5}, {"epsilon_F0_0.1", 0.1},
+  const std::pair<const char*, double> table[] = {{"epsilon_F0_10", 10},
+                                                  {"epsilon_F0_1", 1},
+                                                  {"epsilon_F0_0.5", 0.5},
+                                                  {"epsilon_F0_0.1", 0.1},
                                                   {"epsilon_F0_0.01", 0.01}};
   for (const auto& [name, f0] : table)
     EXPECT_NEAR(nonlinearity_ratio(1e-7, a11, f0), reference(name).value, reference(name).tolerance) << name;

@@ -5,18 +5,18 @@
 #include <limits>
 #include <numbers>
 
-#include <Eigen/Dense>
 #include <gtest/gtest.h>
+#include <Eigen/Dense>
 
 #include "granular/linear/spectrum.hpp"
 
 #include "fixtures.hpp"
 #include "granular/error.hpp"
 #include "granular/linear/band_edges.hpp"
-#include "granular/linear/dynamical_matrix.hpp"
 #include "granular/linear/detail/lapack_eigensolver.hpp"
-#include "granular/linear/mode_ipr.hpp"
 #include "granular/linear/detail/mode_ipr_solver.hpp"
+#include "granular/linear/dynamical_matrix.hpp"
+#include "granular/linear/mode_ipr.hpp"
 
 namespace granular {
 namespace {
@@ -44,7 +44,8 @@ TEST(Spectrum, HomogeneousChainWithBulkWallsIsExact) {
     const double top = std::sqrt(4 * b / c.mass[0]) / (2 * std::numbers::pi) * 1e-3;
     const Modes m = modes_of(c);
     for (std::size_t k = 1; k <= n; ++k) {
-      const double exact = top * std::sin(static_cast<double>(k) * std::numbers::pi / (2.0 * static_cast<double>(n + 1)));
+      const double exact =
+          top * std::sin(static_cast<double>(k) * std::numbers::pi / (2.0 * static_cast<double>(n + 1)));
       EXPECT_NEAR(m.freq_khz[k - 1], exact, 1e-10 * exact) << "N=" << n << " k=" << k;
     }
   }
@@ -168,7 +169,8 @@ TEST(Spectrum, NonFiniteMatrixIsRejectedNotAHang) {
   DynamicalMatrix d;
   static_cast<SymTridiagonal&>(d) = t;
   d.inverse_sqrt_mass = {1.0, 1.0, 1.0};
-  for (auto method : {SpectrumMethod::lapack, SpectrumMethod::fast}) EXPECT_THROW(spectrum(d, all_modes(), {.method = method}), InvalidInput);
+  for (auto method : {SpectrumMethod::lapack, SpectrumMethod::fast})
+    EXPECT_THROW(spectrum(d, all_modes(), {.method = method}), InvalidInput);
   EXPECT_THROW(spectrum(d, nearest(1e-3, 1), {.method = SpectrumMethod::bisect}), InvalidInput);
   t.diagonal[1] = 1.0;
   t.off_diagonal[0] = std::numeric_limits<double>::infinity();

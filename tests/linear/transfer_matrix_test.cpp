@@ -119,7 +119,8 @@ TEST(TransferMatrix, FlatWallsChangeLambdaOnlyByOneOverN) {
   // Flat walls (stiffer end bonds) change the starting vector, not the growth rate.
   const std::vector<double> f{20, 30};
   for (std::size_t n : {10000u, 100000u}) {
-    const auto flat = transfer_matrix_scan(*random_beads(Disorder::homogeneous, {.N = n, .q = 0.5, .seed = 1, .realization = 0}), f);
+    const auto flat =
+        transfer_matrix_scan(*random_beads(Disorder::homogeneous, {.N = n, .q = 0.5, .seed = 1, .realization = 0}), f);
     const auto bulk_walls = transfer_matrix_scan(*chain_beads(fixtures::homogeneous_bulk_walls(n)), f);
     for (std::size_t k = 0; k < f.size(); ++k) {
       const double shift = (flat.lyapunov[k] - bulk_walls.lyapunov[k]) * double(n);  // an N-independent constant
@@ -137,8 +138,8 @@ TEST(TransferMatrix, DiatomicChainMatchesTheUnitCell) {
   const std::vector<double> cell{c.m1, c.m2};
   const PeriodicBeads chain(cell, c.b12, n);
   // acoustic band, gap, optical band, above; the band edges themselves ± 0.01 kHz
-  const std::vector<double> f{2,  8,  11.5, fb1 - 0.01, fb1 + 0.01, 13, 20, 30, fb2 - 0.01, fb2 + 0.01, 34.5, 35.5,
-                              fb3 - 0.01, fb3 + 0.01, 37, 40, 50};
+  const std::vector<double> f{2,          8,    11.5, fb1 - 0.01, fb1 + 0.01, 13, 20, 30, fb2 - 0.01,
+                              fb2 + 0.01, 34.5, 35.5, fb3 - 0.01, fb3 + 0.01, 37, 40, 50};
   const TransferMatrixScan scan = transfer_matrix_scan(chain, f);
   int gap = 0, bands = 0, limit_checks = 0;
   for (std::size_t k = 0; k < f.size(); ++k) {
@@ -193,9 +194,12 @@ TEST(TransferMatrix, ErrorShrinksLikeOneOverRootN) {
   // Anderson chain at 15 kHz (ℓ of a few beads): the segment error falls ~ N^{-1/2}, and chains
   // of other realizations agree with each other within a few errors.
   const std::vector<double> f{15};
-  const auto small = transfer_matrix_scan(*random_beads(Disorder::anderson, {.N = 100000, .q = 0.5, .seed = 1, .realization = 0}), f);
-  const auto large = transfer_matrix_scan(*random_beads(Disorder::anderson, {.N = 1600000, .q = 0.5, .seed = 1, .realization = 0}), f);
-  const auto other = transfer_matrix_scan(*random_beads(Disorder::anderson, {.N = 1600000, .q = 0.5, .seed = 1, .realization = 1}), f);
+  const auto small =
+      transfer_matrix_scan(*random_beads(Disorder::anderson, {.N = 100000, .q = 0.5, .seed = 1, .realization = 0}), f);
+  const auto large =
+      transfer_matrix_scan(*random_beads(Disorder::anderson, {.N = 1600000, .q = 0.5, .seed = 1, .realization = 0}), f);
+  const auto other =
+      transfer_matrix_scan(*random_beads(Disorder::anderson, {.N = 1600000, .q = 0.5, .seed = 1, .realization = 1}), f);
   EXPECT_NEAR(small.lyapunov_error[0] / large.lyapunov_error[0], 4.0, 1.2);
   const double combined = std::hypot(large.lyapunov_error[0], other.lyapunov_error[0]);
   EXPECT_LT(std::fabs(large.lyapunov[0] - other.lyapunov[0]), 4 * combined);

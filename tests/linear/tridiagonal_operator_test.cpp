@@ -7,9 +7,9 @@
 #include <gtest/gtest.h>
 
 #include "granular/error.hpp"
-#include "granular/linear/dynamical_matrix.hpp"
 #include "granular/linear/detail/lapack_eigensolver.hpp"
 #include "granular/linear/detail/sturm_bisection.hpp"
+#include "granular/linear/dynamical_matrix.hpp"
 #include "granular/linear/tridiagonal_operator.hpp"
 #include "granular/model/chain.hpp"
 #include "granular/model/disorder.hpp"

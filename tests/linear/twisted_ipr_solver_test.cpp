@@ -32,10 +32,10 @@
 #include <Eigen/Eigenvalues>
 
 #include "granular/error.hpp"
-#include "granular/linear/dynamical_matrix.hpp"
-#include "granular/linear/mode_ipr.hpp"
 #include "granular/linear/detail/mode_ipr_solver.hpp"
 #include "granular/linear/detail/twisted_ipr_solver.hpp"
+#include "granular/linear/dynamical_matrix.hpp"
+#include "granular/linear/mode_ipr.hpp"
 #include "granular/model/chain.hpp"
 #include "granular/model/disorder.hpp"
 #include "granular/model/random_stream.hpp"
@@ -43,11 +43,11 @@
 namespace granular {
 namespace {
 
-constexpr double ipr_tolerance = 1e-10;      // outside tight clusters
-constexpr double cluster_relgap = 1e-4;      // tight cluster: relgap below this
-constexpr double conditioned_relgap = 1e-10; // below this: any basis
+constexpr double ipr_tolerance = 1e-10;       // outside tight clusters
+constexpr double cluster_relgap = 1e-4;       // tight cluster: relgap below this
+constexpr double conditioned_relgap = 1e-10;  // below this: any basis
 constexpr double conditioning_constant = 1e-14;
-constexpr double freq_tolerance = 1e-12;     // relative, for ω² ≥ 1e-3 max ω²
+constexpr double freq_tolerance = 1e-12;  // relative, for ω² ≥ 1e-3 max ω²
 constexpr double low_mode_fraction = 1e-3;
 constexpr double omega2_abs_tolerance = 1e-13;  // |Δω²| / max ω², all modes
 
@@ -135,7 +135,8 @@ std::vector<PairIpr> localized_pairs(const Reference& r) {
     const double phi = 0.5 * (std::sqrt(5.0) - 1);
     for (int it = 0; it < 80; ++it) {
       const double m1 = hi - phi * (hi - lo), m2 = lo + phi * (hi - lo);
-      if (objective(m1) > objective(m2)) hi = m2; else lo = m1;
+      if (objective(m1) > objective(m2)) hi = m2;
+      else lo = m1;
     }
     const double t = 0.5 * (lo + hi), c = std::cos(t), sn = std::sin(t);
     std::vector<double> p(x.size()), q(x.size());
@@ -238,8 +239,8 @@ TEST(TwistedModeIpr, AgreesWithStevrAndDenseEigenOnRandomChains) {
         const auto types = realization_configuration(disorder, q, n, 99, r);
         const Reference ref = make_reference(make_chain(radii_of(types, 4.76e-3, xi), 10.0));
         const Solution got = solve(fast, ref);
-        const std::string what = to_string(disorder) + " q=" + std::to_string(q) + " xi=" + std::to_string(xi) +
-                                 " r=" + std::to_string(r);
+        const std::string what =
+            to_string(disorder) + " q=" + std::to_string(q) + " xi=" + std::to_string(xi) + " r=" + std::to_string(r);
         compare(got, ref.stevr, "fast vs stevr, " + what, vs_stevr);
         compare(got, dense_eigen(ref), "fast vs Eigen, " + what, vs_eigen);
         pairs += check_pairs(got.ipr, ref, "fast, " + what);
@@ -252,12 +253,13 @@ TEST(TwistedModeIpr, AgreesWithStevrAndDenseEigenOnRandomChains) {
   EXPECT_GT(vs_stevr.checked_strict, 50u * chains);
   RecordProperty("worst_ipr_vs_stevr", std::to_string(vs_stevr.worst_strict));
   RecordProperty("worst_ipr_vs_eigen", std::to_string(vs_eigen.worst_strict));
-  std::printf("[ info ] %zu chains; IPR modes checked to 1e-10: %zu, to 1e-14/relgap: %zu, in clusters: %zu\n"
-              "[ info ] worst |dIPR| vs stevr %.3g, vs Eigen %.3g; worst |dIPR|*relgap %.3g / %.3g;\n"
-              "[ info ] worst rel. freq %.3g / %.3g; worst |dw2|/max w2 %.3g / %.3g\n",
-              chains, vs_stevr.checked_strict, vs_stevr.checked_conditioned, vs_stevr.clustered,
-              vs_stevr.worst_strict, vs_eigen.worst_strict, vs_stevr.worst_conditioned, vs_eigen.worst_conditioned,
-              vs_stevr.worst_freq, vs_eigen.worst_freq, vs_stevr.worst_abs, vs_eigen.worst_abs);
+  std::printf(
+      "[ info ] %zu chains; IPR modes checked to 1e-10: %zu, to 1e-14/relgap: %zu, in clusters: %zu\n"
+      "[ info ] worst |dIPR| vs stevr %.3g, vs Eigen %.3g; worst |dIPR|*relgap %.3g / %.3g;\n"
+      "[ info ] worst rel. freq %.3g / %.3g; worst |dw2|/max w2 %.3g / %.3g\n",
+      chains, vs_stevr.checked_strict, vs_stevr.checked_conditioned, vs_stevr.clustered, vs_stevr.worst_strict,
+      vs_eigen.worst_strict, vs_stevr.worst_conditioned, vs_eigen.worst_conditioned, vs_stevr.worst_freq,
+      vs_eigen.worst_freq, vs_stevr.worst_abs, vs_eigen.worst_abs);
 }
 
 // The default ipr-map grid (Anderson, ξ = 0.1:1:0.01, q = 0.2/0.5/0.8) against dstevr, a few

@@ -19,10 +19,10 @@ TEST(ConfigurationFile, NamesTheLineOfABadValue) {
   } catch (const InvalidInput& e) {
     EXPECT_NE(std::string(e.what()).find("chain.txt:3"), std::string::npos) << e.what();
   }
-  EXPECT_THROW(parse_configuration_text("1\n", "t"), InvalidInput);                 // one bead
-  EXPECT_THROW(parse_configuration_text("", "t"), InvalidInput);                    // empty
+  EXPECT_THROW(parse_configuration_text("1\n", "t"), InvalidInput);                       // one bead
+  EXPECT_THROW(parse_configuration_text("", "t"), InvalidInput);                          // empty
   EXPECT_THROW(parse_configuration_text(std::string("1\n\0\n2", 5), "t"), InvalidInput);  // binary
-  EXPECT_THROW(parse_configuration_text("1 2\n1\n", "t"), InvalidInput);            // two per line
+  EXPECT_THROW(parse_configuration_text("1 2\n1\n", "t"), InvalidInput);                  // two per line
 }
 
 TEST(ConfigurationFile, ReadsRadii) {

@@ -27,7 +27,10 @@ TEST(Correlation, TheoryLimits) {
 // Ensemble means against the infinite-chain formulas. The tolerance comes from the ensemble:
 // 5 standard errors of the mean, plus the O(1/N) bias of a Pearson coefficient computed with
 // the sample mean on a finite ring (|bias| ≲ 2/N for these short-range processes).
-struct Case { Disorder kind; double q; };
+struct Case {
+  Disorder kind;
+  double q;
+};
 class CorrelationEnsemble : public ::testing::TestWithParam<Case> {};
 
 TEST_P(CorrelationEnsemble, MeanMatchesTheory) {
@@ -36,7 +39,10 @@ TEST_P(CorrelationEnsemble, MeanMatchesTheory) {
   std::vector<double> sum(dmax + 1), sum2(dmax + 1);
   for (std::size_t r = 0; r < realizations; ++r) {
     const auto rho = cyclic_correlation(realization_configuration(kind, q, n, 11, r), dmax);
-    for (std::size_t d = 0; d <= dmax; ++d) { sum[d] += rho[d]; sum2[d] += rho[d] * rho[d]; }
+    for (std::size_t d = 0; d <= dmax; ++d) {
+      sum[d] += rho[d];
+      sum2[d] += rho[d] * rho[d];
+    }
   }
   const double rr = static_cast<double>(realizations);
   for (std::size_t d = 0; d <= dmax; ++d) {
@@ -52,7 +58,8 @@ INSTANTIATE_TEST_SUITE_P(Kinds, CorrelationEnsemble,
                                            Case{Disorder::rdm1, 0.5}, Case{Disorder::rdm1, 0.8},
                                            Case{Disorder::rdm2, 0.5}, Case{Disorder::rdm2, 0.8}),
                          [](const auto& info) {
-                           return to_string(info.param.kind) + "_q" + std::to_string(static_cast<int>(info.param.q * 10));
+                           return to_string(info.param.kind) + "_q" +
+                                  std::to_string(static_cast<int>(info.param.q * 10));
                          });
 
 }  // namespace

@@ -31,7 +31,10 @@ TEST(Disorder, AndersonFrequencyOfType1IsQ) {
   for (double q : {0.2, 0.5, 0.8}) {
     std::size_t ones = 0, total = 0;
     for (std::uint64_t r = 0; r < 40; ++r)
-      for (auto t : realization_configuration(Disorder::anderson, q, 1000, 1, r)) { ones += t == 1; ++total; }
+      for (auto t : realization_configuration(Disorder::anderson, q, 1000, 1, r)) {
+        ones += t == 1;
+        ++total;
+      }
     const double p = static_cast<double>(ones) / static_cast<double>(total);
     const double sigma = std::sqrt(q * (1 - q) / static_cast<double>(total));
     EXPECT_NEAR(p, q, 5 * sigma) << "q = " << q;

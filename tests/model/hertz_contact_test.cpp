@@ -30,7 +30,8 @@ TEST(HertzContact, SphereWallUsesTheSphereRadiusNotHalfOfIt) {
   EXPECT_NEAR(by_hand, ref.value, ref.tolerance);
   EXPECT_NEAR(hertz_coefficient(steel, flat_wall, steel, r1), ref.value, ref.tolerance);
   EXPECT_DOUBLE_EQ(hertz_coefficient(steel, r1, steel, flat_wall), hertz_coefficient(steel, flat_wall, steel, r1));
-  EXPECT_NEAR(hertz_coefficient(steel, flat_wall, steel, r1) / hertz_coefficient(steel, r1, steel, r1), std::sqrt(2.0), 1e-15);
+  EXPECT_NEAR(hertz_coefficient(steel, flat_wall, steel, r1) / hertz_coefficient(steel, r1, steel, r1), std::sqrt(2.0),
+              1e-15);
 }
 
 TEST(HertzContact, MixedMaterialsFollowTheGeneralFormula) {
@@ -45,7 +46,8 @@ TEST(HertzContact, MixedMaterialsFollowTheGeneralFormula) {
   };
   EXPECT_NEAR(hertz_coefficient(brass, ra, ptfe, rb), textbook(brass, ptfe, reff), 1e-12 * textbook(brass, ptfe, reff));
   EXPECT_NEAR(hertz_coefficient(ptfe, rb, brass, ra), textbook(brass, ptfe, reff), 1e-12 * textbook(brass, ptfe, reff));
-  EXPECT_NEAR(hertz_coefficient(brass, flat_wall, steel, ra), textbook(brass, steel, ra), 1e-12 * textbook(brass, steel, ra));
+  EXPECT_NEAR(hertz_coefficient(brass, flat_wall, steel, ra), textbook(brass, steel, ra),
+              1e-12 * textbook(brass, steel, ra));
   EXPECT_NEAR(hertz_coefficient(steel, ra, steel, rb), same_material(193e9, 0.3, reff), 1e-3);
 
   // A chain of alternating steel and brass beads between PTFE walls: every bond by hand.

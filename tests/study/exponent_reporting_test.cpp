@@ -64,7 +64,7 @@ TEST(PaperComparison, ReadsTableIFromData) {
   ASSERT_EQ(table.size(), 40u);
   int stars = 0;
   for (const auto& c : table) stars += c.starred;
-  EXPECT_EQ(stars, 4);  // displacement kick, A and RDM2, at 10 and 0.5 N
+  EXPECT_EQ(stars, 4);                 // displacement kick, A and RDM2, at 10 and 0.5 N
   const PaperCell& sonic = table[37];  // velocity, 0, A
   EXPECT_EQ(sonic.kick, Kick::velocity);
   EXPECT_EQ(sonic.precompression, 0.0);
@@ -96,7 +96,8 @@ TEST(PaperComparison, ZScoresByHand) {
   cell.summary.exponents = e;
   cell.summary.realizations = 125;
   const PaperCell paper{Kick::velocity, 0, Disorder::anderson, 1.763, 0.012, false};
-  const auto rows = compare_with_paper({cell}, {paper, PaperCell{Kick::velocity, 10, Disorder::anderson, 1.457, 0.011, false}});
+  const auto rows =
+      compare_with_paper({cell}, {paper, PaperCell{Kick::velocity, 10, Disorder::anderson, 1.457, 0.011, false}});
   ASSERT_EQ(rows.size(), 1u);  // the 10 N cell is not in our run
   const double p2 = 0.0005 * 0.0005 / 3;
   EXPECT_NEAR(rows[0].site.z_window, 0.037 / std::sqrt(0.0001 + 0.000144 + p2), 1e-9);
@@ -110,15 +111,18 @@ TEST(PaperComparison, ZScoresByHand) {
   h.summary.exponents->gamma_site.fit = {2.0003, 0.0, {}};
   h.summary.exponents->gamma_site.verdict.power_law = true;
   h.summary.realizations = 1;
-  const auto homogeneous = compare_with_paper({h}, {PaperCell{Kick::velocity, 0, Disorder::homogeneous, 2.0, 0.0, false}});
+  const auto homogeneous =
+      compare_with_paper({h}, {PaperCell{Kick::velocity, 0, Disorder::homogeneous, 2.0, 0.0, false}});
   ASSERT_EQ(homogeneous.size(), 1u);
   EXPECT_NEAR(homogeneous[0].site.z, 0.0003 / std::sqrt(p2), 1e-6);
   std::ostringstream csv;
   write_comparison_csv(csv, rows);
-  EXPECT_EQ(csv.str().substr(0, csv.str().find('\n')),
-            "ic,F0,disorder,paper_gamma,paper_err,paper_star,realizations,site_gamma,site_err,site_real_err,site_star,"
-            "site_z_window,site_z,centroid_gamma,centroid_err,centroid_real_err,centroid_star,centroid_z_window,centroid_z");
-  EXPECT_NE(markdown_comparison(rows).find("|z| ≤ 2 in 1 of 1 cells about the site, 1 about the centroid"), std::string::npos);
+  EXPECT_EQ(
+      csv.str().substr(0, csv.str().find('\n')),
+      "ic,F0,disorder,paper_gamma,paper_err,paper_star,realizations,site_gamma,site_err,site_real_err,site_star,"
+      "site_z_window,site_z,centroid_gamma,centroid_err,centroid_real_err,centroid_star,centroid_z_window,centroid_z");
+  EXPECT_NE(markdown_comparison(rows).find("|z| ≤ 2 in 1 of 1 cells about the site, 1 about the centroid"),
+            std::string::npos);
 }
 
 }  // namespace

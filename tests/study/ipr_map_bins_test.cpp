@@ -39,11 +39,10 @@ TEST(IprMapBins, NoBulkModeInTheDiatomicGap) {
     if (lo > fb1 && hi < fb2) {
       ++inside;
       in_gap += cells[0].bin_modes[b];
-      if (cells[0].bin_modes[b] == 0)
-        EXPECT_TRUE(std::isnan(cells[0].bin_ipr[b]));
+      if (cells[0].bin_modes[b] == 0) EXPECT_TRUE(std::isnan(cells[0].bin_ipr[b]));
       else
-        EXPECT_GT(cells[0].bin_ipr[b], 0.2) << "bin [" << lo << ", " << hi << ") kHz in the gap (" << fb1 << ", " << fb2
-                                            << ") holds an extended mode";
+        EXPECT_GT(cells[0].bin_ipr[b], 0.2)
+            << "bin [" << lo << ", " << hi << ") kHz in the gap (" << fb1 << ", " << fb2 << ") holds an extended mode";
     }
   }
   EXPECT_GT(inside, 50u);
@@ -96,7 +95,8 @@ TEST(IprMapBins, IdenticalForOneAndTwoThreads) {
     EXPECT_EQ(one[i].bin_modes, two[i].bin_modes);
     ASSERT_EQ(one[i].bin_ipr.size(), two[i].bin_ipr.size());
     for (std::size_t b = 0; b < one[i].bin_ipr.size(); ++b)
-      EXPECT_TRUE(one[i].bin_ipr[b] == two[i].bin_ipr[b] || (std::isnan(one[i].bin_ipr[b]) && std::isnan(two[i].bin_ipr[b])));
+      EXPECT_TRUE(one[i].bin_ipr[b] == two[i].bin_ipr[b] ||
+                  (std::isnan(one[i].bin_ipr[b]) && std::isnan(two[i].bin_ipr[b])));
   }
 }
 

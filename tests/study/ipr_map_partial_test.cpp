@@ -4,9 +4,9 @@
 
 #include "granular/error.hpp"
 #include "granular/linear/dynamical_matrix.hpp"
-#include "granular/study/ipr_map.hpp"
 #include "granular/linear/spectrum.hpp"
 #include "granular/model/named_chains.hpp"
+#include "granular/study/ipr_map.hpp"
 
 namespace granular {
 namespace {

@@ -21,9 +21,7 @@ TEST_P(BadInputTest, ExitsTwoWithOneLineAndNoOutput) {
   const BadInput& b = GetParam();
   const std::string dir = scratch_folder("bad");
   const std::string fresh = dir + "/fresh.csv", existing = dir + "/existing.csv";
-  {
-    std::ofstream(existing) << "precious\n";
-  }
+  { std::ofstream(existing) << "precious\n"; }
   for (const std::string& out : {fresh, existing}) {
     const ToolResult r = run_tool(b.tool, std::string(b.args) + " --output " + out);
     EXPECT_EQ(r.exit_code, 2) << r.err;

@@ -17,7 +17,8 @@ namespace granular::testing {
 namespace {
 
 const std::string job =
-    "--N 201 --T 1e-3 --fit 4e-4:1e-3 --samples 30 --F0 10,0.1 --chains h,A,RDM2 --bootstrap 200 --compare-paper --quiet";
+    "--N 201 --T 1e-3 --fit 4e-4:1e-3 --samples 30 --F0 10,0.1 --chains h,A,RDM2 --bootstrap 200 --compare-paper "
+    "--quiet";
 
 // Every output but the JSON (which holds the command line and the wall time).
 std::string outputs(const std::string& prefix) {
@@ -65,7 +66,8 @@ TEST(ExponentsTool, KilledRunResumesToTheSameBytes) {
   const std::string prefix = dir + "/cut";
   const pid_t child = fork();
   if (child == 0) {
-    const std::string command = "exec " + tool_path("exponents") + " " + args + " --output " + prefix + " >/dev/null 2>&1";
+    const std::string command =
+        "exec " + tool_path("exponents") + " " + args + " --output " + prefix + " >/dev/null 2>&1";
     execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
     _exit(127);
   }
@@ -98,9 +100,7 @@ TEST(ExponentsTool, KilledRunResumesToTheSameBytes) {
 
 TEST(ExponentsTool, RefusesACheckpointOfOtherParameters) {
   const std::string dir = scratch_folder("exp-params");
-  {
-    std::ofstream(dir + "/x.checkpoint.0") << "granular-checkpoint 1 {\"F0_N\":99}\n";
-  }
+  { std::ofstream(dir + "/x.checkpoint.0") << "granular-checkpoint 1 {\"F0_N\":99}\n"; }
   const ToolResult r = run_tool("exponents", job + " --realizations 2 --resume --output " + dir + "/x");
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("different parameters"), std::string::npos) << r.err;
@@ -112,14 +112,18 @@ TEST(ExponentsTool, RefusesACheckpointOfOtherParameters) {
 TEST(ExponentsTool, BadInputNamesTheFlag) {
   const std::string dir = scratch_folder("exp-bad");
   const std::string base = "--N 51 --T 1e-4 --fit 2e-5:1e-4 --realizations 2 --F0 1 --quiet --output " + dir + "/x ";
-  for (auto [args, flag] : {std::pair{"--chains RDM3", "--chains"}, {"--chains A --fit-step 3e-6 --dt 2e-6", "--fit-step"},
-                            {"--chains A --centre middle", "--centre"}, {"--chains A --t-star nan", "--t-star"},
-                            {"--chains A --bootstrap 0", "--bootstrap"}, {"--chains A --ic both", "--ic"}}) {
+  for (auto [args, flag] : {std::pair{"--chains RDM3", "--chains"},
+                            {"--chains A --fit-step 3e-6 --dt 2e-6", "--fit-step"},
+                            {"--chains A --centre middle", "--centre"},
+                            {"--chains A --t-star nan", "--t-star"},
+                            {"--chains A --bootstrap 0", "--bootstrap"},
+                            {"--chains A --ic both", "--ic"}}) {
     const ToolResult r = run_tool("exponents", base + args);
     EXPECT_EQ(r.exit_code, 2) << args << ": " << r.err;
     EXPECT_NE(r.err.find(flag), std::string::npos) << args << ": " << r.err;
   }
-  const ToolResult missing = run_tool("exponents", base + "--chains A --compare-paper --paper-table /nonexistent/t.csv");
+  const ToolResult missing =
+      run_tool("exponents", base + "--chains A --compare-paper --paper-table /nonexistent/t.csv");
   EXPECT_EQ(missing.exit_code, 1) << missing.err;
   EXPECT_FALSE(std::filesystem::exists(dir + "/x.csv"));
   std::filesystem::remove_all(dir);
@@ -129,16 +133,19 @@ TEST(ExponentsTool, BadInputNamesTheFlag) {
 // error sources; JSON holding the values used.
 TEST(ExponentsTool, CsvCarriesBothCentresAndBothErrorSources) {
   const std::string dir = scratch_folder("exp-columns");
-  const ToolResult r = run_tool("exponents", "--N 201 --T 1e-3 --fit 4e-4:1e-3 --F0 10 --chains A --ic velocity "
-                                             "--realizations 4 --bootstrap 100 --quiet --output " + dir + "/x");
+  const ToolResult r = run_tool("exponents",
+                                "--N 201 --T 1e-3 --fit 4e-4:1e-3 --F0 10 --chains A --ic velocity "
+                                "--realizations 4 --bootstrap 100 --quiet --output " +
+                                    dir + "/x");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const std::string csv = read_file(dir + "/x.csv");
-  EXPECT_EQ(csv.substr(0, csv.find('\n')),
-            "ic,F0,disorder,centre,gamma,gamma_err,gamma_real_err,gamma_star,gamma_fit,gamma_fit_err,gamma_fit_real_err,"
-            "gamma_mean_ld,gamma_mean_ld_err,gamma_mean_ld_real_err,worst_deviation_m2,other_centre,gamma_other,"
-            "gamma_other_err,gamma_other_real_err,gamma_other_star,gamma_other_fit,gamma_other_mean_ld,eta,eta_err,"
-            "eta_real_err,eta_star,eta_fit,eta_fit_err,eta_fit_real_err,eta_mean_ld,eta_mean_ld_err,eta_mean_ld_real_err,"
-            "worst_deviation_ipr,realizations,max_energy_error,reached_walls");
+  EXPECT_EQ(
+      csv.substr(0, csv.find('\n')),
+      "ic,F0,disorder,centre,gamma,gamma_err,gamma_real_err,gamma_star,gamma_fit,gamma_fit_err,gamma_fit_real_err,"
+      "gamma_mean_ld,gamma_mean_ld_err,gamma_mean_ld_real_err,worst_deviation_m2,other_centre,gamma_other,"
+      "gamma_other_err,gamma_other_real_err,gamma_other_star,gamma_other_fit,gamma_other_mean_ld,eta,eta_err,"
+      "eta_real_err,eta_star,eta_fit,eta_fit_err,eta_fit_real_err,eta_mean_ld,eta_mean_ld_err,eta_mean_ld_real_err,"
+      "worst_deviation_ipr,realizations,max_energy_error,reached_walls");
   EXPECT_NE(csv.find("\nvelocity,10,A,site,"), std::string::npos) << csv;
   const auto meta = nlohmann::json::parse(read_file(dir + "/x.json"));
   const auto& c = meta["cases"][0];
@@ -152,7 +159,8 @@ TEST(ExponentsTool, CsvCarriesBothCentresAndBothErrorSources) {
 // One default for every physical choice: the same case gives the same numbers from both tools.
 TEST(ExponentsTool, SameCaseSameNumbersAsSpreading) {
   const std::string dir = scratch_folder("exp-spreading");
-  const std::string common = "--N 201 --T 1e-3 --fit 4e-4:1e-3 --F0 0.1 --ic velocity --realizations 5 --bootstrap 100 --quiet";
+  const std::string common =
+      "--N 201 --T 1e-3 --fit 4e-4:1e-3 --F0 0.1 --ic velocity --realizations 5 --bootstrap 100 --quiet";
   ASSERT_EQ(run_tool("exponents", common + " --chains RDM1 --output " + dir + "/e").exit_code, 0);
   ASSERT_EQ(run_tool("spreading", common + " --disorder RDM1 --output " + dir + "/s").exit_code, 0);
   const auto meta = nlohmann::json::parse(read_file(dir + "/s.json"));
@@ -164,8 +172,8 @@ TEST(ExponentsTool, SameCaseSameNumbersAsSpreading) {
   std::stringstream fields(row);
   for (std::string cell; std::getline(fields, cell, ',');) cells.push_back(cell);
   ASSERT_GT(cells.size(), 25u);
-  EXPECT_EQ(std::stod(cells[4]), meta["gamma"].get<double>());            // gamma (shown)
-  EXPECT_EQ(std::stod(cells[6]), meta["gamma_real_err"].get<double>());   // its bootstrap error
+  EXPECT_EQ(std::stod(cells[4]), meta["gamma"].get<double>());           // gamma (shown)
+  EXPECT_EQ(std::stod(cells[6]), meta["gamma_real_err"].get<double>());  // its bootstrap error
   EXPECT_EQ(std::stod(cells[22]), meta["eta"].get<double>());
   EXPECT_EQ(meta["parameters"]["beta_m_s"], 8e-3);
   std::filesystem::remove_all(dir);

@@ -20,23 +20,72 @@ struct Tool {
 
 const std::vector<Tool>& tools() {
   static const std::vector<Tool> all = {
-      {"ipr-map", {{"--N", "10"}, {"--xi", "0.5"}, {"--q", "0.5"}, {"--realizations", "2"}},
+      {"ipr-map",
+       {{"--N", "10"}, {"--xi", "0.5"}, {"--q", "0.5"}, {"--realizations", "2"}},
        {"--N", "--F0", "--R1", "--realizations", "--seed", "--threads", "--xi", "--q"}},
       {"spectrum", {{"--N", "10"}}, {"--xi", "--q", "--N", "--F0", "--R1", "--seed", "--realization"}},
-      {"correlations", {{"--N", "20"}, {"--realizations", "3"}, {"--max-distance", "3"}},
+      {"correlations",
+       {{"--N", "20"}, {"--realizations", "3"}, {"--max-distance", "3"}},
        {"--q", "--N", "--realizations", "--seed", "--max-distance", "--threads"}},
-      {"spreading", {{"--N", "51"}, {"--T", "1e-4"}, {"--fit", "2e-5:1e-4"}, {"--samples", "20"}},
-       {"--xi", "--q", "--N", "--F0", "--R1", "--seed", "--realization", "--alpha", "--T", "--dt", "--samples",
-        "--force-samples", "--map-samples", "--map-stride", "--spectrum-samples", "--window-threshold",
-        "--reference-max-step", "--max-energy-error", "--kappa", "--realizations", "--threads", "--site",
-        "--fit-step", "--t-star", "--bootstrap"}},
+      {"spreading",
+       {{"--N", "51"}, {"--T", "1e-4"}, {"--fit", "2e-5:1e-4"}, {"--samples", "20"}},
+       {"--xi",
+        "--q",
+        "--N",
+        "--F0",
+        "--R1",
+        "--seed",
+        "--realization",
+        "--alpha",
+        "--T",
+        "--dt",
+        "--samples",
+        "--force-samples",
+        "--map-samples",
+        "--map-stride",
+        "--spectrum-samples",
+        "--window-threshold",
+        "--reference-max-step",
+        "--max-energy-error",
+        "--kappa",
+        "--realizations",
+        "--threads",
+        "--site",
+        "--fit-step",
+        "--t-star",
+        "--bootstrap"}},
       {"exponents",
-       {{"--N", "51"}, {"--T", "1e-4"}, {"--fit", "2e-5:1e-4"}, {"--samples", "20"}, {"--realizations", "2"},
-        {"--chains", "A"}, {"--F0", "1"}, {"--ic", "displacement"}},
-       {"--N", "--site", "--xi", "--q", "--T", "--dt", "--alpha", "--realizations", "--seed", "--samples", "--kappa",
-        "--profile-realizations", "--threads", "--F0", "--beta", "--fit-step", "--t-star", "--bootstrap",
-        "--window-threshold", "--reference-max-step", "--max-energy-error"}},
-      {"localization", {{"--N", "1000"}, {"--f", "1:5"}},
+       {{"--N", "51"},
+        {"--T", "1e-4"},
+        {"--fit", "2e-5:1e-4"},
+        {"--samples", "20"},
+        {"--realizations", "2"},
+        {"--chains", "A"},
+        {"--F0", "1"},
+        {"--ic", "displacement"}},
+       {"--N",
+        "--site",
+        "--xi",
+        "--q",
+        "--T",
+        "--dt",
+        "--alpha",
+        "--realizations",
+        "--seed",
+        "--samples",
+        "--kappa",
+        "--profile-realizations",
+        "--threads",
+        "--F0",
+        "--beta",
+        "--fit-step",
+        "--t-star",
+        "--bootstrap",
+        "--window-threshold",
+        "--reference-max-step",
+        "--max-energy-error"}},
+      {"localization",
+       {{"--N", "1000"}, {"--f", "1:5"}},
        {"--xi", "--q", "--N", "--F0", "--R1", "--seed", "--realization", "--segments", "--threads"}},
   };
   return all;
@@ -68,7 +117,8 @@ std::vector<Case> matrix() {
   }
   const std::string data = GRANULAR_DATA_DIR;
   for (const char* tool : {"spectrum", "spreading", "localization"}) {
-    const Tool& t = *std::find_if(tools().begin(), tools().end(), [&](const Tool& x) { return x.name == std::string(tool); });
+    const Tool& t =
+        *std::find_if(tools().begin(), tools().end(), [&](const Tool& x) { return x.name == std::string(tool); });
     auto base = t.baseline;
     base.erase("--N");
     const Tool fileless{t.name, base, {}};
@@ -104,10 +154,8 @@ TEST_P(InputRejection, ExitCodeOneLineNoOutput) {
   replace("@BINARY@", dir + "/binary.txt");
   if (c.args.find("@TRUNCATED@") != std::string::npos) {
     // …a radius cut mid-number ("4.7e"), a type file cut inside a multi-byte character.
-    if (c.args.find("--radii") != std::string::npos)
-      std::ofstream(dir + "/truncated.txt") << "4.76e-3\n4.76e-3\n4.7e";
-    else
-      std::ofstream(dir + "/truncated.txt") << "1\n2\n\xE2\x88";
+    if (c.args.find("--radii") != std::string::npos) std::ofstream(dir + "/truncated.txt") << "4.76e-3\n4.76e-3\n4.7e";
+    else std::ofstream(dir + "/truncated.txt") << "1\n2\n\xE2\x88";
     replace("@TRUNCATED@", dir + "/truncated.txt");
     c.names = "truncated.txt:3";
   }
@@ -138,8 +186,9 @@ TEST_P(InputRejection, ExitCodeOneLineNoOutput) {
   std::filesystem::remove_all(dir);
 }
 
-INSTANTIATE_TEST_SUITE_P(AllTools, InputRejection, ::testing::ValuesIn(matrix()),
-                         [](const auto& info) { return std::string(info.param.tool == "ipr-map" ? "ipr_map" : info.param.tool) + "_" + std::to_string(info.index); });
+INSTANTIATE_TEST_SUITE_P(AllTools, InputRejection, ::testing::ValuesIn(matrix()), [](const auto& info) {
+  return std::string(info.param.tool == "ipr-map" ? "ipr_map" : info.param.tool) + "_" + std::to_string(info.index);
+});
 
 TEST(InputRejectionMatrix, Size) {
   std::printf("[ info ] input-rejection matrix: %zu inputs over %zu tools\n", matrix().size(), tools().size());

@@ -15,7 +15,8 @@ TEST(IprMapTool, SameSeedIsByteIdenticalForOneAndTwoThreads) {
   ASSERT_EQ(run_tool("ipr-map", small_job + " --seed 5 --threads 1 --output " + dir + "/t1.csv").exit_code, 0);
   ASSERT_EQ(run_tool("ipr-map", small_job + " --seed 5 --threads 2 --output " + dir + "/t2.csv").exit_code, 0);
   ASSERT_EQ(run_tool("ipr-map", small_job + " --seed 6 --threads 2 --output " + dir + "/s6.csv").exit_code, 0);
-  const std::string one = read_file(dir + "/t1.csv"), two = read_file(dir + "/t2.csv"), other = read_file(dir + "/s6.csv");
+  const std::string one = read_file(dir + "/t1.csv"), two = read_file(dir + "/t2.csv"),
+                    other = read_file(dir + "/s6.csv");
   EXPECT_EQ(one.substr(0, one.find('\n')), "disorder,q,xi,mode,freq_khz,ipr");
   EXPECT_EQ(std::count(one.begin(), one.end(), '\n'), 1 + 2 * 3 * 24);
   EXPECT_EQ(one, two);
@@ -29,7 +30,11 @@ TEST(IprMapTool, OneHomogeneousRealizationEqualsTheSpectrumTool) {
   // Same solver as `spectrum` (LAPACK) so the digits can match; ipr-map's default `fast` solver
   // agrees to ~1e-12 (tests/linear/twisted_ipr_solver_test.cpp), not to the last digit.
   const std::string dir = scratch_folder("ipr-h");
-  ASSERT_EQ(run_tool("ipr-map", "--disorder h --N 12 --xi 1 --q 0.5 --realizations 1 --solver lapack --quiet --output " + dir + "/h.csv").exit_code, 0);
+  ASSERT_EQ(run_tool("ipr-map",
+                     "--disorder h --N 12 --xi 1 --q 0.5 --realizations 1 --solver lapack --quiet --output " + dir +
+                         "/h.csv")
+                .exit_code,
+            0);
   ASSERT_EQ(run_tool("spectrum", "--disorder h --N 12 --xi 1 --output " + dir + "/s.csv").exit_code, 0);
   std::istringstream map(read_file(dir + "/h.csv")), spec(read_file(dir + "/s.csv"));
   std::string a, b;
@@ -55,15 +60,20 @@ namespace {
 // of realization r equal `spectrum --near` on realization r of the same seed.
 TEST(IprMapTool, PartialSelectionMatchesSpectrumPerRealization) {
   const std::string dir = scratch_folder("ipr-partial");
-  const std::string job = "--disorder RDM1 --N 3000 --xi 0.5 --q 0.5 --realizations 3 --near 15 --count 4 --method bisect --quiet";
+  const std::string job =
+      "--disorder RDM1 --N 3000 --xi 0.5 --q 0.5 --realizations 3 --near 15 --count 4 --method bisect --quiet";
   ASSERT_EQ(run_tool("ipr-map", job + " --threads 1 --output " + dir + "/t1.csv").exit_code, 0);
   ASSERT_EQ(run_tool("ipr-map", job + " --threads 2 --output " + dir + "/t2.csv").exit_code, 0);
   const std::string map = read_file(dir + "/t1.csv");
   EXPECT_EQ(map, read_file(dir + "/t2.csv"));
   EXPECT_EQ(map.substr(0, map.find('\n')), "disorder,q,xi,realization,mode,freq_khz,ipr");
   EXPECT_EQ(std::count(map.begin(), map.end(), '\n'), 1 + 3 * 4);
-  ASSERT_EQ(run_tool("spectrum", "--disorder RDM1 --N 3000 --xi 0.5 --q 0.5 --realization 2 --near 15 --count 4 "
-                                 "--method bisect --output " + dir + "/s.csv").exit_code, 0);
+  ASSERT_EQ(run_tool("spectrum",
+                     "--disorder RDM1 --N 3000 --xi 0.5 --q 0.5 --realization 2 --near 15 --count 4 "
+                     "--method bisect --output " +
+                         dir + "/s.csv")
+                .exit_code,
+            0);
   std::istringstream rows(map), spectrum(read_file(dir + "/s.csv"));
   std::string row, line;
   std::getline(spectrum, line);

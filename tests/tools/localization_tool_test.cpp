@@ -94,13 +94,20 @@ TEST(LocalizationTool, FilesGiveTheSameChainAsTheRandomRealization) {
     for (double v : radii) r << format_number(v) << "\n";
   }
   const std::string common = " --xi 0.6 --f 1:40:1 --quiet --output ";
-  ASSERT_EQ(run_tool("localization", "--disorder RDM2 --q 0.3 --N 5000 --seed 4 --realization 2" + common + dir + "/random").exit_code, 0);
+  ASSERT_EQ(run_tool("localization",
+                     "--disorder RDM2 --q 0.3 --N 5000 --seed 4 --realization 2" + common + dir + "/random")
+                .exit_code,
+            0);
   ASSERT_EQ(run_tool("localization", "--config " + dir + "/chain.types" + common + dir + "/types").exit_code, 0);
   ASSERT_EQ(run_tool("localization", "--radii " + dir + "/chain.radii" + common + dir + "/radii").exit_code, 0);
   const std::string random = read_file(dir + "/random.csv");
   EXPECT_EQ(random, read_file(dir + "/types.csv"));
   EXPECT_EQ(random, read_file(dir + "/radii.csv"));
-  EXPECT_EQ(run_tool("localization", "--config " GRANULAR_DATA_DIR "/examples/diatomic-10.types --xi 0.5 --f 1:40:1 --quiet --output " + dir + "/d").exit_code, 0);
+  EXPECT_EQ(run_tool("localization", "--config " GRANULAR_DATA_DIR
+                                     "/examples/diatomic-10.types --xi 0.5 --f 1:40:1 --quiet --output " +
+                                         dir + "/d")
+                .exit_code,
+            0);
   std::filesystem::remove_all(dir);
 }
 
@@ -135,20 +142,30 @@ struct BadInput {
 TEST(LocalizationTool, BadInputExitsTwoWithOneLineAndNoOutput) {
   const std::string dir = scratch_folder("loc-bad");
   const std::vector<BadInput> cases = {
-      {"--f 3,2", "--f"},           {"--f -1:5", "--f"},         {"--f 5:1", "--f"},
-      {"--f abc", "--f"},           {"--f nan", "--f"},          {"--f 1:2:0", "--f"},
-      {"--N 1", "--N"},             {"--N 2.5", "--N"},          {"--N 1e13", "--N"},
-      {"--N abc", "--N"},           {"--F0 0", "--F0"},          {"--F0 -1", "--F0"},
-      {"--xi 0", "--xi"},           {"--q 2", "--q"},            {"--disorder X", "--disorder"},
-      {"--segments 1", "--segments"}, {"--threads -1", "--threads"}, {"--seed -1", "--seed"},
+      {"--f 3,2", "--f"},
+      {"--f -1:5", "--f"},
+      {"--f 5:1", "--f"},
+      {"--f abc", "--f"},
+      {"--f nan", "--f"},
+      {"--f 1:2:0", "--f"},
+      {"--N 1", "--N"},
+      {"--N 2.5", "--N"},
+      {"--N 1e13", "--N"},
+      {"--N abc", "--N"},
+      {"--F0 0", "--F0"},
+      {"--F0 -1", "--F0"},
+      {"--xi 0", "--xi"},
+      {"--q 2", "--q"},
+      {"--disorder X", "--disorder"},
+      {"--segments 1", "--segments"},
+      {"--threads -1", "--threads"},
+      {"--seed -1", "--seed"},
       {"--config /nonexistent/c.types", "/nonexistent/c.types"},
       {"--radii /nonexistent/r.radii", "/nonexistent/r.radii"},
       {"--config a --radii b", "--config"},
   };
   for (const BadInput& c : cases) {
-    {
-      std::ofstream(dir + "/old.csv") << "precious\n";
-    }
+    { std::ofstream(dir + "/old.csv") << "precious\n"; }
     for (const std::string out : {"/new", "/old"}) {
       std::string baseline;  // a quick valid run, for the options the case leaves alone
       if (c.args.find("--N ") == std::string::npos) baseline += " --N 1000";

@@ -1,9 +1,9 @@
 // The spreading tool's contract (DESIGN.md): outputs and their columns, and bad input →
 // one line on stderr naming the option, exit code 2, no output file.
-#include <algorithm>
-#include <cstdio>
 #include <sys/wait.h>
 #include <unistd.h>
+#include <algorithm>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -12,8 +12,8 @@
 
 #include <gtest/gtest.h>
 
-#include "tool_runner.hpp"
 #include <nlohmann/json.hpp>
+#include "tool_runner.hpp"
 
 namespace {
 
@@ -40,10 +40,11 @@ std::string first_line(const fs::path& file) {
 
 TEST(SpreadingTool, WritesEveryOutputWithTheContractColumns) {
   const fs::path dir = fresh_dir("ok");
-  const ToolRun r = run_spreading("--N 201 --T 2.5e-3 --dt 1e-6 --samples 50 --fit 1e-3:2.5e-3 --output out --final-state final.csv "
-                              "--profile --forces-at 90,101,111 --force-samples 20 --energy-map map.h5 --map-samples 10 "
-                              "--spectrum spectrum.csv --spectrum-samples 100 --ic velocity --beta match",
-                              dir);
+  const ToolRun r = run_spreading(
+      "--N 201 --T 2.5e-3 --dt 1e-6 --samples 50 --fit 1e-3:2.5e-3 --output out --final-state final.csv "
+      "--profile --forces-at 90,101,111 --force-samples 20 --energy-map map.h5 --map-samples 10 "
+      "--spectrum spectrum.csv --spectrum-samples 100 --ic velocity --beta match",
+      dir);
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_EQ(first_line(dir / "out.csv"), "t,m2,ipr,energy_error,m2_centroid");
   EXPECT_EQ(first_line(dir / "final.csv"), "site,u,v,energy");
@@ -73,8 +74,10 @@ TEST(SpreadingTool, WritesEveryOutputWithTheContractColumns) {
 // the velocities is named as such.
 TEST(SpreadingTool, JsonHoldsTheKickUsedAndTheSpectrumSeries) {
   const fs::path dir = fresh_dir("kick");
-  const ToolRun r = run_spreading("--disorder h --N 101 --F0 0 --T 2e-4 --fit 1e-4:2e-4 --ic velocity --output out "
-                                  "--spectrum g.csv --spectrum-samples 64 --spectrum-of velocity --quiet", dir);
+  const ToolRun r = run_spreading(
+      "--disorder h --N 101 --F0 0 --T 2e-4 --fit 1e-4:2e-4 --ic velocity --output out "
+      "--spectrum g.csv --spectrum-samples 64 --spectrum-of velocity --quiet",
+      dir);
   ASSERT_EQ(r.code, 0) << r.err;
   std::ifstream json(dir / "out.json");
   const auto meta = nlohmann::json::parse(json);
@@ -103,7 +106,8 @@ TEST(SpreadingTool, ReadsAConfigurationFile) {
     c << "# a short dimer chain\n";
     for (int i = 0; i < 60; ++i) c << (i % 2 ? "2\n" : "1\n");
   }
-  const ToolRun r = run_spreading("--config chain.txt --xi 0.5 --T 2e-4 --samples 10 --output out --final-state f.csv", dir);
+  const ToolRun r =
+      run_spreading("--config chain.txt --xi 0.5 --T 2e-4 --samples 10 --output out --final-state f.csv", dir);
   ASSERT_EQ(r.code, 0) << r.err;
   std::ifstream in(dir / "f.csv");
   std::string line;
@@ -124,7 +128,8 @@ class SpreadingToolBadInput : public ::testing::TestWithParam<BadInput> {};
 
 TEST_P(SpreadingToolBadInput, ExitsWithCode2AndWritesNothing) {
   const fs::path dir = fresh_dir("bad");
-  const ToolRun r = run_spreading(std::string("--N 101 --T 1e-4 --output out --final-state final.csv ") + GetParam().args, dir);
+  const ToolRun r =
+      run_spreading(std::string("--N 101 --T 1e-4 --output out --final-state final.csv ") + GetParam().args, dir);
   EXPECT_EQ(r.code, 2) << r.err;
   EXPECT_NE(r.err.find(GetParam().names), std::string::npos) << r.err;
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
@@ -134,23 +139,22 @@ TEST_P(SpreadingToolBadInput, ExitsWithCode2AndWritesNothing) {
 
 INSTANTIATE_TEST_SUITE_P(
     Cases, SpreadingToolBadInput,
-    ::testing::Values(BadInput{"--dt 0", "--dt"}, BadInput{"--dt -1e-6", "--dt"}, BadInput{"--T 0", "--T"},
-                      BadInput{"--T -1", "--T"}, BadInput{"--T 1.5e-6 --dt 1e-6", "--T"}, BadInput{"--site -1", "--site"},
-                      BadInput{"--site 102", "--site"}, BadInput{"--alpha 5e-3", "--alpha"},
-                      BadInput{"--alpha 0", "--alpha"}, BadInput{"--disorder X", "disorder"}, BadInput{"--q 1.5", "q"},
-                      BadInput{"--xi 0", "xi"}, BadInput{"--N 1", "--N"}, BadInput{"--F0 -1", "--F0"},
-                      BadInput{"--config missing.txt", "missing.txt"}, BadInput{"--force-law fpu --F0 0", "--force-law"},
-                      BadInput{"--force-law cubic", "--force-law"}, BadInput{"--integrator rk4", "--integrator"},
-                      BadInput{"--realizations 0", "--realizations"},
-                      BadInput{"--realizations 2 --config x.txt", "--config"}, BadInput{"--resume", "--resume"},
-                      BadInput{"--threads -2", "--threads"}, BadInput{"--forces-at 0", "--forces-at"},
-                      BadInput{"--ic velocity --beta abc", "--beta"}, BadInput{"--ic push", "--ic"},
-                      BadInput{"--samples 1", "--samples"}, BadInput{"--fit 4e-5:1e-4 --fit-step 5e-5", "--fit"},
-                      BadInput{"--fit 4e-5:1e-4 --fit-step 1.5e-6", "--fit-step"}, BadInput{"--t-star -1", "--t-star"},
-                      BadInput{"--bootstrap 1", "--bootstrap"}, BadInput{"--centre middle", "--centre"},
-                      BadInput{"--spectrum s.csv --spectrum-of force", "--spectrum-of"}, BadInput{"--fit 2e-3:1e-3", "--fit"},
-                      BadInput{"--active-window maybe", "--active-window"},
-                      BadInput{"--spectrum out.csv", "two outputs"}),
+    ::testing::Values(
+        BadInput{"--dt 0", "--dt"}, BadInput{"--dt -1e-6", "--dt"}, BadInput{"--T 0", "--T"}, BadInput{"--T -1", "--T"},
+        BadInput{"--T 1.5e-6 --dt 1e-6", "--T"}, BadInput{"--site -1", "--site"}, BadInput{"--site 102", "--site"},
+        BadInput{"--alpha 5e-3", "--alpha"}, BadInput{"--alpha 0", "--alpha"}, BadInput{"--disorder X", "disorder"},
+        BadInput{"--q 1.5", "q"}, BadInput{"--xi 0", "xi"}, BadInput{"--N 1", "--N"}, BadInput{"--F0 -1", "--F0"},
+        BadInput{"--config missing.txt", "missing.txt"}, BadInput{"--force-law fpu --F0 0", "--force-law"},
+        BadInput{"--force-law cubic", "--force-law"}, BadInput{"--integrator rk4", "--integrator"},
+        BadInput{"--realizations 0", "--realizations"}, BadInput{"--realizations 2 --config x.txt", "--config"},
+        BadInput{"--resume", "--resume"}, BadInput{"--threads -2", "--threads"},
+        BadInput{"--forces-at 0", "--forces-at"}, BadInput{"--ic velocity --beta abc", "--beta"},
+        BadInput{"--ic push", "--ic"}, BadInput{"--samples 1", "--samples"},
+        BadInput{"--fit 4e-5:1e-4 --fit-step 5e-5", "--fit"},
+        BadInput{"--fit 4e-5:1e-4 --fit-step 1.5e-6", "--fit-step"}, BadInput{"--t-star -1", "--t-star"},
+        BadInput{"--bootstrap 1", "--bootstrap"}, BadInput{"--centre middle", "--centre"},
+        BadInput{"--spectrum s.csv --spectrum-of force", "--spectrum-of"}, BadInput{"--fit 2e-3:1e-3", "--fit"},
+        BadInput{"--active-window maybe", "--active-window"}, BadInput{"--spectrum out.csv", "two outputs"}),
     [](const auto& info) { return "case" + std::to_string(info.index); });
 
 }  // namespace

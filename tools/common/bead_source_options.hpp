@@ -20,9 +20,13 @@ inline StreamedChain build_bead_source(const ChainOptions& o) {
   if (o.seed < 0) throw InvalidInput("seed", " " + std::to_string(o.seed) + ": must be >= 0");
   if (o.realization < 0) throw InvalidInput("realization", " " + std::to_string(o.realization) + ": must be >= 0");
   if (o.n < 2 || o.n > 1000000000000) throw InvalidInput("N", " " + std::to_string(o.n) + ": must be in [2, 1e12]");
-  const ChainParameters p{.N = static_cast<std::size_t>(o.n), .q = o.q, .xi = o.xi,
+  const ChainParameters p{.N = static_cast<std::size_t>(o.n),
+                          .q = o.q,
+                          .xi = o.xi,
                           .seed = static_cast<std::uint64_t>(o.seed),
-                          .realization = static_cast<std::uint64_t>(o.realization), .F0 = o.f0, .R1 = o.r1};
+                          .realization = static_cast<std::uint64_t>(o.realization),
+                          .F0 = o.f0,
+                          .R1 = o.r1};
   StreamedChain s;
   nlohmann::json& d = s.description;
   d["F0_N"] = o.f0;
@@ -30,7 +34,8 @@ inline StreamedChain build_bead_source(const ChainOptions& o) {
   d["walls"] = "flat, same material as the beads";
   if (!o.radii.empty()) {
     if (!(o.f0 > 0) || !std::isfinite(o.f0))
-      throw InvalidInput("F0", " " + format_number(o.f0) + ": must be finite and > 0 (the sonic vacuum has no linear limit)");
+      throw InvalidInput("F0",
+                         " " + format_number(o.f0) + ": must be finite and > 0 (the sonic vacuum has no linear limit)");
     s.source = chain_beads(from_radii(read_radii_file(o.radii), o.f0));
     d["radii_file"] = o.radii;
   } else {

@@ -7,9 +7,9 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
-#include "tool_main.hpp"
 #include "granular/model/configuration_file.hpp"
 #include "granular/model/named_chains.hpp"
+#include "tool_main.hpp"
 
 namespace granular::tool {
 
@@ -21,16 +21,21 @@ struct ChainOptions {
 };
 
 inline void add_chain_options(CLI::App& app, ChainOptions& o) {
-  app.add_option("--disorder", o.disorder, "h | A | RDM1 | RDM2 (homogeneous, Anderson, random dimer 1/2)")->capture_default_str();
+  app.add_option("--disorder", o.disorder, "h | A | RDM1 | RDM2 (homogeneous, Anderson, random dimer 1/2)")
+      ->capture_default_str();
   app.add_option("--xi", o.xi, "size ratio R2/R1 in (0,1]")->capture_default_str();
-  app.add_option("--q", o.q, "probability of a type-1 bead (A), dimer 11 (RDM1) or dimer 12 (RDM2), in [0,1]")->capture_default_str();
+  app.add_option("--q", o.q, "probability of a type-1 bead (A), dimer 11 (RDM1) or dimer 12 (RDM2), in [0,1]")
+      ->capture_default_str();
   add_integer(app, "--N", o.n, "beads in the chain (>= 2)");
   app.add_option("--F0", o.f0, "static precompression [N]")->capture_default_str();
   app.add_option("--R1", o.r1, "radius of type-1 beads [m] (steel beads and flat steel walls)")->capture_default_str();
   add_integer(app, "--seed", o.seed, "random seed");
   add_integer(app, "--realization", o.realization, "which realization of the seed (0-based)");
-  auto* config = app.add_option("--config", o.config, "file with one bead type (1 or 2) per line, '#' comments; overrides --disorder/--q/--N");
-  auto* radii = app.add_option("--radii", o.radii, "file with one radius [m] per line, '#' comments; overrides --disorder/--q/--N/--xi");
+  auto* config =
+      app.add_option("--config", o.config,
+                     "file with one bead type (1 or 2) per line, '#' comments; overrides --disorder/--q/--N");
+  auto* radii = app.add_option("--radii", o.radii,
+                               "file with one radius [m] per line, '#' comments; overrides --disorder/--q/--N/--xi");
   config->excludes(radii);
 }
 
@@ -44,15 +49,21 @@ inline SelectedChain build_chain(const ChainOptions& o) {
   if (o.seed < 0) throw InvalidInput("seed", " " + std::to_string(o.seed) + ": must be >= 0");
   if (o.realization < 0) throw InvalidInput("realization", " " + std::to_string(o.realization) + ": must be >= 0");
   if (o.n < 2) throw InvalidInput("N", " " + std::to_string(o.n) + ": a chain needs at least 2 beads");
-  ChainParameters p{.N = static_cast<std::size_t>(o.n), .q = o.q, .xi = o.xi, .seed = static_cast<std::uint64_t>(o.seed),
-                    .realization = static_cast<std::uint64_t>(o.realization), .F0 = o.f0, .R1 = o.r1};
+  ChainParameters p{.N = static_cast<std::size_t>(o.n),
+                    .q = o.q,
+                    .xi = o.xi,
+                    .seed = static_cast<std::uint64_t>(o.seed),
+                    .realization = static_cast<std::uint64_t>(o.realization),
+                    .F0 = o.f0,
+                    .R1 = o.r1};
   SelectedChain s;
   nlohmann::json& d = s.description;
   d["F0_N"] = o.f0;
   d["material"] = {{"E_Pa", steel.young}, {"nu", steel.poisson}, {"rho_kg_m3", steel.density}};
   d["walls"] = "flat, same material as the beads";
   if (!o.radii.empty()) {
-    if (!std::isfinite(o.f0) || o.f0 < 0) throw InvalidInput("F0", " " + format_number(o.f0) + ": must be finite and >= 0");
+    if (!std::isfinite(o.f0) || o.f0 < 0)
+      throw InvalidInput("F0", " " + format_number(o.f0) + ": must be finite and >= 0");
     s.chain = from_radii(read_radii_file(o.radii), o.f0);
     d["radii_file"] = o.radii;
   } else {

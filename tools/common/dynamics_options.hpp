@@ -9,10 +9,10 @@
 #include <CLI/CLI.hpp>
 
 #include "chain_options.hpp"
-#include "granular/error.hpp"
-#include "granular/number_format.hpp"
 #include "granular/dynamics/scheme.hpp"
+#include "granular/error.hpp"
 #include "granular/io/range_syntax.hpp"
+#include "granular/number_format.hpp"
 #include "granular/study/transport_study.hpp"
 
 namespace granular::tool {
@@ -27,25 +27,40 @@ struct DynamicsOptions {
 
 inline void add_dynamics_options(CLI::App& app, DynamicsOptions& o) {
   app.add_option("--alpha", o.alpha, "displacement kick [m] (also what --beta match matches)")->capture_default_str();
-  app.add_option("--beta", o.beta, "velocity kick [m/s] (the paper's 8e-3 for every F0), or 'match': the energy of --alpha on each chain")->capture_default_str();
+  app.add_option("--beta", o.beta,
+                 "velocity kick [m/s] (the paper's 8e-3 for every F0), or 'match': the energy of --alpha on each chain")
+      ->capture_default_str();
   app.add_option("--site", o.site, "kicked bead n0, 1..N (0 = the centre, (N+1)/2)")->capture_default_str();
-  app.add_option("--centre", o.centre, "m2 about the kicked 'site' (the paper's n_c) or the energy 'centroid'; both are written")->capture_default_str();
+  app.add_option("--centre", o.centre,
+                 "m2 about the kicked 'site' (the paper's n_c) or the energy 'centroid'; both are written")
+      ->capture_default_str();
   app.add_option("--T", o.duration, "duration [s], a whole number of --dt")->capture_default_str();
   app.add_option("--dt", o.dt, "time step tau [s]")->capture_default_str();
-  app.add_option("--integrator", o.integrator, "saba2c | saba2 | aba864 | srkn14a | reference (Odeint RKF78)")->capture_default_str();
+  app.add_option("--integrator", o.integrator, "saba2c | saba2 | aba864 | srkn14a | reference (Odeint RKF78)")
+      ->capture_default_str();
   app.add_option("--force-law", o.force_law, "hertz | fpu | linear")->capture_default_str();
   app.add_option("--samples", o.samples, "log-spaced sample times (tau..T) outside the fit window")->capture_default_str();
   app.add_option("--sampling", o.sampling, "log (tau..T) | uniform (0..T) for those samples")->capture_default_str();
-  app.add_option("--fit", o.fit, "fit window start:stop [s] of gamma (m2 ~ t^gamma) and eta (P^-1 ~ t^-eta)")->capture_default_str();
-  app.add_option("--fit-step", o.fit_step, "spacing of the samples inside the fit window [s], a multiple of --dt")->capture_default_str();
-  app.add_option("--t-star", o.t_star, "t*: from here on, |L_d - gamma| >= --kappa means 'not a power law' [s]")->capture_default_str();
+  app.add_option("--fit", o.fit, "fit window start:stop [s] of gamma (m2 ~ t^gamma) and eta (P^-1 ~ t^-eta)")
+      ->capture_default_str();
+  app.add_option("--fit-step", o.fit_step, "spacing of the samples inside the fit window [s], a multiple of --dt")
+      ->capture_default_str();
+  app.add_option("--t-star", o.t_star, "t*: from here on, |L_d - gamma| >= --kappa means 'not a power law' [s]")
+      ->capture_default_str();
   app.add_option("--kappa", o.kappa, "largest |L_d - gamma| of a power law after --t-star")->capture_default_str();
-  app.add_option("--bootstrap", o.bootstrap, "resamples of the realization bootstrap of gamma and eta")->capture_default_str();
-  app.add_option("--active-window", o.active_window, "on | off: integrate only where the wave has arrived")->capture_default_str();
-  app.add_option("--window-threshold", o.window_threshold, "relative kinetic energy that grows the window")->capture_default_str();
-  app.add_option("--reference-max-step", o.reference_max_step, "largest step of --integrator reference [s], 0 = none")->capture_default_str();
-  app.add_option("--max-energy-error", o.max_energy_error, "guard: relative energy error that stops (or is reported), 0 = off")->capture_default_str();
-  app.add_option("--energy-guard", o.energy_guard, "stop | warn: what passing --max-energy-error does")->capture_default_str();
+  app.add_option("--bootstrap", o.bootstrap, "resamples of the realization bootstrap of gamma and eta")
+      ->capture_default_str();
+  app.add_option("--active-window", o.active_window, "on | off: integrate only where the wave has arrived")
+      ->capture_default_str();
+  app.add_option("--window-threshold", o.window_threshold, "relative kinetic energy that grows the window")
+      ->capture_default_str();
+  app.add_option("--reference-max-step", o.reference_max_step, "largest step of --integrator reference [s], 0 = none")
+      ->capture_default_str();
+  app.add_option("--max-energy-error", o.max_energy_error,
+                 "guard: relative energy error that stops (or is reported), 0 = off")
+      ->capture_default_str();
+  app.add_option("--energy-guard", o.energy_guard, "stop | warn: what passing --max-energy-error does")
+      ->capture_default_str();
 }
 
 /// Fills `c` from the options: all but the chain (disorder, q, ξ, N, F0, R1, seed, realizations)
@@ -55,7 +70,8 @@ inline void apply(const DynamicsOptions& o, TransportCase& c) {
   c.match_beta = o.beta == "match";
   if (!c.match_beta) c.beta = parse_number_list(o.beta, "--beta", 0, 1).at(0);
   if (o.site < 0 || o.site > static_cast<long long>(c.n))
-    throw InvalidInput("--site " + std::to_string(o.site) + ": outside the chain of " + std::to_string(c.n) + " beads (1..N, 0 = centre)");
+    throw InvalidInput("--site " + std::to_string(o.site) + ": outside the chain of " + std::to_string(c.n) +
+                       " beads (1..N, 0 = centre)");
   c.site = o.site == 0 ? (c.n - 1) / 2 : static_cast<std::size_t>(o.site - 1);
   c.centre = parse_spread_centre(o.centre);
   SpreadingConfig& d = c.dynamics;
@@ -67,7 +83,8 @@ inline void apply(const DynamicsOptions& o, TransportCase& c) {
   if (o.samples < 2) throw InvalidInput("--samples " + std::to_string(o.samples) + ": at least 2");
   d.samples = static_cast<std::size_t>(o.samples);
   d.sampling = parse_sampling(o.sampling);
-  if (o.active_window != "on" && o.active_window != "off") throw InvalidInput("--active-window '" + o.active_window + "': on or off");
+  if (o.active_window != "on" && o.active_window != "off")
+    throw InvalidInput("--active-window '" + o.active_window + "': on or off");
   d.window.enabled = o.active_window == "on";
   if (!(o.window_threshold >= 0) || !std::isfinite(o.window_threshold))
     throw InvalidInput("--window-threshold " + format_number(o.window_threshold) + ": must be finite and >= 0");
@@ -77,7 +94,8 @@ inline void apply(const DynamicsOptions& o, TransportCase& c) {
   d.reference.max_step = o.reference_max_step;
   if (!(o.max_energy_error >= 0) || !std::isfinite(o.max_energy_error))
     throw InvalidInput("--max-energy-error " + format_number(o.max_energy_error) + ": must be finite and >= 0");
-  if (o.energy_guard != "stop" && o.energy_guard != "warn") throw InvalidInput("--energy-guard '" + o.energy_guard + "': stop or warn");
+  if (o.energy_guard != "stop" && o.energy_guard != "warn")
+    throw InvalidInput("--energy-guard '" + o.energy_guard + "': stop or warn");
   d.max_energy_error = o.max_energy_error;
   d.stop_on_energy_error = o.energy_guard == "stop";
   const Interval fit = parse_interval(o.fit, "--fit");

@@ -1,11 +1,11 @@
 #pragma once
 // The JSON that sits beside every CSV: enough to reproduce the run.
 #include <chrono>
-#include <initializer_list>
 #include <cstdio>
-#include <string_view>
 #include <ctime>
+#include <initializer_list>
 #include <string>
+#include <string_view>
 
 #include <nlohmann/json.hpp>
 
@@ -48,8 +48,9 @@ class Metadata {
   }
 
   static std::string shell_quote(const std::string& word) {
-    if (!word.empty() && word.find_first_not_of("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789_@%+=:,./-") ==
-                             std::string::npos)
+    if (!word.empty() &&
+        word.find_first_not_of("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789_@%+=:,./-") ==
+            std::string::npos)
       return word;
     std::string quoted = "'";
     for (char c : word) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
@@ -71,7 +72,8 @@ class Metadata {
       if (json_.contains(key) && json_.at(key).is_string()) files += json_.at(key).get<std::string>() + ", ";
     char line[64];
     std::snprintf(line, sizeof line, " in %.3g s", seconds);
-    std::fprintf(stderr, "%s: wrote %s%s%s\n", json_.at("tool").get<std::string>().c_str(), files.c_str(), path.c_str(), line);
+    std::fprintf(stderr, "%s: wrote %s%s%s\n", json_.at("tool").get<std::string>().c_str(), files.c_str(), path.c_str(),
+                 line);
   }
 
   nlohmann::json json_;

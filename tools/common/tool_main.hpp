@@ -28,8 +28,7 @@ inline void describe_common(CLI::App& app) {
 /// An integer option that also takes scientific notation (--N 1e7), rejecting non-integers.
 template <class Integer>
 CLI::Option* add_integer(CLI::App& app, const std::string& name, Integer& value, const std::string& description) {
-  return app
-      .add_option(name, value, description)
+  return app.add_option(name, value, description)
       ->transform(CLI::Validator(
           [name](std::string& text) -> std::string {
             if (text.find_first_of("eE.") == std::string::npos) return {};
@@ -52,8 +51,13 @@ CLI::Option* add_integer(CLI::App& app, const std::string& name, Integer& value,
 /// Library parameter names that are not simply the flag without its dashes.
 inline const std::map<std::string, std::string>& flag_synonyms() {
   static const std::map<std::string, std::string> names{
-      {"precompression", "--F0"}, {"n", "--N"},         {"r1", "--R1"},      {"near_khz", "--near"},
-      {"time_step", "--dt"},      {"duration", "--T"},  {"realizations", "--realizations"},
+      {"precompression", "--F0"},
+      {"n", "--N"},
+      {"r1", "--R1"},
+      {"near_khz", "--near"},
+      {"time_step", "--dt"},
+      {"duration", "--T"},
+      {"realizations", "--realizations"},
   };
   return names;
 }
@@ -81,7 +85,8 @@ inline std::string nearest_option(const CLI::App& app, const std::string& typed)
       row[0] = i;
       for (std::size_t j = 1; j <= b.size(); ++j) {
         const std::size_t up = row[j];
-        row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (std::tolower(a[i - 1]) == std::tolower(b[j - 1]) ? 0 : 1)});
+        row[j] = std::min(
+            {row[j] + 1, row[j - 1] + 1, diagonal + (std::tolower(a[i - 1]) == std::tolower(b[j - 1]) ? 0 : 1)});
         diagonal = up;
       }
     }

@@ -11,9 +11,9 @@
 namespace granular {
 
 struct ExponentReport {
-  ExponentEstimate fit;        ///< least-squares slope: mean ± spread over the six sub-windows
-  ExponentEstimate mean_ld;    ///< mean L_d over the window ± spread of its sub-window means
-  PowerLawVerdict verdict;     ///< |L_d − fit| < κ after t*?
+  ExponentEstimate fit;      ///< least-squares slope: mean ± spread over the six sub-windows
+  ExponentEstimate mean_ld;  ///< mean L_d over the window ± spread of its sub-window means
+  PowerLawVerdict verdict;   ///< |L_d − fit| < κ after t*?
   /// Realization errors (bootstrap.hpp) of `fit` and `mean_ld`; NaN until an ensemble sets them.
   double fit_realization_error = std::numeric_limits<double>::quiet_NaN();
   double mean_ld_realization_error = std::numeric_limits<double>::quiet_NaN();

@@ -11,9 +11,7 @@ namespace {
 
 constexpr double edge_tolerance = 1e-9;
 
-bool inside(double t, double lo, double hi) {
-  return t >= lo * (1 - edge_tolerance) && t <= hi * (1 + edge_tolerance);
-}
+bool inside(double t, double lo, double hi) { return t >= lo * (1 - edge_tolerance) && t <= hi * (1 + edge_tolerance); }
 
 // p0 … p4: the fit interval cut into four equal parts; the six windows are runs of ≥ 2 parts.
 constexpr int windows[6][2] = {{0, 2}, {1, 3}, {2, 4}, {0, 3}, {1, 4}, {0, 4}};
@@ -45,11 +43,15 @@ LineFit fit_power_law(const std::vector<double>& t, const std::vector<double>& y
   for (std::size_t i = 0; i < t.size(); ++i) {
     if (!(inside(t[i], lo, hi) && t[i] > 0 && y[i] > 0)) continue;
     const double x = std::log(t[i]), v = std::log(y[i]);
-    sx += x; sy += v; sxx += x * x; sxy += x * v;
+    sx += x;
+    sy += v;
+    sxx += x * x;
+    sxy += x * v;
     ++n;
   }
-  if (n < 2) throw InvalidInput("fit window [" + std::to_string(lo) + ", " + std::to_string(hi) + "] s holds " +
-                                std::to_string(n) + " usable samples; need 2 (more samples or a wider fit interval)");
+  if (n < 2)
+    throw InvalidInput("fit window [" + std::to_string(lo) + ", " + std::to_string(hi) + "] s holds " +
+                       std::to_string(n) + " usable samples; need 2 (more samples or a wider fit interval)");
   const double nn = static_cast<double>(n);
   const double denominator = nn * sxx - sx * sx;
   if (!(denominator > 0)) throw InvalidInput("fit window has a single distinct time");
@@ -74,15 +76,15 @@ double mean_log_derivative(const std::vector<double>& t, const std::vector<doubl
     sum += std::log(y[i + 1] / y[i]) / std::log(t[i + 1] / t[i]);
     ++n;
   }
-  if (n == 0) throw InvalidInput("mean log derivative on [" + std::to_string(lo) + ", " + std::to_string(hi) +
-                                 "] s: no two consecutive samples inside");
+  if (n == 0)
+    throw InvalidInput("mean log derivative on [" + std::to_string(lo) + ", " + std::to_string(hi) +
+                       "] s: no two consecutive samples inside");
   return sum / static_cast<double>(n);
 }
 
 ExponentEstimate windowed_mean_log_derivative(const std::vector<double>& t, const std::vector<double>& y, double lo,
                                               double hi) {
-  ExponentEstimate e =
-      over_sub_windows(lo, hi, [&](double a, double b) { return mean_log_derivative(t, y, a, b); });
+  ExponentEstimate e = over_sub_windows(lo, hi, [&](double a, double b) { return mean_log_derivative(t, y, a, b); });
   e.value = mean_log_derivative(t, y, lo, hi);  // the paper's number: the mean over the whole window
   return e;
 }
@@ -96,7 +98,10 @@ PowerLawVerdict judge_power_law(const std::vector<double>& t, const std::vector<
     if (d.t[i] < c.t_start) continue;
     any = true;
     const double dev = std::fabs(d.slope[i] - gamma);
-    if (dev > v.worst_deviation) { v.worst_deviation = dev; v.worst_time = d.t[i]; }
+    if (dev > v.worst_deviation) {
+      v.worst_deviation = dev;
+      v.worst_time = d.t[i];
+    }
   }
   v.power_law = any && v.worst_deviation < c.kappa;
   return v;

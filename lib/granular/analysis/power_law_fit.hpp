@@ -27,9 +27,9 @@ struct LineFit {
 LineFit fit_power_law(const std::vector<double>& t, const std::vector<double>& y, double lo, double hi);
 
 struct ExponentEstimate {
-  double value = 0;             ///< the estimate
-  double error = 0;             ///< standard deviation over the six sub-windows
-  std::vector<double> slopes;   ///< one per sub-window, in the order documented above
+  double value = 0;            ///< the estimate
+  double error = 0;            ///< standard deviation over the six sub-windows
+  std::vector<double> slopes;  ///< one per sub-window, in the order documented above
 };
 
 /// Exponent on the six sub-windows of [lo, hi] (each must hold at least 2 samples): value = the
@@ -52,9 +52,9 @@ struct PowerLawCriterion {
 };
 
 struct PowerLawVerdict {
-  bool power_law = false;    ///< |L_d(t) − γ| < κ for every sampled t ≥ t*
+  bool power_law = false;  ///< |L_d(t) − γ| < κ for every sampled t ≥ t*
   double worst_deviation = 0;
-  double worst_time = 0;     ///< where the worst deviation sits
+  double worst_time = 0;  ///< where the worst deviation sits
 };
 
 /// Judges y ∝ t^γ by the log derivative on the sampled times (consecutive samples, no

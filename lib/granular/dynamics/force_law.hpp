@@ -57,7 +57,9 @@ class HertzLaw {
   View view() const { return {contact_.data(), overlap_.data(), rest_.data()}; }
 
   double force(std::size_t k, double x) const { return view().force(k, x); }
-  double stiffness(std::size_t k, double x) const { return 1.5 * contact_[k] * std::sqrt(std::max(overlap_[k] + x, 0.0)); }
+  double stiffness(std::size_t k, double x) const {
+    return 1.5 * contact_[k] * std::sqrt(std::max(overlap_[k] + x, 0.0));
+  }
   double potential(std::size_t k, double x) const;
   double contact_force(std::size_t k, double x) const { return force(k, x) + rest_[k]; }
   std::size_t bonds() const { return contact_.size(); }
@@ -85,9 +87,7 @@ class PolynomialLaw {
 
   double force(std::size_t k, double x) const { return view().force(k, x); }
   double stiffness(std::size_t k, double x) const { return c1_[k] + x * (2 * c2_[k] + x * 3 * c3_[k]); }
-  double potential(std::size_t k, double x) const {
-    return x * x * (c1_[k] / 2 + x * (c2_[k] / 3 + x * c3_[k] / 4));
-  }
+  double potential(std::size_t k, double x) const { return x * x * (c1_[k] / 2 + x * (c2_[k] / 3 + x * c3_[k] / 4)); }
   double contact_force(std::size_t k, double x) const { return precompression_ + force(k, x); }
   std::size_t bonds() const { return c1_.size(); }
 

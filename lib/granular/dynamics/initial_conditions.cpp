@@ -14,8 +14,8 @@ namespace {
 
 void check_site(const Chain& chain, std::size_t site) {
   if (site >= chain.size())
-    throw InvalidInput("site", " " + std::to_string(site + 1) + ": outside the chain of " + std::to_string(chain.size()) +
-                       " beads (counting from 1)");
+    throw InvalidInput("site", " " + std::to_string(site + 1) + ": outside the chain of " +
+                                   std::to_string(chain.size()) + " beads (counting from 1)");
 }
 
 }  // namespace
@@ -31,7 +31,7 @@ State displacement_kick(const Chain& chain, std::size_t site, double alpha) {
     if (k < chain.size()) radius = std::min(radius, chain.radius[k]);
     if (chain.overlap[k] + std::abs(alpha) >= radius)
       throw InvalidInput("alpha", " " + format_number(alpha) + ": static overlap plus |alpha| reaches the bead radius " +
-                         format_number(radius) + " m (beads would pass through each other)");
+                                      format_number(radius) + " m (beads would pass through each other)");
   }
   State s(chain.size());
   s.u[site] = alpha;

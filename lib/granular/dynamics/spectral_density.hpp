@@ -28,7 +28,7 @@ class SpectralDensity {
  private:
   std::size_t sites_, samples_;
   double* in_ = nullptr;
-  void* out_ = nullptr;  // fftw_complex*
+  void* out_ = nullptr;   // fftw_complex*
   void* plan_ = nullptr;  // fftw_plan
 };
 

@@ -152,8 +152,8 @@ class SplittingPropagator final : public Propagator {
   }
 
   void correct(double c, double d) {
-    correct_and_drift(law_.view(), up_.data(), f_.data(), stiff_.data(), ap_.data(), v_.data(), im_.data(), lo_, hi_,
-                      c, d);
+    correct_and_drift(law_.view(), up_.data(), f_.data(), stiff_.data(), ap_.data(), v_.data(), im_.data(), lo_, hi_, c,
+                      d);
     bond_updates_ += hi_ - lo_ + 1;
   }
 

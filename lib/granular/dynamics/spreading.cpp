@@ -44,16 +44,18 @@ void validate(const SpreadingConfig& c, std::size_t beads) {
   if (!std::isfinite(c.duration) || !(c.duration > 0))
     throw InvalidInput("duration", " " + format_number(c.duration) + ": the duration must be finite and > 0");
   const double ratio = c.duration / c.time_step;
-  if (ratio > 1e12) throw InvalidInput("duration", " " + format_number(c.duration) + " s / time_step " + format_number(c.time_step) + " s: more than 1e12 steps");
+  if (ratio > 1e12)
+    throw InvalidInput("duration", " " + format_number(c.duration) + " s / time_step " + format_number(c.time_step) +
+                                       " s: more than 1e12 steps");
   if (ratio < 1 || std::abs(ratio - std::round(ratio)) > 1e-6 * ratio)
     throw InvalidInput("duration", " " + format_number(c.duration) + ": must be a whole number (>= 1) of time steps " +
-                       format_number(c.time_step));
+                                       format_number(c.time_step));
   if (c.samples < 2) throw InvalidInput("samples", ": at least 2");
   if (c.integrator != "reference") parse_scheme(c.integrator);
   for (std::size_t s : c.force_sites)
     if (s >= beads)
       throw InvalidInput("forces_at", " " + std::to_string(s + 1) + ": outside the chain of " + std::to_string(beads) +
-                         " beads (counting from 1)");
+                                          " beads (counting from 1)");
   if (!c.force_sites.empty() && c.force_samples < 2) throw InvalidInput("force_samples", ": at least 2");
   if (c.map_samples == 1) throw InvalidInput("map_samples", ": 0 (none) or at least 2");
   if (c.map_stride < 1) throw InvalidInput("map_stride", ": at least 1");
@@ -61,17 +63,19 @@ void validate(const SpreadingConfig& c, std::size_t beads) {
   if (c.spectrum_samples * beads > (std::size_t{1} << 31)) throw InvalidInput("spectrum_samples", ": too many for N");
   if (!(c.window.threshold >= 0)) throw InvalidInput("window_threshold", ": must be >= 0");
   if (c.site != static_cast<std::size_t>(-1) && c.site >= beads)
-    throw InvalidInput("site", " " + std::to_string(c.site + 1) + ": outside the chain of " + std::to_string(beads) + " beads");
+    throw InvalidInput("site",
+                       " " + std::to_string(c.site + 1) + ": outside the chain of " + std::to_string(beads) + " beads");
   if (!c.dense.empty()) {
     const DenseGrid& g = c.dense;
     if (!std::isfinite(g.begin) || !std::isfinite(g.end) || g.begin < 0 || g.end > c.duration * (1 + 1e-12))
       throw InvalidInput("fit", " [" + format_number(g.begin) + ", " + format_number(g.end) +
-                         "] s: must lie inside [0, T = " + format_number(c.duration) + "]");
+                                    "] s: must lie inside [0, T = " + format_number(c.duration) + "]");
     const double stride = g.step / c.time_step;
     if (!std::isfinite(stride) || stride < 1 - 1e-9 || std::abs(stride - std::round(stride)) > 1e-6 * stride)
       throw InvalidInput("fit_step", " " + format_number(g.step) + " s: must be a whole number (>= 1) of time steps " +
-                         format_number(c.time_step) + " s");
-    if ((g.end - g.begin) / g.step > 1e8) throw InvalidInput("fit_step", " " + format_number(g.step) + " s: more than 1e8 samples");
+                                         format_number(c.time_step) + " s");
+    if ((g.end - g.begin) / g.step > 1e8)
+      throw InvalidInput("fit_step", " " + format_number(g.step) + " s: more than 1e8 samples");
   }
 }
 
@@ -118,9 +122,10 @@ SpreadingResult run_spreading(const Chain& chain, const State& initial, const Sp
   r.initial_energy = total_energy(law, chain, initial);
   if (!(r.initial_energy > 0)) throw InvalidInput("initial state: carries no energy");
 
-  std::unique_ptr<Propagator> p = config.integrator == "reference"
-      ? make_reference_propagator(law, chain, tau, initial, config.reference)
-      : make_splitting_propagator(law, chain, parse_scheme(config.integrator), tau, initial, config.window);
+  std::unique_ptr<Propagator> p =
+      config.integrator == "reference"
+          ? make_reference_propagator(law, chain, tau, initial, config.reference)
+          : make_splitting_propagator(law, chain, parse_scheme(config.integrator), tau, initial, config.window);
 
   // The schedule: step number → what to measure there.
   enum : unsigned { spread = 1, force = 2, map = 4, spectrum = 8 };
@@ -178,7 +183,8 @@ SpreadingResult run_spreading(const Chain& chain, const State& initial, const Sp
         r.map_t.push_back(t);
         for (std::size_t c = 0; c < r.map_columns; ++c) {
           double sum = 0;
-          for (std::size_t i = c * config.map_stride; i < std::min(n, (c + 1) * config.map_stride); ++i) sum += energy[i];
+          for (std::size_t i = c * config.map_stride; i < std::min(n, (c + 1) * config.map_stride); ++i)
+            sum += energy[i];
           r.map_energy.push_back(sum);
         }
       }
@@ -186,7 +192,8 @@ SpreadingResult run_spreading(const Chain& chain, const State& initial, const Sp
     if (what & force) {
       particle_forces(law, u, bead_force);
       r.force_t.push_back(t);
-      for (std::size_t j = 0; j < config.force_sites.size(); ++j) r.forces[j].push_back(bead_force[config.force_sites[j]]);
+      for (std::size_t j = 0; j < config.force_sites.size(); ++j)
+        r.forces[j].push_back(bead_force[config.force_sites[j]]);
     }
     if (what & spectrum) {
       const auto series = config.spectrum_source == SpectrumSource::displacement ? u : p->velocity();

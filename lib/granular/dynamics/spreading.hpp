@@ -36,24 +36,24 @@ std::string to_string(SpectrumSource source);
 
 struct SpreadingConfig {
   ForceLawKind force_law = ForceLawKind::hertz;
-  std::string integrator = "saba2c";   ///< saba2c | saba2 | aba864 | srkn14a | reference
-  double duration = 1e-2;              ///< T [s], a whole number of steps
-  double time_step = 1e-6;             ///< τ [s]
-  std::size_t samples = 100;           ///< times of t, m̃2, P⁻¹, energy error (≥ 2) outside `dense`
-  Sampling sampling = Sampling::logarithmic;  ///< log: τ … T; uniform: 0 … T
-  DenseGrid dense;                     ///< a uniform grid replacing the samples inside it (the fit window)
+  std::string integrator = "saba2c";                ///< saba2c | saba2 | aba864 | srkn14a | reference
+  double duration = 1e-2;                           ///< T [s], a whole number of steps
+  double time_step = 1e-6;                          ///< τ [s]
+  std::size_t samples = 100;                        ///< times of t, m̃2, P⁻¹, energy error (≥ 2) outside `dense`
+  Sampling sampling = Sampling::logarithmic;        ///< log: τ … T; uniform: 0 … T
+  DenseGrid dense;                                  ///< a uniform grid replacing the samples inside it (the fit window)
   std::size_t site = static_cast<std::size_t>(-1);  ///< excited bead n0 of m̃2 (0-based); default the centre
-  ActiveWindow window;                 ///< ignored by the reference integrator
+  ActiveWindow window;                              ///< ignored by the reference integrator
   ReferenceTolerance reference{1e-15, 1e-15, 0.01e-6};  ///< step capped at 0.01 µs (contacts open)
-  std::vector<std::size_t> force_sites;  ///< 0-based beads whose force is recorded
-  std::size_t force_samples = 1000;      ///< uniform times of those forces
-  std::size_t map_samples = 0;           ///< uniform times of the energy map; 0 = none
-  std::size_t map_stride = 1;            ///< beads summed per map column
-  std::size_t spectrum_samples = 0;      ///< uniform samples of u (or v) for g(ν); 0 = none
+  std::vector<std::size_t> force_sites;                 ///< 0-based beads whose force is recorded
+  std::size_t force_samples = 1000;                     ///< uniform times of those forces
+  std::size_t map_samples = 0;                          ///< uniform times of the energy map; 0 = none
+  std::size_t map_stride = 1;                           ///< beads summed per map column
+  std::size_t spectrum_samples = 0;                     ///< uniform samples of u (or v) for g(ν); 0 = none
   SpectrumSource spectrum_source = SpectrumSource::displacement;
-  double wall_warning = 1e-10;           ///< flag when (E_first + E_last)/H0 exceeds it
-  double max_energy_error = 1e-3;        ///< guard on |H(t)−H0|/H0 at the samples; 0 = unwatched
-  bool stop_on_energy_error = true;      ///< past the guard: stop (NumericalError) or only record it
+  double wall_warning = 1e-10;       ///< flag when (E_first + E_last)/H0 exceeds it
+  double max_energy_error = 1e-3;    ///< guard on |H(t)−H0|/H0 at the samples; 0 = unwatched
+  bool stop_on_energy_error = true;  ///< past the guard: stop (NumericalError) or only record it
 };
 
 /// Throws InvalidInput naming the option (--T, --dt, --samples, …) on a bad config.
@@ -68,20 +68,20 @@ struct SpreadingResult {
   double initial_energy = 0;
   double max_energy_error = 0;
   State final_state;
-  std::vector<double> final_energy;  ///< E_n(T)
-  std::vector<double> final_force;   ///< bead forces at T [N]
-  std::vector<double> force_t;       ///< times of the force series
+  std::vector<double> final_energy;         ///< E_n(T)
+  std::vector<double> final_force;          ///< bead forces at T [N]
+  std::vector<double> force_t;              ///< times of the force series
   std::vector<std::vector<double>> forces;  ///< [site][sample]
-  std::vector<double> map_t;         ///< times of the energy map rows
-  std::vector<double> map_energy;    ///< rows × map_columns, row-major
+  std::vector<double> map_t;                ///< times of the energy map rows
+  std::vector<double> map_energy;           ///< rows × map_columns, row-major
   std::size_t map_columns = 0;
   std::vector<double> spectrum_khz, spectrum;  ///< g(ν) normalized to max 1, of config.spectrum_source
-  double wall_energy = 0;            ///< max over samples of (E_first + E_last)/H0
-  bool reached_walls = false;        ///< wall_energy > config.wall_warning
-  double energy_guard_time = -1;     ///< first sample time past max_energy_error (when not stopping); -1: never
+  double wall_energy = 0;                      ///< max over samples of (E_first + E_last)/H0
+  bool reached_walls = false;                  ///< wall_energy > config.wall_warning
+  double energy_guard_time = -1;  ///< first sample time past max_energy_error (when not stopping); -1: never
   std::uint64_t steps = 0, bond_updates = 0;
   std::size_t window_begin = 0, window_end = 0;  ///< final active window
-  double seconds = 0;                ///< wall time of the integration
+  double seconds = 0;                            ///< wall time of the integration
 };
 
 SpreadingResult run_spreading(const Chain& chain, const State& initial, const SpreadingConfig& config);

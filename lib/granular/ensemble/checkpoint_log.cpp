@@ -23,7 +23,10 @@ constexpr const char* magic = "granular-checkpoint 1 ";
 /// FNV-1a over the record's text: catches a torn or edited line.
 std::uint64_t checksum(std::string_view text) {
   std::uint64_t h = 1469598103934665603ull;
-  for (unsigned char c : text) { h ^= c; h *= 1099511628211ull; }
+  for (unsigned char c : text) {
+    h ^= c;
+    h *= 1099511628211ull;
+  }
   return h;
 }
 
@@ -77,15 +80,23 @@ CheckpointRecords CheckpointLog::parse_records(const std::string& text, std::str
     if (last_space == std::string_view::npos) continue;
     const std::string_view body = line.substr(0, last_space), tail = line.substr(last_space + 1);
     std::uint64_t sum = 0;
-    if (std::from_chars(tail.data(), tail.data() + tail.size(), sum).ec != std::errc() || sum != checksum(body)) continue;
+    if (std::from_chars(tail.data(), tail.data() + tail.size(), sum).ec != std::errc() || sum != checksum(body))
+      continue;
     std::vector<double> numbers;
     const char* p = body.data();
     const char* stop = body.data() + body.size();
     bool ok = true;
     std::uint64_t index = 0, count = 0;
     ok = std::from_chars(p, stop, index).ec == std::errc();
-    if (ok) { p = std::find(p, stop, ' '); ok = p != stop; }
-    if (ok) { ++p; ok = std::from_chars(p, stop, count).ec == std::errc(); p = std::find(p, stop, ' '); }
+    if (ok) {
+      p = std::find(p, stop, ' ');
+      ok = p != stop;
+    }
+    if (ok) {
+      ++p;
+      ok = std::from_chars(p, stop, count).ec == std::errc();
+      p = std::find(p, stop, ' ');
+    }
     while (ok && p != stop) {
       ++p;
       double v = 0;
@@ -95,7 +106,10 @@ CheckpointRecords CheckpointLog::parse_records(const std::string& text, std::str
         if (word == "nan") v = std::numeric_limits<double>::quiet_NaN();
         else if (word == "inf") v = std::numeric_limits<double>::infinity();
         else if (word == "-inf") v = -std::numeric_limits<double>::infinity();
-        else { ok = false; break; }
+        else {
+          ok = false;
+          break;
+        }
         next = p + word.size();
       }
       numbers.push_back(v);
@@ -174,8 +188,8 @@ CheckpointRecords CheckpointLog::load(const std::string& base, const std::string
       throw InvalidInput("resume", ": '" + path + "' is not a checkpoint of this toolkit");
     }
     if (header != parameters)
-      throw InvalidInput("resume", ": checkpoint '" + path + "' was made with different parameters: " +
-                         first_difference(header, parameters));
+      throw InvalidInput("resume", ": checkpoint '" + path +
+                                       "' was made with different parameters: " + first_difference(header, parameters));
     all.merge(records);
   }
   return all;

@@ -2,14 +2,14 @@
 
 #include <memory>
 
-#include "granular/parallel/mpi_context.hpp"
 #include "granular/ensemble/parallel_realizations.hpp"
 #include "granular/error.hpp"
+#include "granular/parallel/mpi_context.hpp"
 
 namespace granular {
 
-std::vector<std::vector<double>> run_ensemble(
-    const EnsembleOptions& o, const std::function<std::vector<double>(std::uint64_t, int)>& work) {
+std::vector<std::vector<double>> run_ensemble(const EnsembleOptions& o,
+                                              const std::function<std::vector<double>(std::uint64_t, int)>& work) {
   const MpiContext& mpi = MpiContext::instance();
   CheckpointRecords finished;
   if (o.resume) finished = CheckpointLog::load(o.checkpoint, o.parameters);

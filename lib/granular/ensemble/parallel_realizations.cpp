@@ -10,8 +10,8 @@ namespace granular {
 
 int resolve_threads(int requested) { return requested > 0 ? requested : omp_get_num_procs(); }
 
-void parallel_realizations(std::size_t count, int threads,
-                           const std::function<void(std::size_t, int)>& work, ProgressMeter* progress) {
+void parallel_realizations(std::size_t count, int threads, const std::function<void(std::size_t, int)>& work,
+                           ProgressMeter* progress) {
   std::exception_ptr failure;
   std::mutex failure_mutex;
   std::atomic<bool> stop{false};

@@ -13,7 +13,10 @@ class CsvWriter {
  public:
   CsvWriter(std::ostream& out, std::initializer_list<const char*> columns) : out_(out), columns_(columns.size()) {
     const char* sep = "";
-    for (const char* c : columns) { out_ << sep << c; sep = ","; }
+    for (const char* c : columns) {
+      out_ << sep << c;
+      sep = ",";
+    }
     out_ << '\n';
   }
   /// One row; cells are strings or doubles. The count must match the header.

@@ -28,10 +28,12 @@ OutputLock::OutputLock(const std::string& prefix, const std::string& command) : 
     }
     // The holder we waited for may have removed the file after we opened it: lock what the path
     // names now, or try again.
-    struct stat opened{}, named{};
+    struct stat opened {
+    }, named{};
     if (::fstat(fd, &opened) == 0 && ::stat(path_.c_str(), &named) == 0 && opened.st_ino == named.st_ino &&
         opened.st_dev == named.st_dev) {
-      const std::string text = "process " + std::to_string(::getpid()) + (command.empty() ? "" : " (" + command + ")") + "\n";
+      const std::string text =
+          "process " + std::to_string(::getpid()) + (command.empty() ? "" : " (" + command + ")") + "\n";
       if (::ftruncate(fd, 0) != 0 || ::pwrite(fd, text.data(), text.size(), 0) != static_cast<ssize_t>(text.size())) {
         const int e = errno;
         ::close(fd);

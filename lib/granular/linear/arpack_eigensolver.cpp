@@ -15,9 +15,9 @@ void dsaupd_(int* ido, const char* bmat, const int* n, const char* which, const 
              double* resid, const int* ncv, double* v, const int* ldv, int* iparam, int* ipntr, double* workd,
              double* workl, const int* lworkl, int* info, std::size_t, std::size_t);
 void dseupd_(const int* rvec, const char* howmny, int* select, double* d, double* z, const int* ldz,
-             const double* sigma, const char* bmat, const int* n, const char* which, const int* nev,
-             const double* tol, double* resid, const int* ncv, double* v, const int* ldv, int* iparam, int* ipntr,
-             double* workd, double* workl, const int* lworkl, int* info, std::size_t, std::size_t, std::size_t);
+             const double* sigma, const char* bmat, const int* n, const char* which, const int* nev, const double* tol,
+             double* resid, const int* ncv, double* v, const int* ldv, int* iparam, int* ipntr, double* workd,
+             double* workl, const int* lworkl, int* info, std::size_t, std::size_t, std::size_t);
 }
 
 namespace granular {
@@ -44,7 +44,7 @@ ShiftInvertResult arpack_nearest(const SymTridiagonal& t, double sigma, const Sh
   const int nev = config.count;
   if (nev < 1 || nev > n - 1)
     throw InvalidInput("ARPACK", ": " + std::to_string(nev) + " eigenpairs of an N = " + std::to_string(n) +
-                       " matrix; it needs 1 <= count <= N - 1 (use --method lapack)");
+                                     " matrix; it needs 1 <= count <= N - 1 (use --method lapack)");
   const int ncv = std::min(n, config.subspace > 0 ? std::max(config.subspace, nev + 1) : std::max(2 * nev + 1, 20));
   ShiftInvertOperator op;
   op.factorize(t, sigma);
@@ -57,7 +57,7 @@ ShiftInvertResult arpack_nearest(const SymTridiagonal& t, double sigma, const Sh
   int iparam[11] = {0}, ipntr[11] = {0};
   iparam[0] = 1;  // exact shifts
   iparam[2] = config.max_restarts;
-  iparam[6] = 3;  // shift-invert
+  iparam[6] = 3;          // shift-invert
   int ido = 0, info = 1;  // info = 1: use resid as the start vector
   const double tol = config.tolerance;
   ShiftInvertResult out;

@@ -5,8 +5,8 @@
 
 #include "granular/error.hpp"
 #include "granular/linear/dynamical_matrix.hpp"
-#include "granular/model/disorder.hpp"
 #include "granular/model/contact_law.hpp"
+#include "granular/model/disorder.hpp"
 
 namespace granular {
 

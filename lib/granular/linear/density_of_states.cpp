@@ -25,12 +25,13 @@ std::vector<double> integrated_density_of_states(const std::vector<std::int64_t>
 
 std::vector<double> density_of_states(const std::vector<double>& f, const std::vector<double>& idos) {
   if (f.size() != idos.size())
-    throw InvalidInput("frequencies", ": " + std::to_string(f.size()) + " values for " + std::to_string(idos.size()) +
-                       " IDOS values");
+    throw InvalidInput("frequencies",
+                       ": " + std::to_string(f.size()) + " values for " + std::to_string(idos.size()) + " IDOS values");
   for (std::size_t k = 1; k < f.size(); ++k)
     if (!(f[k] > f[k - 1]))
-      throw InvalidInput("frequencies", ": must increase strictly to difference the IDOS (value " + std::to_string(k + 1) +
-                         " = " + format_number(f[k]) + " kHz after " + format_number(f[k - 1]) + ")");
+      throw InvalidInput("frequencies", ": must increase strictly to difference the IDOS (value " +
+                                            std::to_string(k + 1) + " = " + format_number(f[k]) + " kHz after " +
+                                            format_number(f[k - 1]) + ")");
   const std::size_t n = f.size();
   std::vector<double> dos(n, std::numeric_limits<double>::quiet_NaN());
   if (n < 2) return dos;

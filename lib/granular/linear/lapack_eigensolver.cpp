@@ -59,7 +59,8 @@ int LapackEigensolver::run(LapackDriver driver, bool want_vectors, int n, EigenD
   const int ldz = std::max(n, 1);
   int info = 0, m = 0;
   out.values.resize(n);
-  if (want_vectors) out.vectors.resize(n, n); else out.vectors.resize(0, 0);
+  if (want_vectors) out.vectors.resize(n, n);
+  else out.vectors.resize(0, 0);
   double* z = want_vectors ? out.vectors.data() : nullptr;
   double dummy_z = 0;
   if (!z) z = &dummy_z;
@@ -178,7 +179,8 @@ int LapackEigensolver::run_indices(LapackDriver driver, bool want_vectors, int n
   const int ldz = std::max(n, 1);
   int info = 0, m = 0;
   out.values.resize(n);  // LAPACK may write up to N values into w
-  if (want_vectors) out.vectors.resize(n, wanted); else out.vectors.resize(0, 0);
+  if (want_vectors) out.vectors.resize(n, wanted);
+  else out.vectors.resize(0, 0);
   double dummy_z = 0;
   double* z = want_vectors ? out.vectors.data() : &dummy_z;
   const double vl = 0, vu = 0, abstol = 0;
@@ -213,8 +215,8 @@ int LapackEigensolver::run_bisection(bool want_vectors, int n, int first, int la
   work_.resize(5 * static_cast<std::size_t>(n));
   iwork_.resize(3 * static_cast<std::size_t>(n));
   // 'B': grouped by split block, as dstein needs.
-  dstebz_("I", "B", &n, &vl, &vu, &first, &last, &abstol, d_.data(), e_.data(), &m, &nsplit, w.data(),
-          iblock.data(), isplit.data(), work_.data(), iwork_.data(), &info, 1, 1);
+  dstebz_("I", "B", &n, &vl, &vu, &first, &last, &abstol, d_.data(), e_.data(), &m, &nsplit, w.data(), iblock.data(),
+          isplit.data(), work_.data(), iwork_.data(), &info, 1, 1);
   if (info != 0 || m != wanted) return info != 0 ? info : -1000;
   out.values.resize(wanted);
   Eigen::MatrixXd z;
@@ -229,7 +231,8 @@ int LapackEigensolver::run_bisection(bool want_vectors, int n, int first, int la
   std::vector<int> order(wanted);
   for (int i = 0; i < wanted; ++i) order[i] = i;
   std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return w[a] < w[b]; });
-  if (want_vectors) out.vectors.resize(n, wanted); else out.vectors.resize(0, 0);
+  if (want_vectors) out.vectors.resize(n, wanted);
+  else out.vectors.resize(0, 0);
   for (int i = 0; i < wanted; ++i) {
     out.values[i] = w[order[i]];
     if (want_vectors) out.vectors.col(i) = z.col(order[i]);

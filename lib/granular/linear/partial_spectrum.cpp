@@ -7,11 +7,11 @@
 #include <numeric>
 
 #include "granular/error.hpp"
-#include "granular/linear/dynamical_matrix.hpp"
 #include "granular/linear/detail/lapack_eigensolver.hpp"
-#include "granular/linear/mode_ipr.hpp"
 #include "granular/linear/detail/shift_invert_eigensolvers.hpp"
 #include "granular/linear/detail/sturm_bisection.hpp"
+#include "granular/linear/dynamical_matrix.hpp"
+#include "granular/linear/mode_ipr.hpp"
 #include "granular/linear/tridiagonal_operator.hpp"
 
 namespace granular {
@@ -173,7 +173,8 @@ PartialSpectrum solve_partial(const SymTridiagonal& t, const std::vector<double>
       // The K nearest form a run of consecutive modes that contains mode c or c + 1 (c = modes
       // below σ); one extra on each side absorbs a count off by one in round-off.
       const long c = static_cast<long>(op.count_below(sigma));
-      const long first = std::max(1L, c - static_cast<long>(k)), last = std::min(static_cast<long>(n), c + static_cast<long>(k) + 1);
+      const long first = std::max(1L, c - static_cast<long>(k)),
+                 last = std::min(static_cast<long>(n), c + static_cast<long>(k) + 1);
       if (config.method == SpectrumMethod::lapack) {
         cand = by_index(config.method, t, first, last, inverse_sqrt_mass, config.keep_vectors, config.lanes);
         chosen = nearest_in_frequency(cand.values, f0, k);
@@ -183,8 +184,8 @@ PartialSpectrum solve_partial(const SymTridiagonal& t, const std::vector<double>
         // nearly equidistant modes).
         const bool coarse = last - first + 1 <= 64;
         std::vector<double> brackets;
-        const auto values =
-            bisect_eigenvalues(t, static_cast<int>(first), static_cast<int>(last), 1e-14, coarse ? kIsolated : 0, &brackets);
+        const auto values = bisect_eigenvalues(t, static_cast<int>(first), static_cast<int>(last), 1e-14,
+                                               coarse ? kIsolated : 0, &brackets);
         const auto pick = nearest_in_frequency(values, f0, k);
         const long a = std::max(first, first + static_cast<long>(pick.front()) - 1);
         const long b = std::min(last, first + static_cast<long>(pick.back()) + 1);
@@ -200,7 +201,7 @@ PartialSpectrum solve_partial(const SymTridiagonal& t, const std::vector<double>
     } else {
       if (k > n - 1)
         throw InvalidInput("count", " " + std::to_string(k) + ": method " + std::string(to_string(config.method)) +
-                           " needs K <= N - 1 = " + std::to_string(n - 1) + " (use method lapack)");
+                                        " needs K <= N - 1 = " + std::to_string(n - 1) + " (use method lapack)");
       // Shift-invert converges fast only when the wanted eigenvalues are the nearest to the shift
       // *and* spread out compared with their distance from it. Inside a band (≥ 2K modes within
       // ±0.1 % of f0) σ itself is a good shift. In a gap, or beyond the spectrum, the K nearest sit
@@ -234,7 +235,7 @@ PartialSpectrum solve_partial(const SymTridiagonal& t, const std::vector<double>
         const std::size_t want = std::min(k + extra, n - 1);
         if (want < k)
           throw InvalidInput("count", " " + std::to_string(k) + ": method " + std::string(to_string(config.method)) +
-                             " needs K <= N - 1 = " + std::to_string(n - 1) + " (use method lapack)");
+                                          " needs K <= N - 1 = " + std::to_string(n - 1) + " (use method lapack)");
         cand = shift_invert(config.method, t, s, static_cast<int>(want), config);
         double r = 0;
         for (double v : cand.values) r = std::max(r, std::fabs(v - s));
@@ -323,7 +324,8 @@ std::string node_count_check(const PartialSpectrum& p, const ModeSelection& sele
                              double scale) {
   const std::size_t m = p.size();
   auto in = [&](double a, double b) {  // returned values in [a, b)
-    return static_cast<std::size_t>(std::count_if(p.omega2.begin(), p.omega2.end(), [&](double v) { return v >= a && v < b; }));
+    return static_cast<std::size_t>(
+        std::count_if(p.omega2.begin(), p.omega2.end(), [&](double v) { return v >= a && v < b; }));
   };
   auto count = [&](double a, double b) { return b > a ? op.count_below(b) - op.count_below(a) : std::size_t{0}; };
   double rmax = 0;
@@ -331,15 +333,18 @@ std::string node_count_check(const PartialSpectrum& p, const ModeSelection& sele
   const double delta = std::max(64 * std::numeric_limits<double>::epsilon(), 2 * rmax) * scale;
   if (selection.kind == ModeSelection::Kind::window) {
     const double lo = omega_squared_of_khz(selection.lo_khz), hi = omega_squared_of_khz(selection.hi_khz);
-    const std::size_t expect = op.count_below(std::nextafter(hi, std::numeric_limits<double>::infinity())) - op.count_below(lo);
+    const std::size_t expect =
+        op.count_below(std::nextafter(hi, std::numeric_limits<double>::infinity())) - op.count_below(lo);
     if (m != expect)
-      return "the window holds " + std::to_string(expect) + " eigenvalues by node count, " + std::to_string(m) + " returned";
+      return "the window holds " + std::to_string(expect) + " eigenvalues by node count, " + std::to_string(m) +
+             " returned";
     for (double v : p.omega2)
       if (v < lo - delta || v > hi + delta) return "a returned eigenvalue lies outside the window";
   }
   if (m == 0) return {};
   for (std::size_t j = 1; j < m; ++j)
-    if (p.mode[j] != p.mode[j - 1] + 1 || p.omega2[j] < p.omega2[j - 1]) return "the returned modes are not consecutive";
+    if (p.mode[j] != p.mode[j - 1] + 1 || p.omega2[j] < p.omega2[j - 1])
+      return "the returned modes are not consecutive";
   const double vmin = p.omega2.front(), vmax = p.omega2.back();
   const std::size_t below_lo = op.count_below(vmin - delta), above_lo = op.count_below(vmin + delta);
   if (!(p.mode.front() > below_lo && p.mode.front() <= above_lo))
@@ -355,7 +360,8 @@ std::string node_count_check(const PartialSpectrum& p, const ModeSelection& sele
   if (vmax - vmin > 2 * delta) {
     if (!agrees(vmin + delta, vmax - delta))
       return "an eigenvalue inside the returned range was missed (node count " +
-             std::to_string(count(vmin + delta, vmax - delta)) + ", returned " + std::to_string(in(vmin + delta, vmax - delta)) + ")";
+             std::to_string(count(vmin + delta, vmax - delta)) + ", returned " +
+             std::to_string(in(vmin + delta, vmax - delta)) + ")";
     if (count(vmin - delta, vmin + delta) < in(vmin - delta, vmin + delta) ||
         count(vmax - delta, vmax + delta) < in(vmax - delta, vmax + delta))
       return "more eigenvalues returned at an end than exist there";
@@ -384,7 +390,8 @@ PartialSpectrum partial_spectrum(const SymTridiagonal& t, const std::vector<doub
                                  const ModeSelection& selection, const PartialSpectrumConfig& config) {
   const std::size_t n = t.size();
   if (n < 2) throw InvalidInput("N", " " + std::to_string(n) + ": a chain needs at least 2 beads");
-  if (inverse_sqrt_mass.size() != n) throw InvalidInput("inverse_sqrt_mass", ": must have N = " + std::to_string(n) + " entries");
+  if (inverse_sqrt_mass.size() != n)
+    throw InvalidInput("inverse_sqrt_mass", ": must have N = " + std::to_string(n) + " entries");
   validate(selection, n);
   const TridiagonalOperator op(t);
   const double scale = t.max_abs();

@@ -24,7 +24,8 @@ namespace {
 bool started_by_us = false;
 
 void check(PetscErrorCode code, const char* what) {
-  if (code != 0) throw NumericalError(std::string("SLEPc/PETSc: ") + what + " failed (error " + std::to_string(code) + ")");
+  if (code != 0)
+    throw NumericalError(std::string("SLEPc/PETSc: ") + what + " failed (error " + std::to_string(code) + ")");
 }
 
 void ensure_started() {
@@ -68,7 +69,7 @@ ShiftInvertResult slepc_nearest(const SymTridiagonal& t, double sigma, const Shi
   const PetscInt nev = config.count;
   if (nev < 1 || nev > n - 1)
     throw InvalidInput("SLEPc", ": " + std::to_string(nev) + " eigenpairs of an N = " + std::to_string(n) +
-                       " matrix; it needs 1 <= count <= N - 1 (use --method lapack)");
+                                    " matrix; it needs 1 <= count <= N - 1 (use --method lapack)");
   if (!std::isfinite(sigma)) throw InvalidInput("SLEPc", ": the shift must be finite");
   ensure_started();
 
@@ -80,9 +81,16 @@ ShiftInvertResult slepc_nearest(const SymTridiagonal& t, double sigma, const Shi
     PetscInt cols[3];
     PetscScalar vals[3];
     PetscInt k = 0;
-    if (i > 0) { cols[k] = i - 1; vals[k++] = t.off_diagonal[i - 1]; }
-    cols[k] = i; vals[k++] = t.diagonal[i];
-    if (i + 1 < n) { cols[k] = i + 1; vals[k++] = t.off_diagonal[i]; }
+    if (i > 0) {
+      cols[k] = i - 1;
+      vals[k++] = t.off_diagonal[i - 1];
+    }
+    cols[k] = i;
+    vals[k++] = t.diagonal[i];
+    if (i + 1 < n) {
+      cols[k] = i + 1;
+      vals[k++] = t.off_diagonal[i];
+    }
     check(MatSetValues(a.p, 1, &i, k, cols, vals, INSERT_VALUES), "MatSetValues");
   }
   check(MatAssemblyBegin(a.p, MAT_FINAL_ASSEMBLY), "MatAssemblyBegin");
@@ -120,8 +128,8 @@ ShiftInvertResult slepc_nearest(const SymTridiagonal& t, double sigma, const Shi
   check(EPSGetConverged(eps.p, &nconv), "EPSGetConverged");
   check(EPSGetIterationNumber(eps.p, &its), "EPSGetIterationNumber");
   if (nconv < nev)
-    throw NumericalError("SLEPc: " + std::to_string(nconv) + " of " + std::to_string(nev) + " eigenpairs converged in " +
-                         std::to_string(its) + " restarts");
+    throw NumericalError("SLEPc: " + std::to_string(nconv) + " of " + std::to_string(nev) +
+                         " eigenpairs converged in " + std::to_string(its) + " restarts");
 
   std::vector<double> values(nconv);
   for (PetscInt i = 0; i < nconv; ++i) {

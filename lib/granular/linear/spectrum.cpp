@@ -40,13 +40,13 @@ void validate(const ModeSelection& s, std::size_t n) {
         throw InvalidInput("near_khz", " " + format_number(s.near_khz) + ": must be a finite frequency >= 0 kHz");
       if (s.count < 1) throw InvalidInput("count", " " + std::to_string(s.count) + ": must be >= 1");
       if (static_cast<unsigned long>(s.count) > n)
-        throw InvalidInput("count", " " + std::to_string(s.count) + ": the chain has only N = " + std::to_string(n) +
-                           " modes");
+        throw InvalidInput("count",
+                           " " + std::to_string(s.count) + ": the chain has only N = " + std::to_string(n) + " modes");
       return;
     case ModeSelection::Kind::window:
       if (!std::isfinite(s.lo_khz) || !std::isfinite(s.hi_khz) || s.lo_khz < 0 || s.hi_khz < s.lo_khz)
         throw InvalidInput("window", " " + format_number(s.lo_khz) + ":" + format_number(s.hi_khz) +
-                           ": need finite 0 <= lo_khz <= hi_khz (kHz)");
+                                         ": need finite 0 <= lo_khz <= hi_khz (kHz)");
       return;
   }
 }
@@ -55,7 +55,7 @@ void validate(const SpectrumConfig& c, const ModeSelection& s) {
   const bool every = s.kind == ModeSelection::Kind::all;
   if (every && c.method != SpectrumMethod::lapack && c.method != SpectrumMethod::fast)
     throw InvalidInput("method", " " + std::string(to_string(c.method)) +
-                       ": computes selected modes; for every mode use lapack or fast");
+                                     ": computes selected modes; for every mode use lapack or fast");
   if (!every && c.method == SpectrumMethod::fast)
     throw InvalidInput("method", " fast: computes every mode; for nearest/window use lapack, bisect, arpack or slepc");
   if (c.method == SpectrumMethod::fast && c.vectors)
@@ -137,7 +137,8 @@ Spectrum SpectrumSolver::solve(const DynamicalMatrix& d, const ModeSelection& se
       out.omega2.assign(eig.values.data(), eig.values.data() + n);
       out.ipr.resize(n);
       for (std::size_t k = 0; k < n; ++k)
-        out.ipr[k] = displacement_ipr(eig.vectors.col(static_cast<Eigen::Index>(k)).data(), d.inverse_sqrt_mass.data(), n);
+        out.ipr[k] =
+            displacement_ipr(eig.vectors.col(static_cast<Eigen::Index>(k)).data(), d.inverse_sqrt_mass.data(), n);
       if (config_.vectors) {
         out.vectors.assign(eig.vectors.data(), eig.vectors.data() + n * n);
         for (std::size_t k = 0; k < n; ++k) normalize(out.vectors.data() + k * n, n);

@@ -70,10 +70,10 @@ LapackDriver parse_lapack_driver(std::string_view name);
 struct SpectrumConfig {
   SpectrumMethod method = SpectrumMethod::lapack;
   LapackDriver driver = LapackDriver::stevd;  ///< lapack, every mode: preferred driver (others are fallbacks)
-  bool vectors = false;       ///< also return the eigenvectors (not with fast)
-  double tolerance = 0;       ///< arpack/slepc: Ritz tolerance; 0 = each method's tightest default
-  int subspace = 0;           ///< arpack/slepc: Krylov basis size; 0 = max(2K + 1, 20)
-  std::size_t lanes = 8;      ///< bisect: eigenvectors computed together, 1…64 (memory 2 N × lanes doubles)
+  bool vectors = false;                       ///< also return the eigenvectors (not with fast)
+  double tolerance = 0;                       ///< arpack/slepc: Ritz tolerance; 0 = each method's tightest default
+  int subspace = 0;                           ///< arpack/slepc: Krylov basis size; 0 = max(2K + 1, 20)
+  std::size_t lanes = 8;  ///< bisect: eigenvectors computed together, 1…64 (memory 2 N × lanes doubles)
 };
 
 /// Throws InvalidInput (naming the field) on a method that cannot do the selection, fast with
@@ -82,14 +82,14 @@ void validate(const SpectrumConfig& config, const ModeSelection& selection);
 
 /// What the solver did: for reports and for reproducing a result.
 struct SpectrumInfo {
-  std::string method;         ///< what ran: "fast", "lapack-stevd", "lapack-stemr", "bisect", "arpack", "slepc"
-  int fallbacks = 0;          ///< drivers that failed before the one that ran (lapack), chains that fell back (fast),
-                              ///< 1 when a nearest/window result failed its node-count check and bisect recomputed it
-                              ///< (method then reads e.g. "arpack→bisect"); a failing bisect throws NumericalError
-  int restarts = 0;           ///< arpack/slepc outer iterations
-  int candidates = 0;         ///< eigenpairs computed to select from (≥ the modes returned)
-  double max_residual = 0;    ///< max ‖D w − ω² w‖ / max|D_ij| over returned unit vectors (0 when not computed)
-  std::size_t clusters = 0;   ///< fast: near-degenerate clusters (relative gap < 1e-10) given their most localized basis
+  std::string method;        ///< what ran: "fast", "lapack-stevd", "lapack-stemr", "bisect", "arpack", "slepc"
+  int fallbacks = 0;         ///< drivers that failed before the one that ran (lapack), chains that fell back (fast),
+                             ///< 1 when a nearest/window result failed its node-count check and bisect recomputed it
+                             ///< (method then reads e.g. "arpack→bisect"); a failing bisect throws NumericalError
+  int restarts = 0;          ///< arpack/slepc outer iterations
+  int candidates = 0;        ///< eigenpairs computed to select from (≥ the modes returned)
+  double max_residual = 0;   ///< max ‖D w − ω² w‖ / max|D_ij| over returned unit vectors (0 when not computed)
+  std::size_t clusters = 0;  ///< fast: near-degenerate clusters (relative gap < 1e-10) given their most localized basis
 };
 
 /// The selected modes, by increasing frequency.
@@ -102,7 +102,7 @@ struct Spectrum {
   /// N × size() unit eigenvectors w of D, column-major (mode j at [j·N, (j+1)·N)), sign fixed by a
   /// positive largest entry; empty unless SpectrumConfig::vectors. Displacements: v = w ⊙ m^{-1/2}.
   std::vector<double> vectors;
-  std::size_t beads = 0;          ///< N
+  std::size_t beads = 0;  ///< N
   SpectrumInfo info;
 
   std::size_t size() const { return omega2.size(); }

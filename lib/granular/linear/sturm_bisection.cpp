@@ -1,8 +1,8 @@
 #include "granular/linear/detail/sturm_bisection.hpp"
 
 #include <algorithm>
-#include <cstdint>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <string>
 
@@ -178,7 +178,10 @@ std::vector<double> bisect_eigenvalues(const SymTridiagonal& t, int first, int l
       for (int j = 0; j < m; ++j) {
         const long k = first + j;
         if (c >= k) {
-          if (s < hi[j]) { hi[j] = s; count_hi[j] = c; }
+          if (s < hi[j]) {
+            hi[j] = s;
+            count_hi[j] = c;
+          }
         } else if (s > lo[j]) {
           lo[j] = s;
           count_lo[j] = c;
@@ -216,7 +219,9 @@ Eigen::MatrixXd inverse_iteration(const SymTridiagonal& t, std::vector<double>& 
   for (std::size_t j = 0; j < m; ++j) {
     double* x = z.col(static_cast<Eigen::Index>(j)).data();
     for (std::size_t i = 0; i < n; ++i) {  // fixed pseudo-random start (xorshift), reproducible
-      seed ^= seed << 13; seed ^= seed >> 7; seed ^= seed << 17;
+      seed ^= seed << 13;
+      seed ^= seed >> 7;
+      seed ^= seed << 17;
       x[i] = static_cast<double>(seed >> 11) * 0x1.0p-53 - 0.5;
     }
     lu.factorize(t, values[j]);
@@ -269,7 +274,9 @@ void lane_group(const SymTridiagonal& t, std::vector<double>& values, const std:
   std::vector<double> x(n * L), inv_d(n * L);  // row-major: entry i of lane j at i L + j
   std::uint64_t seed = 0x2545F4914F6CDD1Dull;
   for (auto& v : x) {  // fixed pseudo-random start (xorshift), reproducible
-    seed ^= seed << 13; seed ^= seed >> 7; seed ^= seed << 17;
+    seed ^= seed << 13;
+    seed ^= seed >> 7;
+    seed ^= seed << 17;
     v = static_cast<double>(seed >> 11) * 0x1.0p-53 - 0.5;
   }
   std::vector<double> mu(values), rho(values), res(m, std::numeric_limits<double>::infinity()), s2(m), xtx(m);
@@ -427,7 +434,6 @@ void lane_group(const SymTridiagonal& t, std::vector<double>& values, const std:
 
 }  // namespace
 
-
 Eigen::MatrixXd lane_inverse_iteration(const SymTridiagonal& t, std::vector<double>& values,
                                        const std::vector<double>* brackets, const LaneOptions& options) {
   const std::size_t n = t.size(), m = values.size();
@@ -444,7 +450,8 @@ Eigen::MatrixXd lane_inverse_iteration(const SymTridiagonal& t, std::vector<doub
   // disjoint brackets, orthogonal to ~ε‖T‖/gap without help.
   const double cluster = 1e-10 * norm;
   auto touching = [&](std::size_t j, std::size_t k) {  // k < j
-    return (brackets && (*brackets)[2 * j] - (*brackets)[2 * k + 1] < cluster) || std::fabs(values[j] - values[k]) < cluster;
+    return (brackets && (*brackets)[2 * j] - (*brackets)[2 * k + 1] < cluster) ||
+           std::fabs(values[j] - values[k]) < cluster;
   };
   // Groups of at most options.group lanes (memory 2 N × group doubles), never splitting a cluster.
   const std::size_t g = options.group == 0 ? m : options.group;
@@ -458,7 +465,9 @@ Eigen::MatrixXd lane_inverse_iteration(const SymTridiagonal& t, std::vector<doub
       while (j1 < m && touching(j1, j1 - 1)) ++j1;
     }
     group_values.assign(values.begin() + static_cast<long>(j0), values.begin() + static_cast<long>(j1));
-    if (brackets) group_brackets.assign(brackets->begin() + 2 * static_cast<long>(j0), brackets->begin() + 2 * static_cast<long>(j1));
+    if (brackets)
+      group_brackets.assign(brackets->begin() + 2 * static_cast<long>(j0),
+                            brackets->begin() + 2 * static_cast<long>(j1));
     lane_group(t, group_values, brackets ? &group_brackets : nullptr, options, z, j0);
     std::copy(group_values.begin(), group_values.end(), values.begin() + static_cast<long>(j0));
     j0 = j1;

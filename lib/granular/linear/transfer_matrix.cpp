@@ -16,7 +16,7 @@
 namespace granular {
 namespace {
 
-constexpr std::size_t piece_beads = 1024;    // beads read from the source at once (40 kB of coefficients)
+constexpr std::size_t piece_beads = 1024;     // beads read from the source at once (40 kB of coefficients)
 constexpr std::size_t renormalize_every = 8;  // growth per bead stays far below 1e38 for any sane frequency
 
 /// a·b + c with one rounding where the CPU has FMA (built with -march=native), else with two:
@@ -76,7 +76,8 @@ void sweep(std::size_t count, const double* alpha, const double* beta, const dou
       for (std::size_t j = 0; j < W; ++j) {
         const double c = multiply_add(-b, s.w2[j], a);
         const double next = multiply_add(c, s.u[j], -(g * s.up[j]));
-        s.nodes[j] += static_cast<std::int64_t>((std::bit_cast<std::uint64_t>(next) ^ std::bit_cast<std::uint64_t>(s.u[j])) >> 63);
+        s.nodes[j] +=
+            static_cast<std::int64_t>((std::bit_cast<std::uint64_t>(next) ^ std::bit_cast<std::uint64_t>(s.u[j])) >> 63);
         s.up[j] = s.u[j];
         s.u[j] = next;
       }
@@ -105,8 +106,8 @@ struct Block {
 /// the chain is read (and its coefficients computed) once and swept by every block while it is
 /// in cache, so a thread generates a streamed chain once however many frequencies it holds.
 template <std::size_t W>
-void run_blocks(const BeadSource& chain, const std::vector<double>& omega2, std::size_t first_block,
-                std::size_t stride, std::size_t segments, const TransferMatrixConfig& config, TransferMatrixScan& out) {
+void run_blocks(const BeadSource& chain, const std::vector<double>& omega2, std::size_t first_block, std::size_t stride,
+                std::size_t segments, const TransferMatrixConfig& config, TransferMatrixScan& out) {
   const std::size_t n = chain.size(), f = omega2.size();
   std::vector<Block<W>> blocks;
   std::size_t lanes_used = 0;
@@ -173,7 +174,8 @@ void run_blocks(const BeadSource& chain, const std::vector<double>& omega2, std:
 /// scalar, 4× slower per lane than 16 lanes.
 std::size_t lane_width(std::size_t frequencies, std::size_t threads) {
   const std::size_t per_thread = (frequencies + threads - 1) / threads;
-  for (std::size_t w : {16u, 32u}) if (per_thread <= w) return w;
+  for (std::size_t w : {16u, 32u})
+    if (per_thread <= w) return w;
   return 64;
 }
 
@@ -185,7 +187,7 @@ TransferMatrixScan transfer_matrix_scan(const BeadSource& chain, const std::vect
   for (std::size_t k = 0; k < frequency_khz.size(); ++k)
     if (!std::isfinite(frequency_khz[k]) || frequency_khz[k] < 0)
       throw InvalidInput("frequencies", ": value " + std::to_string(k + 1) + " = " + format_number(frequency_khz[k]) +
-                         " kHz (must be finite and >= 0)");
+                                            " kHz (must be finite and >= 0)");
   if (config.segments < 2) throw InvalidInput("segments", " " + std::to_string(config.segments) + ": must be >= 2");
   if (config.threads < 0) throw InvalidInput("threads", " " + std::to_string(config.threads) + ": must be >= 0");
   const std::size_t n = chain.size();

@@ -36,8 +36,8 @@ struct TransferMatrixConfig {
 };
 
 struct TransferMatrixScan {
-  std::vector<double> frequency_khz;   ///< as given [kHz]
-  std::vector<double> lyapunov;        ///< λ [1/bead]
+  std::vector<double> frequency_khz;  ///< as given [kHz]
+  std::vector<double> lyapunov;       ///< λ [1/bead]
   /// Standard error of λ from the segments (batch means): the segment exponents
   /// λ_s = (growth of ln‖(u_{n+1}, u_n)‖ over segment s) / (its length) have mean λ (up to
   /// the ±1-bead differences of segment lengths), and the error is

@@ -6,8 +6,8 @@
 #include <string>
 
 #include "granular/error.hpp"
-#include "granular/number_format.hpp"
 #include "granular/linear/detail/lapack.hpp"
+#include "granular/number_format.hpp"
 
 namespace granular {
 

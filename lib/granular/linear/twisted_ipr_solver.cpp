@@ -14,7 +14,7 @@ namespace {
 
 constexpr std::size_t L = TwistedModeIpr::lanes;
 constexpr double pivot_floor = 1e-290;  // a zero pivot becomes -pivot_floor (|e| ≤ 1 after scaling)
-constexpr double node_ratio = 1e3;     // |L⁺| or |U⁻| above this: a near-zero pivot, a node of z
+constexpr double node_ratio = 1e3;      // |L⁺| or |U⁻| above this: a near-zero pivot, a node of z
 constexpr double negligible = 1e-60;    // |z| below this (z_r = 1) ends a recurrence
 
 // IPR accumulation of one component; returns false once the component is negligible.
@@ -29,12 +29,12 @@ struct Sums {
   }
 };
 
-
 // Root-free QL iteration on one chain, advanced one inner step at a time so that several chains
 // can be interleaved. d: diagonal, e2: squared off-diagonal; eigenvalues end up in d (unsorted).
 class RationalQl {
  public:
-  RationalQl(double* d, double* e2, std::size_t n) : d_(d), e2_(e2), n_(static_cast<long>(n)), max_iterations_(30 * n_) {}
+  RationalQl(double* d, double* e2, std::size_t n)
+      : d_(d), e2_(e2), n_(static_cast<long>(n)), max_iterations_(30 * n_) {}
 
   /// Deflates what has converged and sets up the next sweep; false when finished (or failed).
   bool prepare() {
@@ -296,9 +296,8 @@ bool TwistedModeIpr::twisted_batch(const Slot& slot, const std::size_t* modes, s
     double z1 = 0;  // the component one further from the twist
     for (std::size_t i = r; i-- > 0;) {
       const double li = lp[i * L + l];
-      const double next = std::fabs(li) > node_ratio
-                              ? -((d[i + 1] - s_l) * z + (i + 2 < n ? e[i + 1] * z1 : 0.0)) / e[i]
-                              : -li * z;
+      const double next =
+          std::fabs(li) > node_ratio ? -((d[i + 1] - s_l) * z + (i + 2 < n ? e[i + 1] * z1 : 0.0)) / e[i] : -li * z;
       z1 = z;
       z = next;
       if (!(std::fabs(z) >= negligible) && !(std::fabs(z1) >= negligible)) break;
@@ -308,8 +307,8 @@ bool TwistedModeIpr::twisted_batch(const Slot& slot, const std::size_t* modes, s
     z1 = 0;
     for (std::size_t i = r; i + 1 < n; ++i) {
       const double ui = um[i * L + l];
-      const double next = std::fabs(ui) > node_ratio ? -((d[i] - s_l) * z + (i > 0 ? e[i - 1] * z1 : 0.0)) / e[i]
-                                                     : -ui * z;
+      const double next =
+          std::fabs(ui) > node_ratio ? -((d[i] - s_l) * z + (i > 0 ? e[i - 1] * z1 : 0.0)) / e[i] : -ui * z;
       z1 = z;
       z = next;
       if (!(std::fabs(z) >= negligible) && !(std::fabs(z1) >= negligible)) break;

@@ -43,8 +43,8 @@ struct TypeTable {
   template <class TypeOf>
   void fill(std::size_t n, std::size_t first, std::size_t count, TypeOf&& type_of, double* m, double* b) const {
     if (first + count > n || first > n)
-      throw InvalidInput("first", " " + std::to_string(first) + " + count " + std::to_string(count) + ": beyond N = " +
-                                      std::to_string(n));
+      throw InvalidInput("first", " " + std::to_string(first) + " + count " + std::to_string(count) +
+                                      ": beyond N = " + std::to_string(n));
     int left = first == 0 ? 0 : type_of(first - 1);  // 0: the wall
     for (std::size_t i = 0; i < count; ++i) {
       const int here = type_of(first + i);
@@ -101,7 +101,8 @@ class RandomBeads final : public BeadSource {
 class TypedBeads final : public BeadSource {
  public:
   TypedBeads(Configuration types, const ChainParameters& p) : table_(p), types_(std::move(types)) {
-    if (types_.size() < 2) throw InvalidInput("N", " " + std::to_string(types_.size()) + ": a chain needs at least 2 beads");
+    if (types_.size() < 2)
+      throw InvalidInput("N", " " + std::to_string(types_.size()) + ": a chain needs at least 2 beads");
     for (std::size_t i = 0; i < types_.size(); ++i)
       if (types_[i] != 1 && types_[i] != 2)
         throw InvalidInput("types", ": bead " + std::to_string(i + 1) + " has type " + std::to_string(types_[i]) +
@@ -109,7 +110,8 @@ class TypedBeads final : public BeadSource {
   }
   std::size_t size() const override { return types_.size(); }
   void read(std::size_t first, std::size_t count, double* mass, double* stiffness) const override {
-    table_.fill(types_.size(), first, count, [&](std::size_t i) -> int { return types_[i]; }, mass, stiffness);
+    table_.fill(
+        types_.size(), first, count, [&](std::size_t i) -> int { return types_[i]; }, mass, stiffness);
   }
 
  private:
@@ -126,8 +128,8 @@ class ChainBeads final : public BeadSource {
   std::size_t size() const override { return mass_.size(); }
   void read(std::size_t first, std::size_t count, double* mass, double* stiffness) const override {
     if (first > mass_.size() || count > mass_.size() - first)
-      throw InvalidInput("first", " " + std::to_string(first) + " + count " + std::to_string(count) + ": beyond N = " +
-                                      std::to_string(mass_.size()));
+      throw InvalidInput("first", " " + std::to_string(first) + " + count " + std::to_string(count) +
+                                      ": beyond N = " + std::to_string(mass_.size()));
     for (std::size_t i = 0; i < count; ++i) mass[i] = mass_[first + i];
     for (std::size_t i = 0; i <= count; ++i) stiffness[i] = stiffness_[first + i];
   }

@@ -33,7 +33,8 @@ Chain make_chain(const ChainSpec& spec) {
   for (std::size_t i = 0; i < n; ++i) {
     const double r = spec.radii[i];
     if (!std::isfinite(r) || r <= 0)
-      throw InvalidInput("radii", ": bead " + std::to_string(i + 1) + " has radius " + format_number(r) + " m (must be finite and > 0)");
+      throw InvalidInput("radii", ": bead " + std::to_string(i + 1) + " has radius " + format_number(r) +
+                                      " m (must be finite and > 0)");
     c.mass[i] = material_of(i).density * (4.0 / 3.0) * std::numbers::pi * r * r * r;
     c.inverse_mass[i] = 1.0 / c.mass[i];
   }

@@ -21,12 +21,12 @@ struct Wall {
 
 /// What a chain is made of; `make_chain` validates it.
 struct ChainSpec {
-  std::vector<double> radii;         ///< bead radii [m], N ≥ 2 entries
-  std::vector<Material> materials;   ///< one material for all beads, or one per bead
+  std::vector<double> radii;        ///< bead radii [m], N ≥ 2 entries
+  std::vector<Material> materials;  ///< one material for all beads, or one per bead
   Wall left_wall;
   Wall right_wall;
-  double precompression = 10.0;      ///< static force F0 ≥ 0 [N]; 0 is the sonic vacuum
-  bool walls_match_beads = true;     ///< walls take the material of their neighbouring bead
+  double precompression = 10.0;   ///< static force F0 ≥ 0 [N]; 0 is the sonic vacuum
+  bool walls_match_beads = true;  ///< walls take the material of their neighbouring bead
 };
 
 struct Chain {

@@ -66,7 +66,9 @@ std::vector<double> parse_radii_text(const std::string& text, const std::string&
   return radii;
 }
 
-Configuration read_configuration_file(const std::string& path) { return parse_configuration_text(read_text(path), path); }
+Configuration read_configuration_file(const std::string& path) {
+  return parse_configuration_text(read_text(path), path);
+}
 
 std::vector<double> read_radii_file(const std::string& path) { return parse_radii_text(read_text(path), path); }
 

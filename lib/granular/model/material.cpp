@@ -12,7 +12,8 @@ void validate(const Material& m, const char* what) {
     throw InvalidInput(std::string(what) + ": " + field + " = " + std::to_string(v) + " (must be " + rule + ")");
   };
   if (!std::isfinite(m.young) || m.young <= 0) fail("Young modulus", m.young, "finite and > 0");
-  if (!std::isfinite(m.poisson) || m.poisson <= -1 || m.poisson >= 0.5) fail("Poisson ratio", m.poisson, "in (-1, 0.5)");
+  if (!std::isfinite(m.poisson) || m.poisson <= -1 || m.poisson >= 0.5)
+    fail("Poisson ratio", m.poisson, "in (-1, 0.5)");
   if (!std::isfinite(m.density) || m.density <= 0) fail("density", m.density, "finite and > 0");
 }
 

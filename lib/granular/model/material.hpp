@@ -4,9 +4,9 @@
 namespace granular {
 
 struct Material {
-  double young = 193e9;       ///< Young modulus E [Pa]
-  double poisson = 0.3;       ///< Poisson ratio ν [-]
-  double density = 8027.17;   ///< mass density ρ [kg/m³]
+  double young = 193e9;      ///< Young modulus E [Pa]
+  double poisson = 0.3;      ///< Poisson ratio ν [-]
+  double density = 8027.17;  ///< mass density ρ [kg/m³]
 };
 
 /// The paper's stainless steel (SPEC §1).

@@ -13,8 +13,10 @@ void validate(const ChainParameters& p) {
   if (p.N > 100000000) throw InvalidInput("N", " " + std::to_string(p.N) + ": more than 1e8 beads");
   validate_probability(p.q);
   validate_size_ratio(p.xi);
-  if (!std::isfinite(p.F0) || p.F0 < 0) throw InvalidInput("F0", " " + format_number(p.F0) + ": must be finite and >= 0");
-  if (!std::isfinite(p.R1) || p.R1 <= 0) throw InvalidInput("R1", " " + format_number(p.R1) + ": must be finite and > 0");
+  if (!std::isfinite(p.F0) || p.F0 < 0)
+    throw InvalidInput("F0", " " + format_number(p.F0) + ": must be finite and >= 0");
+  if (!std::isfinite(p.R1) || p.R1 <= 0)
+    throw InvalidInput("R1", " " + format_number(p.R1) + ": must be finite and > 0");
   validate(p.material, "material");
 }
 
@@ -32,7 +34,8 @@ Chain diatomic(const ChainParameters& p) {
 
 Chain from_types(const Configuration& types, const ChainParameters& p) {
   validate_size_ratio(p.xi);
-  if (!std::isfinite(p.R1) || p.R1 <= 0) throw InvalidInput("R1", " " + format_number(p.R1) + ": must be finite and > 0");
+  if (!std::isfinite(p.R1) || p.R1 <= 0)
+    throw InvalidInput("R1", " " + format_number(p.R1) + ": must be finite and > 0");
   for (std::size_t i = 0; i < types.size(); ++i)
     if (types[i] != 1 && types[i] != 2)
       throw InvalidInput("types", ": bead " + std::to_string(i + 1) + " has type " + std::to_string(types[i]) +

@@ -20,14 +20,14 @@ namespace granular {
 inline constexpr double paper_r1 = 4.76e-3;
 
 struct ChainParameters {
-  std::size_t N = 100;             ///< beads, ≥ 2
-  double q = 0.5;                  ///< probability of a type-1 bead (A), dimer "11" (RDM1) or "12" (RDM2), in [0, 1]
-  double xi = 0.5;                 ///< size ratio R2/R1 in (0, 1]
-  std::uint64_t seed = 1;          ///< random seed
-  std::uint64_t realization = 0;   ///< which realization of the seed
-  double F0 = 10;                  ///< static precompression [N], ≥ 0 (0: the sonic vacuum)
-  double R1 = paper_r1;            ///< type-1 radius [m]
-  Material material = steel;       ///< beads and walls
+  std::size_t N = 100;            ///< beads, ≥ 2
+  double q = 0.5;                 ///< probability of a type-1 bead (A), dimer "11" (RDM1) or "12" (RDM2), in [0, 1]
+  double xi = 0.5;                ///< size ratio R2/R1 in (0, 1]
+  std::uint64_t seed = 1;         ///< random seed
+  std::uint64_t realization = 0;  ///< which realization of the seed
+  double F0 = 10;                 ///< static precompression [N], ≥ 0 (0: the sonic vacuum)
+  double R1 = paper_r1;           ///< type-1 radius [m]
+  Material material = steel;      ///< beads and walls
 };
 
 /// Throws InvalidInput naming the field (N, q, xi, F0, R1, material) unless it is in range.

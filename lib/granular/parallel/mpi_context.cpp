@@ -85,7 +85,10 @@ std::vector<std::vector<double>> MpiContext::gather_rows(std::size_t total, cons
   std::vector<double> received;
   if (rank_ == 0) {
     int total_count = 0;
-    for (int r = 0; r < size_; ++r) { offsets[r] = total_count; total_count += counts[r]; }
+    for (int r = 0; r < size_; ++r) {
+      offsets[r] = total_count;
+      total_count += counts[r];
+    }
     received.resize(static_cast<std::size_t>(total_count));
   }
   MPI_Gatherv(send.data(), count, MPI_DOUBLE, received.data(), counts.data(), offsets.data(), MPI_DOUBLE, 0,

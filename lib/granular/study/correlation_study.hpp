@@ -16,7 +16,7 @@ struct CorrelationConfig {
   std::size_t n = 100;                     ///< beads per chain, ≥ 2
   std::size_t realizations = 100;
   std::uint64_t seed = 1;
-  std::size_t max_distance = 10;           ///< largest shift d, < N
+  std::size_t max_distance = 10;  ///< largest shift d, < N
 };
 
 struct CorrelationResult {

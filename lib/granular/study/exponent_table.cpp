@@ -54,8 +54,7 @@ std::string cell_text(const ExponentReport& r) {
   char text[96];
   const ExponentEstimate& e = r.shown();
   const double real = r.shown_realization_error();
-  if (std::isnan(real))
-    std::snprintf(text, sizeof text, "%.3f ± %.3f%s", e.value, e.error, r.starred() ? " *" : "");
+  if (std::isnan(real)) std::snprintf(text, sizeof text, "%.3f ± %.3f%s", e.value, e.error, r.starred() ? " *" : "");
   else
     std::snprintf(text, sizeof text, "%.3f ± %.3f (± %.3f real.)%s", e.value, e.error, real, r.starred() ? " *" : "");
   return text;
@@ -69,8 +68,9 @@ std::string markdown_tables(const std::vector<ExponentCell>& cells, const Expone
       out += "\n";
       out += gamma ? "γ (m̃2 ∝ t^γ, m̃2 about the " + centre + ")" : std::string("η (P⁻¹ ∝ t^−η)");
       out += ", " + to_string(kick);
-      out += " kick (value ± spread over the fit sub-windows (± realization bootstrap); * = not a power law: "
-             "|L_d − fit| ≥ κ after t*, the value is the mean L_d over the fit window)\n\n| F0 [N] |";
+      out +=
+          " kick (value ± spread over the fit sub-windows (± realization bootstrap); * = not a power law: "
+          "|L_d − fit| ≥ κ after t*, the value is the mean L_d over the fit window)\n\n| F0 [N] |";
       for (Disorder d : config.chains) out.append(" ").append(to_string(d)).append(" |");
       out += "\n|---|";
       for (std::size_t i = 0; i < config.chains.size(); ++i) out += "---|";
@@ -90,13 +90,42 @@ std::string markdown_tables(const std::vector<ExponentCell>& cells, const Expone
 }
 
 void write_exponents_csv(std::ostream& out, const std::vector<ExponentCell>& cells) {
-  CsvWriter table(out, {"ic", "F0", "disorder", "centre", "gamma", "gamma_err", "gamma_real_err", "gamma_star",
-                        "gamma_fit", "gamma_fit_err", "gamma_fit_real_err", "gamma_mean_ld", "gamma_mean_ld_err",
-                        "gamma_mean_ld_real_err", "worst_deviation_m2", "other_centre", "gamma_other",
-                        "gamma_other_err", "gamma_other_real_err", "gamma_other_star", "gamma_other_fit",
-                        "gamma_other_mean_ld", "eta", "eta_err", "eta_real_err", "eta_star", "eta_fit", "eta_fit_err",
-                        "eta_fit_real_err", "eta_mean_ld", "eta_mean_ld_err", "eta_mean_ld_real_err",
-                        "worst_deviation_ipr", "realizations", "max_energy_error", "reached_walls"});
+  CsvWriter table(out, {"ic",
+                        "F0",
+                        "disorder",
+                        "centre",
+                        "gamma",
+                        "gamma_err",
+                        "gamma_real_err",
+                        "gamma_star",
+                        "gamma_fit",
+                        "gamma_fit_err",
+                        "gamma_fit_real_err",
+                        "gamma_mean_ld",
+                        "gamma_mean_ld_err",
+                        "gamma_mean_ld_real_err",
+                        "worst_deviation_m2",
+                        "other_centre",
+                        "gamma_other",
+                        "gamma_other_err",
+                        "gamma_other_real_err",
+                        "gamma_other_star",
+                        "gamma_other_fit",
+                        "gamma_other_mean_ld",
+                        "eta",
+                        "eta_err",
+                        "eta_real_err",
+                        "eta_star",
+                        "eta_fit",
+                        "eta_fit_err",
+                        "eta_fit_real_err",
+                        "eta_mean_ld",
+                        "eta_mean_ld_err",
+                        "eta_mean_ld_real_err",
+                        "worst_deviation_ipr",
+                        "realizations",
+                        "max_energy_error",
+                        "reached_walls"});
   const auto flag = [](bool b) { return b ? "true" : "false"; };
   for (const auto& c : cells) {
     const auto& d = c.definition;

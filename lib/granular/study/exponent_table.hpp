@@ -15,9 +15,9 @@ struct ExponentTableConfig {
   std::vector<Disorder> chains{Disorder::homogeneous, Disorder::anderson, Disorder::rdm1, Disorder::rdm2};
   std::vector<double> precompressions{10, 0.5, 0.1, 0.01, 0};  ///< F0 [N]
   std::vector<Kick> kicks{Kick::displacement, Kick::velocity};
-  TransportCase base;                        ///< everything else (N, T, τ, ξ, q, R, seed, …)
+  TransportCase base;                                       ///< everything else (N, T, τ, ξ, q, R, seed, …)
   std::vector<double> profile_precompressions{10, 0.1, 0};  ///< F0s whose E_n(T) is averaged
-  std::size_t profile_realizations = 100;    ///< the paper averages profiles over 100
+  std::size_t profile_realizations = 100;                   ///< the paper averages profiles over 100
 };
 
 struct ExponentCell {
@@ -29,8 +29,9 @@ struct ExponentRunOptions {
   int threads = 0;
   std::string checkpoint_prefix;  ///< case i logs to <prefix>.<i>; empty: no checkpoints
   bool resume = false;
-  int progress = -1;              ///< ProgressMeter's enabled flag
-  ProgressMeter* meter = nullptr;  ///< optional: advance this meter (total: every case's realizations) instead of one of its own
+  int progress = -1;  ///< ProgressMeter's enabled flag
+  ProgressMeter* meter =
+      nullptr;  ///< optional: advance this meter (total: every case's realizations) instead of one of its own
   std::function<bool()> cancelled{};  ///< see RunOptions::cancelled
 };
 

@@ -16,19 +16,21 @@ namespace granular {
 void validate(const IprMapConfig& c) {
   if (c.n < 2) throw InvalidInput("N", " " + std::to_string(c.n) + ": a chain needs at least 2 beads");
   if (!(c.precompression > 0) || !std::isfinite(c.precompression))
-    throw InvalidInput("precompression", " " + format_number(c.precompression) +
-                       ": the linear spectrum needs a finite F0 > 0");
+    throw InvalidInput("precompression",
+                       " " + format_number(c.precompression) + ": the linear spectrum needs a finite F0 > 0");
   if (c.realizations < 1) throw InvalidInput("realizations", " 0: must be >= 1");
   if (c.q_values.empty()) throw InvalidInput("q", ": no values");
   if (c.xi_values.empty()) throw InvalidInput("xi", ": no values");
   for (double q : c.q_values) validate_probability(q);
   for (double xi : c.xi_values) validate_size_ratio(xi);
-  if (!(c.r1 > 0) || !std::isfinite(c.r1)) throw InvalidInput("R1", " " + format_number(c.r1) + ": must be finite and > 0");
+  if (!(c.r1 > 0) || !std::isfinite(c.r1))
+    throw InvalidInput("R1", " " + format_number(c.r1) + ": must be finite and > 0");
   validate(c.material, "material");
   validate(c.selection, c.n);
   validate(c.spectrum, c.selection);
   if (!std::isfinite(c.bin_khz) || c.bin_khz < 0)
-    throw InvalidInput("bin_khz", " " + format_number(c.bin_khz) + ": must be finite and >= 0 (0 = average by mode number)");
+    throw InvalidInput("bin_khz",
+                       " " + format_number(c.bin_khz) + ": must be finite and >= 0 (0 = average by mode number)");
   if (c.bin_khz > 0 && c.selection.kind != ModeSelection::Kind::all)
     throw InvalidInput("bin_khz", ": frequency bins average every mode; not with a nearest/window selection");
   if (c.spectrum.method == SpectrumMethod::slepc)
@@ -82,7 +84,7 @@ std::vector<IprMapCell> compute_ipr_map(const IprMapConfig& c, const RunOptions&
   for (int t = 0; t < threads; ++t) solvers.emplace_back(c.spectrum);
 
   const std::size_t n = c.n, realizations = c.realizations;
-  constexpr std::size_t batch = 4;  // chains per solve_all call
+  constexpr std::size_t batch = 4;                                      // chains per solve_all call
   std::vector<double> omega2(realizations * n), ipr(realizations * n);  // slot r holds realization r
   std::vector<Configuration> types(realizations);
   std::vector<IprMapCell> cells;
@@ -130,13 +132,15 @@ std::vector<IprMapCell> compute_ipr_map(const IprMapConfig& c, const RunOptions&
         cell.bin_modes.assign(bins, 0);
         cell.bin_ipr.assign(bins, 0.0);
         for (std::size_t i = 0; i < realizations * n; ++i) {
-          const auto b = std::min(bins - 1, static_cast<std::size_t>(std::floor(std::max(0.0, frequency_khz(omega2[i])) / c.bin_khz)));
+          const auto b =
+              std::min(bins - 1,
+                       static_cast<std::size_t>(std::floor(std::max(0.0, frequency_khz(omega2[i])) / c.bin_khz)));
           ++cell.bin_modes[b];
           cell.bin_ipr[b] += ipr[i];
         }
         for (std::size_t b = 0; b < bins; ++b)
           cell.bin_ipr[b] = cell.bin_modes[b] > 0 ? cell.bin_ipr[b] / static_cast<double>(cell.bin_modes[b])
-                                                   : std::numeric_limits<double>::quiet_NaN();
+                                                  : std::numeric_limits<double>::quiet_NaN();
       }
       cells.push_back(std::move(cell));
     }

@@ -16,12 +16,12 @@ namespace granular {
 struct IprMapConfig {
   Disorder disorder = Disorder::anderson;
   std::vector<double> q_values{0.2, 0.5, 0.8};  ///< probabilities in [0, 1]
-  std::vector<double> xi_values;      ///< size ratios R2/R1 in (0, 1]
-  std::size_t n = 100;                ///< beads per chain, ≥ 2
-  double precompression = 10;         ///< F0 [N], > 0
+  std::vector<double> xi_values;                ///< size ratios R2/R1 in (0, 1]
+  std::size_t n = 100;                          ///< beads per chain, ≥ 2
+  double precompression = 10;                   ///< F0 [N], > 0
   std::size_t realizations = 100;
   std::uint64_t seed = 1;
-  double r1 = 4.76e-3;                ///< type-1 radius [m]
+  double r1 = 4.76e-3;  ///< type-1 radius [m]
   Material material = steel;
   /// Every mode (averaged over realizations by mode number) or a nearest/window selection (every
   /// selected mode of every realization, not averaged: mode numbers and counts differ between chains).

@@ -6,9 +6,9 @@
 #include <utility>
 
 #include "granular/error.hpp"
-#include "granular/number_format.hpp"
 #include "granular/linear/density_of_states.hpp"
 #include "granular/linear/transfer_matrix.hpp"
+#include "granular/number_format.hpp"
 
 namespace granular {
 
@@ -18,10 +18,10 @@ void validate(const LocalizationScanConfig& config) {
   for (std::size_t k = 0; k < f.size(); ++k) {
     if (!std::isfinite(f[k]) || f[k] < 0)
       throw InvalidInput("frequencies", ": value " + std::to_string(k + 1) + " = " + format_number(f[k]) +
-                         " kHz (must be finite and >= 0)");
+                                            " kHz (must be finite and >= 0)");
     if (k > 0 && !(f[k] > f[k - 1]))
       throw InvalidInput("frequencies", ": must increase strictly (value " + std::to_string(k + 1) + " = " +
-                         format_number(f[k]) + " kHz after " + format_number(f[k - 1]) + ")");
+                                            format_number(f[k]) + " kHz after " + format_number(f[k - 1]) + ")");
   }
   if (config.segments < 2) throw InvalidInput("segments", " " + std::to_string(config.segments) + ": must be >= 2");
 }

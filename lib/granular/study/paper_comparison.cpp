@@ -125,8 +125,7 @@ std::string markdown_comparison(const std::vector<CellComparison>& rows) {
     char paper[48];
     if (r.paper.error > 0)
       std::snprintf(paper, sizeof paper, "%.3f ± %.3f%s", r.paper.gamma, r.paper.error, r.paper.starred ? " *" : "");
-    else
-      std::snprintf(paper, sizeof paper, "%.3f%s", r.paper.gamma, r.paper.starred ? " *" : "");
+    else std::snprintf(paper, sizeof paper, "%.3f%s", r.paper.gamma, r.paper.starred ? " *" : "");
     out += "| " + to_string(r.paper.kick) + " | " + format_number(r.paper.precompression) + " | " +
            to_string(r.paper.disorder) + " | " + paper + " | " + value_text(r.site) + " | " + z_text(r.site.z_window) +
            " | " + z_text(r.site.z) + " | " + value_text(r.centroid) + " | " + z_text(r.centroid.z_window) + " | " +

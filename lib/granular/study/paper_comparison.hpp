@@ -25,8 +25,8 @@ struct PaperCell {
   double precompression = 0;  ///< F0 [N]
   Disorder disorder = Disorder::homogeneous;
   double gamma = 0;
-  double error = 0;           ///< the paper's ± (0 where it prints none: the homogeneous chains)
-  bool starred = false;       ///< the paper's (*): the value is a mean L_d
+  double error = 0;      ///< the paper's ± (0 where it prints none: the homogeneous chains)
+  bool starred = false;  ///< the paper's (*): the value is a mean L_d
 };
 
 /// Reads the table (CSV `ic,F0_N,disorder,gamma,err,star`, '#' comments), e.g.

@@ -17,8 +17,9 @@ void write_spectrum_hdf5(const std::string& path, const Spectrum& s, const Dynam
   // Column-major N × K is exactly the row-major K × N array.
   if (!s.vectors.empty()) file.write("eigenvectors", s.vectors.data(), s.size(), s.beads);
   file.attribute("method", s.info.method);
-  file.attribute("eigenvectors_layout",
-                 "row j = unit eigenvector w of the dynamical matrix for mode[j]; displacement v = w * inverse_sqrt_mass");
+  file.attribute(
+      "eigenvectors_layout",
+      "row j = unit eigenvector w of the dynamical matrix for mode[j]; displacement v = w * inverse_sqrt_mass");
   file.commit();
 }
 

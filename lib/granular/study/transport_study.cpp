@@ -6,10 +6,10 @@
 #include "granular/dynamics/force_law.hpp"
 #include "granular/dynamics/initial_conditions.hpp"
 #include "granular/ensemble/ensemble_runner.hpp"
-#include "granular/parallel/mpi_context.hpp"
 #include "granular/error.hpp"
-#include "granular/number_format.hpp"
 #include "granular/model/chain.hpp"
+#include "granular/number_format.hpp"
+#include "granular/parallel/mpi_context.hpp"
 
 namespace granular {
 
@@ -27,21 +27,24 @@ void validate(const TransportCase& c) {
   if (c.n < 2) throw InvalidInput("N", " " + std::to_string(c.n) + ": a chain needs at least 2 beads");
   if (!std::isfinite(c.precompression) || c.precompression < 0)
     throw InvalidInput("F0", " " + format_number(c.precompression) + ": must be finite and >= 0");
-  if (c.site >= c.n) throw InvalidInput("site", " " + std::to_string(c.site + 1) + ": outside the chain of " + std::to_string(c.n) + " beads");
+  if (c.site >= c.n)
+    throw InvalidInput("site",
+                       " " + std::to_string(c.site + 1) + ": outside the chain of " + std::to_string(c.n) + " beads");
   if (c.realizations < 1) throw InvalidInput("realizations", ": must be >= 1");
   validate(c.dynamics, c.n);  // T and τ first: a fit window is judged against them
   if (c.fit && (!(c.fit_begin > 0) || !(c.fit_end > c.fit_begin) || !std::isfinite(c.fit_end)))
     throw InvalidInput("fit", ": need 0 < start < stop");
   if (c.fit && c.fit_end > c.dynamics.duration * (1 + 1e-12))
-    throw InvalidInput("fit", " " + format_number(c.fit_begin) + ":" + format_number(c.fit_end) + ": reaches beyond the duration T = " +
-                       format_number(c.dynamics.duration));
+    throw InvalidInput("fit", " " + format_number(c.fit_begin) + ":" + format_number(c.fit_end) +
+                                  ": reaches beyond the duration T = " + format_number(c.dynamics.duration));
   if (!(c.criterion.kappa > 0) || !std::isfinite(c.criterion.kappa))
     throw InvalidInput("kappa", " " + format_number(c.criterion.kappa) + ": must be finite and > 0");
   if (!(c.criterion.t_start >= 0) || !std::isfinite(c.criterion.t_start))
     throw InvalidInput("t_star", " " + format_number(c.criterion.t_start) + " s: must be finite and >= 0");
   if (c.fit && c.bootstrap.resamples < 2) throw InvalidInput("bootstrap", ": need at least 2 resamples");
   const bool uses_alpha = c.kick == Kick::displacement || c.match_beta;
-  if (uses_alpha && (!std::isfinite(c.alpha) || c.alpha == 0)) throw InvalidInput("alpha", " " + format_number(c.alpha) + ": must be finite and non-zero [m]");
+  if (uses_alpha && (!std::isfinite(c.alpha) || c.alpha == 0))
+    throw InvalidInput("alpha", " " + format_number(c.alpha) + ": must be finite and non-zero [m]");
   if (c.kick == Kick::velocity && !c.match_beta && (!std::isfinite(c.beta) || c.beta == 0))
     throw InvalidInput("beta", " " + format_number(c.beta) + ": must be finite and non-zero [m/s], or 'match'");
   if (c.n > 100000000) throw InvalidInput("N", " " + std::to_string(c.n) + ": more than 1e8 beads");
@@ -56,7 +59,7 @@ void validate(const TransportCase& c) {
       windowed_exponent(t, t, c.fit_begin, c.fit_end);
     } catch (const InvalidInput& e) {
       throw InvalidInput("fit", " " + format_number(c.fit_begin) + ":" + format_number(c.fit_end) +
-                         ": too few samples in a sub-window (" + e.what() + ")");
+                                    ": too few samples in a sub-window (" + e.what() + ")");
     }
   }
 }
@@ -80,18 +83,35 @@ nlohmann::json describe(const TransportCase& c) {
   const bool uses_alpha = c.kick == Kick::displacement || c.match_beta;
   nlohmann::json beta = nullptr;  // the values used: α only where the kick uses it, β only for a velocity kick
   if (c.kick == Kick::velocity) beta = c.match_beta ? nlohmann::json("match") : nlohmann::json(c.beta);
-  return {{"disorder", to_string(c.disorder)}, {"q", c.q}, {"xi", c.xi}, {"N", c.n}, {"F0_N", c.precompression},
-          {"R1_m", c.r1}, {"ic", to_string(c.kick)}, {"alpha_m", uses_alpha ? nlohmann::json(c.alpha) : nullptr},
-          {"beta_m_s", beta}, {"site", c.site + 1}, {"m2_centre", to_string(c.centre)},
-          {"T_s", d.duration}, {"dt_s", d.time_step}, {"integrator", d.integrator},
-          {"force_law", to_string(d.force_law)}, {"samples", d.samples},
+  return {{"disorder", to_string(c.disorder)},
+          {"q", c.q},
+          {"xi", c.xi},
+          {"N", c.n},
+          {"F0_N", c.precompression},
+          {"R1_m", c.r1},
+          {"ic", to_string(c.kick)},
+          {"alpha_m", uses_alpha ? nlohmann::json(c.alpha) : nullptr},
+          {"beta_m_s", beta},
+          {"site", c.site + 1},
+          {"m2_centre", to_string(c.centre)},
+          {"T_s", d.duration},
+          {"dt_s", d.time_step},
+          {"integrator", d.integrator},
+          {"force_law", to_string(d.force_law)},
+          {"samples", d.samples},
           {"sampling", d.sampling == Sampling::logarithmic ? "log" : "uniform"},
           {"fit_s", c.fit ? nlohmann::json({c.fit_begin, c.fit_end}) : nlohmann::json(nullptr)},
-          {"fit_step_s", c.fit_step}, {"kappa", c.criterion.kappa}, {"t_star_s", c.criterion.t_start},
-          {"bootstrap_resamples", c.bootstrap.resamples}, {"bootstrap_seed", c.bootstrap.seed},
-          {"active_window", d.window.enabled}, {"window_threshold", d.window.threshold},
-          {"max_energy_error", d.max_energy_error}, {"stop_on_energy_error", d.stop_on_energy_error},
-          {"seed", c.seed}, {"realizations", c.realizations},
+          {"fit_step_s", c.fit_step},
+          {"kappa", c.criterion.kappa},
+          {"t_star_s", c.criterion.t_start},
+          {"bootstrap_resamples", c.bootstrap.resamples},
+          {"bootstrap_seed", c.bootstrap.seed},
+          {"active_window", d.window.enabled},
+          {"window_threshold", d.window.threshold},
+          {"max_energy_error", d.max_energy_error},
+          {"stop_on_energy_error", d.stop_on_energy_error},
+          {"seed", c.seed},
+          {"realizations", c.realizations},
           {"profile_realizations", std::min(c.profile_realizations, c.realizations)},
           {"material", {{"E_Pa", steel.young}, {"nu", steel.poisson}, {"rho_kg_m3", steel.density}}},
           {"walls", "flat, same material as the beads"}};
@@ -111,27 +131,37 @@ TransportExponents transport_exponents(const TransportCase& c, const std::vector
 
 nlohmann::json to_json(const ExponentReport& r) {
   const auto estimate = [](const ExponentEstimate& e, double realization_error) {
-    return nlohmann::json{{"value", e.value}, {"window_spread", e.error}, {"sub_windows", e.slopes},
+    return nlohmann::json{{"value", e.value},
+                          {"window_spread", e.error},
+                          {"sub_windows", e.slopes},
                           {"realization_error", std::isnan(realization_error) ? nlohmann::json(nullptr)
                                                                               : nlohmann::json(realization_error)}};
   };
-  return {{"shown", r.starred() ? "mean_log_derivative" : "fit"}, {"starred", r.starred()},
-          {"value", r.shown().value}, {"window_spread", r.shown().error},
+  return {{"shown", r.starred() ? "mean_log_derivative" : "fit"},
+          {"starred", r.starred()},
+          {"value", r.shown().value},
+          {"window_spread", r.shown().error},
           {"fit", estimate(r.fit, r.fit_realization_error)},
           {"mean_log_derivative", estimate(r.mean_ld, r.mean_ld_realization_error)},
-          {"power_law", r.verdict.power_law}, {"worst_log_derivative_deviation", r.verdict.worst_deviation},
+          {"power_law", r.verdict.power_law},
+          {"worst_log_derivative_deviation", r.verdict.worst_deviation},
           {"worst_deviation_time_s", r.verdict.worst_time}};
 }
 
 nlohmann::json to_json(const TransportExponents& e, SpreadCentre shown) {
   const ExponentReport& g = e.gamma(shown);
   const auto real = [](double x) { return std::isnan(x) ? nlohmann::json(nullptr) : nlohmann::json(x); };
-  return {{"gamma", g.shown().value}, {"gamma_err", g.shown().error}, {"gamma_real_err", real(g.shown_realization_error())},
-          {"eta", e.eta.shown().value}, {"eta_err", e.eta.shown().error},
-          {"eta_real_err", real(e.eta.shown_realization_error())}, {"power_law", g.verdict.power_law},
-          {"m2_centre", to_string(shown)},
-          {"exponents", {{"gamma_site", to_json(e.gamma_site)}, {"gamma_centroid", to_json(e.gamma_centroid)},
-                         {"eta", to_json(e.eta)}}}};
+  return {
+      {"gamma", g.shown().value},
+      {"gamma_err", g.shown().error},
+      {"gamma_real_err", real(g.shown_realization_error())},
+      {"eta", e.eta.shown().value},
+      {"eta_err", e.eta.shown().error},
+      {"eta_real_err", real(e.eta.shown_realization_error())},
+      {"power_law", g.verdict.power_law},
+      {"m2_centre", to_string(shown)},
+      {"exponents",
+       {{"gamma_site", to_json(e.gamma_site)}, {"gamma_centroid", to_json(e.gamma_centroid)}, {"eta", to_json(e.eta)}}}};
 }
 
 std::vector<std::string> warnings(const SpreadingResult& r, const SpreadingConfig& config) {
@@ -217,7 +247,8 @@ void add_realization_errors(const TransportCase& c, const std::vector<double>& t
         [&](const std::vector<double>& mean) {
           std::vector<double> out;
           for (std::size_t k = 0; k < 3; ++k) {
-            std::vector<double> y(mean.begin() + static_cast<long>(k * g), mean.begin() + static_cast<long>((k + 1) * g));
+            std::vector<double> y(mean.begin() + static_cast<long>(k * g),
+                                  mean.begin() + static_cast<long>((k + 1) * g));
             if (k == 2)
               for (double& p : y) p = 1 / p;
             out.push_back(windowed_exponent(t_fit, y, c.fit_begin, c.fit_end).value);

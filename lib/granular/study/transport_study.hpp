@@ -40,23 +40,24 @@ struct TransportCase {
   Disorder disorder = Disorder::anderson;
   double q = 0.5, xi = 0.5;
   std::size_t n = 2501;
-  double precompression = 10;          ///< F0 [N]
-  double r1 = 4.76e-3;                 ///< type-1 radius [m]
+  double precompression = 10;  ///< F0 [N]
+  double r1 = 4.76e-3;         ///< type-1 radius [m]
   Kick kick = Kick::displacement;
-  double alpha = 1e-7;                 ///< displacement kick [m]
-  double beta = paper_beta;            ///< velocity kick [m/s]
-  bool match_beta = false;             ///< velocity kick carrying the energy of α on each chain instead
-  std::size_t site = 1250;             ///< 0-based kicked bead n0 (1251 counting from 1)
+  double alpha = 1e-7;                       ///< displacement kick [m]
+  double beta = paper_beta;                  ///< velocity kick [m/s]
+  bool match_beta = false;                   ///< velocity kick carrying the energy of α on each chain instead
+  std::size_t site = 1250;                   ///< 0-based kicked bead n0 (1251 counting from 1)
   SpreadCentre centre = SpreadCentre::site;  ///< which m̃2 the tables show (both are computed)
-  SpreadingConfig dynamics;            ///< T, τ, integrator, force law, samples, window
+  SpreadingConfig dynamics;                  ///< T, τ, integrator, force law, samples, window
   std::uint64_t seed = 1;
   std::size_t realizations = 500;
-  std::size_t profile_realizations = std::numeric_limits<std::size_t>::max();  ///< E_n(T) averaged over the first this many (0: none)
-  bool fit = true;                          ///< fit γ and η (needs fit_end ≤ T)
-  double fit_begin = 4e-3, fit_end = 1e-2;  ///< exponents fitted on [fit_begin, fit_end] s
-  double fit_step = 1e-5;                   ///< spacing of the samples inside the fit window [s]
-  PowerLawCriterion criterion;              ///< κ and t* of the power-law check
-  BootstrapConfig bootstrap;                ///< realization errors (threads: those of the run)
+  std::size_t profile_realizations =
+      std::numeric_limits<std::size_t>::max();  ///< E_n(T) averaged over the first this many (0: none)
+  bool fit = true;                              ///< fit γ and η (needs fit_end ≤ T)
+  double fit_begin = 4e-3, fit_end = 1e-2;      ///< exponents fitted on [fit_begin, fit_end] s
+  double fit_step = 1e-5;                       ///< spacing of the samples inside the fit window [s]
+  PowerLawCriterion criterion;                  ///< κ and t* of the power-law check
+  BootstrapConfig bootstrap;                    ///< realization errors (threads: those of the run)
 };
 
 /// Throws InvalidInput (naming the option) on an impossible case, before any work.
@@ -87,13 +88,13 @@ TransportExponents transport_exponents(const TransportCase& c, const std::vector
                                        const std::vector<double>& ipr);
 
 struct TransportSummary {
-  std::vector<double> t;               ///< sample times [s]
-  SeriesSummary m2, m2_centroid;       ///< m̃2 about the site and about the centroid [bead²]
-  SeriesSummary ipr, energy_error;     ///< over realizations, at the sample times
-  SeriesSummary profile;               ///< site energies E_n at T (empty if not asked for)
+  std::vector<double> t;                        ///< sample times [s]
+  SeriesSummary m2, m2_centroid;                ///< m̃2 about the site and about the centroid [bead²]
+  SeriesSummary ipr, energy_error;              ///< over realizations, at the sample times
+  SeriesSummary profile;                        ///< site energies E_n at T (empty if not asked for)
   std::optional<TransportExponents> exponents;  ///< with realization errors; absent when not fitted
-  double max_energy_error = 0;         ///< worst |H(t)−H0|/H0 of any realization
-  std::size_t reached_walls = 0;       ///< realizations whose energy reached the walls
+  double max_energy_error = 0;                  ///< worst |H(t)−H0|/H0 of any realization
+  std::size_t reached_walls = 0;                ///< realizations whose energy reached the walls
   std::size_t realizations = 0;
 };
 

@@ -16,10 +16,10 @@
 namespace granular {
 
 struct EigenDecomposition {
-  Eigen::VectorXd values;   ///< ascending
-  Eigen::MatrixXd vectors;  ///< orthonormal columns, empty unless asked for
+  Eigen::VectorXd values;                     ///< ascending
+  Eigen::MatrixXd vectors;                    ///< orthonormal columns, empty unless asked for
   LapackDriver driver = LapackDriver::stevr;  ///< the driver that succeeded
-  int fallbacks = 0;        ///< how many drivers failed before it
+  int fallbacks = 0;                          ///< how many drivers failed before it
 };
 
 class LapackEigensolver {

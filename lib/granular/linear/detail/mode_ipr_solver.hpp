@@ -24,8 +24,8 @@ class ModeIprSolver {
  public:
   virtual ~ModeIprSolver() = default;
   /// ω² ascending and the displacement IPR of each mode. `inverse_sqrt_mass` has m_n^{-1/2}.
-  virtual void solve(const SymTridiagonal& d, const std::vector<double>& inverse_sqrt_mass,
-                     std::vector<double>& omega2, std::vector<double>& ipr) = 0;
+  virtual void solve(const SymTridiagonal& d, const std::vector<double>& inverse_sqrt_mass, std::vector<double>& omega2,
+                     std::vector<double>& ipr) = 0;
   /// Several independent chains; each result is exactly what solve() gives for that chain.
   /// The default solves them one by one; a solver may overlap their serial recurrences.
   virtual void solve_batch(std::span<const ModeIprTask> tasks) {

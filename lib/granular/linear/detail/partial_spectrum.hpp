@@ -1,6 +1,6 @@
 #pragma once
-// Partial spectra of long chains, the backend of spectrum() for nearest/window selections: the K modes nearest a frequency, or every mode in a
-// frequency window, with their displacement IPRs, by one of four interchangeable methods:
+// Partial spectra of long chains, the backend of spectrum() for nearest/window selections: the K modes nearest a
+// frequency, or every mode in a frequency window, with their displacement IPRs, by one of four interchangeable methods:
 //   lapack  dstemr (MRRR) restricted to an index range found by two O(N) inertia counts;
 //   bisect  the same index range by many-shift Sturm bisection (sturm_bisection.hpp), vectors by
 //           LAPACK inverse iteration (dstein): the fastest for long chains;
@@ -24,10 +24,10 @@ namespace granular {
 
 struct PartialSpectrumConfig {
   SpectrumMethod method = SpectrumMethod::lapack;  ///< lapack | bisect | arpack | slepc
-  bool keep_vectors = false;  ///< return the eigenvectors (N × K) too
-  double tolerance = 0;       ///< ARPACK/SLEPc Ritz tolerance; 0 = each method's tightest default
-  int subspace = 0;           ///< ARPACK/SLEPc Krylov basis size; 0 = max(2K + 1, 20)
-  std::size_t lanes = 8;      ///< bisect: eigenvectors computed together (memory 2 N × lanes doubles)
+  bool keep_vectors = false;                       ///< return the eigenvectors (N × K) too
+  double tolerance = 0;                            ///< ARPACK/SLEPc Ritz tolerance; 0 = each method's tightest default
+  int subspace = 0;                                ///< ARPACK/SLEPc Krylov basis size; 0 = max(2K + 1, 20)
+  std::size_t lanes = 8;  ///< bisect: eigenvectors computed together (memory 2 N × lanes doubles)
 };
 
 struct PartialSpectrum {

@@ -12,11 +12,11 @@
 namespace granular {
 
 struct ShiftInvertConfig {
-  int count = 1;             ///< eigenpairs wanted (the `count` nearest σ in |λ − σ|)
-  double tolerance = 0;      ///< relative residual of the Ritz pairs; 0 = machine precision (ARPACK),
-                             ///< 1e-14 for SLEPc
-  int max_restarts = 3000;   ///< ARPACK iparam(3) / SLEPc max_it
-  int subspace = 0;          ///< Krylov basis size (ncv); 0 = max(2 count + 1, 20), capped at N
+  int count = 1;            ///< eigenpairs wanted (the `count` nearest σ in |λ − σ|)
+  double tolerance = 0;     ///< relative residual of the Ritz pairs; 0 = machine precision (ARPACK),
+                            ///< 1e-14 for SLEPc
+  int max_restarts = 3000;  ///< ARPACK iparam(3) / SLEPc max_it
+  int subspace = 0;         ///< Krylov basis size (ncv); 0 = max(2 count + 1, 20), capped at N
 };
 
 struct ShiftInvertResult {

@@ -43,11 +43,11 @@ Eigen::MatrixXd inverse_iteration(const SymTridiagonal& t, std::vector<double>& 
 /// With `brackets` (from bisect_eigenvalues) a shift only moves, and a lane only counts as
 /// converged, inside its own bracket: a lane cannot drift to a neighbour's eigenvalue.
 struct LaneOptions {
-  std::size_t group = 8;      ///< lanes solved together (memory 2 N × group doubles); 0 = all at once
-  bool keep_vectors = true;   ///< false: return an N × 0 matrix (IPR and residuals still computed)
+  std::size_t group = 8;     ///< lanes solved together (memory 2 N × group doubles); 0 = all at once
+  bool keep_vectors = true;  ///< false: return an N × 0 matrix (IPR and residuals still computed)
   const std::vector<double>* inverse_sqrt_mass = nullptr;  ///< with `ipr`: IPRs of v = w ⊙ this
-  std::vector<double>* ipr = nullptr;       ///< if set: the displacement IPR of each lane
-  std::vector<double>* residual = nullptr;  ///< if set: ‖Tw − ρw‖ of each unit vector
+  std::vector<double>* ipr = nullptr;                      ///< if set: the displacement IPR of each lane
+  std::vector<double>* residual = nullptr;                 ///< if set: ‖Tw − ρw‖ of each unit vector
 };
 Eigen::MatrixXd lane_inverse_iteration(const SymTridiagonal& t, std::vector<double>& values,
                                        const std::vector<double>* brackets = nullptr, const LaneOptions& options = {});

@@ -63,8 +63,8 @@
 namespace granular {
 
 struct TwistedIprConfig {
-  double cluster_gap = 1e-10;   ///< relative gap below which neighbouring modes form a cluster
-  double max_residual = 1e3;    ///< twisted residual limit, in units of N·ε·max|λ|
+  double cluster_gap = 1e-10;  ///< relative gap below which neighbouring modes form a cluster
+  double max_residual = 1e3;   ///< twisted residual limit, in units of N·ε·max|λ|
 };
 
 struct TwistedIprInfo {
