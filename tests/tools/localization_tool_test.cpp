@@ -7,7 +7,7 @@
 #include <cstdio>
 #include <nlohmann/json.hpp>
 
-#include "granular/io/number_format.hpp"
+#include "granular/number_format.hpp"
 #include "granular/model/disorder.hpp"
 #include "tool_runner.hpp"
 

@@ -1,3 +1,0 @@
-#pragma once
-// Moved to granular/number_format.hpp; this forwarding header goes once every branch has moved.
-#include "granular/number_format.hpp"
