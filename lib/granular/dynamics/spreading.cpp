@@ -52,6 +52,9 @@ void validate(const SpreadingConfig& c, std::size_t beads) {
                                        format_number(c.time_step));
   if (c.samples < 2) throw InvalidInput("samples", ": at least 2");
   if (c.integrator != "reference") parse_scheme(c.integrator);
+  validate(c.damping);
+  if (c.damping.any() && c.integrator == "reference")
+    throw InvalidInput("integrator", " reference: has no damping; use a splitting scheme");
   for (std::size_t s : c.force_sites)
     if (s >= beads)
       throw InvalidInput("forces_at", " " + std::to_string(s + 1) + ": outside the chain of " + std::to_string(beads) +
@@ -123,8 +126,9 @@ SpreadingResult run_spreading(const Chain& chain, const State& initial, const Sp
   if (!(r.initial_energy > 0)) throw InvalidInput("initial state: carries no energy");
 
   std::unique_ptr<Propagator> p =
-      config.integrator == "reference"
-          ? make_reference_propagator(law, chain, tau, initial, config.reference)
+      config.integrator == "reference" ? make_reference_propagator(law, chain, tau, initial, config.reference)
+      : config.damping.any()
+          ? make_damped_propagator(law, chain, parse_scheme(config.integrator), tau, initial, config.damping)
           : make_splitting_propagator(law, chain, parse_scheme(config.integrator), tau, initial, config.window);
 
   // The schedule: step number → what to measure there.
@@ -160,13 +164,14 @@ SpreadingResult run_spreading(const Chain& chain, const State& initial, const Sp
       site_energies(law, chain, u, p->velocity(), energy, lo, hi);
       if (what & spread) {
         const EnergySpread s = energy_spread(energy, site);
-        const double h = s.total + unowned_wall_energy(law, u);
+        const double h = s.total + unowned_wall_energy(law, u) + p->dissipated_energy();
         const double error = std::abs(h - r.initial_energy) / r.initial_energy;
         r.t.push_back(t);
         r.m2.push_back(s.m2_site);
         r.m2_centroid.push_back(s.m2_centroid);
         r.ipr.push_back(s.ipr);
         r.energy_error.push_back(error);
+        if (config.damping.any()) r.dissipated.push_back(p->dissipated_energy());
         r.max_energy_error = std::max(r.max_energy_error, error);
         r.wall_energy = std::max(r.wall_energy, (energy[0] + energy[n - 1]) / r.initial_energy);
         if (!std::isfinite(h) || !std::isfinite(s.m2_site))
