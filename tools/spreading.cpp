@@ -37,6 +37,7 @@ int main(int argc, char** argv) {
   tool::add_chain_options(app, chain_options);
   app.add_option("--ic", ic, "initial condition: displacement | velocity")->capture_default_str();
   tool::add_dynamics_options(app, dynamics);
+  tool::add_lyapunov_options(app, dynamics.beyond);
   app.add_option("--realizations", realizations, "realizations to average (ensemble means and exponents)")
       ->capture_default_str();
   app.add_option("--threads", threads, "threads for the realizations (0 = all cores); results do not depend on it")
@@ -99,12 +100,14 @@ int main(int argc, char** argv) {
         const std::string csv_path = output + ".csv", json_path = output + ".json", sem_path = output + "-sem.csv";
         const std::string profile_path = profile ? output + "-profile.csv" : "", checkpoint = output + ".checkpoint";
         const std::string forces_path = d.force_sites.empty() ? "" : output + "-forces.csv";
+        const std::string& deviation = dynamics.beyond.deviation;
         tool::check_outputs({csv_path, json_path, final_state, energy_map, spectrum_file, profile_path, forces_path,
-                             ensemble ? sem_path : "", ensemble ? checkpoint : ""},
+                             ensemble ? sem_path : "", ensemble ? checkpoint : "", deviation},
                             "--output/--final-state/--energy-map/--spectrum");
 
         const bool single_outputs =
-            !final_state.empty() || !d.force_sites.empty() || !energy_map.empty() || !spectrum_file.empty();
+            !final_state.empty() || !d.force_sites.empty() || !energy_map.empty() || !spectrum_file.empty() ||
+            !deviation.empty();
         std::optional<TransportSummary> summary;
         if (ensemble) {
           ProgressMeter progress(c.realizations, "spreading", quiet || !MpiContext::instance().root() ? 0 : -1);
@@ -134,6 +137,7 @@ int main(int argc, char** argv) {
         if (profile)
           summary ? write_profile_csv(open(profile_path), *summary) : write_profile_csv(open(profile_path), r);
         if (!forces_path.empty()) write_forces_csv(open(forces_path), r, d.force_sites);
+        if (!deviation.empty()) write_deviation_csv(open(deviation), r);
         if (!spectrum_file.empty()) {
           write_spectrum_csv(open(spectrum_file), r);
           meta["spectrum"] = {{"file", spectrum_file},
@@ -172,7 +176,9 @@ int main(int argc, char** argv) {
                          {"integration_s", r.seconds},
                          {"window_final", {r.window_begin + 1, r.window_end}},
                          {"wall_energy", r.wall_energy},
-                         {"reached_walls", r.reached_walls}};
+                         {"reached_walls", r.reached_walls},
+                         {"dissipated_J", r.dissipated.empty() ? nlohmann::json(nullptr) : nlohmann::json(r.dissipated.back())},
+                         {"mle_per_s", r.mle.empty() ? nlohmann::json(nullptr) : nlohmann::json(r.mle.back())}};
         meta["output"] = csv_path;
         meta.write(json_path);  // the JSON first, then the CSVs: never a CSV without its metadata
         for (auto& f : files) f->commit();
