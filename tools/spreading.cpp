@@ -184,5 +184,5 @@ int main(int argc, char** argv) {
         for (auto& f : files) f->commit();
         if (ensemble) CheckpointLog::remove_all(checkpoint);
       },
-      {{"spectrum_source", "--spectrum-of"}});
+      {{"spectrum_source", "--spectrum-of"}, {"lyapunov", "--mle"}});
 }
