@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 #include <variant>
 
@@ -10,13 +11,15 @@
 namespace granular {
 namespace {
 
-// f_k''(x), the bond curvature the corrector's derivative needs. Hertz: (3/4) A [δ]_+^{−1/2}
-// (taken 0 for an open contact; unbounded as a contact closes, where the orbit itself is only C¹).
-inline double curvature(const HertzLaw::View& l, std::size_t k, double x) {
-  const double d = l.overlap[k] + x;
-  return d > 0 ? 0.75 * l.contact[k] / std::sqrt(d) : 0.0;
+// f_k''(x), the bond curvature the corrector's derivative needs, from the stiffness just computed.
+// Hertz: (3/4) A [δ]_+^{−1/2} = K/(2δ), 0 for an open contact (K = 0 there; unbounded as a contact
+// closes, where the orbit itself is only C¹); no second square root, and branch-free.
+inline double curvature(const HertzLaw::View& l, std::size_t k, double x, double stiff) {
+  return stiff / (2 * std::max(l.overlap[k] + x, std::numeric_limits<double>::min()));
 }
-inline double curvature(const PolynomialLaw::View& l, std::size_t k, double x) { return 2 * l.c2[k] + 6 * l.c3[k] * x; }
+inline double curvature(const PolynomialLaw::View& l, std::size_t k, double x, double) {
+  return 2 * l.c2[k] + 6 * l.c3[k] * x;
+}
 
 // Padded arrays as in detail/plain_step.hpp: up/dup[i+1] is bead i, ends 0 (the walls).
 void drift(double* __restrict up, double* __restrict dup, const double* __restrict v, const double* __restrict dv,
@@ -51,7 +54,7 @@ void correct(const View law, const double* __restrict up, const double* __restri
   for (std::size_t k = 0; k <= n; ++k) {
     const double x = up[k] - up[k + 1];
     law.force_stiffness(k, x, f[k], stiff[k]);
-    curv[k] = curvature(law, k, x);
+    curv[k] = curvature(law, k, x, stiff[k]);
     dx[k] = dup[k] - dup[k + 1];
   }
   for (std::size_t i = 0; i < n; ++i) {
@@ -127,9 +130,9 @@ class SplittingTangentPropagator final : public TangentPropagator {
 
   double norm() const {
     const double t = config_.time_unit;
-    double s = 0;
-    for (std::size_t i = 0; i < n_; ++i) s += dup_[i + 1] * dup_[i + 1] + t * t * dv_[i] * dv_[i];
-    return std::sqrt(s);
+    double part[4] = {0, 0, 0, 0};  // independent partial sums, fixed order
+    for (std::size_t i = 0; i < n_; ++i) part[i % 4] += dup_[i + 1] * dup_[i + 1] + t * t * dv_[i] * dv_[i];
+    return std::sqrt((part[0] + part[1]) + (part[2] + part[3]));
   }
 
   void renormalize() {
