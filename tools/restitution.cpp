@@ -33,40 +33,41 @@ int main(int argc, char** argv) {
   bool quiet = false;
   app.add_flag("--quiet", quiet, "no final report on stderr");
 
-  return tool::run(
-      app, argc, argv,
-      [&] {
-        tool::Metadata meta("restitution", argc, argv);
-        const std::vector<double> v = parse_number_list(speeds, "--impact-speed");
-        const std::vector<double> g = parse_number_list(gammas, "--kk-gamma");
-        config.integrator = integrator;
-        check_writable(output);
-        const std::string json_path = tool::json_path_for(output);
-        check_writable(json_path);
-        std::vector<std::vector<double>> rows;
-        for (double gamma : g)
-          for (double speed : v) {
-            config.impact_speed = speed;
-            config.kk_gamma = gamma;
-            const Collision c = two_bead_collision(config);
-            rows.push_back({speed, gamma, c.restitution, restitution_deficit_small_damping(config), c.contact_time,
-                            c.hertz_time});
-          }
-        AtomicFile csv(output);
-        CsvWriter table(csv.stream(), {"impact_speed", "kk_gamma", "restitution", "deficit_small_damping",
-                                       "contact_time", "hertz_time"});
-        for (const auto& r : rows) table.row(r[0], r[1], r[2], r[3], r[4], r[5]);
-        meta["parameters"] = {{"impact_speed_m_s", v},
-                              {"kk_gamma_s", g},
-                              {"R_m", config.radius},
-                              {"material", {{"E_Pa", config.material.young},
-                                            {"nu", config.material.poisson},
-                                            {"rho_kg_m3", config.material.density}}},
-                              {"steps_per_collision", config.steps_per_collision},
-                              {"integrator", integrator},
-                              {"damping_splitting", "Strang: half damping step (Crank-Nicolson), scheme, half step"}};
-        meta["output"] = output;
-        meta.write(json_path, {&csv});
-      },
-      {{"impact_speed", "--impact-speed"}, {"radius", "--R1"}});
+  return tool::run(app, argc, argv,
+                   [&] {
+                     tool::Metadata meta("restitution", argc, argv);
+                     const std::vector<double> v = parse_number_list(speeds, "--impact-speed");
+                     const std::vector<double> g = parse_number_list(gammas, "--kk-gamma");
+                     config.integrator = integrator;
+                     check_writable(output);
+                     const std::string json_path = tool::json_path_for(output);
+                     check_writable(json_path);
+                     std::vector<std::vector<double>> rows;
+                     for (double gamma : g)
+                       for (double speed : v) {
+                         config.impact_speed = speed;
+                         config.kk_gamma = gamma;
+                         const Collision c = two_bead_collision(config);
+                         rows.push_back({speed, gamma, c.restitution, restitution_deficit_small_damping(config),
+                                         c.contact_time, c.hertz_time});
+                       }
+                     AtomicFile csv(output);
+                     CsvWriter table(csv.stream(), {"impact_speed", "kk_gamma", "restitution", "deficit_small_damping",
+                                                    "contact_time", "hertz_time"});
+                     for (const auto& r : rows) table.row(r[0], r[1], r[2], r[3], r[4], r[5]);
+                     meta["parameters"] = {{"impact_speed_m_s", v},
+                                           {"kk_gamma_s", g},
+                                           {"R_m", config.radius},
+                                           {"material",
+                                            {{"E_Pa", config.material.young},
+                                             {"nu", config.material.poisson},
+                                             {"rho_kg_m3", config.material.density}}},
+                                           {"steps_per_collision", config.steps_per_collision},
+                                           {"integrator", integrator},
+                                           {"damping_splitting",
+                                            "Strang: half damping step (Crank-Nicolson), scheme, half step"}};
+                     meta["output"] = output;
+                     meta.write(json_path, {&csv});
+                   },
+                   {{"impact_speed", "--impact-speed"}, {"radius", "--R1"}});
 }

@@ -105,9 +105,8 @@ int main(int argc, char** argv) {
                              ensemble ? sem_path : "", ensemble ? checkpoint : "", deviation},
                             "--output/--final-state/--energy-map/--spectrum");
 
-        const bool single_outputs =
-            !final_state.empty() || !d.force_sites.empty() || !energy_map.empty() || !spectrum_file.empty() ||
-            !deviation.empty();
+        const bool single_outputs = !final_state.empty() || !d.force_sites.empty() || !energy_map.empty() ||
+                                    !spectrum_file.empty() || !deviation.empty();
         std::optional<TransportSummary> summary;
         if (ensemble) {
           ProgressMeter progress(c.realizations, "spreading", quiet || !MpiContext::instance().root() ? 0 : -1);
@@ -177,7 +176,8 @@ int main(int argc, char** argv) {
                          {"window_final", {r.window_begin + 1, r.window_end}},
                          {"wall_energy", r.wall_energy},
                          {"reached_walls", r.reached_walls},
-                         {"dissipated_J", r.dissipated.empty() ? nlohmann::json(nullptr) : nlohmann::json(r.dissipated.back())},
+                         {"dissipated_J",
+                          r.dissipated.empty() ? nlohmann::json(nullptr) : nlohmann::json(r.dissipated.back())},
                          {"mle_per_s", r.mle.empty() ? nlohmann::json(nullptr) : nlohmann::json(r.mle.back())}};
         meta["output"] = csv_path;
         meta.write(json_path);  // the JSON first, then the CSVs: never a CSV without its metadata

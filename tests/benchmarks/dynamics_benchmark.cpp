@@ -96,7 +96,7 @@ void BM_DampedSaba2cStep(benchmark::State& state) {
   // Weak damping, so that a long benchmark does not run into denormal velocities; the cost is the same.
   const Damping damping{1.0, state.range(0) ? 1e-9 : 0.0};
   auto p = make_damped_propagator(paper_law(), paper_chain(), saba2c(), tau, paper_kick(), damping);
-  p->advance(1000);  // leave the initial transient
+  p->advance(1000);                      // leave the initial transient
   for (auto _ : state) p->advance(100);  // 100 steps per iteration, as BM_Saba2cStep
 }
 BENCHMARK(BM_DampedSaba2cStep)->Arg(0)->Arg(1)->ArgName("kk")->Unit(benchmark::kMicrosecond);

@@ -39,7 +39,8 @@ std::vector<double> damped_modal_solution(const Chain& chain, const State& s0, d
       b += w * std::sqrt(chain.mass[i]) * s0.v[i];
     }
     const double c = decay * (a * std::cos(omega * t) + (b + a / (2 * tau_d)) * std::sin(omega * t) / omega);
-    for (std::size_t i = 0; i < n; ++i) u[i] += c * e.vectors(static_cast<Eigen::Index>(i), kk) / std::sqrt(chain.mass[i]);
+    for (std::size_t i = 0; i < n; ++i)
+      u[i] += c * e.vectors(static_cast<Eigen::Index>(i), kk) / std::sqrt(chain.mass[i]);
   }
   return u;
 }
@@ -56,8 +57,8 @@ TEST(Damping, LinearChainDecaysEveryModeAsTheExactDampedOscillator) {
   EXPECT_GT(relative_difference(free->displacement(), exact), 0.5);
   double previous = 0;
   for (double tau : {0.04e-6, 0.02e-6, 0.01e-6}) {
-    const auto p = fixtures::run(make_damped_propagator(law, chain, saba2c(), tau, s0, {tau_d, 0}),
-                                 steps_for(duration, tau));
+    const auto p =
+        fixtures::run(make_damped_propagator(law, chain, saba2c(), tau, s0, {tau_d, 0}), steps_for(duration, tau));
     const double error = relative_difference(p->displacement(), exact);
     std::printf("  tau = %g us: relative difference from the exact damped modes %.3e\n", tau * 1e6, error);
     EXPECT_LT(error, 1e-5);

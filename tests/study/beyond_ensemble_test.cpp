@@ -42,8 +42,8 @@ TEST(BeyondEnsemble, MeanLyapunovExponentIsBitIdenticalForOneAndTwoThreads) {
   // The ensemble's X1 is the mean of the single runs'.
   double sum = 0;
   for (std::uint64_t r = 0; r < c.realizations; ++r) {
-    const Chain chain = make_chain(radii_of(realization_configuration(c.disorder, c.q, c.n, c.seed, r), c.r1, c.xi),
-                                   c.precompression);
+    const Chain chain =
+        make_chain(radii_of(realization_configuration(c.disorder, c.q, c.n, c.seed, r), c.r1, c.xi), c.precompression);
     sum += run_spreading(chain, kick(c, chain).initial, spreading_config(c)).mle.back();
   }
   EXPECT_NEAR(one.mle.mean.back(), sum / 4, 1e-12 * std::abs(sum));

@@ -19,10 +19,12 @@ struct BeyondOptions {
 };
 
 inline void add_damping_options(CLI::App& app, BeyondOptions& o) {
-  app.add_option("--damping-time", o.damping_time, "on-site viscous damping time tau_d [s] of -(m/tau_d) du/dt; 0 = none")
+  app.add_option("--damping-time", o.damping_time,
+                 "on-site viscous damping time tau_d [s] of -(m/tau_d) du/dt; 0 = none")
       ->capture_default_str();
-  app.add_option("--kk-gamma", o.kk_gamma,
-                 "Kuwabara-Kono contact damping gamma_KK [s]: bond force A[d]^{3/2} + gamma A [d]^{1/2} dd/dt; 0 = none")
+  app.add_option(
+         "--kk-gamma", o.kk_gamma,
+         "Kuwabara-Kono contact damping gamma_KK [s]: bond force A[d]^{3/2} + gamma A [d]^{1/2} dd/dt; 0 = none")
       ->capture_default_str();
 }
 

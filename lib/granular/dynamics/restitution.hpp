@@ -16,21 +16,21 @@ namespace granular {
 
 struct CollisionConfig {
   Material material = steel;
-  double radius = 4.76e-3;             ///< R of both beads [m]
-  double impact_speed = 0.01;          ///< v > 0 [m/s]
-  double kk_gamma = 0;                 ///< γ_KK ≥ 0 [s]
-  double steps_per_collision = 4000;   ///< τ = (Hertz contact time at v) / this
-  std::string integrator = "saba2c";   ///< the splitting scheme
+  double radius = 4.76e-3;            ///< R of both beads [m]
+  double impact_speed = 0.01;         ///< v > 0 [m/s]
+  double kk_gamma = 0;                ///< γ_KK ≥ 0 [s]
+  double steps_per_collision = 4000;  ///< τ = (Hertz contact time at v) / this
+  std::string integrator = "saba2c";  ///< the splitting scheme
 };
 
 struct Collision {
-  double restitution = 0;      ///< e = separation speed / impact speed
-  double contact_time = 0;     ///< from touch to separation [s] (to one step τ)
-  double max_overlap = 0;      ///< largest compression [m] (at step boundaries)
-  double hertz_time = 0;       ///< the elastic contact time 2.94 (μ/A)^{2/5} v^{−1/5} [s]
-  double time_step = 0;        ///< τ used [s]
-  double dissipated = 0;       ///< energy removed [J]
-  double initial_energy = 0;   ///< m v²/2 [J]
+  double restitution = 0;     ///< e = separation speed / impact speed
+  double contact_time = 0;    ///< from touch to separation [s] (to one step τ)
+  double max_overlap = 0;     ///< largest compression [m] (at step boundaries)
+  double hertz_time = 0;      ///< the elastic contact time 2.94 (μ/A)^{2/5} v^{−1/5} [s]
+  double time_step = 0;       ///< τ used [s]
+  double dissipated = 0;      ///< energy removed [J]
+  double initial_energy = 0;  ///< m v²/2 [J]
 };
 
 /// Throws InvalidInput (`impact_speed`, `kk_gamma`, `radius`, `steps_per_collision`) on bad input,

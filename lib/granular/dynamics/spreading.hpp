@@ -56,8 +56,8 @@ struct SpreadingConfig {
   double wall_warning = 1e-10;       ///< flag when (E_first + E_last)/H0 exceeds it
   double max_energy_error = 1e-3;    ///< guard on |H(t)−H0|/H0 at the samples; 0 = unwatched
   bool stop_on_energy_error = true;  ///< past the guard: stop (NumericalError) or only record it
-  Damping damping;  ///< dissipation (damping.hpp); none by default. Then energy_error is of H + dissipated
-  LyapunovConfig lyapunov;            ///< X1(t) by the tangent map (tangent_map.hpp); conservative schemes only
+  Damping damping;          ///< dissipation (damping.hpp); none by default. Then energy_error is of H + dissipated
+  LyapunovConfig lyapunov;  ///< X1(t) by the tangent map (tangent_map.hpp); conservative schemes only
   std::size_t deviation_samples = 0;  ///< uniform times of the deviation-vector distribution; 0 = none
 };
 

@@ -78,12 +78,12 @@ KickedChain kick(const TransportCase& c, const Chain& chain) {
   return {velocity_kick(chain, c.site, beta), beta};
 }
 
-nlohmann::json describe(const TransportCase& c) {
+static nlohmann::json describe_conservative(const TransportCase& c) {
   const SpreadingConfig& d = c.dynamics;
   const bool uses_alpha = c.kick == Kick::displacement || c.match_beta;
   nlohmann::json beta = nullptr;  // the values used: α only where the kick uses it, β only for a velocity kick
   if (c.kick == Kick::velocity) beta = c.match_beta ? nlohmann::json("match") : nlohmann::json(c.beta);
-  nlohmann::json j = {{"disorder", to_string(c.disorder)},
+  return {{"disorder", to_string(c.disorder)},
           {"q", c.q},
           {"xi", c.xi},
           {"N", c.n},
@@ -115,7 +115,12 @@ nlohmann::json describe(const TransportCase& c) {
           {"profile_realizations", std::min(c.profile_realizations, c.realizations)},
           {"material", {{"E_Pa", steel.young}, {"nu", steel.poisson}, {"rho_kg_m3", steel.density}}},
           {"walls", "flat, same material as the beads"}};
+}
+
+nlohmann::json describe(const TransportCase& c) {
+  nlohmann::json j = describe_conservative(c);
   // Only when switched on, so that conservative runs keep their parameters (and checkpoints).
+  const SpreadingConfig& d = c.dynamics;
   if (d.damping.any()) j["damping"] = {{"time_s", d.damping.time}, {"kk_gamma_s", d.damping.kk_gamma}};
   if (d.lyapunov.enabled)
     j["lyapunov"] = {{"renormalize_every", d.lyapunov.renormalize_every},
@@ -197,8 +202,9 @@ namespace {
 
 // What one realization leaves behind, and its flat form in the ensemble's rows and checkpoints:
 // m̃2 about the site | m̃2 about the centroid | P⁻¹ | energy error (each on the S sample times) |
-// max energy error | wall energy | X1 on the S sample times (only with the tangent map) | E_n(T) (N, only for the first profile_realizations: profiles
-// are long, and checkpoints hold every row).
+// max energy error | wall energy | X1 on the S sample times (only with the tangent map) |
+// E_n(T) (N, only for the first profile_realizations: profiles are long, and checkpoints hold
+// every row).
 struct RealizationRecord {
   static constexpr std::size_t series = 4;
   enum Series { m2_site = 0, m2_centroid = 1, ipr = 2, energy_error = 3 };
