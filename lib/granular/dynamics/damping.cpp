@@ -45,26 +45,32 @@ double DampingFlow::apply(std::span<const double> u, std::span<double> v, double
   const double before = twice_kinetic(mass_.data(), v.data(), n);
   if (damping_.kk_gamma > 0) {
     // Trapezoidal step of M v̇ = −C v: v' = v − h (M + hC/2)⁻¹ C v. With C = 0 it is v' = v exactly.
-    for (std::size_t k = 0; k <= n; ++k) {
-      const double x = (k > 0 ? u[k - 1] : 0.0) - (k < n ? u[k] : 0.0);
-      weight_[k] = damping_.kk_gamma * contact_[k] * std::sqrt(std::max(overlap_[k] + x, 0.0));
-    }
+    const auto weight = [&](std::size_t k, double x) {
+      return damping_.kk_gamma * contact_[k] * std::sqrt(std::max(overlap_[k] + x, 0.0));
+    };
+    weight_[0] = weight(0, -u[0]);
+    for (std::size_t k = 1; k < n; ++k) weight_[k] = weight(k, u[k - 1] - u[k]);
+    weight_[n] = weight(n, u[n - 1]);
     const double half = 0.5 * h;
+    // (C v)_i = w_i (v_i − v_{i−1}) + w_{i+1} (v_i − v_{i+1}), the walls at rest; the end beads
+    // apart so that the loop has no branch.
     for (std::size_t i = 0; i < n; ++i) {
-      const double left = i > 0 ? v[i] - v[i - 1] : v[i];  // the wall does not move
-      const double right = i + 1 < n ? v[i] - v[i + 1] : v[i];
-      rhs_[i] = weight_[i] * left + weight_[i + 1] * right;  // (C v)_i
       diag_[i] = mass_[i] + half * (weight_[i] + weight_[i + 1]);
       upper_[i] = -half * weight_[i + 1];  // couples i and i+1
     }
-    // Thomas algorithm: the matrix is symmetric and diagonally dominant, no pivoting needed.
+    rhs_[0] = weight_[0] * v[0] + weight_[1] * (v[0] - v[1]);
+    for (std::size_t i = 1; i + 1 < n; ++i) rhs_[i] = weight_[i] * (v[i] - v[i - 1]) + weight_[i + 1] * (v[i] - v[i + 1]);
+    rhs_[n - 1] = weight_[n - 1] * (v[n - 1] - v[n - 2]) + weight_[n] * v[n - 1];
+    // Thomas algorithm (symmetric, diagonally dominant: no pivoting), with the inverse pivots
+    // kept in diag_ so that one division per bead sits on the sequential recurrence.
+    diag_[0] = 1 / diag_[0];
     for (std::size_t i = 1; i < n; ++i) {
-      const double factor = upper_[i - 1] / diag_[i - 1];
-      diag_[i] -= factor * upper_[i - 1];
+      const double factor = upper_[i - 1] * diag_[i - 1];
       rhs_[i] -= factor * rhs_[i - 1];
+      diag_[i] = 1 / (diag_[i] - factor * upper_[i - 1]);
     }
-    rhs_[n - 1] /= diag_[n - 1];
-    for (std::size_t i = n - 1; i-- > 0;) rhs_[i] = (rhs_[i] - upper_[i] * rhs_[i + 1]) / diag_[i];
+    rhs_[n - 1] *= diag_[n - 1];
+    for (std::size_t i = n - 1; i-- > 0;) rhs_[i] = (rhs_[i] - upper_[i] * rhs_[i + 1]) * diag_[i];
     for (std::size_t i = 0; i < n; ++i) v[i] -= h * rhs_[i];
   }
   if (damping_.time > 0) {
