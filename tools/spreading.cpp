@@ -7,6 +7,7 @@
 
 #include "common/chain_options.hpp"
 #include "common/dynamics_options.hpp"
+#include "common/long_run_options.hpp"
 #include "common/metadata.hpp"
 #include "common/output_paths.hpp"
 #include "common/tool_main.hpp"
@@ -32,16 +33,14 @@ int main(int argc, char** argv) {
   std::string ic = "displacement", output = "spreading", final_state, forces_at, energy_map, spectrum_file;
   std::string spectrum_of = "displacement";
   long long realizations = 1, force_samples = 1000, map_samples = 500, map_stride = 1, spectrum_samples = 2000;
-  bool profile = false, quiet = false, resume = false;
-  int threads = 0;
+  bool profile = false;
+  tool::LongRunOptions run;
   tool::add_chain_options(app, chain_options);
   app.add_option("--ic", ic, "initial condition: displacement | velocity")->capture_default_str();
   tool::add_dynamics_options(app, dynamics);
   app.add_option("--realizations", realizations, "realizations to average (ensemble means and exponents)")
       ->capture_default_str();
-  app.add_option("--threads", threads, "threads for the realizations (0 = all cores); results do not depend on it")
-      ->capture_default_str();
-  app.add_flag("--resume", resume, "continue an interrupted --realizations run with the same parameters");
+  tool::add_long_run_options(app, run);
   app.add_option("--output", output, "prefix: writes PREFIX.csv and PREFIX.json")->capture_default_str();
   app.add_option("--final-state", final_state, "CSV of site,u,v,energy at T");
   app.add_flag("--profile", profile,
@@ -58,18 +57,17 @@ int main(int argc, char** argv) {
   app.add_option("--spectrum-of", spectrum_of,
                  "displacement (the paper's g) | velocity (a permanent step in u adds a flat floor, not a 1/nu^2 tail)")
       ->capture_default_str();
-  app.add_flag("--quiet", quiet, "no warnings or progress line on stderr");
 
   return tool::run(
       app, argc, argv,
       [&] {
         tool::Metadata meta("spreading", argc, argv);
         if (realizations < 1) throw InvalidInput("--realizations " + std::to_string(realizations) + ": must be >= 1");
-        const bool ensemble = realizations > 1 || resume;
+        const bool ensemble = realizations > 1 || run.resume;
         if (ensemble && (!chain_options.config.empty() || !chain_options.radii.empty()))
           throw InvalidInput(
               "--realizations/--resume: an ensemble draws random chains; --config/--radii give one chain");
-        if (threads < 0) throw InvalidInput("--threads " + std::to_string(threads) + ": must be >= 0");
+        if (run.threads < 0) throw InvalidInput("--threads " + std::to_string(run.threads) + ": must be >= 0");
         for (auto [name, value] : {std::pair{"--force-samples", force_samples},
                                    {"--map-samples", map_samples},
                                    {"--map-stride", map_stride},
@@ -96,9 +94,16 @@ int main(int argc, char** argv) {
         d.spectrum_samples = spectrum_file.empty() ? 0 : static_cast<std::size_t>(spectrum_samples);
         d.spectrum_source = parse_spectrum_source(spectrum_of);
         validate(c);
+        std::vector<TransportCase> settled{c};  // τ by the stability rule; the chain's own when from a file
+        const bool from_file = !chain_options.config.empty() || !chain_options.radii.empty();
+        const nlohmann::json step_rule =
+            tool::settle_time_step(settled, app.count("--dt") > 0, from_file ? &selected.chain : nullptr);
+        c = settled.front();
+        validate(c);
         const std::string csv_path = output + ".csv", json_path = output + ".json", sem_path = output + "-sem.csv";
         const std::string profile_path = profile ? output + "-profile.csv" : "", checkpoint = output + ".checkpoint";
         const std::string forces_path = d.force_sites.empty() ? "" : output + "-forces.csv";
+        const tool::OutputClaim claim(output, meta.command(), ensemble ? std::optional(run.checkpoints()) : std::nullopt);
         tool::check_outputs({csv_path, json_path, final_state, energy_map, spectrum_file, profile_path, forces_path,
                              ensemble ? sem_path : "", ensemble ? checkpoint : ""},
                             "--output/--final-state/--energy-map/--spectrum");
@@ -107,8 +112,9 @@ int main(int argc, char** argv) {
             !final_state.empty() || !d.force_sites.empty() || !energy_map.empty() || !spectrum_file.empty();
         std::optional<TransportSummary> summary;
         if (ensemble) {
-          ProgressMeter progress(c.realizations, "spreading", quiet || !MpiContext::instance().root() ? 0 : -1);
-          summary = run_transport_study(c, {threads, checkpoint, resume, &progress});
+          ProgressMeter progress(c.realizations, "spreading", run.quiet || !MpiContext::instance().root() ? 0 : -1);
+          const RunOptions options = tool::run_options(run, checkpoint, &progress, "spreading");
+          summary = tool::replaying_failures([&] { return run_transport_study(c, options); }, argc, argv);
           progress.finish();
           if (!MpiContext::instance().root()) return;
         }
@@ -121,7 +127,7 @@ int main(int argc, char** argv) {
         std::vector<std::string> notes = summary ? warnings(*summary, d) : std::vector<std::string>{};
         for (const auto& w : warnings(r, d)) notes.push_back(w);  // none from a run not made
         if (!c.fit) notes.push_back("note: --fit " + dynamics.fit + " reaches beyond --T; no exponents fitted");
-        for (const auto& note : quiet ? std::vector<std::string>{} : notes)
+        for (const auto& note : run.quiet ? std::vector<std::string>{} : notes)
           std::fprintf(stderr, "spreading: %s\n", note.c_str());
 
         std::vector<std::unique_ptr<AtomicFile>> files;
@@ -153,13 +159,15 @@ int main(int argc, char** argv) {
         if (c.kick == Kick::velocity && (!ensemble || !c.match_beta))
           meta["parameters"]["beta_m_s"] = kicked.beta;  // the β used
         meta["seed"] = chain_options.seed;
+        meta["time_step_rule"] = step_rule;
         for (const char* key : {"gamma", "gamma_err", "gamma_real_err", "eta", "eta_err", "eta_real_err", "power_law"})
           meta[key] = nullptr;
         const nlohmann::json fitted = exponents ? to_json(*exponents, c.centre) : nlohmann::json::object();
         for (const auto& [key, value] : fitted.items()) meta[key.c_str()] = value;
         if (summary)
           meta["ensemble"] = {{"realizations", summary->realizations},
-                              {"threads", threads},
+                              {"threads", run.threads},
+                              {"failed_excluded", tool::report_excluded(c, *summary, meta, run, "spreading", argv[0])},
                               {"mpi_ranks", MpiContext::instance().size()},
                               {"max_energy_error", summary->max_energy_error},
                               {"reached_walls", summary->reached_walls}};
