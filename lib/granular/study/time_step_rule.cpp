@@ -20,6 +20,8 @@ Matrix times(const Matrix& a, const Matrix& b) {
   return {a[0] * b[0] + a[1] * b[2], a[0] * b[1] + a[1] * b[3], a[2] * b[0] + a[3] * b[2], a[2] * b[1] + a[3] * b[3]};
 }
 
+}  // namespace
+
 // One step on a harmonic mode, h = ωτ, in the order the stepper applies it: corrector, drift a_0,
 // kick b_0, …, drift a_s, corrector. On a mode the corrector v += gτ³ M⁻¹K(−a) is v += g h³ ω x.
 double step_trace(const SplittingScheme& s, double h) {
@@ -32,6 +34,8 @@ double step_trace(const SplittingScheme& s, double h) {
   m = times(Matrix{1, 0, g, 1}, m);
   return m[0] + m[3];
 }
+
+namespace {
 
 // The largest bond stiffness over the strains 0 … x where φ_k(x) reaches `energy` (compression;
 // on the extension side every law here is softer than at rest).

@@ -21,8 +21,13 @@
 
 namespace granular {
 
-/// h* of a scheme: the largest h such that its step on ẍ = −ω²x (h = ωτ) is stable, |tr| ≤ 2,
-/// on all of (0, h].
+/// The trace of one step of `scheme` on ẍ = −ω²x at h = ωτ (the step is a 2×2 map of determinant
+/// 1 on (x, v/ω): bounded while |trace| ≤ 2).
+double step_trace(const SplittingScheme& scheme, double h);
+
+/// h* of a scheme: the largest h such that its step is stable, |trace| ≤ 2, on all of (0, h].
+/// Higher-order schemes have narrow unstable gaps beyond it and stable stretches between them;
+/// h* stops at the first gap.
 double stable_step_limit(const SplittingScheme& scheme);
 
 /// An upper bound of the highest angular frequency [rad/s] of `chain` under `law` at any state of
