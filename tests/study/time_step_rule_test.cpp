@@ -81,8 +81,8 @@ TEST(TimeStepRule, TheLimitIsTheFirstInstability) {
 
 TEST(TimeStepRule, FrequencyBoundHoldsAndIsNotFarAbove) {
   for (double xi : {0.1, 0.5, 1.0}) {
-    const Chain chain = make_chain(radii_of(realization_configuration(Disorder::anderson, 0.5, 200, 1, 0), 4.76e-3, xi),
-                                   10.0);
+    const Chain chain =
+        make_chain(radii_of(realization_configuration(Disorder::anderson, 0.5, 200, 1, 0), 4.76e-3, xi), 10.0);
     const double exact = std::sqrt(spectrum(dynamical_matrix(chain)).omega2.back());
     const double bound = highest_frequency_bound(make_force_law(ForceLawKind::hertz, chain), chain, 1e-15);
     EXPECT_GE(bound, exact) << "xi " << xi;

@@ -69,8 +69,7 @@ TEST(FailureReplay, TheReplayCommandReproducesTheFailureAndSkipFailedGoesOn) {
                                " --threads 1 --max-energy-error " + guard_text + " --output " + dir + "/ens";
   const ToolResult stopped = run_tool("spreading", ensemble);
   ASSERT_EQ(stopped.exit_code, 3) << stopped.err;
-  EXPECT_NE(stopped.err.find("realization " + std::to_string(failing) + " of seed 3"), std::string::npos)
-      << stopped.err;
+  EXPECT_NE(stopped.err.find("realization " + std::to_string(failing) + " of seed 3"), std::string::npos) << stopped.err;
   EXPECT_FALSE(std::filesystem::exists(dir + "/ens.csv"));
   EXPECT_EQ(checkpoint_records(dir + "/ens.checkpoint"), failing) << "every realization before it is kept";
 

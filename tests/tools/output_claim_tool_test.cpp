@@ -58,8 +58,8 @@ TEST(OutputClaim, ASecondWriterIsRefusedNamingTheFirst) {
 
 TEST(OutputClaim, EveryToolLocksItsPrefix) {
   const std::string dir = scratch_folder("claim-all");
-  const pid_t holder = spawn("exec '" + tool_path("exponents") + "' " + exponents_job + " --output " + dir +
-                             "/x >/dev/null 2>&1");
+  const pid_t holder =
+      spawn("exec '" + tool_path("exponents") + "' " + exponents_job + " --output " + dir + "/x >/dev/null 2>&1");
   ASSERT_TRUE(eventually([&] { return std::filesystem::exists(dir + "/x.lock"); }));
   for (const auto& [tool, args] : {std::pair<std::string, std::string>{"ipr-map", "--N 20 --xi 0.5 --q 0.5"},
                                    {"correlations", "--N 20 --realizations 2"},
@@ -85,9 +85,8 @@ TEST(Interrupt, CtrlCStopsCleanlyPrintsTheResumeCommandAndKeepsTheCheckpoint) {
   ASSERT_EQ(run_tool("spreading", spreading_job + " --quiet --output " + dir + "/whole").exit_code, 0);
   // A space in the prefix: the command printed must quote it for the shell.
   const std::string prefix = dir + "/cut here", checkpoint = prefix + ".checkpoint", quoted = "'" + prefix + "'";
-  const pid_t run =
-      spawn("exec '" + tool_path("spreading") + "' " + spreading_job + " --output " + quoted + " >/dev/null 2>" +
-            quoted + ".err");
+  const pid_t run = spawn("exec '" + tool_path("spreading") + "' " + spreading_job + " --output " + quoted +
+                          " >/dev/null 2>" + quoted + ".err");
   ASSERT_TRUE(eventually([&] { return checkpoint_records(checkpoint) >= 5; })) << "no realization was logged";
   kill(run, SIGINT);
   const Ended end = wait_for(run);
@@ -102,8 +101,7 @@ TEST(Interrupt, CtrlCStopsCleanlyPrintsTheResumeCommandAndKeepsTheCheckpoint) {
   const std::string command = err.substr(err.rfind('\n') + 1);
   EXPECT_NE(err.find("To continue"), std::string::npos) << err;
   const std::string expected = tool_path("spreading") + " " + spreading_job + " --output " + quoted + " --resume";
-  EXPECT_EQ(command, expected)
-      << "the original command, shell-quoted, with --resume: " << err;
+  EXPECT_EQ(command, expected) << "the original command, shell-quoted, with --resume: " << err;
 
   // A rerun without --resume refuses to discard the finished realizations.
   const std::string kept = read_file(checkpoint);

@@ -119,8 +119,7 @@ inline void apply(const DynamicsOptions& o, TransportCase& c) {
 /// --dt given past the limit of any case is refused naming the largest stable τ; the default
 /// 1 µs becomes 1 µs/k where it is past it. One τ for all of them. `chain`: the chain of a single
 /// case from a file (else every realization counts). Returns the rule and its numbers for the JSON.
-inline nlohmann::json settle_time_step(std::vector<TransportCase>& cases, bool dt_given,
-                                       const Chain* chain = nullptr) {
+inline nlohmann::json settle_time_step(std::vector<TransportCase>& cases, bool dt_given, const Chain* chain = nullptr) {
   TimeStepLimit tightest;
   for (const TransportCase& c : cases) {
     const TimeStepLimit limit = time_step_limit(c, chain);
@@ -133,6 +132,14 @@ inline nlohmann::json settle_time_step(std::vector<TransportCase>& cases, bool d
   nlohmann::json rule = to_json(tightest);
   if (!cases.empty()) rule["time_step_s"] = cases.front().dynamics.time_step;
   rule["time_step_given"] = dt_given;
+  return rule;
+}
+
+/// The same for one case.
+inline nlohmann::json settle_time_step(TransportCase& c, bool dt_given, const Chain* chain = nullptr) {
+  std::vector<TransportCase> one{c};
+  const nlohmann::json rule = settle_time_step(one, dt_given, chain);
+  c = one.front();
   return rule;
 }
 

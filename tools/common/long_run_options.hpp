@@ -55,8 +55,8 @@ inline RunOptions run_options(const LongRunOptions& o, const std::string& checkp
 /// `argv0` (how this tool was called) says where `spreading` is.
 inline std::string replay_command(const TransportCase& c, std::uint64_t r, const std::string& argv0) {
   const auto slash = argv0.rfind('/');
-  std::string command = Metadata::shell_quote((slash == std::string::npos ? "" : argv0.substr(0, slash + 1)) +
-                                              "spreading");
+  std::string command =
+      Metadata::shell_quote((slash == std::string::npos ? "" : argv0.substr(0, slash + 1)) + "spreading");
   const auto add = [&](const std::string& flag, const std::string& value) { command += " " + flag + " " + value; };
   const auto number = [](double x) { return format_number(x); };
   const SpreadingConfig& d = c.dynamics;
@@ -102,10 +102,21 @@ auto replaying_failures(const Study& study, int argc, char** argv) -> decltype(s
   } catch (const RealizationFailed& e) {
     std::string go_on = resume_command(argc, argv);
     if (go_on.find(" --skip-failed") == std::string::npos) go_on += " --skip-failed";
-    throw NumericalError(std::string(e.what()) + "\n  replay it alone: " +
-                         replay_command(e.failed_case, e.realization, argv[0]) +
+    throw NumericalError(std::string(e.what()) +
+                         "\n  replay it alone: " + replay_command(e.failed_case, e.realization, argv[0]) +
                          "\n  the realizations finished are kept; to go on without this one: " + go_on);
   }
+}
+
+/// Runs the ensemble of `c` (under mpirun rank 0 alone gets the summary) with a progress line,
+/// Ctrl-C as a clean stop, and failures told with their replay command.
+inline TransportSummary run_ensemble(const TransportCase& c, const LongRunOptions& o, const std::string& checkpoint,
+                                     const char* tool, int argc, char** argv) {
+  ProgressMeter progress(c.realizations, tool, o.quiet || !MpiContext::instance().root() ? 0 : -1);
+  const RunOptions options = run_options(o, checkpoint, &progress, tool);
+  TransportSummary summary = replaying_failures([&] { return run_transport_study(c, options); }, argc, argv);
+  progress.finish();
+  return summary;
 }
 
 /// Says which realizations of `c` were left out (--skip-failed): a line on stderr for each, with

@@ -42,8 +42,8 @@ inline std::vector<std::string> checkpoint_files(const std::string& prefix) {
   std::error_code ec;
   for (const auto& entry : fs::directory_iterator(folder.empty() ? fs::path(".") : folder, ec)) {
     const std::string name = entry.path().filename().string();
-    if (name == stem || (name.size() > stem.size() && name.compare(0, stem.size(), stem) == 0 &&
-                         name[stem.size()] == '.'))
+    if (name == stem ||
+        (name.size() > stem.size() && name.compare(0, stem.size(), stem) == 0 && name[stem.size()] == '.'))
       found.push_back((folder / name).string());
   }
   std::sort(found.begin(), found.end());
@@ -115,8 +115,7 @@ inline void on_interrupt(int signal) {
 /// ends with granular::Cancelled, which tool::run turns into the command that resumes it.
 inline std::function<bool()> stop_on_interrupt(const std::string& tool) {
   std::snprintf(detail::interrupt_message, sizeof detail::interrupt_message,
-                "\n%s: stopping once the realizations in flight are saved (Ctrl-C again: stop at once)\n",
-                tool.c_str());
+                "\n%s: stopping once the realizations in flight are saved (Ctrl-C again: stop at once)\n", tool.c_str());
   std::signal(SIGINT, detail::on_interrupt);
   std::signal(SIGTERM, detail::on_interrupt);
   return [] { return detail::interrupt_requested != 0; };

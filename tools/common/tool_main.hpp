@@ -1,8 +1,9 @@
 #pragma once
 // What every tool shares: option parsing errors and library exceptions become one line on
 // stderr and an exit code (2 bad input, 1 I/O, 3 numerical failure, 130 interrupted: the
-// message says how to resume); --help and --version exit 0. The body only runs after every option parsed. Library errors name parameters in the
-// library's vocabulary (`time_step`); here they are told in the flag the user typed (`--dt`).
+// message says how to resume); --help and --version exit 0. The body only runs after every
+// option parsed. Library errors name parameters in the library's vocabulary (`time_step`); here
+// they are told in the flag the user typed (`--dt`).
 #include <algorithm>
 #include <cmath>
 #include <cstdio>

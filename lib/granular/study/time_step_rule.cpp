@@ -124,8 +124,8 @@ TimeStepLimit time_step_limit(const TransportCase& c, const Chain* chain) {
     }
   }
   for (const Chain& ch : chains)
-    limit.omega_max = std::max(limit.omega_max,
-                               highest_frequency_bound(make_force_law(c.dynamics.force_law, ch), ch, energy));
+    limit.omega_max =
+        std::max(limit.omega_max, highest_frequency_bound(make_force_law(c.dynamics.force_law, ch), ch, energy));
   limit.max_time_step = limit.scheme_limit / limit.omega_max;
   return limit;
 }
@@ -140,9 +140,9 @@ void check_time_step(const TransportCase& c, const TimeStepLimit& limit) {
   if (c.dynamics.time_step > limit.max_time_step)
     throw InvalidInput("time_step", " " + format_number(c.dynamics.time_step) + " s: past the stability limit of " +
                                         c.dynamics.integrator + " on this chain; the largest stable time step is " +
-                                        format_number(limit.max_time_step) + " s (h* = " +
-                                        format_number(limit.scheme_limit) + ", omega_max = " +
-                                        format_number(limit.omega_max) + " rad/s)");
+                                        format_number(limit.max_time_step) +
+                                        " s (h* = " + format_number(limit.scheme_limit) +
+                                        ", omega_max = " + format_number(limit.omega_max) + " rad/s)");
 }
 
 nlohmann::json to_json(const TimeStepLimit& limit) {

@@ -285,8 +285,9 @@ TransportSummary run_transport_study(const TransportCase& c, const StudyRunOptio
   std::vector<std::vector<double>> rows = run_ensemble(ensemble, [&](std::uint64_t r, int) {
     try {
       return realization_row(c, r);
-    } catch (const NumericalError& e) {  // say which chain, so it can be replayed alone
-      if (options.skip_failed) return std::vector<double>{};  // logged as failed: left out, listed
+    } catch (const NumericalError& e) {
+      // Say which chain, so it can be replayed alone; or log it as failed: left out, listed.
+      if (options.skip_failed) return std::vector<double>{};
       throw RealizationFailed(c, r, e.what());
     }
   });
@@ -311,8 +312,7 @@ TransportSummary run_transport_study(const TransportCase& c, const StudyRunOptio
     kept.push_back(std::move(rows[r]));
   }
   rows = std::move(kept);
-  if (rows.empty())
-    throw NumericalError("every one of the " + std::to_string(c.realizations) + " realizations failed");
+  if (rows.empty()) throw NumericalError("every one of the " + std::to_string(c.realizations) + " realizations failed");
   s.realizations = rows.size();
   s.m2 = summarize(rows, R::offset(R::m2_site, samples), samples);
   s.m2_centroid = summarize(rows, R::offset(R::m2_centroid, samples), samples);

@@ -106,8 +106,7 @@ struct TransportSummary {
 struct RealizationFailed : NumericalError {
   RealizationFailed(const TransportCase& c, std::uint64_t r, const std::string& cause)
       : NumericalError("realization " + std::to_string(r) + " of seed " + std::to_string(c.seed) + ": " + cause),
-        failed_case(c),
-        realization(r) {}
+        failed_case(c), realization(r) {}
   TransportCase failed_case;
   std::uint64_t realization;
 };
@@ -118,8 +117,8 @@ using StudyRunOptions = RunOptions;
 /// Runs (or resumes) the ensemble; under mpirun only rank 0 gets a filled summary. A failing
 /// realization throws RealizationFailed, unless options.skip_failed: then it is logged as failed
 /// (an empty record), left out of every mean and listed in `excluded`; a later resume without
-/// skip_failed stops at it again. Bit-identical for any thread count, rank count or interruption. Memory: the R records of
-/// the case (4 series on every sample, E_n(T) for the profiled ones) while it runs.
+/// skip_failed stops at it again. Bit-identical for any thread count, rank count or interruption. Memory: the R records
+/// of the case (4 series on every sample, E_n(T) for the profiled ones) while it runs.
 TransportSummary run_transport_study(const TransportCase& c, const StudyRunOptions& options);
 
 /// JSON of an exponent report: fit, mean L_d, verdict, which one is shown, realization errors.
