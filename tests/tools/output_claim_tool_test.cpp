@@ -58,8 +58,11 @@ TEST(OutputClaim, ASecondWriterIsRefusedNamingTheFirst) {
 
 TEST(OutputClaim, EveryToolLocksItsPrefix) {
   const std::string dir = scratch_folder("claim-all");
+  // A holder that would run for long: it is killed once the others have been refused.
+  std::string long_job = exponents_job;
+  long_job.replace(long_job.find("--realizations 40"), 17, "--realizations 400");
   const pid_t holder =
-      spawn("exec '" + tool_path("exponents") + "' " + exponents_job + " --output " + dir + "/x >/dev/null 2>&1");
+      spawn("exec '" + tool_path("exponents") + "' " + long_job + " --output " + dir + "/x >/dev/null 2>&1");
   ASSERT_TRUE(eventually([&] { return std::filesystem::exists(dir + "/x.lock"); }));
   for (const auto& [tool, args] : {std::pair<std::string, std::string>{"ipr-map", "--N 20 --xi 0.5 --q 0.5"},
                                    {"correlations", "--N 20 --realizations 2"},
