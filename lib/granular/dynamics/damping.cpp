@@ -59,7 +59,8 @@ double DampingFlow::apply(std::span<const double> u, std::span<double> v, double
       upper_[i] = -half * weight_[i + 1];  // couples i and i+1
     }
     rhs_[0] = weight_[0] * v[0] + weight_[1] * (v[0] - v[1]);
-    for (std::size_t i = 1; i + 1 < n; ++i) rhs_[i] = weight_[i] * (v[i] - v[i - 1]) + weight_[i + 1] * (v[i] - v[i + 1]);
+    for (std::size_t i = 1; i + 1 < n; ++i)
+      rhs_[i] = weight_[i] * (v[i] - v[i - 1]) + weight_[i + 1] * (v[i] - v[i + 1]);
     rhs_[n - 1] = weight_[n - 1] * (v[n - 1] - v[n - 2]) + weight_[n] * v[n - 1];
     // Thomas algorithm (symmetric, diagonally dominant: no pivoting), with the inverse pivots
     // kept in diag_ so that one division per bead sits on the sequential recurrence.
