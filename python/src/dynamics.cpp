@@ -18,6 +18,7 @@
 #include "granular/parallel/mpi_context.hpp"
 #include "granular/study/exponent_table.hpp"
 #include "granular/study/paper_comparison.hpp"
+#include "granular/study/spreading_files.hpp"
 #include "granular/study/transport_choices.hpp"
 #include "granular/study/transport_study.hpp"
 
@@ -218,15 +219,7 @@ void bind_dynamics(py::module_& m) {
         meta["seed"] = c.seed;
         const nlohmann::json fitted = exponent_keys(exponents, c.centre);
         meta.update(fitted);
-        meta["run"] = {{"realization", described.value("realization", nlohmann::json(0))},
-                       {"initial_energy_J", r.initial_energy},
-                       {"max_energy_error", r.max_energy_error},
-                       {"steps", r.steps},
-                       {"bond_updates", r.bond_updates},
-                       {"integration_s", r.seconds},
-                       {"window_final", {r.window_begin + 1, r.window_end}},
-                       {"wall_energy", r.wall_energy},
-                       {"reached_walls", r.reached_walls}};
+        meta["run"] = describe_run(r, described.value("realization", nlohmann::json(0)));
         if (d.spectrum_samples > 0)
           meta["spectrum"] = {{"of", to_string(d.spectrum_source)}, {"samples", d.spectrum_samples}};
 
