@@ -59,8 +59,10 @@ if [ "${GRANULAR_QUICK:-0}" != 1 ]; then
   CC=clang CXX=clang++ cmake -S . -B build-tsan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DGRANULAR_TSAN=ON \
     -DGRANULAR_BENCHMARKS=OFF -DGRANULAR_PYTHON=OFF -DGRANULAR_NATIVE=OFF >/dev/null
   cmake --build build-tsan -j"$jobs" --target test_threaded
-  # archer tells TSan about libomp's barriers and tasks (without it, every parallel region reports).
-  OMP_TOOL_LIBRARIES=/usr/lib/llvm-14/lib/libarcher.so TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1 \
+  # archer tells TSan about libomp's barriers and tasks; libomp itself is not instrumented, so its
+  # internals are ignored (archer's own advice). Checked to fail on an unreduced `sum +=` in a loop.
+  OMP_TOOL_LIBRARIES=/usr/lib/llvm-14/lib/libarcher.so \
+    TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1:ignore_noninstrumented_modules=1 \
     ctest --test-dir build-tsan -j"$jobs" --output-on-failure | tee "$logs/pass3"
   count "$logs/pass3"
 
