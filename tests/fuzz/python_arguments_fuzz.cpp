@@ -34,15 +34,18 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                                 }
                               }()}) {
     try {
-      for (double x : double_vector(v, "x")) if (!std::isfinite(x)) __builtin_trap();
+      for (double x : double_vector(v, "x"))
+        if (!std::isfinite(x)) __builtin_trap();
     } catch (const granular::InvalidInput&) {
     }
     try {
-      for (auto t : types_vector(v, "types")) if (t != 1 && t != 2) __builtin_trap();
+      for (auto t : types_vector(v, "types"))
+        if (t != 1 && t != 2) __builtin_trap();
     } catch (const granular::InvalidInput&) {
     }
     try {
-      for (double x : number_list(v, "xi", 0.01)) if (!std::isfinite(x)) __builtin_trap();
+      for (double x : number_list(v, "xi", 0.01))
+        if (!std::isfinite(x)) __builtin_trap();
     } catch (const granular::InvalidInput&) {
     }
     try {

@@ -21,8 +21,8 @@ for target in $targets; do
   # The embedded interpreter keeps caches and interned objects on purpose: no leak checks there.
   leaks=1
   [[ $target == python_arguments ]] && leaks=0
-  if (cd "$build/fuzz" && "./fuzz_$target" -max_total_time="$seconds" -max_len=4096 -rss_limit_mb=2048 \
-        -detect_leaks=$leaks \
+  if (cd "$build/fuzz" && ASAN_OPTIONS=detect_leaks=$leaks "./fuzz_$target" -max_total_time="$seconds" -max_len=4096 \
+        -rss_limit_mb=2048 -detect_leaks=$leaks \
         -print_final_stats=1 "$corpus" >"$log" 2>&1); then
     runs=$(grep -E '^stat::number_of_executed_units' "$log" | awk '{print $2}')
     echo "fuzz $target: ${runs:-?} executions in ${seconds}s, no findings"

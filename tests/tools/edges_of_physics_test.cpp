@@ -45,8 +45,9 @@ struct Run {
 /// Runs `tool args` in `dir` under a hard time limit (a hang is a failure, reported as code 137).
 Run run_in(const fs::path& dir, const std::string& tool, const std::string& args, int seconds = 120) {
   const std::string err_file = (dir / ".stderr").string();
-  const std::string command = "cd '" + dir.string() + std::string("' && timeout -s KILL ") + std::to_string(seconds) + " '" +
-                              granular::testing::tool_path(tool) + "' " + args + " >/dev/null 2>'" + err_file + "'";
+  const std::string command = "cd '" + dir.string() + std::string("' && timeout -s KILL ") + std::to_string(seconds) +
+                              " '" + granular::testing::tool_path(tool) + "' " + args + " >/dev/null 2>'" + err_file +
+                              "'";
   const int status = std::system(command.c_str());
   Run r{WIFEXITED(status) ? WEXITSTATUS(status) : -1, granular::testing::read_file(err_file), dir};
   fs::remove(err_file);
@@ -175,10 +176,15 @@ struct Cell {
   std::string name;
   std::string tool;
   std::string args;
-  std::set<int> allowed;  ///< exit codes that are a correct outcome
+  std::set<int> allowed;                       ///< exit codes that are a correct outcome
   std::function<void(const Run&)> check = {};  ///< invariant of a result (exit 0)
   int seconds = 120;
+  std::string stop_says = "";  ///< what a stop's message must say (a regex); "" = the default below
 };
+
+/// A time step past stability may be refused (exit 2, naming the stable dt) or stopped by the
+/// energy guard (exit 3); either way the message says which.
+const std::string stability_words = "energy error|--dt|time step";
 
 void PrintTo(const Cell& c, std::ostream* os) { *os << c.name; }
 
@@ -233,39 +239,43 @@ std::vector<Cell> cells() {
       args << "--config chain.types --xi " << xi << " --F0 " << f0 << " --quiet --output out.csv";
       v.push_back({name.str(), "spectrum", args.str(), {ok}, trace_check(mixed_types, xi, f0)});
     }
-  v.push_back({"spectrum_q1_at_xi0_01_is_homogeneous", "spectrum", spectrum_base + " --q 1 --xi 0.01", {ok},
-               [](const Run& r) {
-                 const Table h = second_run(r, "spectrum", "--disorder h --N 60 --quiet --output out.csv");
-                 EXPECT_EQ(read_csv(r.dir / "out.csv"), h) << "q = 1: every bead type 1, whatever xi";
-               }});
-  v.push_back({"spectrum_q0_scales_as_xi_pow_m4_3", "spectrum", spectrum_base + " --q 0 --xi 0.01", {ok},
-               [](const Run& r) {
-                 const Table h = second_run(r, "spectrum", "--disorder h --N 60 --quiet --output out.csv");
-                 const Table t = read_csv(r.dir / "out.csv");
-                 expect_near_rel(t.at("freq_khz"), scaled(h.at("freq_khz"), std::pow(0.01, -4.0 / 3)), 1e-12, "f");
-                 expect_near_rel(t.at("ipr"), h.at("ipr"), 1e-9, "IPR");
-               }});
+  v.push_back(
+      {"spectrum_q1_at_xi0_01_is_homogeneous", "spectrum", spectrum_base + " --q 1 --xi 0.01", {ok}, [](const Run& r) {
+         const Table h = second_run(r, "spectrum", "--disorder h --N 60 --quiet --output out.csv");
+         EXPECT_EQ(read_csv(r.dir / "out.csv"), h) << "q = 1: every bead type 1, whatever xi";
+       }});
+  v.push_back(
+      {"spectrum_q0_scales_as_xi_pow_m4_3", "spectrum", spectrum_base + " --q 0 --xi 0.01", {ok}, [](const Run& r) {
+         const Table h = second_run(r, "spectrum", "--disorder h --N 60 --quiet --output out.csv");
+         const Table t = read_csv(r.dir / "out.csv");
+         expect_near_rel(t.at("freq_khz"), scaled(h.at("freq_khz"), std::pow(0.01, -4.0 / 3)), 1e-12, "f");
+         expect_near_rel(t.at("ipr"), h.at("ipr"), 1e-9, "IPR");
+       }});
   for (double f0 : {1e-9, 1e3})
-    v.push_back({std::string("spectrum_F0_") + (f0 < 1 ? "1em9" : "1e3") + "_scales_as_F0_pow_1_6", "spectrum",
-                 spectrum_base + " --q 0.5 --xi 0.5 --F0 " + (f0 < 1 ? "1e-9" : "1e3"), {ok}, [f0](const Run& r) {
+    v.push_back({std::string("spectrum_F0_") + (f0 < 1 ? "1em9" : "1e3") + "_scales_as_F0_pow_1_6",
+                 "spectrum",
+                 spectrum_base + " --q 0.5 --xi 0.5 --F0 " + (f0 < 1 ? "1e-9" : "1e3"),
+                 {ok},
+                 [f0](const Run& r) {
                    const Table ref = second_run(r, "spectrum", spectrum_base + " --q 0.5 --xi 0.5 --F0 10");
                    const Table t = read_csv(r.dir / "out.csv");
-                   expect_near_rel(t.at("freq_khz"), scaled(ref.at("freq_khz"), std::pow(f0 / 10, 1.0 / 6)), 1e-12,
-                                   "f");
+                   expect_near_rel(t.at("freq_khz"), scaled(ref.at("freq_khz"), std::pow(f0 / 10, 1.0 / 6)), 1e-12, "f");
                    expect_near_rel(t.at("ipr"), ref.at("ipr"), 1e-8, "IPR");
                  }});
   for (std::size_t n : {2u, 3u})
-    v.push_back({std::string("spectrum_N") + std::to_string(n) + "_analytic", "spectrum",
-                 std::string("--disorder h --N ") + std::to_string(n) + " --quiet --output out.csv", {ok}, [n](const Run& r) {
+    v.push_back({std::string("spectrum_N") + std::to_string(n) + "_analytic",
+                 "spectrum",
+                 std::string("--disorder h --N ") + std::to_string(n) + " --quiet --output out.csv",
+                 {ok},
+                 [n](const Run& r) {
                    const Table t = read_csv(r.dir / "out.csv");
                    expect_near_rel(t.at("freq_khz"), small_chain_khz(n, 10), 1e-11, "f");
                    if (n == 2) expect_near_rel(t.at("ipr"), {0.5, 0.5}, 1e-12, "IPR of (1,±1)/√2");
                  }});
-  v.push_back({"spectrum_F0_0_refused", "spectrum", "--F0 0 --quiet --output out.csv", {bad_input}});
+  v.push_back({"spectrum_F0_0_refused", "spectrum", "--F0 0 --quiet --output out.csv", {bad_input}, {}, 120, "--F0 0"});
 
   // ipr-map ----------------------------------------------------------------------------------
-  v.push_back({"ipr_map_xi_0_01_and_1_q_0_and_1", "ipr-map", map_base + " --xi 0.01,1 --q 0,1", {ok},
-               [](const Run& r) {
+  v.push_back({"ipr_map_xi_0_01_and_1_q_0_and_1", "ipr-map", map_base + " --xi 0.01,1 --q 0,1", {ok}, [](const Run& r) {
                  Table t = read_csv(r.dir / "out.csv");
                  // rows: q-major, then xi, then mode; 16 modes per cell: (q0,xi.01) (q0,xi1) (q1,xi.01) (q1,xi1)
                  ASSERT_EQ(t["freq_khz"].size(), 64u);
@@ -279,28 +289,40 @@ std::vector<Cell> cells() {
                  expect_near_rel(cell("ipr", 0), cell("ipr", 1), 1e-9, "q = 0: same modes");
                }});
   for (double f0 : {1e-9, 1e3})
-    v.push_back({std::string("ipr_map_F0_") + (f0 < 1 ? "1em9" : "1e3"), "ipr-map",
-                 map_base + " --xi 0.3 --q 0.5 --F0 " + (f0 < 1 ? "1e-9" : "1e3"), {ok}, [f0](const Run& r) {
+    v.push_back({std::string("ipr_map_F0_") + (f0 < 1 ? "1em9" : "1e3"),
+                 "ipr-map",
+                 map_base + " --xi 0.3 --q 0.5 --F0 " + (f0 < 1 ? "1e-9" : "1e3"),
+                 {ok},
+                 [f0](const Run& r) {
                    const Table ref = second_run(r, "ipr-map", map_base + " --xi 0.3 --q 0.5 --F0 10");
                    const Table t = read_csv(r.dir / "out.csv");
-                   expect_near_rel(t.at("freq_khz"), scaled(ref.at("freq_khz"), std::pow(f0 / 10, 1.0 / 6)), 1e-12,
-                                   "f");
+                   expect_near_rel(t.at("freq_khz"), scaled(ref.at("freq_khz"), std::pow(f0 / 10, 1.0 / 6)), 1e-12, "f");
                    expect_near_rel(t.at("ipr"), ref.at("ipr"), 1e-8, "IPR");
                  }});
   for (std::size_t n : {2u, 3u})
-    v.push_back({std::string("ipr_map_N") + std::to_string(n) + "_analytic", "ipr-map",
-                 std::string("--disorder A --q 1 --xi 0.5 --N ") + std::to_string(n) + " --realizations 2 --quiet --output out.csv",
-                 {ok}, [n](const Run& r) {
+    v.push_back({std::string("ipr_map_N") + std::to_string(n) + "_analytic",
+                 "ipr-map",
+                 std::string("--disorder A --q 1 --xi 0.5 --N ") + std::to_string(n) +
+                     " --realizations 2 --quiet --output out.csv",
+                 {ok},
+                 [n](const Run& r) {
                    expect_near_rel(read_csv(r.dir / "out.csv").at("freq_khz"), small_chain_khz(n, 10), 1e-11, "f");
                  }});
 
   // correlations -----------------------------------------------------------------------------------
   for (const char* q : {"0", "1"})
-    v.push_back({std::string("correlations_A_q") + q + "_one_type", "correlations",
+    v.push_back({std::string("correlations_A_q") + q + "_one_type",
+                 "correlations",
                  std::string("--disorder A --q ") + q + " --N 50 --realizations 4 --quiet --output out.csv",
-                 {bad_input}});
-  v.push_back({"correlations_RDM2_q1_alternating", "correlations",
-               "--disorder RDM2 --q 1 --N 50 --realizations 4 --quiet --output out.csv", {ok}, [](const Run& r) {
+                 {bad_input},
+                 {},
+                 120,
+                 "one bead type"});
+  v.push_back({"correlations_RDM2_q1_alternating",
+               "correlations",
+               "--disorder RDM2 --q 1 --N 50 --realizations 4 --quiet --output out.csv",
+               {ok},
+               [](const Run& r) {
                  const Table t = read_csv(r.dir / "out.csv");
                  for (std::size_t i = 0; i < t.at("distance").size(); ++i) {
                    const double sign = static_cast<long>(t.at("distance")[i]) % 2 == 0 ? 1.0 : -1.0;
@@ -311,14 +333,17 @@ std::vector<Cell> cells() {
   // Realizations of one type only are skipped (σ² = 0); in the others ρ is exact: N = 2 is "1 2" or
   // "2 1", so ρ(1) = -1; N = 3 has two beads of one type, so ρ(1) = ρ(2) = -1/2 (cyclic shifts).
   for (std::size_t n : {2u, 3u})
-    v.push_back({std::string("correlations_A_N") + std::to_string(n) + "_exact", "correlations",
-                 std::string("--disorder A --q 0.5 --N ") + std::to_string(n) + " --realizations 50 --quiet --output out.csv", {ok},
-                 [n](const Run& r) {
-                   const Table t = read_csv(r.dir / "out.csv");
-                   ASSERT_EQ(t.at("rho_mean").size(), n) << "d = 0 … N-1 (the default max distance is capped)";
-                   EXPECT_EQ(t.at("rho_mean")[0], 1.0);
-                   for (std::size_t d = 1; d < n; ++d) EXPECT_NEAR(t.at("rho_mean")[d], n == 2 ? -1.0 : -0.5, 1e-14);
-                 }});
+    v.push_back(
+        {std::string("correlations_A_N") + std::to_string(n) + "_exact",
+         "correlations",
+         std::string("--disorder A --q 0.5 --N ") + std::to_string(n) + " --realizations 50 --quiet --output out.csv",
+         {ok},
+         [n](const Run& r) {
+           const Table t = read_csv(r.dir / "out.csv");
+           ASSERT_EQ(t.at("rho_mean").size(), n) << "d = 0 … N-1 (the default max distance is capped)";
+           EXPECT_EQ(t.at("rho_mean")[0], 1.0);
+           for (std::size_t d = 1; d < n; ++d) EXPECT_NEAR(t.at("rho_mean")[d], n == 2 ? -1.0 : -0.5, 1e-14);
+         }});
 
   // spreading --------------------------------------------------------------------------------------
   // The Hertz force is not odd (compression ≠ extension), so a kicked Hertz chain does not spread
@@ -330,48 +355,74 @@ std::vector<Cell> cells() {
     EXPECT_EQ(read_csv(r.dir / "out.csv"), second_run(r, "spreading", spread_short + " --disorder h"))
         << "every bead type 1: the homogeneous chain, bit for bit";
   };
-  v.push_back({"spreading_xi_0_01_default_dt_past_stability", "spreading", spread_short + " --xi 0.01",
-               {bad_input, numerical}});
-  v.push_back({"spreading_xi_0_01_small_dt", "spreading",
-               "--N 101 --xi 0.01 --dt 1e-9 --T 2e-6 --samples 20 --quiet --output out", {ok}, energy_below(1e-6)});
-  v.push_back({"spreading_xi_1_is_homogeneous", "spreading", spread_short + " --xi 1", {ok}, same_as_homogeneous});
-  v.push_back({"spreading_q1_is_homogeneous", "spreading", spread_short + " --q 1 --xi 0.01", {ok},
-               same_as_homogeneous});
-  v.push_back({"spreading_q0_small_beads", "spreading", spread_short + " --q 0 --xi 0.5 --dt 2e-7", {ok},
+  v.push_back({"spreading_xi_0_01_default_dt_past_stability",
+               "spreading",
+               spread_short + " --xi 0.01",
+               {bad_input, numerical},
+               {},
+               120,
+               stability_words});
+  v.push_back({"spreading_xi_0_01_small_dt",
+               "spreading",
+               "--N 101 --xi 0.01 --dt 1e-9 --T 2e-6 --samples 20 --quiet --output out",
+               {ok},
                energy_below(1e-6)});
+  v.push_back({"spreading_xi_1_is_homogeneous", "spreading", spread_short + " --xi 1", {ok}, same_as_homogeneous});
+  v.push_back({"spreading_q1_is_homogeneous", "spreading", spread_short + " --q 1 --xi 0.01", {ok}, same_as_homogeneous});
+  v.push_back(
+      {"spreading_q0_small_beads", "spreading", spread_short + " --q 0 --xi 0.5 --dt 2e-7", {ok}, energy_below(1e-6)});
   v.push_back({"spreading_F0_1em9", "spreading", spread_short + " --F0 1e-9", {ok, numerical}, energy_below(1e-3)});
   v.push_back({"spreading_F0_1e3", "spreading", spread_short + " --F0 1e3", {ok, numerical}, energy_below(1e-3)});
-  v.push_back({"spreading_F0_1e3_small_dt", "spreading", spread_short + " --F0 1e3 --dt 2.5e-7", {ok},
-               energy_below(1e-5)});
-  v.push_back({"spreading_alpha_1em4", "spreading", spread_short + " --alpha 1e-4", {ok, numerical},
-               energy_below(1e-3)});
-  v.push_back({"spreading_alpha_1em4_small_dt", "spreading",
-               "--N 101 --T 1e-4 --dt 1e-8 --samples 20 --alpha 1e-4 --quiet --output out", {ok}, energy_below(1e-6)});
-  v.push_back({"spreading_beta_10", "spreading", spread_short + " --ic velocity --beta 10", {ok, numerical},
-               energy_below(1e-3)});
-  v.push_back({"spreading_beta_10_small_dt", "spreading",
-               "--N 101 --T 1e-4 --dt 1e-8 --samples 20 --ic velocity --beta 10 --quiet --output out", {ok},
+  v.push_back(
+      {"spreading_F0_1e3_small_dt", "spreading", spread_short + " --F0 1e3 --dt 2.5e-7", {ok}, energy_below(1e-5)});
+  v.push_back({"spreading_alpha_1em4", "spreading", spread_short + " --alpha 1e-4", {ok, numerical}, energy_below(1e-3)});
+  v.push_back({"spreading_alpha_1em4_small_dt",
+               "spreading",
+               "--N 101 --T 1e-4 --dt 1e-8 --samples 20 --alpha 1e-4 --quiet --output out",
+               {ok},
                energy_below(1e-6)});
-  v.push_back({"spreading_N2", "spreading", "--disorder h --N 2 --T 1e-3 --samples 20 --quiet --output out", {ok},
+  v.push_back(
+      {"spreading_beta_10", "spreading", spread_short + " --ic velocity --beta 10", {ok, numerical}, energy_below(1e-3)});
+  v.push_back({"spreading_beta_10_small_dt",
+               "spreading",
+               "--N 101 --T 1e-4 --dt 1e-8 --samples 20 --ic velocity --beta 10 --quiet --output out",
+               {ok},
                energy_below(1e-6)});
-  v.push_back({"spreading_N3_linear_symmetric", "spreading",
-               "--disorder h --N 3 --T 1e-3 --samples 20 --force-law linear --quiet --output out", {ok},
+  v.push_back({"spreading_N2",
+               "spreading",
+               "--disorder h --N 2 --T 1e-3 --samples 20 --quiet --output out",
+               {ok},
+               energy_below(1e-6)});
+  v.push_back({"spreading_N3_linear_symmetric",
+               "spreading",
+               "--disorder h --N 3 --T 1e-3 --samples 20 --force-law linear --quiet --output out",
+               {ok},
                [](const Run& r) {
                  const Table t = read_csv(r.dir / "out.csv");
                  expect_near_rel(t.at("m2"), t.at("m2_centroid"), 1e-9, "m2 about n0 = about the centroid");
                  EXPECT_LT(spreading_energy_error(r), 1e-6);
                }});
-  v.push_back({"spreading_ensemble_F0_1em9", "spreading",
-               "--N 51 --T 1e-4 --samples 10 --realizations 3 --F0 1e-9 --quiet --output out", {ok, numerical},
+  v.push_back({"spreading_ensemble_F0_1em9",
+               "spreading",
+               "--N 51 --T 1e-4 --samples 10 --realizations 3 --F0 1e-9 --quiet --output out",
+               {ok, numerical},
                energy_below(1e-3)});
-  v.push_back({"spreading_dt_past_stability", "spreading",
-               "--N 101 --dt 1e-4 --fit-step 1e-4 --T 1e-2 --quiet --output out", {bad_input, numerical}});
-  v.push_back({"Long_spreading_1e7_beads_active_window", "spreading",
-               "--disorder h --N 1e7 --T 1e-4 --samples 20 --quiet --output out", {ok},
+  v.push_back({"spreading_dt_past_stability",
+               "spreading",
+               "--N 101 --dt 1e-4 --fit-step 1e-4 --T 1e-2 --quiet --output out",
+               {bad_input, numerical},
+               {},
+               120,
+               stability_words});
+  v.push_back({"Long_spreading_1e7_beads_active_window",
+               "spreading",
+               "--disorder h --N 1e7 --T 1e-4 --samples 20 --quiet --output out",
+               {ok},
                [](const Run& r) {
                  // the wave covers a few beads in 0.1 ms: the 10^7-bead chain must give the 1001-bead numbers
-                 const Table small = second_run(r, "spreading", "--disorder h --N 1001 --T 1e-4 --samples 20 "
-                                                                "--quiet --output out");
+                 const Table small = second_run(r, "spreading",
+                                                "--disorder h --N 1001 --T 1e-4 --samples 20 "
+                                                "--quiet --output out");
                  const Table big = read_csv(r.dir / "out.csv");
                  EXPECT_EQ(big.at("m2"), small.at("m2"));
                  EXPECT_EQ(big.at("ipr"), small.at("ipr"));
@@ -396,32 +447,59 @@ std::vector<Cell> cells() {
   const auto exponents_energy_below = [](double bound) {
     return [bound](const Run& r) { EXPECT_LT(max_abs(read_csv(r.dir / "out.csv").at("max_energy_error")), bound); };
   };
-  v.push_back({"exponents_q1_A_is_h", "exponents",
-               exponents_small + " --N 51 --chains h,A --q 1 --xi 0.01 --F0 10 --ic displacement", {ok},
+  v.push_back({"exponents_q1_A_is_h",
+               "exponents",
+               exponents_small + " --N 51 --chains h,A --q 1 --xi 0.01 --F0 10 --ic displacement",
+               {ok},
                same_rows(0, 1)});
-  v.push_back({"exponents_q0_A_is_RDM1", "exponents",
-               exponents_small + " --N 50 --chains A,RDM1 --q 0 --F0 10 --ic displacement --dt 2e-7", {ok},
+  v.push_back({"exponents_q0_A_is_RDM1",
+               "exponents",
+               exponents_small + " --N 50 --chains A,RDM1 --q 0 --F0 10 --ic displacement --dt 2e-7",
+               {ok},
                same_rows(0, 1)});
-  v.push_back({"exponents_xi_1_A_is_h", "exponents",
-               exponents_small + " --N 51 --chains h,A --xi 1 --F0 10 --ic displacement", {ok}, same_rows(0, 1)});
-  v.push_back({"exponents_xi_0_01_default_dt_past_stability", "exponents",
-               exponents_small + " --N 51 --chains A --xi 0.01 --F0 10", {bad_input, numerical}});
-  v.push_back({"exponents_F0_1e3_and_1em9", "exponents", exponents_small + " --N 51 --chains A --F0 1e3,1e-9",
-               {ok, numerical}, exponents_energy_below(1e-3)});
-  v.push_back({"exponents_big_kicks_default_dt", "exponents",
-               exponents_small + " --N 51 --chains A --F0 10 --alpha 1e-4 --beta 10", {ok, numerical},
+  v.push_back({"exponents_xi_1_A_is_h",
+               "exponents",
+               exponents_small + " --N 51 --chains h,A --xi 1 --F0 10 --ic displacement",
+               {ok},
+               same_rows(0, 1)});
+  v.push_back({"exponents_xi_0_01_default_dt_past_stability",
+               "exponents",
+               exponents_small + " --N 51 --chains A --xi 0.01 --F0 10",
+               {bad_input, numerical},
+               {},
+               120,
+               stability_words});
+  v.push_back({"exponents_F0_1e3_and_1em9",
+               "exponents",
+               exponents_small + " --N 51 --chains A --F0 1e3,1e-9",
+               {ok, numerical},
+               exponents_energy_below(1e-3)});
+  v.push_back({"exponents_big_kicks_default_dt",
+               "exponents",
+               exponents_small + " --N 51 --chains A --F0 10 --alpha 1e-4 --beta 10",
+               {ok, numerical},
                exponents_energy_below(1e-3)});
   for (const char* n : {"2", "3"})
-    v.push_back({std::string("exponents_N") + n, "exponents",
-                 exponents_small + " --chains h,A --F0 10,0 --N " + n, {ok}, exponents_energy_below(1e-4)});
-  v.push_back({"exponents_dt_past_stability", "exponents",
+    v.push_back({std::string("exponents_N") + n,
+                 "exponents",
+                 exponents_small + " --chains h,A --F0 10,0 --N " + n,
+                 {ok},
+                 exponents_energy_below(1e-4)});
+  v.push_back({"exponents_dt_past_stability",
+               "exponents",
                "--N 51 --T 1e-2 --dt 1e-4 --fit-step 1e-4 --chains A --F0 10 --realizations 2 --profile-F0 none "
                "--quiet --output out",
-               {bad_input, numerical}});
+               {bad_input, numerical},
+               {},
+               120,
+               stability_words});
 
   // localization -----------------------------------------------------------------------------------
-  v.push_back({"localization_q1_homogeneous_band", "localization",
-               loc_base + " --disorder A --q 1 --xi 0.01 --f 5,10,17,19,25,40", {ok}, [](const Run& r) {
+  v.push_back({"localization_q1_homogeneous_band",
+               "localization",
+               loc_base + " --disorder A --q 1 --xi 0.01 --f 5,10,17,19,25,40",
+               {ok},
+               [](const Run& r) {
                  const Table t = read_csv(r.dir / "out.csv");
                  const double b = stiffness(hertz(r1, r1), 10), m = mass(r1);
                  for (std::size_t i = 0; i < t.at("freq_khz").size(); ++i) {
@@ -433,9 +511,12 @@ std::vector<Cell> cells() {
                    }
                  }
                }});
-  v.push_back({"localization_q0_scales_as_xi_pow_m4_3", "localization",
-               loc_base + std::string(" --disorder A --q 0 --xi 0.01 --f ") + num(17 * std::pow(0.01, -4.0 / 3)) + std::string(",") + num(25 * std::pow(0.01, -4.0 / 3)),
-               {ok}, [](const Run& r) {
+  v.push_back({"localization_q0_scales_as_xi_pow_m4_3",
+               "localization",
+               loc_base + std::string(" --disorder A --q 0 --xi 0.01 --f ") + num(17 * std::pow(0.01, -4.0 / 3)) +
+                   std::string(",") + num(25 * std::pow(0.01, -4.0 / 3)),
+               {ok},
+               [](const Run& r) {
                  const Table ref = second_run(r, "localization", loc_base + " --disorder h --f 17,25");
                  expect_near_rel(read_csv(r.dir / "out.csv").at("lyapunov"), ref.at("lyapunov"), 1e-6, "lambda");
                }});
@@ -443,9 +524,10 @@ std::vector<Cell> cells() {
     const double s = std::pow(f0 / 10, 1.0 / 6);
     v.push_back({std::string("localization_F0_") + (f0 < 1 ? "1em9" : "1e3") + "_scales_as_F0_pow_1_6",
                  "localization",
-                 loc_base + " --disorder A --q 0.5 --F0 " + (f0 < 1 ? "1e-9" : "1e3") + " --f " +
-                     num(10 * s) + std::string(",") + num(20 * s) + std::string(",") + num(40 * s),
-                 {ok}, [](const Run& r) {
+                 loc_base + " --disorder A --q 0.5 --F0 " + (f0 < 1 ? "1e-9" : "1e3") + " --f " + num(10 * s) +
+                     std::string(",") + num(20 * s) + std::string(",") + num(40 * s),
+                 {ok},
+                 [](const Run& r) {
                    const Table ref = second_run(r, "localization", loc_base + " --disorder A --q 0.5 --f 10,20,40");
                    const Table t = read_csv(r.dir / "out.csv");
                    expect_near_rel(t.at("lyapunov"), ref.at("lyapunov"), 1e-6, "lambda");
@@ -456,16 +538,20 @@ std::vector<Cell> cells() {
     // frequencies between the analytic modes: the node count must count the modes below each
     const std::vector<double> f = small_chain_khz(n, 10);
     std::string list = num(0.5 * f[0]);
-    for (std::size_t k = 0; k < n; ++k) list += std::string(",") + num(k + 1 < n ? 0.5 * (f[k] + f[k + 1]) : 1.5 * f[k]);
-    v.push_back({std::string("localization_N") + std::to_string(n) + "_counts_analytic_modes", "localization",
-                 std::string("--disorder h --N ") + std::to_string(n) + " --segments 2 --quiet --output out --f " + list, {ok},
+    for (std::size_t k = 0; k < n; ++k)
+      list += std::string(",") + num(k + 1 < n ? 0.5 * (f[k] + f[k + 1]) : 1.5 * f[k]);
+    v.push_back({std::string("localization_N") + std::to_string(n) + "_counts_analytic_modes",
+                 "localization",
+                 std::string("--disorder h --N ") + std::to_string(n) + " --segments 2 --quiet --output out --f " + list,
+                 {ok},
                  [n](const Run& r) {
                    const Table t = read_csv(r.dir / "out.csv");
                    for (std::size_t k = 0; k <= n; ++k)
                      EXPECT_NEAR(t.at("idos").at(k) * static_cast<double>(n), static_cast<double>(k), 1e-9);
                  }});
   }
-  v.push_back({"localization_F0_0_refused", "localization", loc_base + " --F0 0 --f 10", {bad_input}});
+  v.push_back(
+      {"localization_F0_0_refused", "localization", loc_base + " --F0 0 --f 10", {bad_input}, {}, 120, "--F0 0"});
   return v;
 }
 
@@ -482,6 +568,8 @@ void run_cell(const Cell& c) {
   if (r.code != ok) {
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << "one line: " << r.err;
     EXPECT_NE(r.err.find("error"), std::string::npos) << r.err;
+    const std::string says = c.stop_says.empty() ? (r.code == numerical ? stability_words : "error") : c.stop_says;
+    EXPECT_TRUE(std::regex_search(r.err, std::regex(says))) << "should say /" << says << "/: " << r.err;
     EXPECT_EQ(output_files(dir), 0u) << "no output after a stop";
   } else {
     expect_finite_outputs(dir);
