@@ -3,6 +3,7 @@
 #include <string>
 
 #include "common/metadata.hpp"
+#include "common/output_claim.hpp"
 #include "common/spectrum_options.hpp"
 #include "common/tool_main.hpp"
 #include "granular/ensemble/parallel_realizations.hpp"
@@ -71,6 +72,7 @@ int main(int argc, char** argv) {
       throw InvalidInput("--method", ": only with --near/--count or --window (the full map uses --solver)");
     }
     validate(config);
+    const tool::OutputClaim claim(tool::prefix_of(output), meta.command());
     check_writable(output);
     const std::string json_path = tool::json_path_for(output);
     check_writable(json_path);

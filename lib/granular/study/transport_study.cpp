@@ -285,20 +285,34 @@ TransportSummary run_transport_study(const TransportCase& c, const StudyRunOptio
   std::vector<std::vector<double>> rows = run_ensemble(ensemble, [&](std::uint64_t r, int) {
     try {
       return realization_row(c, r);
-    } catch (const NumericalError& e) {  // say which chain, so it can be replayed alone
-      throw NumericalError("realization " + std::to_string(r) + " of seed " + std::to_string(c.seed) +
-                           " (replay: spreading --seed " + std::to_string(c.seed) + " --realization " +
-                           std::to_string(r) + "): " + e.what());
+    } catch (const NumericalError& e) {
+      // Say which chain, so it can be replayed alone; or log it as failed: left out, listed.
+      if (options.skip_failed) return std::vector<double>{};
+      throw RealizationFailed(c, r, e.what());
     }
   });
   if (!MpiContext::instance().root()) return s;
 
   using R = RealizationRecord;
   const std::size_t width = R::profile(samples);
-  const std::size_t profiled = std::min(c.profile_realizations, c.realizations);
-  for (std::size_t r = 0; r < rows.size(); ++r)
-    if (rows[r].size() != width + (r < profiled ? c.n : 0))
+  const std::size_t all_profiled = std::min(c.profile_realizations, c.realizations);
+  std::size_t profiled = 0;  // realizations averaged into the profile: the first all_profiled, less the failed
+  std::vector<std::vector<double>> kept;
+  kept.reserve(rows.size());
+  for (std::size_t r = 0; r < rows.size(); ++r) {
+    if (rows[r].empty()) {  // failed, here or in the run this one resumes
+      if (!options.skip_failed)
+        throw RealizationFailed(c, r, "it failed in the interrupted run (which was told to skip failures)");
+      s.excluded.push_back(r);
+      continue;
+    }
+    if (rows[r].size() != width + (r < all_profiled ? c.n : 0))
       throw NumericalError("realization " + std::to_string(r) + " has a row of the wrong length");
+    profiled += r < all_profiled;
+    kept.push_back(std::move(rows[r]));
+  }
+  rows = std::move(kept);
+  if (rows.empty()) throw NumericalError("every one of the " + std::to_string(c.realizations) + " realizations failed");
   s.realizations = rows.size();
   s.m2 = summarize(rows, R::offset(R::m2_site, samples), samples);
   s.m2_centroid = summarize(rows, R::offset(R::m2_centroid, samples), samples);
