@@ -361,11 +361,11 @@ std::vector<Cell> cells() {
         << "every bead type 1: the homogeneous chain, bit for bit";
   };
   // ξ = 0.01: type-2 beads ring at ~21 MHz, so the default 1 µs is past stability; the rule divides it.
-  v.push_back({"spreading_xi_0_01_default_dt_by_the_rule", "spreading", spread_short + " --xi 0.01", {ok},
-               [](const Run& r) {
-                 EXPECT_LT(chosen_time_step(r), 1e-8) << "1 µs / k";
-                 EXPECT_LT(spreading_energy_error(r), 1e-3) << "under the guard (the rule's step gives ~1e-4)";
-               }});
+  v.push_back(
+      {"spreading_xi_0_01_default_dt_by_the_rule", "spreading", spread_short + " --xi 0.01", {ok}, [](const Run& r) {
+         EXPECT_LT(chosen_time_step(r), 1e-8) << "1 µs / k";
+         EXPECT_LT(spreading_energy_error(r), 1e-3) << "under the guard (the rule's step gives ~1e-4)";
+       }});
   v.push_back({"spreading_xi_0_01_small_dt",
                "spreading",
                "--N 101 --xi 0.01 --dt 1e-9 --T 2e-6 --samples 20 --quiet --output out",
@@ -466,8 +466,11 @@ std::vector<Cell> cells() {
                exponents_small + " --N 51 --chains h,A --xi 1 --F0 10 --ic displacement",
                {ok},
                same_rows(0, 1)});
-  v.push_back({"exponents_xi_0_01_default_dt_by_the_rule", "exponents",
-               exponents_small + " --N 51 --chains A --xi 0.01 --F0 10 --ic displacement", {ok}, [](const Run& r) {
+  v.push_back({"exponents_xi_0_01_default_dt_by_the_rule",
+               "exponents",
+               exponents_small + " --N 51 --chains A --xi 0.01 --F0 10 --ic displacement",
+               {ok},
+               [](const Run& r) {
                  EXPECT_LT(chosen_time_step(r), 1e-8) << "1 µs / k";
                  EXPECT_LT(max_abs(read_csv(r.dir / "out.csv").at("max_energy_error")), 1e-3) << "under the guard";
                }});
