@@ -37,6 +37,7 @@ int main(int argc, char** argv) {
   tool::add_chain_options(app, chain_options);
   app.add_option("--ic", ic, "initial condition: displacement | velocity")->capture_default_str();
   tool::add_dynamics_options(app, dynamics);
+  tool::add_lyapunov_options(app, dynamics.beyond);
   app.add_option("--realizations", realizations, "realizations to average (ensemble means and exponents)")
       ->capture_default_str();
   tool::add_long_run_options(app, run);
@@ -74,8 +75,10 @@ int main(int argc, char** argv) {
         const tool::OutputClaim claim(output, meta.command(),
                                       ensemble ? std::optional(run.checkpoints()) : std::nullopt);
         tool::check_outputs({csv_path, json_path, more.final_state, more.energy_map, more.spectrum, profile_path,
-                             forces_path, ensemble ? sem_path : "", ensemble ? checkpoint : ""},
+                             forces_path, ensemble ? sem_path : "", ensemble ? checkpoint : "",
+                             dynamics.beyond.deviation},
                             "--output/--final-state/--energy-map/--spectrum");
+        const bool single = more.single() || !dynamics.beyond.deviation.empty();  // a run of its own
 
         std::optional<TransportSummary> summary;
         if (ensemble) {
@@ -83,9 +86,8 @@ int main(int argc, char** argv) {
           if (!MpiContext::instance().root()) return;
         }
         const KickedChain kicked = kick(c, selected.chain);
-        const SpreadingResult r = !ensemble || more.single()
-                                      ? run_spreading(selected.chain, kicked.initial, spreading_config(c))
-                                      : SpreadingResult{};
+        const SpreadingResult r =
+            !ensemble || single ? run_spreading(selected.chain, kicked.initial, spreading_config(c)) : SpreadingResult{};
         std::optional<TransportExponents> exponents = summary ? summary->exponents : std::nullopt;
         if (!summary && c.fit) exponents = transport_exponents(c, r.t, r.m2, r.m2_centroid, r.ipr);
         std::vector<std::string> notes = summary ? warnings(*summary, d) : std::vector<std::string>{};
@@ -104,6 +106,7 @@ int main(int argc, char** argv) {
           summary ? write_profile_csv(open(profile_path), *summary) : write_profile_csv(open(profile_path), r);
         if (!forces_path.empty()) write_forces_csv(open(forces_path), r, d.force_sites);
         tool::write_single(more, r, d, open, meta);
+        if (single && !dynamics.beyond.deviation.empty()) write_deviation_csv(open(dynamics.beyond.deviation), r);
 
         meta["parameters"] = describe(c);
         meta["parameters"]["chain"] = selected.description;
@@ -122,7 +125,7 @@ int main(int argc, char** argv) {
                               {"mpi_ranks", MpiContext::instance().size()},
                               {"max_energy_error", summary->max_energy_error},
                               {"reached_walls", summary->reached_walls}};
-        if (!summary || more.single())
+        if (!summary || single)
           meta["run"] = {{"realization", chain_options.realization},
                          {"initial_energy_J", r.initial_energy},
                          {"max_energy_error", r.max_energy_error},
@@ -131,11 +134,14 @@ int main(int argc, char** argv) {
                          {"integration_s", r.seconds},
                          {"window_final", {r.window_begin + 1, r.window_end}},
                          {"wall_energy", r.wall_energy},
-                         {"reached_walls", r.reached_walls}};
+                         {"reached_walls", r.reached_walls},
+                         {"dissipated_J",
+                          r.dissipated.empty() ? nlohmann::json(nullptr) : nlohmann::json(r.dissipated.back())},
+                         {"mle_per_s", r.mle.empty() ? nlohmann::json(nullptr) : nlohmann::json(r.mle.back())}};
         meta["output"] = csv_path;
         meta.write(json_path);  // the JSON first, then the CSVs: never a CSV without its metadata
         for (auto& f : files) f->commit();
         if (ensemble) CheckpointLog::remove_all(checkpoint);
       },
-      {{"spectrum_source", "--spectrum-of"}});
+      {{"spectrum_source", "--spectrum-of"}, {"lyapunov", "--mle"}});
 }

@@ -8,6 +8,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "beyond_options.hpp"
 #include "chain_options.hpp"
 #include "granular/dynamics/scheme.hpp"
 #include "granular/error.hpp"
@@ -24,6 +25,7 @@ struct DynamicsOptions {
   double alpha = 1e-7, duration = 1e-2, dt = 1e-6, fit_step = 1e-5, t_star = 4e-3, kappa = 0.1;
   double window_threshold = 1e-30, reference_max_step = 0.01e-6, max_energy_error = 1e-3;
   long long samples = 100, site = 0, bootstrap = 1000;
+  BeyondOptions beyond;  ///< damping (here) and the tangent map (spreading adds its flags)
 };
 
 inline void add_dynamics_options(CLI::App& app, DynamicsOptions& o) {
@@ -66,6 +68,7 @@ inline void add_dynamics_options(CLI::App& app, DynamicsOptions& o) {
       ->capture_default_str();
   app.add_option("--energy-guard", o.energy_guard, "stop | warn: what passing --max-energy-error does")
       ->capture_default_str();
+  add_damping_options(app, o.beyond);
 }
 
 /// Fills `c` from the options: all but the chain (disorder, q, ξ, N, F0, R1, seed, realizations)
@@ -113,6 +116,7 @@ inline void apply(const DynamicsOptions& o, TransportCase& c) {
   c.criterion.t_start = o.t_star;
   if (o.bootstrap < 2) throw InvalidInput("--bootstrap " + std::to_string(o.bootstrap) + ": at least 2 resamples");
   c.bootstrap.resamples = static_cast<std::size_t>(o.bootstrap);
+  apply(o.beyond, d);
 }
 
 /// Settles the time step of `cases` (validated) by the stability rule (time_step_rule.hpp): a

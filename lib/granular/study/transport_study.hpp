@@ -93,6 +93,7 @@ struct TransportSummary {
   SeriesSummary m2, m2_centroid;                ///< m̃2 about the site and about the centroid [bead²]
   SeriesSummary ipr, energy_error;              ///< over realizations, at the sample times
   SeriesSummary profile;                        ///< site energies E_n at T (empty if not asked for)
+  SeriesSummary mle;                            ///< X1(t) [1/s] (empty unless dynamics.lyapunov.enabled)
   std::optional<TransportExponents> exponents;  ///< with realization errors; absent when not fitted
   double max_energy_error = 0;                  ///< worst |H(t)−H0|/H0 of any realization
   std::size_t reached_walls = 0;                ///< realizations whose energy reached the walls
