@@ -125,6 +125,11 @@ int main(int argc, char** argv) {
                            {"count", selection.count ? nlohmann::json(*selection.count) : nlohmann::json(nullptr)},
                            {"window_khz",
                             selection.window ? nlohmann::json(*selection.window) : nlohmann::json(nullptr)}};
+    std::size_t solved = 0, clustered = 0;
+    for (const auto& cell : cells) solved += cell.solved_modes, clustered += cell.clustered_modes;
+    meta["clustered"] = {{"relative_gap", cluster_relative_gap},
+                         {"modes", clustered},
+                         {"fraction", solved > 0 ? static_cast<double>(clustered) / static_cast<double>(solved) : 0.0}};
     meta["output"] = output;
     meta.write(json_path, {&csv});
   });

@@ -8,6 +8,7 @@
 #include "common/chain_options.hpp"
 #include "common/dynamics_options.hpp"
 #include "common/metadata.hpp"
+#include "common/mode_kick_options.hpp"
 #include "common/output_paths.hpp"
 #include "common/tool_main.hpp"
 #include "granular/ensemble/checkpoint_log.hpp"
@@ -29,14 +30,17 @@ int main(int argc, char** argv) {
   tool::ChainOptions chain_options;
   chain_options.n = 2501;
   tool::DynamicsOptions dynamics;
+  tool::ModeKickOptions mode_kick;
   std::string ic = "displacement", output = "spreading", final_state, forces_at, energy_map, spectrum_file;
   std::string spectrum_of = "displacement";
   long long realizations = 1, force_samples = 1000, map_samples = 500, map_stride = 1, spectrum_samples = 2000;
   bool profile = false, quiet = false, resume = false;
   int threads = 0;
   tool::add_chain_options(app, chain_options);
-  app.add_option("--ic", ic, "initial condition: displacement | velocity")->capture_default_str();
+  app.add_option("--ic", ic, "initial condition: displacement | velocity | mode (a linear mode: --mode, --mode-khz)")
+      ->capture_default_str();
   tool::add_dynamics_options(app, dynamics);
+  tool::add_mode_kick_options(app, mode_kick);
   app.add_option("--realizations", realizations, "realizations to average (ensemble means and exponents)")
       ->capture_default_str();
   app.add_option("--threads", threads, "threads for the realizations (0 = all cores); results do not depend on it")
@@ -79,6 +83,7 @@ int main(int argc, char** argv) {
         TransportCase c;
         tool::apply(chain_options, selected.chain.size(), c);
         c.kick = parse_kick(ic);
+        tool::apply(mode_kick, c);
         c.realizations = static_cast<std::size_t>(realizations);
         c.profile_realizations = profile ? c.realizations : 0;
         SpreadingConfig& d = c.dynamics;
@@ -152,6 +157,7 @@ int main(int argc, char** argv) {
         meta["parameters"]["chain"] = selected.description;
         if (c.kick == Kick::velocity && (!ensemble || !c.match_beta))
           meta["parameters"]["beta_m_s"] = kicked.beta;  // the β used
+        if (c.kick == Kick::mode) meta["parameters"]["mode_used"] = to_json(kicked.mode);
         meta["seed"] = chain_options.seed;
         for (const char* key : {"gamma", "gamma_err", "gamma_real_err", "eta", "eta_err", "eta_real_err", "power_law"})
           meta[key] = nullptr;
@@ -178,5 +184,5 @@ int main(int argc, char** argv) {
         for (auto& f : files) f->commit();
         if (ensemble) CheckpointLog::remove_all(checkpoint);
       },
-      {{"spectrum_source", "--spectrum-of"}});
+      {{"spectrum_source", "--spectrum-of"}, {"near_khz", "--mode-khz"}, {"amplitude", "--alpha"}});
 }

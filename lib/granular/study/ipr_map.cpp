@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <span>
 #include <string>
 
 #include "granular/ensemble/parallel_realizations.hpp"
@@ -60,14 +61,16 @@ std::vector<IprMapCell> compute_partial_ipr_map(const IprMapConfig& c, const Run
           realizations, threads,
           [&](std::size_t r, int) { slots[r] = spectrum(matrix_of(c, types[r], xi), c.selection, c.spectrum); },
           run.progress);
-      IprMapCell cell{q, xi, {}, {}, {}, {}, {}, {}};
+      IprMapCell cell{q, xi, {}, {}, {}, {}, {}, {}, 0, 0};
       for (std::size_t r = 0; r < realizations; ++r)  // fixed order: thread-count independent
         for (std::size_t j = 0; j < slots[r].size(); ++j) {
           cell.freq_khz.push_back(slots[r].freq_khz[j]);
           cell.ipr.push_back(slots[r].ipr[j]);
           cell.mode.push_back(slots[r].mode[j]);
           cell.realization.push_back(r);
+          cell.clustered_modes += slots[r].clustered[j];
         }
+      cell.solved_modes = cell.ipr.size() * (c.selection.kind == ModeSelection::Kind::all ? realizations : 1);
       cells.push_back(std::move(cell));
     }
   }
@@ -115,7 +118,9 @@ std::vector<IprMapCell> compute_ipr_map(const IprMapConfig& c, const RunOptions&
         }
         if (run.progress) run.progress->advance(last - first);
       });
-      IprMapCell cell{q, xi, std::vector<double>(n, 0.0), std::vector<double>(n, 0.0), {}, {}, {}, {}};
+      IprMapCell cell{q, xi, std::vector<double>(n, 0.0), std::vector<double>(n, 0.0), {}, {}, {}, {}, 0, 0};
+      for (std::size_t r = 0; r < realizations; ++r)
+        for (std::uint8_t flag : cluster_flags(std::span(omega2).subspan(r * n, n))) cell.clustered_modes += flag;
       for (std::size_t r = 0; r < realizations; ++r)  // fixed order: thread-count independent
         for (std::size_t k = 0; k < n; ++k) {
           cell.freq_khz[k] += frequency_khz(omega2[r * n + k]);
@@ -142,6 +147,7 @@ std::vector<IprMapCell> compute_ipr_map(const IprMapConfig& c, const RunOptions&
           cell.bin_ipr[b] = cell.bin_modes[b] > 0 ? cell.bin_ipr[b] / static_cast<double>(cell.bin_modes[b])
                                                   : std::numeric_limits<double>::quiet_NaN();
       }
+      cell.solved_modes = cell.ipr.size() * (c.selection.kind == ModeSelection::Kind::all ? realizations : 1);
       cells.push_back(std::move(cell));
     }
   }

@@ -50,6 +50,10 @@ struct IprMapCell {
   /// the modes of all realizations in it, bin_ipr[b] is their mean IPR (NaN when bin_modes = 0).
   std::vector<std::size_t> bin_modes;
   std::vector<double> bin_ipr;
+  /// Modes solved in this cell (all realizations) and how many of them lie in a near-degenerate
+  /// cluster (Spectrum::clustered: relative gap < cluster_relative_gap), whose IPR depends on the
+  /// basis the solver chose inside the cluster.
+  std::size_t solved_modes = 0, clustered_modes = 0;
 };
 
 /// Throws InvalidInput (naming the field) on a bad config, before any work starts.

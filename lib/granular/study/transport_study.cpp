@@ -16,10 +16,22 @@ namespace granular {
 Kick parse_kick(const std::string& name) {
   if (name == "displacement") return Kick::displacement;
   if (name == "velocity") return Kick::velocity;
-  throw InvalidInput("ic", " '" + name + "': expected displacement or velocity");
+  if (name == "mode") return Kick::mode;
+  throw InvalidInput("ic", " '" + name + "': expected displacement, velocity or mode");
 }
 
-std::string to_string(Kick kick) { return kick == Kick::displacement ? "displacement" : "velocity"; }
+std::string to_string(Kick kick) {
+  return kick == Kick::displacement ? "displacement" : kick == Kick::velocity ? "velocity" : "mode";
+}
+
+namespace {
+/// The mode kick of a case: its amplitude is α unless an energy is given.
+ModeKick mode_of(const TransportCase& c) {
+  ModeKick m = c.mode;
+  if (m.energy == 0) m.amplitude = c.alpha;
+  return m;
+}
+}  // namespace
 
 void validate(const TransportCase& c) {
   validate_probability(c.q);
@@ -42,7 +54,8 @@ void validate(const TransportCase& c) {
   if (!(c.criterion.t_start >= 0) || !std::isfinite(c.criterion.t_start))
     throw InvalidInput("t_star", " " + format_number(c.criterion.t_start) + " s: must be finite and >= 0");
   if (c.fit && c.bootstrap.resamples < 2) throw InvalidInput("bootstrap", ": need at least 2 resamples");
-  const bool uses_alpha = c.kick == Kick::displacement || c.match_beta;
+  if (c.kick == Kick::mode) validate(mode_of(c), c.n);
+  const bool uses_alpha = c.kick == Kick::displacement || c.match_beta || (c.kick == Kick::mode && c.mode.energy == 0);
   if (uses_alpha && (!std::isfinite(c.alpha) || c.alpha == 0))
     throw InvalidInput("alpha", " " + format_number(c.alpha) + ": must be finite and non-zero [m]");
   if (c.kick == Kick::velocity && !c.match_beta && (!std::isfinite(c.beta) || c.beta == 0))
@@ -72,18 +85,23 @@ SpreadingConfig spreading_config(const TransportCase& c) {
 }
 
 KickedChain kick(const TransportCase& c, const Chain& chain) {
-  if (c.kick == Kick::displacement) return {displacement_kick(chain, c.site, c.alpha), 0.0};
+  if (c.kick == Kick::displacement) return {displacement_kick(chain, c.site, c.alpha), 0.0, {}};
+  if (c.kick == Kick::mode) {
+    ModeKickResult mode = mode_kick(chain, c.dynamics.force_law, mode_of(c));
+    State initial = mode.initial;
+    return {std::move(initial), 0.0, std::move(mode)};
+  }
   const double beta =
       c.match_beta ? matched_velocity(make_force_law(c.dynamics.force_law, chain), chain, c.site, c.alpha) : c.beta;
-  return {velocity_kick(chain, c.site, beta), beta};
+  return {velocity_kick(chain, c.site, beta), beta, {}};
 }
 
 nlohmann::json describe(const TransportCase& c) {
   const SpreadingConfig& d = c.dynamics;
-  const bool uses_alpha = c.kick == Kick::displacement || c.match_beta;
+  const bool uses_alpha = c.kick == Kick::displacement || c.match_beta || (c.kick == Kick::mode && c.mode.energy == 0);
   nlohmann::json beta = nullptr;  // the values used: α only where the kick uses it, β only for a velocity kick
   if (c.kick == Kick::velocity) beta = c.match_beta ? nlohmann::json("match") : nlohmann::json(c.beta);
-  return {{"disorder", to_string(c.disorder)},
+  nlohmann::json described = {{"disorder", to_string(c.disorder)},
           {"q", c.q},
           {"xi", c.xi},
           {"N", c.n},
@@ -115,6 +133,11 @@ nlohmann::json describe(const TransportCase& c) {
           {"profile_realizations", std::min(c.profile_realizations, c.realizations)},
           {"material", {{"E_Pa", steel.young}, {"nu", steel.poisson}, {"rho_kg_m3", steel.density}}},
           {"walls", "flat, same material as the beads"}};
+  if (c.kick == Kick::mode)  // only then: every other case keeps its identity (and its checkpoints)
+    described["mode_kick"] = {{"mode", c.mode.mode == 0 ? nlohmann::json(nullptr) : nlohmann::json(c.mode.mode)},
+                              {"near_khz", c.mode.near_khz < 0 ? nlohmann::json(nullptr) : nlohmann::json(c.mode.near_khz)},
+                              {"energy_J", c.mode.energy == 0 ? nlohmann::json(nullptr) : nlohmann::json(c.mode.energy)}};
+  return described;
 }
 
 TransportExponents transport_exponents(const TransportCase& c, const std::vector<double>& t,
