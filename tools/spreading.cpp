@@ -82,6 +82,7 @@ int main(int argc, char** argv) {
         const tool::SelectedChain selected = tool::build_chain(chain_options);
         TransportCase c;
         tool::apply(chain_options, selected.chain.size(), c);
+        c.beads = selected.beads;
         c.kick = parse_kick(ic);
         tool::apply(mode_kick, c);
         c.realizations = static_cast<std::size_t>(realizations);

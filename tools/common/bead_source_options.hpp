@@ -32,11 +32,20 @@ inline StreamedChain build_bead_source(const ChainOptions& o) {
   d["F0_N"] = o.f0;
   d["material"] = {{"E_Pa", steel.young}, {"nu", steel.poisson}, {"rho_kg_m3", steel.density}};
   d["walls"] = "flat, same material as the beads";
-  if (!o.radii.empty()) {
+  if (const auto beads = bead_distribution(o)) {  // stored: memory O(N) (random access needs the chain)
+    if (o.n > 100000000) throw InvalidInput("N", " " + std::to_string(o.n) + ": --types/--polydisperse store the chain (<= 1e8)");
+    validate(p);
+    s.source = chain_beads(from_radii(realization_radii(*beads, p.N, p.seed, p.realization), o.f0));
+    d["beads"] = describe(*beads);
+    d["seed"] = o.seed;
+    d["realization"] = o.realization;
+  } else if (!o.radii.empty()) {
     if (!(o.f0 > 0) || !std::isfinite(o.f0))
       throw InvalidInput("F0",
                          " " + format_number(o.f0) + ": must be finite and > 0 (the sonic vacuum has no linear limit)");
-    s.source = chain_beads(from_radii(read_radii_file(o.radii), o.f0));
+    std::vector<std::string> warnings;
+    s.source = chain_beads(from_radii(read_radii_file(o.radii, &warnings), o.f0));
+    for (const auto& w : warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
     d["radii_file"] = o.radii;
   } else {
     d["R1_m"] = o.r1;

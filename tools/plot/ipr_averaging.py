@@ -59,7 +59,7 @@ def main(argv=None):
     if a.gap:
         g1, g2 = (float(x) for x in a.gap.split(","))
         for ax in (top, bottom):
-            ax.axvspan(g1, g2, color="0.85", zorder=0, label="band gap (fb1, fb2)" if ax is top else None)
+            ax.axvspan(g1, g2, color="0.85", zorder=0, label="gap (fb1, fb2) of the diatomic chain" if ax is top else None)
     top.set_ylabel("IPR")
     top.set_title(f"{disorder}, q = {a.q:g}, ξ = {a.xi:g}: the two averagings of ipr-map")
     top.legend(fontsize=8, loc="upper left")

@@ -55,6 +55,7 @@ void validate(const TransportCase& c) {
     throw InvalidInput("t_star", " " + format_number(c.criterion.t_start) + " s: must be finite and >= 0");
   if (c.fit && c.bootstrap.resamples < 2) throw InvalidInput("bootstrap", ": need at least 2 resamples");
   if (c.kick == Kick::mode) validate(mode_of(c), c.n);
+  if (c.beads) validate(*c.beads);
   const bool uses_alpha = c.kick == Kick::displacement || c.match_beta || (c.kick == Kick::mode && c.mode.energy == 0);
   if (uses_alpha && (!std::isfinite(c.alpha) || c.alpha == 0))
     throw InvalidInput("alpha", " " + format_number(c.alpha) + ": must be finite and non-zero [m]");
@@ -133,6 +134,7 @@ nlohmann::json describe(const TransportCase& c) {
           {"profile_realizations", std::min(c.profile_realizations, c.realizations)},
           {"material", {{"E_Pa", steel.young}, {"nu", steel.poisson}, {"rho_kg_m3", steel.density}}},
           {"walls", "flat, same material as the beads"}};
+  if (c.beads) described["beads"] = describe(*c.beads);  // only then, as below
   if (c.kick == Kick::mode)  // only then: every other case keeps its identity (and its checkpoints)
     described["mode_kick"] = {{"mode", c.mode.mode == 0 ? nlohmann::json(nullptr) : nlohmann::json(c.mode.mode)},
                               {"near_khz", c.mode.near_khz < 0 ? nlohmann::json(nullptr) : nlohmann::json(c.mode.near_khz)},
@@ -234,8 +236,10 @@ struct RealizationRecord {
 };
 
 std::vector<double> realization_row(const TransportCase& c, std::uint64_t r) {
-  const Configuration types = realization_configuration(c.disorder, c.q, c.n, c.seed, r);
-  const Chain chain = make_chain(radii_of(types, c.r1, c.xi), c.precompression);
+  const Chain chain =
+      make_chain(c.beads ? realization_radii(*c.beads, c.n, c.seed, r)
+                         : radii_of(realization_configuration(c.disorder, c.q, c.n, c.seed, r), c.r1, c.xi),
+                 c.precompression);
   SpreadingConfig config = spreading_config(c);
   config.force_sites.clear();
   config.map_samples = 0;

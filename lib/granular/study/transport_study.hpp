@@ -23,6 +23,7 @@
 #include "granular/dynamics/observables.hpp"
 #include "granular/dynamics/spreading.hpp"
 #include "granular/ensemble/run_options.hpp"
+#include "granular/model/bead_distribution.hpp"
 #include "granular/model/disorder.hpp"
 #include "granular/model/material.hpp"
 #include "granular/study/mode_kick.hpp"
@@ -44,6 +45,9 @@ struct TransportCase {
   std::size_t n = 2501;
   double precompression = 10;  ///< F0 [N]
   double r1 = 4.76e-3;         ///< type-1 radius [m]
+  /// When set, realization r draws its radii from this (k types or polydisperse) instead of
+  /// disorder/q/ξ/r1.
+  std::optional<BeadDistribution> beads;
   Kick kick = Kick::displacement;
   double alpha = 1e-7;                       ///< displacement kick [m]
   double beta = paper_beta;                  ///< velocity kick [m/s]
