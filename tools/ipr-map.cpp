@@ -1,7 +1,9 @@
 // ipr-map: mean frequency and inverse participation ratio of every mode of disordered
 // chains, over a grid of size ratios ξ and probabilities q (the paper's IPR-map figure).
+#include <limits>
 #include <string>
 
+#include "common/chain_options.hpp"
 #include "common/metadata.hpp"
 #include "common/spectrum_options.hpp"
 #include "common/tool_main.hpp"
@@ -49,6 +51,8 @@ int main(int argc, char** argv) {
   app.add_option("--bin-khz", config.bin_khz,
                  "average in frequency bins of this width [kHz] instead of by mode number: "
                  "columns disorder,q,xi,freq_lo_khz,freq_hi_khz,modes,ipr (empty bins: modes 0, ipr nan)");
+  tool::ChainOptions beads;  // --types/--type-masses/--polydisperse (with --disorder as their rule)
+  tool::add_bead_distribution_options(app, beads);
   app.add_flag("--quiet", quiet, "no progress line on stderr");
 
   return tool::run(app, argc, argv, [&] {
@@ -70,6 +74,9 @@ int main(int argc, char** argv) {
     } else if (app.count("--method") > 0) {
       throw InvalidInput("--method", ": only with --near/--count or --window (the full map uses --solver)");
     }
+    beads.disorder = disorder;
+    if ((config.beads = tool::bead_distribution(beads)))
+      config.q_values = config.xi_values = {std::numeric_limits<double>::quiet_NaN()};  // one cell
     validate(config);
     check_writable(output);
     const std::string json_path = tool::json_path_for(output);
@@ -82,7 +89,9 @@ int main(int argc, char** argv) {
     progress.finish();
 
     AtomicFile csv(output);
-    const std::string name = to_string(config.disorder);
+    const std::string name = !config.beads                                            ? to_string(config.disorder)
+                             : config.beads->kind == BeadDistribution::Kind::types ? "types"
+                                                                                   : "polydisperse";
     if (selection.given()) {  // modes differ between chains: one row per mode of each realization
       CsvWriter table(csv.stream(), {"disorder", "q", "xi", "realization", "mode", "freq_khz", "ipr"});
       for (const auto& cell : cells)
@@ -115,6 +124,7 @@ int main(int argc, char** argv) {
         {"seed", config.seed},
         {"threads", resolve_threads(run.threads)},
         {"solver", solver}};
+    if (config.beads) meta["parameters"]["beads"] = describe(*config.beads);
     if (!selection.given()) {
       meta["averaging"] = config.bin_khz > 0 ? "frequency-bin" : "mode";
       if (config.bin_khz > 0) meta["bin_khz"] = config.bin_khz;

@@ -26,6 +26,23 @@ struct ChainOptions {
   std::string config, radii, types, type_masses, polydisperse;
 };
 
+/// --types, --type-masses, --polydisperse (mutually exclusive); returns them for more exclusions.
+inline std::vector<CLI::Option*> add_bead_distribution_options(CLI::App& app, ChainOptions& o) {
+  auto* types = app.add_option("--types", o.types,
+                                "k bead types 'R1:P1,R2:P2,...' (radius [m]: probability) drawn by --disorder A (each "
+                                "bead), RDM1 (each dimer) or RDM2 (two types); overrides --q/--xi/--R1");
+  auto* masses = app.add_option("--type-masses", o.type_masses,
+                                "as --types with masses [kg] of steel spheres: 'M1:P1,M2:P2,...'");
+  auto* poly = app.add_option("--polydisperse", o.polydisperse,
+                              "radii drawn per bead and realization: uniform:LO:HI or normal:MEAN:SD:MIN (truncated "
+                              "below at MIN) [m]");
+  const std::vector<CLI::Option*> all{types, masses, poly};
+  for (auto* a : all)
+    for (auto* b : all)
+      if (a != b) a->excludes(b);
+  return all;
+}
+
 inline void add_chain_options(CLI::App& app, ChainOptions& o) {
   app.add_option("--disorder", o.disorder, "h | A | RDM1 | RDM2 (homogeneous, Anderson, random dimer 1/2)")
       ->capture_default_str();
@@ -42,17 +59,8 @@ inline void add_chain_options(CLI::App& app, ChainOptions& o) {
                      "file with one bead type (1 or 2) per line, '#' comments; overrides --disorder/--q/--N");
   auto* radii = app.add_option("--radii", o.radii,
                                "file with one radius [m] per line, '#' comments; overrides --disorder/--q/--N/--xi");
-  auto* types = app.add_option("--types", o.types,
-                                "k bead types 'R1:P1,R2:P2,...' (radius [m]: probability) drawn by --disorder A (each "
-                                "bead), RDM1 (each dimer) or RDM2 (two types); overrides --q/--xi/--R1");
-  auto* masses = app.add_option("--type-masses", o.type_masses,
-                                "as --types with masses [kg] of steel spheres: 'M1:P1,M2:P2,...'");
-  auto* poly = app.add_option("--polydisperse", o.polydisperse,
-                              "radii drawn per bead and realization: uniform:LO:HI or normal:MEAN:SD:MIN (truncated "
-                              "below at MIN) [m]");
-  for (auto* a : {config, radii, types, masses, poly})
-    for (auto* b : {config, radii, types, masses, poly})
-      if (a != b) a->excludes(b);
+  for (auto* a : add_bead_distribution_options(app, o))
+    for (auto* b : {config, radii}) a->excludes(b), b->excludes(a);
 }
 
 /// The distribution of --types / --type-masses / --polydisperse, if one is given (rule: --disorder).

@@ -4,10 +4,12 @@
 // Realization r of a cell uses the bead types of realization r of the seed, so all ξ of one q
 // share their configurations (common random numbers).
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "granular/ensemble/run_options.hpp"
 #include "granular/linear/spectrum.hpp"
+#include "granular/model/bead_distribution.hpp"
 #include "granular/model/disorder.hpp"
 #include "granular/model/material.hpp"
 
@@ -35,6 +37,9 @@ struct IprMapConfig {
   /// of the cell's realizations: the ensemble's IPR as a function of f, which is what a reader
   /// plotting against frequency wants (mode-number means put points inside band gaps).
   double bin_khz = 0;
+  /// When set, realization r draws its radii from this (k types or polydisperse; seed `seed`)
+  /// instead of disorder/q/ξ/r1: one cell, whose q and xi are NaN.
+  std::optional<BeadDistribution> beads;
 };
 
 struct IprMapCell {
