@@ -59,6 +59,7 @@ inline void add_chain_options(CLI::App& app, ChainOptions& o) {
                      "file with one bead type (1 or 2) per line, '#' comments; overrides --disorder/--q/--N");
   auto* radii = app.add_option("--radii", o.radii,
                                "file with one radius [m] per line, '#' comments; overrides --disorder/--q/--N/--xi");
+  config->excludes(radii);
   for (auto* a : add_bead_distribution_options(app, o))
     for (auto* b : {config, radii}) a->excludes(b), b->excludes(a);
 }
