@@ -15,7 +15,7 @@ import granular as gr  # noqa: E402
 import granular.plot as gp  # noqa: E402
 from conftest import BUILD, SOURCE  # noqa: E402
 
-DIMENSIONLESS = ("IPR", "P^{-1}", "rho", "L_d", "mode number", "bead", "g(", "log_{10}", "error", "distance", "size ratio")
+DIMENSIONLESS = ("IPR", "P^{-1}", "rho", "L_d", "mode number", "bead", "g(", "log_{10}", "error", "distance", "size ratio", "exponent")
 
 
 def check_axes(fig):
@@ -83,6 +83,28 @@ def test_dynamics_figures_from_results(run):
     assert low > 1e-30 and high / low == pytest.approx(3e15)  # no floor at 1e-30: 15 decades below the top
     with pytest.raises(ValueError, match="no 'displacement' kick"):
         gp.exponents(table, "displacement")
+    centres = gp.centres(table, "A")
+    check_axes(centres)
+    assert len(centres.axes[0].get_lines()) == 2  # m2 about the site and about the centroid
+    with pytest.raises(ValueError, match="no chain 'RDM2'"):
+        gp.centres(table, "RDM2")
+    with pytest.raises(ValueError, match="compare_paper"):
+        gp.paper_comparison(table)
+    velocity = gr.spreading(gr.anderson(N=301, F0=10), T=2e-3, fit=(5e-4, 2e-3), spectral_density=True,
+                            spectrum_samples=200, spectrum_of="velocity")
+    check_axes(gp.spectral_densities([(run.spectral_density, velocity.spectral_density)], ["A, F0 = 10 N"]))
+    with pytest.raises(ValueError, match="pairs"):
+        gp.spectral_densities([(run.spectral_density,)])
+
+
+def test_paper_comparison_figure():
+    table = gr.exponent_table(chains=["h", "A"], F0=[10], ic=["displacement"], N=151, realizations=2, T=1e-3,
+                              fit=(2e-4, 1e-3), samples=60, profile_F0=[], compare_paper=True)
+    fig = gp.paper_comparison(table)
+    check_axes(fig)
+    ax = fig.axes[0]
+    assert [t.get_text() for t in ax.get_xticklabels()] == ["h\n10 N", "A\n10 N"]
+    assert ax.containers[0].lines[0].get_ydata()[0] == pytest.approx(2.0)  # the paper's h cell: gamma = 2
 
 
 def cli(*args, cwd):
@@ -105,12 +127,13 @@ def test_command_line_figures_from_the_tools_files(tools):
     tools.run("localization", "--N", "2000", "--f", "0:40:1", "--quiet", output="loc")
     runs = [("localization", "loc.csv", "--spectrum", "spectrum.csv"), ("ipr-map", "ipr-map.csv"), ("spectrum", "spectrum.csv"), ("correlations", "correlations.csv"),
             ("map", "map.h5", "g.csv", "--t-window", "0:5e-4", "--sites", "50:150"),
-            ("forces", "one-forces.csv", "one-profile.csv"), ("spread", "one.csv"), ("exponents", "exp", "--profiles")]
+            ("forces", "one-forces.csv", "one-profile.csv"), ("spread", "one.csv"), ("exponents", "exp", "--profiles"),
+            ("centres", "exp"), ("spectra", "g.csv", "g.csv", "--titles", "one", "-o", "spectra.png")]
     for args in runs:
         done = cli("-m", "granular.plot", *args, cwd=folder)
         assert done.returncode == 0, (args, done.stderr)
     for png in ("loc.png", "ipr-map.png", "spectrum.png", "correlations.png", "map.png", "one-forces.png", "one.png",
-                "exp-spreading-displacement.png", "exp-profiles.png"):
+                "exp-spreading-displacement.png", "exp-profiles.png", "exp-centres.png", "spectra.png"):
         assert (folder / png).stat().st_size > 10000, png
     bad = cli("-m", "granular.plot", "spectrum", "missing.csv", cwd=folder)
     assert bad.returncode == 2 and "missing.csv" in bad.stderr and "Traceback" not in bad.stderr
@@ -126,7 +149,8 @@ def test_the_readme_main_job_figure_command_keeps_working(tools):
                           capture_output=True, text=True, cwd=tools.folder, env=env)
     assert done.returncode == 0, done.stderr
     assert (tools.folder / "ipr-map.png").stat().st_size > 10000
-    for script in ("ipr_map.py", "spectrum.py", "correlations.py", "partial_spectrum_ipr.py", "localization.py"):
+    for script in ("ipr_map.py", "spectrum.py", "correlations.py", "partial_spectrum_ipr.py", "localization.py",
+                   "exponents.py", "spreading_figures.py"):
         helped = subprocess.run([sys.executable, SOURCE / "tools" / "plot" / script, "--help"], capture_output=True,
                                 text=True, env=env)
         assert helped.returncode == 0 and "usage" in helped.stdout and not helped.stderr, script
@@ -152,3 +176,17 @@ def test_figures_need_no_compiled_core_for_files(tools):
     done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=tools.folder, env=env)
     assert done.returncode == 0, done.stderr
     assert np.isfinite((tools.folder / "s.png").stat().st_size)
+
+
+def test_exponents_script_draws_every_figure_of_a_compare_paper_run(tools):
+    tools.run("exponents", "--chains", "h,A", "--F0", "10", "--ic", "displacement", "--N", "151", "--T", "1e-3",
+              "--fit", "2e-4:1e-3", "--realizations", "2", "--samples", "50", "--profile-F0", "10", "--compare-paper",
+              "--quiet", output="exp")
+    done = subprocess.run([sys.executable, SOURCE / "tools" / "plot" / "exponents.py", "exp"], capture_output=True,
+                          text=True, cwd=tools.folder)
+    assert done.returncode == 0, done.stderr
+    for png in ("exp-spreading-displacement.png", "exp-profiles.png", "exp-centres.png", "exp-paper.png"):
+        assert (tools.folder / png).stat().st_size > 10000, png
+    bad = subprocess.run([sys.executable, SOURCE / "tools" / "plot" / "spreading_figures.py", "nonsense"],
+                         capture_output=True, text=True, cwd=tools.folder)
+    assert bad.returncode == 2 and "unknown figure" in bad.stderr and "Traceback" not in bad.stderr

@@ -17,7 +17,10 @@ From a shell, ``python3 -m granular.plot <kind> FILE... [-o out.png]`` draws the
     forces(run_or_csv, profile)                force versus t at chosen beads, force profile at T
     spreading(runs_or_csvs)                    m2(t) and P^-1(t), log-log, with L_d insets
     exponents(table_or_prefix, kick)           the paper's transport panels per chain kind and F0
+    centres(table_or_prefix, chain)            m2 about the kicked site beside m2 about the centroid
+    paper_comparison(table_or_prefix)          our gamma (both centres) beside the paper's Table I
     profiles(table_or_prefix)                  averaged energy profiles E_n(T)
+    spectral_densities(pairs, titles)          g(nu) of the displacements beside that of the velocities
     cost(benchmark_json)                       integrators' cost-accuracy curves
 """
 import math
@@ -31,7 +34,7 @@ from . import _io
 from ._style import EDGE_LABELS, chain_title, figure, guides, log_derivative, log_ticks, mark_edges, style
 
 __all__ = ["ipr_map", "spectrum", "correlations", "partial_spectrum_ipr", "localization", "energy_map", "forces", "spreading",
-           "exponents", "profiles", "cost"]
+           "exponents", "centres", "paper_comparison", "profiles", "spectral_densities", "cost"]
 
 
 # --- the linear spectrum -----------------------------------------------------------------------
@@ -460,8 +463,9 @@ def _exponent_data(source):
         groups = {}
         for i in range(len(curves["t"])):
             key = (curves["ic"][i], float(curves["F0"][i]), curves["disorder"][i])
-            g = groups.setdefault(key, {"t": [], "m2": [], "ipr": []})
-            for k in ("t", "m2", "ipr"):
+            names = ("t", "m2", "m2_centroid", "ipr") if "m2_centroid" in curves else ("t", "m2", "ipr")
+            g = groups.setdefault(key, {k: [] for k in names})
+            for k in names:
                 g[k].append(curves[k][i])
         prof = {}
         if profiles is not None:
@@ -556,6 +560,139 @@ def profiles(source, decades=15):
                     ax.set_xlabel("bead n")
             axes[i][0].set_ylabel(r"$\langle E_n(T)\rangle$ [J]")
         axes[0][0].legend(fontsize=8)
+    return fig
+
+
+def _table_columns(source, suffix, key):
+    """Columns of PREFIX<suffix>.csv (a path prefix) or of result[key] (an ExponentTable)."""
+    if _io.is_path(source):
+        path = os.fspath(source) + suffix
+        if not os.path.exists(path):
+            raise ValueError(f"{path}: not found" + (" (run exponents with --compare-paper)" if key == "paper" else ""))
+        return _io.read_csv(path)
+    if key not in source:
+        raise ValueError(f"no {key!r} in these results" + (" (pass compare_paper=True)" if key == "paper" else ""))
+    return source[key]
+
+
+def _truthy(value):
+    return value is True or value == "true" or (not isinstance(value, str) and bool(value))
+
+
+def centres(source, chain="A"):
+    """m~2(t) about the kicked site and about the energy centroid, side by side, for one chain kind,
+    every kick (rows) and F0 (columns), with both fitted gamma: where the two definitions part
+    (the paper writes its kick at n_c, the site; its F0 = 0.01-0.1 N values sit between the two).
+    source: a granular.ExponentTable or the exponents tool's prefix."""
+    groups, _, _, _ = _exponent_data(source)
+    table = _table_columns(source, ".csv", "table")
+    keys = [k for k in groups if k[2] == chain]
+    if not keys:
+        raise ValueError(f"no chain {chain!r} in these results (chains: {sorted({k[2] for k in groups})})")
+    if "m2_centroid" not in groups[keys[0]]:
+        raise ValueError("these results carry no m2 about the centroid")
+    kicks = list(dict.fromkeys(k[0] for k in keys))
+    f0s = list(dict.fromkeys(k[1] for k in keys))
+    gamma = {}
+    for i in range(len(table["gamma"])):
+        if table["disorder"][i] == chain:
+            site_first = table["centre"][i] == "site"
+            pair = (table["gamma"][i], table["gamma_other"][i])
+            gamma[(table["ic"][i], float(table["F0"][i]))] = pair if site_first else pair[::-1]
+    fit = (4e-3, 10e-3)
+    with style():
+        fig = figure(3.0 * len(f0s) + 0.6, 2.9 * len(kicks) + 0.5)
+        axes = fig.subplots(len(kicks), len(f0s), squeeze=False, sharex=True)
+        for i, kick in enumerate(kicks):
+            for j, f0 in enumerate(f0s):
+                ax = axes[i][j]
+                g = groups.get((kick, f0, chain))
+                if g is None:
+                    ax.set_visible(False)
+                    continue
+                t, site, centroid = (np.asarray(g[x], float) for x in ("t", "m2", "m2_centroid"))
+                keep = t > 0
+                ax.axvspan(*fit, color="0.92", zorder=0)
+                ax.loglog(t[keep], site[keep], color="C0", label="about the kicked site")
+                ax.loglog(t[keep], centroid[keep], "--", color="C3", label="about the centroid")
+                if (kick, f0) in gamma:
+                    gs, gc = gamma[(kick, f0)]
+                    ax.text(0.04, 0.96, f"$\\gamma$: site {gs:.3f}\ncentroid {gc:.3f}", transform=ax.transAxes,
+                            fontsize=8, va="top")
+                ax.set_title(f"{kick}, $F_0$ = {f0:g} N", fontsize=10)
+                log_ticks(ax.xaxis)
+                log_ticks(ax.yaxis)
+                if i == len(kicks) - 1:
+                    ax.set_xlabel("time t [s]")
+            axes[i][0].set_ylabel(rf"{chain}: $\tilde m_2$ [beads$^2$]")
+        axes[0][0].legend(fontsize=7, loc="lower right")
+        fig.suptitle(f"{chain}: second moment about the kicked site and about the energy centroid "
+                     "(shaded: the fit window)", fontsize=11)
+    return fig
+
+
+def paper_comparison(source):
+    """Our gamma about both centres beside the paper's Table I, one panel per kick; error bars are
+    the sub-window spread and the realization bootstrap combined; * marks starred cells (the mean
+    of L_d over the window, not a fitted slope). source: a granular.ExponentTable computed with
+    compare_paper=True, the exponents prefix of a --compare-paper run, or its PREFIX-paper.csv."""
+    if _io.is_path(source) and os.fspath(source).endswith(".csv"):
+        rows = _io.read_csv(source)
+    else:
+        rows = _table_columns(source, "-paper.csv", "paper")
+    kicks = list(dict.fromkeys(rows["ic"]))
+    with style():
+        fig = figure(12, 3.6 * len(kicks) + 0.4)
+        axes = fig.subplots(len(kicks), 1, squeeze=False)[:, 0]
+        for ax, kick in zip(axes, kicks):
+            pick = [i for i, ic in enumerate(rows["ic"]) if ic == kick]
+            x = np.arange(len(pick))
+            ax.errorbar(x, [rows["paper_gamma"][i] for i in pick], yerr=[rows["paper_err"][i] for i in pick], fmt="ks",
+                        ms=4, capsize=2, label="paper (Table I)")
+            for centre, colour, dx in (("site", "C0", -0.2), ("centroid", "C3", 0.2)):
+                value = np.array([rows[f"{centre}_gamma"][i] for i in pick], float)
+                error = np.hypot([rows[f"{centre}_err"][i] for i in pick], [rows[f"{centre}_real_err"][i] for i in pick])
+                ax.errorbar(x + dx, value, yerr=error, fmt="o", color=colour, ms=3.5, capsize=2,
+                            label=rf"ours, $\tilde m_2$ about the {centre}")
+                for k, i in enumerate(pick):
+                    if _truthy(rows[f"{centre}_star"][i]):
+                        ax.annotate("*", (x[k] + dx, value[k]), fontsize=10, color=colour, ha="center", va="bottom")
+            ax.set_xticks(x)
+            ax.set_xticklabels([f"{rows['disorder'][i]}\n{rows['F0'][i]:g} N" for i in pick], fontsize=8)
+            ax.set_ylabel(r"exponent $\gamma$ ($\tilde m_2 \sim t^\gamma$)")
+            ax.set_title(f"{kick} kick (error bars: sub-window spread and realization bootstrap combined; "
+                         "* = mean $L_d$ on [4, 10] ms)", fontsize=10)
+            ax.grid(axis="y", lw=0.3)
+        axes[0].legend(fontsize=8, ncol=3)
+    return fig
+
+
+def spectral_densities(pairs, titles=None, fmax_khz=60):
+    """g(nu) of the displacements (the paper's g) beside that of the velocities, one panel per
+    run. A velocity kick leaves a permanent step in u_n(t), whose power ~ 1/nu^2 makes the
+    displacement spectrum peak at 0 Hz; the velocity spectrum is flat under it and shows what
+    vibrates. pairs: [(displacement, velocity), ...], each a SpreadingRun's spectral density
+    (dict with freq_khz, g) or the CSV of spreading --spectrum / --spectrum-of velocity.
+    fmax_khz: highest frequency shown [kHz]."""
+    pairs = [tuple(p) for p in pairs]
+    if not pairs or any(len(p) != 2 for p in pairs):
+        raise ValueError("pairs: give (displacement spectrum, velocity spectrum) pairs")
+    titles = list(titles) if titles else [os.fspath(u) if _io.is_path(u) else f"run {i + 1}" for i, (u, _) in
+                                          enumerate(pairs)]
+    with style():
+        fig = figure(5.2 * len(pairs) + 0.4, 4.2)
+        axes = fig.subplots(1, len(pairs), squeeze=False)[0]
+        for ax, (u, v), title in zip(axes, pairs, titles):
+            for source, label, colour in ((u, "of $u_n$ (the paper's $g$)", "C0"), (v, r"of $\dot u_n$", "C1")):
+                d = _io.read_csv(source) if _io.is_path(source) else source
+                ax.semilogy(d["freq_khz"], np.maximum(np.asarray(d["g"], float), 1e-14), lw=0.7, color=colour,
+                            label=label)
+            ax.set_xlim(0, fmax_khz)
+            ax.set_ylim(1e-8, 2)
+            ax.set_xlabel(r"frequency $\nu$ [kHz]")
+            ax.set_ylabel(r"$g(\nu)$ (max 1)")
+            ax.set_title(title, fontsize=10)
+            ax.legend(fontsize=8)
     return fig
 
 

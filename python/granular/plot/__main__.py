@@ -64,9 +64,20 @@ def parser(prog=None):
     q.add_argument("prefix", nargs="?", default="exponents", help="the exponents --output prefix (default exponents)")
     q.add_argument("--kick", action="append", help="displacement and/or velocity (default: every kick in the run)")
     q.add_argument("--profiles", action="store_true", help="also draw PREFIX-profiles.png")
+    q.add_argument("--all", action="store_true",
+                   help="also PREFIX-profiles.png, PREFIX-centres.png and (after --compare-paper) PREFIX-paper.png")
+    q = kind("centres", "m2 about the kicked site beside m2 about the centroid for one chain kind, from an exponents run")
+    q.add_argument("prefix", nargs="?", default="exponents")
+    q.add_argument("--chain", default="A", help="chain kind: h, A, RDM1 or RDM2 (default A)")
+    q = kind("paper", "our gamma (both centres) beside the paper's Table I, from exponents --compare-paper")
+    q.add_argument("prefix", nargs="?", default="exponents", help="the exponents prefix, or its PREFIX-paper.csv")
     q = kind("profiles", "averaged energy profiles E_n(T), from an exponents run")
     q.add_argument("prefix", nargs="?", default="exponents")
     q.add_argument("--decades", type=float, default=15, help="decades shown below the largest energy")
+    q = kind("spectra", "g(nu) of the displacements beside that of the velocities, from pairs of spreading --spectrum CSVs")
+    q.add_argument("csv", nargs="+", help="pairs: displacement spectrum CSV, velocity spectrum CSV (--spectrum-of velocity)")
+    q.add_argument("--titles", help="semicolon list, one per pair")
+    q.add_argument("--fmax", type=float, default=60, help="highest frequency shown [kHz] (default 60)")
     q = kind("cost", "integrators' cost-accuracy curves, from dynamics_benchmark --benchmark_out JSON")
     q.add_argument("bench")
     return p
@@ -112,8 +123,24 @@ def main(argv=None, prog=None):
             for kick in kicks:
                 out = args.output if args.output and len(kicks) == 1 else f"{args.prefix}-spreading-{kick}.png"
                 save(plot.exponents(args.prefix, kick), out)
-            if args.profiles:
+            if args.profiles or args.all:
                 save(plot.profiles(args.prefix), f"{args.prefix}-profiles.png")
+            if args.all:
+                save(plot.centres(args.prefix), f"{args.prefix}-centres.png")
+                if os.path.exists(args.prefix + "-paper.csv"):
+                    save(plot.paper_comparison(args.prefix), f"{args.prefix}-paper.png")
+        elif args.kind == "centres":
+            save(plot.centres(args.prefix, chain=args.chain), args.output or f"{args.prefix}-centres.png")
+        elif args.kind == "paper":
+            out = args.output or (_default_output(args.prefix) if args.prefix.endswith(".csv")
+                                  else f"{args.prefix}-paper.png")
+            save(plot.paper_comparison(args.prefix), out)
+        elif args.kind == "spectra":
+            if len(args.csv) % 2:
+                raise ValueError("spectra: give pairs of files: displacement spectrum, velocity spectrum")
+            pairs = [args.csv[i:i + 2] for i in range(0, len(args.csv), 2)]
+            titles = args.titles.split(";") if args.titles else None
+            save(plot.spectral_densities(pairs, titles, fmax_khz=args.fmax), args.output or _default_output(args.csv[0]))
         elif args.kind == "profiles":
             save(plot.profiles(args.prefix, decades=args.decades), args.output or f"{args.prefix}-profiles.png")
         elif args.kind == "cost":
