@@ -89,7 +89,7 @@ int main(int argc, char** argv) {
     progress.finish();
 
     AtomicFile csv(output);
-    const std::string name = !config.beads                                            ? to_string(config.disorder)
+    const std::string name = !config.beads                                         ? to_string(config.disorder)
                              : config.beads->kind == BeadDistribution::Kind::types ? "types"
                                                                                    : "polydisperse";
     if (selection.given()) {  // modes differ between chains: one row per mode of each realization

@@ -161,9 +161,8 @@ void bind_dynamics(py::module_& m) {
          long long samples, const std::string& sampling, const py::object& fit, double fit_step, double t_star,
          double kappa, long long bootstrap, bool active_window, double window_threshold, double reference_max_step,
          double max_energy_error, const std::string& energy_guard, const py::object& forces_at, long long force_samples,
-         bool energy_map, long long map_samples, long long map_stride, bool spectral_density,
-         long long spectrum_samples, const std::string& spectrum_of, bool progress, long mode, double mode_khz,
-         double energy) {
+         bool energy_map, long long map_samples, long long map_stride, bool spectral_density, long long spectrum_samples,
+         const std::string& spectrum_of, bool progress, long mode, double mode_khz, double energy) {
         const DynamicsKeywords k{alpha,
                                  beta,
                                  site,

@@ -82,8 +82,7 @@ TEST(ModeKick, EnergyIsMetUnderEveryForceLaw) {
   // Linear law: H = ½ ω² Σ m u² exactly (v = 0, u in one mode), so the amplitude is analytic.
   const ModeKickResult k = mode_kick(chain, ForceLawKind::linear, {.mode = 20, .energy = 1.16e-7});
   double mass_norm = 0;
-  for (std::size_t n = 0; n < chain.size(); ++n)
-    mass_norm += chain.mass[n] * std::pow(k.initial.u[n] / k.amplitude, 2);
+  for (std::size_t n = 0; n < chain.size(); ++n) mass_norm += chain.mass[n] * std::pow(k.initial.u[n] / k.amplitude, 2);
   EXPECT_NEAR(k.amplitude, std::sqrt(2 * 1.16e-7 / (k.omega2 * mass_norm)), 1e-12 * k.amplitude);
 }
 
@@ -137,8 +136,8 @@ TEST(ModeKick, BadKicksNameTheirParameter) {
     }
     return std::string("none");
   };
-  EXPECT_EQ(parameter_of({.amplitude = 1e-9}), "mode");                               // neither selector
-  EXPECT_EQ(parameter_of({.mode = 3, .near_khz = 10, .amplitude = 1e-9}), "mode");    // both
+  EXPECT_EQ(parameter_of({.amplitude = 1e-9}), "mode");                             // neither selector
+  EXPECT_EQ(parameter_of({.mode = 3, .near_khz = 10, .amplitude = 1e-9}), "mode");  // both
   EXPECT_EQ(parameter_of({.mode = 101, .amplitude = 1e-9}), "mode");
   EXPECT_EQ(parameter_of({.mode = 3}), "amplitude");
   EXPECT_EQ(parameter_of({.mode = 3, .energy = -1}), "energy");

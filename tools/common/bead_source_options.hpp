@@ -33,7 +33,8 @@ inline StreamedChain build_bead_source(const ChainOptions& o) {
   d["material"] = {{"E_Pa", steel.young}, {"nu", steel.poisson}, {"rho_kg_m3", steel.density}};
   d["walls"] = "flat, same material as the beads";
   if (const auto beads = bead_distribution(o)) {  // stored: memory O(N) (random access needs the chain)
-    if (o.n > 100000000) throw InvalidInput("N", " " + std::to_string(o.n) + ": --types/--polydisperse store the chain (<= 1e8)");
+    if (o.n > 100000000)
+      throw InvalidInput("N", " " + std::to_string(o.n) + ": --types/--polydisperse store the chain (<= 1e8)");
     validate(p);
     s.source = chain_beads(from_radii(realization_radii(*beads, p.N, p.seed, p.realization), o.f0));
     d["beads"] = describe(*beads);

@@ -29,10 +29,10 @@ struct ChainOptions {
 /// --types, --type-masses, --polydisperse (mutually exclusive); returns them for more exclusions.
 inline std::vector<CLI::Option*> add_bead_distribution_options(CLI::App& app, ChainOptions& o) {
   auto* types = app.add_option("--types", o.types,
-                                "k bead types 'R1:P1,R2:P2,...' (radius [m]: probability) drawn by --disorder A (each "
-                                "bead), RDM1 (each dimer) or RDM2 (two types); overrides --q/--xi/--R1");
-  auto* masses = app.add_option("--type-masses", o.type_masses,
-                                "as --types with masses [kg] of steel spheres: 'M1:P1,M2:P2,...'");
+                               "k bead types 'R1:P1,R2:P2,...' (radius [m]: probability) drawn by --disorder A (each "
+                               "bead), RDM1 (each dimer) or RDM2 (two types); overrides --q/--xi/--R1");
+  auto* masses =
+      app.add_option("--type-masses", o.type_masses, "as --types with masses [kg] of steel spheres: 'M1:P1,M2:P2,...'");
   auto* poly = app.add_option("--polydisperse", o.polydisperse,
                               "radii drawn per bead and realization: uniform:LO:HI or normal:MEAN:SD:MIN (truncated "
                               "below at MIN) [m]");
@@ -122,7 +122,7 @@ inline std::optional<BeadDistribution> bead_distribution(const ChainOptions& o) 
 
 struct SelectedChain {
   Chain chain;
-  Configuration types;  ///< empty when the chain came from a radii file or a bead distribution
+  Configuration types;                    ///< empty when the chain came from a radii file or a bead distribution
   std::optional<BeadDistribution> beads;  ///< --types/--type-masses/--polydisperse: what an ensemble draws
   nlohmann::json description;
 };

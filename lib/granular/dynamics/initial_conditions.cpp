@@ -81,8 +81,8 @@ double shaped_amplitude_for_energy(const ForceLaw& law, const Chain& chain, std:
   double lo = 0, hi = std::min(ceiling * (1 - 1e-9), 1e-9);
   while (energy_at(hi) < energy) {  // bracket by doubling, up to the ceiling
     if (hi >= ceiling * (1 - 1e-9))
-      throw InvalidInput("energy", " " + format_number(energy) +
-                                       " J: not reached by this shape before the beads would overlap");
+      throw InvalidInput("energy",
+                         " " + format_number(energy) + " J: not reached by this shape before the beads would overlap");
     lo = hi;
     hi = std::min(2 * hi, ceiling * (1 - 1e-9));
   }

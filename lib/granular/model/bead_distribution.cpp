@@ -34,8 +34,8 @@ void validate(const BeadDistribution& d) {
       if (std::fabs(sum - 1) > 1e-9) throw InvalidInput("probabilities", ": sum to " + format_number(sum) + ", not 1");
       if (d.rule == Disorder::homogeneous) throw InvalidInput("rule", ": h draws nothing; use A, RDM1 or RDM2");
       if (d.rule == Disorder::rdm2 && d.radii.size() != 2)
-        throw InvalidInput("rule", ": RDM2 (dimers 12 / 21) needs exactly two types, not " +
-                                       std::to_string(d.radii.size()));
+        throw InvalidInput("rule",
+                           ": RDM2 (dimers 12 / 21) needs exactly two types, not " + std::to_string(d.radii.size()));
       return;
     }
     case BeadDistribution::Kind::uniform:
@@ -49,7 +49,8 @@ void validate(const BeadDistribution& d) {
       check_radius(d.sd, "sd");
       check_radius(d.minimum, "minimum");
       if (d.minimum >= d.mean + 8 * d.sd)
-        throw InvalidInput("minimum", " " + format_number(d.minimum) + ": more than 8 sd above the mean (no radii left)");
+        throw InvalidInput("minimum",
+                           " " + format_number(d.minimum) + ": more than 8 sd above the mean (no radii left)");
       return;
   }
 }

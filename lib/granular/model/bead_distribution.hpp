@@ -28,8 +28,8 @@ struct BeadDistribution {
   /// types: anderson — each bead independently; rdm1 — each dimer "t t"; rdm2 — two types only,
   /// dimer "1 2" with probabilities[0], else "2 1". (Polydisperse radii are drawn per bead.)
   Disorder rule = Disorder::anderson;
-  double low = 0, high = 0;                 ///< uniform [m], 0 < low ≤ high
-  double mean = 0, sd = 0, minimum = 0;     ///< normal [m], sd > 0, 0 < minimum < mean + 8 sd
+  double low = 0, high = 0;              ///< uniform [m], 0 < low ≤ high
+  double mean = 0, sd = 0, minimum = 0;  ///< normal [m], sd > 0, 0 < minimum < mean + 8 sd
 };
 
 /// Throws InvalidInput naming the field (radii, probabilities, rule, low, high, mean, sd, minimum).

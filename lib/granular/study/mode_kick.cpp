@@ -37,8 +37,8 @@ ModeKickResult mode_kick(const Chain& chain, ForceLawKind law_kind, const ModeKi
     // that frequency (three, so that a near-degenerate neighbour cannot take its place).
     const Spectrum values = spectrum(d, all_modes(), {.method = SpectrumMethod::fast});
     const auto k = static_cast<std::size_t>(kick.mode);
-    found = spectrum(d, nearest(values.freq_khz[k - 1], std::min<long>(3, static_cast<long>(chain.size()))),
-                     with_vector);
+    found =
+        spectrum(d, nearest(values.freq_khz[k - 1], std::min<long>(3, static_cast<long>(chain.size()))), with_vector);
     j = static_cast<std::size_t>(std::find(found.mode.begin(), found.mode.end(), k) - found.mode.begin());
     if (j == found.size())
       throw NumericalError("mode " + std::to_string(k) + ": not among the modes nearest its own frequency");
@@ -65,12 +65,9 @@ ModeKickResult mode_kick(const Chain& chain, ForceLawKind law_kind, const ModeKi
 }
 
 nlohmann::json to_json(const ModeKickResult& kick) {
-  return {{"mode", kick.mode},
-          {"freq_khz", kick.freq_khz},
-          {"ipr", kick.ipr},
-          {"amplitude_m", kick.amplitude},
-          {"energy_J", kick.energy},
-          {"peak_site", kick.peak_site + 1}};
+  return {{"mode", kick.mode},       {"freq_khz", kick.freq_khz},
+          {"ipr", kick.ipr},         {"amplitude_m", kick.amplitude},
+          {"energy_J", kick.energy}, {"peak_site", kick.peak_site + 1}};
 }
 
 double mode_energy_fraction(const DynamicalMatrix& d, std::span<const double> w, double omega2, const State& state) {

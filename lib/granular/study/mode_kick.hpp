@@ -22,10 +22,10 @@ namespace granular {
 /// Which mode, and how large. Exactly one of `mode` and `near_khz` chooses; `energy`, when > 0,
 /// sets the size, otherwise `amplitude` does.
 struct ModeKick {
-  long mode = 0;          ///< mode number 1…N by increasing frequency; 0: use near_khz
-  double near_khz = -1;   ///< the mode nearest this frequency [kHz] (ties: the lower); < 0: use mode
-  double energy = 0;      ///< total energy H [J] under the run's force law; 0: use amplitude
-  double amplitude = 0;   ///< largest |u_n| [m] when energy is 0
+  long mode = 0;         ///< mode number 1…N by increasing frequency; 0: use near_khz
+  double near_khz = -1;  ///< the mode nearest this frequency [kHz] (ties: the lower); < 0: use mode
+  double energy = 0;     ///< total energy H [J] under the run's force law; 0: use amplitude
+  double amplitude = 0;  ///< largest |u_n| [m] when energy is 0
 };
 
 /// Throws InvalidInput (naming `mode`, `near_khz`, `energy` or `amplitude`) unless exactly one
@@ -33,15 +33,15 @@ struct ModeKick {
 void validate(const ModeKick& kick, std::size_t beads);
 
 struct ModeKickResult {
-  State initial;              ///< u = a · v / max|v| with v = M^{-1/2} w, v = 0
-  std::size_t mode = 0;       ///< its number 1…N
-  double freq_khz = 0;        ///< its linear frequency [kHz]
-  double omega2 = 0;          ///< ω² [1/s²]
-  double ipr = 0;             ///< its displacement IPR Σv⁴/(Σv²)²
-  double amplitude = 0;       ///< largest |u_n| [m]
-  double energy = 0;          ///< H of the initial state under the force law [J]
-  std::size_t peak_site = 0;  ///< 0-based bead of the largest |u_n| (the mode's centre)
-  std::vector<double> vector; ///< the unit eigenvector w of D (N entries, largest entry positive)
+  State initial;               ///< u = a · v / max|v| with v = M^{-1/2} w, v = 0
+  std::size_t mode = 0;        ///< its number 1…N
+  double freq_khz = 0;         ///< its linear frequency [kHz]
+  double omega2 = 0;           ///< ω² [1/s²]
+  double ipr = 0;              ///< its displacement IPR Σv⁴/(Σv²)²
+  double amplitude = 0;        ///< largest |u_n| [m]
+  double energy = 0;           ///< H of the initial state under the force law [J]
+  std::size_t peak_site = 0;   ///< 0-based bead of the largest |u_n| (the mode's centre)
+  std::vector<double> vector;  ///< the unit eigenvector w of D (N entries, largest entry positive)
 };
 
 /// The mode of `chain` chosen by `kick`, as an initial state for `law`. Throws InvalidInput (bad

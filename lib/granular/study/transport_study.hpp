@@ -79,7 +79,7 @@ SpreadingConfig spreading_config(const TransportCase& c);
 
 struct KickedChain {
   State initial;
-  double beta = 0;  ///< the velocity kick used [m/s] (the matched one when match_beta); 0 for a displacement
+  double beta = 0;      ///< the velocity kick used [m/s] (the matched one when match_beta); 0 for a displacement
   ModeKickResult mode;  ///< mode kick: the mode used (number, frequency, IPR, amplitude, energy); else empty
 };
 /// The kick of `c` applied to `chain` at c.site (a mode kick: the mode c.mode of `chain`, with the
