@@ -3,6 +3,7 @@
 #include <string>
 
 #include "common/metadata.hpp"
+#include "common/output_claim.hpp"
 #include "common/tool_main.hpp"
 #include "granular/io/atomic_file.hpp"
 #include "granular/io/csv_writer.hpp"
@@ -34,6 +35,7 @@ int main(int argc, char** argv) {
     config.disorder = parse_disorder(disorder);
     if (run.threads < 0) throw InvalidInput("threads", " " + std::to_string(run.threads) + ": must be >= 0");
     validate(config);
+    const tool::OutputClaim claim(tool::prefix_of(output), meta.command());
     check_writable(output);
     const std::string json_path = tool::json_path_for(output);
     check_writable(json_path);

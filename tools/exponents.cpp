@@ -5,6 +5,7 @@
 #include <string>
 
 #include "common/dynamics_options.hpp"
+#include "common/long_run_options.hpp"
 #include "common/metadata.hpp"
 #include "common/tool_main.hpp"
 #include "granular/ensemble/checkpoint_log.hpp"
@@ -29,8 +30,8 @@ int main(int argc, char** argv) {
   std::string paper_table = std::string(GRANULAR_SOURCE_DIR) + "/data/paper_table1_gamma.csv";
   long long n = 2501, realizations = 500, seed = 1, profile_realizations = 100;
   double xi = 0.5, q = 0.5;
-  int threads = 0;
-  bool resume = false, quiet = false, compare = false;
+  tool::LongRunOptions run_options;
+  bool compare = false;
   app.add_option("--chains", chains, "chain kinds: comma list of h, A, RDM1, RDM2")->capture_default_str();
   app.add_option("--F0", f0_text, "precompressions [N], comma list (0 = sonic vacuum)")->capture_default_str();
   app.add_option("--ic", kicks, "kicks: comma list of displacement, velocity")->capture_default_str();
@@ -49,11 +50,8 @@ int main(int argc, char** argv) {
                "also print (and write PREFIX-paper.csv) our gamma beside the paper's Table I");
   app.add_option("--paper-table", paper_table, "the paper's Table I (CSV ic,F0_N,disorder,gamma,err,star)")
       ->capture_default_str();
-  app.add_option("--threads", threads, "threads per process (0 = all cores); results do not depend on it")
-      ->capture_default_str();
   app.add_option("--output", output, "output prefix")->capture_default_str();
-  app.add_flag("--resume", resume, "continue an interrupted run with the same parameters");
-  app.add_flag("--quiet", quiet, "no progress line");
+  tool::add_long_run_options(app, run_options);
 
   return tool::run(app, argc, argv,
                    [&] {
@@ -75,7 +73,7 @@ int main(int argc, char** argv) {
                      if (realizations < 1)
                        throw InvalidInput("--realizations " + std::to_string(realizations) + ": must be >= 1");
                      if (seed < 0) throw InvalidInput("--seed: must be >= 0");
-                     if (threads < 0) throw InvalidInput("--threads: must be >= 0");
+                     if (run_options.threads < 0) throw InvalidInput("--threads: must be >= 0");
                      TransportCase& base = config.base;
                      base.n = static_cast<std::size_t>(n);
                      base.xi = xi;
@@ -86,16 +84,23 @@ int main(int argc, char** argv) {
                      std::vector<std::string> paths{output + ".csv", output + "-curves.csv", output + "-profiles.csv",
                                                     output + ".json"};
                      tool::apply(dynamics, base);
-                     for (const auto& c : exponent_cases(config)) validate(c);
+                     std::vector<TransportCase> cases = exponent_cases(config);
+                     for (const auto& c : cases) validate(c);
+                     const nlohmann::json step_rule = tool::settle_time_step(cases, app.count("--dt") > 0);
+                     base.dynamics.time_step = cases.front().dynamics.time_step;
                      if (compare) paper = read_paper_table(paper_table);
                      if (compare) paths.push_back(output + "-paper.csv");
+                     const tool::OutputClaim claim(output, meta.command(), run_options.checkpoints());
                      for (const auto& p : paths) check_writable(p);
                      ExponentRunOptions run;
-                     run.threads = threads;
+                     run.threads = run_options.threads;
                      run.checkpoint_prefix = output + ".checkpoint";
-                     run.resume = resume;
-                     run.progress = quiet || !mpi.root() ? 0 : -1;
-                     const auto cells = run_exponent_table(config, run);
+                     run.resume = run_options.resume;
+                     run.progress = run_options.quiet || !mpi.root() ? 0 : -1;
+                     run.cancelled = tool::stop_on_interrupt("exponents");
+                     run.skip_failed = run_options.skip_failed;
+                     const auto cells =
+                         tool::replaying_failures([&] { return run_exponent_table(config, run); }, argc, argv);
                      if (!mpi.root()) return;
 
                      std::printf("%s", markdown_tables(cells, config).c_str());
@@ -103,21 +108,24 @@ int main(int argc, char** argv) {
                      write_exponents_csv(csv.stream(), cells);
                      write_curves_csv(curves.stream(), cells);
                      write_profiles_csv(profiles.stream(), cells);
-                     nlohmann::json cases = nlohmann::json::array();
+                     nlohmann::json cases_json = nlohmann::json::array();
                      for (const auto& c : cells) {
                        nlohmann::json one = describe(c.definition);
+                       one["failed_excluded"] =
+                           tool::report_excluded(c.definition, c.summary, meta, run_options, "exponents", argv[0]);
                        if (c.summary.exponents)
                          one["exponents"] = {{"gamma_site", to_json(c.summary.exponents->gamma_site)},
                                              {"gamma_centroid", to_json(c.summary.exponents->gamma_centroid)},
                                              {"eta", to_json(c.summary.exponents->eta)}};
-                       cases.push_back(one);
+                       cases_json.push_back(one);
                      }
                      meta["parameters"] = {{"chains", chains},
                                            {"F0", config.precompressions},
                                            {"ic", kicks},
-                                           {"threads", threads},
+                                           {"threads", run_options.threads},
                                            {"mpi_ranks", mpi.size()}};
-                     meta["cases"] = cases;
+                     meta["cases"] = cases_json;
+                     meta["time_step_rule"] = step_rule;
                      std::optional<AtomicFile> comparison;
                      if (compare) {
                        const auto rows = compare_with_paper(cells, paper);

@@ -5,6 +5,7 @@
 
 #include "common/chain_options.hpp"
 #include "common/metadata.hpp"
+#include "common/output_claim.hpp"
 #include "common/spectrum_options.hpp"
 #include "common/tool_main.hpp"
 #include "granular/ensemble/parallel_realizations.hpp"
@@ -78,6 +79,7 @@ int main(int argc, char** argv) {
     if ((config.beads = tool::bead_distribution(beads)))
       config.q_values = config.xi_values = {std::numeric_limits<double>::quiet_NaN()};  // one cell
     validate(config);
+    const tool::OutputClaim claim(tool::prefix_of(output), meta.command());
     check_writable(output);
     const std::string json_path = tool::json_path_for(output);
     check_writable(json_path);

@@ -6,6 +6,7 @@
 
 #include "common/bead_source_options.hpp"
 #include "common/metadata.hpp"
+#include "common/output_claim.hpp"
 #include "common/tool_main.hpp"
 #include "granular/ensemble/parallel_realizations.hpp"
 #include "granular/io/atomic_file.hpp"
@@ -60,6 +61,7 @@ int main(int argc, char** argv) {
         const std::string csv_path = output + ".csv", json_path = output + ".json";
         const tool::StreamedChain chain = tool::build_bead_source(chain_options);
         validate(config);
+        const tool::OutputClaim claim(output, meta.command());
         check_writable(csv_path);
         check_writable(json_path);
 

@@ -7,6 +7,7 @@
 
 #include "common/chain_options.hpp"
 #include "common/metadata.hpp"
+#include "common/output_claim.hpp"
 #include "common/spectrum_options.hpp"
 #include "common/tool_main.hpp"
 #include "granular/io/atomic_file.hpp"
@@ -65,6 +66,7 @@ int main(int argc, char** argv) {
     }
     validate(selection, d.size());
     const bool writer = MpiContext::instance().root();
+    const tool::OutputClaim claim(tool::prefix_of(output), meta.command());
     if (writer) {
       check_writable(output);
       check_writable(tool::json_path_for(output));

@@ -47,4 +47,5 @@
 #include "granular/study/paper_comparison.hpp"
 #include "granular/study/spectrum_file.hpp"
 #include "granular/study/spreading_files.hpp"
+#include "granular/study/time_step_rule.hpp"
 #include "granular/study/transport_study.hpp"

@@ -11,9 +11,11 @@
 #include <benchmark/benchmark.h>
 #include <boost/numeric/odeint.hpp>
 
+#include "granular/dynamics/damping.hpp"
 #include "granular/dynamics/initial_conditions.hpp"
 #include "granular/dynamics/observables.hpp"
 #include "granular/dynamics/propagator.hpp"
+#include "granular/dynamics/tangent_map.hpp"
 #include "granular/model/chain.hpp"
 #include "granular/model/disorder.hpp"
 
@@ -86,6 +88,26 @@ void BM_Saba2cStep(benchmark::State& state) {
       benchmark::Counter(static_cast<double>(p->bond_updates() - before), benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_Saba2cStep)->Unit(benchmark::kMicrosecond);
+
+// Issue 14's budget: a damped step and a tangent-map step at most 2× BM_Saba2cStep (whole chain, 100 steps
+// per iteration each).
+// Arg 0: on-site damping only (exact flow); 1: Kuwabara–Kono too (one tridiagonal solve per half step).
+void BM_DampedSaba2cStep(benchmark::State& state) {
+  // Weak damping, so that a long benchmark does not run into denormal velocities; the cost is the same.
+  const Damping damping{1.0, state.range(0) ? 1e-9 : 0.0};
+  auto p = make_damped_propagator(paper_law(), paper_chain(), saba2c(), tau, paper_kick(), damping);
+  p->advance(1000);                      // leave the initial transient
+  for (auto _ : state) p->advance(100);  // 100 steps per iteration, as BM_Saba2cStep
+}
+BENCHMARK(BM_DampedSaba2cStep)->Arg(0)->Arg(1)->ArgName("kk")->Unit(benchmark::kMicrosecond);
+
+void BM_TangentSaba2cStep(benchmark::State& state) {
+  auto p = make_tangent_propagator(paper_law(), paper_chain(), saba2c(), tau, paper_kick(),
+                                   localized_deviation(beads, centre_site(beads)));
+  p->advance(1000);
+  for (auto _ : state) p->advance(100);  // 100 steps per iteration, as BM_Saba2cStep
+}
+BENCHMARK(BM_TangentSaba2cStep)->Unit(benchmark::kMicrosecond);
 
 // One realization: 10 000 steps of SABA2C, with or without the active window; the energy error
 // is the max over 100 uniform samples (which also cost 100 extra corrector kicks).

@@ -7,8 +7,8 @@
 #include <cstdio>
 #include <nlohmann/json.hpp>
 
-#include "granular/number_format.hpp"
 #include "granular/model/disorder.hpp"
+#include "granular/number_format.hpp"
 #include "tool_runner.hpp"
 
 namespace granular::testing {

@@ -8,11 +8,13 @@
 
 #include <CLI/CLI.hpp>
 
+#include "beyond_options.hpp"
 #include "chain_options.hpp"
 #include "granular/dynamics/scheme.hpp"
 #include "granular/error.hpp"
 #include "granular/io/range_syntax.hpp"
 #include "granular/number_format.hpp"
+#include "granular/study/time_step_rule.hpp"
 #include "granular/study/transport_study.hpp"
 
 namespace granular::tool {
@@ -23,6 +25,7 @@ struct DynamicsOptions {
   double alpha = 1e-7, duration = 1e-2, dt = 1e-6, fit_step = 1e-5, t_star = 4e-3, kappa = 0.1;
   double window_threshold = 1e-30, reference_max_step = 0.01e-6, max_energy_error = 1e-3;
   long long samples = 100, site = 0, bootstrap = 1000;
+  BeyondOptions beyond;  ///< damping (here) and the tangent map (spreading adds its flags)
 };
 
 inline void add_dynamics_options(CLI::App& app, DynamicsOptions& o) {
@@ -35,7 +38,11 @@ inline void add_dynamics_options(CLI::App& app, DynamicsOptions& o) {
                  "m2 about the kicked 'site' (the paper's n_c) or the energy 'centroid'; both are written")
       ->capture_default_str();
   app.add_option("--T", o.duration, "duration [s], a whole number of --dt")->capture_default_str();
-  app.add_option("--dt", o.dt, "time step tau [s]")->capture_default_str();
+  app.add_option("--dt", o.dt,
+                 "time step tau [s]; must meet tau <= h*/omega_max (docs/physics.md, 'Time step'): a larger one is "
+                 "refused, naming the largest stable tau; by default 1e-6, or 1e-6/k (smallest integer k) where 1e-6 "
+                 "is past a sixth of that limit")
+      ->capture_default_str();
   app.add_option("--integrator", o.integrator, "saba2c | saba2 | aba864 | srkn14a | reference (Odeint RKF78)")
       ->capture_default_str();
   app.add_option("--force-law", o.force_law, "hertz | fpu | linear")->capture_default_str();
@@ -61,6 +68,7 @@ inline void add_dynamics_options(CLI::App& app, DynamicsOptions& o) {
       ->capture_default_str();
   app.add_option("--energy-guard", o.energy_guard, "stop | warn: what passing --max-energy-error does")
       ->capture_default_str();
+  add_damping_options(app, o.beyond);
 }
 
 /// Fills `c` from the options: all but the chain (disorder, q, ξ, N, F0, R1, seed, realizations)
@@ -108,6 +116,35 @@ inline void apply(const DynamicsOptions& o, TransportCase& c) {
   c.criterion.t_start = o.t_star;
   if (o.bootstrap < 2) throw InvalidInput("--bootstrap " + std::to_string(o.bootstrap) + ": at least 2 resamples");
   c.bootstrap.resamples = static_cast<std::size_t>(o.bootstrap);
+  apply(o.beyond, d);
+}
+
+/// Settles the time step of `cases` (validated) by the stability rule (time_step_rule.hpp): a
+/// --dt given past the limit of any case is refused naming the largest stable τ; the default
+/// 1 µs becomes 1 µs/k where it is past it. One τ for all of them. `chain`: the chain of a single
+/// case from a file (else every realization counts). Returns the rule and its numbers for the JSON.
+inline nlohmann::json settle_time_step(std::vector<TransportCase>& cases, bool dt_given, const Chain* chain = nullptr) {
+  TimeStepLimit tightest;
+  for (const TransportCase& c : cases) {
+    const TimeStepLimit limit = time_step_limit(c, chain);
+    if (limit.max_time_step < tightest.max_time_step) tightest = limit;
+    if (dt_given) check_time_step(c, limit);
+  }
+  const double tau = dt_given || cases.empty() ? 0 : default_time_step(tightest, cases.front().dynamics.time_step);
+  for (TransportCase& c : cases)
+    if (!dt_given) c.dynamics.time_step = tau;
+  nlohmann::json rule = to_json(tightest);
+  if (!cases.empty()) rule["time_step_s"] = cases.front().dynamics.time_step;
+  rule["time_step_given"] = dt_given;
+  return rule;
+}
+
+/// The same for one case.
+inline nlohmann::json settle_time_step(TransportCase& c, bool dt_given, const Chain* chain = nullptr) {
+  std::vector<TransportCase> one{c};
+  const nlohmann::json rule = settle_time_step(one, dt_given, chain);
+  c = one.front();
+  return rule;
 }
 
 /// The chain of a case from the single-chain options (the chain built from them has `beads`).

@@ -30,6 +30,8 @@ class Metadata {
     json_["started_utc"] = stamp;
   }
   nlohmann::json& operator[](const char* key) { return json_[key]; }
+  /// A remark the final line must carry (e.g. realizations left out), never only the JSON.
+  void note(const std::string& text) { notes_ += "; " + text; }
   /// The command line as typed, quoted for a POSIX shell: paste it back and it runs.
   std::string command() const { return json_.at("command").get<std::string>(); }
 
@@ -72,14 +74,15 @@ class Metadata {
       if (json_.contains(key) && json_.at(key).is_string()) files += json_.at(key).get<std::string>() + ", ";
     char line[64];
     std::snprintf(line, sizeof line, " in %.3g s", seconds);
-    std::fprintf(stderr, "%s: wrote %s%s%s\n", json_.at("tool").get<std::string>().c_str(), files.c_str(), path.c_str(),
-                 line);
+    std::fprintf(stderr, "%s: wrote %s%s%s%s\n", json_.at("tool").get<std::string>().c_str(), files.c_str(),
+                 path.c_str(), line, notes_.c_str());
   }
 
   nlohmann::json json_;
   std::chrono::steady_clock::time_point start_;
   bool quiet_ = false;
   double seconds_ = 0;
+  std::string notes_;
 };
 
 }  // namespace granular::tool

@@ -1,8 +1,9 @@
 #pragma once
 // What every tool shares: option parsing errors and library exceptions become one line on
-// stderr and an exit code (2 bad input, 1 I/O, 3 numerical failure); --help and --version
-// exit 0. The body only runs after every option parsed. Library errors name parameters in the
-// library's vocabulary (`time_step`); here they are told in the flag the user typed (`--dt`).
+// stderr and an exit code (2 bad input, 1 I/O, 3 numerical failure, 130 interrupted: the
+// message says how to resume); --help and --version exit 0. The body only runs after every
+// option parsed. Library errors name parameters in the library's vocabulary (`time_step`); here
+// they are told in the flag the user typed (`--dt`).
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -14,10 +15,30 @@
 
 #include "granular/error.hpp"
 #include "granular/number_format.hpp"
+#include "metadata.hpp"
 
 namespace granular::tool {
 
-enum ExitCode { ok = 0, io_failure = 1, bad_input = 2, numerical_failure = 3 };
+enum ExitCode { ok = 0, io_failure = 1, bad_input = 2, numerical_failure = 3, interrupted = 130 };
+
+/// Ends a process quietly with `code`: an MPI rank other than 0 when rank 0 has already said why.
+struct QuietExit {
+  int code;
+};
+
+/// The command that continues an interrupted run: argv as typed, shell-quoted, with --resume
+/// (added if absent) and without --fresh.
+inline std::string resume_command(int argc, char** argv) {
+  std::string command;
+  bool resume = false;
+  for (int i = 0; i < argc; ++i) {
+    const std::string word = argv[i];
+    if (word == "--fresh") continue;
+    resume = resume || word == "--resume";
+    command += (command.empty() ? "" : " ") + Metadata::shell_quote(word);
+  }
+  return resume ? command : command + " --resume";
+}
 
 inline void describe_common(CLI::App& app) {
   app.set_version_flag("--version", std::string("granular ") + GRANULAR_VERSION);
@@ -151,6 +172,12 @@ inline int run(CLI::App& app, int argc, char** argv, const std::function<void()>
   } catch (const NumericalError& e) {
     std::fprintf(stderr, "%s: numerical failure: %s\n", name.c_str(), e.what());
     return numerical_failure;
+  } catch (const Cancelled&) {  // a clean stop: every finished realization is in the checkpoint
+    std::fprintf(stderr, "%s: interrupted; the finished realizations are kept. To continue:\n%s\n", name.c_str(),
+                 resume_command(argc, argv).c_str());
+    return interrupted;
+  } catch (const QuietExit& e) {
+    return e.code;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "%s: error: %s\n", name.c_str(), e.what());
     return numerical_failure;

@@ -44,6 +44,8 @@ class Propagator {
   virtual std::size_t window_end() const { return displacement().size(); }
   /// Bond force evaluations so far (one bond, one force; the speed measure).
   virtual std::uint64_t bond_updates() const = 0;
+  /// Energy removed by dissipation so far [J] (damping.hpp); 0 for a conservative method.
+  virtual double dissipated_energy() const { return 0; }
   State state() const;
 };
 

@@ -52,6 +52,16 @@ void validate(const SpreadingConfig& c, std::size_t beads) {
                                        format_number(c.time_step));
   if (c.samples < 2) throw InvalidInput("samples", ": at least 2");
   if (c.integrator != "reference") parse_scheme(c.integrator);
+  validate(c.damping);
+  if (c.damping.any() && c.integrator == "reference")
+    throw InvalidInput("integrator", " reference: has no damping; use a splitting scheme");
+  if (c.lyapunov.enabled && c.integrator == "reference")
+    throw InvalidInput("integrator", " reference: has no tangent map; use a splitting scheme");
+  if (c.lyapunov.enabled && c.damping.any())
+    throw InvalidInput("lyapunov", ": the tangent map is of the conservative flow; switch the damping off");
+  if (c.deviation_samples > 0 && !c.lyapunov.enabled)
+    throw InvalidInput("deviation_samples", ": needs the Lyapunov exponent switched on");
+  if (c.deviation_samples == 1) throw InvalidInput("deviation_samples", ": 0 (none) or at least 2");
   for (std::size_t s : c.force_sites)
     if (s >= beads)
       throw InvalidInput("forces_at", " " + std::to_string(s + 1) + ": outside the chain of " + std::to_string(beads) +
@@ -122,13 +132,22 @@ SpreadingResult run_spreading(const Chain& chain, const State& initial, const Sp
   r.initial_energy = total_energy(law, chain, initial);
   if (!(r.initial_energy > 0)) throw InvalidInput("initial state: carries no energy");
 
+  TangentPropagator* tangent = nullptr;
   std::unique_ptr<Propagator> p =
-      config.integrator == "reference"
-          ? make_reference_propagator(law, chain, tau, initial, config.reference)
+      config.integrator == "reference" ? make_reference_propagator(law, chain, tau, initial, config.reference)
+      : config.lyapunov.enabled
+          ? make_tangent_propagator(law, chain, parse_scheme(config.integrator), tau, initial,
+                                    localized_deviation(n, config.site < n ? config.site : centre_site(n),
+                                                        config.lyapunov.time_unit),
+                                    config.lyapunov)
+      : config.damping.any()
+          ? make_damped_propagator(law, chain, parse_scheme(config.integrator), tau, initial, config.damping)
           : make_splitting_propagator(law, chain, parse_scheme(config.integrator), tau, initial, config.window);
 
+  if (config.lyapunov.enabled) tangent = static_cast<TangentPropagator*>(p.get());
+
   // The schedule: step number → what to measure there.
-  enum : unsigned { spread = 1, force = 2, map = 4, spectrum = 8 };
+  enum : unsigned { spread = 1, force = 2, map = 4, spectrum = 8, deviation = 16 };
   std::map<std::uint64_t, unsigned> events;
   for (auto s : sample_steps(config)) events[s] |= spread;
   if (!config.force_sites.empty())
@@ -141,6 +160,8 @@ SpreadingResult run_spreading(const Chain& chain, const State& initial, const Sp
     spectrum_stride = steps.size() > 1 ? steps[1] : 1;
     for (auto s : steps) events[s] |= spectrum;
   }
+  if (config.deviation_samples > 0)
+    for (auto s : sample_steps(total, config.deviation_samples, Sampling::uniform)) events[s] |= deviation;
   events[total] |= 0;  // always end at T
 
   const std::size_t site = config.site < n ? config.site : centre_site(n);
@@ -160,13 +181,15 @@ SpreadingResult run_spreading(const Chain& chain, const State& initial, const Sp
       site_energies(law, chain, u, p->velocity(), energy, lo, hi);
       if (what & spread) {
         const EnergySpread s = energy_spread(energy, site);
-        const double h = s.total + unowned_wall_energy(law, u);
+        const double h = s.total + unowned_wall_energy(law, u) + p->dissipated_energy();
         const double error = std::abs(h - r.initial_energy) / r.initial_energy;
         r.t.push_back(t);
         r.m2.push_back(s.m2_site);
         r.m2_centroid.push_back(s.m2_centroid);
         r.ipr.push_back(s.ipr);
         r.energy_error.push_back(error);
+        if (config.damping.any()) r.dissipated.push_back(p->dissipated_energy());
+        if (tangent) r.mle.push_back(tangent->mle());
         r.max_energy_error = std::max(r.max_energy_error, error);
         r.wall_energy = std::max(r.wall_energy, (energy[0] + energy[n - 1]) / r.initial_energy);
         if (!std::isfinite(h) || !std::isfinite(s.m2_site))
@@ -188,6 +211,11 @@ SpreadingResult run_spreading(const Chain& chain, const State& initial, const Sp
           r.map_energy.push_back(sum);
         }
       }
+    }
+    if ((what & deviation) && tangent) {
+      r.deviation_t.push_back(t);
+      const std::vector<double> share = tangent->deviation_distribution();
+      r.deviation.insert(r.deviation.end(), share.begin(), share.end());
     }
     if (what & force) {
       particle_forces(law, u, bead_force);

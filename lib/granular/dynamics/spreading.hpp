@@ -7,9 +7,11 @@
 #include <string>
 #include <vector>
 
+#include "granular/dynamics/damping.hpp"
 #include "granular/dynamics/force_law.hpp"
 #include "granular/dynamics/propagator.hpp"
 #include "granular/dynamics/state.hpp"
+#include "granular/dynamics/tangent_map.hpp"
 
 namespace granular {
 
@@ -54,6 +56,9 @@ struct SpreadingConfig {
   double wall_warning = 1e-10;       ///< flag when (E_first + E_last)/H0 exceeds it
   double max_energy_error = 1e-3;    ///< guard on |H(t)−H0|/H0 at the samples; 0 = unwatched
   bool stop_on_energy_error = true;  ///< past the guard: stop (NumericalError) or only record it
+  Damping damping;          ///< dissipation (damping.hpp); none by default. Then energy_error is of H + dissipated
+  LyapunovConfig lyapunov;  ///< X1(t) by the tangent map (tangent_map.hpp); conservative schemes only
+  std::size_t deviation_samples = 0;  ///< uniform times of the deviation-vector distribution; 0 = none
 };
 
 /// Throws InvalidInput naming the option (--T, --dt, --samples, …) on a bad config.
@@ -64,7 +69,11 @@ struct SpreadingResult {
   std::vector<double> m2;            ///< m̃2 about the excited bead n0 [bead²] (the paper's)
   std::vector<double> m2_centroid;   ///< m̃2 about the energy centroid [bead²]
   std::vector<double> ipr;           ///< P⁻¹ of the energy
-  std::vector<double> energy_error;  ///< |H(t) − H0| / H0
+  std::vector<double> energy_error;  ///< |H(t) + dissipated(t) − H0| / H0
+  std::vector<double> dissipated;    ///< energy removed by damping by t [J]; empty without damping
+  std::vector<double> mle;           ///< X1(t) [1/s] at the sample times; empty without lyapunov
+  std::vector<double> deviation_t;   ///< times of the deviation-vector distribution rows
+  std::vector<double> deviation;     ///< rows × N, row-major: share of ‖w‖² on each bead
   double initial_energy = 0;
   double max_energy_error = 0;
   State final_state;

@@ -17,6 +17,9 @@ struct RunOptions {
   /// map: true stops the run with granular::Cancelled once the work in flight is finished and
   /// checkpointed (how the Python module turns Ctrl-C into a resumable stop).
   std::function<bool()> cancelled{};
+  /// Studies that average realizations (transport_study.hpp): a realization that fails
+  /// (NumericalError) is left out of the averages and reported, instead of stopping the run.
+  bool skip_failed = false;
 };
 
 }  // namespace granular

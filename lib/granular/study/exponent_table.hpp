@@ -33,6 +33,7 @@ struct ExponentRunOptions {
   ProgressMeter* meter =
       nullptr;  ///< optional: advance this meter (total: every case's realizations) instead of one of its own
   std::function<bool()> cancelled{};  ///< see RunOptions::cancelled
+  bool skip_failed = false;           ///< see RunOptions::skip_failed
 };
 
 /// The cases in table order (kick-major, then F0, then chain).

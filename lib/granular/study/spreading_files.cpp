@@ -1,18 +1,44 @@
 #include "granular/study/spreading_files.hpp"
 
 #include "granular/io/csv_writer.hpp"
+#include "granular/number_format.hpp"
 
 namespace granular {
 
+namespace {
+
+// The base columns, then `dissipated` (damping) and `mle` (tangent map) when the run has them.
+void write_columns(std::ostream& out, const std::vector<double>& time,
+                   std::initializer_list<const std::vector<double>*> base, const std::vector<double>& dissipated,
+                   const std::vector<double>& mle) {
+  std::vector<std::string> names = {"t", "m2", "ipr", "energy_error", "m2_centroid"};
+  std::vector<const std::vector<double>*> columns(base);
+  if (!dissipated.empty()) names.push_back("dissipated"), columns.push_back(&dissipated);
+  if (!mle.empty()) names.push_back("mle"), columns.push_back(&mle);
+  for (std::size_t j = 0; j < names.size(); ++j) out << (j ? "," : "") << names[j];
+  out << '\n';
+  for (std::size_t i = 0; i < time.size(); ++i) {
+    out << format_number(time[i]);
+    for (const auto* c : columns) out << ',' << format_number((*c)[i]);
+    out << '\n';
+  }
+}
+
+}  // namespace
+
 void write_spreading_csv(std::ostream& out, const SpreadingResult& r) {
-  CsvWriter t(out, {"t", "m2", "ipr", "energy_error", "m2_centroid"});
-  for (std::size_t i = 0; i < r.t.size(); ++i) t.row(r.t[i], r.m2[i], r.ipr[i], r.energy_error[i], r.m2_centroid[i]);
+  write_columns(out, r.t, {&r.m2, &r.ipr, &r.energy_error, &r.m2_centroid}, r.dissipated, r.mle);
 }
 
 void write_spreading_csv(std::ostream& out, const TransportSummary& m) {
-  CsvWriter t(out, {"t", "m2", "ipr", "energy_error", "m2_centroid"});
-  for (std::size_t i = 0; i < m.t.size(); ++i)
-    t.row(m.t[i], m.m2.mean[i], m.ipr.mean[i], m.energy_error.mean[i], m.m2_centroid.mean[i]);
+  write_columns(out, m.t, {&m.m2.mean, &m.ipr.mean, &m.energy_error.mean, &m.m2_centroid.mean}, {}, m.mle.mean);
+}
+
+void write_deviation_csv(std::ostream& out, const SpreadingResult& r) {
+  CsvWriter t(out, {"t", "site", "share"});
+  const std::size_t n = r.final_state.size();
+  for (std::size_t k = 0; k < r.deviation_t.size(); ++k)
+    for (std::size_t i = 0; i < n; ++i) t.row(r.deviation_t[k], i + 1, r.deviation[k * n + i]);
 }
 
 void write_standard_errors_csv(std::ostream& out, const TransportSummary& m) {

@@ -11,7 +11,8 @@
 namespace granular {
 
 /// t,m2,ipr,energy_error,m2_centroid — m2 about the excited bead, m2_centroid about the energy
-/// centroid [bead²] — of one run, or the ensemble means.
+/// centroid [bead²] — of one run, or the ensemble means; then `dissipated` [J] with damping and
+/// `mle` (X1 [1/s]) with the tangent map, when the run has them.
 void write_spreading_csv(std::ostream& out, const SpreadingResult& run);
 void write_spreading_csv(std::ostream& out, const TransportSummary& ensemble);
 /// t,m2_se,ipr_se,energy_error_se,m2_centroid_se: standard errors of the ensemble means.
@@ -25,5 +26,7 @@ void write_profile_csv(std::ostream& out, const TransportSummary& ensemble);
 void write_forces_csv(std::ostream& out, const SpreadingResult& run, const std::vector<std::size_t>& sites);
 /// freq_khz,g.
 void write_spectrum_csv(std::ostream& out, const SpreadingResult& run);
+/// t,site,share: the deviation vector's distribution along the chain (spreading --mle).
+void write_deviation_csv(std::ostream& out, const SpreadingResult& run);
 
 }  // namespace granular

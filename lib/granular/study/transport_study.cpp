@@ -97,7 +97,7 @@ KickedChain kick(const TransportCase& c, const Chain& chain) {
   return {velocity_kick(chain, c.site, beta), beta, {}};
 }
 
-nlohmann::json describe(const TransportCase& c) {
+static nlohmann::json describe_conservative(const TransportCase& c) {
   const SpreadingConfig& d = c.dynamics;
   const bool uses_alpha = c.kick == Kick::displacement || c.match_beta || (c.kick == Kick::mode && c.mode.energy == 0);
   nlohmann::json beta = nullptr;  // the values used: α only where the kick uses it, β only for a velocity kick
@@ -141,6 +141,18 @@ nlohmann::json describe(const TransportCase& c) {
                                c.mode.near_khz < 0 ? nlohmann::json(nullptr) : nlohmann::json(c.mode.near_khz)},
                               {"energy_J", c.mode.energy == 0 ? nlohmann::json(nullptr) : nlohmann::json(c.mode.energy)}};
   return described;
+}
+
+nlohmann::json describe(const TransportCase& c) {
+  nlohmann::json j = describe_conservative(c);
+  // Only when switched on, so that conservative runs keep their parameters (and checkpoints).
+  const SpreadingConfig& d = c.dynamics;
+  if (d.damping.any()) j["damping"] = {{"time_s", d.damping.time}, {"kk_gamma_s", d.damping.kk_gamma}};
+  if (d.lyapunov.enabled)
+    j["lyapunov"] = {{"renormalize_every", d.lyapunov.renormalize_every},
+                     {"norm_time_unit_s", d.lyapunov.time_unit},
+                     {"initial_deviation", "du = 1, dv = 1/time_unit on the kicked bead"}};
+  return j;
 }
 
 TransportExponents transport_exponents(const TransportCase& c, const std::vector<double>& t,
@@ -216,8 +228,9 @@ namespace {
 
 // What one realization leaves behind, and its flat form in the ensemble's rows and checkpoints:
 // m̃2 about the site | m̃2 about the centroid | P⁻¹ | energy error (each on the S sample times) |
-// max energy error | wall energy | E_n(T) (N, only for the first profile_realizations: profiles
-// are long, and checkpoints hold every row).
+// max energy error | wall energy | X1 on the S sample times (only with the tangent map) |
+// E_n(T) (N, only for the first profile_realizations: profiles are long, and checkpoints hold
+// every row).
 struct RealizationRecord {
   static constexpr std::size_t series = 4;
   enum Series { m2_site = 0, m2_centroid = 1, ipr = 2, energy_error = 3 };
@@ -231,6 +244,7 @@ struct RealizationRecord {
     for (const auto* s : {&r.m2, &r.m2_centroid, &r.ipr, &r.energy_error}) row.insert(row.end(), s->begin(), s->end());
     row.push_back(r.max_energy_error);
     row.push_back(r.wall_energy);
+    row.insert(row.end(), r.mle.begin(), r.mle.end());  // X1(t) when the tangent map runs
     if (with_profile) row.insert(row.end(), r.final_energy.begin(), r.final_energy.end());
     return row;
   }
@@ -313,20 +327,35 @@ TransportSummary run_transport_study(const TransportCase& c, const StudyRunOptio
   std::vector<std::vector<double>> rows = run_ensemble(ensemble, [&](std::uint64_t r, int) {
     try {
       return realization_row(c, r);
-    } catch (const NumericalError& e) {  // say which chain, so it can be replayed alone
-      throw NumericalError("realization " + std::to_string(r) + " of seed " + std::to_string(c.seed) +
-                           " (replay: spreading --seed " + std::to_string(c.seed) + " --realization " +
-                           std::to_string(r) + "): " + e.what());
+    } catch (const NumericalError& e) {
+      // Say which chain, so it can be replayed alone; or log it as failed: left out, listed.
+      if (options.skip_failed) return std::vector<double>{};
+      throw RealizationFailed(c, r, e.what());
     }
   });
   if (!MpiContext::instance().root()) return s;
 
   using R = RealizationRecord;
-  const std::size_t width = R::profile(samples);
-  const std::size_t profiled = std::min(c.profile_realizations, c.realizations);
-  for (std::size_t r = 0; r < rows.size(); ++r)
-    if (rows[r].size() != width + (r < profiled ? c.n : 0))
+  const std::size_t mle_samples = c.dynamics.lyapunov.enabled ? samples : 0;
+  const std::size_t width = R::profile(samples) + mle_samples;
+  const std::size_t all_profiled = std::min(c.profile_realizations, c.realizations);
+  std::size_t profiled = 0;  // realizations averaged into the profile: the first all_profiled, less the failed
+  std::vector<std::vector<double>> kept;
+  kept.reserve(rows.size());
+  for (std::size_t r = 0; r < rows.size(); ++r) {
+    if (rows[r].empty()) {  // failed, here or in the run this one resumes
+      if (!options.skip_failed)
+        throw RealizationFailed(c, r, "it failed in the interrupted run (which was told to skip failures)");
+      s.excluded.push_back(r);
+      continue;
+    }
+    if (rows[r].size() != width + (r < all_profiled ? c.n : 0))
       throw NumericalError("realization " + std::to_string(r) + " has a row of the wrong length");
+    profiled += r < all_profiled;
+    kept.push_back(std::move(rows[r]));
+  }
+  rows = std::move(kept);
+  if (rows.empty()) throw NumericalError("every one of the " + std::to_string(c.realizations) + " realizations failed");
   s.realizations = rows.size();
   s.m2 = summarize(rows, R::offset(R::m2_site, samples), samples);
   s.m2_centroid = summarize(rows, R::offset(R::m2_centroid, samples), samples);
@@ -336,6 +365,7 @@ TransportSummary run_transport_study(const TransportCase& c, const StudyRunOptio
     s.max_energy_error = std::fmax(s.max_energy_error, row[R::scalars(samples)]);
     s.reached_walls += row[R::scalars(samples) + 1] > c.dynamics.wall_warning;
   }
+  if (mle_samples > 0) s.mle = summarize(rows, R::profile(samples), samples);
   if (profiled > 0) s.profile = summarize(rows, width, c.n, profiled);
   if (!c.fit) return s;
   s.exponents = transport_exponents(c, s.t, s.m2.mean, s.m2_centroid.mean, s.ipr.mean);

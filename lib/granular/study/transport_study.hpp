@@ -23,6 +23,7 @@
 #include "granular/dynamics/observables.hpp"
 #include "granular/dynamics/spreading.hpp"
 #include "granular/ensemble/run_options.hpp"
+#include "granular/error.hpp"
 #include "granular/model/bead_distribution.hpp"
 #include "granular/model/disorder.hpp"
 #include "granular/model/material.hpp"
@@ -101,18 +102,33 @@ struct TransportSummary {
   SeriesSummary m2, m2_centroid;                ///< m̃2 about the site and about the centroid [bead²]
   SeriesSummary ipr, energy_error;              ///< over realizations, at the sample times
   SeriesSummary profile;                        ///< site energies E_n at T (empty if not asked for)
+  SeriesSummary mle;                            ///< X1(t) [1/s] (empty unless dynamics.lyapunov.enabled)
   std::optional<TransportExponents> exponents;  ///< with realization errors; absent when not fitted
   double max_energy_error = 0;                  ///< worst |H(t)−H0|/H0 of any realization
   std::size_t reached_walls = 0;                ///< realizations whose energy reached the walls
-  std::size_t realizations = 0;
+  std::size_t realizations = 0;                 ///< realizations averaged (excluded ones not counted)
+  std::vector<std::uint64_t> excluded;          ///< realizations that failed and were left out (skip_failed)
+};
+
+/// One realization of a case failed (a guard tripped, a NaN): which one, of which case, so that a
+/// front end can say how to replay it alone. Every realization finished before it stays in the
+/// checkpoint. what() is "realization r of seed s: <cause>".
+struct RealizationFailed : NumericalError {
+  RealizationFailed(const TransportCase& c, std::uint64_t r, const std::string& cause)
+      : NumericalError("realization " + std::to_string(r) + " of seed " + std::to_string(c.seed) + ": " + cause),
+        failed_case(c), realization(r) {}
+  TransportCase failed_case;
+  std::uint64_t realization;
 };
 
 /// Threads, checkpoint, resume, progress: the library's one run-options type.
 using StudyRunOptions = RunOptions;
 
-/// Runs (or resumes) the ensemble; under mpirun only rank 0 gets a filled summary.
-/// Bit-identical for any thread count, rank count or interruption. Memory: the R records of
-/// the case (4 series on every sample, E_n(T) for the profiled ones) while it runs.
+/// Runs (or resumes) the ensemble; under mpirun only rank 0 gets a filled summary. A failing
+/// realization throws RealizationFailed, unless options.skip_failed: then it is logged as failed
+/// (an empty record), left out of every mean and listed in `excluded`; a later resume without
+/// skip_failed stops at it again. Bit-identical for any thread count, rank count or interruption. Memory: the R records
+/// of the case (4 series on every sample, E_n(T) for the profiled ones) while it runs.
 TransportSummary run_transport_study(const TransportCase& c, const StudyRunOptions& options);
 
 /// JSON of an exponent report: fit, mean L_d, verdict, which one is shown, realization errors.

@@ -1,0 +1,159 @@
+#include "granular/study/time_step_rule.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <map>
+#include <utility>
+
+#include "granular/dynamics/observables.hpp"
+#include "granular/error.hpp"
+#include "granular/model/disorder.hpp"
+#include "granular/number_format.hpp"
+
+namespace granular {
+namespace {
+
+using Matrix = std::array<double, 4>;  // row-major 2×2 on (x, v/ω)
+
+Matrix times(const Matrix& a, const Matrix& b) {
+  return {a[0] * b[0] + a[1] * b[2], a[0] * b[1] + a[1] * b[3], a[2] * b[0] + a[3] * b[2], a[2] * b[1] + a[3] * b[3]};
+}
+
+}  // namespace
+
+// One step on a harmonic mode, h = ωτ, in the order the stepper applies it: corrector, drift a_0,
+// kick b_0, …, drift a_s, corrector. On a mode the corrector v += gτ³ M⁻¹K(−a) is v += g h³ ω x.
+double step_trace(const SplittingScheme& s, double h) {
+  const double g = s.corrector * h * h * h;
+  Matrix m{1, 0, g, 1};
+  for (std::size_t j = 0; j < s.drift.size(); ++j) {
+    m = times(Matrix{1, s.drift[j] * h, 0, 1}, m);
+    if (j < s.kick.size()) m = times(Matrix{1, 0, -s.kick[j] * h, 1}, m);
+  }
+  m = times(Matrix{1, 0, g, 1}, m);
+  return m[0] + m[3];
+}
+
+namespace {
+
+// The largest bond stiffness over the strains 0 … x where φ_k(x) reaches `energy` (compression;
+// on the extension side every law here is softer than at rest).
+template <class Law>
+double stiffest(const Law& law, std::size_t k, double energy) {
+  double hi = 1e-12;
+  while (law.potential(k, hi) < energy && hi < 1) hi *= 2;
+  double lo = 0;
+  for (int i = 0; i < 100 && hi - lo > 1e-15 * hi; ++i) {
+    const double mid = (lo + hi) / 2;
+    (law.potential(k, mid) < energy ? lo : hi) = mid;
+  }
+  double k_max = 0;
+  for (int i = 0; i <= 64; ++i) k_max = std::max(k_max, law.stiffness(k, hi * i / 64));
+  return k_max;
+}
+
+}  // namespace
+
+double stable_step_limit(const SplittingScheme& s) {
+  const double step = 1e-3;
+  double h = step;
+  while (h < 20 && std::fabs(step_trace(s, h)) <= 2) h += step;
+  double lo = h - step, hi = h;
+  for (int i = 0; i < 60; ++i) {
+    const double mid = (lo + hi) / 2;
+    (std::fabs(step_trace(s, mid)) <= 2 ? lo : hi) = mid;
+  }
+  return lo;
+}
+
+double highest_frequency_bound(const ForceLaw& law, const Chain& chain, double energy) {
+  return std::visit(
+      [&](const auto& l) {
+        std::vector<double> stiffness(chain.bonds());
+        std::map<std::pair<double, double>, double> known;  // bonds of one kind: one search
+        for (std::size_t k = 0; k < chain.bonds(); ++k) {
+          const auto key = std::pair{chain.contact[k], chain.overlap[k]};
+          auto it = known.find(key);
+          if (it == known.end()) it = known.emplace(key, stiffest(l, k, energy)).first;
+          stiffness[k] = it->second;
+        }
+        double largest = 0;  // Gershgorin: row i of M^{-1/2} K M^{-1/2}, bonds i (left) and i+1 (right)
+        const std::size_t n = chain.size();
+        for (std::size_t i = 0; i < n; ++i) {
+          double row = (stiffness[i] + stiffness[i + 1]) / chain.mass[i];
+          if (i > 0) row += stiffness[i] / std::sqrt(chain.mass[i - 1] * chain.mass[i]);
+          if (i + 1 < n) row += stiffness[i + 1] / std::sqrt(chain.mass[i] * chain.mass[i + 1]);
+          largest = std::max(largest, row);
+        }
+        return std::sqrt(largest);
+      },
+      law);
+}
+
+TimeStepLimit time_step_limit(const TransportCase& c, const Chain* chain) {
+  TimeStepLimit limit;
+  if (c.dynamics.integrator == "reference") return limit;  // adaptive: no step to bound
+  limit.scheme_limit = stable_step_limit(parse_scheme(c.dynamics.integrator));
+  TransportCase probe = c;
+  std::vector<Chain> chains;
+  if (chain) {
+    chains.push_back(*chain);
+  } else {
+    // Every local arrangement of the types the disorder can place: three beads between walls
+    // hold every neighbourhood of a bead (inside a chain, or next to a wall).
+    std::vector<int> types;
+    const bool both = c.disorder == Disorder::rdm2 || (c.disorder != Disorder::homogeneous && c.q > 0 && c.q < 1);
+    if (c.disorder == Disorder::homogeneous || both || c.q == 1) types.push_back(1);
+    if (both || (c.disorder != Disorder::homogeneous && c.q == 0)) types.push_back(2);
+    for (int a : types)
+      for (int b : types)
+        for (int d : types) {
+          std::vector<double> radii;
+          for (int t : {a, b, d}) radii.push_back(t == 1 ? c.r1 : c.xi * c.r1);
+          chains.push_back(make_chain(radii, c.precompression));
+        }
+  }
+  double energy = 0;  // the largest kick energy: at any bead of any arrangement
+  for (const Chain& ch : chains) {
+    const ForceLaw law = make_force_law(c.dynamics.force_law, ch);
+    for (std::size_t site = 0; site < ch.size(); ++site) {
+      if (chain && site != c.site) continue;
+      probe.site = site;
+      energy = std::max(energy, total_energy(law, ch, kick(probe, ch).initial));
+    }
+  }
+  for (const Chain& ch : chains)
+    limit.omega_max =
+        std::max(limit.omega_max, highest_frequency_bound(make_force_law(c.dynamics.force_law, ch), ch, energy));
+  limit.max_time_step = limit.scheme_limit / limit.omega_max;
+  return limit;
+}
+
+double default_time_step(const TimeStepLimit& limit, double preferred) {
+  const double bound = limit.max_time_step / default_step_margin;
+  if (!(preferred > bound)) return preferred;
+  return preferred / std::ceil(preferred / bound);
+}
+
+void check_time_step(const TransportCase& c, const TimeStepLimit& limit) {
+  if (c.dynamics.time_step > limit.max_time_step)
+    throw InvalidInput("time_step", " " + format_number(c.dynamics.time_step) + " s: past the stability limit of " +
+                                        c.dynamics.integrator + " on this chain; the largest stable time step is " +
+                                        format_number(limit.max_time_step) +
+                                        " s (h* = " + format_number(limit.scheme_limit) +
+                                        ", omega_max = " + format_number(limit.omega_max) + " rad/s)");
+}
+
+nlohmann::json to_json(const TimeStepLimit& limit) {
+  const bool bounded = std::isfinite(limit.max_time_step);
+  return {{"rule",
+           "tau <= h*/omega_max (h*: the scheme's largest stable omega*tau; omega_max: Gershgorin bound with every "
+           "bond at the stiffest strain the kick energy reaches); default tau = 1e-6 s, or 1e-6/k s with the "
+           "smallest integer k giving tau <= max_time_step/6"},
+          {"scheme_limit", bounded ? nlohmann::json(limit.scheme_limit) : nlohmann::json(nullptr)},
+          {"omega_max_rad_s", bounded ? nlohmann::json(limit.omega_max) : nlohmann::json(nullptr)},
+          {"max_time_step_s", bounded ? nlohmann::json(limit.max_time_step) : nlohmann::json(nullptr)}};
+}
+
+}  // namespace granular

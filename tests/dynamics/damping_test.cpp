@@ -1,0 +1,180 @@
+// Dissipation (SPEC §4 "Beyond the paper", issue 14): the damped linear chain against its exact
+// modal solution, the order of the Strang splitting with Kuwabara–Kono damping, the energy
+// balance H + dissipated = H0, and "no damping" changing nothing.
+#include <cmath>
+#include <cstdio>
+
+#include <gtest/gtest.h>
+
+#include "dynamics_fixtures.hpp"
+#include "granular/dynamics/damping.hpp"
+#include "granular/dynamics/observables.hpp"
+#include "granular/dynamics/spreading.hpp"
+#include "granular/error.hpp"
+#include "granular/linear/detail/lapack_eigensolver.hpp"
+#include "granular/linear/dynamical_matrix.hpp"
+
+namespace granular {
+namespace {
+
+using fixtures::relative_difference;
+
+std::size_t steps_for(double duration, double tau) { return static_cast<std::size_t>(std::llround(duration / tau)); }
+
+// Exact solution of M ü = −B u − (M/τ_d) u̇: every mode k obeys q̈ + q̇/τ_d + ω_k² q = 0, so
+// q(t) = e^{−t/(2τ_d)} [q0 cos ω_d t + (q̇0 + q0/(2τ_d)) sin(ω_d t)/ω_d], ω_d² = ω_k² − 1/(4τ_d²).
+// Also returns each mode's amplitude envelope ratio for the decay check.
+std::vector<double> damped_modal_solution(const Chain& chain, const State& s0, double t, double tau_d) {
+  const EigenDecomposition e = LapackEigensolver().solve(dynamical_matrix(chain), true);
+  const std::size_t n = chain.size();
+  std::vector<double> u(n, 0.0);
+  const double decay = std::exp(-t / (2 * tau_d));
+  for (std::size_t k = 0; k < n; ++k) {
+    const auto kk = static_cast<Eigen::Index>(k);
+    const double omega = std::sqrt(e.values[kk] - 1 / (4 * tau_d * tau_d));
+    double a = 0, b = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      const double w = e.vectors(static_cast<Eigen::Index>(i), kk);
+      a += w * std::sqrt(chain.mass[i]) * s0.u[i];
+      b += w * std::sqrt(chain.mass[i]) * s0.v[i];
+    }
+    const double c = decay * (a * std::cos(omega * t) + (b + a / (2 * tau_d)) * std::sin(omega * t) / omega);
+    for (std::size_t i = 0; i < n; ++i)
+      u[i] += c * e.vectors(static_cast<Eigen::Index>(i), kk) / std::sqrt(chain.mass[i]);
+  }
+  return u;
+}
+
+TEST(Damping, LinearChainDecaysEveryModeAsTheExactDampedOscillator) {
+  const Chain chain = fixtures::anderson(41, 10.0);
+  const ForceLaw law = make_force_law(ForceLawKind::linear, chain);
+  const State s0 = displacement_kick(chain, 20, 1e-7);
+  const double tau_d = 0.1e-3, duration = 0.3e-3;  // the amplitude falls by e^{-1.5}
+  const std::vector<double> exact = damped_modal_solution(chain, s0, duration, tau_d);
+  // Undamped, the same state would be far off: the test sees the decay.
+  const auto free = fixtures::run(make_splitting_propagator(law, chain, saba2c(), 0.01e-6, s0, {false}),
+                                  steps_for(duration, 0.01e-6));
+  EXPECT_GT(relative_difference(free->displacement(), exact), 0.5);
+  double previous = 0;
+  for (double tau : {0.04e-6, 0.02e-6, 0.01e-6}) {
+    const auto p =
+        fixtures::run(make_damped_propagator(law, chain, saba2c(), tau, s0, {tau_d, 0}), steps_for(duration, tau));
+    const double error = relative_difference(p->displacement(), exact);
+    std::printf("  tau = %g us: relative difference from the exact damped modes %.3e\n", tau * 1e6, error);
+    EXPECT_LT(error, 1e-5);
+    if (previous > 0) {  // Strang splitting: 2nd order
+      EXPECT_GT(previous / error, 3.0);
+      EXPECT_LT(previous / error, 5.0);
+    }
+    previous = error;
+  }
+}
+
+TEST(Damping, KuwabaraKonoSplittingIsSecondOrder) {
+  // F0 = 10 N and a small kick: contacts stay closed, the force is smooth.
+  const Chain chain = fixtures::anderson(51, 10.0);
+  const ForceLaw law = make_force_law(ForceLawKind::hertz, chain);
+  const State s0 = displacement_kick(chain, 25, 1e-7);
+  const Damping damping{0.5e-3, 2e-6};
+  const double duration = 0.2e-3;
+  const auto at = [&](double tau) {
+    return fixtures::run(make_damped_propagator(law, chain, saba2c(), tau, s0, damping), steps_for(duration, tau))
+        ->state();
+  };
+  State coarse = at(0.2e-6);
+  const double dissipated = [&] {
+    auto p = fixtures::run(make_damped_propagator(law, chain, saba2c(), 0.1e-6, s0, damping), 2000);
+    return p->dissipated_energy() / total_energy(law, chain, s0);
+  }();
+  std::printf("  dissipated fraction of H0 by %g ms: %.3f\n", duration * 1e3, dissipated);
+  EXPECT_GT(dissipated, 0.3);  // the damping matters at this γ
+  double previous = 0;
+  for (double tau : {0.1e-6, 0.05e-6, 0.025e-6}) {
+    const State fine = at(tau);
+    const double error = relative_difference(coarse.u, fine.u);  // ≈ error of the coarser run
+    std::printf("  tau = %g us: |u(tau) - u(tau/2)| / |u| = %.3e\n", 2 * tau * 1e6, error);
+    if (previous > 0) {
+      EXPECT_GT(previous / error, 3.2) << "tau = " << tau;
+      EXPECT_LT(previous / error, 4.8) << "tau = " << tau;
+    }
+    previous = error;
+    coarse = fine;
+  }
+}
+
+TEST(Damping, EnergyBalanceClosesWhileContactsOpen) {
+  // F0 = 0.1 N: the kick opens contacts, so the KK damping switches on and off.
+  const Chain chain = fixtures::anderson(101, 0.1);
+  const ForceLaw law = make_force_law(ForceLawKind::hertz, chain);
+  const State s0 = velocity_kick(chain, 50, 8e-3);
+  const double h0 = total_energy(law, chain, s0);
+  for (const Damping damping : {Damping{0.3e-3, 0}, Damping{0, 5e-6}, Damping{1e-3, 5e-6}}) {
+    auto p = make_damped_propagator(law, chain, saba2c(), 0.05e-6, s0, damping);
+    double worst = 0;
+    for (int k = 0; k < 10; ++k) {
+      p->advance(2000);  // 0.1 ms
+      const double h = total_energy(law, chain, p->state());
+      worst = std::max(worst, std::abs(h + p->dissipated_energy() - h0) / h0);
+    }
+    const double lost = p->dissipated_energy() / h0;
+    std::printf("  tau_d = %g s, gamma_KK = %g s: dissipated %.4f of H0, balance error %.2e\n", damping.time,
+                damping.kk_gamma, lost, worst);
+    EXPECT_GT(lost, 0.2);
+    EXPECT_LT(worst, 1e-7);
+  }
+}
+
+TEST(Damping, ZeroDampingLeavesTheVelocitiesAndTheRunUnchanged) {
+  const Chain chain = fixtures::anderson(31, 0.1);
+  State s = velocity_kick(chain, 15, 8e-3);
+  s.u[14] = -2e-7;
+  s.u[15] = 3e-7;  // some bonds open, some closed
+  DampingFlow none(chain, {0, 0});
+  std::vector<double> v = s.v;
+  EXPECT_EQ(none.apply(s.u, v, 1e-6), 0.0);
+  EXPECT_EQ(v, s.v);  // bit for bit
+  // The damped stepper with no damping is the conservative scheme (unmerged, so to rounding).
+  const ForceLaw law = make_force_law(ForceLawKind::hertz, chain);
+  const auto a = fixtures::run(make_damped_propagator(law, chain, saba2c(), 1e-7, s, {}), 2000);
+  const auto b = fixtures::run(make_splitting_propagator(law, chain, saba2c(), 1e-7, s, {false}), 2000);
+  EXPECT_LT(relative_difference(a->displacement(), b->displacement()), 1e-12);
+  EXPECT_EQ(a->dissipated_energy(), 0.0);
+  // And run_spreading without damping takes the conservative path: bit for bit.
+  SpreadingConfig c;
+  c.duration = 0.2e-3;
+  c.time_step = 1e-7;
+  c.dense = {};
+  const SpreadingResult r0 = run_spreading(chain, s, c);
+  c.damping = Damping{0, 0};
+  const SpreadingResult r1 = run_spreading(chain, s, c);
+  EXPECT_EQ(r0.final_state.u, r1.final_state.u);
+  EXPECT_EQ(r0.m2, r1.m2);
+}
+
+TEST(Damping, SpreadingReportsTheDissipatedEnergy) {
+  const Chain chain = fixtures::anderson(101, 1.0);
+  const State s = displacement_kick(chain, 50, 1e-7);
+  SpreadingConfig c;
+  c.duration = 1e-3;
+  c.time_step = 0.1e-6;
+  c.damping = Damping{0.5e-3, 1e-6};
+  const SpreadingResult r = run_spreading(chain, s, c);
+  ASSERT_EQ(r.dissipated.size(), r.t.size());
+  EXPECT_GT(r.dissipated.back() / r.initial_energy, 0.5);
+  EXPECT_LT(r.max_energy_error, 1e-7);  // the balance H + dissipated = H0
+}
+
+TEST(Damping, RejectsNegativeOrNonFiniteParameters) {
+  EXPECT_THROW(validate(Damping{-1, 0}), InvalidInput);
+  EXPECT_THROW(validate(Damping{0, -1}), InvalidInput);
+  EXPECT_THROW(validate(Damping{std::nan(""), 0}), InvalidInput);
+  EXPECT_THROW(validate(Damping{0, INFINITY}), InvalidInput);
+  try {
+    validate(Damping{0, -1});
+  } catch (const InvalidInput& e) {
+    EXPECT_EQ(e.parameter(), "kk_gamma");
+  }
+}
+
+}  // namespace
+}  // namespace granular

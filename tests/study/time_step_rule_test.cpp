@@ -1,0 +1,113 @@
+// The time-step rule: the scheme's stability constant against the leapfrog's known 2 and against
+// the stepper itself (just below it a mode stays bounded, just above it blows up); the frequency
+// bound against the exact spectrum; the paper's defaults keep τ = 1 µs, small ξ does not.
+#include "granular/study/time_step_rule.hpp"
+
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "granular/dynamics/observables.hpp"
+#include "granular/dynamics/propagator.hpp"
+#include "granular/linear/dynamical_matrix.hpp"
+#include "granular/linear/spectrum.hpp"
+#include "granular/model/disorder.hpp"
+#include "granular/study/exponent_table.hpp"
+
+namespace granular {
+namespace {
+
+TEST(TimeStepRule, LeapfrogIsStableUpToTwo) {
+  const SplittingScheme leapfrog{"leapfrog", {0.5, 0.5}, {1}, 0, 2};
+  EXPECT_NEAR(stable_step_limit(leapfrog), 2.0, 1e-9);
+}
+
+// Two equal beads between spherical walls of the same bond, linear law: ω² ∈ {k/m, 3k/m}; the
+// fast mode is (1, −1)/√2.
+Chain two_beads() {
+  ChainSpec spec;
+  spec.radii = {4.76e-3, 4.76e-3};
+  spec.materials = {steel};
+  spec.left_wall.radius = spec.right_wall.radius = 4.76e-3;
+  spec.precompression = 10;
+  return make_chain(spec);
+}
+
+// The stepper itself, one step on the fast mode from (x, v/ω) = (1, 0) and (0, 1): the trace of
+// the map it applies equals the formula's, for every scheme, at several h.
+TEST(TimeStepRule, TheTraceIsTheSteppersOwn) {
+  const Chain chain = two_beads();
+  const ForceLaw law = make_force_law(ForceLawKind::linear, chain);
+  const double omega = std::sqrt(3 * linear_stiffness(chain)[1] / chain.mass[0]);
+  const double a = 1e-9 / std::sqrt(2.0);
+  for (const auto& scheme : {saba2c(), saba2(), aba864(), srkn14a()})
+    for (double h : {0.3, 1.0, 2.0, 2.7}) {
+      double trace = 0;
+      for (int column = 0; column < 2; ++column) {
+        State s(2);
+        if (column == 0) s.u = {a, -a};
+        else s.v = {a * omega, -a * omega};
+        auto p = make_splitting_propagator(law, chain, scheme, h / omega, s, ActiveWindow{false});
+        p->advance(1);
+        const State after = p->state();
+        const double x = (after.u[0] - after.u[1]) / (2 * a), y = (after.v[0] - after.v[1]) / (2 * a * omega);
+        trace += column == 0 ? x : y;
+      }
+      EXPECT_NEAR(trace, step_trace(scheme, h), 1e-9) << scheme.name << " h " << h;
+    }
+}
+
+// h*: stable on all of (0, h*], unstable just past it; and on SABA2C, the stepper blows up 2 % past it.
+TEST(TimeStepRule, TheLimitIsTheFirstInstability) {
+  for (const auto& scheme : {saba2c(), saba2(), aba864(), srkn14a()}) {
+    const double h = stable_step_limit(scheme);
+    EXPECT_GT(h, 0.5) << scheme.name;
+    for (double x = 1e-3; x < h; x += 1e-3) ASSERT_LE(std::fabs(step_trace(scheme, x)), 2) << scheme.name << " " << x;
+    EXPECT_GT(std::fabs(step_trace(scheme, h * (1 + 1e-9))), 2) << scheme.name;
+  }
+  const Chain chain = two_beads();
+  const ForceLaw law = make_force_law(ForceLawKind::linear, chain);
+  const double omega = std::sqrt(3 * linear_stiffness(chain)[1] / chain.mass[0]);
+  State fast(2);
+  fast.u = {1e-9, -1e-9};
+  const double energy0 = total_energy(law, chain, fast), h = stable_step_limit(saba2c());
+  for (const auto& [factor, stable] : {std::pair{0.98, true}, std::pair{1.02, false}}) {
+    auto p = make_splitting_propagator(law, chain, saba2c(), factor * h / omega, fast, ActiveWindow{false});
+    p->advance(20000);
+    const double growth = total_energy(law, chain, p->state()) / energy0;
+    EXPECT_EQ(growth < 10, stable) << factor << " h*: energy grew " << growth << "-fold";
+  }
+}
+
+TEST(TimeStepRule, FrequencyBoundHoldsAndIsNotFarAbove) {
+  for (double xi : {0.1, 0.5, 1.0}) {
+    const Chain chain =
+        make_chain(radii_of(realization_configuration(Disorder::anderson, 0.5, 200, 1, 0), 4.76e-3, xi), 10.0);
+    const double exact = std::sqrt(spectrum(dynamical_matrix(chain)).omega2.back());
+    const double bound = highest_frequency_bound(make_force_law(ForceLawKind::hertz, chain), chain, 1e-15);
+    EXPECT_GE(bound, exact) << "xi " << xi;
+    EXPECT_LT(bound, 1.5 * exact) << "xi " << xi;
+  }
+}
+
+TEST(TimeStepRule, ThePapersCasesKeepOneMicrosecondSmallXiDoesNot) {
+  const ExponentTableConfig paper;  // h, A, RDM1, RDM2 × F0 10 … 0 × both kicks, ξ = q = 0.5
+  for (const TransportCase& c : exponent_cases(paper)) {
+    const TimeStepLimit limit = time_step_limit(c);
+    EXPECT_EQ(default_time_step(limit), 1e-6) << to_string(c.disorder) << " F0 " << c.precompression;
+    EXPECT_GT(limit.max_time_step, default_step_margin * 1e-6);
+  }
+  TransportCase small;
+  small.xi = 0.05;
+  const TimeStepLimit limit = time_step_limit(small);
+  EXPECT_LT(limit.max_time_step, 1e-6);
+  const double tau = default_time_step(limit), bound = limit.max_time_step / default_step_margin;
+  EXPECT_LE(tau, bound);
+  EXPECT_GT(tau * (1 + 1e-12), 1e-6 / std::ceil(1e-6 / bound));
+  EXPECT_NEAR(1e-6 / tau, std::round(1e-6 / tau), 1e-9);
+  small.dynamics.time_step = 1e-6;
+  EXPECT_THROW(check_time_step(small, limit), InvalidInput);
+}
+
+}  // namespace
+}  // namespace granular

@@ -1,0 +1,122 @@
+// Failures a user can act on (issue 15): a realization that fails stops the ensemble with a
+// command that replays exactly that realization (running it gives the same failure), every
+// realization finished before it stays in the checkpoint, and --skip-failed goes on without it,
+// saying so in the JSON and the final line; the means are those of the realizations kept.
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "process_control.hpp"
+#include "tool_runner.hpp"
+
+namespace granular::testing {
+namespace {
+
+// A coarse step: the energy error differs from chain to chain, so a guard between the worst
+// realization's error and the next one's stops exactly one realization.
+const std::string chain = "--disorder A --xi 0.5 --q 0.5 --N 101 --F0 0.01 --ic velocity --seed 3";
+const std::string dynamics = "--T 1e-3 --dt 2e-6 --fit 4e-4:1e-3 --samples 30 --bootstrap 50";
+constexpr int realizations = 6;
+
+std::string line_after(const std::string& text, const std::string& marker) {
+  const auto at = text.find(marker);
+  if (at == std::string::npos) return "";
+  const auto begin = at + marker.size();
+  return text.substr(begin, text.find('\n', begin) - begin);
+}
+
+std::vector<double> column(const std::string& csv_path, std::size_t index) {
+  std::ifstream in(csv_path);
+  std::string line;
+  std::getline(in, line);
+  std::vector<double> values;
+  while (std::getline(in, line)) {
+    std::stringstream fields(line);
+    std::string cell;
+    for (std::size_t i = 0; i <= index; ++i) std::getline(fields, cell, ',');
+    values.push_back(std::stod(cell));
+  }
+  return values;
+}
+
+TEST(FailureReplay, TheReplayCommandReproducesTheFailureAndSkipFailedGoesOn) {
+  const std::string dir = scratch_folder("replay");
+  // Each realization alone, the guard only watching: its largest energy error.
+  std::vector<double> worst;
+  for (int r = 0; r < realizations; ++r) {
+    const std::string prefix = dir + "/single" + std::to_string(r);
+    const ToolResult one = run_tool("spreading", chain + " " + dynamics + " --realization " + std::to_string(r) +
+                                                     " --energy-guard warn --quiet --output " + prefix);
+    ASSERT_EQ(one.exit_code, 0) << one.err;
+    worst.push_back(nlohmann::json::parse(read_file(prefix + ".json"))["run"]["max_energy_error"].get<double>());
+  }
+  std::vector<double> sorted = worst;
+  std::sort(sorted.begin(), sorted.end());
+  ASSERT_GT(sorted[realizations - 1], 1.2 * sorted[realizations - 2]) << "no realization stands out; change the case";
+  const double guard = std::sqrt(sorted[realizations - 1] * sorted[realizations - 2]);
+  const auto failing = static_cast<long>(std::max_element(worst.begin(), worst.end()) - worst.begin());
+  char guard_text[32];
+  std::snprintf(guard_text, sizeof guard_text, "%.6g", guard);
+
+  const std::string ensemble = chain + " " + dynamics + " --realizations " + std::to_string(realizations) +
+                               " --threads 1 --max-energy-error " + guard_text + " --output " + dir + "/ens";
+  const ToolResult stopped = run_tool("spreading", ensemble);
+  ASSERT_EQ(stopped.exit_code, 3) << stopped.err;
+  EXPECT_NE(stopped.err.find("realization " + std::to_string(failing) + " of seed 3"), std::string::npos) << stopped.err;
+  EXPECT_FALSE(std::filesystem::exists(dir + "/ens.csv"));
+  EXPECT_EQ(checkpoint_records(dir + "/ens.checkpoint"), failing) << "every realization before it is kept";
+
+  // What it prints reproduces the failure: the same cause, at the same time, with the same error.
+  const std::string replay = line_after(stopped.err, "replay it alone: ");
+  ASSERT_FALSE(replay.empty()) << stopped.err;
+  const std::string cause = line_after(stopped.err, "of seed 3: ");
+  ASSERT_NE(cause.find("relative energy error"), std::string::npos) << stopped.err;
+  const ToolResult replayed = run_printed(dir, replay);
+  EXPECT_EQ(replayed.exit_code, 3) << replay << "\n" << replayed.err;
+  EXPECT_EQ(line_after(replayed.err, "numerical failure: "), cause) << replay << "\n" << replayed.err;
+
+  // exponents on the same case stops at the same realization with the same replay command.
+  const ToolResult table =
+      run_tool("exponents", "--chains A --xi 0.5 --q 0.5 --N 101 --F0 0.01 --ic velocity --seed 3 " + dynamics +
+                                " --realizations 6 --threads 1 --profile-F0 none --max-energy-error " + guard_text +
+                                " --quiet --output " + dir + "/table");
+  EXPECT_EQ(table.exit_code, 3) << table.err;
+  EXPECT_EQ(line_after(table.err, "replay it alone: "), replay);
+
+  // Going on without it: the printed command, run as printed.
+  const std::string go_on = line_after(stopped.err, "to go on without this one: ");
+  ASSERT_NE(go_on.find("--resume"), std::string::npos) << stopped.err;
+  ASSERT_NE(go_on.find("--skip-failed"), std::string::npos) << stopped.err;
+  const ToolResult skipped = run_printed(dir, go_on);
+  ASSERT_EQ(skipped.exit_code, 0) << go_on << "\n" << skipped.err;
+  EXPECT_NE(skipped.err.find("realization " + std::to_string(failing) + " failed and is left out"), std::string::npos)
+      << skipped.err;
+  EXPECT_NE(skipped.err.find("1 failed realization(s) of 6 left out"), std::string::npos)
+      << "the final line must say it: " << skipped.err;
+  const auto meta = nlohmann::json::parse(read_file(dir + "/ens.json"));
+  EXPECT_EQ(meta["ensemble"]["failed_excluded"], nlohmann::json::array({failing}));
+  EXPECT_EQ(meta["ensemble"]["realizations"], realizations - 1);
+
+  // The means are those of the five realizations kept (each run alone above).
+  const std::vector<double> mean = column(dir + "/ens.csv", 1);
+  std::vector<double> expected(mean.size(), 0.0);
+  for (int r = 0; r < realizations; ++r) {
+    if (r == failing) continue;
+    const std::vector<double> m2 = column(dir + "/single" + std::to_string(r) + ".csv", 1);
+    ASSERT_EQ(m2.size(), mean.size());
+    for (std::size_t i = 0; i < m2.size(); ++i) expected[i] += m2[i] / (realizations - 1);
+  }
+  for (std::size_t i = 0; i < mean.size(); ++i)
+    EXPECT_NEAR(mean[i], expected[i], 1e-12 * std::fabs(expected[i])) << "sample " << i;
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace granular::testing

@@ -1,0 +1,134 @@
+// Runs that meet on one output prefix, with real processes: a second writer is refused while
+// the first runs (naming it) and the first's outputs stay those of an undisturbed run; Ctrl-C stops
+// an ensemble cleanly and prints the command that resumes it; a rerun without --resume refuses to
+// discard a checkpoint unless --fresh says so.
+#include <signal.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "process_control.hpp"
+#include "tool_runner.hpp"
+
+namespace granular::testing {
+namespace {
+
+const std::string exponents_job =
+    "--N 201 --T 1e-3 --fit 4e-4:1e-3 --samples 30 --F0 10,0.1 --chains h,A,RDM2 --bootstrap 200 --realizations 40 "
+    "--threads 2 --quiet";
+const std::string spreading_job =
+    "--disorder A --N 201 --T 1e-3 --fit 4e-4:1e-3 --samples 30 --F0 0.1 --realizations 60 --bootstrap 100 "
+    "--threads 2";
+
+std::string exponents_outputs(const std::string& prefix) {
+  return read_file(prefix + ".csv") + read_file(prefix + "-curves.csv") + read_file(prefix + "-profiles.csv");
+}
+
+std::string spreading_outputs(const std::string& prefix) {
+  return read_file(prefix + ".csv") + read_file(prefix + "-sem.csv");
+}
+
+TEST(OutputClaim, ASecondWriterIsRefusedNamingTheFirst) {
+  const std::string dir = scratch_folder("claim-two");
+  ASSERT_EQ(run_tool("exponents", exponents_job + " --output " + dir + "/whole").exit_code, 0);
+  const std::string prefix = dir + "/p";
+  const pid_t first =
+      spawn("exec '" + tool_path("exponents") + "' " + exponents_job + " --output " + prefix + " >/dev/null 2>&1");
+  const std::string holder = "process " + std::to_string(first);
+  ASSERT_TRUE(eventually([&] { return read_file(prefix + ".lock").find(holder) != std::string::npos; }))
+      << "the first run never took " << prefix << ".lock";
+  for (const std::string tool : {"exponents", "spreading"}) {  // any tool writing that prefix
+    const ToolResult second =
+        run_tool(tool, (tool == "exponents" ? exponents_job : spreading_job) + " --output " + prefix);
+    EXPECT_EQ(second.exit_code, 2) << second.err;
+    EXPECT_NE(second.err.find("is being written by " + holder), std::string::npos) << second.err;
+    EXPECT_NE(second.err.find("exponents"), std::string::npos) << "the holder's command: " << second.err;
+    EXPECT_NE(second.err.find("--output"), std::string::npos) << second.err;
+  }
+  const Ended end = wait_for(first);
+  ASSERT_FALSE(end.signalled);
+  EXPECT_EQ(end.code, 0);
+  EXPECT_EQ(exponents_outputs(prefix), exponents_outputs(dir + "/whole")) << "the first run's outputs were disturbed";
+  EXPECT_FALSE(std::filesystem::exists(prefix + ".lock")) << "a finished run removes its lock";
+  std::filesystem::remove_all(dir);
+}
+
+TEST(OutputClaim, EveryToolLocksItsPrefix) {
+  const std::string dir = scratch_folder("claim-all");
+  // A holder that would run for long: it is killed once the others have been refused.
+  std::string long_job = exponents_job;
+  long_job.replace(long_job.find("--realizations 40"), 17, "--realizations 400");
+  const pid_t holder =
+      spawn("exec '" + tool_path("exponents") + "' " + long_job + " --output " + dir + "/x >/dev/null 2>&1");
+  ASSERT_TRUE(eventually([&] { return std::filesystem::exists(dir + "/x.lock"); }));
+  for (const auto& [tool, args] : {std::pair<std::string, std::string>{"ipr-map", "--N 20 --xi 0.5 --q 0.5"},
+                                   {"correlations", "--N 20 --realizations 2"},
+                                   {"spectrum", "--N 20"},
+                                   {"localization", "--N 100 --f 1:2:1"}}) {
+    const std::string out = tool == "localization" ? dir + "/x" : dir + "/x.csv";
+    const ToolResult r = run_tool(tool, args + " --output " + out);
+    EXPECT_EQ(r.exit_code, 2) << tool << ": " << r.err;
+    EXPECT_NE(r.err.find("is being written by process " + std::to_string(holder)), std::string::npos)
+        << tool << ": " << r.err;
+  }
+  kill(holder, SIGKILL);
+  wait_for(holder);
+  // A killed holder leaves its lock file, but not its lock: the next run goes ahead.
+  EXPECT_TRUE(std::filesystem::exists(dir + "/x.lock"));
+  const ToolResult after = run_tool("spectrum", "--N 20 --output " + dir + "/x.csv");
+  EXPECT_EQ(after.exit_code, 0) << after.err;
+  std::filesystem::remove_all(dir);
+}
+
+TEST(Interrupt, CtrlCStopsCleanlyPrintsTheResumeCommandAndKeepsTheCheckpoint) {
+  const std::string dir = scratch_folder("ctrl-c");
+  ASSERT_EQ(run_tool("spreading", spreading_job + " --quiet --output " + dir + "/whole").exit_code, 0);
+  // A space in the prefix: the command printed must quote it for the shell.
+  const std::string prefix = dir + "/cut here", checkpoint = prefix + ".checkpoint", quoted = "'" + prefix + "'";
+  const pid_t run = spawn("exec '" + tool_path("spreading") + "' " + spreading_job + " --output " + quoted +
+                          " >/dev/null 2>" + quoted + ".err");
+  ASSERT_TRUE(eventually([&] { return checkpoint_records(checkpoint) >= 5; })) << "no realization was logged";
+  kill(run, SIGINT);
+  const Ended end = wait_for(run);
+  ASSERT_FALSE(end.signalled) << "Ctrl-C must stop the run cleanly, not kill it";
+  ASSERT_EQ(end.code, 130) << read_file(prefix + ".err");
+  EXPECT_FALSE(std::filesystem::exists(prefix + ".csv")) << "an interrupted run writes no output";
+  const long saved = checkpoint_records(checkpoint);
+  ASSERT_GE(saved, 5);
+  ASSERT_LT(saved, 60) << "the run finished before the interrupt; make it longer";
+  std::string err = read_file(prefix + ".err");
+  while (!err.empty() && err.back() == '\n') err.pop_back();
+  const std::string command = err.substr(err.rfind('\n') + 1);
+  EXPECT_NE(err.find("To continue"), std::string::npos) << err;
+  const std::string expected = tool_path("spreading") + " " + spreading_job + " --output " + quoted + " --resume";
+  EXPECT_EQ(command, expected) << "the original command, shell-quoted, with --resume: " << err;
+
+  // A rerun without --resume refuses to discard the finished realizations.
+  const std::string kept = read_file(checkpoint);
+  const ToolResult again = run_tool("spreading", spreading_job + " --quiet --output " + quoted);
+  EXPECT_EQ(again.exit_code, 2) << again.err;
+  EXPECT_NE(again.err.find("--resume"), std::string::npos) << again.err;
+  EXPECT_NE(again.err.find("--fresh"), std::string::npos) << again.err;
+  EXPECT_EQ(read_file(checkpoint), kept) << "a refused run must leave the checkpoint alone";
+  EXPECT_FALSE(std::filesystem::exists(prefix + ".csv"));
+
+  // The printed command, pasted into a shell, finishes the run as if it had never stopped.
+  const ToolResult resumed = run_printed(dir, command);
+  ASSERT_EQ(resumed.exit_code, 0) << command << "\n" << resumed.err;
+  EXPECT_EQ(spreading_outputs(prefix), spreading_outputs(dir + "/whole"));
+  EXPECT_FALSE(std::filesystem::exists(checkpoint));
+
+  // --fresh discards a checkpoint (here: the interrupted run's, put back) and starts again.
+  { std::ofstream(checkpoint) << kept; }
+  const ToolResult fresh = run_tool("spreading", spreading_job + " --quiet --fresh --output " + quoted);
+  EXPECT_EQ(fresh.exit_code, 0) << fresh.err;
+  EXPECT_EQ(spreading_outputs(prefix), spreading_outputs(dir + "/whole"));
+  EXPECT_EQ(run_tool("spreading", spreading_job + " --resume --fresh --output " + dir + "/y").exit_code, 2);
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace granular::testing

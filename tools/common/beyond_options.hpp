@@ -1,0 +1,52 @@
+#pragma once
+// Options beyond the paper (SPEC §4, issue 14): dissipation (both `spreading` and `exponents`)
+// and the maximal Lyapunov exponent by the tangent map (`spreading --mle`). Library messages
+// name `damping_time`, `kk_gamma`, `deviation_samples`; tool::run tells them as these flags.
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "granular/dynamics/spreading.hpp"
+#include "granular/error.hpp"
+
+namespace granular::tool {
+
+struct BeyondOptions {
+  double damping_time = 0, kk_gamma = 0;
+  bool mle = false;
+  long long renormalize = 10, deviation_samples = 20;
+  std::string deviation;  ///< CSV of the deviation-vector distribution; empty = none
+};
+
+inline void add_damping_options(CLI::App& app, BeyondOptions& o) {
+  app.add_option("--damping-time", o.damping_time,
+                 "on-site viscous damping time tau_d [s] of -(m/tau_d) du/dt; 0 = none")
+      ->capture_default_str();
+  app.add_option(
+         "--kk-gamma", o.kk_gamma,
+         "Kuwabara-Kono contact damping gamma_KK [s]: bond force A[d]^{3/2} + gamma A [d]^{1/2} dd/dt; 0 = none")
+      ->capture_default_str();
+}
+
+inline void add_lyapunov_options(CLI::App& app, BeyondOptions& o) {
+  app.add_flag("--mle", o.mle,
+               "maximal Lyapunov exponent by the tangent map: column mle = X1(t) [1/s] (ensemble: its mean)");
+  app.add_option("--renormalize", o.renormalize, "steps between renormalizations of the deviation vector")
+      ->capture_default_str();
+  app.add_option("--deviation", o.deviation, "CSV t,site,share: the deviation vector along the chain (with --mle)");
+  app.add_option("--deviation-samples", o.deviation_samples, "uniform times of --deviation")->capture_default_str();
+}
+
+inline void apply(const BeyondOptions& o, SpreadingConfig& d) {
+  d.damping = {o.damping_time, o.kk_gamma};
+  validate(d.damping);
+  d.lyapunov.enabled = o.mle;
+  if (o.renormalize < 1) throw InvalidInput("--renormalize " + std::to_string(o.renormalize) + ": at least 1");
+  d.lyapunov.renormalize_every = static_cast<std::size_t>(o.renormalize);
+  if (!o.deviation.empty() && !o.mle) throw InvalidInput("--deviation: needs --mle");
+  if (o.deviation_samples < 2)
+    throw InvalidInput("--deviation-samples " + std::to_string(o.deviation_samples) + ": at least 2");
+  d.deviation_samples = o.deviation.empty() ? 0 : static_cast<std::size_t>(o.deviation_samples);
+}
+
+}  // namespace granular::tool

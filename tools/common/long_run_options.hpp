@@ -1,0 +1,135 @@
+#pragma once
+// How an ensemble of kicked chains runs, shared by `spreading --realizations` and `exponents`:
+// threads, checkpoint and resume (--resume continues, --fresh discards), what a failing
+// realization does (stop with the command that replays it alone, or --skip-failed: leave it out,
+// say so everywhere), and Ctrl-C as a clean stop that prints the command resuming the run.
+#include <cstdint>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "granular/ensemble/run_options.hpp"
+#include "granular/number_format.hpp"
+#include "granular/study/transport_study.hpp"
+#include "metadata.hpp"
+#include "output_claim.hpp"
+#include "tool_main.hpp"
+
+namespace granular::tool {
+
+struct LongRunOptions {
+  int threads = 0;
+  bool resume = false, fresh = false, skip_failed = false, quiet = false;
+  CheckpointPolicy checkpoints() const { return {resume, fresh}; }
+};
+
+inline void add_long_run_options(CLI::App& app, LongRunOptions& o) {
+  app.add_option("--threads", o.threads, "threads per process (0 = all cores); results do not depend on it")
+      ->capture_default_str();
+  app.add_flag("--resume", o.resume,
+               "continue an interrupted run (same parameters) from its checkpoint PREFIX.checkpoint*");
+  app.add_flag("--fresh", o.fresh, "discard the checkpoint of an interrupted run on PREFIX and start again");
+  app.add_flag("--skip-failed", o.skip_failed,
+               "leave a realization that fails numerically out of the means (counted in the JSON and the last "
+               "line) instead of stopping at it");
+  app.add_flag("--quiet", o.quiet, "no warnings, progress or final line on stderr");
+}
+
+/// The library's run options for a checkpointed run: Ctrl-C stops it cleanly from here on.
+inline RunOptions run_options(const LongRunOptions& o, const std::string& checkpoint, ProgressMeter* progress,
+                              const std::string& tool) {
+  RunOptions run;
+  run.threads = o.threads;
+  run.checkpoint = checkpoint;
+  run.resume = o.resume;
+  run.progress = progress;
+  run.cancelled = stop_on_interrupt(tool);
+  run.skip_failed = o.skip_failed;
+  return run;
+}
+
+/// The `spreading` command that computes realization `r` of case `c` alone, every parameter
+/// spelled out (in shortest round-trip form), so it meets exactly what the ensemble met.
+/// `argv0` (how this tool was called) says where `spreading` is.
+inline std::string replay_command(const TransportCase& c, std::uint64_t r, const std::string& argv0) {
+  const auto slash = argv0.rfind('/');
+  std::string command =
+      Metadata::shell_quote((slash == std::string::npos ? "" : argv0.substr(0, slash + 1)) + "spreading");
+  const auto add = [&](const std::string& flag, const std::string& value) { command += " " + flag + " " + value; };
+  const auto number = [](double x) { return format_number(x); };
+  const SpreadingConfig& d = c.dynamics;
+  add("--disorder", to_string(c.disorder));
+  add("--q", number(c.q));
+  add("--xi", number(c.xi));
+  add("--N", std::to_string(c.n));
+  add("--F0", number(c.precompression));
+  add("--R1", number(c.r1));
+  add("--seed", std::to_string(c.seed));
+  add("--realization", std::to_string(r));
+  add("--ic", to_string(c.kick));
+  add("--alpha", number(c.alpha));
+  if (c.kick == Kick::velocity) add("--beta", c.match_beta ? "match" : number(c.beta));
+  add("--site", std::to_string(c.site + 1));
+  add("--centre", to_string(c.centre));
+  add("--T", number(d.duration));
+  add("--dt", number(d.time_step));
+  add("--integrator", d.integrator);
+  add("--force-law", to_string(d.force_law));
+  add("--samples", std::to_string(d.samples));
+  add("--sampling", d.sampling == Sampling::logarithmic ? "log" : "uniform");
+  add("--fit", number(c.fit_begin) + ":" + number(c.fit_end));
+  add("--fit-step", number(c.fit_step));
+  add("--t-star", number(c.criterion.t_start));
+  add("--kappa", number(c.criterion.kappa));
+  add("--bootstrap", std::to_string(c.bootstrap.resamples));
+  add("--active-window", d.window.enabled ? "on" : "off");
+  add("--window-threshold", number(d.window.threshold));
+  add("--reference-max-step", number(d.reference.max_step));
+  add("--max-energy-error", number(d.max_energy_error));
+  add("--energy-guard", d.stop_on_energy_error ? "stop" : "warn");
+  return command + " --output replay-" + std::to_string(r);
+}
+
+/// Runs `study` (a call of run_transport_study or run_exponent_table); a realization failing in
+/// it becomes a message that says how to replay it alone and how to go on without it (the
+/// realizations finished before it are in the checkpoint).
+template <class Study>
+auto replaying_failures(const Study& study, int argc, char** argv) -> decltype(study()) {
+  try {
+    return study();
+  } catch (const RealizationFailed& e) {
+    std::string go_on = resume_command(argc, argv);
+    if (go_on.find(" --skip-failed") == std::string::npos) go_on += " --skip-failed";
+    throw NumericalError(std::string(e.what()) +
+                         "\n  replay it alone: " + replay_command(e.failed_case, e.realization, argv[0]) +
+                         "\n  the realizations finished are kept; to go on without this one: " + go_on);
+  }
+}
+
+/// Runs the ensemble of `c` (under mpirun rank 0 alone gets the summary) with a progress line,
+/// Ctrl-C as a clean stop, and failures told with their replay command.
+inline TransportSummary run_ensemble(const TransportCase& c, const LongRunOptions& o, const std::string& checkpoint,
+                                     const char* tool, int argc, char** argv) {
+  ProgressMeter progress(c.realizations, tool, o.quiet || !MpiContext::instance().root() ? 0 : -1);
+  const RunOptions options = run_options(o, checkpoint, &progress, tool);
+  TransportSummary summary = replaying_failures([&] { return run_transport_study(c, options); }, argc, argv);
+  progress.finish();
+  return summary;
+}
+
+/// Says which realizations of `c` were left out (--skip-failed): a line on stderr for each, with
+/// its replay command (unless quiet), and a note on the final line. Returns them for the JSON.
+inline nlohmann::json report_excluded(const TransportCase& c, const TransportSummary& s, Metadata& meta,
+                                      const LongRunOptions& o, const char* tool, const std::string& argv0) {
+  for (std::uint64_t r : o.quiet ? std::vector<std::uint64_t>{} : s.excluded)
+    std::fprintf(stderr, "%s: realization %llu failed and is left out (--skip-failed); replay: %s\n", tool,
+                 static_cast<unsigned long long>(r), replay_command(c, r, argv0).c_str());
+  if (!s.excluded.empty())
+    meta.note(std::to_string(s.excluded.size()) + " failed realization(s) of " + std::to_string(c.realizations) +
+              " left out");
+  return s.excluded;
+}
+
+}  // namespace granular::tool

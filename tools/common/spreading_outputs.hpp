@@ -1,0 +1,86 @@
+#pragma once
+// The optional outputs of `spreading` beyond PREFIX.csv: the final state, the profile, force
+// series, the energy map (HDF5) and the spectral density g(ν), with their sampling options.
+#include <functional>
+#include <ostream>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "granular/error.hpp"
+#include "granular/io/hdf5_file.hpp"
+#include "granular/io/range_syntax.hpp"
+#include "granular/study/spreading_files.hpp"
+#include "granular/study/transport_study.hpp"
+#include "metadata.hpp"
+
+namespace granular::tool {
+
+struct SpreadingOutputs {
+  std::string final_state, forces_at, energy_map, spectrum, spectrum_of = "displacement";
+  long long force_samples = 1000, map_samples = 500, map_stride = 1, spectrum_samples = 2000;
+  bool profile = false;
+  /// Outputs that describe one realization (--realization), computed even beside an ensemble.
+  bool single() const { return !final_state.empty() || !forces_at.empty() || !energy_map.empty() || !spectrum.empty(); }
+};
+
+inline void add_spreading_outputs(CLI::App& app, SpreadingOutputs& o) {
+  app.add_option("--final-state", o.final_state, "CSV of site,u,v,energy at T");
+  app.add_flag("--profile", o.profile,
+               "also write PREFIX-profile.csv: site,energy,force at T (ensemble: site,energy,energy_se)");
+  app.add_option("--forces-at", o.forces_at,
+                 "beads (e.g. 601,631,661) whose force goes to PREFIX-forces.csv: t,site,force");
+  app.add_option("--force-samples", o.force_samples, "uniform times of the force series")->capture_default_str();
+  app.add_option("--energy-map", o.energy_map, "HDF5 file of E_n(t_k): datasets energy [time][column], t, site");
+  app.add_option("--map-samples", o.map_samples, "uniform times of the energy map")->capture_default_str();
+  app.add_option("--map-stride", o.map_stride, "beads summed into one map column")->capture_default_str();
+  app.add_option("--spectrum", o.spectrum, "CSV of the spectral density: freq_khz,g");
+  app.add_option("--spectrum-samples", o.spectrum_samples, "uniform samples of the series for the spectral density")
+      ->capture_default_str();
+  app.add_option("--spectrum-of", o.spectrum_of,
+                 "displacement (the paper's g) | velocity (a permanent step in u adds a flat floor, not a 1/nu^2 tail)")
+      ->capture_default_str();
+}
+
+/// Checks the options and sets what they ask of c's dynamics (needs c.n).
+inline void apply(const SpreadingOutputs& o, TransportCase& c) {
+  for (auto [name, value] : {std::pair{"--force-samples", o.force_samples},
+                             {"--map-samples", o.map_samples},
+                             {"--map-stride", o.map_stride},
+                             {"--spectrum-samples", o.spectrum_samples}})
+    if (value < 1) throw InvalidInput(std::string(name) + " " + std::to_string(value) + ": must be >= 1");
+  SpreadingConfig& d = c.dynamics;
+  for (long s : o.forces_at.empty() ? std::vector<long>{} : parse_integer_list(o.forces_at, "--forces-at")) {
+    if (s < 1 || static_cast<std::size_t>(s) > c.n)
+      throw InvalidInput("--forces-at " + std::to_string(s) + ": outside the chain of " + std::to_string(c.n) +
+                         " beads");
+    d.force_sites.push_back(static_cast<std::size_t>(s - 1));
+  }
+  d.force_samples = static_cast<std::size_t>(o.force_samples);
+  d.map_samples = o.energy_map.empty() ? 0 : static_cast<std::size_t>(o.map_samples);
+  d.map_stride = static_cast<std::size_t>(o.map_stride);
+  d.spectrum_samples = o.spectrum.empty() ? 0 : static_cast<std::size_t>(o.spectrum_samples);
+  d.spectrum_source = parse_spectrum_source(o.spectrum_of);
+}
+
+/// Writes the outputs named by their own options (final state, g(ν), energy map) of run `r`:
+/// the CSVs through `open` (committed with the rest), the HDF5 map atomically at once.
+inline void write_single(const SpreadingOutputs& o, const SpreadingResult& r, const SpreadingConfig& d,
+                         const std::function<std::ostream&(const std::string&)>& open, Metadata& meta) {
+  if (!o.final_state.empty()) write_final_state_csv(open(o.final_state), r);
+  if (!o.spectrum.empty()) {
+    write_spectrum_csv(open(o.spectrum), r);
+    meta["spectrum"] = {{"file", o.spectrum}, {"of", to_string(d.spectrum_source)}, {"samples", o.spectrum_samples}};
+  }
+  if (!o.energy_map.empty()) {
+    std::vector<double> sites;
+    for (std::size_t k = 0; k < r.map_columns; ++k) sites.push_back(static_cast<double>(k * d.map_stride + 1));
+    write_hdf5_atomically(o.energy_map, {{"energy", {r.map_t.size(), r.map_columns}, r.map_energy.data()},
+                                         {"t", {r.map_t.size()}, r.map_t.data()},
+                                         {"site", {sites.size()}, sites.data()}});
+  }
+}
+
+}  // namespace granular::tool
