@@ -86,7 +86,7 @@ int main(int argc, char** argv) {
                      tool::apply(dynamics, base);
                      std::vector<TransportCase> cases = exponent_cases(config);
                      for (const auto& c : cases) validate(c);
-                     const nlohmann::json step_rule = tool::settle_time_step(cases, app.count("--dt") > 0);
+                     const nlohmann::json step_rule = settle_time_step(cases, app.count("--dt") > 0);
                      base.dynamics.time_step = cases.front().dynamics.time_step;
                      if (compare) paper = read_paper_table(paper_table);
                      if (compare) paths.push_back(output + "-paper.csv");

@@ -73,7 +73,7 @@ int main(int argc, char** argv) {
         validate(c);  // then τ by the stability rule (of this very chain when it comes from a file)
         const bool from_file = !chain_options.config.empty() || !chain_options.radii.empty();
         const nlohmann::json step_rule =
-            tool::settle_time_step(c, app.count("--dt") > 0, from_file ? &selected.chain : nullptr);
+            settle_time_step(c, app.count("--dt") > 0, from_file ? &selected.chain : nullptr);
         const std::string csv_path = output + ".csv", json_path = output + ".json", sem_path = output + "-sem.csv";
         const std::string profile_path = more.profile ? output + "-profile.csv" : "",
                           checkpoint = output + ".checkpoint";
@@ -138,5 +138,8 @@ int main(int argc, char** argv) {
         for (auto& f : files) f->commit();
         if (ensemble) CheckpointLog::remove_all(checkpoint);
       },
-      {{"spectrum_source", "--spectrum-of"}, {"lyapunov", "--mle"}, {"near_khz", "--mode-khz"}, {"amplitude", "--alpha"}});
+      {{"spectrum_source", "--spectrum-of"},
+       {"lyapunov", "--mle"},
+       {"near_khz", "--mode-khz"},
+       {"amplitude", "--alpha"}});
 }

@@ -87,34 +87,6 @@ inline void apply(const DynamicsOptions& o, TransportCase& c) {
   apply(o.beyond, c.dynamics);
 }
 
-/// Settles the time step of `cases` (validated) by the stability rule (time_step_rule.hpp): a
-/// --dt given past the limit of any case is refused naming the largest stable τ; the default
-/// 1 µs becomes 1 µs/k where it is past it. One τ for all of them. `chain`: the chain of a single
-/// case from a file (else every realization counts). Returns the rule and its numbers for the JSON.
-inline nlohmann::json settle_time_step(std::vector<TransportCase>& cases, bool dt_given, const Chain* chain = nullptr) {
-  TimeStepLimit tightest;
-  for (const TransportCase& c : cases) {
-    const TimeStepLimit limit = time_step_limit(c, chain);
-    if (limit.max_time_step < tightest.max_time_step) tightest = limit;
-    if (dt_given) check_time_step(c, limit);
-  }
-  const double tau = dt_given || cases.empty() ? 0 : default_time_step(tightest, cases.front().dynamics.time_step);
-  for (TransportCase& c : cases)
-    if (!dt_given) c.dynamics.time_step = tau;
-  nlohmann::json rule = to_json(tightest);
-  if (!cases.empty()) rule["time_step_s"] = cases.front().dynamics.time_step;
-  rule["time_step_given"] = dt_given;
-  return rule;
-}
-
-/// The same for one case.
-inline nlohmann::json settle_time_step(TransportCase& c, bool dt_given, const Chain* chain = nullptr) {
-  std::vector<TransportCase> one{c};
-  const nlohmann::json rule = settle_time_step(one, dt_given, chain);
-  c = one.front();
-  return rule;
-}
-
 /// The chain of a case from the single-chain options (the chain built from them has `beads`).
 inline void apply(const ChainOptions& o, std::size_t beads, TransportCase& c) {
   c.disorder = parse_disorder(o.disorder);
