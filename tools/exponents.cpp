@@ -6,6 +6,7 @@
 
 #include "common/dynamics_options.hpp"
 #include "common/long_run_options.hpp"
+#include "common/long_time_options.hpp"
 #include "common/metadata.hpp"
 #include "common/tool_main.hpp"
 #include "granular/ensemble/checkpoint_log.hpp"
@@ -31,7 +32,7 @@ int main(int argc, char** argv) {
   long long n = 2501, realizations = 500, seed = 1, profile_realizations = 100;
   double xi = 0.5, q = 0.5;
   tool::LongRunOptions run_options;
-  bool compare = false;
+  bool compare = false, auto_n = false;
   app.add_option("--chains", chains, "chain kinds: comma list of h, A, RDM1, RDM2")->capture_default_str();
   app.add_option("--F0", f0_text, "precompressions [N], comma list (0 = sonic vacuum)")->capture_default_str();
   app.add_option("--ic", kicks, "kicks: comma list of displacement, velocity")->capture_default_str();
@@ -52,6 +53,7 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_option("--output", output, "output prefix")->capture_default_str();
   tool::add_long_run_options(app, run_options);
+  tool::add_auto_length(app, auto_n);
 
   return tool::run(app, argc, argv,
                    [&] {
@@ -68,7 +70,7 @@ int main(int argc, char** argv) {
                          profile_f0 == "none" ? std::vector<double>{} : parse_number_list(profile_f0, "--profile-F0");
                      if (profile_realizations < 0) throw InvalidInput("--profile-realizations: must be >= 0");
                      config.profile_realizations = static_cast<std::size_t>(profile_realizations);
-                     if (n < 2) throw InvalidInput("--N " + std::to_string(n) + ": a chain needs at least 2 beads");
+                     if (n < 2 && !auto_n) throw InvalidInput("--N " + std::to_string(n) + ": a chain needs at least 2 beads");
                      if (n > 100000000) throw InvalidInput("--N " + std::to_string(n) + ": more than 1e8 beads");
                      if (realizations < 1)
                        throw InvalidInput("--realizations " + std::to_string(realizations) + ": must be >= 1");
@@ -85,8 +87,9 @@ int main(int argc, char** argv) {
                                                     output + ".json"};
                      tool::apply(dynamics, base);
                      std::vector<TransportCase> cases = exponent_cases(config);
+                     const nlohmann::json length_rules = tool::size_chains(cases, auto_n, dynamics.site);
                      for (const auto& c : cases) validate(c);
-                     const nlohmann::json step_rule = tool::settle_time_step(cases, app.count("--dt") > 0);
+                     const nlohmann::json step_rule = tool::settle_time_step(cases, dynamics, app.count("--dt") > 0);
                      base.dynamics.time_step = cases.front().dynamics.time_step;
                      if (compare) paper = read_paper_table(paper_table);
                      if (compare) paths.push_back(output + "-paper.csv");
@@ -126,6 +129,7 @@ int main(int argc, char** argv) {
                                            {"mpi_ranks", mpi.size()}};
                      meta["cases"] = cases_json;
                      meta["time_step_rule"] = step_rule;
+                     if (auto_n) meta["chain_length_rule"] = length_rules;
                      std::optional<AtomicFile> comparison;
                      if (compare) {
                        const auto rows = compare_with_paper(cells, paper);

@@ -7,6 +7,7 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include "granular/model/centred_configuration.hpp"
 #include "granular/model/configuration_file.hpp"
 #include "granular/model/named_chains.hpp"
 #include "tool_main.hpp"
@@ -18,6 +19,8 @@ struct ChainOptions {
   double xi = 0.5, q = 0.5, f0 = 10, r1 = paper_r1;
   long long n = 100, seed = 1, realization = 0;
   std::string config, radii;
+  bool auto_n = false;          ///< --N auto (long_time_options.hpp): N from T, the chain drawn from its centre
+  nlohmann::json length_rule;  ///< and the rule's numbers
 };
 
 inline void add_chain_options(CLI::App& app, ChainOptions& o) {
@@ -77,7 +80,8 @@ inline SelectedChain build_chain(const ChainOptions& o) {
     } else {
       const Disorder kind = parse_disorder(o.disorder);
       validate(p);
-      s.types = realization_configuration(kind, o.q, p.N, p.seed, p.realization);
+      s.types = o.auto_n ? centred_configuration(kind, o.q, p.N, p.seed, p.realization)
+                         : realization_configuration(kind, o.q, p.N, p.seed, p.realization);
       d["disorder"] = to_string(kind);
       d["q"] = o.q;
       d["seed"] = o.seed;
@@ -86,6 +90,7 @@ inline SelectedChain build_chain(const ChainOptions& o) {
     s.chain = from_types(s.types, p);
   }
   d["N"] = s.chain.size();
+  if (o.auto_n) d["N_rule"] = o.length_rule;
   return s;
 }
 

@@ -14,6 +14,7 @@
 #include "granular/error.hpp"
 #include "granular/io/range_syntax.hpp"
 #include "granular/number_format.hpp"
+#include "granular/study/scheme_choice.hpp"
 #include "granular/study/time_step_rule.hpp"
 #include "granular/study/transport_study.hpp"
 
@@ -43,7 +44,10 @@ inline void add_dynamics_options(CLI::App& app, DynamicsOptions& o) {
                  "refused, naming the largest stable tau; by default 1e-6, or 1e-6/k (smallest integer k) where 1e-6 "
                  "is past a sixth of that limit")
       ->capture_default_str();
-  app.add_option("--integrator", o.integrator, "saba2c | saba2 | aba864 | srkn14a | reference (Odeint RKF78)")
+  app.add_option("--integrator", o.integrator,
+                 "saba2c | saba2 | aba864 | srkn14a | reference (Odeint RKF78) | auto: the cheapest scheme and step "
+                 "keeping the energy error at SABA2C's at 1e-6 s (SRKN14a at 5e-6 s, or SABA2C where the stability "
+                 "rule makes that dearer; docs/dynamics-performance.md), with the default --dt")
       ->capture_default_str();
   app.add_option("--force-law", o.force_law, "hertz | fpu | linear")->capture_default_str();
   app.add_option("--samples", o.samples, "log-spaced sample times (tau..T) outside the fit window")->capture_default_str();
@@ -85,8 +89,8 @@ inline void apply(const DynamicsOptions& o, TransportCase& c) {
   SpreadingConfig& d = c.dynamics;
   d.duration = o.duration;
   d.time_step = o.dt;
-  d.integrator = o.integrator;
-  if (o.integrator != "reference") parse_scheme(o.integrator);
+  d.integrator = o.integrator == "auto" ? "saba2c" : o.integrator;  // auto: settled with the step
+  if (d.integrator != "reference") parse_scheme(d.integrator);
   d.force_law = parse_force_law(o.force_law);
   if (o.samples < 2) throw InvalidInput("--samples " + std::to_string(o.samples) + ": at least 2");
   d.samples = static_cast<std::size_t>(o.samples);
@@ -139,10 +143,38 @@ inline nlohmann::json settle_time_step(std::vector<TransportCase>& cases, bool d
   return rule;
 }
 
+/// The same, settling `--integrator auto` first (scheme_choice.hpp): the cheapest of SRKN14a and
+/// SABA2C at the default steps the rule leaves them, one scheme for all the cases.
+inline nlohmann::json settle_time_step(std::vector<TransportCase>& cases, const DynamicsOptions& o, bool dt_given,
+                                       const Chain* chain = nullptr) {
+  if (o.integrator != "auto" || cases.empty()) return settle_time_step(cases, dt_given, chain);
+  if (dt_given) throw InvalidInput("--integrator auto: chooses the time step too; drop --dt (or name a scheme)");
+  double step[2];
+  const char* schemes[2] = {"saba2c", "srkn14a"};
+  for (int s = 0; s < 2; ++s) {
+    std::vector<TransportCase> trial = cases;
+    for (TransportCase& c : trial) {
+      c.dynamics.integrator = schemes[s];
+      c.dynamics.time_step = s == 0 ? o.dt : srkn14a_preferred_step;
+    }
+    settle_time_step(trial, false, chain);
+    step[s] = trial.front().dynamics.time_step;
+  }
+  const SchemeChoice choice = choose_scheme(step[0], step[1]);
+  for (TransportCase& c : cases) {
+    c.dynamics.integrator = choice.integrator;
+    c.dynamics.time_step = choice.time_step;
+  }
+  nlohmann::json rule = settle_time_step(cases, false, chain);
+  rule["integrator_choice"] = to_json(choice);
+  return rule;
+}
+
 /// The same for one case.
-inline nlohmann::json settle_time_step(TransportCase& c, bool dt_given, const Chain* chain = nullptr) {
+inline nlohmann::json settle_time_step(TransportCase& c, const DynamicsOptions& o, bool dt_given,
+                                       const Chain* chain = nullptr) {
   std::vector<TransportCase> one{c};
-  const nlohmann::json rule = settle_time_step(one, dt_given, chain);
+  const nlohmann::json rule = settle_time_step(one, o, dt_given, chain);
   c = one.front();
   return rule;
 }
@@ -156,6 +188,7 @@ inline void apply(const ChainOptions& o, std::size_t beads, TransportCase& c) {
   c.precompression = o.f0;
   c.r1 = o.r1;
   c.seed = static_cast<std::uint64_t>(o.seed);
+  c.centred_draw = o.auto_n;
 }
 
 }  // namespace granular::tool
