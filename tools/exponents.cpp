@@ -86,11 +86,12 @@ int main(int argc, char** argv) {
                      std::vector<std::string> paths{output + ".csv", output + "-curves.csv", output + "-profiles.csv",
                                                     output + ".json"};
                      tool::apply(dynamics, base);
+                     config.automatic_length = auto_n;
                      std::vector<TransportCase> cases = exponent_cases(config);
-                     const nlohmann::json length_rules = tool::size_chains(cases, auto_n, dynamics.site);
+                     const nlohmann::json length_rules = tool::length_rules(cases, auto_n, dynamics.site);
                      for (const auto& c : cases) validate(c);
                      const nlohmann::json step_rule = tool::settle_time_step(cases, dynamics, app.count("--dt") > 0);
-                     base.dynamics.time_step = cases.front().dynamics.time_step;
+                     base.dynamics = cases.front().dynamics;  // τ and scheme as settled
                      if (compare) paper = read_paper_table(paper_table);
                      if (compare) paths.push_back(output + "-paper.csv");
                      const tool::OutputClaim claim(output, meta.command(), run_options.checkpoints());

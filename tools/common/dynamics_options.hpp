@@ -46,8 +46,8 @@ inline void add_dynamics_options(CLI::App& app, DynamicsOptions& o) {
       ->capture_default_str();
   app.add_option("--integrator", o.integrator,
                  "saba2c | saba2 | aba864 | srkn14a | reference (Odeint RKF78) | auto: the cheapest scheme and step "
-                 "keeping the energy error at SABA2C's at 1e-6 s (SRKN14a at 5e-6 s, or SABA2C where the stability "
-                 "rule makes that dearer; docs/dynamics-performance.md), with the default --dt")
+                 "keeping the energy error at SABA2C's at 1e-6 s: SRKN14a at 5e-6 s where no contact can open, else "
+                 "SABA2C (docs/physics.md, 'Chain length for long times'); no --dt with it")
       ->capture_default_str();
   app.add_option("--force-law", o.force_law, "hertz | fpu | linear")->capture_default_str();
   app.add_option("--samples", o.samples, "log-spaced sample times (tau..T) outside the fit window")->capture_default_str();
@@ -149,23 +149,21 @@ inline nlohmann::json settle_time_step(std::vector<TransportCase>& cases, const 
                                        const Chain* chain = nullptr) {
   if (o.integrator != "auto" || cases.empty()) return settle_time_step(cases, dt_given, chain);
   if (dt_given) throw InvalidInput("--integrator auto: chooses the time step too; drop --dt (or name a scheme)");
-  double step[2];
-  const char* schemes[2] = {"saba2c", "srkn14a"};
-  for (int s = 0; s < 2; ++s) {
-    std::vector<TransportCase> trial = cases;
-    for (TransportCase& c : trial) {
-      c.dynamics.integrator = schemes[s];
-      c.dynamics.time_step = s == 0 ? o.dt : srkn14a_preferred_step;
-    }
-    settle_time_step(trial, false, chain);
-    step[s] = trial.front().dynamics.time_step;
-  }
-  const SchemeChoice choice = choose_scheme(step[0], step[1]);
+  std::vector<TransportCase> trial = cases;  // SABA2C at its default step
+  for (TransportCase& c : trial) c.dynamics.integrator = "saba2c";
+  settle_time_step(trial, false, chain);
+  double omega_max = 0;
+  for (const TransportCase& c : trial) omega_max = std::max(omega_max, time_step_limit(c, chain).omega_max);
+  bool closed = true;
+  for (const TransportCase& c : cases) closed = closed && bonds_stay_closed(c);
+  const SchemeChoice choice =
+      choose_scheme(trial.front().dynamics.time_step, srkn14a_default_step(omega_max), closed);
   for (TransportCase& c : cases) {
     c.dynamics.integrator = choice.integrator;
     c.dynamics.time_step = choice.time_step;
   }
-  nlohmann::json rule = settle_time_step(cases, false, chain);
+  nlohmann::json rule = settle_time_step(cases, true, chain);  // the chosen τ, checked against stability
+  rule["time_step_given"] = false;
   rule["integrator_choice"] = to_json(choice);
   return rule;
 }

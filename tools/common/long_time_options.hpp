@@ -45,11 +45,12 @@ inline nlohmann::json size_chain(TransportCase& c, long long site) {
   return to_json(length);
 }
 
-/// exponents: sizes every case when `auto_n`; returns their rules (null otherwise).
-inline nlohmann::json size_chains(std::vector<TransportCase>& cases, bool auto_n, long long site) {
+/// exponents: the rules of its cases (sized by exponent_cases) when `auto_n`, else null.
+inline nlohmann::json length_rules(const std::vector<TransportCase>& cases, bool auto_n, long long site) {
   if (!auto_n) return nullptr;
+  if (site != 0) throw InvalidInput("--site " + std::to_string(site) + ": --N auto kicks the centre bead (--site 0)");
   nlohmann::json rules = nlohmann::json::array();
-  for (TransportCase& c : cases) rules.push_back(size_chain(c, site));
+  for (const TransportCase& c : cases) rules.push_back(to_json(automatic_chain_length(c)));
   return rules;
 }
 
