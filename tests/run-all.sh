@@ -4,7 +4,9 @@
 # (tests/format-check.sh; GRANULAR_SKIP_FORMAT=1 skips it, for local runs on unformatted branches):
 #   1. the Release build with warnings as errors: every GoogleTest suite and tool test (ctest);
 #   2. the same suites built with AddressSanitizer + UndefinedBehaviorSanitizer (any report fails);
-#   3. each libFuzzer target for FUZZ_SECONDS (default 60) from its seed corpus.
+#   3. the threaded suites (ensembles, IPR map, localization, bootstrap) built with clang and
+#      ThreadSanitizer, OpenMP through LLVM's libomp with its archer tool (any report fails);
+#   4. each libFuzzer target for FUZZ_SECONDS (default 60) from its seed corpus.
 # Set GRANULAR_QUICK=1 to run pass 1 only. Ends with one line "summary: N passed, 0 failed".
 set -euo pipefail
 top=$(cd "$(dirname "$0")/.." && pwd)
@@ -53,9 +55,20 @@ if [ "${GRANULAR_QUICK:-0}" != 1 ]; then
     ctest --test-dir build-sanitize -j"$jobs" --output-on-failure -R "$mpi_tests" | tee "$logs/pass2-mpi"
   count "$logs/pass2-mpi"
 
-  echo "== pass 3: fuzzers"
-  bash tests/fuzz/run-fuzzers.sh "${FUZZ_SECONDS:-60}" | tee "$logs/pass3"
-  passed=$((passed + $(grep -c 'no findings' "$logs/pass3")))
+  echo "== pass 3: ThreadSanitizer (threaded suites)"
+  CC=clang CXX=clang++ cmake -S . -B build-tsan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DGRANULAR_TSAN=ON \
+    -DGRANULAR_BENCHMARKS=OFF -DGRANULAR_PYTHON=OFF -DGRANULAR_NATIVE=OFF >/dev/null
+  cmake --build build-tsan -j"$jobs" --target test_threaded
+  # archer tells TSan about libomp's barriers and tasks; libomp itself is not instrumented, so its
+  # internals are ignored (archer's own advice). Checked to fail on an unreduced `sum +=` in a loop.
+  OMP_TOOL_LIBRARIES=/usr/lib/llvm-14/lib/libarcher.so \
+    TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1:ignore_noninstrumented_modules=1 \
+    ctest --test-dir build-tsan -j"$jobs" --output-on-failure | tee "$logs/pass3"
+  count "$logs/pass3"
+
+  echo "== pass 4: fuzzers"
+  bash tests/fuzz/run-fuzzers.sh "${FUZZ_SECONDS:-60}" | tee "$logs/pass4"
+  passed=$((passed + $(grep -c 'no findings' "$logs/pass4")))
 fi
 rm -rf "$logs"
 echo "summary: $passed passed, 0 failed"

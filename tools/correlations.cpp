@@ -25,7 +25,8 @@ int main(int argc, char** argv) {
   tool::add_integer(app, "--N", config.n, "beads per chain (>= 2)");
   tool::add_integer(app, "--realizations", config.realizations, "chains averaged");
   tool::add_integer(app, "--seed", config.seed, "random seed");
-  tool::add_integer(app, "--max-distance", config.max_distance, "largest shift d (< N)");
+  CLI::Option* max_distance =
+      tool::add_integer(app, "--max-distance", config.max_distance, "largest shift d (< N; default capped at N-1)");
   tool::add_integer(app, "--threads", run.threads, "worker threads (0 = all cores)");
   app.add_option("--output", output, "CSV file to write (the JSON goes beside it)")->capture_default_str();
   app.add_flag("--quiet", quiet, "no final report on stderr");
@@ -33,6 +34,9 @@ int main(int argc, char** argv) {
   return tool::run(app, argc, argv, [&] {
     tool::Metadata meta("correlations", argc, argv);
     config.disorder = parse_disorder(disorder);
+    // The default must fit short chains (N = 2 has only d = 0, 1); a value typed is checked as typed.
+    if (max_distance->count() == 0 && config.n >= 2 && config.max_distance > config.n - 1)
+      config.max_distance = config.n - 1;
     if (run.threads < 0) throw InvalidInput("threads", " " + std::to_string(run.threads) + ": must be >= 0");
     validate(config);
     const tool::OutputClaim claim(tool::prefix_of(output), meta.command());

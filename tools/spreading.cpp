@@ -128,19 +128,7 @@ int main(int argc, char** argv) {
                               {"mpi_ranks", MpiContext::instance().size()},
                               {"max_energy_error", summary->max_energy_error},
                               {"reached_walls", summary->reached_walls}};
-        if (!summary || single)
-          meta["run"] = {{"realization", chain_options.realization},
-                         {"initial_energy_J", r.initial_energy},
-                         {"max_energy_error", r.max_energy_error},
-                         {"steps", r.steps},
-                         {"bond_updates", r.bond_updates},
-                         {"integration_s", r.seconds},
-                         {"window_final", {r.window_begin + 1, r.window_end}},
-                         {"wall_energy", r.wall_energy},
-                         {"reached_walls", r.reached_walls},
-                         {"dissipated_J",
-                          r.dissipated.empty() ? nlohmann::json(nullptr) : nlohmann::json(r.dissipated.back())},
-                         {"mle_per_s", r.mle.empty() ? nlohmann::json(nullptr) : nlohmann::json(r.mle.back())}};
+        if (!summary || single) meta["run"] = describe_run(r, chain_options.realization);
         meta["output"] = csv_path;
         meta.write(json_path);  // the JSON first, then the CSVs: never a CSV without its metadata
         for (auto& f : files) f->commit();

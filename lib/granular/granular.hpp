@@ -24,10 +24,15 @@
 
 #include "granular/dynamics/force_law.hpp"
 #include "granular/dynamics/initial_conditions.hpp"
+#include "granular/dynamics/integrator.hpp"
 #include "granular/dynamics/observables.hpp"
+#include "granular/dynamics/observer.hpp"
+#include "granular/dynamics/observers.hpp"
 #include "granular/dynamics/propagator.hpp"
+#include "granular/dynamics/sampling.hpp"
 #include "granular/dynamics/scheme.hpp"
 #include "granular/dynamics/spectral_density.hpp"
+#include "granular/dynamics/spread.hpp"
 #include "granular/dynamics/spreading.hpp"
 
 #include "granular/ensemble/parallel_realizations.hpp"
@@ -47,4 +52,5 @@
 #include "granular/study/spectrum_file.hpp"
 #include "granular/study/spreading_files.hpp"
 #include "granular/study/time_step_rule.hpp"
+#include "granular/study/transport_choices.hpp"
 #include "granular/study/transport_study.hpp"

@@ -12,6 +12,8 @@ every result carries the metadata dict the tools write as JSON.
     near = gr.spectrum(chain, near=15.0, count=20, method="bisect")
     grid = gr.ipr_map(disorder="A", xi="0.1:1", q=(0.2, 0.5, 0.8), threads=2, progress=True)
     run = gr.spreading(chain, ic="displacement", T=1e-3, energy_map=True)
+    spread = gr.EnergySpread()                              # or observers of your own (gr.Observer)
+    gr.spread(chain, gr.velocity_kick(chain, 49, 8e-3), [spread], T=1e-3)   # spread.m2, spread.ipr
     fig = gr.plot.spectrum(modes)                           # figures: granular.plot (matplotlib)
 
 Errors: ValueError naming the keyword of a bad value, OSError for files, granular.NumericalError
@@ -31,13 +33,22 @@ if _core is not None:
         Chain,
         Correlations,
         DynamicalMatrix,
+        EnergyMap,
+        EnergySpread,
+        FinalState,
+        Forces,
         FpuCoefficients,
         IprMap,
         Localization,
         Material,
         NumericalError,
+        Observer,
+        RunPlan,
+        Snapshot,
         Spectrum,
+        SpectralDensity,
         SpectrumSolver,
+        State,
         anderson,
         band_edges,
         configuration,
@@ -45,6 +56,7 @@ if _core is not None:
         correlations,
         cyclic_correlation,
         diatomic,
+        displacement_kick,
         dynamical_matrix,
         exponent_table,
         flat_wall,
@@ -66,10 +78,12 @@ if _core is not None:
         read_radii,
         read_types,
         spectrum,
+        spread,
         spreading,
         static_overlap,
         steel,
         transport,
+        velocity_kick,
     )
     from ._results import ExponentTable, SpreadingRun, Transport  # noqa: F401
 

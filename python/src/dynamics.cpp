@@ -1,16 +1,15 @@
 // The nonlinear dynamics: one spreading run (granular.spreading), an ensemble of them
 // (granular.transport, the spreading tool's --realizations) and the paper's exponent table
-// (granular.exponent_table). Kept thin on purpose — keywords to a TransportCase exactly as the
-// tools' dynamics options fill it (tools/common/dynamics_options.hpp), results to dicts of NumPy
-// arrays and the library's own JSON and CSV writers, wrapped by granular._results — because the
-// library's dynamics API is still moving (observers, issue 11): this file follows it.
+// (granular.exponent_table). Kept thin on purpose: keywords to a TransportCase by the rule the
+// tools use too (study/transport_choices.hpp), results to dicts of NumPy arrays and the
+// library's own JSON and CSV writers, wrapped by granular._results. The library's own run with
+// observers is granular.spread (observers.cpp).
 #include <cmath>
 #include <sstream>
 #include <string>
 
 #include "bindings.hpp"
 #include "granular/dynamics/force_law.hpp"
-#include "granular/dynamics/scheme.hpp"
 #include "granular/dynamics/spreading.hpp"
 #include "granular/ensemble/checkpoint_log.hpp"
 #include "granular/error.hpp"
@@ -19,6 +18,8 @@
 #include "granular/parallel/mpi_context.hpp"
 #include "granular/study/exponent_table.hpp"
 #include "granular/study/paper_comparison.hpp"
+#include "granular/study/spreading_files.hpp"
+#include "granular/study/transport_choices.hpp"
 #include "granular/study/transport_study.hpp"
 
 namespace granular::python {
@@ -41,57 +42,41 @@ struct DynamicsKeywords {
   std::string energy_guard;
 };
 
-/// Fills `c` from the keywords as tool::apply does from the options (needs c.n, for `site`).
+/// Fills `c` from the keywords: granular::apply(TransportChoices), as the tools do from their
+/// options, once the keywords only Python has are read (beta a number or 'match', site None,
+/// fit a pair). Needs c.n (for `site`).
 void apply(const DynamicsKeywords& k, TransportCase& c) {
-  c.alpha = k.alpha;
-  c.match_beta = py::isinstance<py::str>(k.beta);
-  if (c.match_beta) {
+  TransportChoices choices;
+  choices.alpha = k.alpha;
+  if (py::isinstance<py::str>(k.beta)) {
     if (k.beta.cast<std::string>() != "match")
       bad_value("beta", " '" + k.beta.cast<std::string>() + "': a number [m/s] or 'match'");
+    choices.beta.reset();
   } else {
-    c.beta = finite(k.beta.cast<double>(), "beta");
+    choices.beta = finite(k.beta.cast<double>(), "beta");
   }
-  const long long site = k.site.is_none() ? 0 : k.site.cast<long long>();
-  if (site < 0 || site > static_cast<long long>(c.n))
-    bad_value("site", " " + std::to_string(site) + ": outside the chain of " + std::to_string(c.n) +
-                          " beads (1..N, 0 = centre)");
-  c.site = site == 0 ? (c.n - 1) / 2 : static_cast<std::size_t>(site - 1);
-  try {
-    c.centre = parse_spread_centre(k.centre);
-  } catch (const InvalidInput&) {
-    bad_value("centre", " '" + k.centre + "': site or centroid");
-  }
-  SpreadingConfig& d = c.dynamics;
-  d.duration = k.T;
-  d.time_step = k.dt;
-  d.integrator = k.integrator;
-  if (k.integrator != "reference") parse_scheme(k.integrator, "integrator");
-  d.force_law = parse_force_law(k.force_law);
-  d.samples = checked_size(k.samples, "samples", 2, 100000000);
-  d.sampling = parse_sampling(k.sampling);
-  d.window.enabled = k.active_window;
-  if (!(k.window_threshold >= 0) || !std::isfinite(k.window_threshold))
-    bad_value("window_threshold", " " + format_number(k.window_threshold) + ": must be finite and >= 0");
-  d.window.threshold = k.window_threshold;
-  if (!(k.reference_max_step >= 0) || !std::isfinite(k.reference_max_step))
-    bad_value("reference_max_step", " " + format_number(k.reference_max_step) + ": must be finite and >= 0");
-  d.reference.max_step = k.reference_max_step;
-  if (!(k.max_energy_error >= 0) || !std::isfinite(k.max_energy_error))
-    bad_value("max_energy_error", " " + format_number(k.max_energy_error) + ": must be finite and >= 0");
-  if (k.energy_guard != "stop" && k.energy_guard != "warn")
-    bad_value("energy_guard", " '" + k.energy_guard + "': stop or warn");
-  d.max_energy_error = k.max_energy_error;
-  d.stop_on_energy_error = k.energy_guard == "stop";
+  choices.site = k.site.is_none() ? 0 : k.site.cast<long long>();
+  choices.centre = k.centre;
+  choices.duration = k.T;
+  choices.time_step = k.dt;
+  choices.integrator = k.integrator;
+  choices.force_law = k.force_law;
+  choices.samples = static_cast<long long>(checked_size(k.samples, "samples", 2, 100000000));
+  choices.sampling = k.sampling;
+  choices.active_window = k.active_window;
+  choices.window_threshold = k.window_threshold;
+  choices.reference_max_step = k.reference_max_step;
+  choices.max_energy_error = k.max_energy_error;
+  choices.energy_guard = k.energy_guard;
   const std::vector<double> fit = double_vector(k.fit, "fit");
-  if (fit.size() != 2 || !(fit[0] > 0) || !(fit[1] > fit[0]))
-    bad_value("fit", ": expected (start, stop) [s] with 0 < start < stop");
-  c.fit = true;
-  c.fit_begin = fit[0];
-  c.fit_end = fit[1];
-  c.fit_step = k.fit_step;
-  c.criterion.kappa = k.kappa;
-  c.criterion.t_start = k.t_star;
-  c.bootstrap.resamples = checked_size(k.bootstrap, "bootstrap", 2, 100000000);
+  if (fit.size() != 2) bad_value("fit", ": expected (start, stop) [s] with 0 < start < stop");
+  choices.fit_begin = fit[0];
+  choices.fit_end = fit[1];
+  choices.fit_step = k.fit_step;
+  choices.t_star = k.t_star;
+  choices.kappa = k.kappa;
+  choices.bootstrap = static_cast<long long>(checked_size(k.bootstrap, "bootstrap", 2, 100000000));
+  granular::apply(choices, c);
 }
 
 /// The keyword arguments of DynamicsKeywords, with the tools' defaults, in this order.
@@ -234,15 +219,7 @@ void bind_dynamics(py::module_& m) {
         meta["seed"] = c.seed;
         const nlohmann::json fitted = exponent_keys(exponents, c.centre);
         meta.update(fitted);
-        meta["run"] = {{"realization", described.value("realization", nlohmann::json(0))},
-                       {"initial_energy_J", r.initial_energy},
-                       {"max_energy_error", r.max_energy_error},
-                       {"steps", r.steps},
-                       {"bond_updates", r.bond_updates},
-                       {"integration_s", r.seconds},
-                       {"window_final", {r.window_begin + 1, r.window_end}},
-                       {"wall_energy", r.wall_energy},
-                       {"reached_walls", r.reached_walls}};
+        meta["run"] = describe_run(r, described.value("realization", nlohmann::json(0)));
         if (d.spectrum_samples > 0)
           meta["spectrum"] = {{"of", to_string(d.spectrum_source)}, {"samples", d.spectrum_samples}};
 

@@ -14,4 +14,5 @@ PYBIND11_MODULE(_core, m) {
   bind_linear(m);
   bind_studies(m);
   bind_dynamics(m);
+  bind_observers(m);
 }

@@ -181,8 +181,16 @@ Disorder disorder_of(const std::string& name) {
 
 std::vector<double> number_list(const py::handle& values, const char* keyword, double default_step) {
   if (py::isinstance<py::str>(values)) return parse_number_list(values.cast<std::string>(), keyword, default_step);
-  if (py::isinstance<py::float_>(values) || py::isinstance<py::int_>(values))
-    return {finite(values.cast<double>(), keyword)};
+  if (py::isinstance<py::float_>(values) || py::isinstance<py::int_>(values)) {
+    double value = 0;
+    try {
+      value = values.cast<double>();
+    } catch (const py::cast_error&) {  // an int beyond any double (found by tests/fuzz/python_arguments_fuzz)
+      PyErr_Clear();
+      bad_value(keyword, ": the integer is too large for a floating-point number");
+    }
+    return {finite(value, keyword)};
+  }
   return double_vector(values, keyword);
 }
 

@@ -11,11 +11,18 @@ CC=clang CXX=clang++ cmake -S "$top" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebIn
   -DGRANULAR_NATIVE=OFF >/dev/null
 cmake --build "$build" -j2 >/dev/null
 status=0
-for target in range_syntax configuration_file checkpoint_log; do
+targets="range_syntax configuration_file checkpoint_log"
+# The Python module's argument conversion, when the embedded-interpreter target could be built.
+[[ -x $build/fuzz/fuzz_python_arguments ]] && targets="$targets python_arguments"
+for target in $targets; do
   corpus=$(mktemp -d)
   cp "$top/tests/fuzz/corpus/$target/"* "$corpus/"
   log="$build/fuzz/$target.log"
-  if (cd "$build/fuzz" && "./fuzz_$target" -max_total_time="$seconds" -max_len=4096 -rss_limit_mb=2048 \
+  # The embedded interpreter keeps caches and interned objects on purpose: no leak checks there.
+  leaks=1
+  [[ $target == python_arguments ]] && leaks=0
+  if (cd "$build/fuzz" && ASAN_OPTIONS=detect_leaks=$leaks "./fuzz_$target" -max_total_time="$seconds" -max_len=4096 \
+        -rss_limit_mb=2048 -detect_leaks=$leaks \
         -print_final_stats=1 "$corpus" >"$log" 2>&1); then
     runs=$(grep -E '^stat::number_of_executed_units' "$log" | awk '{print $2}')
     echo "fuzz $target: ${runs:-?} executions in ${seconds}s, no findings"

@@ -48,49 +48,67 @@ struct SelectedChain {
   nlohmann::json description;
 };
 
-inline SelectedChain build_chain(const ChainOptions& o) {
+/// What every chain the options pick shares: the seed and realization, checked, with the other
+/// named-chain parameters (N unchecked: a stored and a streamed chain have their own limits).
+inline ChainParameters chain_parameters(const ChainOptions& o) {
   if (o.seed < 0) throw InvalidInput("seed", " " + std::to_string(o.seed) + ": must be >= 0");
   if (o.realization < 0) throw InvalidInput("realization", " " + std::to_string(o.realization) + ": must be >= 0");
-  if (o.n < 2) throw InvalidInput("N", " " + std::to_string(o.n) + ": a chain needs at least 2 beads");
-  ChainParameters p{.N = static_cast<std::size_t>(o.n),
-                    .q = o.q,
-                    .xi = o.xi,
-                    .seed = static_cast<std::uint64_t>(o.seed),
-                    .realization = static_cast<std::uint64_t>(o.realization),
-                    .F0 = o.f0,
-                    .R1 = o.r1};
-  SelectedChain s;
-  nlohmann::json& d = s.description;
+  return {.N = static_cast<std::size_t>(o.n),
+          .q = o.q,
+          .xi = o.xi,
+          .seed = static_cast<std::uint64_t>(o.seed),
+          .realization = static_cast<std::uint64_t>(o.realization),
+          .F0 = o.f0,
+          .R1 = o.r1};
+}
+
+/// The "chain" entry of a tool's JSON: F0, material, walls and what picked the chain (a radii
+/// file; R1, ξ and a types file or the disorder, q, seed and realization). N is added by the caller.
+inline nlohmann::json chain_description(const ChainOptions& o) {
+  nlohmann::json d;
   d["F0_N"] = o.f0;
   d["material"] = {{"E_Pa", steel.young}, {"nu", steel.poisson}, {"rho_kg_m3", steel.density}};
   d["walls"] = "flat, same material as the beads";
   if (!o.radii.empty()) {
+    d["radii_file"] = o.radii;
+    return d;
+  }
+  d["R1_m"] = o.r1;
+  d["xi"] = o.xi;
+  if (!o.config.empty()) {
+    d["config_file"] = o.config;
+    return d;
+  }
+  d["disorder"] = to_string(parse_disorder(o.disorder));
+  d["q"] = o.q;
+  d["seed"] = o.seed;
+  d["realization"] = o.realization;
+  return d;
+}
+
+inline SelectedChain build_chain(const ChainOptions& o) {
+  ChainParameters p = chain_parameters(o);
+  if (o.n < 2) throw InvalidInput("N", " " + std::to_string(o.n) + ": a chain needs at least 2 beads");
+  SelectedChain s;
+  s.description = chain_description(o);
+  if (!o.radii.empty()) {
     if (!std::isfinite(o.f0) || o.f0 < 0)
       throw InvalidInput("F0", " " + format_number(o.f0) + ": must be finite and >= 0");
     s.chain = from_radii(read_radii_file(o.radii), o.f0);
-    d["radii_file"] = o.radii;
   } else {
-    d["R1_m"] = o.r1;
-    d["xi"] = o.xi;
     if (!o.config.empty()) {
       p.N = 2;  // from the file
       validate(p);
       s.types = read_configuration_file(o.config);
-      d["config_file"] = o.config;
     } else {
-      const Disorder kind = parse_disorder(o.disorder);
       validate(p);
-      s.types = o.auto_n ? centred_configuration(kind, o.q, p.N, p.seed, p.realization)
-                         : realization_configuration(kind, o.q, p.N, p.seed, p.realization);
-      d["disorder"] = to_string(kind);
-      d["q"] = o.q;
-      d["seed"] = o.seed;
-      d["realization"] = o.realization;
+      s.types = o.auto_n ? centred_configuration(parse_disorder(o.disorder), o.q, p.N, p.seed, p.realization)
+                         : realization_configuration(parse_disorder(o.disorder), o.q, p.N, p.seed, p.realization);
     }
     s.chain = from_types(s.types, p);
   }
-  d["N"] = s.chain.size();
-  if (o.auto_n) d["N_rule"] = o.length_rule;
+  s.description["N"] = s.chain.size();
+  if (o.auto_n) s.description["N_rule"] = o.length_rule;
   return s;
 }
 

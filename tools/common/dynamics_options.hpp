@@ -10,117 +10,86 @@
 
 #include "beyond_options.hpp"
 #include "chain_options.hpp"
-#include "granular/dynamics/scheme.hpp"
 #include "granular/error.hpp"
 #include "granular/io/range_syntax.hpp"
 #include "granular/number_format.hpp"
 #include "granular/study/scheme_choice.hpp"
 #include "granular/study/time_step_rule.hpp"
+#include "granular/study/transport_choices.hpp"
 #include "granular/study/transport_study.hpp"
 
 namespace granular::tool {
 
+/// The options bind straight into the library's choices, except the three whose words only a
+/// command line has: --beta (a number or 'match'), --fit (start:stop), --active-window (on|off).
 struct DynamicsOptions {
-  std::string beta = "8e-3", fit = "4e-3:1e-2", centre = "site", integrator = "saba2c", force_law = "hertz";
-  std::string sampling = "log", active_window = "on", energy_guard = "stop";
-  double alpha = 1e-7, duration = 1e-2, dt = 1e-6, fit_step = 1e-5, t_star = 4e-3, kappa = 0.1;
-  double window_threshold = 1e-30, reference_max_step = 0.01e-6, max_energy_error = 1e-3;
-  long long samples = 100, site = 0, bootstrap = 1000;
+  TransportChoices choices;
+  std::string beta = "8e-3", fit = "4e-3:1e-2", active_window = "on";
   BeyondOptions beyond;  ///< damping (here) and the tangent map (spreading adds its flags)
 };
 
 inline void add_dynamics_options(CLI::App& app, DynamicsOptions& o) {
-  app.add_option("--alpha", o.alpha, "displacement kick [m] (also what --beta match matches)")->capture_default_str();
+  TransportChoices& c = o.choices;
+  app.add_option("--alpha", c.alpha, "displacement kick [m] (also what --beta match matches)")->capture_default_str();
   app.add_option("--beta", o.beta,
                  "velocity kick [m/s] (the paper's 8e-3 for every F0), or 'match': the energy of --alpha on each chain")
       ->capture_default_str();
-  app.add_option("--site", o.site, "kicked bead n0, 1..N (0 = the centre, (N+1)/2)")->capture_default_str();
-  app.add_option("--centre", o.centre,
+  app.add_option("--site", c.site, "kicked bead n0, 1..N (0 = the centre, (N+1)/2)")->capture_default_str();
+  app.add_option("--centre", c.centre,
                  "m2 about the kicked 'site' (the paper's n_c) or the energy 'centroid'; both are written")
       ->capture_default_str();
-  app.add_option("--T", o.duration, "duration [s], a whole number of --dt")->capture_default_str();
-  app.add_option("--dt", o.dt,
+  app.add_option("--T", c.duration, "duration [s], a whole number of --dt")->capture_default_str();
+  app.add_option("--dt", c.time_step,
                  "time step tau [s]; must meet tau <= h*/omega_max (docs/physics.md, 'Time step'): a larger one is "
                  "refused, naming the largest stable tau; by default 1e-6, or 1e-6/k (smallest integer k) where 1e-6 "
                  "is past a sixth of that limit")
       ->capture_default_str();
-  app.add_option("--integrator", o.integrator,
+  app.add_option("--integrator", c.integrator,
                  "saba2c | saba2 | aba864 | srkn14a | reference (Odeint RKF78) | auto: the cheapest scheme and step "
                  "keeping the energy error at SABA2C's at 1e-6 s: SRKN14a at 5e-6 s where no contact can open, else "
                  "SABA2C (docs/physics.md, 'Chain length for long times'); no --dt with it")
       ->capture_default_str();
-  app.add_option("--force-law", o.force_law, "hertz | fpu | linear")->capture_default_str();
-  app.add_option("--samples", o.samples, "log-spaced sample times (tau..T) outside the fit window")->capture_default_str();
-  app.add_option("--sampling", o.sampling, "log (tau..T) | uniform (0..T) for those samples")->capture_default_str();
+  app.add_option("--force-law", c.force_law, "hertz | fpu | linear")->capture_default_str();
+  app.add_option("--samples", c.samples, "log-spaced sample times (tau..T) outside the fit window")->capture_default_str();
+  app.add_option("--sampling", c.sampling, "log (tau..T) | uniform (0..T) for those samples")->capture_default_str();
   app.add_option("--fit", o.fit, "fit window start:stop [s] of gamma (m2 ~ t^gamma) and eta (P^-1 ~ t^-eta)")
       ->capture_default_str();
-  app.add_option("--fit-step", o.fit_step, "spacing of the samples inside the fit window [s], a multiple of --dt")
+  app.add_option("--fit-step", c.fit_step, "spacing of the samples inside the fit window [s], a multiple of --dt")
       ->capture_default_str();
-  app.add_option("--t-star", o.t_star, "t*: from here on, |L_d - gamma| >= --kappa means 'not a power law' [s]")
+  app.add_option("--t-star", c.t_star, "t*: from here on, |L_d - gamma| >= --kappa means 'not a power law' [s]")
       ->capture_default_str();
-  app.add_option("--kappa", o.kappa, "largest |L_d - gamma| of a power law after --t-star")->capture_default_str();
-  app.add_option("--bootstrap", o.bootstrap, "resamples of the realization bootstrap of gamma and eta")
+  app.add_option("--kappa", c.kappa, "largest |L_d - gamma| of a power law after --t-star")->capture_default_str();
+  app.add_option("--bootstrap", c.bootstrap, "resamples of the realization bootstrap of gamma and eta")
       ->capture_default_str();
   app.add_option("--active-window", o.active_window, "on | off: integrate only where the wave has arrived")
       ->capture_default_str();
-  app.add_option("--window-threshold", o.window_threshold, "relative kinetic energy that grows the window")
+  app.add_option("--window-threshold", c.window_threshold, "relative kinetic energy that grows the window")
       ->capture_default_str();
-  app.add_option("--reference-max-step", o.reference_max_step, "largest step of --integrator reference [s], 0 = none")
+  app.add_option("--reference-max-step", c.reference_max_step, "largest step of --integrator reference [s], 0 = none")
       ->capture_default_str();
-  app.add_option("--max-energy-error", o.max_energy_error,
+  app.add_option("--max-energy-error", c.max_energy_error,
                  "guard: relative energy error that stops (or is reported), 0 = off")
       ->capture_default_str();
-  app.add_option("--energy-guard", o.energy_guard, "stop | warn: what passing --max-energy-error does")
+  app.add_option("--energy-guard", c.energy_guard, "stop | warn: what passing --max-energy-error does")
       ->capture_default_str();
   add_damping_options(app, o.beyond);
 }
 
-/// Fills `c` from the options: all but the chain (disorder, q, ξ, N, F0, R1, seed, realizations)
-/// and the kick kind, which the tool sets. Needs c.n (for --site). Leaves c.fit true.
+/// Fills `c` from the options: granular::apply(TransportChoices) once the three command-line
+/// words are read. Needs c.n (for --site).
 inline void apply(const DynamicsOptions& o, TransportCase& c) {
-  c.alpha = o.alpha;
-  c.match_beta = o.beta == "match";
-  if (!c.match_beta) c.beta = parse_number_list(o.beta, "--beta", 0, 1).at(0);
-  if (o.site < 0 || o.site > static_cast<long long>(c.n))
-    throw InvalidInput("--site " + std::to_string(o.site) + ": outside the chain of " + std::to_string(c.n) +
-                       " beads (1..N, 0 = centre)");
-  c.site = o.site == 0 ? (c.n - 1) / 2 : static_cast<std::size_t>(o.site - 1);
-  c.centre = parse_spread_centre(o.centre);
-  SpreadingConfig& d = c.dynamics;
-  d.duration = o.duration;
-  d.time_step = o.dt;
-  d.integrator = o.integrator == "auto" ? "saba2c" : o.integrator;  // auto: settled with the step
-  if (d.integrator != "reference") parse_scheme(d.integrator);
-  d.force_law = parse_force_law(o.force_law);
-  if (o.samples < 2) throw InvalidInput("--samples " + std::to_string(o.samples) + ": at least 2");
-  d.samples = static_cast<std::size_t>(o.samples);
-  d.sampling = parse_sampling(o.sampling);
+  TransportChoices choices = o.choices;
+  if (choices.integrator == "auto") choices.integrator = "saba2c";  // settled with the step (settle_time_step)
+  if (o.beta != "match") choices.beta = parse_number_list(o.beta, "--beta", 0, 1).at(0);
+  else choices.beta.reset();
   if (o.active_window != "on" && o.active_window != "off")
     throw InvalidInput("--active-window '" + o.active_window + "': on or off");
-  d.window.enabled = o.active_window == "on";
-  if (!(o.window_threshold >= 0) || !std::isfinite(o.window_threshold))
-    throw InvalidInput("--window-threshold " + format_number(o.window_threshold) + ": must be finite and >= 0");
-  d.window.threshold = o.window_threshold;
-  if (!(o.reference_max_step >= 0) || !std::isfinite(o.reference_max_step))
-    throw InvalidInput("--reference-max-step " + format_number(o.reference_max_step) + ": must be finite and >= 0");
-  d.reference.max_step = o.reference_max_step;
-  if (!(o.max_energy_error >= 0) || !std::isfinite(o.max_energy_error))
-    throw InvalidInput("--max-energy-error " + format_number(o.max_energy_error) + ": must be finite and >= 0");
-  if (o.energy_guard != "stop" && o.energy_guard != "warn")
-    throw InvalidInput("--energy-guard '" + o.energy_guard + "': stop or warn");
-  d.max_energy_error = o.max_energy_error;
-  d.stop_on_energy_error = o.energy_guard == "stop";
+  choices.active_window = o.active_window == "on";
   const Interval fit = parse_interval(o.fit, "--fit");
-  if (!(fit.start > 0)) throw InvalidInput("--fit '" + o.fit + "': expected start:stop with 0 < start < stop");
-  c.fit = true;
-  c.fit_begin = fit.start;
-  c.fit_end = fit.stop;
-  c.fit_step = o.fit_step;
-  c.criterion.kappa = o.kappa;
-  c.criterion.t_start = o.t_star;
-  if (o.bootstrap < 2) throw InvalidInput("--bootstrap " + std::to_string(o.bootstrap) + ": at least 2 resamples");
-  c.bootstrap.resamples = static_cast<std::size_t>(o.bootstrap);
-  apply(o.beyond, d);
+  choices.fit_begin = fit.start;
+  choices.fit_end = fit.stop;
+  granular::apply(choices, c);
+  apply(o.beyond, c.dynamics);
 }
 
 /// Settles the time step of `cases` (validated) by the stability rule (time_step_rule.hpp): a
@@ -143,23 +112,25 @@ inline nlohmann::json settle_time_step(std::vector<TransportCase>& cases, bool d
   return rule;
 }
 
-/// The same, settling `--integrator auto` first (scheme_choice.hpp): the cheapest of SRKN14a and
-/// SABA2C at the default steps the rule leaves them, one scheme for all the cases.
+/// The same, settling `--integrator auto` first (scheme_choice.hpp): SRKN14a at 5 µs where no
+/// contact can open and it is cheaper than SABA2C at its default step, else that; one scheme for all.
 inline nlohmann::json settle_time_step(std::vector<TransportCase>& cases, const DynamicsOptions& o, bool dt_given,
                                        const Chain* chain = nullptr) {
-  if (o.integrator != "auto" || cases.empty()) return settle_time_step(cases, dt_given, chain);
+  if (o.choices.integrator != "auto" || cases.empty()) return settle_time_step(cases, dt_given, chain);
   if (dt_given) throw InvalidInput("--integrator auto: chooses the time step too; drop --dt (or name a scheme)");
   std::vector<TransportCase> trial = cases;  // SABA2C at its default step
-  for (TransportCase& c : trial) c.dynamics.integrator = "saba2c";
+  for (TransportCase& c : trial) c.dynamics.integrator = saba2c();
   settle_time_step(trial, false, chain);
   double omega_max = 0;
-  for (const TransportCase& c : trial) omega_max = std::max(omega_max, time_step_limit(c, chain).omega_max);
   bool closed = true;
-  for (const TransportCase& c : cases) closed = closed && bonds_stay_closed(c);
+  for (const TransportCase& c : trial) {
+    omega_max = std::max(omega_max, time_step_limit(c, chain).omega_max);
+    closed = closed && bonds_stay_closed(c);
+  }
   const SchemeChoice choice =
       choose_scheme(trial.front().dynamics.time_step, srkn14a_default_step(omega_max), closed);
   for (TransportCase& c : cases) {
-    c.dynamics.integrator = choice.integrator;
+    c.dynamics.integrator = parse_integrator(choice.integrator);
     c.dynamics.time_step = choice.time_step;
   }
   nlohmann::json rule = settle_time_step(cases, true, chain);  // the chosen τ, checked against stability

@@ -75,10 +75,10 @@ inline std::string replay_command(const TransportCase& c, std::uint64_t r, const
   add("--centre", to_string(c.centre));
   add("--T", number(d.duration));
   add("--dt", number(d.time_step));
-  add("--integrator", d.integrator);
+  add("--integrator", d.integrator.name());
   add("--force-law", to_string(d.force_law));
   add("--samples", std::to_string(d.samples));
-  add("--sampling", d.sampling == Sampling::logarithmic ? "log" : "uniform");
+  add("--sampling", to_string(d.sampling));
   add("--fit", number(c.fit_begin) + ":" + number(c.fit_end));
   add("--fit-step", number(c.fit_step));
   add("--t-star", number(c.criterion.t_start));
@@ -86,7 +86,7 @@ inline std::string replay_command(const TransportCase& c, std::uint64_t r, const
   add("--bootstrap", std::to_string(c.bootstrap.resamples));
   add("--active-window", d.window.enabled ? "on" : "off");
   add("--window-threshold", number(d.window.threshold));
-  add("--reference-max-step", number(d.reference.max_step));
+  add("--reference-max-step", number(d.integrator.tolerance.max_step));
   add("--max-energy-error", number(d.max_energy_error));
   add("--energy-guard", d.stop_on_energy_error ? "stop" : "warn");
   return command + " --output replay-" + std::to_string(r);

@@ -63,9 +63,9 @@ inline void size_chain(ChainOptions& chain, const DynamicsOptions& dynamics, con
   apply(chain, 3, probe);
   probe.kick = parse_kick(ic);
   DynamicsOptions centre = dynamics;
-  centre.site = 0;
+  centre.choices.site = 0;
   apply(centre, probe);
-  chain.length_rule = size_chain(probe, dynamics.site);
+  chain.length_rule = size_chain(probe, dynamics.choices.site);
   chain.n = static_cast<long long>(probe.n);
 }
 

@@ -10,7 +10,6 @@
 #include <CLI/CLI.hpp>
 
 #include "granular/error.hpp"
-#include "granular/io/hdf5_file.hpp"
 #include "granular/io/range_syntax.hpp"
 #include "granular/study/spreading_files.hpp"
 #include "granular/study/transport_study.hpp"
@@ -74,13 +73,7 @@ inline void write_single(const SpreadingOutputs& o, const SpreadingResult& r, co
     write_spectrum_csv(open(o.spectrum), r);
     meta["spectrum"] = {{"file", o.spectrum}, {"of", to_string(d.spectrum_source)}, {"samples", o.spectrum_samples}};
   }
-  if (!o.energy_map.empty()) {
-    std::vector<double> sites;
-    for (std::size_t k = 0; k < r.map_columns; ++k) sites.push_back(static_cast<double>(k * d.map_stride + 1));
-    write_hdf5_atomically(o.energy_map, {{"energy", {r.map_t.size(), r.map_columns}, r.map_energy.data()},
-                                         {"t", {r.map_t.size()}, r.map_t.data()},
-                                         {"site", {sites.size()}, sites.data()}});
-  }
+  if (!o.energy_map.empty()) write_energy_map(o.energy_map, r, d.map_stride);
 }
 
 }  // namespace granular::tool

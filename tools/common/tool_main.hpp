@@ -5,6 +5,7 @@
 // option parsed. Library errors name parameters in the library's vocabulary (`time_step`); here
 // they are told in the flag the user typed (`--dt`).
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <functional>
@@ -96,6 +97,28 @@ inline std::string flag_for(const CLI::App& app, const std::string& parameter,
   return "";
 }
 
+/// `message` with every library parameter it names (a word with an underscore, `max_energy_error`)
+/// told as the flag of `app` it stands for (`--max-energy-error`); other words are kept.
+inline std::string flags_in(const CLI::App& app, const std::string& message,
+                            const std::map<std::string, std::string>& overrides) {
+  std::string out, word;
+  const auto flush = [&] {
+    const std::string flag = word.find('_') != std::string::npos ? flag_for(app, word, overrides) : "";
+    out += flag.empty() ? word : flag;
+    word.clear();
+  };
+  for (char c : message) {
+    if (std::islower(static_cast<unsigned char>(c)) || std::isdigit(static_cast<unsigned char>(c)) || c == '_') {
+      word += c;
+      continue;
+    }
+    flush();
+    out += c;
+  }
+  flush();
+  return out;
+}
+
 /// The option of `app` nearest `typed` by edit distance (for "did you mean"), or "".
 inline std::string nearest_option(const CLI::App& app, const std::string& typed) {
   auto distance = [](const std::string& a, const std::string& b) {
@@ -170,7 +193,7 @@ inline int run(CLI::App& app, int argc, char** argv, const std::function<void()>
     std::fprintf(stderr, "%s: I/O error: %s\n", name.c_str(), e.what());
     return io_failure;
   } catch (const NumericalError& e) {
-    std::fprintf(stderr, "%s: numerical failure: %s\n", name.c_str(), e.what());
+    std::fprintf(stderr, "%s: numerical failure: %s\n", name.c_str(), flags_in(app, e.what(), overrides).c_str());
     return numerical_failure;
   } catch (const Cancelled&) {  // a clean stop: every finished realization is in the checkpoint
     std::fprintf(stderr, "%s: interrupted; the finished realizations are kept. To continue:\n%s\n", name.c_str(),

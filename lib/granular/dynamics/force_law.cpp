@@ -13,7 +13,7 @@ ForceLawKind parse_force_law(std::string_view name) {
   if (lower == "hertz") return ForceLawKind::hertz;
   if (lower == "fpu") return ForceLawKind::fpu;
   if (lower == "linear") return ForceLawKind::linear;
-  throw InvalidInput("--force-law '" + std::string(name) + "': expected hertz, fpu or linear");
+  throw InvalidInput("force_law", " '" + std::string(name) + "': expected hertz, fpu or linear");
 }
 
 std::string to_string(ForceLawKind kind) {
@@ -43,8 +43,8 @@ double HertzLaw::potential(std::size_t k, double x) const {
 
 PolynomialLaw::PolynomialLaw(const Chain& chain, int degree) : precompression_(chain.precompression) {
   if (!(chain.precompression > 0))
-    throw InvalidInput("--force-law " + std::string(degree == 1 ? "linear" : "fpu") +
-                       ": needs F0 > 0 (the sonic vacuum has no expansion about rest)");
+    throw InvalidInput("force_law", " " + std::string(degree == 1 ? "linear" : "fpu") +
+                                        ": needs F0 > 0 (the sonic vacuum has no expansion about rest)");
   const std::size_t n = chain.bonds();
   c1_.resize(n);
   c2_.assign(n, 0.0);

@@ -70,14 +70,14 @@ SplittingScheme srkn14a() {
   return s;
 }
 
-SplittingScheme parse_scheme(std::string_view name, const std::string& option) {
+SplittingScheme parse_scheme(std::string_view name, const std::string& parameter) {
   std::string lower(name);
   for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   if (lower == "saba2c") return saba2c();
   if (lower == "saba2") return saba2();
   if (lower == "aba864") return aba864();
   if (lower == "srkn14a") return srkn14a();
-  throw InvalidInput(option + " '" + std::string(name) + "': expected saba2c, saba2, aba864 or srkn14a");
+  throw InvalidInput(parameter, " '" + std::string(name) + "': expected saba2c, saba2, aba864 or srkn14a");
 }
 
 }  // namespace granular

@@ -29,7 +29,7 @@ SplittingScheme aba864();
 /// Blanes & Moan (2002) SRKN14a: 6th order, 14 kicks.
 SplittingScheme srkn14a();
 
-/// saba2c | saba2 | aba864 | srkn14a; throws InvalidInput naming `option`.
-SplittingScheme parse_scheme(std::string_view name, const std::string& option = "--integrator");
+/// saba2c | saba2 | aba864 | srkn14a (any case); throws InvalidInput naming `parameter`.
+SplittingScheme parse_scheme(std::string_view name, const std::string& parameter = "scheme");
 
 }  // namespace granular

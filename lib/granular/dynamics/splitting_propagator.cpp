@@ -185,7 +185,7 @@ class SplittingPropagator final : public Propagator {
 
 void validate_propagation(const Chain& chain, double time_step, const State& initial) {
   if (!(time_step > 0) || !std::isfinite(time_step))
-    throw InvalidInput("--dt " + std::to_string(time_step) + ": the time step must be finite and > 0");
+    throw InvalidInput("time_step", " " + std::to_string(time_step) + ": the time step must be finite and > 0");
   if (initial.u.size() != chain.size() || initial.v.size() != chain.size())
     throw InvalidInput("initial state has " + std::to_string(initial.u.size()) + " beads, the chain " +
                        std::to_string(chain.size()));

@@ -1,6 +1,8 @@
 #pragma once
-// One realization of energy spreading (SPEC §4): integrate a chain from an initial state to T,
-// measuring on a schedule of exact multiples of τ. A pure function of (chain, initial state,
+// One realization of energy spreading (SPEC §4) as the tools run it: a kicked chain integrated to
+// T, with the observables of the `spreading` tool chosen by a flat config and returned in one
+// result. A thin layer over spread() and the observers (spread.hpp, observers.hpp), which is what
+// a program measuring something else should use. A pure function of (chain, initial state,
 // config), so ensembles can run it per realization and reduce in index order.
 #include <cstddef>
 #include <cstdint>
@@ -9,36 +11,19 @@
 
 #include "granular/dynamics/damping.hpp"
 #include "granular/dynamics/force_law.hpp"
+#include "granular/dynamics/integrator.hpp"
+#include "granular/dynamics/observers.hpp"
 #include "granular/dynamics/propagator.hpp"
+#include "granular/dynamics/sampling.hpp"
+#include "granular/dynamics/spread.hpp"
 #include "granular/dynamics/state.hpp"
 #include "granular/dynamics/tangent_map.hpp"
 
 namespace granular {
 
-enum class Sampling { logarithmic, uniform };
-Sampling parse_sampling(const std::string& name);
-
-/// A uniform grid of sample times, [begin, end] every `step` (all multiples of τ): where the
-/// exponents are fitted and L_d is taken, so that they see the curve densely (the paper
-/// computes L_d "where we discretize time as in our numerical integration"). Empty when
-/// end ≤ begin.
-struct DenseGrid {
-  double begin = 0, end = 0;  ///< [s]
-  double step = 1e-5;         ///< [s], a whole number of time steps
-  bool empty() const { return !(end > begin); }
-};
-
-/// What g(ν) transforms (SPEC §4). The paper's is the displacement; after a velocity kick in the
-/// sonic vacuum every bead the pulse has passed keeps a permanent displacement, a step in u_n(t)
-/// whose power ∝ 1/ν² buries the vibrations under a peak at 0 Hz. The velocity is the step's
-/// derivative (a pulse, white), so its spectrum shows the vibrations themselves.
-enum class SpectrumSource { displacement, velocity };
-SpectrumSource parse_spectrum_source(const std::string& name);  ///< "displacement" | "velocity"
-std::string to_string(SpectrumSource source);
-
 struct SpreadingConfig {
   ForceLawKind force_law = ForceLawKind::hertz;
-  std::string integrator = "saba2c";                ///< saba2c | saba2 | aba864 | srkn14a | reference
+  Integrator integrator{};                          ///< SABA2C unless told otherwise
   double duration = 1e-2;                           ///< T [s], a whole number of steps
   double time_step = 1e-6;                          ///< τ [s]
   std::size_t samples = 100;                        ///< times of t, m̃2, P⁻¹, energy error (≥ 2) outside `dense`
@@ -46,12 +31,11 @@ struct SpreadingConfig {
   DenseGrid dense;                                  ///< a uniform grid replacing the samples inside it (the fit window)
   std::size_t site = static_cast<std::size_t>(-1);  ///< excited bead n0 of m̃2 (0-based); default the centre
   ActiveWindow window;                              ///< ignored by the reference integrator
-  ReferenceTolerance reference{1e-15, 1e-15, 0.01e-6};  ///< step capped at 0.01 µs (contacts open)
-  std::vector<std::size_t> force_sites;                 ///< 0-based beads whose force is recorded
-  std::size_t force_samples = 1000;                     ///< uniform times of those forces
-  std::size_t map_samples = 0;                          ///< uniform times of the energy map; 0 = none
-  std::size_t map_stride = 1;                           ///< beads summed per map column
-  std::size_t spectrum_samples = 0;                     ///< uniform samples of u (or v) for g(ν); 0 = none
+  std::vector<std::size_t> force_sites;             ///< 0-based beads whose force is recorded
+  std::size_t force_samples = 1000;                 ///< uniform times of those forces
+  std::size_t map_samples = 0;                      ///< uniform times of the energy map; 0 = none
+  std::size_t map_stride = 1;                       ///< beads summed per map column
+  std::size_t spectrum_samples = 0;                 ///< uniform samples of u (or v) for g(ν); 0 = none
   SpectrumSource spectrum_source = SpectrumSource::displacement;
   double wall_warning = 1e-10;       ///< flag when (E_first + E_last)/H0 exceeds it
   double max_energy_error = 1e-3;    ///< guard on |H(t)−H0|/H0 at the samples; 0 = unwatched
@@ -61,7 +45,11 @@ struct SpreadingConfig {
   std::size_t deviation_samples = 0;  ///< uniform times of the deviation-vector distribution; 0 = none
 };
 
-/// Throws InvalidInput naming the option (--T, --dt, --samples, …) on a bad config.
+/// The integration part of a config, and the settings of its observers.
+IntegrationConfig integration_config(const SpreadingConfig& config);
+EnergySpreadObserver::Settings energy_spread_settings(const SpreadingConfig& config);
+
+/// Throws InvalidInput naming the parameter (time_step, duration, samples, forces_at, …) on a bad config.
 void validate(const SpreadingConfig& config, std::size_t beads);
 
 struct SpreadingResult {
@@ -93,14 +81,12 @@ struct SpreadingResult {
   double seconds = 0;                            ///< wall time of the integration
 };
 
+/// spread() with the observers `config` asks for (energy spread and final state always; forces,
+/// energy map, spectral density when their sites or samples are given), packed into one result.
 SpreadingResult run_spreading(const Chain& chain, const State& initial, const SpreadingConfig& config);
 
-/// Step numbers of `count` log-spaced (1 … total, duplicates removed) or uniform
-/// (0, stride, 2·stride …, stride = ⌊total/(count−1)⌋) samples.
-std::vector<std::uint64_t> sample_steps(std::uint64_t total, std::size_t count, Sampling sampling);
-
-/// The sample steps of a run: those of sample_steps() outside the dense grid, and the grid's
-/// own steps (begin, begin + step, …, and end) inside it; sorted, without duplicates.
+/// The sample steps of the energy spread of a run: those of sample_steps() outside the dense
+/// grid, and the grid's own steps inside it; sorted, without duplicates.
 std::vector<std::uint64_t> sample_steps(const SpreadingConfig& config);
 
 }  // namespace granular

@@ -93,8 +93,9 @@ AtomicFile::~AtomicFile() {
 void AtomicFile::commit() {
   // Every step can fail on a full or broken disk; the message says which file and why. Until the
   // rename the target is untouched, and the temporary file goes with the destructor.
-  if (const int e = buffer_->finish()) throw IoError("writing '" + temporary_ + "' failed" + cause(e));
-  if (!out_) throw IoError("writing '" + temporary_ + "' failed" + cause(EIO));
+  // Named by the file the user asked for: the temporary name is never seen (it goes with the destructor).
+  if (const int e = buffer_->finish()) throw IoError("writing '" + path_ + "' failed" + cause(e));
+  if (!out_) throw IoError("writing '" + path_ + "' failed" + cause(EIO));
   if (std::rename(temporary_.c_str(), path_.c_str()) != 0)
     throw IoError("cannot rename '" + temporary_ + "' to '" + path_ + "'" + cause(errno));
   committed_ = true;

@@ -62,11 +62,11 @@ void write_dataset(hid_t file, const std::string& name, hid_t type, const void* 
 }  // namespace
 
 void Hdf5File::write(const std::string& name, const double* data, std::size_t rows, std::size_t cols) {
-  write_dataset(file_, name, H5T_NATIVE_DOUBLE, data, rows, cols, temporary_);
+  write_dataset(file_, name, H5T_NATIVE_DOUBLE, data, rows, cols, path_);  // named as the user asked
 }
 
 void Hdf5File::write(const std::string& name, const std::vector<std::uint64_t>& data) {
-  write_dataset(file_, name, H5T_NATIVE_UINT64, data.data(), data.size(), 1, temporary_);
+  write_dataset(file_, name, H5T_NATIVE_UINT64, data.data(), data.size(), 1, path_);
 }
 
 void Hdf5File::attribute(const std::string& name, const std::string& value) {
@@ -78,14 +78,14 @@ void Hdf5File::attribute(const std::string& name, const std::string& value) {
   if (attr >= 0) H5Aclose(attr);
   H5Sclose(space);
   H5Tclose(type);
-  if (status < 0) throw IoError("HDF5: cannot write attribute '" + name + "' to '" + temporary_ + "'");
+  if (status < 0) throw IoError("HDF5: cannot write attribute '" + name + "' to '" + path_ + "'");
 }
 
 void Hdf5File::commit() {
   errno = 0;
   const herr_t closed = H5Fclose(file_);
   file_ = -1;
-  if (closed < 0) throw IoError("HDF5: closing '" + temporary_ + "' failed" + cause());
+  if (closed < 0) throw IoError("HDF5: writing '" + path_ + "' failed" + cause());
   if (std::rename(temporary_.c_str(), path_.c_str()) != 0)
     throw IoError("cannot rename '" + temporary_ + "' to '" + path_ + "'" + cause());
   committed_ = true;

@@ -44,7 +44,7 @@ ShiftInvertResult arpack_nearest(const SymTridiagonal& t, double sigma, const Sh
   const int nev = config.count;
   if (nev < 1 || nev > n - 1)
     throw InvalidInput("ARPACK", ": " + std::to_string(nev) + " eigenpairs of an N = " + std::to_string(n) +
-                                     " matrix; it needs 1 <= count <= N - 1 (use --method lapack)");
+                                     " matrix; it needs 1 <= count <= N - 1 (use method lapack)");
   const int ncv = std::min(n, config.subspace > 0 ? std::max(config.subspace, nev + 1) : std::max(2 * nev + 1, 20));
   ShiftInvertOperator op;
   op.factorize(t, sigma);

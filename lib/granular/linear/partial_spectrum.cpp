@@ -8,6 +8,7 @@
 
 #include "granular/error.hpp"
 #include "granular/linear/detail/lapack_eigensolver.hpp"
+#include "granular/linear/detail/mode_vector.hpp"
 #include "granular/linear/detail/shift_invert_eigensolvers.hpp"
 #include "granular/linear/detail/sturm_bisection.hpp"
 #include "granular/linear/dynamical_matrix.hpp"
@@ -284,15 +285,7 @@ PartialSpectrum solve_partial(const SymTridiagonal& t, const std::vector<double>
     }
     if (precomputed && !config.keep_vectors) continue;
     double* w = cand.vectors.col(static_cast<Eigen::Index>(i)).data();
-    double norm2 = 0;
-    std::size_t big = 0;
-    for (std::size_t q = 0; q < n; ++q) {
-      norm2 += w[q] * w[q];
-      if (std::fabs(w[q]) > std::fabs(w[big])) big = q;
-    }
-    // Unit length and a fixed sign (largest entry > 0), so methods and runs compare and diff.
-    const double f = (w[big] < 0 ? -1.0 : 1.0) / std::sqrt(norm2);
-    for (std::size_t q = 0; q < n; ++q) w[q] *= f;
+    detail::normalize_mode(w, n);
     if (!precomputed) {
       const double lambda = cand.values[i];
       t.multiply(w, tw.data());

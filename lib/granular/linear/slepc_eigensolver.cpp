@@ -69,7 +69,7 @@ ShiftInvertResult slepc_nearest(const SymTridiagonal& t, double sigma, const Shi
   const PetscInt nev = config.count;
   if (nev < 1 || nev > n - 1)
     throw InvalidInput("SLEPc", ": " + std::to_string(nev) + " eigenpairs of an N = " + std::to_string(n) +
-                                    " matrix; it needs 1 <= count <= N - 1 (use --method lapack)");
+                                    " matrix; it needs 1 <= count <= N - 1 (use method lapack)");
   if (!std::isfinite(sigma)) throw InvalidInput("SLEPc", ": the shift must be finite");
   ensure_started();
 

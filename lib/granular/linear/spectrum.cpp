@@ -7,6 +7,7 @@
 #include "granular/error.hpp"
 #include "granular/linear/detail/lapack_eigensolver.hpp"
 #include "granular/linear/detail/mode_ipr_solver.hpp"
+#include "granular/linear/detail/mode_vector.hpp"
 #include "granular/linear/detail/partial_spectrum.hpp"
 #include "granular/linear/detail/twisted_ipr_solver.hpp"
 #include "granular/linear/mode_ipr.hpp"
@@ -93,18 +94,6 @@ void check_matrix(const DynamicalMatrix& d) {
     if (!std::isfinite(s) || !(s > 0)) throw InvalidInput("inverse_sqrt_mass", ": entries must be finite and > 0");
 }
 
-/// Unit length and a fixed sign (largest entry > 0), so methods and runs compare and diff.
-void normalize(double* w, std::size_t n) {
-  double norm2 = 0;
-  std::size_t big = 0;
-  for (std::size_t q = 0; q < n; ++q) {
-    norm2 += w[q] * w[q];
-    if (std::fabs(w[q]) > std::fabs(w[big])) big = q;
-  }
-  const double f = (w[big] < 0 ? -1.0 : 1.0) / std::sqrt(norm2);
-  for (std::size_t q = 0; q < n; ++q) w[q] *= f;
-}
-
 void number_modes(Spectrum& s) {
   s.mode.resize(s.omega2.size());
   s.freq_khz.resize(s.omega2.size());
@@ -141,7 +130,7 @@ Spectrum SpectrumSolver::solve(const DynamicalMatrix& d, const ModeSelection& se
             displacement_ipr(eig.vectors.col(static_cast<Eigen::Index>(k)).data(), d.inverse_sqrt_mass.data(), n);
       if (config_.vectors) {
         out.vectors.assign(eig.vectors.data(), eig.vectors.data() + n * n);
-        for (std::size_t k = 0; k < n; ++k) normalize(out.vectors.data() + k * n, n);
+        for (std::size_t k = 0; k < n; ++k) detail::normalize_mode(out.vectors.data() + k * n, n);
       }
       out.info.method = "lapack-" + std::string(to_string(eig.driver));
       out.info.fallbacks = eig.fallbacks;

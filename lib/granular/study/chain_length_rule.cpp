@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "granular/dynamics/scheme.hpp"
 #include "granular/error.hpp"
 #include "granular/study/time_step_rule.hpp"
 
@@ -9,7 +10,7 @@ namespace granular {
 
 ChainLength automatic_chain_length(const TransportCase& c) {
   TransportCase probe = c;  // ω_max depends on the chain and the kick, not on the scheme
-  probe.dynamics.integrator = "saba2c";
+  probe.dynamics.integrator = saba2c();
   probe.n = 3;
   probe.site = 1;
   ChainLength length;

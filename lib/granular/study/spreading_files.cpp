@@ -2,6 +2,7 @@
 
 #include "granular/io/csv_writer.hpp"
 #include "granular/number_format.hpp"
+#include "granular/io/hdf5_file.hpp"
 
 namespace granular {
 
@@ -73,6 +74,29 @@ void write_forces_csv(std::ostream& out, const SpreadingResult& r, const std::ve
 void write_spectrum_csv(std::ostream& out, const SpreadingResult& r) {
   CsvWriter t(out, {"freq_khz", "g"});
   for (std::size_t j = 0; j < r.spectrum.size(); ++j) t.row(r.spectrum_khz[j], r.spectrum[j]);
+}
+
+void write_energy_map(const std::string& path, const SpreadingResult& r, std::size_t stride) {
+  std::vector<double> sites;
+  for (std::size_t k = 0; k < r.map_columns; ++k) sites.push_back(static_cast<double>(k * stride + 1));
+  write_hdf5_atomically(path, {{"energy", {r.map_t.size(), r.map_columns}, r.map_energy.data()},
+                               {"t", {r.map_t.size()}, r.map_t.data()},
+                               {"site", {sites.size()}, sites.data()}});
+}
+
+nlohmann::json describe_run(const SpreadingResult& r, const nlohmann::json& realization) {
+  nlohmann::json run = {{"realization", realization},
+          {"initial_energy_J", r.initial_energy},
+          {"max_energy_error", r.max_energy_error},
+          {"steps", r.steps},
+          {"bond_updates", r.bond_updates},
+          {"integration_s", r.seconds},
+          {"window_final", {r.window_begin + 1, r.window_end}},
+          {"wall_energy", r.wall_energy},
+          {"reached_walls", r.reached_walls}};
+  if (!r.dissipated.empty()) run["dissipated_J"] = r.dissipated.back();  // with damping only
+  if (!r.mle.empty()) run["mle_per_s"] = r.mle.back();                  // with the tangent map only
+  return run;
 }
 
 }  // namespace granular

@@ -1,9 +1,12 @@
 #pragma once
-// The CSV files of a spreading run or ensemble (the `spreading` tool's contract, DESIGN.md):
-// one writer per file, so that any program writes them exactly as the tool does.
+// The files of a spreading run or ensemble (the `spreading` tool's contract, DESIGN.md): one
+// writer per file, so that any program writes them exactly as the tool does.
 #include <cstddef>
 #include <ostream>
+#include <string>
 #include <vector>
+
+#include <nlohmann/json.hpp>
 
 #include "granular/dynamics/spreading.hpp"
 #include "granular/study/transport_study.hpp"
@@ -28,5 +31,13 @@ void write_forces_csv(std::ostream& out, const SpreadingResult& run, const std::
 void write_spectrum_csv(std::ostream& out, const SpreadingResult& run);
 /// t,site,share: the deviation vector's distribution along the chain (spreading --mle).
 void write_deviation_csv(std::ostream& out, const SpreadingResult& run);
+/// The energy map as HDF5, whole or not at all: datasets energy [time][column] [J], t [s] and
+/// site (the first bead of each column, from 1; `stride` beads per column).
+void write_energy_map(const std::string& path, const SpreadingResult& run, std::size_t stride);
+
+/// The "run" entry of a run's JSON: the realization, initial energy, worst energy error, steps,
+/// bond updates, integration time, final active window (beads from 1), wall energy; the energy
+/// dissipated by T [J] with damping and X1(T) [1/s] with the tangent map.
+nlohmann::json describe_run(const SpreadingResult& run, const nlohmann::json& realization);
 
 }  // namespace granular

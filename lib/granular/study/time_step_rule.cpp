@@ -93,8 +93,8 @@ double highest_frequency_bound(const ForceLaw& law, const Chain& chain, double e
 
 TimeStepLimit time_step_limit(const TransportCase& c, const Chain* chain) {
   TimeStepLimit limit;
-  if (c.dynamics.integrator == "reference") return limit;  // adaptive: no step to bound
-  limit.scheme_limit = stable_step_limit(parse_scheme(c.dynamics.integrator));
+  if (c.dynamics.integrator.reference) return limit;  // adaptive: no step to bound
+  limit.scheme_limit = stable_step_limit(c.dynamics.integrator.scheme);
   TransportCase probe = c;
   std::vector<Chain> chains;
   if (chain) {
@@ -138,11 +138,11 @@ double default_time_step(const TimeStepLimit& limit, double preferred) {
 
 void check_time_step(const TransportCase& c, const TimeStepLimit& limit) {
   if (c.dynamics.time_step > limit.max_time_step)
-    throw InvalidInput("time_step", " " + format_number(c.dynamics.time_step) + " s: past the stability limit of " +
-                                        c.dynamics.integrator + " on this chain; the largest stable time step is " +
-                                        format_number(limit.max_time_step) +
-                                        " s (h* = " + format_number(limit.scheme_limit) +
-                                        ", omega_max = " + format_number(limit.omega_max) + " rad/s)");
+    throw InvalidInput("time_step",
+                       " " + format_number(c.dynamics.time_step) + " s: past the stability limit of " +
+                           c.dynamics.integrator.name() + " on this chain; the largest stable time step is " +
+                           format_number(limit.max_time_step) + " s (h* = " + format_number(limit.scheme_limit) +
+                           ", omega_max = " + format_number(limit.omega_max) + " rad/s)");
 }
 
 nlohmann::json to_json(const TimeStepLimit& limit) {

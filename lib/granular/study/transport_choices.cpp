@@ -1,0 +1,57 @@
+#include "granular/study/transport_choices.hpp"
+
+#include <cmath>
+
+#include "granular/dynamics/integrator.hpp"
+#include "granular/error.hpp"
+#include "granular/number_format.hpp"
+
+namespace granular {
+namespace {
+
+double finite_non_negative(double value, const char* name) {
+  if (!(value >= 0) || !std::isfinite(value))
+    throw InvalidInput(name, " " + format_number(value) + ": must be finite and >= 0");
+  return value;
+}
+
+}  // namespace
+
+void apply(const TransportChoices& o, TransportCase& c) {
+  c.alpha = o.alpha;
+  c.match_beta = !o.beta;
+  if (o.beta) c.beta = *o.beta;
+  if (o.site < 0 || o.site > static_cast<long long>(c.n))
+    throw InvalidInput("site", " " + std::to_string(o.site) + ": outside the chain of " + std::to_string(c.n) +
+                                   " beads (1..N, 0 = centre)");
+  c.site = o.site == 0 ? (c.n - 1) / 2 : static_cast<std::size_t>(o.site - 1);
+  c.centre = parse_spread_centre(o.centre);
+  SpreadingConfig& d = c.dynamics;
+  d.duration = o.duration;
+  d.time_step = o.time_step;
+  d.integrator = parse_integrator(o.integrator);
+  d.force_law = parse_force_law(o.force_law);
+  if (o.samples < 2) throw InvalidInput("samples", " " + std::to_string(o.samples) + ": at least 2");
+  d.samples = static_cast<std::size_t>(o.samples);
+  d.sampling = parse_sampling(o.sampling);
+  d.window.enabled = o.active_window;
+  d.window.threshold = finite_non_negative(o.window_threshold, "window_threshold");
+  d.integrator.tolerance.max_step = finite_non_negative(o.reference_max_step, "reference_max_step");
+  d.max_energy_error = finite_non_negative(o.max_energy_error, "max_energy_error");
+  if (o.energy_guard != "stop" && o.energy_guard != "warn")
+    throw InvalidInput("energy_guard", " '" + o.energy_guard + "': stop or warn");
+  d.stop_on_energy_error = o.energy_guard == "stop";
+  if (!(o.fit_begin > 0) || !(o.fit_end > o.fit_begin))
+    throw InvalidInput("fit", " " + format_number(o.fit_begin) + ":" + format_number(o.fit_end) +
+                                  ": expected start:stop with 0 < start < stop [s]");
+  c.fit = true;
+  c.fit_begin = o.fit_begin;
+  c.fit_end = o.fit_end;
+  c.fit_step = o.fit_step;
+  c.criterion.kappa = o.kappa;
+  c.criterion.t_start = o.t_star;
+  if (o.bootstrap < 2) throw InvalidInput("bootstrap", " " + std::to_string(o.bootstrap) + ": at least 2 resamples");
+  c.bootstrap.resamples = static_cast<std::size_t>(o.bootstrap);
+}
+
+}  // namespace granular

@@ -1,0 +1,41 @@
+#pragma once
+// The choices of a kicked-chain run as front ends take them — the `spreading` and `exponents`
+// tools' dynamics options, the Python keywords of granular.spreading, transport and
+// exponent_table — turned into a TransportCase by one rule, so that the same words give the same
+// case everywhere. Defaults are the paper's (α = 1e-7 m, β = 8e-3 m/s, the centre bead, m̃2 about
+// the kicked site, fits on 4–10 ms every 10 µs, t* = 4 ms, κ = 0.1). Errors name the choice
+// (`site`, `window_threshold`, `fit`); each front end tells it in its own words.
+#include <optional>
+#include <string>
+
+#include "granular/study/transport_study.hpp"
+
+namespace granular {
+
+struct TransportChoices {
+  double alpha = 1e-7;                       ///< displacement kick [m] (also what a matched β matches)
+  std::optional<double> beta = paper_beta;   ///< velocity kick [m/s]; none: β matching α's energy on each chain
+  long long site = 0;                        ///< kicked bead 1…N (counting from 1); 0: the centre (N+1)/2
+  std::string centre = "site";               ///< site | centroid: the m̃2 the tables show
+  double duration = 1e-2, time_step = 1e-6;  ///< T, τ [s]
+  std::string integrator = "saba2c";         ///< saba2c | saba2 | aba864 | srkn14a | reference
+  std::string force_law = "hertz";           ///< hertz | fpu | linear
+  long long samples = 100;                   ///< sample times outside the fit window (≥ 2)
+  std::string sampling = "log";              ///< log | uniform
+  double fit_begin = 4e-3, fit_end = 1e-2;   ///< fit window [s], 0 < begin < end
+  double fit_step = 1e-5;                    ///< sample spacing inside it [s]
+  double t_star = 4e-3, kappa = 0.1;         ///< the power-law criterion
+  long long bootstrap = 1000;                ///< resamples of the realization bootstrap (≥ 2)
+  bool active_window = true;
+  double window_threshold = 1e-30;      ///< finite, ≥ 0
+  double reference_max_step = 0.01e-6;  ///< [s], finite, ≥ 0; 0 = none
+  double max_energy_error = 1e-3;       ///< finite, ≥ 0; 0 = unwatched
+  std::string energy_guard = "stop";    ///< stop | warn
+};
+
+/// Fills `c` from the choices: everything but the chain (disorder, q, ξ, N, F0, R1, seed,
+/// realizations) and the kick kind. Needs c.n (for `site`). Leaves c.fit true. Throws
+/// InvalidInput naming the choice.
+void apply(const TransportChoices& choices, TransportCase& c);
+
+}  // namespace granular
