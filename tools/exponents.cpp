@@ -70,7 +70,7 @@ int main(int argc, char** argv) {
                          profile_f0 == "none" ? std::vector<double>{} : parse_number_list(profile_f0, "--profile-F0");
                      if (profile_realizations < 0) throw InvalidInput("--profile-realizations: must be >= 0");
                      config.profile_realizations = static_cast<std::size_t>(profile_realizations);
-                     if (n < 2 && !auto_n) throw InvalidInput("--N " + std::to_string(n) + ": a chain needs at least 2 beads");
+                     if (n < 2) throw InvalidInput("--N " + std::to_string(n) + ": a chain needs at least 2 beads");
                      if (n > 100000000) throw InvalidInput("--N " + std::to_string(n) + ": more than 1e8 beads");
                      if (realizations < 1)
                        throw InvalidInput("--realizations " + std::to_string(realizations) + ": must be >= 1");

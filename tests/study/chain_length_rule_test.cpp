@@ -68,8 +68,7 @@ TEST(ChainLengthRule, Long_TheWallGuardNeverFiresAtTheAutomaticN) {
           const SpreadingResult s = run(c, r);
           EXPECT_FALSE(s.reached_walls) << f0 << " " << to_string(kick) << " " << to_string(d);
           EXPECT_EQ(s.wall_energy, 0.0);
-          const double reach =
-              static_cast<double>(std::max(c.site - s.window_begin, s.window_end - 1 - c.site));
+          const double reach = static_cast<double>(std::max(c.site - s.window_begin, s.window_end - 1 - c.site));
           EXPECT_LT(reach, length.speed * c.dynamics.duration / 2) << f0 << " " << to_string(kick);
         }
         const TransportSummary summary = run_transport_study(c, {1, "", false, nullptr});

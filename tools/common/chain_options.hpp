@@ -19,7 +19,7 @@ struct ChainOptions {
   double xi = 0.5, q = 0.5, f0 = 10, r1 = paper_r1;
   long long n = 100, seed = 1, realization = 0;
   std::string config, radii;
-  bool auto_n = false;          ///< --N auto (long_time_options.hpp): N from T, the chain drawn from its centre
+  bool auto_n = false;         ///< --N auto (long_time_options.hpp): N from T, the chain drawn from its centre
   nlohmann::json length_rule;  ///< and the rule's numbers
 };
 

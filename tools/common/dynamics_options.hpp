@@ -127,8 +127,7 @@ inline nlohmann::json settle_time_step(std::vector<TransportCase>& cases, const 
     omega_max = std::max(omega_max, time_step_limit(c, chain).omega_max);
     closed = closed && bonds_stay_closed(c);
   }
-  const SchemeChoice choice =
-      choose_scheme(trial.front().dynamics.time_step, srkn14a_default_step(omega_max), closed);
+  const SchemeChoice choice = choose_scheme(trial.front().dynamics.time_step, srkn14a_default_step(omega_max), closed);
   for (TransportCase& c : cases) {
     c.dynamics.integrator = parse_integrator(choice.integrator);
     c.dynamics.time_step = choice.time_step;

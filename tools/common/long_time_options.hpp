@@ -31,7 +31,8 @@ inline void add_auto_length(CLI::App& app, bool& auto_n) {
         }
         return {};
       },
-      "INT|auto"));
+      ""));
+  n->type_name("INT|auto");
 }
 
 /// Sizes `c` (its chain, kick, F0, force law and T set) for --N auto: N, the centre kick, the

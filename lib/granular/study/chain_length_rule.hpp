@@ -18,12 +18,12 @@
 namespace granular {
 
 struct ChainLength {
-  double omega_max = 0;           ///< ω_max [rad/s] of time_step_rule.hpp (any integrator)
-  double speed = 0;               ///< Ω [beads/s], = ω_max read as beads per second
-  double reach = 0;               ///< Ω T [beads]: farthest a wave can travel by T
-  double margin = 0.1;            ///< relative margin on the reach
-  std::size_t pad = 50;           ///< beads added on each side beyond it
-  std::size_t n = 0;              ///< the chain length: 2⌈(1 + margin) Ω T⌉ + 1 + 2 pad
+  double omega_max = 0;  ///< ω_max [rad/s] of time_step_rule.hpp (any integrator)
+  double speed = 0;      ///< Ω [beads/s], = ω_max read as beads per second
+  double reach = 0;      ///< Ω T [beads]: farthest a wave can travel by T
+  double margin = 0.1;   ///< relative margin on the reach
+  std::size_t pad = 50;  ///< beads added on each side beyond it
+  std::size_t n = 0;     ///< the chain length: 2⌈(1 + margin) Ω T⌉ + 1 + 2 pad
 };
 
 /// The automatic N of case `c` (its chain kind, F0, kick, force law and T; not its N or τ).

@@ -22,9 +22,9 @@
 namespace granular {
 
 struct SchemeChoice {
-  std::string integrator;  ///< "srkn14a" or "saba2c"
-  double time_step = 0;    ///< its default τ [s] (before the stability rule's own check)
-  double relative_cost = 1;  ///< CPU per simulated second relative to SABA2C at its default τ
+  std::string integrator;         ///< "srkn14a" or "saba2c"
+  double time_step = 0;           ///< its default τ [s] (before the stability rule's own check)
+  double relative_cost = 1;       ///< CPU per simulated second relative to SABA2C at its default τ
   bool bonds_stay_closed = true;  ///< no contact can open (the force stays smooth)
 };
 

@@ -48,7 +48,7 @@ struct TransportCase {
   double beta = paper_beta;                  ///< velocity kick [m/s]
   bool match_beta = false;                   ///< velocity kick carrying the energy of α on each chain instead
   std::size_t site = 1250;                   ///< 0-based kicked bead n0 (1251 counting from 1)
-  bool centred_draw = false;  ///< chains drawn outward from the centre bead (centred_configuration.hpp)
+  bool centred_draw = false;                 ///< chains drawn outward from the centre bead (centred_configuration.hpp)
   SpreadCentre centre = SpreadCentre::site;  ///< which m̃2 the tables show (both are computed)
   SpreadingConfig dynamics;                  ///< T, τ, integrator, force law, samples, window
   std::uint64_t seed = 1;
