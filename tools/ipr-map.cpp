@@ -1,7 +1,9 @@
 // ipr-map: mean frequency and inverse participation ratio of every mode of disordered
 // chains, over a grid of size ratios ξ and probabilities q (the paper's IPR-map figure).
+#include <limits>
 #include <string>
 
+#include "common/chain_options.hpp"
 #include "common/metadata.hpp"
 #include "common/output_claim.hpp"
 #include "common/spectrum_options.hpp"
@@ -50,6 +52,8 @@ int main(int argc, char** argv) {
   app.add_option("--bin-khz", config.bin_khz,
                  "average in frequency bins of this width [kHz] instead of by mode number: "
                  "columns disorder,q,xi,freq_lo_khz,freq_hi_khz,modes,ipr (empty bins: modes 0, ipr nan)");
+  tool::ChainOptions beads;  // --types/--type-masses/--polydisperse (with --disorder as their rule)
+  tool::add_bead_distribution_options(app, beads);
   app.add_flag("--quiet", quiet, "no progress line on stderr");
 
   return tool::run(app, argc, argv, [&] {
@@ -71,6 +75,9 @@ int main(int argc, char** argv) {
     } else if (app.count("--method") > 0) {
       throw InvalidInput("--method", ": only with --near/--count or --window (the full map uses --solver)");
     }
+    beads.disorder = disorder;
+    if ((config.beads = tool::bead_distribution(beads)))
+      config.q_values = config.xi_values = {std::numeric_limits<double>::quiet_NaN()};  // one cell
     validate(config);
     const tool::OutputClaim claim(tool::prefix_of(output), meta.command());
     check_writable(output);
@@ -84,7 +91,9 @@ int main(int argc, char** argv) {
     progress.finish();
 
     AtomicFile csv(output);
-    const std::string name = to_string(config.disorder);
+    const std::string name = !config.beads                                         ? to_string(config.disorder)
+                             : config.beads->kind == BeadDistribution::Kind::types ? "types"
+                                                                                   : "polydisperse";
     if (selection.given()) {  // modes differ between chains: one row per mode of each realization
       CsvWriter table(csv.stream(), {"disorder", "q", "xi", "realization", "mode", "freq_khz", "ipr"});
       for (const auto& cell : cells)
@@ -117,6 +126,7 @@ int main(int argc, char** argv) {
         {"seed", config.seed},
         {"threads", resolve_threads(run.threads)},
         {"solver", solver}};
+    if (config.beads) meta["parameters"]["beads"] = describe(*config.beads);
     if (!selection.given()) {
       meta["averaging"] = config.bin_khz > 0 ? "frequency-bin" : "mode";
       if (config.bin_khz > 0) meta["bin_khz"] = config.bin_khz;
@@ -127,6 +137,11 @@ int main(int argc, char** argv) {
                            {"count", selection.count ? nlohmann::json(*selection.count) : nlohmann::json(nullptr)},
                            {"window_khz",
                             selection.window ? nlohmann::json(*selection.window) : nlohmann::json(nullptr)}};
+    std::size_t solved = 0, clustered = 0;
+    for (const auto& cell : cells) solved += cell.solved_modes, clustered += cell.clustered_modes;
+    meta["clustered"] = {{"relative_gap", cluster_relative_gap},
+                         {"modes", clustered},
+                         {"fraction", solved > 0 ? static_cast<double>(clustered) / static_cast<double>(solved) : 0.0}};
     meta["output"] = output;
     meta.write(json_path, {&csv});
   });

@@ -2,6 +2,7 @@
 // frequency: all of them, or the K nearest a frequency (--near/--count) or those in a band
 // (--window), by any solver of granular::spectrum. Under `mpirun -np P ... --method slepc` the
 // matrix rows are spread over the ranks; rank 0 writes.
+#include <algorithm>
 #include <string>
 
 #include "common/chain_options.hpp"
@@ -30,7 +31,7 @@ int main(int argc, char** argv) {
   tool::add_selection_options(app, selection_options, "");
   std::string method = "lapack", output = "spectrum.csv", vectors_file, dump_matrix;
   SpectrumConfig config;
-  bool quiet = false;
+  bool quiet = false, clusters = false;
   app.add_option("--method", method,
                  "every mode: lapack (dstevd) | fast (no eigenvectors); --near/--window: lapack (dstemr by index) |\n"
                  "bisect (Sturm bisection + inverse iteration, the fastest for long chains) | arpack | slepc\n"
@@ -45,6 +46,9 @@ int main(int argc, char** argv) {
                  "also write the dynamical matrix as raw little-endian doubles PREFIX.diag.f64 (N) and "
                  "PREFIX.offdiag.f64 (N-1) [1/s^2], to compare with other codes on the very same matrix");
   app.add_option("--output", output, "CSV file to write (the JSON goes beside it)")->capture_default_str();
+  app.add_flag("--clusters", clusters,
+               "add a column clustered: 1 for a mode in a near-degenerate cluster (relative gap < 1e-10), whose "
+               "IPR depends on the basis chosen inside it");
   app.add_flag("--quiet", quiet, "no notes on stderr");
 
   return tool::run(app, argc, argv, [&] {
@@ -82,8 +86,16 @@ int main(int argc, char** argv) {
 
     if (!quiet && result.size() == 0) std::fprintf(stderr, "spectrum: note: no modes in the window\n");
     AtomicFile csv(output);
-    CsvWriter table(csv.stream(), {"mode", "freq_khz", "ipr"});
-    for (std::size_t j = 0; j < result.size(); ++j) table.row(result.mode[j], result.freq_khz[j], result.ipr[j]);
+    if (clusters) {
+      CsvWriter table(csv.stream(), {"mode", "freq_khz", "ipr", "clustered"});
+      for (std::size_t j = 0; j < result.size(); ++j)
+        table.row(result.mode[j], result.freq_khz[j], result.ipr[j], int{result.clustered[j]});
+    } else {
+      CsvWriter table(csv.stream(), {"mode", "freq_khz", "ipr"});
+      for (std::size_t j = 0; j < result.size(); ++j) table.row(result.mode[j], result.freq_khz[j], result.ipr[j]);
+    }
+    const auto flagged = static_cast<std::size_t>(std::count(result.clustered.begin(), result.clustered.end(), 1));
+    meta["clustered"] = {{"relative_gap", cluster_relative_gap}, {"modes", flagged}};
     meta["chain"] = chain_description;
     meta["method"] = method;
     meta["solver"] = {{"method", result.info.method}, {"fallbacks", result.info.fallbacks}};

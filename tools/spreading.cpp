@@ -10,6 +10,7 @@
 #include "common/long_run_options.hpp"
 #include "common/long_time_options.hpp"
 #include "common/metadata.hpp"
+#include "common/mode_kick_options.hpp"
 #include "common/output_paths.hpp"
 #include "common/spreading_outputs.hpp"
 #include "common/tool_main.hpp"
@@ -31,14 +32,17 @@ int main(int argc, char** argv) {
   tool::ChainOptions chain_options;
   chain_options.n = 2501;
   tool::DynamicsOptions dynamics;
+  tool::ModeKickOptions mode_kick;
   std::string ic = "displacement", output = "spreading";
   long long realizations = 1;
   tool::LongRunOptions run;
   tool::SpreadingOutputs more;
   tool::add_chain_options(app, chain_options);
   tool::add_auto_length(app, chain_options.auto_n);
-  app.add_option("--ic", ic, "initial condition: displacement | velocity")->capture_default_str();
+  app.add_option("--ic", ic, "initial condition: displacement | velocity | mode (a linear mode: --mode, --mode-khz)")
+      ->capture_default_str();
   tool::add_dynamics_options(app, dynamics);
+  tool::add_mode_kick_options(app, mode_kick);
   tool::add_lyapunov_options(app, dynamics.beyond);
   app.add_option("--realizations", realizations, "realizations to average (ensemble means and exponents)")
       ->capture_default_str();
@@ -60,7 +64,9 @@ int main(int argc, char** argv) {
         const tool::SelectedChain selected = tool::build_chain(chain_options);
         TransportCase c;
         tool::apply(chain_options, selected.chain.size(), c);
+        c.beads = selected.beads;
         c.kick = parse_kick(ic);
+        tool::apply(mode_kick, c);
         c.realizations = static_cast<std::size_t>(realizations);
         c.profile_realizations = more.profile ? c.realizations : 0;
         SpreadingConfig& d = c.dynamics;
@@ -115,6 +121,7 @@ int main(int argc, char** argv) {
         meta["parameters"]["chain"] = selected.description;
         if (c.kick == Kick::velocity && (!ensemble || !c.match_beta))
           meta["parameters"]["beta_m_s"] = kicked.beta;  // the β used
+        if (c.kick == Kick::mode) meta["parameters"]["mode_used"] = to_json(kicked.mode);
         meta["seed"] = chain_options.seed;
         meta["time_step_rule"] = step_rule;
         for (const char* key : {"gamma", "gamma_err", "gamma_real_err", "eta", "eta_err", "eta_real_err", "power_law"})
@@ -134,5 +141,8 @@ int main(int argc, char** argv) {
         for (auto& f : files) f->commit();
         if (ensemble) CheckpointLog::remove_all(checkpoint);
       },
-      {{"spectrum_source", "--spectrum-of"}, {"lyapunov", "--mle"}});
+      {{"spectrum_source", "--spectrum-of"},
+       {"lyapunov", "--mle"},
+       {"near_khz", "--mode-khz"},
+       {"amplitude", "--alpha"}});
 }

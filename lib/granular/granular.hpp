@@ -48,6 +48,7 @@
 #include "granular/study/exponent_table.hpp"
 #include "granular/study/ipr_map.hpp"
 #include "granular/study/localization_scan.hpp"
+#include "granular/study/mode_kick.hpp"
 #include "granular/study/paper_comparison.hpp"
 #include "granular/study/spectrum_file.hpp"
 #include "granular/study/spreading_files.hpp"

@@ -146,8 +146,8 @@ void bind_dynamics(py::module_& m) {
          long long samples, const std::string& sampling, const py::object& fit, double fit_step, double t_star,
          double kappa, long long bootstrap, bool active_window, double window_threshold, double reference_max_step,
          double max_energy_error, const std::string& energy_guard, const py::object& forces_at, long long force_samples,
-         bool energy_map, long long map_samples, long long map_stride, bool spectral_density,
-         long long spectrum_samples, const std::string& spectrum_of, bool progress) {
+         bool energy_map, long long map_samples, long long map_stride, bool spectral_density, long long spectrum_samples,
+         const std::string& spectrum_of, bool progress, long mode, double mode_khz, double energy) {
         const DynamicsKeywords k{alpha,
                                  beta,
                                  site,
@@ -201,6 +201,9 @@ void bind_dynamics(py::module_& m) {
         } catch (const InvalidInput&) {
           bad_value("spectrum_of", " '" + spectrum_of + "': displacement or velocity");
         }
+        if ((mode != 0 || mode_khz >= 0 || energy != 0) && c.kick != Kick::mode)
+          bad_value("mode", ": mode, mode_khz and energy only with ic='mode'");
+        c.mode = {.mode = mode, .near_khz = mode_khz, .energy = energy, .amplitude = 0};
         validate(c);
         const KickedChain kicked = kick(c, chain.chain);
 
@@ -216,6 +219,7 @@ void bind_dynamics(py::module_& m) {
         meta["parameters"] = describe(c);
         meta["parameters"]["chain"] = described;
         if (c.kick == Kick::velocity) meta["parameters"]["beta_m_s"] = kicked.beta;  // the β used
+        if (c.kick == Kick::mode) meta["parameters"]["mode_used"] = to_json(kicked.mode);
         meta["seed"] = c.seed;
         const nlohmann::json fitted = exponent_keys(exponents, c.centre);
         meta.update(fitted);
@@ -283,9 +287,12 @@ void bind_dynamics(py::module_& m) {
       py::arg("forces_at") = py::none(), py::arg("force_samples") = 1000, py::arg("energy_map") = false,
       py::arg("map_samples") = 500, py::arg("map_stride") = 1, py::arg("spectral_density") = false,
       py::arg("spectrum_samples") = 2000, py::arg("spectrum_of") = "displacement", py::arg("progress") = false,
+      py::arg("mode") = 0, py::arg("mode_khz") = -1.0, py::arg("energy") = 0.0,
       (std::string("Energy spreading after a single-site kick in one chain (SPEC §4), integrated to T: the spreading "
                    "tool for one realization.\n\n    chain: a granular.Chain (F0 = 0 is the sonic vacuum)\n"
-                   "    ic: 'displacement' (u = alpha at the site) | 'velocity' (v = beta at the site)\n") +
+                   "    ic: 'displacement' (u = alpha at the site) | 'velocity' (v = beta at the site) | 'mode' (a "
+                   "linear mode of the chain, u = M^-1/2 w from rest: number `mode` 1..N or the one nearest `mode_khz` "
+                   "[kHz], total energy `energy` [J] or, without it, largest |u_n| = alpha)\n") +
        dynamics_doc +
        "    forces_at: beads (from 1) whose force [N] is recorded at force_samples uniform times\n"
        "    energy_map: record E_n(t) at map_samples uniform times, map_stride beads per column\n"

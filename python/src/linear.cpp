@@ -244,6 +244,16 @@ void bind_linear(py::module_& m) {
           "residual", [](py::object self) { return view(self.cast<const PySpectrum&>().s.residual, self); },
           "per mode |D w - omega^2 w| / max|D_ij| (partial methods; empty for every mode)")
       .def_property_readonly(
+          "clustered",
+          [](py::object self) {
+            const auto& s = self.cast<const PySpectrum&>().s;
+            py::array_t<bool> a(s.clustered.size());
+            for (std::size_t j = 0; j < s.clustered.size(); ++j) a.mutable_at(j) = s.clustered[j] != 0;
+            return a;
+          },
+          "per mode: True inside a near-degenerate cluster (relative gap < 1e-10 of max omega^2), whose IPR depends "
+          "on the basis chosen inside it (a copy, bool)")
+      .def_property_readonly(
           "vectors",
           [](py::object self) -> py::object {
             const auto& s = self.cast<const PySpectrum&>().s;

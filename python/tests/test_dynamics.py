@@ -129,3 +129,19 @@ def test_exponent_table_equals_the_exponents_tool(tools):
     assert "| F0 [N] | h | A |" in table.markdown
     row = table.cell("velocity", 0.0, "A")
     assert row["realizations"] == 3 and row["gamma"] == table.column("gamma")[7]  # kick-major, then F0, then chain
+
+
+def test_a_mode_kick_equals_the_spreading_tool_and_keeps_its_mode_under_the_linear_law(tools):
+    args = ["--disorder", "A", "--N", "101", "--seed", "2", "--ic", "mode", "--mode-khz", "30", "--energy", "1e-7",
+            "--force-law", "linear", *SHORT_FLAGS]
+    csv, meta = tools.run("spreading", *args, output="mode")
+    run = gr.spreading(gr.anderson(N=101, seed=2), ic="mode", mode_khz=30, energy=1e-7, force_law="linear", **SHORT)
+    for key in ("t", "m2", "ipr", "m2_centroid"):
+        assert_identical(run[key], csv[key])
+    used = run.metadata["parameters"]["mode_used"]
+    assert used == meta["parameters"]["mode_used"]
+    assert abs(used["energy_J"] - 1e-7) < 1e-20
+    # One linear mode, nothing to spread into: m2 oscillates with the mode but does not grow.
+    assert np.max(run["m2_centroid"]) < 3 * run["m2_centroid"][0] + 2
+    with pytest.raises(ValueError):
+        gr.spreading(gr.anderson(N=101, seed=2), mode=3, **SHORT)  # a mode without ic='mode'

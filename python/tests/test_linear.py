@@ -117,3 +117,12 @@ def test_band_edges_bound_the_spectrum_of_a_long_diatomic_chain():
     assert not np.any(bulk & (f > e.fb1 * 1.001) & (f < e.fb2 * 0.999))  # the gap
     mono = gr.spectrum(gr.homogeneous(N=2000, F0=10.0), method="fast").freq_khz
     assert mono.max() == pytest.approx(e.f1, rel=1e-5)
+
+
+def test_cluster_flags_are_exposed_and_match_the_tool(tools):
+    spec = gr.spectrum(gr.anderson(N=100, xi=0.1, seed=1))
+    assert spec.clustered.dtype == bool and spec.clustered.shape == (100,)
+    csv, meta = tools.run("spectrum", "--disorder", "A", "--N", "100", "--xi", "0.1", "--seed", "1", "--clusters",
+                          output="c.csv")
+    assert list(spec.clustered.astype(int)) == list(csv["clustered"].astype(int))
+    assert meta["clustered"]["modes"] == int(spec.clustered.sum())

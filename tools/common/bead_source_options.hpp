@@ -21,11 +21,16 @@ inline StreamedChain build_bead_source(const ChainOptions& o) {
   if (o.n < 2 || o.n > 1000000000000) throw InvalidInput("N", " " + std::to_string(o.n) + ": must be in [2, 1e12]");
   StreamedChain s;
   s.description = chain_description(o);
-  if (!o.radii.empty()) {
+  if (const auto beads = bead_distribution(o)) {  // stored: memory O(N) (random access needs the chain)
+    if (o.n > 100000000)
+      throw InvalidInput("N", " " + std::to_string(o.n) + ": --types/--polydisperse store the chain (<= 1e8)");
+    validate(p);
+    s.source = chain_beads(from_radii(realization_radii(*beads, p.N, p.seed, p.realization), o.f0));
+  } else if (!o.radii.empty()) {
     if (!(o.f0 > 0) || !std::isfinite(o.f0))
       throw InvalidInput("F0",
                          " " + format_number(o.f0) + ": must be finite and > 0 (the sonic vacuum has no linear limit)");
-    s.source = chain_beads(from_radii(read_radii_file(o.radii), o.f0));
+    s.source = chain_beads(from_radii(read_radii_warning(o.radii), o.f0));
   } else if (!o.config.empty()) {
     s.source = typed_beads(read_configuration_file(o.config), p);
   } else {

@@ -1,12 +1,18 @@
 #pragma once
 // The options that pick one chain, shared by every single-chain tool:
 // a random realization (--disorder --xi --q --N --seed --realization), a file of bead types
-// (--config) or a file of radii (--radii), plus --F0 and --R1.
+// (--config) or a file of radii (--radii), plus --F0 and --R1; or random chains beyond two types:
+// k types with probabilities (--types radii, --type-masses masses) or polydisperse radii
+// (--polydisperse uniform:LO:HI | normal:MEAN:SD:MIN), realization --realization of --seed.
+#include <cstdio>
+#include <optional>
 #include <string>
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include "granular/io/range_syntax.hpp"
+#include "granular/model/bead_distribution.hpp"
 #include "granular/model/centred_configuration.hpp"
 #include "granular/model/configuration_file.hpp"
 #include "granular/model/named_chains.hpp"
@@ -18,10 +24,27 @@ struct ChainOptions {
   std::string disorder = "A";
   double xi = 0.5, q = 0.5, f0 = 10, r1 = paper_r1;
   long long n = 100, seed = 1, realization = 0;
-  std::string config, radii;
+  std::string config, radii, types, type_masses, polydisperse;
   bool auto_n = false;         ///< --N auto (long_time_options.hpp): N from T, the chain drawn from its centre
   nlohmann::json length_rule;  ///< and the rule's numbers
 };
+
+/// --types, --type-masses, --polydisperse (mutually exclusive); returns them for more exclusions.
+inline std::vector<CLI::Option*> add_bead_distribution_options(CLI::App& app, ChainOptions& o) {
+  auto* types = app.add_option("--types", o.types,
+                               "k bead types 'R1:P1,R2:P2,...' (radius [m]: probability) drawn by --disorder A (each "
+                               "bead), RDM1 (each dimer) or RDM2 (two types); overrides --q/--xi/--R1");
+  auto* masses =
+      app.add_option("--type-masses", o.type_masses, "as --types with masses [kg] of steel spheres: 'M1:P1,M2:P2,...'");
+  auto* poly = app.add_option("--polydisperse", o.polydisperse,
+                              "radii drawn per bead and realization: uniform:LO:HI or normal:MEAN:SD:MIN (truncated "
+                              "below at MIN) [m]");
+  const std::vector<CLI::Option*> all{types, masses, poly};
+  for (auto* a : all)
+    for (auto* b : all)
+      if (a != b) a->excludes(b);
+  return all;
+}
 
 inline void add_chain_options(CLI::App& app, ChainOptions& o) {
   app.add_option("--disorder", o.disorder, "h | A | RDM1 | RDM2 (homogeneous, Anderson, random dimer 1/2)")
@@ -40,11 +63,70 @@ inline void add_chain_options(CLI::App& app, ChainOptions& o) {
   auto* radii = app.add_option("--radii", o.radii,
                                "file with one radius [m] per line, '#' comments; overrides --disorder/--q/--N/--xi");
   config->excludes(radii);
+  for (auto* a : add_bead_distribution_options(app, o))
+    for (auto* b : {config, radii}) a->excludes(b), b->excludes(a);
+}
+
+/// The distribution of --types / --type-masses / --polydisperse, if one is given (rule: --disorder).
+/// Prints a warning naming the option for a radius outside the contact law's plausible range.
+inline std::optional<BeadDistribution> bead_distribution(const ChainOptions& o) {
+  BeadDistribution d;
+  std::string option, text;
+  if (!o.types.empty() || !o.type_masses.empty()) {
+    const bool by_mass = o.types.empty();
+    option = by_mass ? "--type-masses" : "--types";
+    text = by_mass ? o.type_masses : o.types;
+    for (const std::string& item : parse_word_list(text, option)) {
+      const auto colon = item.find(':');
+      if (colon == std::string::npos)
+        throw InvalidInput(option + " '" + item + "': expected " + (by_mass ? "MASS" : "RADIUS") + ":PROBABILITY");
+      const double value = parse_number_list(item.substr(0, colon), option, 0, 1).at(0);
+      if (!(value > 0) || !std::isfinite(value))
+        throw InvalidInput(option + " '" + item + "': " + (by_mass ? "mass" : "radius") + " must be finite and > 0");
+      d.radii.push_back(by_mass ? sphere_radius(steel, value) : value);
+      d.probabilities.push_back(parse_number_list(item.substr(colon + 1), option, 0, 1).at(0));
+    }
+    d.rule = parse_disorder(o.disorder);
+  } else if (!o.polydisperse.empty()) {
+    option = "--polydisperse";
+    text = o.polydisperse;
+    std::vector<std::string> parts;
+    for (std::size_t begin = 0;;) {
+      const auto end = text.find(':', begin);
+      parts.push_back(text.substr(begin, end - begin));
+      if (end == std::string::npos) break;
+      begin = end + 1;
+    }
+    const auto number = [&](std::size_t i) { return parse_number_list(parts[i], option, 0, 1).at(0); };
+    if (parts[0] == "uniform" && parts.size() == 3) {
+      d.kind = BeadDistribution::Kind::uniform;
+      d.low = number(1), d.high = number(2);
+      d.radii = {d.low, d.high};
+    } else if (parts[0] == "normal" && parts.size() == 4) {
+      d.kind = BeadDistribution::Kind::normal;
+      d.mean = number(1), d.sd = number(2), d.minimum = number(3);
+      d.radii = {d.mean, d.minimum};
+    } else {
+      throw InvalidInput("--polydisperse '" + text + "': expected uniform:LO:HI or normal:MEAN:SD:MIN (metres)");
+    }
+  } else {
+    return std::nullopt;
+  }
+  try {
+    validate(d);
+  } catch (const InvalidInput& e) {
+    throw InvalidInput(option + " '" + text + "': " + e.what());
+  }
+  for (double r : d.radii)
+    if (!plausible_radius(r)) std::fprintf(stderr, "warning: %s\n", implausible_radius_warning(option, r).c_str());
+  if (d.kind != BeadDistribution::Kind::types) d.radii.clear();
+  return d;
 }
 
 struct SelectedChain {
   Chain chain;
-  Configuration types;  ///< empty when the chain came from a radii file
+  Configuration types;                    ///< empty when the chain came from a radii file or a bead distribution
+  std::optional<BeadDistribution> beads;  ///< --types/--type-masses/--polydisperse: what an ensemble draws
   nlohmann::json description;
 };
 
@@ -69,6 +151,12 @@ inline nlohmann::json chain_description(const ChainOptions& o) {
   d["F0_N"] = o.f0;
   d["material"] = {{"E_Pa", steel.young}, {"nu", steel.poisson}, {"rho_kg_m3", steel.density}};
   d["walls"] = "flat, same material as the beads";
+  if (const auto beads = bead_distribution(o)) {
+    d["beads"] = describe(*beads);
+    d["seed"] = o.seed;
+    d["realization"] = o.realization;
+    return d;
+  }
   if (!o.radii.empty()) {
     d["radii_file"] = o.radii;
     return d;
@@ -86,15 +174,27 @@ inline nlohmann::json chain_description(const ChainOptions& o) {
   return d;
 }
 
+/// Reads a radii file, printing a warning for each implausible radius (file and line named).
+inline std::vector<double> read_radii_warning(const std::string& path) {
+  std::vector<std::string> warnings;
+  std::vector<double> radii = read_radii_file(path, &warnings);
+  for (const auto& w : warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
+  return radii;
+}
+
 inline SelectedChain build_chain(const ChainOptions& o) {
   ChainParameters p = chain_parameters(o);
   if (o.n < 2) throw InvalidInput("N", " " + std::to_string(o.n) + ": a chain needs at least 2 beads");
   SelectedChain s;
   s.description = chain_description(o);
-  if (!o.radii.empty()) {
+  if (const auto beads = bead_distribution(o)) {
+    validate(p);
+    s.chain = from_radii(realization_radii(*beads, p.N, p.seed, p.realization), o.f0);
+    s.beads = beads;
+  } else if (!o.radii.empty()) {
     if (!std::isfinite(o.f0) || o.f0 < 0)
       throw InvalidInput("F0", " " + format_number(o.f0) + ": must be finite and >= 0");
-    s.chain = from_radii(read_radii_file(o.radii), o.f0);
+    s.chain = from_radii(read_radii_warning(o.radii), o.f0);
   } else {
     if (!o.config.empty()) {
       p.N = 2;  // from the file

@@ -60,6 +60,8 @@ inline void size_chain(ChainOptions& chain, const DynamicsOptions& dynamics, con
   if (!chain.auto_n) return;
   if (!chain.config.empty() || !chain.radii.empty())
     throw InvalidInput("--N auto: sizes a drawn chain; --config/--radii give their own");
+  if (!chain.types.empty() || !chain.polydisperse.empty())
+    throw InvalidInput("--N auto: draws two-type chains (--disorder); not with --types/--polydisperse");
   TransportCase probe;
   apply(chain, 3, probe);
   probe.kick = parse_kick(ic);

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <vector>
 
 #include "granular/dynamics/observables.hpp"
 #include "granular/error.hpp"
@@ -18,7 +19,79 @@ void check_site(const Chain& chain, std::size_t site) {
                                    std::to_string(chain.size()) + " beads (counting from 1)");
 }
 
+void check_overlap(const Chain& chain, std::span<const double> u, const char* parameter, double value) {
+  for (std::size_t k = 0; k <= chain.size(); ++k) {
+    double radius = std::numeric_limits<double>::infinity();
+    if (k > 0) radius = std::min(radius, chain.radius[k - 1]);
+    if (k < chain.size()) radius = std::min(radius, chain.radius[k]);
+    if (chain.overlap[k] + std::abs(bond_strain(u, k)) >= radius)
+      throw InvalidInput(parameter, " " + format_number(value) + ": static overlap plus the strain of bond " +
+                                        std::to_string(k) + " reaches the bead radius " + format_number(radius) +
+                                        " m (beads would pass through each other)");
+  }
+}
+
+/// shape / max|shape|, checked.
+std::vector<double> unit_shape(const Chain& chain, std::span<const double> shape) {
+  if (shape.size() != chain.size())
+    throw InvalidInput("shape", ": " + std::to_string(shape.size()) + " entries for a chain of " +
+                                    std::to_string(chain.size()) + " beads");
+  double largest = 0;
+  for (double x : shape) {
+    if (!std::isfinite(x)) throw InvalidInput("shape", ": an entry is not finite");
+    largest = std::max(largest, std::abs(x));
+  }
+  if (!(largest > 0)) throw InvalidInput("shape", ": all entries are zero");
+  std::vector<double> unit(shape.begin(), shape.end());
+  for (double& x : unit) x /= largest;
+  return unit;
+}
+
 }  // namespace
+
+State shaped_displacement(const Chain& chain, std::span<const double> shape, double amplitude) {
+  if (!std::isfinite(amplitude) || !(amplitude > 0))
+    throw InvalidInput("amplitude", " " + format_number(amplitude) + ": must be finite and > 0 [m]");
+  State s(chain.size());
+  s.u = unit_shape(chain, shape);
+  for (double& x : s.u) x *= amplitude;
+  check_overlap(chain, s.u, "amplitude", amplitude);
+  return s;
+}
+
+double shaped_amplitude_for_energy(const ForceLaw& law, const Chain& chain, std::span<const double> shape,
+                                   double energy) {
+  if (!std::isfinite(energy) || !(energy > 0))
+    throw InvalidInput("energy", " " + format_number(energy) + ": must be finite and > 0 [J]");
+  const std::vector<double> unit = unit_shape(chain, shape);
+  // Largest amplitude before some bond's overlap reaches a radius: the bracket's ceiling.
+  double ceiling = std::numeric_limits<double>::infinity();
+  for (std::size_t k = 0; k <= chain.size(); ++k) {
+    double radius = std::numeric_limits<double>::infinity();
+    if (k > 0) radius = std::min(radius, chain.radius[k - 1]);
+    if (k < chain.size()) radius = std::min(radius, chain.radius[k]);
+    const double strain = std::abs(bond_strain(unit, k));
+    if (strain > 0) ceiling = std::min(ceiling, (radius - chain.overlap[k]) / strain);
+  }
+  const auto energy_at = [&](double a) {
+    State s(chain.size());
+    for (std::size_t n = 0; n < unit.size(); ++n) s.u[n] = a * unit[n];
+    return total_energy(law, chain, s);
+  };
+  double lo = 0, hi = std::min(ceiling * (1 - 1e-9), 1e-9);
+  while (energy_at(hi) < energy) {  // bracket by doubling, up to the ceiling
+    if (hi >= ceiling * (1 - 1e-9))
+      throw InvalidInput("energy",
+                         " " + format_number(energy) + " J: not reached by this shape before the beads would overlap");
+    lo = hi;
+    hi = std::min(2 * hi, ceiling * (1 - 1e-9));
+  }
+  for (int i = 0; i < 200 && hi - lo > 1e-15 * hi; ++i) {
+    const double mid = (lo + hi) / 2;
+    (energy_at(mid) < energy ? lo : hi) = mid;
+  }
+  return (lo + hi) / 2;
+}
 
 State displacement_kick(const Chain& chain, std::size_t site, double alpha) {
   check_site(chain, site);

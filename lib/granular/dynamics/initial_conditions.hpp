@@ -2,6 +2,7 @@
 // Single-site kicks (SPEC §4): a displacement α or a velocity β at bead `site` (0-based),
 // the rest of the chain at rest in its precompressed equilibrium.
 #include <cstddef>
+#include <span>
 
 #include "granular/dynamics/force_law.hpp"
 #include "granular/dynamics/state.hpp"
@@ -20,6 +21,20 @@ State velocity_kick(const Chain& chain, std::size_t site, double beta);
 /// chain and force law ("match the energy of α"); 8.0359e-3 m/s for the homogeneous steel
 /// chain at F0 = 10 N and α = 1e-7 m.
 double matched_velocity(const ForceLaw& law, const Chain& chain, std::size_t site, double alpha);
+
+/// u = a · shape / max|shape|, v = 0: a whole-chain displacement profile (e.g. a linear mode's
+/// displacements, from study/mode_kick.hpp) whose largest |u_n| is `amplitude` a [m], the chain at
+/// a turning point. Throws InvalidInput (naming `shape` or `amplitude`) on a shape of the wrong
+/// length, all zero or not finite, on a ≤ 0 or not finite, or when a bond's static overlap plus
+/// its strain reaches a bead radius.
+State shaped_displacement(const Chain& chain, std::span<const double> shape, double amplitude);
+
+/// The amplitude a [m] of shaped_displacement(chain, shape, a) whose energy H under `law` is
+/// `energy` [J], to 1e-14 relative: H(a) grows with a for a > 0 (every bond potential here is
+/// convex near zero strain with its minimum there), so a bisection finds it. Throws InvalidInput
+/// naming `energy` when it is ≤ 0, not finite, or not reached before the beads would overlap.
+double shaped_amplitude_for_energy(const ForceLaw& law, const Chain& chain, std::span<const double> shape,
+                                   double energy);
 
 /// Centre bead (0-based) of an N-bead chain: (N−1)/2, i.e. bead 1251 of 2501 counting from 1.
 inline std::size_t centre_site(std::size_t n) { return (n - 1) / 2; }

@@ -9,6 +9,7 @@
 #include "granular/linear/detail/mode_ipr_solver.hpp"
 #include "granular/linear/detail/mode_vector.hpp"
 #include "granular/linear/detail/partial_spectrum.hpp"
+#include "granular/linear/detail/sturm_bisection.hpp"
 #include "granular/linear/detail/twisted_ipr_solver.hpp"
 #include "granular/linear/mode_ipr.hpp"
 #include "granular/number_format.hpp"
@@ -103,7 +104,48 @@ void number_modes(Spectrum& s) {
   }
 }
 
+/// The largest eigenvalue of `d` to 1e-4 relative (plenty for a threshold), by bisection on node counts below the
+/// Gershgorin bound: the scale of the cluster threshold for a partial result.
+double largest_eigenvalue(const SymTridiagonal& d) {
+  const std::size_t n = d.size();
+  double hi = 0;
+  for (std::size_t i = 0; i < n; ++i)
+    hi = std::max(hi, d.diagonal[i] + (i > 0 ? std::fabs(d.off_diagonal[i - 1]) : 0.0) +
+                          (i + 1 < n ? std::fabs(d.off_diagonal[i]) : 0.0));
+  double lo = 0;
+  for (int it = 0; it < 60 && hi - lo > 1e-4 * hi; ++it) {
+    const double mid = (lo + hi) / 2;
+    (count_below_many(d, {mid})[0] < static_cast<long>(n) ? lo : hi) = mid;
+  }
+  return hi;
+}
+
+/// Cluster flags of a partial result: is there a second eigenvalue within the threshold of each?
+std::vector<std::uint8_t> partial_cluster_flags(const DynamicalMatrix& d, const std::vector<double>& omega2) {
+  if (omega2.empty()) return {};
+  const double delta = cluster_relative_gap * largest_eigenvalue(d);
+  std::vector<double> shifts;
+  for (double w : omega2) {
+    shifts.push_back(w - delta);
+    shifts.push_back(w + delta);
+  }
+  const std::vector<long> below = count_below_many(d, shifts);
+  std::vector<std::uint8_t> flags(omega2.size());
+  for (std::size_t j = 0; j < omega2.size(); ++j) flags[j] = below[2 * j + 1] - below[2 * j] > 1 ? 1 : 0;
+  return flags;
+}
+
 }  // namespace
+
+std::vector<std::uint8_t> cluster_flags(std::span<const double> omega2) {
+  const std::size_t n = omega2.size();
+  std::vector<std::uint8_t> flags(n, 0);
+  if (n < 2) return flags;
+  const double delta = cluster_relative_gap * std::max(std::fabs(omega2.front()), std::fabs(omega2.back()));
+  for (std::size_t k = 0; k + 1 < n; ++k)
+    if (omega2[k + 1] - omega2[k] < delta) flags[k] = flags[k + 1] = 1;
+  return flags;
+}
 
 Spectrum SpectrumSolver::solve(const DynamicalMatrix& d, const ModeSelection& selection) {
   check_matrix(d);
@@ -137,6 +179,7 @@ Spectrum SpectrumSolver::solve(const DynamicalMatrix& d, const ModeSelection& se
     }
     out.info.candidates = static_cast<int>(n);
     number_modes(out);
+    out.clustered = cluster_flags(out.omega2);
     return out;
   }
   PartialSpectrumConfig pc;
@@ -157,6 +200,7 @@ Spectrum SpectrumSolver::solve(const DynamicalMatrix& d, const ModeSelection& se
   out.info.candidates = p.candidates;
   out.info.fallbacks = p.fallbacks;
   for (double r : out.residual) out.info.max_residual = std::max(out.info.max_residual, r);
+  out.clustered = partial_cluster_flags(d, out.omega2);
   return out;
 }
 
@@ -177,6 +221,7 @@ void SpectrumSolver::solve_all(std::span<const DynamicalMatrix* const> matrices,
   work_->fast.solve_batch(tasks);
   for (Spectrum& s : out) {  // clusters and fallbacks of a batch are not split per chain: left 0
     number_modes(s);
+    s.clustered = cluster_flags(s.omega2);
     s.info.method = "fast";
     s.info.candidates = static_cast<int>(s.beads);
   }

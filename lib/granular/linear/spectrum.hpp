@@ -19,6 +19,7 @@
 //                 (shift-invert Krylov; slepc is collective over MPI ranks: under mpirun every rank
 //                 calls it with the same matrix and gets the same result).
 #include <cstddef>
+#include <cstdint>
 #include <memory>
 #include <span>
 #include <string>
@@ -92,6 +93,17 @@ struct SpectrumInfo {
   std::size_t clusters = 0;  ///< fast: near-degenerate clusters (relative gap < 1e-10) given their most localized basis
 };
 
+/// Near-degenerate clusters. A mode whose ω² lies within cluster_relative_gap · max ω² of another
+/// mode's is *clustered*: its eigenvector is fixed by the double-precision matrix only to an angle
+/// ~ε‖D‖/gap ≳ 1e-6, so inside the cluster any orthonormal basis is as valid and its IPR depends on
+/// the basis a solver happens to choose (the fast solver picks the most localized one, LAPACK
+/// another). The same threshold as the solvers' own cluster handling.
+inline constexpr double cluster_relative_gap = 1e-10;
+
+/// flags[k] = 1 when mode k of the ascending eigenvalues `omega2` (a whole spectrum) has a
+/// neighbour closer than cluster_relative_gap · max ω², else 0.
+std::vector<std::uint8_t> cluster_flags(std::span<const double> omega2);
+
 /// The selected modes, by increasing frequency.
 struct Spectrum {
   std::vector<std::size_t> mode;  ///< mode numbers 1…N in the full spectrum
@@ -99,6 +111,10 @@ struct Spectrum {
   std::vector<double> freq_khz;   ///< f = ω/2π [kHz]
   std::vector<double> ipr;        ///< displacement IPR Σv⁴/(Σv²)², v = M^{-1/2} w, in (0, 1]
   std::vector<double> residual;   ///< per mode ‖D w − ω² w‖ / max|D_ij| (partial methods; empty for every-mode)
+  /// Per mode: 1 when it belongs to a near-degenerate cluster (another eigenvalue of the whole
+  /// spectrum within cluster_relative_gap · max ω², found by node counts for a partial result), so
+  /// that its IPR depends on the basis chosen inside the cluster; else 0. Every method fills it.
+  std::vector<std::uint8_t> clustered;
   /// N × size() unit eigenvectors w of D, column-major (mode j at [j·N, (j+1)·N)), sign fixed by a
   /// positive largest entry; empty unless SpectrumConfig::vectors. Displacements: v = w ⊙ m^{-1/2}.
   std::vector<double> vectors;

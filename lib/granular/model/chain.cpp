@@ -35,7 +35,7 @@ Chain make_chain(const ChainSpec& spec) {
     if (!std::isfinite(r) || r <= 0)
       throw InvalidInput("radii", ": bead " + std::to_string(i + 1) + " has radius " + format_number(r) +
                                       " m (must be finite and > 0)");
-    c.mass[i] = material_of(i).density * (4.0 / 3.0) * std::numbers::pi * r * r * r;
+    c.mass[i] = sphere_mass(material_of(i), r);
     c.inverse_mass[i] = 1.0 / c.mass[i];
   }
   const Material& left = spec.walls_match_beads ? material_of(0) : spec.left_wall.material;

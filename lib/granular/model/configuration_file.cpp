@@ -6,6 +6,8 @@
 #include <sstream>
 
 #include "granular/error.hpp"
+#include "granular/model/bead_distribution.hpp"
+#include "granular/number_format.hpp"
 
 namespace granular {
 namespace {
@@ -53,13 +55,22 @@ Configuration parse_configuration_text(const std::string& text, const std::strin
   return types;
 }
 
-std::vector<double> parse_radii_text(const std::string& text, const std::string& source) {
+std::string implausible_radius_warning(const std::string& where, double r) {
+  return where + ": radius " + format_number(r) + " m is outside the plausible range " +
+         format_number(plausible_radius_min) + " - " + format_number(plausible_radius_max) +
+         " m of the contact law (millimetres typed as metres?)";
+}
+
+std::vector<double> parse_radii_text(const std::string& text, const std::string& source,
+                                     std::vector<std::string>* warnings) {
   std::vector<double> radii;
   for_each_value(text, source, [&](std::string_view token, std::size_t line) {
     double r = 0;
     auto [end, ec] = std::from_chars(token.data(), token.data() + token.size(), r);
     if (ec != std::errc() || end != token.data() + token.size()) bad_line(source, line, token, "is not a number");
     if (!std::isfinite(r) || r <= 0) bad_line(source, line, token, "is not a radius (finite, > 0, metres)");
+    if (warnings && !plausible_radius(r))
+      warnings->push_back(implausible_radius_warning(source + ":" + std::to_string(line), r));
     radii.push_back(r);
   });
   if (radii.size() < 2) throw InvalidInput(source + ": needs at least 2 beads, found " + std::to_string(radii.size()));
@@ -70,6 +81,8 @@ Configuration read_configuration_file(const std::string& path) {
   return parse_configuration_text(read_text(path), path);
 }
 
-std::vector<double> read_radii_file(const std::string& path) { return parse_radii_text(read_text(path), path); }
+std::vector<double> read_radii_file(const std::string& path, std::vector<std::string>* warnings) {
+  return parse_radii_text(read_text(path), path, warnings);
+}
 
 }  // namespace granular

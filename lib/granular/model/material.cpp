@@ -17,4 +17,8 @@ void validate(const Material& m, const char* what) {
   if (!std::isfinite(m.density) || m.density <= 0) fail("density", m.density, "finite and > 0");
 }
 
+double sphere_radius(const Material& material, double m) {
+  return std::cbrt(m / (material.density * (4.0 / 3.0) * std::numbers::pi));
+}
+
 }  // namespace granular

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <span>
 #include <string>
 
 #include "granular/ensemble/parallel_realizations.hpp"
@@ -19,10 +20,14 @@ void validate(const IprMapConfig& c) {
     throw InvalidInput("precompression",
                        " " + format_number(c.precompression) + ": the linear spectrum needs a finite F0 > 0");
   if (c.realizations < 1) throw InvalidInput("realizations", " 0: must be >= 1");
-  if (c.q_values.empty()) throw InvalidInput("q", ": no values");
-  if (c.xi_values.empty()) throw InvalidInput("xi", ": no values");
-  for (double q : c.q_values) validate_probability(q);
-  for (double xi : c.xi_values) validate_size_ratio(xi);
+  if (c.beads) {
+    validate(*c.beads);
+  } else {
+    if (c.q_values.empty()) throw InvalidInput("q", ": no values");
+    if (c.xi_values.empty()) throw InvalidInput("xi", ": no values");
+    for (double q : c.q_values) validate_probability(q);
+    for (double xi : c.xi_values) validate_size_ratio(xi);
+  }
   if (!(c.r1 > 0) || !std::isfinite(c.r1))
     throw InvalidInput("R1", " " + format_number(c.r1) + ": must be finite and > 0");
   validate(c.material, "material");
@@ -39,11 +44,21 @@ void validate(const IprMapConfig& c) {
 
 namespace {
 
-DynamicalMatrix matrix_of(const IprMapConfig& c, const Configuration& types, double xi) {
-  return dynamical_matrix(make_chain(radii_of(types, c.r1, xi), c.precompression, c.material));
+/// Realization r of the cell at ξ: from its bead types, or drawn from the bead distribution.
+DynamicalMatrix matrix_of(const IprMapConfig& c, const Configuration& types, double xi, std::size_t r) {
+  return dynamical_matrix(make_chain(c.beads ? realization_radii(*c.beads, c.n, c.seed, r) : radii_of(types, c.r1, xi),
+                                     c.precompression, c.material));
 }
 
-std::vector<IprMapCell> compute_partial_ipr_map(const IprMapConfig& c, const RunOptions& run) {
+/// With a bead distribution: one cell (q, ξ) = (NaN, NaN), whose types are not drawn.
+IprMapConfig one_cell_if_distributed(const IprMapConfig& c) {
+  IprMapConfig out = c;
+  if (c.beads) out.q_values = out.xi_values = {std::numeric_limits<double>::quiet_NaN()};
+  return out;
+}
+
+std::vector<IprMapCell> compute_partial_ipr_map(const IprMapConfig& config, const RunOptions& run) {
+  const IprMapConfig c = one_cell_if_distributed(config);
   // ARPACK keeps its state in Fortran SAVE variables: one thread.
   const int threads = c.spectrum.method == SpectrumMethod::arpack ? 1 : resolve_threads(run.threads);
   const std::size_t n = c.n, realizations = c.realizations;
@@ -52,22 +67,24 @@ std::vector<IprMapCell> compute_partial_ipr_map(const IprMapConfig& c, const Run
   std::vector<IprMapCell> cells;
   for (double q : c.q_values) {
     parallel_realizations(realizations, threads, [&](std::size_t r, int) {
-      types[r] = realization_configuration(c.disorder, q, n, c.seed, r);
+      if (!c.beads) types[r] = realization_configuration(c.disorder, q, n, c.seed, r);
     });
     for (double xi : c.xi_values) {
       if (run.cancelled && run.cancelled()) throw Cancelled();
       parallel_realizations(
           realizations, threads,
-          [&](std::size_t r, int) { slots[r] = spectrum(matrix_of(c, types[r], xi), c.selection, c.spectrum); },
+          [&](std::size_t r, int) { slots[r] = spectrum(matrix_of(c, types[r], xi, r), c.selection, c.spectrum); },
           run.progress);
-      IprMapCell cell{q, xi, {}, {}, {}, {}, {}, {}};
+      IprMapCell cell{q, xi, {}, {}, {}, {}, {}, {}, 0, 0};
       for (std::size_t r = 0; r < realizations; ++r)  // fixed order: thread-count independent
         for (std::size_t j = 0; j < slots[r].size(); ++j) {
           cell.freq_khz.push_back(slots[r].freq_khz[j]);
           cell.ipr.push_back(slots[r].ipr[j]);
           cell.mode.push_back(slots[r].mode[j]);
           cell.realization.push_back(r);
+          cell.clustered_modes += slots[r].clustered[j];
         }
+      cell.solved_modes = cell.ipr.size() * (c.selection.kind == ModeSelection::Kind::all ? realizations : 1);
       cells.push_back(std::move(cell));
     }
   }
@@ -76,9 +93,10 @@ std::vector<IprMapCell> compute_partial_ipr_map(const IprMapConfig& c, const Run
 
 }  // namespace
 
-std::vector<IprMapCell> compute_ipr_map(const IprMapConfig& c, const RunOptions& run) {
-  validate(c);
-  if (c.selection.kind != ModeSelection::Kind::all) return compute_partial_ipr_map(c, run);
+std::vector<IprMapCell> compute_ipr_map(const IprMapConfig& config, const RunOptions& run) {
+  validate(config);
+  if (config.selection.kind != ModeSelection::Kind::all) return compute_partial_ipr_map(config, run);
+  const IprMapConfig c = one_cell_if_distributed(config);
   const int threads = resolve_threads(run.threads);
   std::vector<SpectrumSolver> solvers;
   for (int t = 0; t < threads; ++t) solvers.emplace_back(c.spectrum);
@@ -90,7 +108,7 @@ std::vector<IprMapCell> compute_ipr_map(const IprMapConfig& c, const RunOptions&
   std::vector<IprMapCell> cells;
   for (double q : c.q_values) {
     parallel_realizations(realizations, threads, [&](std::size_t r, int) {
-      types[r] = realization_configuration(c.disorder, q, n, c.seed, r);
+      if (!c.beads) types[r] = realization_configuration(c.disorder, q, n, c.seed, r);
     });
     for (double xi : c.xi_values) {
       if (run.cancelled && run.cancelled()) throw Cancelled();
@@ -104,7 +122,7 @@ std::vector<IprMapCell> compute_ipr_map(const IprMapConfig& c, const RunOptions&
         const std::size_t first = b * batch, last = std::min(realizations, first + batch);
         pointers.clear();
         for (std::size_t r = first; r < last; ++r) {
-          matrices[r - first] = matrix_of(c, types[r], xi);
+          matrices[r - first] = matrix_of(c, types[r], xi, r);
           pointers.push_back(&matrices[r - first]);
         }
         solvers[thread].solve_all(pointers, std::span(results.data(), last - first));
@@ -115,7 +133,9 @@ std::vector<IprMapCell> compute_ipr_map(const IprMapConfig& c, const RunOptions&
         }
         if (run.progress) run.progress->advance(last - first);
       });
-      IprMapCell cell{q, xi, std::vector<double>(n, 0.0), std::vector<double>(n, 0.0), {}, {}, {}, {}};
+      IprMapCell cell{q, xi, std::vector<double>(n, 0.0), std::vector<double>(n, 0.0), {}, {}, {}, {}, 0, 0};
+      for (std::size_t r = 0; r < realizations; ++r)
+        for (std::uint8_t flag : cluster_flags(std::span(omega2).subspan(r * n, n))) cell.clustered_modes += flag;
       for (std::size_t r = 0; r < realizations; ++r)  // fixed order: thread-count independent
         for (std::size_t k = 0; k < n; ++k) {
           cell.freq_khz[k] += frequency_khz(omega2[r * n + k]);
@@ -142,6 +162,7 @@ std::vector<IprMapCell> compute_ipr_map(const IprMapConfig& c, const RunOptions&
           cell.bin_ipr[b] = cell.bin_modes[b] > 0 ? cell.bin_ipr[b] / static_cast<double>(cell.bin_modes[b])
                                                   : std::numeric_limits<double>::quiet_NaN();
       }
+      cell.solved_modes = cell.ipr.size() * (c.selection.kind == ModeSelection::Kind::all ? realizations : 1);
       cells.push_back(std::move(cell));
     }
   }

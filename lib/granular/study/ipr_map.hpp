@@ -4,10 +4,12 @@
 // Realization r of a cell uses the bead types of realization r of the seed, so all ξ of one q
 // share their configurations (common random numbers).
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "granular/ensemble/run_options.hpp"
 #include "granular/linear/spectrum.hpp"
+#include "granular/model/bead_distribution.hpp"
 #include "granular/model/disorder.hpp"
 #include "granular/model/material.hpp"
 
@@ -35,6 +37,9 @@ struct IprMapConfig {
   /// of the cell's realizations: the ensemble's IPR as a function of f, which is what a reader
   /// plotting against frequency wants (mode-number means put points inside band gaps).
   double bin_khz = 0;
+  /// When set, realization r draws its radii from this (k types or polydisperse; seed `seed`)
+  /// instead of disorder/q/ξ/r1: one cell, whose q and xi are NaN.
+  std::optional<BeadDistribution> beads;
 };
 
 struct IprMapCell {
@@ -50,6 +55,10 @@ struct IprMapCell {
   /// the modes of all realizations in it, bin_ipr[b] is their mean IPR (NaN when bin_modes = 0).
   std::vector<std::size_t> bin_modes;
   std::vector<double> bin_ipr;
+  /// Modes solved in this cell (all realizations) and how many of them lie in a near-degenerate
+  /// cluster (Spectrum::clustered: relative gap < cluster_relative_gap), whose IPR depends on the
+  /// basis the solver chose inside the cluster.
+  std::size_t solved_modes = 0, clustered_modes = 0;
 };
 
 /// Throws InvalidInput (naming the field) on a bad config, before any work starts.

@@ -17,10 +17,22 @@ namespace granular {
 Kick parse_kick(const std::string& name) {
   if (name == "displacement") return Kick::displacement;
   if (name == "velocity") return Kick::velocity;
-  throw InvalidInput("ic", " '" + name + "': expected displacement or velocity");
+  if (name == "mode") return Kick::mode;
+  throw InvalidInput("ic", " '" + name + "': expected displacement, velocity or mode");
 }
 
-std::string to_string(Kick kick) { return kick == Kick::displacement ? "displacement" : "velocity"; }
+std::string to_string(Kick kick) {
+  return kick == Kick::displacement ? "displacement" : kick == Kick::velocity ? "velocity" : "mode";
+}
+
+namespace {
+/// The mode kick of a case: its amplitude is α unless an energy is given.
+ModeKick mode_of(const TransportCase& c) {
+  ModeKick m = c.mode;
+  if (m.energy == 0) m.amplitude = c.alpha;
+  return m;
+}
+}  // namespace
 
 void validate(const TransportCase& c) {
   validate_probability(c.q);
@@ -28,6 +40,8 @@ void validate(const TransportCase& c) {
   if (c.n < 2) throw InvalidInput("N", " " + std::to_string(c.n) + ": a chain needs at least 2 beads");
   if (!std::isfinite(c.precompression) || c.precompression < 0)
     throw InvalidInput("F0", " " + format_number(c.precompression) + ": must be finite and >= 0");
+  if (c.centred_draw && c.beads)
+    throw InvalidInput("N", ": a chain drawn from its centre (the automatic N) has two bead types, not a bead source");
   if (c.centred_draw && c.site != (c.n - 1) / 2)
     throw InvalidInput("site", " " + std::to_string(c.site + 1) + ": a chain drawn from its centre is kicked there (" +
                                    std::to_string((c.n + 1) / 2) + ")");
@@ -46,7 +60,9 @@ void validate(const TransportCase& c) {
   if (!(c.criterion.t_start >= 0) || !std::isfinite(c.criterion.t_start))
     throw InvalidInput("t_star", " " + format_number(c.criterion.t_start) + " s: must be finite and >= 0");
   if (c.fit && c.bootstrap.resamples < 2) throw InvalidInput("bootstrap", ": need at least 2 resamples");
-  const bool uses_alpha = c.kick == Kick::displacement || c.match_beta;
+  if (c.kick == Kick::mode) validate(mode_of(c), c.n);
+  if (c.beads) validate(*c.beads);
+  const bool uses_alpha = c.kick == Kick::displacement || c.match_beta || (c.kick == Kick::mode && c.mode.energy == 0);
   if (uses_alpha && (!std::isfinite(c.alpha) || c.alpha == 0))
     throw InvalidInput("alpha", " " + format_number(c.alpha) + ": must be finite and non-zero [m]");
   if (c.kick == Kick::velocity && !c.match_beta && (!std::isfinite(c.beta) || c.beta == 0))
@@ -76,49 +92,61 @@ SpreadingConfig spreading_config(const TransportCase& c) {
 }
 
 KickedChain kick(const TransportCase& c, const Chain& chain) {
-  if (c.kick == Kick::displacement) return {displacement_kick(chain, c.site, c.alpha), 0.0};
+  if (c.kick == Kick::displacement) return {displacement_kick(chain, c.site, c.alpha), 0.0, {}};
+  if (c.kick == Kick::mode) {
+    ModeKickResult mode = mode_kick(chain, c.dynamics.force_law, mode_of(c));
+    State initial = mode.initial;
+    return {std::move(initial), 0.0, std::move(mode)};
+  }
   const double beta =
       c.match_beta ? matched_velocity(make_force_law(c.dynamics.force_law, chain), chain, c.site, c.alpha) : c.beta;
-  return {velocity_kick(chain, c.site, beta), beta};
+  return {velocity_kick(chain, c.site, beta), beta, {}};
 }
 
 static nlohmann::json describe_conservative(const TransportCase& c) {
   const SpreadingConfig& d = c.dynamics;
-  const bool uses_alpha = c.kick == Kick::displacement || c.match_beta;
+  const bool uses_alpha = c.kick == Kick::displacement || c.match_beta || (c.kick == Kick::mode && c.mode.energy == 0);
   nlohmann::json beta = nullptr;  // the values used: α only where the kick uses it, β only for a velocity kick
   if (c.kick == Kick::velocity) beta = c.match_beta ? nlohmann::json("match") : nlohmann::json(c.beta);
-  return {{"disorder", to_string(c.disorder)},
-          {"q", c.q},
-          {"xi", c.xi},
-          {"N", c.n},
-          {"F0_N", c.precompression},
-          {"R1_m", c.r1},
-          {"ic", to_string(c.kick)},
-          {"alpha_m", uses_alpha ? nlohmann::json(c.alpha) : nullptr},
-          {"beta_m_s", beta},
-          {"site", c.site + 1},
-          {"m2_centre", to_string(c.centre)},
-          {"T_s", d.duration},
-          {"dt_s", d.time_step},
-          {"integrator", d.integrator.name()},
-          {"force_law", to_string(d.force_law)},
-          {"samples", d.samples},
-          {"sampling", to_string(d.sampling)},
-          {"fit_s", c.fit ? nlohmann::json({c.fit_begin, c.fit_end}) : nlohmann::json(nullptr)},
-          {"fit_step_s", c.fit_step},
-          {"kappa", c.criterion.kappa},
-          {"t_star_s", c.criterion.t_start},
-          {"bootstrap_resamples", c.bootstrap.resamples},
-          {"bootstrap_seed", c.bootstrap.seed},
-          {"active_window", d.window.enabled},
-          {"window_threshold", d.window.threshold},
-          {"max_energy_error", d.max_energy_error},
-          {"stop_on_energy_error", d.stop_on_energy_error},
-          {"seed", c.seed},
-          {"realizations", c.realizations},
-          {"profile_realizations", std::min(c.profile_realizations, c.realizations)},
-          {"material", {{"E_Pa", steel.young}, {"nu", steel.poisson}, {"rho_kg_m3", steel.density}}},
-          {"walls", "flat, same material as the beads"}};
+  nlohmann::json described = {{"disorder", to_string(c.disorder)},
+                              {"q", c.q},
+                              {"xi", c.xi},
+                              {"N", c.n},
+                              {"F0_N", c.precompression},
+                              {"R1_m", c.r1},
+                              {"ic", to_string(c.kick)},
+                              {"alpha_m", uses_alpha ? nlohmann::json(c.alpha) : nullptr},
+                              {"beta_m_s", beta},
+                              {"site", c.site + 1},
+                              {"m2_centre", to_string(c.centre)},
+                              {"T_s", d.duration},
+                              {"dt_s", d.time_step},
+                              {"integrator", d.integrator.name()},
+                              {"force_law", to_string(d.force_law)},
+                              {"samples", d.samples},
+                              {"sampling", to_string(d.sampling)},
+                              {"fit_s", c.fit ? nlohmann::json({c.fit_begin, c.fit_end}) : nlohmann::json(nullptr)},
+                              {"fit_step_s", c.fit_step},
+                              {"kappa", c.criterion.kappa},
+                              {"t_star_s", c.criterion.t_start},
+                              {"bootstrap_resamples", c.bootstrap.resamples},
+                              {"bootstrap_seed", c.bootstrap.seed},
+                              {"active_window", d.window.enabled},
+                              {"window_threshold", d.window.threshold},
+                              {"max_energy_error", d.max_energy_error},
+                              {"stop_on_energy_error", d.stop_on_energy_error},
+                              {"seed", c.seed},
+                              {"realizations", c.realizations},
+                              {"profile_realizations", std::min(c.profile_realizations, c.realizations)},
+                              {"material", {{"E_Pa", steel.young}, {"nu", steel.poisson}, {"rho_kg_m3", steel.density}}},
+                              {"walls", "flat, same material as the beads"}};
+  if (c.beads) described["beads"] = describe(*c.beads);  // only then, as below
+  if (c.kick == Kick::mode)  // only then: every other case keeps its identity (and its checkpoints)
+    described["mode_kick"] = {{"mode", c.mode.mode == 0 ? nlohmann::json(nullptr) : nlohmann::json(c.mode.mode)},
+                              {"near_khz",
+                               c.mode.near_khz < 0 ? nlohmann::json(nullptr) : nlohmann::json(c.mode.near_khz)},
+                              {"energy_J", c.mode.energy == 0 ? nlohmann::json(nullptr) : nlohmann::json(c.mode.energy)}};
+  return described;
 }
 
 Configuration case_configuration(const TransportCase& c, std::uint64_t r) {
@@ -235,8 +263,9 @@ struct RealizationRecord {
 };
 
 std::vector<double> realization_row(const TransportCase& c, std::uint64_t r) {
-  const Configuration types = case_configuration(c, r);
-  const Chain chain = make_chain(radii_of(types, c.r1, c.xi), c.precompression);
+  const Chain chain =
+      make_chain(c.beads ? realization_radii(*c.beads, c.n, c.seed, r) : radii_of(case_configuration(c, r), c.r1, c.xi),
+                 c.precompression);
   SpreadingConfig config = spreading_config(c);
   config.force_sites.clear();
   config.map_samples = 0;

@@ -24,12 +24,15 @@
 #include "granular/dynamics/spreading.hpp"
 #include "granular/ensemble/run_options.hpp"
 #include "granular/error.hpp"
+#include "granular/model/bead_distribution.hpp"
 #include "granular/model/disorder.hpp"
 #include "granular/model/material.hpp"
+#include "granular/study/mode_kick.hpp"
 
 namespace granular {
 
-enum class Kick { displacement, velocity };
+/// A single-site displacement or velocity kick, or a linear mode of the chain (study/mode_kick.hpp).
+enum class Kick { displacement, velocity, mode };
 Kick parse_kick(const std::string& name);
 std::string to_string(Kick kick);
 
@@ -43,10 +46,14 @@ struct TransportCase {
   std::size_t n = 2501;
   double precompression = 10;  ///< F0 [N]
   double r1 = 4.76e-3;         ///< type-1 radius [m]
+  /// When set, realization r draws its radii from this (k types or polydisperse) instead of
+  /// disorder/q/ξ/r1.
+  std::optional<BeadDistribution> beads;
   Kick kick = Kick::displacement;
   double alpha = 1e-7;                       ///< displacement kick [m]
   double beta = paper_beta;                  ///< velocity kick [m/s]
   bool match_beta = false;                   ///< velocity kick carrying the energy of α on each chain instead
+  ModeKick mode;                             ///< mode kick: which mode and its energy (or amplitude: α)
   std::size_t site = 1250;                   ///< 0-based kicked bead n0 (1251 counting from 1)
   bool centred_draw = false;                 ///< chains drawn outward from the centre bead (centred_configuration.hpp)
   SpreadCentre centre = SpreadCentre::site;  ///< which m̃2 the tables show (both are computed)
@@ -77,9 +84,11 @@ SpreadingConfig spreading_config(const TransportCase& c);
 
 struct KickedChain {
   State initial;
-  double beta = 0;  ///< the velocity kick used [m/s] (the matched one when match_beta); 0 for a displacement
+  double beta = 0;      ///< the velocity kick used [m/s] (the matched one when match_beta); 0 for a displacement
+  ModeKickResult mode;  ///< mode kick: the mode used (number, frequency, IPR, amplitude, energy); else empty
 };
-/// The kick of `c` applied to `chain` at c.site.
+/// The kick of `c` applied to `chain` at c.site (a mode kick: the mode c.mode of `chain`, with the
+/// amplitude α unless c.mode.energy is set; m̃2 is still taken about c.site).
 KickedChain kick(const TransportCase& c, const Chain& chain);
 
 /// γ about the site and about the centroid, and η, of curves sampled at `t`.

@@ -1,0 +1,30 @@
+#pragma once
+// The options of `--ic mode` (study/mode_kick.hpp): which linear mode of the chain starts the
+// dynamics, by number or nearest a frequency, and its energy (without --energy, --alpha is the
+// largest displacement of the mode shape).
+#include <CLI/CLI.hpp>
+
+#include "granular/study/transport_study.hpp"
+
+namespace granular::tool {
+
+struct ModeKickOptions {
+  long mode = 0;
+  double mode_khz = -1, energy = 0;
+};
+
+inline void add_mode_kick_options(CLI::App& app, ModeKickOptions& o) {
+  app.add_option("--mode", o.mode, "--ic mode: the linear mode number K, 1..N by increasing frequency");
+  app.add_option("--mode-khz", o.mode_khz, "--ic mode: the linear mode nearest this frequency [kHz]");
+  app.add_option("--energy", o.energy,
+                 "--ic mode: total energy of the initial state [J] (without it --alpha is the largest |u_n|)");
+}
+
+/// Into `c` (after the kick kind is set): only a mode kick may use these options.
+inline void apply(const ModeKickOptions& o, TransportCase& c) {
+  const bool given = o.mode != 0 || o.mode_khz >= 0 || o.energy != 0;
+  if (given && c.kick != Kick::mode) throw InvalidInput("--mode/--mode-khz/--energy: only with --ic mode");
+  c.mode = {.mode = o.mode, .near_khz = o.mode_khz, .energy = o.energy, .amplitude = 0};
+}
+
+}  // namespace granular::tool
