@@ -19,6 +19,7 @@
 #include "granular/study/exponent_table.hpp"
 #include "granular/study/paper_comparison.hpp"
 #include "granular/study/spreading_files.hpp"
+#include "granular/study/time_step_rule.hpp"
 #include "granular/study/transport_choices.hpp"
 #include "granular/study/transport_study.hpp"
 
@@ -30,7 +31,8 @@ struct DynamicsKeywords {
   double alpha;
   py::object beta, site;
   std::string centre;
-  double T, dt;
+  double T;
+  py::object dt;  // None: the time-step rule's default (time_step_rule.hpp)
   std::string integrator, force_law;
   long long samples;
   std::string sampling;
@@ -58,7 +60,7 @@ void apply(const DynamicsKeywords& k, TransportCase& c) {
   choices.site = k.site.is_none() ? 0 : k.site.cast<long long>();
   choices.centre = k.centre;
   choices.duration = k.T;
-  choices.time_step = k.dt;
+  choices.time_step = k.dt.is_none() ? 1e-6 : finite(k.dt.cast<double>(), "dt");
   choices.integrator = k.integrator;
   choices.force_law = k.force_law;
   choices.samples = static_cast<long long>(checked_size(k.samples, "samples", 2, 100000000));
@@ -82,7 +84,7 @@ void apply(const DynamicsKeywords& k, TransportCase& c) {
 /// The keyword arguments of DynamicsKeywords, with the tools' defaults, in this order.
 #define GRANULAR_DYNAMICS_ARGS                                                                                      \
   py::arg("alpha") = 1e-7, py::arg("beta") = py::float_(paper_beta), py::arg("site") = py::none(),                  \
-  py::arg("centre") = "site", py::arg("T") = 1e-2, py::arg("dt") = 1e-6, py::arg("integrator") = "saba2c",          \
+  py::arg("centre") = "site", py::arg("T") = 1e-2, py::arg("dt") = py::none(), py::arg("integrator") = "saba2c",    \
   py::arg("force_law") = "hertz", py::arg("samples") = 100, py::arg("sampling") = "log",                            \
   py::arg("fit") = py::make_tuple(4e-3, 1e-2), py::arg("fit_step") = 1e-5, py::arg("t_star") = 4e-3,                \
   py::arg("kappa") = 0.1, py::arg("bootstrap") = 1000, py::arg("active_window") = true,                             \
@@ -95,7 +97,9 @@ const char* dynamics_doc =
     "    site: kicked bead n0, counting from 1 as the tools do (None or 0: the centre, (N+1)/2)\n"
     "    centre: m2 about the kicked 'site' (the paper's n_c) or the energy 'centroid'; both are computed, this one "
     "gives gamma\n"
-    "    T: duration [s], a whole number of dt; dt: time step tau [s]\n"
+    "    T: duration [s], a whole number of dt; dt: time step tau [s]; None: 1 us, or 1 us/k where the stability "
+    "rule tau <= h*/omega_max needs it (a dt past that limit is a ValueError naming the largest stable one; the "
+    "rule and its numbers are in metadata['time_step_rule'])\n"
     "    integrator: 'saba2c' | 'saba2' | 'aba864' | 'srkn14a' | 'reference'; force_law: 'hertz' | 'fpu' | 'linear'\n"
     "    samples, sampling: sample times outside the fit window ('log': tau..T, 'uniform': 0..T)\n"
     "    fit: (start, stop) [s] of gamma (m2 ~ t^gamma) and eta (P^-1 ~ t^-eta), sampled every fit_step [s] inside\n"
@@ -142,12 +146,13 @@ void bind_dynamics(py::module_& m) {
   m.def(
       "spreading",
       [](const PyChain& chain, const std::string& ic, double alpha, const py::object& beta, const py::object& site,
-         const std::string& centre, double T, double dt, const std::string& integrator, const std::string& force_law,
-         long long samples, const std::string& sampling, const py::object& fit, double fit_step, double t_star,
-         double kappa, long long bootstrap, bool active_window, double window_threshold, double reference_max_step,
-         double max_energy_error, const std::string& energy_guard, const py::object& forces_at, long long force_samples,
-         bool energy_map, long long map_samples, long long map_stride, bool spectral_density, long long spectrum_samples,
-         const std::string& spectrum_of, bool progress, long mode, double mode_khz, double energy) {
+         const std::string& centre, double T, const py::object& dt, const std::string& integrator,
+         const std::string& force_law, long long samples, const std::string& sampling, const py::object& fit,
+         double fit_step, double t_star, double kappa, long long bootstrap, bool active_window, double window_threshold,
+         double reference_max_step, double max_energy_error, const std::string& energy_guard,
+         const py::object& forces_at, long long force_samples, bool energy_map, long long map_samples,
+         long long map_stride, bool spectral_density, long long spectrum_samples, const std::string& spectrum_of,
+         bool progress, long mode, double mode_khz, double energy) {
         const DynamicsKeywords k{alpha,
                                  beta,
                                  site,
@@ -205,6 +210,11 @@ void bind_dynamics(py::module_& m) {
           bad_value("mode", ": mode, mode_khz and energy only with ic='mode'");
         c.mode = {.mode = mode, .near_khz = mode_khz, .energy = energy, .amplitude = 0};
         validate(c);
+        // τ by the stability rule: of every realization for a named random chain (as the tool's
+        // --disorder), of this very chain otherwise (as the tool's --config/--radii).
+        const bool named =
+            described.contains("disorder") && described["disorder"] != "diatomic" && !described.contains("beads");
+        const nlohmann::json step_rule = settle_time_step(c, !dt.is_none(), named ? nullptr : &chain.chain);
         const KickedChain kicked = kick(c, chain.chain);
 
         SpreadingResult r;
@@ -223,6 +233,7 @@ void bind_dynamics(py::module_& m) {
         meta["seed"] = c.seed;
         const nlohmann::json fitted = exponent_keys(exponents, c.centre);
         meta.update(fitted);
+        meta["time_step_rule"] = step_rule;
         meta["run"] = describe_run(r, described.value("realization", nlohmann::json(0)));
         if (d.spectrum_samples > 0)
           meta["spectrum"] = {{"of", to_string(d.spectrum_source)}, {"samples", d.spectrum_samples}};
@@ -308,11 +319,11 @@ void bind_dynamics(py::module_& m) {
       "transport",
       [](const std::string& disorder, long long N, double q, double xi, double F0, double R1, long long seed,
          long long realizations, const std::string& ic, double alpha, const py::object& beta, const py::object& site,
-         const std::string& centre, double T, double dt, const std::string& integrator, const std::string& force_law,
-         long long samples, const std::string& sampling, const py::object& fit, double fit_step, double t_star,
-         double kappa, long long bootstrap, bool active_window, double window_threshold, double reference_max_step,
-         double max_energy_error, const std::string& energy_guard, bool profile, long long threads,
-         const py::object& checkpoint, bool resume, bool progress) {
+         const std::string& centre, double T, const py::object& dt, const std::string& integrator,
+         const std::string& force_law, long long samples, const std::string& sampling, const py::object& fit,
+         double fit_step, double t_star, double kappa, long long bootstrap, bool active_window, double window_threshold,
+         double reference_max_step, double max_energy_error, const std::string& energy_guard, bool profile,
+         long long threads, const py::object& checkpoint, bool resume, bool progress) {
         const DynamicsKeywords k{alpha,
                                  beta,
                                  site,
@@ -347,6 +358,7 @@ void bind_dynamics(py::module_& m) {
         apply(k, c);
         c.fit = c.fit_end <= c.dynamics.duration * (1 + 1e-12);
         validate(c);
+        const nlohmann::json step_rule = settle_time_step(c, !dt.is_none());
         const int thread_request = static_cast<int>(checked_size(threads, "threads", 0, 4096));
         const std::string log = checkpoint.is_none() ? std::string() : py::str(checkpoint).cast<std::string>();
         if (resume && log.empty()) bad_value("resume", ": needs checkpoint= (the file of the interrupted run)");
@@ -386,7 +398,9 @@ void bind_dynamics(py::module_& m) {
                             {"threads", thread_request},
                             {"mpi_ranks", MpiContext::instance().size()},
                             {"max_energy_error", s.max_energy_error},
-                            {"reached_walls", s.reached_walls}};
+                            {"reached_walls", s.reached_walls},
+                            {"failed_excluded", s.excluded}};
+        meta["time_step_rule"] = step_rule;
 
         py::dict out = to_python(fitted);
         out["warnings"] = warn(warnings(s, c.dynamics));
@@ -436,10 +450,10 @@ void bind_dynamics(py::module_& m) {
       "exponent_table",
       [](const std::vector<std::string>& chains, const py::object& F0, const std::vector<std::string>& ic, long long N,
          double xi, double q, long long realizations, long long seed, double alpha, const py::object& beta,
-         const py::object& site, const std::string& centre, double T, double dt, const std::string& integrator,
-         const std::string& force_law, long long samples, const std::string& sampling, const py::object& fit,
-         double fit_step, double t_star, double kappa, long long bootstrap, bool active_window, double window_threshold,
-         double reference_max_step, double max_energy_error, const std::string& energy_guard,
+         const py::object& site, const std::string& centre, double T, const py::object& dt,
+         const std::string& integrator, const std::string& force_law, long long samples, const std::string& sampling,
+         const py::object& fit, double fit_step, double t_star, double kappa, long long bootstrap, bool active_window,
+         double window_threshold, double reference_max_step, double max_energy_error, const std::string& energy_guard,
          const py::object& profile_F0, long long profile_realizations, const py::object& compare_paper,
          long long threads, const py::object& checkpoint, bool resume, bool progress) {
         const DynamicsKeywords k{alpha,
@@ -486,8 +500,10 @@ void bind_dynamics(py::module_& m) {
         base.seed = checked_size(seed, "seed");
         base.realizations = checked_size(realizations, "realizations", 1);
         apply(k, base);
-        const auto cases = exponent_cases(config);
+        auto cases = exponent_cases(config);
         for (const auto& c : cases) validate(c);
+        const nlohmann::json step_rule = settle_time_step(cases, !dt.is_none());
+        base.dynamics.time_step = cases.front().dynamics.time_step;
         std::size_t total = 0;
         for (const auto& c : cases) total += c.realizations;
         const int thread_request = static_cast<int>(checked_size(threads, "threads", 0, 4096));
@@ -516,6 +532,7 @@ void bind_dynamics(py::module_& m) {
         nlohmann::json described = nlohmann::json::array();
         for (const auto& c : cells) {
           nlohmann::json one = describe(c.definition);
+          one["failed_excluded"] = c.summary.excluded;
           if (c.summary.exponents)
             one["exponents"] = {{"gamma_site", to_json(c.summary.exponents->gamma_site)},
                                 {"gamma_centroid", to_json(c.summary.exponents->gamma_centroid)},
@@ -532,6 +549,7 @@ void bind_dynamics(py::module_& m) {
                               {"threads", thread_request},
                               {"mpi_ranks", MpiContext::instance().size()}};
         meta["cases"] = described;
+        meta["time_step_rule"] = step_rule;
         py::dict out;
         // The tool's three CSV files, written by the library's own writers (granular._results reads them).
         out["table_csv"] = csv_text([&](std::ostream& o) { write_exponents_csv(o, cells); });

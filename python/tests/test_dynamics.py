@@ -145,3 +145,15 @@ def test_a_mode_kick_equals_the_spreading_tool_and_keeps_its_mode_under_the_line
     assert np.max(run["m2_centroid"]) < 3 * run["m2_centroid"][0] + 2
     with pytest.raises(ValueError):
         gr.spreading(gr.anderson(N=101, seed=2), mode=3, **SHORT)  # a mode without ic='mode'
+
+
+def test_default_time_step_follows_the_stability_rule():
+    """dt=None: 1 us where stable with margin, else 1 us/k (as the tools without --dt); the rule in the metadata."""
+    paper = gr.spreading(gr.anderson(N=51), T=1e-4, fit=(2e-5, 1e-4), samples=20)
+    assert paper.metadata["time_step_rule"]["time_step_s"] == 1e-6
+    small = gr.spreading(gr.anderson(N=51, xi=0.05), T=1e-4, fit=(2e-5, 1e-4), samples=20)
+    rule = small.metadata["time_step_rule"]
+    assert rule["time_step_given"] is False
+    assert rule["time_step_s"] < 1e-6 and rule["time_step_s"] <= rule["max_time_step_s"] / 6
+    assert small.metadata["parameters"]["dt_s"] == rule["time_step_s"]
+    assert small.max_energy_error < 1e-3

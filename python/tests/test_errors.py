@@ -188,7 +188,10 @@ def test_file_errors_are_os_errors(tmp_path):
 
 def test_numerical_failures_raise_granular_numerical_error():
     assert issubclass(gr.NumericalError, RuntimeError)
-    # dt far too large for the contact: the energy guard trips (a NumericalError, not garbage)
+    # dt stable but too coarse for this kick: the energy guard trips (a NumericalError, not garbage)
     with pytest.raises(gr.NumericalError, match="energy"):
-        gr.spreading(gr.anderson(N=21), alpha=5e-6, dt=1e-4, T=1e-2, fit=(4e-3, 1e-2), fit_step=1e-4,
+        gr.spreading(gr.anderson(N=21), alpha=5e-6, dt=5e-6, T=1e-2, fit=(4e-3, 1e-2), fit_step=1e-4,
                      max_energy_error=1e-6)
+    # dt past the stability limit is refused before the run, naming the largest stable step
+    with pytest.raises(ValueError, match=r"dt 1e-04 s: past the stability limit.*largest stable time step"):
+        gr.spreading(gr.anderson(N=21), alpha=5e-6, dt=1e-4, T=1e-2, fit=(4e-3, 1e-2), fit_step=1e-4)

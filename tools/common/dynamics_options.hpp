@@ -92,35 +92,15 @@ inline void apply(const DynamicsOptions& o, TransportCase& c) {
   apply(o.beyond, c.dynamics);
 }
 
-/// Settles the time step of `cases` (validated) by the stability rule (time_step_rule.hpp): a
-/// --dt given past the limit of any case is refused naming the largest stable τ; the default
-/// 1 µs becomes 1 µs/k where it is past it. One τ for all of them. `chain`: the chain of a single
-/// case from a file (else every realization counts). Returns the rule and its numbers for the JSON.
-inline nlohmann::json settle_time_step(std::vector<TransportCase>& cases, bool dt_given, const Chain* chain = nullptr) {
-  TimeStepLimit tightest;
-  for (const TransportCase& c : cases) {
-    const TimeStepLimit limit = time_step_limit(c, chain);
-    if (limit.max_time_step < tightest.max_time_step) tightest = limit;
-    if (dt_given) check_time_step(c, limit);
-  }
-  const double tau = dt_given || cases.empty() ? 0 : default_time_step(tightest, cases.front().dynamics.time_step);
-  for (TransportCase& c : cases)
-    if (!dt_given) c.dynamics.time_step = tau;
-  nlohmann::json rule = to_json(tightest);
-  if (!cases.empty()) rule["time_step_s"] = cases.front().dynamics.time_step;
-  rule["time_step_given"] = dt_given;
-  return rule;
-}
-
-/// The same, settling `--integrator auto` first (scheme_choice.hpp): SRKN14a at 5 µs where no
-/// contact can open and it is cheaper than SABA2C at its default step, else that; one scheme for all.
+/// granular::settle_time_step (time_step_rule.hpp), settling `--integrator auto` first (scheme_choice.hpp): SRKN14a at
+/// 5 µs where no contact can open and it is cheaper than SABA2C at its default step, else that; one scheme for all.
 inline nlohmann::json settle_time_step(std::vector<TransportCase>& cases, const DynamicsOptions& o, bool dt_given,
                                        const Chain* chain = nullptr) {
-  if (o.choices.integrator != "auto" || cases.empty()) return settle_time_step(cases, dt_given, chain);
+  if (o.choices.integrator != "auto" || cases.empty()) return granular::settle_time_step(cases, dt_given, chain);
   if (dt_given) throw InvalidInput("--integrator auto: chooses the time step too; drop --dt (or name a scheme)");
   std::vector<TransportCase> trial = cases;  // SABA2C at its default step
   for (TransportCase& c : trial) c.dynamics.integrator = saba2c();
-  settle_time_step(trial, false, chain);
+  granular::settle_time_step(trial, false, chain);
   double omega_max = 0;
   bool closed = true;
   for (const TransportCase& c : trial) {
@@ -132,7 +112,7 @@ inline nlohmann::json settle_time_step(std::vector<TransportCase>& cases, const 
     c.dynamics.integrator = parse_integrator(choice.integrator);
     c.dynamics.time_step = choice.time_step;
   }
-  nlohmann::json rule = settle_time_step(cases, true, chain);  // the chosen τ, checked against stability
+  nlohmann::json rule = granular::settle_time_step(cases, true, chain);  // the chosen τ, checked against stability
   rule["time_step_given"] = false;
   rule["integrator_choice"] = to_json(choice);
   return rule;

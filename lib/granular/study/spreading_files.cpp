@@ -1,8 +1,8 @@
 #include "granular/study/spreading_files.hpp"
 
 #include "granular/io/csv_writer.hpp"
-#include "granular/number_format.hpp"
 #include "granular/io/hdf5_file.hpp"
+#include "granular/number_format.hpp"
 
 namespace granular {
 
@@ -86,16 +86,16 @@ void write_energy_map(const std::string& path, const SpreadingResult& r, std::si
 
 nlohmann::json describe_run(const SpreadingResult& r, const nlohmann::json& realization) {
   nlohmann::json run = {{"realization", realization},
-          {"initial_energy_J", r.initial_energy},
-          {"max_energy_error", r.max_energy_error},
-          {"steps", r.steps},
-          {"bond_updates", r.bond_updates},
-          {"integration_s", r.seconds},
-          {"window_final", {r.window_begin + 1, r.window_end}},
-          {"wall_energy", r.wall_energy},
-          {"reached_walls", r.reached_walls}};
+                        {"initial_energy_J", r.initial_energy},
+                        {"max_energy_error", r.max_energy_error},
+                        {"steps", r.steps},
+                        {"bond_updates", r.bond_updates},
+                        {"integration_s", r.seconds},
+                        {"window_final", {r.window_begin + 1, r.window_end}},
+                        {"wall_energy", r.wall_energy},
+                        {"reached_walls", r.reached_walls}};
   if (!r.dissipated.empty()) run["dissipated_J"] = r.dissipated.back();  // with damping only
-  if (!r.mle.empty()) run["mle_per_s"] = r.mle.back();                  // with the tangent map only
+  if (!r.mle.empty()) run["mle_per_s"] = r.mle.back();                   // with the tangent map only
   return run;
 }
 

@@ -156,4 +156,27 @@ nlohmann::json to_json(const TimeStepLimit& limit) {
           {"max_time_step_s", bounded ? nlohmann::json(limit.max_time_step) : nlohmann::json(nullptr)}};
 }
 
+nlohmann::json settle_time_step(std::vector<TransportCase>& cases, bool dt_given, const Chain* chain) {
+  TimeStepLimit tightest;
+  for (const TransportCase& c : cases) {
+    const TimeStepLimit limit = time_step_limit(c, chain);
+    if (limit.max_time_step < tightest.max_time_step) tightest = limit;
+    if (dt_given) check_time_step(c, limit);
+  }
+  const double tau = dt_given || cases.empty() ? 0 : default_time_step(tightest, cases.front().dynamics.time_step);
+  for (TransportCase& c : cases)
+    if (!dt_given) c.dynamics.time_step = tau;
+  nlohmann::json rule = to_json(tightest);
+  if (!cases.empty()) rule["time_step_s"] = cases.front().dynamics.time_step;
+  rule["time_step_given"] = dt_given;
+  return rule;
+}
+
+nlohmann::json settle_time_step(TransportCase& c, bool dt_given, const Chain* chain) {
+  std::vector<TransportCase> one{c};
+  const nlohmann::json rule = settle_time_step(one, dt_given, chain);
+  c = one.front();
+  return rule;
+}
+
 }  // namespace granular

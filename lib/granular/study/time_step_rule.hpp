@@ -10,6 +10,7 @@
 // produce around any bead. The rule is τ ≤ τ_max = h*/ω_max.
 #include <limits>
 #include <optional>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -58,5 +59,15 @@ void check_time_step(const TransportCase& c, const TimeStepLimit& limit);
 
 /// The rule and its numbers, for the JSON.
 nlohmann::json to_json(const TimeStepLimit& limit);
+
+/// Settles the time step of `cases` (validated) by the rule: a τ given by the user
+/// (`time_step_given`) past the limit of any case is refused (InvalidInput naming `time_step`
+/// and the largest stable τ); otherwise each case's τ (the paper's 1 µs) becomes
+/// default_time_step() of the tightest limit. One τ for all of them. `chain`: the chain of a
+/// single case from a file (else every realization counts). Returns the rule and its numbers
+/// for the JSON ("time_step_rule"), as the tools and Python write it.
+nlohmann::json settle_time_step(std::vector<TransportCase>& cases, bool time_step_given, const Chain* chain = nullptr);
+/// The same for one case.
+nlohmann::json settle_time_step(TransportCase& c, bool time_step_given, const Chain* chain = nullptr);
 
 }  // namespace granular
