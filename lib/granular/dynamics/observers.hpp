@@ -23,8 +23,8 @@ namespace granular {
 
 /// m̃2 about the excited bead n0 (the paper's) and about the energy centroid, P⁻¹ and the relative
 /// energy error |H(t) + dissipated(t) − H0|/H0 at the sample times (dissipated: 0 without damping), with the run's
-/// guards: a non-finite state stops the run (NumericalError); an energy error past `max_energy_error` stops it or is recorded;
-/// energy reaching the walls is recorded.
+/// guards: a non-finite state stops the run (NumericalError); an energy error past `max_energy_error` stops it or is
+/// recorded; energy reaching the walls is recorded.
 class EnergySpreadObserver final : public Observer {
  public:
   struct Settings {
