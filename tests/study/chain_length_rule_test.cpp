@@ -58,7 +58,7 @@ TEST(ChainLengthRule, OmegaIsTwiceTheLinearSoundSpeed) {
 
 // The front (the active window, grown wherever the kinetic energy passes 1e-30 of H0) moves
 // slower than Ω/2, and no energy reaches the walls: with and without precompression, both kicks.
-TEST(ChainLengthRule, Long_TheWallGuardNeverFiresAtTheAutomaticN) {
+TEST(ChainLengthRule, TheWallGuardNeverFiresAtTheAutomaticN) {
   for (double f0 : {10.0, 0.0})
     for (Kick kick : {Kick::velocity, Kick::displacement})
       for (Disorder d : {Disorder::anderson, Disorder::rdm2}) {
@@ -78,7 +78,7 @@ TEST(ChainLengthRule, Long_TheWallGuardNeverFiresAtTheAutomaticN) {
 
 // The same realizations at N and at 1.5 N: the beads the wave meets are the same (the centred
 // draw), so m̃2 agrees to 1e-12 at every sample.
-TEST(ChainLengthRule, Long_OneAndAHalfTimesTheLengthGivesTheSameSpread) {
+TEST(ChainLengthRule, OneAndAHalfTimesTheLengthGivesTheSameSpread) {
   for (double f0 : {10.0, 0.0})
     for (Disorder d : {Disorder::anderson, Disorder::rdm1}) {
       const TransportCase a = sized(long_case(d, f0, Kick::velocity, 2e-2));
