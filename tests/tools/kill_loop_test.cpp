@@ -32,7 +32,7 @@ const Job exponents_job{"exponents",
                         "--bootstrap 200 --realizations 40 --quiet",
                         {".csv", "-curves.csv", "-profiles.csv"}};
 const Job spreading_job{"spreading",
-                        "--disorder RDM1 --N 201 --T 1e-3 --fit 4e-4:1e-3 --samples 30 --F0 0.1 --realizations 120 "
+                        "--disorder RDM1 --N 201 --T 1e-3 --fit 4e-4:1e-3 --samples 30 --F0 0.1 --realizations 600 "
                         "--bootstrap 100 --profile --quiet",
                         {".csv", "-sem.csv", "-profile.csv"}};
 
