@@ -5,15 +5,24 @@
 //
 // Integration: Strang splitting of the conservative scheme Φ_τ with the damping flow D_h at
 // fixed positions, one step = D_{τ/2} Φ_τ D_{τ/2}. For fixed u the damping is linear in v:
-//   M v̇ = −(M/τ_d) v − C(u) v,   C(u) = the tridiagonal, positive semi-definite bond Laplacian
-//                                        with weights c_k = γ_KK A_k [δ_k]_+^{1/2};
+//   M v̇ = −(M/τ_d) v − C(u) v,   C(u) = Σ_k C_k, C_k the bond-k Laplacian with weight
+//                                        c_k = γ_KK A_k [δ_k]_+^{1/2} (positive semi-definite);
 // the on-site part is a multiple of the identity, so it commutes with the rest and its flow is
-// exact (v ← v e^{−h/τ_d}); the contact part takes one trapezoidal (Crank–Nicolson) step,
-// (M + hC/2) v' = (M − hC/2) v: A-stable, 2nd order, one O(N) tridiagonal solve, and it never
-// adds kinetic energy. The composite is therefore 2nd order in τ whatever the conservative
-// scheme (measured: tests/dynamics/damping_test.cpp). The kinetic energy each damping substep
-// removes is summed exactly, so H(t) + dissipated(t) = H(0) up to the conservative scheme's
-// own energy error.
+// exact (v ← v e^{−h/τ_d}). The contact part is split by the parity of the bonds,
+//   D_h ≈ E_{h/2} O_h E_{h/2}   (E: the even bonds 0, 2, 4, …; O: the odd bonds),
+// because the bonds of one parity share no bead: each is an independent two-bead problem whose
+// relative velocity g = v_{k−1} − v_k obeys ġ = −λ_k g, λ_k = c_k (1/m_{k−1} + 1/m_k) (a wall
+// has 1/m = 0), while the pair's momentum stays as it is. Each pair takes one
+// trapezoidal (Crank–Nicolson) step, g ← g (1 − y)/(1 + y), y = h λ_k / 2: A-stable, 2nd order,
+// momentum-conserving, and it never adds kinetic energy. The parity splitting is symmetric, so
+// D_h is 2nd order (against the exact flow of the whole C: tests/dynamics/damping_flow_test.cpp),
+// and so is the composite whatever the conservative scheme (tests/dynamics/damping_test.cpp);
+// with one contact (a two-bead collision) it is exactly the
+// Crank–Nicolson step of that contact. Unlike a tridiagonal solve over the chain it has no
+// sequential recurrence: every pass vectorizes, and its cost per step is that of about one
+// extra bond pass (docs/beyond-the-paper.md, Speed). The kinetic energy each damping substep
+// removes is summed exactly, so H(t) + dissipated(t) = H(0) up to the conservative scheme's own
+// energy error.
 //
 // The contact weights use the chain's Hertz geometry (A_k, Δ_k) for every force law: the
 // damping is a property of the contact, whichever expansion of its elastic force is integrated.
@@ -43,14 +52,33 @@ class DampingFlow {
   /// removed [J] (≥ 0 up to rounding).
   double apply(std::span<const double> u, std::span<double> v, double h);
 
+  const Damping& damping() const { return damping_; }
+  /// Per bond k: (h_k/2) γ_KK A_k (1/m_{k−1} + 1/m_k) for D_h, h_k = h/2 on even bonds (E_{h/2})
+  /// and h on odd ones (O_h); so y_k = rate_k [δ_k]_+^{1/2}. Set by apply(), or by prepare(h).
+  const double* rate() const { return rate_.data(); }
+  /// The same per unit Hertz stiffness K_k = (3/2) A_k [δ_k]_+^{1/2}: y_k = rate_per_stiffness_k K_k.
+  const double* rate_per_stiffness() const { return rate_per_stiffness_.data(); }
+  /// The share of a pair's relative-velocity change taken by bead k−1 (m_k/(m_{k−1}+m_k)) and
+  /// by bead k (m_{k−1}/(m_{k−1}+m_k)); a wall takes none.
+  const double* left_share() const { return left_.data(); }
+  const double* right_share() const { return right_.data(); }
+  const double* overlap() const { return overlap_.data(); }
+  /// Fixes h for rate().
+  void prepare(double h);
+
  private:
   Damping damping_;
-  std::vector<double> mass_, contact_, overlap_;
-  std::vector<double> weight_, diag_, upper_, rhs_;  // workspace
+  double h_ = 0;
+  std::vector<double> mass_, contact_, overlap_, sum_im_, left_, right_, rate_, rate_per_stiffness_;
+  std::vector<double> vp_, loss_;  // workspace of apply()
 };
 
 /// The damped splitting propagator D_{τ/2} Φ_τ D_{τ/2} on the whole chain (no active window:
 /// dissipation is for chains of experimental size). Its dissipated_energy() is the running sum.
+/// Within one advance() the two damping substeps that meet at a step boundary (same positions)
+/// run as one pass, with the SABA2C correctors on either side; the kicks are the conservative
+/// stepper's blocked kernels. With no damping at all (Damping::any() false) it is the
+/// conservative stepper on the whole chain.
 std::unique_ptr<Propagator> make_damped_propagator(const ForceLaw& law, const Chain& chain,
                                                    const SplittingScheme& scheme, double time_step,
                                                    const State& initial, const Damping& damping);
