@@ -102,9 +102,10 @@ TEST(DampingFlow, ConservesMomentumAndLeavesOpenContactsAlone) {
   EXPECT_GT((w[4] - w[5]) * (v[4] - v[5]), 0.0);
 }
 
-// The damped propagator runs each step boundary as one blocked pass (both damping substeps, the
-// correctors, the drift) and the kicks through the conservative kernels: it must equal the plain
-// composition D_{τ/2} Φ_τ D_{τ/2} of DampingFlow::apply and one conservative step, to rounding.
+// The damped propagator runs each step boundary as one blocked pass (the damping substeps of both
+// steps, the correctors, the drift) and the kicks through the conservative kernels: it must equal
+// the plain composition E_{τ/2} O_{τ/2} Φ_τ O_{τ/2} E_{τ/2} of DampingFlow sweeps and one
+// conservative step, to rounding.
 // A disturbed state along the whole chain (N = 300: several blocks) with some contacts open.
 TEST(DampingFlow, FusedDampedStepsEqualTheStrangCompositionOfTheParts) {
   const Chain chain = fixtures::anderson(300, 0.1);
@@ -124,11 +125,11 @@ TEST(DampingFlow, FusedDampedStepsEqualTheStrangCompositionOfTheParts) {
         State s = s0;
         double removed = 0;
         for (std::size_t step = 0; step < steps; ++step) {
-          removed += flow.apply(s.u, s.v, tau / 2);
+          removed += flow.apply(s.u, s.v, tau / 2, DampingFlow::Sweep::even_first);
           auto p = make_splitting_propagator(law, chain, scheme, tau, s, {false});
           p->advance(1);
           s = p->state();
-          removed += flow.apply(s.u, s.v, tau / 2);
+          removed += flow.apply(s.u, s.v, tau / 2, DampingFlow::Sweep::odd_first);
         }
         auto fused = make_damped_propagator(law, chain, scheme, tau, s0, damping);
         fused->advance(steps / 3);

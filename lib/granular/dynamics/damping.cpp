@@ -29,13 +29,15 @@ double twice_kinetic(const double* __restrict m, const double* __restrict v, std
 inline double trapezoidal_loss(double y) { return 2 * y / (1 + y); }
 
 // One trapezoidal pair step on the bonds k ∈ [lo, hi) of one parity; vp is padded (vp[k] is
-// bead k−1, vp[0] = vp[n+1] = 0 the walls, which take no share and stay 0).
-void pair_damping(double* __restrict vp, const double* __restrict left, const double* __restrict right,
-                  const double* __restrict loss, std::size_t lo, std::size_t hi, std::size_t parity) {
+// bead k−1, vp[0] = vp[n+1] = 0 the walls, which take no share and stay 0); share is
+// DampingFlow::pair_share(parity). The two members' updates have the same form, so that the
+// compiler vectorizes the pair as one unit.
+void pair_damping(double* __restrict vp, const double* __restrict share, const double* __restrict loss,
+                  std::size_t lo, std::size_t hi, std::size_t parity) {
   for (std::size_t k = lo + ((lo ^ parity) & 1); k < hi; k += 2) {
     const double g = loss[k] * (vp[k] - vp[k + 1]);
-    vp[k] -= left[k] * g;
-    vp[k + 1] += right[k] * g;
+    vp[k] -= share[k] * g;
+    vp[k + 1] -= share[k + 1] * g;
   }
 }
 
@@ -57,13 +59,14 @@ DampingFlow::DampingFlow(const Chain& chain, const Damping& damping)
   validate(damping);
   const std::size_t n = chain.size();
   sum_im_.assign(n + 1, 0.0);
-  left_.assign(n + 1, 0.0);
-  right_.assign(n + 1, 0.0);
+  share_even_.assign(n + 2, 0.0);
+  share_odd_.assign(n + 2, 0.0);
   for (std::size_t k = 0; k <= n; ++k) {
     const double l = k > 0 ? chain.inverse_mass[k - 1] : 0.0, r = k < n ? chain.inverse_mass[k] : 0.0;
     sum_im_[k] = l + r;
-    left_[k] = l / (l + r);
-    right_[k] = r / (l + r);
+    auto& share = k % 2 == 0 ? share_even_ : share_odd_;
+    share[k] = l / (l + r);       // bead k−1 (position k) moves by −(1/m_{k−1})/(Σ 1/m) · g
+    share[k + 1] = -(r / (l + r));  // bead k (position k+1) by +(1/m_k)/(Σ 1/m) · g
   }
   rate_.assign(n + 1, 0.0);
   rate_per_stiffness_.assign(n + 1, 0.0);
@@ -75,24 +78,38 @@ void DampingFlow::prepare(double h) {
   if (h == h_) return;
   h_ = h;
   for (std::size_t k = 0; k < rate_.size(); ++k) {
-    const double per_contact = (k % 2 == 0 ? 0.25 * h : 0.5 * h) * damping_.kk_gamma * sum_im_[k];
+    const double per_contact = 0.5 * h * damping_.kk_gamma * sum_im_[k];
     rate_[k] = per_contact * contact_[k];
     rate_per_stiffness_[k] = per_contact / 1.5;
   }
 }
 
 double DampingFlow::apply(std::span<const double> u, std::span<double> v, double h) {
+  // E_{h/2} O_h E_{h/2}: the even bonds' steps are half as long.
+  return sweep(u, v, h, {std::size_t{0}, std::size_t{1}, std::size_t{0}}, {0.5, 1.0, 0.5});
+}
+
+double DampingFlow::apply(std::span<const double> u, std::span<double> v, double h, Sweep order) {
+  if (order == Sweep::even_first) return sweep(u, v, h, {std::size_t{0}, std::size_t{1}}, {1.0, 1.0});
+  return sweep(u, v, h, {std::size_t{1}, std::size_t{0}}, {1.0, 1.0});
+}
+
+double DampingFlow::sweep(std::span<const double> u, std::span<double> v, double h,
+                          std::initializer_list<std::size_t> parities, std::initializer_list<double> fractions) {
   const std::size_t n = v.size();
   const double before = twice_kinetic(mass_.data(), v.data(), n);
   if (damping_.kk_gamma > 0) {
     prepare(h);
     std::copy(v.begin(), v.end(), vp_.begin() + 1);
-    for (std::size_t k = 0; k <= n; ++k) {
-      const double x = (k > 0 ? u[k - 1] : 0.0) - (k < n ? u[k] : 0.0);
-      loss_[k] = trapezoidal_loss(rate_[k] * std::sqrt(std::max(overlap_[k] + x, 0.0)));
+    const double* fraction = fractions.begin();
+    for (const std::size_t parity : parities) {
+      for (std::size_t k = 0; k <= n; ++k) {
+        const double x = (k > 0 ? u[k - 1] : 0.0) - (k < n ? u[k] : 0.0);
+        loss_[k] = trapezoidal_loss(*fraction * rate_[k] * std::sqrt(std::max(overlap_[k] + x, 0.0)));
+      }
+      pair_damping(vp_.data(), pair_share(parity), loss_.data(), 0, n + 1, parity);
+      ++fraction;
     }
-    for (const std::size_t parity : {std::size_t{0}, std::size_t{1}, std::size_t{0}})  // E_{h/2} O_h E_{h/2}
-      pair_damping(vp_.data(), left_.data(), right_.data(), loss_.data(), 0, n + 1, parity);
     std::copy(vp_.begin() + 1, vp_.begin() + 1 + static_cast<std::ptrdiff_t>(n), v.begin());
   }
   if (damping_.time > 0) scale(v.data(), n, std::exp(-h / damping_.time));
@@ -163,7 +180,7 @@ void drift(double* __restrict u, const double* __restrict v, std::size_t lo, std
   for (std::size_t p = lo; p < hi; ++p) u[p] += d * v[p];
 }
 
-constexpr std::size_t boundary_block = 128;
+constexpr std::size_t boundary_block = 512;
 
 template <BondForceLaw Law>
 class DampedPropagator final : public Propagator {
@@ -207,7 +224,8 @@ class DampedPropagator final : public Propagator {
   double dissipated_energy() const override { return dissipated_; }
 
  private:
-  // At fixed positions: [end: corrector g, D_{τ/2}] [start: D_{τ/2}, corrector g, drift a_0 τ].
+  // At fixed positions: [end: corrector g, O_{τ/2} E_{τ/2}] [start: E_{τ/2} O_{τ/2}, corrector g,
+  // drift a_0 τ], with the on-site flow over τ/2 per half.
   //
   // One pass over the chain in blocks whose arrays stay in L1, as the conservative kernels: each
   // stage runs `lag` indices behind the stage before it, far enough that the neighbours it
@@ -219,16 +237,15 @@ class DampedPropagator final : public Propagator {
     const bool contact = flow_.damping().kk_gamma > 0, twice = end && start;
     const auto view = law_.view();
     const double* rate = hertz ? flow_.rate_per_stiffness() : flow_.rate();
-    const double* left = flow_.left_share();
-    const double* right = flow_.right_share();
     double* u = up_.data();
     double* v = vp_.data();
     double* dv = dv_.data();
-    const std::size_t n = n_, pairs = contact ? (twice ? 5 : 3) : 0;
+    // The pair sweeps: end of a step O_{τ/2} E_{τ/2}, start E_{τ/2} O_{τ/2}, both: O_{τ/2} E_τ O_{τ/2}
+    // (E_τ as two Crank–Nicolson steps of τ/2, loss2).
+    const std::size_t n = n_, pairs = contact ? (twice ? 3 : 2) : 0;
     const std::size_t final_lag = 2 + pairs;
-    const std::size_t parity[5] = {0, 1, 0, 1, 0};
-    const double* loss[5] = {loss_.data(), loss_.data(), twice ? loss2_.data() : loss_.data(), loss_.data(),
-                             loss_.data()};
+    const std::size_t parity[3] = {end ? std::size_t{1} : std::size_t{0}, end ? std::size_t{0} : std::size_t{1}, 1};
+    const double* loss[3] = {loss_.data(), twice ? loss2_.data() : loss_.data(), loss_.data()};
     const double d = scheme_.drift[0] * tau_;
     double before = 0, after = 0;
     for (std::size_t lo = 0;; lo += boundary_block) {
@@ -265,7 +282,7 @@ class DampedPropagator final : public Propagator {
       }
       for (std::size_t s = 0; s < pairs; ++s) {
         const auto [b, e] = range(2 + s, 0);
-        pair_damping(v, left, right, loss[s], b, e, parity[s]);
+        pair_damping(v, flow_.pair_share(parity[s]), loss[s], b, e, parity[s]);
       }
       {
         const auto [b, e] = range(final_lag, 1);
