@@ -4,8 +4,8 @@
 #include <cmath>
 #include <cstdio>
 
-#include <Eigen/Eigenvalues>
 #include <gtest/gtest.h>
+#include <Eigen/Eigenvalues>
 
 #include "dynamics_fixtures.hpp"
 #include "granular/dynamics/damping.hpp"

@@ -32,8 +32,8 @@ inline double trapezoidal_loss(double y) { return 2 * y / (1 + y); }
 // bead k−1, vp[0] = vp[n+1] = 0 the walls, which take no share and stay 0); share is
 // DampingFlow::pair_share(parity). The two members' updates have the same form, so that the
 // compiler vectorizes the pair as one unit.
-void pair_damping(double* __restrict vp, const double* __restrict share, const double* __restrict loss,
-                  std::size_t lo, std::size_t hi, std::size_t parity) {
+void pair_damping(double* __restrict vp, const double* __restrict share, const double* __restrict loss, std::size_t lo,
+                  std::size_t hi, std::size_t parity) {
   for (std::size_t k = lo + ((lo ^ parity) & 1); k < hi; k += 2) {
     const double g = loss[k] * (vp[k] - vp[k + 1]);
     vp[k] -= share[k] * g;
@@ -65,7 +65,7 @@ DampingFlow::DampingFlow(const Chain& chain, const Damping& damping)
     const double l = k > 0 ? chain.inverse_mass[k - 1] : 0.0, r = k < n ? chain.inverse_mass[k] : 0.0;
     sum_im_[k] = l + r;
     auto& share = k % 2 == 0 ? share_even_ : share_odd_;
-    share[k] = l / (l + r);       // bead k−1 (position k) moves by −(1/m_{k−1})/(Σ 1/m) · g
+    share[k] = l / (l + r);         // bead k−1 (position k) moves by −(1/m_{k−1})/(Σ 1/m) · g
     share[k + 1] = -(r / (l + r));  // bead k (position k+1) by +(1/m_k)/(Σ 1/m) · g
   }
   rate_.assign(n + 1, 0.0);

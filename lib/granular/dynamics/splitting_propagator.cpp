@@ -5,8 +5,8 @@
 #include <cmath>
 #include <string>
 
-#include "granular/dynamics/observables.hpp"
 #include "granular/dynamics/detail/blocked_kernels.hpp"
+#include "granular/dynamics/observables.hpp"
 #include "granular/dynamics/propagator.hpp"
 #include "granular/error.hpp"
 

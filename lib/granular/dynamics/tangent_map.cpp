@@ -68,8 +68,8 @@ inline void corrector_bond(const View law, const double* __restrict u, const dou
 template <class View>
 void correct_and_drift(const View law, double* __restrict u, double* __restrict du, double* __restrict f,
                        double* __restrict stiff, double* __restrict kx, double* __restrict cx, double* __restrict a,
-                       double* __restrict da, double* __restrict v, double* __restrict dv,
-                       const double* __restrict im, std::size_t n, double c, double d) {
+                       double* __restrict da, double* __restrict v, double* __restrict dv, const double* __restrict im,
+                       std::size_t n, double c, double d) {
   corrector_bond(law, u, du, f, stiff, kx, cx, 0);
   corrector_bond(law, u, du, f, stiff, kx, cx, 1);
   a[1] = im[0] * (f[0] - f[1]);
