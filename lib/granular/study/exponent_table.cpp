@@ -6,6 +6,7 @@
 
 #include "granular/ensemble/checkpoint_log.hpp"
 #include "granular/io/csv_writer.hpp"
+#include "granular/study/chain_length_rule.hpp"
 
 namespace granular {
 
@@ -22,6 +23,11 @@ std::vector<TransportCase> exponent_cases(const ExponentTableConfig& config) {
         const bool profile = std::find(config.profile_precompressions.begin(), config.profile_precompressions.end(),
                                        f0) != config.profile_precompressions.end();
         c.profile_realizations = profile ? std::min(config.profile_realizations, c.realizations) : 0;
+        if (config.automatic_length) {
+          c.n = automatic_chain_length(c).n;
+          c.site = (c.n - 1) / 2;
+          c.centred_draw = true;
+        }
         cases.push_back(c);
       }
   return cases;
