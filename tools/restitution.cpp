@@ -65,7 +65,7 @@ int main(int argc, char** argv) {
                                            {"steps_per_collision", config.steps_per_collision},
                                            {"integrator", integrator},
                                            {"damping_splitting",
-                                            "Strang: half damping step (Crank-Nicolson), scheme, half step"}};
+                                            "Strang: contact pairs (Crank-Nicolson) half step, scheme, half step"}};
                      meta["output"] = output;
                      meta.write(json_path, {&csv});
                    },

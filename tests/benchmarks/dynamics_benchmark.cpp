@@ -5,6 +5,7 @@
 // Results and commands: docs/dynamics-performance.md.
 #include <algorithm>
 #include <cmath>
+#include <ctime>
 #include <memory>
 #include <vector>
 
@@ -91,7 +92,7 @@ BENCHMARK(BM_Saba2cStep)->Unit(benchmark::kMicrosecond);
 
 // Issue 14's budget: a damped step and a tangent-map step at most 2× BM_Saba2cStep (whole chain, 100 steps
 // per iteration each).
-// Arg 0: on-site damping only (exact flow); 1: Kuwabara–Kono too (one tridiagonal solve per half step).
+// Arg 0: on-site damping only (exact flow); 1: Kuwabara–Kono too (parity-split pair steps).
 void BM_DampedSaba2cStep(benchmark::State& state) {
   // Weak damping, so that a long benchmark does not run into denormal velocities; the cost is the same.
   const Damping damping{1.0, state.range(0) ? 1e-9 : 0.0};
@@ -108,6 +109,46 @@ void BM_TangentSaba2cStep(benchmark::State& state) {
   for (auto _ : state) p->advance(100);  // 100 steps per iteration, as BM_Saba2cStep
 }
 BENCHMARK(BM_TangentSaba2cStep)->Unit(benchmark::kMicrosecond);
+
+// The same three budgets as ratios robust to load: each iteration runs 100 conservative SABA2C
+// steps (BM_Saba2cStep) and then 100 steps of the variant, each timed by this thread's CPU clock,
+// so both see the same machine within milliseconds; `ratio` = variant time / conservative time.
+// Arg 0: on-site damping; 1: on-site + Kuwabara–Kono; 2: Kuwabara–Kono alone; 3: the tangent map.
+double thread_seconds() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
+void BM_CostRatioToSaba2c(benchmark::State& state) {
+  auto base = make_splitting_propagator(paper_law(), paper_chain(), saba2c(), tau, paper_kick(), {false});
+  std::unique_ptr<Propagator> variant;
+  const auto which = state.range(0);
+  if (which == 3)
+    variant = make_tangent_propagator(paper_law(), paper_chain(), saba2c(), tau, paper_kick(),
+                                      localized_deviation(beads, centre_site(beads)));
+  else
+    variant = make_damped_propagator(paper_law(), paper_chain(), saba2c(), tau, paper_kick(),
+                                     Damping{which == 2 ? 0.0 : 1.0, which == 0 ? 0.0 : 1e-9});
+  base->advance(1000);
+  variant->advance(1000);
+  double base_time = 0, variant_time = 0;
+  for (auto _ : state) {
+    const double t0 = thread_seconds();
+    base->advance(100);
+    const double t1 = thread_seconds();
+    variant->advance(100);
+    const double t2 = thread_seconds();
+    base_time += t1 - t0;
+    variant_time += t2 - t1;
+  }
+  const double steps = 100.0 * static_cast<double>(state.iterations());
+  state.SetLabel(which == 0 ? "on-site" : which == 1 ? "on-site+kk" : which == 2 ? "kk" : "tangent");
+  state.counters["ratio"] = variant_time / base_time;
+  state.counters["us_per_step"] = 1e6 * variant_time / steps;
+  state.counters["saba2c_us_per_step"] = 1e6 * base_time / steps;
+}
+BENCHMARK(BM_CostRatioToSaba2c)->DenseRange(0, 3)->ArgName("variant")->Unit(benchmark::kMillisecond)->MinTime(1.0);
 
 // One realization: 10 000 steps of SABA2C, with or without the active window; the energy error
 // is the max over 100 uniform samples (which also cost 100 extra corrector kicks).

@@ -43,7 +43,7 @@ TEST(TangentMap, DeviationIsTheDifferenceOfTwoNearbyOrbits) {
       const std::size_t steps = 200;  // 0.1 ms: the pulse crosses ~10 beads, many oscillations
       auto tangent = make_tangent_propagator(law, chain, scheme, tau, a, w, {.enabled = true, .renormalize_every = 0});
       tangent->advance(steps);
-      // The orbits through the damped stepper with no damping: the same unmerged step.
+      // The orbits through the damped stepper with no damping (the conservative stepper, whole chain).
       auto pa = fixtures::run(make_damped_propagator(law, chain, scheme, tau, a, {}), steps);
       auto pb = fixtures::run(make_damped_propagator(law, chain, scheme, tau, b, {}), steps);
       EXPECT_EQ(relative_difference(tangent->displacement(), pa->displacement()), 0.0);  // same orbit

@@ -1,9 +1,13 @@
 #include "granular/dynamics/damping.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstddef>
+#include <type_traits>
+#include <utility>
 #include <variant>
 
-#include "granular/dynamics/detail/plain_step.hpp"
+#include "granular/dynamics/detail/blocked_kernels.hpp"
 #include "granular/error.hpp"
 #include "granular/number_format.hpp"
 
@@ -21,6 +25,26 @@ double twice_kinetic(const double* __restrict m, const double* __restrict v, std
   return ((part[0] + part[1]) + (part[2] + part[3])) + ((part[4] + part[5]) + (part[6] + part[7]));
 }
 
+// 1 − q of the trapezoidal step g ← q g, q = (1 − y)/(1 + y), in the form exact for small y.
+inline double trapezoidal_loss(double y) { return 2 * y / (1 + y); }
+
+// One trapezoidal pair step on the bonds k ∈ [lo, hi) of one parity; vp is padded (vp[k] is
+// bead k−1, vp[0] = vp[n+1] = 0 the walls, which take no share and stay 0); share is
+// DampingFlow::pair_share(parity). The two members' updates have the same form, so that the
+// compiler vectorizes the pair as one unit.
+void pair_damping(double* __restrict vp, const double* __restrict share, const double* __restrict loss, std::size_t lo,
+                  std::size_t hi, std::size_t parity) {
+  for (std::size_t k = lo + ((lo ^ parity) & 1); k < hi; k += 2) {
+    const double g = loss[k] * (vp[k] - vp[k + 1]);
+    vp[k] -= share[k] * g;
+    vp[k + 1] -= share[k + 1] * g;
+  }
+}
+
+void scale(double* __restrict v, std::size_t n, double factor) {
+  for (std::size_t i = 0; i < n; ++i) v[i] *= factor;
+}
+
 }  // namespace
 
 void validate(const Damping& d) {
@@ -34,97 +58,254 @@ DampingFlow::DampingFlow(const Chain& chain, const Damping& damping)
     : damping_(damping), mass_(chain.mass), contact_(chain.contact), overlap_(chain.overlap) {
   validate(damping);
   const std::size_t n = chain.size();
-  weight_.assign(n + 1, 0.0);
-  diag_.assign(n, 0.0);
-  upper_.assign(n, 0.0);
-  rhs_.assign(n, 0.0);
+  sum_im_.assign(n + 1, 0.0);
+  share_even_.assign(n + 2, 0.0);
+  share_odd_.assign(n + 2, 0.0);
+  for (std::size_t k = 0; k <= n; ++k) {
+    const double l = k > 0 ? chain.inverse_mass[k - 1] : 0.0, r = k < n ? chain.inverse_mass[k] : 0.0;
+    sum_im_[k] = l + r;
+    auto& share = k % 2 == 0 ? share_even_ : share_odd_;
+    share[k] = l / (l + r);         // bead k−1 (position k) moves by −(1/m_{k−1})/(Σ 1/m) · g
+    share[k + 1] = -(r / (l + r));  // bead k (position k+1) by +(1/m_k)/(Σ 1/m) · g
+  }
+  rate_.assign(n + 1, 0.0);
+  rate_per_stiffness_.assign(n + 1, 0.0);
+  vp_.assign(n + 2, 0.0);
+  loss_.assign(n + 1, 0.0);
+}
+
+void DampingFlow::prepare(double h) {
+  if (h == h_) return;
+  h_ = h;
+  for (std::size_t k = 0; k < rate_.size(); ++k) {
+    const double per_contact = 0.5 * h * damping_.kk_gamma * sum_im_[k];
+    rate_[k] = per_contact * contact_[k];
+    rate_per_stiffness_[k] = per_contact / 1.5;
+  }
 }
 
 double DampingFlow::apply(std::span<const double> u, std::span<double> v, double h) {
+  // E_{h/2} O_h E_{h/2}: the even bonds' steps are half as long.
+  return sweep(u, v, h, {std::size_t{0}, std::size_t{1}, std::size_t{0}}, {0.5, 1.0, 0.5});
+}
+
+double DampingFlow::apply(std::span<const double> u, std::span<double> v, double h, Sweep order) {
+  if (order == Sweep::even_first) return sweep(u, v, h, {std::size_t{0}, std::size_t{1}}, {1.0, 1.0});
+  return sweep(u, v, h, {std::size_t{1}, std::size_t{0}}, {1.0, 1.0});
+}
+
+double DampingFlow::sweep(std::span<const double> u, std::span<double> v, double h,
+                          std::initializer_list<std::size_t> parities, std::initializer_list<double> fractions) {
   const std::size_t n = v.size();
   const double before = twice_kinetic(mass_.data(), v.data(), n);
   if (damping_.kk_gamma > 0) {
-    // Trapezoidal step of M v̇ = −C v: v' = v − h (M + hC/2)⁻¹ C v. With C = 0 it is v' = v exactly.
-    const auto weight = [&](std::size_t k, double x) {
-      return damping_.kk_gamma * contact_[k] * std::sqrt(std::max(overlap_[k] + x, 0.0));
-    };
-    weight_[0] = weight(0, -u[0]);
-    for (std::size_t k = 1; k < n; ++k) weight_[k] = weight(k, u[k - 1] - u[k]);
-    weight_[n] = weight(n, u[n - 1]);
-    const double half = 0.5 * h;
-    // (C v)_i = w_i (v_i − v_{i−1}) + w_{i+1} (v_i − v_{i+1}), the walls at rest; the end beads
-    // apart so that the loop has no branch.
-    for (std::size_t i = 0; i < n; ++i) {
-      diag_[i] = mass_[i] + half * (weight_[i] + weight_[i + 1]);
-      upper_[i] = -half * weight_[i + 1];  // couples i and i+1
+    prepare(h);
+    std::copy(v.begin(), v.end(), vp_.begin() + 1);
+    const double* fraction = fractions.begin();
+    for (const std::size_t parity : parities) {
+      for (std::size_t k = 0; k <= n; ++k) {
+        const double x = (k > 0 ? u[k - 1] : 0.0) - (k < n ? u[k] : 0.0);
+        loss_[k] = trapezoidal_loss(*fraction * rate_[k] * std::sqrt(std::max(overlap_[k] + x, 0.0)));
+      }
+      pair_damping(vp_.data(), pair_share(parity), loss_.data(), 0, n + 1, parity);
+      ++fraction;
     }
-    rhs_[0] = weight_[0] * v[0] + weight_[1] * (v[0] - v[1]);
-    for (std::size_t i = 1; i + 1 < n; ++i)
-      rhs_[i] = weight_[i] * (v[i] - v[i - 1]) + weight_[i + 1] * (v[i] - v[i + 1]);
-    rhs_[n - 1] = weight_[n - 1] * (v[n - 1] - v[n - 2]) + weight_[n] * v[n - 1];
-    // Thomas algorithm (symmetric, diagonally dominant: no pivoting), with the inverse pivots
-    // kept in diag_ so that one division per bead sits on the sequential recurrence.
-    diag_[0] = 1 / diag_[0];
-    for (std::size_t i = 1; i < n; ++i) {
-      const double factor = upper_[i - 1] * diag_[i - 1];
-      rhs_[i] -= factor * rhs_[i - 1];
-      diag_[i] = 1 / (diag_[i] - factor * upper_[i - 1]);
-    }
-    rhs_[n - 1] *= diag_[n - 1];
-    for (std::size_t i = n - 1; i-- > 0;) rhs_[i] = (rhs_[i] - upper_[i] * rhs_[i + 1]) * diag_[i];
-    for (std::size_t i = 0; i < n; ++i) v[i] -= h * rhs_[i];
+    std::copy(vp_.begin() + 1, vp_.begin() + 1 + static_cast<std::ptrdiff_t>(n), v.begin());
   }
-  if (damping_.time > 0) {
-    const double factor = std::exp(-h / damping_.time);
-    for (std::size_t i = 0; i < n; ++i) v[i] *= factor;
-  }
+  if (damping_.time > 0) scale(v.data(), n, std::exp(-h / damping_.time));
   const double after = twice_kinetic(mass_.data(), v.data(), n);
   return 0.5 * (before - after);
 }
 
 namespace {
 
+// The kernels of a step boundary, on index ranges [lo, hi): bonds k (bond k strains
+// u[k] − u[k+1]) or padded bead positions p (bead p − 1).
+
+// The bond pass at fixed positions: the forces and stiffnesses for the corrector, and the pair
+// losses of the contact damping (loss2 = 1 − q², two trapezoidal steps). For Hertz the damping's
+// [δ]_+^{1/2} is the one in the stiffness K = (3/2) A [δ]_+^{1/2}: one square root per bond
+// serves both (`rate` is then DampingFlow::rate_per_stiffness()).
+template <bool corrector, bool contact, class View>
+void boundary_bonds([[maybe_unused]] const View law, const double* __restrict u, [[maybe_unused]] double* __restrict f,
+                    [[maybe_unused]] double* __restrict stiff, [[maybe_unused]] double* __restrict loss,
+                    [[maybe_unused]] double* __restrict loss2, [[maybe_unused]] const double* __restrict rate,
+                    [[maybe_unused]] const double* __restrict overlap, std::size_t lo, std::size_t hi) {
+  constexpr bool hertz = std::is_same_v<View, HertzLaw::View>;
+  for (std::size_t k = lo; k < hi; ++k) {
+    const double x = u[k] - u[k + 1];
+    if constexpr (corrector || (contact && hertz)) law.force_stiffness(k, x, f[k], stiff[k]);
+    if constexpr (contact) {
+      double y;
+      if constexpr (hertz) y = rate[k] * stiff[k];
+      else y = rate[k] * std::sqrt(std::max(overlap[k] + x, 0.0));
+      const double l = trapezoidal_loss(y);
+      loss[k] = l;
+      loss2[k] = l * (2 - l);
+    }
+  }
+}
+
+// a_p = F/m of bead p − 1 (padded: a[0] = a[n+1] = 0 stay untouched, the walls).
+void accelerations(const double* __restrict f, double* __restrict a, const double* __restrict im, std::size_t lo,
+                   std::size_t hi) {
+  for (std::size_t p = lo; p < hi; ++p) a[p] = im[p - 1] * (f[p - 1] - f[p]);
+}
+
+// The corrector's velocity change c (1/m) [K_{p−1} (a_{p−1} − a_p) − K_p (a_p − a_{p+1})] of bead
+// p − 1 (SPEC §4; the expression of detail::correct_and_drift).
+void corrector_change(const double* __restrict stiff, const double* __restrict a, double* __restrict dv,
+                      const double* __restrict im, std::size_t lo, std::size_t hi, double c) {
+  for (std::size_t p = lo; p < hi; ++p)
+    dv[p] = c * im[p - 1] * (stiff[p - 1] * (a[p - 1] - a[p]) - stiff[p] * (a[p] - a[p + 1]));
+}
+
+void add(double* __restrict v, const double* __restrict dv, std::size_t lo, std::size_t hi) {
+  for (std::size_t p = lo; p < hi; ++p) v[p] += dv[p];
+}
+
+void scale(double* __restrict v, std::size_t lo, std::size_t hi, double factor) {
+  for (std::size_t p = lo; p < hi; ++p) v[p] *= factor;
+}
+
+void add_and_drift(double* __restrict u, double* __restrict v, const double* __restrict dv, std::size_t lo,
+                   std::size_t hi, double d) {
+  for (std::size_t p = lo; p < hi; ++p) {
+    v[p] += dv[p];
+    u[p] += d * v[p];
+  }
+}
+
+void drift(double* __restrict u, const double* __restrict v, std::size_t lo, std::size_t hi, double d) {
+  for (std::size_t p = lo; p < hi; ++p) u[p] += d * v[p];
+}
+
+constexpr std::size_t boundary_block = 512;
+
 template <BondForceLaw Law>
 class DampedPropagator final : public Propagator {
  public:
   DampedPropagator(const Law& law, const Chain& chain, const SplittingScheme& scheme, double tau, const State& initial,
                    const Damping& damping)
-      : law_(law), scheme_(scheme), tau_(tau), n_(chain.size()), flow_(chain, damping) {
+      : law_(law), scheme_(scheme), tau_(tau), n_(chain.size()), flow_(chain, damping), mass_(chain.mass) {
     up_.assign(n_ + 2, 0.0);
+    vp_.assign(n_ + 2, 0.0);
     std::copy(initial.u.begin(), initial.u.end(), up_.begin() + 1);
-    v_ = initial.v;
+    std::copy(initial.v.begin(), initial.v.end(), vp_.begin() + 1);
     im_ = chain.inverse_mass;
-    f_.assign(n_ + 1, 0.0);
-    stiff_.assign(n_ + 1, 0.0);
+    for (auto* a : {&f_, &stiff_, &loss_, &loss2_}) a->assign(n_ + 1, 0.0);
     ap_.assign(n_ + 2, 0.0);
+    dv_.assign(n_ + 2, 0.0);
+    flow_.prepare(0.5 * tau);
+    onsite_ = damping.time > 0 ? std::exp(-0.5 * tau / damping.time) : 1.0;
   }
 
   void advance(std::size_t steps) override {
-    const detail::PlainWork work{f_.data(), stiff_.data(), ap_.data()};
-    for (std::size_t s = 0; s < steps; ++s) {
-      dissipated_ += flow_.apply(displacement(), v_, 0.5 * tau_);
-      detail::plain_step(law_.view(), scheme_, up_.data(), v_.data(), im_.data(), n_, tau_, work);
-      dissipated_ += flow_.apply(displacement(), v_, 0.5 * tau_);
+    if (steps == 0) return;
+    const double g = scheme_.corrector * tau_ * tau_ * tau_;
+    const auto& a = scheme_.drift;
+    const auto& b = scheme_.kick;
+    boundary(false, true, g);
+    for (std::size_t step = 0; step < steps; ++step) {
+      for (std::size_t j = 0; j < b.size(); ++j)
+        detail::kick_and_drift(law_.view(), up_.data(), f_.data(), vp_.data() + 1, im_.data(), 0, n_, b[j] * tau_,
+                               a[j + 1] * tau_);
+      boundary(true, step + 1 < steps, g);
     }
     steps_ += steps;
-    bond_updates_ += steps * scheme_.force_evaluations_per_step() * (n_ + 1);
-    if (scheme_.corrector != 0) bond_updates_ += steps * (n_ + 1);  // unmerged correctors
+    bond_updates_ += steps * b.size() * (n_ + 1);
   }
 
   std::span<const double> displacement() const override { return {up_.data() + 1, n_}; }
-  std::span<const double> velocity() const override { return {v_.data(), n_}; }
+  std::span<const double> velocity() const override { return {vp_.data() + 1, n_}; }
   double time_step() const override { return tau_; }
   std::uint64_t steps_done() const override { return steps_; }
   std::uint64_t bond_updates() const override { return bond_updates_; }
   double dissipated_energy() const override { return dissipated_; }
 
  private:
+  // At fixed positions: [end: corrector g, O_{τ/2} E_{τ/2}] [start: E_{τ/2} O_{τ/2}, corrector g,
+  // drift a_0 τ], with the on-site flow over τ/2 per half.
+  //
+  // One pass over the chain in blocks whose arrays stay in L1, as the conservative kernels: each
+  // stage runs `lag` indices behind the stage before it, far enough that the neighbours it
+  // reads are final (a corrector change needs a_{p±1}; a pair step needs both beads from the
+  // stage before; the drift needs the bonds of both sides evaluated). Every index sees the
+  // same arithmetic in the same order as stage-by-stage whole-chain loops would apply.
+  void boundary(bool end, bool start, double g) {
+    constexpr bool hertz = std::is_same_v<Law, HertzLaw>;
+    const bool contact = flow_.damping().kk_gamma > 0, twice = end && start;
+    const auto view = law_.view();
+    const double* rate = hertz ? flow_.rate_per_stiffness() : flow_.rate();
+    double* u = up_.data();
+    double* v = vp_.data();
+    double* dv = dv_.data();
+    // The pair sweeps: end of a step O_{τ/2} E_{τ/2}, start E_{τ/2} O_{τ/2}, both: O_{τ/2} E_τ O_{τ/2}
+    // (E_τ as two Crank–Nicolson steps of τ/2, loss2).
+    const std::size_t n = n_, pairs = contact ? (twice ? 3 : 2) : 0;
+    const std::size_t final_lag = 2 + pairs;
+    const std::size_t parity[3] = {end ? std::size_t{1} : std::size_t{0}, end ? std::size_t{0} : std::size_t{1}, 1};
+    const double* loss[3] = {loss_.data(), twice ? loss2_.data() : loss_.data(), loss_.data()};
+    const double d = scheme_.drift[0] * tau_;
+    double before = 0, after = 0;
+    for (std::size_t lo = 0;; lo += boundary_block) {
+      const std::size_t hi = std::min(lo + boundary_block, n + 1);
+      const bool last = hi == n + 1;
+      // [lo − lag, hi − lag) clipped to [first, n], the last block to the end.
+      const auto range = [&](std::size_t lag, std::size_t first) {
+        const std::size_t b = std::max(lo > lag ? lo - lag : std::size_t{0}, first);
+        const std::size_t e = last ? n + 1 : (hi > lag ? hi - lag : std::size_t{0});
+        return std::pair{b, std::max(b, e)};
+      };
+      if (g != 0 || contact) {
+        const auto [b, e] = range(0, 0);
+        if (g != 0 && contact)
+          boundary_bonds<true, true>(view, u, f_.data(), stiff_.data(), loss_.data(), loss2_.data(), rate,
+                                     flow_.overlap(), b, e);
+        else if (g != 0)
+          boundary_bonds<true, false>(view, u, f_.data(), stiff_.data(), loss_.data(), loss2_.data(), rate,
+                                      flow_.overlap(), b, e);
+        else
+          boundary_bonds<false, true>(view, u, f_.data(), stiff_.data(), loss_.data(), loss2_.data(), rate,
+                                      flow_.overlap(), b, e);
+      }
+      if (g != 0) {
+        const auto [b0, e0] = range(0, 1);
+        accelerations(f_.data(), ap_.data(), im_.data(), b0, e0);
+        const auto [b1, e1] = range(1, 1);
+        corrector_change(stiff_.data(), ap_.data(), dv, im_.data(), b1, e1, g);
+        if (end) add(v, dv, b1, e1);
+      }
+      {
+        const auto [b, e] = range(1, 1);
+        before += twice_kinetic(mass_.data() + b - 1, v + b, e - b);
+      }
+      for (std::size_t s = 0; s < pairs; ++s) {
+        const auto [b, e] = range(2 + s, 0);
+        pair_damping(v, flow_.pair_share(parity[s]), loss[s], b, e, parity[s]);
+      }
+      {
+        const auto [b, e] = range(final_lag, 1);
+        if (onsite_ != 1.0) scale(v, b, e, twice ? onsite_ * onsite_ : onsite_);
+        after += twice_kinetic(mass_.data() + b - 1, v + b, e - b);
+        if (start) {
+          if (g != 0) add_and_drift(u, v, dv, b, e, d);
+          else drift(u, v, b, e, d);
+        }
+      }
+      if (last) break;
+    }
+    if (g != 0) bond_updates_ += n + 1;
+    dissipated_ += 0.5 * (before - after);
+  }
+
   Law law_;
   SplittingScheme scheme_;
   double tau_;
   std::size_t n_;
   DampingFlow flow_;
-  std::vector<double> up_, v_, im_, f_, stiff_, ap_;
+  std::vector<double> mass_, up_, vp_, im_, f_, stiff_, ap_, dv_, loss_, loss2_;
+  double onsite_ = 1;
   std::uint64_t steps_ = 0, bond_updates_ = 0;
   double dissipated_ = 0;
 };
@@ -136,6 +317,7 @@ std::unique_ptr<Propagator> make_damped_propagator(const ForceLaw& law, const Ch
                                                    const State& initial, const Damping& damping) {
   validate_propagation(chain, time_step, initial);
   validate(damping);
+  if (!damping.any()) return make_splitting_propagator(law, chain, scheme, time_step, initial, ActiveWindow{false});
   return std::visit(
       [&](const auto& l) -> std::unique_ptr<Propagator> {
         using Law = std::decay_t<decltype(l)>;

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <string>
 
+#include "granular/dynamics/detail/blocked_kernels.hpp"
 #include "granular/dynamics/observables.hpp"
 #include "granular/dynamics/propagator.hpp"
 #include "granular/error.hpp"
@@ -22,61 +23,9 @@ State Propagator::state() const {
 
 namespace {
 
-// The kernels are free functions because GCC honours __restrict on parameters, not on locals
-// inside member functions (there it versions the loops for aliasing and gives up).
-//
-// Each kick or corrector runs block by block: the bond pass (bound by the sqrt unit), then the
-// bead pass (velocity and the drift that follows), on 256 bonds whose arrays stay in L1. One
-// fused loop would read f[k−1] right after storing f[k] as part of a vector, which defeats
-// store forwarding and runs 2× slower. A bead is updated once both its bond forces are known
-// and its position is no longer needed by a bond of a later block.
-constexpr std::size_t block = 256;
-
-// v += h F/m, then u += d v. u is padded: u[k] is bead k−1, u[0] and u[N+1] the walls; bond k
-// strains u[k] − u[k+1]. Bond k's block updates bead k−1.
-template <class View>
-void kick_and_drift(const View law, double* __restrict u, double* __restrict f, double* __restrict v,
-                    const double* __restrict im, std::size_t lo, std::size_t hi, double h, double d) {
-  f[lo] = law.force(lo, u[lo] - u[lo + 1]);
-  for (std::size_t b0 = lo + 1; b0 <= hi; b0 += block) {
-    const std::size_t b1 = std::min(hi + 1, b0 + block);
-    for (std::size_t k = b0; k < b1; ++k) f[k] = law.force(k, u[k] - u[k + 1]);
-    for (std::size_t k = b0; k < b1; ++k) {
-      v[k - 1] += h * im[k - 1] * (f[k - 1] - f[k]);
-      u[k] += d * v[k - 1];
-    }
-  }
-}
-
-// SPEC §4 corrector: v_i += (c/m_i) [K_i (a_{i−1} − a_i) + K_{i+1} (a_{i+1} − a_i)], a = F/m,
-// walls a = 0; then u += d v. Bond k's block computes a of bead k−1 and updates bead k−2,
-// which needs a_{k−1}. a is padded like u (a[i+1] is bead i); a[lo] and a[hi+1] are never
-// written and stay 0.
-template <class View>
-void correct_and_drift(const View law, double* __restrict u, double* __restrict f, double* __restrict stiff,
-                       double* __restrict a, double* __restrict v, const double* __restrict im, std::size_t lo,
-                       std::size_t hi, double c, double d) {
-  law.force_stiffness(lo, u[lo] - u[lo + 1], f[lo], stiff[lo]);
-  law.force_stiffness(lo + 1, u[lo + 1] - u[lo + 2], f[lo + 1], stiff[lo + 1]);
-  a[lo + 1] = im[lo] * (f[lo] - f[lo + 1]);
-  for (std::size_t b0 = lo + 2; b0 <= hi; b0 += block) {
-    const std::size_t b1 = std::min(hi + 1, b0 + block);
-    for (std::size_t k = b0; k < b1; ++k) law.force_stiffness(k, u[k] - u[k + 1], f[k], stiff[k]);
-    for (std::size_t k = b0; k < b1; ++k) a[k] = im[k - 1] * (f[k - 1] - f[k]);
-    for (std::size_t k = b0; k < b1; ++k) {
-      const std::size_t i = k - 2;
-      v[i] += c * im[i] * (stiff[i] * (a[i] - a[i + 1]) - stiff[i + 1] * (a[i + 1] - a[k]));
-      u[i + 1] += d * v[i];
-    }
-  }
-  const std::size_t i = hi - 1;  // the last bead: a[hi+1] (beyond the window, or the wall) is 0
-  v[i] += c * im[i] * (stiff[i] * (a[i] - a[i + 1]) - stiff[i + 1] * (a[i + 1] - a[i + 2]));
-  u[i + 1] += d * v[i];
-}
-
-void drift_only(double* __restrict u, const double* __restrict v, std::size_t lo, std::size_t hi, double d) {
-  for (std::size_t i = lo; i < hi; ++i) u[i + 1] += d * v[i];
-}
+using detail::correct_and_drift;
+using detail::drift_only;
+using detail::kick_and_drift;
 
 template <BondForceLaw Law>
 class SplittingPropagator final : public Propagator {
