@@ -16,7 +16,12 @@ namespace granular::tool {
 
 struct ExponentChoices {
   std::string chains = "h,A,RDM1,RDM2", kicks = "displacement,velocity";
-  ChainOptions beads{.disorder = ""};  ///< only --types / --type-masses / --polydisperse; `disorder`: --types-rule
+  /// Only its --types / --type-masses / --polydisperse, and `disorder`: --types-rule (empty: not given).
+  ChainOptions beads = [] {
+    ChainOptions o;
+    o.disorder.clear();
+    return o;
+  }();
   std::string chain_name;  ///< the user's chain in the outputs; empty: "types" or "polydisperse"
   ModeKickOptions mode;
 };

@@ -24,7 +24,7 @@ struct CorrelationConfig {
   std::size_t max_distance = 10;  ///< largest shift d, < N
   /// When set: realization r draws its radii from this (k types or polydisperse; `disorder` and
   /// `q` unused) and ρ(d) is that of the per-bead masses.
-  std::optional<BeadDistribution> beads;
+  std::optional<BeadDistribution> beads{};
 };
 
 struct CorrelationResult {

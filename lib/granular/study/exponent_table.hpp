@@ -32,7 +32,7 @@ struct ExponentTableConfig {
 struct ExponentCell {
   TransportCase definition;
   TransportSummary summary;
-  std::string chain;  ///< its chain's name; empty: the name of definition.disorder
+  std::string chain{};  ///< its chain's name; empty: the name of definition.disorder
 };
 
 /// The chains' names in table order: `chains` (h, A, RDM1, RDM2), then the bead chains'.
