@@ -22,7 +22,8 @@ int main(int argc, char** argv) {
       "law, their mean log derivative), with sub-window spreads and realization (bootstrap) errors. Markdown\n"
       "tables on stdout; PREFIX.csv (exponents), PREFIX-curves.csv (mean curves), PREFIX-profiles.csv (E_n(T)),\n"
       "PREFIX.json; with --compare-paper, PREFIX-paper.csv and the side-by-side table. Interrupted runs\n"
-      "continue with --resume (finished realizations are kept in PREFIX.checkpoint.*). Beyond the paper: one more chain\n"
+      "continue with --resume (finished realizations are kept in PREFIX.checkpoint.*). Beyond the paper: one more "
+      "chain\n"
       "from --types/--type-masses/--polydisperse named --chain-name, --ic mode (--mode/--mode-khz), --mle (X1 at T).",
       "exponents"};
   tool::describe_common(app);

@@ -38,7 +38,7 @@ TEST(Correlation, MassesOfTwoTypesGiveTheIndicatorsCoefficient) {
     for (std::size_t d = 0; d <= 20; ++d) EXPECT_NEAR(by_mass[d], by_type[d], 1e-13) << to_string(kind) << " d=" << d;
   }
   EXPECT_TRUE(std::isnan(cyclic_value_correlation({0.1, 0.1, 0.1}, 1)[1]));  // one kind of bead: undefined
-  const auto three = cyclic_value_correlation({1, 2, 3, 1, 2, 3}, 3);       // period 3: ρ(3) = 1, ρ(1) = −½
+  const auto three = cyclic_value_correlation({1, 2, 3, 1, 2, 3}, 3);        // period 3: ρ(3) = 1, ρ(1) = −½
   EXPECT_NEAR(three[0], 1, 1e-15);
   EXPECT_NEAR(three[1], -0.5, 1e-15);
   EXPECT_NEAR(three[3], 1, 1e-15);
@@ -47,8 +47,8 @@ TEST(Correlation, MassesOfTwoTypesGiveTheIndicatorsCoefficient) {
 // The study on k types and polydisperse radii against the infinite-chain formulas, and the
 // two-type distribution against the paper's kinds (same chains, same coefficient to rounding).
 TEST(Correlation, StudyOfBeadDistributions) {
-  CorrelationConfig paper{.disorder = Disorder::rdm2, .q = 0.3, .n = 400, .realizations = 50, .seed = 3,
-                          .max_distance = 5};
+  CorrelationConfig paper{
+      .disorder = Disorder::rdm2, .q = 0.3, .n = 400, .realizations = 50, .seed = 3, .max_distance = 5};
   CorrelationConfig two = paper;
   two.beads = BeadDistribution{.radii = {4.76e-3, 2.38e-3}, .probabilities = {0.3, 0.7}, .rule = Disorder::rdm2};
   const CorrelationResult a = correlation_study(paper), b = correlation_study(two);

@@ -153,8 +153,9 @@ TEST(TimeStepRule, ModeKicksAreBoundedBeforeTheChainIsDrawn) {
   c.alpha = 1e-7;
   const TimeStepLimit from_alpha = time_step_limit(c);
   EXPECT_GT(from_alpha.omega_max, 0);
-  const Chain chain = make_chain(radii_of(realization_configuration(Disorder::anderson, 0.5, c.n, c.seed, 0), c.r1, c.xi),
-                                 c.precompression);
+  const Chain chain =
+      make_chain(radii_of(realization_configuration(Disorder::anderson, 0.5, c.n, c.seed, 0), c.r1, c.xi),
+                 c.precompression);
   const ModeKickResult real = mode_kick(chain, ForceLawKind::hertz, {.mode = 200, .amplitude = 1e-7});
   const double bound_at_real = highest_frequency_bound(make_force_law(ForceLawKind::hertz, chain), chain, real.energy);
   EXPECT_GE(from_alpha.omega_max, bound_at_real);

@@ -93,8 +93,7 @@ TEST(ExponentTable, BeadChainsRunAfterTheKindsUnderTheirNames) {
   config.precompressions = {10, 0};
   config.kicks = {Kick::velocity};
   config.base.realizations = 7;
-  const BeadDistribution three{.radii = {4.76e-3, 3e-3, 2e-3}, .probabilities = {0.5, 0.3, 0.2},
-                               .rule = Disorder::rdm1};
+  const BeadDistribution three{.radii = {4.76e-3, 3e-3, 2e-3}, .probabilities = {0.5, 0.3, 0.2}, .rule = Disorder::rdm1};
   config.bead_chains = {{"K3", three}};
   const auto cases = exponent_cases(config);
   ASSERT_EQ(cases.size(), 6u);

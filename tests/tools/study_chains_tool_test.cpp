@@ -103,9 +103,9 @@ TEST(ExponentsChains, MleIsTheMeanOfSpreadingRuns) {
   const auto meta = nlohmann::json::parse(read_file(dir + "/e.json"));
   EXPECT_EQ(meta["cases"][0]["mle"]["X1_at_T_per_s"], number(e.at("mle")[0]));
   // Without --mle the columns stay those of a conservative study.
-  ASSERT_EQ(run_tool("exponents", study + " --chains A --ic velocity --realizations 2 --output " + dir + "/plain")
-                .exit_code,
-            0);
+  ASSERT_EQ(
+      run_tool("exponents", study + " --chains A --ic velocity --realizations 2 --output " + dir + "/plain").exit_code,
+      0);
   EXPECT_EQ(read_table(dir + "/plain.csv").count("mle"), 0u);
   std::filesystem::remove_all(dir);
 }

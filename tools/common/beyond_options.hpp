@@ -36,8 +36,7 @@ inline void add_mle_options(CLI::App& app, BeyondOptions& o, const std::string& 
 }
 
 inline void add_lyapunov_options(CLI::App& app, BeyondOptions& o) {
-  add_mle_options(app, o,
-                  "maximal Lyapunov exponent by the tangent map: column mle = X1(t) [1/s] (ensemble: its mean)");
+  add_mle_options(app, o, "maximal Lyapunov exponent by the tangent map: column mle = X1(t) [1/s] (ensemble: its mean)");
   app.add_option("--deviation", o.deviation, "CSV t,site,share: the deviation vector along the chain (with --mle)");
   app.add_option("--deviation-samples", o.deviation_samples, "uniform times of --deviation")->capture_default_str();
 }

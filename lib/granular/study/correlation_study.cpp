@@ -51,7 +51,8 @@ CorrelationResult correlation_study(const CorrelationConfig& c, const RunOptions
     }
   }
   if (out.used == 0 && c.beads)
-    throw InvalidInput("beads", " " + describe(*c.beads) + ": every realization has one kind of bead only, no correlation");
+    throw InvalidInput("beads",
+                       " " + describe(*c.beads) + ": every realization has one kind of bead only, no correlation");
   if (out.used == 0)
     throw InvalidInput("q", " " + format_number(c.q) + ": every realization has one bead type only, no correlation");
   const double u = static_cast<double>(out.used);

@@ -31,7 +31,7 @@ struct CorrelationResult {
   std::vector<double> mean;       ///< ρ(d) averaged over the realizations used, d = 0 … max_distance
   std::vector<double> deviation;  ///< their sample standard deviation (0 with one realization)
   std::vector<double> theory;     ///< infinite-chain ρ(d) (NaN where undefined)
-  std::size_t used = 0;  ///< realizations with two kinds of bead (a one-kind chain has no ρ and is skipped)
+  std::size_t used = 0;           ///< realizations with two kinds of bead (a one-kind chain has no ρ and is skipped)
 };
 
 /// Throws InvalidInput (naming the field) on a bad config.

@@ -151,7 +151,8 @@ std::string markdown_tables(const std::vector<ExponentCell>& cells, const Expone
   if (!any_mle(cells)) return out;
   const std::vector<std::string> names = chain_names(config);
   for (Kick kick : config.kicks) {
-    out += "\nX1(T) [1/s], " + to_string(kick) + " kick (maximal Lyapunov exponent at T by the tangent map: ensemble "
+    out += "\nX1(T) [1/s], " + to_string(kick) +
+           " kick (maximal Lyapunov exponent at T by the tangent map: ensemble "
            "mean ± its standard error; spread over realizations in PREFIX.csv)\n\n| F0 [N] |";
     for (const std::string& name : names) out.append(" ").append(name).append(" |");
     out += "\n|---|";
@@ -177,41 +178,41 @@ std::string markdown_tables(const std::vector<ExponentCell>& cells, const Expone
 
 void write_exponents_csv(std::ostream& out, const std::vector<ExponentCell>& cells) {
   std::vector<std::string> columns{"ic",
-                        "F0",
-                        "disorder",
-                        "centre",
-                        "gamma",
-                        "gamma_err",
-                        "gamma_real_err",
-                        "gamma_star",
-                        "gamma_fit",
-                        "gamma_fit_err",
-                        "gamma_fit_real_err",
-                        "gamma_mean_ld",
-                        "gamma_mean_ld_err",
-                        "gamma_mean_ld_real_err",
-                        "worst_deviation_m2",
-                        "other_centre",
-                        "gamma_other",
-                        "gamma_other_err",
-                        "gamma_other_real_err",
-                        "gamma_other_star",
-                        "gamma_other_fit",
-                        "gamma_other_mean_ld",
-                        "eta",
-                        "eta_err",
-                        "eta_real_err",
-                        "eta_star",
-                        "eta_fit",
-                        "eta_fit_err",
-                        "eta_fit_real_err",
-                        "eta_mean_ld",
-                        "eta_mean_ld_err",
-                        "eta_mean_ld_real_err",
-                        "worst_deviation_ipr",
-                        "realizations",
-                        "max_energy_error",
-                        "reached_walls"};
+                                   "F0",
+                                   "disorder",
+                                   "centre",
+                                   "gamma",
+                                   "gamma_err",
+                                   "gamma_real_err",
+                                   "gamma_star",
+                                   "gamma_fit",
+                                   "gamma_fit_err",
+                                   "gamma_fit_real_err",
+                                   "gamma_mean_ld",
+                                   "gamma_mean_ld_err",
+                                   "gamma_mean_ld_real_err",
+                                   "worst_deviation_m2",
+                                   "other_centre",
+                                   "gamma_other",
+                                   "gamma_other_err",
+                                   "gamma_other_real_err",
+                                   "gamma_other_star",
+                                   "gamma_other_fit",
+                                   "gamma_other_mean_ld",
+                                   "eta",
+                                   "eta_err",
+                                   "eta_real_err",
+                                   "eta_star",
+                                   "eta_fit",
+                                   "eta_fit_err",
+                                   "eta_fit_real_err",
+                                   "eta_mean_ld",
+                                   "eta_mean_ld_err",
+                                   "eta_mean_ld_real_err",
+                                   "worst_deviation_ipr",
+                                   "realizations",
+                                   "max_energy_error",
+                                   "reached_walls"};
   const bool mle = any_mle(cells);  // only with the tangent map: other runs keep their columns
   if (mle) columns.insert(columns.end(), {"mle", "mle_real_err", "mle_sd"});
   CsvWriter table(out, columns);
@@ -224,13 +225,13 @@ void write_exponents_csv(std::ostream& out, const std::vector<ExponentCell>& cel
     const ExponentReport &g = s.exponents->gamma(d.centre), &o = s.exponents->gamma(other), &e = s.exponents->eta;
     const auto row = [&](auto... more) {
       table.row(to_string(d.kick), d.precompression, chain_name(c), to_string(d.centre), g.shown().value,
-              g.shown().error, g.shown_realization_error(), flag(g.starred()), g.fit.value, g.fit.error,
-              g.fit_realization_error, g.mean_ld.value, g.mean_ld.error, g.mean_ld_realization_error,
-              g.verdict.worst_deviation, to_string(other), o.shown().value, o.shown().error,
-              o.shown_realization_error(), flag(o.starred()), o.fit.value, o.mean_ld.value, e.shown().value,
-              e.shown().error, e.shown_realization_error(), flag(e.starred()), e.fit.value, e.fit.error,
-              e.fit_realization_error, e.mean_ld.value, e.mean_ld.error, e.mean_ld_realization_error,
-              e.verdict.worst_deviation, s.realizations, s.max_energy_error, s.reached_walls, more...);
+                g.shown().error, g.shown_realization_error(), flag(g.starred()), g.fit.value, g.fit.error,
+                g.fit_realization_error, g.mean_ld.value, g.mean_ld.error, g.mean_ld_realization_error,
+                g.verdict.worst_deviation, to_string(other), o.shown().value, o.shown().error,
+                o.shown_realization_error(), flag(o.starred()), o.fit.value, o.mean_ld.value, e.shown().value,
+                e.shown().error, e.shown_realization_error(), flag(e.starred()), e.fit.value, e.fit.error,
+                e.fit_realization_error, e.mean_ld.value, e.mean_ld.error, e.mean_ld_realization_error,
+                e.verdict.worst_deviation, s.realizations, s.max_energy_error, s.reached_walls, more...);
     };
     if (!mle) row();
     else if (s.mle.mean.empty()) row("", "", "");
@@ -242,8 +243,8 @@ void write_exponents_csv(std::ostream& out, const std::vector<ExponentCell>& cel
 }
 
 void write_curves_csv(std::ostream& out, const std::vector<ExponentCell>& cells) {
-  std::vector<std::string> columns{"ic",     "F0",  "disorder", "t",           "m2", "m2_se", "m2_centroid",
-                                   "m2_centroid_se", "ipr", "ipr_se", "energy_error"};
+  std::vector<std::string> columns{"ic",  "F0",     "disorder",    "t", "m2", "m2_se", "m2_centroid", "m2_centroid_se",
+                                   "ipr", "ipr_se", "energy_error"};
   const bool mle = any_mle(cells);
   if (mle) columns.insert(columns.end(), {"mle", "mle_se"});
   CsvWriter curve(out, columns);
