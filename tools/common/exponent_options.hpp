@@ -32,7 +32,7 @@ inline void add_exponent_choices(CLI::App& app, ExponentChoices& o, BeyondOption
       ->capture_default_str();
   app.add_option("--ic", o.kicks, "kicks: comma list of displacement, velocity, mode (--mode or --mode-khz)")
       ->capture_default_str();
-  add_bead_distribution_options(app, o.beads);
+  add_bead_distribution_options(app, o.beads, "--types-rule");
   app.add_option("--types-rule", o.beads.disorder,
                  "how --types/--type-masses are drawn: A (each bead, the default), RDM1 (each dimer), RDM2 (two "
                  "types: dimers 12 or 21)");
