@@ -7,6 +7,7 @@
 #include "common/dynamics_options.hpp"
 #include "common/exponent_options.hpp"
 #include "common/long_run_options.hpp"
+#include "common/long_time_options.hpp"
 #include "common/metadata.hpp"
 #include "common/tool_main.hpp"
 #include "granular/ensemble/checkpoint_log.hpp"
@@ -29,13 +30,12 @@ int main(int argc, char** argv) {
   tool::describe_common(app);
   tool::DynamicsOptions dynamics;
   tool::ExponentChoices choices;
-  std::string f0_text = "10,0.5,0.1,0.01,0";
-  std::string output = "exponents", profile_f0 = "10,0.1,0";
+  std::string f0_text = "10,0.5,0.1,0.01,0", output = "exponents", profile_f0 = "10,0.1,0";
   std::string paper_table = std::string(GRANULAR_SOURCE_DIR) + "/data/paper_table1_gamma.csv";
   long long n = 2501, realizations = 500, seed = 1, profile_realizations = 100;
   double xi = 0.5, q = 0.5;
   tool::LongRunOptions run_options;
-  bool compare = false;
+  bool compare = false, auto_n = false;
   app.add_option("--F0", f0_text, "precompressions [N], comma list (0 = sonic vacuum)")->capture_default_str();
   tool::add_exponent_choices(app, choices, dynamics.beyond);
   app.add_option("--N", n, "beads per chain")->capture_default_str();
@@ -55,6 +55,7 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_option("--output", output, "output prefix")->capture_default_str();
   tool::add_long_run_options(app, run_options);
+  tool::add_auto_length(app, auto_n);
 
   return tool::run(app, argc, argv,
                    [&] {
@@ -83,10 +84,12 @@ int main(int argc, char** argv) {
                      std::vector<std::string> paths{output + ".csv", output + "-curves.csv", output + "-profiles.csv",
                                                     output + ".json"};
                      tool::apply(dynamics, base);
+                     config.automatic_length = auto_n;
                      std::vector<TransportCase> cases = exponent_cases(config);
+                     const nlohmann::json length_rules = tool::length_rules(cases, auto_n, dynamics.choices.site);
                      for (const auto& c : cases) validate(c);
-                     const nlohmann::json step_rule = settle_time_step(cases, app.count("--dt") > 0);
-                     base.dynamics.time_step = cases.front().dynamics.time_step;
+                     const nlohmann::json step_rule = tool::settle_time_step(cases, dynamics, app.count("--dt") > 0);
+                     base.dynamics = cases.front().dynamics;  // τ and scheme as settled
                      if (compare) paper = read_paper_table(paper_table);
                      if (compare) paths.push_back(output + "-paper.csv");
                      const tool::OutputClaim claim(output, meta.command(), run_options.checkpoints());
@@ -127,6 +130,7 @@ int main(int argc, char** argv) {
                                            {"mpi_ranks", mpi.size()}};
                      meta["cases"] = cases_json;
                      meta["time_step_rule"] = step_rule;
+                     if (auto_n) meta["chain_length_rule"] = length_rules;
                      std::optional<AtomicFile> comparison;
                      if (compare) {
                        const auto rows = compare_with_paper(cells, paper);

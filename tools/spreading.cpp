@@ -8,6 +8,7 @@
 #include "common/chain_options.hpp"
 #include "common/dynamics_options.hpp"
 #include "common/long_run_options.hpp"
+#include "common/long_time_options.hpp"
 #include "common/metadata.hpp"
 #include "common/mode_kick_options.hpp"
 #include "common/output_paths.hpp"
@@ -37,6 +38,7 @@ int main(int argc, char** argv) {
   tool::LongRunOptions run;
   tool::SpreadingOutputs more;
   tool::add_chain_options(app, chain_options);
+  tool::add_auto_length(app, chain_options.auto_n);
   app.add_option("--ic", ic, "initial condition: displacement | velocity | mode (a linear mode: --mode, --mode-khz)")
       ->capture_default_str();
   tool::add_dynamics_options(app, dynamics);
@@ -58,6 +60,7 @@ int main(int argc, char** argv) {
           throw InvalidInput(
               "--realizations/--resume: an ensemble draws random chains; --config/--radii give one chain");
         if (run.threads < 0) throw InvalidInput("--threads " + std::to_string(run.threads) + ": must be >= 0");
+        tool::size_chain(chain_options, dynamics, ic);  // --N auto
         const tool::SelectedChain selected = tool::build_chain(chain_options);
         TransportCase c;
         tool::apply(chain_options, selected.chain.size(), c);
@@ -73,7 +76,7 @@ int main(int argc, char** argv) {
         validate(c);  // then τ by the stability rule (of this very chain when it comes from a file)
         const bool from_file = !chain_options.config.empty() || !chain_options.radii.empty();
         const nlohmann::json step_rule =
-            settle_time_step(c, app.count("--dt") > 0, from_file ? &selected.chain : nullptr);
+            tool::settle_time_step(c, dynamics, app.count("--dt") > 0, from_file ? &selected.chain : nullptr);
         const std::string csv_path = output + ".csv", json_path = output + ".json", sem_path = output + "-sem.csv";
         const std::string profile_path = more.profile ? output + "-profile.csv" : "",
                           checkpoint = output + ".checkpoint";

@@ -13,6 +13,7 @@
 
 #include "granular/io/range_syntax.hpp"
 #include "granular/model/bead_distribution.hpp"
+#include "granular/model/centred_configuration.hpp"
 #include "granular/model/configuration_file.hpp"
 #include "granular/model/named_chains.hpp"
 #include "tool_main.hpp"
@@ -24,6 +25,8 @@ struct ChainOptions {
   double xi = 0.5, q = 0.5, f0 = 10, r1 = paper_r1;
   long long n = 100, seed = 1, realization = 0;
   std::string config, radii, types, type_masses, polydisperse;
+  bool auto_n = false;         ///< --N auto (long_time_options.hpp): N from T, the chain drawn from its centre
+  nlohmann::json length_rule;  ///< and the rule's numbers
 };
 
 /// --types, --type-masses, --polydisperse (mutually exclusive); returns them for more exclusions.
@@ -201,11 +204,13 @@ inline SelectedChain build_chain(const ChainOptions& o) {
       s.types = read_configuration_file(o.config);
     } else {
       validate(p);
-      s.types = realization_configuration(parse_disorder(o.disorder), o.q, p.N, p.seed, p.realization);
+      s.types = o.auto_n ? centred_configuration(parse_disorder(o.disorder), o.q, p.N, p.seed, p.realization)
+                         : realization_configuration(parse_disorder(o.disorder), o.q, p.N, p.seed, p.realization);
     }
     s.chain = from_types(s.types, p);
   }
   s.description["N"] = s.chain.size();
+  if (o.auto_n) s.description["N_rule"] = o.length_rule;
   return s;
 }
 

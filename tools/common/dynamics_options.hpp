@@ -13,6 +13,7 @@
 #include "granular/error.hpp"
 #include "granular/io/range_syntax.hpp"
 #include "granular/number_format.hpp"
+#include "granular/study/scheme_choice.hpp"
 #include "granular/study/time_step_rule.hpp"
 #include "granular/study/transport_choices.hpp"
 #include "granular/study/transport_study.hpp"
@@ -43,7 +44,10 @@ inline void add_dynamics_options(CLI::App& app, DynamicsOptions& o) {
                  "refused, naming the largest stable tau; by default 1e-6, or 1e-6/k (smallest integer k) where 1e-6 "
                  "is past a sixth of that limit")
       ->capture_default_str();
-  app.add_option("--integrator", c.integrator, "saba2c | saba2 | aba864 | srkn14a | reference (Odeint RKF78)")
+  app.add_option("--integrator", c.integrator,
+                 "saba2c | saba2 | aba864 | srkn14a | reference (Odeint RKF78) | auto: the cheapest scheme and step "
+                 "keeping the energy error at SABA2C's at 1e-6 s: SRKN14a at 5e-6 s where no contact can open, else "
+                 "SABA2C (docs/physics.md, 'Chain length for long times'); no --dt with it")
       ->capture_default_str();
   app.add_option("--force-law", c.force_law, "hertz | fpu | linear")->capture_default_str();
   app.add_option("--samples", c.samples, "log-spaced sample times (tau..T) outside the fit window")->capture_default_str();
@@ -75,6 +79,7 @@ inline void add_dynamics_options(CLI::App& app, DynamicsOptions& o) {
 /// words are read. Needs c.n (for --site).
 inline void apply(const DynamicsOptions& o, TransportCase& c) {
   TransportChoices choices = o.choices;
+  if (choices.integrator == "auto") choices.integrator = "saba2c";  // settled with the step (settle_time_step)
   if (o.beta != "match") choices.beta = parse_number_list(o.beta, "--beta", 0, 1).at(0);
   else choices.beta.reset();
   if (o.active_window != "on" && o.active_window != "off")
@@ -87,6 +92,41 @@ inline void apply(const DynamicsOptions& o, TransportCase& c) {
   apply(o.beyond, c.dynamics);
 }
 
+/// granular::settle_time_step (time_step_rule.hpp), settling `--integrator auto` first (scheme_choice.hpp): SRKN14a at
+/// 5 µs where no contact can open and it is cheaper than SABA2C at its default step, else that; one scheme for all.
+inline nlohmann::json settle_time_step(std::vector<TransportCase>& cases, const DynamicsOptions& o, bool dt_given,
+                                       const Chain* chain = nullptr) {
+  if (o.choices.integrator != "auto" || cases.empty()) return granular::settle_time_step(cases, dt_given, chain);
+  if (dt_given) throw InvalidInput("--integrator auto: chooses the time step too; drop --dt (or name a scheme)");
+  std::vector<TransportCase> trial = cases;  // SABA2C at its default step
+  for (TransportCase& c : trial) c.dynamics.integrator = saba2c();
+  granular::settle_time_step(trial, false, chain);
+  double omega_max = 0;
+  bool closed = true;
+  for (const TransportCase& c : trial) {
+    omega_max = std::max(omega_max, time_step_limit(c, chain).omega_max);
+    closed = closed && bonds_stay_closed(c);
+  }
+  const SchemeChoice choice = choose_scheme(trial.front().dynamics.time_step, srkn14a_default_step(omega_max), closed);
+  for (TransportCase& c : cases) {
+    c.dynamics.integrator = parse_integrator(choice.integrator);
+    c.dynamics.time_step = choice.time_step;
+  }
+  nlohmann::json rule = granular::settle_time_step(cases, true, chain);  // the chosen τ, checked against stability
+  rule["time_step_given"] = false;
+  rule["integrator_choice"] = to_json(choice);
+  return rule;
+}
+
+/// The same for one case.
+inline nlohmann::json settle_time_step(TransportCase& c, const DynamicsOptions& o, bool dt_given,
+                                       const Chain* chain = nullptr) {
+  std::vector<TransportCase> one{c};
+  const nlohmann::json rule = settle_time_step(one, o, dt_given, chain);
+  c = one.front();
+  return rule;
+}
+
 /// The chain of a case from the single-chain options (the chain built from them has `beads`).
 inline void apply(const ChainOptions& o, std::size_t beads, TransportCase& c) {
   c.disorder = parse_disorder(o.disorder);
@@ -96,6 +136,7 @@ inline void apply(const ChainOptions& o, std::size_t beads, TransportCase& c) {
   c.precompression = o.f0;
   c.r1 = o.r1;
   c.seed = static_cast<std::uint64_t>(o.seed);
+  c.centred_draw = o.auto_n;
 }
 
 }  // namespace granular::tool

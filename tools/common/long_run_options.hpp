@@ -63,7 +63,7 @@ inline std::string replay_command(const TransportCase& c, std::uint64_t r, const
   add("--disorder", to_string(c.disorder));
   add("--q", number(c.q));
   add("--xi", number(c.xi));
-  add("--N", std::to_string(c.n));
+  add("--N", c.centred_draw ? "auto" : std::to_string(c.n));
   add("--F0", number(c.precompression));
   add("--R1", number(c.r1));
   add("--seed", std::to_string(c.seed));

@@ -6,6 +6,7 @@
 
 #include "granular/ensemble/checkpoint_log.hpp"
 #include "granular/io/csv_writer.hpp"
+#include "granular/study/chain_length_rule.hpp"
 
 namespace granular {
 
@@ -46,6 +47,11 @@ std::vector<TransportCase> exponent_cases(const ExponentTableConfig& config) {
     const bool profile = std::find(config.profile_precompressions.begin(), config.profile_precompressions.end(),
                                    c.precompression) != config.profile_precompressions.end();
     c.profile_realizations = profile ? std::min(config.profile_realizations, c.realizations) : 0;
+    if (config.automatic_length) {  // (a bead chain is then refused by validate: it has no centred draw)
+      c.n = automatic_chain_length(c).n;
+      c.site = (c.n - 1) / 2;
+      c.centred_draw = true;
+    }
     cases.push_back(c);
   };
   for (Kick kick : config.kicks)

@@ -27,6 +27,7 @@ struct ExponentTableConfig {
   TransportCase base;                                       ///< everything else (N, T, τ, ξ, q, R, seed, …)
   std::vector<double> profile_precompressions{10, 0.1, 0};  ///< F0s whose E_n(T) is averaged
   std::size_t profile_realizations = 100;                   ///< the paper averages profiles over 100
+  bool automatic_length = false;  ///< each case's N from its T (chain_length_rule.hpp), drawn from the kicked centre
 };
 
 struct ExponentCell {
@@ -57,7 +58,8 @@ struct ExponentRunOptions {
   bool skip_failed = false;           ///< see RunOptions::skip_failed
 };
 
-/// The cases in table order (kick-major, then F0, then chain as chain_names gives them).
+/// The cases in table order (kick-major, then F0, then chain as chain_names gives them); with
+/// automatic_length each sized (N, the centre kick, the centred draw) by automatic_chain_length.
 std::vector<TransportCase> exponent_cases(const ExponentTableConfig& config);
 
 /// Runs every case; under mpirun only rank 0 gets filled summaries. Memory: one case's

@@ -7,6 +7,7 @@
 #include "granular/dynamics/initial_conditions.hpp"
 #include "granular/ensemble/ensemble_runner.hpp"
 #include "granular/error.hpp"
+#include "granular/model/centred_configuration.hpp"
 #include "granular/model/chain.hpp"
 #include "granular/number_format.hpp"
 #include "granular/parallel/mpi_context.hpp"
@@ -39,6 +40,11 @@ void validate(const TransportCase& c) {
   if (c.n < 2) throw InvalidInput("N", " " + std::to_string(c.n) + ": a chain needs at least 2 beads");
   if (!std::isfinite(c.precompression) || c.precompression < 0)
     throw InvalidInput("F0", " " + format_number(c.precompression) + ": must be finite and >= 0");
+  if (c.centred_draw && c.beads)
+    throw InvalidInput("N", ": a chain drawn from its centre (the automatic N) has two bead types, not a bead source");
+  if (c.centred_draw && c.site != (c.n - 1) / 2)
+    throw InvalidInput("site", " " + std::to_string(c.site + 1) + ": a chain drawn from its centre is kicked there (" +
+                                   std::to_string((c.n + 1) / 2) + ")");
   if (c.site >= c.n)
     throw InvalidInput("site",
                        " " + std::to_string(c.site + 1) + ": outside the chain of " + std::to_string(c.n) + " beads");
@@ -147,8 +153,14 @@ static nlohmann::json describe_conservative(const TransportCase& c) {
   return described;
 }
 
+Configuration case_configuration(const TransportCase& c, std::uint64_t r) {
+  return c.centred_draw ? centred_configuration(c.disorder, c.q, c.n, c.seed, r)
+                        : realization_configuration(c.disorder, c.q, c.n, c.seed, r);
+}
+
 nlohmann::json describe(const TransportCase& c) {
   nlohmann::json j = describe_conservative(c);
+  if (c.centred_draw) j["chain_draw"] = "outward from the centre bead";  // only then: default runs keep theirs
   // Only when switched on, so that conservative runs keep their parameters (and checkpoints).
   const SpreadingConfig& d = c.dynamics;
   if (d.damping.any()) j["damping"] = {{"time_s", d.damping.time}, {"kk_gamma_s", d.damping.kk_gamma}};
@@ -256,8 +268,7 @@ struct RealizationRecord {
 
 std::vector<double> realization_row(const TransportCase& c, std::uint64_t r) {
   const Chain chain =
-      make_chain(c.beads ? realization_radii(*c.beads, c.n, c.seed, r)
-                         : radii_of(realization_configuration(c.disorder, c.q, c.n, c.seed, r), c.r1, c.xi),
+      make_chain(c.beads ? realization_radii(*c.beads, c.n, c.seed, r) : radii_of(case_configuration(c, r), c.r1, c.xi),
                  c.precompression);
   SpreadingConfig config = spreading_config(c);
   config.force_sites.clear();

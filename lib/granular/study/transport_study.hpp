@@ -55,6 +55,7 @@ struct TransportCase {
   bool match_beta = false;                   ///< velocity kick carrying the energy of α on each chain instead
   ModeKick mode;                             ///< mode kick: which mode and its energy (or amplitude: α)
   std::size_t site = 1250;                   ///< 0-based kicked bead n0 (1251 counting from 1)
+  bool centred_draw = false;                 ///< chains drawn outward from the centre bead (centred_configuration.hpp)
   SpreadCentre centre = SpreadCentre::site;  ///< which m̃2 the tables show (both are computed)
   SpreadingConfig dynamics;                  ///< T, τ, integrator, force law, samples, window
   std::uint64_t seed = 1;
@@ -70,6 +71,9 @@ struct TransportCase {
 
 /// Throws InvalidInput (naming the option) on an impossible case, before any work.
 void validate(const TransportCase& c);
+
+/// The bead types of realization r of `c` (drawn from the left wall, or from the centre).
+Configuration case_configuration(const TransportCase& c, std::uint64_t r);
 
 /// Every parameter that determines the result, as JSON (the checkpoint's identity).
 nlohmann::json describe(const TransportCase& c);

@@ -1,0 +1,43 @@
+#include "granular/study/chain_length_rule.hpp"
+
+#include <cmath>
+
+#include "granular/dynamics/scheme.hpp"
+#include "granular/error.hpp"
+#include "granular/study/time_step_rule.hpp"
+
+namespace granular {
+
+ChainLength automatic_chain_length(const TransportCase& c) {
+  if (c.kick == Kick::mode && !(c.mode.energy > 0))  // α bounds a mode's energy only for a known N
+    throw InvalidInput("energy", ": a mode kick on the automatic N needs its energy, not its amplitude");
+  TransportCase probe = c;  // ω_max depends on the chain and the kick, not on the scheme
+  probe.dynamics.integrator = saba2c();
+  probe.n = 3;
+  probe.site = 1;
+  ChainLength length;
+  length.omega_max = time_step_limit(probe).omega_max;
+  length.speed = length.omega_max;
+  length.reach = length.speed * c.dynamics.duration;
+  const double half = std::ceil((1 + length.margin) * length.reach) + static_cast<double>(length.pad);
+  if (!(half < 5e7))
+    throw InvalidInput("N", ": the automatic chain length for T = " + std::to_string(c.dynamics.duration) +
+                                " s passes 1e8 beads");
+  length.n = 2 * static_cast<std::size_t>(half) + 1;
+  return length;
+}
+
+nlohmann::json to_json(const ChainLength& length) {
+  return {{"rule",
+           "N = 2*ceil((1 + margin)*Omega*T) + 1 + 2*pad, the kick at the centre bead; Omega = omega_max [beads/s] "
+           "(the time-step rule's bound of the highest frequency, >= 2x the linear sound speed at the stiffest "
+           "bond the kick energy allows); the chain drawn outward from the centre bead"},
+          {"omega_max_rad_s", length.omega_max},
+          {"speed_beads_s", length.speed},
+          {"reach_beads", length.reach},
+          {"margin", length.margin},
+          {"pad_beads", length.pad},
+          {"N", length.n}};
+}
+
+}  // namespace granular

@@ -1,0 +1,35 @@
+#pragma once
+// The chain length of a long run (docs/physics.md, "Chain length for long times"): N large enough
+// that no wave from the kicked centre bead reaches a wall by T. Energy cannot move faster than a
+// speed Ω [beads/s] bounded by the chain's highest frequency: a harmonic chain of stiffness K and
+// mass m carries signals at most at its sound speed √(K/m) = ω_top/2 beads/s (the group velocity
+// dω/dk = √(K/m)·cos(k/2) of ω = 2√(K/m)·sin(k/2)), and ω_max of time_step_rule.hpp bounds ω_top
+// for every bond at the stiffest strain the kick's energy H0 can give it. That bound also covers
+// the sonic vacuum (F0 = 0), which has no linear sound speed: a pulse of energy ≤ H0 compresses
+// no bond past φ_k = H0, so no bond is stiffer than there, and a nonlinear pulse is no faster
+// than the linear sound speed at its peak strain (checked in tests/study/chain_length_rule_test).
+// So Ω = ω_max is ≥ 2× the fastest speed, and N = 2⌈(1 + margin)·Ω T⌉ + 1 + 2·pad beads.
+#include <cstddef>
+
+#include <nlohmann/json.hpp>
+
+#include "granular/study/transport_study.hpp"
+
+namespace granular {
+
+struct ChainLength {
+  double omega_max = 0;  ///< ω_max [rad/s] of time_step_rule.hpp (any integrator)
+  double speed = 0;      ///< Ω [beads/s], = ω_max read as beads per second
+  double reach = 0;      ///< Ω T [beads]: farthest a wave can travel by T
+  double margin = 0.1;   ///< relative margin on the reach
+  std::size_t pad = 50;  ///< beads added on each side beyond it
+  std::size_t n = 0;     ///< the chain length: 2⌈(1 + margin) Ω T⌉ + 1 + 2 pad
+};
+
+/// The automatic N of case `c` (its chain kind, F0, kick, force law and T; not its N or τ).
+ChainLength automatic_chain_length(const TransportCase& c);
+
+/// The rule and its numbers, for the JSON.
+nlohmann::json to_json(const ChainLength& length);
+
+}  // namespace granular

@@ -1,0 +1,60 @@
+#include "granular/study/scheme_choice.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "granular/dynamics/force_law.hpp"
+#include "granular/dynamics/observables.hpp"
+#include "granular/model/chain.hpp"
+
+namespace granular {
+
+double srkn14a_default_step(double omega_max) {
+  const double bound = srkn14a_accurate_omega_tau / omega_max;
+  if (!(srkn14a_preferred_step > bound)) return srkn14a_preferred_step;
+  return srkn14a_preferred_step / std::ceil(srkn14a_preferred_step / bound);
+}
+
+bool bonds_stay_closed(const TransportCase& c) {
+  if (c.dynamics.force_law != ForceLawKind::hertz) return true;
+  if (!(c.precompression > 0)) return false;
+  std::vector<double> sizes{c.r1};
+  if (c.disorder != Disorder::homogeneous) sizes.push_back(c.xi * c.r1);
+  double energy = 0, opening = std::numeric_limits<double>::infinity();
+  TransportCase probe = c;
+  for (double a : sizes)  // three beads between walls: every neighbourhood of a bead or a bond
+    for (double b : sizes)
+      for (double d : sizes) {
+        const Chain chain = make_chain(std::vector<double>{a, b, d}, c.precompression);
+        const ForceLaw law = make_force_law(ForceLawKind::hertz, chain);
+        for (std::size_t site = 0; site < 3; ++site) {
+          probe.site = site;
+          energy = std::max(energy, total_energy(law, chain, kick(probe, chain).initial));
+        }
+        for (std::size_t k = 0; k < chain.bonds(); ++k)
+          opening = std::min(opening, std::visit([&](const auto& l) { return l.potential(k, -chain.overlap[k]); }, law));
+      }
+  return energy < opening;
+}
+
+SchemeChoice choose_scheme(double saba2c_step, double srkn14a_step, bool closed) {
+  const double cost = srkn14a_step_cost * saba2c_step / srkn14a_step;  // per simulated second, SABA2C = 1
+  if (closed && cost < 1) return {"srkn14a", srkn14a_step, cost, closed};
+  return {"saba2c", saba2c_step, 1, closed};
+}
+
+nlohmann::json to_json(const SchemeChoice& choice) {
+  return {{"rule",
+           "--integrator auto: where no contact can open (the kick energy below every bond's opening energy), the "
+           "cheapest of SRKN14a at 5e-6 s (or 5e-6/k s, keeping omega_max*tau <= 1.47 as in "
+           "the benchmark) and SABA2C at its default step (else SABA2C), costing an SRKN14a step as 4.0 SABA2C steps; "
+           "both keep the energy error at or below "
+           "SABA2C's at 1e-6 s (docs/dynamics-performance.md, cost-accuracy)"},
+          {"integrator", choice.integrator},
+          {"time_step_s", choice.time_step},
+          {"relative_cost", choice.relative_cost},
+          {"bonds_stay_closed", choice.bonds_stay_closed}};
+}
+
+}  // namespace granular

@@ -1,0 +1,63 @@
+// --integrator auto: SRKN14a only where no contact can open, and only when cheaper; the opening
+// test agrees with the energies it compares (a kick just below and just above the opening energy).
+#include "granular/study/scheme_choice.hpp"
+
+#include <gtest/gtest.h>
+
+#include "granular/dynamics/observables.hpp"
+#include "granular/model/chain.hpp"
+#include "granular/study/time_step_rule.hpp"
+
+namespace granular {
+namespace {
+
+TransportCase homogeneous(double f0, double alpha) {
+  TransportCase c;
+  c.disorder = Disorder::homogeneous;
+  c.precompression = f0;
+  c.alpha = alpha;
+  c.n = 3;
+  c.site = 1;
+  return c;
+}
+
+TEST(SchemeChoice, SonicVacuumAndStrongKicksOpenContacts) {
+  EXPECT_TRUE(bonds_stay_closed(homogeneous(10, 1e-7)));
+  EXPECT_FALSE(bonds_stay_closed(homogeneous(0, 1e-7)));
+  EXPECT_FALSE(bonds_stay_closed(homogeneous(10, 1e-5)));  // stretches a bond past its overlap
+  TransportCase linear = homogeneous(0, 1e-5);
+  linear.dynamics.force_law = ForceLawKind::linear;
+  EXPECT_TRUE(bonds_stay_closed(linear));
+}
+
+// A displacement α of the centre bead of a homogeneous chain stretches one bond by α: it can open
+// exactly when α passes the static overlap, whatever the energy bookkeeping says elsewhere; the
+// energy test is sufficient, so it must say "closed" below a fraction of the overlap and "open"
+// past it.
+TEST(SchemeChoice, TheOpeningTestBracketsTheStaticOverlap) {
+  const Chain chain = make_chain(std::vector<double>(3, 4.76e-3), 10);
+  const double overlap = chain.overlap[1];
+  EXPECT_TRUE(bonds_stay_closed(homogeneous(10, 0.3 * overlap)));
+  EXPECT_FALSE(bonds_stay_closed(homogeneous(10, 1.01 * overlap)));
+}
+
+TEST(SchemeChoice, TheCheaperWins) {
+  EXPECT_EQ(choose_scheme(1e-6, 5e-6, true).integrator, "srkn14a");
+  EXPECT_NEAR(choose_scheme(1e-6, 5e-6, true).relative_cost, 0.8, 1e-12);
+  EXPECT_EQ(choose_scheme(1e-6, 2.5e-6, true).integrator, "saba2c");  // 1.6x dearer
+  EXPECT_EQ(choose_scheme(1e-6, 5e-6, false).integrator, "saba2c");
+  EXPECT_EQ(choose_scheme(0.5e-6, 2.5e-6, true).integrator, "srkn14a");
+}
+
+// The benchmark chain's ω_max (time_step_rule.hpp) is the one the constant was taken from: it
+// keeps 5 µs there; a stiffer chain gets 5 µs/k.
+TEST(SchemeChoice, TheBenchmarkChainKeepsFiveMicroseconds) {
+  TransportCase c;  // A, ξ = q = 0.5, F0 = 10 N, α = 1e-7 m: the cost-accuracy benchmark
+  const double omega = time_step_limit(c).omega_max;
+  EXPECT_NEAR(omega, 2.9355e5, 0.0001e5);
+  EXPECT_EQ(srkn14a_default_step(omega), 5e-6);
+  EXPECT_EQ(srkn14a_default_step(2.5 * omega), 5e-6 / 3);
+}
+
+}  // namespace
+}  // namespace granular

@@ -1,0 +1,75 @@
+#pragma once
+// `--N auto` for long runs (docs/physics.md, "Chain length for long times"): N sized from --T so
+// that no wave from the kicked centre bead reaches a wall (chain_length_rule.hpp), the chain drawn
+// outward from that bead (centred_configuration.hpp) so that a longer N only adds beads the wave
+// never reaches. Given a number, --N keeps its meaning and the draw from the left wall.
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include "chain_options.hpp"
+#include "dynamics_options.hpp"
+#include "granular/error.hpp"
+#include "granular/study/chain_length_rule.hpp"
+#include "granular/study/transport_study.hpp"
+
+namespace granular::tool {
+
+/// Lets the tool's --N option take 'auto' (then `auto_n` is set and N reads as 3 until sized).
+inline void add_auto_length(CLI::App& app, bool& auto_n) {
+  CLI::Option* n = app.get_option("--N");
+  n->description(n->get_description() +
+                 "; 'auto': sized from --T so that no wave reaches a wall (docs/physics.md, 'Chain length for long "
+                 "times'), the kick at the centre of a chain drawn outward from it; rule and N in the JSON");
+  n->transform(CLI::Validator(
+      [&auto_n](std::string& text) -> std::string {
+        if (text == "auto") {
+          auto_n = true;
+          text = "3";
+        }
+        return {};
+      },
+      ""));
+  n->type_name("INT|auto");
+}
+
+/// Sizes `c` (its chain, kick, F0, force law and T set) for --N auto: N, the centre kick, the
+/// centred draw. `site`: the --site given (only 0, the centre, goes with auto). Returns the rule.
+inline nlohmann::json size_chain(TransportCase& c, long long site) {
+  if (site != 0) throw InvalidInput("--site " + std::to_string(site) + ": --N auto kicks the centre bead (--site 0)");
+  const ChainLength length = automatic_chain_length(c);
+  c.n = length.n;
+  c.site = (c.n - 1) / 2;
+  c.centred_draw = true;
+  return to_json(length);
+}
+
+/// exponents: the rules of its cases (sized by exponent_cases) when `auto_n`, else null.
+inline nlohmann::json length_rules(const std::vector<TransportCase>& cases, bool auto_n, long long site) {
+  if (!auto_n) return nullptr;
+  if (site != 0) throw InvalidInput("--site " + std::to_string(site) + ": --N auto kicks the centre bead (--site 0)");
+  nlohmann::json rules = nlohmann::json::array();
+  for (const TransportCase& c : cases) rules.push_back(to_json(automatic_chain_length(c)));
+  return rules;
+}
+
+/// spreading: before its chain is built, N for --N auto from the options (a probe case).
+inline void size_chain(ChainOptions& chain, const DynamicsOptions& dynamics, const std::string& ic) {
+  if (!chain.auto_n) return;
+  if (!chain.config.empty() || !chain.radii.empty())
+    throw InvalidInput("--N auto: sizes a drawn chain; --config/--radii give their own");
+  if (!chain.types.empty() || !chain.polydisperse.empty())
+    throw InvalidInput("--N auto: draws two-type chains (--disorder); not with --types/--polydisperse");
+  TransportCase probe;
+  apply(chain, 3, probe);
+  probe.kick = parse_kick(ic);
+  DynamicsOptions centre = dynamics;
+  centre.choices.site = 0;
+  apply(centre, probe);
+  chain.length_rule = size_chain(probe, dynamics.choices.site);
+  chain.n = static_cast<long long>(probe.n);
+}
+
+}  // namespace granular::tool
