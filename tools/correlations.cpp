@@ -1,7 +1,9 @@
-// correlations: ensemble mean and spread of the Pearson coefficient ρ(d) of bead types with
-// their cyclic shifts, beside the infinite-chain formula (SPEC §2).
+// correlations: ensemble mean and spread of the Pearson coefficient ρ(d) of bead types (k types
+// or polydisperse radii: bead masses) with their cyclic shifts, beside the infinite-chain formula
+// (SPEC §2).
 #include <string>
 
+#include "common/chain_options.hpp"
 #include "common/metadata.hpp"
 #include "common/output_claim.hpp"
 #include "common/tool_main.hpp"
@@ -13,15 +15,19 @@ int main(int argc, char** argv) {
   using namespace granular;
   CLI::App app{
       "Pearson correlation rho(d) of bead types (type 1 -> 0, type 2 -> 1) with their cyclic shift by d,\n"
-      "averaged over realizations: columns distance,rho_mean,rho_std,rho_theory (theory: infinite chain).",
+      "averaged over realizations: columns distance,rho_mean,rho_std,rho_theory (theory: infinite chain).\n"
+      "With --types/--type-masses (k types, drawn by --disorder) or --polydisperse: rho(d) of the bead masses,\n"
+      "for two types the same coefficient (Pearson is invariant under the affine map type -> mass).",
       "correlations"};
   tool::describe_common(app);
   std::string disorder = "A", output = "correlations.csv";
   CorrelationConfig config;
   RunOptions run;
   bool quiet = false;
+  tool::ChainOptions beads;  // only its --types/--type-masses/--polydisperse
   app.add_option("--disorder", disorder, "A | RDM1 | RDM2 (h has no correlation: one type only)")->capture_default_str();
   app.add_option("--q", config.q, "probability in [0,1]")->capture_default_str();
+  tool::add_bead_distribution_options(app, beads);
   tool::add_integer(app, "--N", config.n, "beads per chain (>= 2)");
   tool::add_integer(app, "--realizations", config.realizations, "chains averaged");
   tool::add_integer(app, "--seed", config.seed, "random seed");
@@ -34,6 +40,8 @@ int main(int argc, char** argv) {
   return tool::run(app, argc, argv, [&] {
     tool::Metadata meta("correlations", argc, argv);
     config.disorder = parse_disorder(disorder);
+    beads.disorder = disorder;  // the rule of --types
+    config.beads = tool::bead_distribution(beads);
     // The default must fit short chains (N = 2 has only d = 0, 1); a value typed is checked as typed.
     if (max_distance->count() == 0 && config.n >= 2 && config.max_distance > config.n - 1)
       config.max_distance = config.n - 1;
@@ -52,6 +60,8 @@ int main(int argc, char** argv) {
     meta["parameters"] = {
         {"disorder", to_string(config.disorder)}, {"q", config.q},       {"N", config.n},
         {"realizations", config.realizations},    {"seed", config.seed}, {"max_distance", config.max_distance}};
+    if (config.beads) meta["parameters"]["beads"] = describe(*config.beads);
+    meta["correlated"] = config.beads ? "bead mass" : "bead type (type 1 -> 0, type 2 -> 1)";
     meta["realizations_used"] = result.used;
     meta["output"] = output;
     meta.write(json_path, {&csv});

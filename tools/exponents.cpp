@@ -5,6 +5,7 @@
 #include <string>
 
 #include "common/dynamics_options.hpp"
+#include "common/exponent_options.hpp"
 #include "common/long_run_options.hpp"
 #include "common/long_time_options.hpp"
 #include "common/metadata.hpp"
@@ -22,20 +23,21 @@ int main(int argc, char** argv) {
       "law, their mean log derivative), with sub-window spreads and realization (bootstrap) errors. Markdown\n"
       "tables on stdout; PREFIX.csv (exponents), PREFIX-curves.csv (mean curves), PREFIX-profiles.csv (E_n(T)),\n"
       "PREFIX.json; with --compare-paper, PREFIX-paper.csv and the side-by-side table. Interrupted runs\n"
-      "continue with --resume (finished realizations are kept in PREFIX.checkpoint.*).",
+      "continue with --resume (finished realizations are kept in PREFIX.checkpoint.*). Beyond the paper: one more "
+      "chain\n"
+      "from --types/--type-masses/--polydisperse named --chain-name, --ic mode (--mode/--mode-khz), --mle (X1 at T).",
       "exponents"};
   tool::describe_common(app);
   tool::DynamicsOptions dynamics;
-  std::string chains = "h,A,RDM1,RDM2", f0_text = "10,0.5,0.1,0.01,0", kicks = "displacement,velocity";
-  std::string output = "exponents", profile_f0 = "10,0.1,0";
+  tool::ExponentChoices choices;
+  std::string f0_text = "10,0.5,0.1,0.01,0", output = "exponents", profile_f0 = "10,0.1,0";
   std::string paper_table = std::string(GRANULAR_SOURCE_DIR) + "/data/paper_table1_gamma.csv";
   long long n = 2501, realizations = 500, seed = 1, profile_realizations = 100;
   double xi = 0.5, q = 0.5;
   tool::LongRunOptions run_options;
   bool compare = false, auto_n = false;
-  app.add_option("--chains", chains, "chain kinds: comma list of h, A, RDM1, RDM2")->capture_default_str();
   app.add_option("--F0", f0_text, "precompressions [N], comma list (0 = sonic vacuum)")->capture_default_str();
-  app.add_option("--ic", kicks, "kicks: comma list of displacement, velocity")->capture_default_str();
+  tool::add_exponent_choices(app, choices, dynamics.beyond);
   app.add_option("--N", n, "beads per chain")->capture_default_str();
   app.add_option("--xi", xi, "size ratio R2/R1 in (0,1]")->capture_default_str();
   app.add_option("--q", q, "disorder probability in [0,1]")->capture_default_str();
@@ -60,12 +62,8 @@ int main(int argc, char** argv) {
                      tool::Metadata meta("exponents", argc, argv);
                      const MpiContext& mpi = MpiContext::instance();
                      ExponentTableConfig config;
-                     config.chains.clear();
-                     for (const auto& name : parse_word_list(chains, "--chains"))
-                       config.chains.push_back(parse_disorder(name));
+                     tool::apply(choices, config);
                      config.precompressions = parse_number_list(f0_text, "--F0");
-                     config.kicks.clear();
-                     for (const auto& name : parse_word_list(kicks, "--ic")) config.kicks.push_back(parse_kick(name));
                      config.profile_precompressions =
                          profile_f0 == "none" ? std::vector<double>{} : parse_number_list(profile_f0, "--profile-F0");
                      if (profile_realizations < 0) throw InvalidInput("--profile-realizations: must be >= 0");
@@ -121,11 +119,13 @@ int main(int argc, char** argv) {
                          one["exponents"] = {{"gamma_site", to_json(c.summary.exponents->gamma_site)},
                                              {"gamma_centroid", to_json(c.summary.exponents->gamma_centroid)},
                                              {"eta", to_json(c.summary.exponents->eta)}};
+                       if (!c.summary.mle.mean.empty()) one["mle"] = to_json(mle_at_end(c.summary));
+                       one["chain"] = chain_name(c);
                        cases_json.push_back(one);
                      }
-                     meta["parameters"] = {{"chains", chains},
+                     meta["parameters"] = {{"chains", choices.chains},
                                            {"F0", config.precompressions},
-                                           {"ic", kicks},
+                                           {"ic", choices.kicks},
                                            {"threads", run_options.threads},
                                            {"mpi_ranks", mpi.size()}};
                      meta["cases"] = cases_json;
@@ -146,5 +146,5 @@ int main(int argc, char** argv) {
                      for (std::size_t i = 0; i < cells.size(); ++i)
                        CheckpointLog::remove_all(run.checkpoint_prefix + "." + std::to_string(i));
                    },
-                   {{"disorder", "--chains"}});  // the library's `disorder` is --chains here
+                   {{"disorder", "--chains"}, {"lyapunov", "--mle"}, {"near_khz", "--mode-khz"}});
 }

@@ -4,6 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include "granular/model/material.hpp"
+#include "granular/study/correlation_study.hpp"
+
 namespace granular {
 namespace {
 
@@ -22,6 +25,60 @@ TEST(Correlation, TheoryLimits) {
   EXPECT_DOUBLE_EQ(correlation_theory(Disorder::rdm2, 0.0, 4), 1.0);
   EXPECT_DOUBLE_EQ(correlation_theory(Disorder::rdm1, 0.3, 1), 0.5);
   EXPECT_DOUBLE_EQ(correlation_theory(Disorder::anderson, 0.3, 2), 0.0);
+}
+
+// Masses are an affine function of the type indicator, and Pearson is invariant under affine maps:
+// the coefficient of the masses of a two-type chain is the indicator's, to rounding.
+TEST(Correlation, MassesOfTwoTypesGiveTheIndicatorsCoefficient) {
+  for (Disorder kind : {Disorder::anderson, Disorder::rdm1, Disorder::rdm2}) {
+    const Configuration types = realization_configuration(kind, 0.3, 501, 7, 2);
+    std::vector<double> mass;
+    for (auto t : types) mass.push_back(sphere_mass(steel, t == 1 ? 4.76e-3 : 2e-3));
+    const auto by_type = cyclic_correlation(types, 20), by_mass = cyclic_value_correlation(mass, 20);
+    for (std::size_t d = 0; d <= 20; ++d) EXPECT_NEAR(by_mass[d], by_type[d], 1e-13) << to_string(kind) << " d=" << d;
+  }
+  EXPECT_TRUE(std::isnan(cyclic_value_correlation({0.1, 0.1, 0.1}, 1)[1]));  // one kind of bead: undefined
+  const auto three = cyclic_value_correlation({1, 2, 3, 1, 2, 3}, 3);        // period 3: ρ(3) = 1, ρ(1) = −½
+  EXPECT_NEAR(three[0], 1, 1e-15);
+  EXPECT_NEAR(three[1], -0.5, 1e-15);
+  EXPECT_NEAR(three[3], 1, 1e-15);
+}
+
+// The study on k types and polydisperse radii against the infinite-chain formulas, and the
+// two-type distribution against the paper's kinds (same chains, same coefficient to rounding).
+TEST(Correlation, StudyOfBeadDistributions) {
+  CorrelationConfig paper{
+      .disorder = Disorder::rdm2, .q = 0.3, .n = 400, .realizations = 50, .seed = 3, .max_distance = 5};
+  CorrelationConfig two = paper;
+  two.beads = BeadDistribution{.radii = {4.76e-3, 2.38e-3}, .probabilities = {0.3, 0.7}, .rule = Disorder::rdm2};
+  const CorrelationResult a = correlation_study(paper), b = correlation_study(two);
+  for (std::size_t d = 0; d <= 5; ++d) {
+    EXPECT_NEAR(b.mean[d], a.mean[d], 1e-12) << d;
+    EXPECT_NEAR(b.deviation[d], a.deviation[d], 1e-9) << d;
+    EXPECT_DOUBLE_EQ(b.theory[d], a.theory[d]) << d;
+  }
+  const BeadDistribution three{.radii = {4.76e-3, 3e-3, 2e-3}, .probabilities = {0.5, 0.3, 0.2}};
+  BeadDistribution uniform;
+  uniform.kind = BeadDistribution::Kind::uniform;
+  uniform.low = 2e-3;
+  uniform.high = 5e-3;
+  BeadDistribution dimers = three;
+  dimers.rule = Disorder::rdm1;
+  for (const BeadDistribution& beads : {three, uniform, dimers}) {
+    CorrelationConfig c{.n = 2000, .realizations = 200, .seed = 5, .max_distance = 4, .beads = beads};
+    const CorrelationResult r = correlation_study(c, {.threads = 2});
+    EXPECT_EQ(r.used, 200u);
+    EXPECT_NEAR(r.mean[0], 1, 1e-14);
+    for (std::size_t d = 1; d <= 4; ++d) {
+      const double expected = beads.rule == Disorder::rdm1 && d == 1 ? 0.5 : 0.0;
+      EXPECT_DOUBLE_EQ(r.theory[d], expected) << describe(beads) << " d=" << d;
+      // 5 standard errors of the mean plus the O(1/N) bias of the finite ring
+      EXPECT_NEAR(r.mean[d], expected, 5 * r.deviation[d] / std::sqrt(200.0) + 2.0 / 2000) << describe(beads);
+    }
+    const CorrelationResult one = correlation_study(c, {.threads = 1});
+    EXPECT_EQ(one.mean, r.mean);  // bit for bit, any thread count
+    EXPECT_EQ(one.deviation, r.deviation);
+  }
 }
 
 // Ensemble means against the infinite-chain formulas. The tolerance comes from the ensemble:

@@ -12,7 +12,9 @@
 #include "granular/linear/dynamical_matrix.hpp"
 #include "granular/linear/spectrum.hpp"
 #include "granular/model/disorder.hpp"
+#include "granular/model/material.hpp"
 #include "granular/study/exponent_table.hpp"
+#include "granular/study/mode_kick.hpp"
 
 namespace granular {
 namespace {
@@ -107,6 +109,57 @@ TEST(TimeStepRule, ThePapersCasesKeepOneMicrosecondSmallXiDoesNot) {
   EXPECT_NEAR(1e-6 / tau, std::round(1e-6 / tau), 1e-9);
   small.dynamics.time_step = 1e-6;
   EXPECT_THROW(check_time_step(small, limit), InvalidInput);
+}
+
+// Chains from a bead distribution are bounded by their own radii: two types of the paper's radii
+// give the paper's limit to the bit; a third, smaller type raises ω_max; a polydisperse range is
+// bounded at least as tightly as its two ends alone (and not absurdly more).
+TEST(TimeStepRule, BeadDistributionsBoundTheirOwnRadii) {
+  for (Kick kick : {Kick::displacement, Kick::velocity}) {
+    TransportCase paper;
+    paper.q = 0.3;
+    paper.kick = kick;
+    TransportCase two = paper;
+    two.beads = BeadDistribution{.radii = {4.76e-3, 2.38e-3}, .probabilities = {0.3, 0.7}};
+    EXPECT_EQ(time_step_limit(two).omega_max, time_step_limit(paper).omega_max);
+    TransportCase three = two;
+    three.beads = BeadDistribution{.radii = {4.76e-3, 2.38e-3, 1e-3}, .probabilities = {0.3, 0.6, 0.1}};
+    EXPECT_GT(time_step_limit(three).omega_max, 1.2 * time_step_limit(paper).omega_max);
+    TransportCase poly = paper;
+    poly.beads = BeadDistribution{.kind = BeadDistribution::Kind::uniform, .low = 1e-3, .high = 4.76e-3};
+    TransportCase ends = paper;  // the range's two ends: among the 9 radii the rule takes
+    ends.beads = BeadDistribution{.radii = {4.76e-3, 1e-3}, .probabilities = {0.5, 0.5}};
+    EXPECT_GE(time_step_limit(poly).omega_max, time_step_limit(ends).omega_max);
+    EXPECT_LT(time_step_limit(poly).omega_max, 1.5 * time_step_limit(ends).omega_max);
+  }
+}
+
+// A mode kick of a chain not yet drawn: any mode number of an N-bead chain is accepted (the probe
+// chains have three beads), the energy bound is the given energy, and from an amplitude α it is
+// at least the energy of the mode at α on a real realization.
+TEST(TimeStepRule, ModeKicksAreBoundedBeforeTheChainIsDrawn) {
+  TransportCase c;
+  c.n = 401;
+  c.site = 200;
+  c.kick = Kick::mode;
+  c.mode = {.mode = 200, .energy = 1e-7};
+  validate(c);
+  const TimeStepLimit given = time_step_limit(c);
+  TransportCase site = c;  // a velocity kick of the same energy on the same probe chains
+  site.kick = Kick::velocity;
+  site.beta = std::sqrt(2 * 1e-7 / sphere_mass(steel, 4.76e-3));  // ½mβ² = E on the heaviest bead
+  EXPECT_NEAR(given.omega_max, time_step_limit(site).omega_max, 1e-9 * given.omega_max);
+  c.mode = {.mode = 200};
+  c.alpha = 1e-7;
+  const TimeStepLimit from_alpha = time_step_limit(c);
+  EXPECT_GT(from_alpha.omega_max, 0);
+  const Chain chain =
+      make_chain(radii_of(realization_configuration(Disorder::anderson, 0.5, c.n, c.seed, 0), c.r1, c.xi),
+                 c.precompression);
+  const ModeKickResult real = mode_kick(chain, ForceLawKind::hertz, {.mode = 200, .amplitude = 1e-7});
+  const double bound_at_real = highest_frequency_bound(make_force_law(ForceLawKind::hertz, chain), chain, real.energy);
+  EXPECT_GE(from_alpha.omega_max, bound_at_real);
+  EXPECT_NO_THROW(settle_time_step(c, false));
 }
 
 }  // namespace

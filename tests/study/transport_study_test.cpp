@@ -85,6 +85,49 @@ TEST(ExponentTable, CasesInTableOrderWithOneHomogeneousRealization) {
   EXPECT_EQ(cases[4].profile_realizations, 0u);    // F0 = 0.5: no profile
 }
 
+// A bead chain joins each (kick, F0) block after the named kinds, with R realizations, its
+// distribution and its name; names that clash or would break the CSV are refused.
+TEST(ExponentTable, BeadChainsRunAfterTheKindsUnderTheirNames) {
+  ExponentTableConfig config;
+  config.chains = {Disorder::homogeneous, Disorder::rdm1};
+  config.precompressions = {10, 0};
+  config.kicks = {Kick::velocity};
+  config.base.realizations = 7;
+  const BeadDistribution three{.radii = {4.76e-3, 3e-3, 2e-3}, .probabilities = {0.5, 0.3, 0.2}, .rule = Disorder::rdm1};
+  config.bead_chains = {{"K3", three}};
+  const auto cases = exponent_cases(config);
+  ASSERT_EQ(cases.size(), 6u);
+  EXPECT_EQ(chain_names(config), (std::vector<std::string>{"h", "RDM1", "K3"}));
+  for (std::size_t i : {0u, 1u, 3u, 4u}) EXPECT_FALSE(cases[i].beads) << i;
+  for (std::size_t i : {2u, 5u}) {
+    ASSERT_TRUE(cases[i].beads);
+    EXPECT_EQ(describe(*cases[i].beads), describe(three));
+    EXPECT_EQ(cases[i].realizations, 7u);
+    EXPECT_EQ(cases[i].disorder, Disorder::rdm1);  // its rule, for the JSON
+  }
+  EXPECT_EQ(cases[0].realizations, 1u);
+  EXPECT_EQ(cases[5].precompression, 0.0);
+  const auto parameter_of = [&](const std::string& name) {
+    ExponentTableConfig bad = config;
+    bad.bead_chains.push_back({name, three});
+    try {
+      validate(bad);
+    } catch (const InvalidInput& e) {
+      return e.parameter();
+    }
+    return std::string("none");
+  };
+  EXPECT_EQ(parameter_of("K3"), "chain_name");  // twice
+  EXPECT_EQ(parameter_of("rdm2"), "chain_name");
+  EXPECT_EQ(parameter_of("anderson"), "chain_name");
+  EXPECT_EQ(parameter_of("a\"b"), "chain_name");
+  EXPECT_EQ(parameter_of(""), "chain_name");
+  EXPECT_EQ(parameter_of("K4"), "none");
+  config.chains.clear();
+  config.bead_chains.clear();
+  EXPECT_THROW(exponent_cases(config), InvalidInput);
+}
+
 }  // namespace
 }  // namespace granular
 

@@ -1,6 +1,6 @@
 #pragma once
 // Options beyond the paper (SPEC §4, issue 14): dissipation (both `spreading` and `exponents`)
-// and the maximal Lyapunov exponent by the tangent map (`spreading --mle`). Library messages
+// and the maximal Lyapunov exponent by the tangent map (`spreading --mle`, `exponents --mle`). Library messages
 // name `damping_time`, `kk_gamma`, `deviation_samples`; tool::run tells them as these flags.
 #include <string>
 
@@ -28,11 +28,15 @@ inline void add_damping_options(CLI::App& app, BeyondOptions& o) {
       ->capture_default_str();
 }
 
-inline void add_lyapunov_options(CLI::App& app, BeyondOptions& o) {
-  app.add_flag("--mle", o.mle,
-               "maximal Lyapunov exponent by the tangent map: column mle = X1(t) [1/s] (ensemble: its mean)");
+/// --mle (with `help`: what the tool writes) and --renormalize.
+inline void add_mle_options(CLI::App& app, BeyondOptions& o, const std::string& help) {
+  app.add_flag("--mle", o.mle, help);
   app.add_option("--renormalize", o.renormalize, "steps between renormalizations of the deviation vector")
       ->capture_default_str();
+}
+
+inline void add_lyapunov_options(CLI::App& app, BeyondOptions& o) {
+  add_mle_options(app, o, "maximal Lyapunov exponent by the tangent map: column mle = X1(t) [1/s] (ensemble: its mean)");
   app.add_option("--deviation", o.deviation, "CSV t,site,share: the deviation vector along the chain (with --mle)");
   app.add_option("--deviation-samples", o.deviation_samples, "uniform times of --deviation")->capture_default_str();
 }

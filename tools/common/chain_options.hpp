@@ -30,10 +30,12 @@ struct ChainOptions {
 };
 
 /// --types, --type-masses, --polydisperse (mutually exclusive); returns them for more exclusions.
-inline std::vector<CLI::Option*> add_bead_distribution_options(CLI::App& app, ChainOptions& o) {
+/// `rule_flag`: the tool's flag that says how types are drawn.
+inline std::vector<CLI::Option*> add_bead_distribution_options(CLI::App& app, ChainOptions& o,
+                                                               const std::string& rule_flag = "--disorder") {
   auto* types = app.add_option("--types", o.types,
-                               "k bead types 'R1:P1,R2:P2,...' (radius [m]: probability) drawn by --disorder A (each "
-                               "bead), RDM1 (each dimer) or RDM2 (two types); overrides --q/--xi/--R1");
+                               "k bead types 'R1:P1,R2:P2,...' (radius [m]: probability) drawn by " + rule_flag +
+                                   " A (each bead), RDM1 (each dimer) or RDM2 (two types); overrides --q/--xi/--R1");
   auto* masses =
       app.add_option("--type-masses", o.type_masses, "as --types with masses [kg] of steel spheres: 'M1:P1,M2:P2,...'");
   auto* poly = app.add_option("--polydisperse", o.polydisperse,

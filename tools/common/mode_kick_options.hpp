@@ -2,6 +2,9 @@
 // The options of `--ic mode` (study/mode_kick.hpp): which linear mode of the chain starts the
 // dynamics, by number or nearest a frequency, and its energy (without --energy, --alpha is the
 // largest displacement of the mode shape).
+#include <algorithm>
+#include <vector>
+
 #include <CLI/CLI.hpp>
 
 #include "granular/study/transport_study.hpp"
@@ -20,11 +23,15 @@ inline void add_mode_kick_options(CLI::App& app, ModeKickOptions& o) {
                  "--ic mode: total energy of the initial state [J] (without it --alpha is the largest |u_n|)");
 }
 
-/// Into `c` (after the kick kind is set): only a mode kick may use these options.
-inline void apply(const ModeKickOptions& o, TransportCase& c) {
+/// Into `c`, whose mode kicks (if `kicks` holds one) use it: only a mode kick may use these options.
+inline void apply(const ModeKickOptions& o, const std::vector<Kick>& kicks, TransportCase& c) {
   const bool given = o.mode != 0 || o.mode_khz >= 0 || o.energy != 0;
-  if (given && c.kick != Kick::mode) throw InvalidInput("--mode/--mode-khz/--energy: only with --ic mode");
+  if (given && std::find(kicks.begin(), kicks.end(), Kick::mode) == kicks.end())
+    throw InvalidInput("--mode/--mode-khz/--energy: only with --ic mode");
   c.mode = {.mode = o.mode, .near_khz = o.mode_khz, .energy = o.energy, .amplitude = 0};
 }
+
+/// Into `c` (after the kick kind is set).
+inline void apply(const ModeKickOptions& o, TransportCase& c) { apply(o, {c.kick}, c); }
 
 }  // namespace granular::tool

@@ -19,6 +19,15 @@ class CsvWriter {
     }
     out_ << '\n';
   }
+  /// Columns known at run time (optional ones added).
+  CsvWriter(std::ostream& out, const std::vector<std::string>& columns) : out_(out), columns_(columns.size()) {
+    const char* sep = "";
+    for (const auto& c : columns) {
+      out_ << sep << c;
+      sep = ",";
+    }
+    out_ << '\n';
+  }
   /// One row; cells are strings or doubles. The count must match the header.
   template <class... Cells>
   void row(const Cells&... cells) {

@@ -1,5 +1,6 @@
 #include "granular/model/correlation.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -20,6 +21,38 @@ std::vector<double> cyclic_correlation(const Configuration& types, std::size_t m
     rho[d] = (sum / static_cast<double>(n) - mean * mean) / variance;
   }
   return rho;
+}
+
+std::vector<double> cyclic_value_correlation(const std::vector<double>& x, std::size_t max_distance) {
+  const std::size_t n = x.size();
+  std::vector<double> rho(max_distance + 1, std::numeric_limits<double>::quiet_NaN());
+  if (n == 0 || std::all_of(x.begin(), x.end(), [&](double v) { return v == x[0]; })) return rho;
+  double mean = 0;
+  for (double v : x) mean += v;
+  mean /= static_cast<double>(n);
+  std::vector<double> c(n);  // centred first: no cancellation between mean(x x_d) and mean²
+  for (std::size_t i = 0; i < n; ++i) c[i] = x[i] - mean;
+  double variance = 0;
+  for (double v : c) variance += v * v;
+  for (std::size_t d = 0; d <= max_distance; ++d) {
+    double sum = 0;
+    for (std::size_t i = 0; i < n; ++i) sum += c[i] * c[(i + d) % n];
+    rho[d] = sum / variance;
+  }
+  return rho;
+}
+
+double correlation_theory(const BeadDistribution& b, std::size_t d) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  if (b.kind == BeadDistribution::Kind::uniform) return b.high > b.low ? (d == 0 ? 1.0 : 0.0) : nan;
+  if (b.kind == BeadDistribution::Kind::normal) return d == 0 ? 1.0 : 0.0;
+  // Types: only those drawn (p > 0; RDM2 always places both) and of distinct radii vary the mass.
+  std::vector<double> drawn;
+  for (std::size_t t = 0; t < b.radii.size(); ++t)
+    if (b.probabilities[t] > 0 || b.rule == Disorder::rdm2) drawn.push_back(b.radii[t]);  // 12/21: both
+  if (std::all_of(drawn.begin(), drawn.end(), [&](double r) { return r == drawn[0]; })) return nan;
+  if (b.rule == Disorder::rdm2) return correlation_theory(Disorder::rdm2, b.probabilities[0], d);
+  return correlation_theory(b.rule, 0.5, d);  // A or RDM1 with both kinds of bead: q-independent
 }
 
 double correlation_theory(Disorder disorder, double q, std::size_t d) {

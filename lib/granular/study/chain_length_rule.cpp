@@ -9,6 +9,8 @@
 namespace granular {
 
 ChainLength automatic_chain_length(const TransportCase& c) {
+  if (c.kick == Kick::mode && !(c.mode.energy > 0))  // α bounds a mode's energy only for a known N
+    throw InvalidInput("energy", ": a mode kick on the automatic N needs its energy, not its amplitude");
   TransportCase probe = c;  // ω_max depends on the chain and the kick, not on the scheme
   probe.dynamics.integrator = saba2c();
   probe.n = 3;

@@ -1,11 +1,16 @@
 #pragma once
 // The ensemble of bead-type correlations (SPEC §2 "Correlations"): the mean and spread over
 // realizations of the Pearson coefficient ρ(d) of a configuration with its cyclic shift by d,
-// beside the infinite-chain formula the ensemble mean should approach.
+// beside the infinite-chain formula the ensemble mean should approach. Chains of the paper's two
+// types correlate the type indicator (type 1 → 0, type 2 → 1); chains of k types or polydisperse
+// radii (a BeadDistribution) correlate the per-bead mass, which for two types is the same
+// coefficient (Pearson is invariant under the affine map from indicator to mass).
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "granular/ensemble/run_options.hpp"
+#include "granular/model/bead_distribution.hpp"
 #include "granular/model/disorder.hpp"
 
 namespace granular {
@@ -17,13 +22,16 @@ struct CorrelationConfig {
   std::size_t realizations = 100;
   std::uint64_t seed = 1;
   std::size_t max_distance = 10;  ///< largest shift d, < N
+  /// When set: realization r draws its radii from this (k types or polydisperse; `disorder` and
+  /// `q` unused) and ρ(d) is that of the per-bead masses.
+  std::optional<BeadDistribution> beads{};
 };
 
 struct CorrelationResult {
   std::vector<double> mean;       ///< ρ(d) averaged over the realizations used, d = 0 … max_distance
   std::vector<double> deviation;  ///< their sample standard deviation (0 with one realization)
   std::vector<double> theory;     ///< infinite-chain ρ(d) (NaN where undefined)
-  std::size_t used = 0;           ///< realizations with both types (a one-type chain has no ρ and is skipped)
+  std::size_t used = 0;           ///< realizations with two kinds of bead (a one-kind chain has no ρ and is skipped)
 };
 
 /// Throws InvalidInput (naming the field) on a bad config.

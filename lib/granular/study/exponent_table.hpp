@@ -1,7 +1,8 @@
 #pragma once
 // The paper's whole protocol (SPEC §4): transport exponents γ (m̃2 ∝ t^γ) and η (P⁻¹ ∝ t^−η)
 // for every chain kind × precompression × kick, each an ensemble (transport_study.hpp).
-// Homogeneous chains are deterministic, so they run one realization whatever R is.
+// Homogeneous chains are deterministic, so they run one realization whatever R is. Chains beyond
+// the paper's kinds (k bead types, polydisperse radii) join the study as named bead distributions.
 #include <functional>
 #include <ostream>
 #include <string>
@@ -11,8 +12,16 @@
 
 namespace granular {
 
+/// A chain of the study drawn from a bead distribution (k types or polydisperse radii), under its
+/// own name: the `disorder` column of the outputs and the column of the tables.
+struct BeadChain {
+  std::string name;
+  BeadDistribution beads;
+};
+
 struct ExponentTableConfig {
   std::vector<Disorder> chains{Disorder::homogeneous, Disorder::anderson, Disorder::rdm1, Disorder::rdm2};
+  std::vector<BeadChain> bead_chains;  ///< after `chains`, with R realizations each (ξ, q, R1 unused)
   std::vector<double> precompressions{10, 0.5, 0.1, 0.01, 0};  ///< F0 [N]
   std::vector<Kick> kicks{Kick::displacement, Kick::velocity};
   TransportCase base;                                       ///< everything else (N, T, τ, ξ, q, R, seed, …)
@@ -24,7 +33,19 @@ struct ExponentTableConfig {
 struct ExponentCell {
   TransportCase definition;
   TransportSummary summary;
+  std::string chain{};  ///< its chain's name; empty: the name of definition.disorder
 };
+
+/// The chains' names in table order: `chains` (h, A, RDM1, RDM2), then the bead chains'.
+std::vector<std::string> chain_names(const ExponentTableConfig& config);
+
+/// The name of a cell's chain (ExponentCell::chain, else its disorder's).
+std::string chain_name(const ExponentCell& cell);
+
+/// Throws InvalidInput naming `chains` for no chain at all, `chain_name` for a bead chain's name
+/// that is empty, not CSV-safe or taken (by a disorder kind or another bead chain), or the field
+/// of a bad distribution.
+void validate(const ExponentTableConfig& config);
 
 struct ExponentRunOptions {
   int threads = 0;
@@ -37,8 +58,8 @@ struct ExponentRunOptions {
   bool skip_failed = false;           ///< see RunOptions::skip_failed
 };
 
-/// The cases in table order (kick-major, then F0, then chain); with automatic_length each sized
-/// (N, the centre kick, the centred draw) by automatic_chain_length.
+/// The cases in table order (kick-major, then F0, then chain as chain_names gives them); with
+/// automatic_length each sized (N, the centre kick, the centred draw) by automatic_chain_length.
 std::vector<TransportCase> exponent_cases(const ExponentTableConfig& config);
 
 /// Runs every case; under mpirun only rank 0 gets filled summaries. Memory: one case's
@@ -50,11 +71,26 @@ std::vector<ExponentCell> run_exponent_table(const ExponentTableConfig& config, 
 /// power law: the value is the mean L_d over the fit window).
 std::string cell_text(const ExponentReport& report);
 
-/// Markdown: for each kick, a table of γ (about the cells' m̃2 centre) and one of η.
+/// X1(T) of an ensemble run with the tangent map (TransportSummary::mle at the last sample): the
+/// ensemble mean [1/s], its standard error, and the spread of the realizations' X1(T) (their sample
+/// standard deviation, the standard error times √R). Throws InvalidInput naming `lyapunov` for a
+/// run without the tangent map.
+struct MleAtEnd {
+  double mean = 0, standard_error = 0, spread = 0;
+};
+MleAtEnd mle_at_end(const TransportSummary& summary);
+/// {X1_at_T_per_s, standard_error_per_s, spread_per_s}: what a case's JSON says.
+nlohmann::json to_json(const MleAtEnd& mle);
+
+/// Markdown: for each kick, a table of γ (about the cells' m̃2 centre) and one of η (and, with the
+/// tangent map, one of X1(T)).
 std::string markdown_tables(const std::vector<ExponentCell>& cells, const ExponentTableConfig& config);
 
 /// PREFIX.csv: one row per case, both centres' γ (shown, fit, mean L_d, spreads, realization
-/// errors, star) and η. PREFIX-curves.csv: the mean curves. PREFIX-profiles.csv: ⟨E_n(T)⟩.
+/// errors, star) and η; with the tangent map (any cell's summary has `mle`), three more columns:
+/// mle (the ensemble mean of X1(T) [1/s]), mle_real_err (its standard error over realizations)
+/// and mle_sd (their spread: the sample standard deviation of X1(T)). PREFIX-curves.csv: the mean
+/// curves (and then mle, mle_se: ⟨X1(t)⟩ and its standard error). PREFIX-profiles.csv: ⟨E_n(T)⟩.
 void write_exponents_csv(std::ostream& out, const std::vector<ExponentCell>& cells);
 void write_curves_csv(std::ostream& out, const std::vector<ExponentCell>& cells);
 void write_profiles_csv(std::ostream& out, const std::vector<ExponentCell>& cells);

@@ -6,6 +6,7 @@
 #include <map>
 #include <utility>
 
+#include "granular/dynamics/initial_conditions.hpp"
 #include "granular/dynamics/observables.hpp"
 #include "granular/error.hpp"
 #include "granular/model/disorder.hpp"
@@ -18,6 +19,32 @@ using Matrix = std::array<double, 4>;  // row-major 2×2 on (x, v/ω)
 
 Matrix times(const Matrix& a, const Matrix& b) {
   return {a[0] * b[0] + a[1] * b[2], a[0] * b[1] + a[1] * b[3], a[2] * b[0] + a[3] * b[2], a[2] * b[1] + a[3] * b[3]};
+}
+
+/// The radii whose arrangements bound a random chain of `c`: its two types (those the disorder
+/// places), the k types of a bead distribution, or for polydisperse radii a geometric grid of 9
+/// from the smallest to the largest (a truncated normal: mean + 8 sd, which no bead of any
+/// realization passes with probability above ~1e-15).
+std::vector<double> probe_radii(const TransportCase& c) {
+  std::vector<double> radii;
+  if (c.beads && c.beads->kind == BeadDistribution::Kind::types) {
+    for (std::size_t t = 0; t < c.beads->radii.size(); ++t)
+      if (c.beads->probabilities[t] > 0) radii.push_back(c.beads->radii[t]);
+    return radii;
+  }
+  if (c.beads) {
+    const bool uniform = c.beads->kind == BeadDistribution::Kind::uniform;
+    const double low = uniform ? c.beads->low : c.beads->minimum;
+    const double high = uniform ? c.beads->high : c.beads->mean + 8 * c.beads->sd;
+    const int points = high > low ? 9 : 1;
+    for (int i = 0; i < points; ++i)
+      radii.push_back(i == points - 1 ? high : low * std::pow(high / low, static_cast<double>(i) / (points - 1)));
+    return radii;
+  }
+  const bool both = c.disorder == Disorder::rdm2 || (c.disorder != Disorder::homogeneous && c.q > 0 && c.q < 1);
+  if (c.disorder == Disorder::homogeneous || both || c.q == 1) radii.push_back(c.r1);
+  if (both || (c.disorder != Disorder::homogeneous && c.q == 0)) radii.push_back(c.xi * c.r1);
+  return radii;
 }
 
 }  // namespace
@@ -100,29 +127,31 @@ TimeStepLimit time_step_limit(const TransportCase& c, const Chain* chain) {
   if (chain) {
     chains.push_back(*chain);
   } else {
-    // Every local arrangement of the types the disorder can place: three beads between walls
-    // hold every neighbourhood of a bead (inside a chain, or next to a wall).
-    std::vector<int> types;
-    const bool both = c.disorder == Disorder::rdm2 || (c.disorder != Disorder::homogeneous && c.q > 0 && c.q < 1);
-    if (c.disorder == Disorder::homogeneous || both || c.q == 1) types.push_back(1);
-    if (both || (c.disorder != Disorder::homogeneous && c.q == 0)) types.push_back(2);
-    for (int a : types)
-      for (int b : types)
-        for (int d : types) {
-          std::vector<double> radii;
-          for (int t : {a, b, d}) radii.push_back(t == 1 ? c.r1 : c.xi * c.r1);
-          chains.push_back(make_chain(radii, c.precompression));
-        }
+    // Every local arrangement of the radii the chain can hold: three beads between walls hold
+    // every neighbourhood of a bead (inside a chain, or next to a wall).
+    const std::vector<double> radii = probe_radii(c);
+    for (double a : radii)
+      for (double b : radii)
+        for (double d : radii) chains.push_back(make_chain({a, b, d}, c.precompression));
   }
-  double energy = 0;  // the largest kick energy: at any bead of any arrangement
+  // The largest kick energy: at any bead of any arrangement. A mode of a chain not yet drawn has
+  // its energy given, or bounded from α: the shape u = α w/max|w| moves every bond by at most 2α,
+  // and each bond's excess energy at ±2α is at most that of a displacement kick ±2α of a bead
+  // beside it (the other bond's share is ≥ 0), so H0 ≤ (N + 1) max φ(±2α) over every arrangement.
+  const bool unknown_mode = c.kick == Kick::mode && !chain;
+  double energy = unknown_mode ? c.mode.energy : 0, bond = 0;
   for (const Chain& ch : chains) {
     const ForceLaw law = make_force_law(c.dynamics.force_law, ch);
     for (std::size_t site = 0; site < ch.size(); ++site) {
       if (chain && site != c.site) continue;
       probe.site = site;
-      energy = std::max(energy, total_energy(law, ch, kick(probe, ch).initial));
+      if (!unknown_mode) energy = std::max(energy, total_energy(law, ch, kick(probe, ch).initial));
+      else if (c.mode.energy == 0)
+        for (double sign : {1.0, -1.0})
+          bond = std::max(bond, total_energy(law, ch, displacement_kick(ch, site, sign * 2 * c.alpha)));
     }
   }
+  if (unknown_mode && c.mode.energy == 0) energy = static_cast<double>(c.n + 1) * bond;
   for (const Chain& ch : chains)
     limit.omega_max =
         std::max(limit.omega_max, highest_frequency_bound(make_force_law(c.dynamics.force_law, ch), ch, energy));

@@ -61,6 +61,10 @@ void validate(const TransportCase& c) {
     throw InvalidInput("t_star", " " + format_number(c.criterion.t_start) + " s: must be finite and >= 0");
   if (c.fit && c.bootstrap.resamples < 2) throw InvalidInput("bootstrap", ": need at least 2 resamples");
   if (c.kick == Kick::mode) validate(mode_of(c), c.n);
+  if (c.kick == Kick::mode && !(c.precompression > 0))  // found before any run, not in realization 0
+    throw InvalidInput("precompression", " " + format_number(c.precompression) +
+                                             ": a mode kick needs F0 > 0 (the sonic vacuum has no "
+                                             "linear modes)");
   if (c.beads) validate(*c.beads);
   const bool uses_alpha = c.kick == Kick::displacement || c.match_beta || (c.kick == Kick::mode && c.mode.energy == 0);
   if (uses_alpha && (!std::isfinite(c.alpha) || c.alpha == 0))
