@@ -537,6 +537,7 @@ void bind_dynamics(py::module_& m) {
             one["exponents"] = {{"gamma_site", to_json(c.summary.exponents->gamma_site)},
                                 {"gamma_centroid", to_json(c.summary.exponents->gamma_centroid)},
                                 {"eta", to_json(c.summary.exponents->eta)}};
+          one["chain"] = chain_name(c);  // as the exponents tool names it
           described.push_back(one);
         }
         std::string chain_list, kick_list;
