@@ -19,6 +19,7 @@
 #include "granular/study/exponent_table.hpp"
 #include "granular/study/paper_comparison.hpp"
 #include "granular/study/spreading_files.hpp"
+#include "granular/study/scheme_choice.hpp"
 #include "granular/study/time_step_rule.hpp"
 #include "granular/study/transport_choices.hpp"
 #include "granular/study/transport_study.hpp"
@@ -61,7 +62,7 @@ void apply(const DynamicsKeywords& k, TransportCase& c) {
   choices.centre = k.centre;
   choices.duration = k.T;
   choices.time_step = k.dt.is_none() ? 1e-6 : finite(k.dt.cast<double>(), "dt");
-  choices.integrator = k.integrator;
+  choices.integrator = k.integrator == "auto" ? "saba2c" : k.integrator;  // 'auto': settled with the step
   choices.force_law = k.force_law;
   choices.samples = static_cast<long long>(checked_size(k.samples, "samples", 2, 100000000));
   choices.sampling = k.sampling;
@@ -100,7 +101,9 @@ const char* dynamics_doc =
     "    T: duration [s], a whole number of dt; dt: time step tau [s]; None: 1 us, or 1 us/k where the stability "
     "rule tau <= h*/omega_max needs it (a dt past that limit is a ValueError naming the largest stable one; the "
     "rule and its numbers are in metadata['time_step_rule'])\n"
-    "    integrator: 'saba2c' | 'saba2' | 'aba864' | 'srkn14a' | 'reference'; force_law: 'hertz' | 'fpu' | 'linear'\n"
+    "    integrator: 'saba2c' | 'saba2' | 'aba864' | 'srkn14a' | 'reference' | 'auto' (the cheapest scheme and step "
+    "keeping the energy error at SABA2C's at 1 us: SRKN14a at 5 us where no contact can open, else SABA2C; no dt "
+    "with it; the choice in metadata['time_step_rule']['integrator_choice']); force_law: 'hertz' | 'fpu' | 'linear'\n"
     "    samples, sampling: sample times outside the fit window ('log': tau..T, 'uniform': 0..T)\n"
     "    fit: (start, stop) [s] of gamma (m2 ~ t^gamma) and eta (P^-1 ~ t^-eta), sampled every fit_step [s] inside\n"
     "    t_star, kappa: 'not a power law' when |L_d - gamma| >= kappa after t_star [s] (then the mean L_d is shown)\n"
@@ -214,7 +217,7 @@ void bind_dynamics(py::module_& m) {
         // --disorder), of this very chain otherwise (as the tool's --config/--radii).
         const bool named =
             described.contains("disorder") && described["disorder"] != "diatomic" && !described.contains("beads");
-        const nlohmann::json step_rule = settle_time_step(c, !dt.is_none(), named ? nullptr : &chain.chain);
+        const nlohmann::json step_rule = settle_scheme_and_step(c, integrator == "auto", !dt.is_none(), named ? nullptr : &chain.chain);
         const KickedChain kicked = kick(c, chain.chain);
 
         SpreadingResult r;
@@ -358,7 +361,7 @@ void bind_dynamics(py::module_& m) {
         apply(k, c);
         c.fit = c.fit_end <= c.dynamics.duration * (1 + 1e-12);
         validate(c);
-        const nlohmann::json step_rule = settle_time_step(c, !dt.is_none());
+        const nlohmann::json step_rule = settle_scheme_and_step(c, integrator == "auto", !dt.is_none());
         const int thread_request = static_cast<int>(checked_size(threads, "threads", 0, 4096));
         const std::string log = checkpoint.is_none() ? std::string() : py::str(checkpoint).cast<std::string>();
         if (resume && log.empty()) bad_value("resume", ": needs checkpoint= (the file of the interrupted run)");
@@ -502,8 +505,8 @@ void bind_dynamics(py::module_& m) {
         apply(k, base);
         auto cases = exponent_cases(config);
         for (const auto& c : cases) validate(c);
-        const nlohmann::json step_rule = settle_time_step(cases, !dt.is_none());
-        base.dynamics.time_step = cases.front().dynamics.time_step;
+        const nlohmann::json step_rule = settle_scheme_and_step(cases, integrator == "auto", !dt.is_none());
+        base.dynamics = cases.front().dynamics;  // τ and scheme as settled
         std::size_t total = 0;
         for (const auto& c : cases) total += c.realizations;
         const int thread_request = static_cast<int>(checked_size(threads, "threads", 0, 4096));

@@ -157,3 +157,21 @@ def test_default_time_step_follows_the_stability_rule():
     assert rule["time_step_s"] < 1e-6 and rule["time_step_s"] <= rule["max_time_step_s"] / 6
     assert small.metadata["parameters"]["dt_s"] == rule["time_step_s"]
     assert small.max_energy_error < 1e-3
+
+
+def test_automatic_integrator_equals_the_spreading_tool(tools):
+    """integrator='auto' is the tools' --integrator auto: SRKN14a at 5 us where no contact can open, SABA2C in
+    the sonic vacuum; identical numbers and the choice in the metadata; dt with it is refused."""
+    csv, meta = tools.run("spreading", "--disorder", "A", "--N", "201", "--F0", "10", "--integrator", "auto",
+                          *SHORT_FLAGS, output="auto")
+    run = gr.spreading(gr.anderson(N=201, F0=10), integrator="auto", **SHORT)
+    assert run.metadata["time_step_rule"]["integrator_choice"]["integrator"] == "srkn14a"
+    assert run.metadata["parameters"]["dt_s"] == 5e-6
+    assert_identical(run.m2, csv["m2"])
+    assert_identical(run.ipr, csv["ipr"])
+    assert without_process_keys(run.metadata) == without_process_keys(meta)
+    vacuum = gr.spreading(gr.anderson(N=201, F0=0), integrator="auto", **SHORT)
+    assert vacuum.metadata["time_step_rule"]["integrator_choice"]["integrator"] == "saba2c"
+    assert vacuum.metadata["parameters"]["dt_s"] == 1e-6
+    with pytest.raises(ValueError, match="dt"):
+        gr.spreading(gr.anderson(N=201, F0=10), integrator="auto", dt=1e-6, **SHORT)

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "granular/dynamics/observables.hpp"
+#include "granular/error.hpp"
 #include "granular/model/chain.hpp"
 #include "granular/study/time_step_rule.hpp"
 
@@ -57,6 +58,39 @@ TEST(SchemeChoice, TheBenchmarkChainKeepsFiveMicroseconds) {
   EXPECT_NEAR(omega, 2.9355e5, 0.0001e5);
   EXPECT_EQ(srkn14a_default_step(omega), 5e-6);
   EXPECT_EQ(srkn14a_default_step(2.5 * omega), 5e-6 / 3);
+}
+
+// The study-level choice (what `--integrator auto` and Python's integrator='auto' call): SRKN14a at
+// 5 µs on the precompressed benchmark chain, SABA2C at its stability-rule step in the sonic
+// vacuum, one scheme for every case of a study (the dearest case decides), a given τ refused.
+TEST(SchemeChoice, SettlesOneSchemeAndStepForAStudy) {
+  TransportCase closed;  // A, F0 = 10 N, displacement kick of 0.1 µm
+  TransportCase open = closed;
+  open.precompression = 0;
+  std::vector<TransportCase> one{closed};
+  const nlohmann::json rule = settle_scheme_and_step(one, true, false);
+  EXPECT_EQ(one.front().dynamics.integrator.name(), "srkn14a");
+  EXPECT_EQ(one.front().dynamics.time_step, 5e-6);
+  EXPECT_EQ(rule["integrator_choice"]["integrator"], "srkn14a");
+  EXPECT_EQ(rule["time_step_given"], false);
+  std::vector<TransportCase> both{closed, open};
+  settle_scheme_and_step(both, true, false);
+  for (const TransportCase& c : both) {
+    EXPECT_EQ(c.dynamics.integrator.name(), "saba2c");
+    EXPECT_EQ(c.dynamics.time_step, 1e-6);
+  }
+  std::vector<TransportCase> given{closed};
+  try {
+    settle_scheme_and_step(given, true, true);
+    ADD_FAILURE() << "a given time step with the automatic choice must be refused";
+  } catch (const InvalidInput& e) {
+    EXPECT_EQ(e.parameter(), "dt");
+  }
+  // Not automatic: the time-step rule alone, the scheme untouched.
+  std::vector<TransportCase> plain{closed};
+  const nlohmann::json same = settle_scheme_and_step(plain, false, false);
+  EXPECT_EQ(plain.front().dynamics.integrator.name(), "saba2c");
+  EXPECT_FALSE(same.contains("integrator_choice"));
 }
 
 }  // namespace

@@ -92,39 +92,17 @@ inline void apply(const DynamicsOptions& o, TransportCase& c) {
   apply(o.beyond, c.dynamics);
 }
 
-/// granular::settle_time_step (time_step_rule.hpp), settling `--integrator auto` first (scheme_choice.hpp): SRKN14a at
-/// 5 µs where no contact can open and it is cheaper than SABA2C at its default step, else that; one scheme for all.
+/// granular::settle_scheme_and_step (scheme_choice.hpp): the time step, and with `--integrator auto`
+/// the scheme first (SRKN14a at 5 µs where no contact can open and it is cheaper, else SABA2C).
 inline nlohmann::json settle_time_step(std::vector<TransportCase>& cases, const DynamicsOptions& o, bool dt_given,
                                        const Chain* chain = nullptr) {
-  if (o.choices.integrator != "auto" || cases.empty()) return granular::settle_time_step(cases, dt_given, chain);
-  if (dt_given) throw InvalidInput("--integrator auto: chooses the time step too; drop --dt (or name a scheme)");
-  std::vector<TransportCase> trial = cases;  // SABA2C at its default step
-  for (TransportCase& c : trial) c.dynamics.integrator = saba2c();
-  granular::settle_time_step(trial, false, chain);
-  double omega_max = 0;
-  bool closed = true;
-  for (const TransportCase& c : trial) {
-    omega_max = std::max(omega_max, time_step_limit(c, chain).omega_max);
-    closed = closed && bonds_stay_closed(c);
-  }
-  const SchemeChoice choice = choose_scheme(trial.front().dynamics.time_step, srkn14a_default_step(omega_max), closed);
-  for (TransportCase& c : cases) {
-    c.dynamics.integrator = parse_integrator(choice.integrator);
-    c.dynamics.time_step = choice.time_step;
-  }
-  nlohmann::json rule = granular::settle_time_step(cases, true, chain);  // the chosen τ, checked against stability
-  rule["time_step_given"] = false;
-  rule["integrator_choice"] = to_json(choice);
-  return rule;
+  return settle_scheme_and_step(cases, o.choices.integrator == "auto", dt_given, chain);
 }
 
 /// The same for one case.
 inline nlohmann::json settle_time_step(TransportCase& c, const DynamicsOptions& o, bool dt_given,
                                        const Chain* chain = nullptr) {
-  std::vector<TransportCase> one{c};
-  const nlohmann::json rule = settle_time_step(one, o, dt_given, chain);
-  c = one.front();
-  return rule;
+  return settle_scheme_and_step(c, o.choices.integrator == "auto", dt_given, chain);
 }
 
 /// The chain of a case from the single-chain options (the chain built from them has `beads`).

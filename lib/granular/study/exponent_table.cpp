@@ -127,57 +127,58 @@ nlohmann::json to_json(const MleAtEnd& m) {
   return {{"X1_at_T_per_s", m.mean}, {"standard_error_per_s", m.standard_error}, {"spread_per_s", m.spread}};
 }
 
+namespace {
+
+/// One markdown table per call: a title, then a row per F0 and a column per chain, each cell
+/// the text `cell` gives for that case ("—" where the study has no such case).
+template <class CellText>
+void append_table(std::string& out, const std::string& title, Kick kick, const std::vector<ExponentCell>& cells,
+                  const ExponentTableConfig& config, CellText cell) {
+  const std::vector<std::string> names = chain_names(config);
+  out += "\n" + title + "\n\n| F0 [N] |";
+  for (const std::string& name : names) out.append(" ").append(name).append(" |");
+  out += "\n|---|";
+  for (std::size_t i = 0; i < names.size(); ++i) out += "---|";
+  out += "\n";
+  for (double f0 : config.precompressions) {
+    out.append("| ").append(format_number(f0)).append(" |");
+    for (const std::string& name : names)
+      for (const auto& c : cells)
+        if (c.definition.kick == kick && c.definition.precompression == f0 && chain_name(c) == name)
+          out.append(" ").append(cell(c)).append(" |");
+    out += "\n";
+  }
+}
+
+}  // namespace
+
 std::string markdown_tables(const std::vector<ExponentCell>& cells, const ExponentTableConfig& config) {
   std::string out;
   const std::string centre = to_string(config.base.centre);
   for (Kick kick : config.kicks)
     for (bool gamma : {true, false}) {
-      out += "\n";
-      out += gamma ? "γ (m̃2 ∝ t^γ, m̃2 about the " + centre + ")" : std::string("η (P⁻¹ ∝ t^−η)");
-      out += ", " + to_string(kick);
-      out +=
+      const std::string title =
+          (gamma ? "γ (m̃2 ∝ t^γ, m̃2 about the " + centre + ")" : std::string("η (P⁻¹ ∝ t^−η)")) + ", " +
+          to_string(kick) +
           " kick (value ± spread over the fit sub-windows (± realization bootstrap); * = not a power law: "
-          "|L_d − fit| ≥ κ after t*, the value is the mean L_d over the fit window)\n\n| F0 [N] |";
-      const std::vector<std::string> names = chain_names(config);
-      for (const std::string& name : names) out.append(" ").append(name).append(" |");
-      out += "\n|---|";
-      for (std::size_t i = 0; i < names.size(); ++i) out += "---|";
-      out += "\n";
-      for (double f0 : config.precompressions) {
-        out.append("| ").append(format_number(f0)).append(" |");
-        for (const std::string& name : names)
-          for (const auto& c : cells)
-            if (c.definition.kick == kick && c.definition.precompression == f0 && chain_name(c) == name) {
-              const auto& e = c.summary.exponents;
-              out.append(" ").append(e ? cell_text(gamma ? e->gamma(c.definition.centre) : e->eta) : "—").append(" |");
-            }
-        out += "\n";
-      }
+          "|L_d − fit| ≥ κ after t*, the value is the mean L_d over the fit window)";
+      append_table(out, title, kick, cells, config, [gamma](const ExponentCell& c) -> std::string {
+        const auto& e = c.summary.exponents;
+        return e ? cell_text(gamma ? e->gamma(c.definition.centre) : e->eta) : "—";
+      });
     }
   if (!any_mle(cells)) return out;
-  const std::vector<std::string> names = chain_names(config);
   for (Kick kick : config.kicks) {
-    out += "\nX1(T) [1/s], " + to_string(kick) +
-           " kick (maximal Lyapunov exponent at T by the tangent map: ensemble "
-           "mean ± its standard error; spread over realizations in PREFIX.csv)\n\n| F0 [N] |";
-    for (const std::string& name : names) out.append(" ").append(name).append(" |");
-    out += "\n|---|";
-    for (std::size_t i = 0; i < names.size(); ++i) out += "---|";
-    out += "\n";
-    for (double f0 : config.precompressions) {
-      out.append("| ").append(format_number(f0)).append(" |");
-      for (const std::string& name : names)
-        for (const auto& c : cells)
-          if (c.definition.kick == kick && c.definition.precompression == f0 && chain_name(c) == name) {
-            char text[64] = "—";
-            if (!c.summary.mle.mean.empty()) {
-              const MleAtEnd m = mle_at_end(c.summary);
-              std::snprintf(text, sizeof text, "%.4g ± %.2g", m.mean, m.standard_error);
-            }
-            out.append(" ").append(text).append(" |");
-          }
-      out += "\n";
-    }
+    const std::string title = "X1(T) [1/s], " + to_string(kick) +
+                              " kick (maximal Lyapunov exponent at T by the tangent map: ensemble "
+                              "mean ± its standard error; spread over realizations in PREFIX.csv)";
+    append_table(out, title, kick, cells, config, [](const ExponentCell& c) -> std::string {
+      if (c.summary.mle.mean.empty()) return "—";
+      const MleAtEnd m = mle_at_end(c.summary);
+      char text[64];
+      std::snprintf(text, sizeof text, "%.4g ± %.2g", m.mean, m.standard_error);
+      return text;
+    });
   }
   return out;
 }

@@ -5,8 +5,11 @@
 #include <limits>
 
 #include "granular/dynamics/force_law.hpp"
+#include "granular/dynamics/integrator.hpp"
 #include "granular/dynamics/observables.hpp"
+#include "granular/error.hpp"
 #include "granular/model/chain.hpp"
+#include "granular/study/time_step_rule.hpp"
 
 namespace granular {
 
@@ -55,6 +58,37 @@ nlohmann::json to_json(const SchemeChoice& choice) {
           {"time_step_s", choice.time_step},
           {"relative_cost", choice.relative_cost},
           {"bonds_stay_closed", choice.bonds_stay_closed}};
+}
+
+nlohmann::json settle_scheme_and_step(std::vector<TransportCase>& cases, bool automatic, bool time_step_given,
+                                      const Chain* chain) {
+  if (!automatic || cases.empty()) return settle_time_step(cases, time_step_given, chain);
+  if (time_step_given) throw InvalidInput("dt", ": integrator auto chooses the time step too; leave it out or name a scheme");
+  std::vector<TransportCase> trial = cases;  // SABA2C at its default step
+  for (TransportCase& c : trial) c.dynamics.integrator = saba2c();
+  settle_time_step(trial, false, chain);
+  double omega_max = 0;
+  bool closed = true;
+  for (const TransportCase& c : trial) {
+    omega_max = std::max(omega_max, time_step_limit(c, chain).omega_max);
+    closed = closed && bonds_stay_closed(c);
+  }
+  const SchemeChoice choice = choose_scheme(trial.front().dynamics.time_step, srkn14a_default_step(omega_max), closed);
+  for (TransportCase& c : cases) {
+    c.dynamics.integrator = parse_integrator(choice.integrator);
+    c.dynamics.time_step = choice.time_step;
+  }
+  nlohmann::json rule = settle_time_step(cases, true, chain);  // the chosen τ, checked against stability
+  rule["time_step_given"] = false;
+  rule["integrator_choice"] = to_json(choice);
+  return rule;
+}
+
+nlohmann::json settle_scheme_and_step(TransportCase& c, bool automatic, bool time_step_given, const Chain* chain) {
+  std::vector<TransportCase> one{c};
+  nlohmann::json rule = settle_scheme_and_step(one, automatic, time_step_given, chain);
+  c = one.front();
+  return rule;
 }
 
 }  // namespace granular
