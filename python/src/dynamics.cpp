@@ -18,8 +18,8 @@
 #include "granular/parallel/mpi_context.hpp"
 #include "granular/study/exponent_table.hpp"
 #include "granular/study/paper_comparison.hpp"
-#include "granular/study/spreading_files.hpp"
 #include "granular/study/scheme_choice.hpp"
+#include "granular/study/spreading_files.hpp"
 #include "granular/study/time_step_rule.hpp"
 #include "granular/study/transport_choices.hpp"
 #include "granular/study/transport_study.hpp"
@@ -217,7 +217,8 @@ void bind_dynamics(py::module_& m) {
         // --disorder), of this very chain otherwise (as the tool's --config/--radii).
         const bool named =
             described.contains("disorder") && described["disorder"] != "diatomic" && !described.contains("beads");
-        const nlohmann::json step_rule = settle_scheme_and_step(c, integrator == "auto", !dt.is_none(), named ? nullptr : &chain.chain);
+        const nlohmann::json step_rule =
+            settle_scheme_and_step(c, integrator == "auto", !dt.is_none(), named ? nullptr : &chain.chain);
         const KickedChain kicked = kick(c, chain.chain);
 
         SpreadingResult r;

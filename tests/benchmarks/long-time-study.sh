@@ -11,7 +11,9 @@
 # Fit window and t* are the paper's [4, 10] ms and 4 ms scaled by ten; the fit samples are spaced
 # 0.1 ms (the paper's 600 samples). Results: OUTPUT_DIR/<ic>-<F0>-<chain>.{csv,json,...} and
 # OUTPUT_DIR/times.csv (case, wall_s, cpu_s, max_rss_kB); an interrupted run continues where it
-# stopped (finished cases are skipped, the running one resumes from its checkpoint).
+# stopped (finished cases are skipped, the running one resumes from its checkpoint, its time so far
+# counted). Realizations whose energy error crosses the guard are left out (--skip-failed) and
+# listed in each case's JSON with the command that replays them.
 # `python3 tools/plot/long_times.py OUTPUT_DIR` merges them into tables and figures.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
@@ -35,19 +37,26 @@ mkdir -p "$out"
 T=0.1 fit=4e-2:1e-1 tstar=4e-2 fitstep=1e-4
 if ((quick)); then T=2e-3 fit=8e-4:2e-3 tstar=8e-4 fitstep=1e-5 realizations=4; fi
 common=(--T "$T" --N auto --integrator auto --fit "$fit" --t-star "$tstar" --fit-step "$fitstep"
-        --realizations "$realizations" --threads 0 --quiet)
+        --realizations "$realizations" --threads 0 --quiet --skip-failed)
 times=$out/times.csv
 [ -f "$times" ] || echo "case,wall_s,cpu_s,max_rss_kB" >"$times"
 
 run_case() {  # name, then exponents options
   local name=$1; shift
   if grep -q "^$name," "$times"; then return; fi
-  local resume=()
+  local resume=() attempt=1
   compgen -G "$out/$name.checkpoint*" >/dev/null && resume=(--resume)
-  /usr/bin/time -f "%e %U %S %M" -o "$out/$name.time" \
+  while [ -f "$out/$name.time.$attempt" ]; do attempt=$((attempt + 1)); done
+  # An interrupted attempt's time is kept (.time.1, .time.2, ...) and added to the case's total.
+  /usr/bin/time -f "%e %U %S %M" -o "$out/$name.time.$attempt" \
     "$exponents" "${common[@]}" "$@" "${resume[@]}" --output "$out/$name" >"$out/$name.md"
-  read -r wall user sys rss <"$out/$name.time"
-  echo "$name,$wall,$(echo "$user + $sys" | bc),$rss" >>"$times"
+  local wall=0 cpu=0 rss=0 w u s m
+  for f in "$out/$name".time.*; do
+    read -r w u s m < <(grep -v '^Command' "$f")
+    wall=$(echo "$wall + $w" | bc) cpu=$(echo "$cpu + $u + $s" | bc)
+    ((m > rss)) && rss=$m
+  done
+  echo "$name,$wall,$cpu,$rss" >>"$times"
   echo "$(date -u +%H:%M:%S) $name: ${wall} s wall" >&2
 }
 

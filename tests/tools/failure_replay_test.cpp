@@ -118,5 +118,24 @@ TEST(FailureReplay, TheReplayCommandReproducesTheFailureAndSkipFailedGoesOn) {
   std::filesystem::remove_all(dir);
 }
 
+// With --N auto the kicked bead is the centre by rule (an explicit --site is refused there), so
+// the printed replay must leave --site out and still reproduce the failure. Found when a 100 ms
+// study stopped on its energy guard and the printed command was refused.
+TEST(FailureReplay, TheReplayCommandOfAnAutomaticallySizedChainRuns) {
+  const std::string dir = scratch_folder("replay-auto");
+  const ToolResult stopped =
+      run_tool("spreading", "--disorder A --N auto --F0 0.01 --ic velocity --seed 3 " + dynamics +
+                                " --realizations 2 --threads 1 --max-energy-error 1e-12 --output " + dir + "/ens");
+  ASSERT_EQ(stopped.exit_code, 3) << stopped.err;
+  const std::string replay = line_after(stopped.err, "replay it alone: ");
+  ASSERT_NE(replay.find("--N auto"), std::string::npos) << stopped.err;
+  EXPECT_EQ(replay.find("--site"), std::string::npos) << replay;
+  const ToolResult replayed = run_printed(dir, replay);
+  EXPECT_EQ(replayed.exit_code, 3) << replay << "\n" << replayed.err;
+  EXPECT_EQ(line_after(replayed.err, "numerical failure: "), line_after(stopped.err, "of seed 3: ")) << replay << "\n"
+                                                                                                     << replayed.err;
+  std::filesystem::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace granular::testing

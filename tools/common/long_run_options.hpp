@@ -71,7 +71,7 @@ inline std::string replay_command(const TransportCase& c, std::uint64_t r, const
   add("--ic", to_string(c.kick));
   add("--alpha", number(c.alpha));
   if (c.kick == Kick::velocity) add("--beta", c.match_beta ? "match" : number(c.beta));
-  add("--site", std::to_string(c.site + 1));
+  if (!c.centred_draw) add("--site", std::to_string(c.site + 1));  // --N auto kicks the centre by rule
   add("--centre", to_string(c.centre));
   add("--T", number(d.duration));
   add("--dt", number(d.time_step));

@@ -93,8 +93,8 @@ def main():
     total_cpu = sum(float(t["cpu_s"]) for t in times.values())
     by_case = {(c["ic"], float(c["F0_N"]), c["disorder"]): c for c in cases}
     print("| kick | F0 [N] | chain | N | scheme, τ | γ 10 ms | γ 100 ms | Δγ | η 10 ms | η 100 ms | Δη "
-          "| wall [s] | share |")
-    print("|---|---|---|---|---|---|---|---|---|---|---|---|---|")
+          "| real. (excl.) | max energy error | wall [s] | share |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
     for r in sorted(rows, key=lambda r: (r["ic"] != "displacement", -float(r["F0"]), ORDER.get(r["disorder"], 9))):
         k, c = key(r), by_case[key(r)]
         s = short.get(k)
@@ -105,6 +105,7 @@ def main():
         print(f"| {k[0]} | {k[1]:g} | {k[2]} | {c['N']} | {c['integrator']}, {c['dt_s'] * 1e6:g} µs "
               f"| {cell(s, 'gamma') if s else '—'} | {cell(r, 'gamma')} | {shift(s, r, 'gamma') if s else '—'} "
               f"| {cell(s, 'eta') if s else '—'} | {cell(r, 'eta')} | {shift(s, r, 'eta') if s else '—'} "
+              f"| {r['realizations']} ({len(c.get('failed_excluded', []))}) | {float(r['max_energy_error']):.1e} "
               f"| {wall_text} | {100 * wall / total_wall:.1f} %{' (all h)' if shared else ''} |")
     peak = max(float(t["max_rss_kB"]) for t in times.values()) / 1024
     print(f"\n{len(rows)} cases in {len(times)} runs: {total_wall:.0f} s wall "
