@@ -199,18 +199,18 @@ def test_damped_run_equals_the_spreading_tool(tools):
 
 def test_mle_and_deviation_vector_equal_the_spreading_tool(tools):
     """mle=True is --mle (column mle = X1(t)); deviation_samples=K is --deviation FILE --deviation-samples K."""
-    csv, meta = tools.run("spreading", "--disorder", "A", "--N", "101", "--seed", "2", "--mle", "--renormalize", "5",
+    csv, meta = tools.run("spreading", "--disorder", "A", "--N", "201", "--seed", "2", "--mle", "--renormalize", "5",
                           "--deviation", tools.path("w.csv"), "--deviation-samples", "11", *SHORT_FLAGS, output="mle")
-    run = gr.spreading(gr.anderson(N=101, seed=2), mle=True, renormalize=5, deviation_samples=11, **SHORT)
+    run = gr.spreading(gr.anderson(N=201, seed=2), mle=True, renormalize=5, deviation_samples=11, **SHORT)
     assert "mle" in csv and "dissipated" not in csv
     for key in ("t", "m2", "ipr", "energy_error", "m2_centroid", "mle"):
         assert_identical(run[key], csv[key])
     assert run.dissipated is None
     w = read_csv(tools.path("w.csv"))
     share = run.deviation["share"]
-    assert share.shape == (11, 101)
+    assert share.shape == (11, 201)
     assert_identical(share.ravel(), w["share"])  # the CSV is time-major
-    assert_identical(np.repeat(run.deviation["t"], 101), w["t"])
+    assert_identical(np.repeat(run.deviation["t"], 201), w["t"])
     assert_identical(np.tile(run.deviation["site"], 11), w["site"])
     np.testing.assert_allclose(share.sum(axis=1), 1, rtol=1e-12)
     assert run.metadata["parameters"]["lyapunov"]["renormalize_every"] == 5
@@ -224,9 +224,9 @@ def test_mle_and_deviation_vector_equal_the_spreading_tool(tools):
 ])
 def test_ensemble_beyond_the_paper_equals_the_spreading_tool(tools, flags, keywords):
     """transport with mle (the tool's ensemble mean X1(t) in column mle) or with damping."""
-    csv, meta = tools.run("spreading", "--disorder", "A", "--N", "121", "--realizations", "3", "--threads", "2",
+    csv, meta = tools.run("spreading", "--disorder", "A", "--N", "201", "--realizations", "3", "--threads", "2",
                           "--bootstrap", "50", *flags, *SHORT_FLAGS, output="ens")
-    t = gr.transport(disorder="A", N=121, realizations=3, threads=2, bootstrap=50, **keywords, **SHORT)
+    t = gr.transport(disorder="A", N=201, realizations=3, threads=2, bootstrap=50, **keywords, **SHORT)
     for key in ("t", "m2", "ipr", "energy_error", "m2_centroid"):
         assert_identical(t[key], csv[key])
     assert ("mle" in csv) == ("mle" in keywords)
