@@ -63,7 +63,8 @@ nlohmann::json to_json(const SchemeChoice& choice) {
 nlohmann::json settle_scheme_and_step(std::vector<TransportCase>& cases, bool automatic, bool time_step_given,
                                       const Chain* chain) {
   if (!automatic || cases.empty()) return settle_time_step(cases, time_step_given, chain);
-  if (time_step_given) throw InvalidInput("dt", ": integrator auto chooses the time step too; leave it out or name a scheme");
+  if (time_step_given)
+    throw InvalidInput("dt", ": integrator auto chooses the time step too; leave it out or name a scheme");
   std::vector<TransportCase> trial = cases;  // SABA2C at its default step
   for (TransportCase& c : trial) c.dynamics.integrator = saba2c();
   settle_time_step(trial, false, chain);
