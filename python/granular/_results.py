@@ -82,7 +82,10 @@ class SpreadingRun(Result):
     'exponents'; initial_energy [J]; final_state: dict u [m], v [m/s], energy [J], force [N] per bead
     at T; forces: dict t [s], site (from 1), force [N] (sites x times) or None; energy_map: dict t
     [s], site (first bead of each column, from 1), energy [J] (times x columns) or None;
-    spectral_density: dict freq_khz, g (normalized to max 1) or None; warnings; reached_walls,
+    spectral_density: dict freq_khz, g (normalized to max 1) or None; dissipated: energy removed by
+    the damping by t [J] (damping_time/kk_gamma; else None); mle: X1(t) [1/s] by the tangent map
+    (mle=True; else None); deviation: dict t [s], site (from 1), share (times x beads, the share of
+    the deviation vector's norm^2 on each bead; deviation_samples) or None; warnings; reached_walls,
     wall_energy, steps, seconds; metadata (the spreading tool's JSON).
     """
 
@@ -93,7 +96,8 @@ class Transport(Result):
     t [s]; m2, m2_se, m2_centroid, m2_centroid_se [beads^2]; ipr, ipr_se; energy_error,
     energy_error_se; profile: dict energy, energy_se [J] per bead at T (or None); gamma, gamma_err
     (sub-window spread), gamma_real_err (bootstrap over realizations), eta, eta_err, eta_real_err,
-    power_law, every report under 'exponents'; max_energy_error; reached_walls; realizations;
+    power_law, every report under 'exponents'; mle, mle_se: the mean X1(t) [1/s] over realizations
+    and its standard error (mle=True; else None); max_energy_error; reached_walls; realizations;
     warnings; metadata (the spreading tool's JSON).
     """
 
@@ -103,8 +107,9 @@ class ExponentTable(Result):
 
     table: the columns of PREFIX.csv as arrays, one entry per case (ic, F0, disorder, centre,
     gamma, gamma_err, gamma_real_err, gamma_star, ..., eta, ..., realizations, max_energy_error,
-    reached_walls); curves: one dict per case (ic, F0, disorder and arrays t, m2, m2_se,
-    m2_centroid, m2_centroid_se, ipr, ipr_se, energy_error); profiles: one dict per profiled case
+    reached_walls; with mle=True also mle, mle_real_err, mle_sd [1/s]); curves: one dict per case
+    (ic, F0, disorder and arrays t, m2, m2_se, m2_centroid, m2_centroid_se, ipr, ipr_se,
+    energy_error; with mle=True also mle, mle_se: <X1(t)> [1/s] and its standard error); profiles: one dict per profiled case
     (energy, energy_se per bead); markdown: the tool's tables; paper, paper_markdown: the comparison
     with the paper's Table I (compare_paper=True); metadata (the tool's JSON).
     """
@@ -113,8 +118,10 @@ class ExponentTable(Result):
         values = dict(values)
         values["table"] = read_csv_text(values.pop("table_csv"))
         curves = read_csv_text(values.pop("curves_csv"))
-        values["curves"] = _cases(curves, ["t", "m2", "m2_se", "m2_centroid", "m2_centroid_se", "ipr", "ipr_se",
-                                           "energy_error"])
+        fields = ["t", "m2", "m2_se", "m2_centroid", "m2_centroid_se", "ipr", "ipr_se", "energy_error"]
+        if "mle" in curves:  # the tangent map ran (mle=True)
+            fields += ["mle", "mle_se"]
+        values["curves"] = _cases(curves, fields)
         values["profiles"] = _cases(read_csv_text(values.pop("profiles_csv")), ["energy", "energy_se"])
         if "paper_csv" in values:
             values["paper"] = read_csv_text(values.pop("paper_csv"))

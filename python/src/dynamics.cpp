@@ -82,6 +82,27 @@ void apply(const DynamicsKeywords& k, TransportCase& c) {
   granular::apply(choices, c);
 }
 
+/// The keywords beyond the paper (issue 14), the tools' --damping-time, --kk-gamma, --mle,
+/// --renormalize and (spreading only) --deviation-samples.
+struct BeyondKeywords {
+  double damping_time, kk_gamma;
+  bool mle;
+  long long renormalize;
+  long long deviation_samples = 0;  // 0: none
+};
+
+/// Sets the dissipation and the tangent map of `d` as tool::apply(BeyondOptions) does; the library
+/// names `damping_time`, `kk_gamma` and `deviation_samples` itself.
+void apply(const BeyondKeywords& k, SpreadingConfig& d) {
+  d.damping = {k.damping_time, k.kk_gamma};
+  validate(d.damping);
+  d.lyapunov.enabled = k.mle;
+  d.lyapunov.renormalize_every = checked_size(k.renormalize, "renormalize", 1);
+  if (k.deviation_samples != 0 && !k.mle) bad_value("deviation_samples", ": needs mle=True");
+  d.deviation_samples = checked_size(k.deviation_samples, "deviation_samples", 0, 100000000);
+  if (d.deviation_samples == 1) bad_value("deviation_samples", " 1: 0 (none) or at least 2");
+}
+
 /// The keyword arguments of DynamicsKeywords, with the tools' defaults, in this order.
 #define GRANULAR_DYNAMICS_ARGS                                                                                      \
   py::arg("alpha") = 1e-7, py::arg("beta") = py::float_(paper_beta), py::arg("site") = py::none(),                  \
@@ -91,6 +112,10 @@ void apply(const DynamicsKeywords& k, TransportCase& c) {
   py::arg("kappa") = 0.1, py::arg("bootstrap") = 1000, py::arg("active_window") = true,                             \
   py::arg("window_threshold") = 1e-30, py::arg("reference_max_step") = 0.01e-6, py::arg("max_energy_error") = 1e-3, \
   py::arg("energy_guard") = "stop"
+
+/// The keyword arguments of BeyondKeywords shared by the three calls, with the tools' defaults.
+#define GRANULAR_BEYOND_ARGS \
+  py::arg("damping_time") = 0.0, py::arg("kk_gamma") = 0.0, py::arg("mle") = false, py::arg("renormalize") = 10
 
 const char* dynamics_doc =
     "    alpha: displacement kick [m]; beta: velocity kick [m/s] (the paper's 8e-3 for every F0) or 'match' (the "
@@ -112,6 +137,15 @@ const char* dynamics_doc =
     "    reference_max_step: largest step of the reference integrator [s] (0: none)\n"
     "    max_energy_error, energy_guard: relative energy error that stops the run ('stop': NumericalError) or is only "
     "reported ('warn'); 0 = unwatched\n";
+
+const char* beyond_doc =
+    "    damping_time: on-site viscous damping time tau_d [s], force -(m/tau_d) du/dt on each bead; 0 = none\n"
+    "    kk_gamma: Kuwabara-Kono contact damping gamma_KK [s], bond force A[d]^{3/2} + gamma_KK A [d]^{1/2} dd/dt "
+    "while in contact; 0 = none. With either, energy_error is |H + dissipated - H0|/H0 and the whole chain is "
+    "integrated\n"
+    "    mle: also the maximal Lyapunov exponent X1(t) [1/s] by the tangent map of the same scheme (conservative "
+    "runs only: not with damping or integrator='reference'); renormalize: steps between renormalizations of the "
+    "deviation vector (>= 1)\n";
 
 /// The exponents as the tools' JSON carries them: gamma, gamma_err, gamma_real_err, eta, eta_err,
 /// eta_real_err, power_law (all None without a fit), m2_centre and every report under "exponents".
@@ -155,7 +189,8 @@ void bind_dynamics(py::module_& m) {
          double reference_max_step, double max_energy_error, const std::string& energy_guard,
          const py::object& forces_at, long long force_samples, bool energy_map, long long map_samples,
          long long map_stride, bool spectral_density, long long spectrum_samples, const std::string& spectrum_of,
-         bool progress, long mode, double mode_khz, double energy) {
+         bool progress, long mode, double mode_khz, double energy, double damping_time, double kk_gamma, bool mle,
+         long long renormalize, long long deviation_samples) {
         const DynamicsKeywords k{alpha,
                                  beta,
                                  site,
@@ -192,6 +227,7 @@ void bind_dynamics(py::module_& m) {
         c.profile_realizations = 0;
         apply(k, c);
         SpreadingConfig& d = c.dynamics;
+        apply(BeyondKeywords{damping_time, kk_gamma, mle, renormalize, deviation_samples}, d);
         c.fit = c.fit_end <= d.duration * (1 + 1e-12);  // a window beyond T: no exponents
         if (!forces_at.is_none())
           for (double s : double_vector(forces_at, "forces_at")) {
@@ -257,6 +293,21 @@ void bind_dynamics(py::module_& m) {
         final_state["energy"] = to_numpy(std::move(r.final_energy));
         final_state["force"] = to_numpy(std::move(r.final_force));
         out["final_state"] = final_state;
+        // Beyond the paper: the columns `dissipated` and `mle` of the tool's CSV, and its --deviation file.
+        out["dissipated"] =
+            r.dissipated.empty() ? py::object(py::none()) : py::object(to_numpy(std::move(r.dissipated)));
+        out["mle"] = r.mle.empty() ? py::object(py::none()) : py::object(to_numpy(std::move(r.mle)));
+        out["deviation"] = py::none();
+        if (d.deviation_samples > 0) {
+          py::dict w;
+          const std::size_t rows = r.deviation_t.size(), n = c.n;
+          std::vector<long long> sites;
+          for (std::size_t j = 0; j < n; ++j) sites.push_back(static_cast<long long>(j + 1));
+          w["t"] = to_numpy(std::move(r.deviation_t));
+          w["site"] = to_numpy(std::move(sites));
+          w["share"] = to_numpy_2d(std::move(r.deviation), rows, n);
+          out["deviation"] = w;
+        }
         out["forces"] = py::none();
         if (!d.force_sites.empty()) {
           py::dict f;
@@ -302,13 +353,16 @@ void bind_dynamics(py::module_& m) {
       py::arg("forces_at") = py::none(), py::arg("force_samples") = 1000, py::arg("energy_map") = false,
       py::arg("map_samples") = 500, py::arg("map_stride") = 1, py::arg("spectral_density") = false,
       py::arg("spectrum_samples") = 2000, py::arg("spectrum_of") = "displacement", py::arg("progress") = false,
-      py::arg("mode") = 0, py::arg("mode_khz") = -1.0, py::arg("energy") = 0.0,
+      py::arg("mode") = 0, py::arg("mode_khz") = -1.0, py::arg("energy") = 0.0, GRANULAR_BEYOND_ARGS,
+      py::arg("deviation_samples") = 0,
       (std::string("Energy spreading after a single-site kick in one chain (SPEC §4), integrated to T: the spreading "
                    "tool for one realization.\n\n    chain: a granular.Chain (F0 = 0 is the sonic vacuum)\n"
                    "    ic: 'displacement' (u = alpha at the site) | 'velocity' (v = beta at the site) | 'mode' (a "
                    "linear mode of the chain, u = M^-1/2 w from rest: number `mode` 1..N or the one nearest `mode_khz` "
                    "[kHz], total energy `energy` [J] or, without it, largest |u_n| = alpha)\n") +
-       dynamics_doc +
+       dynamics_doc + beyond_doc +
+       "    deviation_samples: with mle, where the deviation vector sits along the chain (the tool's --deviation) at "
+       "this many uniform times 0..T (0 = none, else >= 2)\n"
        "    forces_at: beads (from 1) whose force [N] is recorded at force_samples uniform times\n"
        "    energy_map: record E_n(t) at map_samples uniform times, map_stride beads per column\n"
        "    spectral_density: g(nu) of u_n(t) (spectrum_of='displacement', the paper's) or of v_n(t) ('velocity') "
@@ -316,7 +370,11 @@ void bind_dynamics(py::module_& m) {
        "Returns a granular.SpreadingRun: t [s], m2 and m2_centroid (second moments about the kicked bead and about "
        "the energy centroid [beads^2]), ipr (P^-1 of the energy), energy_error, gamma, eta (the shown values, as the "
        "tool's JSON) with every report under 'exponents', final_state (u [m], v [m/s], energy [J], force [N] per "
-       "bead), forces, energy_map, spectral_density, warnings, metadata. Releases the GIL.")
+       "bead), forces, energy_map, spectral_density, dissipated (energy removed by the damping by t [J], at t; None "
+       "without damping), mle (X1(t) [1/s] at t; None without mle), deviation (t [s], site (from 1), share (times x "
+       "beads: the share of |w|^2 = |du|^2 + (t_unit dv)^2, t_unit = 1 us, on each bead, rows summing to 1; "
+       "share.ravel() is the "
+       "tool's --deviation column) or None), warnings, metadata. Releases the GIL.")
           .c_str());
 
   m.def(
@@ -327,7 +385,8 @@ void bind_dynamics(py::module_& m) {
          const std::string& force_law, long long samples, const std::string& sampling, const py::object& fit,
          double fit_step, double t_star, double kappa, long long bootstrap, bool active_window, double window_threshold,
          double reference_max_step, double max_energy_error, const std::string& energy_guard, bool profile,
-         long long threads, const py::object& checkpoint, bool resume, bool progress) {
+         long long threads, const py::object& checkpoint, bool resume, bool progress, double damping_time,
+         double kk_gamma, bool mle, long long renormalize) {
         const DynamicsKeywords k{alpha,
                                  beta,
                                  site,
@@ -360,6 +419,7 @@ void bind_dynamics(py::module_& m) {
         c.realizations = checked_size(realizations, "realizations", 1);
         c.profile_realizations = profile ? c.realizations : 0;
         apply(k, c);
+        apply(BeyondKeywords{damping_time, kk_gamma, mle, renormalize}, c.dynamics);
         c.fit = c.fit_end <= c.dynamics.duration * (1 + 1e-12);
         validate(c);
         const nlohmann::json step_rule = settle_scheme_and_step(c, integrator == "auto", !dt.is_none());
@@ -424,6 +484,10 @@ void bind_dynamics(py::module_& m) {
           prof["energy_se"] = to_numpy(std::move(s.profile.standard_error));
           out["profile"] = prof;
         }
+        // With the tangent map: <X1(t)> [1/s] (the tool's column mle) and its standard error.
+        const bool tangent = !s.mle.mean.empty();
+        out["mle"] = tangent ? py::object(to_numpy(std::move(s.mle.mean))) : py::object(py::none());
+        out["mle_se"] = tangent ? py::object(to_numpy(std::move(s.mle.standard_error))) : py::object(py::none());
         out["max_energy_error"] = s.max_energy_error;
         out["reached_walls"] = s.reached_walls;
         out["realizations"] = s.realizations;
@@ -433,12 +497,12 @@ void bind_dynamics(py::module_& m) {
       py::kw_only(), py::arg("disorder") = "A", py::arg("N") = 2501, py::arg("q") = 0.5, py::arg("xi") = 0.5,
       py::arg("F0") = 10.0, py::arg("R1") = paper_r1, py::arg("seed") = 1, py::arg("realizations") = 100,
       py::arg("ic") = "displacement", GRANULAR_DYNAMICS_ARGS, py::arg("profile") = false, py::arg("threads") = 0,
-      py::arg("checkpoint") = py::none(), py::arg("resume") = false, py::arg("progress") = false,
+      py::arg("checkpoint") = py::none(), py::arg("resume") = false, py::arg("progress") = false, GRANULAR_BEYOND_ARGS,
       (std::string("An ensemble of spreading runs: realizations 0..R-1 of seed `seed` of a disordered chain, each "
                    "kicked and integrated to T, averaged and fitted (the spreading tool's --realizations R).\n\n"
                    "    disorder, N, q, xi, F0 [N], R1 [m], seed: the chains, as granular.random_chain's\n"
                    "    realizations: R; ic: 'displacement' | 'velocity'\n") +
-       dynamics_doc +
+       dynamics_doc + beyond_doc +
        "    profile: also average the site energies E_n(T)\n"
        "    threads: worker threads (0: every core); results do not depend on it\n"
        "    checkpoint: a file logging each finished realization (removed once the run completes); resume=True "
@@ -446,7 +510,8 @@ void bind_dynamics(py::module_& m) {
        "    progress: draw a progress bar\n"
        "Returns a granular.Transport: t [s], m2, m2_centroid, ipr, energy_error with their standard errors (_se), "
        "profile, gamma, eta (with realization errors gamma_real_err, eta_real_err from the bootstrap) and every report "
-       "under 'exponents', max_energy_error, reached_walls, realizations, warnings, metadata. Releases the GIL; "
+       "under 'exponents', mle and mle_se (the mean X1(t) [1/s] over realizations and its standard error; None "
+       "without mle), max_energy_error, reached_walls, realizations, warnings, metadata. Releases the GIL; "
        "Ctrl-C stops it after the realizations in flight (KeyboardInterrupt), leaving the checkpoint to resume from.")
           .c_str());
 
@@ -459,7 +524,8 @@ void bind_dynamics(py::module_& m) {
          const py::object& fit, double fit_step, double t_star, double kappa, long long bootstrap, bool active_window,
          double window_threshold, double reference_max_step, double max_energy_error, const std::string& energy_guard,
          const py::object& profile_F0, long long profile_realizations, const py::object& compare_paper,
-         long long threads, const py::object& checkpoint, bool resume, bool progress) {
+         long long threads, const py::object& checkpoint, bool resume, bool progress, double damping_time,
+         double kk_gamma, bool mle, long long renormalize) {
         const DynamicsKeywords k{alpha,
                                  beta,
                                  site,
@@ -504,6 +570,7 @@ void bind_dynamics(py::module_& m) {
         base.seed = checked_size(seed, "seed");
         base.realizations = checked_size(realizations, "realizations", 1);
         apply(k, base);
+        apply(BeyondKeywords{damping_time, kk_gamma, mle, renormalize}, base.dynamics);
         auto cases = exponent_cases(config);
         for (const auto& c : cases) validate(c);
         const nlohmann::json step_rule = settle_scheme_and_step(cases, integrator == "auto", !dt.is_none());
@@ -541,6 +608,7 @@ void bind_dynamics(py::module_& m) {
             one["exponents"] = {{"gamma_site", to_json(c.summary.exponents->gamma_site)},
                                 {"gamma_centroid", to_json(c.summary.exponents->gamma_centroid)},
                                 {"eta", to_json(c.summary.exponents->eta)}};
+          if (!c.summary.mle.mean.empty()) one["mle"] = to_json(mle_at_end(c.summary));  // X1(T), as the tool
           one["chain"] = chain_name(c);  // as the exponents tool names it
           described.push_back(one);
         }
@@ -576,20 +644,23 @@ void bind_dynamics(py::module_& m) {
       py::arg("q") = 0.5, py::arg("realizations") = 500, py::arg("seed") = 1, GRANULAR_DYNAMICS_ARGS,
       py::arg("profile_F0") = std::vector<double>{10, 0.1, 0}, py::arg("profile_realizations") = 100,
       py::arg("compare_paper") = false, py::arg("threads") = 0, py::arg("checkpoint") = py::none(),
-      py::arg("resume") = false, py::arg("progress") = false,
+      py::arg("resume") = false, py::arg("progress") = false, GRANULAR_BEYOND_ARGS,
       (std::string("The paper's transport study (the exponents tool): gamma (m2 ~ t^gamma) and eta (P^-1 ~ t^-eta) "
                    "for every chain kind x F0 x kick, each an ensemble of `realizations` (h runs one: it is "
                    "deterministic).\n\n"
                    "    chains: kinds among 'h', 'A', 'RDM1', 'RDM2'; F0: precompressions [N] (0: sonic vacuum); ic: "
                    "kicks\n    N, xi, q, realizations, seed: the chains\n") +
-       dynamics_doc +
+       dynamics_doc + beyond_doc +
        "    profile_F0, profile_realizations: F0s whose E_n(T) is averaged, over how many realizations (None: none)\n"
        "    compare_paper: True (or the path of a table in its format) to compare gamma with the paper's Table I "
        "(z-scores with both error sources)\n"
        "    threads (0: every core); checkpoint: a prefix, case i logs to <prefix>.<i> (removed once done); "
        "resume=True continues an interrupted table; progress: a progress bar\n"
-       "Returns a granular.ExponentTable: table (the tool's CSV columns as arrays), curves, profiles, markdown, "
-       "paper (the comparison, with compare_paper), metadata. Releases the GIL; Ctrl-C stops it resumably "
+       "Returns a granular.ExponentTable: table (the tool's CSV columns as arrays; with mle also mle, mle_real_err, "
+       "mle_sd: the mean X1(T) [1/s], its standard error over realizations, their standard deviation), curves (with "
+       "mle also mle, mle_se: <X1(t)> [1/s] and its standard error), profiles, markdown, paper (the comparison, with "
+       "compare_paper), metadata (with mle, X1(T) under each case's 'mle'). Releases the GIL; Ctrl-C stops it "
+       "resumably "
        "(KeyboardInterrupt).")
           .c_str());
 }

@@ -21,8 +21,8 @@ namespace granular::python {
 std::string keyword_of(const std::string& parameter) {
   // Library names that are not the keyword itself (the keywords are the tools' option names).
   static const std::map<std::string, std::string> synonyms{
-      {"precompression", "F0"}, {"n", "N"},          {"r1", "R1"},      {"near_khz", "near"}, {"lo_khz", "window"},
-      {"hi_khz", "window"},     {"time_step", "dt"}, {"duration", "T"}, {"selection", "near"}};
+      {"precompression", "F0"}, {"n", "N"},          {"r1", "R1"},      {"near_khz", "near"},  {"lo_khz", "window"},
+      {"hi_khz", "window"},     {"time_step", "dt"}, {"duration", "T"}, {"selection", "near"}, {"lyapunov", "mle"}};
   std::string name = parameter;
   if (name.starts_with("--")) {  // a legacy message naming a flag: --force-law → force_law
     name = name.substr(2);

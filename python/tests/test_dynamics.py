@@ -175,3 +175,89 @@ def test_automatic_integrator_equals_the_spreading_tool(tools):
     assert vacuum.metadata["parameters"]["dt_s"] == 1e-6
     with pytest.raises(ValueError, match="dt"):
         gr.spreading(gr.anderson(N=201, F0=10), integrator="auto", dt=1e-6, **SHORT)
+
+
+# --- beyond the paper (issue 14): dissipation and the maximal Lyapunov exponent ----------------------------------
+
+
+def test_damped_run_equals_the_spreading_tool(tools):
+    """damping_time and kk_gamma are the tool's --damping-time and --kk-gamma: the same columns, `dissipated` too."""
+    csv, meta = tools.run("spreading", "--disorder", "A", "--N", "151", "--F0", "1", "--seed", "2", "--damping-time",
+                          "2e-3", "--kk-gamma", "1e-6", *SHORT_FLAGS, output="damped")
+    run = gr.spreading(gr.anderson(N=151, F0=1, seed=2), damping_time=2e-3, kk_gamma=1e-6, **SHORT)
+    assert "dissipated" in csv and "mle" not in csv
+    for key in ("t", "m2", "ipr", "energy_error", "m2_centroid", "dissipated"):
+        assert_identical(run[key], csv[key])
+    assert run.mle is None and run.deviation is None
+    assert run.dissipated[-1] > 0 and np.all(np.diff(run.dissipated) >= 0)
+    assert run.metadata["parameters"]["damping"] == {"time_s": 2e-3, "kk_gamma_s": 1e-6}
+    assert run.metadata["run"]["dissipated_J"] == run.dissipated[-1]
+    assert without_process_keys(run.metadata) == without_process_keys(meta)
+    plain = gr.spreading(gr.anderson(N=151, F0=1, seed=2), **SHORT)
+    assert plain.dissipated is None and "damping" not in plain.metadata["parameters"]
+
+
+def test_mle_and_deviation_vector_equal_the_spreading_tool(tools):
+    """mle=True is --mle (column mle = X1(t)); deviation_samples=K is --deviation FILE --deviation-samples K."""
+    csv, meta = tools.run("spreading", "--disorder", "A", "--N", "201", "--seed", "2", "--mle", "--renormalize", "5",
+                          "--deviation", tools.path("w.csv"), "--deviation-samples", "11", *SHORT_FLAGS, output="mle")
+    run = gr.spreading(gr.anderson(N=201, seed=2), mle=True, renormalize=5, deviation_samples=11, **SHORT)
+    assert "mle" in csv and "dissipated" not in csv
+    for key in ("t", "m2", "ipr", "energy_error", "m2_centroid", "mle"):
+        assert_identical(run[key], csv[key])
+    assert run.dissipated is None
+    w = read_csv(tools.path("w.csv"))
+    share = run.deviation["share"]
+    assert share.shape == (11, 201)
+    assert_identical(share.ravel(), w["share"])  # the CSV is time-major
+    assert_identical(np.repeat(run.deviation["t"], 201), w["t"])
+    assert_identical(np.tile(run.deviation["site"], 11), w["site"])
+    np.testing.assert_allclose(share.sum(axis=1), 1, rtol=1e-12)
+    assert run.metadata["parameters"]["lyapunov"]["renormalize_every"] == 5
+    assert run.metadata["run"]["mle_per_s"] == run.mle[-1]
+    assert without_process_keys(run.metadata) == without_process_keys(meta)
+
+
+@pytest.mark.parametrize("flags,keywords", [
+    (["--mle"], dict(mle=True)),
+    (["--damping-time", "1e-3"], dict(damping_time=1e-3)),
+])
+def test_ensemble_beyond_the_paper_equals_the_spreading_tool(tools, flags, keywords):
+    """transport with mle (the tool's ensemble mean X1(t) in column mle) or with damping."""
+    csv, meta = tools.run("spreading", "--disorder", "A", "--N", "201", "--realizations", "3", "--threads", "2",
+                          "--bootstrap", "50", *flags, *SHORT_FLAGS, output="ens")
+    t = gr.transport(disorder="A", N=201, realizations=3, threads=2, bootstrap=50, **keywords, **SHORT)
+    for key in ("t", "m2", "ipr", "energy_error", "m2_centroid"):
+        assert_identical(t[key], csv[key])
+    assert ("mle" in csv) == ("mle" in keywords)
+    if "mle" in keywords:
+        assert_identical(t.mle, csv["mle"])
+        assert t.mle_se.shape == t.mle.shape and np.all(t.mle_se >= 0) and np.any(t.mle_se > 0)
+    else:
+        assert t.mle is None and t.mle_se is None
+    assert without_process_keys(t.metadata) == without_process_keys(meta)
+
+
+def test_exponent_table_with_mle_equals_the_exponents_tool(tools):
+    """exponent_table(mle=True) is exponents --mle: columns mle, mle_real_err, mle_sd; <X1(t)> in the curves."""
+    flags = ["--chains", "A", "--F0", "10", "--ic", "displacement", "--N", "101", "--realizations", "3", "--samples",
+             "40", "--profile-F0", "none", "--bootstrap", "50", "--mle", "--renormalize", "20", *SHORT_FLAGS, "--quiet"]
+    csv, meta = tools.run("exponents", *flags, output="exp")
+    table = gr.exponent_table(chains=["A"], F0=[10], ic=["displacement"], N=101, realizations=3, samples=40,
+                              profile_F0=None, bootstrap=50, mle=True, renormalize=20, **SHORT)
+    assert {"mle", "mle_real_err", "mle_sd"} <= set(csv)
+    assert set(table.table) == set(csv)
+    for key, column in csv.items():
+        mine = table.column(key)
+        if mine.dtype == bool:
+            assert [str(v).lower() for v in mine] == column, key
+        elif isinstance(column, list):
+            assert list(mine) == column, key
+        else:
+            assert_identical(mine, column)
+    curves = read_csv(tools.path("exp-curves.csv"))
+    for key in ("t", "m2", "ipr", "mle", "mle_se"):
+        assert_identical(np.concatenate([c[key] for c in table.curves]), curves[key])
+    case = table.metadata["cases"][0]
+    assert case["mle"] == meta["cases"][0]["mle"] and case["mle"]["X1_at_T_per_s"] == table.column("mle")[0]
+    assert without_process_keys(table.metadata) == without_process_keys(meta)

@@ -176,6 +176,26 @@ def test_dynamics_keywords(tmp_path):
     raises_naming("F0", gr.exponent_table, F0=[-1.0])
 
 
+def test_beyond_the_paper_keywords():
+    """damping_time, kk_gamma, mle, renormalize, deviation_samples: the tools' rules, told by keyword."""
+    c = gr.anderson(N=21)
+    raises_naming("damping_time", gr.spreading, c, damping_time=-1e-3)
+    raises_naming("damping_time", gr.spreading, c, damping_time=NAN)
+    raises_naming("kk_gamma", gr.spreading, c, kk_gamma=-1e-6)
+    raises_naming("kk_gamma", gr.spreading, c, kk_gamma=INF)
+    raises_naming("renormalize", gr.spreading, c, mle=True, renormalize=0)
+    raises_naming("renormalize", gr.spreading, c, mle=True, renormalize=-3)
+    raises_naming("deviation_samples", gr.spreading, c, deviation_samples=5)  # needs mle=True
+    raises_naming("deviation_samples", gr.spreading, c, mle=True, deviation_samples=1)
+    raises_naming("deviation_samples", gr.spreading, c, mle=True, deviation_samples=-2)
+    raises_naming("mle", gr.spreading, c, mle=True, kk_gamma=1e-6)  # the tangent map is of the conservative flow
+    raises_naming("integrator", gr.spreading, c, mle=True, integrator="reference")
+    raises_naming("damping_time", gr.transport, N=21, damping_time=-1.0)
+    raises_naming("renormalize", gr.transport, N=21, mle=True, renormalize=0)
+    raises_naming("kk_gamma", gr.exponent_table, kk_gamma=NAN)
+    raises_naming("renormalize", gr.exponent_table, mle=True, renormalize=0)
+
+
 def test_file_errors_are_os_errors(tmp_path):
     with pytest.raises(OSError):
         gr.transport(N=21, realizations=2, T=1e-4, fit=(2e-5, 1e-4), checkpoint="/nonexistent-folder/checkpoint")
