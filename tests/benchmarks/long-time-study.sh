@@ -53,7 +53,7 @@ run_case() {  # name, then exponents options
   local wall=0 cpu=0 rss=0 w u s m
   for f in "$out/$name".time.*; do
     read -r w u s m < <(grep -v '^Command' "$f")
-    wall=$(echo "$wall + $w" | bc) cpu=$(echo "$cpu + $u + $s" | bc)
+    wall=$(awk -v a="$wall" -v b="$w" 'BEGIN {print a + b}') cpu=$(awk -v a="$cpu" -v b="$u" -v c="$s" 'BEGIN {print a + b + c}')
     ((m > rss)) && rss=$m
   done
   echo "$name,$wall,$cpu,$rss" >>"$times"
