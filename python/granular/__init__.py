@@ -26,7 +26,8 @@ import sys as _sys
 
 # Bind the extension's ~110 shared libraries (PETSc, SLEPc, MPI, HDF5, ...) lazily, as the
 # command-line tools do, instead of Python's default RTLD_NOW: resolving every symbol up front
-# costs the import ~15 ms and buys nothing (a missing symbol would be a broken install either way).
+# cost the import 6-15 ms in our measurements and buys nothing (a missing symbol would be a broken
+# install either way).
 _dlopen_flags = _sys.getdlopenflags()
 try:
     _sys.setdlopenflags((_dlopen_flags & ~_os.RTLD_NOW) | _os.RTLD_LAZY)

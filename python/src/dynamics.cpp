@@ -82,27 +82,6 @@ void apply(const DynamicsKeywords& k, TransportCase& c) {
   granular::apply(choices, c);
 }
 
-/// The keywords beyond the paper (issue 14), the tools' --damping-time, --kk-gamma, --mle,
-/// --renormalize and (spreading only) --deviation-samples.
-struct BeyondKeywords {
-  double damping_time, kk_gamma;
-  bool mle;
-  long long renormalize;
-  long long deviation_samples = 0;  // 0: none
-};
-
-/// Sets the dissipation and the tangent map of `d` as tool::apply(BeyondOptions) does; the library
-/// names `damping_time`, `kk_gamma` and `deviation_samples` itself.
-void apply(const BeyondKeywords& k, SpreadingConfig& d) {
-  d.damping = {k.damping_time, k.kk_gamma};
-  validate(d.damping);
-  d.lyapunov.enabled = k.mle;
-  d.lyapunov.renormalize_every = checked_size(k.renormalize, "renormalize", 1);
-  if (k.deviation_samples != 0 && !k.mle) bad_value("deviation_samples", ": needs mle=True");
-  d.deviation_samples = checked_size(k.deviation_samples, "deviation_samples", 0, 100000000);
-  if (d.deviation_samples == 1) bad_value("deviation_samples", " 1: 0 (none) or at least 2");
-}
-
 /// The keyword arguments of DynamicsKeywords, with the tools' defaults, in this order.
 #define GRANULAR_DYNAMICS_ARGS                                                                                      \
   py::arg("alpha") = 1e-7, py::arg("beta") = py::float_(paper_beta), py::arg("site") = py::none(),                  \
@@ -113,7 +92,7 @@ void apply(const BeyondKeywords& k, SpreadingConfig& d) {
   py::arg("window_threshold") = 1e-30, py::arg("reference_max_step") = 0.01e-6, py::arg("max_energy_error") = 1e-3, \
   py::arg("energy_guard") = "stop"
 
-/// The keyword arguments of BeyondKeywords shared by the three calls, with the tools' defaults.
+/// The keyword arguments of BeyondChoices (transport_choices.hpp) shared by the three calls, with the tools' defaults.
 #define GRANULAR_BEYOND_ARGS \
   py::arg("damping_time") = 0.0, py::arg("kk_gamma") = 0.0, py::arg("mle") = false, py::arg("renormalize") = 10
 
@@ -227,7 +206,7 @@ void bind_dynamics(py::module_& m) {
         c.profile_realizations = 0;
         apply(k, c);
         SpreadingConfig& d = c.dynamics;
-        apply(BeyondKeywords{damping_time, kk_gamma, mle, renormalize, deviation_samples}, d);
+        granular::apply(BeyondChoices{damping_time, kk_gamma, mle, renormalize, deviation_samples}, d);
         c.fit = c.fit_end <= d.duration * (1 + 1e-12);  // a window beyond T: no exponents
         if (!forces_at.is_none())
           for (double s : double_vector(forces_at, "forces_at")) {
@@ -419,7 +398,7 @@ void bind_dynamics(py::module_& m) {
         c.realizations = checked_size(realizations, "realizations", 1);
         c.profile_realizations = profile ? c.realizations : 0;
         apply(k, c);
-        apply(BeyondKeywords{damping_time, kk_gamma, mle, renormalize}, c.dynamics);
+        granular::apply(BeyondChoices{damping_time, kk_gamma, mle, renormalize}, c.dynamics);
         c.fit = c.fit_end <= c.dynamics.duration * (1 + 1e-12);
         validate(c);
         const nlohmann::json step_rule = settle_scheme_and_step(c, integrator == "auto", !dt.is_none());
@@ -570,7 +549,7 @@ void bind_dynamics(py::module_& m) {
         base.seed = checked_size(seed, "seed");
         base.realizations = checked_size(realizations, "realizations", 1);
         apply(k, base);
-        apply(BeyondKeywords{damping_time, kk_gamma, mle, renormalize}, base.dynamics);
+        granular::apply(BeyondChoices{damping_time, kk_gamma, mle, renormalize}, base.dynamics);
         auto cases = exponent_cases(config);
         for (const auto& c : cases) validate(c);
         const nlohmann::json step_rule = settle_scheme_and_step(cases, integrator == "auto", !dt.is_none());

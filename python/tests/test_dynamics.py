@@ -101,6 +101,19 @@ def test_ensemble_mean_is_the_mean_of_the_single_runs():
     np.testing.assert_allclose(t.ipr, np.mean([r.ipr for r in runs], axis=0), rtol=1e-14)
 
 
+def assert_columns_identical(table, csv):
+    """Every column of the tool's PREFIX.csv equals the table's: flags as the CSV spells them, words
+    as they are, numbers to the last digit."""
+    for key, column in csv.items():
+        mine = table.column(key)
+        if mine.dtype == bool:
+            assert [str(v).lower() for v in mine] == column, key
+        elif isinstance(column, list):
+            assert list(mine) == column, key
+        else:
+            assert_identical(mine, column)
+
+
 def test_exponent_table_equals_the_exponents_tool(tools):
     flags = ["--chains", "h,A", "--F0", "10,0", "--ic", "displacement,velocity", "--N", "151", "--realizations", "3",
              "--samples", "60", "--profile-F0", "10", "--profile-realizations", "2", "--bootstrap", "50", *SHORT_FLAGS,
@@ -110,14 +123,7 @@ def test_exponent_table_equals_the_exponents_tool(tools):
                               samples=60, profile_F0=[10], profile_realizations=2, bootstrap=50, compare_paper=True,
                               **SHORT)
     assert set(table.table) == set(csv)
-    for key, column in csv.items():
-        mine = table.column(key)
-        if mine.dtype == bool:
-            assert [str(v).lower() for v in mine] == column, key
-        elif isinstance(column, list):
-            assert list(mine) == column, key
-        else:
-            assert_identical(mine, column)
+    assert_columns_identical(table, csv)
     curves = read_csv(tools.path("exp-curves.csv"))
     for key in ("t", "m2", "m2_centroid", "ipr", "m2_se"):
         assert_identical(np.concatenate([c[key] for c in table.curves]), curves[key])
@@ -247,14 +253,7 @@ def test_exponent_table_with_mle_equals_the_exponents_tool(tools):
                               profile_F0=None, bootstrap=50, mle=True, renormalize=20, **SHORT)
     assert {"mle", "mle_real_err", "mle_sd"} <= set(csv)
     assert set(table.table) == set(csv)
-    for key, column in csv.items():
-        mine = table.column(key)
-        if mine.dtype == bool:
-            assert [str(v).lower() for v in mine] == column, key
-        elif isinstance(column, list):
-            assert list(mine) == column, key
-        else:
-            assert_identical(mine, column)
+    assert_columns_identical(table, csv)
     curves = read_csv(tools.path("exp-curves.csv"))
     for key in ("t", "m2", "ipr", "mle", "mle_se"):
         assert_identical(np.concatenate([c[key] for c in table.curves]), curves[key])

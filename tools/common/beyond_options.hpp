@@ -8,6 +8,7 @@
 
 #include "granular/dynamics/spreading.hpp"
 #include "granular/error.hpp"
+#include "granular/study/transport_choices.hpp"
 
 namespace granular::tool {
 
@@ -41,16 +42,15 @@ inline void add_lyapunov_options(CLI::App& app, BeyondOptions& o) {
   app.add_option("--deviation-samples", o.deviation_samples, "uniform times of --deviation")->capture_default_str();
 }
 
+/// granular::apply(BeyondChoices) (transport_choices.hpp), once the file option only the tool has
+/// is read: --deviation FILE turns on --deviation-samples.
 inline void apply(const BeyondOptions& o, SpreadingConfig& d) {
-  d.damping = {o.damping_time, o.kk_gamma};
-  validate(d.damping);
-  d.lyapunov.enabled = o.mle;
-  if (o.renormalize < 1) throw InvalidInput("--renormalize " + std::to_string(o.renormalize) + ": at least 1");
-  d.lyapunov.renormalize_every = static_cast<std::size_t>(o.renormalize);
   if (!o.deviation.empty() && !o.mle) throw InvalidInput("--deviation: needs --mle");
   if (o.deviation_samples < 2)
     throw InvalidInput("--deviation-samples " + std::to_string(o.deviation_samples) + ": at least 2");
-  d.deviation_samples = o.deviation.empty() ? 0 : static_cast<std::size_t>(o.deviation_samples);
+  granular::apply(BeyondChoices{o.damping_time, o.kk_gamma, o.mle, o.renormalize,
+                                o.deviation.empty() ? 0 : o.deviation_samples},
+                  d);
 }
 
 }  // namespace granular::tool

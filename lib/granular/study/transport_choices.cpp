@@ -54,4 +54,16 @@ void apply(const TransportChoices& o, TransportCase& c) {
   c.bootstrap.resamples = static_cast<std::size_t>(o.bootstrap);
 }
 
+void apply(const BeyondChoices& o, SpreadingConfig& d) {
+  d.damping = {o.damping_time, o.kk_gamma};
+  validate(d.damping);
+  d.lyapunov.enabled = o.mle;
+  if (o.renormalize < 1) throw InvalidInput("renormalize", " " + std::to_string(o.renormalize) + ": at least 1");
+  d.lyapunov.renormalize_every = static_cast<std::size_t>(o.renormalize);
+  if (o.deviation_samples != 0 && !o.mle) throw InvalidInput("deviation_samples", ": needs mle (the tangent map)");
+  if (o.deviation_samples < 0 || o.deviation_samples == 1)
+    throw InvalidInput("deviation_samples", " " + std::to_string(o.deviation_samples) + ": 0 (none) or at least 2");
+  d.deviation_samples = static_cast<std::size_t>(o.deviation_samples);
+}
+
 }  // namespace granular

@@ -38,4 +38,18 @@ struct TransportChoices {
 /// InvalidInput naming the choice.
 void apply(const TransportChoices& choices, TransportCase& c);
 
+/// The choices beyond the paper (SPEC §4): dissipation and the tangent map, as the tools'
+/// --damping-time, --kk-gamma, --mle, --renormalize, --deviation-samples and the Python keywords
+/// of the same names take them.
+struct BeyondChoices {
+  double damping_time = 0, kk_gamma = 0;  ///< τ_d, γ_KK [s]; 0 = none
+  bool mle = false;                       ///< the tangent map (X1(t))
+  long long renormalize = 10;             ///< steps between renormalizations (≥ 1)
+  long long deviation_samples = 0;  ///< times of the deviation vector's distribution (0 = none, else ≥ 2; needs mle)
+};
+
+/// Sets d.damping, d.lyapunov and d.deviation_samples. Throws InvalidInput naming the choice
+/// (`damping_time`, `kk_gamma`, `renormalize`, `deviation_samples`).
+void apply(const BeyondChoices& choices, SpreadingConfig& d);
+
 }  // namespace granular
