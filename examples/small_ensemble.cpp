@@ -8,8 +8,7 @@
 
 int main() {
   granular::TransportCase c;
-  c.disorder = granular::Disorder::anderson;
-  c.n = 501;
+  c.chain = {.disorder = granular::Disorder::anderson, .N = 501};
   c.site = 250;
   c.realizations = 4;
   c.dynamics.duration = 2e-3;

@@ -26,11 +26,11 @@ int main(int argc, char** argv) {
   bool quiet = false;
   tool::ChainOptions beads;  // only its --types/--type-masses/--polydisperse
   app.add_option("--disorder", disorder, "A | RDM1 | RDM2 (h has no correlation: one type only)")->capture_default_str();
-  app.add_option("--q", config.q, "probability in [0,1]")->capture_default_str();
+  app.add_option("--q", config.chain.q, "probability in [0,1]")->capture_default_str();
   tool::add_bead_distribution_options(app, beads);
-  tool::add_integer(app, "--N", config.n, "beads per chain (>= 2)");
+  tool::add_integer(app, "--N", config.chain.N, "beads per chain (>= 2)");
   tool::add_integer(app, "--realizations", config.realizations, "chains averaged");
-  tool::add_integer(app, "--seed", config.seed, "random seed");
+  tool::add_integer(app, "--seed", config.chain.seed, "random seed");
   CLI::Option* max_distance =
       tool::add_integer(app, "--max-distance", config.max_distance, "largest shift d (< N; default capped at N-1)");
   tool::add_integer(app, "--threads", run.threads, "worker threads (0 = all cores)");
@@ -39,12 +39,12 @@ int main(int argc, char** argv) {
 
   return tool::run(app, argc, argv, [&] {
     tool::Metadata meta("correlations", argc, argv);
-    config.disorder = parse_disorder(disorder);
+    config.chain.disorder = parse_disorder(disorder);
     beads.disorder = disorder;  // the rule of --types
-    config.beads = tool::bead_distribution(beads);
+    config.chain.distribution = tool::bead_distribution(beads);
     // The default must fit short chains (N = 2 has only d = 0, 1); a value typed is checked as typed.
-    if (max_distance->count() == 0 && config.n >= 2 && config.max_distance > config.n - 1)
-      config.max_distance = config.n - 1;
+    if (max_distance->count() == 0 && config.chain.N >= 2 && config.max_distance > config.chain.N - 1)
+      config.max_distance = config.chain.N - 1;
     if (run.threads < 0) throw InvalidInput("threads", " " + std::to_string(run.threads) + ": must be >= 0");
     validate(config);
     const tool::OutputClaim claim(tool::prefix_of(output), meta.command());
@@ -57,11 +57,14 @@ int main(int argc, char** argv) {
     CsvWriter table(csv.stream(), {"distance", "rho_mean", "rho_std", "rho_theory"});
     for (std::size_t d = 0; d < result.mean.size(); ++d)
       table.row(d, result.mean[d], result.deviation[d], result.theory[d]);
-    meta["parameters"] = {
-        {"disorder", to_string(config.disorder)}, {"q", config.q},       {"N", config.n},
-        {"realizations", config.realizations},    {"seed", config.seed}, {"max_distance", config.max_distance}};
-    if (config.beads) meta["parameters"]["beads"] = describe(*config.beads);
-    meta["correlated"] = config.beads ? "bead mass" : "bead type (type 1 -> 0, type 2 -> 1)";
+    meta["parameters"] = {{"disorder", to_string(config.chain.disorder)},
+                          {"q", config.chain.q},
+                          {"N", config.chain.N},
+                          {"realizations", config.realizations},
+                          {"seed", config.chain.seed},
+                          {"max_distance", config.max_distance}};
+    if (config.chain.distribution) meta["parameters"]["beads"] = describe(*config.chain.distribution);
+    meta["correlated"] = config.chain.distribution ? "bead mass" : "bead type (type 1 -> 0, type 2 -> 1)";
     meta["realizations_used"] = result.used;
     meta["output"] = output;
     meta.write(json_path, {&csv});

@@ -75,10 +75,10 @@ int main(int argc, char** argv) {
                      if (seed < 0) throw InvalidInput("--seed: must be >= 0");
                      if (run_options.threads < 0) throw InvalidInput("--threads: must be >= 0");
                      TransportCase& base = config.base;
-                     base.n = static_cast<std::size_t>(n);
-                     base.xi = xi;
-                     base.q = q;
-                     base.seed = static_cast<std::uint64_t>(seed);
+                     base.chain.N = static_cast<std::size_t>(n);
+                     base.chain.xi = xi;
+                     base.chain.q = q;
+                     base.chain.seed = static_cast<std::uint64_t>(seed);
                      base.realizations = static_cast<std::size_t>(realizations);
                      std::vector<PaperCell> paper;
                      std::vector<std::string> paths{output + ".csv", output + "-curves.csv", output + "-profiles.csv",

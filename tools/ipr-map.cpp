@@ -33,12 +33,12 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_option("--q", q_text, "probabilities of type 1 (or of dimer 11 / 12) in [0,1]: list or range")
       ->capture_default_str();
-  tool::add_integer(app, "--N", config.n, "beads per chain (>= 2)");
-  app.add_option("--F0", config.precompression, "static precompression [N], > 0")->capture_default_str();
-  app.add_option("--R1", config.r1, "radius of type-1 beads [m]; type 2 has xi*R1 (steel beads, steel walls)")
+  tool::add_integer(app, "--N", config.chain.N, "beads per chain (>= 2)");
+  app.add_option("--F0", config.chain.F0, "static precompression [N], > 0")->capture_default_str();
+  app.add_option("--R1", config.chain.R1, "radius of type-1 beads [m]; type 2 has xi*R1 (steel beads, steel walls)")
       ->capture_default_str();
   tool::add_integer(app, "--realizations", config.realizations, "chains averaged per (q, xi)");
-  tool::add_integer(app, "--seed", config.seed, "random seed; realization r of seed s is always the same chain");
+  tool::add_integer(app, "--seed", config.chain.seed, "random seed; realization r of seed s is always the same chain");
   tool::add_integer(app, "--threads", run.threads, "worker threads (0 = all cores); results do not depend on it");
   app.add_option("--solver", solver,
                  "mode solver: fast (eigenvalues + one twisted factorization per mode, no eigenvector matrix; IPRs as "
@@ -58,10 +58,11 @@ int main(int argc, char** argv) {
 
   return tool::run(app, argc, argv, [&] {
     tool::Metadata meta("ipr-map", argc, argv);
-    config.disorder = parse_disorder(disorder);
+    config.chain.disorder = parse_disorder(disorder);
     config.xi_values = parse_number_list(xi_text, "--xi", 0.01);
     config.q_values = parse_number_list(q_text, "--q", 0.1);
-    if (config.n > 100000000) throw InvalidInput("N", " " + std::to_string(config.n) + ": more than 1e8 beads");
+    if (config.chain.N > 100000000)
+      throw InvalidInput("N", " " + std::to_string(config.chain.N) + ": more than 1e8 beads");
     if (run.threads < 0) throw InvalidInput("threads", " " + std::to_string(run.threads) + ": must be >= 0");
     if (solver != "fast" && solver != "lapack" && !solver.starts_with("lapack-"))
       throw InvalidInput("--solver", " '" + solver + "': expected fast, lapack or lapack-<stevr|stemr|stevd|steqr>");
@@ -76,7 +77,7 @@ int main(int argc, char** argv) {
       throw InvalidInput("--method", ": only with --near/--count or --window (the full map uses --solver)");
     }
     beads.disorder = disorder;
-    if ((config.beads = tool::bead_distribution(beads)))
+    if ((config.chain.distribution = tool::bead_distribution(beads)))
       config.q_values = config.xi_values = {std::numeric_limits<double>::quiet_NaN()};  // one cell
     validate(config);
     const tool::OutputClaim claim(tool::prefix_of(output), meta.command());
@@ -91,9 +92,9 @@ int main(int argc, char** argv) {
     progress.finish();
 
     AtomicFile csv(output);
-    const std::string name = !config.beads                                         ? to_string(config.disorder)
-                             : config.beads->kind == BeadDistribution::Kind::types ? "types"
-                                                                                   : "polydisperse";
+    const std::string name = !config.chain.distribution ? to_string(config.chain.disorder)
+                             : config.chain.distribution->kind == BeadDistribution::Kind::types ? "types"
+                                                                                                : "polydisperse";
     if (selection.given()) {  // modes differ between chains: one row per mode of each realization
       CsvWriter table(csv.stream(), {"disorder", "q", "xi", "realization", "mode", "freq_khz", "ipr"});
       for (const auto& cell : cells)
@@ -109,24 +110,25 @@ int main(int argc, char** argv) {
     } else {
       CsvWriter table(csv.stream(), {"disorder", "q", "xi", "mode", "freq_khz", "ipr"});
       for (const auto& cell : cells)
-        for (std::size_t k = 0; k < config.n; ++k)
+        for (std::size_t k = 0; k < config.chain.N; ++k)
           table.row(name, cell.q, cell.xi, k + 1, cell.freq_khz[k], cell.ipr[k]);
     }
-    meta["parameters"] = {
-        {"disorder", name},
-        {"xi", config.xi_values},
-        {"q", config.q_values},
-        {"N", config.n},
-        {"F0_N", config.precompression},
-        {"R1_m", config.r1},
-        {"material",
-         {{"E_Pa", config.material.young}, {"nu", config.material.poisson}, {"rho_kg_m3", config.material.density}}},
-        {"walls", "flat, same material as the beads"},
-        {"realizations", config.realizations},
-        {"seed", config.seed},
-        {"threads", resolve_threads(run.threads)},
-        {"solver", solver}};
-    if (config.beads) meta["parameters"]["beads"] = describe(*config.beads);
+    meta["parameters"] = {{"disorder", name},
+                          {"xi", config.xi_values},
+                          {"q", config.q_values},
+                          {"N", config.chain.N},
+                          {"F0_N", config.chain.F0},
+                          {"R1_m", config.chain.R1},
+                          {"material",
+                           {{"E_Pa", config.chain.material.young},
+                            {"nu", config.chain.material.poisson},
+                            {"rho_kg_m3", config.chain.material.density}}},
+                          {"walls", "flat, same material as the beads"},
+                          {"realizations", config.realizations},
+                          {"seed", config.chain.seed},
+                          {"threads", resolve_threads(run.threads)},
+                          {"solver", solver}};
+    if (config.chain.distribution) meta["parameters"]["beads"] = describe(*config.chain.distribution);
     if (!selection.given()) {
       meta["averaging"] = config.bin_khz > 0 ? "frequency-bin" : "mode";
       if (config.bin_khz > 0) meta["bin_khz"] = config.bin_khz;

@@ -5,12 +5,9 @@
 #include <optional>
 #include <string>
 
-#include "common/chain_options.hpp"
-#include "common/dynamics_options.hpp"
+#include "common/kicked_case.hpp"
 #include "common/long_run_options.hpp"
-#include "common/long_time_options.hpp"
 #include "common/metadata.hpp"
-#include "common/mode_kick_options.hpp"
 #include "common/output_paths.hpp"
 #include "common/spreading_outputs.hpp"
 #include "common/tool_main.hpp"
@@ -29,23 +26,12 @@ int main(int argc, char** argv) {
       "--final-state, --forces-at, --energy-map and --spectrum always describe realization --realization.",
       "spreading"};
   tool::describe_common(app);
-  tool::ChainOptions chain_options;
-  chain_options.n = 2501;
-  tool::DynamicsOptions dynamics;
-  tool::ModeKickOptions mode_kick;
-  std::string ic = "displacement", output = "spreading";
-  long long realizations = 1;
+  tool::KickedCaseOptions options;
+  const tool::DynamicsOptions& dynamics = options.dynamics;
+  std::string output = "spreading";
   tool::LongRunOptions run;
   tool::SpreadingOutputs more;
-  tool::add_chain_options(app, chain_options);
-  tool::add_auto_length(app, chain_options.auto_n);
-  app.add_option("--ic", ic, "initial condition: displacement | velocity | mode (a linear mode: --mode, --mode-khz)")
-      ->capture_default_str();
-  tool::add_dynamics_options(app, dynamics);
-  tool::add_mode_kick_options(app, mode_kick);
-  tool::add_lyapunov_options(app, dynamics.beyond);
-  app.add_option("--realizations", realizations, "realizations to average (ensemble means and exponents)")
-      ->capture_default_str();
+  tool::add_kicked_case_options(app, options);
   tool::add_long_run_options(app, run);
   app.add_option("--output", output, "prefix: writes PREFIX.csv and PREFIX.json")->capture_default_str();
   tool::add_spreading_outputs(app, more);
@@ -54,29 +40,15 @@ int main(int argc, char** argv) {
       app, argc, argv,
       [&] {
         tool::Metadata meta("spreading", argc, argv);
-        if (realizations < 1) throw InvalidInput("--realizations " + std::to_string(realizations) + ": must be >= 1");
-        const bool ensemble = realizations > 1 || run.resume;
-        if (ensemble && (!chain_options.config.empty() || !chain_options.radii.empty()))
-          throw InvalidInput(
-              "--realizations/--resume: an ensemble draws random chains; --config/--radii give one chain");
+        const bool ensemble = options.realizations > 1 || run.resume;
         if (run.threads < 0) throw InvalidInput("--threads " + std::to_string(run.threads) + ": must be >= 0");
-        tool::size_chain(chain_options, dynamics, ic);  // --N auto
-        const tool::SelectedChain selected = tool::build_chain(chain_options);
-        TransportCase c;
-        tool::apply(chain_options, selected.chain.size(), c);
-        c.beads = selected.beads;
-        c.kick = parse_kick(ic);
-        tool::apply(mode_kick, c);
-        c.realizations = static_cast<std::size_t>(realizations);
+        tool::KickedCase k = tool::kicked_case(options, ensemble);
+        const tool::SelectedChain& selected = k.selected;
+        TransportCase& c = k.c;
         c.profile_realizations = more.profile ? c.realizations : 0;
-        SpreadingConfig& d = c.dynamics;
-        tool::apply(dynamics, c);
-        c.fit = c.fit_end <= d.duration * (1 + 1e-12);  // a window beyond T: no exponents, a note
+        const SpreadingConfig& d = c.dynamics;
         tool::apply(more, c);
-        validate(c);  // then τ by the stability rule (of this very chain when it comes from a file)
-        const bool from_file = !chain_options.config.empty() || !chain_options.radii.empty();
-        const nlohmann::json step_rule =
-            tool::settle_time_step(c, dynamics, app.count("--dt") > 0, from_file ? &selected.chain : nullptr);
+        const nlohmann::json step_rule = tool::settle(c, options, app.count("--dt") > 0);
         const std::string csv_path = output + ".csv", json_path = output + ".json", sem_path = output + "-sem.csv";
         const std::string profile_path = more.profile ? output + "-profile.csv" : "",
                           checkpoint = output + ".checkpoint";
@@ -122,7 +94,7 @@ int main(int argc, char** argv) {
         if (c.kick == Kick::velocity && (!ensemble || !c.match_beta))
           meta["parameters"]["beta_m_s"] = kicked.beta;  // the β used
         if (c.kick == Kick::mode) meta["parameters"]["mode_used"] = to_json(kicked.mode);
-        meta["seed"] = chain_options.seed;
+        meta["seed"] = c.chain.seed;
         meta["time_step_rule"] = step_rule;
         for (const char* key : {"gamma", "gamma_err", "gamma_real_err", "eta", "eta_err", "eta_real_err", "power_law"})
           meta[key] = nullptr;
@@ -135,7 +107,7 @@ int main(int argc, char** argv) {
                               {"mpi_ranks", MpiContext::instance().size()},
                               {"max_energy_error", summary->max_energy_error},
                               {"reached_walls", summary->reached_walls}};
-        if (!summary || single) meta["run"] = describe_run(r, chain_options.realization);
+        if (!summary || single) meta["run"] = describe_run(r, options.chain.realization);
         meta["output"] = csv_path;
         meta.write(json_path);  // the JSON first, then the CSVs: never a CSV without its metadata
         for (auto& f : files) f->commit();

@@ -7,6 +7,7 @@
 
 #include "granular/model/bead_source.hpp"
 #include "granular/model/chain.hpp"
+#include "granular/model/chain_recipe.hpp"
 #include "granular/model/configuration_file.hpp"
 #include "granular/model/contact_law.hpp"
 #include "granular/model/correlation.hpp"

@@ -16,6 +16,7 @@
 
 #include "granular/ensemble/progress_meter.hpp"
 #include "granular/model/chain.hpp"
+#include "granular/model/chain_recipe.hpp"
 #include "granular/model/disorder.hpp"
 
 namespace granular::python {
@@ -34,11 +35,15 @@ void bind_observers(py::module_& m);
 /// A chain with what made it: the bead types (when it has them) and the description the tools
 /// write as the "chain" entry of their JSON.
 struct PyChain {
-  Chain chain;
+  ChainRecipe recipe;  ///< what the chain is realization `realization` of
+  std::uint64_t realization = 0;
+  Chain chain;          ///< recipe.chain(realization)
   Configuration types;  ///< empty when built from radii
   Material material = steel;
-  nlohmann::json description;
+  nlohmann::json description;  ///< describe(recipe, realization), as the tools' "chain" entry
 };
+/// The chain of a recipe, built and described ("disorder": `name` for a named given chain).
+PyChain py_chain(ChainRecipe recipe, std::uint64_t realization, const std::string& name = "");
 
 // --- errors ----------------------------------------------------------------------------------
 /// The Python keyword a library parameter name stands for (`precompression` → `F0`, `time_step`

@@ -47,7 +47,7 @@ struct DynamicsKeywords {
 
 /// Fills `c` from the keywords: granular::apply(TransportChoices), as the tools do from their
 /// options, once the keywords only Python has are read (beta a number or 'match', site None,
-/// fit a pair). Needs c.n (for `site`).
+/// fit a pair). Needs c.chain (for `site`).
 void apply(const DynamicsKeywords& k, TransportCase& c) {
   TransportChoices choices;
   choices.alpha = k.alpha;
@@ -191,16 +191,8 @@ void bind_dynamics(py::module_& m) {
                                  max_energy_error,
                                  energy_guard};
         const nlohmann::json& described = chain.description;
-        TransportCase c;  // the chain's own words where it has them, the tools' defaults otherwise
-        c.disorder = described.contains("disorder") && described["disorder"] != "diatomic"
-                         ? parse_disorder(described["disorder"].get<std::string>())
-                         : Disorder::anderson;
-        c.q = described.value("q", 0.5);
-        c.xi = described.value("xi", 0.5);
-        c.r1 = described.value("R1_m", paper_r1);
-        c.seed = described.value("seed", std::uint64_t{1});
-        c.n = chain.chain.size();
-        c.precompression = chain.chain.precompression;
+        TransportCase c;
+        c.chain = chain.recipe;
         c.kick = parse_kick(ic);
         c.realizations = 1;
         c.profile_realizations = 0;
@@ -210,9 +202,9 @@ void bind_dynamics(py::module_& m) {
         c.fit = c.fit_end <= d.duration * (1 + 1e-12);  // a window beyond T: no exponents
         if (!forces_at.is_none())
           for (double s : double_vector(forces_at, "forces_at")) {
-            if (s != std::floor(s) || s < 1 || s > static_cast<double>(c.n))
-              bad_value("forces_at",
-                        " " + format_number(s) + ": outside the chain of " + std::to_string(c.n) + " beads (1..N)");
+            if (s != std::floor(s) || s < 1 || s > static_cast<double>(c.chain.size()))
+              bad_value("forces_at", " " + format_number(s) + ": outside the chain of " +
+                                         std::to_string(c.chain.size()) + " beads (1..N)");
             d.force_sites.push_back(static_cast<std::size_t>(s) - 1);
           }
         d.force_samples = checked_size(force_samples, "force_samples", 1, 100000000);
@@ -228,12 +220,9 @@ void bind_dynamics(py::module_& m) {
           bad_value("mode", ": mode, mode_khz and energy only with ic='mode'");
         c.mode = {.mode = mode, .near_khz = mode_khz, .energy = energy, .amplitude = 0};
         validate(c);
-        // τ by the stability rule: of every realization for a named random chain (as the tool's
-        // --disorder), of this very chain otherwise (as the tool's --config/--radii).
-        const bool named =
-            described.contains("disorder") && described["disorder"] != "diatomic" && !described.contains("beads");
-        const nlohmann::json step_rule =
-            settle_scheme_and_step(c, integrator == "auto", !dt.is_none(), named ? nullptr : &chain.chain);
+        // τ by the stability rule on the chain's recipe: every realization of a random chain (as the
+        // tool's --disorder), this very chain for a given one (as the tool's --config/--radii).
+        const nlohmann::json step_rule = settle_scheme_and_step(c, integrator == "auto", !dt.is_none());
         const KickedChain kicked = kick(c, chain.chain);
 
         SpreadingResult r;
@@ -249,7 +238,7 @@ void bind_dynamics(py::module_& m) {
         meta["parameters"]["chain"] = described;
         if (c.kick == Kick::velocity) meta["parameters"]["beta_m_s"] = kicked.beta;  // the β used
         if (c.kick == Kick::mode) meta["parameters"]["mode_used"] = to_json(kicked.mode);
-        meta["seed"] = c.seed;
+        meta["seed"] = c.chain.seed;
         const nlohmann::json fitted = exponent_keys(exponents, c.centre);
         meta.update(fitted);
         meta["time_step_rule"] = step_rule;
@@ -279,7 +268,7 @@ void bind_dynamics(py::module_& m) {
         out["deviation"] = py::none();
         if (d.deviation_samples > 0) {
           py::dict w;
-          const std::size_t rows = r.deviation_t.size(), n = c.n;
+          const std::size_t rows = r.deviation_t.size(), n = c.chain.size();
           std::vector<long long> sites;
           for (std::size_t j = 0; j < n; ++j) sites.push_back(static_cast<long long>(j + 1));
           w["t"] = to_numpy(std::move(r.deviation_t));
@@ -387,13 +376,13 @@ void bind_dynamics(py::module_& m) {
                                  max_energy_error,
                                  energy_guard};
         TransportCase c;
-        c.disorder = disorder_of(disorder);
-        c.q = q;
-        c.xi = xi;
-        c.n = checked_size(N, "N", 2, 100000000);
-        c.precompression = F0;
-        c.r1 = R1;
-        c.seed = checked_size(seed, "seed");
+        c.chain = {.disorder = disorder_of(disorder),
+                   .q = q,
+                   .xi = xi,
+                   .R1 = R1,
+                   .N = checked_size(N, "N", 2, 100000000),
+                   .F0 = F0,
+                   .seed = checked_size(seed, "seed")};
         c.kick = parse_kick(ic);
         c.realizations = checked_size(realizations, "realizations", 1);
         c.profile_realizations = profile ? c.realizations : 0;
@@ -406,8 +395,7 @@ void bind_dynamics(py::module_& m) {
         const std::string log = checkpoint.is_none() ? std::string() : py::str(checkpoint).cast<std::string>();
         if (resume && log.empty()) bad_value("resume", ": needs checkpoint= (the file of the interrupted run)");
         // The chain of realization 0, as the tool describes it (and the β it kicks it with).
-        const ChainParameters p{.N = c.n, .q = q, .xi = xi, .seed = c.seed, .realization = 0, .F0 = F0, .R1 = R1};
-        const KickedChain first = kick(c, random_chain(c.disorder, p));
+        const KickedChain first = kick(c, c.chain.chain(0));
 
         TransportSummary s;
         run_long("transport", c.realizations, progress, [&](const LongRun& control) {
@@ -423,18 +411,9 @@ void bind_dynamics(py::module_& m) {
 
         nlohmann::json meta = metadata_head("transport");
         meta["parameters"] = describe(c);
-        meta["parameters"]["chain"] = {{"F0_N", F0},
-                                       {"material", material_json(steel)},
-                                       {"walls", "flat, same material as the beads"},
-                                       {"R1_m", R1},
-                                       {"xi", xi},
-                                       {"disorder", to_string(c.disorder)},
-                                       {"q", q},
-                                       {"seed", c.seed},
-                                       {"realization", 0},
-                                       {"N", c.n}};
+        meta["parameters"]["chain"] = describe(c.chain, 0);
         if (c.kick == Kick::velocity && !c.match_beta) meta["parameters"]["beta_m_s"] = first.beta;
-        meta["seed"] = c.seed;
+        meta["seed"] = c.chain.seed;
         const nlohmann::json fitted = exponent_keys(s.exponents, c.centre);
         meta.update(fitted);
         meta["ensemble"] = {{"realizations", s.realizations},
@@ -543,10 +522,10 @@ void bind_dynamics(py::module_& m) {
             profile_F0.is_none() ? std::vector<double>{} : number_list(profile_F0, "profile_F0", 0);
         config.profile_realizations = checked_size(profile_realizations, "profile_realizations");
         TransportCase& base = config.base;
-        base.n = checked_size(N, "N", 2, 100000000);
-        base.xi = xi;
-        base.q = q;
-        base.seed = checked_size(seed, "seed");
+        base.chain.N = checked_size(N, "N", 2, 100000000);
+        base.chain.xi = xi;
+        base.chain.q = q;
+        base.chain.seed = checked_size(seed, "seed");
         base.realizations = checked_size(realizations, "realizations", 1);
         apply(k, base);
         granular::apply(BeyondChoices{damping_time, kk_gamma, mle, renormalize}, base.dynamics);

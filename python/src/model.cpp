@@ -34,29 +34,14 @@ ChainParameters chain_parameters(long long N, double q, double xi, long long see
   return p;
 }
 
-nlohmann::json base_description(double F0, const Material& material) {
-  return {{"F0_N", F0}, {"material", material_json(material)}, {"walls", "flat, same material as the beads"}};
-}
-
-PyChain typed_chain(Configuration types, const ChainParameters& p, nlohmann::json description) {
-  PyChain c;
-  c.chain = from_types(types, p);
-  c.types = std::move(types);
-  c.material = p.material;
-  c.description = std::move(description);
-  c.description["R1_m"] = p.R1;
-  c.description["xi"] = p.xi;
-  c.description["N"] = c.chain.size();
-  return c;
+ChainRecipe recipe_of(const ChainParameters& p) {
+  return {.q = p.q, .xi = p.xi, .R1 = p.R1, .N = p.N, .F0 = p.F0, .material = p.material, .seed = p.seed};
 }
 
 PyChain random_py_chain(Disorder kind, const ChainParameters& p) {
-  nlohmann::json d = base_description(p.F0, p.material);
-  d["disorder"] = to_string(kind);
-  d["q"] = p.q;
-  d["seed"] = p.seed;
-  d["realization"] = p.realization;
-  return typed_chain(realization_configuration(kind, p.q, p.N, p.seed, p.realization), p, d);
+  ChainRecipe r = recipe_of(p);
+  r.disorder = kind;
+  return py_chain(r, p.realization);
 }
 
 const char* chain_keywords_doc =
@@ -103,6 +88,19 @@ py::object chain_types(const PyChain& c) {
 }
 
 }  // namespace
+
+PyChain py_chain(ChainRecipe recipe, std::uint64_t realization, const std::string& name) {
+  validate(recipe);
+  PyChain c;
+  c.chain = recipe.chain(realization);
+  c.types = recipe.types(realization);
+  c.material = recipe.material;
+  c.description = describe(recipe, realization);
+  if (!name.empty()) c.description["disorder"] = name;
+  c.recipe = std::move(recipe);
+  c.realization = realization;
+  return c;
+}
 
 void bind_model(py::module_& m) {
   m.attr("paper_r1") = paper_r1;
@@ -187,12 +185,10 @@ void bind_model(py::module_& m) {
   m.def(
       "diatomic",
       [](long long N, double xi, double F0, double R1, const Material& material) {
-        const ChainParameters p = chain_parameters(N, 0.5, xi, 1, 0, F0, R1, material);
-        nlohmann::json d = base_description(F0, material);
-        d["disorder"] = "diatomic";
-        Configuration types(p.N);
-        for (std::size_t i = 0; i < p.N; ++i) types[i] = i % 2 == 0 ? 1 : 2;
-        return typed_chain(std::move(types), p, d);
+        ChainRecipe r = recipe_of(chain_parameters(N, 0.5, xi, 1, 0, F0, R1, material));
+        r.given_types = Configuration(r.N);
+        for (std::size_t i = 0; i < r.N; ++i) (*r.given_types)[i] = i % 2 == 0 ? 1 : 2;
+        return py_chain(r, 0, "diatomic");
       },
       py::arg("N") = 100, py::arg("xi") = 0.5, py::arg("F0") = 10.0, py::arg("R1") = paper_r1,
       py::arg("material") = steel,
@@ -205,7 +201,9 @@ void bind_model(py::module_& m) {
         const ChainParameters p = chain_parameters(static_cast<long long>(std::max<std::size_t>(t.size(), 2)), 0.5, xi,
                                                    1, 0, F0, R1, material);
         if (t.size() < 2) bad_value("types", ": " + std::to_string(t.size()) + " beads; a chain needs at least 2");
-        return typed_chain(std::move(t), p, base_description(F0, material));
+        ChainRecipe r = recipe_of(p);
+        r.given_types = std::move(t);
+        return py_chain(r, 0);
       },
       py::arg("types"), py::arg("xi") = 0.5, py::arg("F0") = 10.0, py::arg("R1") = paper_r1, py::arg("material") = steel,
       "A chain of given bead types: `types` is any array-like of 1 and 2 (type 1 has radius R1 [m], type 2 xi*R1), "
@@ -215,12 +213,7 @@ void bind_model(py::module_& m) {
       [](const py::object& radii, double F0, const Material& material) {
         std::vector<double> r = double_vector(radii, "radii");
         if (r.size() < 2) bad_value("radii", ": " + std::to_string(r.size()) + " beads; a chain needs at least 2");
-        PyChain c;
-        c.chain = granular::from_radii(r, F0, material);
-        c.material = material;
-        c.description = base_description(F0, material);
-        c.description["N"] = c.chain.size();
-        return c;
+        return py_chain({.given_radii = std::move(r), .F0 = F0, .material = material}, 0);
       },
       py::arg("radii"), py::arg("F0") = 10.0, py::arg("material") = steel,
       "A chain of beads of given radii [m] (any 1-D array-like, each finite and > 0) of one material, between flat "

@@ -30,7 +30,7 @@ py::array_t<double> gather(const PyIprMap& map, std::vector<double> IprMapCell::
   std::vector<double> out;
   for (const auto& cell : map.cells) out.insert(out.end(), (cell.*field).begin(), (cell.*field).end());
   if (map.selection()) return to_numpy(std::move(out));
-  const std::size_t q = map.config.q_values.size(), x = map.config.xi_values.size(), n = map.config.n;
+  const std::size_t q = map.config.q_values.size(), x = map.config.xi_values.size(), n = map.config.chain.N;
   auto* owner = new std::vector<double>(std::move(out));
   py::capsule base(owner, [](void* p) { delete static_cast<std::vector<double>*>(p); });
   return py::array_t<double>({q, x, n}, {x * n * sizeof(double), n * sizeof(double), sizeof(double)}, owner->data(),
@@ -126,13 +126,13 @@ void bind_studies(py::module_& m) {
                        "of means over the realizations (mode k at index k-1). With near/count or window: one entry "
                        "per selected mode of every realization (see rows()).")
       .def_property_readonly(
-          "disorder", [](const PyIprMap& p) { return to_string(p.config.disorder); }, "h | A | RDM1 | RDM2")
+          "disorder", [](const PyIprMap& p) { return to_string(p.config.chain.disorder); }, "h | A | RDM1 | RDM2")
       .def_property_readonly(
           "q", [](const PyIprMap& p) { return to_numpy(p.config.q_values); }, "the q grid")
       .def_property_readonly(
           "xi", [](const PyIprMap& p) { return to_numpy(p.config.xi_values); }, "the xi grid (R2/R1)")
       .def_property_readonly(
-          "N", [](const PyIprMap& p) { return p.config.n; }, "beads per chain")
+          "N", [](const PyIprMap& p) { return p.config.chain.N; }, "beads per chain")
       .def_property_readonly("selection", &PyIprMap::selection, "True when made with near/count or window")
       .def_property_readonly(
           "freq_khz", [](const PyIprMap& p) { return gather(p, &IprMapCell::freq_khz); },
@@ -152,8 +152,9 @@ void bind_studies(py::module_& m) {
           "the ipr-map tool's JSON: parameters (disorder, xi, q, N, F0_N, R1_m, material, "
           "realizations, seed, threads, solver), selection, version")
       .def("__repr__", [](const PyIprMap& p) {
-        return "<granular.IprMap " + to_string(p.config.disorder) + ", " + std::to_string(p.config.q_values.size()) +
-               " q x " + std::to_string(p.config.xi_values.size()) + " xi, N=" + std::to_string(p.config.n) + ">";
+        return "<granular.IprMap " + to_string(p.config.chain.disorder) + ", " +
+               std::to_string(p.config.q_values.size()) + " q x " + std::to_string(p.config.xi_values.size()) +
+               " xi, N=" + std::to_string(p.config.chain.N) + ">";
       });
 
   m.def(
@@ -164,14 +165,14 @@ void bind_studies(py::module_& m) {
          bool progress) {
         PyIprMap map;
         IprMapConfig& c = map.config;
-        c.disorder = disorder_of(disorder);
+        c.chain.disorder = disorder_of(disorder);
         c.xi_values = number_list(xi, "xi", 0.01);
         c.q_values = number_list(q, "q", 0.1);
-        c.n = checked_size(N, "N", 2, 100000000);
-        c.precompression = F0;
-        c.r1 = R1;
+        c.chain.N = checked_size(N, "N", 2, 100000000);
+        c.chain.F0 = F0;
+        c.chain.R1 = R1;
         c.realizations = checked_size(realizations, "realizations", 1);
-        c.seed = checked_size(seed, "seed");
+        c.chain.seed = checked_size(seed, "seed");
         const int thread_request = thread_count(threads);
         if (solver != "fast" && solver != "lapack" && !solver.starts_with("lapack-"))
           bad_value("solver", " '" + solver + "': expected fast, lapack or lapack-<stevr|stemr|stevd|steqr>");
@@ -217,16 +218,16 @@ void bind_studies(py::module_& m) {
                  });
 
         nlohmann::json meta = metadata_head("ipr_map");
-        meta["parameters"] = {{"disorder", to_string(c.disorder)},
+        meta["parameters"] = {{"disorder", to_string(c.chain.disorder)},
                               {"xi", c.xi_values},
                               {"q", c.q_values},
-                              {"N", c.n},
-                              {"F0_N", c.precompression},
-                              {"R1_m", c.r1},
-                              {"material", material_json(c.material)},
+                              {"N", c.chain.N},
+                              {"F0_N", c.chain.F0},
+                              {"R1_m", c.chain.R1},
+                              {"material", material_json(c.chain.material)},
                               {"walls", "flat, same material as the beads"},
                               {"realizations", c.realizations},
-                              {"seed", c.seed},
+                              {"seed", c.chain.seed},
                               {"threads", resolve_threads(thread_request)},
                               {"solver", solver}};
         if (!selected) {
@@ -416,11 +417,11 @@ void bind_studies(py::module_& m) {
       [](const std::string& disorder, double q, long long N, long long realizations, long long seed,
          long long max_distance, long long threads, bool progress) {
         CorrelationConfig c;
-        c.disorder = disorder_of(disorder);
-        c.q = q;
-        c.n = checked_size(N, "N", 2, 100000000);
+        c.chain.disorder = disorder_of(disorder);
+        c.chain.q = q;
+        c.chain.N = checked_size(N, "N", 2, 100000000);
         c.realizations = checked_size(realizations, "realizations", 1);
-        c.seed = checked_size(seed, "seed");
+        c.chain.seed = checked_size(seed, "seed");
         c.max_distance = checked_size(max_distance, "max_distance");
         const int thread_request = thread_count(threads);
         validate(c);
@@ -434,8 +435,8 @@ void bind_studies(py::module_& m) {
         });
         out.metadata = metadata_head("correlations");
         out.metadata["parameters"] = {
-            {"disorder", to_string(c.disorder)}, {"q", c.q},       {"N", c.n},
-            {"realizations", c.realizations},    {"seed", c.seed}, {"max_distance", c.max_distance}};
+            {"disorder", to_string(c.chain.disorder)}, {"q", c.chain.q},       {"N", c.chain.N},
+            {"realizations", c.realizations},          {"seed", c.chain.seed}, {"max_distance", c.max_distance}};
         out.metadata["realizations_used"] = out.result.used;
         return out;
       },

@@ -47,10 +47,12 @@ TEST(Correlation, MassesOfTwoTypesGiveTheIndicatorsCoefficient) {
 // The study on k types and polydisperse radii against the infinite-chain formulas, and the
 // two-type distribution against the paper's kinds (same chains, same coefficient to rounding).
 TEST(Correlation, StudyOfBeadDistributions) {
-  CorrelationConfig paper{
-      .disorder = Disorder::rdm2, .q = 0.3, .n = 400, .realizations = 50, .seed = 3, .max_distance = 5};
+  CorrelationConfig paper{.chain = {.disorder = Disorder::rdm2, .q = 0.3, .N = 400, .seed = 3},
+                          .realizations = 50,
+                          .max_distance = 5};
   CorrelationConfig two = paper;
-  two.beads = BeadDistribution{.radii = {4.76e-3, 2.38e-3}, .probabilities = {0.3, 0.7}, .rule = Disorder::rdm2};
+  two.chain.distribution =
+      BeadDistribution{.radii = {4.76e-3, 2.38e-3}, .probabilities = {0.3, 0.7}, .rule = Disorder::rdm2};
   const CorrelationResult a = correlation_study(paper), b = correlation_study(two);
   for (std::size_t d = 0; d <= 5; ++d) {
     EXPECT_NEAR(b.mean[d], a.mean[d], 1e-12) << d;
@@ -65,7 +67,7 @@ TEST(Correlation, StudyOfBeadDistributions) {
   BeadDistribution dimers = three;
   dimers.rule = Disorder::rdm1;
   for (const BeadDistribution& beads : {three, uniform, dimers}) {
-    CorrelationConfig c{.n = 2000, .realizations = 200, .seed = 5, .max_distance = 4, .beads = beads};
+    CorrelationConfig c{.chain = {.distribution = beads, .N = 2000, .seed = 5}, .realizations = 200, .max_distance = 4};
     const CorrelationResult r = correlation_study(c, {.threads = 2});
     EXPECT_EQ(r.used, 200u);
     EXPECT_NEAR(r.mean[0], 1, 1e-14);

@@ -16,10 +16,10 @@ namespace {
 
 TransportCase lyapunov_case() {
   TransportCase c;
-  c.disorder = Disorder::anderson;
-  c.n = 201;
+  c.chain.disorder = Disorder::anderson;
+  c.chain.N = 201;
   c.site = 100;
-  c.precompression = 0.1;
+  c.chain.F0 = 0.1;
   c.realizations = 4;
   c.profile_realizations = 2;
   c.dynamics.duration = 1e-3;
@@ -43,7 +43,9 @@ TEST(BeyondEnsemble, MeanLyapunovExponentIsBitIdenticalForOneAndTwoThreads) {
   double sum = 0;
   for (std::uint64_t r = 0; r < c.realizations; ++r) {
     const Chain chain =
-        make_chain(radii_of(realization_configuration(c.disorder, c.q, c.n, c.seed, r), c.r1, c.xi), c.precompression);
+        make_chain(radii_of(realization_configuration(c.chain.disorder, c.chain.q, c.chain.N, c.chain.seed, r),
+                            c.chain.R1, c.chain.xi),
+                   c.chain.F0);
     sum += run_spreading(chain, kick(c, chain).initial, spreading_config(c)).mle.back();
   }
   EXPECT_NEAR(one.mle.mean.back(), sum / 4, 1e-12 * std::abs(sum));
@@ -70,7 +72,7 @@ TEST(BeyondEnsemble, DampedEnsembleIsBitIdenticalForOneAndTwoThreads) {
 TEST(BeyondEnsemble, TangentMapAndDampingTogetherAreRejected) {
   TransportCase c = lyapunov_case();
   c.dynamics.damping = {1e-3, 0};
-  EXPECT_THROW(validate(c.dynamics, c.n), InvalidInput);
+  EXPECT_THROW(validate(c.dynamics, c.chain.N), InvalidInput);
 }
 
 }  // namespace

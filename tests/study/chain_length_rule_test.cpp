@@ -17,8 +17,8 @@ namespace {
 
 TransportCase long_case(Disorder d, double f0, Kick kick, double duration) {
   TransportCase c;
-  c.disorder = d;
-  c.precompression = f0;
+  c.chain.disorder = d;
+  c.chain.F0 = f0;
   c.kick = kick;
   c.dynamics.duration = duration;
   c.fit = false;
@@ -29,15 +29,15 @@ TransportCase long_case(Disorder d, double f0, Kick kick, double duration) {
 
 TransportCase sized(TransportCase c, double factor = 1) {
   const ChainLength length = automatic_chain_length(c);
-  c.n = 2 * static_cast<std::size_t>(std::ceil(factor * static_cast<double>(length.n - 1) / 2)) + 1;
-  c.site = (c.n - 1) / 2;
-  c.centred_draw = true;
+  c.chain.N = 2 * static_cast<std::size_t>(std::ceil(factor * static_cast<double>(length.n - 1) / 2)) + 1;
+  c.site = (c.chain.N - 1) / 2;
+  c.chain.centred = true;
   validate(c);
   return c;
 }
 
 SpreadingResult run(const TransportCase& c, std::uint64_t r) {
-  const Chain chain = make_chain(radii_of(case_configuration(c, r), c.r1, c.xi), c.precompression);
+  const Chain chain = c.chain.chain(r);
   return run_spreading(chain, kick(c, chain).initial, spreading_config(c));
 }
 
@@ -47,7 +47,7 @@ TEST(ChainLengthRule, OmegaIsTwiceTheLinearSoundSpeed) {
   TransportCase c = long_case(Disorder::homogeneous, 10, Kick::displacement, 1e-2);
   c.alpha = 1e-12;
   const ChainLength length = automatic_chain_length(c);
-  const Chain chain = make_chain(std::vector<double>(3, c.r1), c.precompression);
+  const Chain chain = make_chain(std::vector<double>(3, c.chain.R1), c.chain.F0);
   const ForceLaw law = make_force_law(ForceLawKind::hertz, chain);
   const double k = std::visit([&](const auto& l) { return l.stiffness(1, 0.0); }, law);  // at the static strain
   const double sound = std::sqrt(k / chain.mass[1]);
@@ -83,7 +83,7 @@ TEST(ChainLengthRule, OneAndAHalfTimesTheLengthGivesTheSameSpread) {
     for (Disorder d : {Disorder::anderson, Disorder::rdm1}) {
       const TransportCase a = sized(long_case(d, f0, Kick::velocity, 2e-2));
       const TransportCase b = sized(long_case(d, f0, Kick::velocity, 2e-2), 1.5);
-      ASSERT_GE(b.n, a.n + (a.n - 1) / 2);
+      ASSERT_GE(b.chain.N, a.chain.N + (a.chain.N - 1) / 2);
       for (std::uint64_t r = 0; r < 2; ++r) {
         const SpreadingResult x = run(a, r), y = run(b, r);
         ASSERT_EQ(x.m2.size(), y.m2.size());
@@ -96,7 +96,7 @@ TEST(ChainLengthRule, OneAndAHalfTimesTheLengthGivesTheSameSpread) {
       // The check can fail: drawn from the left wall, the two lengths put different beads
       // around the kick, and m̃2 parts.
       TransportCase plain_a = a, plain_b = b;
-      plain_a.centred_draw = plain_b.centred_draw = false;
+      plain_a.chain.centred = plain_b.chain.centred = false;
       EXPECT_GT(std::fabs(run(plain_a, 0).m2.back() / run(plain_b, 0).m2.back() - 1), 1e-6) << f0 << to_string(d);
     }
 }

@@ -21,15 +21,15 @@ namespace {
 // 200 beads have IPR ~ 1/100), every other gap bin is empty with IPR NaN.
 TEST(IprMapBins, NoBulkModeInTheDiatomicGap) {
   IprMapConfig c;
-  c.disorder = Disorder::rdm2;
+  c.chain.disorder = Disorder::rdm2;
   c.q_values = {1.0};
   c.xi_values = {0.5};
-  c.n = 200;
+  c.chain.N = 200;
   c.realizations = 2;
   c.bin_khz = 0.25;
   const auto cells = compute_ipr_map(c);
   ASSERT_EQ(cells.size(), 1u);
-  const BandEdges e = band_edges(c.material, c.r1, 0.5, c.precompression);
+  const BandEdges e = band_edges(c.chain.material, c.chain.R1, 0.5, c.chain.F0);
   const double fb1 = e.fb1 / 1e3, fb2 = e.fb2 / 1e3;
   ASSERT_GT(fb2 - fb1, 4 * c.bin_khz);
   std::size_t inside = 0, total = 0, in_gap = 0;
@@ -47,17 +47,17 @@ TEST(IprMapBins, NoBulkModeInTheDiatomicGap) {
   }
   EXPECT_GT(inside, 50u);
   EXPECT_LE(in_gap, 2 * c.realizations) << "more gap modes than walls";
-  EXPECT_EQ(total, c.n * c.realizations) << "every mode of every realization is in one bin";
+  EXPECT_EQ(total, c.chain.N * c.realizations) << "every mode of every realization is in one bin";
 }
 
 // Bins narrower than every level spacing hold one mode each (one realization): the binned mean
 // is then that mode's IPR, bin by bin, exactly as the by-mode map gives it.
 TEST(IprMapBins, OneModePerBinEqualsThePerModeMean) {
   IprMapConfig c;
-  c.disorder = Disorder::anderson;
+  c.chain.disorder = Disorder::anderson;
   c.q_values = {0.5};
   c.xi_values = {0.6};
-  c.n = 60;
+  c.chain.N = 60;
   c.realizations = 1;
   const auto by_mode = compute_ipr_map(c);
   const auto& f = by_mode[0].freq_khz;
@@ -76,16 +76,16 @@ TEST(IprMapBins, OneModePerBinEqualsThePerModeMean) {
   }
   std::size_t occupied = 0;
   for (std::size_t m : binned[0].bin_modes) occupied += m;
-  EXPECT_EQ(occupied, c.n);
-  EXPECT_EQ(matched, c.n);
+  EXPECT_EQ(occupied, c.chain.N);
+  EXPECT_EQ(matched, c.chain.N);
 }
 
 TEST(IprMapBins, IdenticalForOneAndTwoThreads) {
   IprMapConfig c;
-  c.disorder = Disorder::rdm1;
+  c.chain.disorder = Disorder::rdm1;
   c.q_values = {0.3, 0.7};
   c.xi_values = {0.4, 0.9};
-  c.n = 80;
+  c.chain.N = 80;
   c.realizations = 9;
   c.bin_khz = 0.5;
   const auto one = compute_ipr_map(c, {.threads = 1});

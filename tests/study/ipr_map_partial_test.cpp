@@ -13,12 +13,12 @@ namespace {
 
 IprMapConfig small_config() {
   IprMapConfig c;
-  c.disorder = Disorder::rdm1;
+  c.chain.disorder = Disorder::rdm1;
   c.q_values = {0.5};
   c.xi_values = {0.5, 0.8};
-  c.n = 400;
+  c.chain.N = 400;
   c.realizations = 3;
-  c.seed = 5;
+  c.chain.seed = 5;
   return c;
 }
 
@@ -33,7 +33,7 @@ TEST(IprMapPartial, RowsAreThePartialSpectraOfEachRealization) {
       ASSERT_EQ(cell.ipr.size(), 18u);
       ASSERT_EQ(cell.mode.size(), 18u);
       for (std::size_t r = 0; r < 3; ++r) {
-        const Chain chain = rdm1({.N = c.n, .q = 0.5, .xi = cell.xi, .seed = c.seed, .realization = r});
+        const Chain chain = rdm1({.N = c.chain.N, .q = 0.5, .xi = cell.xi, .seed = c.chain.seed, .realization = r});
         const Spectrum p = spectrum(dynamical_matrix(chain), c.selection, {.method = m});
         for (std::size_t j = 0; j < 6; ++j) {
           EXPECT_EQ(cell.realization[6 * r + j], r);

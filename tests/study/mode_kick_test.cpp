@@ -148,7 +148,7 @@ TEST(ModeKick, BadKicksNameTheirParameter) {
 
 TEST(ModeKick, TransportCaseRunsAModeKick) {
   TransportCase c;
-  c.n = 100;
+  c.chain.N = 100;
   c.site = 50;
   c.kick = Kick::mode;
   c.mode = {.near_khz = 30, .energy = 1e-7};

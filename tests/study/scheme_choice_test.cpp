@@ -14,10 +14,10 @@ namespace {
 
 TransportCase homogeneous(double f0, double alpha) {
   TransportCase c;
-  c.disorder = Disorder::homogeneous;
-  c.precompression = f0;
+  c.chain.disorder = Disorder::homogeneous;
+  c.chain.F0 = f0;
   c.alpha = alpha;
-  c.n = 3;
+  c.chain.N = 3;
   c.site = 1;
   return c;
 }
@@ -66,7 +66,7 @@ TEST(SchemeChoice, TheBenchmarkChainKeepsFiveMicroseconds) {
 TEST(SchemeChoice, SettlesOneSchemeAndStepForAStudy) {
   TransportCase closed;  // A, F0 = 10 N, displacement kick of 0.1 µm
   TransportCase open = closed;
-  open.precompression = 0;
+  open.chain.F0 = 0;
   std::vector<TransportCase> one{closed};
   const nlohmann::json rule = settle_scheme_and_step(one, true, false);
   EXPECT_EQ(one.front().dynamics.integrator.name(), "srkn14a");

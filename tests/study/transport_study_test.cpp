@@ -10,10 +10,10 @@ namespace {
 
 TransportCase small_case(Disorder d, double f0) {
   TransportCase c;
-  c.disorder = d;
-  c.n = 301;
+  c.chain.disorder = d;
+  c.chain.N = 301;
   c.site = 150;
-  c.precompression = f0;
+  c.chain.F0 = f0;
   c.realizations = 6;
   c.dynamics.duration = 1e-3;
   c.dynamics.samples = 40;
@@ -44,8 +44,8 @@ TEST(TransportStudy, HomogeneousPrecompressedEnsembleIsBallistic) {
   // SPEC §4: homogeneous linear-like chains spread ballistically, γ = 2. N = 1401 keeps the
   // front off the walls for 10 ms (Ω T ≈ 1137).
   TransportCase c;
-  c.disorder = Disorder::homogeneous;
-  c.n = 1401;
+  c.chain.disorder = Disorder::homogeneous;
+  c.chain.N = 1401;
   c.site = 700;
   c.realizations = 2;
   c.dynamics.samples = 100;
@@ -78,7 +78,7 @@ TEST(ExponentTable, CasesInTableOrderWithOneHomogeneousRealization) {
   std::size_t runs = 0;
   for (const auto& c : cases) runs += c.realizations;
   EXPECT_EQ(runs, 2u * 5u * (3u * 500u + 1u));  // the 15,000 runs, plus 10 homogeneous ones
-  EXPECT_EQ(cases[0].disorder, Disorder::homogeneous);
+  EXPECT_EQ(cases[0].chain.disorder, Disorder::homogeneous);
   EXPECT_EQ(cases[0].kick, Kick::displacement);
   EXPECT_EQ(cases[0].profile_realizations, 1u);
   EXPECT_EQ(cases[1].profile_realizations, 100u);  // F0 = 10: profile kept
@@ -98,15 +98,15 @@ TEST(ExponentTable, BeadChainsRunAfterTheKindsUnderTheirNames) {
   const auto cases = exponent_cases(config);
   ASSERT_EQ(cases.size(), 6u);
   EXPECT_EQ(chain_names(config), (std::vector<std::string>{"h", "RDM1", "K3"}));
-  for (std::size_t i : {0u, 1u, 3u, 4u}) EXPECT_FALSE(cases[i].beads) << i;
+  for (std::size_t i : {0u, 1u, 3u, 4u}) EXPECT_FALSE(cases[i].chain.distribution) << i;
   for (std::size_t i : {2u, 5u}) {
-    ASSERT_TRUE(cases[i].beads);
-    EXPECT_EQ(describe(*cases[i].beads), describe(three));
+    ASSERT_TRUE(cases[i].chain.distribution);
+    EXPECT_EQ(describe(*cases[i].chain.distribution), describe(three));
     EXPECT_EQ(cases[i].realizations, 7u);
-    EXPECT_EQ(cases[i].disorder, Disorder::rdm1);  // its rule, for the JSON
+    EXPECT_EQ(cases[i].chain.disorder, Disorder::rdm1);  // its rule, for the JSON
   }
   EXPECT_EQ(cases[0].realizations, 1u);
-  EXPECT_EQ(cases[5].precompression, 0.0);
+  EXPECT_EQ(cases[5].chain.F0, 0.0);
   const auto parameter_of = [&](const std::string& name) {
     ExponentTableConfig bad = config;
     bad.bead_chains.push_back({name, three});
@@ -140,8 +140,8 @@ namespace {
 // on 2 cores (60 runs of 2501 beads to 10 ms in the sonic vacuum, where the active window is small).
 TEST(TransportStudy, SonicVacuumVelocityKickMatchesTableI) {
   TransportCase c;
-  c.disorder = Disorder::anderson;
-  c.precompression = 0;
+  c.chain.disorder = Disorder::anderson;
+  c.chain.F0 = 0;
   c.kick = Kick::velocity;
   c.realizations = 60;
   c.profile_realizations = 0;
@@ -165,7 +165,7 @@ namespace {
 // bit-identical for any thread count, and its realizations really differ.
 TEST(TransportStudy, PolydisperseEnsembleIsBitIdenticalForOneAndTwoThreads) {
   TransportCase c;
-  c.n = 201;
+  c.chain.N = 201;
   c.site = 100;
   c.realizations = 5;
   c.dynamics.duration = 5e-4;
@@ -173,7 +173,8 @@ TEST(TransportStudy, PolydisperseEnsembleIsBitIdenticalForOneAndTwoThreads) {
   c.fit_begin = 2e-4;
   c.fit_end = 5e-4;
   c.criterion.t_start = 2e-4;
-  c.beads = BeadDistribution{.kind = BeadDistribution::Kind::normal, .mean = 4e-3, .sd = 1e-3, .minimum = 2e-3};
+  c.chain.distribution =
+      BeadDistribution{.kind = BeadDistribution::Kind::normal, .mean = 4e-3, .sd = 1e-3, .minimum = 2e-3};
   const TransportSummary one = run_transport_study(c, {1, "", false, nullptr});
   const TransportSummary two = run_transport_study(c, {2, "", false, nullptr});
   EXPECT_EQ(one.m2.mean, two.m2.mean);
@@ -181,7 +182,7 @@ TEST(TransportStudy, PolydisperseEnsembleIsBitIdenticalForOneAndTwoThreads) {
   EXPECT_EQ(one.profile.mean, two.profile.mean);
   EXPECT_GT(one.m2.standard_error.back(), 0.0);  // different chains, different spreading
   EXPECT_EQ(describe(c)["beads"], "normal(0.004,0.001,min 0.002)");
-  c.beads.reset();
+  c.chain.distribution.reset();
   EXPECT_FALSE(describe(c).contains("beads"));  // the paper's cases keep their identity
 }
 

@@ -17,26 +17,18 @@ struct StreamedChain {
 };
 
 inline StreamedChain build_bead_source(const ChainOptions& o) {
-  const ChainParameters p = chain_parameters(o);
   if (o.n < 2 || o.n > 1000000000000) throw InvalidInput("N", " " + std::to_string(o.n) + ": must be in [2, 1e12]");
+  ChainOptions stored = o;
+  stored.n = 2;  // N checked below, by what the chain is
+  ChainRecipe recipe = chain_recipe(stored);
+  recipe.N = static_cast<std::size_t>(o.n);
+  const bool streamed = recipe.drawn() && !recipe.distribution;  // else stored: memory O(N)
+  if (!streamed && recipe.drawn() && o.n > 100000000)
+    throw InvalidInput("N", " " + std::to_string(o.n) + ": --types/--polydisperse store the chain (<= 1e8)");
+  validate(recipe, streamed ? 1000000000000 : 100000000);
   StreamedChain s;
-  s.description = chain_description(o);
-  if (const auto beads = bead_distribution(o)) {  // stored: memory O(N) (random access needs the chain)
-    if (o.n > 100000000)
-      throw InvalidInput("N", " " + std::to_string(o.n) + ": --types/--polydisperse store the chain (<= 1e8)");
-    validate(p);
-    s.source = chain_beads(from_radii(realization_radii(*beads, p.N, p.seed, p.realization), o.f0));
-  } else if (!o.radii.empty()) {
-    if (!(o.f0 > 0) || !std::isfinite(o.f0))
-      throw InvalidInput("F0",
-                         " " + format_number(o.f0) + ": must be finite and > 0 (the sonic vacuum has no linear limit)");
-    s.source = chain_beads(from_radii(read_radii_warning(o.radii), o.f0));
-  } else if (!o.config.empty()) {
-    s.source = typed_beads(read_configuration_file(o.config), p);
-  } else {
-    s.source = random_beads(parse_disorder(o.disorder), p);
-  }
-  s.description["N"] = s.source->size();
+  s.source = recipe.beads(chain_realization(o));
+  s.description = describe(recipe, chain_realization(o));
   return s;
 }
 

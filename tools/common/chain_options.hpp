@@ -13,7 +13,7 @@
 
 #include "granular/io/range_syntax.hpp"
 #include "granular/model/bead_distribution.hpp"
-#include "granular/model/centred_configuration.hpp"
+#include "granular/model/chain_recipe.hpp"
 #include "granular/model/configuration_file.hpp"
 #include "granular/model/named_chains.hpp"
 #include "tool_main.hpp"
@@ -125,57 +125,6 @@ inline std::optional<BeadDistribution> bead_distribution(const ChainOptions& o) 
   return d;
 }
 
-struct SelectedChain {
-  Chain chain;
-  Configuration types;                    ///< empty when the chain came from a radii file or a bead distribution
-  std::optional<BeadDistribution> beads;  ///< --types/--type-masses/--polydisperse: what an ensemble draws
-  nlohmann::json description;
-};
-
-/// What every chain the options pick shares: the seed and realization, checked, with the other
-/// named-chain parameters (N unchecked: a stored and a streamed chain have their own limits).
-inline ChainParameters chain_parameters(const ChainOptions& o) {
-  if (o.seed < 0) throw InvalidInput("seed", " " + std::to_string(o.seed) + ": must be >= 0");
-  if (o.realization < 0) throw InvalidInput("realization", " " + std::to_string(o.realization) + ": must be >= 0");
-  return {.N = static_cast<std::size_t>(o.n),
-          .q = o.q,
-          .xi = o.xi,
-          .seed = static_cast<std::uint64_t>(o.seed),
-          .realization = static_cast<std::uint64_t>(o.realization),
-          .F0 = o.f0,
-          .R1 = o.r1};
-}
-
-/// The "chain" entry of a tool's JSON: F0, material, walls and what picked the chain (a radii
-/// file; R1, ξ and a types file or the disorder, q, seed and realization). N is added by the caller.
-inline nlohmann::json chain_description(const ChainOptions& o) {
-  nlohmann::json d;
-  d["F0_N"] = o.f0;
-  d["material"] = {{"E_Pa", steel.young}, {"nu", steel.poisson}, {"rho_kg_m3", steel.density}};
-  d["walls"] = "flat, same material as the beads";
-  if (const auto beads = bead_distribution(o)) {
-    d["beads"] = describe(*beads);
-    d["seed"] = o.seed;
-    d["realization"] = o.realization;
-    return d;
-  }
-  if (!o.radii.empty()) {
-    d["radii_file"] = o.radii;
-    return d;
-  }
-  d["R1_m"] = o.r1;
-  d["xi"] = o.xi;
-  if (!o.config.empty()) {
-    d["config_file"] = o.config;
-    return d;
-  }
-  d["disorder"] = to_string(parse_disorder(o.disorder));
-  d["q"] = o.q;
-  d["seed"] = o.seed;
-  d["realization"] = o.realization;
-  return d;
-}
-
 /// Reads a radii file, printing a warning for each implausible radius (file and line named).
 inline std::vector<double> read_radii_warning(const std::string& path) {
   std::vector<std::string> warnings;
@@ -184,32 +133,42 @@ inline std::vector<double> read_radii_warning(const std::string& path) {
   return radii;
 }
 
-inline SelectedChain build_chain(const ChainOptions& o) {
-  ChainParameters p = chain_parameters(o);
+/// The recipe the options pick, files read (not yet validated: a streamed chain has its own
+/// limits). Seed and realization are checked here, as flags.
+inline ChainRecipe chain_recipe(const ChainOptions& o) {
+  if (o.seed < 0) throw InvalidInput("seed", " " + std::to_string(o.seed) + ": must be >= 0");
+  if (o.realization < 0) throw InvalidInput("realization", " " + std::to_string(o.realization) + ": must be >= 0");
   if (o.n < 2) throw InvalidInput("N", " " + std::to_string(o.n) + ": a chain needs at least 2 beads");
+  ChainRecipe r{.disorder = parse_disorder(o.disorder),
+                .q = o.q,
+                .xi = o.xi,
+                .R1 = o.r1,
+                .centred = o.auto_n,
+                .N = static_cast<std::size_t>(o.n),
+                .F0 = o.f0,
+                .seed = static_cast<std::uint64_t>(o.seed)};
+  r.distribution = bead_distribution(o);
+  if (!o.config.empty()) r.given_types = read_configuration_file(r.source = o.config);
+  if (!o.radii.empty()) r.given_radii = read_radii_warning(r.source = o.radii);
+  return r;
+}
+
+/// The realization the options pick (0-based).
+inline std::uint64_t chain_realization(const ChainOptions& o) { return static_cast<std::uint64_t>(o.realization); }
+
+struct SelectedChain {
+  ChainRecipe recipe;
+  Chain chain;                 ///< realization --realization of the recipe
+  nlohmann::json description;  ///< the "chain" entry of the tool's JSON
+};
+
+/// The chain the options pick, built and described (N, and with --N auto its rule).
+inline SelectedChain build_chain(const ChainOptions& o) {
   SelectedChain s;
-  s.description = chain_description(o);
-  if (const auto beads = bead_distribution(o)) {
-    validate(p);
-    s.chain = from_radii(realization_radii(*beads, p.N, p.seed, p.realization), o.f0);
-    s.beads = beads;
-  } else if (!o.radii.empty()) {
-    if (!std::isfinite(o.f0) || o.f0 < 0)
-      throw InvalidInput("F0", " " + format_number(o.f0) + ": must be finite and >= 0");
-    s.chain = from_radii(read_radii_warning(o.radii), o.f0);
-  } else {
-    if (!o.config.empty()) {
-      p.N = 2;  // from the file
-      validate(p);
-      s.types = read_configuration_file(o.config);
-    } else {
-      validate(p);
-      s.types = o.auto_n ? centred_configuration(parse_disorder(o.disorder), o.q, p.N, p.seed, p.realization)
-                         : realization_configuration(parse_disorder(o.disorder), o.q, p.N, p.seed, p.realization);
-    }
-    s.chain = from_types(s.types, p);
-  }
-  s.description["N"] = s.chain.size();
+  s.recipe = chain_recipe(o);
+  validate(s.recipe);
+  s.chain = s.recipe.chain(chain_realization(o));
+  s.description = describe(s.recipe, chain_realization(o));
   if (o.auto_n) s.description["N_rule"] = o.length_rule;
   return s;
 }

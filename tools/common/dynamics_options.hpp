@@ -105,16 +105,4 @@ inline nlohmann::json settle_time_step(TransportCase& c, const DynamicsOptions& 
   return settle_scheme_and_step(c, o.choices.integrator == "auto", dt_given, chain);
 }
 
-/// The chain of a case from the single-chain options (the chain built from them has `beads`).
-inline void apply(const ChainOptions& o, std::size_t beads, TransportCase& c) {
-  c.disorder = parse_disorder(o.disorder);
-  c.q = o.q;
-  c.xi = o.xi;
-  c.n = beads;
-  c.precompression = o.f0;
-  c.r1 = o.r1;
-  c.seed = static_cast<std::uint64_t>(o.seed);
-  c.centred_draw = o.auto_n;
-}
-
 }  // namespace granular::tool

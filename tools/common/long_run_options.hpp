@@ -11,10 +11,10 @@
 #include <CLI/CLI.hpp>
 
 #include "granular/ensemble/run_options.hpp"
-#include "granular/number_format.hpp"
 #include "granular/study/transport_study.hpp"
 #include "metadata.hpp"
 #include "output_claim.hpp"
+#include "replay_command.hpp"
 #include "tool_main.hpp"
 
 namespace granular::tool {
@@ -50,48 +50,6 @@ inline RunOptions run_options(const LongRunOptions& o, const std::string& checkp
   return run;
 }
 
-/// The `spreading` command that computes realization `r` of case `c` alone, every parameter
-/// spelled out (in shortest round-trip form), so it meets exactly what the ensemble met.
-/// `argv0` (how this tool was called) says where `spreading` is.
-inline std::string replay_command(const TransportCase& c, std::uint64_t r, const std::string& argv0) {
-  const auto slash = argv0.rfind('/');
-  std::string command =
-      Metadata::shell_quote((slash == std::string::npos ? "" : argv0.substr(0, slash + 1)) + "spreading");
-  const auto add = [&](const std::string& flag, const std::string& value) { command += " " + flag + " " + value; };
-  const auto number = [](double x) { return format_number(x); };
-  const SpreadingConfig& d = c.dynamics;
-  add("--disorder", to_string(c.disorder));
-  add("--q", number(c.q));
-  add("--xi", number(c.xi));
-  add("--N", c.centred_draw ? "auto" : std::to_string(c.n));
-  add("--F0", number(c.precompression));
-  add("--R1", number(c.r1));
-  add("--seed", std::to_string(c.seed));
-  add("--realization", std::to_string(r));
-  add("--ic", to_string(c.kick));
-  add("--alpha", number(c.alpha));
-  if (c.kick == Kick::velocity) add("--beta", c.match_beta ? "match" : number(c.beta));
-  if (!c.centred_draw) add("--site", std::to_string(c.site + 1));  // --N auto kicks the centre by rule
-  add("--centre", to_string(c.centre));
-  add("--T", number(d.duration));
-  add("--dt", number(d.time_step));
-  add("--integrator", d.integrator.name());
-  add("--force-law", to_string(d.force_law));
-  add("--samples", std::to_string(d.samples));
-  add("--sampling", to_string(d.sampling));
-  add("--fit", number(c.fit_begin) + ":" + number(c.fit_end));
-  add("--fit-step", number(c.fit_step));
-  add("--t-star", number(c.criterion.t_start));
-  add("--kappa", number(c.criterion.kappa));
-  add("--bootstrap", std::to_string(c.bootstrap.resamples));
-  add("--active-window", d.window.enabled ? "on" : "off");
-  add("--window-threshold", number(d.window.threshold));
-  add("--reference-max-step", number(d.integrator.tolerance.max_step));
-  add("--max-energy-error", number(d.max_energy_error));
-  add("--energy-guard", d.stop_on_energy_error ? "stop" : "warn");
-  return command + " --output replay-" + std::to_string(r);
-}
-
 /// Runs `study` (a call of run_transport_study or run_exponent_table); a realization failing in
 /// it becomes a message that says how to replay it alone and how to go on without it (the
 /// realizations finished before it are in the checkpoint).
@@ -103,7 +61,7 @@ auto replaying_failures(const Study& study, int argc, char** argv) -> decltype(s
     std::string go_on = resume_command(argc, argv);
     if (go_on.find(" --skip-failed") == std::string::npos) go_on += " --skip-failed";
     throw NumericalError(std::string(e.what()) +
-                         "\n  replay it alone: " + replay_command(e.failed_case, e.realization, argv[0]) +
+                         "\n  replay it alone: " + replay_text(e.failed_case, e.realization, argv[0]) +
                          "\n  the realizations finished are kept; to go on without this one: " + go_on);
   }
 }
@@ -125,7 +83,7 @@ inline nlohmann::json report_excluded(const TransportCase& c, const TransportSum
                                       const LongRunOptions& o, const char* tool, const std::string& argv0) {
   for (std::uint64_t r : o.quiet ? std::vector<std::uint64_t>{} : s.excluded)
     std::fprintf(stderr, "%s: realization %llu failed and is left out (--skip-failed); replay: %s\n", tool,
-                 static_cast<unsigned long long>(r), replay_command(c, r, argv0).c_str());
+                 static_cast<unsigned long long>(r), replay_text(c, r, argv0).c_str());
   if (!s.excluded.empty())
     meta.note(std::to_string(s.excluded.size()) + " failed realization(s) of " + std::to_string(c.realizations) +
               " left out");

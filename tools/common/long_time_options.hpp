@@ -40,9 +40,9 @@ inline void add_auto_length(CLI::App& app, bool& auto_n) {
 inline nlohmann::json size_chain(TransportCase& c, long long site) {
   if (site != 0) throw InvalidInput("--site " + std::to_string(site) + ": --N auto kicks the centre bead (--site 0)");
   const ChainLength length = automatic_chain_length(c);
-  c.n = length.n;
-  c.site = (c.n - 1) / 2;
-  c.centred_draw = true;
+  c.chain.N = length.n;
+  c.site = (c.chain.N - 1) / 2;
+  c.chain.centred = true;
   return to_json(length);
 }
 
@@ -63,13 +63,15 @@ inline void size_chain(ChainOptions& chain, const DynamicsOptions& dynamics, con
   if (!chain.types.empty() || !chain.polydisperse.empty())
     throw InvalidInput("--N auto: draws two-type chains (--disorder); not with --types/--polydisperse");
   TransportCase probe;
-  apply(chain, 3, probe);
+  ChainOptions three = chain;
+  three.n = 3;
+  probe.chain = chain_recipe(three);
   probe.kick = parse_kick(ic);
   DynamicsOptions centre = dynamics;
   centre.choices.site = 0;
   apply(centre, probe);
   chain.length_rule = size_chain(probe, dynamics.choices.site);
-  chain.n = static_cast<long long>(probe.n);
+  chain.n = static_cast<long long>(probe.chain.N);
 }
 
 }  // namespace granular::tool

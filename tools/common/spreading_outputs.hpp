@@ -43,7 +43,7 @@ inline void add_spreading_outputs(CLI::App& app, SpreadingOutputs& o) {
       ->capture_default_str();
 }
 
-/// Checks the options and sets what they ask of c's dynamics (needs c.n).
+/// Checks the options and sets what they ask of c's dynamics (needs c.chain).
 inline void apply(const SpreadingOutputs& o, TransportCase& c) {
   for (auto [name, value] : {std::pair{"--force-samples", o.force_samples},
                              {"--map-samples", o.map_samples},
@@ -52,9 +52,9 @@ inline void apply(const SpreadingOutputs& o, TransportCase& c) {
     if (value < 1) throw InvalidInput(std::string(name) + " " + std::to_string(value) + ": must be >= 1");
   SpreadingConfig& d = c.dynamics;
   for (long s : o.forces_at.empty() ? std::vector<long>{} : parse_integer_list(o.forces_at, "--forces-at")) {
-    if (s < 1 || static_cast<std::size_t>(s) > c.n)
-      throw InvalidInput("--forces-at " + std::to_string(s) + ": outside the chain of " + std::to_string(c.n) +
-                         " beads");
+    if (s < 1 || static_cast<std::size_t>(s) > c.chain.size())
+      throw InvalidInput("--forces-at " + std::to_string(s) + ": outside the chain of " +
+                         std::to_string(c.chain.size()) + " beads");
     d.force_sites.push_back(static_cast<std::size_t>(s - 1));
   }
   d.force_samples = static_cast<std::size_t>(o.force_samples);

@@ -125,4 +125,58 @@ std::string describe(const BeadDistribution& d) {
   return out.str();
 }
 
+BeadDistribution parse_bead_distribution(const std::string& text) {
+  const auto bad = [&] {
+    return InvalidInput("beads", " '" + text + "': not a bead distribution as describe() writes it");
+  };
+  const auto open = text.find('('), close = text.rfind(')');
+  if (open == std::string::npos || close != text.size() - 1) throw bad();
+  const std::string kind = text.substr(0, open), body = text.substr(open + 1, close - open - 1);
+  const auto number = [&](const std::string& s) {
+    std::size_t used = 0;
+    double x = 0;
+    try {
+      x = std::stod(s, &used);
+    } catch (const std::exception&) {
+      throw bad();
+    }
+    if (used != s.size()) throw bad();
+    return x;
+  };
+  const auto split = [](const std::string& s, char by) {
+    std::vector<std::string> parts;
+    for (std::size_t begin = 0;;) {
+      const auto end = s.find(by, begin);
+      parts.push_back(s.substr(begin, end - begin));
+      if (end == std::string::npos) return parts;
+      begin = end + 1;
+    }
+  };
+  BeadDistribution d;
+  if (kind == "types") {
+    const auto semicolon = body.find(';');
+    if (semicolon == std::string::npos) throw bad();
+    d.rule = parse_disorder(body.substr(0, semicolon));
+    for (const std::string& item : split(body.substr(semicolon + 1), ',')) {
+      const auto pair = split(item, ':');
+      if (pair.size() != 2) throw bad();
+      d.radii.push_back(number(pair[0]));
+      d.probabilities.push_back(number(pair[1]));
+    }
+  } else if (kind == "uniform") {
+    const auto parts = split(body, ',');
+    if (parts.size() != 2) throw bad();
+    d.kind = BeadDistribution::Kind::uniform;
+    d.low = number(parts[0]), d.high = number(parts[1]);
+  } else if (kind == "normal") {
+    const auto parts = split(body, ',');
+    if (parts.size() != 3 || parts[2].rfind("min ", 0) != 0) throw bad();
+    d.kind = BeadDistribution::Kind::normal;
+    d.mean = number(parts[0]), d.sd = number(parts[1]), d.minimum = number(parts[2].substr(4));
+  } else {
+    throw bad();
+  }
+  return d;
+}
+
 }  // namespace granular

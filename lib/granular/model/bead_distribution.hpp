@@ -45,6 +45,9 @@ double radius_from_uniform(const BeadDistribution& d, double u);
 
 /// Every parameter, for metadata and checkpoint identities.
 std::string describe(const BeadDistribution& d);
+/// The inverse of describe (numbers in shortest round-trip form read back exactly). Throws
+/// InvalidInput naming "beads".
+BeadDistribution parse_bead_distribution(const std::string& text);
 
 /// The plausible radius range of the Hertz contact law for these tools [m]: outside it a radius
 /// is likely a unit slip (4.76 typed for 4.76e-3) and deserves a warning, not an error.

@@ -13,7 +13,8 @@ ChainLength automatic_chain_length(const TransportCase& c) {
     throw InvalidInput("energy", ": a mode kick on the automatic N needs its energy, not its amplitude");
   TransportCase probe = c;  // ω_max depends on the chain and the kick, not on the scheme
   probe.dynamics.integrator = saba2c();
-  probe.n = 3;
+  probe.chain.N = 3;
+  probe.chain.centred = false;
   probe.site = 1;
   ChainLength length;
   length.omega_max = time_step_limit(probe).omega_max;

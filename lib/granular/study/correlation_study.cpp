@@ -12,14 +12,13 @@
 namespace granular {
 
 void validate(const CorrelationConfig& c) {
-  if (c.beads) validate(*c.beads);
-  if (!c.beads && c.disorder == Disorder::homogeneous)
+  const ChainRecipe& chain = c.chain;
+  if (!chain.drawn()) throw InvalidInput("chain", ": an ensemble draws its chains; not a given chain");
+  if (!chain.distribution && chain.disorder == Disorder::homogeneous)
     throw InvalidInput("disorder", " h: a one-type chain has no correlation coefficient");
-  if (!c.beads) validate_probability(c.q);
-  if (c.n < 2) throw InvalidInput("N", " " + std::to_string(c.n) + ": a chain needs at least 2 beads");
-  if (c.n > 100000000) throw InvalidInput("N", " " + std::to_string(c.n) + ": more than 1e8 beads");
+  validate(chain);
   if (c.realizations < 1) throw InvalidInput("realizations", " 0: must be >= 1");
-  if (c.max_distance >= c.n)
+  if (c.max_distance >= chain.N)
     throw InvalidInput("max_distance", " " + std::to_string(c.max_distance) + ": must be in [0, N-1]");
 }
 
@@ -30,13 +29,11 @@ CorrelationResult correlation_study(const CorrelationConfig& c, const RunOptions
   parallel_realizations(
       c.realizations, run.threads,
       [&](std::size_t r, int) {
-        if (!c.beads) {
-          rho[r] = cyclic_correlation(realization_configuration(c.disorder, c.q, c.n, c.seed, r), dmax);
+        if (!c.chain.distribution) {
+          rho[r] = cyclic_correlation(c.chain.types(r), dmax);
           return;
         }
-        std::vector<double> mass = realization_radii(*c.beads, c.n, c.seed, r);
-        for (double& m : mass) m = sphere_mass(steel, m);
-        rho[r] = cyclic_value_correlation(mass, dmax);
+        rho[r] = cyclic_value_correlation(c.chain.chain(r).mass, dmax);
       },
       run.progress);
   // Chains of one type only (possible at small N or q near 0 or 1) have no coefficient: skipped.
@@ -50,18 +47,20 @@ CorrelationResult correlation_study(const CorrelationConfig& c, const RunOptions
       sum2[d] += row[d] * row[d];
     }
   }
-  if (out.used == 0 && c.beads)
+  const auto& beads = c.chain.distribution;
+  if (out.used == 0 && beads)
     throw InvalidInput("beads",
-                       " " + describe(*c.beads) + ": every realization has one kind of bead only, no correlation");
+                       " " + describe(*beads) + ": every realization has one kind of bead only, no correlation");
   if (out.used == 0)
-    throw InvalidInput("q", " " + format_number(c.q) + ": every realization has one bead type only, no correlation");
+    throw InvalidInput("q",
+                       " " + format_number(c.chain.q) + ": every realization has one bead type only, no correlation");
   const double u = static_cast<double>(out.used);
   for (std::size_t d = 0; d <= dmax; ++d) {
     const double mean = sum[d] / u;
     const double var = out.used > 1 ? std::fmax(sum2[d] / u - mean * mean, 0.0) * u / (u - 1) : 0.0;
     out.mean.push_back(mean);
     out.deviation.push_back(std::sqrt(var));
-    out.theory.push_back(c.beads ? correlation_theory(*c.beads, d) : correlation_theory(c.disorder, c.q, d));
+    out.theory.push_back(beads ? correlation_theory(*beads, d) : correlation_theory(c.chain.disorder, c.chain.q, d));
   }
   return out;
 }

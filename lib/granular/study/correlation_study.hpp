@@ -10,21 +10,16 @@
 #include <vector>
 
 #include "granular/ensemble/run_options.hpp"
-#include "granular/model/bead_distribution.hpp"
-#include "granular/model/disorder.hpp"
+#include "granular/model/chain_recipe.hpp"
 
 namespace granular {
 
 struct CorrelationConfig {
-  Disorder disorder = Disorder::anderson;  ///< A, RDM1 or RDM2 (h has one type: no coefficient)
-  double q = 0.5;                          ///< probability in [0, 1]
-  std::size_t n = 100;                     ///< beads per chain, ≥ 2
+  /// The chains: the paper's two types drawn by A, RDM1 or RDM2 (h has one type: no coefficient),
+  /// ρ(d) of the types; or drawn from a bead distribution, ρ(d) of the per-bead masses.
+  ChainRecipe chain{};
   std::size_t realizations = 100;
-  std::uint64_t seed = 1;
   std::size_t max_distance = 10;  ///< largest shift d, < N
-  /// When set: realization r draws its radii from this (k types or polydisperse; `disorder` and
-  /// `q` unused) and ρ(d) is that of the per-bead masses.
-  std::optional<BeadDistribution> beads{};
 };
 
 struct CorrelationResult {

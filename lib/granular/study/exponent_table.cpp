@@ -18,7 +18,7 @@ std::vector<std::string> chain_names(const ExponentTableConfig& config) {
 }
 
 std::string chain_name(const ExponentCell& cell) {
-  return cell.chain.empty() ? to_string(cell.definition.disorder) : cell.chain;
+  return cell.chain.empty() ? to_string(cell.definition.chain.disorder) : cell.chain;
 }
 
 void validate(const ExponentTableConfig& config) {
@@ -45,12 +45,12 @@ std::vector<TransportCase> exponent_cases(const ExponentTableConfig& config) {
   std::vector<TransportCase> cases;
   const auto add = [&](TransportCase c) {
     const bool profile = std::find(config.profile_precompressions.begin(), config.profile_precompressions.end(),
-                                   c.precompression) != config.profile_precompressions.end();
+                                   c.chain.F0) != config.profile_precompressions.end();
     c.profile_realizations = profile ? std::min(config.profile_realizations, c.realizations) : 0;
     if (config.automatic_length) {  // (a bead chain is then refused by validate: it has no centred draw)
-      c.n = automatic_chain_length(c).n;
-      c.site = (c.n - 1) / 2;
-      c.centred_draw = true;
+      c.chain.N = automatic_chain_length(c).n;
+      c.site = (c.chain.N - 1) / 2;
+      c.chain.centred = true;
     }
     cases.push_back(c);
   };
@@ -58,16 +58,16 @@ std::vector<TransportCase> exponent_cases(const ExponentTableConfig& config) {
     for (double f0 : config.precompressions) {
       TransportCase c = config.base;
       c.kick = kick;
-      c.precompression = f0;
+      c.chain.F0 = f0;
       for (Disorder chain : config.chains) {
-        c.disorder = chain;
+        c.chain.disorder = chain;
         c.realizations = chain == Disorder::homogeneous ? 1 : config.base.realizations;  // one chain only
         add(c);
       }
       c.realizations = config.base.realizations;
       for (const BeadChain& b : config.bead_chains) {
-        c.beads = b.beads;
-        c.disorder = b.beads.kind == BeadDistribution::Kind::types ? b.beads.rule : Disorder::anderson;
+        c.chain.distribution = b.beads;
+        c.chain.disorder = b.beads.kind == BeadDistribution::Kind::types ? b.beads.rule : Disorder::anderson;
         add(c);
       }
     }
@@ -144,7 +144,7 @@ void append_table(std::string& out, const std::string& title, Kick kick, const s
     out.append("| ").append(format_number(f0)).append(" |");
     for (const std::string& name : names)
       for (const auto& c : cells)
-        if (c.definition.kick == kick && c.definition.precompression == f0 && chain_name(c) == name)
+        if (c.definition.kick == kick && c.definition.chain.F0 == f0 && chain_name(c) == name)
           out.append(" ").append(cell(c)).append(" |");
     out += "\n";
   }
@@ -231,14 +231,14 @@ void write_exponents_csv(std::ostream& out, const std::vector<ExponentCell>& cel
     const SpreadCentre other = d.centre == SpreadCentre::site ? SpreadCentre::centroid : SpreadCentre::site;
     const ExponentReport &g = s.exponents->gamma(d.centre), &o = s.exponents->gamma(other), &e = s.exponents->eta;
     const auto row = [&](auto... more) {
-      table.row(to_string(d.kick), d.precompression, chain_name(c), to_string(d.centre), g.shown().value,
-                g.shown().error, g.shown_realization_error(), flag(g.starred()), g.fit.value, g.fit.error,
-                g.fit_realization_error, g.mean_ld.value, g.mean_ld.error, g.mean_ld_realization_error,
-                g.verdict.worst_deviation, to_string(other), o.shown().value, o.shown().error,
-                o.shown_realization_error(), flag(o.starred()), o.fit.value, o.mean_ld.value, e.shown().value,
-                e.shown().error, e.shown_realization_error(), flag(e.starred()), e.fit.value, e.fit.error,
-                e.fit_realization_error, e.mean_ld.value, e.mean_ld.error, e.mean_ld_realization_error,
-                e.verdict.worst_deviation, s.realizations, s.max_energy_error, s.reached_walls, more...);
+      table.row(to_string(d.kick), d.chain.F0, chain_name(c), to_string(d.centre), g.shown().value, g.shown().error,
+                g.shown_realization_error(), flag(g.starred()), g.fit.value, g.fit.error, g.fit_realization_error,
+                g.mean_ld.value, g.mean_ld.error, g.mean_ld_realization_error, g.verdict.worst_deviation,
+                to_string(other), o.shown().value, o.shown().error, o.shown_realization_error(), flag(o.starred()),
+                o.fit.value, o.mean_ld.value, e.shown().value, e.shown().error, e.shown_realization_error(),
+                flag(e.starred()), e.fit.value, e.fit.error, e.fit_realization_error, e.mean_ld.value, e.mean_ld.error,
+                e.mean_ld_realization_error, e.verdict.worst_deviation, s.realizations, s.max_energy_error,
+                s.reached_walls, more...);
     };
     if (!mle) row();
     else if (s.mle.mean.empty()) row("", "", "");
@@ -260,7 +260,7 @@ void write_curves_csv(std::ostream& out, const std::vector<ExponentCell>& cells)
     const auto& s = c.summary;
     for (std::size_t i = 0; i < s.t.size(); ++i) {
       const auto row = [&](auto... more) {
-        curve.row(to_string(d.kick), d.precompression, chain_name(c), s.t[i], s.m2.mean[i], s.m2.standard_error[i],
+        curve.row(to_string(d.kick), d.chain.F0, chain_name(c), s.t[i], s.m2.mean[i], s.m2.standard_error[i],
                   s.m2_centroid.mean[i], s.m2_centroid.standard_error[i], s.ipr.mean[i], s.ipr.standard_error[i],
                   s.energy_error.mean[i], more...);
       };
@@ -277,7 +277,7 @@ void write_profiles_csv(std::ostream& out, const std::vector<ExponentCell>& cell
     const auto& d = c.definition;
     const auto& p = c.summary.profile;
     for (std::size_t i = 0; i < p.mean.size(); ++i)
-      profile.row(to_string(d.kick), d.precompression, chain_name(c), i + 1, p.mean[i], p.standard_error[i]);
+      profile.row(to_string(d.kick), d.chain.F0, chain_name(c), i + 1, p.mean[i], p.standard_error[i]);
   }
 }
 

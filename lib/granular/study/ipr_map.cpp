@@ -15,23 +15,20 @@
 namespace granular {
 
 void validate(const IprMapConfig& c) {
-  if (c.n < 2) throw InvalidInput("N", " " + std::to_string(c.n) + ": a chain needs at least 2 beads");
-  if (!(c.precompression > 0) || !std::isfinite(c.precompression))
-    throw InvalidInput("precompression",
-                       " " + format_number(c.precompression) + ": the linear spectrum needs a finite F0 > 0");
+  const ChainRecipe& chain = c.chain;
+  if (chain.N < 2) throw InvalidInput("N", " " + std::to_string(chain.N) + ": a chain needs at least 2 beads");
+  if (!(chain.F0 > 0) || !std::isfinite(chain.F0))
+    throw InvalidInput("precompression", " " + format_number(chain.F0) + ": the linear spectrum needs a finite F0 > 0");
   if (c.realizations < 1) throw InvalidInput("realizations", " 0: must be >= 1");
-  if (c.beads) {
-    validate(*c.beads);
-  } else {
+  if (!chain.drawn()) throw InvalidInput("chain", ": an IPR map draws its chains; not a given chain");
+  if (!chain.distribution) {
     if (c.q_values.empty()) throw InvalidInput("q", ": no values");
     if (c.xi_values.empty()) throw InvalidInput("xi", ": no values");
     for (double q : c.q_values) validate_probability(q);
     for (double xi : c.xi_values) validate_size_ratio(xi);
   }
-  if (!(c.r1 > 0) || !std::isfinite(c.r1))
-    throw InvalidInput("R1", " " + format_number(c.r1) + ": must be finite and > 0");
-  validate(c.material, "material");
-  validate(c.selection, c.n);
+  validate(chain);
+  validate(c.selection, chain.N);
   validate(c.spectrum, c.selection);
   if (!std::isfinite(c.bin_khz) || c.bin_khz < 0)
     throw InvalidInput("bin_khz",
@@ -44,16 +41,25 @@ void validate(const IprMapConfig& c) {
 
 namespace {
 
-/// Realization r of the cell at ξ: from its bead types, or drawn from the bead distribution.
+/// Realization r of the cell at ξ: from its bead types (drawn once for every ξ of a q), or drawn
+/// from the bead distribution.
 DynamicalMatrix matrix_of(const IprMapConfig& c, const Configuration& types, double xi, std::size_t r) {
-  return dynamical_matrix(make_chain(c.beads ? realization_radii(*c.beads, c.n, c.seed, r) : radii_of(types, c.r1, xi),
-                                     c.precompression, c.material));
+  ChainRecipe cell = c.chain;
+  cell.xi = xi;
+  return dynamical_matrix(cell.distribution ? cell.chain(r) : cell.chain_of(types));
+}
+
+/// The bead types of realization r at q (none with a bead distribution).
+Configuration types_of(const IprMapConfig& c, double q, std::size_t r) {
+  ChainRecipe cell = c.chain;
+  cell.q = q;
+  return cell.types(r);
 }
 
 /// With a bead distribution: one cell (q, ξ) = (NaN, NaN), whose types are not drawn.
 IprMapConfig one_cell_if_distributed(const IprMapConfig& c) {
   IprMapConfig out = c;
-  if (c.beads) out.q_values = out.xi_values = {std::numeric_limits<double>::quiet_NaN()};
+  if (c.chain.distribution) out.q_values = out.xi_values = {std::numeric_limits<double>::quiet_NaN()};
   return out;
 }
 
@@ -61,14 +67,12 @@ std::vector<IprMapCell> compute_partial_ipr_map(const IprMapConfig& config, cons
   const IprMapConfig c = one_cell_if_distributed(config);
   // ARPACK keeps its state in Fortran SAVE variables: one thread.
   const int threads = c.spectrum.method == SpectrumMethod::arpack ? 1 : resolve_threads(run.threads);
-  const std::size_t n = c.n, realizations = c.realizations;
+  const std::size_t realizations = c.realizations;
   std::vector<Spectrum> slots(realizations);
   std::vector<Configuration> types(realizations);
   std::vector<IprMapCell> cells;
   for (double q : c.q_values) {
-    parallel_realizations(realizations, threads, [&](std::size_t r, int) {
-      if (!c.beads) types[r] = realization_configuration(c.disorder, q, n, c.seed, r);
-    });
+    parallel_realizations(realizations, threads, [&](std::size_t r, int) { types[r] = types_of(c, q, r); });
     for (double xi : c.xi_values) {
       if (run.cancelled && run.cancelled()) throw Cancelled();
       parallel_realizations(
@@ -101,15 +105,13 @@ std::vector<IprMapCell> compute_ipr_map(const IprMapConfig& config, const RunOpt
   std::vector<SpectrumSolver> solvers;
   for (int t = 0; t < threads; ++t) solvers.emplace_back(c.spectrum);
 
-  const std::size_t n = c.n, realizations = c.realizations;
+  const std::size_t n = c.chain.N, realizations = c.realizations;
   constexpr std::size_t batch = 4;                                      // chains per solve_all call
   std::vector<double> omega2(realizations * n), ipr(realizations * n);  // slot r holds realization r
   std::vector<Configuration> types(realizations);
   std::vector<IprMapCell> cells;
   for (double q : c.q_values) {
-    parallel_realizations(realizations, threads, [&](std::size_t r, int) {
-      if (!c.beads) types[r] = realization_configuration(c.disorder, q, n, c.seed, r);
-    });
+    parallel_realizations(realizations, threads, [&](std::size_t r, int) { types[r] = types_of(c, q, r); });
     for (double xi : c.xi_values) {
       if (run.cancelled && run.cancelled()) throw Cancelled();
       // Realizations go to the solver in fixed batches [b·B, b·B + B): a solver may overlap the

@@ -9,22 +9,17 @@
 
 #include "granular/ensemble/run_options.hpp"
 #include "granular/linear/spectrum.hpp"
-#include "granular/model/bead_distribution.hpp"
-#include "granular/model/disorder.hpp"
-#include "granular/model/material.hpp"
+#include "granular/model/chain_recipe.hpp"
 
 namespace granular {
 
 struct IprMapConfig {
-  Disorder disorder = Disorder::anderson;
+  /// The chains (N, F0 > 0, seed, R1, material; the disorder rule or a bead distribution); its
+  /// q and ξ are those of each cell, from the lists below.
+  ChainRecipe chain{};
   std::vector<double> q_values{0.2, 0.5, 0.8};  ///< probabilities in [0, 1]
   std::vector<double> xi_values;                ///< size ratios R2/R1 in (0, 1]
-  std::size_t n = 100;                          ///< beads per chain, ≥ 2
-  double precompression = 10;                   ///< F0 [N], > 0
   std::size_t realizations = 100;
-  std::uint64_t seed = 1;
-  double r1 = 4.76e-3;  ///< type-1 radius [m]
-  Material material = steel;
   /// Every mode (averaged over realizations by mode number) or a nearest/window selection (every
   /// selected mode of every realization, not averaged: mode numbers and counts differ between chains).
   ModeSelection selection = all_modes();
@@ -37,9 +32,8 @@ struct IprMapConfig {
   /// of the cell's realizations: the ensemble's IPR as a function of f, which is what a reader
   /// plotting against frequency wants (mode-number means put points inside band gaps).
   double bin_khz = 0;
-  /// When set, realization r draws its radii from this (k types or polydisperse; seed `seed`)
-  /// instead of disorder/q/ξ/r1: one cell, whose q and xi are NaN.
-  std::optional<BeadDistribution> beads;
+  // With chain.distribution set, realization r draws its radii from it (k types or
+  // polydisperse) instead of the two types: one cell, whose q and xi are NaN.
 };
 
 struct IprMapCell {

@@ -1,5 +1,5 @@
 #pragma once
-// `--integrator auto`: the cheapest scheme and step that keep the energy error at the level of
+// The integrator "auto": the cheapest scheme and step that keep the energy error at the level of
 // SABA2C at τ = 1 µs, from the cost–accuracy table of docs/dynamics-performance.md (Hertz, F0 =
 // 10 N, window off). There SRKN14a costs 4.0× a SABA2C step; at τ = 4 µs it matches SABA2C at
 // 1 µs in cost with a 600× smaller energy error, at 8 µs it costs half with 1.3× SABA2C's error.
@@ -27,13 +27,16 @@ struct SchemeChoice {
   double time_step = 0;           ///< its default τ [s] (before the stability rule's own check)
   double relative_cost = 1;       ///< CPU per simulated second relative to SABA2C at its default τ
   bool bonds_stay_closed = true;  ///< no contact can open (the force stays smooth)
+  bool damped = false;            ///< damping on: SABA2C at its rule step (a damped step is 2nd order anyway)
 };
 
 /// True when no bond of any chain of case `c` can open: the force law is not Hertz, or the kick's
-/// largest energy H0 (any arrangement of the bead types, any site) is below the smallest energy
-/// φ_k(−δ_k) that stretches a bond (walls included) from its static overlap δ_k to zero; as every
-/// φ_k ≥ 0 and they sum with the kinetic energy to H0, no φ_k can reach it.
-bool bonds_stay_closed(const TransportCase& c);
+/// largest energy H0 (kick_energy_bound over rule_chains, time_step_rule.hpp: the case's own chain
+/// when its recipe gives one, else any arrangement of the radii it draws; a mode kick by its real
+/// mode or its bound) is below the smallest energy φ_k(−δ_k) that stretches a bond (walls
+/// included) from its static overlap δ_k to zero; as every φ_k ≥ 0 and they sum with the kinetic
+/// energy to H0, no φ_k can reach it. `chain`: as time_step_limit.
+bool bonds_stay_closed(const TransportCase& c, const Chain* chain = nullptr);
 
 /// SRKN14a's step cost in SABA2C steps (docs/dynamics-performance.md: 72.2 ms at 4 µs vs 72.0 ms at 1 µs).
 inline constexpr double srkn14a_step_cost = 4.0;
@@ -49,7 +52,9 @@ double srkn14a_default_step(double omega_max);
 
 /// The choice given the default steps each scheme gets (SABA2C's from time_step_rule.hpp, 1 µs or
 /// 1 µs/k; SRKN14a's from srkn14a_default_step).
-SchemeChoice choose_scheme(double saba2c_step, double srkn14a_step, bool closed);
+/// With damping on, SABA2C: the damping flow is composed with any scheme by a 2nd-order Strang
+/// splitting, whose error at SRKN14a's 5 µs is ~25× that at SABA2C's 1 µs.
+SchemeChoice choose_scheme(double saba2c_step, double srkn14a_step, bool closed, bool damped = false);
 
 /// The choice and why, for the JSON.
 nlohmann::json to_json(const SchemeChoice& choice);

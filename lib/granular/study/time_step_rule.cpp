@@ -25,28 +25,6 @@ Matrix times(const Matrix& a, const Matrix& b) {
 /// places), the k types of a bead distribution, or for polydisperse radii a geometric grid of 9
 /// from the smallest to the largest (a truncated normal: mean + 8 sd, which no bead of any
 /// realization passes with probability above ~1e-15).
-std::vector<double> probe_radii(const TransportCase& c) {
-  std::vector<double> radii;
-  if (c.beads && c.beads->kind == BeadDistribution::Kind::types) {
-    for (std::size_t t = 0; t < c.beads->radii.size(); ++t)
-      if (c.beads->probabilities[t] > 0) radii.push_back(c.beads->radii[t]);
-    return radii;
-  }
-  if (c.beads) {
-    const bool uniform = c.beads->kind == BeadDistribution::Kind::uniform;
-    const double low = uniform ? c.beads->low : c.beads->minimum;
-    const double high = uniform ? c.beads->high : c.beads->mean + 8 * c.beads->sd;
-    const int points = high > low ? 9 : 1;
-    for (int i = 0; i < points; ++i)
-      radii.push_back(i == points - 1 ? high : low * std::pow(high / low, static_cast<double>(i) / (points - 1)));
-    return radii;
-  }
-  const bool both = c.disorder == Disorder::rdm2 || (c.disorder != Disorder::homogeneous && c.q > 0 && c.q < 1);
-  if (c.disorder == Disorder::homogeneous || both || c.q == 1) radii.push_back(c.r1);
-  if (both || (c.disorder != Disorder::homogeneous && c.q == 0)) radii.push_back(c.xi * c.r1);
-  return radii;
-}
-
 }  // namespace
 
 // One step on a harmonic mode, h = ωτ, in the order the stepper applies it: corrector, drift a_0,
@@ -118,40 +96,49 @@ double highest_frequency_bound(const ForceLaw& law, const Chain& chain, double e
       law);
 }
 
-TimeStepLimit time_step_limit(const TransportCase& c, const Chain* chain) {
-  TimeStepLimit limit;
-  if (c.dynamics.integrator.reference) return limit;  // adaptive: no step to bound
-  limit.scheme_limit = stable_step_limit(c.dynamics.integrator.scheme);
-  TransportCase probe = c;
+std::vector<Chain> rule_chains(const TransportCase& c, const Chain* chain) {
+  if (chain) return {*chain};
+  if (!c.chain.drawn()) return {c.chain.chain(0)};
+  // Every local arrangement of the radii the chain can hold: three beads between walls hold
+  // every neighbourhood of a bead (inside a chain, or next to a wall).
   std::vector<Chain> chains;
-  if (chain) {
-    chains.push_back(*chain);
-  } else {
-    // Every local arrangement of the radii the chain can hold: three beads between walls hold
-    // every neighbourhood of a bead (inside a chain, or next to a wall).
-    const std::vector<double> radii = probe_radii(c);
-    for (double a : radii)
-      for (double b : radii)
-        for (double d : radii) chains.push_back(make_chain({a, b, d}, c.precompression));
-  }
+  const std::vector<double> radii = c.chain.possible_radii();
+  for (double a : radii)
+    for (double b : radii)
+      for (double d : radii) chains.push_back(make_chain({a, b, d}, c.chain.F0, c.chain.material));
+  return chains;
+}
+
+double kick_energy_bound(const TransportCase& c, const std::vector<Chain>& chains, bool whole_chain) {
   // The largest kick energy: at any bead of any arrangement. A mode of a chain not yet drawn has
   // its energy given, or bounded from α: the shape u = α w/max|w| moves every bond by at most 2α,
   // and each bond's excess energy at ±2α is at most that of a displacement kick ±2α of a bead
   // beside it (the other bond's share is ≥ 0), so H0 ≤ (N + 1) max φ(±2α) over every arrangement.
-  const bool unknown_mode = c.kick == Kick::mode && !chain;
-  double energy = unknown_mode ? c.mode.energy : 0, bond = 0;
+  // On the whole chain, the kick itself (the mode of that chain).
+  const bool unknown_mode = c.kick == Kick::mode && !whole_chain;
+  if (unknown_mode && c.mode.energy > 0) return c.mode.energy;
+  TransportCase probe = c;
+  double energy = 0, bond = 0;
   for (const Chain& ch : chains) {
     const ForceLaw law = make_force_law(c.dynamics.force_law, ch);
     for (std::size_t site = 0; site < ch.size(); ++site) {
-      if (chain && site != c.site) continue;
+      if (whole_chain && site != c.site) continue;
       probe.site = site;
       if (!unknown_mode) energy = std::max(energy, total_energy(law, ch, kick(probe, ch).initial));
-      else if (c.mode.energy == 0)
+      else
         for (double sign : {1.0, -1.0})
           bond = std::max(bond, total_energy(law, ch, displacement_kick(ch, site, sign * 2 * c.alpha)));
     }
   }
-  if (unknown_mode && c.mode.energy == 0) energy = static_cast<double>(c.n + 1) * bond;
+  return unknown_mode ? static_cast<double>(c.chain.size() + 1) * bond : energy;
+}
+
+TimeStepLimit time_step_limit(const TransportCase& c, const Chain* chain) {
+  TimeStepLimit limit;
+  if (c.dynamics.integrator.reference) return limit;  // adaptive: no step to bound
+  limit.scheme_limit = stable_step_limit(c.dynamics.integrator.scheme);
+  const std::vector<Chain> chains = rule_chains(c, chain);
+  const double energy = kick_energy_bound(c, chains, chain || !c.chain.drawn());
   for (const Chain& ch : chains)
     limit.omega_max =
         std::max(limit.omega_max, highest_frequency_bound(make_force_law(c.dynamics.force_law, ch), ch, energy));

@@ -41,7 +41,18 @@ struct TimeStepLimit {
   double max_time_step = std::numeric_limits<double>::infinity();  ///< τ_max [s]; ∞ for the adaptive reference
 };
 
-/// The limit of case `c`: of `chain` when given (a chain from a file), else of every realization.
+/// The chains a rule over every realization of `c` tries: `chain` when given, the recipe's one
+/// chain when it gives one (a types or radii file), else three beads between walls in every
+/// arrangement of the radii the recipe can draw (every neighbourhood of a bead or a bond).
+std::vector<Chain> rule_chains(const TransportCase& c, const Chain* chain = nullptr);
+
+/// The largest energy H0 [J] above the static state that c's kick gives any of `chains` at any
+/// site; with `whole_chain` (the chains are the run's very chain) at c.site only, a mode kick by
+/// its real mode. A mode of a chain not yet drawn has its energy given, or bounded from α.
+double kick_energy_bound(const TransportCase& c, const std::vector<Chain>& chains, bool whole_chain);
+
+/// The limit of case `c`: of `chain` when given, of the recipe's chain when it gives one, else
+/// of every realization.
 TimeStepLimit time_step_limit(const TransportCase& c, const Chain* chain = nullptr);
 
 /// The margin of the default τ below the stability limit: stable is not accurate (at ωτ near h*

@@ -21,10 +21,11 @@ void apply(const TransportChoices& o, TransportCase& c) {
   c.alpha = o.alpha;
   c.match_beta = !o.beta;
   if (o.beta) c.beta = *o.beta;
-  if (o.site < 0 || o.site > static_cast<long long>(c.n))
-    throw InvalidInput("site", " " + std::to_string(o.site) + ": outside the chain of " + std::to_string(c.n) +
+  const std::size_t n = c.chain.size();
+  if (o.site < 0 || o.site > static_cast<long long>(n))
+    throw InvalidInput("site", " " + std::to_string(o.site) + ": outside the chain of " + std::to_string(n) +
                                    " beads (1..N, 0 = centre)");
-  c.site = o.site == 0 ? (c.n - 1) / 2 : static_cast<std::size_t>(o.site - 1);
+  c.site = o.site == 0 ? (n - 1) / 2 : static_cast<std::size_t>(o.site - 1);
   c.centre = parse_spread_centre(o.centre);
   SpreadingConfig& d = c.dynamics;
   d.duration = o.duration;

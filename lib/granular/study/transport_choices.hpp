@@ -34,7 +34,7 @@ struct TransportChoices {
 };
 
 /// Fills `c` from the choices: everything but the chain (disorder, q, ξ, N, F0, R1, seed,
-/// realizations) and the kick kind. Needs c.n (for `site`). Leaves c.fit true. Throws
+/// realizations) and the kick kind. Needs c.chain (its size, for `site`). Leaves c.fit true. Throws
 /// InvalidInput naming the choice.
 void apply(const TransportChoices& choices, TransportCase& c);
 

@@ -35,21 +35,16 @@ ModeKick mode_of(const TransportCase& c) {
 }  // namespace
 
 void validate(const TransportCase& c) {
-  validate_probability(c.q);
-  validate_size_ratio(c.xi);
-  if (c.n < 2) throw InvalidInput("N", " " + std::to_string(c.n) + ": a chain needs at least 2 beads");
-  if (!std::isfinite(c.precompression) || c.precompression < 0)
-    throw InvalidInput("F0", " " + format_number(c.precompression) + ": must be finite and >= 0");
-  if (c.centred_draw && c.beads)
-    throw InvalidInput("N", ": a chain drawn from its centre (the automatic N) has two bead types, not a bead source");
-  if (c.centred_draw && c.site != (c.n - 1) / 2)
+  validate(c.chain);
+  const std::size_t n = c.chain.size();
+  if (c.chain.centred && c.site != (n - 1) / 2)
     throw InvalidInput("site", " " + std::to_string(c.site + 1) + ": a chain drawn from its centre is kicked there (" +
-                                   std::to_string((c.n + 1) / 2) + ")");
-  if (c.site >= c.n)
+                                   std::to_string((n + 1) / 2) + ")");
+  if (c.site >= n)
     throw InvalidInput("site",
-                       " " + std::to_string(c.site + 1) + ": outside the chain of " + std::to_string(c.n) + " beads");
+                       " " + std::to_string(c.site + 1) + ": outside the chain of " + std::to_string(n) + " beads");
   if (c.realizations < 1) throw InvalidInput("realizations", ": must be >= 1");
-  validate(c.dynamics, c.n);  // T and τ first: a fit window is judged against them
+  validate(c.dynamics, n);  // T and τ first: a fit window is judged against them
   if (c.fit && (!(c.fit_begin > 0) || !(c.fit_end > c.fit_begin) || !std::isfinite(c.fit_end)))
     throw InvalidInput("fit", ": need 0 < start < stop");
   if (c.fit && c.fit_end > c.dynamics.duration * (1 + 1e-12))
@@ -60,22 +55,20 @@ void validate(const TransportCase& c) {
   if (!(c.criterion.t_start >= 0) || !std::isfinite(c.criterion.t_start))
     throw InvalidInput("t_star", " " + format_number(c.criterion.t_start) + " s: must be finite and >= 0");
   if (c.fit && c.bootstrap.resamples < 2) throw InvalidInput("bootstrap", ": need at least 2 resamples");
-  if (c.kick == Kick::mode) validate(mode_of(c), c.n);
-  if (c.kick == Kick::mode && !(c.precompression > 0))  // found before any run, not in realization 0
-    throw InvalidInput("precompression", " " + format_number(c.precompression) +
+  if (c.kick == Kick::mode) validate(mode_of(c), n);
+  if (c.kick == Kick::mode && !(c.chain.F0 > 0))  // found before any run, not in realization 0
+    throw InvalidInput("precompression", " " + format_number(c.chain.F0) +
                                              ": a mode kick needs F0 > 0 (the sonic vacuum has no "
                                              "linear modes)");
-  if (c.beads) validate(*c.beads);
   const bool uses_alpha = c.kick == Kick::displacement || c.match_beta || (c.kick == Kick::mode && c.mode.energy == 0);
   if (uses_alpha && (!std::isfinite(c.alpha) || c.alpha == 0))
     throw InvalidInput("alpha", " " + format_number(c.alpha) + ": must be finite and non-zero [m]");
   if (c.kick == Kick::velocity && !c.match_beta && (!std::isfinite(c.beta) || c.beta == 0))
     throw InvalidInput("beta", " " + format_number(c.beta) + ": must be finite and non-zero [m/s], or 'match'");
-  if (c.n > 100000000) throw InvalidInput("N", " " + std::to_string(c.n) + ": more than 1e8 beads");
   if (c.fit && !(std::isfinite(c.fit_step) && c.fit_step > 0))
     throw InvalidInput("fit_step", " " + format_number(c.fit_step) + " s: must be finite and > 0");
   const SpreadingConfig config = spreading_config(c);
-  validate(config, c.n);
+  validate(config, n);
   if (c.fit) {  // a fit that cannot work is bad input, found before the run rather than after it
     std::vector<double> t;
     for (auto step : sample_steps(config)) t.push_back(static_cast<double>(step) * config.time_step);
@@ -112,13 +105,7 @@ static nlohmann::json describe_conservative(const TransportCase& c) {
   const bool uses_alpha = c.kick == Kick::displacement || c.match_beta || (c.kick == Kick::mode && c.mode.energy == 0);
   nlohmann::json beta = nullptr;  // the values used: α only where the kick uses it, β only for a velocity kick
   if (c.kick == Kick::velocity) beta = c.match_beta ? nlohmann::json("match") : nlohmann::json(c.beta);
-  nlohmann::json described = {{"disorder", to_string(c.disorder)},
-                              {"q", c.q},
-                              {"xi", c.xi},
-                              {"N", c.n},
-                              {"F0_N", c.precompression},
-                              {"R1_m", c.r1},
-                              {"ic", to_string(c.kick)},
+  nlohmann::json described = {{"ic", to_string(c.kick)},
                               {"alpha_m", uses_alpha ? nlohmann::json(c.alpha) : nullptr},
                               {"beta_m_s", beta},
                               {"site", c.site + 1},
@@ -139,12 +126,9 @@ static nlohmann::json describe_conservative(const TransportCase& c) {
                               {"window_threshold", d.window.threshold},
                               {"max_energy_error", d.max_energy_error},
                               {"stop_on_energy_error", d.stop_on_energy_error},
-                              {"seed", c.seed},
                               {"realizations", c.realizations},
-                              {"profile_realizations", std::min(c.profile_realizations, c.realizations)},
-                              {"material", {{"E_Pa", steel.young}, {"nu", steel.poisson}, {"rho_kg_m3", steel.density}}},
-                              {"walls", "flat, same material as the beads"}};
-  if (c.beads) described["beads"] = describe(*c.beads);  // only then, as below
+                              {"profile_realizations", std::min(c.profile_realizations, c.realizations)}};
+  describe_fields(c.chain, described);
   if (c.kick == Kick::mode)  // only then: every other case keeps its identity (and its checkpoints)
     described["mode_kick"] = {{"mode", c.mode.mode == 0 ? nlohmann::json(nullptr) : nlohmann::json(c.mode.mode)},
                               {"near_khz",
@@ -153,22 +137,72 @@ static nlohmann::json describe_conservative(const TransportCase& c) {
   return described;
 }
 
-Configuration case_configuration(const TransportCase& c, std::uint64_t r) {
-  return c.centred_draw ? centred_configuration(c.disorder, c.q, c.n, c.seed, r)
-                        : realization_configuration(c.disorder, c.q, c.n, c.seed, r);
-}
-
 nlohmann::json describe(const TransportCase& c) {
   nlohmann::json j = describe_conservative(c);
-  if (c.centred_draw) j["chain_draw"] = "outward from the centre bead";  // only then: default runs keep theirs
   // Only when switched on, so that conservative runs keep their parameters (and checkpoints).
   const SpreadingConfig& d = c.dynamics;
   if (d.damping.any()) j["damping"] = {{"time_s", d.damping.time}, {"kk_gamma_s", d.damping.kk_gamma}};
+  if (d.integrator.reference) j["reference_max_step_s"] = d.integrator.tolerance.max_step;  // only then it matters
   if (d.lyapunov.enabled)
     j["lyapunov"] = {{"renormalize_every", d.lyapunov.renormalize_every},
                      {"norm_time_unit_s", d.lyapunov.time_unit},
                      {"initial_deviation", "du = 1, dv = 1/time_unit on the kicked bead"}};
   return j;
+}
+
+TransportCase parse_case(const nlohmann::json& j) {
+  TransportCase c;
+  try {
+    c.chain = parse_recipe_fields(j);
+    c.kick = parse_kick(j.at("ic").get<std::string>());
+    if (!j.at("alpha_m").is_null()) c.alpha = j.at("alpha_m").get<double>();
+    const auto& beta = j.at("beta_m_s");
+    c.match_beta = beta.is_string();
+    if (beta.is_string() && beta.get<std::string>() != "match") throw InvalidInput("beta_m_s", ": a number or 'match'");
+    if (beta.is_number()) c.beta = beta.get<double>();
+    c.site = j.at("site").get<std::size_t>() - 1;
+    c.centre = parse_spread_centre(j.at("m2_centre").get<std::string>());
+    SpreadingConfig& d = c.dynamics;
+    d.duration = j.at("T_s").get<double>();
+    d.time_step = j.at("dt_s").get<double>();
+    d.integrator = parse_integrator(j.at("integrator").get<std::string>());
+    if (j.contains("reference_max_step_s"))
+      d.integrator.tolerance.max_step = j.at("reference_max_step_s").get<double>();
+    d.force_law = parse_force_law(j.at("force_law").get<std::string>());
+    d.samples = j.at("samples").get<std::size_t>();
+    d.sampling = parse_sampling(j.at("sampling").get<std::string>());
+    c.fit = !j.at("fit_s").is_null();
+    if (c.fit) c.fit_begin = j.at("fit_s").at(0).get<double>(), c.fit_end = j.at("fit_s").at(1).get<double>();
+    c.fit_step = j.at("fit_step_s").get<double>();
+    c.criterion.kappa = j.at("kappa").get<double>();
+    c.criterion.t_start = j.at("t_star_s").get<double>();
+    c.bootstrap.resamples = j.at("bootstrap_resamples").get<std::size_t>();
+    c.bootstrap.seed = j.at("bootstrap_seed").get<std::uint64_t>();
+    d.window.enabled = j.at("active_window").get<bool>();
+    d.window.threshold = j.at("window_threshold").get<double>();
+    d.max_energy_error = j.at("max_energy_error").get<double>();
+    d.stop_on_energy_error = j.at("stop_on_energy_error").get<bool>();
+    c.realizations = j.at("realizations").get<std::size_t>();
+    c.profile_realizations = j.at("profile_realizations").get<std::size_t>();
+    if (j.contains("mode_kick")) {
+      const auto& m = j.at("mode_kick");
+      if (!m.at("mode").is_null()) c.mode.mode = m.at("mode").get<long>();
+      if (!m.at("near_khz").is_null()) c.mode.near_khz = m.at("near_khz").get<double>();
+      if (!m.at("energy_J").is_null()) c.mode.energy = m.at("energy_J").get<double>();
+    }
+    if (j.contains("damping")) {
+      d.damping.time = j.at("damping").at("time_s").get<double>();
+      d.damping.kk_gamma = j.at("damping").at("kk_gamma_s").get<double>();
+    }
+    if (j.contains("lyapunov")) {
+      d.lyapunov.enabled = true;
+      d.lyapunov.renormalize_every = j.at("lyapunov").at("renormalize_every").get<std::size_t>();
+      d.lyapunov.time_unit = j.at("lyapunov").at("norm_time_unit_s").get<double>();
+    }
+  } catch (const nlohmann::json::exception& e) {
+    throw InvalidInput("case", std::string(": ") + e.what());
+  }
+  return c;
 }
 
 TransportExponents transport_exponents(const TransportCase& c, const std::vector<double>& t,
@@ -267,9 +301,7 @@ struct RealizationRecord {
 };
 
 std::vector<double> realization_row(const TransportCase& c, std::uint64_t r) {
-  const Chain chain =
-      make_chain(c.beads ? realization_radii(*c.beads, c.n, c.seed, r) : radii_of(case_configuration(c, r), c.r1, c.xi),
-                 c.precompression);
+  const Chain chain = c.chain.chain(r);
   SpreadingConfig config = spreading_config(c);
   config.force_sites.clear();
   config.map_samples = 0;
@@ -364,7 +396,7 @@ TransportSummary run_transport_study(const TransportCase& c, const StudyRunOptio
       s.excluded.push_back(r);
       continue;
     }
-    if (rows[r].size() != width + (r < all_profiled ? c.n : 0))
+    if (rows[r].size() != width + (r < all_profiled ? c.chain.size() : 0))
       throw NumericalError("realization " + std::to_string(r) + " has a row of the wrong length");
     profiled += r < all_profiled;
     kept.push_back(std::move(rows[r]));
@@ -381,7 +413,7 @@ TransportSummary run_transport_study(const TransportCase& c, const StudyRunOptio
     s.reached_walls += row[R::scalars(samples) + 1] > c.dynamics.wall_warning;
   }
   if (mle_samples > 0) s.mle = summarize(rows, R::profile(samples), samples);
-  if (profiled > 0) s.profile = summarize(rows, width, c.n, profiled);
+  if (profiled > 0) s.profile = summarize(rows, width, c.chain.size(), profiled);
   if (!c.fit) return s;
   s.exponents = transport_exponents(c, s.t, s.m2.mean, s.m2_centroid.mean, s.ipr.mean);
   add_realization_errors(c, s.t, rows, options.threads, *s.exponents);

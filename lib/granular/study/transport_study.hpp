@@ -24,7 +24,7 @@
 #include "granular/dynamics/spreading.hpp"
 #include "granular/ensemble/run_options.hpp"
 #include "granular/error.hpp"
-#include "granular/model/bead_distribution.hpp"
+#include "granular/model/chain_recipe.hpp"
 #include "granular/model/disorder.hpp"
 #include "granular/model/material.hpp"
 #include "granular/study/mode_kick.hpp"
@@ -41,24 +41,16 @@ std::string to_string(Kick kick);
 inline constexpr double paper_beta = 8e-3;
 
 struct TransportCase {
-  Disorder disorder = Disorder::anderson;
-  double q = 0.5, xi = 0.5;
-  std::size_t n = 2501;
-  double precompression = 10;  ///< F0 [N]
-  double r1 = 4.76e-3;         ///< type-1 radius [m]
-  /// When set, realization r draws its radii from this (k types or polydisperse) instead of
-  /// disorder/q/ξ/r1.
-  std::optional<BeadDistribution> beads;
+  /// Which chain realization r is (N = 2501 beads, F0 = 10 N, the paper's two types by default).
+  ChainRecipe chain{.N = 2501};
   Kick kick = Kick::displacement;
   double alpha = 1e-7;                       ///< displacement kick [m]
   double beta = paper_beta;                  ///< velocity kick [m/s]
   bool match_beta = false;                   ///< velocity kick carrying the energy of α on each chain instead
   ModeKick mode;                             ///< mode kick: which mode and its energy (or amplitude: α)
   std::size_t site = 1250;                   ///< 0-based kicked bead n0 (1251 counting from 1)
-  bool centred_draw = false;                 ///< chains drawn outward from the centre bead (centred_configuration.hpp)
   SpreadCentre centre = SpreadCentre::site;  ///< which m̃2 the tables show (both are computed)
   SpreadingConfig dynamics;                  ///< T, τ, integrator, force law, samples, window
-  std::uint64_t seed = 1;
   std::size_t realizations = 500;
   std::size_t profile_realizations =
       std::numeric_limits<std::size_t>::max();  ///< E_n(T) averaged over the first this many (0: none)
@@ -72,11 +64,12 @@ struct TransportCase {
 /// Throws InvalidInput (naming the option) on an impossible case, before any work.
 void validate(const TransportCase& c);
 
-/// The bead types of realization r of `c` (drawn from the left wall, or from the centre).
-Configuration case_configuration(const TransportCase& c, std::uint64_t r);
-
-/// Every parameter that determines the result, as JSON (the checkpoint's identity).
+/// Every parameter that determines the result, as JSON (the checkpoint's identity, the run's
+/// "parameters", Python's metadata).
 nlohmann::json describe(const TransportCase& c);
+/// The inverse of describe: parse_case(describe(c)) describes as c does. Throws InvalidInput
+/// naming the key.
+TransportCase parse_case(const nlohmann::json& described);
 
 /// The spreading run of one realization of `c`: its dynamics with the kicked site and the dense
 /// grid of the fit window.
@@ -119,7 +112,7 @@ struct TransportSummary {
 /// checkpoint. what() is "realization r of seed s: <cause>".
 struct RealizationFailed : NumericalError {
   RealizationFailed(const TransportCase& c, std::uint64_t r, const std::string& cause)
-      : NumericalError("realization " + std::to_string(r) + " of seed " + std::to_string(c.seed) + ": " + cause),
+      : NumericalError("realization " + std::to_string(r) + " of seed " + std::to_string(c.chain.seed) + ": " + cause),
         failed_case(c), realization(r) {}
   TransportCase failed_case;
   std::uint64_t realization;

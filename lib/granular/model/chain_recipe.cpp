@@ -1,0 +1,190 @@
+#include "granular/model/chain_recipe.hpp"
+
+#include <cmath>
+
+#include "granular/error.hpp"
+#include "granular/model/centred_configuration.hpp"
+#include "granular/model/configuration_file.hpp"
+#include "granular/number_format.hpp"
+
+namespace granular {
+namespace {
+
+ChainParameters parameters(const ChainRecipe& c, std::uint64_t r) {
+  return {
+      .N = c.N, .q = c.q, .xi = c.xi, .seed = c.seed, .realization = r, .F0 = c.F0, .R1 = c.R1, .material = c.material};
+}
+
+}  // namespace
+
+std::size_t ChainRecipe::size() const {
+  if (given_types) return given_types->size();
+  if (given_radii) return given_radii->size();
+  return N;
+}
+
+Configuration ChainRecipe::types(std::uint64_t r) const {
+  if (given_types) return *given_types;
+  if (given_radii || distribution) return {};
+  return centred ? centred_configuration(disorder, q, N, seed, r) : realization_configuration(disorder, q, N, seed, r);
+}
+
+std::vector<double> ChainRecipe::radii(std::uint64_t r) const {
+  if (given_radii) return *given_radii;
+  if (distribution) return realization_radii(*distribution, N, seed, r);
+  return radii_of(types(r), R1, xi);
+}
+
+Chain ChainRecipe::chain_of(const Configuration& t) const { return from_types(t, parameters(*this, 0)); }
+
+Chain ChainRecipe::chain(std::uint64_t r) const {
+  if (given_radii || distribution) return make_chain(radii(r), F0, material);
+  return chain_of(types(r));
+}
+
+std::unique_ptr<BeadSource> ChainRecipe::beads(std::uint64_t r) const {
+  if (given_types) return typed_beads(*given_types, parameters(*this, r));
+  if (given_radii || distribution || centred) return chain_beads(chain(r));
+  return random_beads(disorder, parameters(*this, r));
+}
+
+std::vector<double> ChainRecipe::possible_radii() const {
+  std::vector<double> out;
+  if (given_radii) return *given_radii;
+  if (distribution && distribution->kind == BeadDistribution::Kind::types) {
+    for (std::size_t t = 0; t < distribution->radii.size(); ++t)
+      if (distribution->probabilities[t] > 0) out.push_back(distribution->radii[t]);
+    return out;
+  }
+  if (distribution) {
+    const bool uniform = distribution->kind == BeadDistribution::Kind::uniform;
+    const double low = uniform ? distribution->low : distribution->minimum;
+    const double high = uniform ? distribution->high : distribution->mean + 8 * distribution->sd;
+    const int points = high > low ? 9 : 1;
+    for (int i = 0; i < points; ++i)
+      out.push_back(i == points - 1 ? high : low * std::pow(high / low, static_cast<double>(i) / (points - 1)));
+    return out;
+  }
+  bool one = false, two = false;
+  if (given_types) {
+    for (std::uint8_t t : *given_types) (t == 1 ? one : two) = true;
+  } else {
+    two = disorder == Disorder::rdm2 || (disorder != Disorder::homogeneous && q < 1);
+    one = disorder == Disorder::homogeneous || disorder == Disorder::rdm2 || q > 0;
+  }
+  if (one) out.push_back(R1);
+  if (two) out.push_back(xi * R1);
+  return out;
+}
+
+void validate(const ChainRecipe& c, std::size_t max_beads) {
+  if (c.given_types && c.given_radii) throw InvalidInput("radii", ": a chain has given types or given radii, not both");
+  if (c.distribution && !c.drawn())
+    throw InvalidInput("beads", ": a bead distribution draws its chain; not with given types or radii");
+  if (c.centred && (c.distribution || !c.drawn()))
+    throw InvalidInput("N", ": a chain drawn from its centre (the automatic N) has two bead types, not a bead source");
+  const std::size_t n = c.size();
+  if (n < 2) throw InvalidInput("N", " " + std::to_string(n) + ": a chain needs at least 2 beads");
+  if (n > max_beads)
+    throw InvalidInput("N", " " + std::to_string(n) + ": more than " +
+                                (max_beads == 100000000 ? std::string("1e8")
+                                                        : format_number(static_cast<double>(max_beads))) +
+                                " beads");
+  if (!std::isfinite(c.F0) || c.F0 < 0)
+    throw InvalidInput("F0", " " + format_number(c.F0) + ": must be finite and >= 0");
+  validate(c.material, "material");
+  if (c.distribution) {
+    validate(*c.distribution);
+    return;
+  }
+  if (c.given_radii) {
+    for (std::size_t i = 0; i < c.given_radii->size(); ++i)
+      if (const double r = (*c.given_radii)[i]; !std::isfinite(r) || r <= 0)  // make_chain's words
+        throw InvalidInput("radii", ": bead " + std::to_string(i + 1) + " has radius " + format_number(r) +
+                                        " m (must be finite and > 0)");
+    return;
+  }
+  validate_size_ratio(c.xi);
+  if (!std::isfinite(c.R1) || c.R1 <= 0)
+    throw InvalidInput("R1", " " + format_number(c.R1) + ": must be finite and > 0");
+  if (!c.given_types) validate_probability(c.q);
+}
+
+nlohmann::json describe(const Material& m) { return {{"E_Pa", m.young}, {"nu", m.poisson}, {"rho_kg_m3", m.density}}; }
+
+nlohmann::json describe(const ChainRecipe& c, std::optional<std::uint64_t> realization) {
+  nlohmann::json d;
+  d["F0_N"] = c.F0;
+  d["material"] = describe(c.material);
+  d["walls"] = flat_walls_description;
+  d["N"] = c.size();
+  const auto drawn = [&] {
+    d["seed"] = c.seed;
+    if (realization) d["realization"] = *realization;
+  };
+  if (c.distribution) {
+    d["beads"] = describe(*c.distribution);
+    drawn();
+  } else if (c.given_radii) {
+    if (!c.source.empty()) d["radii_file"] = c.source;
+  } else {
+    d["R1_m"] = c.R1;
+    d["xi"] = c.xi;
+    if (c.given_types) {
+      if (!c.source.empty()) d["config_file"] = c.source;
+    } else {
+      d["disorder"] = to_string(c.disorder);
+      d["q"] = c.q;
+      drawn();
+    }
+  }
+  return d;
+}
+
+void describe_fields(const ChainRecipe& c, nlohmann::json& f) {
+  f["disorder"] = to_string(c.disorder);
+  f["q"] = c.q;
+  f["xi"] = c.xi;
+  f["N"] = c.size();
+  f["F0_N"] = c.F0;
+  f["R1_m"] = c.R1;
+  f["seed"] = c.seed;
+  f["material"] = describe(c.material);
+  f["walls"] = flat_walls_description;
+  if (c.distribution) f["beads"] = describe(*c.distribution);
+  if (c.centred) f["chain_draw"] = "outward from the centre bead";
+  if (c.given_types && !c.source.empty()) f["config_file"] = c.source;
+  if (c.given_radii && !c.source.empty()) f["radii_file"] = c.source;
+}
+
+ChainRecipe parse_recipe_fields(const nlohmann::json& f) {
+  ChainRecipe c;
+  try {
+    c.disorder = parse_disorder(f.at("disorder").get<std::string>());
+    c.q = f.at("q").get<double>();
+    c.xi = f.at("xi").get<double>();
+    c.N = f.at("N").get<std::size_t>();
+    c.F0 = f.at("F0_N").get<double>();
+    c.R1 = f.at("R1_m").get<double>();
+    c.seed = f.at("seed").get<std::uint64_t>();
+    const auto& m = f.at("material");
+    c.material = {m.at("E_Pa").get<double>(), m.at("nu").get<double>(), m.at("rho_kg_m3").get<double>()};
+    if (f.at("walls").get<std::string>() != flat_walls_description)
+      throw InvalidInput("walls", ": only '" + std::string(flat_walls_description) + "'");
+    if (f.contains("beads")) c.distribution = parse_bead_distribution(f.at("beads").get<std::string>());
+    if (f.contains("chain_draw")) c.centred = true;
+    if (f.contains("config_file")) {
+      c.source = f.at("config_file").get<std::string>();
+      c.given_types = read_configuration_file(c.source);
+    }
+    if (f.contains("radii_file")) {
+      c.source = f.at("radii_file").get<std::string>();
+      c.given_radii = read_radii_file(c.source);
+    }
+  } catch (const nlohmann::json::exception& e) {
+    throw InvalidInput("chain", std::string(": ") + e.what());
+  }
+  return c;
+}
+
+}  // namespace granular

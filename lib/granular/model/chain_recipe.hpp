@@ -1,0 +1,91 @@
+#pragma once
+// One chain recipe: everything that says which chain "realization r" is, for every study, tool
+// and Python call. A recipe draws the paper's two bead types (radii R1 and ξ R1, by a disorder
+// rule with probability q), or beads from a distribution (k types, polydisperse radii), or holds
+// a given sequence of types or of radii (a configuration or radii file). Random recipes are pure
+// functions of (seed, r): the same chain on any machine, thread or rank.
+//
+//   granular::ChainRecipe recipe{.disorder = granular::Disorder::rdm2, .q = 0.8, .N = 1000, .seed = 7};
+//   for (std::uint64_t r = 0; r < 100; ++r) { granular::Chain chain = recipe.chain(r); ... }
+//
+// Beads count from 0 here (chain.hpp); files and the tools count from 1.
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "granular/model/bead_distribution.hpp"
+#include "granular/model/bead_source.hpp"
+#include "granular/model/chain.hpp"
+#include "granular/model/disorder.hpp"
+#include "granular/model/material.hpp"
+#include "granular/model/named_chains.hpp"
+
+namespace granular {
+
+/// How the walls of every recipe's chain are made, as descriptions say it.
+inline constexpr const char* flat_walls_description = "flat, same material as the beads";
+
+struct ChainRecipe {
+  /// Where the beads come from. At most one of `distribution`, `given_types` and `given_radii`
+  /// is set; with none, the paper's two types are drawn by `disorder` with `q`.
+  Disorder disorder = Disorder::anderson;  ///< the two-type draw (also the rule of k types)
+  double q = 0.5;        ///< probability of a type-1 bead (A), dimer "11" (RDM1) or "12" (RDM2), in [0, 1]
+  double xi = 0.5;       ///< size ratio R2/R1 in (0, 1] (two-type draws and a types file)
+  double R1 = paper_r1;  ///< type-1 radius [m]
+  bool centred = false;  ///< two-type draws outward from the centre bead (centred_configuration.hpp)
+  std::optional<BeadDistribution> distribution{};    ///< k types or polydisperse radii, per realization
+  std::optional<Configuration> given_types{};        ///< one given sequence of types 1 and 2
+  std::optional<std::vector<double>> given_radii{};  ///< one given sequence of radii [m]
+  std::string source{};                              ///< the file `given_types` or `given_radii` came from ("" if none)
+  std::size_t N = 100;                               ///< beads of a drawn chain (a given one has its own length)
+  double F0 = 10;                                    ///< static precompression [N], ≥ 0 (0: the sonic vacuum)
+  Material material = steel;                         ///< beads and walls
+  std::uint64_t seed = 1;                            ///< random seed of drawn chains
+
+  /// True when realization r matters (two-type draws and distributions).
+  bool drawn() const { return !given_types && !given_radii; }
+  /// The number of beads of every realization.
+  std::size_t size() const;
+  /// The bead types (1 or 2) of realization r: two-type draws and a types file; empty otherwise.
+  Configuration types(std::uint64_t r) const;
+  /// The radii [m] of realization r.
+  std::vector<double> radii(std::uint64_t r) const;
+  /// Realization r: its masses, contacts and static overlaps.
+  Chain chain(std::uint64_t r) const;
+  /// The chain of given bead types under this recipe's ξ, R1, F0 and material (what chain(r)
+  /// builds from types(r); a study that varies only ξ draws the types once).
+  Chain chain_of(const Configuration& types) const;
+  /// Realization r as a stream of beads, for methods that walk a chain once (transfer matrices):
+  /// a two-type draw costs memory O(1) whatever N (up to 1e12); the others store the chain.
+  std::unique_ptr<BeadSource> beads(std::uint64_t r) const;
+  /// Every radius a bead of any realization can have, sampled (the two types, the k types of
+  /// positive probability, nine points across a polydisperse range, the given radii): what a
+  /// worst-case rule over every realization must try.
+  std::vector<double> possible_radii() const;
+};
+
+/// Throws InvalidInput naming the field (N, q, xi, F0, R1, material, beads, radii, types).
+/// `max_beads`: the largest N allowed (a stored chain: 1e8; a streamed two-type draw: 1e12).
+void validate(const ChainRecipe& recipe, std::size_t max_beads = 100000000);
+
+/// The recipe as the tools' JSON "chain" entry: F0_N, material, walls, N, and what picked the
+/// chain (beads + seed; radii_file; R1_m, xi and config_file or disorder, q, seed), with
+/// `realization` for drawn chains when given.
+nlohmann::json describe(const ChainRecipe& recipe, std::optional<std::uint64_t> realization = std::nullopt);
+
+/// The recipe as a kicked-chain case spells it among its other fields (study/transport_study):
+/// disorder, q, xi, N, F0_N, R1_m, seed, material, walls, and beads / chain_draw / config_file /
+/// radii_file when they apply.
+void describe_fields(const ChainRecipe& recipe, nlohmann::json& fields);
+/// The inverse of describe_fields (files are read again). Throws InvalidInput naming the key.
+ChainRecipe parse_recipe_fields(const nlohmann::json& fields);
+
+/// The material as descriptions give it: E_Pa, nu, rho_kg_m3.
+nlohmann::json describe(const Material& material);
+
+}  // namespace granular

@@ -1,0 +1,144 @@
+#pragma once
+// The `spreading` command that computes one realization of a kicked-chain case alone, printed
+// when a realization of an ensemble fails. Every field of the case is spelled out (numbers in
+// shortest round-trip form), and the command is read back with spreading's own options
+// (kicked_case.hpp) before it is printed: if it does not give the very case that failed (a
+// material or a setting no flag spells), no command is printed and the reason is.
+#include <algorithm>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "granular/number_format.hpp"
+#include "kicked_case.hpp"
+#include "metadata.hpp"
+
+namespace granular::tool {
+
+/// The flags of realization `r` of `c` as `spreading` reads them (no --output).
+inline std::vector<std::string> replay_arguments(const TransportCase& c, std::uint64_t r) {
+  std::vector<std::string> a;
+  const auto add = [&](const std::string& flag, const std::string& value) { a.insert(a.end(), {flag, value}); };
+  const auto number = [](double x) { return format_number(x); };
+  const ChainRecipe& chain = c.chain;
+  const SpreadingConfig& d = c.dynamics;
+  if (const auto& b = chain.distribution) {
+    if (b->kind == BeadDistribution::Kind::types) {
+      std::string types;
+      for (std::size_t t = 0; t < b->radii.size(); ++t)
+        types += (t ? "," : "") + number(b->radii[t]) + ":" + number(b->probabilities[t]);
+      add("--types", types);
+      add("--disorder", to_string(b->rule));
+    } else if (b->kind == BeadDistribution::Kind::uniform) {
+      add("--polydisperse", "uniform:" + number(b->low) + ":" + number(b->high));
+    } else {
+      add("--polydisperse", "normal:" + number(b->mean) + ":" + number(b->sd) + ":" + number(b->minimum));
+    }
+  } else if (chain.given_radii) {
+    add("--radii", chain.source);
+  } else {
+    if (chain.given_types) add("--config", chain.source);
+    else add("--disorder", to_string(chain.disorder)), add("--q", number(chain.q));
+    add("--xi", number(chain.xi));
+    add("--R1", number(chain.R1));
+  }
+  if (chain.drawn()) {
+    add("--N", chain.centred ? "auto" : std::to_string(chain.N));
+    add("--seed", std::to_string(chain.seed));
+    add("--realization", std::to_string(r));
+  }
+  add("--F0", number(chain.F0));
+  add("--ic", to_string(c.kick));
+  add("--alpha", number(c.alpha));
+  if (c.kick == Kick::velocity) add("--beta", c.match_beta ? "match" : number(c.beta));
+  if (c.kick == Kick::mode) {
+    if (c.mode.mode != 0) add("--mode", std::to_string(c.mode.mode));
+    if (c.mode.near_khz >= 0) add("--mode-khz", number(c.mode.near_khz));
+    if (c.mode.energy != 0) add("--energy", number(c.mode.energy));
+  }
+  if (!chain.centred) add("--site", std::to_string(c.site + 1));  // --N auto kicks the centre by rule
+  add("--centre", to_string(c.centre));
+  add("--T", number(d.duration));
+  add("--dt", number(d.time_step));
+  add("--integrator", d.integrator.name());
+  add("--force-law", to_string(d.force_law));
+  add("--samples", std::to_string(d.samples));
+  add("--sampling", to_string(d.sampling));
+  add("--fit", number(c.fit_begin) + ":" + number(c.fit_end));
+  add("--fit-step", number(c.fit_step));
+  add("--t-star", number(c.criterion.t_start));
+  add("--kappa", number(c.criterion.kappa));
+  add("--bootstrap", std::to_string(c.bootstrap.resamples));
+  add("--active-window", d.window.enabled ? "on" : "off");
+  add("--window-threshold", number(d.window.threshold));
+  add("--reference-max-step", number(d.integrator.tolerance.max_step));
+  add("--max-energy-error", number(d.max_energy_error));
+  add("--energy-guard", d.stop_on_energy_error ? "stop" : "warn");
+  if (d.damping.time > 0) add("--damping-time", number(d.damping.time));
+  if (d.damping.kk_gamma > 0) add("--kk-gamma", number(d.damping.kk_gamma));
+  if (d.lyapunov.enabled) {
+    a.emplace_back("--mle");
+    add("--renormalize", std::to_string(d.lyapunov.renormalize_every));
+  }
+  return a;
+}
+
+/// The case `spreading` reads from `arguments` (validated, its step settled as the tool does).
+inline TransportCase read_kicked_case(const std::vector<std::string>& arguments) {
+  CLI::App app;
+  KickedCaseOptions o;
+  add_kicked_case_options(app, o);
+  std::vector<std::string> reversed(arguments.rbegin(), arguments.rend());  // CLI11 reads them from the back
+  app.parse(reversed);
+  KickedCase k = kicked_case(o, false);
+  settle(k.c, o, app.count("--dt") > 0);
+  return k.c;
+}
+
+/// The keys on which the case `arguments` give differs from realization `r` of `c` run alone
+/// (empty: they give it exactly), or why they cannot be read.
+inline std::string replay_mismatch(const TransportCase& c, const std::vector<std::string>& arguments) {
+  TransportCase alone = c;  // what spreading runs: one realization, no profile
+  alone.realizations = 1;
+  alone.profile_realizations = 0;
+  try {
+    const nlohmann::json want = describe(alone), got = describe(read_kicked_case(arguments));
+    std::string differ;
+    for (const auto& [key, value] : want.items())
+      if (!got.contains(key) || got.at(key) != value) differ += (differ.empty() ? "" : ", ") + key;
+    for (const auto& [key, value] : got.items())
+      if (!want.contains(key)) differ += (differ.empty() ? "" : ", ") + key;
+    return differ;
+  } catch (const std::exception& e) {
+    return std::string("the flags do not read back: ") + e.what();
+  }
+}
+
+/// The `spreading` command that computes realization `r` of case `c` alone, so it meets exactly
+/// what the ensemble met; none when its flags cannot spell the case (`why` says what differs).
+/// `argv0` (how this tool was called) says where `spreading` is.
+inline std::optional<std::string> replay_command(const TransportCase& c, std::uint64_t r, const std::string& argv0,
+                                                 std::string* why = nullptr) {
+  const std::vector<std::string> arguments = replay_arguments(c, r);
+  const std::string differ = replay_mismatch(c, arguments);
+  if (!differ.empty()) {
+    if (why) *why = differ;
+    return std::nullopt;
+  }
+  const auto slash = argv0.rfind('/');
+  std::string command =
+      Metadata::shell_quote((slash == std::string::npos ? "" : argv0.substr(0, slash + 1)) + "spreading");
+  for (const std::string& word : arguments)
+    command += " " + (word.starts_with("--") ? word : Metadata::shell_quote(word));
+  return command + " --output replay-" + std::to_string(r);
+}
+
+/// The replay command, or a sentence saying why there is none.
+inline std::string replay_text(const TransportCase& c, std::uint64_t r, const std::string& argv0) {
+  std::string why;
+  const auto command = replay_command(c, r, argv0, &why);
+  return command ? *command : "(no spreading command spells this case: it differs in " + why + ")";
+}
+
+}  // namespace granular::tool
