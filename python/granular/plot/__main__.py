@@ -23,7 +23,8 @@ def _default_output(path, suffix=""):
 
 
 def parser(prog=None):
-    p = argparse.ArgumentParser(prog=prog or "python3 -m granular.plot", description=__doc__.splitlines()[0])
+    # the whole docstring (argparse refills it): its first line alone stops mid-sentence
+    p = argparse.ArgumentParser(prog=prog or "python3 -m granular.plot", description=__doc__)
     sub = p.add_subparsers(dest="kind", required=True, metavar="KIND")
 
     def kind(name, help_text):
