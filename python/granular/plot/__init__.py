@@ -15,6 +15,7 @@ look, _io the reading of results and files:
     ipr_map(result_or_csv)                     mean IPR over (xi, mode), one panel per q (paper Fig. 4)
     spectrum(result_or_csv)                    f versus mode and the IPR beside it (paper Fig. 3)
     partial_spectrum_ipr(spectra)              IPR versus f - f0 of the modes nearest f0, several N
+    ipr_averaging(by_mode, binned)             IPR against f by mode number beside in frequency bins
   disorder: what the disorder does (bead correlations, localization length)
     correlations(results_or_csvs)              rho(d) with its spread and the infinite-chain formula
     localization(scan_or_csv, spectra)         localization length l(f) beside the IPR of finite chains
@@ -32,8 +33,8 @@ look, _io the reading of results and files:
 """
 from .disorder import correlations, localization
 from .dynamics import cost, energy_map, forces, spectral_densities, spreading
-from .modes import ipr_map, partial_spectrum_ipr, spectrum
+from .modes import ipr_averaging, ipr_map, partial_spectrum_ipr, spectrum
 from .transport_exponents import centres, exponents, paper_comparison, profiles
 
-__all__ = ["ipr_map", "spectrum", "correlations", "partial_spectrum_ipr", "localization", "energy_map", "forces", "spreading",
-           "exponents", "centres", "paper_comparison", "profiles", "spectral_densities", "cost"]
+__all__ = ["ipr_map", "spectrum", "partial_spectrum_ipr", "ipr_averaging", "correlations", "localization", "energy_map",
+           "forces", "spreading", "spectral_densities", "cost", "exponents", "centres", "paper_comparison", "profiles"]

@@ -10,9 +10,9 @@ matplotlib.use("Agg")
 
 
 def _pair(text):
-    """'a:b' -> (a, b) floats."""
+    """'a:b' (or 'a,b') -> (a, b) floats."""
     try:
-        a, b = text.split(":")
+        a, b = text.replace(",", ":").split(":")
         return float(a), float(b)
     except ValueError:
         raise argparse.ArgumentTypeError(f"expected START:STOP, got {text!r}") from None
@@ -30,12 +30,20 @@ def parser(prog=None):
     def kind(name, help_text):
         q = sub.add_parser(name, help=help_text, description=help_text)
         q.add_argument("-o", "--output", help="PNG (or PDF, SVG) to write; default: the input name with .png")
+        q.add_argument("--dpi", type=float, help="resolution of a PNG [dots per inch] (default: matplotlib's, 100)")
         return q
 
     q = kind("ipr-map", "mean IPR over (xi, mode number), one panel per q, from an ipr-map CSV (paper Fig. 4)")
     q.add_argument("csv", nargs="?", default="ipr-map.csv")
     q.add_argument("--log-color", action="store_true", help="IPR on a logarithmic colour scale")
     q.add_argument("--no-band-edges", action="store_true", help="do not draw where the mean f crosses f1 and fb1")
+    q = kind("ipr-averaging", "IPR against frequency averaged by mode number beside in frequency bins, for one (q, xi) "
+                              "cell, from an ipr-map CSV and its --bin-khz CSV")
+    q.add_argument("mode_csv", help="ipr-map CSV averaged by mode number")
+    q.add_argument("binned_csv", help="ipr-map --bin-khz CSV of the same ensemble")
+    q.add_argument("--q", type=float, help="the cell's q (default: the map's only one)")
+    q.add_argument("--xi", type=float, help="the cell's xi (default: the map's only one)")
+    q.add_argument("--gap", type=_pair, metavar="LO,HI", help="a band gap to shade [kHz], e.g. 11.95,33.81")
     q = kind("spectrum", "f versus mode number and the IPR beside it, band edges dashed, from a spectrum CSV")
     q.add_argument("csv", nargs="?", default="spectrum.csv")
     q = kind("correlations", "rho(d) with its spread and the infinite-chain formula, from correlations CSVs")
@@ -89,7 +97,7 @@ def main(argv=None, prog=None):
     from granular import plot
 
     def save(fig, out):
-        fig.savefig(out)
+        fig.savefig(out, dpi=args.dpi)
         print(f"wrote {out}")
 
     labels = getattr(args, "labels", None)
@@ -98,6 +106,9 @@ def main(argv=None, prog=None):
         if args.kind == "ipr-map":
             save(plot.ipr_map(args.csv, band_edges=not args.no_band_edges, log_color=args.log_color),
                  args.output or _default_output(args.csv))
+        elif args.kind == "ipr-averaging":
+            save(plot.ipr_averaging(args.mode_csv, args.binned_csv, q=args.q, xi=args.xi, gap_khz=args.gap),
+                 args.output or _default_output(args.mode_csv, "-averaging"))
         elif args.kind == "spectrum":
             save(plot.spectrum(args.csv), args.output or _default_output(args.csv))
         elif args.kind == "correlations":

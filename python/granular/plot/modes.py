@@ -148,3 +148,63 @@ def partial_spectrum_ipr(spectra, near=None, labels=None):
         ax.set_title("modes nearest a frequency (dotted: 3/(2N), an extended mode)")
         ax.legend()
     return fig
+
+
+def _ipr_cell(source, q, xi):
+    """The rows of one (q, xi) cell of an ipr-map result or CSV (by mode or in frequency bins), the
+    disorder, q and xi (None: the map's only value)."""
+    if _io.is_path(source):
+        rows, name = _io.read_csv(source), os.fspath(source)
+        disorder = rows["disorder"][0]
+    else:
+        rows, name, disorder = source.rows(), "this IPR map", source.disorder
+    qs, xis = np.asarray(rows["q"], float), np.asarray(rows["xi"], float)
+    for what, values, chosen in (("q", qs, q), ("xi", xis, xi)):
+        if chosen is None and len(set(values)) > 1:
+            raise ValueError(f"{name}: several values of {what} ({', '.join(f'{v:g}' for v in sorted(set(values)))}); "
+                             f"choose one ({what}=)")
+    q = qs[0] if q is None else q
+    xi = xis[0] if xi is None else xi
+    pick = (np.abs(qs - q) < 1e-12) & (np.abs(xis - xi) < 1e-12)
+    if not pick.any():
+        raise ValueError(f"{name}: no rows with q = {q}, xi = {xi}")
+    return {k: np.asarray(v)[pick] for k, v in rows.items()}, disorder, q, xi
+
+
+def ipr_averaging(by_mode, binned, q=None, xi=None, gap_khz=None):
+    """The two averagings of ipr-map for one (q, xi) cell: the ensemble's IPR against frequency f
+    [kHz] averaged by mode number (each mode number's mean f and mean IPR over the realizations:
+    points) and in frequency bins (the mean IPR of every mode of every realization in the bin:
+    steps), with the number of modes per bin below. Averaged by mode number, points fall inside band
+    gaps where no chain has a mode (the realizations number their modes differently); the bins do not.
+
+    by_mode: a granular.IprMap averaged by mode number or the ipr-map tool's CSV (columns disorder,
+    q, xi, mode, freq_khz, ipr). binned: the same map with bin_khz > 0 (ipr-map --bin-khz; columns
+    disorder, q, xi, freq_lo_khz, freq_hi_khz, modes, ipr). q, xi: the cell (default: the map's
+    only value). gap_khz: (lo, hi) [kHz], a band gap to shade (e.g. fb1, fb2 of the diatomic chain).
+    """
+    cell, disorder, q, xi = _ipr_cell(by_mode, q, xi)
+    bins, _, _, _ = _ipr_cell(binned, q, xi)
+    if "mode" not in cell or "realization" in cell or "freq_lo_khz" not in bins:
+        raise ValueError("ipr_averaging: give the map averaged by mode number (every mode) first, the "
+                         "frequency-binned one (--bin-khz) second")
+    f_mode, ipr_mode = cell["freq_khz"].astype(float), cell["ipr"].astype(float)
+    lo, hi = bins["freq_lo_khz"].astype(float), bins["freq_hi_khz"].astype(float)
+    count, ipr_bin = bins["modes"].astype(float), bins["ipr"].astype(float)
+    # matplotlib's default look (not style()), as docs/figures/ipr-averaging.png was drawn
+    fig = figure(6.4, 5.6)
+    top, bottom = fig.subplots(2, 1, sharex=True, height_ratios=[3, 1.3])
+    edges = np.append(lo, hi[-1])
+    top.stairs(np.where(count > 0, ipr_bin, np.nan), edges, color="tab:blue", lw=1.6,
+               label=f"frequency bins of {hi[0] - lo[0]:g} kHz (every mode of every realization)")
+    top.plot(f_mode, ipr_mode, "o", ms=3, color="tab:orange", label="by mode number (mean f, mean IPR)")
+    bottom.stairs(count, edges, color="tab:blue", fill=True, alpha=0.5)
+    if gap_khz is not None:
+        for ax in (top, bottom):
+            ax.axvspan(*gap_khz, color="0.85", zorder=0, label="gap (fb1, fb2) of the diatomic chain" if ax is top else None)
+    top.set_ylabel("IPR")
+    top.set_title(f"{disorder}, q = {q:g}, ξ = {xi:g}: the two averagings of ipr-map")
+    top.legend(fontsize=8, loc="upper left")
+    bottom.set_ylabel("modes per bin")
+    bottom.set_xlabel("frequency f [kHz]")
+    return fig
