@@ -23,6 +23,7 @@ look, _io the reading of results and files:
     energy_map(run_or_h5, spectral_density)    E_n(t) beside g(nu), zoomable in t and n
     forces(run_or_csv, profile)                force versus t at chosen beads, force profile at T
     spreading(runs_or_csvs)                    m2(t) and P^-1(t), log-log, with L_d insets
+    mode_kicks(runs_or_csvs)                   m2(t) and P^-1(t) from linear modes beside a site kick
     spectral_densities(pairs, titles)          g(nu) of the displacements beside that of the velocities
     cost(benchmark_json)                       integrators' cost-accuracy curves
   transport_exponents: the paper's transport study (an exponents run)
@@ -32,9 +33,10 @@ look, _io the reading of results and files:
     profiles(table_or_prefix)                  averaged energy profiles E_n(T)
 """
 from .disorder import correlations, localization
-from .dynamics import cost, energy_map, forces, spectral_densities, spreading
+from .dynamics import cost, energy_map, forces, mode_kicks, spectral_densities, spreading
 from .modes import ipr_averaging, ipr_map, partial_spectrum_ipr, spectrum
 from .transport_exponents import centres, exponents, paper_comparison, profiles
 
 __all__ = ["ipr_map", "spectrum", "partial_spectrum_ipr", "ipr_averaging", "correlations", "localization", "energy_map",
-           "forces", "spreading", "spectral_densities", "cost", "exponents", "centres", "paper_comparison", "profiles"]
+           "forces", "spreading", "mode_kicks", "spectral_densities", "cost", "exponents", "centres",
+           "paper_comparison", "profiles"]

@@ -69,6 +69,10 @@ def parser(prog=None):
     q = kind("spread", "m2(t) and P^-1(t), log-log, with L_d insets, from spreading CSVs")
     q.add_argument("csv", nargs="+")
     q.add_argument("--labels", help="comma list, one per CSV")
+    q = kind("mode-kicks", "m2 about the centroid and P^-1 against t from linear modes beside a single-site kick, from "
+                           "spreading CSVs (--ic mode, --ic velocity)")
+    q.add_argument("csv", nargs="+")
+    q.add_argument("--labels", help="comma list, one per CSV (default: the mode or the kick, from the JSONs)")
     q = kind("exponents", "the paper's transport panels per chain kind and F0, from an exponents run")
     q.add_argument("prefix", nargs="?", default="exponents", help="the exponents --output prefix (default exponents)")
     q.add_argument("--kick", action="append", help="displacement and/or velocity (default: every kick in the run)")
@@ -125,6 +129,8 @@ def main(argv=None, prog=None):
             save(plot.forces(args.forces, args.profile), args.output or _default_output(args.forces))
         elif args.kind == "spread":
             save(plot.spreading(args.csv, labels), args.output or _default_output(args.csv[0]))
+        elif args.kind == "mode-kicks":
+            save(plot.mode_kicks(args.csv, labels), args.output or _default_output(args.csv[0]))
         elif args.kind == "exponents":
             import csv
 

@@ -125,12 +125,13 @@ def forces(source, profile=None, sites=None):
     return fig
 
 
-def _spread_curves(source):
+def _spread_curves(source, m2="m2"):
+    """(t, m2 or m2_centroid, ipr, metadata) of a run or ensemble, or of the spreading tool's CSV."""
     if _io.is_path(source):
         d = _io.read_csv(source)
         meta = _io.read_json_beside(source)
-        return d["t"], d["m2"], d["ipr"], meta
-    return source["t"], source["m2"], source["ipr"], source["metadata"]
+        return d["t"], d[m2], d["ipr"], meta
+    return source["t"], source[m2], source["ipr"], source["metadata"]
 
 
 def spreading(sources, labels=None):
@@ -167,6 +168,42 @@ def spreading(sources, labels=None):
         bx.set_ylabel(r"participation $P^{-1}$")
         inset_log_derivative(ax, m2_curves, [0.09, 0.6, 0.36, 0.33], fit, ylim=(-0.5, 2.5))
         bx.legend(loc="lower left")
+    return fig
+
+
+def _start_label(meta):
+    """How a spreading run started, from its metadata: the linear mode or the single-site kick."""
+    parameters = meta.get("parameters", {})
+    mode = parameters.get("mode_used")
+    if mode:
+        return f"mode {mode['mode']} ({mode['freq_khz']:.2f} kHz, IPR {mode['ipr']:.3g})"
+    return f"single-site {parameters.get('ic', '')} kick"
+
+
+def mode_kicks(runs, labels=None):
+    """Energy spreading from linear modes against a single-site kick of the same energy: the second
+    moment m~2 about the energy centroid [beads^2] (a mode's energy is not centred on one bead) and
+    the participation P^-1 of the energy against time t [ms] on log-log axes, one curve per run.
+
+    runs: granular.SpreadingRun results or spreading CSVs (JSON beside), e.g. of spreading --ic mode
+    --mode K --energy E and of spreading --ic velocity. labels: one per run (default, from each
+    run's metadata: the mode's number, frequency [kHz] and IPR, or 'single-site <ic> kick')."""
+    if not isinstance(runs, (list, tuple)):
+        runs = [runs]
+    # matplotlib's default look (not style()), as docs/figures/mode-kicks.png was drawn
+    fig = figure(10, 4.2)
+    left, right = fig.subplots(1, 2)
+    for i, source in enumerate(runs):
+        t, m2, ipr, meta = _spread_curves(source, "m2_centroid")
+        label = labels[i] if labels else _start_label(meta)
+        left.loglog(np.asarray(t) * 1e3, m2, label=label)
+        right.loglog(np.asarray(t) * 1e3, ipr, label=label)
+    left.set_xlabel("t [ms]")
+    left.set_ylabel("m2 about the energy centroid [bead$^2$]")
+    right.set_xlabel("t [ms]")
+    right.set_ylabel("P$^{-1}$ of the energy")
+    left.legend(fontsize=7)
+    fig.suptitle("Energy spreading from linear modes vs a single-site kick of the same energy")
     return fig
 
 

@@ -201,7 +201,8 @@ def ipr_averaging(by_mode, binned, q=None, xi=None, gap_khz=None):
     bottom.stairs(count, edges, color="tab:blue", fill=True, alpha=0.5)
     if gap_khz is not None:
         for ax in (top, bottom):
-            ax.axvspan(*gap_khz, color="0.85", zorder=0, label="gap (fb1, fb2) of the diatomic chain" if ax is top else None)
+            ax.axvspan(*gap_khz, color="0.85", zorder=0,
+                       label="gap (fb1, fb2) of the diatomic chain" if ax is top else None)
     top.set_ylabel("IPR")
     top.set_title(f"{disorder}, q = {q:g}, ξ = {xi:g}: the two averagings of ipr-map")
     top.legend(fontsize=8, loc="upper left")
