@@ -31,12 +31,13 @@ look, _io the reading of results and files:
     centres(table_or_prefix, chain)            m2 about the kicked site beside m2 about the centroid
     paper_comparison(table_or_prefix)          our gamma (both centres) beside the paper's Table I
     profiles(table_or_prefix)                  averaged energy profiles E_n(T)
+    study_comparison(table, reference)         gamma and eta of two runs side by side (e.g. 100 ms, 10 ms)
 """
 from .disorder import correlations, localization
 from .dynamics import cost, energy_map, forces, mode_kicks, spectral_densities, spreading
 from .modes import ipr_averaging, ipr_map, partial_spectrum_ipr, spectrum
-from .transport_exponents import centres, exponents, paper_comparison, profiles
+from .transport_exponents import centres, exponents, paper_comparison, profiles, study_comparison
 
 __all__ = ["ipr_map", "spectrum", "partial_spectrum_ipr", "ipr_averaging", "correlations", "localization", "energy_map",
            "forces", "spreading", "mode_kicks", "spectral_densities", "cost", "exponents", "centres",
-           "paper_comparison", "profiles"]
+           "paper_comparison", "profiles", "study_comparison"]

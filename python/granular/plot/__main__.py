@@ -84,6 +84,10 @@ def parser(prog=None):
     q.add_argument("--chain", default="A", help="chain kind: h, A, RDM1 or RDM2 (default A)")
     q = kind("paper", "our gamma (both centres) beside the paper's Table I, from exponents --compare-paper")
     q.add_argument("prefix", nargs="?", default="exponents", help="the exponents prefix, or its PREFIX-paper.csv")
+    q = kind("study-comparison", "gamma and eta of an exponents run beside those of a reference run (e.g. T = 100 ms "
+                                 "beside 10 ms)")
+    q.add_argument("prefix", help="the exponents prefix (or its PREFIX.csv)")
+    q.add_argument("reference", help="the reference run's exponents prefix (or its PREFIX.csv)")
     q = kind("profiles", "averaged energy profiles E_n(T), from an exponents run")
     q.add_argument("prefix", nargs="?", default="exponents")
     q.add_argument("--decades", type=float, default=15, help="decades shown below the largest energy")
@@ -153,6 +157,9 @@ def main(argv=None, prog=None):
             out = args.output or (_default_output(args.prefix) if args.prefix.endswith(".csv")
                                   else f"{args.prefix}-paper.png")
             save(plot.paper_comparison(args.prefix), out)
+        elif args.kind == "study-comparison":
+            base = args.prefix[:-4] if args.prefix.endswith(".csv") else args.prefix
+            save(plot.study_comparison(args.prefix, args.reference), args.output or f"{base}-comparison.png")
         elif args.kind == "spectra":
             if len(args.csv) % 2:
                 raise ValueError("spectra: give pairs of files: displacement spectrum, velocity spectrum")

@@ -228,3 +228,68 @@ def paper_comparison(source):
             ax.grid(axis="y", lw=0.3)
         axes[0].legend(fontsize=8, ncol=3)
     return fig
+
+
+_CHAIN_ORDER = {"h": 0, "A": 1, "RDM1": 2, "RDM2": 3}
+
+
+def _study(source):
+    """The cases of an exponents run as {(ic, F0, disorder): its table row}, and the run's metadata,
+    from a granular.ExponentTable, an exponents prefix or its PREFIX.csv (JSON beside)."""
+    if _io.is_path(source):
+        path = os.fspath(source)
+        path = path if path.endswith(".csv") else path + ".csv"
+        table, meta = _io.read_csv(path), _io.read_json_beside(path)
+    else:
+        table, meta = source["table"], source["metadata"]
+    rows = [{name: column[i] for name, column in table.items()} for i in range(len(table["ic"]))]
+    return {(r["ic"], float(r["F0"]), r["disorder"]): r for r in rows}, meta
+
+
+def _study_label(meta, rows):
+    """('10 ms', '10 ms (fit 4–10 ms, 500 real.)'): T and the fit window of an exponents run, from its
+    metadata, and the realizations of its rows; (None, None) when the metadata does not say."""
+    case = (meta.get("cases") or [{}])[0]
+    T, fit = case.get("T_s"), meta.get("parameters", {}).get("fit_s") or case.get("fit_s")
+    if T is None or not fit:
+        return None, None
+    realizations = max(int(float(r["realizations"])) for r in rows)
+    return f"{T * 1e3:g} ms", f"{T * 1e3:g} ms (fit {fit[0] * 1e3:g}–{fit[1] * 1e3:g} ms, {realizations} real.)"
+
+
+def study_comparison(source, reference, labels=None):
+    """The exponents of one exponents run beside those of a reference run (e.g. the long-time study
+    at T = 100 ms beside the 10 ms study of record): gamma (m~2 ~ t^gamma) above, eta (P^-1 ~
+    t^-eta) below, for every disordered case (kick, F0 [N], chain) both runs have; error bars the
+    bootstrap over realizations, open markers the starred cells (not a power law: the mean L_d).
+
+    source, reference: granular.ExponentTable results, exponents prefixes or their PREFIX.csv (with
+    the JSON beside). labels: the legend entries (reference's, source's); default from each run's
+    metadata, e.g. '10 ms (fit 4–10 ms, 500 real.)' (T, fit window, realizations per case)."""
+    cases, meta = _study(source)
+    reference_cases, reference_meta = _study(reference)
+    keys = sorted((k for k in cases if k[2] != "h" and k in reference_cases),
+                  key=lambda k: (k[0], -k[1], _CHAIN_ORDER.get(k[2], 9)))
+    if not keys:
+        raise ValueError("study_comparison: the two runs have no disordered case in common")
+    runs = ([reference_cases[k] for k in keys], [cases[k] for k in keys])
+    (t_ref, reference_label), (t_run, run_label) = _study_label(reference_meta, runs[0]), _study_label(meta, runs[1])
+    labels = list(labels) if labels else [reference_label or "reference", run_label or "this run"]
+    title = f"at {t_ref} and at {t_run}" if t_ref and t_run else "of two runs"
+    # matplotlib's default look (not style()), as docs/figures/long-times-exponents.png was drawn
+    fig = figure(11, 6.5)
+    axes = fig.subplots(2, 1, sharex=True)
+    for ax, name, label in ((axes[0], "gamma", r"$\gamma$ ($\tilde m_2 \propto t^\gamma$)"),
+                            (axes[1], "eta", r"$\eta$ ($P^{-1} \propto t^{-\eta}$)")):
+        for dx, rows, colour, when in ((-0.12, runs[0], "C0", labels[0]), (0.12, runs[1], "C3", labels[1])):
+            for i, r in enumerate(rows):
+                starred = _truthy(r[name + "_star"])
+                ax.errorbar(i + dx, float(r[name]), yerr=float(r[name + "_real_err"]), fmt="o", ms=5, color=colour,
+                            mfc="white" if starred else colour, capsize=2, label=when if i == 0 else None)
+        ax.set_ylabel(label)
+        ax.grid(axis="y", color="0.9")
+    axes[0].legend(loc="lower right", fontsize=8, title="open: not a power law (*)", title_fontsize=8)
+    axes[1].set_xticks(list(range(len(keys))))
+    axes[1].set_xticklabels([f"{ic[:4]}. {f0:g} N {chain}" for ic, f0, chain in keys], rotation=70, fontsize=7)
+    fig.suptitle(f"Transport exponents {title} (error bars: realization bootstrap)", fontsize=11)
+    return fig
