@@ -15,7 +15,7 @@ def _pair(text):
         a, b = text.replace(",", ":").split(":")
         return float(a), float(b)
     except ValueError:
-        raise argparse.ArgumentTypeError(f"expected START:STOP, got {text!r}") from None
+        raise argparse.ArgumentTypeError(f"expected START:STOP (or START,STOP), got {text!r}") from None
 
 
 def _default_output(path, suffix=""):
