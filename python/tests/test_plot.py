@@ -15,7 +15,8 @@ import granular as gr  # noqa: E402
 import granular.plot as gp  # noqa: E402
 from conftest import BUILD, SOURCE  # noqa: E402
 
-DIMENSIONLESS = ("IPR", "P^{-1}", "rho", "L_d", "mode number", "bead", "g(", "log_{10}", "error", "distance", "size ratio", "exponent")
+DIMENSIONLESS = ("IPR", "P^{-1}", "rho", "L_d", "mode number", "bead", "g(", "log_{10}", "error", "distance", "size ratio", "exponent",
+                 "modes per bin", "P$^{-1}$", r"$\gamma$", r"$\eta$")
 
 
 def check_axes(fig):
@@ -51,6 +52,15 @@ def test_linear_figures_from_results():
     check_axes(gp.localization(gr.localization(N=2000, f="0:40:0.5"), [gr.spectrum(gr.anderson(N=200))]))
     with pytest.raises(ValueError, match="partial"):
         gp.ipr_map(gr.ipr_map(xi=0.5, q=0.5, N=100, realizations=2, near=15, count=2, method="bisect"))
+    by_mode = gr.ipr_map(disorder="RDM2", xi=0.5, q=(0.5, 0.8), N=30, realizations=3)
+    binned = gr.ipr_map(disorder="RDM2", xi=0.5, q=(0.5, 0.8), N=30, realizations=3, bin_khz=1)
+    averaging = gp.ipr_averaging(by_mode, binned, q=0.8, gap_khz=(12, 34))
+    check_axes(averaging)
+    assert averaging.axes[0].get_title() == "RDM2, q = 0.8, ξ = 0.5: the two averagings of ipr-map"
+    with pytest.raises(ValueError, match="several values of q"):
+        gp.ipr_averaging(by_mode, binned)
+    with pytest.raises(ValueError, match="first"):
+        gp.ipr_averaging(binned, by_mode, q=0.8)
 
 
 def test_spectrum_figure_marks_the_band_edges():
@@ -77,6 +87,10 @@ def test_dynamics_figures_from_results(run):
     table = gr.exponent_table(chains=["h", "A"], F0=[10, 0], ic=["velocity"], N=151, realizations=2, T=1e-3,
                               fit=(2e-4, 1e-3), samples=60, profile_F0=[10], profile_realizations=2)
     check_axes(gp.exponents(table, "velocity"))
+    comparison = gp.study_comparison(table, table)
+    check_axes(comparison)
+    assert [t.get_text() for t in comparison.axes[0].get_legend().get_texts()] == ["1 ms (fit 0.2–1 ms, 2 real.)"] * 2
+    assert [t.get_text() for t in comparison.axes[1].get_xticklabels()] == ["velo. 10 N A", "velo. 0 N A"]
     prof = gp.profiles(table)
     check_axes(prof)
     low, high = prof.axes[0].get_ylim()
@@ -93,6 +107,12 @@ def test_dynamics_figures_from_results(run):
     velocity = gr.spreading(gr.anderson(N=301, F0=10), T=2e-3, fit=(5e-4, 2e-3), spectral_density=True,
                             spectrum_samples=200, spectrum_of="velocity")
     check_axes(gp.spectral_densities([(run.spectral_density, velocity.spectral_density)], ["A, F0 = 10 N"]))
+    with pytest.warns(RuntimeWarning, match="walls"):  # an extended mode has energy at the walls from the start
+        mode = gr.spreading(gr.anderson(N=301, F0=10), T=2e-3, ic="mode", mode=20, energy=1e-7)
+    kicks = gp.mode_kicks([run, mode])
+    check_axes(kicks)
+    legend = [t.get_text() for t in kicks.axes[0].get_legend().get_texts()]
+    assert legend[0] == "single-site displacement kick" and legend[1].startswith("mode 20 (")
     with pytest.raises(ValueError, match="pairs"):
         gp.spectral_densities([(run.spectral_density,)])
 
@@ -116,6 +136,8 @@ def test_command_line_figures_from_the_tools_files(tools):
     folder = tools.folder
     tools.run("ipr-map", "--xi", "0.2:0.5:0.1", "--q", "0.5", "--N", "30", "--realizations", "3", "--quiet",
               output="ipr-map.csv")
+    tools.run("ipr-map", "--xi", "0.2:0.5:0.1", "--q", "0.5", "--N", "30", "--realizations", "3", "--bin-khz", "1",
+              "--quiet", output="ipr-bin.csv")
     tools.run("spectrum", "--N", "50", output="spectrum.csv")
     tools.run("correlations", "--q", "0.5", output="correlations.csv")
     tools.run("spreading", "--N", "201", "--T", "1e-3", "--fit", "2e-4:1e-3", "--energy-map", folder / "map.h5",
@@ -128,12 +150,15 @@ def test_command_line_figures_from_the_tools_files(tools):
     runs = [("localization", "loc.csv", "--spectrum", "spectrum.csv"), ("ipr-map", "ipr-map.csv"), ("spectrum", "spectrum.csv"), ("correlations", "correlations.csv"),
             ("map", "map.h5", "g.csv", "--t-window", "0:5e-4", "--sites", "50:150"),
             ("forces", "one-forces.csv", "one-profile.csv"), ("spread", "one.csv"), ("exponents", "exp", "--profiles"),
-            ("centres", "exp"), ("spectra", "g.csv", "g.csv", "--titles", "one", "-o", "spectra.png")]
+            ("centres", "exp"), ("spectra", "g.csv", "g.csv", "--titles", "one", "-o", "spectra.png"),
+            ("ipr-averaging", "ipr-map.csv", "ipr-bin.csv", "--xi", "0.3", "--gap", "10,20", "--dpi", "150"),
+            ("mode-kicks", "one.csv", "-o", "kicks.png"), ("study-comparison", "exp.csv", "exp")]
     for args in runs:
         done = cli("-m", "granular.plot", *args, cwd=folder)
         assert done.returncode == 0, (args, done.stderr)
     for png in ("loc.png", "ipr-map.png", "spectrum.png", "correlations.png", "map.png", "one-forces.png", "one.png",
-                "exp-spreading-displacement.png", "exp-profiles.png", "exp-centres.png", "spectra.png"):
+                "exp-spreading-displacement.png", "exp-profiles.png", "exp-centres.png", "spectra.png",
+                "ipr-map-averaging.png", "kicks.png", "exp-comparison.png"):
         assert (folder / png).stat().st_size > 10000, png
     bad = cli("-m", "granular.plot", "spectrum", "missing.csv", cwd=folder)
     assert bad.returncode == 2 and "missing.csv" in bad.stderr and "Traceback" not in bad.stderr
@@ -150,12 +175,14 @@ def test_the_readme_main_job_figure_command_keeps_working(tools):
     assert done.returncode == 0, done.stderr
     assert (tools.folder / "ipr-map.png").stat().st_size > 10000
     for script in ("ipr_map.py", "spectrum.py", "correlations.py", "partial_spectrum_ipr.py", "localization.py",
-                   "exponents.py", "spreading_figures.py"):
+                   "exponents.py", "spreading_figures.py", "ipr_averaging.py", "mode_kicks.py", "long_times.py"):
         helped = subprocess.run([sys.executable, SOURCE / "tools" / "plot" / script, "--help"], capture_output=True,
                                 text=True, env=env)
         assert helped.returncode == 0 and "usage" in helped.stdout and not helped.stderr, script
     helped = cli("-m", "granular.plot", "exponents", "--help", cwd=tools.folder)
     assert helped.returncode == 0 and "prefix" in helped.stdout
+    helped = cli("-m", "granular.plot", "--help", cwd=tools.folder)
+    assert helped.returncode == 0 and "the files the command-line tools write" in " ".join(helped.stdout.split())
 
 
 def test_partial_spectrum_script_runs_the_tool_and_draws(tools):

@@ -8,6 +8,8 @@ wall time and share of the study, and draws OUTPUT_DIR/long-times-exponents.png 
 at both times) and OUTPUT_DIR/all-spreading-<kick>.png (m2, P^-1 and L_d to 100 ms).
 
 usage: /usr/bin/python3 tools/plot/long_times.py OUTPUT_DIR [--reference PREFIX.csv]
+The figures are granular.plot.study_comparison and granular.plot.exponents (`python3 -m
+granular.plot study-comparison` and `exponents`).
 """
 import argparse
 import csv
@@ -81,7 +83,7 @@ def shift(a, b, name):
 
 
 def main():
-    p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    p = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     p.add_argument("folder")
     p.add_argument("--reference", default=os.path.join(os.path.dirname(__file__), "..", "..", "docs", "results",
                                                         "exponents.csv"))
@@ -110,40 +112,12 @@ def main():
     peak = max(float(t["max_rss_kB"]) for t in times.values()) / 1024
     print(f"\n{len(rows)} cases in {len(times)} runs: {total_wall:.0f} s wall "
           f"({total_wall / 60:.1f} min), {total_cpu:.0f} s CPU, peak memory {peak:.0f} MB (largest run).")
-    for kick in sorted({r["ic"] for r in rows}):
-        plot_main(["exponents", os.path.join(args.folder, "all"), "--kick", kick], "long_times.py")
-    draw_comparison(rows, short, os.path.join(args.folder, "long-times-exponents.png"))
-
-
-def draw_comparison(rows, short, out):
-    sys.path.insert(0, os.path.dirname(os.path.realpath(__file__)))
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    rows = [r for r in sorted(rows, key=lambda r: (r["ic"], -float(r["F0"]), ORDER.get(r["disorder"], 9)))
-            if r["disorder"] != "h" and key(r) in short]
-    fig, axes = plt.subplots(2, 1, figsize=(11, 6.5), sharex=True, constrained_layout=True)
-    x = range(len(rows))
-    for ax, name, label in ((axes[0], "gamma", r"$\gamma$ ($\tilde m_2 \propto t^\gamma$)"),
-                            (axes[1], "eta", r"$\eta$ ($P^{-1} \propto t^{-\eta}$)")):
-        for dx, table, colour, when in ((-0.12, [short[key(r)] for r in rows], "C0", "10 ms (fit 4–10 ms, 500 real.)"),
-                                         (0.12, rows, "C3", "100 ms (fit 40–100 ms, 100 real.)")):
-            for i, r in enumerate(table):
-                starred = r[name + "_star"] == "true"
-                ax.errorbar(i + dx, float(r[name]), yerr=float(r[name + "_real_err"]), fmt="o", ms=5, color=colour,
-                            mfc="white" if starred else colour, capsize=2, label=when if i == 0 else None)
-        ax.set_ylabel(label)
-        ax.grid(axis="y", color="0.9")
-    axes[0].legend(loc="lower right", fontsize=8, title="open: not a power law (*)", title_fontsize=8)
-    axes[1].set_xticks(list(x))
-    axes[1].set_xticklabels([f"{r['ic'][:4]}. {float(r['F0']):g} N {r['disorder']}" for r in rows], rotation=70,
-                            fontsize=7)
-    fig.suptitle("Transport exponents at 10 ms and at 100 ms (error bars: realization bootstrap)", fontsize=11)
-    fig.savefig(out, dpi=110)
-    print(f"wrote {out}")
+    codes = [plot_main(["exponents", os.path.join(args.folder, "all"), "--kick", kick], "long_times.py")
+             for kick in sorted({r["ic"] for r in rows})]
+    codes.append(plot_main(["study-comparison", os.path.join(args.folder, "all"), args.reference, "-o",
+                            os.path.join(args.folder, "long-times-exponents.png"), "--dpi", "110"], "long_times.py"))
+    return max(codes)
 
 
 if __name__ == "__main__":
-    main()
+    sys.exit(main())

@@ -10,12 +10,12 @@ matplotlib.use("Agg")
 
 
 def _pair(text):
-    """'a:b' -> (a, b) floats."""
+    """'a:b' (or 'a,b') -> (a, b) floats."""
     try:
-        a, b = text.split(":")
+        a, b = text.replace(",", ":").split(":")
         return float(a), float(b)
     except ValueError:
-        raise argparse.ArgumentTypeError(f"expected START:STOP, got {text!r}") from None
+        raise argparse.ArgumentTypeError(f"expected START:STOP (or START,STOP), got {text!r}") from None
 
 
 def _default_output(path, suffix=""):
@@ -23,18 +23,27 @@ def _default_output(path, suffix=""):
 
 
 def parser(prog=None):
-    p = argparse.ArgumentParser(prog=prog or "python3 -m granular.plot", description=__doc__.splitlines()[0])
+    # the whole docstring (argparse refills it): its first line alone stops mid-sentence
+    p = argparse.ArgumentParser(prog=prog or "python3 -m granular.plot", description=__doc__)
     sub = p.add_subparsers(dest="kind", required=True, metavar="KIND")
 
     def kind(name, help_text):
         q = sub.add_parser(name, help=help_text, description=help_text)
         q.add_argument("-o", "--output", help="PNG (or PDF, SVG) to write; default: the input name with .png")
+        q.add_argument("--dpi", type=float, help="resolution of a PNG [dots per inch] (default: matplotlib's, 100)")
         return q
 
     q = kind("ipr-map", "mean IPR over (xi, mode number), one panel per q, from an ipr-map CSV (paper Fig. 4)")
     q.add_argument("csv", nargs="?", default="ipr-map.csv")
     q.add_argument("--log-color", action="store_true", help="IPR on a logarithmic colour scale")
     q.add_argument("--no-band-edges", action="store_true", help="do not draw where the mean f crosses f1 and fb1")
+    q = kind("ipr-averaging", "IPR against frequency averaged by mode number beside in frequency bins, for one (q, xi) "
+                              "cell, from an ipr-map CSV and its --bin-khz CSV")
+    q.add_argument("mode_csv", help="ipr-map CSV averaged by mode number")
+    q.add_argument("binned_csv", help="ipr-map --bin-khz CSV of the same ensemble")
+    q.add_argument("--q", type=float, help="the cell's q (default: the map's only one)")
+    q.add_argument("--xi", type=float, help="the cell's xi (default: the map's only one)")
+    q.add_argument("--gap", type=_pair, metavar="LO,HI", help="a band gap to shade [kHz], e.g. 11.95,33.81")
     q = kind("spectrum", "f versus mode number and the IPR beside it, band edges dashed, from a spectrum CSV")
     q.add_argument("csv", nargs="?", default="spectrum.csv")
     q = kind("correlations", "rho(d) with its spread and the infinite-chain formula, from correlations CSVs")
@@ -60,6 +69,10 @@ def parser(prog=None):
     q = kind("spread", "m2(t) and P^-1(t), log-log, with L_d insets, from spreading CSVs")
     q.add_argument("csv", nargs="+")
     q.add_argument("--labels", help="comma list, one per CSV")
+    q = kind("mode-kicks", "m2 about the centroid and P^-1 against t from linear modes beside a single-site kick, from "
+                           "spreading CSVs (--ic mode, --ic velocity)")
+    q.add_argument("csv", nargs="+")
+    q.add_argument("--labels", help="comma list, one per CSV (default: the mode or the kick, from the JSONs)")
     q = kind("exponents", "the paper's transport panels per chain kind and F0, from an exponents run")
     q.add_argument("prefix", nargs="?", default="exponents", help="the exponents --output prefix (default exponents)")
     q.add_argument("--kick", action="append", help="displacement and/or velocity (default: every kick in the run)")
@@ -71,6 +84,10 @@ def parser(prog=None):
     q.add_argument("--chain", default="A", help="chain kind: h, A, RDM1 or RDM2 (default A)")
     q = kind("paper", "our gamma (both centres) beside the paper's Table I, from exponents --compare-paper")
     q.add_argument("prefix", nargs="?", default="exponents", help="the exponents prefix, or its PREFIX-paper.csv")
+    q = kind("study-comparison", "gamma and eta of an exponents run beside those of a reference run (e.g. T = 100 ms "
+                                 "beside 10 ms)")
+    q.add_argument("prefix", help="the exponents prefix (or its PREFIX.csv)")
+    q.add_argument("reference", help="the reference run's exponents prefix (or its PREFIX.csv)")
     q = kind("profiles", "averaged energy profiles E_n(T), from an exponents run")
     q.add_argument("prefix", nargs="?", default="exponents")
     q.add_argument("--decades", type=float, default=15, help="decades shown below the largest energy")
@@ -88,7 +105,7 @@ def main(argv=None, prog=None):
     from granular import plot
 
     def save(fig, out):
-        fig.savefig(out)
+        fig.savefig(out, dpi=args.dpi)
         print(f"wrote {out}")
 
     labels = getattr(args, "labels", None)
@@ -97,6 +114,9 @@ def main(argv=None, prog=None):
         if args.kind == "ipr-map":
             save(plot.ipr_map(args.csv, band_edges=not args.no_band_edges, log_color=args.log_color),
                  args.output or _default_output(args.csv))
+        elif args.kind == "ipr-averaging":
+            save(plot.ipr_averaging(args.mode_csv, args.binned_csv, q=args.q, xi=args.xi, gap_khz=args.gap),
+                 args.output or _default_output(args.mode_csv, "-averaging"))
         elif args.kind == "spectrum":
             save(plot.spectrum(args.csv), args.output or _default_output(args.csv))
         elif args.kind == "correlations":
@@ -113,6 +133,8 @@ def main(argv=None, prog=None):
             save(plot.forces(args.forces, args.profile), args.output or _default_output(args.forces))
         elif args.kind == "spread":
             save(plot.spreading(args.csv, labels), args.output or _default_output(args.csv[0]))
+        elif args.kind == "mode-kicks":
+            save(plot.mode_kicks(args.csv, labels), args.output or _default_output(args.csv[0]))
         elif args.kind == "exponents":
             import csv
 
@@ -135,6 +157,9 @@ def main(argv=None, prog=None):
             out = args.output or (_default_output(args.prefix) if args.prefix.endswith(".csv")
                                   else f"{args.prefix}-paper.png")
             save(plot.paper_comparison(args.prefix), out)
+        elif args.kind == "study-comparison":
+            base = args.prefix[:-4] if args.prefix.endswith(".csv") else args.prefix
+            save(plot.study_comparison(args.prefix, args.reference), args.output or f"{base}-comparison.png")
         elif args.kind == "spectra":
             if len(args.csv) % 2:
                 raise ValueError("spectra: give pairs of files: displacement spectrum, velocity spectrum")

@@ -53,3 +53,12 @@ def band_edges_khz(xi, F0, R1=None):
         return granular.band_edges(xi=xi, F0=F0, **kwargs).as_dict()
     except Exception:  # no extension, or no edges for these parameters (F0 = 0)
         return None
+
+
+def spectrum_data(source):
+    """(mode, freq_khz, ipr, metadata) of a granular.Spectrum or of the spectrum tool's CSV."""
+    if is_path(source):
+        rows = read_csv(source)
+        meta = read_json_beside(source)
+        return rows["mode"], rows["freq_khz"], rows["ipr"], meta
+    return source.mode, source.freq_khz, source.ipr, source.metadata

@@ -161,3 +161,22 @@ def guides(ax, curves, slopes, fit=None):
     guide(ax, t_start, t_end, top * 2.5, slopes[0], f"slope {slopes[0]:g}".replace("-", "−"))
     if len(slopes) > 1:
         guide(ax, t_start, t_end, bottom / 2.5, slopes[1], f"slope {slopes[1]:g}".replace("-", "−"), at_end=False)
+
+
+def inset_log_derivative(ax, curves, where, fit=None, ylim=None):
+    """The log derivative L_d(t) of each curve in an inset (the paper's insets). curves: (t [s], y,
+    colour) triples; where: the inset's [x0, y0, width, height] in axes fractions; fit: (t0, t1) [s]
+    shaded; ylim: the inset's L_d range."""
+    inset = ax.inset_axes(where)
+    for t, y, colour in curves:
+        lt, ls = log_derivative(t, y)
+        if len(lt):
+            inset.semilogx(lt, ls, color=colour, lw=1.0)
+    if fit:
+        inset.axvspan(fit[0], fit[1], color="0.85", zorder=0)
+    if ylim:
+        inset.set_ylim(*ylim)
+    inset.set_xlabel("t [s]", fontsize=8, labelpad=1)
+    inset.set_ylabel(r"$L_d$", fontsize=9, labelpad=1)
+    inset.tick_params(labelsize=7, pad=1)
+    return inset

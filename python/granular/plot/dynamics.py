@@ -1,0 +1,276 @@
+"""Figures of the nonlinear dynamics after a kick: one run's energy map and forces, the spreading
+m2(t) and P^-1(t) of runs or ensembles, spectral densities, and the integrators' cost."""
+import math
+import os
+
+import matplotlib
+import numpy as np
+
+from . import _io
+from ._style import chain_title, figure, guides, inset_log_derivative, log_ticks, mark_edges, style
+
+
+def _chain_edges(meta):
+    chain = meta.get("parameters", {}).get("chain", {})
+    if chain.get("F0_N") and "xi" in chain:
+        return _io.band_edges_khz(chain["xi"], chain["F0_N"], chain.get("R1_m")), chain
+    return None, chain
+
+
+def energy_map(source, spectral_density=None, t_window=None, site_window=None, floor=-12.0, band_edges=True):
+    """Spatiotemporal energy map log10(E_n / sum E) over bead n and time, beside the spectral
+    density g(nu) of the same run with the chain's band edges.
+
+    source: a granular.SpreadingRun made with energy_map=True (and spectral_density=True), or the
+    spreading tool's HDF5 energy map. spectral_density: the tool's spectrum CSV (a run carries its
+    own). t_window: (t0, t1) [s] and site_window: (n0, n1) [beads, from 1] zoom in. floor: the
+    lowest log10 relative energy shown (zeros beyond the front are blank).
+    """
+    meta = {}
+    if _io.is_path(source):
+        t, site, energy = _io.read_hdf5_map(source)
+    else:
+        if source.energy_map is None:
+            raise ValueError("this run has no energy map: run granular.spreading(..., energy_map=True)")
+        t, site, energy = source.energy_map["t"], source.energy_map["site"], source.energy_map["energy"]
+        meta = source.metadata
+        if spectral_density is None and source.spectral_density is not None:
+            spectral_density = source.spectral_density
+    if _io.is_path(spectral_density):
+        spectral_density = _io.read_csv(spectral_density)
+    t, site, energy = np.asarray(t), np.asarray(site), np.asarray(energy)
+    rows = np.ones(len(t), bool) if t_window is None else (t >= t_window[0]) & (t <= t_window[1])
+    cols = np.ones(len(site), bool) if site_window is None else (site >= site_window[0]) & (site <= site_window[1])
+    if not rows.any() or not cols.any():
+        raise ValueError("t_window/site_window select no part of the map")
+    total = energy.sum(axis=1, keepdims=True)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        shown = np.log10(np.where(energy > 0, energy / total, np.nan))
+    shown = shown[np.ix_(rows, cols)]
+    edges, chain = _chain_edges(meta) if band_edges else (None, {})
+    with style():
+        if spectral_density is not None:
+            fig = figure(11, 5)
+            ax, bx = fig.subplots(1, 2, gridspec_kw={"width_ratios": [3, 1.1]})
+        else:
+            fig = figure(8, 5)
+            ax, bx = fig.subplots(), None
+        cmap = matplotlib.colormaps["inferno"].copy()
+        cmap.set_bad(cmap(0.0))  # no energy at all (beyond the front) looks like the floor
+        image = ax.pcolormesh(site[cols], t[rows] * 1e3, shown, shading="nearest", cmap=cmap, vmin=floor,
+                              vmax=0, rasterized=True)
+        fig.colorbar(image, ax=ax, label=r"$\log_{10}\, E_n / \sum_n E_n$", pad=0.02)
+        ax.set_xlabel("bead n")
+        ax.set_ylabel("time t [ms]")
+        if bx is not None:
+            freq, g = np.asarray(spectral_density["freq_khz"]), np.asarray(spectral_density["g"])
+            keep = g > 0
+            bx.semilogx(g[keep], freq[keep], lw=1.0, color="C0")
+            bx.set_xlim(max(g[keep].min(), 1e-8), 1.5)
+            log_ticks(bx.xaxis)
+            bx.set_xlabel(r"spectral density $g(\nu)$")
+            bx.set_ylabel(r"frequency $\nu$ [kHz]")
+            # the vibrations live below the highest band edge; above it only the kick's tail
+            top = 1.25 * max(edges.values()) if edges else freq[keep][g[keep] > 1e-6 * g.max()].max()
+            bx.set_ylim(0, top)
+            mark_edges(bx, edges)
+        title = chain_title(chain)
+        if title:
+            fig.suptitle(title, fontsize=11)
+    return fig
+
+
+def forces(source, profile=None, sites=None):
+    """Force on chosen beads versus time beside the force profile along the chain at T.
+
+    source: a granular.SpreadingRun made with forces_at=[...] (its final state gives the profile),
+    or the spreading tool's PREFIX-forces.csv with profile= its PREFIX-profile.csv (--profile).
+    sites: which recorded beads to draw (default all).
+    """
+    if _io.is_path(source):
+        series = _io.read_csv(source)
+        recorded = np.unique(series["site"])
+        curves = {int(s): (series["t"][series["site"] == s], series["force"][series["site"] == s]) for s in recorded}
+        prof = _io.read_csv(profile) if profile is not None else None
+        prof_site, prof_force = (prof["site"], prof["force"]) if prof is not None else (None, None)
+        meta = {}
+    else:
+        if source.forces is None:
+            raise ValueError("this run recorded no forces: run granular.spreading(..., forces_at=[...])")
+        f = source.forces
+        curves = {int(s): (f["t"], f["force"][i]) for i, s in enumerate(f["site"])}
+        prof_force = source.final_state["force"]
+        prof_site = np.arange(1, len(prof_force) + 1)
+        meta = source.metadata
+    if sites is not None:
+        curves = {s: curves[s] for s in sites}
+    _, chain = _chain_edges(meta)
+    with style():
+        fig = figure(11, 4.4)
+        ax, bx = fig.subplots(1, 2, gridspec_kw={"width_ratios": [3, 2]})
+        for s, (t, force) in curves.items():
+            ax.plot(np.asarray(t) * 1e3, force, lw=1.0, label=f"bead {s}")
+        ax.set_xlabel("time t [ms]")
+        ax.set_ylabel("force on the bead [N]")
+        ax.legend()
+        if prof_force is not None:
+            bx.plot(prof_site, prof_force, lw=0.8, color="0.2")
+            bx.set_xlabel("bead n")
+            bx.set_ylabel("force at T [N]")
+        else:
+            bx.set_visible(False)
+        title = chain_title(chain)
+        if title:
+            fig.suptitle(title, fontsize=11)
+    return fig
+
+
+def _spread_curves(source, m2="m2"):
+    """(t, m2 or m2_centroid, ipr, metadata) of a run or ensemble, or of the spreading tool's CSV."""
+    if _io.is_path(source):
+        d = _io.read_csv(source)
+        meta = _io.read_json_beside(source)
+        return d["t"], d[m2], d["ipr"], meta
+    return source["t"], source[m2], source["ipr"], source["metadata"]
+
+
+def spreading(sources, labels=None):
+    """m~2(t) and P^-1(t) on log-log axes for one or several runs or ensembles, with guide slopes
+    (m2: 2 ballistic, 1 diffusive; P^-1: -1, 0) and the log derivative L_d in an inset, the fit
+    window shaded. sources: granular.SpreadingRun / granular.Transport results or spreading CSVs."""
+    if not isinstance(sources, (list, tuple)):
+        sources = [sources]
+    data = [_spread_curves(s) for s in sources]
+    if labels is None:
+        labels = []
+        for i, (_, _, _, meta) in enumerate(data):
+            chain = meta.get("parameters", {}).get("chain", {})
+            labels.append(chain.get("disorder", f"run {i + 1}"))
+    fit = next((m.get("parameters", {}).get("fit_s") for _, _, _, m in data if m.get("parameters")), None)
+    with style():
+        fig = figure(11, 4.6)
+        ax, bx = fig.subplots(1, 2)
+        m2_curves, ipr_curves = [], []
+        for i, ((t, m2, ipr, _), label) in enumerate(zip(data, labels)):
+            t, m2, ipr = map(np.asarray, (t, m2, ipr))
+            keep = t > 0
+            ax.loglog(t[keep], m2[keep], color=f"C{i}", label=label)
+            bx.loglog(t[keep], ipr[keep], color=f"C{i}", label=label)
+            m2_curves.append((t[keep], m2[keep], f"C{i}"))
+            ipr_curves.append((t[keep], 1 / ipr[keep], f"C{i}"))
+        guides(ax, m2_curves, (2, 1), fit)
+        guides(bx, [(t, 1 / y, c) for t, y, c in ipr_curves], (0, -1), fit)
+        for axis in (ax, bx):
+            log_ticks(axis.xaxis)
+            log_ticks(axis.yaxis)
+            axis.set_xlabel("time t [s]")
+        ax.set_ylabel(r"second moment $\tilde m_2$ [beads$^2$]")
+        bx.set_ylabel(r"participation $P^{-1}$")
+        inset_log_derivative(ax, m2_curves, [0.09, 0.6, 0.36, 0.33], fit, ylim=(-0.5, 2.5))
+        bx.legend(loc="lower left")
+    return fig
+
+
+def _start_label(meta):
+    """How a spreading run started, from its metadata: the linear mode or the single-site kick."""
+    parameters = meta.get("parameters", {})
+    mode = parameters.get("mode_used")
+    if mode:
+        return f"mode {mode['mode']} ({mode['freq_khz']:.2f} kHz, IPR {mode['ipr']:.3g})"
+    return f"single-site {parameters.get('ic', '')} kick"
+
+
+def mode_kicks(runs, labels=None):
+    """Energy spreading from linear modes against a single-site kick of the same energy: the second
+    moment m~2 about the energy centroid [beads^2] (a mode's energy is not centred on one bead) and
+    the participation P^-1 of the energy against time t [ms] on log-log axes, one curve per run.
+
+    runs: granular.SpreadingRun results or spreading CSVs (JSON beside), e.g. of spreading --ic mode
+    --mode K --energy E and of spreading --ic velocity. labels: one per run (default, from each
+    run's metadata: the mode's number, frequency [kHz] and IPR, or 'single-site <ic> kick')."""
+    if not isinstance(runs, (list, tuple)):
+        runs = [runs]
+    # matplotlib's default look (not style()), as docs/figures/mode-kicks.png was drawn
+    fig = figure(10, 4.2)
+    left, right = fig.subplots(1, 2)
+    for i, source in enumerate(runs):
+        t, m2, ipr, meta = _spread_curves(source, "m2_centroid")
+        label = labels[i] if labels else _start_label(meta)
+        left.loglog(np.asarray(t) * 1e3, m2, label=label)
+        right.loglog(np.asarray(t) * 1e3, ipr, label=label)
+    left.set_xlabel("t [ms]")
+    left.set_ylabel("m2 about the energy centroid [bead$^2$]")
+    right.set_xlabel("t [ms]")
+    right.set_ylabel("P$^{-1}$ of the energy")
+    left.legend(fontsize=7)
+    fig.suptitle("Energy spreading from linear modes vs a single-site kick of the same energy")
+    return fig
+
+
+def spectral_densities(pairs, titles=None, fmax_khz=60):
+    """g(nu) of the displacements (the paper's g) beside that of the velocities, one panel per
+    run. A velocity kick leaves a permanent step in u_n(t), whose power ~ 1/nu^2 makes the
+    displacement spectrum peak at 0 Hz; the velocity spectrum is flat under it and shows what
+    vibrates. pairs: [(displacement, velocity), ...], each a SpreadingRun's spectral density
+    (dict with freq_khz, g) or the CSV of spreading --spectrum / --spectrum-of velocity.
+    fmax_khz: highest frequency shown [kHz]."""
+    pairs = [tuple(p) for p in pairs]
+    if not pairs or any(len(p) != 2 for p in pairs):
+        raise ValueError("pairs: give (displacement spectrum, velocity spectrum) pairs")
+    titles = list(titles) if titles else [os.fspath(u) if _io.is_path(u) else f"run {i + 1}" for i, (u, _) in
+                                          enumerate(pairs)]
+    with style():
+        fig = figure(5.2 * len(pairs) + 0.4, 4.2)
+        axes = fig.subplots(1, len(pairs), squeeze=False)[0]
+        for ax, (u, v), title in zip(axes, pairs, titles):
+            for source, label, colour in ((u, "of $u_n$ (the paper's $g$)", "C0"), (v, r"of $\dot u_n$", "C1")):
+                d = _io.read_csv(source) if _io.is_path(source) else source
+                ax.semilogy(d["freq_khz"], np.maximum(np.asarray(d["g"], float), 1e-14), lw=0.7, color=colour,
+                            label=label)
+            ax.set_xlim(0, fmax_khz)
+            ax.set_ylim(1e-8, 2)
+            ax.set_xlabel(r"frequency $\nu$ [kHz]")
+            ax.set_ylabel(r"$g(\nu)$ (max 1)")
+            ax.set_title(title, fontsize=10)
+            ax.legend(fontsize=8)
+    return fig
+
+
+def cost(bench, time_unit=None):
+    """Cost-accuracy curves of the integrators: max relative energy error and final-state error
+    versus CPU time per realization, labelled by the time step. bench: the JSON file of
+    dynamics_benchmark --benchmark_filter=CostAccuracy --benchmark_out=FILE (or its loaded dict)."""
+    import json
+
+    if _io.is_path(bench):
+        with open(bench) as f:
+            bench = json.load(f)
+    runs = bench["benchmarks"]
+    curves = {}
+    for r in runs:
+        if "max_energy_error" not in r:
+            continue
+        tau = r["name"].split("tau_ns:")[1].split("/")[0] if "tau_ns:" in r["name"] else "?"
+        curves.setdefault(r.get("label", r["name"]), []).append(
+            (r["cpu_time"], r["max_energy_error"], r.get("final_state_error", math.nan), tau))
+    unit = time_unit or runs[0].get("time_unit", "ms")
+    with style():
+        fig = figure(11, 4.4)
+        ax, bx = fig.subplots(1, 2)
+        for i, (label, points) in enumerate(sorted(curves.items())):
+            points.sort()
+            t = [p[0] for p in points]
+            ax.loglog(t, [p[1] for p in points], "o-", color=f"C{i}", label=label)
+            bx.loglog(t, [p[2] for p in points], "o-", color=f"C{i}", label=label)
+            for p in points:
+                if p[3] != "?":
+                    ax.annotate(f"{int(p[3]) / 1000:g}", (p[0], p[1]), fontsize=8, xytext=(3, 3),
+                                textcoords="offset points")
+        for axis in (ax, bx):
+            axis.set_xlabel(f"CPU time per realization [{unit}]")
+            log_ticks(axis.xaxis)
+            log_ticks(axis.yaxis)
+        ax.set_ylabel(r"max relative energy error $|H - H_0|/H_0$")
+        bx.set_ylabel("final-state error (vs. reference)")
+        ax.legend(title=r"labels: time step $\tau$ [µs]", title_fontsize=9)
+    return fig
