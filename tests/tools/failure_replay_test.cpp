@@ -2,6 +2,7 @@
 // command that replays exactly that realization (running it gives the same failure), every
 // realization finished before it stays in the checkpoint, and --skip-failed goes on without it,
 // saying so in the JSON and the final line; the means are those of the realizations kept.
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -136,6 +137,60 @@ TEST(FailureReplay, TheReplayCommandOfAnAutomaticallySizedChainRuns) {
                                                                                                      << replayed.err;
   std::filesystem::remove_all(dir);
 }
+
+// Every option family of a kicked-chain case (issue "one case, one description"): the printed
+// replay command spells the whole case — damping, the tangent map, k types, polydisperse radii,
+// mode kicks, matched β, each scheme — so running it meets the very failure the ensemble met
+// (the same cause, time and error, to the last digit). Before, the command left these flags out
+// and replayed an undamped two-type chain with a single-site kick.
+struct Family {
+  std::string name, flags, spelled;  ///< spelled: what the replay command must contain
+};
+
+void PrintTo(const Family& f, std::ostream* out) { *out << f.name << ": " << f.flags; }
+
+class ReplayFamily : public ::testing::TestWithParam<Family> {};
+
+TEST_P(ReplayFamily, TheReplayCommandReproducesTheFailure) {
+  const Family& f = GetParam();
+  const std::string dir = scratch_folder("replay-" + f.name);
+  const std::string args = "--N 51 --F0 1 --seed 5 --T 1e-4 --fit 4e-5:1e-4 --samples 10 --bootstrap 20 " + f.flags +
+                           " --realizations 2 --threads 1 --max-energy-error 1e-15 --output " + dir + "/ens";
+  const ToolResult stopped = run_tool("spreading", args);
+  ASSERT_EQ(stopped.exit_code, 3) << args << "\n" << stopped.err;
+  const std::string replay = line_after(stopped.err, "replay it alone: ");
+  ASSERT_NE(replay.find(f.spelled), std::string::npos) << stopped.err;
+  const ToolResult replayed = run_printed(dir, replay);
+  EXPECT_EQ(replayed.exit_code, 3) << replay << "\n" << replayed.err;
+  const std::string cause = line_after(stopped.err, "of seed 5: ");
+  ASSERT_FALSE(cause.empty()) << stopped.err;
+  EXPECT_EQ(line_after(replayed.err, "numerical failure: "), cause) << replay << "\n" << replayed.err;
+  std::filesystem::remove_all(dir);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Families, ReplayFamily,
+    ::testing::Values(
+        Family{"plain", "--disorder RDM2 --q 0.3 --xi 0.6", "--disorder RDM2 --q 0.3 --xi 0.6"},
+        Family{"damped", "--damping-time 2e-4", "--damping-time 2e-04"},
+        Family{"kk", "--kk-gamma 1e-6", "--kk-gamma 1e-06"},
+        Family{"types", "--types 4.76e-3:0.5,3e-3:0.3,2e-3:0.2 --disorder RDM1",
+               "--types 0.00476:0.5,0.003:0.3,0.002:0.2 --disorder RDM1"},
+        Family{"masses", "--type-masses 3.6e-3:0.4,1e-3:0.6", "--types "},
+        Family{"uniform", "--polydisperse uniform:2e-3:5e-3", "--polydisperse uniform:0.002:0.005"},
+        Family{"normal", "--polydisperse normal:4e-3:5e-4:3e-3", "--polydisperse normal:0.004:5e-04:0.003"},
+        Family{"mle", "--mle --renormalize 5", "--mle --renormalize 5"},
+        Family{"mode", "--ic mode --mode 20 --energy 1e-9", "--ic mode --alpha 1e-07 --mode 20 --energy 1e-09"},
+        Family{"mode-khz", "--ic mode --mode-khz 12", "--mode-khz 12"},
+        Family{"match", "--ic velocity --beta match", "--beta match"},
+        Family{"aba864", "--integrator aba864", "--integrator aba864"},
+        Family{"srkn14a", "--integrator srkn14a --dt 2e-6", "--integrator srkn14a"},
+        Family{"fpu", "--force-law fpu --site 10 --centre centroid", "--force-law fpu"}),
+    [](const ::testing::TestParamInfo<Family>& info) {
+      std::string name = info.param.name;
+      std::replace(name.begin(), name.end(), '-', '_');
+      return name;
+    });
 
 }  // namespace
 }  // namespace granular::testing
