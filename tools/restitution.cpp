@@ -10,6 +10,7 @@
 #include "granular/io/atomic_file.hpp"
 #include "granular/io/csv_writer.hpp"
 #include "granular/io/range_syntax.hpp"
+#include "granular/model/material.hpp"
 
 int main(int argc, char** argv) {
   using namespace granular;
@@ -58,10 +59,7 @@ int main(int argc, char** argv) {
                      meta["parameters"] = {{"impact_speed_m_s", v},
                                            {"kk_gamma_s", g},
                                            {"R_m", config.radius},
-                                           {"material",
-                                            {{"E_Pa", config.material.young},
-                                             {"nu", config.material.poisson},
-                                             {"rho_kg_m3", config.material.density}}},
+                                           {"material", describe(config.material)},
                                            {"steps_per_collision", config.steps_per_collision},
                                            {"integrator", integrator},
                                            {"damping_splitting",

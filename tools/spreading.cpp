@@ -73,7 +73,7 @@ int main(int argc, char** argv) {
         if (!summary && c.fit) exponents = transport_exponents(c, r.t, r.m2, r.m2_centroid, r.ipr);
         std::vector<std::string> notes = summary ? warnings(*summary, d) : std::vector<std::string>{};
         for (const auto& w : warnings(r, d)) notes.push_back(w);  // none from a run not made
-        if (!c.fit) notes.push_back("note: --fit " + dynamics.fit + " reaches beyond --T; no exponents fitted");
+        for (const auto& note : granular::notes(c)) notes.push_back(note);
         for (const auto& note : run.quiet ? std::vector<std::string>{} : notes)
           std::fprintf(stderr, "spreading: %s\n", note.c_str());
 

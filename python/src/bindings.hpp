@@ -84,7 +84,6 @@ py::array_t<double> view(const std::vector<double>& data, const py::handle& owne
 py::object to_python(const nlohmann::json& value);
 /// {"function": "granular.<name>", "version": …}: the head of every result's metadata.
 nlohmann::json metadata_head(const std::string& function);
-nlohmann::json material_json(const Material& material);
 
 // --- parsing the tools' words --------------------------------------------------------------------
 Disorder disorder_of(const std::string& name);

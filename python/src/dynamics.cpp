@@ -247,7 +247,9 @@ void bind_dynamics(py::module_& m) {
           meta["spectrum"] = {{"of", to_string(d.spectrum_source)}, {"samples", d.spectrum_samples}};
 
         py::dict out = to_python(fitted);
-        out["warnings"] = warn(warnings(r, d));
+        std::vector<std::string> said = notes(c);
+        for (const auto& w : warnings(r, d)) said.push_back(w);
+        out["warnings"] = warn(said);
         out["t"] = to_numpy(std::move(r.t));
         out["m2"] = to_numpy(std::move(r.m2));
         out["m2_centroid"] = to_numpy(std::move(r.m2_centroid));
@@ -425,7 +427,9 @@ void bind_dynamics(py::module_& m) {
         meta["time_step_rule"] = step_rule;
 
         py::dict out = to_python(fitted);
-        out["warnings"] = warn(warnings(s, c.dynamics));
+        std::vector<std::string> said = notes(c);
+        for (const auto& w : warnings(s, c.dynamics)) said.push_back(w);
+        out["warnings"] = warn(said);
         out["t"] = to_numpy(std::move(s.t));
         out["m2"] = to_numpy(std::move(s.m2.mean));
         out["m2_se"] = to_numpy(std::move(s.m2.standard_error));

@@ -224,7 +224,7 @@ void bind_studies(py::module_& m) {
                               {"N", c.chain.N},
                               {"F0_N", c.chain.F0},
                               {"R1_m", c.chain.R1},
-                              {"material", material_json(c.chain.material)},
+                              {"material", describe(c.chain.material)},
                               {"walls", "flat, same material as the beads"},
                               {"realizations", c.realizations},
                               {"seed", c.chain.seed},
@@ -333,7 +333,7 @@ void bind_studies(py::module_& m) {
                                   .R1 = R1};
           beads.source = random_beads(kind, p);
           beads.description = {{"F0_N", F0},
-                               {"material", material_json(steel)},
+                               {"material", describe(steel)},
                                {"walls", "flat, same material as the beads"},
                                {"R1_m", R1},
                                {"xi", xi},

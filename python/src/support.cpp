@@ -80,7 +80,9 @@ void bind_errors(py::module_& m) {
     } catch (const NumericalError& e) {
       PyErr_SetString(numerical.ptr(), e.what());
     } catch (const Cancelled&) {
-      PyErr_SetNone(PyExc_KeyboardInterrupt);
+      PyErr_SetString(PyExc_KeyboardInterrupt,
+                      "interrupted (Ctrl-C) after the work in flight; a run with checkpoint= keeps its finished "
+                      "realizations there: call it again with resume=True to continue");
     }
   });
 }
@@ -165,10 +167,6 @@ py::object to_python(const nlohmann::json& v) {
 
 nlohmann::json metadata_head(const std::string& function) {
   return {{"function", "granular." + function}, {"version", GRANULAR_VERSION}};
-}
-
-nlohmann::json material_json(const Material& m) {
-  return {{"E_Pa", m.young}, {"nu", m.poisson}, {"rho_kg_m3", m.density}};
 }
 
 Disorder disorder_of(const std::string& name) {

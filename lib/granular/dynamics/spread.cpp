@@ -36,6 +36,19 @@ void validate(const IntegrationConfig& c) {
     throw InvalidInput("lyapunov", ": the tangent map is of the conservative flow; switch the damping off");
 }
 
+std::unique_ptr<Propagator> make_propagator(const IntegrationConfig& config, const ForceLaw& law, const Chain& chain,
+                                            const State& initial) {
+  const std::size_t n = chain.size();
+  if (config.lyapunov.enabled) {
+    const std::size_t site = config.deviation_site < n ? config.deviation_site : centre_site(n);
+    return make_tangent_propagator(law, chain, config.integrator.scheme, config.time_step, initial,
+                                   localized_deviation(n, site, config.lyapunov.time_unit), config.lyapunov);
+  }
+  if (config.damping.any())
+    return make_damped_propagator(law, chain, config.integrator.scheme, config.time_step, initial, config.damping);
+  return make_propagator(config.integrator, law, chain, config.time_step, initial, config.window);
+}
+
 RunInfo spread(const Chain& chain, const State& initial, const IntegrationConfig& config,
                std::span<Observer* const> observers) {
   validate(config);
@@ -57,23 +70,10 @@ RunInfo spread(const Chain& chain, const State& initial, const IntegrationConfig
   RunInfo info;
   info.initial_energy = total_energy(law, chain, initial);
   if (!(info.initial_energy > 0)) throw InvalidInput("initial state: carries no energy");
-  const std::size_t n = chain.size();
-  std::unique_ptr<Propagator> p;
-  const TangentPropagator* tangent = nullptr;
-  if (config.lyapunov.enabled) {
-    const std::size_t site = config.deviation_site < n ? config.deviation_site : centre_site(n);
-    auto t = make_tangent_propagator(law, chain, config.integrator.scheme, tau, initial,
-                                     localized_deviation(n, site, config.lyapunov.time_unit), config.lyapunov);
-    tangent = t.get();
-    p = std::move(t);
-  } else if (config.damping.any()) {
-    p = make_damped_propagator(law, chain, config.integrator.scheme, tau, initial, config.damping);
-  } else {
-    p = make_propagator(config.integrator, law, chain, tau, initial, config.window);
-  }
+  const std::unique_ptr<Propagator> p = make_propagator(config, law, chain, initial);
 
   Snapshot now(chain, law, info.initial_energy);
-  now.tangent = tangent;
+  now.tangent = dynamic_cast<const TangentPropagator*>(p.get());
   bool first = true;
   for (const auto& [step, who] : events) {
     if (first || step != now.step) {

@@ -41,6 +41,12 @@ struct IntegrationConfig {
 /// kk_gamma, integrator, lyapunov) on a bad config.
 void validate(const IntegrationConfig& config);
 
+/// How to step: the propagator `config` asks for on `law` from `initial` — the tangent map (a
+/// TangentPropagator) when config.lyapunov is on, the damped splitting when config.damping is,
+/// else the scheme with its active window or the Odeint reference. The one place that chooses.
+std::unique_ptr<Propagator> make_propagator(const IntegrationConfig& config, const ForceLaw& law, const Chain& chain,
+                                            const State& initial);
+
 /// What the run did, besides what the observers measured.
 struct RunInfo {
   double initial_energy = 0;  ///< H(0) [J]

@@ -15,7 +15,7 @@ std::vector<double> parse_number_list(const std::string& text, const std::string
 /// Parses a comma list of positive integers (e.g. particle numbers).
 std::vector<long> parse_integer_list(const std::string& text, const std::string& option);
 
-/// An interval "start:stop" with finite start < stop (e.g. --fit 4e-3:1e-2).
+/// An interval "start:stop" with finite start < stop (e.g. a fit window, 4e-3:1e-2).
 struct Interval {
   double start, stop;
 };

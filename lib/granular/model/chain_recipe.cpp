@@ -110,8 +110,6 @@ void validate(const ChainRecipe& c, std::size_t max_beads) {
   if (!c.given_types) validate_probability(c.q);
 }
 
-nlohmann::json describe(const Material& m) { return {{"E_Pa", m.young}, {"nu", m.poisson}, {"rho_kg_m3", m.density}}; }
-
 nlohmann::json describe(const ChainRecipe& c, std::optional<std::uint64_t> realization) {
   nlohmann::json d;
   d["F0_N"] = c.F0;

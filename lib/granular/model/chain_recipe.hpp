@@ -85,7 +85,4 @@ void describe_fields(const ChainRecipe& recipe, nlohmann::json& fields);
 /// The inverse of describe_fields (files are read again). Throws InvalidInput naming the key.
 ChainRecipe parse_recipe_fields(const nlohmann::json& fields);
 
-/// The material as descriptions give it: E_Pa, nu, rho_kg_m3.
-nlohmann::json describe(const Material& material);
-
 }  // namespace granular

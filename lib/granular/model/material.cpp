@@ -21,4 +21,6 @@ double sphere_radius(const Material& material, double m) {
   return std::cbrt(m / (material.density * (4.0 / 3.0) * std::numbers::pi));
 }
 
+nlohmann::json describe(const Material& m) { return {{"E_Pa", m.young}, {"nu", m.poisson}, {"rho_kg_m3", m.density}}; }
+
 }  // namespace granular

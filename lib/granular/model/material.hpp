@@ -3,6 +3,8 @@
 
 #include <numbers>
 
+#include <nlohmann/json.hpp>
+
 namespace granular {
 
 struct Material {
@@ -23,5 +25,8 @@ double sphere_radius(const Material& material, double m);
 
 /// Throws InvalidInput unless E > 0, -1 < ν < 0.5 and ρ > 0 (all finite). `what` names the owner.
 void validate(const Material& material, const char* what);
+
+/// The material as descriptions give it: E_Pa, nu, rho_kg_m3.
+nlohmann::json describe(const Material& material);
 
 }  // namespace granular

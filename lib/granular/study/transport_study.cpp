@@ -420,4 +420,10 @@ TransportSummary run_transport_study(const TransportCase& c, const StudyRunOptio
   return s;
 }
 
+std::vector<std::string> notes(const TransportCase& c) {
+  if (c.fit || !(c.fit_end > c.dynamics.duration)) return {};
+  return {"note: the fit window " + format_number(c.fit_begin) + ":" + format_number(c.fit_end) +
+          " s reaches beyond T = " + format_number(c.dynamics.duration) + " s; no exponents fitted"};
+}
+
 }  // namespace granular

@@ -138,5 +138,7 @@ nlohmann::json to_json(const TransportExponents& exponents, SpreadCentre shown);
 /// Warnings a user must see about a run or an ensemble (energy at the walls, the energy guard).
 std::vector<std::string> warnings(const SpreadingResult& run, const SpreadingConfig& config);
 std::vector<std::string> warnings(const TransportSummary& summary, const SpreadingConfig& config);
+/// Notes on the case itself, before any run: a fit window beyond T (no exponents fitted).
+std::vector<std::string> notes(const TransportCase& c);
 
 }  // namespace granular
