@@ -6,10 +6,10 @@
 #include "common/chain_options.hpp"
 #include "common/metadata.hpp"
 #include "common/output_claim.hpp"
+#include "common/output_paths.hpp"
 #include "common/tool_main.hpp"
 #include "granular/io/atomic_file.hpp"
-#include "granular/io/csv_writer.hpp"
-#include "granular/study/correlation_study.hpp"
+#include "granular/study/correlation_files.hpp"
 
 int main(int argc, char** argv) {
   using namespace granular;
@@ -20,7 +20,7 @@ int main(int argc, char** argv) {
       "for two types the same coefficient (Pearson is invariant under the affine map type -> mass).",
       "correlations"};
   tool::describe_common(app);
-  std::string disorder = "A", output = "correlations.csv";
+  std::string disorder = "A", output = "correlations";
   CorrelationConfig config;
   RunOptions run;
   bool quiet = false;
@@ -34,7 +34,7 @@ int main(int argc, char** argv) {
   CLI::Option* max_distance =
       tool::add_integer(app, "--max-distance", config.max_distance, "largest shift d (< N; default capped at N-1)");
   tool::add_integer(app, "--threads", run.threads, "worker threads (0 = all cores)");
-  app.add_option("--output", output, "CSV file to write (the JSON goes beside it)")->capture_default_str();
+  tool::add_output_option(app, output);
   app.add_flag("--quiet", quiet, "no final report on stderr");
 
   return tool::run(app, argc, argv, [&] {
@@ -47,26 +47,16 @@ int main(int argc, char** argv) {
       config.max_distance = config.chain.N - 1;
     if (run.threads < 0) throw InvalidInput("threads", " " + std::to_string(run.threads) + ": must be >= 0");
     validate(config);
-    const tool::OutputClaim claim(tool::prefix_of(output), meta.command());
-    check_writable(output);
-    const std::string json_path = tool::json_path_for(output);
+    const std::string csv_path = output + ".csv", json_path = output + ".json";
+    const tool::OutputClaim claim(output, meta.command());
+    check_writable(csv_path);
     check_writable(json_path);
 
     const CorrelationResult result = correlation_study(config, run);
-    AtomicFile csv(output);
-    CsvWriter table(csv.stream(), {"distance", "rho_mean", "rho_std", "rho_theory"});
-    for (std::size_t d = 0; d < result.mean.size(); ++d)
-      table.row(d, result.mean[d], result.deviation[d], result.theory[d]);
-    meta["parameters"] = {{"disorder", to_string(config.chain.disorder)},
-                          {"q", config.chain.q},
-                          {"N", config.chain.N},
-                          {"realizations", config.realizations},
-                          {"seed", config.chain.seed},
-                          {"max_distance", config.max_distance}};
-    if (config.chain.distribution) meta["parameters"]["beads"] = describe(*config.chain.distribution);
-    meta["correlated"] = config.chain.distribution ? "bead mass" : "bead type (type 1 -> 0, type 2 -> 1)";
-    meta["realizations_used"] = result.used;
-    meta["output"] = output;
+    AtomicFile csv(csv_path);
+    write_correlations_csv(csv.stream(), result);
+    meta.merge(describe_correlations(config, result));
+    meta["output"] = csv_path;
     meta.write(json_path, {&csv});
   });
 }

@@ -53,7 +53,7 @@ int main(int argc, char** argv) {
                "also print (and write PREFIX-paper.csv) our gamma beside the paper's Table I");
   app.add_option("--paper-table", paper_table, "the paper's Table I (CSV ic,F0_N,disorder,gamma,err,star)")
       ->capture_default_str();
-  app.add_option("--output", output, "output prefix")->capture_default_str();
+  tool::add_output_option(app, output, ", PREFIX-curves.csv, PREFIX-profiles.csv");
   tool::add_long_run_options(app, run_options);
   tool::add_auto_length(app, auto_n);
 

@@ -6,22 +6,22 @@
 #include "common/chain_options.hpp"
 #include "common/metadata.hpp"
 #include "common/output_claim.hpp"
+#include "common/output_paths.hpp"
 #include "common/spectrum_options.hpp"
 #include "common/tool_main.hpp"
 #include "granular/ensemble/parallel_realizations.hpp"
 #include "granular/io/atomic_file.hpp"
-#include "granular/io/csv_writer.hpp"
 #include "granular/io/range_syntax.hpp"
-#include "granular/study/ipr_map.hpp"
+#include "granular/study/ipr_map_files.hpp"
 
 int main(int argc, char** argv) {
   using namespace granular;
   CLI::App app{
       "Mean mode frequency [kHz] and displacement IPR of disordered bidisperse chains on a (q, xi) grid.\n"
-      "Writes OUTPUT (columns disorder,q,xi,mode,freq_khz,ipr) and OUTPUT with .json (every parameter).",
+      "Writes PREFIX.csv (columns disorder,q,xi,mode,freq_khz,ipr) and PREFIX.json (every parameter).",
       "ipr-map"};
   tool::describe_common(app);
-  std::string disorder = "A", xi_text = "0.1:1", q_text = "0.2,0.5,0.8", output = "ipr-map.csv", solver = "fast";
+  std::string disorder = "A", xi_text = "0.1:1", q_text = "0.2,0.5,0.8", output = "ipr-map", solver = "fast";
   std::string method = "lapack";
   IprMapConfig config;
   RunOptions run;
@@ -45,7 +45,7 @@ int main(int argc, char** argv) {
                  "LAPACK's to 1e-10 outside tight eigenvalue clusters) | lapack (= lapack-stevd) | lapack-stevr | "
                  "lapack-stemr | lapack-stevd | lapack-steqr")
       ->capture_default_str();
-  app.add_option("--output", output, "CSV file to write (the JSON goes beside it)")->capture_default_str();
+  tool::add_output_option(app, output);
   tool::add_selection_options(app, selection, "partial spectra: ");
   app.add_option("--method", method, "partial spectra: lapack | bisect | arpack | slepc (arpack/slepc: one thread)")
       ->capture_default_str();
@@ -80,9 +80,9 @@ int main(int argc, char** argv) {
     if ((config.chain.distribution = tool::bead_distribution(beads)))
       config.q_values = config.xi_values = {std::numeric_limits<double>::quiet_NaN()};  // one cell
     validate(config);
-    const tool::OutputClaim claim(tool::prefix_of(output), meta.command());
-    check_writable(output);
-    const std::string json_path = tool::json_path_for(output);
+    const std::string csv_path = output + ".csv", json_path = output + ".json";
+    const tool::OutputClaim claim(output, meta.command());
+    check_writable(csv_path);
     check_writable(json_path);
 
     ProgressMeter progress(config.q_values.size() * config.xi_values.size() * config.realizations, "ipr-map",
@@ -91,60 +91,10 @@ int main(int argc, char** argv) {
     const auto cells = compute_ipr_map(config, run);
     progress.finish();
 
-    AtomicFile csv(output);
-    const std::string name = !config.chain.distribution ? to_string(config.chain.disorder)
-                             : config.chain.distribution->kind == BeadDistribution::Kind::types ? "types"
-                                                                                                : "polydisperse";
-    if (selection.given()) {  // modes differ between chains: one row per mode of each realization
-      CsvWriter table(csv.stream(), {"disorder", "q", "xi", "realization", "mode", "freq_khz", "ipr"});
-      for (const auto& cell : cells)
-        for (std::size_t j = 0; j < cell.mode.size(); ++j)
-          table.row(name, cell.q, cell.xi, static_cast<std::size_t>(cell.realization[j]), cell.mode[j],
-                    cell.freq_khz[j], cell.ipr[j]);
-    } else if (config.bin_khz > 0) {  // modes = modes of all realizations in the bin
-      CsvWriter table(csv.stream(), {"disorder", "q", "xi", "freq_lo_khz", "freq_hi_khz", "modes", "ipr"});
-      for (const auto& cell : cells)
-        for (std::size_t b = 0; b < cell.bin_modes.size(); ++b)
-          table.row(name, cell.q, cell.xi, static_cast<double>(b) * config.bin_khz,
-                    static_cast<double>(b + 1) * config.bin_khz, cell.bin_modes[b], cell.bin_ipr[b]);
-    } else {
-      CsvWriter table(csv.stream(), {"disorder", "q", "xi", "mode", "freq_khz", "ipr"});
-      for (const auto& cell : cells)
-        for (std::size_t k = 0; k < config.chain.N; ++k)
-          table.row(name, cell.q, cell.xi, k + 1, cell.freq_khz[k], cell.ipr[k]);
-    }
-    meta["parameters"] = {{"disorder", name},
-                          {"xi", config.xi_values},
-                          {"q", config.q_values},
-                          {"N", config.chain.N},
-                          {"F0_N", config.chain.F0},
-                          {"R1_m", config.chain.R1},
-                          {"material",
-                           {{"E_Pa", config.chain.material.young},
-                            {"nu", config.chain.material.poisson},
-                            {"rho_kg_m3", config.chain.material.density}}},
-                          {"walls", "flat, same material as the beads"},
-                          {"realizations", config.realizations},
-                          {"seed", config.chain.seed},
-                          {"threads", resolve_threads(run.threads)},
-                          {"solver", solver}};
-    if (config.chain.distribution) meta["parameters"]["beads"] = describe(*config.chain.distribution);
-    if (!selection.given()) {
-      meta["averaging"] = config.bin_khz > 0 ? "frequency-bin" : "mode";
-      if (config.bin_khz > 0) meta["bin_khz"] = config.bin_khz;
-    }
-    if (selection.given())
-      meta["selection"] = {{"method", method},
-                           {"near_khz", selection.near ? nlohmann::json(*selection.near) : nlohmann::json(nullptr)},
-                           {"count", selection.count ? nlohmann::json(*selection.count) : nlohmann::json(nullptr)},
-                           {"window_khz",
-                            selection.window ? nlohmann::json(*selection.window) : nlohmann::json(nullptr)}};
-    std::size_t solved = 0, clustered = 0;
-    for (const auto& cell : cells) solved += cell.solved_modes, clustered += cell.clustered_modes;
-    meta["clustered"] = {{"relative_gap", cluster_relative_gap},
-                         {"modes", clustered},
-                         {"fraction", solved > 0 ? static_cast<double>(clustered) / static_cast<double>(solved) : 0.0}};
-    meta["output"] = output;
+    AtomicFile csv(csv_path);
+    write_ipr_map_csv(csv.stream(), config, cells);
+    meta.merge(describe_ipr_map(config, cells, {solver, method, resolve_threads(run.threads)}));
+    meta["output"] = csv_path;
     meta.write(json_path, {&csv});
   });
 }

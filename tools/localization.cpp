@@ -7,13 +7,12 @@
 #include "common/bead_source_options.hpp"
 #include "common/metadata.hpp"
 #include "common/output_claim.hpp"
+#include "common/output_paths.hpp"
 #include "common/tool_main.hpp"
 #include "granular/ensemble/parallel_realizations.hpp"
 #include "granular/io/atomic_file.hpp"
-#include "granular/io/csv_writer.hpp"
 #include "granular/io/range_syntax.hpp"
-#include "granular/linear/band_edges.hpp"
-#include "granular/study/localization_scan.hpp"
+#include "granular/study/localization_files.hpp"
 
 int main(int argc, char** argv) {
   using namespace granular;
@@ -37,7 +36,7 @@ int main(int argc, char** argv) {
                     "chain pieces whose exponents give lyapunov_err (2 ... 1e6, at most N)");
   tool::add_integer(app, "--threads", run.threads,
                     "worker threads over blocks of frequencies (0 = all cores); output does not depend on it");
-  app.add_option("--output", output, "prefix: writes PREFIX.csv and PREFIX.json")->capture_default_str();
+  tool::add_output_option(app, output);
   app.add_flag("--quiet", quiet, "no progress line and no final report on stderr");
 
   return tool::run(
@@ -71,33 +70,8 @@ int main(int argc, char** argv) {
         progress.finish();
 
         AtomicFile csv(csv_path);
-        CsvWriter table(csv.stream(), {"freq_khz", "lyapunov", "lyapunov_err", "loc_length", "idos", "dos"});
-        for (std::size_t k = 0; k < scan.frequency_khz.size(); ++k)
-          table.row(scan.frequency_khz[k], scan.lyapunov[k], scan.lyapunov_error[k], scan.localization_length[k],
-                    scan.idos[k], scan.dos[k]);
-        meta["chain"] = chain.description;
-        meta["parameters"] = {{"frequencies_khz", frequencies},
-                              {"frequency_count", scan.frequency_khz.size()},
-                              {"segments", scan.segments},
-                              {"threads", resolve_threads(run.threads)}};
-        meta["columns"] = {
-            {"freq_khz", "frequency f [kHz]"},
-            {"lyapunov",
-             "lambda = (1/N) ln ||(u_{N+1}, u_N)|| of the transfer-matrix recursion from u_0 = 0, u_1 = 1 [1/bead]"},
-            {"lyapunov_err",
-             "standard error of lambda: sqrt(sum_s (lambda_s - mean)^2 / (S (S-1))) over S consecutive "
-             "segments of the chain (batch means; valid for segments much longer than loc_length)"},
-            {"loc_length", "1/lambda [beads]; inf where lambda <= 0 (inside a band lambda is 0 up to O(1/N))"},
-            {"idos", "eigenfrequencies of this finite chain (fixed walls) below f, per bead (exact node count)"},
-            {"dos", "d idos/df by differences of neighbouring rows (central; one-sided at the ends) [1/(bead kHz)]"}};
-        if (chain.description.contains("xi")) {
-          const BandEdges e = band_edges(steel, chain_options.r1, chain_options.xi, chain_options.f0);
-          meta["band_edges_khz"] = {{"f1", e.f1 * 1e-3},
-                                    {"f2", e.f2 * 1e-3},
-                                    {"fb1", e.fb1 * 1e-3},
-                                    {"fb2", e.fb2 * 1e-3},
-                                    {"fb3", e.fb3 * 1e-3}};
-        }
+        write_localization_csv(csv.stream(), scan);
+        meta.merge(describe_localization(scan, chain.description, frequencies, resolve_threads(run.threads), steel));
         meta["output"] = csv_path;
         meta.write(json_path, {&csv});
       },

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "common/metadata.hpp"
+#include "common/output_paths.hpp"
 #include "common/tool_main.hpp"
 #include "granular/dynamics/restitution.hpp"
 #include "granular/io/atomic_file.hpp"
@@ -20,7 +21,7 @@ int main(int argc, char** argv) {
       "impact_speed,kk_gamma,restitution,deficit_small_damping,contact_time,hertz_time (SI units).",
       "restitution"};
   tool::describe_common(app);
-  std::string speeds = "0.01", gammas = "1e-6", output = "restitution.csv", integrator = "saba2c";
+  std::string speeds = "0.01", gammas = "1e-6", output = "restitution", integrator = "saba2c";
   CollisionConfig config;
   app.add_option("--impact-speed", speeds, "impact speeds v [m/s]: start:stop[:step] or a comma list")
       ->capture_default_str();
@@ -30,7 +31,7 @@ int main(int argc, char** argv) {
   app.add_option("--steps-per-collision", config.steps_per_collision, "time step = Hertz contact time / this")
       ->capture_default_str();
   app.add_option("--integrator", integrator, "saba2c | saba2 | aba864 | srkn14a")->capture_default_str();
-  app.add_option("--output", output, "CSV file to write (the JSON goes beside it)")->capture_default_str();
+  tool::add_output_option(app, output);
   bool quiet = false;
   app.add_flag("--quiet", quiet, "no final report on stderr");
 
@@ -40,8 +41,8 @@ int main(int argc, char** argv) {
                      const std::vector<double> v = parse_number_list(speeds, "--impact-speed");
                      const std::vector<double> g = parse_number_list(gammas, "--kk-gamma");
                      config.integrator = integrator;
-                     check_writable(output);
-                     const std::string json_path = tool::json_path_for(output);
+                     const std::string csv_path = output + ".csv", json_path = output + ".json";
+                     check_writable(csv_path);
                      check_writable(json_path);
                      std::vector<std::vector<double>> rows;
                      for (double gamma : g)
@@ -52,7 +53,7 @@ int main(int argc, char** argv) {
                          rows.push_back({speed, gamma, c.restitution, restitution_deficit_small_damping(config),
                                          c.contact_time, c.hertz_time});
                        }
-                     AtomicFile csv(output);
+                     AtomicFile csv(csv_path);
                      CsvWriter table(csv.stream(), {"impact_speed", "kk_gamma", "restitution", "deficit_small_damping",
                                                     "contact_time", "hertz_time"});
                      for (const auto& r : rows) table.row(r[0], r[1], r[2], r[3], r[4], r[5]);
@@ -64,7 +65,7 @@ int main(int argc, char** argv) {
                                            {"integrator", integrator},
                                            {"damping_splitting",
                                             "Strang: contact pairs (Crank-Nicolson) half step, scheme, half step"}};
-                     meta["output"] = output;
+                     meta["output"] = csv_path;
                      meta.write(json_path, {&csv});
                    },
                    {{"impact_speed", "--impact-speed"}, {"radius", "--R1"}});

@@ -33,7 +33,7 @@ int main(int argc, char** argv) {
   tool::SpreadingOutputs more;
   tool::add_kicked_case_options(app, options);
   tool::add_long_run_options(app, run);
-  app.add_option("--output", output, "prefix: writes PREFIX.csv and PREFIX.json")->capture_default_str();
+  tool::add_output_option(app, output);
   tool::add_spreading_outputs(app, more);
 
   return tool::run(

@@ -15,6 +15,7 @@
 #include "granular/model/named_chains.hpp"
 #include "granular/number_format.hpp"
 #include "granular/parallel/mpi_context.hpp"
+#include "granular/study/spectrum_file.hpp"
 
 namespace granular::python {
 namespace {
@@ -34,11 +35,7 @@ std::mutex& serial_solvers() {
   return m;
 }
 
-struct SolverRequest {
-  ModeSelection selection;
-  SpectrumConfig config;
-  std::string method;
-};
+using SolverRequest = SpectrumRequest;
 
 ModeSelection selection_of(const py::object& near, const py::object& count, const py::object& window) {
   if (!window.is_none()) {
@@ -88,32 +85,11 @@ System system_of(const py::object& system) {
   return s;
 }
 
-nlohmann::json band_edges_json(const BandEdges& e) {
-  return {{"f1", e.f1 * 1e-3}, {"f2", e.f2 * 1e-3}, {"fb1", e.fb1 * 1e-3}, {"fb2", e.fb2 * 1e-3}, {"fb3", e.fb3 * 1e-3}};
-}
-
-/// The spectrum tool's JSON for this result.
+/// The spectrum tool's JSON for this result (the library's describe_spectrum, as the tool writes it).
 nlohmann::json spectrum_metadata(const Spectrum& r, const System& s, const SolverRequest& q) {
   nlohmann::json meta = metadata_head("spectrum");
-  if (s.chain) meta["chain"] = s.chain->description;
-  meta["method"] = q.method;
-  meta["solver"] = {{"method", r.info.method}, {"fallbacks", r.info.fallbacks}};
-  const ModeSelection& sel = q.selection;
-  if (sel.kind != ModeSelection::Kind::all) {
-    meta["selection"] = sel.kind == ModeSelection::Kind::nearest
-                            ? nlohmann::json{{"near_khz", sel.near_khz}, {"count", sel.count}}
-                            : nlohmann::json{{"window_khz", {sel.lo_khz, sel.hi_khz}}};
-    meta["solver"].update({{"restarts", r.info.restarts},
-                           {"candidates", r.info.candidates},
-                           {"max_relative_residual", r.info.max_residual},
-                           {"tolerance", q.config.tolerance},
-                           {"mpi_ranks", MpiContext::instance().size()}});
-  }
-  if (s.chain && s.chain->description.contains("xi") && s.chain->chain.precompression > 0) {
-    const auto& d = s.chain->description;
-    meta["band_edges_khz"] = band_edges_json(
-        band_edges(s.chain->material, d["R1_m"].get<double>(), d["xi"].get<double>(), s.chain->chain.precompression));
-  }
+  meta.update(describe_spectrum(r, q, s.chain ? s.chain->description : nlohmann::json(nullptr),
+                                s.chain ? s.chain->material : steel));
   return meta;
 }
 
@@ -293,8 +269,8 @@ void bind_linear(py::module_& m) {
           "what the solver did: method that ran, fallbacks, restarts, candidates, max_residual, clusters")
       .def_property_readonly(
           "metadata", [](const PySpectrum& p) { return to_python(p.metadata); },
-          "the spectrum tool's JSON for this result: chain, method, solver, selection, "
-          "band_edges_khz, version")
+          "the spectrum tool's JSON for this result: clustered, chain, method, solver, selection, "
+          "band_edges_khz, version (granular::describe_spectrum, as the tool writes it)")
       .def("__repr__", [](const PySpectrum& p) {
         return "<granular.Spectrum " + std::to_string(p.s.size()) + " of " + std::to_string(p.s.beads) + " modes, " +
                p.s.info.method + ">";

@@ -7,13 +7,12 @@
 #include "granular/ensemble/parallel_realizations.hpp"
 #include "granular/ensemble/run_options.hpp"
 #include "granular/error.hpp"
-#include "granular/linear/band_edges.hpp"
 #include "granular/model/bead_source.hpp"
 #include "granular/model/named_chains.hpp"
 #include "granular/number_format.hpp"
-#include "granular/study/correlation_study.hpp"
-#include "granular/study/ipr_map.hpp"
-#include "granular/study/localization_scan.hpp"
+#include "granular/study/correlation_files.hpp"
+#include "granular/study/ipr_map_files.hpp"
+#include "granular/study/localization_files.hpp"
 
 namespace granular::python {
 namespace {
@@ -150,7 +149,8 @@ void bind_studies(py::module_& m) {
       .def_property_readonly(
           "metadata", [](const PyIprMap& p) { return to_python(p.metadata); },
           "the ipr-map tool's JSON: parameters (disorder, xi, q, N, F0_N, R1_m, material, "
-          "realizations, seed, threads, solver), selection, version")
+          "walls, realizations, seed, threads, solver), averaging and bin_khz or selection, clustered, version "
+          "(granular::describe_ipr_map, as the tool writes it)")
       .def("__repr__", [](const PyIprMap& p) {
         return "<granular.IprMap " + to_string(p.config.chain.disorder) + ", " +
                std::to_string(p.config.q_values.size()) + " q x " + std::to_string(p.config.xi_values.size()) +
@@ -218,30 +218,7 @@ void bind_studies(py::module_& m) {
                  });
 
         nlohmann::json meta = metadata_head("ipr_map");
-        meta["parameters"] = {{"disorder", to_string(c.chain.disorder)},
-                              {"xi", c.xi_values},
-                              {"q", c.q_values},
-                              {"N", c.chain.N},
-                              {"F0_N", c.chain.F0},
-                              {"R1_m", c.chain.R1},
-                              {"material", describe(c.chain.material)},
-                              {"walls", "flat, same material as the beads"},
-                              {"realizations", c.realizations},
-                              {"seed", c.chain.seed},
-                              {"threads", resolve_threads(thread_request)},
-                              {"solver", solver}};
-        if (!selected) {
-          meta["averaging"] = c.bin_khz > 0 ? "frequency-bin" : "mode";
-          if (c.bin_khz > 0) meta["bin_khz"] = c.bin_khz;
-        }
-        if (selected) {
-          const ModeSelection& s = c.selection;
-          const bool by_window = s.kind == ModeSelection::Kind::window;
-          meta["selection"] = {{"method", method_name},
-                               {"near_khz", by_window ? nlohmann::json(nullptr) : nlohmann::json(s.near_khz)},
-                               {"count", by_window ? nlohmann::json(nullptr) : nlohmann::json(s.count)},
-                               {"window_khz", by_window ? nlohmann::json{s.lo_khz, s.hi_khz} : nlohmann::json(nullptr)}};
-        }
+        meta.update(describe_ipr_map(c, map.cells, {solver, method_name, resolve_threads(thread_request)}));
         map.metadata = std::move(meta);
         return map;
       },
@@ -298,7 +275,8 @@ void bind_studies(py::module_& m) {
           "N", [](const PyLocalization& p) { return p.scan.beads; }, "beads of the chain")
       .def_property_readonly(
           "metadata", [](const PyLocalization& p) { return to_python(p.metadata); },
-          "the localization tool's JSON: chain, parameters, band_edges_khz, version");
+          "the localization tool's JSON: chain, parameters, columns, band_edges_khz, version "
+          "(granular::describe_localization, as the tool writes it)");
 
   m.def(
       "localization",
@@ -354,21 +332,10 @@ void bind_studies(py::module_& m) {
                    out.scan = localization_scan(*beads.source, config, run);
                  });
         nlohmann::json meta = metadata_head("localization");
-        meta["chain"] = beads.description;
-        meta["parameters"] = {{"frequencies_khz", py::isinstance<py::str>(f) ? nlohmann::json(f.cast<std::string>())
-                                                                             : nlohmann::json(config.frequency_khz)},
-                              {"frequency_count", out.scan.frequency_khz.size()},
-                              {"segments", out.scan.segments},
-                              {"threads", resolve_threads(thread_request)}};
-        const auto& d = beads.description;
-        if (d.contains("xi")) {
-          const BandEdges e = band_edges(steel, d["R1_m"].get<double>(), d["xi"].get<double>(), d["F0_N"].get<double>());
-          meta["band_edges_khz"] = {{"f1", e.f1 * 1e-3},
-                                    {"f2", e.f2 * 1e-3},
-                                    {"fb1", e.fb1 * 1e-3},
-                                    {"fb2", e.fb2 * 1e-3},
-                                    {"fb3", e.fb3 * 1e-3}};
-        }
+        meta.update(describe_localization(out.scan, beads.description,
+                                          py::isinstance<py::str>(f) ? nlohmann::json(f.cast<std::string>())
+                                                                     : nlohmann::json(config.frequency_khz),
+                                          resolve_threads(thread_request), steel));
         out.metadata = std::move(meta);
         return out;
       },
@@ -410,7 +377,8 @@ void bind_studies(py::module_& m) {
           "realizations with both bead types (one-type chains have no rho and are skipped)")
       .def_property_readonly(
           "metadata", [](const PyCorrelations& p) { return to_python(p.metadata); },
-          "the correlations tool's JSON: parameters, realizations_used, version");
+          "the correlations tool's JSON: parameters, correlated, realizations_used, version "
+          "(granular::describe_correlations, as the tool writes it)");
 
   m.def(
       "correlations",
@@ -434,10 +402,7 @@ void bind_studies(py::module_& m) {
           out.result = correlation_study(c, run);
         });
         out.metadata = metadata_head("correlations");
-        out.metadata["parameters"] = {
-            {"disorder", to_string(c.chain.disorder)}, {"q", c.chain.q},       {"N", c.chain.N},
-            {"realizations", c.realizations},          {"seed", c.chain.seed}, {"max_distance", c.max_distance}};
-        out.metadata["realizations_used"] = out.result.used;
+        out.metadata.update(describe_correlations(c, out.result));
         return out;
       },
       py::kw_only(), py::arg("disorder") = "A", py::arg("q") = 0.5, py::arg("N") = 100, py::arg("realizations") = 100,

@@ -126,3 +126,15 @@ def test_cluster_flags_are_exposed_and_match_the_tool(tools):
                           output="c.csv")
     assert list(spec.clustered.astype(int)) == list(csv["clustered"].astype(int))
     assert meta["clustered"]["modes"] == int(spec.clustered.sum())
+
+
+@pytest.mark.parametrize("selection, keywords", [
+    ([], {}), (["--near", "15", "--count", "7", "--method", "bisect"], dict(near=15.0, count=7, method="bisect")),
+    (["--window", "10:20", "--method", "bisect"], dict(window=(10, 20), method="bisect"))])
+def test_metadata_is_the_spectrum_tools_json(tools, selection, keywords):
+    """One description in the library (granular::describe_spectrum): every entry equal, not a chosen few."""
+    _, meta = tools.run("spectrum", *CHAIN, *selection, "--quiet")
+    result = gr.spectrum(chain(), **keywords)
+    process = ("tool", "function", "command", "started_utc", "wall_time_s", "output", "vectors")
+    assert {k: v for k, v in result.metadata.items() if k not in process} == \
+        {k: v for k, v in meta.items() if k not in process}

@@ -117,3 +117,36 @@ def test_frequency_binned_ipr_map_equals_the_tool(tools):
     assert rows["modes"].sum() == 5 * 50  # every mode of every realization in one bin
     assert grid.metadata["averaging"] == meta["averaging"] == "frequency-bin"
     assert grid.metadata["bin_khz"] == meta["bin_khz"]
+
+
+PROCESS_KEYS = ("tool", "function", "command", "started_utc", "wall_time_s", "output", "vectors")
+
+
+def without_process_keys(meta):
+    """A tool's JSON or a result's metadata minus what only a process has (name, command line, clock, files)."""
+    return {k: v for k, v in meta.items() if k not in PROCESS_KEYS}
+
+
+@pytest.mark.parametrize("args, keywords", [
+    (["--xi", "0.5", "--q", "0.5", "--N", "30", "--realizations", "3"], dict(xi=0.5, q=0.5, N=30, realizations=3)),
+    (["--xi", "0.5", "--q", "0.5", "--N", "30", "--realizations", "3", "--bin-khz", "2"],
+     dict(xi=0.5, q=0.5, N=30, realizations=3, bin_khz=2.0)),
+    (["--xi", "0.5", "--q", "0.5", "--N", "60", "--realizations", "2", "--window", "10:20", "--method", "bisect"],
+     dict(xi=0.5, q=0.5, N=60, realizations=2, window=(10, 20), method="bisect")),
+])
+def test_ipr_map_metadata_is_the_tools_json(tools, args, keywords):
+    """One description in the library (granular::describe_ipr_map): every entry equal, not a chosen few."""
+    _, meta = tools.run("ipr-map", *args, "--threads", "1", "--quiet")
+    grid = gr.ipr_map(**keywords, threads=1)
+    assert without_process_keys(grid.metadata) == without_process_keys(meta)
+
+
+def test_correlations_and_localization_metadata_are_the_tools_json(tools):
+    _, meta = tools.run("correlations", "--N", "40", "--realizations", "5", "--max-distance", "3", "--threads", "1",
+                        "--quiet")
+    c = gr.correlations(N=40, realizations=5, max_distance=3, threads=1)
+    assert without_process_keys(c.metadata) == without_process_keys(meta)
+    _, meta = tools.run("localization", "--N", "1000", "--f", "1:3", "--segments", "4", "--threads", "1", "--quiet",
+                        output="loc")
+    scan = gr.localization(N=1000, f="1:3", segments=4, threads=1)
+    assert without_process_keys(scan.metadata) == without_process_keys(meta)

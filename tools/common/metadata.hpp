@@ -30,6 +30,8 @@ class Metadata {
     json_["started_utc"] = stamp;
   }
   nlohmann::json& operator[](const char* key) { return json_[key]; }
+  /// Adds the entries of `entries` (a library describe_* result), replacing those of the same key.
+  void merge(const nlohmann::json& entries) { json_.update(entries); }
   /// A remark the final line must carry (e.g. realizations left out), never only the JSON.
   void note(const std::string& text) { notes_ += "; " + text; }
   /// The command line as typed, quoted for a POSIX shell: paste it back and it runs.

@@ -22,15 +22,10 @@
 #include "granular/io/atomic_file.hpp"
 #include "granular/io/output_lock.hpp"
 #include "granular/parallel/mpi_context.hpp"
+#include "output_paths.hpp"
 #include "tool_main.hpp"
 
 namespace granular::tool {
-
-/// The prefix an output file stands for: "out.csv" → "out" (so out.lock sits beside out.json).
-inline std::string prefix_of(const std::string& path) {
-  const std::string json = json_path_for(path);
-  return json.substr(0, json.size() - 5);
-}
 
 /// The checkpoint files of `prefix`: PREFIX.checkpoint, and PREFIX.checkpoint.<anything>
 /// (per MPI rank, per case of a study, a temporary being written).

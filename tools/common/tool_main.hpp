@@ -207,12 +207,4 @@ inline int run(CLI::App& app, int argc, char** argv, const std::function<void()>
   }
 }
 
-/// Output prefix: "out.csv" → "out" so that "out.json" sits beside it.
-inline std::string json_path_for(const std::string& csv_path) {
-  const auto dot = csv_path.rfind('.');
-  const auto slash = csv_path.rfind('/');
-  const bool has_ext = dot != std::string::npos && (slash == std::string::npos || dot > slash);
-  return (has_ext ? csv_path.substr(0, dot) : csv_path) + ".json";
-}
-
 }  // namespace granular::tool

@@ -1,0 +1,27 @@
+#include "granular/study/correlation_files.hpp"
+
+#include "granular/io/csv_writer.hpp"
+
+namespace granular {
+
+void write_correlations_csv(std::ostream& out, const CorrelationResult& result) {
+  CsvWriter table(out, {"distance", "rho_mean", "rho_std", "rho_theory"});
+  for (std::size_t d = 0; d < result.mean.size(); ++d)
+    table.row(d, result.mean[d], result.deviation[d], result.theory[d]);
+}
+
+nlohmann::json describe_correlations(const CorrelationConfig& config, const CorrelationResult& result) {
+  nlohmann::json meta;
+  meta["parameters"] = {{"disorder", to_string(config.chain.disorder)},
+                        {"q", config.chain.q},
+                        {"N", config.chain.N},
+                        {"realizations", config.realizations},
+                        {"seed", config.chain.seed},
+                        {"max_distance", config.max_distance}};
+  if (config.chain.distribution) meta["parameters"]["beads"] = describe(*config.chain.distribution);
+  meta["correlated"] = config.chain.distribution ? "bead mass" : "bead type (type 1 -> 0, type 2 -> 1)";
+  meta["realizations_used"] = result.used;
+  return meta;
+}
+
+}  // namespace granular

@@ -1,0 +1,22 @@
+#pragma once
+// The files of a localization scan (the `localization` tool's contract, DESIGN.md): its CSV and
+// the JSON entries that describe it, so that the tool and Python write alike.
+#include <ostream>
+
+#include <nlohmann/json.hpp>
+
+#include "granular/model/material.hpp"
+#include "granular/study/localization_scan.hpp"
+
+namespace granular {
+
+/// freq_khz,lyapunov,lyapunov_err,loc_length,idos,dos.
+void write_localization_csv(std::ostream& out, const LocalizationScan& scan);
+
+/// The scan's JSON entries: chain (its description), parameters (frequencies_khz as asked for —
+/// the range text or the list —, frequency_count, segments, threads), columns (what each CSV
+/// column is), and band_edges_khz for a chain with xi (beads of `material`).
+nlohmann::json describe_localization(const LocalizationScan& scan, const nlohmann::json& chain,
+                                     const nlohmann::json& frequencies, int threads, const Material& material);
+
+}  // namespace granular
