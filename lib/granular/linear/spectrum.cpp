@@ -4,6 +4,7 @@
 #include <cmath>
 #include <string>
 
+#include "granular/detail/enum_names.hpp"
 #include "granular/error.hpp"
 #include "granular/linear/detail/lapack_eigensolver.hpp"
 #include "granular/linear/detail/mode_ipr_solver.hpp"
@@ -16,23 +17,17 @@
 
 namespace granular {
 
-std::string_view to_string(SpectrumMethod method) {
-  switch (method) {
-    case SpectrumMethod::lapack: return "lapack";
-    case SpectrumMethod::fast: return "fast";
-    case SpectrumMethod::bisect: return "bisect";
-    case SpectrumMethod::arpack: return "arpack";
-    case SpectrumMethod::slepc: return "slepc";
-  }
-  return "?";
-}
+namespace {
+constexpr auto method_names = detail::enum_names<SpectrumMethod>("method", {{SpectrumMethod::lapack, "lapack"},
+                                                                            {SpectrumMethod::fast, "fast"},
+                                                                            {SpectrumMethod::bisect, "bisect"},
+                                                                            {SpectrumMethod::arpack, "arpack"},
+                                                                            {SpectrumMethod::slepc, "slepc"}});
+}  // namespace
 
-SpectrumMethod parse_spectrum_method(std::string_view name) {
-  for (auto m : {SpectrumMethod::lapack, SpectrumMethod::fast, SpectrumMethod::bisect, SpectrumMethod::arpack,
-                 SpectrumMethod::slepc})
-    if (name == to_string(m)) return m;
-  throw InvalidInput("method", " '" + std::string(name) + "': expected lapack, fast, bisect, arpack or slepc");
-}
+std::string_view to_string(SpectrumMethod method) { return method_names.name_of(method); }
+
+SpectrumMethod parse_spectrum_method(std::string_view name) { return method_names.parse(name); }
 
 void validate(const ModeSelection& s, std::size_t n) {
   switch (s.kind) {
