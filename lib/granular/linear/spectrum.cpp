@@ -103,10 +103,7 @@ void number_modes(Spectrum& s) {
 /// Gershgorin bound: the scale of the cluster threshold for a partial result.
 double largest_eigenvalue(const SymTridiagonal& d) {
   const std::size_t n = d.size();
-  double hi = 0;
-  for (std::size_t i = 0; i < n; ++i)
-    hi = std::max(hi, d.diagonal[i] + (i > 0 ? std::fabs(d.off_diagonal[i - 1]) : 0.0) +
-                          (i + 1 < n ? std::fabs(d.off_diagonal[i]) : 0.0));
+  double hi = std::max(0.0, gershgorin_bounds(d, RowSum::left_to_right).second);
   double lo = 0;
   for (int it = 0; it < 60 && hi - lo > 1e-4 * hi; ++it) {
     const double mid = (lo + hi) / 2;
