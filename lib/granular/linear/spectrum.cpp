@@ -174,23 +174,7 @@ Spectrum SpectrumSolver::solve(const DynamicalMatrix& d, const ModeSelection& se
     out.clustered = cluster_flags(out.omega2);
     return out;
   }
-  PartialSpectrumConfig pc;
-  pc.method = config_.method;
-  pc.keep_vectors = config_.vectors;
-  pc.tolerance = config_.tolerance;
-  pc.subspace = config_.subspace;
-  pc.lanes = config_.lanes;
-  PartialSpectrum p = partial_spectrum(d, d.inverse_sqrt_mass, selection, pc);
-  out.mode = std::move(p.mode);
-  out.omega2 = std::move(p.omega2);
-  out.freq_khz = std::move(p.freq_khz);
-  out.ipr = std::move(p.ipr);
-  out.residual = std::move(p.residual);
-  if (config_.vectors) out.vectors.assign(p.vectors.data(), p.vectors.data() + p.vectors.size());
-  out.info.method = std::move(p.method);
-  out.info.restarts = p.restarts;
-  out.info.candidates = p.candidates;
-  out.info.fallbacks = p.fallbacks;
+  out = partial_spectrum(d, d.inverse_sqrt_mass, selection, config_);
   for (double r : out.residual) out.info.max_residual = std::max(out.info.max_residual, r);
   out.clustered = partial_cluster_flags(d, out.omega2);
   return out;
