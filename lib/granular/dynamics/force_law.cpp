@@ -6,10 +6,8 @@
 
 namespace granular {
 
-namespace {
 constexpr auto force_law_names = detail::enum_names<ForceLawKind>(
     "force_law", {{ForceLawKind::hertz, "hertz"}, {ForceLawKind::fpu, "fpu"}, {ForceLawKind::linear, "linear"}}, true);
-}  // namespace
 
 ForceLawKind parse_force_law(std::string_view name) { return force_law_names.parse(name); }
 

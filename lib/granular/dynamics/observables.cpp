@@ -47,10 +47,8 @@ double unowned_wall_energy(const ForceLaw& law, std::span<const double> u) {
       [&](const auto& l) { return 0.5 * (l.potential(0, bond_strain(u, 0)) + l.potential(n, bond_strain(u, n))); }, law);
 }
 
-namespace {
 constexpr auto spread_centre_names =
     detail::enum_names<SpreadCentre>("centre", {{SpreadCentre::site, "site"}, {SpreadCentre::centroid, "centroid"}});
-}  // namespace
 
 SpreadCentre parse_spread_centre(const std::string& name) { return spread_centre_names.parse(name); }
 

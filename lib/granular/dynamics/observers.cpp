@@ -171,11 +171,9 @@ void EnergyMapObserver::observe(const Snapshot& now) {
   }
 }
 
-namespace {
 constexpr auto spectrum_source_names =
     detail::enum_names<SpectrumSource>("spectrum_source", {{SpectrumSource::displacement, "displacement"},
                                                            {SpectrumSource::velocity, "velocity"}});
-}  // namespace
 
 SpectrumSource parse_spectrum_source(const std::string& name) { return spectrum_source_names.parse(name); }
 

@@ -8,10 +8,8 @@
 
 namespace granular {
 
-namespace {
 constexpr auto sampling_names =
     detail::enum_names<Sampling>("sampling", {{Sampling::logarithmic, "log"}, {Sampling::uniform, "uniform"}});
-}  // namespace
 
 Sampling parse_sampling(const std::string& name) { return sampling_names.parse(name); }
 

@@ -17,13 +17,11 @@
 
 namespace granular {
 
-namespace {
 constexpr auto method_names = detail::enum_names<SpectrumMethod>("method", {{SpectrumMethod::lapack, "lapack"},
                                                                             {SpectrumMethod::fast, "fast"},
                                                                             {SpectrumMethod::bisect, "bisect"},
                                                                             {SpectrumMethod::arpack, "arpack"},
                                                                             {SpectrumMethod::slepc, "slepc"}});
-}  // namespace
 
 std::string_view to_string(SpectrumMethod method) { return method_names.name_of(method); }
 

@@ -9,7 +9,6 @@
 
 namespace granular {
 
-namespace {
 constexpr auto disorder_names = detail::enum_names<Disorder>("disorder",
                                                              {{Disorder::homogeneous, "h"},
                                                               {Disorder::homogeneous, "homogeneous", true},
@@ -18,7 +17,6 @@ constexpr auto disorder_names = detail::enum_names<Disorder>("disorder",
                                                               {Disorder::rdm1, "RDM1"},
                                                               {Disorder::rdm2, "RDM2"}},
                                                              true, detail::Listing::one_of);
-}  // namespace
 
 Disorder parse_disorder(std::string_view name) { return disorder_names.parse(name); }
 

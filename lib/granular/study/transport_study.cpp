@@ -15,11 +15,9 @@
 
 namespace granular {
 
-namespace {
 constexpr auto kick_names =
     detail::enum_names<Kick>("ic",
                              {{Kick::displacement, "displacement"}, {Kick::velocity, "velocity"}, {Kick::mode, "mode"}});
-}  // namespace
 
 Kick parse_kick(const std::string& name) { return kick_names.parse(name); }
 

@@ -12,12 +12,10 @@
 
 namespace granular {
 
-namespace {
 constexpr auto driver_names = detail::enum_names<LapackDriver>("driver", {{LapackDriver::stevr, "stevr"},
                                                                           {LapackDriver::stemr, "stemr"},
                                                                           {LapackDriver::stevd, "stevd"},
                                                                           {LapackDriver::steqr, "steqr"}});
-}  // namespace
 
 std::string_view to_string(LapackDriver driver) { return driver_names.name_of(driver); }
 

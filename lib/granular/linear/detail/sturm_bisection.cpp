@@ -62,6 +62,16 @@ void count_block_avx512(const SymTridiagonal& t, double pivmin, const double* sh
 }
 #endif
 
+/// One sweep of L shifts: the AVX-512 kernel where the build has it, else the scalar lanes.
+template <int L>
+void sweep(const SymTridiagonal& t, double pivmin, const double* shift, long* count) {
+#if defined(__AVX512F__)
+  count_block_avx512<L>(t, pivmin, shift, count);
+#else
+  sturm_counts<L>(t, pivmin, shift, count);
+#endif
+}
+
 void count_many(const SymTridiagonal& t, double pivmin, const std::vector<double>& shifts, std::vector<long>& counts) {
   constexpr int L = 32;
   const std::size_t m = shifts.size();
@@ -71,23 +81,13 @@ void count_many(const SymTridiagonal& t, double pivmin, const std::vector<double
     long c[L];
     const std::size_t k = std::min<std::size_t>(L, m - j0);
     for (std::size_t j = 0; j < L; ++j) s[j] = shifts[j0 + std::min(j, k - 1)];  // pad with a repeat
-#if defined(__AVX512F__)
     if (k <= 8) {
-      count_block_avx512<8>(t, pivmin, s, c);
+      sweep<8>(t, pivmin, s, c);
     } else if (k <= 16) {
-      count_block_avx512<16>(t, pivmin, s, c);
+      sweep<16>(t, pivmin, s, c);
     } else {
-      count_block_avx512<32>(t, pivmin, s, c);
+      sweep<32>(t, pivmin, s, c);
     }
-#else
-    if (k <= 8) {
-      sturm_counts<8>(t, pivmin, s, c);
-    } else if (k <= 16) {
-      sturm_counts<16>(t, pivmin, s, c);
-    } else {
-      sturm_counts<32>(t, pivmin, s, c);
-    }
-#endif
     for (std::size_t j = 0; j < k; ++j) counts[j0 + j] = c[j];
   }
 }
