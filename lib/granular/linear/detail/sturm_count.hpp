@@ -37,7 +37,9 @@ void sturm_counts(const SymTridiagonal& t, double pivmin, const double* shift, l
   }
   for (std::size_t i = 1; i < n; ++i) {
     const double ai = a[i], b2 = b[i - 1] * b[i - 1];
+#if defined(__GNUC__) && !defined(__clang__)  // clang warns about the GCC pragma (included in several files)
 #pragma GCC ivdep
+#endif
     for (int j = 0; j < L; ++j) {
       double q = (ai - s[j]) - b2 / p[j];
       q = std::fabs(q) <= pivmin ? -pivmin : q;
