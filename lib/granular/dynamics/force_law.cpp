@@ -1,29 +1,17 @@
 #include "granular/dynamics/force_law.hpp"
 
-#include <cctype>
-
+#include "granular/detail/enum_names.hpp"
 #include "granular/error.hpp"
 #include "granular/model/contact_law.hpp"
 
 namespace granular {
 
-ForceLawKind parse_force_law(std::string_view name) {
-  std::string lower(name);
-  for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  if (lower == "hertz") return ForceLawKind::hertz;
-  if (lower == "fpu") return ForceLawKind::fpu;
-  if (lower == "linear") return ForceLawKind::linear;
-  throw InvalidInput("force_law", " '" + std::string(name) + "': expected hertz, fpu or linear");
-}
+constexpr auto force_law_names = detail::enum_names<ForceLawKind>(
+    "force_law", {{ForceLawKind::hertz, "hertz"}, {ForceLawKind::fpu, "fpu"}, {ForceLawKind::linear, "linear"}}, true);
 
-std::string to_string(ForceLawKind kind) {
-  switch (kind) {
-    case ForceLawKind::hertz: return "hertz";
-    case ForceLawKind::fpu: return "fpu";
-    case ForceLawKind::linear: return "linear";
-  }
-  return "?";
-}
+ForceLawKind parse_force_law(std::string_view name) { return force_law_names.parse(name); }
+
+std::string to_string(ForceLawKind kind) { return std::string(force_law_names.name_of(kind)); }
 
 HertzLaw::HertzLaw(const Chain& chain)
     : contact_(chain.contact), overlap_(chain.overlap), rest_(chain.bonds(), 0.0), rest_potential_(chain.bonds()) {

@@ -1,7 +1,6 @@
 #include "granular/dynamics/integrator.hpp"
 
-#include <cctype>
-
+#include "granular/detail/enum_names.hpp"
 #include "granular/error.hpp"
 
 namespace granular {
@@ -14,11 +13,15 @@ Integrator Integrator::odeint(const ReferenceTolerance& tolerance) {
 }
 
 Integrator parse_integrator(std::string_view name) {
-  std::string lower(name);
-  for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  if (lower == "reference") return Integrator::odeint();
-  if (lower == "saba2c" || lower == "saba2" || lower == "aba864" || lower == "srkn14a") return parse_scheme(lower);
-  throw InvalidInput("integrator", " '" + std::string(name) + "': expected saba2c, saba2, aba864, srkn14a or reference");
+  static constexpr auto names =
+      detail::enum_names<Integrator (*)()>("integrator",
+                                           {{[] { return Integrator(saba2c()); }, "saba2c"},
+                                            {[] { return Integrator(saba2()); }, "saba2"},
+                                            {[] { return Integrator(aba864()); }, "aba864"},
+                                            {[] { return Integrator(srkn14a()); }, "srkn14a"},
+                                            {[] { return Integrator::odeint(); }, "reference"}},
+                                           true);
+  return names.parse(name)();
 }
 
 std::unique_ptr<Propagator> make_propagator(const Integrator& integrator, const ForceLaw& law, const Chain& chain,

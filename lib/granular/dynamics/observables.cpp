@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <variant>
 
+#include "granular/detail/enum_names.hpp"
 #include "granular/error.hpp"
 
 namespace granular {
@@ -46,13 +47,12 @@ double unowned_wall_energy(const ForceLaw& law, std::span<const double> u) {
       [&](const auto& l) { return 0.5 * (l.potential(0, bond_strain(u, 0)) + l.potential(n, bond_strain(u, n))); }, law);
 }
 
-SpreadCentre parse_spread_centre(const std::string& name) {
-  if (name == "site") return SpreadCentre::site;
-  if (name == "centroid") return SpreadCentre::centroid;
-  throw InvalidInput("centre", " '" + name + "': expected site or centroid");
-}
+constexpr auto spread_centre_names =
+    detail::enum_names<SpreadCentre>("centre", {{SpreadCentre::site, "site"}, {SpreadCentre::centroid, "centroid"}});
 
-std::string to_string(SpreadCentre centre) { return centre == SpreadCentre::site ? "site" : "centroid"; }
+SpreadCentre parse_spread_centre(const std::string& name) { return spread_centre_names.parse(name); }
+
+std::string to_string(SpreadCentre centre) { return std::string(spread_centre_names.name_of(centre)); }
 
 EnergySpread energy_spread(std::span<const double> energy, std::size_t site) {
   EnergySpread s;

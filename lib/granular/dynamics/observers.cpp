@@ -4,6 +4,7 @@
 #include <cmath>
 #include <string>
 
+#include "granular/detail/enum_names.hpp"
 #include "granular/dynamics/initial_conditions.hpp"
 #include "granular/dynamics/observables.hpp"
 #include "granular/dynamics/spectral_density.hpp"
@@ -170,15 +171,13 @@ void EnergyMapObserver::observe(const Snapshot& now) {
   }
 }
 
-SpectrumSource parse_spectrum_source(const std::string& name) {
-  if (name == "displacement") return SpectrumSource::displacement;
-  if (name == "velocity") return SpectrumSource::velocity;
-  throw InvalidInput("spectrum_source", " '" + name + "': expected displacement or velocity");
-}
+constexpr auto spectrum_source_names =
+    detail::enum_names<SpectrumSource>("spectrum_source", {{SpectrumSource::displacement, "displacement"},
+                                                           {SpectrumSource::velocity, "velocity"}});
 
-std::string to_string(SpectrumSource source) {
-  return source == SpectrumSource::displacement ? "displacement" : "velocity";
-}
+SpectrumSource parse_spectrum_source(const std::string& name) { return spectrum_source_names.parse(name); }
+
+std::string to_string(SpectrumSource source) { return std::string(spectrum_source_names.name_of(source)); }
 
 void SpectralDensityObserver::Settings::validate(const RunPlan& plan) const {
   if (samples < 2) throw InvalidInput("spectrum_samples", ": at least 2");

@@ -3,17 +3,17 @@
 #include <algorithm>
 #include <cmath>
 
+#include "granular/detail/enum_names.hpp"
 #include "granular/error.hpp"
 
 namespace granular {
 
-Sampling parse_sampling(const std::string& name) {
-  if (name == "log") return Sampling::logarithmic;
-  if (name == "uniform") return Sampling::uniform;
-  throw InvalidInput("sampling", " '" + name + "': expected log or uniform");
-}
+constexpr auto sampling_names =
+    detail::enum_names<Sampling>("sampling", {{Sampling::logarithmic, "log"}, {Sampling::uniform, "uniform"}});
 
-std::string to_string(Sampling sampling) { return sampling == Sampling::logarithmic ? "log" : "uniform"; }
+Sampling parse_sampling(const std::string& name) { return sampling_names.parse(name); }
+
+std::string to_string(Sampling sampling) { return std::string(sampling_names.name_of(sampling)); }
 
 std::vector<std::uint64_t> sample_steps(std::uint64_t total, std::size_t count, Sampling sampling) {
   std::vector<std::uint64_t> steps;

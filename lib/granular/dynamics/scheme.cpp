@@ -1,7 +1,6 @@
 #include "granular/dynamics/scheme.hpp"
 
-#include <cctype>
-
+#include "granular/detail/enum_names.hpp"
 #include "granular/error.hpp"
 
 namespace granular {
@@ -71,13 +70,9 @@ SplittingScheme srkn14a() {
 }
 
 SplittingScheme parse_scheme(std::string_view name, const std::string& parameter) {
-  std::string lower(name);
-  for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  if (lower == "saba2c") return saba2c();
-  if (lower == "saba2") return saba2();
-  if (lower == "aba864") return aba864();
-  if (lower == "srkn14a") return srkn14a();
-  throw InvalidInput(parameter, " '" + std::string(name) + "': expected saba2c, saba2, aba864 or srkn14a");
+  static constexpr auto names = detail::enum_names<SplittingScheme (*)()>(
+      "scheme", {{saba2c, "saba2c"}, {saba2, "saba2"}, {aba864, "aba864"}, {srkn14a, "srkn14a"}}, true);
+  return names.parse(name, parameter)();
 }
 
 }  // namespace granular

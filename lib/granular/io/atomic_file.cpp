@@ -1,6 +1,5 @@
 #include "granular/io/atomic_file.hpp"
 
-#include <fcntl.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -11,6 +10,7 @@
 #include <vector>
 
 #include "granular/error.hpp"
+#include "granular/io/detail/temporary_file.hpp"
 
 namespace granular {
 
@@ -18,31 +18,16 @@ namespace {
 
 std::string cause(int error) { return error ? std::string(": ") + std::strerror(error) : std::string(); }
 
-/// fsync of a file or folder by path; the errno of the failure, or 0.
-int sync_path(const std::string& path, int flags) {
-  const int fd = ::open(path.c_str(), flags | O_CLOEXEC);
-  if (fd < 0) return errno;
-  const int result = ::fsync(fd) == 0 ? 0 : errno;
-  return ::close(fd) == 0 ? result : (result ? result : errno);
-}
-
 }  // namespace
 
-/// A stream buffer over a file descriptor that keeps the errno of the first failed write (an
-/// ofstream loses it: by the time a caller looks, errno says nothing about the disk).
+/// A stream buffer over a file descriptor (not owned) that keeps the errno of the first failed
+/// write (an ofstream loses it: by the time a caller looks, errno says nothing about the disk).
 class AtomicFile::Buffer : public std::streambuf {
  public:
   explicit Buffer(int fd) : fd_(fd), data_(1 << 16) { setp(data_.data(), data_.data() + data_.size()); }
-  ~Buffer() override {
-    if (fd_ >= 0) ::close(fd_);
-  }
-  int error() const { return error_; }
-  /// Writes what is buffered, fsyncs and closes; the errno of the first failure, or 0.
+  /// Writes what is buffered; the errno of the first failure, or 0.
   int finish() {
     sync();
-    if (!error_ && ::fsync(fd_) != 0) error_ = errno;
-    if (::close(fd_) != 0 && !error_) error_ = errno;
-    fd_ = -1;
     return error_;
   }
 
@@ -73,36 +58,19 @@ class AtomicFile::Buffer : public std::streambuf {
   std::vector<char> data_;
 };
 
-AtomicFile::AtomicFile(std::string path) : path_(std::move(path)), out_(nullptr) {
-  check_writable(path_);
-  temporary_ = path_ + ".tmp." + std::to_string(::getpid());
-  const int fd = ::open(temporary_.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-  if (fd < 0) throw IoError("cannot create '" + temporary_ + "'" + cause(errno));
-  buffer_ = std::make_unique<Buffer>(fd);
+AtomicFile::AtomicFile(std::string path)
+    : path_(std::move(path)), temporary_(std::make_unique<detail::TemporaryFile>(path_)), out_(nullptr) {
+  buffer_ = std::make_unique<Buffer>(temporary_->fd());
   out_.rdbuf(buffer_.get());
 }
 
-AtomicFile::~AtomicFile() {
-  if (!committed_) {
-    out_.rdbuf(nullptr);
-    buffer_.reset();
-    std::remove(temporary_.c_str());
-  }
-}
+AtomicFile::~AtomicFile() { out_.rdbuf(nullptr); }
 
 void AtomicFile::commit() {
-  // Every step can fail on a full or broken disk; the message says which file and why. Until the
-  // rename the target is untouched, and the temporary file goes with the destructor.
   // Named by the file the user asked for: the temporary name is never seen (it goes with the destructor).
   if (const int e = buffer_->finish()) throw IoError("writing '" + path_ + "' failed" + cause(e));
   if (!out_) throw IoError("writing '" + path_ + "' failed" + cause(EIO));
-  if (std::rename(temporary_.c_str(), path_.c_str()) != 0)
-    throw IoError("cannot rename '" + temporary_ + "' to '" + path_ + "'" + cause(errno));
-  committed_ = true;
-  // The rename itself is durable only once the folder is synced.
-  std::filesystem::path folder = std::filesystem::path(path_).parent_path();
-  if (const int e = sync_path(folder.empty() ? "." : folder.string(), O_RDONLY | O_DIRECTORY))
-    throw IoError("flushing the folder of '" + path_ + "' to disk failed" + cause(e));
+  temporary_->commit();  // fsync, rename onto path_, fsync of the folder
 }
 
 void check_writable(const std::string& path) {

@@ -8,6 +8,10 @@
 
 namespace granular {
 
+namespace detail {
+class TemporaryFile;
+}
+
 class AtomicFile {
  public:
   explicit AtomicFile(std::string path);
@@ -23,10 +27,10 @@ class AtomicFile {
 
  private:
   class Buffer;  // writes through to the file descriptor and remembers the first errno
-  std::string path_, temporary_;
+  std::string path_;
+  std::unique_ptr<detail::TemporaryFile> temporary_;  // PATH.tmp.<pid>, removed unless committed
   std::unique_ptr<Buffer> buffer_;
   std::ostream out_;
-  bool committed_ = false;
 };
 
 /// Throws IoError unless `path`'s folder exists and is writable (checked before long work).

@@ -1,15 +1,12 @@
 #include "granular/io/hdf5_file.hpp"
 
-#include <unistd.h>
-
 #include <cerrno>
-#include <cstdio>
 #include <cstring>
 
 #include <hdf5.h>
 
 #include "granular/error.hpp"
-#include "granular/io/atomic_file.hpp"
+#include "granular/io/detail/temporary_file.hpp"
 
 namespace granular {
 
@@ -29,18 +26,15 @@ std::string cause() { return errno ? std::string(": ") + std::strerror(errno) : 
 
 Hdf5File::Hdf5File(std::string path) : path_(std::move(path)) {
   silence_hdf5();
-  check_writable(path_);
-  temporary_ = path_ + ".tmp." + std::to_string(::getpid());
+  temporary_ = std::make_unique<detail::TemporaryFile>(path_, "HDF5 file ");
   errno = 0;
-  file_ = H5Fcreate(temporary_.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
-  if (file_ < 0) throw IoError("cannot create HDF5 file '" + temporary_ + "'" + cause());
+  // HDF5 opens the file by name: the new, empty one the temporary file just created.
+  file_ = H5Fcreate(temporary_->path().c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+  if (file_ < 0) throw IoError("cannot create HDF5 file '" + temporary_->path() + "'" + cause());
 }
 
 Hdf5File::~Hdf5File() {
-  if (!committed_) {
-    if (file_ >= 0) H5Fclose(file_);
-    std::remove(temporary_.c_str());
-  }
+  if (file_ >= 0) H5Fclose(file_);
 }
 
 namespace {
@@ -86,9 +80,7 @@ void Hdf5File::commit() {
   const herr_t closed = H5Fclose(file_);
   file_ = -1;
   if (closed < 0) throw IoError("HDF5: writing '" + path_ + "' failed" + cause());
-  if (std::rename(temporary_.c_str(), path_.c_str()) != 0)
-    throw IoError("cannot rename '" + temporary_ + "' to '" + path_ + "'" + cause());
-  committed_ = true;
+  temporary_->commit();  // fsync, rename onto path_, fsync of the folder
 }
 
 void write_hdf5_atomically(const std::string& path, const std::vector<Hdf5Array>& arrays) {

@@ -1,12 +1,17 @@
 #pragma once
 // An HDF5 file of named 1-D and 2-D double / integer arrays that appears whole or not at all:
-// written under a temporary name and renamed on commit() (like AtomicFile).
+// written under a temporary name, fsynced and renamed on commit() (as AtomicFile is).
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
 namespace granular {
+
+namespace detail {
+class TemporaryFile;
+}
 
 class Hdf5File {
  public:
@@ -22,13 +27,13 @@ class Hdf5File {
   void write(const std::string& name, const std::vector<std::uint64_t>& data);
   /// A string attribute on the root group.
   void attribute(const std::string& name, const std::string& value);
-  /// Closes and renames onto the target; throws IoError.
+  /// Closes, fsyncs and renames onto the target, then fsyncs the folder; throws IoError.
   void commit();
 
  private:
-  std::string path_, temporary_;
-  long long file_ = -1;  // hid_t
-  bool committed_ = false;
+  std::string path_;
+  std::unique_ptr<detail::TemporaryFile> temporary_;  // PATH.tmp.<pid>, removed unless committed
+  long long file_ = -1;                               // hid_t
 };
 
 /// A named array for write_hdf5_atomically: 1-D or 2-D (row-major) doubles.

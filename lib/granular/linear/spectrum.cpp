@@ -4,6 +4,7 @@
 #include <cmath>
 #include <string>
 
+#include "granular/detail/enum_names.hpp"
 #include "granular/error.hpp"
 #include "granular/linear/detail/lapack_eigensolver.hpp"
 #include "granular/linear/detail/mode_ipr_solver.hpp"
@@ -16,23 +17,15 @@
 
 namespace granular {
 
-std::string_view to_string(SpectrumMethod method) {
-  switch (method) {
-    case SpectrumMethod::lapack: return "lapack";
-    case SpectrumMethod::fast: return "fast";
-    case SpectrumMethod::bisect: return "bisect";
-    case SpectrumMethod::arpack: return "arpack";
-    case SpectrumMethod::slepc: return "slepc";
-  }
-  return "?";
-}
+constexpr auto method_names = detail::enum_names<SpectrumMethod>("method", {{SpectrumMethod::lapack, "lapack"},
+                                                                            {SpectrumMethod::fast, "fast"},
+                                                                            {SpectrumMethod::bisect, "bisect"},
+                                                                            {SpectrumMethod::arpack, "arpack"},
+                                                                            {SpectrumMethod::slepc, "slepc"}});
 
-SpectrumMethod parse_spectrum_method(std::string_view name) {
-  for (auto m : {SpectrumMethod::lapack, SpectrumMethod::fast, SpectrumMethod::bisect, SpectrumMethod::arpack,
-                 SpectrumMethod::slepc})
-    if (name == to_string(m)) return m;
-  throw InvalidInput("method", " '" + std::string(name) + "': expected lapack, fast, bisect, arpack or slepc");
-}
+std::string_view to_string(SpectrumMethod method) { return method_names.name_of(method); }
+
+SpectrumMethod parse_spectrum_method(std::string_view name) { return method_names.parse(name); }
 
 void validate(const ModeSelection& s, std::size_t n) {
   switch (s.kind) {
@@ -108,10 +101,7 @@ void number_modes(Spectrum& s) {
 /// Gershgorin bound: the scale of the cluster threshold for a partial result.
 double largest_eigenvalue(const SymTridiagonal& d) {
   const std::size_t n = d.size();
-  double hi = 0;
-  for (std::size_t i = 0; i < n; ++i)
-    hi = std::max(hi, d.diagonal[i] + (i > 0 ? std::fabs(d.off_diagonal[i - 1]) : 0.0) +
-                          (i + 1 < n ? std::fabs(d.off_diagonal[i]) : 0.0));
+  double hi = std::max(0.0, gershgorin_bounds(d, RowSum::left_to_right).second);
   double lo = 0;
   for (int it = 0; it < 60 && hi - lo > 1e-4 * hi; ++it) {
     const double mid = (lo + hi) / 2;
@@ -182,23 +172,7 @@ Spectrum SpectrumSolver::solve(const DynamicalMatrix& d, const ModeSelection& se
     out.clustered = cluster_flags(out.omega2);
     return out;
   }
-  PartialSpectrumConfig pc;
-  pc.method = config_.method;
-  pc.keep_vectors = config_.vectors;
-  pc.tolerance = config_.tolerance;
-  pc.subspace = config_.subspace;
-  pc.lanes = config_.lanes;
-  PartialSpectrum p = partial_spectrum(d, d.inverse_sqrt_mass, selection, pc);
-  out.mode = std::move(p.mode);
-  out.omega2 = std::move(p.omega2);
-  out.freq_khz = std::move(p.freq_khz);
-  out.ipr = std::move(p.ipr);
-  out.residual = std::move(p.residual);
-  if (config_.vectors) out.vectors.assign(p.vectors.data(), p.vectors.data() + p.vectors.size());
-  out.info.method = std::move(p.method);
-  out.info.restarts = p.restarts;
-  out.info.candidates = p.candidates;
-  out.info.fallbacks = p.fallbacks;
+  out = partial_spectrum(d, d.inverse_sqrt_mass, selection, config_);
   for (double r : out.residual) out.info.max_residual = std::max(out.info.max_residual, r);
   out.clustered = partial_cluster_flags(d, out.omega2);
   return out;

@@ -1,6 +1,8 @@
 #include "granular/linear/sym_tridiagonal.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "granular/error.hpp"
@@ -32,6 +34,24 @@ bool SymTridiagonal::all_finite() const {
   for (double e : off_diagonal)
     if (!std::isfinite(e)) return false;
   return true;
+}
+
+std::pair<double, double> gershgorin_bounds(const SymTridiagonal& t, RowSum sum) {
+  const std::size_t n = t.size();
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double d = t.diagonal[i];
+    const double left = i > 0 ? std::fabs(t.off_diagonal[i - 1]) : 0.0;
+    const double right = i + 1 < n ? std::fabs(t.off_diagonal[i]) : 0.0;
+    if (sum == RowSum::radius_first) {
+      lo = std::min(lo, d - (left + right));
+      hi = std::max(hi, d + (left + right));
+    } else {
+      lo = std::min(lo, (d - left) - right);
+      hi = std::max(hi, (d + left) + right);
+    }
+  }
+  return {lo, hi};
 }
 
 }  // namespace granular

@@ -7,43 +7,16 @@
 
 #include "granular/error.hpp"
 #include "granular/linear/detail/lapack.hpp"
+#include "granular/linear/detail/sturm_count.hpp"
 #include "granular/number_format.hpp"
 
 namespace granular {
 
 std::size_t TridiagonalOperator::count_below(double sigma) const {
-  const std::size_t n = t_.size();
-  if (n == 0) return 0;
-  const auto& a = t_.diagonal;
-  const auto& b = t_.off_diagonal;
-  double max_e2 = 1;
-  for (double e : b) max_e2 = std::max(max_e2, e * e);
-  // dstebz's guard: a pivot smaller than this is replaced by -pivmin, so a zero pivot
-  // counts as negative and the next division stays finite.
-  const double pivmin = std::numeric_limits<double>::min() * max_e2;
-  std::size_t count = 0;
-  double p = a[0] - sigma;
-  if (std::fabs(p) <= pivmin) p = -pivmin;
-  count += p < 0;
-  for (std::size_t i = 1; i < n; ++i) {
-    p = (a[i] - sigma) - b[i - 1] * b[i - 1] / p;
-    if (std::fabs(p) <= pivmin) p = -pivmin;
-    count += p < 0;
-  }
-  return count;
-}
-
-std::pair<double, double> TridiagonalOperator::spectrum_bounds() const {
-  const std::size_t n = t_.size();
-  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-  for (std::size_t i = 0; i < n; ++i) {
-    double r = 0;
-    if (i > 0) r += std::fabs(t_.off_diagonal[i - 1]);
-    if (i + 1 < n) r += std::fabs(t_.off_diagonal[i]);
-    lo = std::min(lo, t_.diagonal[i] - r);
-    hi = std::max(hi, t_.diagonal[i] + r);
-  }
-  return {lo, hi};
+  if (t_.size() == 0) return 0;
+  long count = 0;
+  detail::sturm_counts<1>(t_, detail::sturm_pivot_floor(t_), &sigma, &count);
+  return static_cast<std::size_t>(count);
 }
 
 void ShiftInvertOperator::factorize(const SymTridiagonal& t, double sigma) {

@@ -22,8 +22,8 @@ class TridiagonalOperator {
   /// Number of eigenvalues strictly below σ: the negative pivots of T − σI = L D Lᵀ
   /// (Sylvester's law of inertia; the Sturm count of LAPACK's bisection, same pivot guard).
   std::size_t count_below(double sigma) const;
-  /// Gershgorin interval [lo, hi] that holds every eigenvalue.
-  std::pair<double, double> spectrum_bounds() const;
+  /// Gershgorin interval [lo, hi] that holds every eigenvalue (gershgorin_bounds).
+  std::pair<double, double> spectrum_bounds() const { return gershgorin_bounds(t_); }
 
  private:
   const SymTridiagonal& t_;

@@ -1,33 +1,26 @@
 #include "granular/model/disorder.hpp"
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 
+#include "granular/detail/enum_names.hpp"
 #include "granular/error.hpp"
 #include "granular/number_format.hpp"
 
 namespace granular {
 
-Disorder parse_disorder(std::string_view name) {
-  std::string s(name);
-  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::toupper(c); });
-  if (s == "H" || s == "HOMOGENEOUS") return Disorder::homogeneous;
-  if (s == "A" || s == "ANDERSON") return Disorder::anderson;
-  if (s == "RDM1") return Disorder::rdm1;
-  if (s == "RDM2") return Disorder::rdm2;
-  throw InvalidInput("disorder", " '" + std::string(name) + "': expected one of h, A, RDM1, RDM2");
-}
+constexpr auto disorder_names = detail::enum_names<Disorder>("disorder",
+                                                             {{Disorder::homogeneous, "h"},
+                                                              {Disorder::homogeneous, "homogeneous", true},
+                                                              {Disorder::anderson, "A"},
+                                                              {Disorder::anderson, "anderson", true},
+                                                              {Disorder::rdm1, "RDM1"},
+                                                              {Disorder::rdm2, "RDM2"}},
+                                                             true, detail::Listing::one_of);
 
-std::string to_string(Disorder d) {
-  switch (d) {
-    case Disorder::homogeneous: return "h";
-    case Disorder::anderson: return "A";
-    case Disorder::rdm1: return "RDM1";
-    case Disorder::rdm2: return "RDM2";
-  }
-  return "?";
-}
+Disorder parse_disorder(std::string_view name) { return disorder_names.parse(name); }
+
+std::string to_string(Disorder d) { return std::string(disorder_names.name_of(d)); }
 
 void validate_probability(double q) {
   if (!(q >= 0 && q <= 1)) throw InvalidInput("q", " " + format_number(q) + ": must be in [0, 1]");

@@ -9,6 +9,7 @@
 #include "granular/dynamics/initial_conditions.hpp"
 #include "granular/dynamics/observables.hpp"
 #include "granular/error.hpp"
+#include "granular/linear/sym_tridiagonal.hpp"
 #include "granular/model/disorder.hpp"
 #include "granular/number_format.hpp"
 
@@ -83,15 +84,13 @@ double highest_frequency_bound(const ForceLaw& law, const Chain& chain, double e
           if (it == known.end()) it = known.emplace(key, stiffest(l, k, energy)).first;
           stiffness[k] = it->second;
         }
-        double largest = 0;  // Gershgorin: row i of M^{-1/2} K M^{-1/2}, bonds i (left) and i+1 (right)
+        // Gershgorin on M^{-1/2} K M^{-1/2}: row i holds bonds i (left) and i+1 (right).
         const std::size_t n = chain.size();
-        for (std::size_t i = 0; i < n; ++i) {
-          double row = (stiffness[i] + stiffness[i + 1]) / chain.mass[i];
-          if (i > 0) row += stiffness[i] / std::sqrt(chain.mass[i - 1] * chain.mass[i]);
-          if (i + 1 < n) row += stiffness[i + 1] / std::sqrt(chain.mass[i] * chain.mass[i + 1]);
-          largest = std::max(largest, row);
-        }
-        return std::sqrt(largest);
+        SymTridiagonal t;
+        for (std::size_t i = 0; i < n; ++i) t.diagonal.push_back((stiffness[i] + stiffness[i + 1]) / chain.mass[i]);
+        for (std::size_t i = 0; i + 1 < n; ++i)
+          t.off_diagonal.push_back(stiffness[i + 1] / std::sqrt(chain.mass[i] * chain.mass[i + 1]));
+        return std::sqrt(std::max(0.0, gershgorin_bounds(t, RowSum::left_to_right).second));
       },
       law);
 }

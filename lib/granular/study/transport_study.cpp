@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "granular/detail/enum_names.hpp"
 #include "granular/dynamics/force_law.hpp"
 #include "granular/dynamics/initial_conditions.hpp"
 #include "granular/ensemble/ensemble_runner.hpp"
@@ -14,16 +15,13 @@
 
 namespace granular {
 
-Kick parse_kick(const std::string& name) {
-  if (name == "displacement") return Kick::displacement;
-  if (name == "velocity") return Kick::velocity;
-  if (name == "mode") return Kick::mode;
-  throw InvalidInput("ic", " '" + name + "': expected displacement, velocity or mode");
-}
+constexpr auto kick_names =
+    detail::enum_names<Kick>("ic",
+                             {{Kick::displacement, "displacement"}, {Kick::velocity, "velocity"}, {Kick::mode, "mode"}});
 
-std::string to_string(Kick kick) {
-  return kick == Kick::displacement ? "displacement" : kick == Kick::velocity ? "velocity" : "mode";
-}
+Kick parse_kick(const std::string& name) { return kick_names.parse(name); }
+
+std::string to_string(Kick kick) { return std::string(kick_names.name_of(kick)); }
 
 namespace {
 /// The mode kick of a case: its amplitude is α unless an energy is given.

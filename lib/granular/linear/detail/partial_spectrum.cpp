@@ -5,6 +5,9 @@
 #include <limits>
 #include <numbers>
 #include <numeric>
+#include <string>
+
+#include <Eigen/Core>
 
 #include "granular/error.hpp"
 #include "granular/linear/detail/lapack_eigensolver.hpp"
@@ -124,7 +127,7 @@ Candidates by_index(SpectrumMethod method, const SymTridiagonal& t, long first, 
 }
 
 Candidates shift_invert(SpectrumMethod method, const SymTridiagonal& t, double sigma, int count,
-                        const PartialSpectrumConfig& config) {
+                        const SpectrumConfig& config) {
   ShiftInvertConfig c;
   c.count = count;
   c.tolerance = config.tolerance;
@@ -140,9 +143,9 @@ Candidates shift_invert(SpectrumMethod method, const SymTridiagonal& t, double s
 }
 
 /// One attempt by config.method, unchecked.
-PartialSpectrum solve_partial(const SymTridiagonal& t, const std::vector<double>& inverse_sqrt_mass,
-                              const ModeSelection& selection, const PartialSpectrumConfig& config,
-                              const TridiagonalOperator& op, double scale) {
+Spectrum solve_partial(const SymTridiagonal& t, const std::vector<double>& inverse_sqrt_mass,
+                       const ModeSelection& selection, const SpectrumConfig& config, const TridiagonalOperator& op,
+                       double scale) {
   const std::size_t n = t.size();
 
   Candidates cand;
@@ -154,7 +157,7 @@ PartialSpectrum solve_partial(const SymTridiagonal& t, const std::vector<double>
     if (upto > below) {
       if (config.method == SpectrumMethod::lapack || config.method == SpectrumMethod::bisect) {
         cand = by_index(config.method, t, static_cast<long>(below) + 1, static_cast<long>(upto), inverse_sqrt_mass,
-                        config.keep_vectors, config.lanes);
+                        config.vectors, config.lanes);
       } else {
         // The window is symmetric about its centre in ω², so its modes are the (upto − below)
         // eigenvalues nearest the centre.
@@ -177,7 +180,7 @@ PartialSpectrum solve_partial(const SymTridiagonal& t, const std::vector<double>
       const long first = std::max(1L, c - static_cast<long>(k)),
                  last = std::min(static_cast<long>(n), c + static_cast<long>(k) + 1);
       if (config.method == SpectrumMethod::lapack) {
-        cand = by_index(config.method, t, first, last, inverse_sqrt_mass, config.keep_vectors, config.lanes);
+        cand = by_index(config.method, t, first, last, inverse_sqrt_mass, config.vectors, config.lanes);
         chosen = nearest_in_frequency(cand.values, f0, k);
       } else {
         // Values first (coarse where isolated), then vectors for the K chosen plus one on each
@@ -193,7 +196,7 @@ PartialSpectrum solve_partial(const SymTridiagonal& t, const std::vector<double>
         cand.values.assign(values.begin() + (a - first), values.begin() + (b - first) + 1);
         std::vector<double> sub(brackets.begin() + 2 * (a - first), brackets.begin() + 2 * (b - first) + 2);
         cand.vectors = bisect_pairs(t, a, b, cand.values, b - a + 1 <= 64 ? std::move(sub) : std::vector<double>{},
-                                    inverse_sqrt_mass, config.keep_vectors, cand.ipr, cand.residual, config.lanes);
+                                    inverse_sqrt_mass, config.vectors, cand.ipr, cand.residual, config.lanes);
         cand.first_mode = a;
         cand.method = "bisect";
         apply_test_seam(cand);
@@ -256,14 +259,12 @@ PartialSpectrum solve_partial(const SymTridiagonal& t, const std::vector<double>
     }
   }
 
-  PartialSpectrum out;
-  out.method = cand.method;
-  out.restarts = cand.restarts;
-  out.candidates = static_cast<int>(cand.values.size());
-  if (chosen.empty()) {
-    if (config.keep_vectors) out.vectors.resize(static_cast<Eigen::Index>(n), 0);
-    return out;
-  }
+  Spectrum out;
+  out.beads = n;
+  out.info.method = cand.method;
+  out.info.restarts = cand.restarts;
+  out.info.candidates = static_cast<int>(cand.values.size());
+  if (chosen.empty()) return out;
   const long first = cand.first_mode > 0 ? cand.first_mode : first_mode_number(op, cand.values, scale);
   const std::size_t m = chosen.size();
   out.mode.resize(m);
@@ -271,7 +272,7 @@ PartialSpectrum solve_partial(const SymTridiagonal& t, const std::vector<double>
   out.freq_khz.resize(m);
   out.ipr.resize(m);
   out.residual.resize(m);
-  if (config.keep_vectors) out.vectors.resize(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(m));
+  if (config.vectors) out.vectors.resize(n * m);  // column-major: mode j at [j·N, (j+1)·N)
   std::vector<double> tw(n);
   const bool precomputed = !cand.ipr.empty();
   for (std::size_t j = 0; j < m; ++j) {
@@ -283,7 +284,7 @@ PartialSpectrum solve_partial(const SymTridiagonal& t, const std::vector<double>
       out.ipr[j] = cand.ipr[i];
       out.residual[j] = cand.residual[i] / scale;
     }
-    if (precomputed && !config.keep_vectors) continue;
+    if (precomputed && !config.vectors) continue;
     double* w = cand.vectors.col(static_cast<Eigen::Index>(i)).data();
     detail::normalize_mode(w, n);
     if (!precomputed) {
@@ -297,7 +298,7 @@ PartialSpectrum solve_partial(const SymTridiagonal& t, const std::vector<double>
       out.ipr[j] = displacement_ipr(w, inverse_sqrt_mass.data(), n);
       out.residual[j] = std::sqrt(r2) / scale;
     }
-    if (config.keep_vectors) std::copy(w, w + n, out.vectors.col(static_cast<Eigen::Index>(j)).data());
+    if (config.vectors) std::copy(w, w + n, out.vectors.data() + j * n);
   }
   return out;
 }
@@ -313,7 +314,7 @@ PartialSpectrum solve_partial(const SymTridiagonal& t, const std::vector<double>
 ///     eigenvalues strictly (by δ) inside the frequency ball of the farthest returned mode are
 ///     exactly the returned ones there.
 /// Returns an empty string when the result passes, else what failed.
-std::string node_count_check(const PartialSpectrum& p, const ModeSelection& selection, const TridiagonalOperator& op,
+std::string node_count_check(const Spectrum& p, const ModeSelection& selection, const TridiagonalOperator& op,
                              double scale) {
   const std::size_t m = p.size();
   auto in = [&](double a, double b) {  // returned values in [a, b)
@@ -381,8 +382,8 @@ namespace detail {
 CandidateSeam hide_candidate = nullptr;
 }  // namespace detail
 
-PartialSpectrum partial_spectrum(const SymTridiagonal& t, const std::vector<double>& inverse_sqrt_mass,
-                                 const ModeSelection& selection, const PartialSpectrumConfig& config) {
+Spectrum partial_spectrum(const SymTridiagonal& t, const std::vector<double>& inverse_sqrt_mass,
+                          const ModeSelection& selection, const SpectrumConfig& config) {
   const std::size_t n = t.size();
   if (n < 2) throw InvalidInput("N", " " + std::to_string(n) + ": a chain needs at least 2 beads");
   if (inverse_sqrt_mass.size() != n)
@@ -393,26 +394,25 @@ PartialSpectrum partial_spectrum(const SymTridiagonal& t, const std::vector<doub
   if (!std::isfinite(scale) || !(scale > 0)) throw NumericalError("dynamical matrix has a non-finite or zero scale");
   std::string failure;
   try {
-    PartialSpectrum out = solve_partial(t, inverse_sqrt_mass, selection, config, op, scale);
+    Spectrum out = solve_partial(t, inverse_sqrt_mass, selection, config, op, scale);
     failure = node_count_check(out, selection, op, scale);
     if (failure.empty()) return out;
-    failure = out.method + ": " + failure;
+    failure = out.info.method + ": " + failure;
   } catch (const NumericalError& e) {
     if (config.method == SpectrumMethod::bisect) throw;
     failure = e.what();
   }
   // Recovery: bisection numbers its modes by the same inertia count, so it cannot skip one.
-  PartialSpectrumConfig again = config;
+  SpectrumConfig again = config;
   again.method = SpectrumMethod::bisect;
   if (config.method == SpectrumMethod::bisect)
     throw NumericalError("partial spectrum failed the node-count check: " + failure);
-  PartialSpectrum out = solve_partial(t, inverse_sqrt_mass, selection, again, op, scale);
+  Spectrum out = solve_partial(t, inverse_sqrt_mass, selection, again, op, scale);
   const std::string second = node_count_check(out, selection, op, scale);
   if (!second.empty())
     throw NumericalError("partial spectrum failed the node-count check: " + failure + "; bisect fallback: " + second);
-  out.method = std::string(to_string(config.method)) + "→" + out.method;
-  out.fallbacks = 1;
-  out.note = failure;
+  out.info.method = std::string(to_string(config.method)) + "→" + out.info.method;
+  out.info.fallbacks = 1;
   return out;
 }
 

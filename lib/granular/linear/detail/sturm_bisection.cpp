@@ -8,6 +8,7 @@
 
 #include "granular/error.hpp"
 #include "granular/linear/detail/lapack.hpp"
+#include "granular/linear/detail/sturm_count.hpp"
 #include "granular/linear/tridiagonal_operator.hpp"
 
 #if defined(__AVX512F__)
@@ -18,44 +19,14 @@ namespace granular {
 
 namespace {
 
-double pivot_floor(const SymTridiagonal& t) {
-  double max_e2 = 1;
-  for (double e : t.off_diagonal) max_e2 = std::max(max_e2, e * e);
-  return std::numeric_limits<double>::min() * max_e2;
-}
-
-/// L shifts per sweep; the inner loop over lanes is what the compiler vectorizes.
-template <int L>
-void count_block(const SymTridiagonal& t, double pivmin, const double* shift, long* count) {
-  const std::size_t n = t.size();
-  const double* a = t.diagonal.data();
-  const double* b = t.off_diagonal.data();
-  double p[L], s[L], c[L];
-  for (int j = 0; j < L; ++j) {
-    s[j] = shift[j];
-    double q = a[0] - s[j];
-    q = std::fabs(q) <= pivmin ? -pivmin : q;  // dstebz's guard: a zero pivot counts as negative
-    p[j] = q;
-    c[j] = q < 0 ? 1.0 : 0.0;
-  }
-  for (std::size_t i = 1; i < n; ++i) {
-    const double ai = a[i], b2 = b[i - 1] * b[i - 1];
-#pragma GCC ivdep
-    for (int j = 0; j < L; ++j) {
-      double q = (ai - s[j]) - b2 / p[j];
-      q = std::fabs(q) <= pivmin ? -pivmin : q;
-      p[j] = q;
-      c[j] += q < 0 ? 1.0 : 0.0;
-    }
-  }
-  for (int j = 0; j < L; ++j) count[j] = static_cast<long>(c[j]);
-}
+using detail::sturm_counts;
+using detail::sturm_pivot_floor;
 
 #if defined(__AVX512F__)
-/// The same count with AVX-512 and the division b²/p replaced by b² · r, r = 1/p from rcp14 and
-/// two Newton steps (2⁻¹⁴ → 2⁻⁵⁶ relative, i.e. within an ulp of the quotient): a Sturm count
-/// is exact for a matrix perturbed by O(ε) per step anyway, and vdivpd's throughput, not the
-/// memory, bounds the sweep. L lanes = L/8 independent vector chains.
+/// The Sturm count of detail/sturm_count.hpp with AVX-512 and the division b²/p replaced by
+/// b² · r, r = 1/p from rcp14 and two Newton steps (2⁻¹⁴ → 2⁻⁵⁶ relative, i.e. within an ulp of
+/// the quotient): a Sturm count is exact for a matrix perturbed by O(ε) per step anyway, and
+/// vdivpd's throughput, not the memory, bounds the sweep. L lanes = L/8 independent vector chains.
 template <int L>
 void count_block_avx512(const SymTridiagonal& t, double pivmin, const double* shift, long* count) {
   static_assert(L % 8 == 0);
@@ -91,6 +62,16 @@ void count_block_avx512(const SymTridiagonal& t, double pivmin, const double* sh
 }
 #endif
 
+/// One sweep of L shifts: the AVX-512 kernel where the build has it, else the scalar lanes.
+template <int L>
+void sweep(const SymTridiagonal& t, double pivmin, const double* shift, long* count) {
+#if defined(__AVX512F__)
+  count_block_avx512<L>(t, pivmin, shift, count);
+#else
+  sturm_counts<L>(t, pivmin, shift, count);
+#endif
+}
+
 void count_many(const SymTridiagonal& t, double pivmin, const std::vector<double>& shifts, std::vector<long>& counts) {
   constexpr int L = 32;
   const std::size_t m = shifts.size();
@@ -100,23 +81,13 @@ void count_many(const SymTridiagonal& t, double pivmin, const std::vector<double
     long c[L];
     const std::size_t k = std::min<std::size_t>(L, m - j0);
     for (std::size_t j = 0; j < L; ++j) s[j] = shifts[j0 + std::min(j, k - 1)];  // pad with a repeat
-#if defined(__AVX512F__)
     if (k <= 8) {
-      count_block_avx512<8>(t, pivmin, s, c);
+      sweep<8>(t, pivmin, s, c);
     } else if (k <= 16) {
-      count_block_avx512<16>(t, pivmin, s, c);
+      sweep<16>(t, pivmin, s, c);
     } else {
-      count_block_avx512<32>(t, pivmin, s, c);
+      sweep<32>(t, pivmin, s, c);
     }
-#else
-    if (k <= 8) {
-      count_block<8>(t, pivmin, s, c);
-    } else if (k <= 16) {
-      count_block<16>(t, pivmin, s, c);
-    } else {
-      count_block<32>(t, pivmin, s, c);
-    }
-#endif
     for (std::size_t j = 0; j < k; ++j) counts[j0 + j] = c[j];
   }
 }
@@ -125,7 +96,7 @@ void count_many(const SymTridiagonal& t, double pivmin, const std::vector<double
 
 std::vector<long> count_below_many(const SymTridiagonal& t, const std::vector<double>& shifts) {
   std::vector<long> c;
-  count_many(t, pivot_floor(t), shifts, c);
+  count_many(t, sturm_pivot_floor(t), shifts, c);
   return c;
 }
 
@@ -135,8 +106,8 @@ std::vector<double> bisect_eigenvalues(const SymTridiagonal& t, int first, int l
   if (first < 1 || last < first || last > n)
     throw InvalidInput("eigenvalue index range " + std::to_string(first) + ".." + std::to_string(last) +
                        ": must satisfy 1 <= first <= last <= N = " + std::to_string(n));
-  const double pivmin = pivot_floor(t);
-  auto [glo, ghi] = TridiagonalOperator(t).spectrum_bounds();
+  const double pivmin = sturm_pivot_floor(t);
+  auto [glo, ghi] = gershgorin_bounds(t);
   const double pad = 4 * std::numeric_limits<double>::epsilon() * std::max(std::fabs(glo), std::fabs(ghi)) + 2 * pivmin;
   glo -= pad;
   ghi += pad;

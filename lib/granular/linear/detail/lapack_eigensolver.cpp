@@ -5,27 +5,21 @@
 #include <limits>
 #include <string>
 
+#include "granular/detail/enum_names.hpp"
 #include "granular/error.hpp"
 #include "granular/linear/detail/lapack.hpp"
 #include "granular/linear/tridiagonal_operator.hpp"
 
 namespace granular {
 
-std::string_view to_string(LapackDriver driver) {
-  switch (driver) {
-    case LapackDriver::stevr: return "stevr";
-    case LapackDriver::stemr: return "stemr";
-    case LapackDriver::stevd: return "stevd";
-    case LapackDriver::steqr: return "steqr";
-  }
-  return "?";
-}
+constexpr auto driver_names = detail::enum_names<LapackDriver>("driver", {{LapackDriver::stevr, "stevr"},
+                                                                          {LapackDriver::stemr, "stemr"},
+                                                                          {LapackDriver::stevd, "stevd"},
+                                                                          {LapackDriver::steqr, "steqr"}});
 
-LapackDriver parse_lapack_driver(std::string_view name) {
-  for (auto d : {LapackDriver::stevr, LapackDriver::stemr, LapackDriver::stevd, LapackDriver::steqr})
-    if (name == to_string(d)) return d;
-  throw InvalidInput("driver", " '" + std::string(name) + "': expected stevr, stemr, stevd or steqr");
-}
+std::string_view to_string(LapackDriver driver) { return driver_names.name_of(driver); }
+
+LapackDriver parse_lapack_driver(std::string_view name) { return driver_names.parse(name); }
 
 void LapackEigensolver::solve(const SymTridiagonal& t, bool want_vectors, EigenDecomposition& out) {
   const int n = static_cast<int>(t.size());
