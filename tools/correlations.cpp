@@ -1,6 +1,7 @@
 // correlations: ensemble mean and spread of the Pearson coefficient ρ(d) of bead types (k types
 // or polydisperse radii: bead masses) with their cyclic shifts, beside the infinite-chain formula
 // (SPEC §2).
+#include <nlohmann/json.hpp>
 #include <string>
 
 #include "common/chain_options.hpp"

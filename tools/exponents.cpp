@@ -2,6 +2,7 @@
 // for every chain kind × F0 × kick, each averaged over an ensemble; Markdown tables on stdout,
 // and with --compare-paper our γ beside the paper's Table I.
 #include <cstdio>
+#include <nlohmann/json.hpp>
 #include <string>
 
 #include "common/dynamics_options.hpp"

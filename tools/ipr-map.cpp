@@ -1,6 +1,7 @@
 // ipr-map: mean frequency and inverse participation ratio of every mode of disordered
 // chains, over a grid of size ratios ξ and probabilities q (the paper's IPR-map figure).
 #include <limits>
+#include <nlohmann/json.hpp>
 #include <string>
 
 #include "common/chain_options.hpp"

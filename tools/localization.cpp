@@ -2,6 +2,7 @@
 // matrices — the Lyapunov exponent λ(f) with its statistical error, ℓ = 1/λ, and the integrated
 // and differential density of states from node counts (SPEC §3, "Infinite chains"). A random
 // chain is streamed, so N = 1e8 needs no more memory than N = 100.
+#include <nlohmann/json.hpp>
 #include <string>
 
 #include "common/bead_source_options.hpp"

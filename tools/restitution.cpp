@@ -2,6 +2,7 @@
 // Kuwabara–Kono contact damping (SPEC §4 "Beyond the paper"), integrated with the chain's damped
 // splitting scheme, beside the small-damping law 1 − e ≈ 1.15344 γ_KK (A/μ)^{2/5} v^{1/5}. To
 // calibrate γ_KK against a measured e: scan --kk-gamma at the experiment's impact speed.
+#include <nlohmann/json.hpp>
 #include <string>
 
 #include "common/metadata.hpp"

@@ -2,6 +2,7 @@
 // frequency: all of them, or the K nearest a frequency (--near/--count) or those in a band
 // (--window), by any solver of granular::spectrum. Under `mpirun -np P ... --method slepc` the
 // matrix rows are spread over the ranks; rank 0 writes.
+#include <nlohmann/json.hpp>
 #include <string>
 
 #include "common/chain_options.hpp"

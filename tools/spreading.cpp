@@ -2,6 +2,7 @@
 // ensemble of them (SPEC §4). PREFIX.csv (t,m2,ipr,energy_error,m2_centroid) and PREFIX.json
 // (parameters, exponents); optionally the final state, profile, forces, energy map, g(ν).
 #include <cstdio>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 

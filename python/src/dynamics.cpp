@@ -5,6 +5,7 @@
 // library's own JSON and CSV writers, wrapped by granular._results. The library's own run with
 // observers is granular.spread (observers.cpp).
 #include <cmath>
+#include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
 

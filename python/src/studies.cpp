@@ -1,6 +1,7 @@
 // The linear studies: granular.ipr_map (the paper's IPR map) and granular.correlations (the
 // ensemble of bead-type correlations). Both run long: the GIL is released, threads= spreads the
 // chains over cores (results do not depend on it), progress=True draws a bar, Ctrl-C stops them.
+#include <nlohmann/json.hpp>
 #include <string>
 
 #include "bindings.hpp"
@@ -312,7 +313,7 @@ void bind_studies(py::module_& m) {
           beads.source = random_beads(kind, p);
           beads.description = {{"F0_N", F0},
                                {"material", describe(steel)},
-                               {"walls", "flat, same material as the beads"},
+                               {"walls", flat_walls_description},
                                {"R1_m", R1},
                                {"xi", xi},
                                {"disorder", to_string(kind)},

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include "granular/error.hpp"
 #include "granular/study/transport_study.hpp"

@@ -2,6 +2,7 @@
 // under the linear force law (a splitting scheme applied to a linear system is a polynomial in
 // M^{-1}K, so it keeps every eigenspace), and to within the nonlinearity at small Hertz amplitude.
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cmath>

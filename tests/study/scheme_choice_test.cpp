@@ -3,6 +3,7 @@
 #include "granular/study/scheme_choice.hpp"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include "granular/dynamics/observables.hpp"
 #include "granular/error.hpp"

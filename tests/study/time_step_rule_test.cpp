@@ -4,6 +4,7 @@
 #include "granular/study/time_step_rule.hpp"
 
 #include <cmath>
+#include <nlohmann/json.hpp>
 
 #include <gtest/gtest.h>
 

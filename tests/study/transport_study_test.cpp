@@ -1,6 +1,7 @@
 #include "granular/study/transport_study.hpp"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include "granular/error.hpp"
 #include "granular/study/exponent_table.hpp"

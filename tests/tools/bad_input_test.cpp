@@ -1,6 +1,7 @@
 // Every tool's bad input: exit code 2, one line naming the option, and no output file
 // created or truncated (DESIGN.md, command-line contracts).
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include "tool_runner.hpp"
 

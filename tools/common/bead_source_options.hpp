@@ -4,6 +4,7 @@
 // can be far beyond the 1e8 beads of a stored chain with memory independent of N. --config and
 // --radii files are read whole (they are O(N) on disk anyway).
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <string>
 
 #include "chain_options.hpp"

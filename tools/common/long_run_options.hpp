@@ -9,6 +9,7 @@
 #include <vector>
 
 #include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
 
 #include "granular/ensemble/run_options.hpp"
 #include "granular/study/transport_study.hpp"

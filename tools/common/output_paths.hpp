@@ -6,6 +6,7 @@
 #include <vector>
 
 #include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
 
 #include "granular/error.hpp"
 #include "granular/io/atomic_file.hpp"

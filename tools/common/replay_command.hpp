@@ -6,6 +6,7 @@
 // material or a setting no flag spells), no command is printed and the reason is.
 #include <algorithm>
 #include <cstdint>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <vector>

@@ -1,6 +1,7 @@
 #include "granular/model/chain_recipe.hpp"
 
 #include <cmath>
+#include <nlohmann/json.hpp>
 
 #include "granular/error.hpp"
 #include "granular/model/centred_configuration.hpp"

@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 
 #include "granular/model/bead_distribution.hpp"
 #include "granular/model/bead_source.hpp"

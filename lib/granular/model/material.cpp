@@ -1,6 +1,7 @@
 #include "granular/model/material.hpp"
 
 #include <cmath>
+#include <nlohmann/json.hpp>
 #include <string>
 
 #include "granular/error.hpp"

@@ -3,7 +3,7 @@
 
 #include <numbers>
 
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 
 namespace granular {
 

@@ -1,6 +1,7 @@
 #include "granular/study/chain_length_rule.hpp"
 
 #include <cmath>
+#include <nlohmann/json.hpp>
 
 #include "granular/dynamics/scheme.hpp"
 #include "granular/error.hpp"

@@ -11,7 +11,7 @@
 // So Ω = ω_max is ≥ 2× the fastest speed, and N = 2⌈(1 + margin)·Ω T⌉ + 1 + 2·pad beads.
 #include <cstddef>
 
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 
 #include "granular/study/transport_study.hpp"
 

@@ -1,5 +1,6 @@
 #include "granular/study/correlation_files.hpp"
 
+#include <nlohmann/json.hpp>
 #include "granular/io/csv_writer.hpp"
 
 namespace granular {

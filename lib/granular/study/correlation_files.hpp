@@ -3,7 +3,7 @@
 // the JSON entries that describe it, so that the tool and Python write alike.
 #include <ostream>
 
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 
 #include "granular/study/correlation_study.hpp"
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <nlohmann/json.hpp>
 
 #include "granular/ensemble/checkpoint_log.hpp"
 #include "granular/io/csv_writer.hpp"

@@ -1,5 +1,6 @@
 #include "granular/study/ipr_map_files.hpp"
 
+#include <nlohmann/json.hpp>
 #include "granular/io/csv_writer.hpp"
 #include "granular/model/chain_recipe.hpp"
 

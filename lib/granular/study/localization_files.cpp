@@ -1,5 +1,6 @@
 #include "granular/study/localization_files.hpp"
 
+#include <nlohmann/json.hpp>
 #include "granular/io/csv_writer.hpp"
 #include "granular/study/spectrum_file.hpp"
 

@@ -11,7 +11,7 @@
 #include <span>
 #include <vector>
 
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 
 #include "granular/dynamics/force_law.hpp"
 #include "granular/dynamics/state.hpp"

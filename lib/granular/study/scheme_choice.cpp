@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <nlohmann/json.hpp>
 
 #include "granular/dynamics/force_law.hpp"
 #include "granular/dynamics/integrator.hpp"

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <nlohmann/json.hpp>
 
 #include "granular/io/atomic_file.hpp"
 #include "granular/io/csv_writer.hpp"

@@ -6,7 +6,7 @@
 #include <ostream>
 #include <string>
 
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 
 #include "granular/linear/band_edges.hpp"
 #include "granular/linear/spectrum.hpp"

@@ -1,5 +1,6 @@
 #include "granular/study/spreading_files.hpp"
 
+#include <nlohmann/json.hpp>
 #include "granular/io/csv_writer.hpp"
 #include "granular/io/hdf5_file.hpp"
 #include "granular/number_format.hpp"

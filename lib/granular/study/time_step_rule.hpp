@@ -12,7 +12,7 @@
 #include <optional>
 #include <vector>
 
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 
 #include "granular/dynamics/force_law.hpp"
 #include "granular/dynamics/scheme.hpp"

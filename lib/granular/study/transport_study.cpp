@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <nlohmann/json.hpp>
 
 #include "granular/detail/enum_names.hpp"
 #include "granular/dynamics/force_law.hpp"

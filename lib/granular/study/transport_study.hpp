@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 
 #include "granular/analysis/bootstrap.hpp"
 #include "granular/analysis/exponent_report.hpp"
