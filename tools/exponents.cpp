@@ -98,9 +98,14 @@ int main(int argc, char** argv) {
                      ExponentRunOptions run;
                      run.threads = run_options.threads;
                      run.checkpoint_prefix = output + ".checkpoint";
-                     run.resume = run_options.resume;
+                     run.resume = run_options.resuming();
+                     run.accept_other_version = run_options.other_version;
                      run.progress = run_options.quiet || !mpi.root() ? 0 : -1;
                      run.cancelled = tool::stop_on_interrupt("exponents");
+                     std::vector<std::string> logs;  // read before the run, which rewrites them
+                     for (std::size_t i = 0; i < cases.size(); ++i)
+                       logs.push_back(run.checkpoint_prefix + "." + std::to_string(i));
+                     const nlohmann::json resumed = tool::resumed_code(run_options, logs);
                      run.skip_failed = run_options.skip_failed;
                      const auto cells =
                          tool::replaying_failures([&] { return run_exponent_table(config, run); }, argc, argv);
@@ -131,6 +136,7 @@ int main(int argc, char** argv) {
                                            {"mpi_ranks", mpi.size()}};
                      meta["cases"] = cases_json;
                      meta["time_step_rule"] = step_rule;
+                     if (!resumed.is_null()) meta["resumed_checkpoint"] = resumed;
                      if (auto_n) meta["chain_length_rule"] = length_rules;
                      std::optional<AtomicFile> comparison;
                      if (compare) {

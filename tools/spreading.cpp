@@ -41,7 +41,7 @@ int main(int argc, char** argv) {
       app, argc, argv,
       [&] {
         tool::Metadata meta("spreading", argc, argv);
-        const bool ensemble = options.realizations > 1 || run.resume;
+        const bool ensemble = options.realizations > 1 || run.resuming();
         if (run.threads < 0) throw InvalidInput("--threads " + std::to_string(run.threads) + ": must be >= 0");
         tool::KickedCase k = tool::kicked_case(options, ensemble);
         const tool::SelectedChain& selected = k.selected;
@@ -62,6 +62,8 @@ int main(int argc, char** argv) {
                             "--output/--final-state/--energy-map/--spectrum");
         const bool single = more.single() || !dynamics.beyond.deviation.empty();  // a run of its own
 
+        // Read before the run: resuming rewrites the checkpoint under this code's name.
+        const nlohmann::json resumed = ensemble ? tool::resumed_code(run, {checkpoint}) : nullptr;
         std::optional<TransportSummary> summary;
         if (ensemble) {
           summary = tool::run_ensemble(c, run, checkpoint, "spreading", argc, argv);
@@ -96,6 +98,7 @@ int main(int argc, char** argv) {
           meta["parameters"]["beta_m_s"] = kicked.beta;  // the β used
         if (c.kick == Kick::mode) meta["parameters"]["mode_used"] = to_json(kicked.mode);
         meta["seed"] = c.chain.seed;
+        if (!resumed.is_null()) meta["resumed_checkpoint"] = resumed;
         meta["time_step_rule"] = step_rule;
         for (const char* key : {"gamma", "gamma_err", "gamma_real_err", "eta", "eta_err", "eta_real_err", "power_law"})
           meta[key] = nullptr;

@@ -2,6 +2,7 @@
 // Everything a program using the toolkit needs, in one include. The pipeline reads top to bottom:
 // a chain (model) → its dynamical matrix and spectrum (linear) → its nonlinear dynamics (dynamics)
 // → many realizations (ensemble) → what the averages say (analysis) → the paper's studies (study).
+#include "granular/code_identity.hpp"
 #include "granular/error.hpp"
 #include "granular/number_format.hpp"
 

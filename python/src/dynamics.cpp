@@ -10,6 +10,7 @@
 #include <string>
 
 #include "bindings.hpp"
+#include "granular/code_identity.hpp"
 #include "granular/dynamics/force_law.hpp"
 #include "granular/dynamics/spreading.hpp"
 #include "granular/ensemble/checkpoint_log.hpp"
@@ -356,8 +357,8 @@ void bind_dynamics(py::module_& m) {
          const std::string& force_law, long long samples, const std::string& sampling, const py::object& fit,
          double fit_step, double t_star, double kappa, long long bootstrap, bool active_window, double window_threshold,
          double reference_max_step, double max_energy_error, const std::string& energy_guard, bool profile,
-         long long threads, const py::object& checkpoint, bool resume, bool progress, double damping_time,
-         double kk_gamma, bool mle, long long renormalize) {
+         long long threads, const py::object& checkpoint, bool resume, bool resume_other_version, bool progress,
+         double damping_time, double kk_gamma, bool mle, long long renormalize) {
         const DynamicsKeywords k{alpha,
                                  beta,
                                  site,
@@ -396,16 +397,20 @@ void bind_dynamics(py::module_& m) {
         const nlohmann::json step_rule = settle_scheme_and_step(c, integrator == "auto", !dt.is_none());
         const int thread_request = static_cast<int>(checked_size(threads, "threads", 0, 4096));
         const std::string log = checkpoint.is_none() ? std::string() : py::str(checkpoint).cast<std::string>();
-        if (resume && log.empty()) bad_value("resume", ": needs checkpoint= (the file of the interrupted run)");
+        if ((resume || resume_other_version) && log.empty())
+          bad_value("resume", ": needs checkpoint= (the file of the interrupted run)");
         // The chain of realization 0, as the tool describes it (and the β it kicks it with).
         const KickedChain first = kick(c, c.chain.chain(0));
 
+        // Read before the run, which rewrites the checkpoint under this code's name.
+        const std::string made_by = resume_other_version ? CheckpointLog::code_of(log) : std::string();
         TransportSummary s;
         run_long("transport", c.realizations, progress, [&](const LongRun& control) {
           RunOptions run;
           run.threads = thread_request;
           run.checkpoint = log;
-          run.resume = resume;
+          run.resume = resume || resume_other_version;
+          run.accept_other_version = resume_other_version;
           run.progress = control.meter;
           run.cancelled = control.cancelled;
           s = run_transport_study(c, run);
@@ -417,6 +422,9 @@ void bind_dynamics(py::module_& m) {
         meta["parameters"]["chain"] = describe(c.chain, 0);
         if (c.kick == Kick::velocity && !c.match_beta) meta["parameters"]["beta_m_s"] = first.beta;
         meta["seed"] = c.chain.seed;
+        if (!made_by.empty())
+          meta["resumed_checkpoint"] = {{"made_by", made_by},
+                                        {"resumed_by", std::string(code_version()) + " (commit " + code_commit() + ")"}};
         const nlohmann::json fitted = exponent_keys(s.exponents, c.centre);
         meta.update(fitted);
         meta["ensemble"] = {{"realizations", s.realizations},
@@ -460,7 +468,8 @@ void bind_dynamics(py::module_& m) {
       py::kw_only(), py::arg("disorder") = "A", py::arg("N") = 2501, py::arg("q") = 0.5, py::arg("xi") = 0.5,
       py::arg("F0") = 10.0, py::arg("R1") = paper_r1, py::arg("seed") = 1, py::arg("realizations") = 100,
       py::arg("ic") = "displacement", GRANULAR_DYNAMICS_ARGS, py::arg("profile") = false, py::arg("threads") = 0,
-      py::arg("checkpoint") = py::none(), py::arg("resume") = false, py::arg("progress") = false, GRANULAR_BEYOND_ARGS,
+      py::arg("checkpoint") = py::none(), py::arg("resume") = false, py::arg("resume_other_version") = false,
+      py::arg("progress") = false, GRANULAR_BEYOND_ARGS,
       (std::string("An ensemble of spreading runs: realizations 0..R-1 of seed `seed` of a disordered chain, each "
                    "kicked and integrated to T, averaged and fitted (the spreading tool's --realizations R).\n\n"
                    "    disorder, N, q, xi, F0 [N], R1 [m], seed: the chains, as granular.random_chain's\n"
@@ -469,7 +478,8 @@ void bind_dynamics(py::module_& m) {
        "    profile: also average the site energies E_n(T)\n"
        "    threads: worker threads (0: every core); results do not depend on it\n"
        "    checkpoint: a file logging each finished realization (removed once the run completes); resume=True "
-       "continues an interrupted run from it and gives exactly the uninterrupted result\n"
+       "continues an interrupted run from it and gives exactly the uninterrupted result; a checkpoint another "
+       "granular version made is refused unless resume_other_version=True (both are named in metadata)\n"
        "    progress: draw a progress bar\n"
        "Returns a granular.Transport: t [s], m2, m2_centroid, ipr, energy_error with their standard errors (_se), "
        "profile, gamma, eta (with realization errors gamma_real_err, eta_real_err from the bootstrap) and every report "
@@ -487,8 +497,8 @@ void bind_dynamics(py::module_& m) {
          const py::object& fit, double fit_step, double t_star, double kappa, long long bootstrap, bool active_window,
          double window_threshold, double reference_max_step, double max_energy_error, const std::string& energy_guard,
          const py::object& profile_F0, long long profile_realizations, const py::object& compare_paper,
-         long long threads, const py::object& checkpoint, bool resume, bool progress, double damping_time,
-         double kk_gamma, bool mle, long long renormalize) {
+         long long threads, const py::object& checkpoint, bool resume, bool resume_other_version, bool progress,
+         double damping_time, double kk_gamma, bool mle, long long renormalize) {
         const DynamicsKeywords k{alpha,
                                  beta,
                                  site,
@@ -542,7 +552,8 @@ void bind_dynamics(py::module_& m) {
         for (const auto& c : cases) total += c.realizations;
         const int thread_request = static_cast<int>(checked_size(threads, "threads", 0, 4096));
         const std::string prefix = checkpoint.is_none() ? std::string() : py::str(checkpoint).cast<std::string>();
-        if (resume && prefix.empty()) bad_value("resume", ": needs checkpoint= (the prefix of the interrupted run)");
+        if ((resume || resume_other_version) && prefix.empty())
+          bad_value("resume", ": needs checkpoint= (the prefix of the interrupted run)");
         const bool compare = py::isinstance<py::str>(compare_paper) || py::bool_(compare_paper);
         const std::string paper_path = py::isinstance<py::str>(compare_paper)
                                            ? compare_paper.cast<std::string>()
@@ -554,7 +565,8 @@ void bind_dynamics(py::module_& m) {
           ExponentRunOptions run;
           run.threads = thread_request;
           run.checkpoint_prefix = prefix;
-          run.resume = resume;
+          run.resume = resume || resume_other_version;
+          run.accept_other_version = resume_other_version;
           run.progress = 0;
           run.meter = control.meter;
           run.cancelled = control.cancelled;
@@ -607,7 +619,8 @@ void bind_dynamics(py::module_& m) {
       py::arg("q") = 0.5, py::arg("realizations") = 500, py::arg("seed") = 1, GRANULAR_DYNAMICS_ARGS,
       py::arg("profile_F0") = std::vector<double>{10, 0.1, 0}, py::arg("profile_realizations") = 100,
       py::arg("compare_paper") = false, py::arg("threads") = 0, py::arg("checkpoint") = py::none(),
-      py::arg("resume") = false, py::arg("progress") = false, GRANULAR_BEYOND_ARGS,
+      py::arg("resume") = false, py::arg("resume_other_version") = false, py::arg("progress") = false,
+      GRANULAR_BEYOND_ARGS,
       (std::string("The paper's transport study (the exponents tool): gamma (m2 ~ t^gamma) and eta (P^-1 ~ t^-eta) "
                    "for every chain kind x F0 x kick, each an ensemble of `realizations` (h runs one: it is "
                    "deterministic).\n\n"
@@ -618,7 +631,8 @@ void bind_dynamics(py::module_& m) {
        "    compare_paper: True (or the path of a table in its format) to compare gamma with the paper's Table I "
        "(z-scores with both error sources)\n"
        "    threads (0: every core); checkpoint: a prefix, case i logs to <prefix>.<i> (removed once done); "
-       "resume=True continues an interrupted table; progress: a progress bar\n"
+       "resume=True continues an interrupted table (resume_other_version=True: also one another granular version "
+       "made); progress: a progress bar\n"
        "Returns a granular.ExponentTable: table (the tool's CSV columns as arrays; with mle also mle, mle_real_err, "
        "mle_sd: the mean X1(T) [1/s], its standard error over realizations, their standard deviation), curves (with "
        "mle also mle, mle_se: <X1(t)> [1/s] and its standard error), profiles, markdown, paper (the comparison, with "

@@ -16,6 +16,18 @@
 namespace granular::python {
 namespace {
 
+/// What Python receives for a Snapshot: a copy of the chain at that time. The library's Snapshot
+/// is a view of the integrator's state, which moves on after the call; an observer that keeps
+/// what it was given (frames.append(now)) must keep that time's state, not a later one.
+struct SnapshotCopy {
+  std::uint64_t step = 0;
+  double t = 0;
+  std::vector<double> u, v, energy;
+  double initial_energy = 0;
+};
+
+std::vector<double> copy(std::span<const double> x) { return {x.begin(), x.end()}; }
+
 /// A Python subclass of granular.Observer.
 class PyObserver : public Observer {
  public:
@@ -26,19 +38,17 @@ class PyObserver : public Observer {
   void finish(const Snapshot& at_T) override { call("finish", at_T, false); }
 
  private:
-  // The snapshot goes to Python by reference (it cannot be copied, and lives through the call).
   void call(const char* name, const Snapshot& snapshot, bool required) {
     py::gil_scoped_acquire gil;
     const py::function method = py::get_override(static_cast<const Observer*>(this), name);
     if (method) {
-      method(py::cast(&snapshot, py::return_value_policy::reference));
+      method(SnapshotCopy{snapshot.step, snapshot.t, copy(snapshot.u), copy(snapshot.v), copy(snapshot.energy()),
+                          snapshot.initial_energy()});
     } else if (required) {
       throw InvalidInput(std::string("observer: a granular.Observer must define ") + name + "()");
     }
   }
 };
-
-std::vector<double> copy(std::span<const double> x) { return {x.begin(), x.end()}; }
 
 std::size_t site_of(const py::object& site, const char* keyword) {
   const long long s = site.cast<long long>();
@@ -82,16 +92,16 @@ void bind_observers(py::module_& m) {
       .def_readonly("time_step", &RunPlan::time_step, "dt [s]")
       .def_readonly("duration", &RunPlan::duration, "T [s]");
 
-  py::class_<Snapshot>(m, "Snapshot", "The chain at one observed time (valid only inside observe/finish).")
-      .def_readonly("step", &Snapshot::step)
-      .def_readonly("t", &Snapshot::t, "[s]")
+  py::class_<SnapshotCopy>(m, "Snapshot", "The chain at one observed time (a copy: it may be kept).")
+      .def_readonly("step", &SnapshotCopy::step)
+      .def_readonly("t", &SnapshotCopy::t, "[s]")
       .def_property_readonly(
-          "u", [](const Snapshot& s) { return to_numpy(copy(s.u)); }, "displacements [m] (a copy)")
+          "u", [](const SnapshotCopy& s) { return to_numpy(s.u); }, "displacements [m] (a copy)")
       .def_property_readonly(
-          "v", [](const Snapshot& s) { return to_numpy(copy(s.v)); }, "velocities [m/s] (a copy)")
+          "v", [](const SnapshotCopy& s) { return to_numpy(s.v); }, "velocities [m/s] (a copy)")
       .def_property_readonly(
-          "energy", [](const Snapshot& s) { return to_numpy(copy(s.energy())); }, "site energies E_n [J] (a copy)")
-      .def_property_readonly("initial_energy", &Snapshot::initial_energy, "H(0) [J]");
+          "energy", [](const SnapshotCopy& s) { return to_numpy(s.energy); }, "site energies E_n [J] (a copy)")
+      .def_readonly("initial_energy", &SnapshotCopy::initial_energy, "H(0) [J]");
 
   py::class_<Observer, PyObserver>(
       m, "Observer",
@@ -99,8 +109,15 @@ void bind_observers(py::module_& m) {
       "observe(snapshot) is called at each, finish(snapshot) once at T. Call super().__init__().")
       .def(py::init<>())
       .def("schedule", &Observer::schedule, py::arg("plan"))
-      .def("observe", &Observer::observe, py::arg("snapshot"))
-      .def("finish", &Observer::finish, py::arg("snapshot"));
+      // What super().observe/finish(snapshot) reach from a subclass: the base's behaviour.
+      .def(
+          "observe",
+          [](Observer&, const SnapshotCopy&) {
+            throw InvalidInput("observer: a granular.Observer must define observe()");
+          },
+          py::arg("snapshot"))
+      .def(
+          "finish", [](Observer&, const SnapshotCopy&) {}, py::arg("snapshot"));
 
   py::class_<EnergySpreadObserver, Observer>(
       m, "EnergySpread",

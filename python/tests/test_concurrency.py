@@ -135,3 +135,17 @@ def test_ctrl_c_stops_an_ipr_map_and_the_module_keeps_working():
     assert time.monotonic() - started < 30
     small = gr.ipr_map(xi=0.5, q=0.5, N=20, realizations=3)
     assert np.all(np.isfinite(small.ipr))
+
+
+def test_a_checkpoint_of_another_version_is_refused(tmp_path):
+    checkpoint = str(tmp_path / "old.checkpoint")
+    with open(checkpoint, "w") as f:
+        f.write('granular-checkpoint 1 {"granular_commit":"0123456789ab","granular_version":"0.0.9","N":31}\n')
+    params = dict(disorder="A", N=31, realizations=2, T=1e-4, fit=(5e-5, 1e-4), threads=1, checkpoint=checkpoint)
+    with pytest.raises(ValueError, match=r"made by granular 0\.0\.9 \(commit 0123456789ab\), this is granular "
+                       + gr.__version__.replace(".", r"\.")) as refused:
+        gr.transport(**params, resume=True)
+    assert "resume_other_version" in str(refused.value)
+    # Accepted, the version no longer stops it: the parameters (here: other ones) decide.
+    with pytest.raises(ValueError, match="different parameters"):
+        gr.transport(**params, resume_other_version=True)

@@ -79,3 +79,31 @@ def test_bad_settings_name_their_keyword():
         gr.spread(chain, kick, [], T=1e-5, dt=0)
     with pytest.raises(ValueError, match="samples"):
         gr.EnergySpread(samples=1)
+
+
+def test_an_observer_may_keep_its_snapshots():
+    """Kept snapshots hold the state of their own time (not a later one, not freed memory)."""
+    chain = gr.anderson(N=61, F0=10, seed=3)
+    steps = [0, 5, 17, 40]
+
+    class Keeper(gr.Observer):
+        def __init__(self, copy_now):
+            super().__init__()
+            self.copy_now, self.frames = copy_now, []
+
+        def schedule(self, plan):
+            return steps
+
+        def observe(self, now):
+            self.frames.append((now.step, now.t, now.u.copy(), now.v.copy(), now.energy.copy()) if self.copy_now else now)
+
+    kept, recorded = Keeper(False), Keeper(True)
+    for observer in (kept, recorded):
+        gr.spread(chain, gr.displacement_kick(chain, 30, 1e-7), [observer], T=40e-6, dt=1e-6)
+    assert len(kept.frames) == len(recorded.frames) == len(steps)
+    assert not np.array_equal(recorded.frames[1][2], recorded.frames[-1][2])  # the state does move
+    for frame, (step, t, u, v, energy) in zip(kept.frames, recorded.frames):
+        assert (frame.step, frame.t) == (step, t)
+        assert np.array_equal(frame.u, u)
+        assert np.array_equal(frame.v, v)
+        assert np.array_equal(frame.energy, energy)

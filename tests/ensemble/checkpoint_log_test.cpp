@@ -1,9 +1,12 @@
 #include "granular/ensemble/checkpoint_log.hpp"
 
+#include <unistd.h>
+
 #include <atomic>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <limits>
 
 #include <gtest/gtest.h>
@@ -65,6 +68,27 @@ TEST(CheckpointLog, IgnoresATornLastLineAndCorruptedRecords) {
   EXPECT_EQ(resumed.size(), 1u);
   EXPECT_TRUE(resumed.count(0));
   CheckpointLog::remove_all(path);
+}
+
+TEST(CheckpointLog, ASymlinkAtItsTemporaryNamesIsNotFollowed) {
+  // The fixed PATH.tmp it once used and the PATH.tmp.<pid> of every temporary now, each pointing
+  // at a file of the user's: the log is written around them and the victim is untouched.
+  const std::string path = temp_path("planted"), victim = path + ".victim";
+  const std::string text = "a file of the user's\n";
+  std::ofstream(victim, std::ios::binary) << text;
+  for (const std::string& planted : {path + ".tmp", path + ".tmp." + std::to_string(::getpid())}) {
+    std::filesystem::create_symlink(victim, planted);
+    {
+      CheckpointLog log(path, "{}", {{0, {1.5}}});
+      log.append(1, {2.5});
+    }
+    EXPECT_EQ(CheckpointLog::load(path, "{}").size(), 2u);
+    std::ifstream in(victim, std::ios::binary);
+    EXPECT_EQ(std::string(std::istreambuf_iterator<char>(in), {}), text) << "through " << planted;
+    std::filesystem::remove(planted);
+    CheckpointLog::remove_all(path);
+  }
+  std::filesystem::remove(victim);
 }
 
 TEST(CheckpointLog, RefusesACheckpointOfOtherParameters) {

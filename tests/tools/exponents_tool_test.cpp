@@ -100,7 +100,10 @@ TEST(ExponentsTool, KilledRunResumesToTheSameBytes) {
 
 TEST(ExponentsTool, RefusesACheckpointOfOtherParameters) {
   const std::string dir = scratch_folder("exp-params");
-  { std::ofstream(dir + "/x.checkpoint.0") << "granular-checkpoint 1 {\"F0_N\":99}\n"; }
+  {
+    std::ofstream(dir + "/x.checkpoint.0")
+        << "granular-checkpoint 1 {\"F0_N\":99,\"granular_version\":\"" << GRANULAR_VERSION << "\"}\n";
+  }
   const ToolResult r = run_tool("exponents", job + " --realizations 2 --resume --output " + dir + "/x");
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("different parameters"), std::string::npos) << r.err;

@@ -4,6 +4,7 @@
 // discard a checkpoint unless --fresh says so.
 #include <signal.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -127,6 +128,71 @@ TEST(Interrupt, CtrlCStopsCleanlyPrintsTheResumeCommandAndKeepsTheCheckpoint) {
   EXPECT_EQ(fresh.exit_code, 0) << fresh.err;
   EXPECT_EQ(spreading_outputs(prefix), spreading_outputs(dir + "/whole"));
   EXPECT_EQ(run_tool("spreading", spreading_job + " --resume --fresh --output " + dir + "/y").exit_code, 2);
+  std::filesystem::remove_all(dir);
+}
+
+TEST(OutputClaim, FreshRemovesOnlyTheCheckpointsARunWrites) {
+  const std::string dir = scratch_folder("fresh-own"), prefix = dir + "/run";
+  const std::string job =
+      "--disorder A --N 101 --T 5e-4 --samples 20 --F0 0.1 --realizations 3 --bootstrap 20 --threads 1 --quiet";
+  for (const std::string tail : {"", ".rank1", ".0", ".0.rank2", ".tmp.12345", ".bak", ".old.1", ".rank1.orig"})
+    std::ofstream(prefix + ".checkpoint" + tail) << "content of " << tail << "\n";
+  const ToolResult r = run_tool("spreading", job + " --fresh --output " + prefix);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  for (const std::string gone : {"", ".rank1", ".0", ".0.rank2", ".tmp.12345"})
+    EXPECT_FALSE(std::filesystem::exists(prefix + ".checkpoint" + gone)) << gone;
+  for (const std::string kept : {".bak", ".old.1", ".rank1.orig"})  // the user's own files
+    EXPECT_EQ(read_file(prefix + ".checkpoint" + kept), "content of " + kept + "\n");
+  std::filesystem::remove_all(dir);
+}
+
+TEST(OutputClaim, ASymlinkAtTheLockIsRefusedAndItsTargetKept) {
+  const std::string dir = scratch_folder("lock-link"), victim = dir + "/victim";
+  std::ofstream(victim) << "a file of the user's\n";
+  std::filesystem::create_symlink(victim, dir + "/out.lock");  // --output out.csv: the prefix is out
+  const ToolResult r = run_tool("spectrum", "--N 20 --output " + dir + "/out.csv");
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("symbolic link"), std::string::npos) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_EQ(read_file(victim), "a file of the user's\n");
+  EXPECT_FALSE(std::filesystem::exists(dir + "/out.csv"));
+  std::filesystem::remove_all(dir);
+}
+
+TEST(CheckpointVersion, ACheckpointOfAnotherVersionIsRefusedUnlessAccepted) {
+  const std::string dir = scratch_folder("other-version");
+  ASSERT_EQ(run_tool("spreading", spreading_job + " --quiet --output " + dir + "/whole").exit_code, 0);
+  const std::string prefix = dir + "/run", checkpoint = prefix + ".checkpoint";
+  const pid_t run = spawn("exec '" + tool_path("spreading") + "' " + spreading_job + " --quiet --output " + prefix +
+                          " >/dev/null 2>&1");
+  ASSERT_TRUE(eventually([&] { return checkpoint_records(checkpoint) >= 3; })) << "no realization was logged";
+  kill(run, SIGKILL);
+  wait_for(run);
+  // The same checkpoint as if an earlier release had written it.
+  std::string text = read_file(checkpoint);
+  const std::string ours = std::string("\"granular_version\":\"") + GRANULAR_VERSION + "\"";
+  ASSERT_NE(text.find(ours), std::string::npos) << "the header records the version: " << text.substr(0, 300);
+  ASSERT_NE(text.find("\"granular_commit\":\""), std::string::npos) << "and the commit";
+  text.replace(text.find(ours), ours.size(), "\"granular_version\":\"0.0.9\"");
+  { std::ofstream(checkpoint, std::ios::binary) << text; }
+
+  const ToolResult refused = run_tool("spreading", spreading_job + " --quiet --resume --output " + prefix);
+  EXPECT_EQ(refused.exit_code, 2) << refused.err;
+  EXPECT_NE(refused.err.find("granular 0.0.9"), std::string::npos) << refused.err;
+  EXPECT_NE(refused.err.find(std::string("this is granular ") + GRANULAR_VERSION), std::string::npos) << refused.err;
+  EXPECT_NE(refused.err.find("--resume-other-version"), std::string::npos) << refused.err;
+  EXPECT_EQ(std::count(refused.err.begin(), refused.err.end(), '\n'), 1) << refused.err;
+  EXPECT_EQ(read_file(checkpoint), text) << "a refused resume leaves the checkpoint alone";
+  EXPECT_FALSE(std::filesystem::exists(prefix + ".csv"));
+
+  const ToolResult accepted =
+      run_tool("spreading", spreading_job + " --quiet --resume-other-version --output " + prefix);
+  ASSERT_EQ(accepted.exit_code, 0) << accepted.err;
+  EXPECT_EQ(spreading_outputs(prefix), spreading_outputs(dir + "/whole"));
+  const std::string json = read_file(prefix + ".json");
+  EXPECT_NE(json.find("\"resumed_checkpoint\""), std::string::npos) << json;
+  EXPECT_NE(json.find("\"made_by\": \"0.0.9 (commit "), std::string::npos) << json;
+  EXPECT_NE(json.find(std::string("\"resumed_by\": \"") + GRANULAR_VERSION + " (commit "), std::string::npos) << json;
   std::filesystem::remove_all(dir);
 }
 

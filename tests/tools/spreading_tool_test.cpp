@@ -157,6 +157,19 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"--active-window maybe", "--active-window"}, BadInput{"--spectrum out.csv", "two outputs"}),
     [](const auto& info) { return "case" + std::to_string(info.index); });
 
+// An energy map too large for this machine is refused before the run, naming the bytes it needs.
+TEST(SpreadingTool, AnEnergyMapThatCannotFitIsRefusedUpFront) {
+  const fs::path dir = fresh_dir("huge-map");
+  const ToolRun r =
+      run_spreading("--N 1001 --T 100 --energy-map map.h5 --map-samples 100000000 --output out --quiet", dir);
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_NE(r.err.find("error: --map-samples 100000000: the energy map needs 8.01e+11 bytes"), std::string::npos)
+      << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  for (const char* f : {"out.csv", "out.json", "map.h5"}) EXPECT_FALSE(fs::exists(dir / f)) << f;
+  fs::remove_all(dir);
+}
+
 }  // namespace
 
 namespace granular::testing {

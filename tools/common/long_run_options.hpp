@@ -11,6 +11,8 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include "granular/code_identity.hpp"
+#include "granular/ensemble/checkpoint_log.hpp"
 #include "granular/ensemble/run_options.hpp"
 #include "granular/study/transport_study.hpp"
 #include "metadata.hpp"
@@ -22,8 +24,9 @@ namespace granular::tool {
 
 struct LongRunOptions {
   int threads = 0;
-  bool resume = false, fresh = false, skip_failed = false, quiet = false;
-  CheckpointPolicy checkpoints() const { return {resume, fresh}; }
+  bool resume = false, fresh = false, skip_failed = false, quiet = false, other_version = false;
+  bool resuming() const { return resume || other_version; }
+  CheckpointPolicy checkpoints() const { return {resuming(), fresh}; }
 };
 
 inline void add_long_run_options(CLI::App& app, LongRunOptions& o) {
@@ -31,6 +34,8 @@ inline void add_long_run_options(CLI::App& app, LongRunOptions& o) {
       ->capture_default_str();
   app.add_flag("--resume", o.resume,
                "continue an interrupted run (same parameters) from its checkpoint PREFIX.checkpoint*");
+  app.add_flag("--resume-other-version", o.other_version,
+               "as --resume, and accept a checkpoint made by another granular version (both are named in the JSON)");
   app.add_flag("--fresh", o.fresh, "discard the checkpoint of an interrupted run on PREFIX and start again");
   app.add_flag("--skip-failed", o.skip_failed,
                "leave a realization that fails numerically out of the means (counted in the JSON and the last "
@@ -44,11 +49,28 @@ inline RunOptions run_options(const LongRunOptions& o, const std::string& checkp
   RunOptions run;
   run.threads = o.threads;
   run.checkpoint = checkpoint;
-  run.resume = o.resume;
+  run.resume = o.resuming();
+  run.accept_other_version = o.other_version;
   run.progress = progress;
   run.cancelled = stop_on_interrupt(tool);
   run.skip_failed = o.skip_failed;
   return run;
+}
+
+/// With --resume-other-version: which code made the checkpoint (`checkpoints`, the first that
+/// exists) and which resumes it, for the JSON; null otherwise.
+/// A plain --resume of a checkpoint another version made is refused here, in this tool's words.
+inline nlohmann::json resumed_code(const LongRunOptions& o, const std::vector<std::string>& checkpoints) {
+  if (o.resume && !o.other_version)
+    for (const std::string& c : checkpoints)
+      if (const std::string other = CheckpointLog::other_version(c); !other.empty())
+        throw InvalidInput("resume", ": " + other + "; resume it with that version, or accept the mix with " +
+                                         "--resume-other-version");
+  if (!o.other_version) return nullptr;
+  for (const std::string& c : checkpoints)
+    if (const std::string made_by = CheckpointLog::code_of(c); !made_by.empty())
+      return {{"made_by", made_by}, {"resumed_by", std::string(code_version()) + " (commit " + code_commit() + ")"}};
+  return nullptr;
 }
 
 /// Runs `study` (a call of run_transport_study or run_exponent_table); a realization failing in

@@ -27,19 +27,35 @@
 
 namespace granular::tool {
 
-/// The checkpoint files of `prefix`: PREFIX.checkpoint, and PREFIX.checkpoint.<anything>
-/// (per MPI rank, per case of a study, a temporary being written).
-inline std::vector<std::string> checkpoint_files(const std::string& prefix) {
+/// The checkpoint files a run on `prefix` writes, and only those: PREFIX.checkpoint (a single
+/// ensemble) or PREFIX.checkpoint.<case> (a study's cases), each with .rank<k> per further MPI
+/// rank; with `temporaries`, also the .tmp.<pid> a killed run left while writing one. A file the
+/// user named alike (PREFIX.checkpoint.bak) is not one of them.
+inline std::vector<std::string> checkpoint_files(const std::string& prefix, bool temporaries = false) {
   namespace fs = std::filesystem;
   fs::path folder = fs::path(prefix).parent_path();
   const std::string stem = fs::path(prefix).filename().string() + ".checkpoint";
+  const auto ours = [&](const std::string& name) {
+    if (name.compare(0, stem.size(), stem) != 0) return false;
+    std::size_t at = stem.size();
+    const auto skip = [&](const std::string& tag) {  // tag followed by digits up to the next '.'
+      const std::size_t end = std::min(name.find('.', at + tag.size()), name.size());
+      if (name.compare(at, tag.size(), tag) != 0 || end == at + tag.size() ||
+          name.find_first_not_of("0123456789", at + tag.size()) < end)
+        return false;
+      at = end;
+      return true;
+    };
+    skip(".");
+    skip(".rank");
+    if (temporaries) skip(".tmp.");
+    return at == name.size();
+  };
   std::vector<std::string> found;
   std::error_code ec;
   for (const auto& entry : fs::directory_iterator(folder.empty() ? fs::path(".") : folder, ec)) {
     const std::string name = entry.path().filename().string();
-    if (name == stem ||
-        (name.size() > stem.size() && name.compare(0, stem.size(), stem) == 0 && name[stem.size()] == '.'))
-      found.push_back((folder / name).string());
+    if (ours(name)) found.push_back((folder / name).string());
   }
   std::sort(found.begin(), found.end());
   return found;
@@ -88,7 +104,7 @@ class OutputClaim {
       throw InvalidInput("output", " '" + prefix + "': " + files.front() +
                                        " holds the finished realizations of an interrupted run; continue it with "
                                        "--resume, or discard it with --fresh");
-    for (const auto& f : files) std::filesystem::remove(f);
+    for (const auto& f : checkpoint_files(prefix, true)) std::filesystem::remove(f);
   }
 
   std::optional<OutputLock> lock_;

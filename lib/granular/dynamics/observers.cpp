@@ -1,7 +1,10 @@
 #include "granular/dynamics/observers.hpp"
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include "granular/detail/enum_names.hpp"
@@ -147,9 +150,24 @@ void ForceObserver::observe(const Snapshot& now) {
   for (std::size_t j = 0; j < settings_.sites.size(); ++j) forces[j].push_back(buffer_[settings_.sites[j]]);
 }
 
-void EnergyMapObserver::Settings::validate(const RunPlan&) const {
+void EnergyMapObserver::Settings::validate(const RunPlan& plan) const {
   if (samples < 2) throw InvalidInput("map_samples", ": at least 2");
   if (stride < 1) throw InvalidInput("map_stride", ": at least 1");
+  // The whole map is kept until the run ends: refuse one that cannot fit now, not hours in with
+  // bad_alloc. Half the physical memory leaves room for the run itself and the output's copy.
+  const double times = std::min(static_cast<double>(samples), static_cast<double>(plan.total_steps) + 1);
+  const double columns = std::ceil(static_cast<double>(plan.beads) / static_cast<double>(stride));
+  const double bytes = times * columns * sizeof(double);
+  const long pages = ::sysconf(_SC_PHYS_PAGES), page = ::sysconf(_SC_PAGESIZE);
+  const double memory = pages > 0 && page > 0 ? static_cast<double>(pages) * static_cast<double>(page) : 0;
+  if (memory > 0 && bytes > memory / 2) {
+    char text[200];
+    std::snprintf(text, sizeof text,
+                  " %zu: the energy map needs %.3g bytes (%.0f times x %.0f columns x 8), more than half of this "
+                  "machine's %.3g bytes; take fewer samples, or sum more beads per column (the stride)",
+                  samples, bytes, times, columns, memory);
+    throw InvalidInput("map_samples", text);
+  }
 }
 
 std::vector<std::uint64_t> EnergyMapObserver::schedule(const RunPlan& plan) {

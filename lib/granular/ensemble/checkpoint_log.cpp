@@ -12,13 +12,17 @@
 
 #include <nlohmann/json.hpp>
 
+#include "granular/code_identity.hpp"
 #include "granular/error.hpp"
+#include "granular/io/detail/temporary_file.hpp"
 #include "granular/number_format.hpp"
 
 namespace granular {
 namespace {
 
 constexpr const char* magic = "granular-checkpoint 1 ";
+constexpr const char* version_key = "granular_version";
+constexpr const char* commit_key = "granular_commit";
 
 /// FNV-1a over the record's text: catches a torn or edited line.
 std::uint64_t checksum(std::string_view text) {
@@ -46,6 +50,14 @@ std::string format_record(std::uint64_t index, const std::vector<double>& values
   return body;
 }
 
+bool same_json(const std::string& a, const std::string& b) {
+  try {
+    return nlohmann::json::parse(a) == nlohmann::json::parse(b);
+  } catch (const nlohmann::json::exception&) {
+    return false;
+  }
+}
+
 std::string first_difference(const std::string& a, const std::string& b) {
   try {
     const auto ja = nlohmann::json::parse(a), jb = nlohmann::json::parse(b);
@@ -57,6 +69,39 @@ std::string first_difference(const std::string& a, const std::string& b) {
   } catch (const nlohmann::json::exception&) {
   }
   return "the parameter header";
+}
+
+/// The header's JSON: the run's parameters with the code that made the records put in front
+/// (the parameters' own text is kept byte for byte after it). Other text stays as it is.
+std::string with_code(const std::string& parameters) {
+  if (parameters.empty() || parameters.front() != '{') return parameters;
+  const nlohmann::json code = {{version_key, code_version()}, {commit_key, code_commit()}};
+  const std::string head = code.dump();  // {"granular_commit":"…","granular_version":"…"}
+  const bool empty = parameters.find_first_not_of(" ", 1) == parameters.find('}');
+  std::string out(head, 0, head.size() - 1);  // appended piece by piece: GCC 12 warns falsely on a + b + c
+  if (empty) {
+    out.push_back('}');
+  } else {
+    out.push_back(',');
+    out.append(parameters, 1, std::string::npos);
+  }
+  return out;
+}
+
+/// "0.1.0 (commit 0123456789ab)"; "an unrecorded version" for a header written before versions were.
+std::string code_named(const nlohmann::json& header) {
+  if (!header.contains(version_key)) return "a granular version that did not record itself";
+  std::string name =
+      header[version_key].is_string() ? header[version_key].get<std::string>() : header[version_key].dump();
+  if (header.contains(commit_key) && header[commit_key].is_string())
+    name += " (commit " + header[commit_key].get<std::string>() + ")";
+  return name;
+}
+
+/// "checkpoint 'run.checkpoint' was made by granular 0.0.9 (commit …), this is granular 0.1.0 (commit …)"
+std::string other_version_text(const std::string& path, const nlohmann::json& header) {
+  return "checkpoint '" + path + "' was made by granular " + code_named(header) + ", this is granular " +
+         code_named(nlohmann::json::parse(with_code("{}")));
 }
 
 }  // namespace
@@ -122,23 +167,27 @@ CheckpointRecords CheckpointLog::parse_records(const std::string& text, std::str
 
 CheckpointLog::CheckpointLog(std::string path, std::string parameters, const CheckpointRecords& records)
     : path_(std::move(path)) {
-  // Written whole under a temporary name, then renamed: a kill never leaves a half header.
-  const std::string temporary = path_ + ".tmp";
-  errno = 0;
-  std::FILE* f = std::fopen(temporary.c_str(), "wb");
-  if (!f) throw IoError("cannot create checkpoint '" + temporary + "': " + std::strerror(errno));
-  std::string text = magic + parameters + "\n";
+  // Written whole under a new temporary name (never through a symlink planted there), fsynced and
+  // renamed, the folder fsynced: a kill never leaves a half header. The records are then appended
+  // through the same descriptor, never by reopening the name.
+  detail::TemporaryFile temporary(path_, "checkpoint ");
+  std::string text = magic + with_code(parameters) + "\n";
   for (const auto& [index, values] : records) text += format_record(index, values);
-  bool written = std::fwrite(text.data(), 1, text.size(), f) == text.size() && std::fflush(f) == 0 &&
-                 ::fdatasync(::fileno(f)) == 0;
-  const int cause = errno;
-  written = std::fclose(f) == 0 && written;
-  if (!written || std::rename(temporary.c_str(), path_.c_str()) != 0) {
-    std::remove(temporary.c_str());
-    throw IoError("cannot write checkpoint '" + path_ + "': " + std::strerror(cause ? cause : errno));
+  const char* p = text.data();
+  const char* end = text.data() + text.size();
+  while (p < end) {
+    const ssize_t n = ::write(temporary.fd(), p, static_cast<std::size_t>(end - p));
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) throw IoError("cannot write checkpoint '" + path_ + "': " + std::strerror(n < 0 ? errno : EIO));
+    p += n;
   }
-  file_ = std::fopen(path_.c_str(), "ab");
-  if (!file_) throw IoError("cannot append to checkpoint '" + path_ + "': " + std::strerror(errno));
+  const int fd = temporary.commit_open();
+  file_ = ::fdopen(fd, "ab");
+  if (!file_) {
+    const int e = errno;
+    ::close(fd);
+    throw IoError("cannot append to checkpoint '" + path_ + "': " + std::strerror(e));
+  }
 }
 
 CheckpointLog::~CheckpointLog() {
@@ -171,7 +220,7 @@ std::vector<std::string> family(const std::string& base) {
 
 }  // namespace
 
-CheckpointRecords CheckpointLog::load(const std::string& base, const std::string& parameters) {
+CheckpointRecords CheckpointLog::load(const std::string& base, const std::string& parameters, bool accept_other_version) {
   const auto files = family(base);
   if (files.empty()) throw InvalidInput("resume", ": no checkpoint '" + base + "' to resume from");
   CheckpointRecords all;
@@ -187,12 +236,62 @@ CheckpointRecords CheckpointLog::load(const std::string& base, const std::string
     } catch (const InvalidInput&) {
       throw InvalidInput("resume", ": '" + path + "' is not a checkpoint of this toolkit");
     }
-    if (header != parameters)
-      throw InvalidInput("resume", ": checkpoint '" + path +
-                                       "' was made with different parameters: " + first_difference(header, parameters));
+    if (header != with_code(parameters)) {
+      // Another code made it? Say so before comparing parameters (a new code may describe a run
+      // differently): its realizations are not this code's, unless the user accepts that.
+      std::string theirs = header;
+      try {
+        nlohmann::json recorded = nlohmann::json::parse(header);
+        if (recorded.is_object() && (!recorded.contains(version_key) || recorded[version_key] != code_version())) {
+          if (!accept_other_version)
+            throw InvalidInput("resume", ": " + other_version_text(path, recorded) +
+                                             "; resume it with that version, or accept the mix (resume_other_version)");
+        }
+        if (recorded.is_object()) {
+          recorded.erase(version_key);
+          recorded.erase(commit_key);
+          theirs = recorded.dump();
+        }
+      } catch (const nlohmann::json::exception&) {
+      }
+      // Same version (another commit, or accepted): the parameters decide.
+      if (theirs != parameters && !same_json(theirs, parameters))
+        throw InvalidInput("resume", ": checkpoint '" + path + "' was made with different parameters: " +
+                                         first_difference(theirs, parameters));
+    }
     all.merge(records);
   }
   return all;
+}
+
+std::string CheckpointLog::other_version(const std::string& base) {
+  for (const std::string& path : family(base)) {
+    std::ifstream in(path, std::ios::binary);
+    std::string line;
+    std::getline(in, line);
+    if (line.compare(0, std::strlen(magic), magic) != 0) continue;
+    try {
+      const nlohmann::json header = nlohmann::json::parse(line.substr(std::strlen(magic)));
+      if (header.is_object() && (!header.contains(version_key) || header[version_key] != code_version()))
+        return other_version_text(path, header);
+    } catch (const nlohmann::json::exception&) {
+    }
+  }
+  return "";
+}
+
+std::string CheckpointLog::code_of(const std::string& base) {
+  for (const std::string& path : family(base)) {
+    std::ifstream in(path, std::ios::binary);
+    std::string line;
+    std::getline(in, line);
+    if (line.compare(0, std::strlen(magic), magic) != 0) continue;
+    try {
+      return code_named(nlohmann::json::parse(line.substr(std::strlen(magic))));
+    } catch (const nlohmann::json::exception&) {
+    }
+  }
+  return "";
 }
 
 bool CheckpointLog::exists(const std::string& base) { return !family(base).empty(); }

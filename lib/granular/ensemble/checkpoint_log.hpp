@@ -6,7 +6,8 @@
 // for byte.
 //
 // Format (text, so it can be inspected):
-//   line 1:  granular-checkpoint 1 <parameters as one line of JSON>
+//   line 1:  granular-checkpoint 1 <parameters as one line of JSON, with "granular_commit" and
+//            "granular_version" (the code that wrote it) put first>
 //   then:    <index> <count> <v_1> … <v_count> <checksum>      (values in shortest round-trip form)
 // A line cut short by a kill (no newline, wrong count or checksum) is ignored and recomputed.
 #include <cstdint>
@@ -32,7 +33,17 @@ class CheckpointLog {
   /// Reads the finished realizations of a run: the log at `base` and those of other MPI ranks
   /// (`base.rank<k>`). Throws InvalidInput when there is none (naming --resume), when a file is
   /// not a checkpoint, or when it was made with other parameters (naming the first that differs).
-  static CheckpointRecords load(const std::string& base, const std::string& parameters);
+  /// A log made by another version of the toolkit (the header records code_version() and
+  /// code_commit()) is refused naming both versions, unless `accept_other_version`.
+  static CheckpointRecords load(const std::string& base, const std::string& parameters,
+                                bool accept_other_version = false);
+
+  /// "" when every log of `base` was made by this version; else a sentence naming both versions
+  /// ("checkpoint 'P' was made by granular 0.0.9 (commit …), this is granular 0.1.0 (commit …)").
+  static std::string other_version(const std::string& base);
+
+  /// The code that made the log at `base` ("0.1.0 (commit 0123456789ab)"), "" when there is none.
+  static std::string code_of(const std::string& base);
 
   /// Whether `base` or any `base.rank<k>` exists.
   static bool exists(const std::string& base);

@@ -12,7 +12,7 @@ std::vector<std::vector<double>> run_ensemble(const EnsembleOptions& o,
                                               const std::function<std::vector<double>(std::uint64_t, int)>& work) {
   const MpiContext& mpi = MpiContext::instance();
   CheckpointRecords finished;
-  if (o.resume) finished = CheckpointLog::load(o.checkpoint, o.parameters);
+  if (o.resume) finished = CheckpointLog::load(o.checkpoint, o.parameters, o.accept_other_version);
   for (auto it = finished.begin(); it != finished.end();)  // a log of a larger run: ignore the excess
     it = it->first < o.realizations ? std::next(it) : finished.erase(it);
   // Every rank has read the logs before any rank rewrites its own.

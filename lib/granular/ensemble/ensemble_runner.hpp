@@ -21,6 +21,7 @@ struct EnsembleOptions {
   bool resume = false;                ///< continue from `checkpoint` instead of starting afresh
   ProgressMeter* progress = nullptr;  ///< optional; advanced once per realization computed or loaded
   std::function<bool()> cancelled{};  ///< optional; true before a realization starts: throw Cancelled (run_options.hpp)
+  bool accept_other_version = false;  ///< resume a checkpoint another toolkit version made (else refused)
 };
 
 /// `work(r, thread)` computes realization r. Under mpirun the realizations still to do are dealt

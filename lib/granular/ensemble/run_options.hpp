@@ -20,6 +20,7 @@ struct RunOptions {
   /// Studies that average realizations (transport_study.hpp): a realization that fails
   /// (NumericalError) is left out of the averages and reported, instead of stopping the run.
   bool skip_failed = false;
+  bool accept_other_version = false;  ///< resume a checkpoint another toolkit version made (else refused)
 };
 
 }  // namespace granular

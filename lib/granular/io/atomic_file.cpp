@@ -1,5 +1,7 @@
 #include "granular/io/atomic_file.hpp"
 
+#include <fcntl.h>
+#include <stdlib.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -81,13 +83,15 @@ void check_writable(const std::string& path) {
   std::error_code ec;
   if (!fs::is_directory(folder, ec)) throw IoError("output folder '" + folder.string() + "' does not exist");
   if (fs::is_directory(path, ec)) throw IoError("output path '" + path + "' is a folder");
-  // access(W_OK) says yes to root on a read-only mount: create and remove a probe instead.
-  const fs::path probe = folder / (".granular-probe." + std::to_string(::getpid()));
+  // access(W_OK) says yes to root on a read-only mount: create and remove a probe instead. The
+  // probe is a new file (O_EXCL | O_NOFOLLOW) under a name nobody can guess, so nothing planted in
+  // the folder can make it open, truncate or remove another file.
+  std::string probe = (folder / ".granular-probe.XXXXXX").string();
   errno = 0;
-  std::FILE* f = std::fopen(probe.c_str(), "wb");
-  if (!f) throw IoError("output folder '" + folder.string() + "' is not writable" + cause(errno));
-  std::fclose(f);
-  fs::remove(probe, ec);
+  const int fd = ::mkostemp(probe.data(), O_CLOEXEC);  // O_CREAT | O_EXCL, a random name
+  if (fd < 0) throw IoError("output folder '" + folder.string() + "' is not writable" + cause(errno));
+  ::close(fd);
+  ::unlink(probe.c_str());
 }
 
 void write_file_atomically(const std::string& path, const std::string& text) {

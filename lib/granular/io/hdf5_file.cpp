@@ -28,8 +28,10 @@ Hdf5File::Hdf5File(std::string path) : path_(std::move(path)) {
   silence_hdf5();
   temporary_ = std::make_unique<detail::TemporaryFile>(path_, "HDF5 file ");
   errno = 0;
-  // HDF5 opens the file by name: the new, empty one the temporary file just created.
-  file_ = H5Fcreate(temporary_->path().c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+  // HDF5 opens files by name, and a name in a shared folder can be swapped for a symlink after
+  // the temporary file was created: open the file we created itself, through its descriptor.
+  const std::string own = "/proc/self/fd/" + std::to_string(temporary_->fd());
+  file_ = H5Fcreate(own.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
   if (file_ < 0) throw IoError("cannot create HDF5 file '" + temporary_->path() + "'" + cause());
 }
 

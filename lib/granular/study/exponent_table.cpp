@@ -89,6 +89,7 @@ std::vector<ExponentCell> run_exponent_table(const ExponentTableConfig& config, 
     run.progress = options.meter ? options.meter : &own;
     run.cancelled = options.cancelled;
     run.skip_failed = options.skip_failed;
+    run.accept_other_version = options.accept_other_version;
     if (!options.checkpoint_prefix.empty()) {
       run.checkpoint = options.checkpoint_prefix + "." + std::to_string(i);
       // A case not started before the interruption has no log yet: it simply starts.

@@ -51,7 +51,8 @@ struct ExponentRunOptions {
   int threads = 0;
   std::string checkpoint_prefix;  ///< case i logs to <prefix>.<i>; empty: no checkpoints
   bool resume = false;
-  int progress = -1;  ///< ProgressMeter's enabled flag
+  bool accept_other_version = false;  ///< see RunOptions::accept_other_version
+  int progress = -1;                  ///< ProgressMeter's enabled flag
   ProgressMeter* meter =
       nullptr;  ///< optional: advance this meter (total: every case's realizations) instead of one of its own
   std::function<bool()> cancelled{};  ///< see RunOptions::cancelled

@@ -45,13 +45,25 @@ void TemporaryFile::commit() {
   if (::close(fd_) != 0 && !error) error = errno;
   fd_ = -1;
   if (error) throw IoError("writing '" + target_ + "' failed" + cause(error));
+  rename_and_sync_folder();
+}
+
+int TemporaryFile::commit_open() {
+  if (::fsync(fd_) != 0) throw IoError("writing '" + target_ + "' failed" + cause(errno));
+  rename_and_sync_folder();
+  const int fd = fd_;
+  fd_ = -1;
+  return fd;
+}
+
+void TemporaryFile::rename_and_sync_folder() {
   if (std::rename(path_.c_str(), target_.c_str()) != 0)
     throw IoError("cannot rename '" + path_ + "' to '" + target_ + "'" + cause(errno));
   committed_ = true;
   // The rename itself is durable only once the folder is synced.
   const std::filesystem::path folder = std::filesystem::path(target_).parent_path();
   const int dir = ::open(folder.empty() ? "." : folder.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
-  error = dir < 0 ? errno : ::fsync(dir) == 0 ? 0 : errno;
+  int error = dir < 0 ? errno : ::fsync(dir) == 0 ? 0 : errno;
   if (dir >= 0 && ::close(dir) != 0 && !error) error = errno;
   if (error) throw IoError("flushing the folder of '" + target_ + "' to disk failed" + cause(error));
 }

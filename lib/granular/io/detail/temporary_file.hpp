@@ -25,8 +25,13 @@ class TemporaryFile {
   /// Fsyncs and closes the file, renames it onto the target and fsyncs the folder. Throws IoError
   /// naming the target ("writing 'out.csv' failed: No space left on device").
   void commit();
+  /// As commit(), but the descriptor stays open (now on the target) and passes to the caller, who
+  /// closes it: appending through it never reopens the target by name (a log written on after
+  /// its header is committed).
+  int commit_open();
 
  private:
+  void rename_and_sync_folder();
   std::string target_, path_;
   int fd_ = -1;
   bool committed_ = false;
