@@ -19,8 +19,10 @@ int main(int argc, char** argv) {
   using namespace granular;
   CLI::App app{
       "Transfer-matrix Lyapunov exponent and node-count density of states of one chain, at a list of\n"
-      "frequencies. Writes PREFIX.csv (columns freq_khz,lyapunov,lyapunov_err,loc_length,idos,dos: kHz,\n"
-      "1/bead, 1/bead, beads, modes per bead, modes per bead per kHz) and PREFIX.json (every parameter).",
+      "frequencies. Writes PREFIX.csv (columns freq_khz,lyapunov,lyapunov_err,loc_length,idos,dos,resolved:\n"
+      "kHz, 1/bead, 1/bead, beads, modes per bead, modes per bead per kHz, 1 where loc_length is a\n"
+      "measurement: lambda >= 10 ln(N)/N and N/segments >= 10 loc_length, else 0) and PREFIX.json (every\n"
+      "parameter, and that rule as resolved_rule).",
       "localization"};
   tool::describe_common(app);
   tool::ChainOptions chain_options;

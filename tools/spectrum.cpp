@@ -67,6 +67,11 @@ int main(int argc, char** argv) {
       d = dynamical_matrix(selected.chain);
     }
     validate(selection, d.size());
+    // Refused before the output is claimed and before anything of size N² exists.
+    if (const std::string problem = full_spectrum_problem(d.size(), request.config, selection); !problem.empty())
+      throw InvalidInput("N", " " + std::to_string(d.size()) + ": " + problem +
+                                  "; what fits: --method fast (every frequency and IPR, no eigenvectors), or selected "
+                                  "modes with --near F --count K or --window LO:HI and --method bisect");
     const bool writer = MpiContext::instance().root();
     const std::string csv_path = output + ".csv", json_path = output + ".json";
     const tool::OutputClaim claim(output, meta.command());

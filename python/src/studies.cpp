@@ -261,6 +261,17 @@ void bind_studies(py::module_& m) {
           "loc_length", [](const PyLocalization& p) { return to_numpy(p.scan.localization_length); },
           "localization length 1/lambda [beads]; inf where lambda <= 0 (inside a band)")
       .def_property_readonly(
+          "resolved",
+          [](const PyLocalization& p) {
+            py::array_t<bool> flags(static_cast<py::ssize_t>(p.scan.resolved.size()));
+            auto view = flags.mutable_unchecked<1>();
+            for (std::size_t k = 0; k < p.scan.resolved.size(); ++k)
+              view(static_cast<py::ssize_t>(k)) = p.scan.resolved[k] != 0;
+            return flags;
+          },
+          "True where loc_length is a measurement, False where it is only a bound of order N (the rule: "
+          "metadata['resolved_rule'])")
+      .def_property_readonly(
           "modes_below",
           [](const PyLocalization& p) {
             return to_numpy(std::vector<long long>(p.scan.modes_below.begin(), p.scan.modes_below.end()));
@@ -271,7 +282,7 @@ void bind_studies(py::module_& m) {
           "integrated density of states: modes below f per bead")
       .def_property_readonly(
           "dos", [](const PyLocalization& p) { return to_numpy(p.scan.dos); },
-          "density of states d idos / df [1/(bead kHz)]")
+          "density of states d idos / df [1/(bead kHz)] (one frequency: from counts at f -/+ 0.005 kHz)")
       .def_property_readonly(
           "N", [](const PyLocalization& p) { return p.scan.beads; }, "beads of the chain")
       .def_property_readonly(

@@ -86,6 +86,8 @@ def test_localization_equals_the_tool_for_a_streamed_chain_and_a_types_file(tool
     scan = gr.localization(disorder="RDM1", N=2e5, f="1:40:0.5", segments=16, seed=3)
     for key in ("freq_khz", "lyapunov", "lyapunov_err", "loc_length", "idos", "dos"):
         assert_identical(getattr(scan, key), csv[key])
+    assert_identical(scan.resolved.astype(int), np.asarray(csv["resolved"], int))
+    assert scan.metadata["resolved_rule"] == meta["resolved_rule"]
     assert scan.metadata["chain"] == meta["chain"]
     assert scan.metadata["parameters"] == meta["parameters"]
     assert scan.metadata["band_edges_khz"] == meta["band_edges_khz"]
@@ -95,6 +97,15 @@ def test_localization_equals_the_tool_for_a_streamed_chain_and_a_types_file(tool
     scan = gr.localization(gr.from_types(gr.read_types(str(types_file))), f="0:40:1", segments=2)
     assert_identical(scan.lyapunov, csv["lyapunov"])
     assert_identical(scan.idos, csv["idos"])
+
+
+def test_localization_flags_unresolved_lengths():
+    scan = gr.localization(disorder="A", N=1e5, f=[0, 0.5, 1, 15, 20])
+    assert scan.resolved.dtype == bool
+    assert list(scan.resolved) == [False, False, False, True, True]
+    assert "ln(N)/N" in scan.metadata["resolved_rule"]
+    one = gr.localization(disorder="A", N=1e5, f=[10])
+    assert np.isfinite(one.dos[0]) and one.dos[0] > 0
 
 
 def test_localization_node_counts_are_the_spectrum_and_streaming_gives_the_built_chain():

@@ -1,6 +1,7 @@
 // The contact-damping flow D_h at fixed positions (damping.hpp): its parity splitting into
-// independent two-bead Crank–Nicolson steps against the exact flow v(h) = exp(−h M⁻¹C) v of the
+// independent two-bead exact pair flows against the exact flow v(h) = exp(−h M⁻¹C) v of the
 // full bond Laplacian C, computed independently by a symmetric eigendecomposition.
+#include <array>
 #include <cmath>
 #include <cstdio>
 
@@ -75,6 +76,80 @@ TEST(DampingFlow, ParitySplitIsSecondOrderAgainstTheExactContactFlow) {
       EXPECT_LT(previous / error, 9.0) << "h = " << h;
     }
     previous = error;
+  }
+}
+
+// One closed contact between two free beads: the flow of its pair is exact for any h, also where
+// hλ/2 > 1 (a Crank–Nicolson step (1 − hλ/2)/(1 + hλ/2) would reverse the relative velocity).
+TEST(DampingFlow, OnePairTakesItsExactFlowAlsoWhenStiff) {
+  Chain chain;
+  chain.mass = {2e-3, 1e-3};
+  chain.inverse_mass = {500, 1000};
+  chain.radius = {4.76e-3, 3.78e-3};
+  chain.contact = {0, 7e9, 0};  // the walls exert nothing
+  chain.overlap = {0, 1e-6, 0};
+  chain.precompression = 0;
+  const double gamma = 1e-4;
+  const double lambda = gamma * chain.contact[1] * std::sqrt(chain.overlap[1]) * (500 + 1000);
+  DampingFlow flow(chain, Damping{0, gamma});
+  const std::vector<double> u{0, 0};
+  for (double y : {0.1, 2.0, 10.0}) {  // y = hλ/2
+    const double h = 2 * y / lambda;
+    std::vector<double> v{0.3, -0.1};
+    const double p0 = 2e-3 * v[0] + 1e-3 * v[1], g0 = v[0] - v[1];
+    flow.apply(u, v, h, DampingFlow::Sweep::even_first);
+    const double g = v[0] - v[1];
+    EXPECT_GT(g, 0) << "y " << y;
+    EXPECT_NEAR(g, g0 * std::exp(-h * lambda), 1e-12 * g0) << "y " << y;
+    EXPECT_NEAR(2e-3 * v[0] + 1e-3 * v[1], p0, 1e-16);
+  }
+}
+
+// Two beads between walls, F0 = 10 N, Kuwabara–Kono damping (contacts stay closed: everything is
+// smooth). Reference: RK4 of m ü = Σ bond forces A[δ]^{3/2} + γ A [δ]^{1/2} δ̇ at 1 ns steps. The
+// damped splitting (exact pair flows around SABA2C) must converge to it at 2nd order.
+TEST(DampingFlow, OneDampedContactConvergesAtSecondOrderToTheReference) {
+  const Chain chain = fixtures::homogeneous(2, 10.0);
+  const double gamma = 1e-6, duration = 200e-6;  // λ t ≈ 1: strongly damped over the run
+  const auto accelerations = [&](const std::array<double, 4>& s) {
+    const double u[4] = {0, s[0], s[1], 0}, v[4] = {0, s[2], s[3], 0};
+    double f[3];
+    for (int k = 0; k < 3; ++k) {
+      const double d = std::max(chain.overlap[k] + u[k] - u[k + 1], 0.0), root = std::sqrt(d);
+      f[k] = chain.contact[k] * d * root + gamma * chain.contact[k] * root * (v[k] - v[k + 1]);
+    }
+    return std::array<double, 2>{(f[0] - f[1]) / chain.mass[0], (f[1] - f[2]) / chain.mass[1]};
+  };
+  std::array<double, 4> ref{0, 0, 5e-3, -1e-3};  // u0, u1, v0, v1
+  const double h = 1e-9;
+  for (int i = 0; i < static_cast<int>(std::lround(duration / h)); ++i) {
+    const auto d = [&](const std::array<double, 4>& s) {
+      const auto a = accelerations(s);
+      return std::array<double, 4>{s[2], s[3], a[0], a[1]};
+    };
+    const auto add = [](std::array<double, 4> s, const std::array<double, 4>& k, double c) {
+      for (int j = 0; j < 4; ++j) s[j] += c * k[j];
+      return s;
+    };
+    const auto k1 = d(ref), k2 = d(add(ref, k1, h / 2)), k3 = d(add(ref, k2, h / 2)), k4 = d(add(ref, k3, h));
+    for (int j = 0; j < 4; ++j) ref[j] += h / 6 * (k1[j] + 2 * k2[j] + 2 * k3[j] + k4[j]);
+  }
+  State s0(2);
+  s0.v = {5e-3, -1e-3};
+  std::vector<double> error;
+  for (double tau : {1e-6, 0.5e-6, 0.25e-6, 0.125e-6}) {
+    auto p = fixtures::run(make_damped_propagator(make_force_law(ForceLawKind::hertz, chain), chain, saba2c(), tau, s0,
+                                                  Damping{0, gamma}),
+                           static_cast<std::size_t>(std::lround(duration / tau)));
+    const double dv = std::hypot(p->velocity()[0] - ref[2], p->velocity()[1] - ref[3]);
+    error.push_back(dv / std::hypot(ref[2], ref[3]));
+    std::printf("  tau = %.3f us: relative velocity error %.3e\n", tau * 1e6, error.back());
+  }
+  for (std::size_t i = 1; i < error.size(); ++i) {
+    const double order = std::log2(error[i - 1] / error[i]);
+    std::printf("  observed order %.3f\n", order);
+    EXPECT_GT(order, 1.8);
+    EXPECT_LT(order, 2.3);
   }
 }
 

@@ -2,6 +2,8 @@
 // of the numerical orbit (two orbits 1e-9 apart), and the linear chain is regular (X1 ∝ ln t / t).
 #include <cmath>
 #include <cstdio>
+#include <span>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -80,6 +82,62 @@ TEST(TangentMap, LinearChainIsRegularX1FallsAsLogTOverT) {
   std::printf("  X1(1 ms) = %.3e /s, X1(10 ms) = %.3e /s, max |X1| t / ln(t/tau) = %.3f\n", x1_1ms, p->mle(), worst);
   EXPECT_LT(worst, 1.0);
   EXPECT_LT(std::abs(p->mle()), std::abs(x1_1ms) / 4);  // ~1/t: ten times later, several times smaller
+}
+
+// ‖(δu, δv)‖ in the tangent map's norm (t_unit = 1 µs).
+double deviation_norm(std::span<const double> du, std::span<const double> dv) {
+  double s = 0;
+  for (std::size_t i = 0; i < du.size(); ++i) s += du[i] * du[i] + (1e-6 * dv[i]) * (1e-6 * dv[i]);
+  return std::sqrt(s);
+}
+
+// A chaotic Hertz orbit: 8 beads in the sonic vacuum (F0 = 0, so contacts open and close), each bead
+// given a velocity. X1 of the tangent map settles to a positive value (its halves agree), far above
+// the regular ln t / t, and it equals the growth rate of the distance of two orbits 1e-8 apart
+// (Benettin's two-orbit method: the second orbit pulled back to that distance every 20 µs).
+TEST(TangentMap, ChaoticOrbitHasAPositiveX1EqualToTheTwoOrbitDivergence) {
+  const Chain chain = fixtures::anderson(8, 0.0);
+  const ForceLaw law = make_force_law(ForceLawKind::hertz, chain);
+  State a(chain.size());
+  for (std::size_t i = 0; i < a.size(); ++i) a.v[i] = 1e-2 * std::sin(2.1 * static_cast<double>(i) + 0.4);
+  const double tau = 0.2e-6;
+  const std::size_t interval = 100, intervals = 2500;  // 20 µs, 50 ms in all
+  const State w = spread_deviation(chain.size(), 1e-9);
+  auto tangent = make_tangent_propagator(law, chain, saba2c(), tau, a, w, {.enabled = true, .renormalize_every = 10});
+  // The two orbits, each interval restarted from a and from a + d0 · (b − a)/|b − a|.
+  const double d0 = 1e-8 * deviation_norm(a.u, a.v) + 1e-17;
+  State b = a;
+  {
+    const double n0 = deviation_norm(w.u, w.v);
+    for (std::size_t i = 0; i < a.size(); ++i) {
+      b.u[i] += d0 * w.u[i] / n0;
+      b.v[i] += d0 * w.v[i] / n0;
+    }
+  }
+  double stretch = 0, x1_half = 0, two_orbit_half = 0;
+  for (std::size_t k = 1; k <= intervals; ++k) {
+    tangent->advance(interval);
+    auto pa = fixtures::run(make_damped_propagator(law, chain, saba2c(), tau, a, {}), interval);
+    auto pb = fixtures::run(make_damped_propagator(law, chain, saba2c(), tau, b, {}), interval);
+    std::vector<double> du(a.size()), dv(a.size());
+    for (std::size_t i = 0; i < a.size(); ++i) {
+      a.u[i] = pa->displacement()[i], a.v[i] = pa->velocity()[i];
+      du[i] = pb->displacement()[i] - a.u[i], dv[i] = pb->velocity()[i] - a.v[i];
+    }
+    const double d = deviation_norm(du, dv);
+    stretch += std::log(d / d0);
+    for (std::size_t i = 0; i < a.size(); ++i) b.u[i] = a.u[i] + du[i] * d0 / d, b.v[i] = a.v[i] + dv[i] * d0 / d;
+    if (k == intervals / 2) x1_half = tangent->mle(), two_orbit_half = stretch / tangent->time();
+  }
+  EXPECT_EQ(relative_difference(tangent->displacement(), a.u), 0.0);  // the same orbit
+  const double x1 = tangent->mle(), two_orbit = stretch / tangent->time();
+  const double t = tangent->time();
+  std::printf("  X1(25 ms) = %.4e /s, X1(50 ms) = %.4e /s; two orbits: %.4e, %.4e /s; X1 t / ln(t/tau) = %.1f\n",
+              x1_half, x1, two_orbit_half, two_orbit, x1 * t / std::log(t / tau));
+  EXPECT_GT(x1, 0);
+  EXPECT_NEAR(x1, x1_half, 0.1 * x1);         // converged
+  EXPECT_NEAR(two_orbit, x1, 0.05 * x1);      // the same exponent by two methods
+  EXPECT_GT(x1 * t / std::log(t / tau), 10);  // regular motion stays below 1 (LinearChainIsRegular...)
 }
 
 TEST(TangentMap, RenormalizationDoesNotChangeTheExponent) {

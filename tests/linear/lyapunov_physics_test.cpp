@@ -5,11 +5,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <numbers>
+#include <vector>
 
 #include "fixtures.hpp"
 #include "granular/linear/dynamical_matrix.hpp"
 #include "granular/linear/spectrum.hpp"
 #include "granular/linear/transfer_matrix.hpp"
+#include "granular/model/chain.hpp"
 
 namespace granular {
 namespace {
@@ -34,6 +38,33 @@ TEST(LyapunovPhysics, AndersonChainLambdaGrowsAsFSquaredAtLowFrequency) {
   const double slope_error = std::sqrt(sw / (sw * sxx - sx * sx));
   EXPECT_NEAR(slope, 2.0, 0.05);
   EXPECT_LT(slope_error, 0.02);  // the fit resolves the exponent well inside the tolerance
+}
+
+// RDM1 (ξ = q = 0.5, F0 = 10 N): λ vanishes at the dimer resonance (docs/physics.md), predicted
+// independently of the scan: at m1 ω² = 2 B11 the two-bead unit of a run of type-1 beads is −I, so a
+// "1 1" dimer in the host passes a wave unchanged. There λ is consistent with 0 and falls with N
+// (below the finite-size floor 10 ln N / N), while 0.5 kHz away, and in the Anderson chain at the
+// same frequency, the chain localizes within ~100 beads.
+TEST(LyapunovPhysics, Rdm1LambdaVanishesAtTheDimerResonance) {
+  const Chain one = make_chain(std::vector<double>(3, fixtures::r1), 10.0);
+  const double resonance = std::sqrt(2 * linear_stiffness(one)[1] / one.mass[0]) / (2 * std::numbers::pi) / 1e3;
+  const std::vector<double> f{resonance - 0.5, resonance, resonance + 0.5};
+  std::vector<double> at;
+  for (std::size_t n : {100000u, 1000000u}) {
+    const auto scan =
+        transfer_matrix_scan(*random_beads(Disorder::rdm1, {.N = n, .q = 0.5, .seed = 1, .realization = 0}), f);
+    std::printf("  N = %zu: lambda(f_r = %.4f kHz) = %.3e (floor ln N / N = %.3e); %.4f, %.4f at f_r -/+ 0.5 kHz\n", n,
+                resonance, scan.lyapunov[1], std::log(double(n)) / double(n), scan.lyapunov[0], scan.lyapunov[2]);
+    EXPECT_LT(scan.lyapunov[1], 10 * std::log(double(n)) / double(n));
+    EXPECT_GT(scan.lyapunov[0], 0.01);
+    EXPECT_GT(scan.lyapunov[2], 0.01);
+    at.push_back(scan.lyapunov[1]);
+  }
+  EXPECT_LT(at[1], at[0]);  // vanishing in the limit, not a small constant
+  const auto anderson =
+      transfer_matrix_scan(*random_beads(Disorder::anderson, {.N = 100000, .q = 0.5, .seed = 1, .realization = 0}),
+                           {resonance});
+  EXPECT_GT(anderson.lyapunov[0], 0.05);
 }
 
 TEST(LyapunovPhysics, EigenvectorsOfFiniteChainsDecayAtLambda) {

@@ -25,6 +25,19 @@ TEST(TimeStepRule, LeapfrogIsStableUpToTwo) {
   EXPECT_NEAR(stable_step_limit(leapfrog), 2.0, 1e-9);
 }
 
+// Two leapfrog steps of nearly equal length x h and (1 − x) h: a parametric-resonance gap of width
+// ≈ 5.7 (1/2 − x) around h = 2√2 (|trace| > 2 there), far narrower than a scan in steps of 1e-3
+// could see (x = 0.49995: ~3e-4 wide, between the scan's points 2.828 and 2.829); the next
+// instability is at h ≈ 4. h* must stop at the gap.
+TEST(TimeStepRule, ANarrowUnstableGapIsNotSteppedOver) {
+  const double x = 0.49995;
+  const SplittingScheme two{"two-leapfrogs", {x / 2, 0.5, (1 - x) / 2}, {x, 1 - x}, 0, 2};
+  const double h = stable_step_limit(two);
+  EXPECT_NEAR(h, 2 * std::sqrt(2.0), 5e-4);
+  EXPECT_GT(std::fabs(step_trace(two, h * (1 + 1e-9))), 2);
+  for (double y = 1e-4; y < h; y += 1e-4) ASSERT_LE(std::fabs(step_trace(two, y)), 2) << y;
+}
+
 // Two equal beads between spherical walls of the same bond, linear law: ω² ∈ {k/m, 3k/m}; the
 // fast mode is (1, −1)/√2.
 Chain two_beads() {

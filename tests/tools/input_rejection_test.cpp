@@ -4,6 +4,11 @@
 // output I/O failure), a single line naming the problem, and no output created or overwritten.
 #include <gtest/gtest.h>
 
+#include <sys/wait.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
 #include <map>
 #include <vector>
 
@@ -193,6 +198,28 @@ INSTANTIATE_TEST_SUITE_P(AllTools, InputRejection, ::testing::ValuesIn(matrix())
 TEST(InputRejectionMatrix, Size) {
   std::printf("[ info ] input-rejection matrix: %zu inputs over %zu tools\n", matrix().size(), tools().size());
   EXPECT_GT(matrix().size(), 300u);
+}
+
+// The default full spectrum above N = 46340: dstevd's workspace passes LAPACK's 32-bit sizes (and
+// 40 GB in all at 5e4). Refused before anything of size N² is allocated (under a 2 GB address-space
+// limit the refusal still comes out, not a bad_alloc), with the methods that fit named; no output.
+TEST(InputRejection, FullSpectrumThatCannotFitIsRefusedNamingTheMethodsThatFit) {
+  const std::string dir = scratch_folder("spectrum-huge");
+  const std::string err = dir + "/err";
+  const std::string command =
+      "ulimit -v 2000000; '" + tool_path("spectrum") + "' --N 50000 --output " + dir + "/s >/dev/null 2>" + err;
+  const int status = std::system(("bash -c \"" + command + "\"").c_str());
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 2);
+  const std::string message = read_file(err);
+  EXPECT_NE(message.find("--N 50000"), std::string::npos) << message;
+  EXPECT_NE(message.find("--method fast"), std::string::npos) << message;
+  EXPECT_NE(message.find("--method bisect"), std::string::npos) << message;
+  EXPECT_NE(message.find("--near"), std::string::npos) << message;
+  EXPECT_EQ(std::count(message.begin(), message.end(), '\n'), 1) << message;
+  EXPECT_FALSE(std::filesystem::exists(dir + "/s.csv"));
+  EXPECT_FALSE(std::filesystem::exists(dir + "/s.json"));
+  std::filesystem::remove_all(dir);
 }
 
 }  // namespace

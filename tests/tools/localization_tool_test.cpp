@@ -40,11 +40,12 @@ TEST(LocalizationTool, CsvAndJsonContractAndThreadIndependence) {
   EXPECT_NE(one, read_file(dir + "/s2.csv"));
   std::string header;
   const auto rows = read_csv(dir + "/t1.csv", &header);
-  EXPECT_EQ(header, "freq_khz,lyapunov,lyapunov_err,loc_length,idos,dos");
+  EXPECT_EQ(header, "freq_khz,lyapunov,lyapunov_err,loc_length,idos,dos,resolved");
   ASSERT_EQ(rows.size(), 101u);
   for (std::size_t k = 0; k < rows.size(); ++k) {
     const auto& r = rows[k];
-    ASSERT_EQ(r.size(), 6u);
+    ASSERT_EQ(r.size(), 7u);
+    EXPECT_TRUE(r[6] == 0 || r[6] == 1);
     EXPECT_DOUBLE_EQ(r[0], 0.5 * static_cast<double>(k));
     EXPECT_GE(r[2], 0);
     if (r[1] > 0) {
@@ -77,8 +78,47 @@ TEST(LocalizationTool, CsvAndJsonContractAndThreadIndependence) {
   EXPECT_EQ(meta["parameters"]["segments"], 32);
   EXPECT_EQ(meta["parameters"]["threads"], 1);
   EXPECT_NEAR(meta["band_edges_khz"]["fb1"].get<double>(), 11.9546, 1e-4);
-  for (const char* column : {"freq_khz", "lyapunov", "lyapunov_err", "loc_length", "idos", "dos"})
+  for (const char* column : {"freq_khz", "lyapunov", "lyapunov_err", "loc_length", "idos", "dos", "resolved"})
     EXPECT_TRUE(meta["columns"].contains(column)) << column;
+  EXPECT_NE(meta["resolved_rule"].get<std::string>().find("10 ln(N)/N"), std::string::npos);
+  std::filesystem::remove_all(dir);
+}
+
+// ℓ is flagged a measurement only where the chain resolves it: not at f = 0 (λ = ln N / N, the
+// finite-size floor) nor in the low decade up to 1 kHz (λ ∝ f², ℓ longer than a segment / 10), but deep in the
+// band of an Anderson chain, where ℓ is a few hundred beads or less.
+TEST(LocalizationTool, UnresolvedLengthsAreFlagged) {
+  const std::string dir = scratch_folder("loc-resolved");
+  ASSERT_EQ(run_tool("localization",
+                     "--disorder A --xi 0.5 --q 0.5 --N 1e5 --f 0,0.3,0.5,1,15,20 --quiet --output " + dir + "/a")
+                .exit_code,
+            0);
+  const auto rows = read_csv(dir + "/a.csv");
+  ASSERT_EQ(rows.size(), 6u);
+  const double floor = std::log(1e5) / 1e5;
+  EXPECT_NEAR(rows[0][1], floor, 0.1 * floor);  // f = 0: linear growth, λ = ln N / N
+  for (std::size_t k = 0; k < 4; ++k) {
+    EXPECT_EQ(rows[k][6], 0) << rows[k][0] << " kHz, loc_length " << rows[k][3];
+    EXPECT_GT(rows[k][3], 1e5 / 32 / 10) << rows[k][0] << " kHz";  // the rule's reason: ℓ > segment / 10
+  }
+  for (std::size_t k = 4; k < 6; ++k) {
+    EXPECT_EQ(rows[k][6], 1) << rows[k][0] << " kHz, loc_length " << rows[k][3];
+    EXPECT_LT(rows[k][3], 300) << rows[k][0] << " kHz";
+  }
+  std::filesystem::remove_all(dir);
+}
+
+// One frequency: the DOS from node counts at f ± 0.005 kHz, not NaN; the same as a list with that step.
+TEST(LocalizationTool, OneFrequencyHasADensityOfStates) {
+  const std::string dir = scratch_folder("loc-one");
+  const std::string chain = "--disorder A --xi 0.5 --q 0.5 --N 1e5 --quiet --output ";
+  ASSERT_EQ(run_tool("localization", chain + dir + "/one --f 10").exit_code, 0);
+  ASSERT_EQ(run_tool("localization", chain + dir + "/three --f 9.995,10,10.005").exit_code, 0);
+  const auto one = read_csv(dir + "/one.csv"), three = read_csv(dir + "/three.csv");
+  ASSERT_EQ(one.size(), 1u);
+  ASSERT_TRUE(std::isfinite(one[0][5]));
+  EXPECT_GT(one[0][5], 0);
+  EXPECT_NEAR(one[0][5], three[1][5], 1e-9 * three[1][5]);
   std::filesystem::remove_all(dir);
 }
 

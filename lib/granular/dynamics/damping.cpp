@@ -25,10 +25,12 @@ double twice_kinetic(const double* __restrict m, const double* __restrict v, std
   return ((part[0] + part[1]) + (part[2] + part[3])) + ((part[4] + part[5]) + (part[6] + part[7]));
 }
 
-// 1 − q of the trapezoidal step g ← q g, q = (1 − y)/(1 + y), in the form exact for small y.
-inline double trapezoidal_loss(double y) { return 2 * y / (1 + y); }
+// 1 − q of the exact pair flow g ← q g, q = e^{−2y} (y = hλ/2), without cancellation for small y.
+// The flow is L-stable: q → 0 for stiff contacts, where Crank–Nicolson's (1 − y)/(1 + y) → −1 made
+// the pair's relative velocity flip sign every step.
+inline double pair_loss(double y) { return -std::expm1(-2 * y); }
 
-// One trapezoidal pair step on the bonds k ∈ [lo, hi) of one parity; vp is padded (vp[k] is
+// One exact pair step on the bonds k ∈ [lo, hi) of one parity; vp is padded (vp[k] is
 // bead k−1, vp[0] = vp[n+1] = 0 the walls, which take no share and stay 0); share is
 // DampingFlow::pair_share(parity). The two members' updates have the same form, so that the
 // compiler vectorizes the pair as one unit.
@@ -105,7 +107,7 @@ double DampingFlow::sweep(std::span<const double> u, std::span<double> v, double
     for (const std::size_t parity : parities) {
       for (std::size_t k = 0; k <= n; ++k) {
         const double x = (k > 0 ? u[k - 1] : 0.0) - (k < n ? u[k] : 0.0);
-        loss_[k] = trapezoidal_loss(*fraction * rate_[k] * std::sqrt(std::max(overlap_[k] + x, 0.0)));
+        loss_[k] = pair_loss(*fraction * rate_[k] * std::sqrt(std::max(overlap_[k] + x, 0.0)));
       }
       pair_damping(vp_.data(), pair_share(parity), loss_.data(), 0, n + 1, parity);
       ++fraction;
@@ -123,7 +125,7 @@ namespace {
 // u[k] − u[k+1]) or padded bead positions p (bead p − 1).
 
 // The bond pass at fixed positions: the forces and stiffnesses for the corrector, and the pair
-// losses of the contact damping (loss2 = 1 − q², two trapezoidal steps). For Hertz the damping's
+// losses of the contact damping (loss2 = 1 − q², two pair steps). For Hertz the damping's
 // [δ]_+^{1/2} is the one in the stiffness K = (3/2) A [δ]_+^{1/2}: one square root per bond
 // serves both (`rate` is then DampingFlow::rate_per_stiffness()).
 template <bool corrector, bool contact, class View>
@@ -139,7 +141,7 @@ void boundary_bonds([[maybe_unused]] const View law, const double* __restrict u,
       double y;
       if constexpr (hertz) y = rate[k] * stiff[k];
       else y = rate[k] * std::sqrt(std::max(overlap[k] + x, 0.0));
-      const double l = trapezoidal_loss(y);
+      const double l = pair_loss(y);
       loss[k] = l;
       loss2[k] = l * (2 - l);
     }
@@ -241,7 +243,7 @@ class DampedPropagator final : public Propagator {
     double* v = vp_.data();
     double* dv = dv_.data();
     // The pair sweeps: end of a step O_{τ/2} E_{τ/2}, start E_{τ/2} O_{τ/2}, both: O_{τ/2} E_τ O_{τ/2}
-    // (E_τ as two Crank–Nicolson steps of τ/2, loss2).
+    // (E_τ as two exact pair steps of τ/2, loss2).
     const std::size_t n = n_, pairs = contact ? (twice ? 3 : 2) : 0;
     const std::size_t final_lag = 2 + pairs;
     const std::size_t parity[3] = {end ? std::size_t{1} : std::size_t{0}, end ? std::size_t{0} : std::size_t{1}, 1};

@@ -12,15 +12,16 @@
 // 0, 2, 4, …) and O (odd bonds), because the bonds of one parity share no bead: each is an
 // independent two-bead problem whose relative velocity g = v_{k−1} − v_k obeys ġ = −λ_k g,
 // λ_k = c_k (1/m_{k−1} + 1/m_k) (a wall has 1/m = 0), while the pair's momentum stays as it is.
-// Each pair takes one trapezoidal (Crank–Nicolson) step, g ← g (1 − y)/(1 + y), y = h λ_k / 2:
-// A-stable, 2nd order, momentum-conserving, and it never adds kinetic energy. One damped step is
+// Each pair takes its exact flow at fixed positions, g ← g e^{−hλ_k}: L-stable (a stiff contact's g
+// decays to 0 instead of flipping sign every step, as Crank–Nicolson's (1 − hλ/2)/(1 + hλ/2) does
+// for hλ/2 > 1), momentum-conserving, and it never adds kinetic energy. One damped step is
 // the symmetric composition
 //   E_{τ/2} O_{τ/2} Φ_τ O_{τ/2} E_{τ/2}   (in time order; the on-site flow over τ/2 at both ends),
 // the Strang splitting of three flows, so 2nd order whatever the conservative scheme (measured:
 // tests/dynamics/damping_test.cpp); the same pieces as E_{h/2} O_h E_{h/2} approximate the
 // damping flow alone to 2nd order (against the exact flow of the whole C:
 // tests/dynamics/damping_flow_test.cpp). With one contact (a two-bead collision) the step is
-// Φ_τ between two Crank–Nicolson half steps of that contact. Unlike a tridiagonal solve over
+// Φ_τ between two exact half-step flows of that contact's damping. Unlike a tridiagonal solve over
 // the chain there is no sequential recurrence: every pass vectorizes (docs/beyond-the-paper.md,
 // Speed). The kinetic energy each damping substep removes is summed exactly, so
 // H(t) + dissipated(t) = H(0) up to the conservative scheme's own energy error.
@@ -54,15 +55,15 @@ class DampingFlow {
   /// on-site flow: a 2nd-order approximation of the damping flow on its own. Returns the kinetic
   /// energy removed [J] (≥ 0 up to rounding).
   double apply(std::span<const double> u, std::span<double> v, double h);
-  /// One sweep, every pair taking a Crank–Nicolson step of h: even bonds first (E_h O_h) or odd
+  /// One sweep, every pair taking its exact flow over h: even bonds first (E_h O_h) or odd
   /// first (O_h E_h), with the on-site flow over h. Each is 1st order; the damped step is
   /// E_{τ/2} O_{τ/2} Φ_τ O_{τ/2} E_{τ/2}, the symmetric composition, 2nd order.
   enum class Sweep { even_first, odd_first };
   double apply(std::span<const double> u, std::span<double> v, double h, Sweep order);
 
   const Damping& damping() const { return damping_; }
-  /// Per bond k: (h/2) γ_KK A_k (1/m_{k−1} + 1/m_k), so that a Crank–Nicolson pair step of h has
-  /// y_k = rate_k [δ_k]_+^{1/2}. Set by apply(), or by prepare(h).
+  /// Per bond k: (h/2) γ_KK A_k (1/m_{k−1} + 1/m_k), so that the pair step of h is
+  /// g ← g e^{−2 y_k}, y_k = rate_k [δ_k]_+^{1/2} (= h λ_k / 2). Set by apply(), or by prepare(h).
   const double* rate() const { return rate_.data(); }
   /// The same per unit Hertz stiffness K_k = (3/2) A_k [δ_k]_+^{1/2}: y_k = rate_per_stiffness_k K_k.
   const double* rate_per_stiffness() const { return rate_per_stiffness_.data(); }
@@ -89,7 +90,7 @@ class DampingFlow {
 /// The damped splitting propagator E_{τ/2} O_{τ/2} Φ_τ O_{τ/2} E_{τ/2} on the whole chain (no
 /// active window: dissipation is for chains of experimental size). Its dissipated_energy() is
 /// the running sum. Within one advance() the damping substeps that meet at a step boundary
-/// (same positions; E_{τ/2} E_{τ/2} as two Crank–Nicolson steps) run as one blocked pass with the
+/// (same positions; E_{τ/2} E_{τ/2} as two exact pair steps) run as one blocked pass with the
 /// SABA2C correctors on either side and the next drift; the kicks are the conservative stepper's
 /// blocked kernels. With no damping at all (Damping::any() false) it is the
 /// conservative stepper on the whole chain.

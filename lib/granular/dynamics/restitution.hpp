@@ -27,7 +27,7 @@ struct Collision {
   double restitution = 0;     ///< e = separation speed / impact speed
   double contact_time = 0;    ///< from touch to separation [s] (to one step τ)
   double max_overlap = 0;     ///< largest compression [m] (at step boundaries)
-  double hertz_time = 0;      ///< the elastic contact time 2.94 (μ/A)^{2/5} v^{−1/5} [s]
+  double hertz_time = 0;      ///< the elastic contact time 3.218 (μ/A)^{2/5} v^{−1/5} = 2.943 δ_max/v [s]
   double time_step = 0;       ///< τ used [s]
   double dissipated = 0;      ///< energy removed [J]
   double initial_energy = 0;  ///< m v²/2 [J]

@@ -12,9 +12,9 @@ std::vector<std::vector<double>> run_ensemble(const EnsembleOptions& o,
                                               const std::function<std::vector<double>(std::uint64_t, int)>& work) {
   const MpiContext& mpi = MpiContext::instance();
   CheckpointRecords finished;
+  // The header must equal o.parameters, which holds the realization count, so a log of another
+  // run size is refused there and every record is < o.realizations.
   if (o.resume) finished = CheckpointLog::load(o.checkpoint, o.parameters, o.accept_other_version);
-  for (auto it = finished.begin(); it != finished.end();)  // a log of a larger run: ignore the excess
-    it = it->first < o.realizations ? std::next(it) : finished.erase(it);
   // Every rank has read the logs before any rank rewrites its own.
   mpi.all(true);
   std::unique_ptr<CheckpointLog> log;
@@ -54,7 +54,7 @@ std::vector<std::vector<double>> run_ensemble(const EnsembleOptions& o,
   }
   auto all = mpi.gather_rows(o.realizations, mine, rows);
   if (mpi.root())
-    for (auto& [r, values] : finished) all[r] = std::move(values);
+    for (auto& [r, values] : finished) all.at(r) = std::move(values);
   return all;
 }
 

@@ -15,10 +15,11 @@ namespace granular {
 
 struct EnsembleOptions {
   std::size_t realizations = 1;
-  int threads = 0;                    ///< per process; 0 = every core
-  std::string checkpoint;             ///< log of finished realizations; empty = none
-  std::string parameters = "{}";      ///< one-line JSON describing the run; a resume must match it
-  bool resume = false;                ///< continue from `checkpoint` instead of starting afresh
+  int threads = 0;         ///< per process; 0 = every core
+  std::string checkpoint;  ///< log of finished realizations; empty = none
+  std::string parameters =
+      "{}";             ///< one-line JSON describing the run (the realization count included); a resume must match it
+  bool resume = false;  ///< continue from `checkpoint` instead of starting afresh
   ProgressMeter* progress = nullptr;  ///< optional; advanced once per realization computed or loaded
   std::function<bool()> cancelled{};  ///< optional; true before a realization starts: throw Cancelled (run_options.hpp)
   bool accept_other_version = false;  ///< resume a checkpoint another toolkit version made (else refused)

@@ -8,7 +8,8 @@
 
 namespace granular {
 
-int resolve_threads(int requested) { return requested > 0 ? requested : omp_get_num_procs(); }
+// omp_get_max_threads() is OMP_NUM_THREADS when set, else every core: a user's limit is kept.
+int resolve_threads(int requested) { return requested > 0 ? requested : omp_get_max_threads(); }
 
 void parallel_realizations(std::size_t count, int threads, const std::function<void(std::size_t, int)>& work,
                            ProgressMeter* progress) {

@@ -10,7 +10,7 @@
 
 namespace granular {
 
-/// Number of threads to use: `requested` if > 0, else every available core.
+/// Number of threads to use: `requested` if > 0, else OMP_NUM_THREADS if set, else every core.
 int resolve_threads(int requested);
 
 /// Calls `work(index, thread)` for every index in [0, count); `thread` ∈ [0, threads) lets

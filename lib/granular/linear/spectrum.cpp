@@ -1,7 +1,11 @@
 #include "granular/linear/spectrum.hpp"
 
+#include <unistd.h>
 #include <algorithm>
+
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <string>
 
 #include "granular/detail/enum_names.hpp"
@@ -137,10 +141,38 @@ std::vector<std::uint8_t> cluster_flags(std::span<const double> omega2) {
   return flags;
 }
 
+std::uint64_t full_spectrum_bytes(std::size_t beads, const SpectrumConfig& config, const ModeSelection& selection) {
+  if (selection.kind != ModeSelection::Kind::all || config.method != SpectrumMethod::lapack) return 0;
+  const std::uint64_t n = beads, square = n * n;
+  const std::uint64_t workspace = config.driver == LapackDriver::stevd ? square + 4 * n + 1 : 20 * n;
+  return 8 * (square + workspace + (config.vectors ? square : 0) + 8 * n);
+}
+
+std::string full_spectrum_problem(std::size_t beads, const SpectrumConfig& config, const ModeSelection& selection) {
+  const std::uint64_t bytes = full_spectrum_bytes(beads, config, selection);
+  if (bytes == 0) return {};
+  const std::uint64_t n = beads;
+  std::string why;
+  if (config.driver == LapackDriver::stevd &&
+      n * n + 4 * n + 1 > static_cast<std::uint64_t>(std::numeric_limits<int>::max()))
+    why = "dstevd's workspace of N^2 + 4N + 1 doubles exceeds LAPACK's 32-bit sizes (N <= 46340)";
+  const long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGE_SIZE);
+  const double physical = pages > 0 && page > 0 ? static_cast<double>(pages) * static_cast<double>(page) : 0;
+  if (why.empty() && physical > 0 && static_cast<double>(bytes) > physical)
+    why = "more than this machine's " + format_number(std::round(physical / 1e8) / 10) + " GB of memory";
+  if (why.empty()) return {};
+  return "every mode with eigenvectors (method lapack) needs " +
+         format_number(std::round(static_cast<double>(bytes) / 1e8) / 10) + " GB: " + why;
+}
+
 Spectrum SpectrumSolver::solve(const DynamicalMatrix& d, const ModeSelection& selection) {
   check_matrix(d);
   validate(selection, d.size());
   validate(config_, selection);
+  if (const std::string problem = full_spectrum_problem(d.size(), config_, selection); !problem.empty())
+    throw InvalidInput("N", " " + std::to_string(d.size()) + ": " + problem +
+                                "; what fits: method fast (every frequency and IPR, O(N) memory, no eigenvectors), "
+                                "or selected modes (nearest/window) with method bisect");
   const std::size_t n = d.size();
   Spectrum out;
   out.beads = n;

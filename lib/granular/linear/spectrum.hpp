@@ -81,6 +81,15 @@ struct SpectrumConfig {
 /// vectors, or lanes outside 1…64.
 void validate(const SpectrumConfig& config, const ModeSelection& selection);
 
+/// Memory [bytes] of every mode by method lapack for an N-bead chain: the N × N eigenvectors, the
+/// driver's workspace (dstevd: N² + 4N + 1 doubles) and a second N × N copy when vectors are
+/// returned; 0 for any other method or selection (they need O(N) per mode).
+std::uint64_t full_spectrum_bytes(std::size_t beads, const SpectrumConfig& config, const ModeSelection& selection);
+/// Why every mode by method lapack cannot run for N beads on this machine ("" when it can): dstevd's
+/// workspace past LAPACK's 32-bit sizes (N > 46340), or full_spectrum_bytes above the physical
+/// memory. Checked before anything is allocated, so a refusal costs nothing.
+std::string full_spectrum_problem(std::size_t beads, const SpectrumConfig& config, const ModeSelection& selection);
+
 /// What the solver did: for reports and for reproducing a result.
 struct SpectrumInfo {
   std::string method;        ///< what ran: "fast", "lapack-stevd", "lapack-stemr", "bisect", "arpack", "slepc"
@@ -134,7 +143,8 @@ class SpectrumSolver {
   SpectrumSolver(SpectrumSolver&&) noexcept;
   SpectrumSolver& operator=(SpectrumSolver&&) noexcept;
 
-  /// The selected modes of `d`. Throws InvalidInput (bad selection/config, non-finite matrix) or
+  /// The selected modes of `d`. Throws InvalidInput (bad selection/config, non-finite matrix, a full
+  /// spectrum that does not fit: full_spectrum_problem, naming `N` and the methods that fit) or
   /// NumericalError (every solver failed).
   Spectrum solve(const DynamicalMatrix& d, const ModeSelection& selection = all_modes());
   /// Every mode of several chains; out[i] is exactly what solve(*matrices[i]) gives (fast

@@ -207,7 +207,7 @@ TransferMatrixScan transfer_matrix_scan(const BeadSource& chain, const std::vect
     omega2[k] = omega * omega;
   }
 
-  const int threads = config.threads > 0 ? config.threads : omp_get_num_procs();
+  const int threads = config.threads > 0 ? config.threads : omp_get_max_threads();  // honours OMP_NUM_THREADS
   const std::size_t width = lane_width(f, static_cast<std::size_t>(threads));
   const std::size_t blocks = (f + width - 1) / width;
   const int workers = static_cast<int>(std::min<std::size_t>(blocks, static_cast<std::size_t>(threads)));

@@ -29,7 +29,7 @@ struct TransferMatrixConfig {
   /// The chain is cut into this many consecutive segments (at most N) for the statistical error
   /// of λ; ≥ 2.
   std::size_t segments = 32;
-  int threads = 0;  ///< OpenMP threads over frequency blocks; 0 = every core
+  int threads = 0;  ///< OpenMP threads over frequency blocks; 0 = OMP_NUM_THREADS if set, else every core
   /// Called from any thread (must be thread-safe) with the number of bead × frequency steps
   /// just done; the total is N × frequencies.
   std::function<void(std::size_t)> progress;

@@ -19,9 +19,9 @@ ChainLength automatic_chain_length(const TransportCase& c) {
   probe.site = 1;
   ChainLength length;
   length.omega_max = time_step_limit(probe).omega_max;
-  length.speed = length.omega_max;
-  length.reach = length.speed * c.dynamics.duration;
-  const double half = std::ceil((1 + length.margin) * length.reach) + static_cast<double>(length.pad);
+  length.max_group_velocity = length.omega_max / 2;
+  length.reach = length.max_group_velocity * c.dynamics.duration;
+  const double half = std::ceil(length.safety * length.reach) + static_cast<double>(length.pad);
   if (!(half < 5e7))
     throw InvalidInput("N", ": the automatic chain length for T = " + std::to_string(c.dynamics.duration) +
                                 " s passes 1e8 beads");
@@ -31,13 +31,13 @@ ChainLength automatic_chain_length(const TransportCase& c) {
 
 nlohmann::json to_json(const ChainLength& length) {
   return {{"rule",
-           "N = 2*ceil((1 + margin)*Omega*T) + 1 + 2*pad, the kick at the centre bead; Omega = omega_max [beads/s] "
-           "(the time-step rule's bound of the highest frequency, >= 2x the linear sound speed at the stiffest "
-           "bond the kick energy allows); the chain drawn outward from the centre bead"},
+           "N = 2*ceil(safety*v*T) + 1 + 2*pad, the kick at the centre bead; v = omega_max/2 [beads/s] bounds "
+           "the fastest group velocity (omega_max: the time-step rule's bound of the highest angular frequency "
+           "at the stiffest bond the kick energy allows); the chain drawn outward from the centre bead"},
           {"omega_max_rad_s", length.omega_max},
-          {"speed_beads_s", length.speed},
+          {"max_group_velocity_beads_per_s", length.max_group_velocity},
           {"reach_beads", length.reach},
-          {"margin", length.margin},
+          {"safety_factor", length.safety},
           {"pad_beads", length.pad},
           {"N", length.n}};
 }

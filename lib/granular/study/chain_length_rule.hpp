@@ -8,7 +8,9 @@
 // the sonic vacuum (F0 = 0), which has no linear sound speed: a pulse of energy ≤ H0 compresses
 // no bond past φ_k = H0, so no bond is stiffer than there, and a nonlinear pulse is no faster
 // than the linear sound speed at its peak strain (checked in tests/study/chain_length_rule_test).
-// So Ω = ω_max is ≥ 2× the fastest speed, and N = 2⌈(1 + margin)·Ω T⌉ + 1 + 2·pad beads.
+// So v = ω_max/2 [beads/s] bounds the fastest group velocity, and N = 2⌈safety·v T⌉ + 1 + 2·pad
+// beads: the safety factor covers the exponentially small precursor ahead of the front (the
+// active window follows energy down to 1e-30 H0, which the test measures at ≤ 0.7 v).
 #include <cstddef>
 
 #include <nlohmann/json_fwd.hpp>
@@ -18,12 +20,12 @@
 namespace granular {
 
 struct ChainLength {
-  double omega_max = 0;  ///< ω_max [rad/s] of time_step_rule.hpp (any integrator)
-  double speed = 0;      ///< Ω [beads/s], = ω_max read as beads per second
-  double reach = 0;      ///< Ω T [beads]: farthest a wave can travel by T
-  double margin = 0.1;   ///< relative margin on the reach
-  std::size_t pad = 50;  ///< beads added on each side beyond it
-  std::size_t n = 0;     ///< the chain length: 2⌈(1 + margin) Ω T⌉ + 1 + 2 pad
+  double omega_max = 0;           ///< ω_max [rad/s] of time_step_rule.hpp (any integrator)
+  double max_group_velocity = 0;  ///< v = ω_max/2 [beads/s]: no wave is faster
+  double reach = 0;               ///< v T [beads]: farthest a wave can travel by T
+  double safety = 1.1;            ///< factor on the reach
+  std::size_t pad = 50;           ///< beads added on each side beyond it
+  std::size_t n = 0;              ///< the chain length: 2⌈safety v T⌉ + 1 + 2 pad
 };
 
 /// The automatic N of case `c` (its chain kind, F0, kick, force law and T; not its N or τ).

@@ -10,12 +10,12 @@
 
 namespace granular {
 
-/// freq_khz,lyapunov,lyapunov_err,loc_length,idos,dos.
+/// freq_khz,lyapunov,lyapunov_err,loc_length,idos,dos,resolved.
 void write_localization_csv(std::ostream& out, const LocalizationScan& scan);
 
 /// The scan's JSON entries: chain (its description), parameters (frequencies_khz as asked for —
 /// the range text or the list —, frequency_count, segments, threads), columns (what each CSV
-/// column is), and band_edges_khz for a chain with xi (beads of `material`).
+/// column is), resolved_rule (when loc_length is a measurement), and band_edges_khz for a chain with xi (beads of `material`).
 nlohmann::json describe_localization(const LocalizationScan& scan, const nlohmann::json& chain,
                                      const nlohmann::json& frequencies, int threads, const Material& material);
 

@@ -6,6 +6,9 @@
 #include <map>
 #include <nlohmann/json.hpp>
 #include <utility>
+#include <vector>
+
+#include <Eigen/Eigenvalues>
 
 #include "granular/dynamics/initial_conditions.hpp"
 #include "granular/dynamics/observables.hpp"
@@ -62,14 +65,103 @@ double stiffest(const Law& law, std::size_t k, double energy) {
 
 }  // namespace
 
+namespace {
+
+using Polynomial = std::vector<double>;  // coefficients of h^0, h^1, …
+
+Polynomial operator*(const Polynomial& a, const Polynomial& b) {
+  Polynomial c(a.size() + b.size() - 1, 0.0);
+  for (std::size_t i = 0; i < a.size(); ++i)
+    for (std::size_t j = 0; j < b.size(); ++j) c[i + j] += a[i] * b[j];
+  return c;
+}
+
+Polynomial operator+(Polynomial a, const Polynomial& b) {
+  if (a.size() < b.size()) a.resize(b.size(), 0.0);
+  for (std::size_t i = 0; i < b.size(); ++i) a[i] += b[i];
+  return a;
+}
+
+// step_trace(s, h) as a polynomial in h: the same product with entries that are polynomials.
+Polynomial trace_polynomial(const SplittingScheme& s) {
+  using PolyMatrix = std::array<Polynomial, 4>;
+  const auto times = [](const PolyMatrix& a, const PolyMatrix& b) {
+    return PolyMatrix{a[0] * b[0] + a[1] * b[2], a[0] * b[1] + a[1] * b[3], a[2] * b[0] + a[3] * b[2],
+                      a[2] * b[1] + a[3] * b[3]};
+  };
+  const PolyMatrix corrector{Polynomial{1}, Polynomial{0}, Polynomial{0, 0, 0, s.corrector}, Polynomial{1}};
+  PolyMatrix m = corrector;
+  for (std::size_t j = 0; j < s.drift.size(); ++j) {
+    m = times(PolyMatrix{Polynomial{1}, Polynomial{0, s.drift[j]}, Polynomial{0}, Polynomial{1}}, m);
+    if (j < s.kick.size())
+      m = times(PolyMatrix{Polynomial{1}, Polynomial{0}, Polynomial{0, -s.kick[j]}, Polynomial{1}}, m);
+  }
+  m = times(corrector, m);
+  return m[0] + m[3];
+}
+
+// The real roots in (0, limit) of p, ascending, from the eigenvalues of its companion matrix
+// (p's zero roots, those of trace − 2 at h = 0, removed first).
+std::vector<double> positive_real_roots(Polynomial p, double limit) {
+  double scale = 0;
+  for (double c : p) scale = std::max(scale, std::fabs(c));
+  for (double& c : p)
+    if (std::fabs(c) <= 1e-15 * scale) c = 0;
+  while (!p.empty() && p.back() == 0) p.pop_back();
+  std::size_t zeros = 0;
+  while (zeros < p.size() && p[zeros] == 0) ++zeros;
+  p.erase(p.begin(), p.begin() + static_cast<std::ptrdiff_t>(zeros));
+  const auto degree = static_cast<Eigen::Index>(p.size()) - 1;
+  if (degree < 1) return {};
+  Eigen::MatrixXd companion = Eigen::MatrixXd::Zero(degree, degree);
+  for (Eigen::Index i = 1; i < degree; ++i) companion(i, i - 1) = 1;
+  for (Eigen::Index i = 0; i < degree; ++i) companion(i, degree - 1) = -p[static_cast<std::size_t>(i)] / p.back();
+  const Eigen::EigenSolver<Eigen::MatrixXd> solver(companion, false);
+  std::vector<double> roots;
+  for (const auto& z : solver.eigenvalues())
+    if (z.real() > 0 && z.real() < limit && std::fabs(z.imag()) <= 1e-6 * std::abs(z)) roots.push_back(z.real());
+  std::sort(roots.begin(), roots.end());
+  return roots;
+}
+
+}  // namespace
+
 double stable_step_limit(const SplittingScheme& s) {
-  const double step = 1e-3;
-  double h = step;
-  while (h < 20 && std::fabs(step_trace(s, h)) <= 2) h += step;
-  double lo = h - step, hi = h;
+  // The first h where |trace| passes 2 is the smallest root of trace² − 4 at which the trace
+  // crosses ±2 (a touch keeps the step stable). The roots come from the trace's polynomial, so no
+  // unstable gap, however narrow, is stepped over; the bracket is then the one a scan in steps of
+  // 1e-3 would give where that scan sees the gap (the same h* to the last bit), and bisection
+  // takes it to full precision.
+  const double step = 1e-3, limit = 20;
+  const Polynomial trace = trace_polynomial(s);
+  std::vector<double> roots = positive_real_roots(trace + Polynomial{-2}, limit);
+  for (double r : positive_real_roots(trace + Polynomial{2}, limit)) roots.push_back(r);
+  std::sort(roots.begin(), roots.end());
+  const auto unstable = [&](double h) { return std::fabs(step_trace(s, h)) > 2; };
+  double lo = 0, hi = 0;
+  for (std::size_t i = 0; i < roots.size() && hi == 0; ++i) {
+    // Is |trace| > 2 just past roots[i]: between it and the next root (or a little beyond it)?
+    const double next = i + 1 < roots.size() ? roots[i + 1] : roots[i] * 1.01;
+    const double inside = std::min(roots[i] + (next - roots[i]) / 2, roots[i] * (1 + 1e-3));
+    if (!unstable(inside) && !unstable(next)) continue;
+    double h = step;
+    while (h < roots[i]) h += step;
+    if (!unstable(h - step) && unstable(h)) {
+      lo = h - step, hi = h;
+    } else {  // a gap narrower than the scan's step
+      lo = h - step;
+      while (lo > 0 && unstable(lo)) lo -= step;
+      hi = unstable(inside) ? inside : next;
+    }
+  }
+  if (hi == 0) {  // no instability below the limit: what the scan ends with
+    double h = step;
+    while (h < limit && !unstable(h)) h += step;
+    lo = h - step, hi = h;
+  }
   for (int i = 0; i < 60; ++i) {
     const double mid = (lo + hi) / 2;
-    (std::fabs(step_trace(s, mid)) <= 2 ? lo : hi) = mid;
+    (unstable(mid) ? hi : lo) = mid;
   }
   return lo;
 }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <string>
 
@@ -21,8 +22,21 @@ std::string_view to_string(LapackDriver driver) { return driver_names.name_of(dr
 
 LapackDriver parse_lapack_driver(std::string_view name) { return driver_names.parse(name); }
 
+namespace {
+
+/// A LAPACK size computed in 64 bits; the LP64 interface takes int, so a larger one is an error
+/// instead of a wrapped, negative size.
+int lapack_int(std::int64_t size, const char* what) {
+  if (size > std::numeric_limits<int>::max())
+    throw InvalidInput("N", ": " + std::string(what) + " needs " + std::to_string(size) +
+                                " entries, more than LAPACK's 32-bit sizes allow");
+  return static_cast<int>(size);
+}
+
+}  // namespace
+
 void LapackEigensolver::solve(const SymTridiagonal& t, bool want_vectors, EigenDecomposition& out) {
-  const int n = static_cast<int>(t.size());
+  const int n = lapack_int(static_cast<std::int64_t>(t.size()), "the matrix");
   if (n < 1) throw InvalidInput("eigen-solve of an empty matrix");
   const double scale = t.max_abs();
   if (!std::isfinite(scale) || !t.all_finite()) throw NumericalError("dynamical matrix has a non-finite entry");
@@ -62,35 +76,45 @@ int LapackEigensolver::run(LapackDriver driver, bool want_vectors, int n, EigenD
   const int il = 0, iu = 0;
   switch (driver) {
     case LapackDriver::stevr: {
-      const int lwork = 20 * n, liwork = 10 * n;
+      const int lwork = lapack_int(20 * std::int64_t{n}, "dstevr's workspace"),
+                liwork = lapack_int(10 * std::int64_t{n}, "dstevr's integer workspace");
       work_.resize(lwork);
       iwork_.resize(liwork);
-      isuppz_.resize(2 * n);
+      isuppz_.resize(2 * static_cast<std::size_t>(n));
       dstevr_(jobz, "A", &n, d_.data(), e_.data(), &vl, &vu, &il, &iu, &abstol, &m, out.values.data(), z, &ldz,
               isuppz_.data(), work_.data(), &lwork, iwork_.data(), &liwork, &info, 1, 1);
       break;
     }
     case LapackDriver::stemr: {
-      const int lwork = 18 * n, liwork = 10 * n, nzc = n;
+      const int lwork = lapack_int(18 * std::int64_t{n}, "dstemr's workspace"),
+                liwork = lapack_int(10 * std::int64_t{n}, "dstemr's integer workspace"), nzc = n;
       int tryrac = 1;
       work_.resize(lwork);
       iwork_.resize(liwork);
-      isuppz_.resize(2 * n);
+      isuppz_.resize(2 * static_cast<std::size_t>(n));
       dstemr_(jobz, "A", &n, d_.data(), e_.data(), &vl, &vu, &il, &iu, &m, out.values.data(), z, &ldz, &nzc,
               isuppz_.data(), &tryrac, work_.data(), &lwork, iwork_.data(), &liwork, &info, 1, 1);
       break;
     }
     case LapackDriver::stevd: {
-      const int lwork = want_vectors ? 1 + 4 * n + n * n : 1, liwork = want_vectors ? 3 + 5 * n : 1;
-      work_.resize(lwork);
-      iwork_.resize(liwork);
+      // Ask dstevd for its workspace (lwork = -1) instead of spelling out 1 + 4n + n², which
+      // overflows an int above n = 46340; an answer past the LP64 limit is refused, not wrapped.
+      int lwork = -1, liwork = -1;
+      work_.resize(std::max<std::size_t>(work_.size(), 1));
+      iwork_.resize(std::max<std::size_t>(iwork_.size(), 1));
+      dstevd_(jobz, &n, d_.data(), e_.data(), z, &ldz, work_.data(), &lwork, iwork_.data(), &liwork, &info, 1);
+      if (info != 0) break;
+      lwork = lapack_int(static_cast<std::int64_t>(std::ceil(work_[0])), "dstevd's workspace");
+      liwork = std::max(iwork_[0], 1);
+      work_.resize(static_cast<std::size_t>(std::max(lwork, 1)));
+      iwork_.resize(static_cast<std::size_t>(liwork));
       dstevd_(jobz, &n, d_.data(), e_.data(), z, &ldz, work_.data(), &lwork, iwork_.data(), &liwork, &info, 1);
       if (info == 0) std::copy(d_.begin(), d_.end(), out.values.data());
       m = n;
       break;
     }
     case LapackDriver::steqr: {
-      work_.resize(std::max(1, 2 * n - 2));
+      work_.resize(static_cast<std::size_t>(std::max<std::int64_t>(1, 2 * std::int64_t{n} - 2)));
       dsteqr_(want_vectors ? "I" : "N", &n, d_.data(), e_.data(), z, &ldz, work_.data(), &info, 1);
       if (info == 0) std::copy(d_.begin(), d_.end(), out.values.data());
       m = n;
@@ -180,13 +204,15 @@ int LapackEigensolver::run_indices(LapackDriver driver, bool want_vectors, int n
   const double vl = 0, vu = 0, abstol = 0;
   isuppz_.resize(2 * static_cast<std::size_t>(std::max(wanted, 1)));
   if (driver == LapackDriver::stevr) {
-    const int lwork = 20 * n, liwork = 10 * n;
+    const int lwork = lapack_int(20 * std::int64_t{n}, "dstevr's workspace"),
+              liwork = lapack_int(10 * std::int64_t{n}, "dstevr's integer workspace");
     work_.resize(lwork);
     iwork_.resize(liwork);
     dstevr_(jobz, "I", &n, d_.data(), e_.data(), &vl, &vu, &first, &last, &abstol, &m, out.values.data(), z, &ldz,
             isuppz_.data(), work_.data(), &lwork, iwork_.data(), &liwork, &info, 1, 1);
   } else {
-    const int lwork = 18 * n, liwork = 10 * n, nzc = wanted;
+    const int lwork = lapack_int(18 * std::int64_t{n}, "dstemr's workspace"),
+              liwork = lapack_int(10 * std::int64_t{n}, "dstemr's integer workspace"), nzc = wanted;
     int tryrac = 1;
     work_.resize(lwork);
     iwork_.resize(liwork);
