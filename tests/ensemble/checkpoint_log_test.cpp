@@ -70,6 +70,23 @@ TEST(CheckpointLog, IgnoresATornLastLineAndCorruptedRecords) {
   CheckpointLog::remove_all(path);
 }
 
+TEST(CheckpointLog, RemoveAllTakesTheTemporariesOfKilledRunsAndNothingElse) {
+  const std::string path = temp_path("family");
+  { CheckpointLog log(path, "{}"); }
+  const std::vector<std::string> theirs = {path + ".tmp.4242", path + ".rank1", path + ".rank1.tmp.77"};
+  const std::vector<std::string> users = {path + ".bak", path + ".tmp.old", path + ".rank1.orig",
+                                          path + "x.tmp.12", path + ".tmp."};
+  for (const auto& f : theirs) std::ofstream(f) << "x";
+  for (const auto& f : users) std::ofstream(f) << "x";
+  CheckpointLog::remove_all(path);
+  EXPECT_FALSE(std::filesystem::exists(path));
+  for (const auto& f : theirs) EXPECT_FALSE(std::filesystem::exists(f)) << f;
+  for (const auto& f : users) {
+    EXPECT_TRUE(std::filesystem::exists(f)) << f;
+    std::filesystem::remove(f);
+  }
+}
+
 TEST(CheckpointLog, ASymlinkAtItsTemporaryNamesIsNotFollowed) {
   // The fixed PATH.tmp it once used and the PATH.tmp.<pid> of every temporary now, each pointing
   // at a file of the user's: the log is written around them and the victim is untouched.

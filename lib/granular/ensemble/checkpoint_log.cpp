@@ -298,6 +298,26 @@ bool CheckpointLog::exists(const std::string& base) { return !family(base).empty
 
 void CheckpointLog::remove_all(const std::string& base) {
   for (const std::string& path : family(base)) std::filesystem::remove(path);
+  // A run killed between creating a header's temporary and renaming it leaves BASE[.rankK].tmp.PID
+  // behind (io/detail/temporary_file); once the run is done it is nobody's.
+  namespace fs = std::filesystem;
+  fs::path folder = fs::path(base).parent_path();
+  if (folder.empty()) folder = ".";
+  const std::string stem = fs::path(base).filename().string();
+  const auto digits = [](const std::string& s, std::size_t from, std::size_t to) {
+    return to > from && s.find_first_not_of("0123456789", from) >= to;
+  };
+  std::error_code ec;
+  for (const auto& entry : fs::directory_iterator(folder, ec)) {
+    const std::string name = entry.path().filename().string();
+    const auto tmp = name.rfind(".tmp.");
+    if (name.compare(0, stem.size(), stem) != 0 || tmp == std::string::npos || tmp < stem.size() ||
+        !digits(name, tmp + 5, name.size()))
+      continue;
+    const std::string member = name.substr(stem.size(), tmp - stem.size());  // "" or ".rankK"
+    if (member.empty() || (member.rfind(".rank", 0) == 0 && digits(member, 5, member.size())))
+      fs::remove(entry.path(), ec);
+  }
 }
 
 void CheckpointLog::append(std::uint64_t index, const std::vector<double>& values) {

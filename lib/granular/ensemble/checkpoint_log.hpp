@@ -51,7 +51,8 @@ class CheckpointLog {
   /// The log file of an MPI rank: `base` for rank 0, `base.rank<k>` otherwise.
   static std::string rank_path(const std::string& base, int rank);
 
-  /// Removes `base` and every `base.rank<k>` (after the outputs are safely written).
+  /// Removes `base`, every `base.rank<k>` and the temporaries a killed run left of them
+  /// (`base[.rank<k>].tmp.<pid>`), after the outputs are safely written; nothing else.
   static void remove_all(const std::string& base);
 
   /// Appends one finished realization and flushes it to disk. Thread-safe.
