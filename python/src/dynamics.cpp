@@ -213,10 +213,10 @@ void bind_dynamics(py::module_& m) {
           bad_value("mode", ": mode, mode_khz and energy only with ic='mode'");
         c.mode = {.mode = mode, .near_khz = mode_khz, .energy = energy, .amplitude = 0};
         validate(c);
-        if (const std::string w = duration_warning(c, "T"); !w.empty()) warn({w});
         // τ by the stability rule on the chain's recipe: every realization of a random chain (as the
         // tool's --disorder), this very chain for a given one (as the tool's --config/--radii).
         const nlohmann::json step_rule = settle_scheme_and_step(c, integrator == "auto", !dt.is_none());
+        if (const std::string w = duration_warning(c, "T"); !w.empty()) warn({w});  // after the errors
         const KickedChain kicked = kick(c, chain.chain);
 
         SpreadingResult r;
@@ -386,8 +386,8 @@ void bind_dynamics(py::module_& m) {
         granular::apply(BeyondChoices{damping_time, kk_gamma, mle, renormalize}, c.dynamics);
         c.fit = c.fit_end <= c.dynamics.duration * (1 + 1e-12);
         validate(c);
-        if (const std::string w = duration_warning(c, "T"); !w.empty()) warn({w});
         const nlohmann::json step_rule = settle_scheme_and_step(c, integrator == "auto", !dt.is_none());
+        if (const std::string w = duration_warning(c, "T"); !w.empty()) warn({w});  // after the errors
         const int thread_request = static_cast<int>(checked_size(threads, "threads", 0, 4096));
         const std::string log = checkpoint.is_none() ? std::string() : py::str(checkpoint).cast<std::string>();
         if ((resume || resume_other_version) && log.empty())
@@ -539,12 +539,12 @@ void bind_dynamics(py::module_& m) {
         granular::apply(BeyondChoices{damping_time, kk_gamma, mle, renormalize}, base.dynamics);
         auto cases = exponent_cases(config);
         for (const auto& c : cases) validate(c);
-        for (const auto& c : cases)  // one warning is enough: the cases share T
+        const nlohmann::json step_rule = settle_scheme_and_step(cases, integrator == "auto", !dt.is_none());
+        for (const auto& c : cases)  // after the errors; one warning is enough: the cases share T
           if (const std::string w = duration_warning(c, "T"); !w.empty()) {
             warn({w});
             break;
           }
-        const nlohmann::json step_rule = settle_scheme_and_step(cases, integrator == "auto", !dt.is_none());
         base.dynamics = cases.front().dynamics;  // τ and scheme as settled
         std::size_t total = 0;
         for (const auto& c : cases) total += c.realizations;

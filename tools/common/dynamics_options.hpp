@@ -99,19 +99,21 @@ inline void apply(const DynamicsOptions& o, TransportCase& c) {
 /// the scheme first (SRKN14a at 5 µs where no contact can open and it is cheaper, else SABA2C).
 inline nlohmann::json settle_time_step(std::vector<TransportCase>& cases, const DynamicsOptions& o, bool dt_given,
                                        const Chain* chain = nullptr) {
-  for (const auto& c : cases)  // one warning is enough: the cases share T
+  nlohmann::json rule = settle_scheme_and_step(cases, o.choices.integrator == "auto", dt_given, chain);
+  for (const auto& c : cases)  // after the errors (a user acts on those first); the cases share T
     if (const std::string w = duration_warning(c, "--T"); !w.empty()) {
       std::fprintf(stderr, "warning: %s\n", w.c_str());
       break;
     }
-  return settle_scheme_and_step(cases, o.choices.integrator == "auto", dt_given, chain);
+  return rule;
 }
 
 /// The same for one case.
 inline nlohmann::json settle_time_step(TransportCase& c, const DynamicsOptions& o, bool dt_given,
                                        const Chain* chain = nullptr) {
+  nlohmann::json rule = settle_scheme_and_step(c, o.choices.integrator == "auto", dt_given, chain);
   if (const std::string w = duration_warning(c, "--T"); !w.empty()) std::fprintf(stderr, "warning: %s\n", w.c_str());
-  return settle_scheme_and_step(c, o.choices.integrator == "auto", dt_given, chain);
+  return rule;
 }
 
 }  // namespace granular::tool
