@@ -81,6 +81,7 @@ int main(int argc, char** argv) {
     if ((config.chain.distribution = tool::bead_distribution(beads)))
       config.q_values = config.xi_values = {std::numeric_limits<double>::quiet_NaN()};  // one cell
     validate(config);
+    tool::warn_implausible(config.chain, beads);
     const std::string csv_path = output + ".csv", json_path = output + ".json";
     const tool::OutputClaim claim(output, meta.command());
     check_writable(csv_path);

@@ -62,6 +62,11 @@ int main(int argc, char** argv) {
         config.segments = static_cast<std::size_t>(segments);
         const std::string csv_path = output + ".csv", json_path = output + ".json";
         const tool::StreamedChain chain = tool::build_bead_source(chain_options);
+        for (double f : config.frequency_khz)  // the first one above the chain's frequencies
+          if (const auto w = frequency_warning("--f", f, chain.highest_frequency_khz); !w.empty()) {
+            std::fprintf(stderr, "warning: %s\n", w.c_str());
+            break;
+          }
         validate(config);
         const tool::OutputClaim claim(output, meta.command());
         check_writable(csv_path);

@@ -51,6 +51,10 @@ PyChain py_chain(ChainRecipe recipe, std::uint64_t realization, const std::strin
 std::string keyword_of(const std::string& parameter);
 /// Throws InvalidInput(keyword, " <value>: <rule>") — the message format of the library.
 [[noreturn]] void bad_value(const std::string& keyword, const std::string& problem);
+
+/// Each warning of the library as a Python RuntimeWarning (the tools print them on stderr);
+/// returns them as a list.
+py::list warn(const std::vector<std::string>& notes);
 /// A size-like integer keyword: ValueError naming it unless lo ≤ value (≤ hi).
 std::size_t checked_size(long long value, const char* keyword, long long lo = 0, long long hi = 100000000000000000LL);
 /// A finite float keyword (NaN and infinities rejected, naming it).

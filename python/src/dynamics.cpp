@@ -18,6 +18,7 @@
 #include "granular/model/named_chains.hpp"
 #include "granular/number_format.hpp"
 #include "granular/parallel/mpi_context.hpp"
+#include "granular/study/chain_length_rule.hpp"
 #include "granular/study/exponent_table.hpp"
 #include "granular/study/paper_comparison.hpp"
 #include "granular/study/scheme_choice.hpp"
@@ -138,16 +139,6 @@ nlohmann::json exponent_keys(const std::optional<TransportExponents>& e, SpreadC
   return out;
 }
 
-/// Each warning of the library as a Python RuntimeWarning (the tools print them on stderr).
-py::list warn(const std::vector<std::string>& notes) {
-  py::list out;
-  for (const auto& note : notes) {
-    out.append(note);
-    if (PyErr_WarnEx(PyExc_RuntimeWarning, note.c_str(), 2) != 0) throw py::error_already_set();
-  }
-  return out;
-}
-
 py::object wrap_result(const char* type, py::dict values) {
   return py::module_::import("granular._results").attr(type)(values);
 }
@@ -225,6 +216,7 @@ void bind_dynamics(py::module_& m) {
         // τ by the stability rule on the chain's recipe: every realization of a random chain (as the
         // tool's --disorder), this very chain for a given one (as the tool's --config/--radii).
         const nlohmann::json step_rule = settle_scheme_and_step(c, integrator == "auto", !dt.is_none());
+        if (const std::string w = duration_warning(c, "T"); !w.empty()) warn({w});  // after the errors
         const KickedChain kicked = kick(c, chain.chain);
 
         SpreadingResult r;
@@ -395,6 +387,7 @@ void bind_dynamics(py::module_& m) {
         c.fit = c.fit_end <= c.dynamics.duration * (1 + 1e-12);
         validate(c);
         const nlohmann::json step_rule = settle_scheme_and_step(c, integrator == "auto", !dt.is_none());
+        if (const std::string w = duration_warning(c, "T"); !w.empty()) warn({w});  // after the errors
         const int thread_request = static_cast<int>(checked_size(threads, "threads", 0, 4096));
         const std::string log = checkpoint.is_none() ? std::string() : py::str(checkpoint).cast<std::string>();
         if ((resume || resume_other_version) && log.empty())
@@ -547,6 +540,11 @@ void bind_dynamics(py::module_& m) {
         auto cases = exponent_cases(config);
         for (const auto& c : cases) validate(c);
         const nlohmann::json step_rule = settle_scheme_and_step(cases, integrator == "auto", !dt.is_none());
+        for (const auto& c : cases)  // after the errors; one warning is enough: the cases share T
+          if (const std::string w = duration_warning(c, "T"); !w.empty()) {
+            warn({w});
+            break;
+          }
         base.dynamics = cases.front().dynamics;  // τ and scheme as settled
         std::size_t total = 0;
         for (const auto& c : cases) total += c.realizations;

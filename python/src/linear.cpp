@@ -13,7 +13,9 @@
 #include "granular/linear/band_edges.hpp"
 #include "granular/linear/dynamical_matrix.hpp"
 #include "granular/linear/spectrum.hpp"
+#include "granular/linear/sym_tridiagonal.hpp"
 #include "granular/model/named_chains.hpp"
+#include "granular/model/plausibility.hpp"
 #include "granular/number_format.hpp"
 #include "granular/parallel/mpi_context.hpp"
 #include "granular/study/spectrum_file.hpp"
@@ -286,6 +288,15 @@ void bind_linear(py::module_& m) {
                               config_of(method, driver, vectors, tolerance, subspace, lanes), method};
         validate(q.config, q.selection);
         System s = system_of(system);
+        if (q.selection.kind != ModeSelection::Kind::all) {  // a unit slip (Hz as kHz) deserves a word
+          const bool by_near = q.selection.kind == ModeSelection::Kind::nearest;
+          const double top = s.matrix ? frequency_khz(std::max(0.0, gershgorin_bounds(*s.matrix).second))
+                                      : highest_frequency_bound_khz(s.chain->recipe);
+          if (const std::string w = frequency_warning(by_near ? "near" : "window",
+                                                      by_near ? q.selection.near_khz : q.selection.lo_khz, top);
+              !w.empty())
+            warn({w});
+        }
         SpectrumSolver solver(q.config);
         Spectrum r = solve(solver, s, q.selection);
         nlohmann::json meta = spectrum_metadata(r, s, q);

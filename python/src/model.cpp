@@ -14,6 +14,7 @@
 #include "granular/model/contact_law.hpp"
 #include "granular/model/correlation.hpp"
 #include "granular/model/named_chains.hpp"
+#include "granular/model/plausibility.hpp"
 #include "granular/number_format.hpp"
 
 namespace granular::python {
@@ -91,6 +92,7 @@ py::object chain_types(const PyChain& c) {
 
 PyChain py_chain(ChainRecipe recipe, std::uint64_t realization, const std::string& name) {
   validate(recipe);
+  warn(radius_warnings(recipe, {"R1", "beads", "radii"}));
   PyChain c;
   c.chain = recipe.chain(realization);
   c.types = recipe.types(realization);

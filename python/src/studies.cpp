@@ -10,6 +10,7 @@
 #include "granular/error.hpp"
 #include "granular/model/bead_source.hpp"
 #include "granular/model/named_chains.hpp"
+#include "granular/model/plausibility.hpp"
 #include "granular/number_format.hpp"
 #include "granular/study/correlation_files.hpp"
 #include "granular/study/ipr_map_files.hpp"
@@ -306,9 +307,11 @@ void bind_studies(py::module_& m) {
         config.segments = checked_size(segments, "segments", 2, 1000000);
         const int thread_request = thread_count(threads);
         Beads beads;
+        double top_khz = 0;  // bound on the chain's frequencies, for the unit-slip warning
         if (!chain.is_none()) {
           if (!py::isinstance<PyChain>(chain)) throw py::type_error("chain: expected a granular.Chain or None");
           beads = beads_of(chain.cast<const PyChain&>());
+          top_khz = highest_frequency_bound_khz(chain.cast<const PyChain&>().recipe);
         } else {
           const double n = N.cast<double>();
           if (!(n >= 2) || !(n <= 1e12) || n != std::floor(n))
@@ -322,6 +325,9 @@ void bind_studies(py::module_& m) {
                                   .F0 = F0,
                                   .R1 = R1};
           beads.source = random_beads(kind, p);
+          ChainRecipe recipe{.disorder = kind, .q = q, .xi = xi, .R1 = R1, .F0 = F0};
+          warn(radius_warnings(recipe, {"R1", "beads", "radii"}));
+          top_khz = highest_frequency_bound_khz(recipe);
           beads.description = {{"F0_N", F0},
                                {"material", describe(steel)},
                                {"walls", flat_walls_description},
@@ -334,6 +340,11 @@ void bind_studies(py::module_& m) {
         }
         beads.description["N"] = beads.source->size();
         validate(config);
+        for (double v : config.frequency_khz)  // the first one above the chain's frequencies
+          if (const std::string w = frequency_warning("f", v, top_khz); !w.empty()) {
+            warn({w});
+            break;
+          }
         PyLocalization out;
         run_long("localization", beads.source->size() * config.frequency_khz.size(), progress,
                  [&](const LongRun& control) {

@@ -262,4 +262,14 @@ void run_long(const std::string& label, std::size_t total, bool progress,
   if (failure) std::rethrow_exception(failure);
 }
 
+/// Each warning of the library as a Python RuntimeWarning (the tools print them on stderr).
+py::list warn(const std::vector<std::string>& notes) {
+  py::list out;
+  for (const auto& note : notes) {
+    out.append(note);
+    if (PyErr_WarnEx(PyExc_RuntimeWarning, note.c_str(), 2) != 0) throw py::error_already_set();
+  }
+  return out;
+}
+
 }  // namespace granular::python

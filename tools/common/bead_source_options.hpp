@@ -15,6 +15,7 @@ namespace granular::tool {
 struct StreamedChain {
   std::unique_ptr<BeadSource> source;
   nlohmann::json description;
+  double highest_frequency_khz = 0;  ///< bound on every linear frequency (model/plausibility.hpp)
 };
 
 inline StreamedChain build_bead_source(const ChainOptions& o) {
@@ -27,9 +28,11 @@ inline StreamedChain build_bead_source(const ChainOptions& o) {
   if (!streamed && recipe.drawn() && o.n > 100000000)
     throw InvalidInput("N", " " + std::to_string(o.n) + ": --types/--polydisperse store the chain (<= 1e8)");
   validate(recipe, streamed ? 1000000000000 : 100000000);
+  warn_implausible(recipe, o);
   StreamedChain s;
   s.source = recipe.beads(chain_realization(o));
   s.description = describe(recipe, chain_realization(o));
+  s.highest_frequency_khz = highest_frequency_bound_khz(recipe);
   return s;
 }
 

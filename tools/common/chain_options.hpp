@@ -16,6 +16,7 @@
 #include "granular/model/chain_recipe.hpp"
 #include "granular/model/configuration_file.hpp"
 #include "granular/model/named_chains.hpp"
+#include "granular/model/plausibility.hpp"
 #include "tool_main.hpp"
 
 namespace granular::tool {
@@ -70,7 +71,6 @@ inline void add_chain_options(CLI::App& app, ChainOptions& o) {
 }
 
 /// The distribution of --types / --type-masses / --polydisperse, if one is given (rule: --disorder).
-/// Prints a warning naming the option for a radius outside the contact law's plausible range.
 inline std::optional<BeadDistribution> bead_distribution(const ChainOptions& o) {
   BeadDistribution d;
   std::string option, text;
@@ -119,8 +119,6 @@ inline std::optional<BeadDistribution> bead_distribution(const ChainOptions& o) 
   } catch (const InvalidInput& e) {
     throw InvalidInput(option + " '" + text + "': " + e.what());
   }
-  for (double r : d.radii)
-    if (!plausible_radius(r)) std::fprintf(stderr, "warning: %s\n", implausible_radius_warning(option, r).c_str());
   if (d.kind != BeadDistribution::Kind::types) d.radii.clear();
   return d;
 }
@@ -153,6 +151,16 @@ inline ChainRecipe chain_recipe(const ChainOptions& o) {
   return r;
 }
 
+/// Prints, once per chain a tool builds, a warning naming the option for each radius outside
+/// the contact law's plausible range (model/plausibility.hpp).
+inline void warn_implausible(const ChainRecipe& r, const ChainOptions& o) {
+  const std::string distribution = !o.types.empty()         ? "--types"
+                                   : !o.type_masses.empty() ? "--type-masses"
+                                                            : "--polydisperse";
+  for (const auto& w : radius_warnings(r, {"--R1", distribution, "--radii"}))
+    std::fprintf(stderr, "warning: %s\n", w.c_str());
+}
+
 /// The realization the options pick (0-based).
 inline std::uint64_t chain_realization(const ChainOptions& o) { return static_cast<std::uint64_t>(o.realization); }
 
@@ -167,6 +175,7 @@ inline SelectedChain build_chain(const ChainOptions& o) {
   SelectedChain s;
   s.recipe = chain_recipe(o);
   validate(s.recipe);
+  warn_implausible(s.recipe, o);
   s.chain = s.recipe.chain(chain_realization(o));
   s.description = describe(s.recipe, chain_realization(o));
   if (o.auto_n) s.description["N_rule"] = o.length_rule;

@@ -4,6 +4,7 @@
 // β = 8e-3 m/s, the kick at the centre bead, m̃2 about the excited site, fits on 4–10 ms sampled
 // every 10 µs, t* = 4 ms, κ = 0.1), one --fit and one --beta parser. The library's messages name
 // parameters (`fit_step`, `t_star`); tool::run tells them as these flags (`--fit-step`, `--t-star`).
+#include <cstdio>
 #include <string>
 
 #include <CLI/CLI.hpp>
@@ -14,6 +15,7 @@
 #include "granular/error.hpp"
 #include "granular/io/range_syntax.hpp"
 #include "granular/number_format.hpp"
+#include "granular/study/chain_length_rule.hpp"
 #include "granular/study/scheme_choice.hpp"
 #include "granular/study/time_step_rule.hpp"
 #include "granular/study/transport_choices.hpp"
@@ -97,13 +99,21 @@ inline void apply(const DynamicsOptions& o, TransportCase& c) {
 /// the scheme first (SRKN14a at 5 µs where no contact can open and it is cheaper, else SABA2C).
 inline nlohmann::json settle_time_step(std::vector<TransportCase>& cases, const DynamicsOptions& o, bool dt_given,
                                        const Chain* chain = nullptr) {
-  return settle_scheme_and_step(cases, o.choices.integrator == "auto", dt_given, chain);
+  nlohmann::json rule = settle_scheme_and_step(cases, o.choices.integrator == "auto", dt_given, chain);
+  for (const auto& c : cases)  // after the errors (a user acts on those first); the cases share T
+    if (const std::string w = duration_warning(c, "--T"); !w.empty()) {
+      std::fprintf(stderr, "warning: %s\n", w.c_str());
+      break;
+    }
+  return rule;
 }
 
 /// The same for one case.
 inline nlohmann::json settle_time_step(TransportCase& c, const DynamicsOptions& o, bool dt_given,
                                        const Chain* chain = nullptr) {
-  return settle_scheme_and_step(c, o.choices.integrator == "auto", dt_given, chain);
+  nlohmann::json rule = settle_scheme_and_step(c, o.choices.integrator == "auto", dt_given, chain);
+  if (const std::string w = duration_warning(c, "--T"); !w.empty()) std::fprintf(stderr, "warning: %s\n", w.c_str());
+  return rule;
 }
 
 }  // namespace granular::tool

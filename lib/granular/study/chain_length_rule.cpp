@@ -1,10 +1,12 @@
 #include "granular/study/chain_length_rule.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <nlohmann/json.hpp>
 
 #include "granular/dynamics/scheme.hpp"
 #include "granular/error.hpp"
+#include "granular/number_format.hpp"
 #include "granular/study/time_step_rule.hpp"
 
 namespace granular {
@@ -27,6 +29,17 @@ ChainLength automatic_chain_length(const TransportCase& c) {
                                 " s passes 1e8 beads");
   length.n = 2 * static_cast<std::size_t>(half) + 1;
   return length;
+}
+
+std::string duration_warning(const TransportCase& c, const std::string& option) {
+  const std::size_t n = c.chain.size();
+  if (c.site >= n) return "";  // validate() names it
+  const double wall = static_cast<double>(std::min(c.site + 1, n - c.site));
+  const double speed = time_step_limit(c).omega_max / 2;
+  if (!(speed * c.dynamics.duration > 10 * wall)) return "";
+  return option + " " + format_number(c.dynamics.duration) + ": waves from the kick reach a wall after about " +
+         format_number(std::round(wall / speed * 1e6) / 1e6) + " s and cross the " + std::to_string(n) +
+         "-bead chain many times by T; T is in seconds (milliseconds typed as seconds?)";
 }
 
 nlohmann::json to_json(const ChainLength& length) {

@@ -12,6 +12,7 @@
 // beads: the safety factor covers the exponentially small precursor ahead of the front (the
 // active window follows energy down to 1e-30 H0, which the test measures at ≤ 0.7 v).
 #include <cstddef>
+#include <string>
 
 #include <nlohmann/json_fwd.hpp>
 
@@ -30,6 +31,12 @@ struct ChainLength {
 
 /// The automatic N of case `c` (its chain kind, F0, kick, force law and T; not its N or τ).
 ChainLength automatic_chain_length(const TransportCase& c);
+
+/// A warning when waves from the kick could travel ten times the distance from the kicked bead
+/// to the nearer wall of the case's chain by T (v T > 10 × that distance, v as above): a duration
+/// typed in milliseconds as seconds, most likely. `option` names T as the user typed it ("--T",
+/// "T"); "" when T is plausible.
+std::string duration_warning(const TransportCase& c, const std::string& option);
 
 /// The rule and its numbers, for the JSON.
 nlohmann::json to_json(const ChainLength& length);
