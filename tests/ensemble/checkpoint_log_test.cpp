@@ -74,8 +74,8 @@ TEST(CheckpointLog, RemoveAllTakesTheTemporariesOfKilledRunsAndNothingElse) {
   const std::string path = temp_path("family");
   { CheckpointLog log(path, "{}"); }
   const std::vector<std::string> theirs = {path + ".tmp.4242", path + ".rank1", path + ".rank1.tmp.77"};
-  const std::vector<std::string> users = {path + ".bak", path + ".tmp.old", path + ".rank1.orig",
-                                          path + "x.tmp.12", path + ".tmp."};
+  const std::vector<std::string> users = {path + ".bak", path + ".tmp.old", path + ".rank1.orig", path + "x.tmp.12",
+                                          path + ".tmp."};
   for (const auto& f : theirs) std::ofstream(f) << "x";
   for (const auto& f : users) std::ofstream(f) << "x";
   CheckpointLog::remove_all(path);
