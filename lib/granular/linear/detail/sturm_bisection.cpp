@@ -310,7 +310,9 @@ void lane_group(const SymTridiagonal& t, std::vector<double>& values, const std:
       const double* xp = &x[(i - 1) * L];
       double* di = &inv_d[i * L];
       const double* dp = &inv_d[(i - 1) * L];
+#if defined(__GNUC__) && !defined(__clang__)  // clang warns about the GCC pragma
 #pragma GCC ivdep
+#endif
       for (std::size_t j = 0; j < L; ++j) {
         const double l = ei * dp[j];
         double d = (ai - mu[j]) - l * ei;
@@ -333,7 +335,9 @@ void lane_group(const SymTridiagonal& t, std::vector<double>& values, const std:
       const double* xn = &x[(i + 1) * L];
       const double* xnn = i + 2 < n ? &x[(i + 2) * L] : xn;  // ei1 = 0 then
       const double* di = &inv_d[i * L];
+#if defined(__GNUC__) && !defined(__clang__)  // clang warns about the GCC pragma
 #pragma GCC ivdep
+#endif
       for (std::size_t j = 0; j < L; ++j) {
         const double v = (xi[j] - ei * xn[j]) * di[j];
         xi[j] = v;
