@@ -8,6 +8,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
@@ -264,33 +265,34 @@ CheckpointRecords CheckpointLog::load(const std::string& base, const std::string
   return all;
 }
 
-std::string CheckpointLog::other_version(const std::string& base) {
-  for (const std::string& path : family(base)) {
-    std::ifstream in(path, std::ios::binary);
-    std::string line;
-    std::getline(in, line);
-    if (line.compare(0, std::strlen(magic), magic) != 0) continue;
-    try {
-      const nlohmann::json header = nlohmann::json::parse(line.substr(std::strlen(magic)));
-      if (header.is_object() && (!header.contains(version_key) || header[version_key] != code_version()))
-        return other_version_text(path, header);
-    } catch (const nlohmann::json::exception&) {
-    }
+namespace {
+
+/// The JSON header of the checkpoint at `path`, or nothing when it is not one (or unreadable).
+std::optional<nlohmann::json> header_of(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::string line;
+  std::getline(in, line);
+  if (line.compare(0, std::strlen(magic), magic) != 0) return std::nullopt;
+  try {
+    return nlohmann::json::parse(line.substr(std::strlen(magic)));
+  } catch (const nlohmann::json::exception&) {
+    return std::nullopt;
   }
+}
+
+}  // namespace
+
+std::string CheckpointLog::other_version(const std::string& base) {
+  for (const std::string& path : family(base))
+    if (const auto header = header_of(path);
+        header && header->is_object() && (!header->contains(version_key) || (*header)[version_key] != code_version()))
+      return other_version_text(path, *header);
   return "";
 }
 
 std::string CheckpointLog::code_of(const std::string& base) {
-  for (const std::string& path : family(base)) {
-    std::ifstream in(path, std::ios::binary);
-    std::string line;
-    std::getline(in, line);
-    if (line.compare(0, std::strlen(magic), magic) != 0) continue;
-    try {
-      return code_named(nlohmann::json::parse(line.substr(std::strlen(magic))));
-    } catch (const nlohmann::json::exception&) {
-    }
-  }
+  for (const std::string& path : family(base))
+    if (const auto header = header_of(path)) return code_named(*header);
   return "";
 }
 
