@@ -217,3 +217,63 @@ def test_exponents_script_draws_every_figure_of_a_compare_paper_run(tools):
     bad = subprocess.run([sys.executable, SOURCE / "tools" / "plot" / "spreading_figures.py", "nonsense"],
                          capture_output=True, text=True, cwd=tools.folder)
     assert bad.returncode == 2 and "unknown figure" in bad.stderr and "Traceback" not in bad.stderr
+
+
+def _rendered(fig):
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+    canvas = FigureCanvasAgg(fig)
+    canvas.draw()
+    return canvas.get_renderer()
+
+
+def _inside(artist, container, renderer):
+    box, outer = artist.get_window_extent(renderer), container.get_window_extent(renderer)
+    return box.x0 >= outer.x0 - 1 and box.x1 <= outer.x1 + 1 and box.y0 >= outer.y0 - 1 and box.y1 <= outer.y1 + 1
+
+
+def test_figures_read_their_runs_metadata_and_keep_their_text_inside(tools):
+    """The faults a talk would show: guide labels and titles clipped, insets without the fit window
+    they promise, an energy map from the files without its title, band edges or a sane g(nu) axis."""
+    folder = tools.folder
+    tools.run("exponents", "--chains", "h,A", "--F0", "10", "--ic", "displacement", "--N", "151", "--T", "1e-3",
+              "--fit", "4e-4:1e-3", "--fit-step", "1e-6", "--t-star", "4e-4", "--realizations", "2", "--samples", "50",
+              "--profile-F0", "10", "--quiet", output="exp")
+    fig = gp.exponents(folder / "exp")
+    renderer = _rendered(fig)
+    mains = [ax for ax in fig.axes if ax.get_ylabel()]
+    for ax in mains:
+        for text in ax.texts:
+            if text.get_text().startswith("slope"):
+                assert _inside(text, ax, renderer), text.get_text()
+    insets = [child for ax in mains for child in ax.child_axes]
+    assert insets and all(inset.patches for inset in insets)  # the shaded fit window (4e-4..1e-3 s)
+    spans = insets[0].patches[0].get_path().vertices[:, 0]
+    assert min(spans) == pytest.approx(4e-4) and max(spans) == pytest.approx(1e-3)
+    # drawn at most ~100 points per decade, though the fit window is sampled every 1 us
+    drawn = mains[0].lines[0].get_xdata()
+    assert len(drawn) < 0.5 * len(gp._style.log_thinned(np.geomspace(1e-6, 1e-3, 1000), per_decade=1000))
+    assert np.all(np.diff(np.log10(drawn))[:-1] >= 0.01 - 1e-12)
+
+    centres = gp.centres(folder / "exp", chain="A")
+    assert _inside(centres._suptitle, centres, _rendered(centres))
+    assert all(ax.patches for ax in centres.axes if ax.get_visible())  # the run's window, not a fixed one
+
+    tools.run("spreading", "--N", "201", "--T", "1e-3", "--fit", "2e-4:1e-3", "--energy-map", folder / "map.h5",
+              "--map-samples", "40", "--spectrum", folder / "g.csv", "--spectrum-samples", "100", output="one")
+    fig = gp.energy_map(folder / "map.h5", folder / "g.csv")
+    assert fig._suptitle is not None and "N = 201" in fig._suptitle.get_text()
+    g_panel = fig.axes[1]
+    assert 46 < g_panel.get_ylim()[1] < 60  # 1.25 x the top band edge f2 = 45.6 kHz, not the kick's 250 kHz tail
+    assert len([t for t in g_panel.get_xticks() if g_panel.get_xlim()[0] <= t <= g_panel.get_xlim()[1]]) <= 5
+
+
+def test_localization_figure_marks_unresolved_lengths(tools):
+    tools.run("localization", "--N", "2000", "--f", "0:40:1", "--quiet", output="loc")
+    rows = np.genfromtxt(tools.folder / "loc.csv", delimiter=",", names=True)
+    assert 0 < rows["resolved"].sum() < len(rows)  # f = 0 is never resolved
+    fig = gp.localization(tools.folder / "loc.csv")
+    labels = [line.get_label() for line in fig.axes[0].lines]
+    assert any(label.startswith("not resolved") for label in labels)
+    measured = fig.axes[0].lines[0].get_ydata()
+    assert np.isnan(measured[rows["resolved"] == 0]).all()

@@ -63,6 +63,8 @@ def parser(prog=None):
     q.add_argument("--t-window", type=_pair, metavar="T0:T1", help="time window [s], e.g. 0:2e-3")
     q.add_argument("--sites", type=_pair, metavar="N0:N1", help="bead window (from 1), e.g. 700:900")
     q.add_argument("--floor", type=float, default=-12, help="lowest log10 relative energy shown (default -12)")
+    q.add_argument("--json", help="the run's JSON, for the title and band edges (default: the JSON in the map's "
+                   "folder whose command line names the map)")
     q = kind("forces", "force versus t at chosen beads beside the force profile at T (spreading --forces-at --profile)")
     q.add_argument("forces", help="PREFIX-forces.csv")
     q.add_argument("profile", nargs="?", help="PREFIX-profile.csv (optional)")
@@ -128,7 +130,7 @@ def main(argv=None, prog=None):
             save(plot.localization(args.csv, args.spectrum, args.finite_N), args.output or _default_output(args.csv))
         elif args.kind == "map":
             save(plot.energy_map(args.map, args.spectrum, t_window=args.t_window, site_window=args.sites,
-                                 floor=args.floor), args.output or _default_output(args.map))
+                                 floor=args.floor, metadata=args.json), args.output or _default_output(args.map))
         elif args.kind == "forces":
             save(plot.forces(args.forces, args.profile), args.output or _default_output(args.forces))
         elif args.kind == "spread":

@@ -36,6 +36,25 @@ def read_json_beside(path):
         return json.load(f)
 
 
+def run_json_naming(path):
+    """The metadata of the run that wrote `path` (an extra output such as an energy map, which has no
+    JSON of its own): the tool JSON in the same folder whose command line names the file, or {}."""
+    folder = os.path.dirname(os.path.abspath(os.fspath(path)))
+    name = os.path.basename(os.fspath(path))
+    for entry in sorted(os.listdir(folder)):
+        if not entry.endswith(".json"):
+            continue
+        try:
+            with open(os.path.join(folder, entry)) as f:
+                meta = json.load(f)
+        except (OSError, ValueError):
+            continue
+        command = meta.get("command") if isinstance(meta, dict) else None
+        if isinstance(command, str) and any(os.path.basename(word) == name for word in command.split()):
+            return meta
+    return {}
+
+
 def read_hdf5_map(path):
     """An energy map file of the spreading tool: (t [s], site, energy [J] times x columns)."""
     import h5py  # only for files; a granular result needs no HDF5 here

@@ -134,24 +134,52 @@ def log_derivative(t, y, step=0.1):
     return np.array(out_t), np.array(out_s)
 
 
-def guide(ax, t0, t1, y0, slope, text, at_end=True):
-    """A dashed guide line y0 (t/t0)^slope from t0 to t1, labelled above its end (at_end) or to
-    the left of its start."""
+def wrapped_suptitle(fig, text, fontsize=11):
+    """fig.suptitle with each line wrapped to the figure's width (a narrow figure, e.g. one panel,
+    would clip a long title on both sides): about 0.55 em per character."""
+    import textwrap
+
+    width = max(20, int(fig.get_figwidth() * 72 / (0.55 * fontsize)) - 2)
+    lines = [textwrap.fill(line, width) for line in text.split("\n")]
+    return fig.suptitle("\n".join(lines), fontsize=fontsize)
+
+
+def log_thinned(t, per_decade=100):
+    """Indices of t (increasing, > 0) at most per_decade to a decade: the runs sample the fit window
+    ~60x more densely than the rest, and drawn at full density the oscillations of P^-1 there turn
+    into a solid band. Only the drawing is thinned; fits and insets use every sample."""
+    import numpy as np
+
+    t = np.asarray(t, float)
+    keep, last = [], -np.inf
+    step = math.log(10) / per_decade
+    for i, value in enumerate(t):
+        if value > 0 and math.log(value) - last >= step:
+            keep.append(i)
+            last = math.log(value)
+    if len(t) and (not keep or keep[-1] != len(t) - 1) and t[-1] > 0:
+        keep.append(len(t) - 1)  # the run's end, where the guides are anchored
+    return np.array(keep, dtype=int)
+
+
+def guide(ax, t0, t1, y0, slope, text, above=True):
+    """A dashed guide line y0 (t/t0)^slope from t0 to t1 on log-log axes, labelled on the side away
+    from the data (above an upper guide, below a lower one) at the line's outer end, so that the
+    text runs along the side the line leaves free."""
     if not (t1 > t0 > 0 and y0 > 0):
         return
     y1 = y0 * (t1 / t0) ** slope
     ax.plot([t0, t1], [y0, y1], ls="--", lw=1.0, color="0.2")
-    if at_end:
-        ax.annotate(text, (t1, y1), fontsize=10, ha="right", va="bottom", color="0.2", xytext=(0, 3),
-                    textcoords="offset points")
-    else:
-        ax.annotate(text, (t0, y0), fontsize=10, ha="right", va="center", color="0.2", xytext=(-4, 0),
-                    textcoords="offset points")
+    at_end = slope >= 0 if above else slope <= 0  # the higher end of an upper guide, the lower of a lower
+    point = (t1, y1) if at_end else (t0, y0)
+    ax.annotate(text, point, fontsize=10, ha="right" if at_end else "left", va="bottom" if above else "top",
+                color="0.2", xytext=(0, 3 if above else -3), textcoords="offset points")
 
 
 def guides(ax, curves, slopes, fit=None):
     """Guide slopes over the late part of the run (the fit window when known), anchored on the
-    curves there: the first slope above them all, the second below them all."""
+    curves there: the first slope above them all, the second below them all. The y range grows by
+    a tenth of its decades on each side so that the labels stay inside the axes."""
     import numpy as np
 
     t_end = max(t[-1] for t, _, _ in curves)
@@ -160,7 +188,11 @@ def guides(ax, curves, slopes, fit=None):
     top, bottom = max(values), min(values)
     guide(ax, t_start, t_end, top * 2.5, slopes[0], f"slope {slopes[0]:g}".replace("-", "−"))
     if len(slopes) > 1:
-        guide(ax, t_start, t_end, bottom / 2.5, slopes[1], f"slope {slopes[1]:g}".replace("-", "−"), at_end=False)
+        guide(ax, t_start, t_end, bottom / 2.5, slopes[1], f"slope {slopes[1]:g}".replace("-", "−"), above=False)
+    lo, hi = ax.get_ylim()
+    if lo > 0 and hi > lo:
+        pad = (hi / lo) ** 0.1
+        ax.set_ylim(lo / (pad if len(slopes) > 1 else 1), hi * pad)
 
 
 def inset_log_derivative(ax, curves, where, fit=None, ylim=None):

@@ -45,10 +45,13 @@ def localization(source, spectra=(), finite_N=None):
         rows = _io.read_csv(source)
         meta = _io.read_json_beside(source)
         f, lam, err = rows["freq_khz"], rows["lyapunov"], rows["lyapunov_err"]
+        resolved = rows.get("resolved")
     else:
         meta = source.metadata
         f, lam, err = source.freq_khz, source.lyapunov, source.lyapunov_err
+        resolved = getattr(source, "resolved", None)
     f, lam, err = (np.asarray(x, float) for x in (f, lam, err))
+    resolved = np.ones(len(f), bool) if resolved is None else np.asarray(resolved, float) != 0
     with np.errstate(divide="ignore", invalid="ignore"):
         ell = np.where(lam > 0, 1 / lam, np.nan)
         ell_lo = np.where(lam > 0, 1 / (lam + err), np.nan)
@@ -59,8 +62,14 @@ def localization(source, spectra=(), finite_N=None):
     with style():
         fig = figure(11, 4.6)
         left, right = fig.subplots(1, 2, sharex=True)
-        left.fill_between(f, ell_lo, ell_hi, color="C0", alpha=0.3, lw=0, label="± statistical error")
-        left.plot(f, ell, color="C0", lw=1.2, label=r"$\ell = 1/\lambda$ (transfer matrix)")
+        left.fill_between(f, ell_lo, ell_hi, color="C0", alpha=0.35, lw=0, label="± statistical error")
+        left.plot(f, np.where(resolved, ell, np.nan), color="C0", lw=1.0,
+                  label=r"$\ell = 1/\lambda$ (transfer matrix)")
+        if not resolved.all():
+            # Rows whose l is not a measurement (metadata['resolved_rule']): drawn, but not as one.
+            shown = ~resolved | np.r_[~resolved[1:], False] | np.r_[False, ~resolved[:-1]]
+            left.plot(f, np.where(shown, ell, np.nan), ls="--", color="0.55", lw=1.0,
+                      label="not resolved: only a bound (resolved_rule)")
         left.set_yscale("log")
         log_ticks(left.yaxis)
         left.set_xlabel("frequency f [kHz]")
@@ -75,7 +84,7 @@ def localization(source, spectra=(), finite_N=None):
         right.set_ylabel(r"mode IPR $P^{-1}$")
         right.set_title(f"modes of {len(modes)} finite chain(s)" + (f" of {finite_N} beads" if finite_N else "")
                         if modes else "no finite chains given", fontsize=11)
-        left.legend(loc="lower left")
+        left.legend(loc="upper right", fontsize=9)
         edges = meta.get("band_edges_khz", {})
         left.set_xlim(f.min(), f.max())
         mark_edges(left, edges, orientation="vertical")

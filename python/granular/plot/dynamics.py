@@ -1,5 +1,6 @@
 """Figures of the nonlinear dynamics after a kick: one run's energy map and forces, the spreading
 m2(t) and P^-1(t) of runs or ensembles, spectral densities, and the integrators' cost."""
+import json
 import math
 import os
 
@@ -7,7 +8,7 @@ import matplotlib
 import numpy as np
 
 from . import _io
-from ._style import chain_title, figure, guides, inset_log_derivative, log_ticks, mark_edges, style
+from ._style import chain_title, figure, guides, inset_log_derivative, log_thinned, log_ticks, mark_edges, style
 
 
 def _chain_edges(meta):
@@ -17,18 +18,22 @@ def _chain_edges(meta):
     return None, chain
 
 
-def energy_map(source, spectral_density=None, t_window=None, site_window=None, floor=-12.0, band_edges=True):
+def energy_map(source, spectral_density=None, t_window=None, site_window=None, floor=-12.0, band_edges=True,
+               metadata=None):
     """Spatiotemporal energy map log10(E_n / sum E) over bead n and time, beside the spectral
     density g(nu) of the same run with the chain's band edges.
 
     source: a granular.SpreadingRun made with energy_map=True (and spectral_density=True), or the
     spreading tool's HDF5 energy map. spectral_density: the tool's spectrum CSV (a run carries its
     own). t_window: (t0, t1) [s] and site_window: (n0, n1) [beads, from 1] zoom in. floor: the
-    lowest log10 relative energy shown (zeros beyond the front are blank).
+    lowest log10 relative energy shown (zeros beyond the front are blank). metadata: the run's JSON
+    (a dict or its path) for the title and the band edges; for a map file, by default the JSON in
+    its folder whose command line names it.
     """
     meta = {}
     if _io.is_path(source):
         t, site, energy = _io.read_hdf5_map(source)
+        meta = _io.run_json_naming(source)
     else:
         if source.energy_map is None:
             raise ValueError("this run has no energy map: run granular.spreading(..., energy_map=True)")
@@ -36,6 +41,11 @@ def energy_map(source, spectral_density=None, t_window=None, site_window=None, f
         meta = source.metadata
         if spectral_density is None and source.spectral_density is not None:
             spectral_density = source.spectral_density
+    if _io.is_path(metadata):
+        with open(metadata) as f:
+            metadata = json.load(f)
+    if metadata is not None:
+        meta = metadata
     if _io.is_path(spectral_density):
         spectral_density = _io.read_csv(spectral_density)
     t, site, energy = np.asarray(t), np.asarray(site), np.asarray(energy)
@@ -68,6 +78,7 @@ def energy_map(source, spectral_density=None, t_window=None, site_window=None, f
             bx.semilogx(g[keep], freq[keep], lw=1.0, color="C0")
             bx.set_xlim(max(g[keep].min(), 1e-8), 1.5)
             log_ticks(bx.xaxis)
+            bx.xaxis.set_major_locator(matplotlib.ticker.LogLocator(base=10, numticks=4))  # a narrow panel
             bx.set_xlabel(r"spectral density $g(\nu)$")
             bx.set_ylabel(r"frequency $\nu$ [kHz]")
             # the vibrations live below the highest band edge; above it only the kick's tail
@@ -154,8 +165,9 @@ def spreading(sources, labels=None):
         for i, ((t, m2, ipr, _), label) in enumerate(zip(data, labels)):
             t, m2, ipr = map(np.asarray, (t, m2, ipr))
             keep = t > 0
-            ax.loglog(t[keep], m2[keep], color=f"C{i}", label=label)
-            bx.loglog(t[keep], ipr[keep], color=f"C{i}", label=label)
+            drawn = log_thinned(t)
+            ax.loglog(t[drawn], m2[drawn], color=f"C{i}", label=label)
+            bx.loglog(t[drawn], ipr[drawn], color=f"C{i}", label=label)
             m2_curves.append((t[keep], m2[keep], f"C{i}"))
             ipr_curves.append((t[keep], 1 / ipr[keep], f"C{i}"))
         guides(ax, m2_curves, (2, 1), fit)

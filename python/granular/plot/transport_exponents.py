@@ -6,7 +6,7 @@ import os
 import numpy as np
 
 from . import _io
-from ._style import figure, guides, inset_log_derivative, log_ticks, style
+from ._style import figure, guides, inset_log_derivative, log_thinned, log_ticks, style, wrapped_suptitle
 
 
 def _exponent_data(source):
@@ -47,6 +47,18 @@ def _exponent_data(source):
     return groups, prof, fits, source["metadata"]
 
 
+def _fit_window(meta):
+    """(start, stop) [s] of the fit window, from a run's metadata (each case carries its own, as
+    fit_s; None where no case was fitted)."""
+    parameters = meta.get("parameters", {})
+    if parameters.get("fit_s"):
+        return tuple(parameters["fit_s"])
+    for case in meta.get("cases", []):
+        if case.get("fit_s"):
+            return tuple(case["fit_s"])
+    return None
+
+
 def exponents(source, kick="displacement"):
     """The paper's transport figure for one kick: per chain kind, m~2(t) and P^-1(t) of the
     ensemble means on log-log axes, one curve per F0, guide slopes and the log derivative L_d in
@@ -57,7 +69,7 @@ def exponents(source, kick="displacement"):
         raise ValueError(f"no {kick!r} kick in these results (kicks: {sorted({k[0] for k in groups})})")
     chains = list(dict.fromkeys(k[2] for k in keys))
     f0s = list(dict.fromkeys(k[1] for k in keys))
-    fit = meta.get("parameters", {}).get("fit_s")
+    fit = _fit_window(meta)
     with style():
         fig = figure(10, 3.1 * len(chains) + 0.6)
         axes = fig.subplots(len(chains), 2, squeeze=False, sharex=True)
@@ -71,8 +83,9 @@ def exponents(source, kick="displacement"):
                 keep = t > 0
                 gamma = fits.get((kick, f0, chain))
                 label = f"$F_0$ = {f0:g} N" + (rf" ($\gamma$ = {gamma:.2f})" if gamma is not None else "")
-                axes[row][0].loglog(t[keep], m2[keep], color=f"C{k}")
-                axes[row][1].loglog(t[keep], ipr[keep], color=f"C{k}", label=label)
+                drawn = log_thinned(t)
+                axes[row][0].loglog(t[drawn], m2[drawn], color=f"C{k}")
+                axes[row][1].loglog(t[drawn], ipr[drawn], color=f"C{k}", label=label)
                 m2_curves.append((t[keep], m2[keep], f"C{k}"))
                 inv_curves.append((t[keep], 1 / ipr[keep], f"C{k}"))
             guides(axes[row][0], m2_curves, (2, 1), fit)
@@ -147,7 +160,7 @@ def centres(source, chain="A"):
     every kick (rows) and F0 (columns), with both fitted gamma: where the two definitions part
     (the paper writes its kick at n_c, the site; its F0 = 0.01-0.1 N values sit between the two).
     source: a granular.ExponentTable or the exponents tool's prefix."""
-    groups, _, _, _ = _exponent_data(source)
+    groups, _, _, meta = _exponent_data(source)
     table = _table_columns(source, ".csv", "table")
     keys = [k for k in groups if k[2] == chain]
     if not keys:
@@ -162,7 +175,7 @@ def centres(source, chain="A"):
             site_first = table["centre"][i] == "site"
             pair = (table["gamma"][i], table["gamma_other"][i])
             gamma[(table["ic"][i], float(table["F0"][i]))] = pair if site_first else pair[::-1]
-    fit = (4e-3, 10e-3)
+    fit = _fit_window(meta)
     with style():
         fig = figure(3.0 * len(f0s) + 0.6, 2.9 * len(kicks) + 0.5)
         axes = fig.subplots(len(kicks), len(f0s), squeeze=False, sharex=True)
@@ -175,7 +188,8 @@ def centres(source, chain="A"):
                     continue
                 t, site, centroid = (np.asarray(g[x], float) for x in ("t", "m2", "m2_centroid"))
                 keep = t > 0
-                ax.axvspan(*fit, color="0.92", zorder=0)
+                if fit:
+                    ax.axvspan(*fit, color="0.92", zorder=0)
                 ax.loglog(t[keep], site[keep], color="C0", label="about the kicked site")
                 ax.loglog(t[keep], centroid[keep], "--", color="C3", label="about the centroid")
                 if (kick, f0) in gamma:
@@ -189,8 +203,8 @@ def centres(source, chain="A"):
                     ax.set_xlabel("time t [s]")
             axes[i][0].set_ylabel(rf"{chain}: $\tilde m_2$ [beads$^2$]")
         axes[0][0].legend(fontsize=7, loc="lower right")
-        fig.suptitle(f"{chain}: second moment about the kicked site and about the energy centroid "
-                     "(shaded: the fit window)", fontsize=11)
+        wrapped_suptitle(fig, f"{chain}: second moment about the kicked site and about the energy centroid"
+                         + ("\n(shaded: the fit window)" if fit else ""))
     return fig
 
 
