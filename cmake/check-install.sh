@@ -21,6 +21,10 @@ for f in include/granular/granular.hpp include/granular/error.hpp include/granul
          share/granular/plot/spectrum.py; do
   [ -e "$prefix/$f" ] || fail "missing $f"
 done
+# Every doc the README links is installed beside it, at the same relative path.
+for link in $(grep -o '](docs/[^)#]*' "$src/README.md" | sed 's/^](//' | sort -u); do
+  [ -e "$prefix/share/doc/granular/$link" ] || fail "the README links $link, not installed beside it"
+done
 [ -z "$(find "$prefix/include" -type d -name detail)" ] || fail "a detail/ folder was installed"
 [ -f "$libdir/cmake/granular/granularConfig.cmake" ] || fail "missing granularConfig.cmake"
 [ -f "$libdir/cmake/granular/granularConfigVersion.cmake" ] || fail "missing granularConfigVersion.cmake"
@@ -34,6 +38,16 @@ if grep -rln -e 'GRANULAR_HAVE_' -e 'GRANULAR_SOURCE_DIR' -e 'GRANULAR_VERSION' 
 fi
 # The installed tools find the installed library.
 "$prefix/bin/spectrum" --version >/dev/null || fail "installed bin/spectrum does not run"
+
+# The Python package where docs/python.md says: lib/python3.X/dist-packages of the prefix, and it
+# imports from outside the source and build trees.
+core=$(find "$prefix" -name '_core*.so' -print -quit)
+if [ -n "$core" ]; then
+  pydir=$(dirname "$(dirname "$core")")
+  case "$pydir" in "$prefix"/lib/python3.*/dist-packages) ;; *) fail "Python package installed in $pydir" ;; esac
+  (cd / && PYTHONPATH=$pydir /usr/bin/python3 -c "import granular; assert granular.__file__.startswith('$pydir'); \
+    assert len(granular.spectrum(granular.anderson(N=20)).freq_khz) == 20") || fail "the installed granular does not import"
+fi
 
 # 1. examples/ as a downstream CMake project: configure, build, run every example.
 "$cmake" -S "$src/examples" -B "$work/examples" -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_BUILD_TYPE=Release \

@@ -3,7 +3,8 @@
 #   lib/libgranular.so            and the CMake package lib/cmake/granular/, lib/pkgconfig/granular.pc
 #   bin/                          the tools
 #   share/granular/plot/          the figure scripts
-#   share/doc/granular/           physics.md, README.md, LICENSE, CITATION.cff
+#   share/doc/granular/           README.md, physics.md, LICENSE, CITATION.cff, and docs/ (every page,
+#                                 figure, result and the tutorial the README links, at the same paths)
 include(CMakePackageConfigHelpers)
 
 set(GRANULAR_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/granular)
@@ -23,6 +24,7 @@ file(GLOB GRANULAR_PLOT_SCRIPTS CONFIGURE_DEPENDS ${CMAKE_SOURCE_DIR}/tools/plot
 install(PROGRAMS ${GRANULAR_PLOT_SCRIPTS} DESTINATION ${CMAKE_INSTALL_DATADIR}/granular/plot)
 install(FILES ${CMAKE_SOURCE_DIR}/docs/physics.md ${CMAKE_SOURCE_DIR}/README.md ${CMAKE_SOURCE_DIR}/LICENSE
               ${CMAKE_SOURCE_DIR}/CITATION.cff DESTINATION ${CMAKE_INSTALL_DOCDIR})
+install(DIRECTORY ${CMAKE_SOURCE_DIR}/docs/ DESTINATION ${CMAKE_INSTALL_DOCDIR}/docs)
 
 # The CMake package: find_package(granular) gives the target granular::granular.
 install(EXPORT granularTargets NAMESPACE granular:: DESTINATION ${GRANULAR_CMAKE_DIR})

@@ -11,7 +11,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   libcli11-dev nlohmann-json3-dev librandom123-dev
   openmpi-bin libopenmpi-dev petsc-dev slepc-dev
-  python3 python3-numpy python3-scipy python3-matplotlib python3-h5py
+  python3 python3-venv python3-numpy python3-scipy python3-matplotlib python3-h5py
   pybind11-dev python3-pybind11 python3-pytest jupyter-nbconvert python3-nbformat python3-ipykernel
   clang libclang-rt-14-dev libomp-14-dev clang-format
 )
