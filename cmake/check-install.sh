@@ -36,6 +36,12 @@ fi
 if grep -rln -e 'GRANULAR_HAVE_' -e 'GRANULAR_SOURCE_DIR' -e 'GRANULAR_VERSION' "$prefix/include"; then
   fail "an installed header uses a macro only the in-tree build defines (files above)"
 fi
+# `man spectrum` works from the prefix (MANPATH), and the page is the tool's --help.
+if command -v man >/dev/null && command -v help2man >/dev/null; then
+  page=$(MANPATH=$prefix/share/man man -w spectrum) || fail "man -w spectrum finds no page under $prefix/share/man"
+  [ "$page" = "$prefix/share/man/man1/spectrum.1" ] || fail "man spectrum resolves to $page"
+  MANPATH=$prefix/share/man MANWIDTH=100 man spectrum 2>/dev/null | grep -q -e '--near' || fail "man spectrum lacks --near"
+fi
 # The installed tools find the installed library.
 "$prefix/bin/spectrum" --version >/dev/null || fail "installed bin/spectrum does not run"
 

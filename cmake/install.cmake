@@ -3,6 +3,7 @@
 #   lib/libgranular.so            and the CMake package lib/cmake/granular/, lib/pkgconfig/granular.pc
 #   bin/                          the tools
 #   share/granular/plot/          the figure scripts
+#   share/man/man1/               a man page per tool, from its --help (man_pages.cmake)
 #   share/doc/granular/           README.md, physics.md, LICENSE, CITATION.cff, and docs/ (every page,
 #                                 figure, result and the tutorial the README links, at the same paths)
 include(CMakePackageConfigHelpers)
@@ -25,6 +26,7 @@ install(PROGRAMS ${GRANULAR_PLOT_SCRIPTS} DESTINATION ${CMAKE_INSTALL_DATADIR}/g
 install(FILES ${CMAKE_SOURCE_DIR}/docs/physics.md ${CMAKE_SOURCE_DIR}/README.md ${CMAKE_SOURCE_DIR}/LICENSE
               ${CMAKE_SOURCE_DIR}/CITATION.cff DESTINATION ${CMAKE_INSTALL_DOCDIR})
 install(DIRECTORY ${CMAKE_SOURCE_DIR}/docs/ DESTINATION ${CMAKE_INSTALL_DOCDIR}/docs)
+include(${CMAKE_CURRENT_LIST_DIR}/man_pages.cmake)
 
 # The CMake package: find_package(granular) gives the target granular::granular.
 install(EXPORT granularTargets NAMESPACE granular:: DESTINATION ${GRANULAR_CMAKE_DIR})

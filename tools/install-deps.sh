@@ -5,7 +5,7 @@
 set -euo pipefail
 
 packages=(
-  build-essential cmake pkg-config git time
+  build-essential cmake pkg-config git time help2man man-db
   libeigen3-dev liblapack-dev libblas-dev libarpack2-dev
   libfftw3-dev libhdf5-dev libboost-dev
   libgtest-dev libgmock-dev libbenchmark-dev
