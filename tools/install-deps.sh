@@ -14,6 +14,7 @@ packages=(
   python3 python3-venv python3-numpy python3-scipy python3-matplotlib python3-h5py
   pybind11-dev python3-pybind11 python3-pytest jupyter-nbconvert python3-nbformat python3-ipykernel
   clang libclang-rt-14-dev libomp-14-dev clang-format
+  python3-sphinx python3-myst-parser python3-breathe python3-nbsphinx python3-sphinx-rtd-theme doxygen pandoc chromium
 )
 
 missing=()

@@ -1,0 +1,20 @@
+# The documentation site (Sphinx + MyST + Breathe/Doxygen + nbsphinx, all Debian packages):
+#   cmake --build build --target docs      -> build/docs-site/html/index.html
+# tools/build-docs.sh assembles and builds it with warnings as errors; the test `docs_site`
+# (label docs) builds it and opens it in headless Chromium (tests/docs/check_site.py), after the
+# tutorial test so that the site shows the executed tutorial. `cmake --install` puts the HTML in
+# share/doc/granular/html when it has been built.
+if(GRANULAR_SANITIZE OR GRANULAR_TSAN OR NOT GRANULAR_PYTHON)
+  return()
+endif()
+set(GRANULAR_SITE_BUILD ${CMAKE_SOURCE_DIR}/tools/build-docs.sh ${CMAKE_BINARY_DIR})
+add_custom_target(docs COMMAND bash ${GRANULAR_SITE_BUILD} DEPENDS ${GRANULAR_TOOL_TARGETS} granular_python
+                  COMMENT "documentation site: build/docs-site/html" VERBATIM)
+install(DIRECTORY ${CMAKE_BINARY_DIR}/docs-site/html/ DESTINATION ${CMAKE_INSTALL_DOCDIR}/html OPTIONAL)
+if(BUILD_TESTING)
+  add_test(NAME docs_site
+           COMMAND bash -c "bash \"$0\" \"$1\" && /usr/bin/python3 \"$2\" \"$1/docs-site/html\" \"$1/docs-site/screenshots\""
+                   ${CMAKE_SOURCE_DIR}/tools/build-docs.sh ${CMAKE_BINARY_DIR}
+                   ${CMAKE_SOURCE_DIR}/tests/docs/check_site.py)
+  set_tests_properties(docs_site PROPERTIES LABELS docs TIMEOUT 600 DEPENDS python_tutorial)
+endif()
