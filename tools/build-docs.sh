@@ -17,7 +17,7 @@ executed=$build/python/tutorial/tutorial.executed.ipynb
 if [ -f "$executed" ] && [ "$executed" -nt "$src/docs/tutorial.ipynb" ]; then cp "$executed" "$pages/tutorial.ipynb"; fi
 cp -r "$src/docs/figures" "$src/docs/results" "$pages/"
 cp "$src"/examples/*.cpp "$pages/examples/"
-PYTHONPATH=$build/python /usr/bin/python3 "$pages/generate.py" "$build" "$pages"
+GRANULAR_SOURCE_DIR=$src PYTHONPATH=$build/python /usr/bin/python3 "$pages/generate.py" "$build" "$pages"
 
 version=$(sed -n 's/^project(granular VERSION \([0-9.]*\).*/\1/p' "$src/CMakeLists.txt")
 doxygen - >"$site/doxygen/log" 2>&1 <<DOXYFILE || { cat "$site/doxygen/log"; exit 1; }

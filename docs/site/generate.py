@@ -3,19 +3,17 @@
 granular and granular.plot). Run by tools/build-docs.sh: generate.py BUILD_DIR PAGES_DIR."""
 import inspect
 import os
+import re
 import subprocess
 import sys
 
 build, pages = sys.argv[1], sys.argv[2]
-TOOLS = {
-    "spectrum": "the linear spectrum (modes, frequencies, IPR) of one chain",
-    "ipr-map": "mean mode frequency and IPR of disordered chains on a (q, ξ) grid",
-    "correlations": "correlations of the bead types along disordered chains",
-    "localization": "transfer-matrix localization length and density of states",
-    "spreading": "energy spreading after a kick (Hertzian dynamics), one run or an ensemble",
-    "exponents": "the paper's transport exponents γ and η, beside its Table I",
-    "restitution": "the coefficient of restitution of a two-bead collision",
-}
+# One home for the tools' one-line summaries: the man pages' (cmake/man_pages.cmake).
+SOURCE = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+with open(os.path.join(os.environ.get("GRANULAR_SOURCE_DIR", SOURCE), "cmake", "man_pages.cmake")) as f:
+    TOOLS = dict(re.findall(r'^set\(GRANULAR_MAN_SUMMARY_([\w-]+) "([^"]+)"\)', f.read(), re.M))
+if not TOOLS:
+    sys.exit("generate.py: no tool summaries in cmake/man_pages.cmake")
 
 os.makedirs(os.path.join(pages, "tools"), exist_ok=True)
 index = ["# The command-line tools", "",
