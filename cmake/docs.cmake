@@ -17,4 +17,9 @@ if(BUILD_TESTING)
                    ${CMAKE_SOURCE_DIR}/tools/build-docs.sh ${CMAKE_BINARY_DIR}
                    ${CMAKE_SOURCE_DIR}/tests/docs/check_site.py)
   set_tests_properties(docs_site PROPERTIES LABELS docs TIMEOUT 600 DEPENDS python_tutorial)
+  # Every shell and Python block of the README and the docs pages, run as a reader would.
+  add_test(NAME docs_examples
+           COMMAND /usr/bin/python3 ${CMAKE_SOURCE_DIR}/tests/docs/run_examples.py ${CMAKE_SOURCE_DIR}
+                   ${CMAKE_BINARY_DIR} ${CMAKE_BINARY_DIR}/tests/docs-examples)
+  set_tests_properties(docs_examples PROPERTIES LABELS docs TIMEOUT 1200)
 endif()
