@@ -2,7 +2,9 @@
 # Builds and runs every test, in three passes (CI runs this through the README's test command),
 # after a cheap first check that every C++ file is formatted as .clang-format says
 # (tests/format-check.sh; GRANULAR_SKIP_FORMAT=1 skips it, for local runs on unformatted branches):
-#   1. the Release build with warnings as errors: every GoogleTest suite and tool test (ctest);
+#   1. the Release build with warnings as errors: every GoogleTest suite and tool test (ctest),
+#      the Python suite, the documentation site and examples; not the label `manual` (the full
+#      `pip install .` build, 11 min: `ctest -L manual`);
 #   2. the same suites built with AddressSanitizer + UndefinedBehaviorSanitizer (any report fails);
 #   3. the threaded suites (ensembles, IPR map, localization, bootstrap) built with clang and
 #      ThreadSanitizer, OpenMP through LLVM's libomp with its archer tool (any report fails);
@@ -32,7 +34,7 @@ fi
 echo "== pass 1: Release build, all tests"
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DGRANULAR_WERROR=ON >/dev/null
 cmake --build build -j"$jobs"
-ctest --test-dir build -j"$jobs" --output-on-failure | tee "$logs/pass1"
+ctest --test-dir build -j"$jobs" --output-on-failure -LE manual | tee "$logs/pass1"
 count "$logs/pass1"
 
 if [ "${GRANULAR_QUICK:-0}" != 1 ]; then
