@@ -1,0 +1,38 @@
+// One --output rule for every tool, and outputs checked before a run, not after it.
+#include "granular/io/output_paths.hpp"
+
+#include <filesystem>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "granular/error.hpp"
+
+namespace granular {
+namespace {
+
+TEST(OutputPaths, ATrailingCsvIsDroppedAndNothingElse) {
+  EXPECT_EQ(output_prefix("run"), "run");
+  EXPECT_EQ(output_prefix("run.csv"), "run");
+  EXPECT_EQ(output_prefix("dir/run.csv"), "dir/run");
+  EXPECT_EQ(output_prefix(".csv"), ".csv");  // nothing would be left
+  EXPECT_EQ(output_prefix("run.json"), "run.json");
+  EXPECT_EQ(output_prefix("run.csv.csv"), "run.csv");
+}
+
+TEST(OutputPaths, TwoOutputsOnOneFileAreRefusedNamingThem) {
+  const auto dir = std::filesystem::path(GRANULAR_BINARY_DIR) / "output_paths_test";
+  std::filesystem::create_directories(dir);
+  const std::string a = (dir / "a.csv").string(), b = (dir / "b.csv").string();
+  EXPECT_NO_THROW(check_outputs({a, "", b}, "--x/--y"));
+  try {
+    check_outputs({a, b, (dir / "sub" / ".." / "a.csv").string()}, "--x/--y");
+    FAIL() << "two outputs on one file were accepted";
+  } catch (const InvalidInput& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("--x/--y: two outputs would both be ", 0), 0u) << e.what();
+  }
+  EXPECT_THROW(check_outputs({(dir / "no-such-folder" / "a.csv").string()}, "--x"), IoError);
+}
+
+}  // namespace
+}  // namespace granular
