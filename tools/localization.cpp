@@ -62,10 +62,7 @@ int main(int argc, char** argv) {
         const std::string csv_path = output + ".csv", json_path = output + ".json";
         const tool::StreamedChain chain = tool::build_bead_source(chain_options);
         for (double f : config.frequency_khz)  // the first one above the chain's frequencies
-          if (const auto w = frequency_warning("--f", f, chain.highest_frequency_khz); !w.empty()) {
-            std::fprintf(stderr, "warning: %s\n", w.c_str());
-            break;
-          }
+          if (tool::warn({frequency_warning("--f", f, chain.highest_frequency_khz)})) break;
         validate(config);
         const auto claim = tool::claim_output(output, meta.command());
         check_writable(csv_path);

@@ -65,10 +65,7 @@ int main(int argc, char** argv) {
       const double top = highest_frequency_bound_khz(selected.recipe);
       const bool near = selection.kind == ModeSelection::Kind::nearest;
       if (selection.kind != ModeSelection::Kind::all)
-        if (const auto w =
-                frequency_warning(near ? "--near" : "--window", near ? selection.near_khz : selection.lo_khz, top);
-            !w.empty())
-          std::fprintf(stderr, "warning: %s\n", w.c_str());
+        tool::warn({frequency_warning(near ? "--near" : "--window", near ? selection.near_khz : selection.lo_khz, top)});
       d = dynamical_matrix(selected.chain);
     }
     validate(selection, d.size());

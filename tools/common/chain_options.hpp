@@ -80,7 +80,7 @@ inline std::optional<BeadDistribution> bead_distribution(const ChainOptions& o) 
 inline std::vector<double> read_radii_warning(const std::string& path) {
   std::vector<std::string> warnings;
   std::vector<double> radii = read_radii_file(path, &warnings);
-  for (const auto& w : warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
+  warn(warnings);
   return radii;
 }
 
@@ -110,8 +110,7 @@ inline void warn_implausible(const ChainRecipe& r, const ChainOptions& o) {
   const std::string distribution = !o.types.empty()         ? "--types"
                                    : !o.type_masses.empty() ? "--type-masses"
                                                             : "--polydisperse";
-  for (const auto& w : radius_warnings(r, {"--R1", distribution, "--radii"}))
-    std::fprintf(stderr, "warning: %s\n", w.c_str());
+  warn(radius_warnings(r, {"--R1", distribution, "--radii"}));
 }
 
 /// The realization the options pick (0-based).

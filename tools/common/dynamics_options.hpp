@@ -85,22 +85,17 @@ inline void apply(const DynamicsOptions& o, TransportCase& c) {
 
 /// granular::settle_scheme_and_step (scheme_choice.hpp): the time step, and with `--integrator auto`
 /// the scheme first (SRKN14a at 5 µs where no contact can open and it is cheaper, else SABA2C).
-inline nlohmann::json settle_time_step(std::vector<TransportCase>& cases, const DynamicsOptions& o, bool dt_given,
-                                       const Chain* chain = nullptr) {
-  nlohmann::json rule = settle_scheme_and_step(cases, o.choices.integrator == "auto", dt_given, chain);
+inline nlohmann::json settle_time_step(std::vector<TransportCase>& cases, const DynamicsOptions& o, bool dt_given) {
+  nlohmann::json rule = settle_scheme_and_step(cases, o.choices.integrator == "auto", dt_given);
   for (const auto& c : cases)  // after the errors (a user acts on those first); the cases share T
-    if (const std::string w = duration_warning(c, "--T"); !w.empty()) {
-      std::fprintf(stderr, "warning: %s\n", w.c_str());
-      break;
-    }
+    if (warn({duration_warning(c, "--T")})) break;
   return rule;
 }
 
 /// The same for one case.
-inline nlohmann::json settle_time_step(TransportCase& c, const DynamicsOptions& o, bool dt_given,
-                                       const Chain* chain = nullptr) {
-  nlohmann::json rule = settle_scheme_and_step(c, o.choices.integrator == "auto", dt_given, chain);
-  if (const std::string w = duration_warning(c, "--T"); !w.empty()) std::fprintf(stderr, "warning: %s\n", w.c_str());
+inline nlohmann::json settle_time_step(TransportCase& c, const DynamicsOptions& o, bool dt_given) {
+  nlohmann::json rule = settle_scheme_and_step(c, o.choices.integrator == "auto", dt_given);
+  warn({duration_warning(c, "--T")});
   return rule;
 }
 

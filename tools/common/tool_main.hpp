@@ -11,6 +11,7 @@
 #include <functional>
 #include <map>
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
@@ -44,6 +45,17 @@ inline void describe_common(CLI::App& app) {
   app.set_version_flag("--version", std::string("granular ") + GRANULAR_VERSION);
   app.get_formatter()->column_width(34);
   app.footer("Physics and units: docs/physics.md (installed to share/doc/granular/physics.md)");
+}
+
+/// Prints each of `warnings` on stderr as "warning: …", the empty ones skipped; says whether one was.
+inline bool warn(const std::vector<std::string>& warnings) {
+  bool any = false;
+  for (const std::string& w : warnings)
+    if (!w.empty()) {
+      std::fprintf(stderr, "warning: %s\n", w.c_str());
+      any = true;
+    }
+  return any;
 }
 
 /// An option whose --help shows its default.
