@@ -1,6 +1,6 @@
 #pragma once
 // The library's messages name parameters in its own vocabulary (`max_energy_error`, error.hpp);
-// a front end tells them in the words its user typed (`--max-energy-error`, `max_energy_error=`).
+// a front end tells them in the words its user typed (its command-line option, its keyword).
 #include <functional>
 #include <string>
 

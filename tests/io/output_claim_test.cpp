@@ -7,15 +7,12 @@
 #include <gtest/gtest.h>
 
 #include "granular/error.hpp"
+#include "scratch.hpp"
 
 namespace granular {
 namespace {
 
-std::string scratch(const std::string& name) {
-  const auto dir = std::filesystem::path(GRANULAR_BINARY_DIR) / "output_claim_test";
-  std::filesystem::create_directories(dir);
-  return (dir / name).string();
-}
+std::string scratch(const std::string& name) { return testing::scratch_path("output_claim_test", name); }
 
 TEST(OutputClaim, HoldsThePrefixAndRunsItsCheckUnderTheLock) {
   const std::string prefix = scratch("run");

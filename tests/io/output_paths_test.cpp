@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "granular/error.hpp"
+#include "scratch.hpp"
 
 namespace granular {
 namespace {
@@ -21,9 +22,9 @@ TEST(OutputPaths, ATrailingCsvIsDroppedAndNothingElse) {
 }
 
 TEST(OutputPaths, TwoOutputsOnOneFileAreRefusedNamingThem) {
-  const auto dir = std::filesystem::path(GRANULAR_BINARY_DIR) / "output_paths_test";
-  std::filesystem::create_directories(dir);
-  const std::string a = (dir / "a.csv").string(), b = (dir / "b.csv").string();
+  const std::string a = testing::scratch_path("output_paths_test", "a.csv");
+  const std::string b = testing::scratch_path("output_paths_test", "b.csv");
+  const auto dir = std::filesystem::path(a).parent_path();
   EXPECT_NO_THROW(check_outputs({a, "", b}, "--x/--y"));
   try {
     check_outputs({a, b, (dir / "sub" / ".." / "a.csv").string()}, "--x/--y");

@@ -8,14 +8,14 @@
 #include <gtest/gtest.h>
 
 #include "granular/code_identity.hpp"
+#include "scratch.hpp"
 
 namespace granular {
 namespace {
 
 TEST(RunMetadata, WritesTheRunThenCommitsItsOutputs) {
-  const auto dir = std::filesystem::path(GRANULAR_BINARY_DIR) / "run_metadata_test";
-  std::filesystem::create_directories(dir);
-  const std::string csv_path = (dir / "run.csv").string(), json_path = (dir / "run.json").string();
+  const std::string csv_path = testing::scratch_path("run_metadata_test", "run.csv");
+  const std::string json_path = testing::scratch_path("run_metadata_test", "run.json");
   std::filesystem::remove(csv_path);
   RunMetadata meta("spectrum", "spectrum --output 'my run'", true);
   EXPECT_EQ(meta.command(), "spectrum --output 'my run'");

@@ -9,15 +9,12 @@
 
 #include "granular/study/exponent_files.hpp"
 #include "granular/study/spreading_files.hpp"
+#include "scratch.hpp"
 
 namespace granular {
 namespace {
 
-std::string scratch(const std::string& name) {
-  const auto dir = std::filesystem::path(GRANULAR_BINARY_DIR) / "tool_files_test";
-  std::filesystem::create_directories(dir);
-  return (dir / name).string();
-}
+std::string scratch(const std::string& name) { return testing::scratch_path("tool_files_test", name); }
 
 TEST(SpreadingFiles, PathsUnderThePrefixAndTheUsersOwn) {
   SpreadingPaths one = spreading_paths("run", false, false, false);
