@@ -26,8 +26,8 @@ int main(int argc, char** argv) {
   RunOptions run;
   bool quiet = false;
   tool::ChainOptions beads;  // only its --types/--type-masses/--polydisperse
-  app.add_option("--disorder", disorder, "A | RDM1 | RDM2 (h has no correlation: one type only)")->capture_default_str();
-  app.add_option("--q", config.chain.q, "probability in [0,1]")->capture_default_str();
+  tool::add_option(app, "--disorder", disorder, "A | RDM1 | RDM2 (h has no correlation: one type only)");
+  tool::add_option(app, "--q", config.chain.q, "probability in [0,1]");
   tool::add_bead_distribution_options(app, beads);
   tool::add_integer(app, "--N", config.chain.N, "beads per chain (>= 2)");
   tool::add_integer(app, "--realizations", config.realizations, "chains averaged");
@@ -49,7 +49,7 @@ int main(int argc, char** argv) {
     if (run.threads < 0) throw InvalidInput("threads", " " + std::to_string(run.threads) + ": must be >= 0");
     validate(config);
     const std::string csv_path = output + ".csv", json_path = output + ".json";
-    const tool::OutputClaim claim(output, meta.command());
+    const auto claim = tool::claim_output(output, meta.command());
     check_writable(csv_path);
     check_writable(json_path);
 

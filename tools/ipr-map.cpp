@@ -28,28 +28,25 @@ int main(int argc, char** argv) {
   RunOptions run;
   tool::SelectionOptions selection;
   bool quiet = false;
-  app.add_option("--disorder", disorder, "h | A | RDM1 | RDM2 (homogeneous, Anderson, random dimer 1/2)")
-      ->capture_default_str();
-  app.add_option("--xi", xi_text, "size ratios R2/R1 in (0,1]: start:stop[:step] (step 0.01) or a,b,c")
-      ->capture_default_str();
-  app.add_option("--q", q_text, "probabilities of type 1 (or of dimer 11 / 12) in [0,1]: list or range")
-      ->capture_default_str();
+  tool::add_option(app, "--disorder", disorder, "h | A | RDM1 | RDM2 (homogeneous, Anderson, random dimer 1/2)");
+  tool::add_option(app, "--xi", xi_text, "size ratios R2/R1 in (0,1]: start:stop[:step] (step 0.01) or a,b,c");
+  tool::add_option(app, "--q", q_text, "probabilities of type 1 (or of dimer 11 / 12) in [0,1]: list or range");
   tool::add_integer(app, "--N", config.chain.N, "beads per chain (>= 2)");
-  app.add_option("--F0", config.chain.F0, "static precompression [N], > 0")->capture_default_str();
-  app.add_option("--R1", config.chain.R1, "radius of type-1 beads [m]; type 2 has xi*R1 (steel beads, steel walls)")
-      ->capture_default_str();
+  tool::add_option(app, "--F0", config.chain.F0, "static precompression [N], > 0");
+  tool::add_option(app, "--R1", config.chain.R1,
+                   "radius of type-1 beads [m]; type 2 has xi*R1 (steel beads, steel walls)");
   tool::add_integer(app, "--realizations", config.realizations, "chains averaged per (q, xi)");
   tool::add_integer(app, "--seed", config.chain.seed, "random seed; realization r of seed s is always the same chain");
   tool::add_integer(app, "--threads", run.threads, "worker threads (0 = all cores); results do not depend on it");
-  app.add_option("--solver", solver,
-                 "mode solver: fast (eigenvalues + one twisted factorization per mode, no eigenvector matrix; IPRs as "
-                 "LAPACK's to 1e-10 outside tight eigenvalue clusters) | lapack (= lapack-stevd) | lapack-stevr | "
-                 "lapack-stemr | lapack-stevd | lapack-steqr")
-      ->capture_default_str();
+  tool::add_option(
+      app, "--solver", solver,
+      "mode solver: fast (eigenvalues + one twisted factorization per mode, no eigenvector matrix; IPRs as "
+      "LAPACK's to 1e-10 outside tight eigenvalue clusters) | lapack (= lapack-stevd) | lapack-stevr | "
+      "lapack-stemr | lapack-stevd | lapack-steqr");
   tool::add_output_option(app, output);
   tool::add_selection_options(app, selection, "partial spectra: ");
-  app.add_option("--method", method, "partial spectra: lapack | bisect | arpack | slepc (arpack/slepc: one thread)")
-      ->capture_default_str();
+  tool::add_option(app, "--method", method,
+                   "partial spectra: lapack | bisect | arpack | slepc (arpack/slepc: one thread)");
   app.add_option("--bin-khz", config.bin_khz,
                  "average in frequency bins of this width [kHz] instead of by mode number: "
                  "columns disorder,q,xi,freq_lo_khz,freq_hi_khz,modes,ipr (empty bins: modes 0, ipr nan)");
@@ -83,7 +80,7 @@ int main(int argc, char** argv) {
     validate(config);
     tool::warn_implausible(config.chain, beads);
     const std::string csv_path = output + ".csv", json_path = output + ".json";
-    const tool::OutputClaim claim(output, meta.command());
+    const auto claim = tool::claim_output(output, meta.command());
     check_writable(csv_path);
     check_writable(json_path);
 

@@ -32,9 +32,8 @@ int main(int argc, char** argv) {
   long long segments = 32;
   RunOptions run;
   bool quiet = false;
-  app.add_option("--f", frequencies,
-                 "frequencies [kHz]: start:stop[:step] (step 0.01, stop included) or a,b,c; increasing")
-      ->capture_default_str();
+  tool::add_option(app, "--f", frequencies,
+                   "frequencies [kHz]: start:stop[:step] (step 0.01, stop included) or a,b,c; increasing");
   tool::add_integer(app, "--segments", segments,
                     "chain pieces whose exponents give lyapunov_err (2 ... 1e6, at most N)");
   tool::add_integer(app, "--threads", run.threads,
@@ -63,12 +62,9 @@ int main(int argc, char** argv) {
         const std::string csv_path = output + ".csv", json_path = output + ".json";
         const tool::StreamedChain chain = tool::build_bead_source(chain_options);
         for (double f : config.frequency_khz)  // the first one above the chain's frequencies
-          if (const auto w = frequency_warning("--f", f, chain.highest_frequency_khz); !w.empty()) {
-            std::fprintf(stderr, "warning: %s\n", w.c_str());
-            break;
-          }
+          if (tool::warn({frequency_warning("--f", f, chain.highest_frequency_khz)})) break;
         validate(config);
-        const tool::OutputClaim claim(output, meta.command());
+        const auto claim = tool::claim_output(output, meta.command());
         check_writable(csv_path);
         check_writable(json_path);
 

@@ -27,14 +27,11 @@ int main(int argc, char** argv) {
   tool::describe_common(app);
   std::string speeds = "0.01", gammas = "1e-6", output = "restitution", integrator = "saba2c";
   CollisionConfig config;
-  app.add_option("--impact-speed", speeds, "impact speeds v [m/s]: start:stop[:step] or a comma list")
-      ->capture_default_str();
-  app.add_option("--kk-gamma", gammas, "Kuwabara-Kono gamma [s]: start:stop[:step] or a comma list")
-      ->capture_default_str();
-  app.add_option("--R1", config.radius, "bead radius [m] (steel beads)")->capture_default_str();
-  app.add_option("--steps-per-collision", config.steps_per_collision, "time step = Hertz contact time / this")
-      ->capture_default_str();
-  app.add_option("--integrator", integrator, "saba2c | saba2 | aba864 | srkn14a")->capture_default_str();
+  tool::add_option(app, "--impact-speed", speeds, "impact speeds v [m/s]: start:stop[:step] or a comma list");
+  tool::add_option(app, "--kk-gamma", gammas, "Kuwabara-Kono gamma [s]: start:stop[:step] or a comma list");
+  tool::add_option(app, "--R1", config.radius, "bead radius [m] (steel beads)");
+  tool::add_option(app, "--steps-per-collision", config.steps_per_collision, "time step = Hertz contact time / this");
+  tool::add_option(app, "--integrator", integrator, "saba2c | saba2 | aba864 | srkn14a");
   tool::add_output_option(app, output);
   bool quiet = false;
   app.add_flag("--quiet", quiet, "no final report on stderr");

@@ -31,13 +31,11 @@ int main(int argc, char** argv) {
   std::string method = "lapack", output = "spectrum", vectors_file, dump_matrix;
   SpectrumConfig config;
   bool quiet = false, clusters = false;
-  app.add_option("--method", method,
-                 "every mode: lapack (dstevd) | fast (no eigenvectors); --near/--window: lapack (dstemr by index) |\n"
-                 "bisect (Sturm bisection + inverse iteration, the fastest for long chains) | arpack | slepc\n"
-                 "(shift-invert; slepc runs on every mpirun rank)")
-      ->capture_default_str();
-  app.add_option("--tolerance", config.tolerance, "ARPACK/SLEPc Ritz tolerance (0 = tightest default)")
-      ->capture_default_str();
+  tool::add_option(app, "--method", method,
+                   "every mode: lapack (dstevd) | fast (no eigenvectors); --near/--window: lapack (dstemr by index) |\n"
+                   "bisect (Sturm bisection + inverse iteration, the fastest for long chains) | arpack | slepc\n"
+                   "(shift-invert; slepc runs on every mpirun rank)");
+  tool::add_option(app, "--tolerance", config.tolerance, "ARPACK/SLEPc Ritz tolerance (0 = tightest default)");
   tool::add_integer(app, "--lanes", config.lanes,
                     "bisect: eigenvectors computed together, 1..64 (memory 2 N x lanes doubles)");
   app.add_option("--vectors", vectors_file, "also write the eigenvectors to this HDF5 file");
@@ -67,10 +65,7 @@ int main(int argc, char** argv) {
       const double top = highest_frequency_bound_khz(selected.recipe);
       const bool near = selection.kind == ModeSelection::Kind::nearest;
       if (selection.kind != ModeSelection::Kind::all)
-        if (const auto w =
-                frequency_warning(near ? "--near" : "--window", near ? selection.near_khz : selection.lo_khz, top);
-            !w.empty())
-          std::fprintf(stderr, "warning: %s\n", w.c_str());
+        tool::warn({frequency_warning(near ? "--near" : "--window", near ? selection.near_khz : selection.lo_khz, top)});
       d = dynamical_matrix(selected.chain);
     }
     validate(selection, d.size());
@@ -81,7 +76,7 @@ int main(int argc, char** argv) {
                                   "modes with --near F --count K or --window LO:HI and --method bisect");
     const bool writer = MpiContext::instance().root();
     const std::string csv_path = output + ".csv", json_path = output + ".json";
-    const tool::OutputClaim claim(output, meta.command());
+    const auto claim = tool::claim_output(output, meta.command());
     if (writer) {
       check_writable(csv_path);
       check_writable(json_path);

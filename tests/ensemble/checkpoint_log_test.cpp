@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <filesystem>
@@ -11,6 +12,7 @@
 
 #include <gtest/gtest.h>
 
+#include "granular/code_identity.hpp"
 #include "granular/error.hpp"
 
 namespace granular {
@@ -85,6 +87,45 @@ TEST(CheckpointLog, RemoveAllTakesTheTemporariesOfKilledRunsAndNothingElse) {
     EXPECT_TRUE(std::filesystem::exists(f)) << f;
     std::filesystem::remove(f);
   }
+}
+
+TEST(CheckpointLog, ThisCodeIsNamedAsTheMakerOfItsLogs) {
+  const std::string path = temp_path("this-code");
+  { CheckpointLog log(path, "{}"); }
+  EXPECT_EQ(CheckpointLog::this_code(), std::string(code_version()) + " (commit " + code_commit() + ")");
+  EXPECT_EQ(CheckpointLog::code_of(path), CheckpointLog::this_code());
+  CheckpointLog::remove_all(path);
+}
+
+TEST(CheckpointLog, FilesNameExactlyTheMembersAskedFor) {
+  const std::string base = temp_path("members");
+  const std::vector<std::string> logs = {base, base + ".rank1", base + ".rank12"};
+  const std::vector<std::string> cases = {base + ".0", base + ".3", base + ".3.rank2"};
+  const std::vector<std::string> temporaries = {base + ".tmp.42", base + ".rank1.tmp.7", base + ".3.tmp.9",
+                                                base + ".3.rank2.tmp.11"};
+  const std::vector<std::string> users = {base + ".bak",       base + ".rankx", base + ".3x",
+                                          base + ".rank1.bak", base + ".tmp.",  base + "x.rank1",
+                                          base + ".tmp.9a",    base + ".",      base + ".rank"};
+  for (const auto* group : {&logs, &cases, &temporaries, &users})
+    for (const auto& f : *group) std::ofstream(f) << "x";
+  const auto sorted = [](std::vector<std::string> v) {
+    std::sort(v.begin(), v.end());
+    return v;
+  };
+  const auto joined = [](std::vector<std::string> a, const std::vector<std::string>& b) {
+    a.insert(a.end(), b.begin(), b.end());
+    return a;
+  };
+  EXPECT_EQ(CheckpointLog::files(base, {}), sorted(logs));
+  EXPECT_EQ(CheckpointLog::files(base, {.cases = true}), sorted(joined(logs, cases)));
+  EXPECT_EQ(CheckpointLog::files(base, {.temporaries = true}),
+            sorted(joined(logs, {base + ".tmp.42", base + ".rank1.tmp.7"})));
+  EXPECT_EQ(CheckpointLog::files(base, {.cases = true, .temporaries = true}),
+            sorted(joined(joined(logs, cases), temporaries)));
+  EXPECT_TRUE(CheckpointLog::exists(base));
+  for (const auto* group : {&logs, &cases, &temporaries, &users})
+    for (const auto& f : *group) std::filesystem::remove(f);
+  EXPECT_TRUE(CheckpointLog::files(base, {.cases = true, .temporaries = true}).empty());
 }
 
 TEST(CheckpointLog, ASymlinkAtItsTemporaryNamesIsNotFollowed) {

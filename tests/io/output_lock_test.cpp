@@ -11,15 +11,12 @@
 
 #include "granular/error.hpp"
 #include "granular/io/output_lock.hpp"
+#include "scratch.hpp"
 
 namespace granular {
 namespace {
 
-std::string scratch(const std::string& name) {
-  const auto dir = std::filesystem::path(GRANULAR_BINARY_DIR) / "output_lock_test";
-  std::filesystem::create_directories(dir);
-  return (dir / name).string();
-}
+std::string scratch(const std::string& name) { return testing::scratch_path("output_lock_test", name); }
 
 TEST(OutputLock, ASecondWriterIsRefusedNamingTheFirst) {
   const std::string prefix = scratch("run");

@@ -32,6 +32,32 @@ TEST(RangeSyntax, RejectsMalformedInputNamingTheOption) {
   EXPECT_THROW(parse_number_list("0:1", "--xi"), InvalidInput);  // no default step
 }
 
+TEST(RangeSyntax, AFiniteNumberIsReadWhole) {
+  EXPECT_EQ(parse_finite_number("15.5"), 15.5);
+  EXPECT_EQ(parse_finite_number("-1e-3"), -1e-3);
+  EXPECT_FALSE(parse_finite_number(""));
+  EXPECT_FALSE(parse_finite_number("15kHz"));
+  EXPECT_FALSE(parse_finite_number("inf"));
+  EXPECT_FALSE(parse_finite_number("nan"));
+  EXPECT_FALSE(parse_finite_number("1e999"));
+}
+
+TEST(RangeSyntax, WholeNumbersInScientificNotationBecomeDigits) {
+  EXPECT_EQ(integer_digits("2501", "--N"), "2501");
+  EXPECT_EQ(integer_digits("1e7", "--N"), "10000000");
+  EXPECT_EQ(integer_digits("2.5e3", "--N"), "2500");
+  EXPECT_EQ(integer_digits("abc", "--N"), "abc");  // left to the integer parser
+  EXPECT_EQ(integer_digits("-1", "--N"), "-1");
+  try {
+    integer_digits("2.5", "--N");
+    FAIL() << "2.5 was read as an integer";
+  } catch (const InvalidInput& e) {
+    EXPECT_STREQ(e.what(), "--N 2.5: not an integer");
+  }
+  EXPECT_THROW(integer_digits("1e19", "--seed"), InvalidInput);
+  EXPECT_THROW(integer_digits("1e3x", "--seed"), InvalidInput);
+}
+
 TEST(NumberFormat, ShortestRoundTrip) {
   EXPECT_EQ(format_number(0.1), "0.1");
   EXPECT_EQ(format_number(1e-7), "1e-07");

@@ -107,3 +107,23 @@ TEST(ChainLengthRule, OneAndAHalfTimesTheLengthGivesTheSameSpread) {
 
 }  // namespace
 }  // namespace granular
+
+namespace granular {
+namespace {
+
+TEST(ChainLengthRule, SizingForLongTimesKicksTheCentreOfACentredChain) {
+  TransportCase c = long_case(Disorder::anderson, 10, Kick::displacement, 2e-3);
+  c.chain.N = 7;
+  c.site = 1;
+  const ChainLength expected = automatic_chain_length(c);
+  const ChainLength got = size_for_long_times(c);
+  EXPECT_EQ(got.n, expected.n);
+  EXPECT_EQ(c.chain.N, expected.n);
+  EXPECT_EQ(c.chain.N % 2, 1u);
+  EXPECT_EQ(c.site, (c.chain.N - 1) / 2);
+  EXPECT_TRUE(c.chain.centred);
+  EXPECT_NO_THROW(validate(c));
+}
+
+}  // namespace
+}  // namespace granular

@@ -9,6 +9,7 @@
 #include "granular/dynamics/spreading.hpp"
 #include "granular/error.hpp"
 #include "granular/study/transport_choices.hpp"
+#include "tool_main.hpp"
 
 namespace granular::tool {
 
@@ -20,26 +21,22 @@ struct BeyondOptions {
 };
 
 inline void add_damping_options(CLI::App& app, BeyondOptions& o) {
-  app.add_option("--damping-time", o.damping_time,
-                 "on-site viscous damping time tau_d [s] of -(m/tau_d) du/dt; 0 = none")
-      ->capture_default_str();
-  app.add_option(
-         "--kk-gamma", o.kk_gamma,
-         "Kuwabara-Kono contact damping gamma_KK [s]: bond force A[d]^{3/2} + gamma A [d]^{1/2} dd/dt; 0 = none")
-      ->capture_default_str();
+  add_option(app, "--damping-time", o.damping_time,
+             "on-site viscous damping time tau_d [s] of -(m/tau_d) du/dt; 0 = none");
+  add_option(app, "--kk-gamma", o.kk_gamma,
+             "Kuwabara-Kono contact damping gamma_KK [s]: bond force A[d]^{3/2} + gamma A [d]^{1/2} dd/dt; 0 = none");
 }
 
 /// --mle (with `help`: what the tool writes) and --renormalize.
 inline void add_mle_options(CLI::App& app, BeyondOptions& o, const std::string& help) {
   app.add_flag("--mle", o.mle, help);
-  app.add_option("--renormalize", o.renormalize, "steps between renormalizations of the deviation vector")
-      ->capture_default_str();
+  add_option(app, "--renormalize", o.renormalize, "steps between renormalizations of the deviation vector");
 }
 
 inline void add_lyapunov_options(CLI::App& app, BeyondOptions& o) {
   add_mle_options(app, o, "maximal Lyapunov exponent by the tangent map: column mle = X1(t) [1/s] (ensemble: its mean)");
   app.add_option("--deviation", o.deviation, "CSV t,site,share: the deviation vector along the chain (with --mle)");
-  app.add_option("--deviation-samples", o.deviation_samples, "uniform times of --deviation")->capture_default_str();
+  add_option(app, "--deviation-samples", o.deviation_samples, "uniform times of --deviation");
 }
 
 /// granular::apply(BeyondChoices) (transport_choices.hpp), once the file option only the tool has

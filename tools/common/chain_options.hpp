@@ -11,7 +11,7 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
-#include "granular/io/range_syntax.hpp"
+#include "granular/io/bead_distribution_syntax.hpp"
 #include "granular/model/bead_distribution.hpp"
 #include "granular/model/chain_recipe.hpp"
 #include "granular/model/configuration_file.hpp"
@@ -50,14 +50,12 @@ inline std::vector<CLI::Option*> add_bead_distribution_options(CLI::App& app, Ch
 }
 
 inline void add_chain_options(CLI::App& app, ChainOptions& o) {
-  app.add_option("--disorder", o.disorder, "h | A | RDM1 | RDM2 (homogeneous, Anderson, random dimer 1/2)")
-      ->capture_default_str();
-  app.add_option("--xi", o.xi, "size ratio R2/R1 in (0,1]")->capture_default_str();
-  app.add_option("--q", o.q, "probability of a type-1 bead (A), dimer 11 (RDM1) or dimer 12 (RDM2), in [0,1]")
-      ->capture_default_str();
+  add_option(app, "--disorder", o.disorder, "h | A | RDM1 | RDM2 (homogeneous, Anderson, random dimer 1/2)");
+  add_option(app, "--xi", o.xi, "size ratio R2/R1 in (0,1]");
+  add_option(app, "--q", o.q, "probability of a type-1 bead (A), dimer 11 (RDM1) or dimer 12 (RDM2), in [0,1]");
   add_integer(app, "--N", o.n, "beads in the chain (>= 2)");
-  app.add_option("--F0", o.f0, "static precompression [N]")->capture_default_str();
-  app.add_option("--R1", o.r1, "radius of type-1 beads [m] (steel beads and flat steel walls)")->capture_default_str();
+  add_option(app, "--F0", o.f0, "static precompression [N]");
+  add_option(app, "--R1", o.r1, "radius of type-1 beads [m] (steel beads and flat steel walls)");
   add_integer(app, "--seed", o.seed, "random seed");
   add_integer(app, "--realization", o.realization, "which realization of the seed (0-based)");
   auto* config =
@@ -72,62 +70,17 @@ inline void add_chain_options(CLI::App& app, ChainOptions& o) {
 
 /// The distribution of --types / --type-masses / --polydisperse, if one is given (rule: --disorder).
 inline std::optional<BeadDistribution> bead_distribution(const ChainOptions& o) {
-  BeadDistribution d;
-  std::string option, text;
-  if (!o.types.empty() || !o.type_masses.empty()) {
-    const bool by_mass = o.types.empty();
-    option = by_mass ? "--type-masses" : "--types";
-    text = by_mass ? o.type_masses : o.types;
-    for (const std::string& item : parse_word_list(text, option)) {
-      const auto colon = item.find(':');
-      if (colon == std::string::npos)
-        throw InvalidInput(option + " '" + item + "': expected " + (by_mass ? "MASS" : "RADIUS") + ":PROBABILITY");
-      const double value = parse_number_list(item.substr(0, colon), option, 0, 1).at(0);
-      if (!(value > 0) || !std::isfinite(value))
-        throw InvalidInput(option + " '" + item + "': " + (by_mass ? "mass" : "radius") + " must be finite and > 0");
-      d.radii.push_back(by_mass ? sphere_radius(steel, value) : value);
-      d.probabilities.push_back(parse_number_list(item.substr(colon + 1), option, 0, 1).at(0));
-    }
-    d.rule = parse_disorder(o.disorder);
-  } else if (!o.polydisperse.empty()) {
-    option = "--polydisperse";
-    text = o.polydisperse;
-    std::vector<std::string> parts;
-    for (std::size_t begin = 0;;) {
-      const auto end = text.find(':', begin);
-      parts.push_back(text.substr(begin, end - begin));
-      if (end == std::string::npos) break;
-      begin = end + 1;
-    }
-    const auto number = [&](std::size_t i) { return parse_number_list(parts[i], option, 0, 1).at(0); };
-    if (parts[0] == "uniform" && parts.size() == 3) {
-      d.kind = BeadDistribution::Kind::uniform;
-      d.low = number(1), d.high = number(2);
-      d.radii = {d.low, d.high};
-    } else if (parts[0] == "normal" && parts.size() == 4) {
-      d.kind = BeadDistribution::Kind::normal;
-      d.mean = number(1), d.sd = number(2), d.minimum = number(3);
-      d.radii = {d.mean, d.minimum};
-    } else {
-      throw InvalidInput("--polydisperse '" + text + "': expected uniform:LO:HI or normal:MEAN:SD:MIN (metres)");
-    }
-  } else {
-    return std::nullopt;
-  }
-  try {
-    validate(d);
-  } catch (const InvalidInput& e) {
-    throw InvalidInput(option + " '" + text + "': " + e.what());
-  }
-  if (d.kind != BeadDistribution::Kind::types) d.radii.clear();
-  return d;
+  if (!o.types.empty()) return parse_bead_types(o.types, false, parse_disorder(o.disorder), "--types");
+  if (!o.type_masses.empty()) return parse_bead_types(o.type_masses, true, parse_disorder(o.disorder), "--type-masses");
+  if (!o.polydisperse.empty()) return parse_polydisperse(o.polydisperse, "--polydisperse");
+  return std::nullopt;
 }
 
 /// Reads a radii file, printing a warning for each implausible radius (file and line named).
 inline std::vector<double> read_radii_warning(const std::string& path) {
   std::vector<std::string> warnings;
   std::vector<double> radii = read_radii_file(path, &warnings);
-  for (const auto& w : warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
+  warn(warnings);
   return radii;
 }
 
@@ -157,8 +110,7 @@ inline void warn_implausible(const ChainRecipe& r, const ChainOptions& o) {
   const std::string distribution = !o.types.empty()         ? "--types"
                                    : !o.type_masses.empty() ? "--type-masses"
                                                             : "--polydisperse";
-  for (const auto& w : radius_warnings(r, {"--R1", distribution, "--radii"}))
-    std::fprintf(stderr, "warning: %s\n", w.c_str());
+  warn(radius_warnings(r, {"--R1", distribution, "--radii"}));
 }
 
 /// The realization the options pick (0-based).

@@ -20,6 +20,7 @@
 #include "granular/study/time_step_rule.hpp"
 #include "granular/study/transport_choices.hpp"
 #include "granular/study/transport_study.hpp"
+#include "tool_main.hpp"
 
 namespace granular::tool {
 
@@ -33,48 +34,35 @@ struct DynamicsOptions {
 
 inline void add_dynamics_options(CLI::App& app, DynamicsOptions& o) {
   TransportChoices& c = o.choices;
-  app.add_option("--alpha", c.alpha, "displacement kick [m] (also what --beta match matches)")->capture_default_str();
-  app.add_option("--beta", o.beta,
-                 "velocity kick [m/s] (the paper's 8e-3 for every F0), or 'match': the energy of --alpha on each chain")
-      ->capture_default_str();
-  app.add_option("--site", c.site, "kicked bead n0, 1..N (0 = the centre, (N+1)/2)")->capture_default_str();
-  app.add_option("--centre", c.centre,
-                 "m2 about the kicked 'site' (the paper's n_c) or the energy 'centroid'; both are written")
-      ->capture_default_str();
-  app.add_option("--T", c.duration, "duration [s], a whole number of --dt")->capture_default_str();
-  app.add_option("--dt", c.time_step,
-                 "time step tau [s]; must meet tau <= h*/omega_max (docs/physics.md, 'Time step'): a larger one is "
-                 "refused, naming the largest stable tau; by default 1e-6, or 1e-6/k (smallest integer k) where 1e-6 "
-                 "is past a sixth of that limit")
-      ->capture_default_str();
-  app.add_option("--integrator", c.integrator,
-                 "saba2c | saba2 | aba864 | srkn14a | reference (Odeint RKF78) | auto: the cheapest scheme and step "
-                 "keeping the energy error at SABA2C's at 1e-6 s: SRKN14a at 5e-6 s where no contact can open, else "
-                 "SABA2C (docs/physics.md, 'Chain length for long times'); no --dt with it")
-      ->capture_default_str();
-  app.add_option("--force-law", c.force_law, "hertz | fpu | linear")->capture_default_str();
-  app.add_option("--samples", c.samples, "log-spaced sample times (tau..T) outside the fit window")->capture_default_str();
-  app.add_option("--sampling", c.sampling, "log (tau..T) | uniform (0..T) for those samples")->capture_default_str();
-  app.add_option("--fit", o.fit, "fit window start:stop [s] of gamma (m2 ~ t^gamma) and eta (P^-1 ~ t^-eta)")
-      ->capture_default_str();
-  app.add_option("--fit-step", c.fit_step, "spacing of the samples inside the fit window [s], a multiple of --dt")
-      ->capture_default_str();
-  app.add_option("--t-star", c.t_star, "t*: from here on, |L_d - gamma| >= --kappa means 'not a power law' [s]")
-      ->capture_default_str();
-  app.add_option("--kappa", c.kappa, "largest |L_d - gamma| of a power law after --t-star")->capture_default_str();
-  app.add_option("--bootstrap", c.bootstrap, "resamples of the realization bootstrap of gamma and eta")
-      ->capture_default_str();
-  app.add_option("--active-window", o.active_window, "on | off: integrate only where the wave has arrived")
-      ->capture_default_str();
-  app.add_option("--window-threshold", c.window_threshold, "relative kinetic energy that grows the window")
-      ->capture_default_str();
-  app.add_option("--reference-max-step", c.reference_max_step, "largest step of --integrator reference [s], 0 = none")
-      ->capture_default_str();
-  app.add_option("--max-energy-error", c.max_energy_error,
-                 "guard: relative energy error that stops (or is reported), 0 = off")
-      ->capture_default_str();
-  app.add_option("--energy-guard", c.energy_guard, "stop | warn: what passing --max-energy-error does")
-      ->capture_default_str();
+  add_option(app, "--alpha", c.alpha, "displacement kick [m] (also what --beta match matches)");
+  add_option(app, "--beta", o.beta,
+             "velocity kick [m/s] (the paper's 8e-3 for every F0), or 'match': the energy of --alpha on each chain");
+  add_option(app, "--site", c.site, "kicked bead n0, 1..N (0 = the centre, (N+1)/2)");
+  add_option(app, "--centre", c.centre,
+             "m2 about the kicked 'site' (the paper's n_c) or the energy 'centroid'; both are written");
+  add_option(app, "--T", c.duration, "duration [s], a whole number of --dt");
+  add_option(app, "--dt", c.time_step,
+             "time step tau [s]; must meet tau <= h*/omega_max (docs/physics.md, 'Time step'): a larger one is "
+             "refused, naming the largest stable tau; by default 1e-6, or 1e-6/k (smallest integer k) where 1e-6 "
+             "is past a sixth of that limit");
+  add_option(app, "--integrator", c.integrator,
+             "saba2c | saba2 | aba864 | srkn14a | reference (Odeint RKF78) | auto: the cheapest scheme and step "
+             "keeping the energy error at SABA2C's at 1e-6 s: SRKN14a at 5e-6 s where no contact can open, else "
+             "SABA2C (docs/physics.md, 'Chain length for long times'); no --dt with it");
+  add_option(app, "--force-law", c.force_law, "hertz | fpu | linear");
+  add_option(app, "--samples", c.samples, "log-spaced sample times (tau..T) outside the fit window");
+  add_option(app, "--sampling", c.sampling, "log (tau..T) | uniform (0..T) for those samples");
+  add_option(app, "--fit", o.fit, "fit window start:stop [s] of gamma (m2 ~ t^gamma) and eta (P^-1 ~ t^-eta)");
+  add_option(app, "--fit-step", c.fit_step, "spacing of the samples inside the fit window [s], a multiple of --dt");
+  add_option(app, "--t-star", c.t_star, "t*: from here on, |L_d - gamma| >= --kappa means 'not a power law' [s]");
+  add_option(app, "--kappa", c.kappa, "largest |L_d - gamma| of a power law after --t-star");
+  add_option(app, "--bootstrap", c.bootstrap, "resamples of the realization bootstrap of gamma and eta");
+  add_option(app, "--active-window", o.active_window, "on | off: integrate only where the wave has arrived");
+  add_option(app, "--window-threshold", c.window_threshold, "relative kinetic energy that grows the window");
+  add_option(app, "--reference-max-step", c.reference_max_step, "largest step of --integrator reference [s], 0 = none");
+  add_option(app, "--max-energy-error", c.max_energy_error,
+             "guard: relative energy error that stops (or is reported), 0 = off");
+  add_option(app, "--energy-guard", c.energy_guard, "stop | warn: what passing --max-energy-error does");
   add_damping_options(app, o.beyond);
 }
 
@@ -97,22 +85,17 @@ inline void apply(const DynamicsOptions& o, TransportCase& c) {
 
 /// granular::settle_scheme_and_step (scheme_choice.hpp): the time step, and with `--integrator auto`
 /// the scheme first (SRKN14a at 5 µs where no contact can open and it is cheaper, else SABA2C).
-inline nlohmann::json settle_time_step(std::vector<TransportCase>& cases, const DynamicsOptions& o, bool dt_given,
-                                       const Chain* chain = nullptr) {
-  nlohmann::json rule = settle_scheme_and_step(cases, o.choices.integrator == "auto", dt_given, chain);
+inline nlohmann::json settle_time_step(std::vector<TransportCase>& cases, const DynamicsOptions& o, bool dt_given) {
+  nlohmann::json rule = settle_scheme_and_step(cases, o.choices.integrator == "auto", dt_given);
   for (const auto& c : cases)  // after the errors (a user acts on those first); the cases share T
-    if (const std::string w = duration_warning(c, "--T"); !w.empty()) {
-      std::fprintf(stderr, "warning: %s\n", w.c_str());
-      break;
-    }
+    if (warn({duration_warning(c, "--T")})) break;
   return rule;
 }
 
 /// The same for one case.
-inline nlohmann::json settle_time_step(TransportCase& c, const DynamicsOptions& o, bool dt_given,
-                                       const Chain* chain = nullptr) {
-  nlohmann::json rule = settle_scheme_and_step(c, o.choices.integrator == "auto", dt_given, chain);
-  if (const std::string w = duration_warning(c, "--T"); !w.empty()) std::fprintf(stderr, "warning: %s\n", w.c_str());
+inline nlohmann::json settle_time_step(TransportCase& c, const DynamicsOptions& o, bool dt_given) {
+  nlohmann::json rule = settle_scheme_and_step(c, o.choices.integrator == "auto", dt_given);
+  warn({duration_warning(c, "--T")});
   return rule;
 }
 

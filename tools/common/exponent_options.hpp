@@ -9,8 +9,10 @@
 
 #include "beyond_options.hpp"
 #include "chain_options.hpp"
+#include "granular/io/range_syntax.hpp"
 #include "granular/study/exponent_table.hpp"
 #include "mode_kick_options.hpp"
+#include "tool_main.hpp"
 
 namespace granular::tool {
 
@@ -27,11 +29,9 @@ struct ExponentChoices {
 };
 
 inline void add_exponent_choices(CLI::App& app, ExponentChoices& o, BeyondOptions& beyond) {
-  app.add_option("--chains", o.chains,
-                 "chain kinds: comma list of h, A, RDM1, RDM2, or 'none' (only the chain of --types/--polydisperse)")
-      ->capture_default_str();
-  app.add_option("--ic", o.kicks, "kicks: comma list of displacement, velocity, mode (--mode or --mode-khz)")
-      ->capture_default_str();
+  add_option(app, "--chains", o.chains,
+             "chain kinds: comma list of h, A, RDM1, RDM2, or 'none' (only the chain of --types/--polydisperse)");
+  add_option(app, "--ic", o.kicks, "kicks: comma list of displacement, velocity, mode (--mode or --mode-khz)");
   add_bead_distribution_options(app, o.beads, "--types-rule");
   app.add_option("--types-rule", o.beads.disorder,
                  "how --types/--type-masses are drawn: A (each bead, the default), RDM1 (each dimer), RDM2 (two "

@@ -12,6 +12,7 @@
 #include "dynamics_options.hpp"
 #include "long_time_options.hpp"
 #include "mode_kick_options.hpp"
+#include "tool_main.hpp"
 
 namespace granular::tool {
 
@@ -27,13 +28,11 @@ struct KickedCaseOptions {
 inline void add_kicked_case_options(CLI::App& app, KickedCaseOptions& o) {
   add_chain_options(app, o.chain);
   add_auto_length(app, o.chain.auto_n);
-  app.add_option("--ic", o.ic, "initial condition: displacement | velocity | mode (a linear mode: --mode, --mode-khz)")
-      ->capture_default_str();
+  add_option(app, "--ic", o.ic, "initial condition: displacement | velocity | mode (a linear mode: --mode, --mode-khz)");
   add_dynamics_options(app, o.dynamics);
   add_mode_kick_options(app, o.mode);
   add_lyapunov_options(app, o.dynamics.beyond);
-  app.add_option("--realizations", o.realizations, "realizations to average (ensemble means and exponents)")
-      ->capture_default_str();
+  add_option(app, "--realizations", o.realizations, "realizations to average (ensemble means and exponents)");
 }
 
 struct KickedCase {

@@ -11,9 +11,11 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
-#include "granular/code_identity.hpp"
 #include "granular/ensemble/checkpoint_log.hpp"
+#include "granular/ensemble/interrupt.hpp"
 #include "granular/ensemble/run_options.hpp"
+#include "granular/parallel/mpi_context.hpp"
+#include "granular/study/exponent_table.hpp"
 #include "granular/study/transport_study.hpp"
 #include "metadata.hpp"
 #include "output_claim.hpp"
@@ -30,8 +32,7 @@ struct LongRunOptions {
 };
 
 inline void add_long_run_options(CLI::App& app, LongRunOptions& o) {
-  app.add_option("--threads", o.threads, "threads per process (0 = all cores); results do not depend on it")
-      ->capture_default_str();
+  add_option(app, "--threads", o.threads, "threads per process (0 = all cores); results do not depend on it");
   app.add_flag("--resume", o.resume,
                "continue an interrupted run (same parameters) from its checkpoint PREFIX.checkpoint*");
   app.add_flag("--resume-other-version", o.other_version,
@@ -57,6 +58,20 @@ inline RunOptions run_options(const LongRunOptions& o, const std::string& checkp
   return run;
 }
 
+/// The same for a study of many cases (case i logs to `checkpoint`.<i>), with a progress line
+/// when `progress`.
+inline ExponentRunOptions exponent_run_options(const LongRunOptions& o, const std::string& checkpoint, bool progress,
+                                               const std::string& tool) {
+  const RunOptions r = run_options(o, checkpoint, nullptr, tool);
+  return {.threads = r.threads,
+          .checkpoint_prefix = checkpoint,
+          .resume = r.resume,
+          .accept_other_version = r.accept_other_version,
+          .progress = progress ? -1 : 0,
+          .cancelled = r.cancelled,
+          .skip_failed = r.skip_failed};
+}
+
 /// With --resume-other-version: which code made the checkpoint (`checkpoints`, the first that
 /// exists) and which resumes it, for the JSON; null otherwise.
 /// A plain --resume of a checkpoint another version made is refused here, in this tool's words.
@@ -69,7 +84,7 @@ inline nlohmann::json resumed_code(const LongRunOptions& o, const std::vector<st
   if (!o.other_version) return nullptr;
   for (const std::string& c : checkpoints)
     if (const std::string made_by = CheckpointLog::code_of(c); !made_by.empty())
-      return {{"made_by", made_by}, {"resumed_by", std::string(code_version()) + " (commit " + code_commit() + ")"}};
+      return {{"made_by", made_by}, {"resumed_by", CheckpointLog::this_code()}};
   return nullptr;
 }
 

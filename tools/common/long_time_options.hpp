@@ -39,11 +39,7 @@ inline void add_auto_length(CLI::App& app, bool& auto_n) {
 /// centred draw. `site`: the --site given (only 0, the centre, goes with auto). Returns the rule.
 inline nlohmann::json size_chain(TransportCase& c, long long site) {
   if (site != 0) throw InvalidInput("--site " + std::to_string(site) + ": --N auto kicks the centre bead (--site 0)");
-  const ChainLength length = automatic_chain_length(c);
-  c.chain.N = length.n;
-  c.site = (c.chain.N - 1) / 2;
-  c.chain.centred = true;
-  return to_json(length);
+  return to_json(size_for_long_times(c));
 }
 
 /// exponents: the rules of its cases (sized by exponent_cases) when `auto_n`, else null.

@@ -1,9 +1,8 @@
 #pragma once
 // The `spreading` command that computes one realization of a kicked-chain case alone, printed
-// when a realization of an ensemble fails. Every field of the case is spelled out (numbers in
-// shortest round-trip form), and the command is read back with spreading's own options
-// (kicked_case.hpp) before it is printed: if it does not give the very case that failed (a
-// material or a setting no flag spells), no command is printed and the reason is.
+// when a realization of an ensemble fails: every field of the case spelled as spreading's flags
+// (numbers in shortest round-trip form), read back with spreading's own options (kicked_case.hpp)
+// and checked by study/case_replay.hpp before it is printed.
 #include <algorithm>
 #include <cstdint>
 #include <nlohmann/json.hpp>
@@ -11,31 +10,25 @@
 #include <string>
 #include <vector>
 
+#include "granular/io/bead_distribution_syntax.hpp"
+#include "granular/io/shell_quote.hpp"
 #include "granular/number_format.hpp"
+#include "granular/study/case_replay.hpp"
 #include "kicked_case.hpp"
-#include "metadata.hpp"
 
 namespace granular::tool {
 
 /// The flags of realization `r` of `c` as `spreading` reads them (no --output).
-inline std::vector<std::string> replay_arguments(const TransportCase& c, std::uint64_t r) {
+inline std::vector<std::string> replay_flags(const TransportCase& c, std::uint64_t r) {
   std::vector<std::string> a;
   const auto add = [&](const std::string& flag, const std::string& value) { a.insert(a.end(), {flag, value}); };
   const auto number = [](double x) { return format_number(x); };
   const ChainRecipe& chain = c.chain;
   const SpreadingConfig& d = c.dynamics;
   if (const auto& b = chain.distribution) {
-    if (b->kind == BeadDistribution::Kind::types) {
-      std::string types;
-      for (std::size_t t = 0; t < b->radii.size(); ++t)
-        types += (t ? "," : "") + number(b->radii[t]) + ":" + number(b->probabilities[t]);
-      add("--types", types);
-      add("--disorder", to_string(b->rule));
-    } else if (b->kind == BeadDistribution::Kind::uniform) {
-      add("--polydisperse", "uniform:" + number(b->low) + ":" + number(b->high));
-    } else {
-      add("--polydisperse", "normal:" + number(b->mean) + ":" + number(b->sd) + ":" + number(b->minimum));
-    }
+    const bool types = b->kind == BeadDistribution::Kind::types;
+    add(types ? "--types" : "--polydisperse", spell(*b));
+    if (types) add("--disorder", to_string(b->rule));
   } else if (chain.given_radii) {
     add("--radii", chain.source);
   } else {
@@ -97,41 +90,16 @@ inline TransportCase read_kicked_case(const std::vector<std::string>& arguments)
   return k.c;
 }
 
-/// The keys on which the case `arguments` give differs from realization `r` of `c` run alone
-/// (empty: they give it exactly), or why they cannot be read.
-inline std::string replay_mismatch(const TransportCase& c, const std::vector<std::string>& arguments) {
-  TransportCase alone = c;  // what spreading runs: one realization, no profile
-  alone.realizations = 1;
-  alone.profile_realizations = 0;
-  try {
-    const nlohmann::json want = describe(alone), got = describe(read_kicked_case(arguments));
-    std::string differ;
-    for (const auto& [key, value] : want.items())
-      if (!got.contains(key) || got.at(key) != value) differ += (differ.empty() ? "" : ", ") + key;
-    for (const auto& [key, value] : got.items())
-      if (!want.contains(key)) differ += (differ.empty() ? "" : ", ") + key;
-    return differ;
-  } catch (const std::exception& e) {
-    return std::string("the flags do not read back: ") + e.what();
-  }
-}
-
-/// The `spreading` command that computes realization `r` of case `c` alone, so it meets exactly
-/// what the ensemble met; none when its flags cannot spell the case (`why` says what differs).
-/// `argv0` (how this tool was called) says where `spreading` is.
+/// The `spreading` command that computes realization `r` of case `c` alone (study/case_replay.hpp),
+/// so it meets exactly what the ensemble met; none when its flags cannot spell the case (`why`
+/// says what differs). `argv0` (how this tool was called) says where `spreading` is.
 inline std::optional<std::string> replay_command(const TransportCase& c, std::uint64_t r, const std::string& argv0,
                                                  std::string* why = nullptr) {
-  const std::vector<std::string> arguments = replay_arguments(c, r);
-  const std::string differ = replay_mismatch(c, arguments);
-  if (!differ.empty()) {
-    if (why) *why = differ;
-    return std::nullopt;
-  }
+  const auto arguments = replay_arguments(c, r, {replay_flags, read_kicked_case}, why);
+  if (!arguments) return std::nullopt;
   const auto slash = argv0.rfind('/');
-  std::string command =
-      Metadata::shell_quote((slash == std::string::npos ? "" : argv0.substr(0, slash + 1)) + "spreading");
-  for (const std::string& word : arguments)
-    command += " " + (word.starts_with("--") ? word : Metadata::shell_quote(word));
+  std::string command = shell_quote((slash == std::string::npos ? "" : argv0.substr(0, slash + 1)) + "spreading");
+  for (const std::string& word : *arguments) command += " " + (word.starts_with("--") ? word : shell_quote(word));
   return command + " --output replay-" + std::to_string(r);
 }
 

@@ -7,6 +7,7 @@
 #include <CLI/CLI.hpp>
 
 #include "granular/error.hpp"
+#include "granular/io/range_syntax.hpp"
 #include "granular/linear/spectrum.hpp"
 
 namespace granular::tool {
@@ -32,16 +33,8 @@ inline ModeSelection parse_selection(const SelectionOptions& o) {
     const std::string& w = *o.window;
     const auto colon = w.find(':');
     auto khz = [&](const std::string& text) {
-      std::size_t used = 0;
-      double v = 0;
-      try {
-        v = std::stod(text, &used);
-      } catch (const std::exception&) {
-        used = 0;
-      }
-      if (used == 0 || used != text.size() || !std::isfinite(v))
-        throw InvalidInput("--window", " '" + w + "': expected F1:F2, two frequencies in kHz");
-      return v;
+      if (const auto v = parse_finite_number(text)) return *v;
+      throw InvalidInput("--window", " '" + w + "': expected F1:F2, two frequencies in kHz");
     };
     if (colon == std::string::npos || w.find(':', colon + 1) != std::string::npos)
       throw InvalidInput("--window", " '" + w + "': expected F1:F2, two frequencies in kHz");

@@ -1,8 +1,7 @@
 #pragma once
-// The optional outputs of `spreading` beyond PREFIX.csv: the final state, the profile, force
-// series, the energy map (HDF5) and the spectral density g(ν), with their sampling options.
-#include <functional>
-#include <ostream>
+// The options of `spreading`'s outputs beyond PREFIX.csv: the final state, the profile, force
+// series, the energy map (HDF5) and the spectral density g(ν), with their sampling (the files
+// themselves: study/spreading_files.hpp).
 #include <string>
 #include <utility>
 #include <vector>
@@ -11,9 +10,8 @@
 
 #include "granular/error.hpp"
 #include "granular/io/range_syntax.hpp"
-#include "granular/study/spreading_files.hpp"
 #include "granular/study/transport_study.hpp"
-#include "metadata.hpp"
+#include "tool_main.hpp"
 
 namespace granular::tool {
 
@@ -31,16 +29,14 @@ inline void add_spreading_outputs(CLI::App& app, SpreadingOutputs& o) {
                "also write PREFIX-profile.csv: site,energy,force at T (ensemble: site,energy,energy_se)");
   app.add_option("--forces-at", o.forces_at,
                  "beads (e.g. 601,631,661) whose force goes to PREFIX-forces.csv: t,site,force");
-  app.add_option("--force-samples", o.force_samples, "uniform times of the force series")->capture_default_str();
+  add_option(app, "--force-samples", o.force_samples, "uniform times of the force series");
   app.add_option("--energy-map", o.energy_map, "HDF5 file of E_n(t_k): datasets energy [time][column], t, site");
-  app.add_option("--map-samples", o.map_samples, "uniform times of the energy map")->capture_default_str();
-  app.add_option("--map-stride", o.map_stride, "beads summed into one map column")->capture_default_str();
+  add_option(app, "--map-samples", o.map_samples, "uniform times of the energy map");
+  add_option(app, "--map-stride", o.map_stride, "beads summed into one map column");
   app.add_option("--spectrum", o.spectrum, "CSV of the spectral density: freq_khz,g");
-  app.add_option("--spectrum-samples", o.spectrum_samples, "uniform samples of the series for the spectral density")
-      ->capture_default_str();
-  app.add_option("--spectrum-of", o.spectrum_of,
-                 "displacement (the paper's g) | velocity (a permanent step in u adds a flat floor, not a 1/nu^2 tail)")
-      ->capture_default_str();
+  add_option(app, "--spectrum-samples", o.spectrum_samples, "uniform samples of the series for the spectral density");
+  add_option(app, "--spectrum-of", o.spectrum_of,
+             "displacement (the paper's g) | velocity (a permanent step in u adds a flat floor, not a 1/nu^2 tail)");
 }
 
 /// Checks the options and sets what they ask of c's dynamics (needs c.chain).
@@ -62,18 +58,6 @@ inline void apply(const SpreadingOutputs& o, TransportCase& c) {
   d.map_stride = static_cast<std::size_t>(o.map_stride);
   d.spectrum_samples = o.spectrum.empty() ? 0 : static_cast<std::size_t>(o.spectrum_samples);
   d.spectrum_source = parse_spectrum_source(o.spectrum_of);
-}
-
-/// Writes the outputs named by their own options (final state, g(ν), energy map) of run `r`:
-/// the CSVs through `open` (committed with the rest), the HDF5 map atomically at once.
-inline void write_single(const SpreadingOutputs& o, const SpreadingResult& r, const SpreadingConfig& d,
-                         const std::function<std::ostream&(const std::string&)>& open, Metadata& meta) {
-  if (!o.final_state.empty()) write_final_state_csv(open(o.final_state), r);
-  if (!o.spectrum.empty()) {
-    write_spectrum_csv(open(o.spectrum), r);
-    meta["spectrum"] = {{"file", o.spectrum}, {"of", to_string(d.spectrum_source)}, {"samples", o.spectrum_samples}};
-  }
-  if (!o.energy_map.empty()) write_energy_map(o.energy_map, r, d.map_stride);
 }
 
 }  // namespace granular::tool

@@ -11,21 +11,21 @@
 #include <functional>
 #include <map>
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
 #include "granular/error.hpp"
+#include "granular/io/nearest_word.hpp"
+#include "granular/io/output_claim.hpp"
+#include "granular/io/range_syntax.hpp"
+#include "granular/io/shell_quote.hpp"
 #include "granular/number_format.hpp"
-#include "metadata.hpp"
+#include "granular/parameter_names.hpp"
 
 namespace granular::tool {
 
 enum ExitCode { ok = 0, io_failure = 1, bad_input = 2, numerical_failure = 3, interrupted = 130 };
-
-/// Ends a process quietly with `code`: an MPI rank other than 0 when rank 0 has already said why.
-struct QuietExit {
-  int code;
-};
 
 /// The command that continues an interrupted run: argv as typed, shell-quoted, with --resume
 /// (added if absent) and without --fresh.
@@ -36,7 +36,7 @@ inline std::string resume_command(int argc, char** argv) {
     const std::string word = argv[i];
     if (word == "--fresh") continue;
     resume = resume || word == "--resume";
-    command += (command.empty() ? "" : " ") + Metadata::shell_quote(word);
+    command += (command.empty() ? "" : " ") + shell_quote(word);
   }
   return resume ? command : command + " --resume";
 }
@@ -47,27 +47,35 @@ inline void describe_common(CLI::App& app) {
   app.footer("Physics and units: docs/physics.md (installed to share/doc/granular/physics.md)");
 }
 
+/// Prints each of `warnings` on stderr as "warning: …", the empty ones skipped; says whether one was.
+inline bool warn(const std::vector<std::string>& warnings) {
+  bool any = false;
+  for (const std::string& w : warnings)
+    if (!w.empty()) {
+      std::fprintf(stderr, "warning: %s\n", w.c_str());
+      any = true;
+    }
+  return any;
+}
+
+/// An option whose --help shows its default.
+template <class T>
+CLI::Option* add_option(CLI::App& app, const std::string& name, T& value, const std::string& description) {
+  return app.add_option(name, value, description)->capture_default_str();
+}
+
 /// An integer option that also takes scientific notation (--N 1e7), rejecting non-integers.
 template <class Integer>
 CLI::Option* add_integer(CLI::App& app, const std::string& name, Integer& value, const std::string& description) {
-  return app.add_option(name, value, description)
-      ->transform(CLI::Validator(
-          [name](std::string& text) -> std::string {
-            if (text.find_first_of("eE.") == std::string::npos) return {};
-            std::size_t used = 0;
-            double v = 0;
-            try {
-              v = std::stod(text, &used);
-            } catch (const std::exception&) {
-              return {};  // CLI11's own conversion reports it
-            }
-            if (used != text.size() || !std::isfinite(v) || v != std::floor(v) || std::fabs(v) > 9.2e18)
-              return name + " " + text + ": not an integer";
-            text = std::to_string(static_cast<long long>(v));
-            return {};
-          },
-          "", "integer notation"))
-      ->capture_default_str();
+  const auto digits = [name](std::string& text) -> std::string {
+    try {
+      text = integer_digits(text, name);
+    } catch (const InvalidInput& e) {
+      return e.what();
+    }
+    return {};
+  };
+  return add_option(app, name, value, description)->transform(CLI::Validator(digits, "", "integer notation"));
 }
 
 /// Library parameter names that are not simply the flag without its dashes.
@@ -97,55 +105,19 @@ inline std::string flag_for(const CLI::App& app, const std::string& parameter,
   return "";
 }
 
-/// `message` with every library parameter it names (a word with an underscore, `max_energy_error`)
-/// told as the flag of `app` it stands for (`--max-energy-error`); other words are kept.
+/// `message` with every library parameter it names (`max_energy_error`) told as the flag of `app`
+/// it stands for (`--max-energy-error`); other words are kept.
 inline std::string flags_in(const CLI::App& app, const std::string& message,
                             const std::map<std::string, std::string>& overrides) {
-  std::string out, word;
-  const auto flush = [&] {
-    const std::string flag = word.find('_') != std::string::npos ? flag_for(app, word, overrides) : "";
-    out += flag.empty() ? word : flag;
-    word.clear();
-  };
-  for (char c : message) {
-    if (std::islower(static_cast<unsigned char>(c)) || std::isdigit(static_cast<unsigned char>(c)) || c == '_') {
-      word += c;
-      continue;
-    }
-    flush();
-    out += c;
-  }
-  flush();
-  return out;
+  return rename_parameters(message, [&](const std::string& word) { return flag_for(app, word, overrides); });
 }
 
 /// The option of `app` nearest `typed` by edit distance (for "did you mean"), or "".
 inline std::string nearest_option(const CLI::App& app, const std::string& typed) {
-  auto distance = [](const std::string& a, const std::string& b) {
-    std::vector<std::size_t> row(b.size() + 1);
-    for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
-    for (std::size_t i = 1; i <= a.size(); ++i) {
-      std::size_t diagonal = row[0];
-      row[0] = i;
-      for (std::size_t j = 1; j <= b.size(); ++j) {
-        const std::size_t up = row[j];
-        row[j] = std::min(
-            {row[j] + 1, row[j - 1] + 1, diagonal + (std::tolower(a[i - 1]) == std::tolower(b[j - 1]) ? 0 : 1)});
-        diagonal = up;
-      }
-    }
-    return row[b.size()];
-  };
-  const std::string word = typed.substr(0, typed.find('='));
-  std::string best;
-  std::size_t best_distance = 3;  // further than 2 edits is no suggestion
-  for (const CLI::Option* o : app.get_options()) {
-    for (const std::string& name : o->get_lnames()) {
-      const std::size_t d = distance(word, "--" + name);
-      if (d < best_distance) best_distance = d, best = "--" + name;
-    }
-  }
-  return best;
+  std::vector<std::string> flags;
+  for (const CLI::Option* o : app.get_options())
+    for (const std::string& name : o->get_lnames()) flags.push_back("--" + name);
+  return nearest_word(typed.substr(0, typed.find('=')), flags);  // further than 2 edits is no suggestion
 }
 
 /// Parses argv into `app`, then runs `body`, mapping every failure to a message and exit code.
@@ -199,8 +171,8 @@ inline int run(CLI::App& app, int argc, char** argv, const std::function<void()>
     std::fprintf(stderr, "%s: interrupted; the finished realizations are kept. To continue:\n%s\n", name.c_str(),
                  resume_command(argc, argv).c_str());
     return interrupted;
-  } catch (const QuietExit& e) {
-    return e.code;
+  } catch (const ClaimFailedOnRoot& e) {  // rank 0 has said why
+    return e.refused ? bad_input : io_failure;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "%s: error: %s\n", name.c_str(), e.what());
     return numerical_failure;

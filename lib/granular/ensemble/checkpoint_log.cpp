@@ -102,7 +102,7 @@ std::string code_named(const nlohmann::json& header) {
 /// "checkpoint 'run.checkpoint' was made by granular 0.0.9 (commit …), this is granular 0.1.0 (commit …)"
 std::string other_version_text(const std::string& path, const nlohmann::json& header) {
   return "checkpoint '" + path + "' was made by granular " + code_named(header) + ", this is granular " +
-         code_named(nlohmann::json::parse(with_code("{}")));
+         CheckpointLog::this_code();
 }
 
 }  // namespace
@@ -201,23 +201,8 @@ std::string CheckpointLog::rank_path(const std::string& base, int rank) {
 
 namespace {
 
-std::vector<std::string> family(const std::string& base) {
-  namespace fs = std::filesystem;
-  std::vector<std::string> files;
-  if (fs::exists(base)) files.push_back(base);
-  fs::path folder = fs::path(base).parent_path();
-  if (folder.empty()) folder = ".";
-  const std::string prefix = fs::path(base).filename().string() + ".rank";
-  std::error_code ec;
-  for (const auto& entry : fs::directory_iterator(folder, ec)) {
-    const std::string name = entry.path().filename().string();
-    if (name.size() > prefix.size() && name.compare(0, prefix.size(), prefix) == 0 &&
-        name.find_first_not_of("0123456789", prefix.size()) == std::string::npos)
-      files.push_back(entry.path().string());
-  }
-  std::sort(files.begin(), files.end());
-  return files;
-}
+/// `base` and its rank logs (no case logs, no temporaries).
+std::vector<std::string> family(const std::string& base) { return CheckpointLog::files(base, {}); }
 
 }  // namespace
 
@@ -296,30 +281,46 @@ std::string CheckpointLog::code_of(const std::string& base) {
   return "";
 }
 
+std::string CheckpointLog::this_code() { return code_named(nlohmann::json::parse(with_code("{}"))); }
+
 bool CheckpointLog::exists(const std::string& base) { return !family(base).empty(); }
+
+std::vector<std::string> CheckpointLog::files(const std::string& base, Members which) {
+  namespace fs = std::filesystem;
+  const fs::path folder = fs::path(base).parent_path();
+  const std::string stem = fs::path(base).filename().string();
+  const auto member = [&](const std::string& name) {
+    if (name.compare(0, stem.size(), stem) != 0) return false;
+    std::size_t at = stem.size();
+    const auto skip = [&](const std::string& tag) {  // tag followed by digits up to the next '.'
+      const std::size_t end = std::min(name.find('.', at + tag.size()), name.size());
+      if (name.compare(at, tag.size(), tag) != 0 || end == at + tag.size() ||
+          name.find_first_not_of("0123456789", at + tag.size()) < end)
+        return false;
+      at = end;
+      return true;
+    };
+    if (which.cases) skip(".");
+    skip(".rank");
+    if (which.temporaries) skip(".tmp.");
+    return at == name.size();
+  };
+  std::vector<std::string> found;
+  std::error_code ec;
+  for (const auto& entry : fs::directory_iterator(folder.empty() ? fs::path(".") : folder, ec)) {
+    const std::string name = entry.path().filename().string();
+    if (member(name)) found.push_back((folder / name).string());
+  }
+  std::sort(found.begin(), found.end());
+  return found;
+}
 
 void CheckpointLog::remove_all(const std::string& base) {
   for (const std::string& path : family(base)) std::filesystem::remove(path);
   // A run killed between creating a header's temporary and renaming it leaves BASE[.rankK].tmp.PID
   // behind (io/detail/temporary_file); once the run is done it is nobody's.
-  namespace fs = std::filesystem;
-  fs::path folder = fs::path(base).parent_path();
-  if (folder.empty()) folder = ".";
-  const std::string stem = fs::path(base).filename().string();
-  const auto digits = [](const std::string& s, std::size_t from, std::size_t to) {
-    return to > from && s.find_first_not_of("0123456789", from) >= to;
-  };
   std::error_code ec;
-  for (const auto& entry : fs::directory_iterator(folder, ec)) {
-    const std::string name = entry.path().filename().string();
-    const auto tmp = name.rfind(".tmp.");
-    if (name.compare(0, stem.size(), stem) != 0 || tmp == std::string::npos || tmp < stem.size() ||
-        !digits(name, tmp + 5, name.size()))
-      continue;
-    const std::string member = name.substr(stem.size(), tmp - stem.size());  // "" or ".rankK"
-    if (member.empty() || (member.rfind(".rank", 0) == 0 && digits(member, 5, member.size())))
-      fs::remove(entry.path(), ec);
-  }
+  for (const std::string& path : files(base, {.temporaries = true})) std::filesystem::remove(path, ec);
 }
 
 void CheckpointLog::append(std::uint64_t index, const std::vector<double>& values) {

@@ -45,6 +45,20 @@ class CheckpointLog {
   /// The code that made the log at `base` ("0.1.0 (commit 0123456789ab)"), "" when there is none.
   static std::string code_of(const std::string& base);
 
+  /// Which files belong to the checkpoint `base`: always `base` and every `base.rank<k>` (the logs
+  /// of further MPI ranks); with `cases`, also `base.<i>[.rank<k>]` (the logs of a study's cases,
+  /// which take `base` as their prefix); with `temporaries`, also the `.tmp.<pid>` a killed run
+  /// left of any of them. A file named alike (`base.bak`, `base.rankx`) is never one of them.
+  struct Members {
+    bool cases = false;
+    bool temporaries = false;
+  };
+  /// The existing files of `base` that `which` takes, sorted (named as `base` is: in its folder).
+  static std::vector<std::string> files(const std::string& base, Members which);
+
+  /// This code, named as code_of names a log's maker ("0.1.0 (commit 0123456789ab)").
+  static std::string this_code();
+
   /// Whether `base` or any `base.rank<k>` exists.
   static bool exists(const std::string& base);
 

@@ -3,6 +3,8 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
+#include <string>
 
 #include "granular/error.hpp"
 
@@ -86,6 +88,32 @@ Interval parse_interval(const std::string& text, const std::string& option) {
   const Interval i{parse_finite(parts[0], option), parse_finite(parts[1], option)};
   if (!(i.start < i.stop)) throw InvalidInput(option, " '" + text + "': start must be below stop");
   return i;
+}
+
+std::optional<double> parse_finite_number(const std::string& text) {
+  std::size_t used = 0;
+  double v = 0;
+  try {
+    v = std::stod(text, &used);
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
+  if (used != text.size() || !std::isfinite(v)) return std::nullopt;
+  return v;
+}
+
+std::string integer_digits(const std::string& text, const std::string& option) {
+  if (text.find_first_of("eE.") == std::string::npos) return text;
+  std::size_t used = 0;
+  double v = 0;
+  try {
+    v = std::stod(text, &used);
+  } catch (const std::exception&) {
+    return text;
+  }
+  if (used != text.size() || !std::isfinite(v) || v != std::floor(v) || std::fabs(v) > 9.2e18)
+    throw InvalidInput(option + " " + text + ": not an integer");
+  return std::to_string(static_cast<long long>(v));
 }
 
 std::vector<std::string> parse_word_list(const std::string& text, const std::string& option) {

@@ -1,5 +1,6 @@
 #pragma once
 // The command-line list syntax: "start:stop[:step]" (stop included) or "a,b,c".
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -14,6 +15,16 @@ std::vector<double> parse_number_list(const std::string& text, const std::string
 
 /// Parses a comma list of positive integers (e.g. particle numbers).
 std::vector<long> parse_integer_list(const std::string& text, const std::string& option);
+
+/// `text` read whole as one finite number (std::stod's syntax), or none: empty, trailing
+/// characters, out of range, inf or nan.
+std::optional<double> parse_finite_number(const std::string& text);
+
+/// A whole number as an integer parser reads it: "1e7" and "2.5e3" become "10000000" and "2500";
+/// text with no exponent or point, or that is no number at all, comes back unchanged (the integer
+/// parser reports it). Throws InvalidInput "<option> <text>: not an integer" for a number that is
+/// not whole, not finite or beyond ±9.2e18.
+std::string integer_digits(const std::string& text, const std::string& option);
 
 /// An interval "start:stop" with finite start < stop (e.g. a fit window, 4e-3:1e-2).
 struct Interval {

@@ -31,6 +31,14 @@ ChainLength automatic_chain_length(const TransportCase& c) {
   return length;
 }
 
+ChainLength size_for_long_times(TransportCase& c) {
+  const ChainLength length = automatic_chain_length(c);
+  c.chain.N = length.n;
+  c.site = (c.chain.N - 1) / 2;
+  c.chain.centred = true;
+  return length;
+}
+
 std::string duration_warning(const TransportCase& c, const std::string& option) {
   const std::size_t n = c.chain.size();
   if (c.site >= n) return "";  // validate() names it

@@ -32,6 +32,11 @@ struct ChainLength {
 /// The automatic N of case `c` (its chain kind, F0, kick, force law and T; not its N or τ).
 ChainLength automatic_chain_length(const TransportCase& c);
 
+/// Sizes `c` for long times: N = automatic_chain_length(c).n, the kick at the centre bead
+/// ((N − 1)/2, 0-based), the chain drawn outward from it (centred_configuration.hpp), so that a
+/// longer N only adds beads the wave never reaches. Returns the rule that gave N.
+ChainLength size_for_long_times(TransportCase& c);
+
 /// A warning when waves from the kick could travel ten times the distance from the kicked bead
 /// to the nearer wall of the case's chain by T (v T > 10 × that distance, v as above): a duration
 /// typed in milliseconds as seconds, most likely. `option` names T as the user typed it ("--T",

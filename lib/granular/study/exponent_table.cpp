@@ -48,11 +48,7 @@ std::vector<TransportCase> exponent_cases(const ExponentTableConfig& config) {
     const bool profile = std::find(config.profile_precompressions.begin(), config.profile_precompressions.end(),
                                    c.chain.F0) != config.profile_precompressions.end();
     c.profile_realizations = profile ? std::min(config.profile_realizations, c.realizations) : 0;
-    if (config.automatic_length) {  // (a bead chain is then refused by validate: it has no centred draw)
-      c.chain.N = automatic_chain_length(c).n;
-      c.site = (c.chain.N - 1) / 2;
-      c.chain.centred = true;
-    }
+    if (config.automatic_length) size_for_long_times(c);  // (a bead chain is then refused by validate: no centred draw)
     cases.push_back(c);
   };
   for (Kick kick : config.kicks)
@@ -83,6 +79,7 @@ std::vector<ExponentCell> run_exponent_table(const ExponentTableConfig& config, 
   for (const auto& c : cases) total += c.realizations;
   ProgressMeter own(total, "exponents", options.meter ? 0 : options.progress);
   std::vector<ExponentCell> cells;
+  const std::vector<std::string> logs = case_checkpoints(options.checkpoint_prefix, cases.size());
   for (std::size_t i = 0; i < cases.size(); ++i) {
     StudyRunOptions run;
     run.threads = options.threads;
@@ -91,7 +88,7 @@ std::vector<ExponentCell> run_exponent_table(const ExponentTableConfig& config, 
     run.skip_failed = options.skip_failed;
     run.accept_other_version = options.accept_other_version;
     if (!options.checkpoint_prefix.empty()) {
-      run.checkpoint = options.checkpoint_prefix + "." + std::to_string(i);
+      run.checkpoint = logs[i];
       // A case not started before the interruption has no log yet: it simply starts.
       run.resume = options.resume && CheckpointLog::exists(run.checkpoint);
     }
@@ -127,6 +124,12 @@ MleAtEnd mle_at_end(const TransportSummary& s) {
 
 nlohmann::json to_json(const MleAtEnd& m) {
   return {{"X1_at_T_per_s", m.mean}, {"standard_error_per_s", m.standard_error}, {"spread_per_s", m.spread}};
+}
+
+std::vector<std::string> case_checkpoints(const std::string& prefix, std::size_t cases) {
+  std::vector<std::string> logs;
+  for (std::size_t i = 0; i < cases; ++i) logs.push_back(prefix + "." + std::to_string(i));
+  return logs;
 }
 
 namespace {

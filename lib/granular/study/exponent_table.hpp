@@ -59,6 +59,9 @@ struct ExponentRunOptions {
   bool skip_failed = false;           ///< see RunOptions::skip_failed
 };
 
+/// The checkpoint logs of a study's first `cases` cases: case i logs to `prefix`.<i>.
+std::vector<std::string> case_checkpoints(const std::string& prefix, std::size_t cases);
+
 /// The cases in table order (kick-major, then F0, then chain as chain_names gives them); with
 /// automatic_length each sized (N, the centre kick, the centred draw) by automatic_chain_length.
 std::vector<TransportCase> exponent_cases(const ExponentTableConfig& config);

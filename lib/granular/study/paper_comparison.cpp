@@ -8,6 +8,7 @@
 
 #include "granular/error.hpp"
 #include "granular/io/csv_writer.hpp"
+#include "granular/io/range_syntax.hpp"
 #include "granular/number_format.hpp"
 
 namespace granular {
@@ -15,15 +16,8 @@ namespace {
 
 double to_number(const std::string& text, const std::string& where) {
   if (text.empty()) return 0;
-  std::size_t used = 0;
-  double v = 0;
-  try {
-    v = std::stod(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used != text.size() || !std::isfinite(v)) throw InvalidInput(where + ": '" + text + "' is not a number");
-  return v;
+  if (const auto v = parse_finite_number(text)) return *v;
+  throw InvalidInput(where + ": '" + text + "' is not a number");
 }
 
 double z_score(double delta, double variance) {

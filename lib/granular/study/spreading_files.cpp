@@ -100,4 +100,61 @@ nlohmann::json describe_run(const SpreadingResult& r, const nlohmann::json& real
   return run;
 }
 
+std::vector<std::string> SpreadingPaths::all() const {
+  return {csv, json, final_state, energy_map, spectrum, profile, forces, sem, checkpoint, deviation};
+}
+
+SpreadingPaths spreading_paths(const std::string& prefix, bool ensemble, bool profile, bool forces) {
+  SpreadingPaths p;
+  p.csv = prefix + ".csv", p.json = prefix + ".json";
+  if (ensemble) p.sem = prefix + "-sem.csv", p.checkpoint = prefix + ".checkpoint";
+  if (profile) p.profile = prefix + "-profile.csv";
+  if (forces) p.forces = prefix + "-forces.csv";
+  return p;
+}
+
+std::vector<std::unique_ptr<AtomicFile>> write_spreading_files(const SpreadingPaths& paths, const SpreadingResult& run,
+                                                               const TransportSummary* ensemble,
+                                                               const SpreadingConfig& config) {
+  std::vector<std::unique_ptr<AtomicFile>> files;
+  const auto open = [&](const std::string& path) -> std::ostream& {
+    return files.emplace_back(std::make_unique<AtomicFile>(path))->stream();
+  };
+  ensemble ? write_spreading_csv(open(paths.csv), *ensemble) : write_spreading_csv(open(paths.csv), run);
+  if (ensemble) write_standard_errors_csv(open(paths.sem), *ensemble);
+  if (!paths.profile.empty())
+    ensemble ? write_profile_csv(open(paths.profile), *ensemble) : write_profile_csv(open(paths.profile), run);
+  if (!paths.forces.empty()) write_forces_csv(open(paths.forces), run, config.force_sites);
+  if (!paths.final_state.empty()) write_final_state_csv(open(paths.final_state), run);
+  if (!paths.spectrum.empty()) write_spectrum_csv(open(paths.spectrum), run);
+  if (!paths.energy_map.empty()) write_energy_map(paths.energy_map, run, config.map_stride);
+  if (!paths.deviation.empty()) write_deviation_csv(open(paths.deviation), run);
+  return files;
+}
+
+std::vector<std::string> spreading_notes(const TransportCase& c, const SpreadingResult& run,
+                                         const TransportSummary* ensemble) {
+  std::vector<std::string> all = ensemble ? warnings(*ensemble, c.dynamics) : std::vector<std::string>{};
+  for (const auto& w : warnings(run, c.dynamics)) all.push_back(w);
+  for (const auto& note : notes(c)) all.push_back(note);
+  return all;
+}
+
+nlohmann::json describe_parameters(const TransportCase& c, const nlohmann::json& chain, const KickedChain& kicked,
+                                   bool ensemble) {
+  nlohmann::json parameters = describe(c);
+  parameters["chain"] = chain;
+  if (c.kick == Kick::velocity && (!ensemble || !c.match_beta)) parameters["beta_m_s"] = kicked.beta;  // the β used
+  if (c.kick == Kick::mode) parameters["mode_used"] = to_json(kicked.mode);
+  return parameters;
+}
+
+nlohmann::json describe_exponents(const std::optional<TransportExponents>& exponents, SpreadCentre shown) {
+  nlohmann::json entries;
+  for (const char* key : {"gamma", "gamma_err", "gamma_real_err", "eta", "eta_err", "eta_real_err", "power_law"})
+    entries[key] = nullptr;
+  if (exponents) entries.update(to_json(*exponents, shown));
+  return entries;
+}
+
 }  // namespace granular

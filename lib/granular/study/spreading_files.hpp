@@ -2,6 +2,8 @@
 // The files of a spreading run or ensemble (the `spreading` tool's contract, DESIGN.md): one
 // writer per file, so that any program writes them exactly as the tool does.
 #include <cstddef>
+#include <memory>
+#include <optional>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -9,6 +11,7 @@
 #include <nlohmann/json_fwd.hpp>
 
 #include "granular/dynamics/spreading.hpp"
+#include "granular/io/atomic_file.hpp"
 #include "granular/study/transport_study.hpp"
 
 namespace granular {
@@ -39,5 +42,41 @@ void write_energy_map(const std::string& path, const SpreadingResult& run, std::
 /// bond updates, integration time, final active window (beads from 1), wall energy; the energy
 /// dissipated by T [J] with damping and X1(T) [1/s] with the tangent map.
 nlohmann::json describe_run(const SpreadingResult& run, const nlohmann::json& realization);
+
+/// Where the files of one spreading run or ensemble go ("" where one is not written).
+struct SpreadingPaths {
+  std::string csv, json, sem, profile, forces, checkpoint;   ///< under the prefix (spreading_paths)
+  std::string final_state, energy_map, spectrum, deviation;  ///< named by the user, one realization each
+  /// Every path, to be checked before the run (io/output_paths.hpp, check_outputs).
+  std::vector<std::string> all() const;
+};
+
+/// The files under `prefix`: PREFIX.csv and PREFIX.json; with `ensemble` PREFIX-sem.csv (standard
+/// errors) and PREFIX.checkpoint; with `profile` PREFIX-profile.csv; with `forces` PREFIX-forces.csv.
+SpreadingPaths spreading_paths(const std::string& prefix, bool ensemble, bool profile, bool forces);
+
+/// Writes every file of `paths` but the JSON and the checkpoint: the means of `ensemble` where
+/// there is one (the curves, their standard errors, the profile), else those of `run`, and what
+/// only one realization has (forces at config.force_sites, final state, g(ν), energy map with
+/// config.map_stride, deviation vector) from `run`. The CSVs are returned under their temporary
+/// names, to be committed after the JSON (never a CSV without its metadata); the HDF5 map is
+/// written whole at once.
+std::vector<std::unique_ptr<AtomicFile>> write_spreading_files(const SpreadingPaths& paths, const SpreadingResult& run,
+                                                               const TransportSummary* ensemble,
+                                                               const SpreadingConfig& config);
+
+/// What a user must read after the run: the ensemble's warnings, the run's (none from a run not
+/// made), the notes on the case.
+std::vector<std::string> spreading_notes(const TransportCase& c, const SpreadingResult& run,
+                                         const TransportSummary* ensemble);
+
+/// The "parameters" entry of the JSON: describe(c), the chain as built (`chain`), and what the kick
+/// used: beta_m_s [m/s] for a velocity kick (unless an ensemble matched it chain by chain), mode_used.
+nlohmann::json describe_parameters(const TransportCase& c, const nlohmann::json& chain, const KickedChain& kicked,
+                                   bool ensemble);
+
+/// The exponents' entries of the JSON (gamma, gamma_err, gamma_real_err, eta, eta_err,
+/// eta_real_err, power_law, exponents): to_json(exponents, shown), each null when none were fitted.
+nlohmann::json describe_exponents(const std::optional<TransportExponents>& exponents, SpreadCentre shown);
 
 }  // namespace granular

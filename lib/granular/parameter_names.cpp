@@ -1,0 +1,26 @@
+#include "granular/parameter_names.hpp"
+
+#include <cctype>
+
+namespace granular {
+
+std::string rename_parameters(const std::string& message, const std::function<std::string(const std::string&)>& name_of) {
+  std::string out, word;
+  const auto flush = [&] {
+    const std::string name = word.find('_') != std::string::npos ? name_of(word) : "";
+    out += name.empty() ? word : name;
+    word.clear();
+  };
+  for (char c : message) {
+    if (std::islower(static_cast<unsigned char>(c)) || std::isdigit(static_cast<unsigned char>(c)) || c == '_') {
+      word += c;
+      continue;
+    }
+    flush();
+    out += c;
+  }
+  flush();
+  return out;
+}
+
+}  // namespace granular

@@ -1,0 +1,39 @@
+#pragma once
+// The files of the paper's exponent study (the `exponents` tool's contract, DESIGN.md), one
+// writer for them all, so that any program writes them exactly as the tool does: PREFIX.csv (γ
+// and η per case), PREFIX-curves.csv (the mean curves), PREFIX-profiles.csv (E_n(T)), with the
+// paper's Table I PREFIX-paper.csv (ours beside it), and PREFIX.json.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json_fwd.hpp>
+
+#include "granular/io/atomic_file.hpp"
+#include "granular/study/exponent_table.hpp"
+#include "granular/study/paper_comparison.hpp"
+
+namespace granular {
+
+struct ExponentPaths {
+  std::string csv, curves, profiles, json;
+  std::string paper;  ///< "" without the comparison
+  /// Every path, to be checked before the run (io/output_paths.hpp, check_outputs).
+  std::vector<std::string> all() const;
+};
+
+/// The files under `prefix`, with PREFIX-paper.csv when `paper`.
+ExponentPaths exponent_paths(const std::string& prefix, bool paper);
+
+/// Writes the CSVs of `paths` (the comparison from `comparison` when paths.paper is set) under
+/// their temporary names, returned to be committed after the JSON.
+std::vector<std::unique_ptr<AtomicFile>> write_exponent_files(const ExponentPaths& paths,
+                                                              const std::vector<ExponentCell>& cells,
+                                                              const std::vector<CellComparison>& comparison);
+
+/// The "cases" entry of the study's JSON, one object per cell: describe(definition), `chain`
+/// (its name), `failed_excluded` (the realizations left out), and where the cell has them
+/// `exponents` (gamma_site, gamma_centroid, eta: to_json of each report) and `mle` (X1 at T).
+nlohmann::json describe_cells(const std::vector<ExponentCell>& cells);
+
+}  // namespace granular
