@@ -69,7 +69,6 @@ if _core is not None:
         diatomic,
         displacement_kick,
         dynamical_matrix,
-        exponent_table,
         flat_wall,
         fpu_coefficients,
         frequency_khz,
@@ -90,12 +89,11 @@ if _core is not None:
         read_types,
         spectrum,
         spread,
-        spreading,
         static_overlap,
         steel,
-        transport,
         velocity_kick,
     )
+    from ._dynamics import exponent_table, spreading, transport  # noqa: F401
     from ._results import ExponentTable, SpreadingRun, Transport  # noqa: F401
 
     __version__ = _core.__version__

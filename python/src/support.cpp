@@ -65,6 +65,13 @@ double finite(double value, const char* keyword) {
 }
 
 void bind_errors(py::module_& m) {
+  // The checks the keyword functions in granular/*.py share with the bindings (same messages).
+  m.def("_size", &checked_size, py::arg("value"), py::arg("keyword"), py::arg("lo") = 0,
+        py::arg("hi") = 100000000000000000LL);
+  m.def("_finite", &finite);
+  m.def("_vector", [](const py::handle& x, const char* keyword) { return double_vector(x, keyword); });
+  m.def("_numbers", &number_list);
+  m.def("_format_number", [](double x) { return format_number(x); });
   static py::exception<NumericalError> numerical(m, "NumericalError", PyExc_RuntimeError);
   numerical.doc() =
       "A numerical method failed: a solver did not converge, a guard tripped (energy error, NaN), or "
