@@ -42,15 +42,12 @@ if _core is not None:
     from ._core import (  # noqa: F401
         BandEdges,
         Chain,
-        Correlations,
         DynamicalMatrix,
         EnergyMap,
         EnergySpread,
         FinalState,
         Forces,
         FpuCoefficients,
-        IprMap,
-        Localization,
         Material,
         NumericalError,
         Observer,
@@ -64,7 +61,6 @@ if _core is not None:
         band_edges,
         configuration,
         correlation_theory,
-        correlations,
         cyclic_correlation,
         diatomic,
         displacement_kick,
@@ -76,9 +72,7 @@ if _core is not None:
         from_types,
         hertz_coefficient,
         homogeneous,
-        ipr_map,
         linear_stiffness,
-        localization,
         nonlinearity_ratio,
         omega2_of_khz,
         paper_r1,
@@ -94,6 +88,7 @@ if _core is not None:
         velocity_kick,
     )
     from ._dynamics import exponent_table, spreading, transport  # noqa: F401
+    from ._studies import Correlations, IprMap, Localization, correlations, ipr_map, localization  # noqa: F401
     from ._results import ExponentTable, SpreadingRun, Transport  # noqa: F401
 
     __version__ = _core.__version__

@@ -109,5 +109,12 @@ struct LongRun {
 /// `work` must not touch Python objects. Library exceptions propagate.
 void run_long(const std::string& label, std::size_t total, bool progress,
               const std::function<void(const LongRun&)>& work);
+/// How a long call runs, as the keyword functions in granular/*.py fill it (granular._core.RunOptions).
+struct PyRun {
+  long long threads = 0;
+  std::string checkpoint;  ///< "" = none
+  bool resume = false, resume_other_version = false, progress = false;
+  int thread_request() const { return static_cast<int>(checked_size(threads, "threads", 0, 4096)); }
+};
 
 }  // namespace granular::python

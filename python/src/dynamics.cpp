@@ -24,14 +24,6 @@ namespace granular::python {
 namespace {
 using namespace py::literals;
 
-/// How a long call runs (granular._dynamics fills it from threads, checkpoint, resume, progress).
-struct PyRun {
-  long long threads = 0;
-  std::string checkpoint;  ///< "" = none
-  bool resume = false, resume_other_version = false, progress = false;
-  int thread_request() const { return static_cast<int>(checked_size(threads, "threads", 0, 4096)); }
-};
-
 /// `choices` and `beyond` applied to `c` as the tools do; integrator 'auto' stands for SABA2C until
 /// the step is settled. Returns whether it was 'auto'.
 bool apply_choices(TransportChoices choices, const BeyondChoices& beyond, TransportCase& c) {
