@@ -39,31 +39,19 @@ finally:
     _sys.setdlopenflags(_dlopen_flags)
 
 if _core is not None:
-    from ._core import (  # noqa: F401
+    from ._core import NumericalError  # noqa: F401
+    from ._dynamics import exponent_table, spreading, transport  # noqa: F401
+    from ._linear import (  # noqa: F401
         BandEdges,
         DynamicalMatrix,
-        EnergyMap,
-        EnergySpread,
-        FinalState,
-        Forces,
-        NumericalError,
-        Observer,
-        RunPlan,
-        Snapshot,
         Spectrum,
-        SpectralDensity,
         SpectrumSolver,
-        State,
         band_edges,
-        displacement_kick,
         dynamical_matrix,
         frequency_khz,
         omega2_of_khz,
         spectrum,
-        spread,
-        velocity_kick,
     )
-    from ._dynamics import exponent_table, spreading, transport  # noqa: F401
     from ._model import (  # noqa: F401
         Chain,
         FpuCoefficients,
@@ -89,6 +77,20 @@ if _core is not None:
         read_types,
         static_overlap,
         steel,
+    )
+    from ._observers import (  # noqa: F401
+        EnergyMap,
+        EnergySpread,
+        FinalState,
+        Forces,
+        Observer,
+        RunPlan,
+        Snapshot,
+        SpectralDensity,
+        State,
+        displacement_kick,
+        spread,
+        velocity_kick,
     )
     from ._studies import Correlations, IprMap, Localization, correlations, ipr_map, localization  # noqa: F401
     from ._results import ExponentTable, SpreadingRun, Transport  # noqa: F401
