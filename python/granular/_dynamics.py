@@ -120,7 +120,7 @@ def spreading(chain, *, ic="displacement", alpha=1e-7, beta=_core.paper_beta, si
     observe.spectrum_samples = _core._size(spectrum_samples, "spectrum_samples", 2, _MAX) if spectral_density else 0
     if spectrum_of not in ("displacement", "velocity"):
         raise ValueError(f"spectrum_of '{spectrum_of}': displacement or velocity")
-    observe.spectrum_of = spectrum_of
+    observe.spectrum_source = getattr(_core.SpectrumSource, spectrum_of)
     kick = _core.ModeKick()
     kick.mode, kick.near_khz, kick.energy = mode, mode_khz, energy
     return SpreadingRun(_core._spreading(chain, ic, choices, beyond, observe, kick, dt is not None,
@@ -202,8 +202,8 @@ def exponent_table(*, chains=["h", "A", "RDM1", "RDM2"], F0=[10.0, 0.5, 0.1, 0.0
     recipe.N = _core._size(N, "N", 2, _MAX)
     recipe.xi, recipe.q = xi, q
     recipe.seed = _core._size(seed, "seed")
-    table.chain = recipe
-    table.realizations = _core._size(realizations, "realizations", 1)
+    table.base.chain = recipe
+    table.base.realizations = _core._size(realizations, "realizations", 1)
     choices = _choices(alpha, beta, site, centre, T, dt, integrator, force_law, samples, sampling, fit, fit_step,
                        t_star, kappa, bootstrap, active_window, window_threshold, reference_max_step,
                        max_energy_error, energy_guard)

@@ -1,7 +1,9 @@
 """granular.spectrum, SpectrumSolver, DynamicalMatrix and band_edges: keywords, defaults and docstrings. The
 matrices and solvers are granular._core's (the library's), frequencies in kHz as the tools give them."""
 from . import _core
-from ._core import DynamicalMatrix, Spectrum, SpectrumSolver
+import numpy as np
+
+from ._core import DynamicalMatrix
 from ._model import _document, paper_r1, steel
 
 _SELECTION_DOC = """\
@@ -26,24 +28,50 @@ _document(DynamicalMatrix, "The symmetric tridiagonal dynamical matrix D = M^(-1
           N="rows", diagonal="D(i, i) = (B_i + B_(i+1)) / m_i [1/s^2], N entries",
           off_diagonal="D(i, i+1) = -B_(i+1) / sqrt(m_i m_(i+1)) [1/s^2], N-1 entries",
           inverse_sqrt_mass="m_n^(-1/2) [kg^(-1/2)], N entries")
-_document(Spectrum, "Modes of a chain by increasing frequency, as granular.spectrum returns them. Arrays are "
-          "read-only NumPy views of the result (no copies).",
-          mode="mode numbers 1..N in the full spectrum (int64)", omega2="eigenvalues omega^2 of D [1/s^2]",
-          freq_khz="frequencies f = omega/2pi [kHz]",
-          ipr="displacement IPR sum v^4 / (sum v^2)^2 of each mode, in (0, 1] (1/N: extended, ~1: one bead)",
-          residual="per mode |D w - omega^2 w| / max|D_ij| (partial methods; empty for every mode)",
-          clustered="per mode: True inside a near-degenerate cluster (relative gap < 1e-10 of max omega^2), whose "
-          "IPR depends on the basis chosen inside it (a copy, bool)",
-          vectors="N x K unit eigenvectors w of D (column j: mode j; Fortran order, a view), or None without "
-          "vectors=True", N="beads of the chain",
-          info="what the solver did: method that ran, fallbacks, restarts, candidates, max_residual, clusters",
-          metadata="the spectrum tool's JSON for this result: clustered, chain, method, solver, selection, "
-          "band_edges_khz, version (granular::describe_spectrum, as the tool writes it)")
-_document(SpectrumSolver, "A spectrum solver that keeps its workspaces between calls: for loops over many chains of "
-          "one size (what the IPR map does per thread). solve() gives exactly what granular.spectrum gives.\n\n"
-          "SpectrumSolver(*, method='lapack', driver='stevd', vectors=False, tolerance=0.0, subspace=0, lanes=8): "
-          "keywords as granular.spectrum's:\n" + _CONFIG_DOC)
 
+
+class Spectrum:
+    """Modes of a chain by increasing frequency, as granular.spectrum returns them. Arrays are read-only NumPy views
+    of the result (no copies).
+
+    mode: mode numbers 1..N in the full spectrum (int64); omega2: eigenvalues omega^2 of D [1/s^2]; freq_khz:
+    frequencies f = omega/2pi [kHz]; ipr: displacement IPR sum v^4 / (sum v^2)^2 of each mode, in (0, 1] (1/N:
+    extended, ~1: one bead); residual: per mode |D w - omega^2 w| / max|D_ij| (partial methods; empty for every
+    mode); clustered: per mode, True inside a near-degenerate cluster (relative gap < 1e-10 of max omega^2), whose
+    IPR depends on the basis chosen inside it (bool); vectors: N x K unit eigenvectors w of D (column j: mode j;
+    Fortran order, a view), or None without vectors=True; N: beads of the chain; info: what the solver did (method
+    that ran, fallbacks, restarts, candidates, max_residual, clusters); metadata: the spectrum tool's JSON for this
+    result (clustered, chain, method, solver, selection, band_edges_khz, version; granular::describe_spectrum, as the
+    tool writes it)."""
+
+    def __init__(self, values):
+        self._inverse_sqrt_mass = values.pop("inverse_sqrt_mass")
+        self.__dict__.update(values)
+        self.clustered = self.clustered.astype(bool)
+
+    def displacements(self):
+        """N x K displacement modes v = w * m^(-1/2) [kg^(-1/2)] (column j: mode j), or None without vectors"""
+        if self.vectors is None:
+            return None
+        return np.ascontiguousarray(self.vectors * self._inverse_sqrt_mass[:, None])
+
+    def __len__(self):
+        return len(self.freq_khz)
+
+    def __repr__(self):
+        return f"<granular.Spectrum {len(self)} of {self.N} modes, {self.info['method']}>"
+
+
+class SpectrumSolver(_core._SpectrumSolver):
+    __doc__ = ("A spectrum solver that keeps its workspaces between calls: for loops over many chains of one size "
+               "(what the IPR map does per thread). solve() gives exactly what granular.spectrum gives.\n\n"
+               "SpectrumSolver(*, method='lapack', driver='stevd', vectors=False, tolerance=0.0, subspace=0, "
+               "lanes=8): keywords as granular.spectrum's:\n" + _CONFIG_DOC)
+
+    def solve(self, system, *, near=None, count=None, window=None):
+        """The selected modes of a granular.Chain or granular.DynamicalMatrix (near, count / window as
+        granular.spectrum's). Returns a granular.Spectrum."""
+        return Spectrum(self._solve(system, near, count, window))
 
 def dynamical_matrix(chain):
     """The dynamical matrix of a chain (ValueError naming F0 at F0 = 0: the sonic vacuum has no linear limit)."""
@@ -62,7 +90,7 @@ def omega2_of_khz(khz):
 
 def spectrum(system, *, near=None, count=None, window=None, method="lapack", driver="stevd", vectors=False,
              tolerance=0.0, subspace=0, lanes=8):
-    return _core._spectrum(system, near, count, window, method, driver, vectors, tolerance, subspace, lanes)
+    return Spectrum(_core._spectrum(system, near, count, window, method, driver, vectors, tolerance, subspace, lanes))
 
 
 spectrum.__doc__ = (

@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <initializer_list>
 #include <string>
 #include <utility>
 #include <vector>
@@ -22,6 +23,18 @@
 namespace granular::python {
 
 namespace py = pybind11;
+
+/// A library config struct as Python fills it: default-constructed (its C++ defaults), with a
+/// read-write attribute per (name, member), in order.
+template <class C, class... M>
+py::class_<C> config_class(py::module_& m, const char* name, std::initializer_list<const char*> names,
+                           M C::*... members) {
+  py::class_<C> c(m, name);
+  c.def(py::init<>());
+  auto field = names.begin();
+  (c.def_readwrite(*field++, members), ...);
+  return c;
+}
 
 // --- the binding sources, one per library area -------------------------------------------
 void bind_errors(py::module_& m);

@@ -348,82 +348,57 @@ py::dict exponent_table(const std::vector<std::string>& chains, const std::vecto
 }  // namespace
 
 void bind_dynamics(py::module_& m) {
-  py::class_<TransportChoices>(m, "TransportChoices", "A kicked-chain run's choices (study/transport_choices.hpp).")
-      .def(py::init<>())
-      .def_readwrite("alpha", &TransportChoices::alpha)
-      .def_readwrite("beta", &TransportChoices::beta)
-      .def_readwrite("site", &TransportChoices::site)
-      .def_readwrite("centre", &TransportChoices::centre)
-      .def_readwrite("duration", &TransportChoices::duration)
-      .def_readwrite("time_step", &TransportChoices::time_step)
-      .def_readwrite("integrator", &TransportChoices::integrator)
-      .def_readwrite("force_law", &TransportChoices::force_law)
-      .def_readwrite("samples", &TransportChoices::samples)
-      .def_readwrite("sampling", &TransportChoices::sampling)
-      .def_readwrite("fit_begin", &TransportChoices::fit_begin)
-      .def_readwrite("fit_end", &TransportChoices::fit_end)
-      .def_readwrite("fit_step", &TransportChoices::fit_step)
-      .def_readwrite("t_star", &TransportChoices::t_star)
-      .def_readwrite("kappa", &TransportChoices::kappa)
-      .def_readwrite("bootstrap", &TransportChoices::bootstrap)
-      .def_readwrite("active_window", &TransportChoices::active_window)
-      .def_readwrite("window_threshold", &TransportChoices::window_threshold)
-      .def_readwrite("reference_max_step", &TransportChoices::reference_max_step)
-      .def_readwrite("max_energy_error", &TransportChoices::max_energy_error)
-      .def_readwrite("energy_guard", &TransportChoices::energy_guard);
+  using T = TransportChoices;
+  config_class(m, "TransportChoices",
+               {"alpha",
+                "beta",
+                "site",
+                "centre",
+                "duration",
+                "time_step",
+                "integrator",
+                "force_law",
+                "samples",
+                "sampling",
+                "fit_begin",
+                "fit_end",
+                "fit_step",
+                "t_star",
+                "kappa",
+                "bootstrap",
+                "active_window",
+                "window_threshold",
+                "reference_max_step",
+                "max_energy_error",
+                "energy_guard"},
+               &T::alpha, &T::beta, &T::site, &T::centre, &T::duration, &T::time_step, &T::integrator, &T::force_law,
+               &T::samples, &T::sampling, &T::fit_begin, &T::fit_end, &T::fit_step, &T::t_star, &T::kappa, &T::bootstrap,
+               &T::active_window, &T::window_threshold, &T::reference_max_step, &T::max_energy_error, &T::energy_guard);
   m.attr("paper_beta") = paper_beta;
-  py::class_<BeyondChoices>(m, "BeyondChoices", "Damping and the tangent map (study/transport_choices.hpp).")
-      .def(py::init<>())
-      .def_readwrite("damping_time", &BeyondChoices::damping_time)
-      .def_readwrite("kk_gamma", &BeyondChoices::kk_gamma)
-      .def_readwrite("mle", &BeyondChoices::mle)
-      .def_readwrite("renormalize", &BeyondChoices::renormalize)
-      .def_readwrite("deviation_samples", &BeyondChoices::deviation_samples);
-  py::class_<ModeKick>(m, "ModeKick", "Which linear mode a mode kick excites, and its energy (study/mode_kick.hpp).")
-      .def(py::init<>())
-      .def_readwrite("mode", &ModeKick::mode)
-      .def_readwrite("near_khz", &ModeKick::near_khz)
-      .def_readwrite("energy", &ModeKick::energy);
-  py::class_<SpreadingConfig>(m, "SpreadingObservers", "The optional observers of a SpreadingConfig.")
-      .def(py::init<>())
-      .def_readwrite("force_sites", &SpreadingConfig::force_sites)
-      .def_readwrite("force_samples", &SpreadingConfig::force_samples)
-      .def_readwrite("map_samples", &SpreadingConfig::map_samples)
-      .def_readwrite("map_stride", &SpreadingConfig::map_stride)
-      .def_readwrite("spectrum_samples", &SpreadingConfig::spectrum_samples)
+  using B = BeyondChoices;
+  config_class(m, "BeyondChoices", {"damping_time", "kk_gamma", "mle", "renormalize", "deviation_samples"},
+               &B::damping_time, &B::kk_gamma, &B::mle, &B::renormalize, &B::deviation_samples);
+  config_class(m, "ModeKick", {"mode", "near_khz", "energy"}, &ModeKick::mode, &ModeKick::near_khz, &ModeKick::energy);
+  using S = SpreadingConfig;  // only its observers' settings
+  config_class(m, "SpreadingObservers",
+               {"force_sites", "force_samples", "map_samples", "map_stride", "spectrum_samples", "spectrum_source"},
+               &S::force_sites, &S::force_samples, &S::map_samples, &S::map_stride, &S::spectrum_samples,
+               &S::spectrum_source);
+  py::enum_<SpectrumSource>(m, "SpectrumSource")
+      .value("displacement", SpectrumSource::displacement)
+      .value("velocity", SpectrumSource::velocity);
+  using R = ChainRecipe;
+  config_class(m, "ChainRecipe", {"q", "xi", "R1", "N", "F0", "seed"}, &R::q, &R::xi, &R::R1, &R::N, &R::F0, &R::seed)
       .def_property(
-          "spectrum_of", [](const SpreadingConfig& d) { return to_string(d.spectrum_source); },
-          [](SpreadingConfig& d, const std::string& of) { d.spectrum_source = parse_spectrum_source(of); });
-  py::class_<ChainRecipe>(m, "ChainRecipe", "Which chain realization r is (model/chain_recipe.hpp).")
-      .def(py::init<>())
-      .def_property(
-          "disorder", [](const ChainRecipe& r) { return to_string(r.disorder); },
-          [](ChainRecipe& r, const std::string& name) { r.disorder = disorder_of(name); })
-      .def_readwrite("q", &ChainRecipe::q)
-      .def_readwrite("xi", &ChainRecipe::xi)
-      .def_readwrite("R1", &ChainRecipe::R1)
-      .def_readwrite("N", &ChainRecipe::N)
-      .def_readwrite("F0", &ChainRecipe::F0)
-      .def_readwrite("seed", &ChainRecipe::seed);
-  py::class_<ExponentTableConfig>(m, "ExponentTableConfig", "The exponent table's grid (study/exponent_table.hpp).")
-      .def(py::init<>())
-      .def_readwrite("precompressions", &ExponentTableConfig::precompressions)
-      .def_readwrite("profile_precompressions", &ExponentTableConfig::profile_precompressions)
-      .def_readwrite("profile_realizations", &ExponentTableConfig::profile_realizations)
-      .def_property(
-          "chain", [](const ExponentTableConfig& c) { return c.base.chain; },
-          [](ExponentTableConfig& c, const ChainRecipe& r) { c.base.chain = r; })
-      .def_property(
-          "realizations", [](const ExponentTableConfig& c) { return c.base.realizations; },
-          [](ExponentTableConfig& c, std::size_t r) { c.base.realizations = r; });
-  py::class_<PyRun>(m, "RunOptions", "How a long call runs: threads, checkpoint, resume, progress.")
-      .def(py::init<>())
-      .def_readwrite("threads", &PyRun::threads)
-      .def_readwrite("checkpoint", &PyRun::checkpoint)
-      .def_readwrite("resume", &PyRun::resume)
-      .def_readwrite("resume_other_version", &PyRun::resume_other_version)
-      .def_readwrite("progress", &PyRun::progress);
-
+          "disorder", [](const R& r) { return to_string(r.disorder); },
+          [](R& r, const std::string& name) { r.disorder = disorder_of(name); });
+  using E = ExponentTableConfig;
+  config_class(m, "ExponentTableConfig", {"precompressions", "profile_precompressions", "profile_realizations", "base"},
+               &E::precompressions, &E::profile_precompressions, &E::profile_realizations, &E::base);
+  using C = TransportCase;  // what the exponent table's cases share beyond the choices
+  config_class(m, "TransportCase", {"chain", "realizations"}, &C::chain, &C::realizations);
+  config_class(m, "RunOptions", {"threads", "checkpoint", "resume", "resume_other_version", "progress"},
+               &PyRun::threads, &PyRun::checkpoint, &PyRun::resume, &PyRun::resume_other_version, &PyRun::progress);
   m.def("_spreading", &spreading);
   m.def("_transport", &transport);
   m.def("_exponent_table", &exponent_table);

@@ -23,13 +23,10 @@
 namespace granular::python {
 namespace {
 
-/// A spectrum as Python sees it: the library's result (its vectors are viewed, not copied), the
-/// masses needed for displacements, and the metadata the spectrum tool writes.
-struct PySpectrum {
+/// A spectrum's arrays, owned by the NumPy views of granular.Spectrum (granular/_linear.py).
+struct Modes {
   Spectrum s;
   std::vector<long long> mode;  ///< mode numbers as signed integers (NumPy arithmetic stays integer)
-  std::vector<double> inverse_sqrt_mass;
-  nlohmann::json metadata;
 };
 
 /// ARPACK keeps state in Fortran SAVE variables and SLEPc talks MPI: one call at a time per process.
@@ -96,13 +93,34 @@ nlohmann::json spectrum_metadata(const Spectrum& r, const System& s, const Solve
   return meta;
 }
 
-py::object wrap(Spectrum&& r, const DynamicalMatrix& d, nlohmann::json metadata) {
-  PySpectrum out;
-  out.mode.assign(r.mode.begin(), r.mode.end());
-  out.s = std::move(r);
-  out.inverse_sqrt_mass = d.inverse_sqrt_mass;
-  out.metadata = std::move(metadata);
-  return py::cast(std::move(out));
+/// The arrays of `r` as read-only views (no copies), the masses for displacements, and the metadata.
+py::dict wrap(Spectrum&& r, const DynamicalMatrix& d, const nlohmann::json& metadata) {
+  auto* owned = new Modes{std::move(r), {}};
+  const Spectrum& s = owned->s;
+  owned->mode.assign(s.mode.begin(), s.mode.end());
+  py::capsule owner(owned, [](void* p) { delete static_cast<Modes*>(p); });
+  py::dict out;
+  out["mode"] = py::array_t<long long>({s.mode.size()}, {sizeof(long long)}, owned->mode.data(), owner);
+  out["omega2"] = view(s.omega2, owner), out["freq_khz"] = view(s.freq_khz, owner);
+  out["ipr"] = view(s.ipr, owner), out["residual"] = view(s.residual, owner);
+  out["clustered"] = to_numpy(std::vector<std::uint8_t>(s.clustered.begin(), s.clustered.end()));
+  out["vectors"] = py::none();
+  if (!s.vectors.empty()) {
+    py::array_t<double> a({s.beads, s.size()}, {sizeof(double), s.beads * sizeof(double)}, s.vectors.data(), owner);
+    py::detail::array_proxy(a.ptr())->flags &= ~py::detail::npy_api::NPY_ARRAY_WRITEABLE_;
+    out["vectors"] = a;
+  }
+  out["inverse_sqrt_mass"] = to_numpy(d.inverse_sqrt_mass);
+  out["N"] = s.beads;
+  const SpectrumInfo& i = s.info;
+  out["info"] = to_python({{"method", i.method},
+                           {"fallbacks", i.fallbacks},
+                           {"restarts", i.restarts},
+                           {"candidates", i.candidates},
+                           {"max_residual", i.max_residual},
+                           {"clusters", i.clusters}});
+  out["metadata"] = to_python(metadata);
+  return out;
 }
 
 /// One solve with the GIL released (holding `busy` when given); ARPACK and SLEPc one at a time.
@@ -171,67 +189,6 @@ void bind_linear(py::module_& m) {
   m.def("_frequency_khz", [](py::array_t<double> omega2) { return py::vectorize(frequency_khz)(omega2); });
   m.def("_omega2_of_khz", [](py::array_t<double> khz) { return py::vectorize(omega_squared_of_khz)(khz); });
 
-  auto spectrum_view = [](std::vector<double> Spectrum::*field) {
-    return [field](py::object self) { return view(self.cast<const PySpectrum&>().s.*field, self); };
-  };
-  py::class_<PySpectrum>(m, "Spectrum")
-      .def_property_readonly("mode",
-                             [](py::object self) {
-                               const auto& s = self.cast<const PySpectrum&>();
-                               return py::array_t<long long>({s.mode.size()}, {sizeof(long long)}, s.mode.data(), self);
-                             })
-      .def_property_readonly("omega2", spectrum_view(&Spectrum::omega2))
-      .def_property_readonly("freq_khz", spectrum_view(&Spectrum::freq_khz))
-      .def_property_readonly("ipr", spectrum_view(&Spectrum::ipr))
-      .def_property_readonly("residual", spectrum_view(&Spectrum::residual))
-      .def_property_readonly("clustered",
-                             [](py::object self) {
-                               const auto& s = self.cast<const PySpectrum&>().s;
-                               py::array_t<bool> a(s.clustered.size());
-                               for (std::size_t j = 0; j < s.clustered.size(); ++j)
-                                 a.mutable_at(j) = s.clustered[j] != 0;
-                               return a;
-                             })
-      .def_property_readonly(
-          "vectors",
-          [](py::object self) -> py::object {
-            const auto& s = self.cast<const PySpectrum&>().s;
-            if (s.vectors.empty()) return py::none();
-            const std::size_t n = s.beads, k = s.size();
-            py::array_t<double> a({n, k}, {sizeof(double), n * sizeof(double)}, s.vectors.data(), self);
-            py::detail::array_proxy(a.ptr())->flags &= ~py::detail::npy_api::NPY_ARRAY_WRITEABLE_;
-            return a;
-          })
-      .def(
-          "displacements",
-          [](const PySpectrum& p) -> py::object {
-            const auto& s = p.s;
-            if (s.vectors.empty()) return py::none();
-            const std::size_t n = s.beads, k = s.size();
-            std::vector<double> v(n * k);
-            for (std::size_t j = 0; j < k; ++j)
-              for (std::size_t i = 0; i < n; ++i) v[i * k + j] = s.vectors[j * n + i] * p.inverse_sqrt_mass[i];
-            return to_numpy_2d(std::move(v), n, k);
-          },
-          "N x K displacement modes v = w * m^(-1/2) [kg^(-1/2)] (column j: mode j), or None without vectors")
-      .def_property_readonly("N", [](const PySpectrum& p) { return p.s.beads; })
-      .def("__len__", [](const PySpectrum& p) { return p.s.size(); })
-      .def_property_readonly("info",
-                             [](const PySpectrum& p) {
-                               const SpectrumInfo& i = p.s.info;
-                               return to_python({{"method", i.method},
-                                                 {"fallbacks", i.fallbacks},
-                                                 {"restarts", i.restarts},
-                                                 {"candidates", i.candidates},
-                                                 {"max_residual", i.max_residual},
-                                                 {"clusters", i.clusters}});
-                             })
-      .def_property_readonly("metadata", [](const PySpectrum& p) { return to_python(p.metadata); })
-      .def("__repr__", [](const PySpectrum& p) {
-        return "<granular.Spectrum " + std::to_string(p.s.size()) + " of " + std::to_string(p.s.beads) + " modes, " +
-               p.s.info.method + ">";
-      });
-
   m.def("_spectrum", [](const py::object& system, const py::object& near, const py::object& count,
                         const py::object& window, const std::string& method, const std::string& driver, bool vectors,
                         double tolerance, long long subspace, long long lanes) {
@@ -250,11 +207,11 @@ void bind_linear(py::module_& m) {
     }
     SpectrumSolver solver(q.config);
     Spectrum r = solve(solver, s, q.selection);
-    nlohmann::json meta = spectrum_metadata(r, s, q);
-    return wrap(std::move(r), *s.matrix, std::move(meta));
+    const nlohmann::json meta = spectrum_metadata(r, s, q);
+    return wrap(std::move(r), *s.matrix, meta);
   });
 
-  py::class_<PySolver>(m, "SpectrumSolver")
+  py::class_<PySolver>(m, "_SpectrumSolver")
       .def(py::init([](const std::string& method, const std::string& driver, bool vectors, double tolerance,
                        long long subspace, long long lanes) {
              auto p = std::make_unique<PySolver>();
@@ -265,20 +222,17 @@ void bind_linear(py::module_& m) {
            py::kw_only(), py::arg("method") = "lapack", py::arg("driver") = "stevd", py::arg("vectors") = false,
            py::arg("tolerance") = 0.0, py::arg("subspace") = 0, py::arg("lanes") = 8)
       .def(
-          "solve",
+          "_solve",
           [](PySolver& p, const py::object& system, const py::object& near, const py::object& count,
              const py::object& window) {
             const SolverRequest q{selection_of(near, count, window), p.solver.config(), p.method};
             validate(q.config, q.selection);
             System s = system_of(system);
             Spectrum r = solve(p.solver, s, q.selection, &p.busy);
-            nlohmann::json meta = spectrum_metadata(r, s, q);
-            return wrap(std::move(r), *s.matrix, std::move(meta));
+            const nlohmann::json meta = spectrum_metadata(r, s, q);
+            return wrap(std::move(r), *s.matrix, meta);
           },
-          py::arg("system"), py::kw_only(), py::arg("near") = py::none(), py::arg("count") = py::none(),
-          py::arg("window") = py::none(),
-          "The selected modes of a granular.Chain or granular.DynamicalMatrix (near, count / window as "
-          "granular.spectrum's). Returns a granular.Spectrum.");
+          py::arg("system"), py::arg("near"), py::arg("count"), py::arg("window"));
 
   m.def("_band_edges", [](double xi, double F0, double R1, const Material& material) {
     const BandEdges e = band_edges(material, R1, xi, F0);

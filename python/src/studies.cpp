@@ -198,18 +198,12 @@ py::dict correlations(const CorrelationConfig& c, const PyRun& options) {
 }  // namespace
 
 void bind_studies(py::module_& m) {
-  py::class_<IprMapConfig>(m, "IprMapConfig", "The IPR map's grid and chains (study/ipr_map.hpp).")
-      .def(py::init<>())
-      .def_readwrite("chain", &IprMapConfig::chain)
-      .def_readwrite("q_values", &IprMapConfig::q_values)
-      .def_readwrite("xi_values", &IprMapConfig::xi_values)
-      .def_readwrite("realizations", &IprMapConfig::realizations)
-      .def_readwrite("bin_khz", &IprMapConfig::bin_khz);
-  py::class_<CorrelationConfig>(m, "CorrelationConfig", "The correlation ensemble (study/correlation_study.hpp).")
-      .def(py::init<>())
-      .def_readwrite("chain", &CorrelationConfig::chain)
-      .def_readwrite("realizations", &CorrelationConfig::realizations)
-      .def_readwrite("max_distance", &CorrelationConfig::max_distance);
+  using I = IprMapConfig;
+  config_class(m, "IprMapConfig", {"chain", "q_values", "xi_values", "realizations", "bin_khz"}, &I::chain,
+               &I::q_values, &I::xi_values, &I::realizations, &I::bin_khz);
+  using C = CorrelationConfig;
+  config_class(m, "CorrelationConfig", {"chain", "realizations", "max_distance"}, &C::chain, &C::realizations,
+               &C::max_distance);
   m.def("_ipr_map", &ipr_map);
   m.def("_localization", &localization);
   m.def("_correlations", &correlations);
