@@ -96,6 +96,13 @@ py::array_t<T> to_numpy(const std::vector<T>& values) {
 py::array_t<double> to_numpy_2d(std::vector<double>&& values, std::size_t rows, std::size_t cols);
 /// A read-only view of `data` (n entries) kept alive by `owner` (the Python object holding it).
 py::array_t<double> view(const std::vector<double>& data, const py::handle& owner);
+/// A read-only property viewing the vector `get(self)` of a bound object (kept alive by it).
+template <class Self, class Get>
+auto viewer(Get get) {
+  return [get](py::object self) { return view(get(self.cast<const Self&>()), self); };
+}
+/// dict[name] = the NumPy array of each vector, which it takes over.
+void put(py::dict& dict, std::initializer_list<std::pair<const char*, std::vector<double>*>> arrays);
 
 // --- metadata ----------------------------------------------------------------------------------
 py::object to_python(const nlohmann::json& value);

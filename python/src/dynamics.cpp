@@ -124,18 +124,13 @@ py::dict spreading(const PyChain& chain, const std::string& ic, const TransportC
   std::vector<std::string> said = notes(c);
   for (const auto& w : warnings(r, d)) said.push_back(w);
   out["warnings"] = warn(said);
-  out["t"] = to_numpy(std::move(r.t));
-  out["m2"] = to_numpy(std::move(r.m2));
-  out["m2_centroid"] = to_numpy(std::move(r.m2_centroid));
-  out["ipr"] = to_numpy(std::move(r.ipr));
-  out["energy_error"] = to_numpy(std::move(r.energy_error));
+  put(out,
+      {{"t", &r.t}, {"m2", &r.m2}, {"m2_centroid", &r.m2_centroid}, {"ipr", &r.ipr}, {"energy_error", &r.energy_error}});
   out["initial_energy"] = r.initial_energy;
   out["max_energy_error"] = r.max_energy_error;
   py::dict final_state;
-  final_state["u"] = to_numpy(std::move(r.final_state.u));
-  final_state["v"] = to_numpy(std::move(r.final_state.v));
-  final_state["energy"] = to_numpy(std::move(r.final_energy));
-  final_state["force"] = to_numpy(std::move(r.final_force));
+  put(final_state,
+      {{"u", &r.final_state.u}, {"v", &r.final_state.v}, {"energy", &r.final_energy}, {"force", &r.final_force}});
   out["final_state"] = final_state;
   // Beyond the paper: the columns `dissipated` and `mle` of the tool's CSV, and its --deviation file.
   out["dissipated"] = array_or_none(std::move(r.dissipated));

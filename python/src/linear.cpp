@@ -1,11 +1,12 @@
-// The linear chain: granular.DynamicalMatrix, granular.spectrum (every mode / the K nearest a
-// frequency / a window, by every method) and granular.SpectrumSolver, band edges. Frequencies in
-// kHz, as the tools give them.
+// The linear chain under granular.spectrum, SpectrumSolver, DynamicalMatrix and band_edges
+// (keywords, defaults, docstrings and the Spectrum result in granular/_linear.py): the dynamical
+// matrix, one solve per call (every mode / the K nearest a frequency / a window, by every
+// method) with the GIL released, the result's arrays as read-only views. Frequencies in kHz.
 #include <cmath>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <nlohmann/json.hpp>
-#include <optional>
 #include <string>
 
 #include "bindings.hpp"
@@ -16,8 +17,6 @@
 #include "granular/linear/sym_tridiagonal.hpp"
 #include "granular/model/named_chains.hpp"
 #include "granular/model/plausibility.hpp"
-#include "granular/number_format.hpp"
-#include "granular/parallel/mpi_context.hpp"
 #include "granular/study/spectrum_file.hpp"
 
 namespace granular::python {
@@ -174,14 +173,10 @@ void bind_linear(py::module_& m) {
            py::arg("diagonal"), py::arg("off_diagonal"), py::arg("inverse_sqrt_mass") = py::none())
       .def_property_readonly("N", &DynamicalMatrix::size)
       .def("__len__", &DynamicalMatrix::size)
-      .def_property_readonly("diagonal",
-                             [](py::object self) { return view(self.cast<const DynamicalMatrix&>().diagonal, self); })
-      .def_property_readonly("off_diagonal",
-                             [](py::object self) { return view(self.cast<const DynamicalMatrix&>().off_diagonal, self); })
+      .def_property_readonly("diagonal", viewer<DynamicalMatrix>(std::mem_fn(&DynamicalMatrix::diagonal)))
+      .def_property_readonly("off_diagonal", viewer<DynamicalMatrix>(std::mem_fn(&DynamicalMatrix::off_diagonal)))
       .def_property_readonly("inverse_sqrt_mass",
-                             [](py::object self) {
-                               return view(self.cast<const DynamicalMatrix&>().inverse_sqrt_mass, self);
-                             })
+                             viewer<DynamicalMatrix>(std::mem_fn(&DynamicalMatrix::inverse_sqrt_mass)))
       .def("__repr__",
            [](const DynamicalMatrix& d) { return "<granular.DynamicalMatrix N=" + std::to_string(d.size()) + ">"; });
 

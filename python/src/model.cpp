@@ -85,15 +85,12 @@ void bind_model(py::module_& m) {
   py::class_<PyChain>(m, "Chain")
       .def_property_readonly("N", [](const PyChain& c) { return c.chain.size(); })
       .def("__len__", [](const PyChain& c) { return c.chain.size(); })
-      .def_property_readonly("radius",
-                             [](py::object self) { return view(self.cast<const PyChain&>().chain.radius, self); })
-      .def_property_readonly("mass", [](py::object self) { return view(self.cast<const PyChain&>().chain.mass, self); })
+      .def_property_readonly("radius", viewer<PyChain>([](const PyChain& c) -> auto& { return c.chain.radius; }))
+      .def_property_readonly("mass", viewer<PyChain>([](const PyChain& c) -> auto& { return c.chain.mass; }))
       .def_property_readonly("inverse_mass",
-                             [](py::object self) { return view(self.cast<const PyChain&>().chain.inverse_mass, self); })
-      .def_property_readonly("contact",
-                             [](py::object self) { return view(self.cast<const PyChain&>().chain.contact, self); })
-      .def_property_readonly("overlap",
-                             [](py::object self) { return view(self.cast<const PyChain&>().chain.overlap, self); })
+                             viewer<PyChain>([](const PyChain& c) -> auto& { return c.chain.inverse_mass; }))
+      .def_property_readonly("contact", viewer<PyChain>([](const PyChain& c) -> auto& { return c.chain.contact; }))
+      .def_property_readonly("overlap", viewer<PyChain>([](const PyChain& c) -> auto& { return c.chain.overlap; }))
       .def_property_readonly("F0", [](const PyChain& c) { return c.chain.precompression; })
       .def_property_readonly("types", &chain_types)
       .def_property_readonly("metadata", [](const PyChain& c) { return to_python(c.description); })
