@@ -94,29 +94,6 @@ py::dict ipr_map(IprMapConfig c, const std::string& solver, const py::object& ne
   return out;
 }
 
-/// The beads of a Chain argument, as the localization tool reads a --config (types) or --radii
-/// (radii) file; or a random realization drawn on demand (memory independent of N).
-struct Beads {
-  std::unique_ptr<BeadSource> source;
-  nlohmann::json description;
-};
-Beads beads_of(const PyChain& c) {
-  Beads b;
-  b.description = c.description;
-  if (!(c.chain.precompression > 0)) bad_value("F0", " 0: the sonic vacuum has no linear limit (needs F0 > 0)");
-  if (!c.types.empty() && c.description.contains("xi")) {
-    ChainParameters p;
-    p.xi = c.description["xi"].get<double>();
-    p.R1 = c.description["R1_m"].get<double>();
-    p.F0 = c.chain.precompression;
-    p.material = c.material;
-    b.source = typed_beads(c.types, p);
-  } else {
-    b.source = chain_beads(c.chain);
-  }
-  return b;
-}
-
 /// `chain`, or (None) realization `realization` of `recipe` streamed a piece at a time.
 py::dict localization(const py::object& chain, const ChainRecipe& recipe, std::uint64_t realization,
                       const py::object& f, long long segments, const PyRun& options) {
@@ -130,30 +107,23 @@ py::dict localization(const py::object& chain, const ChainRecipe& recipe, std::u
   }
   config.segments = checked_size(segments, "segments", 2, 1000000);
   const int thread_request = options.thread_request();
-  Beads beads;
-  double top_khz = 0;  // bound on the chain's frequencies, for the unit-slip warning
+  // The beads as the localization tool reads them (ChainRecipe::beads): a random realization is
+  // drawn a piece at a time (memory independent of N).
+  ChainRecipe r = recipe;
+  nlohmann::json description;
   if (!chain.is_none()) {
     if (!py::isinstance<PyChain>(chain)) throw py::type_error("chain: expected a granular.Chain or None");
-    beads = beads_of(chain.cast<const PyChain&>());
-    top_khz = highest_frequency_bound_khz(chain.cast<const PyChain&>().recipe);
-  } else {
-    const ChainRecipe& r = recipe;
-    beads.source = random_beads(
-        r.disorder,
-        {.N = r.N, .q = r.q, .xi = r.xi, .seed = r.seed, .realization = realization, .F0 = r.F0, .R1 = r.R1});
-    warn(radius_warnings(r, {"R1", "beads", "radii"}));
-    top_khz = highest_frequency_bound_khz(r);
-    beads.description = {{"F0_N", r.F0},
-                         {"material", describe(steel)},
-                         {"walls", flat_walls_description},
-                         {"R1_m", r.R1},
-                         {"xi", r.xi},
-                         {"disorder", to_string(r.disorder)},
-                         {"q", r.q},
-                         {"seed", r.seed},
-                         {"realization", realization}};
+    const PyChain& c = chain.cast<const PyChain&>();
+    if (!(c.chain.precompression > 0)) bad_value("F0", " 0: the sonic vacuum has no linear limit (needs F0 > 0)");
+    r = c.recipe, realization = c.realization, description = c.description;
   }
-  beads.description["N"] = beads.source->size();
+  const std::unique_ptr<BeadSource> beads = r.beads(realization);
+  if (chain.is_none()) {
+    warn(radius_warnings(r, {"R1", "beads", "radii"}));
+    description = describe(r, realization);
+  }
+  description["N"] = beads->size();
+  const double top_khz = highest_frequency_bound_khz(r);  // bound on the chain's frequencies (unit slips)
   validate(config);
   for (double v : config.frequency_khz)  // the first one above the chain's frequencies
     if (const std::string w = frequency_warning("f", v, top_khz); !w.empty()) {
@@ -161,10 +131,10 @@ py::dict localization(const py::object& chain, const ChainRecipe& recipe, std::u
       break;
     }
   LocalizationScan scan;
-  run_long("localization", beads.source->size() * config.frequency_khz.size(), options.progress,
-           [&](const LongRun& control) { scan = localization_scan(*beads.source, config, run_of(options, control)); });
+  run_long("localization", beads->size() * config.frequency_khz.size(), options.progress,
+           [&](const LongRun& control) { scan = localization_scan(*beads, config, run_of(options, control)); });
   nlohmann::json meta = metadata_head("localization");
-  meta.update(describe_localization(scan, beads.description,
+  meta.update(describe_localization(scan, description,
                                     py::isinstance<py::str>(f) ? nlohmann::json(f.cast<std::string>())
                                                                : nlohmann::json(config.frequency_khz),
                                     resolve_threads(thread_request), steel));
