@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <initializer_list>
 #include <string>
 #include <utility>
 #include <vector>
@@ -22,6 +23,18 @@
 namespace granular::python {
 
 namespace py = pybind11;
+
+/// A library config struct as Python fills it: default-constructed (its C++ defaults), with a
+/// read-write attribute per (name, member), in order.
+template <class C, class... M>
+py::class_<C> config_class(py::module_& m, const char* name, std::initializer_list<const char*> names,
+                           M C::*... members) {
+  py::class_<C> c(m, name);
+  c.def(py::init<>());
+  auto field = names.begin();
+  (c.def_readwrite(*field++, members), ...);
+  return c;
+}
 
 // --- the binding sources, one per library area -------------------------------------------
 void bind_errors(py::module_& m);
@@ -83,6 +96,13 @@ py::array_t<T> to_numpy(const std::vector<T>& values) {
 py::array_t<double> to_numpy_2d(std::vector<double>&& values, std::size_t rows, std::size_t cols);
 /// A read-only view of `data` (n entries) kept alive by `owner` (the Python object holding it).
 py::array_t<double> view(const std::vector<double>& data, const py::handle& owner);
+/// A read-only property viewing the vector `get(self)` of a bound object (kept alive by it).
+template <class Self, class Get>
+auto viewer(Get get) {
+  return [get](py::object self) { return view(get(self.cast<const Self&>()), self); };
+}
+/// dict[name] = the NumPy array of each vector, which it takes over.
+void put(py::dict& dict, std::initializer_list<std::pair<const char*, std::vector<double>*>> arrays);
 
 // --- metadata ----------------------------------------------------------------------------------
 py::object to_python(const nlohmann::json& value);
@@ -109,5 +129,12 @@ struct LongRun {
 /// `work` must not touch Python objects. Library exceptions propagate.
 void run_long(const std::string& label, std::size_t total, bool progress,
               const std::function<void(const LongRun&)>& work);
+/// How a long call runs, as the keyword functions in granular/*.py fill it (granular._core.RunOptions).
+struct PyRun {
+  long long threads = 0;
+  std::string checkpoint;  ///< "" = none
+  bool resume = false, resume_other_version = false, progress = false;
+  int thread_request() const { return static_cast<int>(checked_size(threads, "threads", 0, 4096)); }
+};
 
 }  // namespace granular::python

@@ -1,11 +1,12 @@
-// The linear chain: granular.DynamicalMatrix, granular.spectrum (every mode / the K nearest a
-// frequency / a window, by every method) and granular.SpectrumSolver, band edges. Frequencies in
-// kHz, as the tools give them.
+// The linear chain under granular.spectrum, SpectrumSolver, DynamicalMatrix and band_edges
+// (keywords, defaults, docstrings and the Spectrum result in granular/_linear.py): the dynamical
+// matrix, one solve per call (every mode / the K nearest a frequency / a window, by every
+// method) with the GIL released, the result's arrays as read-only views. Frequencies in kHz.
 #include <cmath>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <nlohmann/json.hpp>
-#include <optional>
 #include <string>
 
 #include "bindings.hpp"
@@ -16,20 +17,15 @@
 #include "granular/linear/sym_tridiagonal.hpp"
 #include "granular/model/named_chains.hpp"
 #include "granular/model/plausibility.hpp"
-#include "granular/number_format.hpp"
-#include "granular/parallel/mpi_context.hpp"
 #include "granular/study/spectrum_file.hpp"
 
 namespace granular::python {
 namespace {
 
-/// A spectrum as Python sees it: the library's result (its vectors are viewed, not copied), the
-/// masses needed for displacements, and the metadata the spectrum tool writes.
-struct PySpectrum {
+/// A spectrum's arrays, owned by the NumPy views of granular.Spectrum (granular/_linear.py).
+struct Modes {
   Spectrum s;
   std::vector<long long> mode;  ///< mode numbers as signed integers (NumPy arithmetic stays integer)
-  std::vector<double> inverse_sqrt_mass;
-  nlohmann::json metadata;
 };
 
 /// ARPACK keeps state in Fortran SAVE variables and SLEPc talks MPI: one call at a time per process.
@@ -96,13 +92,34 @@ nlohmann::json spectrum_metadata(const Spectrum& r, const System& s, const Solve
   return meta;
 }
 
-py::object wrap(Spectrum&& r, const DynamicalMatrix& d, nlohmann::json metadata) {
-  PySpectrum out;
-  out.mode.assign(r.mode.begin(), r.mode.end());
-  out.s = std::move(r);
-  out.inverse_sqrt_mass = d.inverse_sqrt_mass;
-  out.metadata = std::move(metadata);
-  return py::cast(std::move(out));
+/// The arrays of `r` as read-only views (no copies), the masses for displacements, and the metadata.
+py::dict wrap(Spectrum&& r, const DynamicalMatrix& d, const nlohmann::json& metadata) {
+  auto* owned = new Modes{std::move(r), {}};
+  const Spectrum& s = owned->s;
+  owned->mode.assign(s.mode.begin(), s.mode.end());
+  py::capsule owner(owned, [](void* p) { delete static_cast<Modes*>(p); });
+  py::dict out;
+  out["mode"] = py::array_t<long long>({s.mode.size()}, {sizeof(long long)}, owned->mode.data(), owner);
+  out["omega2"] = view(s.omega2, owner), out["freq_khz"] = view(s.freq_khz, owner);
+  out["ipr"] = view(s.ipr, owner), out["residual"] = view(s.residual, owner);
+  out["clustered"] = to_numpy(std::vector<std::uint8_t>(s.clustered.begin(), s.clustered.end()));
+  out["vectors"] = py::none();
+  if (!s.vectors.empty()) {
+    py::array_t<double> a({s.beads, s.size()}, {sizeof(double), s.beads * sizeof(double)}, s.vectors.data(), owner);
+    py::detail::array_proxy(a.ptr())->flags &= ~py::detail::npy_api::NPY_ARRAY_WRITEABLE_;
+    out["vectors"] = a;
+  }
+  out["inverse_sqrt_mass"] = to_numpy(d.inverse_sqrt_mass);
+  out["N"] = s.beads;
+  const SpectrumInfo& i = s.info;
+  out["info"] = to_python({{"method", i.method},
+                           {"fallbacks", i.fallbacks},
+                           {"restarts", i.restarts},
+                           {"candidates", i.candidates},
+                           {"max_residual", i.max_residual},
+                           {"clusters", i.clusters}});
+  out["metadata"] = to_python(metadata);
+  return out;
 }
 
 /// One solve with the GIL released (holding `busy` when given); ARPACK and SLEPc one at a time.
@@ -123,35 +140,16 @@ Spectrum solve(SpectrumSolver& solver, System& s, const ModeSelection& selection
   return solver.solve(*s.matrix, selection);
 }
 
-struct PyBandEdges {
-  double f1, f2, fb1, fb2, fb3;  ///< [kHz]
-};
-
 struct PySolver {
   SpectrumSolver solver;
   std::string method;
   std::mutex busy;  ///< a solver's workspace serves one call at a time
 };
 
-const char* selection_doc =
-    "    near, count: the `count` modes nearest `near` [kHz] in frequency (both or neither)\n"
-    "    window: (lo, hi) [kHz]: every mode with lo <= f <= hi (may be empty)\n";
-const char* config_doc =
-    "    method: 'lapack' (default) | 'fast' (every mode: eigenvalues + one twisted factorization per mode, ~5x "
-    "faster, no eigenvectors) | 'bisect' | 'arpack' | 'slepc' (nearest/window)\n"
-    "    driver: LAPACK driver for every mode: 'stevd' (default) | 'stevr' | 'stemr' | 'steqr'\n"
-    "    vectors: also return the unit eigenvectors w of D (N x K array, column j = mode j)\n"
-    "    tolerance: arpack/slepc Ritz tolerance (0: the tightest default)\n"
-    "    subspace: arpack/slepc Krylov basis size (0: max(2K + 1, 20))\n"
-    "    lanes: bisect: eigenvectors computed together, 1..64\n";
-
 }  // namespace
 
 void bind_linear(py::module_& m) {
-  py::class_<DynamicalMatrix>(m, "DynamicalMatrix",
-                              "The symmetric tridiagonal dynamical matrix D = M^(-1/2) K M^(-1/2) [1/s^2] of a chain "
-                              "(SPEC §3): eigenvalues omega^2, eigenvectors w; the displacement mode is "
-                              "v = w * inverse_sqrt_mass. Arrays are read-only views.")
+  py::class_<DynamicalMatrix>(m, "DynamicalMatrix")
       .def(py::init([](const py::object& diagonal, const py::object& off_diagonal, const py::object& inverse_sqrt_mass) {
              DynamicalMatrix d;
              d.diagonal = double_vector(diagonal, "diagonal");
@@ -172,150 +170,43 @@ void bind_linear(py::module_& m) {
              }
              return d;
            }),
-           py::arg("diagonal"), py::arg("off_diagonal"), py::arg("inverse_sqrt_mass") = py::none(),
-           "A matrix of your own: diagonal (N) and off_diagonal (N-1) [1/s^2], and m^(-1/2) (N) [kg^(-1/2)] for the "
-           "displacement IPRs (default 1: the IPR of w itself). Any 1-D array-likes; NaN/inf are refused.")
-      .def_property_readonly("N", &DynamicalMatrix::size, "rows")
+           py::arg("diagonal"), py::arg("off_diagonal"), py::arg("inverse_sqrt_mass") = py::none())
+      .def_property_readonly("N", &DynamicalMatrix::size)
       .def("__len__", &DynamicalMatrix::size)
-      .def_property_readonly(
-          "diagonal", [](py::object self) { return view(self.cast<const DynamicalMatrix&>().diagonal, self); },
-          "D(i, i) = (B_i + B_(i+1)) / m_i [1/s^2], N entries")
-      .def_property_readonly(
-          "off_diagonal", [](py::object self) { return view(self.cast<const DynamicalMatrix&>().off_diagonal, self); },
-          "D(i, i+1) = -B_(i+1) / sqrt(m_i m_(i+1)) [1/s^2], N-1 entries")
-      .def_property_readonly(
-          "inverse_sqrt_mass",
-          [](py::object self) { return view(self.cast<const DynamicalMatrix&>().inverse_sqrt_mass, self); },
-          "m_n^(-1/2) [kg^(-1/2)], N entries")
+      .def_property_readonly("diagonal", viewer<DynamicalMatrix>(std::mem_fn(&DynamicalMatrix::diagonal)))
+      .def_property_readonly("off_diagonal", viewer<DynamicalMatrix>(std::mem_fn(&DynamicalMatrix::off_diagonal)))
+      .def_property_readonly("inverse_sqrt_mass",
+                             viewer<DynamicalMatrix>(std::mem_fn(&DynamicalMatrix::inverse_sqrt_mass)))
       .def("__repr__",
            [](const DynamicalMatrix& d) { return "<granular.DynamicalMatrix N=" + std::to_string(d.size()) + ">"; });
 
-  m.def(
-      "dynamical_matrix", [](const PyChain& c) { return dynamical_matrix(c.chain); }, py::arg("chain"),
-      "The dynamical matrix of a chain (ValueError naming F0 at F0 = 0: the sonic vacuum has no linear limit).");
-  m.def(
-      "frequency_khz", [](py::array_t<double> omega2) { return py::vectorize(frequency_khz)(omega2); },
-      py::arg("omega2"), "Frequency f = omega/2pi [kHz] of eigenvalues omega^2 [1/s^2] (a number or an array).");
-  m.def(
-      "omega2_of_khz", [](py::array_t<double> khz) { return py::vectorize(omega_squared_of_khz)(khz); }, py::arg("khz"),
-      "omega^2 [1/s^2] of frequencies in kHz (a number or an array).");
+  m.def("_dynamical_matrix", [](const PyChain& c) { return dynamical_matrix(c.chain); });
+  m.def("_frequency_khz", [](py::array_t<double> omega2) { return py::vectorize(frequency_khz)(omega2); });
+  m.def("_omega2_of_khz", [](py::array_t<double> khz) { return py::vectorize(omega_squared_of_khz)(khz); });
 
-  py::class_<PySpectrum>(m, "Spectrum",
-                         "Modes of a chain by increasing frequency, as granular.spectrum returns them. Arrays are "
-                         "read-only NumPy views of the result (no copies).")
-      .def_property_readonly(
-          "mode",
-          [](py::object self) {
-            const auto& s = self.cast<const PySpectrum&>();
-            return py::array_t<long long>({s.mode.size()}, {sizeof(long long)}, s.mode.data(), self);
-          },
-          "mode numbers 1..N in the full spectrum (int64)")
-      .def_property_readonly(
-          "omega2", [](py::object self) { return view(self.cast<const PySpectrum&>().s.omega2, self); },
-          "eigenvalues omega^2 of D [1/s^2]")
-      .def_property_readonly(
-          "freq_khz", [](py::object self) { return view(self.cast<const PySpectrum&>().s.freq_khz, self); },
-          "frequencies f = omega/2pi [kHz]")
-      .def_property_readonly(
-          "ipr", [](py::object self) { return view(self.cast<const PySpectrum&>().s.ipr, self); },
-          "displacement IPR sum v^4 / (sum v^2)^2 of each mode, in (0, 1] (1/N: extended, ~1: one bead)")
-      .def_property_readonly(
-          "residual", [](py::object self) { return view(self.cast<const PySpectrum&>().s.residual, self); },
-          "per mode |D w - omega^2 w| / max|D_ij| (partial methods; empty for every mode)")
-      .def_property_readonly(
-          "clustered",
-          [](py::object self) {
-            const auto& s = self.cast<const PySpectrum&>().s;
-            py::array_t<bool> a(s.clustered.size());
-            for (std::size_t j = 0; j < s.clustered.size(); ++j) a.mutable_at(j) = s.clustered[j] != 0;
-            return a;
-          },
-          "per mode: True inside a near-degenerate cluster (relative gap < 1e-10 of max omega^2), whose IPR depends "
-          "on the basis chosen inside it (a copy, bool)")
-      .def_property_readonly(
-          "vectors",
-          [](py::object self) -> py::object {
-            const auto& s = self.cast<const PySpectrum&>().s;
-            if (s.vectors.empty()) return py::none();
-            const std::size_t n = s.beads, k = s.size();
-            py::array_t<double> a({n, k}, {sizeof(double), n * sizeof(double)}, s.vectors.data(), self);
-            py::detail::array_proxy(a.ptr())->flags &= ~py::detail::npy_api::NPY_ARRAY_WRITEABLE_;
-            return a;
-          },
-          "N x K unit eigenvectors w of D (column j: mode j; Fortran order, a view), or None without vectors=True")
-      .def(
-          "displacements",
-          [](const PySpectrum& p) -> py::object {
-            const auto& s = p.s;
-            if (s.vectors.empty()) return py::none();
-            const std::size_t n = s.beads, k = s.size();
-            std::vector<double> v(n * k);
-            for (std::size_t j = 0; j < k; ++j)
-              for (std::size_t i = 0; i < n; ++i) v[i * k + j] = s.vectors[j * n + i] * p.inverse_sqrt_mass[i];
-            return to_numpy_2d(std::move(v), n, k);
-          },
-          "N x K displacement modes v = w * m^(-1/2) [kg^(-1/2)] (column j: mode j), or None without vectors")
-      .def_property_readonly(
-          "N", [](const PySpectrum& p) { return p.s.beads; }, "beads of the chain")
-      .def("__len__", [](const PySpectrum& p) { return p.s.size(); })
-      .def_property_readonly(
-          "info",
-          [](const PySpectrum& p) {
-            const SpectrumInfo& i = p.s.info;
-            return to_python({{"method", i.method},
-                              {"fallbacks", i.fallbacks},
-                              {"restarts", i.restarts},
-                              {"candidates", i.candidates},
-                              {"max_residual", i.max_residual},
-                              {"clusters", i.clusters}});
-          },
-          "what the solver did: method that ran, fallbacks, restarts, candidates, max_residual, clusters")
-      .def_property_readonly(
-          "metadata", [](const PySpectrum& p) { return to_python(p.metadata); },
-          "the spectrum tool's JSON for this result: clustered, chain, method, solver, selection, "
-          "band_edges_khz, version (granular::describe_spectrum, as the tool writes it)")
-      .def("__repr__", [](const PySpectrum& p) {
-        return "<granular.Spectrum " + std::to_string(p.s.size()) + " of " + std::to_string(p.s.beads) + " modes, " +
-               p.s.info.method + ">";
-      });
+  m.def("_spectrum", [](const py::object& system, const py::object& near, const py::object& count,
+                        const py::object& window, const std::string& method, const std::string& driver, bool vectors,
+                        double tolerance, long long subspace, long long lanes) {
+    const SolverRequest q{selection_of(near, count, window),
+                          config_of(method, driver, vectors, tolerance, subspace, lanes), method};
+    validate(q.config, q.selection);
+    System s = system_of(system);
+    if (q.selection.kind != ModeSelection::Kind::all) {  // a unit slip (Hz as kHz) deserves a word
+      const bool by_near = q.selection.kind == ModeSelection::Kind::nearest;
+      const double top = s.matrix ? frequency_khz(std::max(0.0, gershgorin_bounds(*s.matrix).second))
+                                  : highest_frequency_bound_khz(s.chain->recipe);
+      if (const std::string w =
+              frequency_warning(by_near ? "near" : "window", by_near ? q.selection.near_khz : q.selection.lo_khz, top);
+          !w.empty())
+        warn({w});
+    }
+    SpectrumSolver solver(q.config);
+    Spectrum r = solve(solver, s, q.selection);
+    const nlohmann::json meta = spectrum_metadata(r, s, q);
+    return wrap(std::move(r), *s.matrix, meta);
+  });
 
-  m.def(
-      "spectrum",
-      [](const py::object& system, const py::object& near, const py::object& count, const py::object& window,
-         const std::string& method, const std::string& driver, bool vectors, double tolerance, long long subspace,
-         long long lanes) {
-        const SolverRequest q{selection_of(near, count, window),
-                              config_of(method, driver, vectors, tolerance, subspace, lanes), method};
-        validate(q.config, q.selection);
-        System s = system_of(system);
-        if (q.selection.kind != ModeSelection::Kind::all) {  // a unit slip (Hz as kHz) deserves a word
-          const bool by_near = q.selection.kind == ModeSelection::Kind::nearest;
-          const double top = s.matrix ? frequency_khz(std::max(0.0, gershgorin_bounds(*s.matrix).second))
-                                      : highest_frequency_bound_khz(s.chain->recipe);
-          if (const std::string w = frequency_warning(by_near ? "near" : "window",
-                                                      by_near ? q.selection.near_khz : q.selection.lo_khz, top);
-              !w.empty())
-            warn({w});
-        }
-        SpectrumSolver solver(q.config);
-        Spectrum r = solve(solver, s, q.selection);
-        nlohmann::json meta = spectrum_metadata(r, s, q);
-        return wrap(std::move(r), *s.matrix, std::move(meta));
-      },
-      py::arg("system"), py::kw_only(), py::arg("near") = py::none(), py::arg("count") = py::none(),
-      py::arg("window") = py::none(), py::arg("method") = "lapack", py::arg("driver") = "stevd",
-      py::arg("vectors") = false, py::arg("tolerance") = 0.0, py::arg("subspace") = 0, py::arg("lanes") = 8,
-      (std::string("The linear spectrum of a granular.Chain or granular.DynamicalMatrix (SPEC §3), as the spectrum "
-                   "tool computes it: every mode by default, or\n") +
-       selection_doc + config_doc +
-       "Returns a granular.Spectrum (mode, freq_khz [kHz], ipr, omega2 [1/s^2], residual, vectors; info, metadata). "
-       "Releases the GIL while it solves. ValueError names the keyword of a bad value; granular.NumericalError when "
-       "every solver failed.")
-          .c_str());
-
-  py::class_<PySolver>(m, "SpectrumSolver",
-                       "A spectrum solver that keeps its workspaces between calls: for loops over many chains of one "
-                       "size (what the IPR map does per thread). solve() gives exactly what granular.spectrum gives.")
+  py::class_<PySolver>(m, "_SpectrumSolver")
       .def(py::init([](const std::string& method, const std::string& driver, bool vectors, double tolerance,
                        long long subspace, long long lanes) {
              auto p = std::make_unique<PySolver>();
@@ -324,54 +215,24 @@ void bind_linear(py::module_& m) {
              return p;
            }),
            py::kw_only(), py::arg("method") = "lapack", py::arg("driver") = "stevd", py::arg("vectors") = false,
-           py::arg("tolerance") = 0.0, py::arg("subspace") = 0, py::arg("lanes") = 8,
-           (std::string("Keywords as granular.spectrum's:\n") + config_doc).c_str())
+           py::arg("tolerance") = 0.0, py::arg("subspace") = 0, py::arg("lanes") = 8)
       .def(
-          "solve",
+          "_solve",
           [](PySolver& p, const py::object& system, const py::object& near, const py::object& count,
              const py::object& window) {
             const SolverRequest q{selection_of(near, count, window), p.solver.config(), p.method};
             validate(q.config, q.selection);
             System s = system_of(system);
             Spectrum r = solve(p.solver, s, q.selection, &p.busy);
-            nlohmann::json meta = spectrum_metadata(r, s, q);
-            return wrap(std::move(r), *s.matrix, std::move(meta));
+            const nlohmann::json meta = spectrum_metadata(r, s, q);
+            return wrap(std::move(r), *s.matrix, meta);
           },
-          py::arg("system"), py::kw_only(), py::arg("near") = py::none(), py::arg("count") = py::none(),
-          py::arg("window") = py::none(),
-          (std::string("The selected modes of a granular.Chain or granular.DynamicalMatrix:\n") + selection_doc +
-           "Returns a granular.Spectrum.")
-              .c_str());
+          py::arg("system"), py::arg("near"), py::arg("count"), py::arg("window"));
 
-  py::class_<PyBandEdges>(m, "BandEdges",
-                          "Analytic cut-off frequencies of the ordered chains [kHz] (SPEC §3): f1, f2 the tops of the "
-                          "monatomic chains of type-1 and type-2 beads; fb1 the diatomic acoustic band top, fb2 and "
-                          "fb3 the optical band's bottom and top.")
-      .def_readonly("f1", &PyBandEdges::f1, "top of the monatomic chain of type-1 beads [kHz]")
-      .def_readonly("f2", &PyBandEdges::f2, "top of the monatomic chain of type-2 beads [kHz]")
-      .def_readonly("fb1", &PyBandEdges::fb1, "diatomic acoustic band top [kHz]")
-      .def_readonly("fb2", &PyBandEdges::fb2, "diatomic optical band bottom [kHz]")
-      .def_readonly("fb3", &PyBandEdges::fb3, "diatomic optical band top [kHz]")
-      .def(
-          "as_dict",
-          [](const PyBandEdges& e) {
-            py::dict d;
-            d["f1"] = e.f1, d["f2"] = e.f2, d["fb1"] = e.fb1, d["fb2"] = e.fb2, d["fb3"] = e.fb3;
-            return d;
-          },
-          "{'f1': ..., 'f2': ..., 'fb1': ..., 'fb2': ..., 'fb3': ...} in kHz (the tools' band_edges_khz)")
-      .def("__repr__", [](const PyBandEdges& e) {
-        return "BandEdges(f1=" + format_number(e.f1) + ", f2=" + format_number(e.f2) + ", fb1=" + format_number(e.fb1) +
-               ", fb2=" + format_number(e.fb2) + ", fb3=" + format_number(e.fb3) + ") [kHz]";
-      });
-  m.def(
-      "band_edges",
-      [](double xi, double F0, double R1, const Material& material) {
-        const BandEdges e = band_edges(material, R1, xi, F0);
-        return PyBandEdges{e.f1 * 1e-3, e.f2 * 1e-3, e.fb1 * 1e-3, e.fb2 * 1e-3, e.fb3 * 1e-3};
-      },
-      py::arg("xi") = 0.5, py::arg("F0") = 10.0, py::arg("R1") = paper_r1, py::arg("material") = steel,
-      "Band edges [kHz] of beads of radius R1 [m] and xi*R1 of one material under precompression F0 > 0 [N].");
+  m.def("_band_edges", [](double xi, double F0, double R1, const Material& material) {
+    const BandEdges e = band_edges(material, R1, xi, F0);
+    return py::make_tuple(e.f1 * 1e-3, e.f2 * 1e-3, e.fb1 * 1e-3, e.fb2 * 1e-3, e.fb3 * 1e-3);
+  });
 }
 
 }  // namespace granular::python

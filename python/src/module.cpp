@@ -1,5 +1,6 @@
-// The extension module granular._core. The package granular (python/granular/__init__.py)
-// re-exports it beside the pure-Python layer (results, progress bar, figures).
+// The extension module granular._core. The package granular (python/granular/__init__.py) is its
+// face: the keyword functions, docstrings and result classes (granular/_model.py, _linear.py,
+// _studies.py, _dynamics.py, _observers.py), results, progress bar, figures.
 #include "bindings.hpp"
 #include "granular/parallel/mpi_context.hpp"
 

@@ -1,5 +1,6 @@
 // The dynamics as the library has it: an initial state, granular.spread() — which owns time and
 // the integrator — and observers that measure the run (dynamics/observer.hpp, observers.hpp).
+// Docstrings, and the keywords of spread() and the kicks, are in granular/_observers.py.
 // The built-in observers keep their results as NumPy arrays; a Python class deriving from
 // granular.Observer (schedule, observe, finish) is called like them, with the GIL taken for it.
 // Beads are 0-based here, as in granular.Chain's arrays (the tools and granular.spreading count
@@ -15,6 +16,7 @@
 
 namespace granular::python {
 namespace {
+using namespace py::literals;
 
 /// What Python receives for a Snapshot: a copy of the chain at that time. The library's Snapshot
 /// is a view of the integrator's state, which moves on after the call; an observer that keeps
@@ -59,7 +61,7 @@ std::size_t site_of(const py::object& site, const char* keyword) {
 }  // namespace
 
 void bind_observers(py::module_& m) {
-  py::class_<State>(m, "State", "A phase-space state: u [m] and v [m/s] of every bead (0-based), walls excluded.")
+  py::class_<State>(m, "State")
       .def(py::init([](const py::object& u, const py::object& v) {
              State s;
              s.u = double_vector(u, "u");
@@ -70,43 +72,27 @@ void bind_observers(py::module_& m) {
            py::arg("u"), py::arg("v"))
       .def_property_readonly("u", [](const State& s) { return to_numpy(s.u); })
       .def_property_readonly("v", [](const State& s) { return to_numpy(s.v); });
+  m.def("_displacement_kick", [](const PyChain& chain, const py::object& site, double alpha) {
+    return displacement_kick(chain.chain, site_of(site, "site"), alpha);
+  });
+  m.def("_velocity_kick", [](const PyChain& chain, const py::object& site, double beta) {
+    return velocity_kick(chain.chain, site_of(site, "site"), beta);
+  });
 
-  m.def(
-      "displacement_kick",
-      [](const PyChain& chain, const py::object& site, double alpha) {
-        return displacement_kick(chain.chain, site_of(site, "site"), alpha);
-      },
-      py::arg("chain"), py::arg("site"), py::arg("alpha") = 1e-7,
-      "u_n = alpha at bead `site` (0-based), the rest at rest: the paper's displacement kick [m].");
-  m.def(
-      "velocity_kick",
-      [](const PyChain& chain, const py::object& site, double beta) {
-        return velocity_kick(chain.chain, site_of(site, "site"), beta);
-      },
-      py::arg("chain"), py::arg("site"), py::arg("beta") = 8e-3,
-      "v_n = beta at bead `site` (0-based), the rest at rest: the paper's velocity kick [m/s].");
-
-  py::class_<RunPlan>(m, "RunPlan", "What an observer learns before the run.")
+  py::class_<RunPlan>(m, "RunPlan")
       .def_readonly("beads", &RunPlan::beads)
-      .def_readonly("total_steps", &RunPlan::total_steps, "T / dt")
-      .def_readonly("time_step", &RunPlan::time_step, "dt [s]")
-      .def_readonly("duration", &RunPlan::duration, "T [s]");
-
-  py::class_<SnapshotCopy>(m, "Snapshot", "The chain at one observed time (a copy: it may be kept).")
+      .def_readonly("total_steps", &RunPlan::total_steps)
+      .def_readonly("time_step", &RunPlan::time_step)
+      .def_readonly("duration", &RunPlan::duration);
+  py::class_<SnapshotCopy>(m, "Snapshot")
       .def_readonly("step", &SnapshotCopy::step)
-      .def_readonly("t", &SnapshotCopy::t, "[s]")
-      .def_property_readonly(
-          "u", [](const SnapshotCopy& s) { return to_numpy(s.u); }, "displacements [m] (a copy)")
-      .def_property_readonly(
-          "v", [](const SnapshotCopy& s) { return to_numpy(s.v); }, "velocities [m/s] (a copy)")
-      .def_property_readonly(
-          "energy", [](const SnapshotCopy& s) { return to_numpy(s.energy); }, "site energies E_n [J] (a copy)")
-      .def_readonly("initial_energy", &SnapshotCopy::initial_energy, "H(0) [J]");
+      .def_readonly("t", &SnapshotCopy::t)
+      .def_property_readonly("u", [](const SnapshotCopy& s) { return to_numpy(s.u); })
+      .def_property_readonly("v", [](const SnapshotCopy& s) { return to_numpy(s.v); })
+      .def_property_readonly("energy", [](const SnapshotCopy& s) { return to_numpy(s.energy); })
+      .def_readonly("initial_energy", &SnapshotCopy::initial_energy);
 
-  py::class_<Observer, PyObserver>(
-      m, "Observer",
-      "Derive from it to measure a run: schedule(plan) returns the steps (0..plan.total_steps) to look at, "
-      "observe(snapshot) is called at each, finish(snapshot) once at T. Call super().__init__().")
+  py::class_<Observer, PyObserver>(m, "Observer")
       .def(py::init<>())
       .def("schedule", &Observer::schedule, py::arg("plan"))
       // What super().observe/finish(snapshot) reach from a subclass: the base's behaviour.
@@ -119,11 +105,7 @@ void bind_observers(py::module_& m) {
       .def(
           "finish", [](Observer&, const SnapshotCopy&) {}, py::arg("snapshot"));
 
-  py::class_<EnergySpreadObserver, Observer>(
-      m, "EnergySpread",
-      "m2 about the kicked bead (the paper's) and about the energy centroid [beads^2], P^-1 and the relative energy "
-      "error at log-spaced (or uniform) times, with a dense grid `fit` = (start, stop) [s] every fit_step; the "
-      "energy guard stops the run (energy_guard='stop') or records it ('warn').")
+  py::class_<EnergySpreadObserver, Observer>(m, "EnergySpread")
       .def(py::init([](long long samples, const std::string& sampling, const py::object& site, const py::object& fit,
                        double fit_step, double max_energy_error, const std::string& energy_guard, double wall_warning) {
              EnergySpreadObserver::Settings s;
@@ -157,8 +139,7 @@ void bind_observers(py::module_& m) {
         return o.energy_guard_time < 0 ? py::object(py::none()) : py::float_(o.energy_guard_time);
       });
 
-  py::class_<ForceObserver, Observer>(m, "Forces",
-                                      "The force [N] on beads `at` (0-based) at `samples` uniform times 0..T.")
+  py::class_<ForceObserver, Observer>(m, "Forces")
       .def(py::init([](const py::object& at, long long samples) {
              ForceObserver::Settings s;
              for (const py::handle& site : at)
@@ -168,29 +149,23 @@ void bind_observers(py::module_& m) {
            }),
            py::arg("at"), py::kw_only(), py::arg("samples") = 1000)
       .def_property_readonly("t", [](const ForceObserver& o) { return to_numpy(o.t); })
-      .def_property_readonly(
-          "force",
-          [](const ForceObserver& o) {
-            std::vector<double> values;
-            for (const auto& series : o.forces) values.insert(values.end(), series.begin(), series.end());
-            return to_numpy_2d(std::move(values), o.forces.size(), o.t.size());
-          },
-          "[site][sample] [N]");
+      .def_property_readonly("force", [](const ForceObserver& o) {
+        std::vector<double> values;
+        for (const auto& series : o.forces) values.insert(values.end(), series.begin(), series.end());
+        return to_numpy_2d(std::move(values), o.forces.size(), o.t.size());
+      });
 
-  py::class_<EnergyMapObserver, Observer>(m, "EnergyMap",
-                                          "E_n(t) [J] at `samples` uniform times, `stride` beads summed per column.")
+  py::class_<EnergyMapObserver, Observer>(m, "EnergyMap")
       .def(py::init([](long long samples, long long stride) {
              return EnergyMapObserver({checked_size(samples, "samples", 2), checked_size(stride, "stride", 1)});
            }),
            py::kw_only(), py::arg("samples") = 500, py::arg("stride") = 1)
       .def_property_readonly("t", [](const EnergyMapObserver& o) { return to_numpy(o.t); })
-      .def_property_readonly(
-          "energy",
-          [](const EnergyMapObserver& o) { return to_numpy_2d(std::vector<double>(o.energy), o.t.size(), o.columns); },
-          "[time][column] [J]");
+      .def_property_readonly("energy", [](const EnergyMapObserver& o) {
+        return to_numpy_2d(std::vector<double>(o.energy), o.t.size(), o.columns);
+      });
 
-  py::class_<SpectralDensityObserver, Observer>(
-      m, "SpectralDensity", "g(nu) of u_n(t) (of_='displacement', the paper's) or v_n(t) at `samples` uniform times.")
+  py::class_<SpectralDensityObserver, Observer>(m, "SpectralDensity")
       .def(py::init([](long long samples, const std::string& of) {
              return SpectralDensityObserver({checked_size(samples, "samples", 2), parse_spectrum_source(of)});
            }),
@@ -198,49 +173,35 @@ void bind_observers(py::module_& m) {
       .def_property_readonly("freq_khz", [](const SpectralDensityObserver& o) { return to_numpy(o.freq_khz); })
       .def_property_readonly("g", [](const SpectralDensityObserver& o) { return to_numpy(o.density); });
 
-  py::class_<FinalStateObserver, Observer>(m, "FinalState", "The state at T with its site energies and bead forces.")
+  py::class_<FinalStateObserver, Observer>(m, "FinalState")
       .def(py::init<>())
       .def_property_readonly("u", [](const FinalStateObserver& o) { return to_numpy(o.state.u); })
       .def_property_readonly("v", [](const FinalStateObserver& o) { return to_numpy(o.state.v); })
       .def_property_readonly("energy", [](const FinalStateObserver& o) { return to_numpy(o.energy); })
       .def_property_readonly("force", [](const FinalStateObserver& o) { return to_numpy(o.force); });
 
-  m.def(
-      "spread",
-      [](const PyChain& chain, const State& initial, const py::list& observers, double T, double dt,
-         const std::string& integrator, const std::string& force_law, bool active_window, double window_threshold,
-         double reference_max_step) {
-        IntegrationConfig config;
-        config.duration = T;
-        config.time_step = dt;
-        config.integrator = parse_integrator(integrator);
-        config.integrator.tolerance.max_step = finite(reference_max_step, "reference_max_step");
-        config.force_law = parse_force_law(force_law);
-        config.window.enabled = active_window;
-        config.window.threshold = window_threshold;
-        std::vector<Observer*> list;
-        for (const py::handle& o : observers) list.push_back(o.cast<Observer*>());
-        RunInfo info;
-        {
-          py::gil_scoped_release release;  // Python observers take it back when called
-          info = spread(chain.chain, initial, config, list);
-        }
-        py::dict out;
-        out["initial_energy"] = info.initial_energy;
-        out["steps"] = info.steps;
-        out["bond_updates"] = info.bond_updates;
-        out["window"] = py::make_tuple(info.window_begin, info.window_end);
-        out["seconds"] = info.seconds;
-        return out;
-      },
-      py::arg("chain"), py::arg("initial"), py::arg("observers") = py::list(), py::kw_only(), py::arg("T") = 1e-2,
-      py::arg("dt") = 1e-6, py::arg("integrator") = "saba2c", py::arg("force_law") = "hertz",
-      py::arg("active_window") = true, py::arg("window_threshold") = 1e-30, py::arg("reference_max_step") = 0.01e-6,
-      "Integrates `chain` from `initial` (a granular.State, e.g. granular.velocity_kick(chain, site, 8e-3)) to T [s] "
-      "with steps dt [s], calling each observer at the steps it scheduled; the observers keep what they measured.\n"
-      "    integrator: 'saba2c' | 'saba2' | 'aba864' | 'srkn14a' | 'reference'; force_law: 'hertz' | 'fpu' | 'linear'\n"
-      "Returns a dict: initial_energy [J], steps, bond_updates, window (final active beads [begin, end)), seconds. "
-      "Releases the GIL (Python observers take it when called).");
+  m.def("_spread", [](const PyChain& chain, const State& initial, const py::list& observers, double T, double dt,
+                      const std::string& integrator, const std::string& force_law, bool active_window,
+                      double window_threshold, double reference_max_step) {
+    IntegrationConfig config;
+    config.duration = T;
+    config.time_step = dt;
+    config.integrator = parse_integrator(integrator);
+    config.integrator.tolerance.max_step = finite(reference_max_step, "reference_max_step");
+    config.force_law = parse_force_law(force_law);
+    config.window.enabled = active_window;
+    config.window.threshold = window_threshold;
+    std::vector<Observer*> list;
+    for (const py::handle& o : observers) list.push_back(o.cast<Observer*>());
+    RunInfo info;
+    {
+      py::gil_scoped_release release;  // Python observers take it back when called
+      info = spread(chain.chain, initial, config, list);
+    }
+    return py::dict("initial_energy"_a = info.initial_energy, "steps"_a = info.steps,
+                    "bond_updates"_a = info.bond_updates,
+                    "window"_a = py::make_tuple(info.window_begin, info.window_end), "seconds"_a = info.seconds);
+  });
 }
 
 }  // namespace granular::python

@@ -65,6 +65,13 @@ double finite(double value, const char* keyword) {
 }
 
 void bind_errors(py::module_& m) {
+  // The checks the keyword functions in granular/*.py share with the bindings (same messages).
+  m.def("_size", &checked_size, py::arg("value"), py::arg("keyword"), py::arg("lo") = 0,
+        py::arg("hi") = 100000000000000000LL);
+  m.def("_finite", &finite);
+  m.def("_vector", [](const py::handle& x, const char* keyword) { return double_vector(x, keyword); });
+  m.def("_numbers", &number_list);
+  m.def("_format_number", [](double x) { return format_number(x); });
   static py::exception<NumericalError> numerical(m, "NumericalError", PyExc_RuntimeError);
   numerical.doc() =
       "A numerical method failed: a solver did not converge, a guard tripped (energy error, NaN), or "
@@ -134,6 +141,10 @@ py::array_t<double> to_numpy_2d(std::vector<double>&& values, std::size_t rows, 
   auto* owner = new std::vector<double>(std::move(values));
   py::capsule base(owner, [](void* p) { delete static_cast<std::vector<double>*>(p); });
   return py::array_t<double>({rows, cols}, {cols * sizeof(double), sizeof(double)}, owner->data(), base);
+}
+
+void put(py::dict& dict, std::initializer_list<std::pair<const char*, std::vector<double>*>> arrays) {
+  for (auto [name, values] : arrays) dict[name] = to_numpy(std::move(*values));
 }
 
 py::array_t<double> view(const std::vector<double>& data, const py::handle& owner) {

@@ -1,0 +1,232 @@
+"""granular.spreading, granular.transport and granular.exponent_table: their keywords, defaults and
+docstrings. Each fills the library's choice structs (granular._core.TransportChoices, BeyondChoices,
+...; C++ defaults) and makes one call to granular._core, which builds the case by the rule the
+tools use (study/transport_choices.hpp), runs it and returns its arrays and metadata."""
+import math
+
+from . import _core
+from ._results import ExponentTable, SpreadingRun, Transport
+
+_DYNAMICS_DOC = """\
+    alpha: displacement kick [m]; beta: velocity kick [m/s] (the paper's 8e-3 for every F0) or 'match' (the \
+energy of alpha on each chain)
+    site: kicked bead n0, counting from 1 as the tools do (None or 0: the centre, (N+1)/2)
+    centre: m2 about the kicked 'site' (the paper's n_c) or the energy 'centroid'; both are computed, this one \
+gives gamma
+    T: duration [s], a whole number of dt; dt: time step tau [s]; None: 1 us, or 1 us/k where the stability \
+rule tau <= h*/omega_max needs it (a dt past that limit is a ValueError naming the largest stable one; the \
+rule and its numbers are in metadata['time_step_rule'])
+    integrator: 'saba2c' | 'saba2' | 'aba864' | 'srkn14a' | 'reference' | 'auto' (the cheapest scheme and step \
+keeping the energy error at SABA2C's at 1 us: SRKN14a at 5 us where no contact can open, else SABA2C; no dt \
+with it; the choice in metadata['time_step_rule']['integrator_choice']); force_law: 'hertz' | 'fpu' | 'linear'
+    samples, sampling: sample times outside the fit window ('log': tau..T, 'uniform': 0..T)
+    fit: (start, stop) [s] of gamma (m2 ~ t^gamma) and eta (P^-1 ~ t^-eta), sampled every fit_step [s] inside
+    t_star, kappa: 'not a power law' when |L_d - gamma| >= kappa after t_star [s] (then the mean L_d is shown)
+    bootstrap: resamples of the realization bootstrap of gamma and eta (ensembles)
+    active_window, window_threshold: integrate only where the wave has arrived (results equal the full chain's)
+    reference_max_step: largest step of the reference integrator [s] (0: none)
+    max_energy_error, energy_guard: relative energy error that stops the run ('stop': NumericalError) or is only \
+reported ('warn'); 0 = unwatched
+"""
+
+_BEYOND_DOC = """\
+    damping_time: on-site viscous damping time tau_d [s], force -(m/tau_d) du/dt on each bead; 0 = none
+    kk_gamma: Kuwabara-Kono contact damping gamma_KK [s], bond force A[d]^{3/2} + gamma_KK A [d]^{1/2} dd/dt \
+while in contact; 0 = none. With either, energy_error is |H + dissipated - H0|/H0 and the whole chain is \
+integrated
+    mle: also the maximal Lyapunov exponent X1(t) [1/s] by the tangent map of the same scheme (conservative \
+runs only: not with damping or integrator='reference'); renormalize: steps between renormalizations of the \
+deviation vector (>= 1)
+"""
+
+_MAX = 100000000
+
+
+def _choices(alpha, beta, site, centre, T, dt, integrator, force_law, samples, sampling, fit, fit_step, t_star,
+             kappa, bootstrap, active_window, window_threshold, reference_max_step, max_energy_error, energy_guard):
+    """The TransportChoices of the dynamics keywords, once those only Python has are read (beta a number
+    or 'match', site None, dt None, fit a pair); integrator 'auto' is settled in C++ with the step."""
+    c = _core.TransportChoices()
+    c.alpha = alpha
+    if isinstance(beta, str):
+        if beta != "match":
+            raise ValueError(f"beta '{beta}': a number [m/s] or 'match'")
+        c.beta = None
+    else:
+        c.beta = _core._finite(beta, "beta")
+    c.site = 0 if site is None else site
+    c.centre = centre
+    c.duration = T
+    c.time_step = 1e-6 if dt is None else _core._finite(dt, "dt")
+    c.integrator = integrator
+    c.force_law = force_law
+    c.samples = _core._size(samples, "samples", 2, _MAX)
+    c.sampling = sampling
+    c.active_window = active_window
+    c.window_threshold = window_threshold
+    c.reference_max_step = reference_max_step
+    c.max_energy_error = max_energy_error
+    c.energy_guard = energy_guard
+    window = _core._vector(fit, "fit")
+    if len(window) != 2:
+        raise ValueError("fit: expected (start, stop) [s] with 0 < start < stop")
+    c.fit_begin, c.fit_end = window
+    c.fit_step = fit_step
+    c.t_star = t_star
+    c.kappa = kappa
+    c.bootstrap = _core._size(bootstrap, "bootstrap", 2, _MAX)
+    return c
+
+
+def _beyond(damping_time, kk_gamma, mle, renormalize, deviation_samples=0):
+    b = _core.BeyondChoices()
+    b.damping_time, b.kk_gamma, b.mle = damping_time, kk_gamma, mle
+    b.renormalize, b.deviation_samples = renormalize, deviation_samples
+    return b
+
+
+def _run(threads=0, checkpoint=None, resume=False, resume_other_version=False, progress=False):
+    r = _core.RunOptions()
+    r.threads = threads
+    r.checkpoint = "" if checkpoint is None else str(checkpoint)
+    r.resume, r.resume_other_version, r.progress = resume, resume_other_version, progress
+    return r
+
+
+def spreading(chain, *, ic="displacement", alpha=1e-7, beta=_core.paper_beta, site=None, centre="site", T=1e-2,
+              dt=None, integrator="saba2c", force_law="hertz", samples=100, sampling="log", fit=(4e-3, 1e-2),
+              fit_step=1e-5, t_star=4e-3, kappa=0.1, bootstrap=1000, active_window=True, window_threshold=1e-30,
+              reference_max_step=0.01e-6, max_energy_error=1e-3, energy_guard="stop", forces_at=None,
+              force_samples=1000, energy_map=False, map_samples=500, map_stride=1, spectral_density=False,
+              spectrum_samples=2000, spectrum_of="displacement", progress=False, mode=0, mode_khz=-1.0, energy=0.0,
+              damping_time=0.0, kk_gamma=0.0, mle=False, renormalize=10, deviation_samples=0):
+    if not isinstance(chain, _core.Chain):
+        raise TypeError(f"spreading: chain must be a granular.Chain, got {type(chain).__name__}")
+    choices = _choices(alpha, beta, site, centre, T, dt, integrator, force_law, samples, sampling, fit, fit_step,
+                       t_star, kappa, bootstrap, active_window, window_threshold, reference_max_step,
+                       max_energy_error, energy_guard)
+    beyond = _beyond(damping_time, kk_gamma, mle, renormalize, deviation_samples)
+    observe = _core.SpreadingObservers()
+    if forces_at is not None:
+        sites = []
+        for s in _core._vector(forces_at, "forces_at"):
+            if s != math.floor(s) or s < 1 or s > chain.N:
+                raise ValueError(f"forces_at {_core._format_number(s)}: outside the chain of {chain.N} beads (1..N)")
+            sites.append(int(s) - 1)
+        observe.force_sites = sites
+    observe.force_samples = _core._size(force_samples, "force_samples", 1, _MAX)
+    observe.map_samples = _core._size(map_samples, "map_samples", 2, _MAX) if energy_map else 0
+    observe.map_stride = _core._size(map_stride, "map_stride", 1, _MAX)
+    observe.spectrum_samples = _core._size(spectrum_samples, "spectrum_samples", 2, _MAX) if spectral_density else 0
+    if spectrum_of not in ("displacement", "velocity"):
+        raise ValueError(f"spectrum_of '{spectrum_of}': displacement or velocity")
+    observe.spectrum_source = getattr(_core.SpectrumSource, spectrum_of)
+    kick = _core.ModeKick()
+    kick.mode, kick.near_khz, kick.energy = mode, mode_khz, energy
+    return SpreadingRun(_core._spreading(chain, ic, choices, beyond, observe, kick, dt is not None,
+                                         _run(progress=progress)))
+
+
+spreading.__doc__ = (
+    "Energy spreading after a single-site kick in one chain (SPEC §4), integrated to T: the spreading "
+    "tool for one realization.\n\n    chain: a granular.Chain (F0 = 0 is the sonic vacuum)\n"
+    "    ic: 'displacement' (u = alpha at the site) | 'velocity' (v = beta at the site) | 'mode' (a "
+    "linear mode of the chain, u = M^-1/2 w from rest: number `mode` 1..N or the one nearest `mode_khz` "
+    "[kHz], total energy `energy` [J] or, without it, largest |u_n| = alpha)\n" + _DYNAMICS_DOC + _BEYOND_DOC +
+    "    deviation_samples: with mle, where the deviation vector sits along the chain (the tool's --deviation) at "
+    "this many uniform times 0..T (0 = none, else >= 2)\n"
+    "    forces_at: beads (from 1) whose force [N] is recorded at force_samples uniform times\n"
+    "    energy_map: record E_n(t) at map_samples uniform times, map_stride beads per column\n"
+    "    spectral_density: g(nu) of u_n(t) (spectrum_of='displacement', the paper's) or of v_n(t) ('velocity') "
+    "sampled at spectrum_samples uniform times\n"
+    "Returns a granular.SpreadingRun: t [s], m2 and m2_centroid (second moments about the kicked bead and about "
+    "the energy centroid [beads^2]), ipr (P^-1 of the energy), energy_error, gamma, eta (the shown values, as the "
+    "tool's JSON) with every report under 'exponents', final_state (u [m], v [m/s], energy [J], force [N] per "
+    "bead), forces, energy_map, spectral_density, dissipated (energy removed by the damping by t [J], at t; None "
+    "without damping), mle (X1(t) [1/s] at t; None without mle), deviation (t [s], site (from 1), share (times x "
+    "beads: the share of |w|^2 = |du|^2 + (t_unit dv)^2, t_unit = 1 us, on each bead, rows summing to 1; "
+    "share.ravel() is the tool's --deviation column) or None), warnings, metadata. Releases the GIL.")
+
+
+def transport(*, disorder="A", N=2501, q=0.5, xi=0.5, F0=10.0, R1=_core.paper_r1, seed=1, realizations=100,
+              ic="displacement", alpha=1e-7, beta=_core.paper_beta, site=None, centre="site", T=1e-2, dt=None,
+              integrator="saba2c", force_law="hertz", samples=100, sampling="log", fit=(4e-3, 1e-2), fit_step=1e-5,
+              t_star=4e-3, kappa=0.1, bootstrap=1000, active_window=True, window_threshold=1e-30,
+              reference_max_step=0.01e-6, max_energy_error=1e-3, energy_guard="stop", profile=False, threads=0,
+              checkpoint=None, resume=False, resume_other_version=False, progress=False, damping_time=0.0,
+              kk_gamma=0.0, mle=False, renormalize=10):
+    recipe = _core.ChainRecipe()
+    recipe.disorder = disorder
+    recipe.q, recipe.xi, recipe.F0, recipe.R1 = q, xi, F0, R1
+    recipe.N = _core._size(N, "N", 2, _MAX)
+    recipe.seed = _core._size(seed, "seed")
+    choices = _choices(alpha, beta, site, centre, T, dt, integrator, force_law, samples, sampling, fit, fit_step,
+                       t_star, kappa, bootstrap, active_window, window_threshold, reference_max_step,
+                       max_energy_error, energy_guard)
+    beyond = _beyond(damping_time, kk_gamma, mle, renormalize)
+    run = _run(threads, checkpoint, resume, resume_other_version, progress)
+    return Transport(_core._transport(recipe, ic, realizations, profile, choices, beyond, dt is not None, run))
+
+
+transport.__doc__ = (
+    "An ensemble of spreading runs: realizations 0..R-1 of seed `seed` of a disordered chain, each "
+    "kicked and integrated to T, averaged and fitted (the spreading tool's --realizations R).\n\n"
+    "    disorder, N, q, xi, F0 [N], R1 [m], seed: the chains, as granular.random_chain's\n"
+    "    realizations: R; ic: 'displacement' | 'velocity'\n" + _DYNAMICS_DOC + _BEYOND_DOC +
+    "    profile: also average the site energies E_n(T)\n"
+    "    threads: worker threads (0: every core); results do not depend on it\n"
+    "    checkpoint: a file logging each finished realization (removed once the run completes); resume=True "
+    "continues an interrupted run from it and gives exactly the uninterrupted result; a checkpoint another "
+    "granular version made is refused unless resume_other_version=True (both are named in metadata)\n"
+    "    progress: draw a progress bar\n"
+    "Returns a granular.Transport: t [s], m2, m2_centroid, ipr, energy_error with their standard errors (_se), "
+    "profile, gamma, eta (with realization errors gamma_real_err, eta_real_err from the bootstrap) and every report "
+    "under 'exponents', mle and mle_se (the mean X1(t) [1/s] over realizations and its standard error; None "
+    "without mle), max_energy_error, reached_walls, realizations, warnings, metadata. Releases the GIL; "
+    "Ctrl-C stops it after the realizations in flight (KeyboardInterrupt), leaving the checkpoint to resume from.")
+
+
+def exponent_table(*, chains=["h", "A", "RDM1", "RDM2"], F0=[10.0, 0.5, 0.1, 0.01, 0.0],  # noqa: B006 (read only)
+                   ic=["displacement", "velocity"], N=2501, xi=0.5, q=0.5, realizations=500, seed=1, alpha=1e-7,
+                   beta=_core.paper_beta, site=None, centre="site", T=1e-2, dt=None, integrator="saba2c",
+                   force_law="hertz", samples=100, sampling="log", fit=(4e-3, 1e-2), fit_step=1e-5, t_star=4e-3,
+                   kappa=0.1, bootstrap=1000, active_window=True, window_threshold=1e-30, reference_max_step=0.01e-6,
+                   max_energy_error=1e-3, energy_guard="stop", profile_F0=[10.0, 0.1, 0.0], profile_realizations=100,
+                   compare_paper=False, threads=0, checkpoint=None, resume=False, resume_other_version=False,
+                   progress=False, damping_time=0.0, kk_gamma=0.0, mle=False, renormalize=10):
+    table = _core.ExponentTableConfig()
+    table.precompressions = _core._numbers(F0, "F0", 0)
+    table.profile_precompressions = [] if profile_F0 is None else _core._numbers(profile_F0, "profile_F0", 0)
+    table.profile_realizations = _core._size(profile_realizations, "profile_realizations")
+    recipe = _core.ChainRecipe()
+    recipe.N = _core._size(N, "N", 2, _MAX)
+    recipe.xi, recipe.q = xi, q
+    recipe.seed = _core._size(seed, "seed")
+    table.base.chain = recipe
+    table.base.realizations = _core._size(realizations, "realizations", 1)
+    choices = _choices(alpha, beta, site, centre, T, dt, integrator, force_law, samples, sampling, fit, fit_step,
+                       t_star, kappa, bootstrap, active_window, window_threshold, reference_max_step,
+                       max_energy_error, energy_guard)
+    beyond = _beyond(damping_time, kk_gamma, mle, renormalize)
+    run = _run(threads, checkpoint, resume, resume_other_version, progress)
+    return ExponentTable(_core._exponent_table(chains, ic, table, choices, beyond, dt is not None,
+                                               compare_paper, run))
+
+
+exponent_table.__doc__ = (
+    "The paper's transport study (the exponents tool): gamma (m2 ~ t^gamma) and eta (P^-1 ~ t^-eta) "
+    "for every chain kind x F0 x kick, each an ensemble of `realizations` (h runs one: it is "
+    "deterministic).\n\n"
+    "    chains: kinds among 'h', 'A', 'RDM1', 'RDM2'; F0: precompressions [N] (0: sonic vacuum); ic: "
+    "kicks\n    N, xi, q, realizations, seed: the chains\n" + _DYNAMICS_DOC + _BEYOND_DOC +
+    "    profile_F0, profile_realizations: F0s whose E_n(T) is averaged, over how many realizations (None: none)\n"
+    "    compare_paper: True (or the path of a table in its format) to compare gamma with the paper's Table I "
+    "(z-scores with both error sources)\n"
+    "    threads (0: every core); checkpoint: a prefix, case i logs to <prefix>.<i> (removed once done); "
+    "resume=True continues an interrupted table (resume_other_version=True: also one another granular version "
+    "made); progress: a progress bar\n"
+    "Returns a granular.ExponentTable: table (the tool's CSV columns as arrays; with mle also mle, mle_real_err, "
+    "mle_sd: the mean X1(T) [1/s], its standard error over realizations, their standard deviation), curves (with "
+    "mle also mle, mle_se: <X1(t)> [1/s] and its standard error), profiles, markdown, paper (the comparison, with "
+    "compare_paper), metadata (with mle, X1(T) under each case's 'mle'). Releases the GIL; Ctrl-C stops it "
+    "resumably (KeyboardInterrupt).")

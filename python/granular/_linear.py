@@ -1,0 +1,124 @@
+"""granular.spectrum, SpectrumSolver, DynamicalMatrix and band_edges: keywords, defaults and docstrings. The
+matrices and solvers are granular._core's (the library's), frequencies in kHz as the tools give them."""
+from . import _core
+import numpy as np
+
+from ._core import DynamicalMatrix
+from ._model import _document, paper_r1, steel
+
+_SELECTION_DOC = """\
+    near, count: the `count` modes nearest `near` [kHz] in frequency (both or neither)
+    window: (lo, hi) [kHz]: every mode with lo <= f <= hi (may be empty)
+"""
+_CONFIG_DOC = """\
+    method: 'lapack' (default) | 'fast' (every mode: eigenvalues + one twisted factorization per mode, ~5x \
+faster, no eigenvectors) | 'bisect' | 'arpack' | 'slepc' (nearest/window)
+    driver: LAPACK driver for every mode: 'stevd' (default) | 'stevr' | 'stemr' | 'steqr'
+    vectors: also return the unit eigenvectors w of D (N x K array, column j = mode j)
+    tolerance: arpack/slepc Ritz tolerance (0: the tightest default)
+    subspace: arpack/slepc Krylov basis size (0: max(2K + 1, 20))
+    lanes: bisect: eigenvectors computed together, 1..64
+"""
+
+_document(DynamicalMatrix, "The symmetric tridiagonal dynamical matrix D = M^(-1/2) K M^(-1/2) [1/s^2] of a chain "
+          "(SPEC §3): eigenvalues omega^2, eigenvectors w; the displacement mode is v = w * inverse_sqrt_mass. "
+          "Arrays are read-only views.\n\nDynamicalMatrix(diagonal, off_diagonal, inverse_sqrt_mass=None): a matrix "
+          "of your own: diagonal (N) and off_diagonal (N-1) [1/s^2], and m^(-1/2) (N) [kg^(-1/2)] for the "
+          "displacement IPRs (default 1: the IPR of w itself). Any 1-D array-likes; NaN/inf are refused.",
+          N="rows", diagonal="D(i, i) = (B_i + B_(i+1)) / m_i [1/s^2], N entries",
+          off_diagonal="D(i, i+1) = -B_(i+1) / sqrt(m_i m_(i+1)) [1/s^2], N-1 entries",
+          inverse_sqrt_mass="m_n^(-1/2) [kg^(-1/2)], N entries")
+
+
+class Spectrum:
+    """Modes of a chain by increasing frequency, as granular.spectrum returns them. Arrays are read-only NumPy views
+    of the result (no copies).
+
+    mode: mode numbers 1..N in the full spectrum (int64); omega2: eigenvalues omega^2 of D [1/s^2]; freq_khz:
+    frequencies f = omega/2pi [kHz]; ipr: displacement IPR sum v^4 / (sum v^2)^2 of each mode, in (0, 1] (1/N:
+    extended, ~1: one bead); residual: per mode |D w - omega^2 w| / max|D_ij| (partial methods; empty for every
+    mode); clustered: per mode, True inside a near-degenerate cluster (relative gap < 1e-10 of max omega^2), whose
+    IPR depends on the basis chosen inside it (bool); vectors: N x K unit eigenvectors w of D (column j: mode j;
+    Fortran order, a view), or None without vectors=True; N: beads of the chain; info: what the solver did (method
+    that ran, fallbacks, restarts, candidates, max_residual, clusters); metadata: the spectrum tool's JSON for this
+    result (clustered, chain, method, solver, selection, band_edges_khz, version; granular::describe_spectrum, as the
+    tool writes it)."""
+
+    def __init__(self, values):
+        self._inverse_sqrt_mass = values.pop("inverse_sqrt_mass")
+        self.__dict__.update(values)
+        self.clustered = self.clustered.astype(bool)
+
+    def displacements(self):
+        """N x K displacement modes v = w * m^(-1/2) [kg^(-1/2)] (column j: mode j), or None without vectors"""
+        if self.vectors is None:
+            return None
+        return np.ascontiguousarray(self.vectors * self._inverse_sqrt_mass[:, None])
+
+    def __len__(self):
+        return len(self.freq_khz)
+
+    def __repr__(self):
+        return f"<granular.Spectrum {len(self)} of {self.N} modes, {self.info['method']}>"
+
+
+class SpectrumSolver(_core._SpectrumSolver):
+    __doc__ = ("A spectrum solver that keeps its workspaces between calls: for loops over many chains of one size "
+               "(what the IPR map does per thread). solve() gives exactly what granular.spectrum gives.\n\n"
+               "SpectrumSolver(*, method='lapack', driver='stevd', vectors=False, tolerance=0.0, subspace=0, "
+               "lanes=8): keywords as granular.spectrum's:\n" + _CONFIG_DOC)
+
+    def solve(self, system, *, near=None, count=None, window=None):
+        """The selected modes of a granular.Chain or granular.DynamicalMatrix (near, count / window as
+        granular.spectrum's). Returns a granular.Spectrum."""
+        return Spectrum(self._solve(system, near, count, window))
+
+def dynamical_matrix(chain):
+    """The dynamical matrix of a chain (ValueError naming F0 at F0 = 0: the sonic vacuum has no linear limit)."""
+    return _core._dynamical_matrix(chain)
+
+
+def frequency_khz(omega2):
+    """Frequency f = omega/2pi [kHz] of eigenvalues omega^2 [1/s^2] (a number or an array)."""
+    return _core._frequency_khz(omega2)
+
+
+def omega2_of_khz(khz):
+    """omega^2 [1/s^2] of frequencies in kHz (a number or an array)."""
+    return _core._omega2_of_khz(khz)
+
+
+def spectrum(system, *, near=None, count=None, window=None, method="lapack", driver="stevd", vectors=False,
+             tolerance=0.0, subspace=0, lanes=8):
+    return Spectrum(_core._spectrum(system, near, count, window, method, driver, vectors, tolerance, subspace, lanes))
+
+
+spectrum.__doc__ = (
+    "The linear spectrum of a granular.Chain or granular.DynamicalMatrix (SPEC §3), as the spectrum tool computes "
+    "it: every mode by default, or\n" + _SELECTION_DOC + _CONFIG_DOC +
+    "Returns a granular.Spectrum (mode, freq_khz [kHz], ipr, omega2 [1/s^2], residual, vectors; info, metadata). "
+    "Releases the GIL while it solves. ValueError names the keyword of a bad value; granular.NumericalError when "
+    "every solver failed.")
+
+
+class BandEdges:
+    """Analytic cut-off frequencies of the ordered chains [kHz] (SPEC §3): f1, f2 the tops of the monatomic chains
+    of type-1 and type-2 beads; fb1 the diatomic acoustic band top, fb2 and fb3 the optical band's bottom and top."""
+
+    __slots__ = ("f1", "f2", "fb1", "fb2", "fb3")
+
+    def __init__(self, f1, f2, fb1, fb2, fb3):
+        self.f1, self.f2, self.fb1, self.fb2, self.fb3 = f1, f2, fb1, fb2, fb3
+
+    def as_dict(self):
+        """{'f1': ..., 'f2': ..., 'fb1': ..., 'fb2': ..., 'fb3': ...} in kHz (the tools' band_edges_khz)"""
+        return {name: getattr(self, name) for name in self.__slots__}
+
+    def __repr__(self):
+        values = ", ".join(f"{name}={_core._format_number(getattr(self, name))}" for name in self.__slots__)
+        return f"BandEdges({values}) [kHz]"
+
+
+def band_edges(xi=0.5, F0=10.0, R1=paper_r1, material=steel):
+    """Band edges [kHz] of beads of radius R1 [m] and xi*R1 of one material under precompression F0 > 0 [N]."""
+    return BandEdges(*_core._band_edges(xi, F0, R1, material))

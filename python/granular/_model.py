@@ -1,0 +1,163 @@
+"""granular.Material, granular.Chain and the ways of making one; the contact law; bead-type correlations of one
+chain: keywords (the tools' option names and units: N, q, xi, seed, realization, F0 [N], R1 [m]), defaults and
+docstrings. The values are checked and the chains built by granular._core, with the library's rules."""
+from . import _core
+from ._core import Chain, FpuCoefficients, Material, flat_wall, paper_r1, steel
+
+
+def _document(cls, doc, **properties):
+    """Sets the docstrings of a class of granular._core and of its properties."""
+    cls.__doc__ = doc
+    for name, text in properties.items():
+        getattr(cls, "__dict__")[name].__doc__ = text
+
+
+_document(Material, "Elastic material of beads and walls, SI units.\n\nMaterial(young, poisson, density): young: "
+          "Young modulus E [Pa]; poisson: Poisson ratio nu [-]; density: rho [kg/m^3]. Defaults: the paper's "
+          "stainless steel.", young="Young modulus E [Pa]", poisson="Poisson ratio nu [-]",
+          density="mass density rho [kg/m^3]")
+_document(Chain, "A chain of N beads between two flat walls under a static precompression F0 (SPEC §1).\n\n"
+          "Beads are indexed 0..N-1 here (bead n+1 of the tools' files); bonds 0..N, bond k joining bead k-1 and "
+          "bead k (bond 0 and bond N touch the walls). The arrays are read-only views.\n"
+          "Make one with granular.anderson/rdm1/rdm2/homogeneous/diatomic, random_chain, from_types or from_radii.",
+          N="number of beads", radius="bead radii R_n [m], N entries",
+          mass="bead masses m_n = rho (4/3) pi R_n^3 [kg], N entries", inverse_mass="1/m_n [1/kg], N entries",
+          contact="Hertz contact coefficients A_k [N/m^(3/2)] of the N+1 bonds (walls included)",
+          overlap="static overlaps Delta_k = (F0/A_k)^(2/3) [m] of the N+1 bonds", F0="static precompression [N]",
+          types="bead types (1 or 2) as a uint8 array, or None for a chain built from radii",
+          metadata="the chain as the tools describe it in their JSON ('chain' entry): F0_N, R1_m, xi, disorder, q, "
+          "seed, realization, N, material, walls")
+_document(FpuCoefficients, "Taylor coefficients of the Hertz force about the precompressed state: "
+          "F(x) ~ b1 x + b2 x^2 + b3 x^3 (the FPU chain).", b1="(3/2) A^(2/3) F0^(1/3) [N/m]",
+          b2="(3/8) A^(4/3) F0^(-1/3) [N/m^2]", b3="-(3/48) A^2 F0^(-1) [N/m^3]",
+          modulational_discriminant="3 b1 b3 - 4 b2^2 [N^2/m^4]: band-edge waves are modulationally unstable only "
+          "if > 0 (always negative for Hertz)")
+
+_CHAIN_KEYWORDS = """
+
+Keywords (as the tools' options):
+    N: beads (>= 2)
+    q: probability of a type-1 bead (A), of dimer 11 (RDM1) or of dimer 12 (RDM2), in [0, 1]
+    xi: size ratio R2/R1 in (0, 1]
+    seed, realization: realization r of seed s is always the same chain (any machine, any thread)
+    F0: static precompression [N], >= 0 (0: the sonic vacuum, no linear spectrum)
+    R1: radius of type-1 beads [m]; type 2 has xi*R1
+    material: granular.Material of beads and walls (default granular.steel)
+Returns a granular.Chain. Raises ValueError naming the keyword when a value is out of range."""
+
+
+def random_chain(disorder="A", N=100, q=0.5, xi=0.5, seed=1, realization=0, F0=10.0, R1=paper_r1, material=steel):
+    return _core._random_chain(disorder, N, q, xi, seed, realization, F0, R1, material)
+
+
+def anderson(N=100, q=0.5, xi=0.5, seed=1, realization=0, F0=10.0, R1=paper_r1, material=steel):
+    return _core._random_chain("A", N, q, xi, seed, realization, F0, R1, material)
+
+
+def rdm1(N=100, q=0.5, xi=0.5, seed=1, realization=0, F0=10.0, R1=paper_r1, material=steel):
+    return _core._random_chain("RDM1", N, q, xi, seed, realization, F0, R1, material)
+
+
+def rdm2(N=100, q=0.5, xi=0.5, seed=1, realization=0, F0=10.0, R1=paper_r1, material=steel):
+    return _core._random_chain("RDM2", N, q, xi, seed, realization, F0, R1, material)
+
+
+def homogeneous(N=100, q=0.5, xi=0.5, seed=1, realization=0, F0=10.0, R1=paper_r1, material=steel):
+    return _core._random_chain("h", N, q, xi, seed, realization, F0, R1, material)
+
+
+random_chain.__doc__ = ("Realization `realization` of seed `seed` of a disorder kind: disorder = 'h' | 'A' | 'RDM1' | "
+                        "'RDM2' (the tools' --disorder)." + _CHAIN_KEYWORDS)
+anderson.__doc__ = "An Anderson-like chain: each bead type 1 with probability q." + _CHAIN_KEYWORDS
+rdm1.__doc__ = ("A random-dimer chain RDM1: each dimer '1 1' with probability q, else '2 2' (odd N: the last bead of "
+                "the last dimer is dropped)." + _CHAIN_KEYWORDS)
+rdm2.__doc__ = "A random-dimer chain RDM2: each dimer '1 2' with probability q, else '2 1'." + _CHAIN_KEYWORDS
+homogeneous.__doc__ = "N type-1 beads (q, xi, seed and realization do not matter)." + _CHAIN_KEYWORDS
+
+
+def diatomic(N=100, xi=0.5, F0=10.0, R1=paper_r1, material=steel):
+    """Alternating types 1, 2, 1, 2, ...: the ordered chain whose band edges fb1, fb2, fb3 granular.band_edges
+    gives. N beads, xi = R2/R1 in (0, 1], F0 [N], R1 [m]."""
+    return _core._diatomic(N, xi, F0, R1, material)
+
+
+def from_types(types, xi=0.5, F0=10.0, R1=paper_r1, material=steel):
+    """A chain of given bead types: `types` is any array-like of 1 and 2 (type 1 has radius R1 [m], type 2 xi*R1),
+    as a --config file holds them. F0 [N]."""
+    return _core._from_types(types, xi, F0, R1, material)
+
+
+def from_radii(radii, F0=10.0, material=steel):
+    """A chain of beads of given radii [m] (any 1-D array-like, each finite and > 0) of one material, between flat
+    walls of the same material, under precompression F0 [N]."""
+    return _core._from_radii(radii, F0, material)
+
+
+def configuration(disorder="A", q=0.5, N=100, seed=1, realization=0):
+    """The bead types (uint8 array of 1 and 2) of realization `realization` of seed `seed`: what random_chain builds
+    its chain from. All xi of one (disorder, q, N, seed, realization) share it."""
+    return _core._configuration(disorder, q, N, seed, realization)
+
+
+def _readable(path):
+    """OSError (FileNotFoundError, PermissionError, ...) naming the file when it cannot be opened: the library
+    reports an unreadable input file as bad input (the tools' exit code 2), Python as a file error."""
+    if isinstance(path, str):
+        with open(path):
+            pass
+    return path
+
+
+def read_types(path):
+    """Bead types from a text file with one type (1 or 2) per line, '#' comments (the tools' --config). Raises
+    OSError when it cannot be read, ValueError on a bad line."""
+    return _core._read_types(_readable(path))
+
+
+def read_radii(path):
+    """Radii [m] from a text file with one radius per line, '#' comments (the tools' --radii)."""
+    return _core._read_radii(_readable(path))
+
+
+def hertz_coefficient(radius_a, radius_b=flat_wall, material_a=steel, material_b=steel):
+    """Hertz contact coefficient A [N/m^(3/2)] of two bodies of radii radius_a, radius_b [m] (force A delta^(3/2) at
+    overlap delta); granular.flat_wall (infinity) for a flat wall."""
+    if not (radius_a > 0) or not (radius_b > 0):
+        raise ValueError(f"{'radius_b' if radius_a > 0 else 'radius_a'}: must be > 0 [m] (granular.flat_wall for a "
+                         "wall)")
+    return _core._hertz_coefficient(radius_a, radius_b, material_a, material_b)
+
+
+def static_overlap(contact, F0):
+    """Static overlap Delta = (F0/A)^(2/3) [m] of a bond with coefficient A [N/m^(3/2)] under precompression F0
+    [N]."""
+    return _core._static_overlap(_core._finite(contact, "contact"), _core._finite(F0, "F0"))
+
+
+def linear_stiffness(contact, F0):
+    """Linear stiffness B = (3/2) A^(2/3) F0^(1/3) [N/m] of a bond with coefficient A [N/m^(3/2)] at F0 [N]."""
+    return _core._linear_stiffness(_core._finite(contact, "contact"), _core._finite(F0, "F0"))
+
+
+def fpu_coefficients(contact, F0):
+    """FPU coefficients b1, b2, b3 of a bond with coefficient A [N/m^(3/2)] at F0 [N] (both > 0)."""
+    return _core._fpu_coefficients(contact, F0)
+
+
+def nonlinearity_ratio(alpha, contact, F0):
+    """epsilon = |alpha|/Delta: a displacement kick alpha [m] relative to the static overlap of a bond with
+    coefficient A [N/m^(3/2)] at F0 [N]; infinite at F0 = 0 (no linear limit)."""
+    return _core._nonlinearity_ratio(_core._finite(alpha, "alpha"), _core._finite(contact, "contact"),
+                                     _core._finite(F0, "F0"))
+
+
+def cyclic_correlation(types, max_distance=10):
+    """Pearson coefficient rho(d), d = 0..max_distance (< N), of the bead types (type 1 -> 0, type 2 -> 1) with their
+    cyclic shift by d; `types` is a granular.Chain or an array of 1 and 2. NaN when the chain has one type only."""
+    return _core._cyclic_correlation(types, max_distance)
+
+
+def correlation_theory(disorder, q, distance):
+    """Infinite-chain rho(d) of a disorder kind at probability q, for one distance or an array of distances [beads];
+    NaN where undefined (h; A at q in {0, 1})."""
+    return _core._correlation_theory(disorder, q, distance)

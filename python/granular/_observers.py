@@ -1,0 +1,47 @@
+"""The dynamics as the library has it: an initial state, granular.spread() -- which owns time and the integrator
+-- and observers that measure the run. The classes are granular._core's; their docstrings and the keywords of
+spread() and the kicks are here. Beads are 0-based, as in granular.Chain's arrays."""
+from . import _core
+from ._core import EnergyMap, EnergySpread, FinalState, Forces, Observer, RunPlan, Snapshot, SpectralDensity, State
+from ._model import _document
+
+_document(State, "A phase-space state: u [m] and v [m/s] of every bead (0-based), walls excluded.")
+_document(RunPlan, "What an observer learns before the run.", total_steps="T / dt", time_step="dt [s]",
+          duration="T [s]")
+_document(Snapshot, "The chain at one observed time (a copy: it may be kept).", t="[s]", u="displacements [m] (a copy)",
+          v="velocities [m/s] (a copy)", energy="site energies E_n [J] (a copy)", initial_energy="H(0) [J]")
+_document(Observer, "Derive from it to measure a run: schedule(plan) returns the steps (0..plan.total_steps) to look "
+          "at, observe(snapshot) is called at each, finish(snapshot) once at T. Call super().__init__().")
+_document(EnergySpread, "m2 about the kicked bead (the paper's) and about the energy centroid [beads^2], P^-1 and the "
+          "relative energy error at log-spaced (or uniform) times, with a dense grid `fit` = (start, stop) [s] every "
+          "fit_step; the energy guard stops the run (energy_guard='stop') or records it ('warn').\n\n"
+          "EnergySpread(*, samples=100, sampling='log', site=None, fit=None, fit_step=1e-05, max_energy_error=0.001, "
+          "energy_guard='stop', wall_warning=1e-10)")
+_document(Forces, "The force [N] on beads `at` (0-based) at `samples` uniform times 0..T.\n\n"
+          "Forces(at, *, samples=1000)", force="[site][sample] [N]")
+_document(EnergyMap, "E_n(t) [J] at `samples` uniform times, `stride` beads summed per column.\n\n"
+          "EnergyMap(*, samples=500, stride=1)", energy="[time][column] [J]")
+_document(SpectralDensity, "g(nu) of u_n(t) (of_='displacement', the paper's) or v_n(t) at `samples` uniform times."
+          "\n\nSpectralDensity(*, samples=2000, of='displacement')")
+_document(FinalState, "The state at T with its site energies and bead forces.")
+
+
+def displacement_kick(chain, site, alpha=1e-7):
+    """u_n = alpha at bead `site` (0-based), the rest at rest: the paper's displacement kick [m]."""
+    return _core._displacement_kick(chain, site, alpha)
+
+
+def velocity_kick(chain, site, beta=8e-3):
+    """v_n = beta at bead `site` (0-based), the rest at rest: the paper's velocity kick [m/s]."""
+    return _core._velocity_kick(chain, site, beta)
+
+
+def spread(chain, initial, observers=[], *, T=1e-2, dt=1e-6, integrator="saba2c",  # noqa: B006 (read only)
+           force_law="hertz", active_window=True, window_threshold=1e-30, reference_max_step=0.01e-6):
+    """Integrates `chain` from `initial` (a granular.State, e.g. granular.velocity_kick(chain, site, 8e-3)) to T [s]
+    with steps dt [s], calling each observer at the steps it scheduled; the observers keep what they measured.
+        integrator: 'saba2c' | 'saba2' | 'aba864' | 'srkn14a' | 'reference'; force_law: 'hertz' | 'fpu' | 'linear'
+    Returns a dict: initial_energy [J], steps, bond_updates, window (final active beads [begin, end)), seconds.
+    Releases the GIL (Python observers take it when called)."""
+    return _core._spread(chain, initial, observers, T, dt, integrator, force_law, active_window, window_threshold,
+                         reference_max_step)

@@ -1,0 +1,185 @@
+"""granular.ipr_map, granular.localization and granular.correlations: keywords, defaults, docstrings and
+result classes. Each fills the library's study config (granular._core.IprMapConfig, ChainRecipe,
+CorrelationConfig; C++ defaults) and makes one call to granular._core, which runs the study as the
+tool does and returns its arrays and the tool's JSON."""
+import math
+
+import numpy as np
+
+from . import _core
+from ._dynamics import _run
+
+_MAX = 100000000
+
+
+class IprMap:
+    """The result of granular.ipr_map. Every mode: freq_khz and ipr are (len(q), len(xi), N) arrays of means
+    over the realizations (mode k at index k-1). With near/count or window: one entry per selected mode of
+    every realization (see rows())."""
+
+    def __init__(self, values):
+        self._cells = values.pop("cells")
+        self.disorder = values["disorder"]  # h | A | RDM1 | RDM2
+        self.q, self.xi, self.N = values["q"], values["xi"], values["N"]  # the q grid, the xi grid (R2/R1), beads
+        self.selection = values["selection"]  # True when made with near/count or window
+        self.bin_khz = values["bin_khz"]  # width of the frequency bins [kHz] (0: averaged by mode number)
+        # the ipr-map tool's JSON: parameters (disorder, xi, q, N, F0_N, R1_m, material, walls, realizations,
+        # seed, threads, solver), averaging and bin_khz or selection, clustered, version
+        # (granular::describe_ipr_map, as the tool writes it)
+        self.metadata = values["metadata"]
+
+    def _gather(self, field):
+        out = np.concatenate([c[field] for c in self._cells]) if self._cells else np.empty(0)
+        return out if self.selection else out.reshape(len(self.q), len(self.xi), self.N)
+
+    @property
+    def freq_khz(self):
+        """mean mode frequencies [kHz], (len(q), len(xi), N); with a selection, one per row"""
+        return self._gather("freq_khz")
+
+    @property
+    def ipr(self):
+        """mean displacement IPRs, (len(q), len(xi), N); with a selection, one per row"""
+        return self._gather("ipr")
+
+    def rows(self):
+        """The ipr-map tool's CSV columns as arrays: q, xi, [realization,] mode, freq_khz [kHz], ipr (one row per
+        (q, xi, mode), or per selected mode of each realization); with bin_khz > 0: q, xi, freq_lo_khz,
+        freq_hi_khz, modes (of all realizations in the bin), ipr (their mean; NaN for an empty bin)"""
+        cells = self._cells
+
+        def join(parts, dtype=float):
+            return np.concatenate(parts).astype(dtype) if parts else np.empty(0, dtype)
+
+        if self.bin_khz > 0 and not self.selection:  # frequency bins: the tool's binned CSV
+            counts = [len(c["bin_modes"]) for c in cells]
+            bins = [np.arange(n, dtype=float) for n in counts]
+            return {"q": join([np.full(n, c["q"]) for n, c in zip(counts, cells)]),
+                    "xi": join([np.full(n, c["xi"]) for n, c in zip(counts, cells)]),
+                    "freq_lo_khz": join([b * self.bin_khz for b in bins]),
+                    "freq_hi_khz": join([(b + 1) * self.bin_khz for b in bins]),
+                    "modes": join([c["bin_modes"] for c in cells], np.int64),
+                    "ipr": join([c["bin_ipr"] for c in cells])}
+        counts = [len(c["freq_khz"]) for c in cells]
+        d = {"q": join([np.full(n, c["q"]) for n, c in zip(counts, cells)]),
+             "xi": join([np.full(n, c["xi"]) for n, c in zip(counts, cells)])}
+        if self.selection:
+            d["realization"] = join([c["realization"] for c in cells], np.int64)
+            d["mode"] = join([c["mode"] for c in cells], np.int64)
+        else:
+            d["mode"] = join([np.arange(1, n + 1) for n in counts], np.int64)
+        d["freq_khz"] = join([c["freq_khz"] for c in cells])
+        d["ipr"] = join([c["ipr"] for c in cells])
+        return d
+
+    def __repr__(self):
+        return f"<granular.IprMap {self.disorder}, {len(self.q)} q x {len(self.xi)} xi, N={self.N}>"
+
+
+def ipr_map(*, disorder="A", xi="0.1:1", q="0.2,0.5,0.8", N=100, F0=10.0, R1=_core.paper_r1, realizations=100, seed=1,
+            solver="fast", near=None, count=None, window=None, method=None, bin_khz=0.0, threads=0, progress=False):
+    """Mean frequency [kHz] and displacement IPR of every mode of disordered chains over realizations, on a (q, xi)
+    grid: the paper's IPR map, as the ipr-map tool computes it (same numbers for the same keywords).
+
+    disorder: 'h' | 'A' | 'RDM1' | 'RDM2'
+    xi, q: size ratios R2/R1 in (0, 1] and probabilities in [0, 1]: sequences, numbers, or the tools' range
+        strings ('0.1:1' = 0.1, 0.11, ..., 1; '0.1:1:0.05'; '0.2,0.5,0.8')
+    N: beads per chain; F0: precompression [N] (> 0); R1: type-1 radius [m]
+    realizations, seed: chains averaged per cell; realization r of seed s is always the same chain, and all xi of
+        one q share the bead sequences
+    solver: 'fast' (default) | 'lapack' | 'lapack-stevr' | 'lapack-stemr' | 'lapack-stevd' | 'lapack-steqr'
+    near, count / window: partial spectra (every selected mode of every realization, not averaged) by
+        method = 'lapack' | 'bisect' | 'arpack'
+    bin_khz: W > 0 averages every mode in frequency bins [k W, (k+1) W) [kHz] instead of by mode number (see
+        IprMap.rows())
+    threads: worker threads (0: every core); the result does not depend on it
+    progress: draw a progress bar on stderr
+    Returns a granular.IprMap. Releases the GIL; Ctrl-C stops it (KeyboardInterrupt) after the cell in flight."""
+    c = _core.IprMapConfig()
+    recipe = _core.ChainRecipe()
+    recipe.disorder = disorder
+    c.xi_values = _core._numbers(xi, "xi", 0.01)
+    c.q_values = _core._numbers(q, "q", 0.1)
+    recipe.N = _core._size(N, "N", 2, _MAX)
+    recipe.F0, recipe.R1 = F0, R1
+    c.realizations = _core._size(realizations, "realizations", 1)
+    recipe.seed = _core._size(seed, "seed")
+    c.chain = recipe
+    c.bin_khz = bin_khz
+    return IprMap(_core._ipr_map(c, solver, near, count, window, method, _run(threads, progress=progress)))
+
+
+class Localization:
+    """The result of granular.localization: per frequency the transfer-matrix Lyapunov exponent, the localization
+    length and the density of states (the localization tool's columns).
+
+    freq_khz: frequencies f [kHz]; lyapunov: lambda = (1/N) ln ||(u_(N+1), u_N)|| [1/bead], the inverse
+    localization length; lyapunov_err: its standard error from the chain's segments [1/bead]; loc_length: 1/lambda
+    [beads], inf where lambda <= 0 (inside a band); resolved: True where loc_length is a measurement, False where
+    it is only a bound of order N (the rule: metadata['resolved_rule']); modes_below: eigenfrequencies of the
+    finite chain below f (exact node counts); idos: integrated density of states, modes below f per bead; dos:
+    d idos / df [1/(bead kHz)] (one frequency: from counts at f -/+ 0.005 kHz); N: beads of the chain; metadata:
+    the localization tool's JSON (chain, parameters, columns, band_edges_khz, version)."""
+
+    def __init__(self, values):
+        self.__dict__.update(values)
+        self.resolved = self.resolved.astype(bool)
+
+
+def localization(chain=None, *, disorder="A", N=1000000, q=0.5, xi=0.5, seed=1, realization=0, F0=10.0,
+                 R1=_core.paper_r1, f="0:50:0.01", segments=32, threads=0, progress=False):
+    """Localization length and density of states of one long chain by transfer matrices (SPEC §3, 'Infinite
+    chains'): the localization tool.
+
+    chain: a granular.Chain; or None and a random realization (disorder, N, q, xi, seed, realization, F0 [N],
+        R1 [m]) drawn a piece at a time, so N = 1e8 needs no more memory than N = 100
+    f: frequencies [kHz], increasing: a sequence or the tools' range string ('0:50:0.01')
+    segments: chain pieces whose exponents give lyapunov_err (2 ... 1e6)
+    threads: workers over blocks of frequencies (0: every core); results do not depend on it
+    Returns a granular.Localization (freq_khz, lyapunov [1/bead], lyapunov_err, loc_length [beads], modes_below,
+    idos, dos, metadata). Releases the GIL; Ctrl-C stops it."""
+    recipe = _core.ChainRecipe()
+    r = 0
+    if chain is None:
+        n = float(N)
+        if not (n >= 2) or not (n <= 1e12) or n != math.floor(n):
+            raise ValueError(f"N {_core._format_number(n)}: must be a whole number of beads in [2, 1e12]")
+        recipe.disorder = disorder
+        recipe.N, recipe.q, recipe.xi, recipe.F0, recipe.R1 = int(n), q, xi, F0, R1
+        recipe.seed = _core._size(seed, "seed")
+        r = _core._size(realization, "realization")
+    return Localization(_core._localization(chain, recipe, r, f, segments, _run(threads, progress=progress)))
+
+
+class Correlations:
+    """The result of granular.correlations: rho(d) for d = 0..max_distance over realizations, with the
+    infinite-chain formula.
+
+    distance: d = 0..max_distance [beads]; rho_mean: ensemble mean of rho(d); rho_std: sample standard deviation
+    of rho(d) over the realizations; rho_theory: infinite-chain rho(d) (NaN where undefined); used: realizations
+    with both bead types (one-type chains have no rho and are skipped); metadata: the correlations tool's JSON
+    (parameters, correlated, realizations_used, version)."""
+
+    def __init__(self, values):
+        self.__dict__.update(values)
+        self.distance = np.arange(len(self.rho_mean), dtype=np.int64)
+
+
+def correlations(*, disorder="A", q=0.5, N=100, realizations=100, seed=1, max_distance=10, threads=0,
+                 progress=False):
+    """Ensemble mean and spread of the Pearson coefficient rho(d) of bead types (type 1 -> 0, type 2 -> 1) with
+    their cyclic shift by d, beside the infinite-chain formula: the correlations tool.
+
+    disorder: 'A' | 'RDM1' | 'RDM2'; q in [0, 1]; N beads; realizations, seed; max_distance < N
+    threads: worker threads (0: every core); progress: draw a progress bar
+    Returns a granular.Correlations (distance, rho_mean, rho_std, rho_theory, used, metadata)."""
+    c = _core.CorrelationConfig()
+    recipe = _core.ChainRecipe()
+    recipe.disorder = disorder
+    recipe.q = q
+    recipe.N = _core._size(N, "N", 2, _MAX)
+    c.realizations = _core._size(realizations, "realizations", 1)
+    recipe.seed = _core._size(seed, "seed")
+    c.chain = recipe
+    c.max_distance = _core._size(max_distance, "max_distance")
+    return Correlations(_core._correlations(c, _run(threads, progress=progress)))
