@@ -9,11 +9,11 @@
 #include <string>
 
 #include "bindings.hpp"
-#include "granular/code_identity.hpp"
 #include "granular/ensemble/checkpoint_log.hpp"
 #include "granular/error.hpp"
 #include "granular/parallel/mpi_context.hpp"
 #include "granular/study/chain_length_rule.hpp"
+#include "granular/study/exponent_files.hpp"
 #include "granular/study/exponent_table.hpp"
 #include "granular/study/paper_comparison.hpp"
 #include "granular/study/scheme_choice.hpp"
@@ -32,16 +32,6 @@ bool apply_choices(TransportChoices choices, const BeyondChoices& beyond, Transp
   granular::apply(choices, c);
   granular::apply(beyond, c.dynamics);
   return automatic;
-}
-
-/// The exponents as the tools' JSON carries them: gamma, gamma_err, gamma_real_err, eta, eta_err,
-/// eta_real_err, power_law (all None without a fit), m2_centre and every report under "exponents".
-nlohmann::json exponent_keys(const std::optional<TransportExponents>& e, SpreadCentre centre) {
-  nlohmann::json out;
-  for (const char* key : {"gamma", "gamma_err", "gamma_real_err", "eta", "eta_err", "eta_real_err", "power_law"})
-    out[key] = nullptr;
-  if (e) out.update(to_json(*e, centre));
-  return out;
 }
 
 py::object csv_text(const std::function<void(std::ostream&)>& write) {
@@ -108,12 +98,9 @@ py::dict spreading(const PyChain& chain, const std::string& ic, const TransportC
 
   const nlohmann::json& described = chain.description;
   nlohmann::json meta = metadata_head("spreading");
-  meta["parameters"] = describe(c);
-  meta["parameters"]["chain"] = described;
-  if (c.kick == Kick::velocity) meta["parameters"]["beta_m_s"] = kicked.beta;  // the β used
-  if (c.kick == Kick::mode) meta["parameters"]["mode_used"] = to_json(kicked.mode);
+  meta["parameters"] = describe_parameters(c, described, kicked, false);
   meta["seed"] = c.chain.seed;
-  const nlohmann::json fitted = exponent_keys(exponents, c.centre);
+  const nlohmann::json fitted = describe_exponents(exponents, c.centre);
   meta.update(fitted);
   meta["time_step_rule"] = step_rule;
   meta["run"] = describe_run(r, described.value("realization", nlohmann::json(0)));
@@ -204,14 +191,10 @@ py::dict transport(const ChainRecipe& recipe, const std::string& ic, long long r
   if (!log.empty()) CheckpointLog::remove_all(log);  // finished: the result is in memory, as the tool's in files
 
   nlohmann::json meta = metadata_head("transport");
-  meta["parameters"] = describe(c);
-  meta["parameters"]["chain"] = describe(c.chain, 0);
-  if (c.kick == Kick::velocity && !c.match_beta) meta["parameters"]["beta_m_s"] = first.beta;
+  meta["parameters"] = describe_parameters(c, describe(c.chain, 0), first, true);
   meta["seed"] = c.chain.seed;
-  if (!made_by.empty())
-    meta["resumed_checkpoint"] = {{"made_by", made_by},
-                                  {"resumed_by", std::string(code_version()) + " (commit " + code_commit() + ")"}};
-  const nlohmann::json fitted = exponent_keys(s.exponents, c.centre);
+  if (!made_by.empty()) meta["resumed_checkpoint"] = {{"made_by", made_by}, {"resumed_by", CheckpointLog::this_code()}};
+  const nlohmann::json fitted = describe_exponents(s.exponents, c.centre);
   meta.update(fitted);
   meta["ensemble"] = {{"realizations", s.realizations},
                       {"threads", thread_request},
@@ -299,20 +282,9 @@ py::dict exponent_table(const std::vector<std::string>& chains, const std::vecto
     cells = run_exponent_table(config, run);
   });
   if (!prefix.empty())
-    for (std::size_t i = 0; i < cells.size(); ++i) CheckpointLog::remove_all(prefix + "." + std::to_string(i));
+    for (const std::string& log : case_checkpoints(prefix, cells.size())) CheckpointLog::remove_all(log);
 
-  nlohmann::json described = nlohmann::json::array();
-  for (const auto& c : cells) {
-    nlohmann::json one = describe(c.definition);
-    one["failed_excluded"] = c.summary.excluded;
-    if (c.summary.exponents)
-      one["exponents"] = {{"gamma_site", to_json(c.summary.exponents->gamma_site)},
-                          {"gamma_centroid", to_json(c.summary.exponents->gamma_centroid)},
-                          {"eta", to_json(c.summary.exponents->eta)}};
-    if (!c.summary.mle.mean.empty()) one["mle"] = to_json(mle_at_end(c.summary));  // X1(T), as the tool
-    one["chain"] = chain_name(c);                                                  // as the exponents tool names it
-    described.push_back(one);
-  }
+  const nlohmann::json described = describe_cells(cells);
   std::string chain_list, kick_list;
   for (const auto& name : chains) chain_list += (chain_list.empty() ? "" : ",") + name;
   for (const auto& name : ic) kick_list += (kick_list.empty() ? "" : ",") + name;

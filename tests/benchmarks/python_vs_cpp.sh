@@ -53,19 +53,7 @@ printf "the Python call alone %.3f s (%+.1f %%)\n" "$call" "$(awk -v a="$call" -
 # --- 2. a loop of small spectrum calls -----------------------------------------------------------
 for n in $sizes; do
   cpp=$("$build/benchmarks/spectrum_loop" "$n" "$count" "$repeats" | cut -d' ' -f1)
-  py=$("$python" - "$n" "$count" "$repeats" <<'PY'
-import sys, time
-import granular as gr
-n, count, repeats = map(int, sys.argv[1:])
-seconds = []
-for _ in range(repeats):
-    start = time.perf_counter()
-    for i in range(count):
-        gr.spectrum(gr.anderson(N=n, realization=i))
-    seconds.append(time.perf_counter() - start)
-print(sorted(seconds)[len(seconds) // 2])
-PY
-)
+  py=$("$python" "$root/tests/benchmarks/spectrum_loop.py" "$n" "$count" "$repeats")
   printf "%d spectrum calls, N = %d (median of %d): C++ %.4f s, Python %.4f s (%.2fx)\n" \
     "$count" "$n" "$repeats" "$cpp" "$py" "$(awk -v a="$py" -v b="$cpp" 'BEGIN {print a / b}')"
 done

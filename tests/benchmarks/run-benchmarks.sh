@@ -220,19 +220,7 @@ if [[ -e $build/python/granular/__init__.py && -x $build/benchmarks/spectrum_loo
   say "" "| $count spectrum calls on new chains | C++ (spectrum_loop) [s] | Python [s] | ratio |" "|---|---|---|---|"
   for n in 20 100; do
     cpp=$("$build/benchmarks/spectrum_loop" "$n" "$count" "$repeats" | cut -d' ' -f1)
-    pys=$(PYTHONPATH=$build/python "$py" - "$n" "$count" "$repeats" <<'PY'
-import sys, time
-import granular as gr
-n, count, repeats = map(int, sys.argv[1:])
-seconds = []
-for _ in range(repeats):
-    start = time.perf_counter()
-    for i in range(count):
-        gr.spectrum(gr.anderson(N=n, realization=i))
-    seconds.append(time.perf_counter() - start)
-print(sorted(seconds)[len(seconds) // 2])
-PY
-)
+    pys=$(PYTHONPATH=$build/python "$py" "$root/tests/benchmarks/spectrum_loop.py" "$n" "$count" "$repeats")
     say "| N = $n | $cpp | $pys | $(awk -v a="$pys" -v b="$cpp" 'BEGIN {printf "%.2fx", a / b}') |"
   done
 else missing "the Python module or benchmarks/spectrum_loop"; fi

@@ -63,36 +63,45 @@ IprMapConfig one_cell_if_distributed(const IprMapConfig& c) {
   return out;
 }
 
+/// The (q, ξ) grid in table order: every realization's bead types drawn once per q (in parallel),
+/// then one `cell(q, xi, types)` per ξ; Cancelled between cells when run.cancelled says so.
+template <class CellOf>
+std::vector<IprMapCell> over_grid(const IprMapConfig& c, int threads, const RunOptions& run, CellOf&& cell) {
+  std::vector<Configuration> types(c.realizations);
+  std::vector<IprMapCell> cells;
+  for (double q : c.q_values) {
+    parallel_realizations(c.realizations, threads, [&](std::size_t r, int) { types[r] = types_of(c, q, r); });
+    for (double xi : c.xi_values) {
+      if (run.cancelled && run.cancelled()) throw Cancelled();
+      cells.push_back(cell(q, xi, types));
+    }
+  }
+  return cells;
+}
+
 std::vector<IprMapCell> compute_partial_ipr_map(const IprMapConfig& config, const RunOptions& run) {
   const IprMapConfig c = one_cell_if_distributed(config);
   // ARPACK keeps its state in Fortran SAVE variables: one thread.
   const int threads = c.spectrum.method == SpectrumMethod::arpack ? 1 : resolve_threads(run.threads);
   const std::size_t realizations = c.realizations;
   std::vector<Spectrum> slots(realizations);
-  std::vector<Configuration> types(realizations);
-  std::vector<IprMapCell> cells;
-  for (double q : c.q_values) {
-    parallel_realizations(realizations, threads, [&](std::size_t r, int) { types[r] = types_of(c, q, r); });
-    for (double xi : c.xi_values) {
-      if (run.cancelled && run.cancelled()) throw Cancelled();
-      parallel_realizations(
-          realizations, threads,
-          [&](std::size_t r, int) { slots[r] = spectrum(matrix_of(c, types[r], xi, r), c.selection, c.spectrum); },
-          run.progress);
-      IprMapCell cell{q, xi, {}, {}, {}, {}, {}, {}, 0, 0};
-      for (std::size_t r = 0; r < realizations; ++r)  // fixed order: thread-count independent
-        for (std::size_t j = 0; j < slots[r].size(); ++j) {
-          cell.freq_khz.push_back(slots[r].freq_khz[j]);
-          cell.ipr.push_back(slots[r].ipr[j]);
-          cell.mode.push_back(slots[r].mode[j]);
-          cell.realization.push_back(r);
-          cell.clustered_modes += slots[r].clustered[j];
-        }
-      cell.solved_modes = cell.ipr.size() * (c.selection.kind == ModeSelection::Kind::all ? realizations : 1);
-      cells.push_back(std::move(cell));
-    }
-  }
-  return cells;
+  return over_grid(c, threads, run, [&](double q, double xi, const std::vector<Configuration>& types) {
+    parallel_realizations(
+        realizations, threads,
+        [&](std::size_t r, int) { slots[r] = spectrum(matrix_of(c, types[r], xi, r), c.selection, c.spectrum); },
+        run.progress);
+    IprMapCell cell{q, xi, {}, {}, {}, {}, {}, {}, 0, 0};
+    for (std::size_t r = 0; r < realizations; ++r)  // fixed order: thread-count independent
+      for (std::size_t j = 0; j < slots[r].size(); ++j) {
+        cell.freq_khz.push_back(slots[r].freq_khz[j]);
+        cell.ipr.push_back(slots[r].ipr[j]);
+        cell.mode.push_back(slots[r].mode[j]);
+        cell.realization.push_back(r);
+        cell.clustered_modes += slots[r].clustered[j];
+      }
+    cell.solved_modes = cell.ipr.size() * (c.selection.kind == ModeSelection::Kind::all ? realizations : 1);
+    return cell;
+  });
 }
 
 }  // namespace
@@ -108,67 +117,60 @@ std::vector<IprMapCell> compute_ipr_map(const IprMapConfig& config, const RunOpt
   const std::size_t n = c.chain.N, realizations = c.realizations;
   constexpr std::size_t batch = 4;                                      // chains per solve_all call
   std::vector<double> omega2(realizations * n), ipr(realizations * n);  // slot r holds realization r
-  std::vector<Configuration> types(realizations);
-  std::vector<IprMapCell> cells;
-  for (double q : c.q_values) {
-    parallel_realizations(realizations, threads, [&](std::size_t r, int) { types[r] = types_of(c, q, r); });
-    for (double xi : c.xi_values) {
-      if (run.cancelled && run.cancelled()) throw Cancelled();
-      // Realizations go to the solver in fixed batches [b·B, b·B + B): a solver may overlap the
-      // chains of a batch, and each chain's result is independent of the batch and the thread.
-      const std::size_t batches = (realizations + batch - 1) / batch;
-      parallel_realizations(batches, threads, [&](std::size_t b, int thread) {
-        thread_local std::vector<DynamicalMatrix> matrices(batch);
-        thread_local std::vector<const DynamicalMatrix*> pointers;
-        thread_local std::vector<Spectrum> results(batch);
-        const std::size_t first = b * batch, last = std::min(realizations, first + batch);
-        pointers.clear();
-        for (std::size_t r = first; r < last; ++r) {
-          matrices[r - first] = matrix_of(c, types[r], xi, r);
-          pointers.push_back(&matrices[r - first]);
-        }
-        solvers[thread].solve_all(pointers, std::span(results.data(), last - first));
-        for (std::size_t r = first; r < last; ++r) {
-          const Spectrum& s = results[r - first];
-          std::copy(s.omega2.begin(), s.omega2.end(), omega2.begin() + static_cast<long>(r * n));
-          std::copy(s.ipr.begin(), s.ipr.end(), ipr.begin() + static_cast<long>(r * n));
-        }
-        if (run.progress) run.progress->advance(last - first);
-      });
-      IprMapCell cell{q, xi, std::vector<double>(n, 0.0), std::vector<double>(n, 0.0), {}, {}, {}, {}, 0, 0};
-      for (std::size_t r = 0; r < realizations; ++r)
-        for (std::uint8_t flag : cluster_flags(std::span(omega2).subspan(r * n, n))) cell.clustered_modes += flag;
-      for (std::size_t r = 0; r < realizations; ++r)  // fixed order: thread-count independent
-        for (std::size_t k = 0; k < n; ++k) {
-          cell.freq_khz[k] += frequency_khz(omega2[r * n + k]);
-          cell.ipr[k] += ipr[r * n + k];
-        }
+  return over_grid(c, threads, run, [&](double q, double xi, const std::vector<Configuration>& types) {
+    // Realizations go to the solver in fixed batches [b·B, b·B + B): a solver may overlap the
+    // chains of a batch, and each chain's result is independent of the batch and the thread.
+    const std::size_t batches = (realizations + batch - 1) / batch;
+    parallel_realizations(batches, threads, [&](std::size_t b, int thread) {
+      thread_local std::vector<DynamicalMatrix> matrices(batch);
+      thread_local std::vector<const DynamicalMatrix*> pointers;
+      thread_local std::vector<Spectrum> results(batch);
+      const std::size_t first = b * batch, last = std::min(realizations, first + batch);
+      pointers.clear();
+      for (std::size_t r = first; r < last; ++r) {
+        matrices[r - first] = matrix_of(c, types[r], xi, r);
+        pointers.push_back(&matrices[r - first]);
+      }
+      solvers[thread].solve_all(pointers, std::span(results.data(), last - first));
+      for (std::size_t r = first; r < last; ++r) {
+        const Spectrum& s = results[r - first];
+        std::copy(s.omega2.begin(), s.omega2.end(), omega2.begin() + static_cast<long>(r * n));
+        std::copy(s.ipr.begin(), s.ipr.end(), ipr.begin() + static_cast<long>(r * n));
+      }
+      if (run.progress) run.progress->advance(last - first);
+    });
+    IprMapCell cell{q, xi, std::vector<double>(n, 0.0), std::vector<double>(n, 0.0), {}, {}, {}, {}, 0, 0};
+    for (std::size_t r = 0; r < realizations; ++r)
+      for (std::uint8_t flag : cluster_flags(std::span(omega2).subspan(r * n, n))) cell.clustered_modes += flag;
+    for (std::size_t r = 0; r < realizations; ++r)  // fixed order: thread-count independent
       for (std::size_t k = 0; k < n; ++k) {
-        cell.freq_khz[k] /= static_cast<double>(realizations);
-        cell.ipr[k] /= static_cast<double>(realizations);
+        cell.freq_khz[k] += frequency_khz(omega2[r * n + k]);
+        cell.ipr[k] += ipr[r * n + k];
       }
-      if (c.bin_khz > 0) {  // same fixed order: realization-major, then mode
-        double fmax = 0;
-        for (double w2 : omega2) fmax = std::max(fmax, frequency_khz(w2));
-        const auto bins = static_cast<std::size_t>(std::floor(fmax / c.bin_khz)) + 1;
-        cell.bin_modes.assign(bins, 0);
-        cell.bin_ipr.assign(bins, 0.0);
-        for (std::size_t i = 0; i < realizations * n; ++i) {
-          const auto b =
-              std::min(bins - 1,
-                       static_cast<std::size_t>(std::floor(std::max(0.0, frequency_khz(omega2[i])) / c.bin_khz)));
-          ++cell.bin_modes[b];
-          cell.bin_ipr[b] += ipr[i];
-        }
-        for (std::size_t b = 0; b < bins; ++b)
-          cell.bin_ipr[b] = cell.bin_modes[b] > 0 ? cell.bin_ipr[b] / static_cast<double>(cell.bin_modes[b])
-                                                  : std::numeric_limits<double>::quiet_NaN();
-      }
-      cell.solved_modes = cell.ipr.size() * (c.selection.kind == ModeSelection::Kind::all ? realizations : 1);
-      cells.push_back(std::move(cell));
+    for (std::size_t k = 0; k < n; ++k) {
+      cell.freq_khz[k] /= static_cast<double>(realizations);
+      cell.ipr[k] /= static_cast<double>(realizations);
     }
-  }
-  return cells;
+    if (c.bin_khz > 0) {  // same fixed order: realization-major, then mode
+      double fmax = 0;
+      for (double w2 : omega2) fmax = std::max(fmax, frequency_khz(w2));
+      const auto bins = static_cast<std::size_t>(std::floor(fmax / c.bin_khz)) + 1;
+      cell.bin_modes.assign(bins, 0);
+      cell.bin_ipr.assign(bins, 0.0);
+      for (std::size_t i = 0; i < realizations * n; ++i) {
+        const auto b =
+            std::min(bins - 1,
+                     static_cast<std::size_t>(std::floor(std::max(0.0, frequency_khz(omega2[i])) / c.bin_khz)));
+        ++cell.bin_modes[b];
+        cell.bin_ipr[b] += ipr[i];
+      }
+      for (std::size_t b = 0; b < bins; ++b)
+        cell.bin_ipr[b] = cell.bin_modes[b] > 0 ? cell.bin_ipr[b] / static_cast<double>(cell.bin_modes[b])
+                                                : std::numeric_limits<double>::quiet_NaN();
+    }
+    cell.solved_modes = cell.ipr.size() * (c.selection.kind == ModeSelection::Kind::all ? realizations : 1);
+    return cell;
+  });
 }
 
 }  // namespace granular

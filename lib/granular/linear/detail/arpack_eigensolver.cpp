@@ -42,9 +42,7 @@ void start_vector(double* x, int n) {
 ShiftInvertResult arpack_nearest(const SymTridiagonal& t, double sigma, const ShiftInvertConfig& config) {
   const int n = static_cast<int>(t.size());
   const int nev = config.count;
-  if (nev < 1 || nev > n - 1)
-    throw InvalidInput("ARPACK", ": " + std::to_string(nev) + " eigenpairs of an N = " + std::to_string(n) +
-                                     " matrix; it needs 1 <= count <= N - 1 (use method lapack)");
+  require_nearest_count("ARPACK", t.size(), nev);
   const int ncv = std::min(n, config.subspace > 0 ? std::max(config.subspace, nev + 1) : std::max(2 * nev + 1, 20));
   ShiftInvertOperator op;
   op.factorize(t, sigma);

@@ -3,10 +3,12 @@
 // methods: ARPACK (dsaupd/dseupd, mode 3) and SLEPc (Krylov–Schur + ST sinvert on a PETSc
 // MPI matrix). Both see the matrix only through TridiagonalOperator / ShiftInvertOperator
 // (ARPACK) or its rows (SLEPc); partial_spectrum.hpp is the one call users make.
+#include <string>
 #include <vector>
 
 #include <Eigen/Core>
 
+#include "granular/error.hpp"
 #include "granular/linear/sym_tridiagonal.hpp"
 
 namespace granular {
@@ -25,6 +27,14 @@ struct ShiftInvertResult {
   int restarts = 0;            ///< outer iterations the method reported
   long operator_solves = 0;    ///< (T − σI)⁻¹ applications (ARPACK; SLEPc reports its iterations only)
 };
+
+/// Throws InvalidInput naming `solver` unless 1 ≤ count ≤ N − 1 (a Krylov method needs a
+/// dimension to spare).
+inline void require_nearest_count(const char* solver, std::size_t n, long count) {
+  if (count < 1 || count > static_cast<long>(n) - 1)
+    throw InvalidInput(solver, ": " + std::to_string(count) + " eigenpairs of an N = " + std::to_string(n) +
+                                   " matrix; it needs 1 <= count <= N - 1 (use method lapack)");
+}
 
 /// ARPACK shift-invert. Throws InvalidInput unless 1 ≤ count ≤ N − 1, NumericalError when
 /// ARPACK fails or does not converge.

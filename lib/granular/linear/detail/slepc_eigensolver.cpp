@@ -67,9 +67,7 @@ void finalize_slepc() {
 ShiftInvertResult slepc_nearest(const SymTridiagonal& t, double sigma, const ShiftInvertConfig& config) {
   const PetscInt n = static_cast<PetscInt>(t.size());
   const PetscInt nev = config.count;
-  if (nev < 1 || nev > n - 1)
-    throw InvalidInput("SLEPc", ": " + std::to_string(nev) + " eigenpairs of an N = " + std::to_string(n) +
-                                    " matrix; it needs 1 <= count <= N - 1 (use method lapack)");
+  require_nearest_count("SLEPc", t.size(), nev);
   if (!std::isfinite(sigma)) throw InvalidInput("SLEPc", ": the shift must be finite");
   ensure_started();
 
