@@ -1,6 +1,6 @@
 // correlations: ensemble mean and spread of the Pearson coefficient ρ(d) of bead types (k types
 // or polydisperse radii: bead masses) with their cyclic shifts, beside the infinite-chain formula
-// (SPEC §2).
+// (docs/physics.md, "Disorder").
 #include <nlohmann/json.hpp>
 #include <string>
 

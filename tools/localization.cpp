@@ -1,6 +1,6 @@
 // localization: localization length and density of states of one long chain by transfer
 // matrices — the Lyapunov exponent λ(f) with its statistical error, ℓ = 1/λ, and the integrated
-// and differential density of states from node counts (SPEC §3, "Infinite chains"). A random
+// and differential density of states from node counts (docs/physics.md, "Infinite chains"). A random
 // chain is streamed, so N = 1e8 needs no more memory than N = 100.
 #include <nlohmann/json.hpp>
 #include <string>

@@ -1,5 +1,5 @@
 // restitution: the coefficient of restitution e of one head-on collision of two equal beads with
-// Kuwabara–Kono contact damping (SPEC §4 "Beyond the paper"), integrated with the chain's damped
+// Kuwabara–Kono contact damping (docs/beyond-the-paper.md), integrated with the chain's damped
 // splitting scheme, beside the small-damping law 1 − e ≈ 1.15344 γ_KK (A/μ)^{2/5} v^{1/5}. To
 // calibrate γ_KK against a measured e: scan --kk-gamma at the experiment's impact speed.
 #include <nlohmann/json.hpp>

@@ -1,6 +1,6 @@
 // spreading: energy spreading from a single-site kick in one granular chain, or the means of an
-// ensemble of them (SPEC §4). PREFIX.csv (t,m2,ipr,energy_error,m2_centroid) and PREFIX.json
-// (parameters, exponents); optionally the final state, profile, forces, energy map, g(ν).
+// ensemble of them (docs/physics.md, "Nonlinear dynamics"). PREFIX.csv (t,m2,ipr,energy_error,m2_centroid) and
+// PREFIX.json (parameters, exponents); optionally the final state, profile, forces, energy map, g(ν).
 #include <cstdio>
 #include <nlohmann/json.hpp>
 #include <optional>

@@ -128,7 +128,7 @@ def spreading(chain, *, ic="displacement", alpha=1e-7, beta=_core.paper_beta, si
 
 
 spreading.__doc__ = (
-    "Energy spreading after a single-site kick in one chain (SPEC §4), integrated to T: the spreading "
+    "Energy spreading after a single-site kick in one chain (docs/physics.md, 'Nonlinear dynamics'), integrated to T: the spreading "
     "tool for one realization.\n\n    chain: a granular.Chain (F0 = 0 is the sonic vacuum)\n"
     "    ic: 'displacement' (u = alpha at the site) | 'velocity' (v = beta at the site) | 'mode' (a "
     "linear mode of the chain, u = M^-1/2 w from rest: number `mode` 1..N or the one nearest `mode_khz` "

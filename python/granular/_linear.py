@@ -21,7 +21,7 @@ faster, no eigenvectors) | 'bisect' | 'arpack' | 'slepc' (nearest/window)
 """
 
 _document(DynamicalMatrix, "The symmetric tridiagonal dynamical matrix D = M^(-1/2) K M^(-1/2) [1/s^2] of a chain "
-          "(SPEC §3): eigenvalues omega^2, eigenvectors w; the displacement mode is v = w * inverse_sqrt_mass. "
+          "(docs/physics.md, 'The linear spectrum'): eigenvalues omega^2, eigenvectors w; the displacement mode is v = w * inverse_sqrt_mass. "
           "Arrays are read-only views.\n\nDynamicalMatrix(diagonal, off_diagonal, inverse_sqrt_mass=None): a matrix "
           "of your own: diagonal (N) and off_diagonal (N-1) [1/s^2], and m^(-1/2) (N) [kg^(-1/2)] for the "
           "displacement IPRs (default 1: the IPR of w itself). Any 1-D array-likes; NaN/inf are refused.",
@@ -94,7 +94,7 @@ def spectrum(system, *, near=None, count=None, window=None, method="lapack", dri
 
 
 spectrum.__doc__ = (
-    "The linear spectrum of a granular.Chain or granular.DynamicalMatrix (SPEC §3), as the spectrum tool computes "
+    "The linear spectrum of a granular.Chain or granular.DynamicalMatrix (docs/physics.md, 'The linear spectrum'), as the spectrum tool computes "
     "it: every mode by default, or\n" + _SELECTION_DOC + _CONFIG_DOC +
     "Returns a granular.Spectrum (mode, freq_khz [kHz], ipr, omega2 [1/s^2], residual, vectors; info, metadata). "
     "Releases the GIL while it solves. ValueError names the keyword of a bad value; granular.NumericalError when "
@@ -102,7 +102,7 @@ spectrum.__doc__ = (
 
 
 class BandEdges:
-    """Analytic cut-off frequencies of the ordered chains [kHz] (SPEC §3): f1, f2 the tops of the monatomic chains
+    """Analytic cut-off frequencies of the ordered chains [kHz] (docs/physics.md, "The linear spectrum"): f1, f2 the tops of the monatomic chains
     of type-1 and type-2 beads; fb1 the diatomic acoustic band top, fb2 and fb3 the optical band's bottom and top."""
 
     __slots__ = ("f1", "f2", "fb1", "fb2", "fb3")

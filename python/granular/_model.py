@@ -16,7 +16,7 @@ _document(Material, "Elastic material of beads and walls, SI units.\n\nMaterial(
           "Young modulus E [Pa]; poisson: Poisson ratio nu [-]; density: rho [kg/m^3]. Defaults: the paper's "
           "stainless steel.", young="Young modulus E [Pa]", poisson="Poisson ratio nu [-]",
           density="mass density rho [kg/m^3]")
-_document(Chain, "A chain of N beads between two flat walls under a static precompression F0 (SPEC §1).\n\n"
+_document(Chain, "A chain of N beads between two flat walls under a static precompression F0 (docs/physics.md, 'The chain').\n\n"
           "Beads are indexed 0..N-1 here (bead n+1 of the tools' files); bonds 0..N, bond k joining bead k-1 and "
           "bead k (bond 0 and bond N touch the walls). The arrays are read-only views.\n"
           "Make one with granular.anderson/rdm1/rdm2/homogeneous/diatomic, random_chain, from_types or from_radii.",

@@ -128,7 +128,7 @@ class Localization:
 
 def localization(chain=None, *, disorder="A", N=1000000, q=0.5, xi=0.5, seed=1, realization=0, F0=10.0,
                  R1=_core.paper_r1, f="0:50:0.01", segments=32, threads=0, progress=False):
-    """Localization length and density of states of one long chain by transfer matrices (SPEC §3, 'Infinite
+    """Localization length and density of states of one long chain by transfer matrices (docs/physics.md, 'Infinite
     chains'): the localization tool.
 
     chain: a granular.Chain; or None and a random realization (disorder, N, q, xi, seed, realization, F0 [N],

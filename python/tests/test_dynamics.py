@@ -72,7 +72,7 @@ def test_energy_is_conserved_and_a_homogeneous_chain_spreads_ballistically():
     total = run.final_state["energy"].sum()
     assert total == pytest.approx(run.initial_energy, rel=1e-6)  # walls not reached: sum E_n is H
     assert not run.reached_walls
-    assert run.gamma == pytest.approx(2.0, abs=0.05)  # SPEC §4: ballistic, m2 ~ t^2
+    assert run.gamma == pytest.approx(2.0, abs=0.05)  # docs/physics.md, "Nonlinear dynamics": ballistic, m2 ~ t^2
     # m2 about the site = m2 about the centroid + (centroid - site)^2 >= m2 about the centroid
     assert np.all(run.m2 >= run.m2_centroid * (1 - 1e-12))
 

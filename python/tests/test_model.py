@@ -1,4 +1,4 @@
-"""Chains, the contact law and one chain's correlations: against the formulas of SPEC §1–2 and
+"""Chains, the contact law and one chain's correlations: against the formulas of docs/physics.md, "The chain" and "Disorder" and
 the library's named constructors as the tools use them."""
 import math
 

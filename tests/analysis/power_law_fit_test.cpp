@@ -44,7 +44,7 @@ TEST(PowerLawFit, RecoversKnownExponentsFromNoisyData) {
 }
 
 TEST(PowerLawFit, CriterionTakesLdOnConsecutiveSamples) {
-  // SPEC §4: L_d on the sampled times, not smoothed. On a 10 µs grid (Δ ln t ≈ 0.0025 at 4 ms) a
+  // docs/physics.md, "Nonlinear dynamics": L_d on the sampled times, not smoothed. On a 10 µs grid (Δ ln t ≈ 0.0025 at 4 ms) a
   // single sample 0.1 % off a pure power law moves the two L_d around it by ±0.001/0.0025 ≈ ±0.4:
   // the criterion must see it (a 0.1-in-ln t smoothing would have averaged it to ≈ 0.01).
   std::vector<double> t, y;

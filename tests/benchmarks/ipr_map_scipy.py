@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """The IPR map as a physicist would script it with NumPy/SciPy: the peer `ipr-map` is timed against.
 
-Same job as `ipr-map` with its defaults (SPEC §1-3): Anderson disorder, xi = 0.1:1 step 0.01,
+Same job as `ipr-map` with its defaults (docs/physics.md, sections 1–3): Anderson disorder, xi = 0.1:1 step 0.01,
 q = 0.2, 0.5, 0.8, N = 100, F0 = 10 N, 100 realizations, steel beads between flat steel walls.
 Chains have the same sizes and disorder statistics as ipr-map's (NumPy's PCG64 instead of
 Philox, so not the same chains). Each realization is one scipy.linalg.eigh_tridiagonal call

@@ -1,5 +1,5 @@
 // The splitting schemes against the Odeint reference, against each other and against the
-// conservation of energy (SPEC §4; issue 4 "tests that must exist").
+// conservation of energy (docs/physics.md, "Nonlinear dynamics"; issue 4 "tests that must exist").
 #include <cmath>
 #include <cstdio>
 
@@ -29,7 +29,7 @@ TEST(Scheme, CoefficientsSumToOne) {
   EXPECT_EQ(aba864().kick.size(), 7u);
   EXPECT_EQ(srkn14a().kick.size(), 14u);
   EXPECT_EQ(saba2c().force_evaluations_per_step(), 3u);
-  // SABA2C's closed forms (SPEC §4).
+  // SABA2C's closed forms (docs/physics.md, "Nonlinear dynamics").
   const SplittingScheme s = saba2c();
   EXPECT_NEAR(s.drift[0], 0.5 - std::sqrt(3.0) / 6, 1e-16);
   EXPECT_NEAR(s.drift[1], std::sqrt(3.0) / 3, 1e-16);

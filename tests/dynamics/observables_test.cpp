@@ -1,4 +1,4 @@
-// The observables (dynamics/observables.hpp) against values worked out by hand from SPEC §4's
+// The observables (dynamics/observables.hpp) against values worked out by hand from docs/physics.md, "Nonlinear dynamics"'s
 // formulas on 3–5-bead configurations, with the arithmetic written here; and the exact relation
 // between m̃2 about the excited site and about the energy centroid.
 #include "granular/dynamics/observables.hpp"
@@ -67,7 +67,7 @@ TEST(EnergySpread, SiteMomentIsCentroidMomentPlusSquaredOffset) {
   EXPECT_THROW(parse_spread_centre("middle"), InvalidInput);
 }
 
-// Three type-1 beads between flat walls. SPEC §3: A11 = 6.897840e9 (bead–bead), A_wall =
+// Three type-1 beads between flat walls. docs/physics.md, "The linear spectrum": A11 = 6.897840e9 (bead–bead), A_wall =
 // 9.755019e9 N/m^{3/2}, m1 = 3.626368e-3 kg. Bond k joins bead k−1 and bead k (bond 0 and 3 are
 // the walls'); strain x_k = u_{k−1} − u_k.
 constexpr double a11 = 6.897840e9, a_wall = 9.755019e9, m1 = 3.626368e-3;

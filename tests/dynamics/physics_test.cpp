@@ -21,7 +21,7 @@ namespace {
 using fixtures::relative_difference;
 
 // u(t) = M^{-1/2} Σ_k w_k [ (w_k·M^{1/2}u0) cos ω_k t + (w_k·M^{1/2}v0) sin(ω_k t)/ω_k ] for the
-// linear law, from the eigenvectors of the symmetric dynamical matrix (SPEC §3).
+// linear law, from the eigenvectors of the symmetric dynamical matrix (docs/physics.md, "The linear spectrum").
 std::vector<double> modal_solution(const Chain& chain, const State& s0, double t) {
   const EigenDecomposition e = LapackEigensolver().solve(dynamical_matrix(chain), true);
   const std::size_t n = chain.size();
@@ -130,7 +130,7 @@ TEST(InitialConditions, MatchedVelocityIsTheSpecValue) {
   const Chain chain = fixtures::homogeneous(101, 10.0);
   const ForceLaw law = make_force_law(ForceLawKind::hertz, chain);
   const double beta = matched_velocity(law, chain, 50, 1e-7);
-  EXPECT_NEAR(beta, 8.0359e-3, 0.00005e-3);  // SPEC §4
+  EXPECT_NEAR(beta, 8.0359e-3, 0.00005e-3);  // docs/physics.md, "Nonlinear dynamics"
   // Same energy on both kicks, by construction and by measurement.
   EXPECT_NEAR(total_energy(law, chain, velocity_kick(chain, 50, beta)),
               total_energy(law, chain, displacement_kick(chain, 50, 1e-7)), 1e-12 * beta * beta);

@@ -1,4 +1,4 @@
-// The mode IPR's mass weighting (SPEC §3: P⁻¹ of the displacements v = M^{-1/2} w, not of the
+// The mode IPR's mass weighting (docs/physics.md, "The linear spectrum": P⁻¹ of the displacements v = M^{-1/2} w, not of the
 // eigenvector w of the symmetric matrix) on a two-mass chain diagonalized by hand, where the
 // weighted and unweighted IPRs differ by a known factor.
 #include "granular/linear/mode_ipr.hpp"

@@ -1,6 +1,6 @@
 // Lyapunov exponents of disordered chains against physics they must reproduce: λ ∝ f² at low
-// frequency (SPEC §3), and the exponential decay of the eigenvectors of finite chains, found
-// independently by full diagonalization.
+// frequency (docs/physics.md, "The linear spectrum"), and the exponential decay of the eigenvectors of finite chains,
+// found independently by full diagonalization.
 #include <gtest/gtest.h>
 
 #include <algorithm>

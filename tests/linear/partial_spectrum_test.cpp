@@ -132,7 +132,7 @@ TEST_P(MethodsAgree, OnTwentyModesOfATenThousandBeadChain) {
 }
 
 // Inside a band: 15 kHz (type-1 band; for RDM2 at q = ξ = 0.5 it lies in the gap above the lower
-// band, so 10 kHz there). At a band edge: f1 = 18.0883 kHz (SPEC §3 table; the top of the
+// band, so 10 kHz there). At a band edge: f1 = 18.0883 kHz (docs/physics.md, "The linear spectrum" table; the top of the
 // homogeneous spectrum) and, for RDM2, 15 kHz, whose nearest modes are the top of its lower band
 // (14.343–14.347 kHz at N = 1e4) — found through the gap, the hard case for shift-invert.
 INSTANTIATE_TEST_SUITE_P(EveryDisorder, MethodsAgree,

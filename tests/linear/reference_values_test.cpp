@@ -1,4 +1,4 @@
-// The product's regression values (SPEC §3, data/reference_values.csv).
+// The product's regression values (docs/physics.md, "The linear spectrum", data/reference_values.csv).
 #include <cmath>
 
 #include <gtest/gtest.h>
@@ -73,7 +73,7 @@ TEST(WeakNonlinearity, NonlinearityRatioTable) {
 
 TEST(WeakNonlinearity, EnergyMatchedVelocityKickOfSpec) {
   // β carries the energy of the displacement kick α: Σ of the two strained bond potentials
-  // φ = (2/5) A ([Δ ∓ α]_+^{5/2} − Δ^{5/2}) ∓ F0 α (SPEC §4) equals (1/2) m β².
+  // φ = (2/5) A ([Δ ∓ α]_+^{5/2} − Δ^{5/2}) ∓ F0 α (docs/physics.md, "Nonlinear dynamics") equals (1/2) m β².
   const Chain c = fixtures::homogeneous(11, 10);
   const double alpha = 1e-7, a = c.contact[5], d = c.overlap[5], f0 = 10;
   auto phi = [&](double x) { return 0.4 * a * (std::pow(std::fmax(d + x, 0.0), 2.5) - std::pow(d, 2.5)) - f0 * x; };

@@ -1,4 +1,4 @@
-// Transfer-matrix Lyapunov exponents against exact results for periodic chains (SPEC §3,
+// Transfer-matrix Lyapunov exponents against exact results for periodic chains (docs/physics.md, "The linear spectrum",
 // "Infinite chains"), and the determinism the kernel promises.
 //
 // Periodic chains are given by a test source whose wall bonds equal the bulk bonds (walls made

@@ -94,7 +94,7 @@ TEST(BeadDistribution, BadDistributionsNameTheirField) {
 TEST(BeadDistribution, MassesGiveTheRadiiOfTheirSpheres) {
   for (double r : {1e-4, 2.38e-3, 4.76e-3, 0.05})
     EXPECT_NEAR(sphere_radius(steel, sphere_mass(steel, r)), r, 1e-15 * r);
-  EXPECT_NEAR(sphere_mass(steel, 4.76e-3), 3.626368e-3, 1e-9);  // SPEC §3: m1
+  EXPECT_NEAR(sphere_mass(steel, 4.76e-3), 3.626368e-3, 1e-9);  // docs/physics.md, "The linear spectrum": m1
 }
 
 TEST(RadiiFile, ImplausibleRadiiAreWarnedWithFileAndLine) {

@@ -1,4 +1,4 @@
-// Which bead type the disorder probability q counts (SPEC §2), checked at q ≠ 1/2 where the two
+// Which bead type the disorder probability q counts (docs/physics.md, "Disorder"), checked at q ≠ 1/2 where the two
 // orientations differ: A counts type-1 beads, RDM1 "1 1" dimers, RDM2 "1 2" dimers; and the
 // pairs RDM1 and RDM2 can never contain.
 #include <cmath>

@@ -13,7 +13,7 @@ namespace {
 
 using fixtures::r1;
 
-// The hand computation of SPEC §1, written out independently of the library's formula.
+// The hand computation of docs/physics.md, "The chain", written out independently of the library's formula.
 double same_material(double e, double nu, double reff) { return 2 * e / (3 * (1 - nu * nu)) * std::sqrt(reff); }
 
 TEST(HertzContact, SphereSphereMatchesSpecTable) {

@@ -1,5 +1,5 @@
-// What the exponent tables show (SPEC §4): a fitted slope for a power law, the mean L_d with a
-// star otherwise; and the comparison with the paper's Table I.
+// What the exponent tables show (docs/physics.md, "Nonlinear dynamics"): a fitted slope for a power law, the mean L_d
+// with a star otherwise; and the comparison with the paper's Table I.
 #include <cmath>
 #include <numbers>
 #include <sstream>

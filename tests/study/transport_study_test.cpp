@@ -42,8 +42,8 @@ TEST(TransportStudy, BitIdenticalForOneAndTwoThreads) {
 }
 
 TEST(TransportStudy, HomogeneousPrecompressedEnsembleIsBallistic) {
-  // SPEC §4: homogeneous linear-like chains spread ballistically, γ = 2. N = 1401 keeps the
-  // front off the walls for 10 ms (Ω T ≈ 1137).
+  // docs/physics.md, "Nonlinear dynamics": homogeneous linear-like chains spread ballistically, γ = 2. N = 1401 keeps
+  // the front off the walls for 10 ms (Ω T ≈ 1137).
   TransportCase c;
   c.chain.disorder = Disorder::homogeneous;
   c.chain.N = 1401;
@@ -135,10 +135,10 @@ TEST(ExponentTable, BeadChainsRunAfterTheKindsUnderTheirNames) {
 namespace granular {
 namespace {
 
-// The definitional check of SPEC §4: the paper's sonic-vacuum velocity-kick Anderson cell, scaled
-// down to 60 realizations, with m̃2 about the kicked site, gives Table I's 1.763 within 0.05
-// (the measurement: 1.759 with 200 realizations; about the centroid it is ≈ 1.92). About 3 s
-// on 2 cores (60 runs of 2501 beads to 10 ms in the sonic vacuum, where the active window is small).
+// The definitional check of docs/physics.md, "Nonlinear dynamics": the paper's sonic-vacuum velocity-kick Anderson
+// cell, scaled down to 60 realizations, with m̃2 about the kicked site, gives Table I's 1.763 within 0.05 (the issue's
+// measurement: 1.759 with 200 realizations; about the centroid it is ≈ 1.92). About 3 s on 2 cores (60 runs of 2501
+// beads to 10 ms in the sonic vacuum, where the active window is small).
 TEST(TransportStudy, SonicVacuumVelocityKickMatchesTableI) {
   TransportCase c;
   c.chain.disorder = Disorder::anderson;

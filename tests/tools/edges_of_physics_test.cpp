@@ -110,7 +110,7 @@ std::size_t output_files(const fs::path& dir) {
   return n;
 }
 
-// --- independent physics (SPEC §1, §3), from the formulas, not from the library -------------------
+// --- independent physics (docs/physics.md, "The chain", §3), from the formulas, not from the library -------------------
 constexpr double young = 193e9, poisson = 0.3, density = 8027.17, r1 = 4.76e-3;
 constexpr double two_pi = 2 * std::numbers::pi;
 double hertz(double ra, double rb) {  // rb = 0: a flat wall
@@ -509,7 +509,8 @@ std::vector<Cell> cells() {
                  const double b = stiffness(hertz(r1, r1), 10), m = mass(r1);
                  for (std::size_t i = 0; i < t.at("freq_khz").size(); ++i) {
                    const double w = two_pi * t.at("freq_khz")[i] * 1e3, x = m * w * w / b;
-                   const double lambda = x <= 4 ? 0.0 : std::acosh(x / 2 - 1);  // SPEC §3
+                   const double lambda =
+                       x <= 4 ? 0.0 : std::acosh(x / 2 - 1);  // docs/physics.md, "The linear spectrum"
                    EXPECT_NEAR(t.at("lyapunov")[i], lambda, 2e-3 + 1e-3 * lambda) << t.at("freq_khz")[i] << " kHz";
                    if (x > 4.05) {
                      EXPECT_NEAR(t.at("idos")[i], 1.0, 1e-3) << "every mode lies below";

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""The long-time study's report (issue 14): merges the per-case `exponents` runs of
+"""The long-time study's report: merges the per-case `exponents` runs of
 tests/benchmarks/long-time-study.sh into one run, OUTPUT_DIR/all.{csv,json} with -curves.csv and
 -profiles.csv (so `python3 -m granular.plot exponents OUTPUT_DIR/all --all` draws it), prints a
 markdown table of gamma and eta at T = 100 ms beside the 10 ms study of record (default

@@ -10,7 +10,7 @@ cd "$out"
 spreading="$build/spreading"
 plot="/usr/bin/python3 $here/spreading_figures.py"
 
-# Spatiotemporal energy map beside the spectral density: N = 1601, kick at 801 (SPEC §4).
+# Spatiotemporal energy map beside the spectral density: N = 1601, kick at 801 (docs/physics.md, "Nonlinear dynamics").
 $spreading --disorder A --N 1601 --F0 10 --output map-A --energy-map map-A.h5 --map-samples 400 \
   --spectrum spectrum-A.csv --spectrum-samples 2000 --quiet
 $plot map map-A.h5 spectrum-A.csv -o map-A.png

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""IPR versus frequency of the K modes nearest a frequency, for growing chain length N (issue 3).
+"""IPR versus frequency of the K modes nearest a frequency, for growing chain length N.
 
 Runs `spectrum --near` once per N on the same disorder and
 seed, then plots IPR (log) against f − f0, one colour per N. Extended modes have IPR ~ 1/N and

@@ -1,5 +1,5 @@
 #pragma once
-// Everything said about one exponent of one curve (SPEC §4): the fitted slope, the mean log
+// Everything said about one exponent of one curve (docs/physics.md, "Nonlinear dynamics"): the fitted slope, the mean log
 // derivative, whether the curve is a power law at all, and which of the two a table shows.
 // The paper's rule: a power law shows its fitted slope; a curve "markedly different from a
 // power law" is starred and shows "mean values of L_d(t) for t ∈ [4, 10] ms".

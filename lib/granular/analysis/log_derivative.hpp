@@ -1,7 +1,7 @@
 #pragma once
-// Local exponent of a sampled curve: L_d = Δ ln y / Δ ln t (SPEC §4). Each sample is paired with
-// the first later one at least `min_log_step` further in ln t (0: the next sample), so densely
-// sampled, slightly noisy curves do not turn into noise when differentiated.
+// Local exponent of a sampled curve: L_d = Δ ln y / Δ ln t (docs/physics.md, "Nonlinear dynamics"). Each sample is
+// paired with the first later one at least `min_log_step` further in ln t (0: the next sample), so densely sampled,
+// slightly noisy curves do not turn into noise when differentiated.
 #include <vector>
 
 namespace granular {

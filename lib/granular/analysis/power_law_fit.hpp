@@ -1,7 +1,7 @@
 #pragma once
 // Power laws y ∝ t^s fitted by least squares in log–log, on a family of sub-windows of the fit
 // interval, the mean log derivative over it, and the criterion that decides whether a curve is
-// a power law at all (SPEC §4 "Ensembles and exponents").
+// a power law at all (docs/physics.md, "Transport exponents").
 //
 // The sub-windows: [a, b] is cut into 4 equal parts at p0 = a < p1 < p2 < p3 < p4 = b (linear in
 // t, as the paper's "4–10 ms"), and every run of at least two consecutive parts is one window:

@@ -155,7 +155,7 @@ void accelerations(const double* __restrict f, double* __restrict a, const doubl
 }
 
 // The corrector's velocity change c (1/m) [K_{p−1} (a_{p−1} − a_p) − K_p (a_p − a_{p+1})] of bead
-// p − 1 (SPEC §4; the expression of detail::correct_and_drift).
+// p − 1 (docs/physics.md, "Nonlinear dynamics"; the expression of detail::correct_and_drift).
 void corrector_change(const double* __restrict stiff, const double* __restrict a, double* __restrict dv,
                       const double* __restrict im, std::size_t lo, std::size_t hi, double c) {
   for (std::size_t p = lo; p < hi; ++p)

@@ -1,5 +1,5 @@
 #pragma once
-// Dissipation (SPEC §4 "Beyond the paper"): on-site viscous damping −(m_n/τ_d) u̇_n and
+// Dissipation (docs/beyond-the-paper.md): on-site viscous damping −(m_n/τ_d) u̇_n and
 // Kuwabara–Kono contact damping, bond force γ_KK A_k [δ_k]_+^{1/2} δ̇_k (δ̇_k = u̇_{k−1} − u̇_k),
 // acting only while bond k is in contact (δ_k = Δ_k + x_k > 0).
 //

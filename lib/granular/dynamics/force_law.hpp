@@ -1,12 +1,12 @@
 #pragma once
-// Bond force laws of the chain (SPEC §1, §3, §4): Hertz, its FPU cubic expansion, linear.
+// Bond force laws of the chain (docs/physics.md, "The chain", §3, §4): Hertz, its FPU cubic expansion, linear.
 //
 // Every law answers, for bond k and strain x = u_{k-1} − u_k (positive = more compression):
 //   force(k, x)        the force beyond the static one, f_k(x) − f_k(0); the equation of motion
 //                      is m_i a_i = f_i(x_i) − f_{i+1}(x_{i+1})
 //   stiffness(k, x)    f_k'(x), used by the SABA2C corrector
 //   potential(k, x)    φ_k(x) with φ_k(0) = 0 and φ_k' = force (the static force F0 x term
-//                      cancels between bonds, SPEC §4)
+//                      cancels between bonds, docs/physics.md, "Nonlinear dynamics")
 //   contact_force(k,x) the full compressive contact force (static + dynamic), ≥ 0 for Hertz
 // The rest force f_k(0) is subtracted per bond with the very expression the kernel uses, so
 // the undisturbed chain is an exact equilibrium in floating point: quiescent particles stay

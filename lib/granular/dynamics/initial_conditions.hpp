@@ -1,5 +1,5 @@
 #pragma once
-// Single-site kicks (SPEC §4): a displacement α or a velocity β at bead `site` (0-based),
+// Single-site kicks (docs/physics.md, "Nonlinear dynamics"): a displacement α or a velocity β at bead `site` (0-based),
 // the rest of the chain at rest in its precompressed equilibrium.
 #include <cstddef>
 #include <span>

@@ -1,5 +1,5 @@
 #pragma once
-// What is measured on a state (SPEC §4): site energies, total energy, the energy-based second
+// What is measured on a state (docs/physics.md, "Nonlinear dynamics"): site energies, total energy, the energy-based second
 // moment m̃2 and participation P⁻¹, and the forces on the beads. Beads outside [begin, end)
 // are taken to be exactly at rest (the active window), which makes their energy exactly 0.
 #include <cstddef>
@@ -28,7 +28,7 @@ double total_energy(const ForceLaw& law, const Chain& chain, const State& state)
 /// conserved once energy reaches a wall.
 double unowned_wall_energy(const ForceLaw& law, std::span<const double> u);
 
-/// About which bead the second moment is taken (SPEC §4 "Observables").
+/// About which bead the second moment is taken (docs/physics.md, "Observables").
 enum class SpreadCentre {
   /// The excited bead n0: the paper's definition. It writes its kicks as δ_{n,n_c} and calls n_c
   /// "the position of the center of the distribution", so n_c is the kicked site.

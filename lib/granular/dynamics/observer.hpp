@@ -57,7 +57,7 @@ class Snapshot {
   const Chain& chain() const { return chain_; }
   const ForceLaw& law() const { return law_; }
   double initial_energy() const { return initial_energy_; }  ///< H(0) [J]
-  /// Site energies E_n [J] (SPEC §4), computed once per time however many observers ask.
+  /// Site energies E_n [J] (docs/physics.md, "Nonlinear dynamics"), computed once per time however many observers ask.
   std::span<const double> energy() const;
   State state() const;  ///< a copy of u and v
   /// The driver moved the state on: forget the cached energies.

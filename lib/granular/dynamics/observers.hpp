@@ -1,6 +1,6 @@
 #pragma once
-// The observables of a spreading run (SPEC §4), each an Observer (observer.hpp) owning its
-// settings and what it measured:
+// The observables of a spreading run (docs/physics.md, "Nonlinear dynamics"), each an Observer (observer.hpp) owning
+// its settings and what it measured:
 //
 //   granular::EnergySpreadObserver spread({.samples = 100});  // m̃2 (both centres), P⁻¹, energy error
 //   granular::ForceObserver forces({.sites = {600, 630, 660}});  // bead forces at three beads
@@ -61,7 +61,7 @@ class EnergySpreadObserver final : public Observer {
 };
 
 /// The force on chosen beads (the mean of its two contact forces, what a sensor embedded in the
-/// bead reads, SPEC §4) at uniform times 0 … T.
+/// bead reads, docs/physics.md, "Nonlinear dynamics") at uniform times 0 … T.
 class ForceObserver final : public Observer {
  public:
   struct Settings {
@@ -106,7 +106,7 @@ class EnergyMapObserver final : public Observer {
   Settings settings_;
 };
 
-/// What g(ν) transforms (SPEC §4). The paper's is the displacement; after a velocity kick in the
+/// What g(ν) transforms (docs/physics.md, "Nonlinear dynamics"). The paper's is the displacement; after a velocity kick in the
 /// sonic vacuum every bead the pulse has passed keeps a permanent displacement, a step in u_n(t)
 /// whose power ∝ 1/ν² buries the vibrations under a peak at 0 Hz. The velocity is the step's
 /// derivative (a pulse, white), so its spectrum shows the vibrations themselves.

@@ -13,7 +13,7 @@
 
 namespace granular {
 
-/// Integrate only the disturbed part of the chain (SPEC §4 performance rule, DESIGN.md).
+/// Integrate only the disturbed part of the chain (docs/physics.md, "Nonlinear dynamics" performance rule, DESIGN.md).
 ///
 /// The window [begin, end) of beads starts as the non-zero part of the initial state widened
 /// by `guard` beads on each side; outside it u = v = 0 exactly and no work is done. After every

@@ -1,6 +1,6 @@
 #pragma once
 // The coefficient of restitution of one head-on collision of two equal beads with Kuwabara–Kono
-// contact damping (SPEC §4 "Beyond the paper"), integrated with the same damped splitting
+// contact damping (docs/beyond-the-paper.md), integrated with the same damped splitting
 // scheme as the chain (damping.hpp): bead 1 hits bead 2, at rest, with the impact speed; the
 // beads touch at t = 0 without overlap; no walls, no precompression. e is the ratio of the
 // separation speed to the impact speed once the contact has opened. Use it to calibrate γ_KK

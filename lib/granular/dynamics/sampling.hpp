@@ -1,6 +1,6 @@
 #pragma once
 // When a run looks at the chain: sample steps, all whole multiples of τ, so that every
-// integrator samples at the same times (SPEC §4). Observers (observers.hpp) build their
+// integrator samples at the same times (docs/physics.md, "Nonlinear dynamics"). Observers (observers.hpp) build their
 // schedules from these.
 #include <cstddef>
 #include <cstdint>

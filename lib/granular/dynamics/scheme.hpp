@@ -1,5 +1,5 @@
 #pragma once
-// Symmetric drift–kick splitting schemes as data (SPEC §4). A step of length τ is
+// Symmetric drift–kick splitting schemes as data (docs/physics.md, "Nonlinear dynamics"). A step of length τ is
 //   [corrector g τ³]  D(a_0 τ) K(b_0 τ) D(a_1 τ) … K(b_{s−1} τ) D(a_s τ)  [corrector g τ³]
 // with D a drift (u += h v) and K a kick (v += h F/m). The corrector, when g ≠ 0, is the
 // momentum kick of the flow of {{A,B},B} (SABA2C). One stepper runs every scheme.

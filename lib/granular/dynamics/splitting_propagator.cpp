@@ -1,4 +1,4 @@
-// The symplectic splitting stepper (SPEC §4): one loop runs every drift–kick scheme, with the
+// The symplectic splitting stepper (docs/physics.md, "Nonlinear dynamics"): one loop runs every drift–kick scheme, with the
 // SABA2C corrector when the scheme has one. Hot loops: per-bond arrays, 1/m per bead,
 // branch-free [x]_+, restrict pointers, no allocation after construction.
 #include <algorithm>

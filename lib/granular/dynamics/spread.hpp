@@ -1,5 +1,5 @@
 #pragma once
-// One run of the nonlinear dynamics (SPEC §4): integrate a chain from an initial state to T and
+// One run of the nonlinear dynamics (docs/physics.md, "Nonlinear dynamics"): integrate a chain from an initial state to T and
 // let observers (observer.hpp, observers.hpp) measure it. The driver owns time and the
 // integrator; what is measured is the observers' business. A pure function of (chain, initial
 // state, config) — observers only look — so ensembles run it per realization.

@@ -1,9 +1,9 @@
 #pragma once
-// One realization of energy spreading (SPEC §4) as the tools run it: a kicked chain integrated to
-// T, with the observables of the `spreading` tool chosen by a flat config and returned in one
-// result. A thin layer over spread() and the observers (spread.hpp, observers.hpp), which is what
-// a program measuring something else should use. A pure function of (chain, initial state,
-// config), so ensembles can run it per realization and reduce in index order.
+// One realization of energy spreading (docs/physics.md, "Nonlinear dynamics") as the tools run it: a kicked chain
+// integrated to T, with the observables of the `spreading` tool chosen by a flat config and returned in one result. A
+// thin layer over spread() and the observers (spread.hpp, observers.hpp), which is what a program measuring something
+// else should use. A pure function of (chain, initial state, config), so ensembles can run it per realization and
+// reduce in index order.
 #include <cstddef>
 #include <cstdint>
 #include <string>

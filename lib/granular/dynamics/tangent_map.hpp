@@ -1,5 +1,5 @@
 #pragma once
-// The maximal Lyapunov exponent by the tangent map method (SPEC §4 "Beyond the paper";
+// The maximal Lyapunov exponent by the tangent map method (docs/beyond-the-paper.md;
 // Skokos & Gerlach, PRE 82, 036704 (2010)). A deviation vector w = (δu, δv) obeys the
 // variational equations δu̇ = δv, m_n δv̇_n = −Σ_j (∂²V/∂u_n∂u_j) δu_j, whose matrix is the
 // tridiagonal bond-stiffness Laplacian (K_k = f_k'(x_k)). Integrating them with the same

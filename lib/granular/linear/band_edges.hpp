@@ -1,5 +1,5 @@
 #pragma once
-// Analytic cut-off frequencies of ordered chains (SPEC §3, "Band edges").
+// Analytic cut-off frequencies of ordered chains (docs/physics.md, "Band edges").
 #include "granular/model/material.hpp"
 
 namespace granular {

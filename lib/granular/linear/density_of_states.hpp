@@ -1,5 +1,5 @@
 #pragma once
-// The density of states of a chain from node counting (SPEC §3, "Infinite chains"): the
+// The density of states of a chain from node counting (docs/physics.md, "Infinite chains"): the
 // number of eigenfrequencies below f is the number of sign changes of the transfer-matrix
 // recursion's solution (Dean's method; see transfer_matrix.hpp), exact for the finite chain
 // and O(N) per frequency, with no eigen-solver and memory O(frequencies).

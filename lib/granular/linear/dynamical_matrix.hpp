@@ -1,8 +1,8 @@
 #pragma once
-// The linearized chain (SPEC §3): the symmetric dynamical matrix D = M^{-1/2} K M^{-1/2} [1/s²],
-// K the tridiagonal stiffness matrix of the bonds' linear stiffnesses B_k (model/contact_law.hpp).
-// Its eigenvalues are ω² ≥ 0; an eigenvector w of D gives the displacement mode v = M^{-1/2} w,
-// which is why the matrix carries M^{-1/2}: every IPR is computed from v, not w.
+// The linearized chain (docs/physics.md, "The linear spectrum"): the symmetric dynamical matrix D = M^{-1/2} K M^{-1/2}
+// [1/s²], K the tridiagonal stiffness matrix of the bonds' linear stiffnesses B_k (model/contact_law.hpp). Its
+// eigenvalues are ω² ≥ 0; an eigenvector w of D gives the displacement mode v = M^{-1/2} w, which is why the matrix
+// carries M^{-1/2}: every IPR is computed from v, not w.
 #include <vector>
 
 #include "granular/linear/sym_tridiagonal.hpp"

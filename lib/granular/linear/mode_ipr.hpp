@@ -1,5 +1,5 @@
 #pragma once
-// Inverse participation ratio of a mode in displacement form (SPEC §3):
+// Inverse participation ratio of a mode in displacement form (docs/physics.md, "The linear spectrum"):
 // P⁻¹ = Σ v_n⁴ / (Σ v_n²)², v = M^{-1/2} w for an eigenvector w of the dynamical matrix.
 // 1 when one bead moves, about 1/N for a plane wave. Scale-free: w need not be normalized.
 #include <cstddef>

@@ -1,5 +1,5 @@
 #pragma once
-// The linear spectrum of a chain in one call (SPEC §3): every mode, the K modes nearest a
+// The linear spectrum of a chain in one call (docs/physics.md, "The linear spectrum"): every mode, the K modes nearest a
 // frequency, or every mode in a frequency window — frequencies, displacement IPRs and, if asked,
 // the eigenvectors — by any of the solvers, with a separate report of what ran.
 //

@@ -1,5 +1,5 @@
 #pragma once
-// Transfer matrices of the linearized chain (SPEC §3, "Infinite chains"). At angular frequency
+// Transfer matrices of the linearized chain (docs/physics.md, "Infinite chains"). At angular frequency
 // ω the equations of motion give the recursion
 //     u_{n+1} = [(B_n + B_{n+1} − m_n ω²) u_n − B_n u_{n−1}] / B_{n+1},   u_0 = 0, u_1 = 1
 // (beads n = 1 … N, bond n to the left of bead n, u_0 and u_{N+1} at the walls). Two numbers

@@ -1,5 +1,5 @@
 #pragma once
-// Random chains beyond the paper's two bead types (issue 13): k types with given probabilities,
+// Random chains beyond the paper's two bead types: k types with given probabilities,
 // or polydisperse radii drawn from a distribution — realization r of seed s again a pure function
 // of (s, r, distribution, N), whatever the thread, rank or order. Bead i (dimer j under the
 // dimer rules) uses the i-th (j-th) uniform of the Philox stream keyed by (s, r), exactly as

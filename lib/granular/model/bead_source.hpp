@@ -1,5 +1,5 @@
 #pragma once
-// The beads of a linearized chain, read a piece at a time (SPEC §3, "Infinite chains"): what
+// The beads of a linearized chain, read a piece at a time (docs/physics.md, "Infinite chains"): what
 // the transfer-matrix methods need, which walk the chain once from wall to wall and never need
 // all of it at once. A random realization is drawn lazily from its counter-based stream, so a
 // 10⁸-bead chain costs memory O(piece), not O(N), and gives exactly the beads that

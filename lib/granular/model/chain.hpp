@@ -1,5 +1,5 @@
 #pragma once
-// A chain of N beads between two fixed walls, with its static precompression (SPEC §1).
+// A chain of N beads between two fixed walls, with its static precompression (docs/physics.md, "The chain").
 //
 // Indexing is 0-based: particles 0 … N-1; bond k (0 … N) joins particle k-1 and particle k,
 // where "particle -1" is the left wall and "particle N" the right wall. Per-bond arrays have

@@ -1,5 +1,5 @@
 #pragma once
-// The Hertz contact law of two elastic bodies and everything derived from it (SPEC §1, §3): the
+// The Hertz contact law of two elastic bodies and everything derived from it (docs/physics.md, "The chain", §3): the
 // contact coefficient A (force = A δ^{3/2} at overlap δ), the static overlap Δ under a
 // precompression F0, the linear stiffness B, the FPU (cubic) expansion and the nonlinearity
 // ratio ε. This is the one home of these formulas: chains, dynamical matrices, band edges and

@@ -1,5 +1,5 @@
 #pragma once
-// Pearson correlation of a configuration with its cyclic shifts (SPEC §2, "Correlations").
+// Pearson correlation of a configuration with its cyclic shifts (docs/physics.md, "Correlations of the type sequence").
 #include <cstddef>
 #include <vector>
 

@@ -1,5 +1,5 @@
 #pragma once
-// The four ways of drawing a bidisperse chain (SPEC §2). A configuration is a sequence of
+// The four ways of drawing a bidisperse chain (docs/physics.md, "Disorder"). A configuration is a sequence of
 // bead types, 1 (radius R1) or 2 (radius ξ R1).
 #include <cstddef>
 #include <cstdint>

@@ -13,7 +13,7 @@ struct Material {
   double density = 8027.17;  ///< mass density ρ [kg/m³]
 };
 
-/// The paper's stainless steel (SPEC §1).
+/// The paper's stainless steel (docs/physics.md, "The chain").
 inline constexpr Material steel{193e9, 0.3, 8027.17};
 
 /// Mass of a sphere of radius r [m]: ρ (4/3) π r³ [kg] (the one home of this formula).

@@ -1,6 +1,6 @@
 #pragma once
-// Named constructors for the chains people build (SPEC §1–2): the paper's bidisperse steel beads
-// (type 1 of radius R1, type 2 of radius ξ R1) between flat walls of the same steel.
+// Named constructors for the chains people build (docs/physics.md, "The chain" and "Disorder"): the paper's bidisperse
+// steel beads (type 1 of radius R1, type 2 of radius ξ R1) between flat walls of the same steel.
 //
 //   auto chain = granular::anderson({.N = 100, .q = 0.5, .xi = 0.5, .seed = 1});
 //   auto ref   = granular::diatomic({.N = 2000, .xi = 0.5, .F0 = 10});

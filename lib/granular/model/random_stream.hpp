@@ -1,6 +1,6 @@
 #pragma once
 // Reproducible uniform random numbers: realization r of seed s is a pure function of (s, r),
-// whatever the thread, process or order it runs in (SPEC §2). Philox4x64-10 from Random123,
+// whatever the thread, process or order it runs in (docs/physics.md, "Disorder"). Philox4x64-10 from Random123,
 // keyed by (seed, realization), counting up from 0.
 #include <array>
 #include <cstdint>

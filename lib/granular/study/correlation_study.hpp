@@ -1,5 +1,5 @@
 #pragma once
-// The ensemble of bead-type correlations (SPEC §2 "Correlations"): the mean and spread over
+// The ensemble of bead-type correlations (docs/physics.md, "Correlations of the type sequence"): the mean and spread over
 // realizations of the Pearson coefficient ρ(d) of a configuration with its cyclic shift by d,
 // beside the infinite-chain formula the ensemble mean should approach. Chains of the paper's two
 // types correlate the type indicator (type 1 → 0, type 2 → 1); chains of k types or polydisperse

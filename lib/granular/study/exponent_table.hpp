@@ -1,5 +1,5 @@
 #pragma once
-// The paper's whole protocol (SPEC §4): transport exponents γ (m̃2 ∝ t^γ) and η (P⁻¹ ∝ t^−η)
+// The paper's whole protocol (docs/physics.md, "Nonlinear dynamics"): transport exponents γ (m̃2 ∝ t^γ) and η (P⁻¹ ∝ t^−η)
 // for every chain kind × precompression × kick, each an ensemble (transport_study.hpp).
 // Homogeneous chains are deterministic, so they run one realization whatever R is. Chains beyond
 // the paper's kinds (k bead types, polydisperse radii) join the study as named bead distributions.

@@ -1,5 +1,5 @@
 #pragma once
-// Mean frequency and IPR of every mode over realizations, on a grid of (q, ξ) (SPEC §3; the
+// Mean frequency and IPR of every mode over realizations, on a grid of (q, ξ) (docs/physics.md, "The linear spectrum"; the
 // paper's IPR-map figure), or the selected modes (nearest/window) of every realization.
 // Realization r of a cell uses the bead types of realization r of the seed, so all ξ of one q
 // share their configurations (common random numbers).

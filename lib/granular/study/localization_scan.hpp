@@ -2,7 +2,7 @@
 // Localization and density of states of one (long, possibly streamed) chain over a list of
 // frequencies: the transfer-matrix Lyapunov exponent λ(f) with its error, the localization
 // length ℓ = 1/λ, and the integrated and differential density of states from node counts —
-// the columns of the `localization` tool (SPEC §3, "Infinite chains").
+// the columns of the `localization` tool (docs/physics.md, "Infinite chains").
 #include <cstddef>
 #include <cstdint>
 #include <functional>

@@ -1,7 +1,7 @@
 #pragma once
 // Our exponent table beside the paper's Table I (γ; Martínez, Kevrekidis & Porter, PRE 93,
 // 022902 (2016)), with z-scores. A report to read, not a target: nothing in the study is tuned
-// towards it (SPEC §4).
+// towards it (docs/physics.md, "Nonlinear dynamics").
 //
 // For each cell and each m̃2 centre, Δ = ours − paper (the values each table shows: a fit, or the
 // mean L_d where starred) and two z-scores:

@@ -38,7 +38,7 @@ struct TransportChoices {
 /// InvalidInput naming the choice.
 void apply(const TransportChoices& choices, TransportCase& c);
 
-/// The choices beyond the paper (SPEC §4): dissipation and the tangent map, as the tools'
+/// The choices beyond the paper (docs/physics.md, "Nonlinear dynamics"): dissipation and the tangent map, as the tools'
 /// --damping-time, --kk-gamma, --mle, --renormalize, --deviation-samples and the Python keywords
 /// of the same names take them.
 struct BeyondChoices {

@@ -1,5 +1,5 @@
 #pragma once
-// One cell of the paper's transport study (SPEC §4 "Ensembles and exponents"): R realizations of
+// One cell of the paper's transport study (docs/physics.md, "Transport exponents"): R realizations of
 // a disordered chain kicked at one site, integrated to T, averaged, and fitted. This is where the
 // model (which chain), dynamics (how one realization evolves), ensemble (how many, where) and
 // analysis (what the averages say) meet; none of them knows about the others.
@@ -36,8 +36,8 @@ enum class Kick { displacement, velocity, mode };
 Kick parse_kick(const std::string& name);
 std::string to_string(Kick kick);
 
-/// The paper's velocity kick for every F0: "β = 8·10⁻³ m/s" (SPEC §4; one place in its text says
-/// 8e-1, a typo). It is the energy-matched β of α = 1e-7 m on the homogeneous chain at 10 N.
+/// The paper's velocity kick for every F0: "β = 8·10⁻³ m/s" (docs/physics.md, "Nonlinear dynamics"; one place in its
+/// text says 8e-1, a typo). It is the energy-matched β of α = 1e-7 m on the homogeneous chain at 10 N.
 inline constexpr double paper_beta = 8e-3;
 
 struct TransportCase {

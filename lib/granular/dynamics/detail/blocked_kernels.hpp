@@ -1,5 +1,5 @@
 #pragma once
-// The blocked drift–kick kernels of the conservative stepper (SPEC §4), shared with the damped
+// The blocked drift–kick kernels of the conservative stepper (docs/physics.md, "Nonlinear dynamics"), shared with the damped
 // stepper (damping.cpp), which runs the same kicks between its damping substeps. Hot loops:
 // per-bond arrays, 1/m per bead, branch-free [x]_+, restrict pointers, no allocation.
 #include <algorithm>
@@ -33,10 +33,9 @@ void kick_and_drift(const View law, double* __restrict u, double* __restrict f, 
   }
 }
 
-// SPEC §4 corrector: v_i += (c/m_i) [K_i (a_{i−1} − a_i) + K_{i+1} (a_{i+1} − a_i)], a = F/m,
-// walls a = 0; then u += d v. Bond k's block computes a of bead k−1 and updates bead k−2,
-// which needs a_{k−1}. a is padded like u (a[i+1] is bead i); a[lo] and a[hi+1] are never
-// written and stay 0.
+// docs/physics.md, "Nonlinear dynamics" corrector: v_i += (c/m_i) [K_i (a_{i−1} − a_i) + K_{i+1} (a_{i+1} − a_i)], a =
+// F/m, walls a = 0; then u += d v. Bond k's block computes a of bead k−1 and updates bead k−2, which needs a_{k−1}. a
+// is padded like u (a[i+1] is bead i); a[lo] and a[hi+1] are never written and stay 0.
 template <class View>
 void correct_and_drift(const View law, double* __restrict u, double* __restrict f, double* __restrict stiff,
                        double* __restrict a, double* __restrict v, const double* __restrict im, std::size_t lo,

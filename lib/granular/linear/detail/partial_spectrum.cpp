@@ -303,7 +303,7 @@ Spectrum solve_partial(const SymTridiagonal& t, const std::vector<double>& inver
   return out;
 }
 
-/// The node-count check (issue 13 item 5). Every returned eigenvalue is within δ = max(64ε,
+/// The node-count check. Every returned eigenvalue is within δ = max(64ε,
 /// 2·residual)·‖T‖ of a true one (Weyl), so the inertia count N(σ) decides, for points more than
 /// δ from every returned value, how many true eigenvalues the result should hold:
 ///   - the result must be contiguous: N(v_max − δ) − N(v_min + δ) equals the returned values in

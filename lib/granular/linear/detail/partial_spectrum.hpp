@@ -26,7 +26,7 @@ using CandidateSeam = std::size_t (*)(std::string_view method, const std::vector
 extern CandidateSeam hide_candidate;
 }  // namespace detail
 
-/// The selected modes of the dynamical matrix `t` (SPEC §3) with IPRs from m^{-1/2}
+/// The selected modes of the dynamical matrix `t` (docs/physics.md, "The linear spectrum") with IPRs from m^{-1/2}
 /// (`inverse_sqrt_mass`, N entries), by config.method (lapack | bisect | arpack | slepc; its
 /// vectors, tolerance, subspace and lanes): every field of the Spectrum but `clustered` and
 /// info.max_residual, which SpectrumSolver adds; `residual` always (‖T w − ω² w‖ / ‖T‖_max for
