@@ -19,7 +19,6 @@ cp -r "$src/docs/figures" "$src/docs/results" "$pages/"
 cp "$src"/examples/*.cpp "$pages/examples/"
 GRANULAR_SOURCE_DIR=$src PYTHONPATH=$build/python /usr/bin/python3 "$pages/generate.py" "$build" "$pages"
 
-version=$(sed -n 's/^project(granular VERSION \([0-9.]*\).*/\1/p' "$src/CMakeLists.txt")
 doxygen - >"$site/doxygen/log" 2>&1 <<DOXYFILE || { cat "$site/doxygen/log"; exit 1; }
 PROJECT_NAME = granular
 INPUT = $src/lib/granular
@@ -40,6 +39,6 @@ MACRO_EXPANSION = YES
 INPUT_FILTER = "sed -E -e 's/ = \{\.[^}]*\}//' -e 's/([A-Za-z0-9_])\{\.[^}]*\}/\1/'"
 DOXYFILE
 
-GRANULAR_VERSION=$version GRANULAR_DOXYGEN_XML=$site/doxygen/xml PYTHONPATH=$build/python \
+GRANULAR_DOXYGEN_XML=$site/doxygen/xml PYTHONPATH=$build/python \
   /usr/bin/python3 -m sphinx -W --keep-going -q -b html "$pages" "$site/html"
 echo "build-docs: $site/html/index.html"

@@ -7,7 +7,7 @@ import sys
 project = "granular"
 author = "the granular developers"
 copyright = "2026, the granular developers"
-version = release = os.environ.get("GRANULAR_VERSION", "")
+version = release = __import__("granular").__version__  # the package autodoc documents
 
 extensions = ["myst_parser", "breathe", "sphinx.ext.autodoc", "sphinx.ext.napoleon", "sphinx.ext.mathjax",
               "nbsphinx"]

@@ -17,12 +17,7 @@ def read_csv(path):
     granular.plot's reader, with {} for a file of no rows."""
     from granular.plot import _io
 
-    try:
-        return _io.read_csv(path)
-    except ValueError as error:
-        if "no rows" in str(error):
-            return {}
-        raise
+    return _io.read_csv(path, allow_empty=True)
 
 
 class Tools:

@@ -11,11 +11,14 @@ def is_path(x):
     return isinstance(x, (str, bytes, os.PathLike))
 
 
-def read_csv(path):
-    """Columns of a CSV file: numeric ones as float arrays, others as lists of str."""
+def read_csv(path, allow_empty=False):
+    """Columns of a CSV file: numeric ones as float arrays, others as lists of str. A file of no
+    rows is a ValueError, or {} with allow_empty."""
     with open(path, newline="") as f:
         rows = list(csv.DictReader(f))
     if not rows:
+        if allow_empty:
+            return {}
         raise ValueError(f"{os.fspath(path)}: no rows")
     out = {}
     for key in rows[0]:

@@ -33,7 +33,8 @@ def energy_map(source, spectral_density=None, t_window=None, site_window=None, f
     meta = {}
     if _io.is_path(source):
         t, site, energy = _io.read_hdf5_map(source)
-        meta = _io.run_json_naming(source)
+        if metadata is None:
+            meta = _io.run_json_naming(source)
     else:
         if source.energy_map is None:
             raise ValueError("this run has no energy map: run granular.spreading(..., energy_map=True)")
