@@ -25,6 +25,7 @@ int main(int argc, char** argv) {
   std::string disorder = "A", xi_text = "0.1:1", q_text = "0.2,0.5,0.8", output = "ipr-map", solver = "fast";
   std::string method = "lapack";
   IprMapConfig config;
+  tool::ChainOptions beads;  // --walls, --types/--type-masses/--polydisperse (with --disorder as their rule)
   RunOptions run;
   tool::SelectionOptions selection;
   bool quiet = false;
@@ -35,6 +36,7 @@ int main(int argc, char** argv) {
   tool::add_option(app, "--F0", config.chain.F0, "static precompression [N], > 0");
   tool::add_option(app, "--R1", config.chain.R1,
                    "radius of type-1 beads [m]; type 2 has xi*R1 (steel beads, steel walls)");
+  tool::add_walls_option(app, beads.walls);
   tool::add_integer(app, "--realizations", config.realizations, "chains averaged per (q, xi)");
   tool::add_integer(app, "--seed", config.chain.seed, "random seed; realization r of seed s is always the same chain");
   tool::add_integer(app, "--threads", run.threads, "worker threads (0 = all cores); results do not depend on it");
@@ -50,7 +52,6 @@ int main(int argc, char** argv) {
   app.add_option("--bin-khz", config.bin_khz,
                  "average in frequency bins of this width [kHz] instead of by mode number: "
                  "columns disorder,q,xi,freq_lo_khz,freq_hi_khz,modes,ipr (empty bins: modes 0, ipr nan)");
-  tool::ChainOptions beads;  // --types/--type-masses/--polydisperse (with --disorder as their rule)
   tool::add_bead_distribution_options(app, beads);
   app.add_flag("--quiet", quiet, "no progress line on stderr");
 
@@ -75,6 +76,7 @@ int main(int argc, char** argv) {
       throw InvalidInput("--method", ": only with --near/--count or --window (the full map uses --solver)");
     }
     beads.disorder = disorder;
+    config.chain.walls = parse_wall_shape(beads.walls);
     if ((config.chain.distribution = tool::bead_distribution(beads)))
       config.q_values = config.xi_values = {std::numeric_limits<double>::quiet_NaN()};  // one cell
     validate(config);

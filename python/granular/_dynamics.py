@@ -154,10 +154,10 @@ def transport(*, disorder="A", N=2501, q=0.5, xi=0.5, F0=10.0, R1=_core.paper_r1
               t_star=4e-3, kappa=0.1, bootstrap=1000, active_window=True, window_threshold=1e-30,
               reference_max_step=0.01e-6, max_energy_error=1e-3, energy_guard="stop", profile=False, threads=0,
               checkpoint=None, resume=False, resume_other_version=False, progress=False, damping_time=0.0,
-              kk_gamma=0.0, mle=False, renormalize=10):
+              kk_gamma=0.0, mle=False, renormalize=10, walls="flat"):
     recipe = _core.ChainRecipe()
     recipe.disorder = disorder
-    recipe.q, recipe.xi, recipe.F0, recipe.R1 = q, xi, F0, R1
+    recipe.q, recipe.xi, recipe.F0, recipe.R1, recipe.walls = q, xi, F0, R1, walls
     recipe.N = _core._size(N, "N", 2, _MAX)
     recipe.seed = _core._size(seed, "seed")
     choices = _choices(alpha, beta, site, centre, T, dt, integrator, force_law, samples, sampling, fit, fit_step,
@@ -171,7 +171,7 @@ def transport(*, disorder="A", N=2501, q=0.5, xi=0.5, F0=10.0, R1=_core.paper_r1
 transport.__doc__ = (
     "An ensemble of spreading runs: realizations 0..R-1 of seed `seed` of a disordered chain, each "
     "kicked and integrated to T, averaged and fitted (the spreading tool's --realizations R).\n\n"
-    "    disorder, N, q, xi, F0 [N], R1 [m], seed: the chains, as granular.random_chain's\n"
+    "    disorder, N, q, xi, F0 [N], R1 [m], seed, walls: the chains, as granular.random_chain's\n"
     "    realizations: R; ic: 'displacement' | 'velocity'\n" + _DYNAMICS_DOC + _BEYOND_DOC +
     "    profile: also average the site energies E_n(T)\n"
     "    threads: worker threads (0: every core); results do not depend on it\n"
@@ -193,14 +193,14 @@ def exponent_table(*, chains=["h", "A", "RDM1", "RDM2"], F0=[10.0, 0.5, 0.1, 0.0
                    kappa=0.1, bootstrap=1000, active_window=True, window_threshold=1e-30, reference_max_step=0.01e-6,
                    max_energy_error=1e-3, energy_guard="stop", profile_F0=[10.0, 0.1, 0.0], profile_realizations=100,
                    compare_paper=False, threads=0, checkpoint=None, resume=False, resume_other_version=False,
-                   progress=False, damping_time=0.0, kk_gamma=0.0, mle=False, renormalize=10):
+                   progress=False, damping_time=0.0, kk_gamma=0.0, mle=False, renormalize=10, walls="flat"):
     table = _core.ExponentTableConfig()
     table.precompressions = _core._numbers(F0, "F0", 0)
     table.profile_precompressions = [] if profile_F0 is None else _core._numbers(profile_F0, "profile_F0", 0)
     table.profile_realizations = _core._size(profile_realizations, "profile_realizations")
     recipe = _core.ChainRecipe()
     recipe.N = _core._size(N, "N", 2, _MAX)
-    recipe.xi, recipe.q = xi, q
+    recipe.xi, recipe.q, recipe.walls = xi, q, walls
     recipe.seed = _core._size(seed, "seed")
     table.base.chain = recipe
     table.base.realizations = _core._size(realizations, "realizations", 1)
@@ -218,7 +218,7 @@ exponent_table.__doc__ = (
     "for every chain kind x F0 x kick, each an ensemble of `realizations` (h runs one: it is "
     "deterministic).\n\n"
     "    chains: kinds among 'h', 'A', 'RDM1', 'RDM2'; F0: precompressions [N] (0: sonic vacuum); ic: "
-    "kicks\n    N, xi, q, realizations, seed: the chains\n" + _DYNAMICS_DOC + _BEYOND_DOC +
+    "kicks\n    N, xi, q, realizations, seed, walls ('flat' | 'sphere'): the chains\n" + _DYNAMICS_DOC + _BEYOND_DOC +
     "    profile_F0, profile_realizations: F0s whose E_n(T) is averaged, over how many realizations (None: none)\n"
     "    compare_paper: True (or the path of a table in its format) to compare gamma with the paper's Table I "
     "(z-scores with both error sources)\n"

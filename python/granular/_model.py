@@ -43,27 +43,34 @@ Keywords (as the tools' options):
     F0: static precompression [N], >= 0 (0: the sonic vacuum, no linear spectrum)
     R1: radius of type-1 beads [m]; type 2 has xi*R1
     material: granular.Material of beads and walls (default granular.steel)
+    walls: "flat" (the paper's) or "sphere" (fixed spheres of the end beads' radius and material: a
+        homogeneous chain is then the textbook fixed-end lattice)
 Returns a granular.Chain. Raises ValueError naming the keyword when a value is out of range."""
 
 
-def random_chain(disorder="A", N=100, q=0.5, xi=0.5, seed=1, realization=0, F0=10.0, R1=paper_r1, material=steel):
-    return _core._random_chain(disorder, N, q, xi, seed, realization, F0, R1, material)
+def random_chain(disorder="A", N=100, q=0.5, xi=0.5, seed=1, realization=0, F0=10.0, R1=paper_r1, material=steel,
+                 walls="flat"):
+    return _core._random_chain(disorder, N, q, xi, seed, realization, F0, R1, material, walls)
 
 
-def anderson(N=100, q=0.5, xi=0.5, seed=1, realization=0, F0=10.0, R1=paper_r1, material=steel):
-    return _core._random_chain("A", N, q, xi, seed, realization, F0, R1, material)
+def anderson(N=100, q=0.5, xi=0.5, seed=1, realization=0, F0=10.0, R1=paper_r1, material=steel,
+             walls="flat"):
+    return _core._random_chain("A", N, q, xi, seed, realization, F0, R1, material, walls)
 
 
-def rdm1(N=100, q=0.5, xi=0.5, seed=1, realization=0, F0=10.0, R1=paper_r1, material=steel):
-    return _core._random_chain("RDM1", N, q, xi, seed, realization, F0, R1, material)
+def rdm1(N=100, q=0.5, xi=0.5, seed=1, realization=0, F0=10.0, R1=paper_r1, material=steel,
+         walls="flat"):
+    return _core._random_chain("RDM1", N, q, xi, seed, realization, F0, R1, material, walls)
 
 
-def rdm2(N=100, q=0.5, xi=0.5, seed=1, realization=0, F0=10.0, R1=paper_r1, material=steel):
-    return _core._random_chain("RDM2", N, q, xi, seed, realization, F0, R1, material)
+def rdm2(N=100, q=0.5, xi=0.5, seed=1, realization=0, F0=10.0, R1=paper_r1, material=steel,
+         walls="flat"):
+    return _core._random_chain("RDM2", N, q, xi, seed, realization, F0, R1, material, walls)
 
 
-def homogeneous(N=100, q=0.5, xi=0.5, seed=1, realization=0, F0=10.0, R1=paper_r1, material=steel):
-    return _core._random_chain("h", N, q, xi, seed, realization, F0, R1, material)
+def homogeneous(N=100, q=0.5, xi=0.5, seed=1, realization=0, F0=10.0, R1=paper_r1, material=steel,
+                walls="flat"):
+    return _core._random_chain("h", N, q, xi, seed, realization, F0, R1, material, walls)
 
 
 random_chain.__doc__ = ("Realization `realization` of seed `seed` of a disorder kind: disorder = 'h' | 'A' | 'RDM1' | "
@@ -75,22 +82,23 @@ rdm2.__doc__ = "A random-dimer chain RDM2: each dimer '1 2' with probability q, 
 homogeneous.__doc__ = "N type-1 beads (q, xi, seed and realization do not matter)." + _CHAIN_KEYWORDS
 
 
-def diatomic(N=100, xi=0.5, F0=10.0, R1=paper_r1, material=steel):
+def diatomic(N=100, xi=0.5, F0=10.0, R1=paper_r1, material=steel, walls="flat"):
     """Alternating types 1, 2, 1, 2, ...: the ordered chain whose band edges fb1, fb2, fb3 granular.band_edges
-    gives. N beads, xi = R2/R1 in (0, 1], F0 [N], R1 [m]."""
-    return _core._diatomic(N, xi, F0, R1, material)
+    gives. N beads, xi = R2/R1 in (0, 1], F0 [N], R1 [m], walls "flat" or "sphere" (as random_chain)."""
+    return _core._diatomic(N, xi, F0, R1, material, walls)
 
 
-def from_types(types, xi=0.5, F0=10.0, R1=paper_r1, material=steel):
+def from_types(types, xi=0.5, F0=10.0, R1=paper_r1, material=steel, walls="flat"):
     """A chain of given bead types: `types` is any array-like of 1 and 2 (type 1 has radius R1 [m], type 2 xi*R1),
-    as a --config file holds them. F0 [N]."""
-    return _core._from_types(types, xi, F0, R1, material)
+    as a --config file holds them. F0 [N]; walls "flat" or "sphere" (as random_chain)."""
+    return _core._from_types(types, xi, F0, R1, material, walls)
 
 
-def from_radii(radii, F0=10.0, material=steel):
-    """A chain of beads of given radii [m] (any 1-D array-like, each finite and > 0) of one material, between flat
-    walls of the same material, under precompression F0 [N]."""
-    return _core._from_radii(radii, F0, material)
+def from_radii(radii, F0=10.0, material=steel, walls="flat"):
+    """A chain of beads of given radii [m] (any 1-D array-like, each finite and > 0) of one material under
+    precompression F0 [N], between walls of the same material: "flat", or "sphere" (fixed spheres of the end beads'
+    radii)."""
+    return _core._from_radii(radii, F0, material, walls)
 
 
 def configuration(disorder="A", q=0.5, N=100, seed=1, realization=0):

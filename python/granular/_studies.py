@@ -77,14 +77,16 @@ class IprMap:
 
 
 def ipr_map(*, disorder="A", xi="0.1:1", q="0.2,0.5,0.8", N=100, F0=10.0, R1=_core.paper_r1, realizations=100, seed=1,
-            solver="fast", near=None, count=None, window=None, method=None, bin_khz=0.0, threads=0, progress=False):
+            solver="fast", near=None, count=None, window=None, method=None, bin_khz=0.0, threads=0, progress=False,
+            walls="flat"):
     """Mean frequency [kHz] and displacement IPR of every mode of disordered chains over realizations, on a (q, xi)
     grid: the paper's IPR map, as the ipr-map tool computes it (same numbers for the same keywords).
 
     disorder: 'h' | 'A' | 'RDM1' | 'RDM2'
     xi, q: size ratios R2/R1 in (0, 1] and probabilities in [0, 1]: sequences, numbers, or the tools' range
         strings ('0.1:1' = 0.1, 0.11, ..., 1; '0.1:1:0.05'; '0.2,0.5,0.8')
-    N: beads per chain; F0: precompression [N] (> 0); R1: type-1 radius [m]
+    N: beads per chain; F0: precompression [N] (> 0); R1: type-1 radius [m]; walls: 'flat' | 'sphere' (as
+        granular.random_chain's)
     realizations, seed: chains averaged per cell; realization r of seed s is always the same chain, and all xi of
         one q share the bead sequences
     solver: 'fast' (default) | 'lapack' | 'lapack-stevr' | 'lapack-stemr' | 'lapack-stevd' | 'lapack-steqr'
@@ -101,7 +103,7 @@ def ipr_map(*, disorder="A", xi="0.1:1", q="0.2,0.5,0.8", N=100, F0=10.0, R1=_co
     c.xi_values = _core._numbers(xi, "xi", 0.01)
     c.q_values = _core._numbers(q, "q", 0.1)
     recipe.N = _core._size(N, "N", 2, _MAX)
-    recipe.F0, recipe.R1 = F0, R1
+    recipe.F0, recipe.R1, recipe.walls = F0, R1, walls
     c.realizations = _core._size(realizations, "realizations", 1)
     recipe.seed = _core._size(seed, "seed")
     c.chain = recipe
@@ -127,12 +129,13 @@ class Localization:
 
 
 def localization(chain=None, *, disorder="A", N=1000000, q=0.5, xi=0.5, seed=1, realization=0, F0=10.0,
-                 R1=_core.paper_r1, f="0:50:0.01", segments=32, threads=0, progress=False):
+                 R1=_core.paper_r1, f="0:50:0.01", segments=32, threads=0, progress=False, walls="flat"):
     """Localization length and density of states of one long chain by transfer matrices (docs/physics.md, 'Infinite
     chains'): the localization tool.
 
     chain: a granular.Chain; or None and a random realization (disorder, N, q, xi, seed, realization, F0 [N],
-        R1 [m]) drawn a piece at a time, so N = 1e8 needs no more memory than N = 100
+        R1 [m], walls 'flat' | 'sphere') drawn a piece at a time (flat walls), so N = 1e8 needs no more memory than
+        N = 100
     f: frequencies [kHz], increasing: a sequence or the tools' range string ('0:50:0.01')
     segments: chain pieces whose exponents give lyapunov_err (2 ... 1e6)
     threads: workers over blocks of frequencies (0: every core); results do not depend on it
@@ -145,7 +148,7 @@ def localization(chain=None, *, disorder="A", N=1000000, q=0.5, xi=0.5, seed=1, 
         if not (n >= 2) or not (n <= 1e12) or n != math.floor(n):
             raise ValueError(f"N {_core._format_number(n)}: must be a whole number of beads in [2, 1e12]")
         recipe.disorder = disorder
-        recipe.N, recipe.q, recipe.xi, recipe.F0, recipe.R1 = int(n), q, xi, F0, R1
+        recipe.N, recipe.q, recipe.xi, recipe.F0, recipe.R1, recipe.walls = int(n), q, xi, F0, R1, walls
         recipe.seed = _core._size(seed, "seed")
         r = _core._size(realization, "realization")
     return Localization(_core._localization(chain, recipe, r, f, segments, _run(threads, progress=progress)))

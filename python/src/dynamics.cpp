@@ -358,7 +358,10 @@ void bind_dynamics(py::module_& m) {
   config_class(m, "ChainRecipe", {"q", "xi", "R1", "N", "F0", "seed"}, &R::q, &R::xi, &R::R1, &R::N, &R::F0, &R::seed)
       .def_property(
           "disorder", [](const R& r) { return to_string(r.disorder); },
-          [](R& r, const std::string& name) { r.disorder = disorder_of(name); });
+          [](R& r, const std::string& name) { r.disorder = disorder_of(name); })
+      .def_property(
+          "walls", [](const R& r) { return r.walls == WallShape::flat ? "flat" : "sphere"; },
+          [](R& r, const std::string& word) { r.walls = parse_wall_shape(word); });
   using E = ExponentTableConfig;
   config_class(m, "ExponentTableConfig", {"precompressions", "profile_precompressions", "profile_realizations", "base"},
                &E::precompressions, &E::profile_precompressions, &E::profile_realizations, &E::base);

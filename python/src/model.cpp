@@ -36,9 +36,10 @@ ChainRecipe recipe_of(const ChainParameters& p) {
   return {.q = p.q, .xi = p.xi, .R1 = p.R1, .N = p.N, .F0 = p.F0, .material = p.material, .seed = p.seed};
 }
 
-PyChain random_py_chain(Disorder kind, const ChainParameters& p) {
+PyChain random_py_chain(Disorder kind, const ChainParameters& p, const std::string& walls) {
   ChainRecipe r = recipe_of(p);
   r.disorder = kind;
+  r.walls = parse_wall_shape(walls);
   return py_chain(r, p.realization);
 }
 
@@ -104,29 +105,35 @@ void bind_model(py::module_& m) {
                ", F0=" + format_number(c.chain.precompression) + " N>";
       });
 
-  m.def("_random_chain", [](const std::string& disorder, long long N, double q, double xi, long long seed,
-                            long long realization, double F0, double R1, const Material& material) {
-    return random_py_chain(disorder_of(disorder), chain_parameters(N, q, xi, seed, realization, F0, R1, material));
-  });
-  m.def("_diatomic", [](long long N, double xi, double F0, double R1, const Material& material) {
-    ChainRecipe r = recipe_of(chain_parameters(N, 0.5, xi, 1, 0, F0, R1, material));
-    r.given_types = Configuration(r.N);
-    for (std::size_t i = 0; i < r.N; ++i) (*r.given_types)[i] = i % 2 == 0 ? 1 : 2;
-    return py_chain(r, 0, "diatomic");
-  });
-  m.def("_from_types", [](const py::object& types, double xi, double F0, double R1, const Material& material) {
+  m.def("_random_chain",
+        [](const std::string& disorder, long long N, double q, double xi, long long seed, long long realization,
+           double F0, double R1, const Material& material, const std::string& walls) {
+          return random_py_chain(disorder_of(disorder), chain_parameters(N, q, xi, seed, realization, F0, R1, material),
+                                 walls);
+        });
+  m.def("_diatomic",
+        [](long long N, double xi, double F0, double R1, const Material& material, const std::string& walls) {
+          ChainRecipe r = recipe_of(chain_parameters(N, 0.5, xi, 1, 0, F0, R1, material));
+          r.walls = parse_wall_shape(walls);
+          r.given_types = Configuration(r.N);
+          for (std::size_t i = 0; i < r.N; ++i) (*r.given_types)[i] = i % 2 == 0 ? 1 : 2;
+          return py_chain(r, 0, "diatomic");
+        });
+  m.def("_from_types", [](const py::object& types, double xi, double F0, double R1, const Material& material,
+                          const std::string& walls) {
     Configuration t = types_vector(types, "types");
     const ChainParameters p =
         chain_parameters(static_cast<long long>(std::max<std::size_t>(t.size(), 2)), 0.5, xi, 1, 0, F0, R1, material);
     if (t.size() < 2) bad_value("types", ": " + std::to_string(t.size()) + " beads; a chain needs at least 2");
     ChainRecipe r = recipe_of(p);
+    r.walls = parse_wall_shape(walls);
     r.given_types = std::move(t);
     return py_chain(r, 0);
   });
-  m.def("_from_radii", [](const py::object& radii, double F0, const Material& material) {
+  m.def("_from_radii", [](const py::object& radii, double F0, const Material& material, const std::string& walls) {
     std::vector<double> r = double_vector(radii, "radii");
     if (r.size() < 2) bad_value("radii", ": " + std::to_string(r.size()) + " beads; a chain needs at least 2");
-    return py_chain({.given_radii = std::move(r), .F0 = F0, .material = material}, 0);
+    return py_chain({.given_radii = std::move(r), .F0 = F0, .material = material, .walls = parse_wall_shape(walls)}, 0);
   });
   m.def("_configuration", [](const std::string& disorder, double q, long long N, long long seed, long long realization) {
     validate_probability(q);

@@ -117,6 +117,7 @@ py::dict localization(const py::object& chain, const ChainRecipe& recipe, std::u
     if (!(c.chain.precompression > 0)) bad_value("F0", " 0: the sonic vacuum has no linear limit (needs F0 > 0)");
     r = c.recipe, realization = c.realization, description = c.description;
   }
+  if (chain.is_none()) validate(r, r.walls == WallShape::flat ? 1000000000000 : 100000000);  // sphere walls: stored
   const std::unique_ptr<BeadSource> beads = r.beads(realization);
   if (chain.is_none()) {
     warn(radius_warnings(r, {"R1", "beads", "radii"}));

@@ -108,3 +108,19 @@ def test_single_chain_correlation_of_an_alternating_chain_is_plus_minus_one():
     assert gr.correlation_theory("RDM1", 0.5, 2) == pytest.approx(0.0, abs=1e-15)
     theory = gr.correlation_theory("A", 0.5, np.arange(4))
     assert_identical(theory, [1.0, 0.0, 0.0, 0.0])
+
+
+def test_sphere_walls_make_the_homogeneous_chain_the_textbook_lattice():
+    # f_j / f_N = sin(j pi / 2(N+1)) / sin(N pi / 2(N+1)) needs no material constant (docs/physics.md, "Homogeneous
+    # check"); flat walls stiffen the end bonds and move mode 1 off it.
+    n = 40
+    k = math.pi / (2 * (n + 1))
+    lattice = np.sin(np.arange(1, n + 1) * k) / math.sin(n * k)
+    for make in (lambda w: gr.homogeneous(N=n, walls=w), lambda w: gr.from_radii([gr.paper_r1] * n, walls=w)):
+        f = gr.spectrum(make("sphere")).freq_khz
+        np.testing.assert_allclose(f / f[-1], lattice, rtol=1e-12, atol=0)
+        flat = gr.spectrum(make("flat")).freq_khz
+        assert flat[0] / flat[-1] / lattice[0] - 1 > 1e-3
+    assert gr.homogeneous(N=n, walls="sphere").metadata["walls"].startswith("fixed spheres")
+    with pytest.raises(ValueError, match="walls"):
+        gr.anderson(N=10, walls="round")

@@ -25,7 +25,7 @@ struct ChainOptions {
   std::string disorder = "A";
   double xi = 0.5, q = 0.5, f0 = 10, r1 = paper_r1;
   long long n = 100, seed = 1, realization = 0;
-  std::string config, radii, types, type_masses, polydisperse;
+  std::string config, radii, types, type_masses, polydisperse, walls = "flat";
   bool auto_n = false;         ///< --N auto (long_time_options.hpp): N from T, the chain drawn from its centre
   nlohmann::json length_rule;  ///< and the rule's numbers
 };
@@ -49,13 +49,21 @@ inline std::vector<CLI::Option*> add_bead_distribution_options(CLI::App& app, Ch
   return all;
 }
 
+/// --walls flat | sphere (model/chain_recipe.hpp: WallShape).
+inline void add_walls_option(CLI::App& app, std::string& walls) {
+  add_option(app, "--walls", walls,
+             "flat (the paper's) | sphere: fixed spheres of the end beads' radius and material, the textbook "
+             "fixed-end lattice");
+}
+
 inline void add_chain_options(CLI::App& app, ChainOptions& o) {
   add_option(app, "--disorder", o.disorder, "h | A | RDM1 | RDM2 (homogeneous, Anderson, random dimer 1/2)");
   add_option(app, "--xi", o.xi, "size ratio R2/R1 in (0,1]");
   add_option(app, "--q", o.q, "probability of a type-1 bead (A), dimer 11 (RDM1) or dimer 12 (RDM2), in [0,1]");
   add_integer(app, "--N", o.n, "beads in the chain (>= 2)");
   add_option(app, "--F0", o.f0, "static precompression [N]");
-  add_option(app, "--R1", o.r1, "radius of type-1 beads [m] (steel beads and flat steel walls)");
+  add_option(app, "--R1", o.r1, "radius of type-1 beads [m] (steel beads and steel walls)");
+  add_walls_option(app, o.walls);
   add_integer(app, "--seed", o.seed, "random seed");
   add_integer(app, "--realization", o.realization, "which realization of the seed (0-based)");
   auto* config =
@@ -98,6 +106,7 @@ inline ChainRecipe chain_recipe(const ChainOptions& o) {
                 .N = static_cast<std::size_t>(o.n),
                 .F0 = o.f0,
                 .seed = static_cast<std::uint64_t>(o.seed)};
+  r.walls = parse_wall_shape(o.walls);
   r.distribution = bead_distribution(o);
   if (!o.config.empty()) r.given_types = read_configuration_file(r.source = o.config);
   if (!o.radii.empty()) r.given_radii = read_radii_warning(r.source = o.radii);

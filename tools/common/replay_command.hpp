@@ -43,6 +43,7 @@ inline std::vector<std::string> replay_flags(const TransportCase& c, std::uint64
     add("--realization", std::to_string(r));
   }
   add("--F0", number(chain.F0));
+  if (chain.walls != WallShape::flat) add("--walls", "sphere");
   add("--ic", to_string(c.kick));
   add("--alpha", number(c.alpha));
   if (c.kick == Kick::velocity) add("--beta", c.match_beta ? "match" : number(c.beta));

@@ -16,7 +16,30 @@ ChainParameters parameters(const ChainRecipe& c, std::uint64_t r) {
       .N = c.N, .q = c.q, .xi = c.xi, .seed = c.seed, .realization = r, .F0 = c.F0, .R1 = c.R1, .material = c.material};
 }
 
+Chain with_walls(const std::vector<double>& radii, const ChainRecipe& c) {
+  ChainSpec spec;
+  spec.radii = radii;
+  spec.materials = {c.material};
+  spec.precompression = c.F0;
+  if (c.walls == WallShape::sphere) {
+    spec.left_wall.radius = radii.front();
+    spec.right_wall.radius = radii.back();
+  }
+  return make_chain(spec);
+}
+
 }  // namespace
+
+const char* walls_description(WallShape walls) {
+  return walls == WallShape::flat ? "flat, same material as the beads"
+                                  : "fixed spheres, same radius and material as the end beads";
+}
+
+WallShape parse_wall_shape(const std::string& word) {
+  if (word == "flat") return WallShape::flat;
+  if (word == "sphere") return WallShape::sphere;
+  throw InvalidInput("walls", " '" + word + "': must be flat or sphere");
+}
 
 std::size_t ChainRecipe::size() const {
   if (given_types) return given_types->size();
@@ -36,16 +59,23 @@ std::vector<double> ChainRecipe::radii(std::uint64_t r) const {
   return radii_of(types(r), R1, xi);
 }
 
-Chain ChainRecipe::chain_of(const Configuration& t) const { return from_types(t, parameters(*this, 0)); }
+Chain ChainRecipe::chain_of(const Configuration& t) const {
+  if (walls == WallShape::sphere) {
+    from_types(t, parameters(*this, 0));  // its checks of the types, ξ and R1
+    return with_walls(radii_of(t, R1, xi), *this);
+  }
+  return from_types(t, parameters(*this, 0));
+}
 
 Chain ChainRecipe::chain(std::uint64_t r) const {
-  if (given_radii || distribution) return make_chain(radii(r), F0, material);
+  if (given_radii || distribution) return with_walls(radii(r), *this);
   return chain_of(types(r));
 }
 
 std::unique_ptr<BeadSource> ChainRecipe::beads(std::uint64_t r) const {
-  if (given_types) return typed_beads(*given_types, parameters(*this, r));
-  if (given_radii || distribution || centred) return chain_beads(chain(r));
+  if (given_types && walls == WallShape::flat) return typed_beads(*given_types, parameters(*this, r));
+  // The streamed two-type sources know flat walls only; other walls come from the stored chain.
+  if (given_radii || distribution || centred || walls != WallShape::flat) return chain_beads(chain(r));
   return random_beads(disorder, parameters(*this, r));
 }
 
@@ -115,7 +145,7 @@ nlohmann::json describe(const ChainRecipe& c, std::optional<std::uint64_t> reali
   nlohmann::json d;
   d["F0_N"] = c.F0;
   d["material"] = describe(c.material);
-  d["walls"] = flat_walls_description;
+  d["walls"] = walls_description(c.walls);
   d["N"] = c.size();
   const auto drawn = [&] {
     d["seed"] = c.seed;
@@ -149,7 +179,7 @@ void describe_fields(const ChainRecipe& c, nlohmann::json& f) {
   f["R1_m"] = c.R1;
   f["seed"] = c.seed;
   f["material"] = describe(c.material);
-  f["walls"] = flat_walls_description;
+  f["walls"] = walls_description(c.walls);
   if (c.distribution) f["beads"] = describe(*c.distribution);
   if (c.centred) f["chain_draw"] = "outward from the centre bead";
   if (c.given_types && !c.source.empty()) f["config_file"] = c.source;
@@ -168,8 +198,10 @@ ChainRecipe parse_recipe_fields(const nlohmann::json& f) {
     c.seed = f.at("seed").get<std::uint64_t>();
     const auto& m = f.at("material");
     c.material = {m.at("E_Pa").get<double>(), m.at("nu").get<double>(), m.at("rho_kg_m3").get<double>()};
-    if (f.at("walls").get<std::string>() != flat_walls_description)
-      throw InvalidInput("walls", ": only '" + std::string(flat_walls_description) + "'");
+    const auto walls = f.at("walls").get<std::string>();
+    if (walls == walls_description(WallShape::sphere)) c.walls = WallShape::sphere;
+    else if (walls != walls_description(WallShape::flat))
+      throw InvalidInput("walls", " '" + walls + "': not a description of flat or sphere walls");
     if (f.contains("beads")) c.distribution = parse_bead_distribution(f.at("beads").get<std::string>());
     if (f.contains("chain_draw")) c.centred = true;
     if (f.contains("config_file")) {

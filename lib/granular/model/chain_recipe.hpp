@@ -27,8 +27,16 @@
 
 namespace granular {
 
-/// How the walls of every recipe's chain are made, as descriptions say it.
-inline constexpr const char* flat_walls_description = "flat, same material as the beads";
+/// What ends a recipe's chain. Flat walls (the paper's) make the end bonds stiffer than the
+/// bulk ones (a sphere on a flat has twice the effective radius of two equal spheres); sphere
+/// walls are fixed beads of the end beads' radius and material, so a homogeneous chain is the
+/// textbook fixed-end lattice, ω_j = 2 √(B/m) sin(jπ / (2(N+1))), exactly.
+enum class WallShape { flat, sphere };
+
+/// The walls as descriptions say them (the JSON "walls" entry).
+const char* walls_description(WallShape walls);
+/// "flat" or "sphere" (the tools' and Python's word); throws InvalidInput("walls") otherwise.
+WallShape parse_wall_shape(const std::string& word);
 
 struct ChainRecipe {
   /// Where the beads come from. At most one of `distribution`, `given_types` and `given_radii`
@@ -45,6 +53,7 @@ struct ChainRecipe {
   std::size_t N = 100;                               ///< beads of a drawn chain (a given one has its own length)
   double F0 = 10;                                    ///< static precompression [N], ≥ 0 (0: the sonic vacuum)
   Material material = steel;                         ///< beads and walls
+  WallShape walls = WallShape::flat;                 ///< flat walls, or fixed spheres like the end beads
   std::uint64_t seed = 1;                            ///< random seed of drawn chains
 
   /// True when realization r matters (two-type draws and distributions).

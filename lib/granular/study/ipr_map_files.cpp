@@ -44,7 +44,7 @@ nlohmann::json describe_ipr_map(const IprMapConfig& config, const std::vector<Ip
                         {"F0_N", chain.F0},
                         {"R1_m", chain.R1},
                         {"material", describe(chain.material)},
-                        {"walls", flat_walls_description},
+                        {"walls", walls_description(chain.walls)},
                         {"realizations", config.realizations},
                         {"seed", chain.seed},
                         {"threads", request.threads},
