@@ -1,7 +1,9 @@
 #include "granular/model/configuration_file.hpp"
 
+#include <cerrno>
 #include <charconv>
 #include <cmath>
+#include <cstring>
 #include <fstream>
 #include <sstream>
 
@@ -12,12 +14,18 @@
 namespace granular {
 namespace {
 
-std::string read_text(const std::string& path) {
+// `parameter`: what names the file (config, radii), so that a tool says which flag to mend.
+std::string read_text(const std::string& path, const char* parameter) {
+  errno = 0;
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw InvalidInput("cannot read file '" + path + "'");
+  const auto unreadable = [&] {
+    const std::string why = errno != 0 ? std::strerror(errno) : "unreadable";
+    return InvalidInput(parameter, " '" + path + "': cannot read the file (" + why + ")");
+  };
+  if (!in) throw unreadable();
   std::ostringstream text;
   text << in.rdbuf();
-  if (in.bad()) throw InvalidInput("cannot read file '" + path + "'");
+  if (in.bad()) throw unreadable();
   return text.str();
 }
 
@@ -78,11 +86,11 @@ std::vector<double> parse_radii_text(const std::string& text, const std::string&
 }
 
 Configuration read_configuration_file(const std::string& path) {
-  return parse_configuration_text(read_text(path), path);
+  return parse_configuration_text(read_text(path, "config"), path);
 }
 
 std::vector<double> read_radii_file(const std::string& path, std::vector<std::string>* warnings) {
-  return parse_radii_text(read_text(path), path, warnings);
+  return parse_radii_text(read_text(path, "radii"), path, warnings);
 }
 
 }  // namespace granular
