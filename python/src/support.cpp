@@ -12,6 +12,7 @@
 #include <thread>
 
 #include "bindings.hpp"
+#include "granular/code_identity.hpp"
 #include "granular/error.hpp"
 #include "granular/io/range_syntax.hpp"
 #include "granular/number_format.hpp"
@@ -178,7 +179,7 @@ py::object to_python(const nlohmann::json& v) {
 }
 
 nlohmann::json metadata_head(const std::string& function) {
-  return {{"function", "granular." + function}, {"version", GRANULAR_VERSION}};
+  return {{"function", "granular." + function}, {"version", code_version()}};
 }
 
 Disorder disorder_of(const std::string& name) {
