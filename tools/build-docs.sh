@@ -12,8 +12,8 @@ rm -rf "$pages" "$site/html" "$site/doxygen"
 mkdir -p "$pages/examples" "$site/doxygen"
 cp -r "$src/docs/site/." "$pages/"
 cp "$src"/docs/*.md "$src/docs/tutorial.ipynb" "$pages/"
-# The tutorial with its figures when the test suite has executed it (python_tutorial), else as stored.
-executed=$build/python/tutorial/tutorial.executed.ipynb
+# The tutorial with its figures when the test suite has executed it (python_pip_install_tutorial), else as stored.
+executed=$build/python/pip-install/tutorial/tutorial.executed.ipynb
 if [ -f "$executed" ] && [ "$executed" -nt "$src/docs/tutorial.ipynb" ]; then cp "$executed" "$pages/tutorial.ipynb"; fi
 cp -r "$src/docs/figures" "$src/docs/results" "$pages/"
 cp "$src"/examples/*.cpp "$pages/examples/"

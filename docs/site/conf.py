@@ -26,7 +26,7 @@ cpp_index_common_prefix = ["granular::"]
 autodoc_member_order = "bysource"
 autodoc_default_options = {"members": True, "undoc-members": False}
 
-# The tutorial is executed by the test suite (python_tutorial); here it is rendered as stored.
+# The tutorial is executed by the test suite (python_pip_install_tutorial); here it is rendered as stored.
 nbsphinx_execute = "never"
 
 html_theme = "sphinx_rtd_theme" if __import__("importlib").util.find_spec("sphinx_rtd_theme") else "alabaster"

@@ -2,7 +2,11 @@
 `pip install --no-build-isolation` of a copy of the repository's package files, then `import granular`
 from `/` in that environment, its figure command, and a wheel with the same contents.
 
-usage: run_pip_install.py SOURCE_DIR WORK_DIR [PREBUILT_EXTENSION]
+usage: run_pip_install.py SOURCE_DIR WORK_DIR [PREBUILT_EXTENSION] [--tutorial NOTEBOOK]
+
+With --tutorial the notebook then runs (run_tutorial.py) in a Jupyter kernel of that environment,
+registered as a reader registers one (`python -m ipykernel install`), with no PYTHONPATH: the
+tutorial as a user of the installed package meets it.
 
 With PREBUILT_EXTENSION (the build tree's _core*.so; ctest label python) setup.py packages it
 instead of running CMake, so the test checks the packaging in seconds; that extension still
@@ -16,8 +20,14 @@ import subprocess
 import sys
 import zipfile
 
-source, work = pathlib.Path(sys.argv[1]).resolve(), pathlib.Path(sys.argv[2]).resolve()
-prebuilt = sys.argv[3] if len(sys.argv) > 3 else None
+arguments = sys.argv[1:]
+tutorial = None
+if "--tutorial" in arguments:
+    at = arguments.index("--tutorial")
+    tutorial = pathlib.Path(arguments[at + 1]).resolve()
+    del arguments[at:at + 2]
+source, work = pathlib.Path(arguments[0]).resolve(), pathlib.Path(arguments[1]).resolve()
+prebuilt = arguments[2] if len(arguments) > 2 else None
 
 
 def run(*command, **kwargs):
@@ -65,6 +75,11 @@ print("imported", where, "version", granular.__version__)
 print(run(python, "-c", check, env=env, cwd="/"))
 out = run(venv / "bin" / "granular-plot", "--help", env=env, cwd="/")
 assert "ipr-map" in out, out
+
+if tutorial:
+    run(python, "-m", "ipykernel", "install", "--prefix", venv, "--name", "granular-env", env=env, cwd="/")
+    print(run(python, pathlib.Path(__file__).with_name("run_tutorial.py"), tutorial, work / "tutorial", "--kernel",
+              "granular-env", env=env, cwd=work))
 
 wheels = work / "wheels"
 run(python, "-m", "pip", "wheel", "--no-build-isolation", "--no-index", "--no-deps", "-w", wheels, copy, env=env,

@@ -3,7 +3,9 @@
 and checks it: no cell raised, every cell tagged "figure" produced an image, the whole run stayed
 under its time budget. The executed notebook is left in OUTPUT_DIR for inspection.
 
-usage: run_tutorial.py NOTEBOOK OUTPUT_DIR [--budget SECONDS]   (PYTHONPATH must reach granular)
+usage: run_tutorial.py NOTEBOOK OUTPUT_DIR [--budget SECONDS] [--kernel NAME]
+(the kernel, by default Jupyter's python3, must reach granular: run_pip_install.py runs this with the
+kernel of the virtual environment it installed granular into)
 """
 import argparse
 import os
@@ -19,12 +21,14 @@ def main():
     p.add_argument("notebook")
     p.add_argument("output_dir")
     p.add_argument("--budget", type=float, default=120, help="seconds (the tutorial aims at < 60 on an idle machine)")
+    p.add_argument("--kernel", default="python3", help="the Jupyter kernel to run it with")
     args = p.parse_args()
     os.makedirs(args.output_dir, exist_ok=True)
     env = dict(os.environ, PYDEVD_DISABLE_FILE_VALIDATION="1")
     env.pop("MPLBACKEND", None)  # the kernel's own inline backend, as in a reader's notebook
     start = time.monotonic()
-    done = subprocess.run(["jupyter-nbconvert", "--to", "notebook", "--execute", "--ExecutePreprocessor.timeout=300",
+    done = subprocess.run([sys.executable, "-m", "nbconvert", "--to", "notebook", "--execute",
+                           "--ExecutePreprocessor.timeout=300", f"--ExecutePreprocessor.kernel_name={args.kernel}",
                            args.notebook, "--output-dir", args.output_dir, "--output", "tutorial.executed.ipynb"],
                           capture_output=True, text=True, env=env)
     seconds = time.monotonic() - start

@@ -21,9 +21,9 @@ source, build, work = (pathlib.Path(p).resolve() for p in sys.argv[1:4])
 PAGES = ["README.md", *sorted(str(p.relative_to(source)) for p in (source / "docs").glob("*.md")),
          *sorted(str(p.relative_to(source)) for p in (source / "docs" / "site").glob("*.md"))]
 # Blocks that set up or test the toolkit itself: covered by CI running them (install-deps, the test
-# command), by python_pip_install (pip), or not meant to be run as written (performance scripts).
+# command), by python_pip_install_tutorial (pip), or not meant to be run as written (performance scripts).
 SKIP = ("install-deps.sh", "pip install", "tests/run-all.sh", "run-benchmarks.sh", "python_vs_cpp.sh", "cmake ",
-        "jupyter", "valgrind", "perf ", "/usr/bin/time", "mpirun -np 4", "git ")
+        "jupyter", "ipykernel", "valgrind", "perf ", "/usr/bin/time", "mpirun -np 4", "git ")
 # The paper's whole study (15,010 runs, minutes) at the same settings but a smaller N, T and ensemble.
 # Likewise the longest of the rest (tens of seconds each as printed), so that the test takes a minute.
 SMALLER = [(r"exponents --compare-paper(?!\S)",
