@@ -36,6 +36,7 @@ int main(int argc, char** argv) {
   std::string paper_table = std::string(GRANULAR_SOURCE_DIR) + "/data/paper_table1_gamma.csv";
   long long n = 2501, realizations = 500, seed = 1, profile_realizations = 100;
   double xi = 0.5, q = 0.5;
+  std::string walls = "flat";
   tool::LongRunOptions run_options;
   bool compare = false, auto_n = false;
   tool::add_option(app, "--F0", f0_text, "precompressions [N], comma list (0 = sonic vacuum)");
@@ -43,6 +44,7 @@ int main(int argc, char** argv) {
   tool::add_option(app, "--N", n, "beads per chain");
   tool::add_option(app, "--xi", xi, "size ratio R2/R1 in (0,1]");
   tool::add_option(app, "--q", q, "disorder probability in [0,1]");
+  tool::add_walls_option(app, walls);
   tool::add_dynamics_options(app, dynamics);
   tool::add_option(app, "--realizations", realizations, "realizations per disordered case (h always runs 1)");
   tool::add_option(app, "--seed", seed, "random seed");
@@ -72,7 +74,7 @@ int main(int argc, char** argv) {
     if (run_options.threads < 0) throw InvalidInput("--threads: must be >= 0");
     TransportCase& base = config.base;
     base.chain.N = static_cast<std::size_t>(n), base.chain.seed = static_cast<std::uint64_t>(seed);
-    base.chain.xi = xi, base.chain.q = q;
+    base.chain.xi = xi, base.chain.q = q, base.chain.walls = parse_wall_shape(walls);
     base.realizations = static_cast<std::size_t>(realizations);
     tool::apply(dynamics, base);
     config.automatic_length = auto_n;

@@ -65,6 +65,7 @@ const BadInput cases[] = {
     {"localization", "--radii /nonexistent/radii.txt", "--radii"},
     {"localization", "--walls sphere --N 1e9", "--N"},
     {"spreading", "--walls none", "--walls"},
+    {"exponents", "--walls none", "--walls"},
     {"spectrum", "--disorder RDM3", "--disorder"},
     {"spectrum", "--q 2", "--q"},
     {"spectrum", "--xi 1.01", "--xi"},
