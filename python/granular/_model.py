@@ -53,33 +53,24 @@ def random_chain(disorder="A", N=100, q=0.5, xi=0.5, seed=1, realization=0, F0=1
     return _core._random_chain(disorder, N, q, xi, seed, realization, F0, R1, material, walls)
 
 
-def anderson(N=100, q=0.5, xi=0.5, seed=1, realization=0, F0=10.0, R1=paper_r1, material=steel,
-             walls="flat"):
-    return _core._random_chain("A", N, q, xi, seed, realization, F0, R1, material, walls)
+def _kind(disorder, name, summary):
+    """random_chain with its disorder fixed: the named constructors below."""
+    def make(N=100, q=0.5, xi=0.5, seed=1, realization=0, F0=10.0, R1=paper_r1, material=steel, walls="flat"):
+        return random_chain(disorder, N, q, xi, seed, realization, F0, R1, material, walls)
+    make.__name__ = make.__qualname__ = name
+    make.__doc__ = summary + _CHAIN_KEYWORDS
+    return make
 
 
-def rdm1(N=100, q=0.5, xi=0.5, seed=1, realization=0, F0=10.0, R1=paper_r1, material=steel,
-         walls="flat"):
-    return _core._random_chain("RDM1", N, q, xi, seed, realization, F0, R1, material, walls)
-
-
-def rdm2(N=100, q=0.5, xi=0.5, seed=1, realization=0, F0=10.0, R1=paper_r1, material=steel,
-         walls="flat"):
-    return _core._random_chain("RDM2", N, q, xi, seed, realization, F0, R1, material, walls)
-
-
-def homogeneous(N=100, q=0.5, xi=0.5, seed=1, realization=0, F0=10.0, R1=paper_r1, material=steel,
-                walls="flat"):
-    return _core._random_chain("h", N, q, xi, seed, realization, F0, R1, material, walls)
+anderson = _kind("A", "anderson", "An Anderson-like chain: each bead type 1 with probability q.")
+rdm1 = _kind("RDM1", "rdm1", "A random-dimer chain RDM1: each dimer '1 1' with probability q, else '2 2' (odd N: the "
+             "last bead of the last dimer is dropped).")
+rdm2 = _kind("RDM2", "rdm2", "A random-dimer chain RDM2: each dimer '1 2' with probability q, else '2 1'.")
+homogeneous = _kind("h", "homogeneous", "N type-1 beads (q, xi, seed and realization do not matter).")
 
 
 random_chain.__doc__ = ("Realization `realization` of seed `seed` of a disorder kind: disorder = 'h' | 'A' | 'RDM1' | "
                         "'RDM2' (the tools' --disorder)." + _CHAIN_KEYWORDS)
-anderson.__doc__ = "An Anderson-like chain: each bead type 1 with probability q." + _CHAIN_KEYWORDS
-rdm1.__doc__ = ("A random-dimer chain RDM1: each dimer '1 1' with probability q, else '2 2' (odd N: the last bead of "
-                "the last dimer is dropped)." + _CHAIN_KEYWORDS)
-rdm2.__doc__ = "A random-dimer chain RDM2: each dimer '1 2' with probability q, else '2 1'." + _CHAIN_KEYWORDS
-homogeneous.__doc__ = "N type-1 beads (q, xi, seed and realization do not matter)." + _CHAIN_KEYWORDS
 
 
 def diatomic(N=100, xi=0.5, F0=10.0, R1=paper_r1, material=steel, walls="flat"):
