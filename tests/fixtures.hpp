@@ -1,5 +1,7 @@
 #pragma once
 // Canonical chains and the SPEC reference table, shared by the test suites.
+#include <cmath>
+#include <cstddef>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -11,6 +13,11 @@
 #include "granular/model/disorder.hpp"
 
 namespace granular::fixtures {
+
+/// The number of steps τ that make up `duration` [s] (both given as round decimals).
+inline std::size_t steps_for(double duration, double tau) {
+  return static_cast<std::size_t>(std::llround(duration / tau));
+}
 
 inline constexpr double r1 = 4.76e-3;  ///< the paper's type-1 radius [m]
 

@@ -19,7 +19,7 @@ namespace {
 
 using fixtures::relative_difference;
 
-std::size_t steps_for(double duration, double tau) { return static_cast<std::size_t>(std::llround(duration / tau)); }
+using fixtures::steps_for;
 
 // Exact solution of M ü = −B u − (M/τ_d) u̇: every mode k obeys q̈ + q̇/τ_d + ω_k² q = 0, so
 // q(t) = e^{−t/(2τ_d)} [q0 cos ω_d t + (q̇0 + q0/(2τ_d)) sin(ω_d t)/ω_d], ω_d² = ω_k² − 1/(4τ_d²).

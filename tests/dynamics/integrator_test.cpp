@@ -13,7 +13,7 @@ namespace {
 
 using fixtures::relative_difference;
 
-std::size_t steps_for(double duration, double tau) { return static_cast<std::size_t>(std::llround(duration / tau)); }
+using fixtures::steps_for;
 
 TEST(Scheme, CoefficientsSumToOne) {
   for (const SplittingScheme& s : {saba2c(), saba2(), aba864(), srkn14a()}) {

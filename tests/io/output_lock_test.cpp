@@ -16,10 +16,10 @@
 namespace granular {
 namespace {
 
-std::string scratch(const std::string& name) { return testing::scratch_path("output_lock_test", name); }
+std::string lock_scratch(const std::string& name) { return testing::scratch_path("output_lock_test", name); }
 
 TEST(OutputLock, ASecondWriterIsRefusedNamingTheFirst) {
-  const std::string prefix = scratch("run");
+  const std::string prefix = lock_scratch("run");
   {
     OutputLock first(prefix, "spreading --output run");
     EXPECT_TRUE(std::filesystem::exists(prefix + ".lock"));
@@ -33,14 +33,14 @@ TEST(OutputLock, ASecondWriterIsRefusedNamingTheFirst) {
       EXPECT_NE(what.find("process " + std::to_string(::getpid())), std::string::npos) << what;
       EXPECT_NE(what.find("spreading --output run"), std::string::npos) << what;
     }
-    OutputLock other(scratch("other"));  // another prefix is independent
+    OutputLock other(lock_scratch("other"));  // another prefix is independent
   }
   EXPECT_FALSE(std::filesystem::exists(prefix + ".lock"));
   OutputLock again(prefix);  // released: free again
 }
 
 TEST(OutputLock, AStaleLockOfAKilledProcessDoesNotBlock) {
-  const std::string prefix = scratch("killed");
+  const std::string prefix = lock_scratch("killed");
   int ready[2];
   ASSERT_EQ(::pipe(ready), 0);
   const pid_t child = ::fork();
