@@ -93,6 +93,7 @@ if _core is not None:
         velocity_kick,
     )
     from ._studies import Correlations, IprMap, Localization, correlations, ipr_map, localization  # noqa: F401
+    from ._breathers import Breathers, breathers  # noqa: F401
     from ._results import ExponentTable, SpreadingRun, Transport  # noqa: F401
 
     __version__ = _core.__version__

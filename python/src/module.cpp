@@ -17,4 +17,5 @@ PYBIND11_MODULE(_core, m) {
   bind_studies(m);
   bind_dynamics(m);
   bind_observers(m);
+  bind_breathers(m);
 }

@@ -223,6 +223,30 @@ std::vector<double> TangentPropagator::deviation_distribution() const {
   return w;
 }
 
+TangentImages propagate_deviations(const ForceLaw& law, const Chain& chain, const SplittingScheme& scheme,
+                                   double time_step, std::size_t steps, const State& initial,
+                                   const std::vector<State>& deviations) {
+  TangentImages out;
+  out.deviations.reserve(deviations.size());
+  for (const State& w : deviations) {
+    auto p =
+        make_tangent_propagator(law, chain, scheme, time_step, initial, w, {.enabled = true, .renormalize_every = 0});
+    p->advance(steps);
+    const auto du = p->deviation_displacement(), dv = p->deviation_velocity();
+    State image(chain.size());
+    std::copy(du.begin(), du.end(), image.u.begin());
+    std::copy(dv.begin(), dv.end(), image.v.begin());
+    out.deviations.push_back(std::move(image));
+    if (out.deviations.size() == 1) out.orbit = p->state();
+  }
+  if (deviations.empty()) {
+    auto p = make_splitting_propagator(law, chain, scheme, time_step, initial, {.enabled = false});
+    p->advance(steps);
+    out.orbit = p->state();
+  }
+  return out;
+}
+
 State localized_deviation(std::size_t beads, std::size_t site, double time_unit) {
   if (site >= beads) throw InvalidInput("site", " " + std::to_string(site + 1) + ": outside the chain");
   State w(beads);

@@ -50,6 +50,19 @@ std::unique_ptr<TangentPropagator> make_tangent_propagator(const ForceLaw& law, 
                                                            const State& initial, const State& deviation,
                                                            const LyapunovConfig& config = {.enabled = true});
 
+/// The orbit from `initial` after `steps` steps of τ and the images of the deviation vectors
+/// `deviations` under the tangent map of those steps (raw: no renormalization), for Jacobians and
+/// monodromy matrices (periodic_orbit.hpp, floquet.hpp). Each vector is carried by its own tangent
+/// propagator, so the orbit is recomputed per vector (cost: deviations × one orbit); every copy of
+/// the orbit is the same bit for bit.
+struct TangentImages {
+  State orbit;                    ///< the state after the steps
+  std::vector<State> deviations;  ///< the deviation vectors after the steps
+};
+TangentImages propagate_deviations(const ForceLaw& law, const Chain& chain, const SplittingScheme& scheme,
+                                   double time_step, std::size_t steps, const State& initial,
+                                   const std::vector<State>& deviations);
+
 /// The default starting deviation: δu = 1 and δv = 1/t_unit on bead `site` (where the energy is
 /// put in), zero elsewhere.
 State localized_deviation(std::size_t beads, std::size_t site, double time_unit = 1e-6);

@@ -1,0 +1,273 @@
+#include "granular/study/breather_branch.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <ostream>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "granular/dynamics/observables.hpp"
+#include "granular/dynamics/propagator.hpp"
+#include "granular/error.hpp"
+#include "granular/linear/dynamical_matrix.hpp"
+#include "granular/linear/spectrum.hpp"
+#include "granular/number_format.hpp"
+
+namespace granular {
+namespace {
+
+constexpr double two_pi = 2 * std::numbers::pi;
+double to_omega(double khz) { return two_pi * khz * 1e3; }
+double to_khz(double omega) { return omega / two_pi / 1e3; }
+
+// The component of u̇(T/2) along the mode, per unit amplitude: its sign tells whether the seed
+// aφ oscillates faster (> 0 below the mode for a softening chain) or slower than ω_b.
+double mode_residual(const ForceLaw& law, const Chain& chain, const ShootingConfig& shooting, std::size_t steps,
+                     double omega, const std::vector<double>& phi, double a) {
+  std::vector<double> x(phi.size());
+  for (std::size_t i = 0; i < x.size(); ++i) x[i] = a * phi[i];
+  const auto map = half_period_map(law, chain, shooting.scheme, steps, omega, x, false);
+  double s = 0;
+  for (std::size_t i = 0; i < x.size(); ++i) s += phi[i] * map.velocity[i];
+  return s / a;
+}
+
+BreatherPoint make_point(const ForceLaw& law, const Chain& chain, const PeriodicOrbit& orbit, double tolerance) {
+  BreatherPoint p;
+  p.omega = orbit.omega;
+  p.freq_khz = to_khz(orbit.omega);
+  p.energy = total_energy(law, chain, turning_state(orbit));
+  for (std::size_t i = 0; i < orbit.x0.size(); ++i)
+    if (std::abs(orbit.x0[i]) > p.amplitude) p.amplitude = std::abs(orbit.x0[i]), p.centre = i;
+  p.iterations = orbit.iterations;
+  p.residual = orbit.residual();
+  p.residuals = orbit.residuals;
+  p.floquet = floquet_stability(law, chain, orbit, tolerance);
+  p.open_fraction = open_fractions(law, chain, orbit);
+  p.max_open_fraction = *std::max_element(p.open_fraction.begin(), p.open_fraction.end());
+  p.x0 = orbit.x0;
+  return p;
+}
+
+}  // namespace
+
+void validate(const BreatherBranchConfig& c) {
+  validate(c.chain);
+  if (!(c.chain.F0 > 0)) throw InvalidInput("F0", ": breathers are seeded from linear modes, which need F0 > 0");
+  const auto n = static_cast<long>(c.chain.size());
+  if (c.mode < 0 || c.mode > n)
+    throw InvalidInput("mode", " " + std::to_string(c.mode) + ": must be 1 … N (" + std::to_string(n) + ")");
+  for (const auto& [name, v] :
+       {std::pair{"near_khz", c.near_khz}, {"start_khz", c.start_khz}, {"target_khz", c.target_khz}})
+    if (!std::isnan(v) && !(v > 0 && std::isfinite(v))) throw InvalidInput(name, ": must be finite and > 0 [kHz]");
+  if (c.mode == 0 && std::isnan(c.near_khz) && std::isnan(c.start_khz))
+    throw InvalidInput("mode", ": no seed: give a mode number, a frequency to seed from (near_khz) or start_khz");
+  if (!(c.step_khz >= 0) || !std::isfinite(c.step_khz)) throw InvalidInput("step_khz", ": must be finite and >= 0");
+  if (!(c.start_offset > 0 && c.start_offset < 0.5)) throw InvalidInput("start_offset", ": must be in (0, 0.5)");
+  if (c.max_points < 1) throw InvalidInput("max_points", ": must be >= 1");
+  if (static_cast<std::size_t>(n) > c.shooting.max_dense_beads)
+    throw InvalidInput("N", " " + std::to_string(n) + ": more beads than the dense shooting Jacobian allows (" +
+                                std::to_string(c.shooting.max_dense_beads) + "; Newton-Krylov is not implemented)");
+}
+
+std::vector<double> open_fractions(const ForceLaw& law, const Chain& chain, const PeriodicOrbit& orbit) {
+  auto p =
+      make_splitting_propagator(law, chain, orbit.scheme, orbit.time_step, turning_state(orbit), {.enabled = false});
+  std::vector<double> open(chain.bonds(), 0.0);
+  for (std::size_t s = 0; s < orbit.steps_per_period; ++s) {
+    const auto u = p->displacement();
+    for (std::size_t k = 0; k < open.size(); ++k)
+      if (chain.overlap[k] + bond_strain(u, k) < 0) open[k] += 1;
+    p->advance(1);
+  }
+  for (double& f : open) f /= static_cast<double>(orbit.steps_per_period);
+  return open;
+}
+
+bool inside_linear_band(const std::vector<double>& f, double khz) {
+  if (f.empty()) return false;
+  if (khz <= f.front()) return true;  // the acoustic band starts at 0
+  if (khz >= f.back()) return false;
+  // A gap is a spacing more than 3 times both neighbouring spacings (near a band edge the modes
+  // crowd, so a gap stands out however the spacing varies along the bands).
+  const auto hi = static_cast<std::size_t>(std::upper_bound(f.begin(), f.end(), khz) - f.begin());
+  const double gap = f[hi] - f[hi - 1];
+  const double before = hi >= 2 ? f[hi - 1] - f[hi - 2] : 0.0;
+  const double after = hi + 1 < f.size() ? f[hi + 1] - f[hi] : 0.0;
+  return gap <= 3 * std::max(before, after);
+}
+
+BreatherBranch continue_breather(const BreatherBranchConfig& c,
+                                 const std::function<void(const BreatherPoint&)>& progress) {
+  validate(c);
+  const Chain chain = c.chain.chain(c.realization);
+  const ForceLaw law = make_force_law(c.law, chain);
+  const std::size_t n = chain.size();
+  BreatherBranch branch;
+  const DynamicalMatrix d = dynamical_matrix(chain);
+  const Spectrum modes = spectrum(d, all_modes(), {.vectors = true});
+  branch.linear_khz = modes.freq_khz;
+
+  // The seed mode.
+  std::size_t j = 0;
+  if (c.mode > 0) {
+    j = static_cast<std::size_t>(c.mode - 1);
+  } else {
+    const double near = std::isnan(c.near_khz) ? c.start_khz : c.near_khz;
+    if (std::isnan(c.near_khz) && inside_linear_band(branch.linear_khz, c.start_khz))
+      throw InvalidInput("start_khz", " " + format_number(c.start_khz) +
+                                          ": inside a linear band of the chain, where no breather is isolated; "
+                                          "give a seed (mode or near_khz)");
+    for (std::size_t k = 1; k < n; ++k)
+      if (std::abs(modes.freq_khz[k] - near) < std::abs(modes.freq_khz[j] - near)) j = k;
+  }
+  branch.seed_mode = static_cast<long>(j + 1);
+  branch.seed_khz = modes.freq_khz[j];
+  std::vector<double> phi(n);
+  double peak = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    phi[i] = modes.vector(j)[i] * d.inverse_sqrt_mass[i];
+    peak = std::max(peak, std::abs(phi[i]));
+  }
+  for (double& x : phi) x /= peak;
+
+  const double down = !std::isnan(c.target_khz) ? (c.target_khz < branch.seed_khz ? 1.0 : -1.0) : 1.0;
+  // Start off the mode by start_offset, but by at most a quarter of the way to the next mode on
+  // that side (near a band edge the modes crowd, and passing one is a resonance).
+  // Near a band edge the neighbours on the far side matter too: the seed's nonlinear shift must
+  // stay well below their distance, or the mode's shape is a poor guess.
+  double shift = c.start_offset * branch.seed_khz;
+  if (j > 0) shift = std::min(shift, (down > 0 ? 0.25 : 0.1) * (branch.seed_khz - modes.freq_khz[j - 1]));
+  if (j + 1 < n) shift = std::min(shift, (down < 0 ? 0.25 : 0.1) * (modes.freq_khz[j + 1] - branch.seed_khz));
+  const double start_khz = std::isnan(c.start_khz) ? branch.seed_khz - down * shift : c.start_khz;
+  double omega = to_omega(start_khz);
+  const std::size_t steps = c.shooting.steps_per_period > 0 ? c.shooting.steps_per_period : shooting_steps(chain, omega);
+  ShootingConfig shooting = c.shooting;
+  shooting.steps_per_period = steps;
+  branch.steps_per_period = steps;
+
+  // The seed's amplitude: the smallest a at which the residual along the mode changes sign,
+  // bracketed by doubling from 1e-6 of the smallest static overlap and refined by bisection.
+  const double overlap = *std::min_element(chain.overlap.begin(), chain.overlap.end());
+  double a_lo = 1e-6 * overlap, g_lo = mode_residual(law, chain, shooting, steps, omega, phi, a_lo);
+  double a_hi = a_lo, g_hi = g_lo;
+  while (g_hi * g_lo > 0 && a_hi < 10 * overlap) {
+    a_lo = a_hi, g_lo = g_hi;
+    a_hi *= 2;
+    g_hi = mode_residual(law, chain, shooting, steps, omega, phi, a_hi);
+  }
+  if (g_hi * g_lo > 0)
+    throw NumericalError("breathers: no periodic orbit of the shape of mode " + std::to_string(j + 1) + " (" +
+                         format_number(branch.seed_khz) + " kHz) at " + format_number(start_khz) +
+                         " kHz up to amplitude 10 static overlaps (the nonlinearity shifts it the other way?)");
+  for (int i = 0; i < 30 && a_hi - a_lo > 1e-4 * a_hi; ++i) {
+    const double a = (a_lo + a_hi) / 2, g = mode_residual(law, chain, shooting, steps, omega, phi, a);
+    (g * g_lo > 0 ? a_lo : a_hi) = a;
+    if (g * g_lo > 0) g_lo = g;
+  }
+  branch.seed_amplitude = (a_lo + a_hi) / 2;
+  std::vector<double> x(n);
+  for (std::size_t i = 0; i < n; ++i) x[i] = branch.seed_amplitude * phi[i];
+  PeriodicOrbit orbit = find_periodic_orbit(law, chain, omega, x, shooting);
+  branch.points.push_back(make_point(law, chain, orbit, c.stability_tolerance));
+  if (progress) progress(branch.points.back());
+
+  // Natural-parameter continuation with a secant predictor.
+  const double target = c.target_khz;
+  // Default steps: from the start's distance to the seed, growing to 2 % of the seed frequency.
+  const double first_step = c.step_khz > 0 ? c.step_khz : std::abs(branch.seed_khz - start_khz);
+  double step = -down * first_step;  // kHz, signed
+  const double min_step = 1e-4 * first_step, max_step = c.step_khz > 0 ? 8 * first_step : 0.02 * branch.seed_khz;
+  ShootingConfig follow = shooting;
+  follow.max_iterations = std::min(shooting.max_iterations, 10);
+  std::vector<double> previous;
+  double previous_khz = 0;
+  while (true) {
+    const BreatherPoint& last = branch.points.back();
+    if (c.stop_at_opening && last.max_open_fraction > 0) {
+      branch.stop_reason = "a contact opened (max open fraction " + format_number(last.max_open_fraction) + ")";
+      break;
+    }
+    if (!std::isnan(target) && last.freq_khz == target) {
+      branch.stop_reason = "target frequency reached";
+      break;
+    }
+    if (branch.points.size() >= c.max_points) {
+      branch.stop_reason = "max_points reached";
+      break;
+    }
+    double next = last.freq_khz + step;
+    if (!std::isnan(target) && (next - target) * (last.freq_khz - target) <= 0) next = target;
+    // A linear frequency between this point and the next: the breather meets a band (or a mode).
+    bool crosses = false;
+    for (double f : branch.linear_khz)
+      if ((f - next) * (f - last.freq_khz) < 0) crosses = true;
+    if (crosses) {
+      branch.stop_reason = "reached a linear mode frequency near " + format_number(next) + " kHz (band edge)";
+      break;
+    }
+    std::vector<double> guess = last.x0;
+    if (!previous.empty())
+      for (std::size_t i = 0; i < n; ++i)
+        guess[i] += (next - last.freq_khz) / (last.freq_khz - previous_khz) * (last.x0[i] - previous[i]);
+    try {
+      orbit = find_periodic_orbit(law, chain, to_omega(next), guess, follow);
+    } catch (const NumericalError& e) {
+      step /= 2;
+      if (std::abs(step) < min_step) {
+        branch.stop_reason = std::string("Newton failed with the smallest step: ") + e.what();
+        break;
+      }
+      continue;
+    }
+    previous = last.x0;
+    previous_khz = last.freq_khz;
+    branch.points.push_back(make_point(law, chain, orbit, c.stability_tolerance));
+    if (progress) progress(branch.points.back());
+    if (orbit.iterations <= 3) step = std::copysign(std::min(std::abs(step) * 1.5, max_step), step);
+  }
+  return branch;
+}
+
+void write_breather_csv(std::ostream& out, const BreatherBranch& branch) {
+  out << "omega_rad_s,freq_khz,energy_J,amplitude_m,centre,max_multiplier,stable,newton_iterations,residual,"
+         "max_open_fraction\n";
+  for (const auto& p : branch.points)
+    out << format_number(p.omega) << ',' << format_number(p.freq_khz) << ',' << format_number(p.energy) << ','
+        << format_number(p.amplitude) << ',' << p.centre + 1 << ',' << format_number(p.floquet.max_modulus) << ','
+        << (p.floquet.stable ? 1 : 0) << ',' << p.iterations << ',' << format_number(p.residual) << ','
+        << format_number(p.max_open_fraction) << '\n';
+}
+
+nlohmann::json describe_breather_branch(const BreatherBranchConfig& c, const BreatherBranch& b) {
+  nlohmann::json j;
+  j["chain"] = describe(c.chain, c.chain.drawn() ? std::optional<std::uint64_t>(c.realization) : std::nullopt);
+  j["force_law"] = to_string(c.law);
+  j["seed"] = {{"mode", b.seed_mode}, {"linear_khz", b.seed_khz}, {"amplitude_m", b.seed_amplitude}};
+  j["continuation"] = {{"method", "natural-parameter in frequency, secant predictor, step halving/growth"},
+                       {"start_khz", b.points.empty() ? 0.0 : b.points.front().freq_khz},
+                       {"target_khz", std::isnan(c.target_khz) ? nlohmann::json() : nlohmann::json(c.target_khz)},
+                       {"max_points", c.max_points},
+                       {"stop_at_opening", c.stop_at_opening},
+                       {"stop_reason", b.stop_reason}};
+  j["shooting"] = {{"scheme", c.shooting.scheme.name},
+                   {"steps_per_period", b.steps_per_period},
+                   {"tolerance", c.shooting.tolerance},
+                   {"residual", "||du/dt(T/2)|| / (omega_b ||x0||), half-period shooting from rest"}};
+  j["stability_tolerance"] = c.stability_tolerance;
+  nlohmann::json points = nlohmann::json::array();
+  for (const auto& p : b.points)
+    points.push_back({{"freq_khz", p.freq_khz},
+                      {"newton_residuals", p.residuals},
+                      {"instability", p.floquet.instability},
+                      {"growth_rate_per_s", p.floquet.growth_rate},
+                      {"reciprocal_error", p.floquet.reciprocal_error},
+                      {"conjugate_error", p.floquet.conjugate_error},
+                      {"product_error", p.floquet.product_error}});
+  j["points"] = points;
+  return j;
+}
+
+}  // namespace granular

@@ -1,0 +1,101 @@
+#pragma once
+// A branch of breathers (time-periodic localized orbits) of one chain, continued in frequency
+// from a linear mode (docs/breathers.md): seed, shooting (dynamics/periodic_orbit.hpp), Floquet
+// stability (dynamics/floquet.hpp) and the contacts that open, point by point.
+//
+//   granular::BreatherBranchConfig c;
+//   c.chain.given_types = {1, 2, 1, 2, ...};  // a diatomic chain
+//   c.near_khz = 9.0;                          // seed: the linear mode nearest 9 kHz
+//   c.target_khz = 8.0;                        // continue down into the gap
+//   auto branch = granular::continue_breather(c);
+//
+// Continuation is natural-parameter in ω_b with a secant predictor and step control (not
+// pseudo-arclength: a turning point in ω_b stops the branch as a Newton failure).
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <iosfwd>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json_fwd.hpp>
+
+#include "granular/dynamics/floquet.hpp"
+#include "granular/dynamics/force_law.hpp"
+#include "granular/dynamics/periodic_orbit.hpp"
+#include "granular/model/chain_recipe.hpp"
+
+namespace granular {
+
+struct BreatherBranchConfig {
+  ChainRecipe chain{};            ///< F0 > 0: the seed is a linear mode
+  std::uint64_t realization = 0;  ///< of a drawn chain
+  ForceLawKind law = ForceLawKind::hertz;
+  long mode = 0;  ///< seed: linear mode number 1…N; 0: the mode nearest near_khz
+  double near_khz = std::numeric_limits<double>::quiet_NaN();  ///< seed by frequency [kHz]
+  /// First breather frequency [kHz]; NaN: the seed's frequency × (1 ∓ start_offset), towards target_khz
+  /// (downwards without a target: the precompressed Hertz chain softens), but no further than a
+  /// quarter of the way to the next mode on that side and a tenth of the distance to the other. Without mode and
+  /// near_khz the seed is the mode nearest start_khz, which must then lie outside the linear bands.
+  double start_khz = std::numeric_limits<double>::quiet_NaN();
+  double start_offset = 1e-3;
+  double target_khz = std::numeric_limits<double>::quiet_NaN();  ///< stop here [kHz]; NaN: no target
+  double step_khz =
+      0;  ///< first step [kHz] (sign ignored), growing to 8×; 0: the start's distance from the seed, growing to 2 % of it
+  std::size_t max_points = 100;  ///< points on the branch
+  bool stop_at_opening = true;   ///< stop at the first point with an open contact
+  ShootingConfig shooting{};
+  double stability_tolerance = 1e-6;  ///< stable when max |μ| ≤ 1 + this
+};
+
+/// Throws InvalidInput naming the field (mode, near_khz, start_khz, target_khz, step_khz,
+/// max_points, N, F0) before any work.
+void validate(const BreatherBranchConfig& config);
+
+struct BreatherPoint {
+  double omega = 0;               ///< ω_b [rad/s]
+  double freq_khz = 0;            ///< ω_b/2π [kHz]
+  double energy = 0;              ///< H above the static state [J]
+  double amplitude = 0;           ///< max |x0| [m]
+  std::size_t centre = 0;         ///< bead of the largest |x0| (0-based)
+  int iterations = 0;             ///< Newton steps
+  double residual = 0;            ///< final relative residual
+  std::vector<double> residuals;  ///< Newton history
+  FloquetSpectrum floquet;
+  std::vector<double> open_fraction;  ///< per bond (N+1): fraction of the period with overlap < 0
+  double max_open_fraction = 0;
+  std::vector<double> x0;  ///< the profile at the turning point [m]
+};
+
+struct BreatherBranch {
+  long seed_mode = 0;                ///< 1…N
+  double seed_khz = 0;               ///< its linear frequency [kHz]
+  double seed_amplitude = 0;         ///< amplitude [m] of the first point's seed
+  std::size_t steps_per_period = 0;  ///< of the first point
+  std::vector<double> linear_khz;    ///< every linear mode [kHz], ascending
+  std::vector<BreatherPoint> points;
+  std::string stop_reason;  ///< why the branch ended
+};
+
+/// The per-bond fraction of one period of `orbit` during which the bond's overlap Δ_k + x_k < 0.
+std::vector<double> open_fractions(const ForceLaw& law, const Chain& chain, const PeriodicOrbit& orbit);
+
+/// True when f [kHz] lies between two consecutive linear frequencies closer than 3 × their median
+/// spacing, or below the lowest: inside a band of the finite chain rather than in a gap or above.
+bool inside_linear_band(const std::vector<double>& linear_khz, double khz);
+
+/// The branch. `progress`, if set, is called after every point. Throws InvalidInput (bad config,
+/// start inside a band without a seed) or NumericalError (no breather at the first frequency).
+BreatherBranch continue_breather(const BreatherBranchConfig& config,
+                                 const std::function<void(const BreatherPoint&)>& progress = {});
+
+/// CSV: omega_rad_s,freq_khz,energy_J,amplitude_m,centre,max_multiplier,stable,newton_iterations,
+/// residual,max_open_fraction (one row per point).
+void write_breather_csv(std::ostream& out, const BreatherBranch& branch);
+
+/// The JSON entries of a branch run: parameters (chain, seed, continuation, shooting) and results
+/// (stop reason, points' Newton histories and multiplier checks).
+nlohmann::json describe_breather_branch(const BreatherBranchConfig& config, const BreatherBranch& branch);
+
+}  // namespace granular

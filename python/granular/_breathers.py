@@ -1,0 +1,51 @@
+"""granular.breathers: breathers of one chain by shooting, continuation and Floquet stability (docs/breathers.md)."""
+
+import math
+
+from . import _core
+
+
+class Breathers:
+    """The result of granular.breathers: one entry per point of the branch.
+
+    omega [rad/s], freq_khz, energy [J] above the static state, amplitude: max |x0| [m], centre: bead of it (1..N),
+    max_multiplier: max |mu| without the +1 pair, stable (bool), newton_iterations, residual: the final relative
+    residual |du/dt(T/2)| / (omega |x0|), max_open_fraction; profiles: points x N displacements x0 [m] at the
+    turning point; open_fraction: points x (N+1) fraction of the period each bond is open; multipliers: points x 2N
+    complex Floquet multipliers; linear_khz: every linear mode; seed_mode, seed_khz; stop_reason; metadata: the
+    breathers tool's JSON (parameters, Newton histories, symplectic checks)."""
+
+    def __init__(self, values):
+        self.__dict__.update(values)
+        self.stable = self.stable.astype(bool)
+        self.multipliers = self.multipliers_real + 1j * self.multipliers_imag
+        del self.multipliers_real, self.multipliers_imag
+
+    def __len__(self):
+        return len(self.freq_khz)
+
+    def __repr__(self):
+        return f"<granular.Breathers: {len(self)} points from mode {self.seed_mode}; stopped: {self.stop_reason}>"
+
+
+def _nan(value):
+    return math.nan if value is None else float(value)
+
+
+def breathers(chain, *, mode=0, near_khz=None, start_khz=None, target_khz=None, step_khz=0.0, max_points=100,
+              law="hertz", scheme="saba2c", steps_per_period=0, tolerance=1e-10, stability_tolerance=1e-6,
+              through_opening=False):
+    """A branch of breathers of `chain` (a granular.Chain with F0 > 0), as the breathers tool computes it.
+
+    Seed: linear mode number `mode` (1..N), or the mode nearest `near_khz`, or the mode nearest `start_khz` (which
+    must then lie outside the linear bands). The first point is at start_khz, by default just off the seed towards
+    target_khz (downwards without one: the precompressed Hertz chain softens); the branch is continued in frequency
+    (natural parameter, secant predictor, step control; first step step_khz, 0: automatic) until target_khz,
+    max_points, a Newton failure, a linear mode frequency, or (unless through_opening) the first open contact.
+    law: 'hertz' | 'fpu'; scheme: the splitting scheme of shooting and monodromy; steps_per_period: 0 chooses;
+    tolerance: Newton's relative residual; stability_tolerance: stable when max |mu| <= 1 + it.
+    Returns a granular.Breathers. Releases the GIL."""
+    return Breathers(_core._breathers(chain, int(mode), _nan(near_khz), _nan(start_khz), _nan(target_khz),
+                                      float(step_khz), max_points, law, scheme, steps_per_period, tolerance,
+                                      stability_tolerance, bool(through_opening)))
+

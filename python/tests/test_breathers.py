@@ -1,0 +1,33 @@
+"""granular.breathers: the same branch as the breathers tool on the same chain (to the last digit), and its
+result's shapes and symplectic multipliers."""
+import numpy as np
+import pytest
+
+import granular as gr
+from conftest import assert_identical
+
+
+def test_breathers_equals_the_tool(tools, tmp_path):
+    types = [2 if i % 2 == 0 else 1 for i in range(21)]
+    config = tmp_path / "diatomic.txt"
+    config.write_text("\n".join(map(str, types)) + "\n")
+    edge = gr.band_edges(xi=0.5).fb2  # kHz: the optical band's lower edge
+    csv, meta = tools.run("breathers", "--config", str(config), "--xi", "0.5", "--near-khz", repr(edge),
+                          "--max-points", "3", "--quiet")
+    b = gr.breathers(gr.from_types(types, xi=0.5), near_khz=edge, max_points=3)
+    assert len(b) == 3
+    for key, column in (("freq_khz", "freq_khz"), ("energy", "energy_J"), ("max_multiplier", "max_multiplier"),
+                        ("residual", "residual")):
+        assert_identical(getattr(b, key), csv[column])
+    assert b.metadata["continuation"]["stop_reason"] == meta["continuation"]["stop_reason"]
+    assert b.profiles.shape == (3, 21) and b.open_fraction.shape == (3, 22) and b.multipliers.shape == (3, 42)
+    # Symplectic: the product of the multipliers is 1.
+    assert np.allclose(np.prod(b.multipliers, axis=1), 1, atol=1e-8)
+    assert (b.freq_khz < b.seed_khz).all()
+
+
+def test_breathers_rejects_bad_input():
+    with pytest.raises(ValueError, match="mode"):
+        gr.breathers(gr.diatomic(N=21))
+    with pytest.raises(TypeError):
+        gr.breathers("not a chain", mode=3)

@@ -1,0 +1,268 @@
+// Breathers by shooting and continuation (docs/breathers.md), checked against what does not come
+// from the shooting code: the linear spectrum (the small-amplitude limit), Newton's theory
+// (quadratic convergence), the symplectic structure (multiplier pairs), band edges of the diatomic
+// chain (docs/physics.md, "Band edges"), and direct integration by the library's propagator.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "granular/dynamics/periodic_orbit.hpp"
+#include "granular/dynamics/propagator.hpp"
+#include "granular/error.hpp"
+#include "granular/linear/band_edges.hpp"
+#include "granular/linear/dynamical_matrix.hpp"
+#include "granular/linear/spectrum.hpp"
+#include "granular/study/breather_branch.hpp"
+
+namespace granular {
+namespace {
+
+constexpr double r1 = paper_r1;
+
+// 21 beads of radius R1 with one bead of radius R1/2 in the middle: a light impurity whose
+// linear mode lies above the band, localized on it.
+BreatherBranchConfig impurity_config() {
+  std::vector<double> radii(21, r1);
+  radii[10] = 0.5 * r1;
+  BreatherBranchConfig c;
+  c.chain.given_radii = radii;
+  c.chain.F0 = 10;
+  c.mode = 21;
+  c.max_points = 1;
+  c.shooting.steps_per_period = 1024;
+  return c;
+}
+
+Configuration alternating(std::size_t n, int first) {
+  Configuration t(n);
+  for (std::size_t i = 0; i < n; ++i) t[i] = static_cast<std::uint8_t>(i % 2 == 0 ? first : 3 - first);
+  return t;
+}
+
+// The number (1…N) of the lowest mode above the middle of the gap: the optical band's lower edge.
+long lowest_optical_mode(const Chain& chain, const BandEdges& edges) {
+  const Spectrum s = spectrum(dynamical_matrix(chain));
+  long k = 0;
+  while (s.freq_khz[static_cast<std::size_t>(k)] < (edges.fb1 + edges.fb2) / 2e3) ++k;
+  return k + 1;
+}
+
+double profile_difference(const std::vector<double>& a, const std::vector<double>& b) {
+  double na = 0, nb = 0, dot = 0, d = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) na += a[i] * a[i], nb += b[i] * b[i], dot += a[i] * b[i];
+  const double sign = dot < 0 ? -1 : 1;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    const double x = a[i] / std::sqrt(na) - sign * b[i] / std::sqrt(nb);
+    d += x * x;
+  }
+  return std::sqrt(d);
+}
+
+TEST(BreatherBranch, LinearLimitIsTheLinearModeAtItsFrequency) {
+  auto c = impurity_config();
+  const Chain chain = c.chain.chain(0);
+  const DynamicalMatrix d = dynamical_matrix(chain);
+  const Spectrum modes = spectrum(d, all_modes(), {.vectors = true});
+  std::vector<double> mode(chain.size());
+  for (std::size_t i = 0; i < mode.size(); ++i) mode[i] = modes.vector(20)[i] * d.inverse_sqrt_mass[i];
+  const double omega_linear = std::sqrt(modes.omega2[20]);
+
+  std::vector<BreatherPoint> points;
+  for (double offset : {4e-4, 2e-4, 1e-4}) {
+    c.start_offset = offset;
+    points.push_back(continue_breather(c).points.front());
+  }
+  // Softening: below the mode. ω(E) is analytic in the energy E (the frequency of a Hamiltonian
+  // oscillator is a smooth function of its action), so the quadratic through the three points,
+  // extrapolated to E = 0, gives the linear frequency.
+  EXPECT_LT(points[0].omega, omega_linear);
+  double omega0 = 0;
+  for (std::size_t i = 0; i < 3; ++i) {
+    double w = points[i].omega;
+    for (std::size_t j = 0; j < 3; ++j)
+      if (j != i) w *= -points[j].energy / (points[i].energy - points[j].energy);
+    omega0 += w;
+  }
+  EXPECT_NEAR(omega0 / omega_linear, 1.0, 1e-8);
+  std::printf("linear limit: extrapolated omega / linear omega - 1 = %.2e\n", omega0 / omega_linear - 1);
+  const auto& p1 = points[0];
+  const auto& p2 = points[2];
+  // The profile tends to the mode (its distance shrinks like the amplitude, √4 = 2 times here).
+  const double d1 = profile_difference(p1.x0, mode), d2 = profile_difference(p2.x0, mode);
+  EXPECT_LT(d2, 3e-2);
+  EXPECT_NEAR(d1 / d2, 2.0, 0.3);
+  for (const auto& p : points) {
+    EXPECT_LE(p.residual, 1e-10);
+    for (const auto mu : p.floquet.multipliers) EXPECT_NEAR(std::abs(mu), 1.0, 1e-6);
+  }
+}
+
+TEST(BreatherBranch, NewtonConvergesQuadratically) {
+  auto c = impurity_config();
+  c.start_offset = 2e-2;
+  const auto p = continue_breather(c).points.front();
+  const Chain chain = c.chain.chain(0);
+  const ForceLaw law = make_force_law(ForceLawKind::hertz, chain);
+  auto guess = p.x0;  // a 1 % distortion of the breather
+  for (std::size_t i = 0; i < guess.size(); ++i) guess[i] *= 1 + 0.01 * std::cos(0.9 * static_cast<double>(i));
+  const auto orbit = find_periodic_orbit(law, chain, p.omega, guess, {.steps_per_period = 1024});
+  const auto& r = orbit.residuals;
+  ASSERT_GE(r.size(), 3u);
+  int checked = 0;
+  for (std::size_t k = 0; k + 2 < r.size(); ++k) {
+    if (r[k + 2] < 1e-13) continue;  // the rounding floor
+    const double order = std::log(r[k + 2] / r[k + 1]) / std::log(r[k + 1] / r[k]);
+    EXPECT_GT(order, 1.7) << "residuals " << r[k] << ", " << r[k + 1] << ", " << r[k + 2];
+    ++checked;
+  }
+  EXPECT_GE(checked, 1);
+  std::printf("Newton residuals:");
+  for (double x : r) std::printf(" %.2e", x);
+  std::printf("\n");
+  EXPECT_LE(orbit.residual(), 1e-10);
+}
+
+TEST(BreatherBranch, MultipliersComeInSymplecticPairs) {
+  auto c = impurity_config();
+  c.start_offset = 2e-2;  // nonlinear, contacts closed (with one open the pair splits further, docs/breathers.md)
+  const auto p = continue_breather(c).points.front();
+  EXPECT_LT(p.floquet.reciprocal_error, 1e-8);
+  EXPECT_LT(p.floquet.conjugate_error, 1e-8);
+  EXPECT_LT(p.floquet.product_error, 1e-8);
+  // The pair at +1 (phase and family) is a Jordan block: an orbit periodic to the residual r
+  // splits it by ~√r, not r.
+  EXPECT_LT(p.floquet.unit_pair_distance, 30 * std::sqrt(p.residual));
+  EXPECT_LT(p.floquet.unit_pair_distance, 1e-7);
+  EXPECT_EQ(p.max_open_fraction, 0);
+}
+
+// Theocharis et al., PRE 82, 056604 (2010): in a diatomic chain gap breathers bifurcate from the
+// lower edge of the optical band into the gap; the family centred on a heavy bead is unstable,
+// the one centred on a light bead can be stable.
+TEST(BreatherBranch, DiatomicGapBreathersBifurcateFromTheOpticalEdgeIntoTheGap) {
+  const BandEdges edges = band_edges(steel, r1, 0.5, 10);
+  for (int centre_type : {1, 2}) {
+    BreatherBranchConfig c;
+    c.chain.given_types = alternating(41, centre_type);  // bead 21 (the centre) is of type centre_type
+    c.chain.xi = 0.5;
+    c.mode = lowest_optical_mode(c.chain.chain(0), edges);
+    c.target_khz = (edges.fb1 + edges.fb2) / 2e3;
+    c.max_points = 60;
+    const auto branch = continue_breather(c);
+    ASSERT_GE(branch.points.size(), 5u) << branch.stop_reason;
+    EXPECT_NEAR(branch.seed_khz, edges.fb2 / 1e3, 0.05 * edges.fb2 / 1e3);  // the optical band's lower edge
+    double last = branch.seed_khz;
+    for (const auto& p : branch.points) {
+      EXPECT_LT(p.freq_khz, last);  // softening: down into the gap
+      EXPECT_GT(p.freq_khz, edges.fb1 / 1e3);
+      EXPECT_LE(p.residual, 1e-10);
+      last = p.freq_khz;
+    }
+    // The paper's two families, up to the first open contact (where the branch stops):
+    // heavy-centred, a symmetric profile (x0 odd about the heavy bead 21) that turns unstable
+    // through a real multiplier; light-centred, asymmetric about the light bead 21 and stable.
+    const auto& x = branch.points.back().x0;
+    bool any_unstable = false;
+    for (const auto& p : branch.points) any_unstable = any_unstable || !p.floquet.stable;
+    if (centre_type == 1) {
+      EXPECT_NEAR(x[19], -x[21], 1e-6 * branch.points.back().amplitude);
+      EXPECT_TRUE(any_unstable);
+      EXPECT_EQ(branch.points.back().floquet.instability, "real");
+    } else {
+      EXPECT_GT(std::abs(std::abs(x[19]) - std::abs(x[21])), 0.05 * branch.points.back().amplitude);
+      EXPECT_EQ(branch.points.back().centre, 20u);
+      EXPECT_FALSE(any_unstable);
+    }
+  }
+}
+
+TEST(BreatherBranch, StableBreatherStaysPeriodicUnderDirectIntegration) {
+  auto c = impurity_config();
+  c.start_offset = 2e-2;
+  const auto p = continue_breather(c).points.front();
+  ASSERT_TRUE(p.floquet.stable);
+  const Chain chain = c.chain.chain(0);
+  const ForceLaw law = make_force_law(ForceLawKind::hertz, chain);
+  State start(chain.size());
+  start.u = p.x0;
+  const double tau = 2 * std::numbers::pi / p.omega / 1024;
+  auto prop = make_splitting_propagator(law, chain, saba2c(), tau, start, {.enabled = false});
+  prop->advance(1000 * 1024);  // 1000 periods
+  double err = 0, norm = 0;
+  for (std::size_t i = 0; i < chain.size(); ++i) {
+    err += std::pow(prop->displacement()[i] - p.x0[i], 2) + std::pow(prop->velocity()[i] / p.omega, 2);
+    norm += p.x0[i] * p.x0[i];
+  }
+  EXPECT_LT(std::sqrt(err / norm), 1e-6);
+  std::printf("after 1000 periods: relative state error %.2e\n", std::sqrt(err / norm));
+}
+
+// An unstable breather (heavy-centred diatomic family, contacts closed): a perturbation of 1e-9
+// grows by the largest Floquet multiplier per period under direct integration.
+TEST(BreatherBranch, UnstableBreatherDepartsAtTheFloquetRate) {
+  const BandEdges edges = band_edges(steel, r1, 0.5, 10);
+  BreatherBranchConfig c;
+  c.chain.given_types = alternating(41, 1);
+  c.chain.xi = 0.5;
+  c.mode = lowest_optical_mode(c.chain.chain(0), edges);
+  c.max_points = 60;
+  const auto branch = continue_breather(c);
+  const BreatherPoint* worst = nullptr;  // the most unstable point with every contact closed
+  for (const auto& p : branch.points)
+    if (p.max_open_fraction == 0 && (!worst || p.floquet.max_modulus > worst->floquet.max_modulus)) worst = &p;
+  ASSERT_NE(worst, nullptr);
+  ASSERT_GT(worst->floquet.max_modulus, 1.1);
+  const Chain chain = c.chain.chain(0);
+  const ForceLaw law = make_force_law(ForceLawKind::hertz, chain);
+  State start(chain.size());
+  start.u = worst->x0;
+  for (std::size_t i = 0; i < chain.size(); ++i)
+    start.u[i] += 1e-9 * worst->amplitude * std::sin(0.7 * static_cast<double>(i) + 0.3);
+  const std::size_t steps = branch.steps_per_period;
+  auto prop =
+      make_splitting_propagator(law, chain, saba2c(), 2 * std::numbers::pi / worst->omega / static_cast<double>(steps),
+                                start, {.enabled = false});
+  const auto distance = [&] {
+    double d = 0;
+    for (std::size_t i = 0; i < chain.size(); ++i)
+      d += std::pow(prop->displacement()[i] - worst->x0[i], 2) + std::pow(prop->velocity()[i] / worst->omega, 2);
+    return std::sqrt(d);
+  };
+  prop->advance(10 * steps);  // let the unstable direction dominate
+  const double d10 = distance();
+  prop->advance(10 * steps);
+  const double d20 = distance();
+  const double measured = std::pow(d20 / d10, 0.1);
+  std::printf("max |mu| %.4f; measured growth per period %.4f\n", worst->floquet.max_modulus, measured);
+  EXPECT_NEAR(measured, worst->floquet.max_modulus, 0.02 * worst->floquet.max_modulus);
+  EXPECT_LT(d20, 1e-3 * worst->amplitude);  // still linear
+}
+
+TEST(BreatherBranch, BadInputIsRefusedBeforeAnyWork) {
+  const BandEdges edges = band_edges(steel, r1, 0.5, 10);
+  BreatherBranchConfig c;
+  c.chain.given_types = alternating(41, 1);
+  c.start_khz = 0.5 * edges.fb1 / 1e3;  // inside the acoustic band, no seed
+  try {
+    continue_breather(c);
+    ADD_FAILURE() << "no exception";
+  } catch (const InvalidInput& e) {
+    EXPECT_EQ(e.parameter(), "start_khz");
+  }
+  c.start_khz = 1.1 * edges.fb3 / 1e3;  // above every band: allowed, seeded from the top mode
+  EXPECT_NO_THROW(validate(c));
+  c.shooting.max_dense_beads = 40;
+  try {
+    validate(c);
+    ADD_FAILURE() << "no exception";
+  } catch (const InvalidInput& e) {
+    EXPECT_EQ(e.parameter(), "N");
+  }
+}
+
+}  // namespace
+}  // namespace granular

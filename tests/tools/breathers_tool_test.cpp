@@ -1,0 +1,89 @@
+// breathers end to end: a short diatomic branch writes the CSV and JSON contract; bad input exits
+// with the tools' codes (2 bad input, 3 numerical failure), one line naming the problem, and
+// writes nothing.
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "granular/linear/band_edges.hpp"
+#include "granular/model/named_chains.hpp"
+#include "tool_runner.hpp"
+
+namespace granular::testing {
+namespace {
+
+std::string diatomic_file(const std::string& dir, std::size_t n) {
+  const std::string path = dir + "/diatomic.txt";
+  std::ofstream out(path);
+  for (std::size_t i = 0; i < n; ++i) out << (i % 2 == 0 ? 2 : 1) << '\n';  // light bead in the centre
+  return path;
+}
+
+double optical_edge_khz() { return band_edges(steel, paper_r1, 0.5, 10).fb2 / 1e3; }
+
+TEST(BreathersTool, ShortDiatomicBranchWritesCsvAndJson) {
+  const std::string dir = scratch_folder("breathers-run");
+  const std::string args = "--config " + diatomic_file(dir, 21) + " --xi 0.5 --near-khz " +
+                           std::to_string(optical_edge_khz()) + " --max-points 4 --quiet --output " + dir + "/b";
+  const auto r = run_tool("breathers", args);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  std::istringstream csv(read_file(dir + "/b.csv"));
+  std::string line;
+  std::getline(csv, line);
+  EXPECT_EQ(line,
+            "omega_rad_s,freq_khz,energy_J,amplitude_m,centre,max_multiplier,stable,newton_iterations,residual,"
+            "max_open_fraction");
+  int rows = 0;
+  double previous = 1e300;
+  while (std::getline(csv, line)) {
+    std::vector<double> v;
+    std::stringstream fields(line);
+    for (std::string f; std::getline(fields, f, ',');) v.push_back(std::stod(f));
+    ASSERT_EQ(v.size(), 10u);
+    EXPECT_LT(v[1], previous);  // down from the optical edge
+    EXPECT_NEAR(v[0], 2 * 3.141592653589793 * v[1] * 1e3, 1e-9 * v[0]);
+    EXPECT_LE(v[8], 1e-10);
+    previous = v[1];
+    ++rows;
+  }
+  EXPECT_EQ(rows, 4);
+  const auto meta = nlohmann::json::parse(read_file(dir + "/b.json"));
+  EXPECT_EQ(meta["points"].size(), 4u);
+  EXPECT_FALSE(meta["continuation"]["stop_reason"].get<std::string>().empty());
+  EXPECT_EQ(meta["output"], dir + "/b.csv");
+  std::filesystem::remove_all(dir);
+}
+
+TEST(BreathersTool, BadInputExitsWithOneLineAndWritesNothing) {
+  const std::string dir = scratch_folder("breathers-bad");
+  const std::string config = diatomic_file(dir, 21);
+  struct Case {
+    std::string args, names;
+    int code;
+  };
+  const Case cases[] = {
+      {"--config " + config + " --xi 0.5 --start-khz " + std::to_string(0.3 * optical_edge_khz()), "--start-khz", 2},
+      {"--N 2000 --mode 3", "--N", 2},
+      {"--config " + config + " --xi 0.5 --mode 0", "--mode", 2},
+      {"--config " + config + " --xi 0.5 --law linear --mode 3", "--law", 2},
+      // Newton cannot reach a residual below rounding: a numerical failure.
+      {"--config " + config + " --xi 0.5 --near-khz " + std::to_string(optical_edge_khz()) + " --tolerance 1e-30",
+       "Newton", 3},
+  };
+  for (const auto& c : cases) {
+    const auto r = run_tool_in(dir, "breathers", c.args + " --output out");
+    EXPECT_EQ(r.exit_code, c.code) << c.args << "\n" << r.err;
+    EXPECT_NE(r.err.find(c.names), std::string::npos) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(dir + "/out.csv"));
+    EXPECT_FALSE(std::filesystem::exists(dir + "/out.json"));
+  }
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace granular::testing

@@ -1,0 +1,81 @@
+// breathers: a branch of time-periodic localized orbits (breathers) of one chain, by half-period
+// shooting with Newton's method, continued in frequency from a linear mode, with the Floquet
+// multipliers of every point and the fraction of the period each contact is open.
+#include <cstdio>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "common/chain_options.hpp"
+#include "common/metadata.hpp"
+#include "common/output_claim.hpp"
+#include "common/output_paths.hpp"
+#include "common/tool_main.hpp"
+#include "granular/io/atomic_file.hpp"
+#include "granular/study/breather_branch.hpp"
+
+int main(int argc, char** argv) {
+  using namespace granular;
+  CLI::App app{
+      "Breathers of one precompressed chain: periodic orbits by half-period shooting (Newton, Jacobian from\n"
+      "the tangent map), continued in frequency from a linear mode (--mode K, or --near-khz F, or the mode\n"
+      "nearest --start-khz outside the bands), with Floquet multipliers. Writes PREFIX.csv (columns\n"
+      "omega_rad_s,freq_khz,energy_J,amplitude_m,centre,max_multiplier,stable,newton_iterations,residual,\n"
+      "max_open_fraction) and PREFIX.json (parameters, Newton histories, multiplier checks).",
+      "breathers"};
+  tool::describe_common(app);
+  tool::ChainOptions chain_options;
+  tool::add_chain_options(app, chain_options);
+  BreatherBranchConfig config;
+  std::string law = "hertz", scheme = "saba2c", output = "breathers";
+  bool quiet = false, through_opening = false;
+  tool::add_integer(app, "--mode", config.mode, "seed: linear mode number 1..N (0: by --near-khz or --start-khz)");
+  app.add_option("--near-khz", config.near_khz, "seed: the linear mode nearest this frequency [kHz]");
+  app.add_option(
+      "--start-khz", config.start_khz,
+      "first breather frequency [kHz] (default: the seed's, shifted by --start-offset towards --target-khz)");
+  tool::add_option(app, "--start-offset", config.start_offset, "relative shift of the first frequency from the seed");
+  app.add_option("--target-khz", config.target_khz, "stop at this frequency [kHz] (default: no target, go down)");
+  tool::add_option(app, "--step-khz", config.step_khz, "first continuation step [kHz] (0: 0.5 % of the seed)");
+  tool::add_integer(app, "--max-points", config.max_points, "points on the branch at most");
+  tool::add_option(app, "--law", law, "bond force law: hertz | fpu");
+  tool::add_option(app, "--scheme", scheme,
+                   "splitting scheme of shooting and monodromy: saba2c | saba2 | aba864 | srkn14a");
+  tool::add_integer(app, "--steps-per-period", config.shooting.steps_per_period,
+                    "scheme steps per period, even (0: omega_max tau <= 0.05, at least 128)");
+  tool::add_option(app, "--tolerance", config.shooting.tolerance,
+                   "Newton stops at relative residual |du/dt(T/2)| / (omega_b |x0|) <= this");
+  tool::add_option(app, "--stability-tolerance", config.stability_tolerance, "stable when max |multiplier| <= 1 + this");
+  app.add_flag("--through-opening", through_opening, "continue past points where a contact opens");
+  tool::add_output_option(app, output);
+  app.add_flag("--quiet", quiet, "no progress lines on stderr");
+
+  return tool::run(app, argc, argv, [&] {
+    tool::Metadata meta("breathers", argc, argv);
+    config.chain = tool::chain_recipe(chain_options);
+    config.realization = tool::chain_realization(chain_options);
+    config.law = parse_force_law(law);
+    if (config.law == ForceLawKind::linear)
+      throw InvalidInput("--law",
+                         " linear: every amplitude is a periodic orbit at a mode's frequency; use hertz or fpu");
+    config.shooting.scheme = parse_scheme(scheme, "--scheme");
+    config.stop_at_opening = !through_opening;
+    validate(config);
+    tool::warn_implausible(config.chain, chain_options);
+    const std::string csv_path = output + ".csv", json_path = output + ".json";
+    const auto claim = tool::claim_output(output, meta.command());
+    check_writable(csv_path);
+    check_writable(json_path);
+    const auto branch = continue_breather(config, [&](const BreatherPoint& p) {
+      if (!quiet)
+        std::fprintf(stderr, "breathers: %.6f kHz  E = %.4g J  max|mu| = %.10f  Newton %d  residual %.2g\n", p.freq_khz,
+                     p.energy, p.floquet.max_modulus, p.iterations, p.residual);
+    });
+    if (!quiet)
+      std::fprintf(stderr, "breathers: %zu points; stopped: %s\n", branch.points.size(), branch.stop_reason.c_str());
+    AtomicFile csv(csv_path);
+    write_breather_csv(csv.stream(), branch);
+    meta.merge(describe_breather_branch(config, branch));
+    meta["output"] = csv_path;
+    meta.write(json_path, {&csv});
+  });
+}
