@@ -165,7 +165,8 @@ std::vector<Chain> quasiperiodic_local_chains(const Quasiperiodic& q, double R, 
 double quasiperiodic_omega_bound(const Quasiperiodic& q, double R, double F0, const Material& material) {
   const double lightest = 1 - std::fabs(q.modulation), heaviest = 1 + std::fabs(q.modulation);
   if (q.kind == Quasiperiodic::Kind::cylinders) {
-    // The coefficient grows as the crossing nears 90°; try the range's ends and 90° if inside.
+    // The coefficient is least at 90° and grows as the axes turn parallel: its largest value is at
+    // an end of the range of angles (90° is tried too, harmlessly).
     double stiffest = 0;
     for (double a : {q.angle * lightest, q.angle * heaviest, 90.0})
       if (a >= q.angle * lightest && a <= q.angle * heaviest)

@@ -30,8 +30,8 @@ def butterfly(source):
         fig = figure(10, 5)
         left, right = fig.subplots(1, 2, sharey=False, gridspec_kw={"width_ratios": [3, 1.2]})
         n = chain.get("N") or 100
-        points = left.scatter(ratio, freq, c=ipr, s=max(0.2, 2000 / max(len(freq), 1)), marker=".", lw=0,
-                              cmap="viridis", norm=LogNorm(vmin=max(np.min(ipr), 1e-4), vmax=1))
+        points = left.scatter(ratio, freq, c=ipr, s=min(4.0, max(0.6, 60000 / max(len(freq), 1))), marker=".", lw=0,
+                              cmap="viridis", norm=LogNorm(vmin=max(np.min(ipr), 1e-4), vmax=1), rasterized=True)
         fig.colorbar(points, ax=left, label="mode IPR")
         left.set_xlabel(r"incommensurate ratio $\beta$")
         left.set_ylabel("frequency f [kHz]")
