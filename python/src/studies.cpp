@@ -13,8 +13,8 @@
 #include "granular/model/named_chains.hpp"
 #include "granular/model/plausibility.hpp"
 #include "granular/number_format.hpp"
-#include "granular/study/correlation_files.hpp"
 #include "granular/study/butterfly.hpp"
+#include "granular/study/correlation_files.hpp"
 #include "granular/study/ipr_map_files.hpp"
 #include "granular/study/localization_files.hpp"
 

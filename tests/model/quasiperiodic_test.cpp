@@ -40,8 +40,8 @@ TEST(Quasiperiodic, S1SpringsAreInUnitsOfTheBondStiffness) {
   const double K = linear_stiffness(c.contact[1], c.precompression);
   ASSERT_EQ(c.onsite.size(), c.size());
   for (std::size_t i = 0; i < c.size(); ++i)
-    EXPECT_NEAR(c.onsite[i] / (3 * K * (1 + 0.5 * std::cos(2 * pi * golden_mean * static_cast<double>(i + 1) + 1))),
-                1, 1e-13);
+    EXPECT_NEAR(c.onsite[i] / (3 * K * (1 + 0.5 * std::cos(2 * pi * golden_mean * static_cast<double>(i + 1) + 1))), 1,
+                1e-13);
 }
 
 TEST(Quasiperiodic, CylinderBondsTakeTheirAngles) {
@@ -51,8 +51,7 @@ TEST(Quasiperiodic, CylinderBondsTakeTheirAngles) {
   ASSERT_EQ(c.bonds(), c.size() + 1);
   for (std::size_t k = 0; k < c.bonds(); ++k) {
     const double angle = 50 * (1 + 0.3 * std::cos(2 * pi * golden_mean * static_cast<double>(k) + 0.2));
-    EXPECT_NEAR(c.contact[k] / hertz_coefficient(steel, steel, crossed_cylinders(paper_r1, angle * pi / 180)), 1,
-                1e-14);
+    EXPECT_NEAR(c.contact[k] / hertz_coefficient(steel, steel, crossed_cylinders(paper_r1, angle * pi / 180)), 1, 1e-14);
   }
   EXPECT_NEAR(c.mass[0], steel.density * pi * paper_r1 * paper_r1 * 2 * paper_r1, 1e-15);
 }

@@ -26,8 +26,7 @@ std::vector<std::vector<std::string>> csv_rows(const std::string& path) {
 TEST(ButterflyTool, WritesEveryModeOfEveryRatioAsTheSpectrumToolDoes) {
   const std::string dir = scratch_folder("butterfly");
   const std::string chain = "--quasi s2 --modulation 0.4 --N 40 --seed 3 --realization 2";
-  const ToolResult b = run_tool(
-      "butterfly", chain + " --ratios 0.2,0.382 --threads 2 --quiet --output " + dir + "/b");
+  const ToolResult b = run_tool("butterfly", chain + " --ratios 0.2,0.382 --threads 2 --quiet --output " + dir + "/b");
   ASSERT_EQ(b.exit_code, 0) << b.err;
   const auto rows = csv_rows(dir + "/b.csv");
   ASSERT_EQ(rows.size(), 1u + 2 * 40);
@@ -49,8 +48,8 @@ TEST(ButterflyTool, WritesEveryModeOfEveryRatioAsTheSpectrumToolDoes) {
   EXPECT_EQ(meta["box_counting"]["dimension"].size(), 2u);
   EXPECT_EQ(meta["chain"]["quasiperiodic"]["kind"], "s2");
   // One thread gives the same file.
-  const ToolResult one = run_tool(
-      "butterfly", chain + " --ratios 0.2,0.382 --threads 1 --quiet --output " + dir + "/one");
+  const ToolResult one =
+      run_tool("butterfly", chain + " --ratios 0.2,0.382 --threads 1 --quiet --output " + dir + "/one");
   ASSERT_EQ(one.exit_code, 0) << one.err;
   EXPECT_EQ(read_file(dir + "/one.csv"), read_file(dir + "/b.csv"));
   std::filesystem::remove_all(dir);

@@ -24,9 +24,9 @@ inline StreamedChain build_bead_source(const ChainOptions& o) {
   stored.n = 2;  // N checked below, by what the chain is
   ChainRecipe recipe = chain_recipe(stored);
   recipe.N = static_cast<std::size_t>(o.n);
-  const bool streamed = recipe.drawn() && !recipe.distribution;  // else stored: memory O(N)
+  const bool streamed = recipe.drawn() && recipe.typed();  // else stored: memory O(N)
   if (!streamed && recipe.drawn() && o.n > 100000000)
-    throw InvalidInput("N", " " + std::to_string(o.n) + ": --types/--polydisperse store the chain (<= 1e8)");
+    throw InvalidInput("N", " " + std::to_string(o.n) + ": --types/--polydisperse/--quasi store the chain (<= 1e8)");
   validate(recipe, streamed ? 1000000000000 : 100000000);
   warn_implausible(recipe, o);
   StreamedChain s;

@@ -16,10 +16,10 @@
 namespace granular {
 
 struct BoxCountingDimension {
-  double dimension = 0;              ///< D, the fitted slope
-  double error = 0;                  ///< standard error of D (0 with two sizes)
-  std::vector<double> box_sizes;     ///< ε, largest first (the fitting range: front() … back())
-  std::vector<std::size_t> counts;   ///< N(ε), one per size
+  double dimension = 0;             ///< D, the fitted slope
+  double error = 0;                 ///< standard error of D (0 with two sizes)
+  std::vector<double> box_sizes;    ///< ε, largest first (the fitting range: front() … back())
+  std::vector<std::size_t> counts;  ///< N(ε), one per size
 };
 
 /// `count` sizes from `largest` down to `smallest`, evenly spaced in ln ε. Throws InvalidInput

@@ -88,7 +88,8 @@ void validate(const ChainRecipe& c, std::size_t max_beads) {
   if (c.centred && (c.distribution || !c.drawn()))
     throw InvalidInput("N", ": a chain drawn from its centre (the automatic N) has two bead types, not a bead source");
   if (c.quasi && (c.distribution || !c.drawn() || c.centred))
-    throw InvalidInput("quasi", ": a quasiperiodic chain makes its own beads; not with --types, --config, --radii or --N auto");
+    throw InvalidInput("quasi",
+                       ": a quasiperiodic chain makes its own beads; not with --types, --config, --radii or --N auto");
   const std::size_t n = c.size();
   if (n < 2) throw InvalidInput("N", " " + std::to_string(n) + ": a chain needs at least 2 beads");
   if (n > max_beads)

@@ -67,8 +67,7 @@ double contact_eccentricity(const ContactGeometry& g) {
 double hertz_coefficient(const Material& a, const Material& b, const ContactGeometry& g) {
   const double e = contact_eccentricity(g);
   const Differences d = differences(e);
-  const double effective_modulus =
-      1 / ((1 - a.poisson * a.poisson) / a.young + (1 - b.poisson * b.poisson) / b.young);
+  const double effective_modulus = 1 / ((1 - a.poisson * a.poisson) / a.young + (1 - b.poisson * b.poisson) / b.young);
   return 2 * std::numbers::pi * effective_modulus / (3 * d.k) * std::sqrt(d.k_minus_e / (d.k * g.A));
 }
 

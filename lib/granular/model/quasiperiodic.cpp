@@ -56,8 +56,8 @@ double parse_ratio(const std::string& text) {
     return x;
   };
   const auto slash = text.find('/');
-  const double beta = slash == std::string::npos ? number(text) : number(text.substr(0, slash)) /
-                                                                       number(text.substr(slash + 1));
+  const double beta =
+      slash == std::string::npos ? number(text) : number(text.substr(0, slash)) / number(text.substr(slash + 1));
   if (!std::isfinite(beta) || !(beta > 0)) throw InvalidInput("ratio", " '" + text + "': must be finite and > 0");
   return beta;
 }
@@ -72,7 +72,8 @@ void validate(const Quasiperiodic& q, double F0) {
     throw InvalidInput("ratio", " " + format_number(q.ratio) + ": the ratio beta must be finite and > 0");
   if (!std::isfinite(q.modulation))
     throw InvalidInput("modulation", " " + format_number(q.modulation) + ": must be finite");
-  if (q.phase && !std::isfinite(*q.phase)) throw InvalidInput("phase", " " + format_number(*q.phase) + ": must be finite");
+  if (q.phase && !std::isfinite(*q.phase))
+    throw InvalidInput("phase", " " + format_number(*q.phase) + ": must be finite");
   switch (q.kind) {
     case Quasiperiodic::Kind::s2:
       if (!(std::fabs(q.modulation) < 1))
@@ -80,7 +81,8 @@ void validate(const Quasiperiodic& q, double F0) {
                                              ": masses m (1 + modulation cos) must stay > 0, so |modulation| < 1");
       break;
     case Quasiperiodic::Kind::s1:
-      if (!(F0 > 0)) throw InvalidInput("F0", " " + format_number(F0) + ": S1's k0 is in units of K, which needs F0 > 0");
+      if (!(F0 > 0))
+        throw InvalidInput("F0", " " + format_number(F0) + ": S1's k0 is in units of K, which needs F0 > 0");
       if (!std::isfinite(q.k0) || !(q.k0 > 0)) throw InvalidInput("k0", " " + format_number(q.k0) + ": must be > 0");
       if (!(std::fabs(q.modulation) < 1))
         throw InvalidInput("modulation", " " + format_number(q.modulation) +

@@ -36,11 +36,11 @@ struct Quasiperiodic {
     cylinders,  ///< identical cylinders, crossing angles α_k = α0 [1 + λ cos(2πβk + φ)]
   };
   Kind kind = Kind::s2;
-  double modulation = 0;       ///< λ, the relative modulation strength; |λ| < 1 (S2, C), k_n > 0 (S1)
-  double ratio = golden_mean;  ///< β > 0, finite
-  std::optional<double> phase{};     ///< φ [rad]; none: drawn per realization
-  double angle = 45;                 ///< C: α0 [degrees] in (0, 180); α_k must stay in (0, 180)
-  double k0 = 4;                     ///< S1: k0 in units of the bond stiffness K (the transition at λ k0 = 2K)
+  double modulation = 0;          ///< λ, the relative modulation strength; |λ| < 1 (S2, C), k_n > 0 (S1)
+  double ratio = golden_mean;     ///< β > 0, finite
+  std::optional<double> phase{};  ///< φ [rad]; none: drawn per realization
+  double angle = 45;              ///< C: α0 [degrees] in (0, 180); α_k must stay in (0, 180)
+  double k0 = 4;                  ///< S1: k0 in units of the bond stiffness K (the transition at λ k0 = 2K)
 };
 
 /// The cylinders' length: twice their radius (L = 2R, mass ρ π R² L).

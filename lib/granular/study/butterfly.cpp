@@ -50,8 +50,9 @@ std::vector<ButterflyColumn> compute_butterfly(const ButterflyConfig& c, const R
         col.ipr = s.ipr;
         const double extent = s.freq_khz.back() - s.freq_khz.front();
         const double n = static_cast<double>(s.size());
-        col.dimension = box_counting_dimension(
-            s.freq_khz, geometric_box_sizes(c.largest_box * extent, c.smallest_box_spacings * extent / n, c.box_sizes));
+        col.dimension =
+            box_counting_dimension(s.freq_khz, geometric_box_sizes(c.largest_box * extent,
+                                                                   c.smallest_box_spacings * extent / n, c.box_sizes));
       },
       run.progress);
   return columns;

@@ -35,9 +35,9 @@ void validate(const ButterflyConfig& config);
 
 struct ButterflyColumn {
   double ratio = 0;
-  std::vector<double> freq_khz;     ///< every mode, ascending [kHz]
-  std::vector<double> ipr;          ///< its displacement IPR
-  BoxCountingDimension dimension;   ///< of freq_khz; box sizes in kHz
+  std::vector<double> freq_khz;    ///< every mode, ascending [kHz]
+  std::vector<double> ipr;         ///< its displacement IPR
+  BoxCountingDimension dimension;  ///< of freq_khz; box sizes in kHz
 };
 
 /// One column per β, in the order given; thread-count invariant (one chain per β, fixed slots).
