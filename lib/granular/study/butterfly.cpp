@@ -27,9 +27,9 @@ void validate(const ButterflyConfig& c) {
     throw InvalidInput("largest_box", " " + format_number(c.largest_box) + ": a fraction of the extent in (0, 1]");
   const double smallest = c.smallest_box_spacings / static_cast<double>(c.chain.N);
   if (!(smallest > 0) || !(smallest < c.largest_box))
-    throw InvalidInput("smallest_box_spacings", " " + format_number(c.smallest_box_spacings) +
-                                                    ": must be > 0 and below the largest box (in spacings: " +
-                                                    format_number(c.largest_box * static_cast<double>(c.chain.N)) + ")");
+    throw InvalidInput("smallest_box", " " + format_number(c.smallest_box_spacings) +
+                                           ": must be > 0 and below the largest box (in spacings: " +
+                                           format_number(c.largest_box * static_cast<double>(c.chain.N)) + ")");
   if (c.box_sizes < 2) throw InvalidInput("box_sizes", " " + std::to_string(c.box_sizes) + ": at least 2");
 }
 
