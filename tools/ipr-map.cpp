@@ -52,7 +52,8 @@ int main(int argc, char** argv) {
   app.add_option("--bin-khz", config.bin_khz,
                  "average in frequency bins of this width [kHz] instead of by mode number: "
                  "columns disorder,q,xi,freq_lo_khz,freq_hi_khz,modes,ipr (empty bins: modes 0, ipr nan)");
-  tool::add_bead_distribution_options(app, beads);
+  auto* quasi = tool::add_quasiperiodic_options(app, beads);  // one cell: realizations are phases
+  for (auto* b : tool::add_bead_distribution_options(app, beads)) b->excludes(quasi), quasi->excludes(b);
   app.add_flag("--quiet", quiet, "no progress line on stderr");
 
   return tool::run(app, argc, argv, [&] {
@@ -77,7 +78,8 @@ int main(int argc, char** argv) {
     }
     beads.disorder = disorder;
     config.chain.walls = parse_wall_shape(beads.walls);
-    if ((config.chain.distribution = tool::bead_distribution(beads)))
+    config.chain.quasi = tool::quasiperiodic(beads);
+    if ((config.chain.distribution = tool::bead_distribution(beads)) || config.chain.quasi)
       config.q_values = config.xi_values = {std::numeric_limits<double>::quiet_NaN()};  // one cell
     validate(config);
     tool::warn_implausible(config.chain, beads);

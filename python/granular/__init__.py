@@ -70,6 +70,7 @@ if _core is not None:
         linear_stiffness,
         nonlinearity_ratio,
         paper_r1,
+        quasiperiodic,
         random_chain,
         rdm1,
         rdm2,
@@ -92,7 +93,16 @@ if _core is not None:
         spread,
         velocity_kick,
     )
-    from ._studies import Correlations, IprMap, Localization, correlations, ipr_map, localization  # noqa: F401
+    from ._studies import (  # noqa: F401
+        Butterfly,
+        Correlations,
+        IprMap,
+        Localization,
+        butterfly,
+        correlations,
+        ipr_map,
+        localization,
+    )
     from ._breathers import Breathers, breathers  # noqa: F401
     from ._results import ExponentTable, SpreadingRun, Transport  # noqa: F401
 

@@ -92,6 +92,17 @@ def from_radii(radii, F0=10.0, material=steel, walls="flat"):
     return _core._from_radii(radii, F0, material, walls)
 
 
+def quasiperiodic(kind="s2", N=100, modulation=0.0, ratio="golden", phase=None, angle=45.0, k0=4.0, seed=1,
+                  realization=0, F0=10.0, R1=paper_r1, material=steel):
+    """A quasiperiodic chain (docs/physics.md, "Quasiperiodic chains"), modulated by 1 + modulation*cos(2 pi ratio n
+    + phase): kind = 's1' (on-site springs k0*K each, K the bond stiffness), 's2' (masses of spheres of radius R1) or
+    'cylinders' (crossing angles angle*(...) [degrees] of cylinders of radius R1, length 2 R1); the tools' --quasi.
+    |modulation| < 1; ratio > 0: 'golden', 'p/q' or a number; phase [rad], or None to draw it uniformly in [0, 2 pi)
+    from (seed, realization). F0 [N], R1 [m]. Raises ValueError naming the keyword when a value is out of range."""
+    return _core._quasiperiodic_chain(kind, N, modulation, ratio if isinstance(ratio, str) else repr(float(ratio)),
+                                      phase, angle, k0, seed, realization, F0, R1, material)
+
+
 def configuration(disorder="A", q=0.5, N=100, seed=1, realization=0):
     """The bead types (uint8 array of 1 and 2) of realization `realization` of seed `seed`: what random_chain builds
     its chain from. All xi of one (disorder, q, N, seed, realization) share it."""

@@ -111,6 +111,34 @@ def ipr_map(*, disorder="A", xi="0.1:1", q="0.2,0.5,0.8", N=100, F0=10.0, R1=_co
     return IprMap(_core._ipr_map(c, solver, near, count, window, method, _run(threads, progress=progress)))
 
 
+class Butterfly:
+    """The result of granular.butterfly: one row per mode per ratio, as the butterfly tool's CSV (ratio, mode,
+    freq_khz [kHz], ipr: 1-D arrays of equal length), and per ratio (ratios) the box-counting dimension of its
+    spectrum with its standard error (dimension, dimension_error); metadata: the tool's JSON (chain, ratios,
+    box_counting with the fitted box sizes)."""
+
+    def __init__(self, values):
+        self.__dict__.update(values)
+
+    def __repr__(self):
+        return f"<granular.Butterfly {len(self.ratios)} ratios, {len(self.freq_khz)} modes>"
+
+
+def butterfly(kind="s1", *, ratios="0.005:0.995:0.005", N=100, modulation=0.0, phase=None, angle=45.0, k0=4.0,
+              seed=1, realization=0, F0=10.0, R1=_core.paper_r1, largest_box=0.5, smallest_box=4.0, box_sizes=12,
+              threads=0, progress=False):
+    """The Hofstadter butterfly of a quasiperiodic chain (docs/physics.md, "Quasiperiodic chains"): every mode's
+    frequency [kHz] and displacement IPR for each incommensurate ratio of `ratios` (a sequence, a number or the
+    tools' range string), one chain (one phase) per ratio, and the box-counting dimension of each spectrum fitted
+    on boxes from largest_box x its extent down to smallest_box mean level spacings (box_sizes sizes). kind,
+    modulation, phase, angle, k0, seed, realization, N, F0, R1: as granular.quasiperiodic. The same numbers as
+    the butterfly tool for the same options. Returns a granular.Butterfly."""
+    values = _core._butterfly(kind, _core._numbers(ratios, "ratios", 0.005), N, modulation, phase, angle, k0, seed,
+                              realization, F0, R1, largest_box, smallest_box, box_sizes,
+                              _run(threads, progress=progress))
+    return Butterfly(values)
+
+
 class Localization:
     """The result of granular.localization: per frequency the transfer-matrix Lyapunov exponent, the localization
     length and the density of states (the localization tool's columns).

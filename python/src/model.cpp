@@ -12,6 +12,7 @@
 #include "granular/model/correlation.hpp"
 #include "granular/model/named_chains.hpp"
 #include "granular/model/plausibility.hpp"
+#include "granular/model/quasiperiodic.hpp"
 #include "granular/number_format.hpp"
 
 namespace granular::python {
@@ -92,6 +93,7 @@ void bind_model(py::module_& m) {
                              viewer<PyChain>([](const PyChain& c) -> auto& { return c.chain.inverse_mass; }))
       .def_property_readonly("contact", viewer<PyChain>([](const PyChain& c) -> auto& { return c.chain.contact; }))
       .def_property_readonly("overlap", viewer<PyChain>([](const PyChain& c) -> auto& { return c.chain.overlap; }))
+      .def_property_readonly("onsite", viewer<PyChain>([](const PyChain& c) -> auto& { return c.chain.onsite; }))
       .def_property_readonly("F0", [](const PyChain& c) { return c.chain.precompression; })
       .def_property_readonly("types", &chain_types)
       .def_property_readonly("metadata", [](const PyChain& c) { return to_python(c.description); })
@@ -134,6 +136,22 @@ void bind_model(py::module_& m) {
     std::vector<double> r = double_vector(radii, "radii");
     if (r.size() < 2) bad_value("radii", ": " + std::to_string(r.size()) + " beads; a chain needs at least 2");
     return py_chain({.given_radii = std::move(r), .F0 = F0, .material = material, .walls = parse_wall_shape(walls)}, 0);
+  });
+  m.def("_quasiperiodic_chain", [](const std::string& kind, long long N, double modulation, const std::string& ratio,
+                                   const py::object& phase, double angle, double k0, long long seed,
+                                   long long realization, double F0, double R1, const Material& material) {
+    ChainRecipe r{.R1 = R1,
+                  .N = checked_size(N, "N", 2, 100000000),
+                  .F0 = F0,
+                  .material = material,
+                  .seed = checked_size(seed, "seed")};
+    r.quasi = Quasiperiodic{.kind = parse_quasi_kind(kind),
+                            .modulation = modulation,
+                            .ratio = parse_ratio(ratio),
+                            .phase = phase.is_none() ? std::nullopt : std::optional<double>(phase.cast<double>()),
+                            .angle = angle,
+                            .k0 = k0};
+    return py_chain(r, checked_size(realization, "realization"));
   });
   m.def("_configuration", [](const std::string& disorder, double q, long long N, long long seed, long long realization) {
     validate_probability(q);

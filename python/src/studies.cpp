@@ -13,6 +13,7 @@
 #include "granular/model/named_chains.hpp"
 #include "granular/model/plausibility.hpp"
 #include "granular/number_format.hpp"
+#include "granular/study/butterfly.hpp"
 #include "granular/study/correlation_files.hpp"
 #include "granular/study/ipr_map_files.hpp"
 #include "granular/study/localization_files.hpp"
@@ -166,6 +167,48 @@ py::dict correlations(const CorrelationConfig& c, const PyRun& options) {
   return out;
 }
 
+py::dict butterfly(const std::string& kind, const std::vector<double>& ratios, long long N, double modulation,
+                   const py::object& phase, double angle, double k0, long long seed, long long realization, double F0,
+                   double R1, double largest_box, double smallest_box, long long box_sizes, const PyRun& options) {
+  ButterflyConfig c;
+  c.chain.N = checked_size(N, "N", 2, 100000000);
+  c.chain.F0 = F0;
+  c.chain.R1 = R1;
+  c.chain.seed = checked_size(seed, "seed");
+  c.chain.quasi = Quasiperiodic{.kind = parse_quasi_kind(kind),
+                                .modulation = modulation,
+                                .phase = phase.is_none() ? std::nullopt : std::optional<double>(phase.cast<double>()),
+                                .angle = angle,
+                                .k0 = k0};
+  c.ratios = ratios;
+  c.realization = checked_size(realization, "realization");
+  c.largest_box = largest_box;
+  c.smallest_box_spacings = smallest_box;
+  c.box_sizes = checked_size(box_sizes, "box_sizes", 2);
+  validate(c);
+  std::vector<ButterflyColumn> columns;
+  run_long("butterfly", c.ratios.size(), options.progress,
+           [&](const LongRun& control) { columns = compute_butterfly(c, run_of(options, control)); });
+  nlohmann::json meta = metadata_head("butterfly");
+  meta.update(describe_butterfly(c, columns));
+  meta["threads"] = resolve_threads(options.thread_request());
+  std::vector<double> ratio, freq, ipr, dimension, error;
+  std::vector<std::size_t> mode;
+  for (const ButterflyColumn& col : columns) {
+    for (std::size_t k = 0; k < col.freq_khz.size(); ++k)
+      ratio.push_back(col.ratio), mode.push_back(k + 1), freq.push_back(col.freq_khz[k]), ipr.push_back(col.ipr[k]);
+    dimension.push_back(col.dimension.dimension);
+    error.push_back(col.dimension.error);
+  }
+  py::dict out;
+  out["ratio"] = to_numpy(std::move(ratio)), out["mode"] = to_numpy(std::move(mode));
+  out["freq_khz"] = to_numpy(std::move(freq)), out["ipr"] = to_numpy(std::move(ipr));
+  out["ratios"] = to_numpy(std::vector<double>(c.ratios));
+  out["dimension"] = to_numpy(std::move(dimension)), out["dimension_error"] = to_numpy(std::move(error));
+  out["metadata"] = to_python(meta);
+  return out;
+}
+
 }  // namespace
 
 void bind_studies(py::module_& m) {
@@ -178,6 +221,7 @@ void bind_studies(py::module_& m) {
   m.def("_ipr_map", &ipr_map);
   m.def("_localization", &localization);
   m.def("_correlations", &correlations);
+  m.def("_butterfly", &butterfly);
 }
 
 }  // namespace granular::python

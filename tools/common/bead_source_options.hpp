@@ -24,10 +24,10 @@ inline StreamedChain build_bead_source(const ChainOptions& o) {
   stored.n = 2;  // N checked below, by what the chain is
   ChainRecipe recipe = chain_recipe(stored);
   recipe.N = static_cast<std::size_t>(o.n);
-  const bool streamed = recipe.drawn() && !recipe.distribution && recipe.walls == WallShape::flat;  // else stored
+  const bool streamed = recipe.drawn() && recipe.typed() && recipe.walls == WallShape::flat;  // else stored
   if (!streamed && recipe.drawn() && o.n > 100000000)
-    throw InvalidInput("N",
-                       " " + std::to_string(o.n) + ": --types/--polydisperse/--walls sphere store the chain (<= 1e8)");
+    throw InvalidInput("N", " " + std::to_string(o.n) +
+                                ": --types/--polydisperse/--quasi/--walls sphere store the chain (<= 1e8)");
   validate(recipe, streamed ? 1000000000000 : 100000000);
   warn_implausible(recipe, o);
   StreamedChain s;

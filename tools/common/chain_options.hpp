@@ -3,7 +3,9 @@
 // a random realization (--disorder --xi --q --N --seed --realization), a file of bead types
 // (--config) or a file of radii (--radii), plus --F0 and --R1; or random chains beyond two types:
 // k types with probabilities (--types radii, --type-masses masses) or polydisperse radii
-// (--polydisperse uniform:LO:HI | normal:MEAN:SD:MIN), realization --realization of --seed.
+// (--polydisperse uniform:LO:HI | normal:MEAN:SD:MIN), realization --realization of --seed;
+// or a quasiperiodic chain (--quasi s1|s2|cylinders --modulation --ratio --phase --angle --k0),
+// whose realization is its phase.
 #include <cstdio>
 #include <optional>
 #include <string>
@@ -26,6 +28,9 @@ struct ChainOptions {
   double xi = 0.5, q = 0.5, f0 = 10, r1 = paper_r1;
   long long n = 100, seed = 1, realization = 0;
   std::string config, radii, types, type_masses, polydisperse, walls = "flat";
+  std::string quasi, ratio = "golden";  ///< --quasi KIND, --ratio β
+  double modulation = 0, angle = 45, k0 = 4;
+  std::optional<double> phase;
   bool auto_n = false;         ///< --N auto (long_time_options.hpp): N from T, the chain drawn from its centre
   nlohmann::json length_rule;  ///< and the rule's numbers
 };
@@ -56,6 +61,31 @@ inline void add_walls_option(CLI::App& app, std::string& walls) {
              "fixed-end lattice");
 }
 
+/// --quasi and its parameters (model/quasiperiodic.hpp); returns --quasi for exclusions.
+inline CLI::Option* add_quasiperiodic_options(CLI::App& app, ChainOptions& o) {
+  auto* quasi = app.add_option("--quasi", o.quasi,
+                               "quasiperiodic chain: s1 (on-site springs), s2 (masses) or cylinders (crossing angles), "
+                               "modulated by 1 + modulation cos(2 pi ratio n + phase); R1 is the beads' radius");
+  add_option(app, "--modulation", o.modulation, "--quasi: relative modulation strength lambda, |lambda| < 1");
+  add_option(app, "--ratio", o.ratio, "--quasi: the incommensurate ratio beta > 0: golden, p/q or a number");
+  app.add_option("--phase", o.phase,
+                 "--quasi: the phase [rad] (default: drawn uniformly in [0, 2 pi) per --seed and --realization)");
+  add_option(app, "--angle", o.angle, "--quasi cylinders: mean crossing angle alpha0 [degrees] in (0, 180)");
+  add_option(app, "--k0", o.k0, "--quasi s1: mean on-site stiffness in units of the bond stiffness K");
+  return quasi;
+}
+
+/// The quasiperiodic chain the options pick, if --quasi is given.
+inline std::optional<Quasiperiodic> quasiperiodic(const ChainOptions& o) {
+  if (o.quasi.empty()) return std::nullopt;
+  return Quasiperiodic{.kind = parse_quasi_kind(o.quasi),
+                       .modulation = o.modulation,
+                       .ratio = parse_ratio(o.ratio),
+                       .phase = o.phase,
+                       .angle = o.angle,
+                       .k0 = o.k0};
+}
+
 inline void add_chain_options(CLI::App& app, ChainOptions& o) {
   add_option(app, "--disorder", o.disorder, "h | A | RDM1 | RDM2 (homogeneous, Anderson, random dimer 1/2)");
   add_option(app, "--xi", o.xi, "size ratio R2/R1 in (0,1]");
@@ -72,8 +102,10 @@ inline void add_chain_options(CLI::App& app, ChainOptions& o) {
   auto* radii = app.add_option("--radii", o.radii,
                                "file with one radius [m] per line, '#' comments; overrides --disorder/--q/--N/--xi");
   config->excludes(radii);
+  auto* quasi = add_quasiperiodic_options(app, o);
   for (auto* a : add_bead_distribution_options(app, o))
-    for (auto* b : {config, radii}) a->excludes(b), b->excludes(a);
+    for (auto* b : {config, radii, quasi}) a->excludes(b), b->excludes(a);
+  for (auto* b : {config, radii}) quasi->excludes(b), b->excludes(quasi);
 }
 
 /// The distribution of --types / --type-masses / --polydisperse, if one is given (rule: --disorder).
@@ -110,6 +142,7 @@ inline ChainRecipe chain_recipe(const ChainOptions& o) {
   r.distribution = bead_distribution(o);
   if (!o.config.empty()) r.given_types = read_configuration_file(r.source = o.config);
   if (!o.radii.empty()) r.given_radii = read_radii_warning(r.source = o.radii);
+  r.quasi = quasiperiodic(o);
   return r;
 }
 

@@ -31,6 +31,14 @@ inline std::vector<std::string> replay_flags(const TransportCase& c, std::uint64
     if (types) add("--disorder", to_string(b->rule));
   } else if (chain.given_radii) {
     add("--radii", chain.source);
+  } else if (const auto& q = chain.quasi) {
+    add("--quasi", to_string(q->kind));
+    add("--modulation", number(q->modulation));
+    add("--ratio", number(q->ratio));
+    if (q->phase) add("--phase", number(*q->phase));
+    add("--angle", number(q->angle));
+    add("--k0", number(q->k0));
+    add("--R1", number(chain.R1));
   } else {
     if (chain.given_types) add("--config", chain.source);
     else add("--disorder", to_string(chain.disorder)), add("--q", number(chain.q));

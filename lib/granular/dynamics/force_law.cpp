@@ -48,6 +48,8 @@ PolynomialLaw::PolynomialLaw(const Chain& chain, int degree) : precompression_(c
 }
 
 ForceLaw make_force_law(ForceLawKind kind, const Chain& chain) {
+  if (!chain.onsite.empty())  // the bond laws have no ground springs; refuse rather than drop them
+    throw InvalidInput("quasi", " s1: on-site springs are not in the dynamics yet (spectrum and ipr-map only)");
   switch (kind) {
     case ForceLawKind::hertz: return HertzLaw(chain);
     case ForceLawKind::fpu: return PolynomialLaw(chain, 3);

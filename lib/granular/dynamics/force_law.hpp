@@ -109,7 +109,8 @@ concept BondForceLaw = requires(const L& law, std::size_t k, double x, double& o
 
 using ForceLaw = std::variant<HertzLaw, PolynomialLaw>;
 
-/// The law of `kind` on this chain's bonds. Throws InvalidInput for fpu/linear at F0 = 0.
+/// The law of `kind` on this chain's bonds. Throws InvalidInput for fpu/linear at F0 = 0 and for
+/// a chain with on-site springs (Chain::onsite), which no law here integrates yet.
 ForceLaw make_force_law(ForceLawKind kind, const Chain& chain);
 
 }  // namespace granular

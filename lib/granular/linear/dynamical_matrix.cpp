@@ -17,6 +17,8 @@ DynamicalMatrix dynamical_matrix(const Chain& chain) {
   d.diagonal.resize(n);
   d.off_diagonal.resize(n - 1);
   for (std::size_t i = 0; i < n; ++i) d.diagonal[i] = (b[i] + b[i + 1]) * chain.inverse_mass[i];
+  if (!chain.onsite.empty())  // a spring to the ground adds k_n/m_n to its bead's row
+    for (std::size_t i = 0; i < n; ++i) d.diagonal[i] += chain.onsite[i] * chain.inverse_mass[i];
   for (std::size_t i = 0; i + 1 < n; ++i)
     d.off_diagonal[i] = -b[i + 1] * std::sqrt(chain.inverse_mass[i] * chain.inverse_mass[i + 1]);
   d.inverse_sqrt_mass = inverse_sqrt_mass(chain.inverse_mass);

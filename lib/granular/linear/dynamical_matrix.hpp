@@ -14,7 +14,7 @@ struct DynamicalMatrix : SymTridiagonal {
   std::vector<double> inverse_sqrt_mass;  ///< m_n^{-1/2} [kg^{-1/2}], N entries
 };
 
-/// D(i,i) = (B_i + B_{i+1})/m_i, D(i,i+1) = -B_{i+1}/sqrt(m_i m_{i+1}) [1/s²].
+/// D(i,i) = (B_i + B_{i+1} + k_i)/m_i (k_i the on-site spring, if any), D(i,i+1) = -B_{i+1}/sqrt(m_i m_{i+1}) [1/s²].
 /// Throws InvalidInput when F0 = 0 (the sonic vacuum has no linear limit).
 DynamicalMatrix dynamical_matrix(const Chain& chain);
 

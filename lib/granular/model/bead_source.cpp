@@ -123,6 +123,9 @@ class ChainBeads final : public BeadSource {
  public:
   explicit ChainBeads(const Chain& chain) : mass_(chain.mass) {
     require_linear_limit(chain.precompression);
+    if (!chain.onsite.empty())  // the transfer matrices read masses and bonds only
+      throw InvalidInput("quasi",
+                         " s1: on-site springs are not in the transfer matrices yet (use spectrum or ipr-map)");
     stiffness_ = linear_stiffness(chain);
   }
   std::size_t size() const override { return mass_.size(); }

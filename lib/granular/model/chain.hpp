@@ -36,6 +36,9 @@ struct Chain {
   std::vector<double> contact;       ///< A_k [N/m^{3/2}], N+1 bonds
   std::vector<double> overlap;       ///< static overlap Δ_k = (F0/A_k)^{2/3} [m], N+1 bonds
   double precompression = 0;         ///< F0 [N]
+  /// k_n [N/m] of a linear spring holding bead n to the ground (the quasiperiodic chain S1,
+  /// docs/physics.md, "Quasiperiodic chains"); empty when the beads have none (every other chain).
+  std::vector<double> onsite;
 
   std::size_t size() const { return radius.size(); }
   std::size_t bonds() const { return contact.size(); }

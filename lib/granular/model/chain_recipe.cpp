@@ -49,12 +49,13 @@ std::size_t ChainRecipe::size() const {
 
 Configuration ChainRecipe::types(std::uint64_t r) const {
   if (given_types) return *given_types;
-  if (given_radii || distribution) return {};
+  if (given_radii || distribution || quasi) return {};
   return centred ? centred_configuration(disorder, q, N, seed, r) : realization_configuration(disorder, q, N, seed, r);
 }
 
 std::vector<double> ChainRecipe::radii(std::uint64_t r) const {
   if (given_radii) return *given_radii;
+  if (quasi) return std::vector<double>(N, R1);
   if (distribution) return realization_radii(*distribution, N, seed, r);
   return radii_of(types(r), R1, xi);
 }
@@ -68,6 +69,7 @@ Chain ChainRecipe::chain_of(const Configuration& t) const {
 }
 
 Chain ChainRecipe::chain(std::uint64_t r) const {
+  if (quasi) return quasiperiodic_chain(*quasi, N, R1, F0, material, quasiperiodic_phase(*quasi, seed, r));
   if (given_radii || distribution) return with_walls(radii(r), *this);
   return chain_of(types(r));
 }
@@ -75,13 +77,14 @@ Chain ChainRecipe::chain(std::uint64_t r) const {
 std::unique_ptr<BeadSource> ChainRecipe::beads(std::uint64_t r) const {
   if (given_types && walls == WallShape::flat) return typed_beads(*given_types, parameters(*this, r));
   // The streamed two-type sources know flat walls only; other walls come from the stored chain.
-  if (given_radii || distribution || centred || walls != WallShape::flat) return chain_beads(chain(r));
+  if (given_radii || distribution || centred || quasi || walls != WallShape::flat) return chain_beads(chain(r));
   return random_beads(disorder, parameters(*this, r));
 }
 
 std::vector<double> ChainRecipe::possible_radii() const {
   std::vector<double> out;
   if (given_radii) return *given_radii;
+  if (quasi) return {R1};
   if (distribution && distribution->kind == BeadDistribution::Kind::types) {
     for (std::size_t t = 0; t < distribution->radii.size(); ++t)
       if (distribution->probabilities[t] > 0) out.push_back(distribution->radii[t]);
@@ -114,6 +117,11 @@ void validate(const ChainRecipe& c, std::size_t max_beads) {
     throw InvalidInput("beads", ": a bead distribution draws its chain; not with given types or radii");
   if (c.centred && (c.distribution || !c.drawn()))
     throw InvalidInput("N", ": a chain drawn from its centre (the automatic N) has two bead types, not a bead source");
+  if (c.quasi && (c.distribution || !c.drawn() || c.centred))
+    throw InvalidInput("quasi",
+                       ": a quasiperiodic chain makes its own beads; not with --types, --config, --radii or --N auto");
+  if (c.quasi && c.walls != WallShape::flat)
+    throw InvalidInput("walls", ": a quasiperiodic chain has its own walls (flat; fixed cylinders for the cylinders)");
   const std::size_t n = c.size();
   if (n < 2) throw InvalidInput("N", " " + std::to_string(n) + ": a chain needs at least 2 beads");
   if (n > max_beads)
@@ -124,6 +132,12 @@ void validate(const ChainRecipe& c, std::size_t max_beads) {
   if (!std::isfinite(c.F0) || c.F0 < 0)
     throw InvalidInput("F0", " " + format_number(c.F0) + ": must be finite and >= 0");
   validate(c.material, "material");
+  if (c.quasi) {
+    if (!std::isfinite(c.R1) || c.R1 <= 0)
+      throw InvalidInput("R1", " " + format_number(c.R1) + ": must be finite and > 0");
+    validate(*c.quasi, c.F0);
+    return;
+  }
   if (c.distribution) {
     validate(*c.distribution);
     return;
@@ -151,7 +165,12 @@ nlohmann::json describe(const ChainRecipe& c, std::optional<std::uint64_t> reali
     d["seed"] = c.seed;
     if (realization) d["realization"] = *realization;
   };
-  if (c.distribution) {
+  if (c.quasi) {
+    d["R1_m"] = c.R1;
+    d["quasiperiodic"] = describe(*c.quasi);
+    drawn();
+    if (realization) d["phase_rad"] = quasiperiodic_phase(*c.quasi, c.seed, *realization);
+  } else if (c.distribution) {
     d["beads"] = describe(*c.distribution);
     drawn();
   } else if (c.given_radii) {
@@ -181,6 +200,7 @@ void describe_fields(const ChainRecipe& c, nlohmann::json& f) {
   f["material"] = describe(c.material);
   f["walls"] = walls_description(c.walls);
   if (c.distribution) f["beads"] = describe(*c.distribution);
+  if (c.quasi) f["quasiperiodic"] = describe(*c.quasi);
   if (c.centred) f["chain_draw"] = "outward from the centre bead";
   if (c.given_types && !c.source.empty()) f["config_file"] = c.source;
   if (c.given_radii && !c.source.empty()) f["radii_file"] = c.source;
@@ -204,6 +224,7 @@ ChainRecipe parse_recipe_fields(const nlohmann::json& f) {
       throw InvalidInput("walls", " '" + walls + "': not a description of flat or sphere walls");
     if (f.contains("beads")) c.distribution = parse_bead_distribution(f.at("beads").get<std::string>());
     if (f.contains("chain_draw")) c.centred = true;
+    if (f.contains("quasiperiodic")) c.quasi = parse_quasiperiodic(f.at("quasiperiodic"));
     if (f.contains("config_file")) {
       c.source = f.at("config_file").get<std::string>();
       c.given_types = read_configuration_file(c.source);

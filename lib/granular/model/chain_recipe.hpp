@@ -24,6 +24,7 @@
 #include "granular/model/disorder.hpp"
 #include "granular/model/material.hpp"
 #include "granular/model/named_chains.hpp"
+#include "granular/model/quasiperiodic.hpp"
 
 namespace granular {
 
@@ -55,11 +56,17 @@ struct ChainRecipe {
   Material material = steel;                         ///< beads and walls
   WallShape walls = WallShape::flat;                 ///< flat walls, or fixed spheres like the end beads
   std::uint64_t seed = 1;                            ///< random seed of drawn chains
+  /// A quasiperiodic chain of N beads of radius R1 (quasiperiodic.hpp): realization r is the
+  /// phase φ drawn from (seed, r), or the given phase. Excludes the other bead sources.
+  std::optional<Quasiperiodic> quasi{};
 
-  /// True when realization r matters (two-type draws and distributions).
+  /// True when realization r matters (two-type draws, distributions, quasiperiodic phases).
   bool drawn() const { return !given_types && !given_radii; }
   /// The number of beads of every realization.
   std::size_t size() const;
+  /// True when realization r is a sequence of the two bead types (two-type draws, a types file):
+  /// what studies over (q, ξ) grids need.
+  bool typed() const { return !distribution && !given_radii && !quasi; }
   /// The bead types (1 or 2) of realization r: two-type draws and a types file; empty otherwise.
   Configuration types(std::uint64_t r) const;
   /// The radii [m] of realization r.
@@ -78,7 +85,8 @@ struct ChainRecipe {
   std::vector<double> possible_radii() const;
 };
 
-/// Throws InvalidInput naming the field (N, q, xi, F0, R1, material, beads, radii, types).
+/// Throws InvalidInput naming the field (N, q, xi, F0, R1, material, beads, radii, types; the
+/// quasiperiodic fields of quasiperiodic.hpp).
 /// `max_beads`: the largest N allowed (a stored chain: 1e8; a streamed two-type draw: 1e12).
 void validate(const ChainRecipe& recipe, std::size_t max_beads = 100000000);
 

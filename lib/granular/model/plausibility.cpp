@@ -39,6 +39,9 @@ std::vector<std::string> radius_warnings(const ChainRecipe& recipe, const Radius
 }
 
 double highest_frequency_bound_khz(const ChainRecipe& recipe) {
+  if (recipe.quasi && recipe.F0 > 0)
+    return quasiperiodic_omega_bound(*recipe.quasi, recipe.R1, recipe.F0, recipe.material) / (2 * std::numbers::pi) /
+           1000;
   const std::vector<double> radii = recipe.possible_radii();
   if (radii.empty() || !(recipe.F0 > 0)) return 0;
   const auto [smallest, largest] = std::minmax_element(radii.begin(), radii.end());

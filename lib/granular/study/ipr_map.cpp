@@ -21,7 +21,7 @@ void validate(const IprMapConfig& c) {
     throw InvalidInput("precompression", " " + format_number(chain.F0) + ": the linear spectrum needs a finite F0 > 0");
   if (c.realizations < 1) throw InvalidInput("realizations", " 0: must be >= 1");
   if (!chain.drawn()) throw InvalidInput("chain", ": an IPR map draws its chains; not a given chain");
-  if (!chain.distribution) {
+  if (chain.typed()) {
     if (c.q_values.empty()) throw InvalidInput("q", ": no values");
     if (c.xi_values.empty()) throw InvalidInput("xi", ": no values");
     for (double q : c.q_values) validate_probability(q);
@@ -46,7 +46,7 @@ namespace {
 DynamicalMatrix matrix_of(const IprMapConfig& c, const Configuration& types, double xi, std::size_t r) {
   ChainRecipe cell = c.chain;
   cell.xi = xi;
-  return dynamical_matrix(cell.distribution ? cell.chain(r) : cell.chain_of(types));
+  return dynamical_matrix(cell.typed() ? cell.chain_of(types) : cell.chain(r));
 }
 
 /// The bead types of realization r at q (none with a bead distribution).
@@ -56,10 +56,10 @@ Configuration types_of(const IprMapConfig& c, double q, std::size_t r) {
   return cell.types(r);
 }
 
-/// With a bead distribution: one cell (q, ξ) = (NaN, NaN), whose types are not drawn.
+/// With a bead distribution or a quasiperiodic chain: one cell (q, ξ) = (NaN, NaN), whose types are not drawn.
 IprMapConfig one_cell_if_distributed(const IprMapConfig& c) {
   IprMapConfig out = c;
-  if (c.chain.distribution) out.q_values = out.xi_values = {std::numeric_limits<double>::quiet_NaN()};
+  if (!c.chain.typed()) out.q_values = out.xi_values = {std::numeric_limits<double>::quiet_NaN()};
   return out;
 }
 

@@ -7,6 +7,7 @@
 namespace granular {
 
 std::string ipr_map_disorder(const IprMapConfig& config) {
+  if (config.chain.quasi) return "quasi-" + to_string(config.chain.quasi->kind);
   if (!config.chain.distribution) return to_string(config.chain.disorder);
   return config.chain.distribution->kind == BeadDistribution::Kind::types ? "types" : "polydisperse";
 }
@@ -50,6 +51,7 @@ nlohmann::json describe_ipr_map(const IprMapConfig& config, const std::vector<Ip
                         {"threads", request.threads},
                         {"solver", request.solver}};
   if (chain.distribution) meta["parameters"]["beads"] = describe(*chain.distribution);
+  if (chain.quasi) meta["parameters"]["quasiperiodic"] = describe(*chain.quasi);
   const ModeSelection& s = config.selection;
   if (s.kind == ModeSelection::Kind::all) {
     meta["averaging"] = config.bin_khz > 0 ? "frequency-bin" : "mode";

@@ -12,7 +12,7 @@
 namespace granular {
 
 /// The name of the map's beads: the disorder rule (h, A, RDM1, RDM2), or "types" / "polydisperse"
-/// for a bead distribution.
+/// for a bead distribution, "quasi-s1" / "quasi-s2" / "quasi-cylinders" for a quasiperiodic chain.
 std::string ipr_map_disorder(const IprMapConfig& config);
 
 /// Every mode: disorder,q,xi,mode,freq_khz,ipr (means over realizations by mode number).

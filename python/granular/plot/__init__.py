@@ -26,6 +26,8 @@ look, _io the reading of results and files:
     mode_kicks(runs_or_csvs)                   m2(t) and P^-1(t) from linear modes beside a site kick
     spectral_densities(pairs, titles)          g(nu) of the displacements beside that of the velocities
     cost(benchmark_json)                       integrators' cost-accuracy curves
+  quasiperiodic: quasiperiodic chains
+    butterfly(result_or_csv)                   the Hofstadter butterfly coloured by IPR, its box-counting dimension
   transport_exponents: the paper's transport study (an exponents run)
     exponents(table_or_prefix, kick)           the paper's transport panels per chain kind and F0
     centres(table_or_prefix, chain)            m2 about the kicked site beside m2 about the centroid
@@ -36,8 +38,9 @@ look, _io the reading of results and files:
 from .disorder import correlations, localization
 from .dynamics import cost, energy_map, forces, mode_kicks, spectral_densities, spreading
 from .modes import ipr_averaging, ipr_map, partial_spectrum_ipr, spectrum
+from .quasiperiodic import butterfly
 from .transport_exponents import centres, exponents, paper_comparison, profiles, study_comparison
 
 __all__ = ["ipr_map", "spectrum", "partial_spectrum_ipr", "ipr_averaging", "correlations", "localization", "energy_map",
            "forces", "spreading", "mode_kicks", "spectral_densities", "cost", "exponents", "centres",
-           "paper_comparison", "profiles", "study_comparison"]
+           "paper_comparison", "profiles", "study_comparison", "butterfly"]

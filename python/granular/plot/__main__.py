@@ -97,6 +97,9 @@ def parser(prog=None):
     q.add_argument("csv", nargs="+", help="pairs: displacement spectrum CSV, velocity spectrum CSV (--spectrum-of velocity)")
     q.add_argument("--titles", help="semicolon list, one per pair")
     q.add_argument("--fmax", type=float, default=60, help="highest frequency shown [kHz] (default 60)")
+    q = kind("butterfly", "the Hofstadter butterfly coloured by IPR beside the box-counting dimension, from a "
+                          "butterfly CSV")
+    q.add_argument("csv", nargs="?", default="butterfly.csv")
     q = kind("cost", "integrators' cost-accuracy curves, from dynamics_benchmark --benchmark_out JSON")
     q.add_argument("bench")
     return p
@@ -170,6 +173,8 @@ def main(argv=None, prog=None):
             save(plot.spectral_densities(pairs, titles, fmax_khz=args.fmax), args.output or _default_output(args.csv[0]))
         elif args.kind == "profiles":
             save(plot.profiles(args.prefix, decades=args.decades), args.output or f"{args.prefix}-profiles.png")
+        elif args.kind == "butterfly":
+            save(plot.butterfly(args.csv), args.output or _default_output(args.csv))
         elif args.kind == "cost":
             save(plot.cost(args.bench), args.output or _default_output(args.bench))
     except (OSError, ValueError, KeyError) as error:  # a missing or wrong file: one line, exit code 2

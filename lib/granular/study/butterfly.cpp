@@ -1,0 +1,89 @@
+#include "granular/study/butterfly.hpp"
+
+#include <cmath>
+#include <nlohmann/json.hpp>
+
+#include "granular/ensemble/parallel_realizations.hpp"
+#include "granular/error.hpp"
+#include "granular/io/csv_writer.hpp"
+#include "granular/linear/dynamical_matrix.hpp"
+#include "granular/linear/spectrum.hpp"
+#include "granular/number_format.hpp"
+
+namespace granular {
+
+void validate(const ButterflyConfig& c) {
+  if (!c.chain.quasi) throw InvalidInput("quasi", ": a butterfly needs a quasiperiodic chain (s1, s2 or cylinders)");
+  if (c.ratios.empty()) throw InvalidInput("ratios", ": no values");
+  for (double beta : c.ratios) {
+    if (!std::isfinite(beta) || !(beta > 0))
+      throw InvalidInput("ratios", " " + format_number(beta) + ": every ratio beta must be finite and > 0");
+    ButterflyConfig one = c;
+    one.chain.quasi->ratio = beta;
+    validate(one.chain);
+  }
+  if (!(c.chain.F0 > 0)) throw InvalidInput("F0", " " + format_number(c.chain.F0) + ": the spectrum needs F0 > 0");
+  if (!(c.largest_box > 0 && c.largest_box <= 1))
+    throw InvalidInput("largest_box", " " + format_number(c.largest_box) + ": a fraction of the extent in (0, 1]");
+  const double smallest = c.smallest_box_spacings / static_cast<double>(c.chain.N);
+  if (!(smallest > 0) || !(smallest < c.largest_box))
+    throw InvalidInput("smallest_box", " " + format_number(c.smallest_box_spacings) +
+                                           ": must be > 0 and below the largest box (in spacings: " +
+                                           format_number(c.largest_box * static_cast<double>(c.chain.N)) + ")");
+  if (c.box_sizes < 2) throw InvalidInput("box_sizes", " " + std::to_string(c.box_sizes) + ": at least 2");
+}
+
+std::vector<ButterflyColumn> compute_butterfly(const ButterflyConfig& c, const RunOptions& run) {
+  validate(c);
+  std::vector<ButterflyColumn> columns(c.ratios.size());
+  parallel_realizations(
+      c.ratios.size(), resolve_threads(run.threads),
+      [&](std::size_t i, int) {
+        if (run.cancelled && run.cancelled()) throw Cancelled();
+        ChainRecipe recipe = c.chain;
+        recipe.quasi->ratio = c.ratios[i];
+        const Spectrum s =
+            spectrum(dynamical_matrix(recipe.chain(c.realization)), all_modes(), {.method = SpectrumMethod::fast});
+        ButterflyColumn& col = columns[i];
+        col.ratio = c.ratios[i];
+        col.freq_khz = s.freq_khz;
+        col.ipr = s.ipr;
+        const double extent = s.freq_khz.back() - s.freq_khz.front();
+        const double n = static_cast<double>(s.size());
+        col.dimension =
+            box_counting_dimension(s.freq_khz, geometric_box_sizes(c.largest_box * extent,
+                                                                   c.smallest_box_spacings * extent / n, c.box_sizes));
+      },
+      run.progress);
+  return columns;
+}
+
+void write_butterfly_csv(std::ostream& out, const std::vector<ButterflyColumn>& columns) {
+  CsvWriter table(out, {"ratio", "mode", "freq_khz", "ipr"});
+  for (const ButterflyColumn& col : columns)
+    for (std::size_t k = 0; k < col.freq_khz.size(); ++k) table.row(col.ratio, k + 1, col.freq_khz[k], col.ipr[k]);
+}
+
+nlohmann::json describe_butterfly(const ButterflyConfig& c, const std::vector<ButterflyColumn>& columns) {
+  nlohmann::json meta;
+  meta["chain"] = describe(c.chain, c.realization);
+  meta["chain"]["quasiperiodic"]["ratio"] = "each of ratios";
+  meta["ratios"] = c.ratios;
+  meta["realization"] = c.realization;
+  meta["solver"] = "fast";
+  nlohmann::json box = {{"largest_box_of_extent", c.largest_box},
+                        {"smallest_box_spacings", c.smallest_box_spacings},
+                        {"box_sizes", c.box_sizes},
+                        {"fit", "least squares of ln N(eps) on ln(1/eps); error = standard error of the slope"}};
+  for (const ButterflyColumn& col : columns) {
+    box["ratio"].push_back(col.ratio);
+    box["dimension"].push_back(col.dimension.dimension);
+    box["error"].push_back(col.dimension.error);
+    box["box_khz_largest"].push_back(col.dimension.box_sizes.front());
+    box["box_khz_smallest"].push_back(col.dimension.box_sizes.back());
+  }
+  meta["box_counting"] = box;
+  return meta;
+}
+
+}  // namespace granular

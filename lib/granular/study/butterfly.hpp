@@ -1,0 +1,54 @@
+#pragma once
+// The Hofstadter butterfly of a quasiperiodic chain (docs/physics.md, "Quasiperiodic chains"):
+// every mode's frequency and displacement IPR for each incommensurate ratio β of a grid, one chain
+// (one phase) per β, by the fast all-modes solver; and the box-counting dimension of each β's
+// set of frequencies (analysis/box_counting.hpp) over a stated range of box sizes.
+//
+//   granular::ButterflyConfig c;
+//   c.chain.N = 1000;
+//   c.chain.quasi = granular::Quasiperiodic{.kind = granular::Quasiperiodic::Kind::s1, .modulation = 0.3};
+//   c.ratios = {0.01, 0.02, …};
+//   auto columns = granular::compute_butterfly(c, {});
+#include <cstdint>
+#include <ostream>
+#include <vector>
+
+#include <nlohmann/json_fwd.hpp>
+
+#include "granular/analysis/box_counting.hpp"
+#include "granular/ensemble/run_options.hpp"
+#include "granular/model/chain_recipe.hpp"
+
+namespace granular {
+
+struct ButterflyConfig {
+  ChainRecipe chain;                 ///< a quasiperiodic recipe (chain.quasi set); its ratio is replaced by each β
+  std::vector<double> ratios;        ///< β values, each finite and > 0
+  std::uint64_t realization = 0;     ///< which phase of chain.seed (or the given phase)
+  double largest_box = 0.5;          ///< box sizes, as fractions of each spectrum's extent f_max − f_min
+  double smallest_box_spacings = 4;  ///< the smallest box, in mean level spacings (extent / N)
+  std::size_t box_sizes = 12;        ///< sizes, evenly spaced in ln ε
+};
+
+/// Throws InvalidInput naming the field (quasi, ratios, box fields, and the chain's own).
+void validate(const ButterflyConfig& config);
+
+struct ButterflyColumn {
+  double ratio = 0;
+  std::vector<double> freq_khz;    ///< every mode, ascending [kHz]
+  std::vector<double> ipr;         ///< its displacement IPR
+  BoxCountingDimension dimension;  ///< of freq_khz; box sizes in kHz
+};
+
+/// One column per β, in the order given; thread-count invariant (one chain per β, fixed slots).
+std::vector<ButterflyColumn> compute_butterfly(const ButterflyConfig& config, const RunOptions& run);
+
+/// ratio,mode,freq_khz,ipr: one row per mode per β.
+void write_butterfly_csv(std::ostream& out, const std::vector<ButterflyColumn>& columns);
+
+/// The JSON entries: chain (the recipe, its ratio "each of ratios"), ratios, realization, solver,
+/// and box_counting: {largest_box, smallest_box_spacings, box_sizes, ratio[], dimension[], error[],
+/// box_khz_largest[], box_khz_smallest[]}.
+nlohmann::json describe_butterfly(const ButterflyConfig& config, const std::vector<ButterflyColumn>& columns);
+
+}  // namespace granular

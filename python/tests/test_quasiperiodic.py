@@ -1,0 +1,58 @@
+"""granular.quasiperiodic: the same chain as the tools' --quasi (spectrum compared exactly with the
+spectrum tool's CSV), the modulation formula of docs/physics.md, "Quasiperiodic chains", and bad
+keywords named in the ValueError."""
+import math
+
+import numpy as np
+import pytest
+
+import granular as gr
+from conftest import assert_identical
+
+
+@pytest.mark.parametrize("kind", ["s1", "s2", "cylinders"])
+def test_quasiperiodic_spectrum_equals_the_spectrum_tool(tools, kind):
+    args = ["--quasi", kind, "--modulation", "0.4", "--ratio", "2/5", "--N", "60", "--seed", "4", "--realization", "3"]
+    csv, meta = tools.run("spectrum", *args)
+    chain = gr.quasiperiodic(kind, N=60, modulation=0.4, ratio="2/5", seed=4, realization=3)
+    result = gr.spectrum(chain)
+    assert_identical(result.freq_khz, csv["freq_khz"])
+    assert_identical(result.ipr, csv["ipr"])
+    assert result.metadata["chain"] == meta["chain"]
+    assert meta["chain"]["quasiperiodic"]["kind"] == kind
+
+
+def test_s2_masses_follow_the_cosine():
+    chain = gr.quasiperiodic("s2", N=30, modulation=0.5, ratio=0.3, phase=1.2)
+    n = np.arange(1, 31)
+    m = 8027.17 * 4 / 3 * math.pi * gr.paper_r1**3
+    np.testing.assert_allclose(chain.mass, m * (1 + 0.5 * np.cos(2 * math.pi * 0.3 * n + 1.2)), rtol=1e-14)
+    assert len(chain.onsite) == 0
+    assert len(gr.quasiperiodic("s1", N=30, modulation=0.5).onsite) == 30
+
+
+@pytest.mark.parametrize(
+    "keywords, name",
+    [({"modulation": 1.0}, "modulation"), ({"ratio": 0}, "ratio"), ({"ratio": "abc"}, "ratio"),
+     ({"kind": "s3"}, "quasi"), ({"kind": "cylinders", "angle": 200}, "angle")])
+def test_bad_keywords_are_named(keywords, name):
+    with pytest.raises(ValueError, match=name):
+        gr.quasiperiodic(**keywords)
+
+
+def test_butterfly_equals_the_tool_and_draws(tools):
+    csv, meta = tools.run("butterfly", "--quasi", "s1", "--modulation", "0.3", "--ratios", "0.1,0.3,0.618", "--N",
+                          "50", "--quiet", output="b")
+    result = gr.butterfly("s1", modulation=0.3, ratios=[0.1, 0.3, 0.618], N=50)
+    assert_identical(result.freq_khz, csv["freq_khz"])
+    assert_identical(result.ipr, csv["ipr"])
+    assert_identical(result.dimension, np.asarray(meta["box_counting"]["dimension"]))
+    assert result.metadata["chain"] == meta["chain"]
+    # each column is the spectrum of that ratio's chain
+    one = gr.spectrum(gr.quasiperiodic("s1", N=50, modulation=0.3, ratio=0.3), method="fast")
+    assert_identical(result.freq_khz[result.ratio == 0.3], one.freq_khz)
+    import granular.plot as gp
+    fig = gp.butterfly(result)
+    assert len(fig.axes) >= 2
+    fig = gp.butterfly(tools.path("b.csv"))
+    assert len(fig.axes) >= 2
