@@ -183,7 +183,7 @@ def test_automatic_integrator_equals_the_spreading_tool(tools):
         gr.spreading(gr.anderson(N=201, F0=10), integrator="auto", dt=1e-6, **SHORT)
 
 
-# --- beyond the paper (issue 14): dissipation and the maximal Lyapunov exponent ----------------------------------
+# --- beyond the paper: dissipation and the maximal Lyapunov exponent ----------------------------------
 
 
 def test_damped_run_equals_the_spreading_tool(tools):

@@ -1,4 +1,4 @@
-// Speed of the dynamics (issue 4): the bare bond kernel, the SABA2C step, one realization of
+// Speed of the dynamics: the bare bond kernel, the SABA2C step, one realization of
 // the paper's problem (N = 2501, τ = 1 µs, T = 10 ms, F0 = 10 N, displacement kick, one Anderson
 // chain ξ = q = 0.5, seed 1 realization 0) with and without the active window against Boost.Odeint's
 // symplectic_rkn_sb3a_mclachlan at the same τ, and the cost–accuracy of every scheme.
@@ -90,7 +90,7 @@ void BM_Saba2cStep(benchmark::State& state) {
 }
 BENCHMARK(BM_Saba2cStep)->Unit(benchmark::kMicrosecond);
 
-// Issue 14's budget: a damped step and a tangent-map step at most 2× BM_Saba2cStep (whole chain, 100 steps
+// The budget: a damped step and a tangent-map step at most 2× BM_Saba2cStep (whole chain, 100 steps
 // per iteration each).
 // Arg 0: on-site damping only (exact flow); 1: Kuwabara–Kono too (parity-split pair steps).
 void BM_DampedSaba2cStep(benchmark::State& state) {

@@ -1,4 +1,4 @@
-// Transfer-matrix kernel (issue 13): λ and node counts at F frequencies on an N-bead Anderson chain
+// Transfer-matrix kernel: λ and node counts at F frequencies on an N-bead Anderson chain
 // (ξ = q = 0.5, F0 = 10 N, seed 1), one thread unless stated. "stored" reads a chain held in
 // memory (chain_beads), "streamed" draws the beads from the Philox stream on every pass
 // (random_beads); the difference is the cost of generating the chain. Counter ns_per_step is per

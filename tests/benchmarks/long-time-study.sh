@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Issue 14's long-time study: the paper's transport exponents at T = 100 ms instead of 10 ms, with
+# The long-time study: the paper's transport exponents at T = 100 ms instead of 10 ms, with
 # N sized so that no wave reaches a wall (--N auto) and the cheapest scheme keeping SABA2C's
 # energy error (--integrator auto). Each case (kick, F0, chain) is its own `exponents` run, timed
 # with /usr/bin/time (wall, CPU, peak memory), so the share of every case in the study's wall time

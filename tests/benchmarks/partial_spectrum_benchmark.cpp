@@ -1,4 +1,4 @@
-// Partial spectra (issue 3): K = 20 modes nearest 15 kHz of an Anderson chain (ξ = q = 0.5,
+// Partial spectra: K = 20 modes nearest 15 kHz of an Anderson chain (ξ = q = 0.5,
 // F0 = 10 N, seed 1, realization 0), solver time only (the matrix is built once per N), for each
 // method and N. Whole-process times, peak memory and SciPy side by side: partial_spectrum_scaling.sh.
 //   build/benchmarks/partial_spectrum_benchmark --benchmark_filter='bisect'

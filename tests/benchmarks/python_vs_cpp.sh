@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Does calling from Python cost the C++ speed? (issue 12: the default IPR map from Python within
+# Does calling from Python cost the C++ speed? (the default IPR map from Python within
 # 10 % of the ipr-map tool; 1000 small spectrum calls within 2x of the same loop in C++.)
 #   1. the default IPR map (Anderson, xi = 0.1:1:0.01, q = 0.2/0.5/0.8, N = 100, 100 realizations,
 #      all cores): whole process, `ipr-map` against `python3 -c "import granular; granular.ipr_map()"`,

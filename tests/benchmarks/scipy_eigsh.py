@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""SciPy's answer on the very same matrix, for the side-by-side benchmark (issue 3).
+"""SciPy's answer on the very same matrix, for the side-by-side benchmark.
 
 usage: scipy_eigsh.py PREFIX KHZ K [OURS.csv]
 PREFIX.diag.f64 / PREFIX.offdiag.f64 are written by `spectrum --dump-matrix PREFIX`.

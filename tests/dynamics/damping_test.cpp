@@ -1,4 +1,4 @@
-// Dissipation (docs/beyond-the-paper.md, issue 14): the damped linear chain against its exact
+// Dissipation (docs/beyond-the-paper.md): the damped linear chain against its exact
 // modal solution, the order of the Strang splitting with Kuwabara–Kono damping, the energy
 // balance H + dissipated = H0, and "no damping" changing nothing.
 #include <cmath>

@@ -1,5 +1,5 @@
 // The splitting schemes against the Odeint reference, against each other and against the
-// conservation of energy (docs/physics.md, "Nonlinear dynamics"; issue 4 "tests that must exist").
+// conservation of energy (docs/physics.md, "Nonlinear dynamics").
 #include <cmath>
 #include <cstdio>
 

@@ -1,5 +1,5 @@
 // The coefficient of restitution of a two-bead Kuwabara–Kono collision (docs/physics.md, "Nonlinear dynamics" "Beyond the
-// paper", issue 14): elastic without damping, falling with γ_KK and with the impact speed, and
+// paper"): elastic without damping, falling with γ_KK and with the impact speed, and
 // 1 − e ∝ γ_KK v^{1/5} with Schwager & Pöschel's coefficient at small damping.
 #include <cmath>
 #include <cstdio>

@@ -1,4 +1,4 @@
-// The tangent map (docs/beyond-the-paper.md, issue 14): the deviation vector is the derivative
+// The tangent map (docs/beyond-the-paper.md): the deviation vector is the derivative
 // of the numerical orbit (two orbits 1e-9 apart), and the linear chain is regular (X1 ∝ ln t / t).
 #include <cmath>
 #include <cstdio>

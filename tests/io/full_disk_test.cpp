@@ -1,4 +1,4 @@
-// Outputs and checkpoints on a full disk (issue 15): a 64 KiB tmpfs, mounted when the tests run as
+// Outputs and checkpoints on a full disk: a 64 KiB tmpfs, mounted when the tests run as
 // root (CI does); otherwise the test says loudly that it was skipped. Every failure must name the
 // file and the cause, leave no partial output, and leave the checkpoint readable.
 #include <sys/mount.h>

@@ -1,4 +1,4 @@
-// One writer per output (issue 15): a second lock on the same prefix is refused naming the holder;
+// One writer per output: a second lock on the same prefix is refused naming the holder;
 // a lock left by a killed process does not block; the file goes when the lock is released.
 #include <sys/wait.h>
 #include <unistd.h>

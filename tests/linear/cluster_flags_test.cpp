@@ -1,4 +1,4 @@
-// Near-degenerate clusters are flagged per mode (issue 13 item 6): a mode with another eigenvalue
+// Near-degenerate clusters are flagged per mode: a mode with another eigenvalue
 // within cluster_relative_gap · max ω² has an IPR that depends on the basis chosen inside the
 // cluster. A mirror-symmetric chain made of two identical halves has modes localized near the
 // walls whose even and odd combinations are split only by tunnelling through the chain

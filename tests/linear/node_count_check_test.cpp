@@ -1,4 +1,4 @@
-// Issue 13 item 5: every nearest/window result of spectrum() is checked by inertia (node) counts.
+// Every nearest/window result of spectrum() is checked by inertia (node) counts.
 // A solver that silently misses an eigenvalue (simulated through the detail::hide_candidate test
 // seam, which drops one computed candidate) must be caught: recovered by bisection (recorded in
 // SpectrumInfo) or reported as NumericalError — never returned. Normal runs of every method must

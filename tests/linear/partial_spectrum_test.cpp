@@ -1,4 +1,4 @@
-// Issue 3: the partial-spectrum methods (lapack = dstemr by index, bisect = many-shift Sturm +
+// The partial-spectrum methods (lapack = dstemr by index, bisect = many-shift Sturm +
 // inverse iteration, arpack and slepc = shift-invert Krylov) must give the same modes.
 //
 // Which IPRs are compared: an eigenvector is only determined up to rotations within eigenvalues

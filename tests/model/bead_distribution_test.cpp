@@ -1,4 +1,4 @@
-// Chains beyond two types (issue 13 item 7): k types with probabilities, polydisperse radii,
+// Chains beyond two types: k types with probabilities, polydisperse radii,
 // and the two-type case reproducing the paper's disorder kinds bit for bit.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// Issue 14 in the ensemble: the mean X1(t) of the tangent map and damped runs, bit-identical for
+// Beyond the paper in the ensemble: the mean X1(t) of the tangent map and damped runs, bit-identical for
 // any thread count, and the ensemble X1 equals the mean of single runs.
 #include <cmath>
 #include <cstdio>

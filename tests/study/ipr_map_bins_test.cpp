@@ -1,4 +1,4 @@
-// Issue 13 item 6: the IPR map averaged in frequency bins (IprMapConfig::bin_khz).
+// The IPR map averaged in frequency bins (IprMapConfig::bin_khz).
 #include <algorithm>
 #include <cmath>
 #include <limits>

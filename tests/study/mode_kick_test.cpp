@@ -1,4 +1,4 @@
-// Mode-shaped kicks (issue 13 item 4): the chain started in one linear mode stays in it — exactly
+// Mode-shaped kicks: the chain started in one linear mode stays in it — exactly
 // under the linear force law (a splitting scheme applied to a linear system is a polynomial in
 // M^{-1}K, so it keeps every eigenspace), and to within the nonlinearity at small Hertz amplitude.
 #include <gtest/gtest.h>

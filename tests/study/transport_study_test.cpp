@@ -162,7 +162,7 @@ TEST(TransportStudy, SonicVacuumVelocityKickMatchesTableI) {
 namespace granular {
 namespace {
 
-// Issue 13 item 7: an ensemble of polydisperse chains (radii drawn per realization) is
+// An ensemble of polydisperse chains (radii drawn per realization) is
 // bit-identical for any thread count, and its realizations really differ.
 TEST(TransportStudy, PolydisperseEnsembleIsBitIdenticalForOneAndTwoThreads) {
   TransportCase c;

@@ -1,4 +1,4 @@
-// Issue 14 on the command line: `restitution`, and `spreading`'s damping and --mle options.
+// Beyond the paper on the command line: `restitution`, and `spreading`'s damping and --mle options.
 #include <filesystem>
 #include <fstream>
 #include <sstream>

@@ -1,4 +1,4 @@
-// Edges of the physics (issue 15, item 4): every tool at the extremes of its parameters — ξ ∈ {0.01, 1},
+// Edges of the physics: every tool at the extremes of its parameters — ξ ∈ {0.01, 1},
 // q ∈ {0, 1}, F0 ∈ {1e-9, 1e3} N, kicks that part the beads far (α = 1e-4 m, β = 10 m/s), chains of
 // 2 and 3 beads, a 10⁷-bead run with the active window, τ past stability. Each cell either gives a
 // result checked against an invariant — an analytic spectrum, an exact scaling law (f ∝ ξ^{-4/3}

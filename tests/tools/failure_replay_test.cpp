@@ -1,4 +1,4 @@
-// Failures a user can act on (issue 15): a realization that fails stops the ensemble with a
+// Failures a user can act on: a realization that fails stops the ensemble with a
 // command that replays exactly that realization (running it gives the same failure), every
 // realization finished before it stays in the checkpoint, and --skip-failed goes on without it,
 // saying so in the JSON and the final line; the means are those of the realizations kept.

@@ -1,4 +1,4 @@
-// Real tools on a full disk (issue 15, item 2): outputs and checkpoints on a 64 KiB tmpfs, mounted
+// Real tools on a full disk: outputs and checkpoints on a 64 KiB tmpfs, mounted
 // when the tests run as root (CI does; otherwise each test says loudly that it was skipped). A tool
 // that runs out of space exits 1 with one line naming the file and "No space left on device",
 // leaves no partial output, keeps its checkpoint readable, and once space is freed (the tmpfs

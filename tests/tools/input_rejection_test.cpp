@@ -1,4 +1,4 @@
-// The input-rejection matrix (issue 6): every numeric option of every tool fed NaN, ±infinity,
+// The input-rejection matrix: every numeric option of every tool fed NaN, ±infinity,
 // a word and an empty value; unknown options; unreadable, empty, binary and truncated chain
 // files; outputs in missing or unwritable folders. Each must end with exit code 2 (1 for an
 // output I/O failure), a single line naming the problem, and no output created or overwritten.

@@ -1,4 +1,4 @@
-// The kill loop (issue 15): a scaled-down run killed with SIGKILL at ten pseudo-random moments,
+// The kill loop: a scaled-down run killed with SIGKILL at ten pseudo-random moments,
 // resumed after each, ends byte for byte where an uninterrupted run ends; the same under
 // mpirun -np 2 with one rank killed. Whatever moment a kill hits (a checkpoint line half written,
 // the header being replaced, the outputs being renamed), nothing finished is lost and nothing torn

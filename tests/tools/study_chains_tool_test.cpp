@@ -1,4 +1,4 @@
-// `exponents` and `correlations` beyond the paper's kinds (issues 13, 14): chains of k bead types
+// `exponents` and `correlations` beyond the paper's kinds: chains of k bead types
 // or polydisperse radii, mode-shaped kicks and the maximal Lyapunov exponent, each checked
 // against an independent route to the same numbers (the paper's kinds, `spreading` runs).
 #include <algorithm>

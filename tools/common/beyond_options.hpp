@@ -1,5 +1,5 @@
 #pragma once
-// Options beyond the paper (docs/physics.md, "Nonlinear dynamics", issue 14): dissipation (both `spreading` and
+// Options beyond the paper (docs/physics.md, "Nonlinear dynamics"): dissipation (both `spreading` and
 // `exponents`) and the maximal Lyapunov exponent by the tangent map (`spreading --mle`, `exponents --mle`). Library
 // messages name `damping_time`, `kk_gamma`, `deviation_samples`; tool::run tells them as these flags.
 #include <string>

@@ -1,5 +1,5 @@
 #pragma once
-// The options `exponents` has beyond the paper's study (issues 13, 14): which chains (--chains,
+// The options `exponents` has beyond the paper's study: which chains (--chains,
 // and a chain of the user's own from --types / --type-masses / --polydisperse, named by
 // --chain-name), which kicks (--ic, and the mode of --ic mode: --mode / --mode-khz / --energy),
 // and the maximal Lyapunov exponent (--mle). The same option words as `spreading`.
