@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Runs `spreading` on the paper's set-ups (one realization each) and draws the issue-4 figures.
+# Runs `spreading` on the paper's set-ups (one realization each) and draws the spreading figures.
 # Usage: tools/plot/make_spreading_figures.sh BUILD_DIR OUTPUT_DIR   (about 15 s on 2 cores)
 set -euo pipefail
 build=$(realpath "${1:-build}")
