@@ -16,10 +16,10 @@ if(BUILD_TESTING)
            COMMAND bash -c "bash \"$0\" \"$1\" && /usr/bin/python3 \"$2\" \"$1/docs-site/html\" \"$1/docs-site/screenshots\""
                    ${CMAKE_SOURCE_DIR}/tools/build-docs.sh ${CMAKE_BINARY_DIR}
                    ${CMAKE_SOURCE_DIR}/tests/docs/check_site.py)
-  set_tests_properties(docs_site PROPERTIES LABELS docs TIMEOUT 600 DEPENDS python_pip_install_tutorial)
+  set_tests_properties(docs_site PROPERTIES LABELS docs TIMEOUT 600 DEPENDS python_pip_install_tutorial COST 85)
   # Every shell and Python block of the README and the docs pages, run as a reader would.
   add_test(NAME docs_examples
            COMMAND /usr/bin/python3 ${CMAKE_SOURCE_DIR}/tests/docs/run_examples.py ${CMAKE_SOURCE_DIR}
                    ${CMAKE_BINARY_DIR} ${CMAKE_BINARY_DIR}/tests/docs-examples)
-  set_tests_properties(docs_examples PROPERTIES LABELS docs TIMEOUT 1200)
+  set_tests_properties(docs_examples PROPERTIES LABELS docs TIMEOUT 1200 COST 90)
 endif()

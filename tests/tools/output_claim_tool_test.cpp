@@ -17,10 +17,10 @@
 namespace granular::testing {
 namespace {
 
-const std::string exponents_job =
+const std::string claimed_exponents_args =
     "--N 201 --T 1e-3 --fit 4e-4:1e-3 --samples 30 --F0 10,0.1 --chains h,A,RDM2 --bootstrap 200 --realizations 40 "
     "--threads 2 --quiet";
-const std::string spreading_job =
+const std::string claimed_spreading_args =
     "--disorder A --N 201 --T 1e-3 --fit 4e-4:1e-3 --samples 30 --F0 0.1 --realizations 60 --bootstrap 100 "
     "--threads 2";
 
@@ -34,16 +34,16 @@ std::string spreading_outputs(const std::string& prefix) {
 
 TEST(OutputClaim, ASecondWriterIsRefusedNamingTheFirst) {
   const std::string dir = scratch_folder("claim-two");
-  ASSERT_EQ(run_tool("exponents", exponents_job + " --output " + dir + "/whole").exit_code, 0);
+  ASSERT_EQ(run_tool("exponents", claimed_exponents_args + " --output " + dir + "/whole").exit_code, 0);
   const std::string prefix = dir + "/p";
-  const pid_t first =
-      spawn("exec '" + tool_path("exponents") + "' " + exponents_job + " --output " + prefix + " >/dev/null 2>&1");
+  const pid_t first = spawn("exec '" + tool_path("exponents") + "' " + claimed_exponents_args + " --output " + prefix +
+                            " >/dev/null 2>&1");
   const std::string holder = "process " + std::to_string(first);
   ASSERT_TRUE(eventually([&] { return read_file(prefix + ".lock").find(holder) != std::string::npos; }))
       << "the first run never took " << prefix << ".lock";
   for (const std::string tool : {"exponents", "spreading"}) {  // any tool writing that prefix
     const ToolResult second =
-        run_tool(tool, (tool == "exponents" ? exponents_job : spreading_job) + " --output " + prefix);
+        run_tool(tool, (tool == "exponents" ? claimed_exponents_args : claimed_spreading_args) + " --output " + prefix);
     EXPECT_EQ(second.exit_code, 2) << second.err;
     EXPECT_NE(second.err.find("is being written by " + holder), std::string::npos) << second.err;
     EXPECT_NE(second.err.find("exponents"), std::string::npos) << "the holder's command: " << second.err;
@@ -60,7 +60,7 @@ TEST(OutputClaim, ASecondWriterIsRefusedNamingTheFirst) {
 TEST(OutputClaim, EveryToolLocksItsPrefix) {
   const std::string dir = scratch_folder("claim-all");
   // A holder that would run for long: it is killed once the others have been refused.
-  std::string long_job = exponents_job;
+  std::string long_job = claimed_exponents_args;
   long_job.replace(long_job.find("--realizations 40"), 17, "--realizations 400");
   const pid_t holder =
       spawn("exec '" + tool_path("exponents") + "' " + long_job + " --output " + dir + "/x >/dev/null 2>&1");
@@ -86,10 +86,10 @@ TEST(OutputClaim, EveryToolLocksItsPrefix) {
 
 TEST(Interrupt, CtrlCStopsCleanlyPrintsTheResumeCommandAndKeepsTheCheckpoint) {
   const std::string dir = scratch_folder("ctrl-c");
-  ASSERT_EQ(run_tool("spreading", spreading_job + " --quiet --output " + dir + "/whole").exit_code, 0);
+  ASSERT_EQ(run_tool("spreading", claimed_spreading_args + " --quiet --output " + dir + "/whole").exit_code, 0);
   // A space in the prefix: the command printed must quote it for the shell.
   const std::string prefix = dir + "/cut here", checkpoint = prefix + ".checkpoint", quoted = "'" + prefix + "'";
-  const pid_t run = spawn("exec '" + tool_path("spreading") + "' " + spreading_job + " --output " + quoted +
+  const pid_t run = spawn("exec '" + tool_path("spreading") + "' " + claimed_spreading_args + " --output " + quoted +
                           " >/dev/null 2>" + quoted + ".err");
   ASSERT_TRUE(eventually([&] { return checkpoint_records(checkpoint) >= 5; })) << "no realization was logged";
   kill(run, SIGINT);
@@ -104,12 +104,13 @@ TEST(Interrupt, CtrlCStopsCleanlyPrintsTheResumeCommandAndKeepsTheCheckpoint) {
   while (!err.empty() && err.back() == '\n') err.pop_back();
   const std::string command = err.substr(err.rfind('\n') + 1);
   EXPECT_NE(err.find("To continue"), std::string::npos) << err;
-  const std::string expected = tool_path("spreading") + " " + spreading_job + " --output " + quoted + " --resume";
+  const std::string expected =
+      tool_path("spreading") + " " + claimed_spreading_args + " --output " + quoted + " --resume";
   EXPECT_EQ(command, expected) << "the original command, shell-quoted, with --resume: " << err;
 
   // A rerun without --resume refuses to discard the finished realizations.
   const std::string kept = read_file(checkpoint);
-  const ToolResult again = run_tool("spreading", spreading_job + " --quiet --output " + quoted);
+  const ToolResult again = run_tool("spreading", claimed_spreading_args + " --quiet --output " + quoted);
   EXPECT_EQ(again.exit_code, 2) << again.err;
   EXPECT_NE(again.err.find("--resume"), std::string::npos) << again.err;
   EXPECT_NE(again.err.find("--fresh"), std::string::npos) << again.err;
@@ -124,10 +125,10 @@ TEST(Interrupt, CtrlCStopsCleanlyPrintsTheResumeCommandAndKeepsTheCheckpoint) {
 
   // --fresh discards a checkpoint (here: the interrupted run's, put back) and starts again.
   { std::ofstream(checkpoint) << kept; }
-  const ToolResult fresh = run_tool("spreading", spreading_job + " --quiet --fresh --output " + quoted);
+  const ToolResult fresh = run_tool("spreading", claimed_spreading_args + " --quiet --fresh --output " + quoted);
   EXPECT_EQ(fresh.exit_code, 0) << fresh.err;
   EXPECT_EQ(spreading_outputs(prefix), spreading_outputs(dir + "/whole"));
-  EXPECT_EQ(run_tool("spreading", spreading_job + " --resume --fresh --output " + dir + "/y").exit_code, 2);
+  EXPECT_EQ(run_tool("spreading", claimed_spreading_args + " --resume --fresh --output " + dir + "/y").exit_code, 2);
   std::filesystem::remove_all(dir);
 }
 
@@ -161,10 +162,10 @@ TEST(OutputClaim, ASymlinkAtTheLockIsRefusedAndItsTargetKept) {
 
 TEST(CheckpointVersion, ACheckpointOfAnotherVersionIsRefusedUnlessAccepted) {
   const std::string dir = scratch_folder("other-version");
-  ASSERT_EQ(run_tool("spreading", spreading_job + " --quiet --output " + dir + "/whole").exit_code, 0);
+  ASSERT_EQ(run_tool("spreading", claimed_spreading_args + " --quiet --output " + dir + "/whole").exit_code, 0);
   const std::string prefix = dir + "/run", checkpoint = prefix + ".checkpoint";
-  const pid_t run = spawn("exec '" + tool_path("spreading") + "' " + spreading_job + " --quiet --output " + prefix +
-                          " >/dev/null 2>&1");
+  const pid_t run = spawn("exec '" + tool_path("spreading") + "' " + claimed_spreading_args + " --quiet --output " +
+                          prefix + " >/dev/null 2>&1");
   ASSERT_TRUE(eventually([&] { return checkpoint_records(checkpoint) >= 3; })) << "no realization was logged";
   kill(run, SIGKILL);
   wait_for(run);
@@ -176,7 +177,7 @@ TEST(CheckpointVersion, ACheckpointOfAnotherVersionIsRefusedUnlessAccepted) {
   text.replace(text.find(ours), ours.size(), "\"granular_version\":\"0.0.9\"");
   { std::ofstream(checkpoint, std::ios::binary) << text; }
 
-  const ToolResult refused = run_tool("spreading", spreading_job + " --quiet --resume --output " + prefix);
+  const ToolResult refused = run_tool("spreading", claimed_spreading_args + " --quiet --resume --output " + prefix);
   EXPECT_EQ(refused.exit_code, 2) << refused.err;
   EXPECT_NE(refused.err.find("granular 0.0.9"), std::string::npos) << refused.err;
   EXPECT_NE(refused.err.find(std::string("this is granular ") + GRANULAR_VERSION), std::string::npos) << refused.err;
@@ -186,7 +187,7 @@ TEST(CheckpointVersion, ACheckpointOfAnotherVersionIsRefusedUnlessAccepted) {
   EXPECT_FALSE(std::filesystem::exists(prefix + ".csv"));
 
   const ToolResult accepted =
-      run_tool("spreading", spreading_job + " --quiet --resume-other-version --output " + prefix);
+      run_tool("spreading", claimed_spreading_args + " --quiet --resume-other-version --output " + prefix);
   ASSERT_EQ(accepted.exit_code, 0) << accepted.err;
   EXPECT_EQ(spreading_outputs(prefix), spreading_outputs(dir + "/whole"));
   const std::string json = read_file(prefix + ".json");
