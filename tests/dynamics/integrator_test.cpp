@@ -78,7 +78,7 @@ INSTANTIATE_TEST_SUITE_P(Schemes, Order,
                          [](const auto& info) { return info.param.scheme.name; });
 
 // Final positions of SABA2C at small τ within 1e-9 of the reference at F0 = 10 N, every disorder, both kicks.
-TEST(Reference, AgreesWithSaba2cAtTenNewtons) {
+TEST(Long_Reference, AgreesWithSaba2cAtTenNewtons) {
   for (Disorder d : {Disorder::homogeneous, Disorder::anderson, Disorder::rdm1, Disorder::rdm2})
     for (bool velocity : {false, true}) {
       const Chain chain = fixtures::disordered(d, 201, 10.0);
@@ -118,7 +118,7 @@ void check_nonsmooth(double f0, bool velocity, std::size_t n, double duration, D
   EXPECT_LE(previous, 1e-7);
 }
 
-TEST(Reference, AgreesAtPointOneNewton) { check_nonsmooth(0.1, false, 101, 0.5e-3); }
+TEST(Long_Reference, AgreesAtPointOneNewton) { check_nonsmooth(0.1, false, 101, 0.5e-3); }
 TEST(Reference, AgreesInSonicVacuum) { check_nonsmooth(0.0, false, 101, 0.5e-3); }
 TEST(Long_Reference, NonSmoothEveryDisorderBothKicksN201) {
   for (Disorder d : {Disorder::homogeneous, Disorder::anderson, Disorder::rdm1, Disorder::rdm2})

@@ -46,7 +46,7 @@ void expect_counts_match_lapack(const BeadSource& source, const Chain& chain, co
   EXPECT_EQ(counts.back(), static_cast<std::int64_t>(chain.size())) << what;
 }
 
-TEST(DensityOfStates, NodeCountsAreTheLapackCountsForEveryDisorder) {
+TEST(Long_DensityOfStates, NodeCountsAreTheLapackCountsForEveryDisorder) {
   const std::size_t n = 2000;
   for (Disorder kind : {Disorder::homogeneous, Disorder::anderson, Disorder::rdm1, Disorder::rdm2})
     for (double xi : {0.5, 0.2}) {

@@ -67,7 +67,7 @@ TEST(LyapunovPhysics, Rdm1LambdaVanishesAtTheDimerResonance) {
   EXPECT_GT(anderson.lyapunov[0], 0.05);
 }
 
-TEST(LyapunovPhysics, EigenvectorsOfFiniteChainsDecayAtLambda) {
+TEST(Long_LyapunovPhysics, EigenvectorsOfFiniteChainsDecayAtLambda) {
   // Modes of an Anderson chain (ξ = q = 0.5, N = 4000, seed 7, realization 0) from LAPACK, with
   // frequencies 6–14 kHz: ℓ ≈ 8–15 beads there, well localized (a tail of 18ℓ ≈ 200 beads fits
   // in the chain many times over) yet many beads per e-fold, so a slope is well defined. The

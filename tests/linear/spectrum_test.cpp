@@ -108,7 +108,7 @@ TEST(Spectrum, LongHomogeneousType2ChainTopsOutAtF2) {
 //    after scaling: the solver must notice and fall back (stevr has its own dstebz+dstein fallback);
 //  - MRRR (stevr, stemr) loses orthogonality to ~1e-11 on RDM2 at ξ = 0.1, where light beads make
 //    eigenvalue clusters; divide and conquer (stevd, our default) and QR stay below 1e-12.
-TEST(Spectrum, LapackAgreesWithDenseEigenOnRandomChains) {
+TEST(Long_Spectrum, LapackAgreesWithDenseEigenOnRandomChains) {
   int chains = 0, stemr_fallbacks = 0;
   double worst_mrrr_orthogonality = 0;
   for (Disorder kind : {Disorder::anderson, Disorder::rdm1, Disorder::rdm2})
