@@ -10,6 +10,9 @@
 #      ThreadSanitizer, OpenMP through LLVM's libomp with its archer tool (any report fails);
 #   4. each libFuzzer target for FUZZ_SECONDS (default 60) from its seed corpus.
 # Set GRANULAR_QUICK=1 to run pass 1 only. Ends with one line "summary: N passed, 0 failed".
+# Each pass's build starts, at a lower priority, while the previous pass's tests run: the tests
+# leave part of the two cores idle (processes that wait on each other, serial steps), and the
+# build takes what they leave. Its output goes to a log, printed if it fails.
 set -euo pipefail
 top=$(cd "$(dirname "$0")/.." && pwd)
 cd "$top"
@@ -25,23 +28,59 @@ count() {  # adds the passed tests of a ctest log to $passed
   passed=$((passed + total - failed))
 }
 
+stamp() { echo "== $* ($(date +%T))"; }
+
+background=()
+trap 'for pid in "${background[@]}"; do kill -- "-$pid" 2>/dev/null || true; done' EXIT
+start_build() {  # start_build NAME COMMAND...: runs a build in the background, niced, logged
+  local name=$1
+  shift
+  set -m
+  (renice -n 10 "$BASHPID" >/dev/null && "$@" >"$logs/$name.log" 2>&1) &
+  set +m
+  background+=($!)
+  eval "pid_$name=$!"
+}
+finish_build() {  # finish_build NAME: waits for a background build; prints its log if it failed
+  local name=$1 pid
+  pid=$(eval echo "\$pid_$name")
+  if ! wait "$pid"; then
+    cat "$logs/$name.log"
+    echo "run-all: the $name build failed" >&2
+    exit 1
+  fi
+  stamp "$name build done"
+}
+
 if [ "${GRANULAR_SKIP_FORMAT:-0}" != 1 ]; then
   echo "== format check"
   bash tests/format-check.sh
   passed=$((passed + 1))
 fi
 
-echo "== pass 1: Release build, all tests"
+build_sanitize() {
+  cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=RelWithDebInfo -DGRANULAR_SANITIZE=ON -DGRANULAR_BENCHMARKS=OFF \
+    -DGRANULAR_NATIVE=OFF && cmake --build build-sanitize -j"$jobs"
+}
+build_tsan() {
+  CC=clang CXX=clang++ cmake -S . -B build-tsan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DGRANULAR_TSAN=ON \
+    -DGRANULAR_BENCHMARKS=OFF -DGRANULAR_PYTHON=OFF -DGRANULAR_NATIVE=OFF &&
+    cmake --build build-tsan -j"$jobs" --target test_threaded
+}
+quick() { [ "${GRANULAR_QUICK:-0}" = 1 ]; }
+
+stamp "pass 1: Release build, all tests"
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DGRANULAR_WERROR=ON >/dev/null
 cmake --build build -j"$jobs"
+stamp "pass 1 build done"
+quick || start_build sanitize build_sanitize
 ctest --test-dir build -j"$jobs" --output-on-failure -LE manual | tee "$logs/pass1"
 count "$logs/pass1"
 
-if [ "${GRANULAR_QUICK:-0}" != 1 ]; then
-  echo "== pass 2: AddressSanitizer + UndefinedBehaviorSanitizer"
-  cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=RelWithDebInfo -DGRANULAR_SANITIZE=ON -DGRANULAR_BENCHMARKS=OFF \
-    -DGRANULAR_NATIVE=OFF >/dev/null
-  cmake --build build-sanitize -j"$jobs"
+if ! quick; then
+  stamp "pass 2: AddressSanitizer + UndefinedBehaviorSanitizer"
+  finish_build sanitize
+  start_build tsan build_tsan
   export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:suppressions="$top/tests/sanitizer-suppressions.txt"
   export LSAN_OPTIONS=suppressions="$top/tests/lsan-suppressions.txt"
   export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
@@ -57,10 +96,9 @@ if [ "${GRANULAR_QUICK:-0}" != 1 ]; then
     ctest --test-dir build-sanitize -j"$jobs" --output-on-failure -R "$mpi_tests" | tee "$logs/pass2-mpi"
   count "$logs/pass2-mpi"
 
-  echo "== pass 3: ThreadSanitizer (threaded suites)"
-  CC=clang CXX=clang++ cmake -S . -B build-tsan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DGRANULAR_TSAN=ON \
-    -DGRANULAR_BENCHMARKS=OFF -DGRANULAR_PYTHON=OFF -DGRANULAR_NATIVE=OFF >/dev/null
-  cmake --build build-tsan -j"$jobs" --target test_threaded
+  stamp "pass 3: ThreadSanitizer (threaded suites)"
+  finish_build tsan
+  start_build fuzz bash tests/fuzz/run-fuzzers.sh --build-only
   # archer tells TSan about libomp's barriers and tasks; libomp itself is not instrumented, so its
   # internals are ignored (archer's own advice). Checked to fail on an unreduced `sum +=` in a loop.
   OMP_TOOL_LIBRARIES=/usr/lib/llvm-14/lib/libarcher.so \
@@ -68,9 +106,11 @@ if [ "${GRANULAR_QUICK:-0}" != 1 ]; then
     ctest --test-dir build-tsan -j"$jobs" --output-on-failure | tee "$logs/pass3"
   count "$logs/pass3"
 
-  echo "== pass 4: fuzzers"
+  stamp "pass 4: fuzzers"
+  finish_build fuzz
   bash tests/fuzz/run-fuzzers.sh "${FUZZ_SECONDS:-60}" | tee "$logs/pass4"
   passed=$((passed + $(grep -c 'no findings' "$logs/pass4")))
 fi
+stamp "all passes done"
 rm -rf "$logs"
 echo "summary: $passed passed, 0 failed"

@@ -4,6 +4,7 @@
 # on one core. Fails if any target finds a crash, leak or sanitizer report; the reproducer is
 # left in build-fuzz/fuzz/crash-* — turn it into a regression test (and a corpus file) before
 # fixing.
+# `--build-only` builds the targets and stops (tests/run-all.sh builds them while other tests run).
 set -euo pipefail
 seconds=${1:-60}
 jobs=${JOBS:-2}
@@ -12,6 +13,7 @@ build="$top/build-fuzz"
 CC=clang CXX=clang++ cmake -S "$top" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DGRANULAR_FUZZ=ON \
   -DGRANULAR_NATIVE=OFF >/dev/null
 cmake --build "$build" -j"$jobs" --target fuzzers >/dev/null
+[[ $seconds == --build-only ]] && exit 0
 targets="range_syntax configuration_file checkpoint_log"
 # The Python module's argument conversion, when the embedded-interpreter target could be built.
 [[ -x $build/fuzz/fuzz_python_arguments ]] && targets="$targets python_arguments"
