@@ -2,7 +2,7 @@
 // the paper's problem (N = 2501, τ = 1 µs, T = 10 ms, F0 = 10 N, displacement kick, one Anderson
 // chain ξ = q = 0.5, seed 1 realization 0) with and without the active window against Boost.Odeint's
 // symplectic_rkn_sb3a_mclachlan at the same τ, and the cost–accuracy of every scheme.
-// Results and commands: docs/dynamics-performance.md.
+// Results and commands: docs/performance.md, "Dynamics: speed and accuracy".
 #include <algorithm>
 #include <cmath>
 #include <ctime>

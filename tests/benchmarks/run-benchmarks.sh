@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Regenerates every performance figure the README quotes, each beside its peer in the same run
 # (interleaved, so that load from other users hits both alike), repeated, medians reported, with
-# the machine's name, cores and `uptime` before and after, into docs/performance.md:
+# the machine's name, cores and `uptime` before and after, into docs/benchmark-report.md:
 #   1. IPR map, per solve: every LAPACK driver vs the fast solver (Google Benchmark, CPU medians);
 #   2. IPR map, the default job (27,300 solves): ipr-map --solver fast vs --solver lapack-stevd vs
 #      the NumPy/SciPy script (wall, CPU, peak memory);
@@ -41,7 +41,7 @@ build=$(cd "$build" && pwd)
 ((quick)) && repeats=1
 study_repeats=$repeats
 ((quick)) || study_repeats=${STUDY_REPEATS:-1}  # the full study takes minutes: once unless asked
-[[ -n $output ]] || output=$( ((quick)) && echo "$build/performance-quick.md" || echo "$root/docs/performance.md")
+[[ -n $output ]] || output=$( ((quick)) && echo "$build/performance-quick.md" || echo "$root/docs/benchmark-report.md")
 py=/usr/bin/python3
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 work=$(mktemp -d /tmp/run-benchmarks.XXXXXX)

@@ -47,7 +47,7 @@ nlohmann::json to_json(const SchemeChoice& choice) {
            "cheapest of SRKN14a at 5e-6 s (or 5e-6/k s, keeping omega_max*tau <= 1.47 as in "
            "the benchmark) and SABA2C at its default step (else SABA2C), costing an SRKN14a step as 4.0 SABA2C steps; "
            "both keep the energy error at or below "
-           "SABA2C's at 1e-6 s (docs/dynamics-performance.md, cost-accuracy)"},
+           "SABA2C's at 1e-6 s (docs/performance.md, cost-accuracy)"},
           {"integrator", choice.integrator},
           {"time_step_s", choice.time_step},
           {"relative_cost", choice.relative_cost},

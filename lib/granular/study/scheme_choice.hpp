@@ -1,6 +1,6 @@
 #pragma once
 // The integrator "auto": the cheapest scheme and step that keep the energy error at the level of
-// SABA2C at τ = 1 µs, from the cost–accuracy table of docs/dynamics-performance.md (Hertz, F0 =
+// SABA2C at τ = 1 µs, from the cost–accuracy table of docs/performance.md, "Dynamics" (Hertz, F0 =
 // 10 N, window off). There SRKN14a costs 4.0× a SABA2C step; at τ = 4 µs it matches SABA2C at
 // 1 µs in cost with a 600× smaller energy error, at 8 µs it costs half with 1.3× SABA2C's error.
 // 8 µs does not divide the 10 µs grid of the fit window, so the choice is SRKN14a at 5 µs
@@ -38,7 +38,7 @@ struct SchemeChoice {
 /// energy to H0, no φ_k can reach it. `chain`: as time_step_limit.
 bool bonds_stay_closed(const TransportCase& c, const Chain* chain = nullptr);
 
-/// SRKN14a's step cost in SABA2C steps (docs/dynamics-performance.md: 72.2 ms at 4 µs vs 72.0 ms at 1 µs).
+/// SRKN14a's step cost in SABA2C steps (docs/performance.md, "Dynamics": 72.2 ms at 4 µs vs 72.0 ms at 1 µs).
 inline constexpr double srkn14a_step_cost = 4.0;
 /// SRKN14a's preferred step: the largest divisor of the 10 µs fit grid within the measured 8 µs.
 inline constexpr double srkn14a_preferred_step = 5e-6;
