@@ -68,13 +68,20 @@ Reference make_reference(const Chain& chain) {
   return r;
 }
 
-Solution dense_eigen(const Reference& r) {
+/// Eigen's dense solver on the reference's tridiagonal matrix scaled by its largest entry `scale`
+/// (eigenvalues are then those of the matrix / scale).
+Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> scaled_dense_solver(const Reference& r, double scale) {
   const Eigen::Index n = static_cast<Eigen::Index>(r.d.size());
-  const double scale = r.d.max_abs();
   Eigen::MatrixXd a = Eigen::MatrixXd::Zero(n, n);
   for (Eigen::Index i = 0; i < n; ++i) a(i, i) = r.d.diagonal[i] / scale;
   for (Eigen::Index i = 0; i + 1 < n; ++i) a(i, i + 1) = a(i + 1, i) = r.d.off_diagonal[i] / scale;
-  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(a);
+  return Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(a);
+}
+
+Solution dense_eigen(const Reference& r) {
+  const Eigen::Index n = static_cast<Eigen::Index>(r.d.size());
+  const double scale = r.d.max_abs();
+  const auto es = scaled_dense_solver(r, scale);
   Solution out;
   for (Eigen::Index k = 0; k < n; ++k) {
     out.omega2.push_back(es.eigenvalues()[k] * scale);
@@ -98,10 +105,7 @@ struct PairIpr {
 std::vector<PairIpr> localized_pairs(const Reference& r) {
   const Eigen::Index n = static_cast<Eigen::Index>(r.d.size());
   const double scale = r.d.max_abs();
-  Eigen::MatrixXd a = Eigen::MatrixXd::Zero(n, n);
-  for (Eigen::Index i = 0; i < n; ++i) a(i, i) = r.d.diagonal[i] / scale;
-  for (Eigen::Index i = 0; i + 1 < n; ++i) a(i, i + 1) = a(i + 1, i) = r.d.off_diagonal[i] / scale;
-  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(a);
+  const auto es = scaled_dense_solver(r, scale);
   const Eigen::VectorXd& w = es.eigenvalues();
   const double norm = std::max(std::fabs(w[0]), std::fabs(w[n - 1]));
   std::vector<PairIpr> out;

@@ -233,6 +233,23 @@ double spreading_energy_error(const Run& r) {
                               : meta["ensemble"]["max_energy_error"].get<double>();
 }
 
+// Frequencies scale as F0^(1/6) at fixed geometry (Hertz: K ∝ F0^(1/3)) and the modes do not change:
+// the run at F0 = 1e-9 N and 1e3 N against a second run at 10 N.
+void add_f0_scaling_cells(std::vector<Cell>& v, const std::string& tool, const std::string& name,
+                          const std::string& suffix, const std::string& args) {
+  for (double f0 : {1e-9, 1e3})
+    v.push_back({name + (f0 < 1 ? "1em9" : "1e3") + suffix,
+                 tool,
+                 args + " --F0 " + (f0 < 1 ? "1e-9" : "1e3"),
+                 {ok},
+                 [f0, tool, args](const Run& r) {
+                   const Table ref = second_run(r, tool, args + " --F0 10");
+                   const Table t = read_csv(r.dir / "out.csv");
+                   expect_near_rel(t.at("freq_khz"), scaled(ref.at("freq_khz"), std::pow(f0 / 10, 1.0 / 6)), 1e-12, "f");
+                   expect_near_rel(t.at("ipr"), ref.at("ipr"), 1e-8, "IPR");
+                 }});
+}
+
 std::vector<Cell> cells() {
   std::vector<Cell> v;
   // spectrum ----------------------------------------------------------------------------------
@@ -256,17 +273,7 @@ std::vector<Cell> cells() {
          expect_near_rel(t.at("freq_khz"), scaled(h.at("freq_khz"), std::pow(0.01, -4.0 / 3)), 1e-12, "f");
          expect_near_rel(t.at("ipr"), h.at("ipr"), 1e-9, "IPR");
        }});
-  for (double f0 : {1e-9, 1e3})
-    v.push_back({std::string("spectrum_F0_") + (f0 < 1 ? "1em9" : "1e3") + "_scales_as_F0_pow_1_6",
-                 "spectrum",
-                 spectrum_base + " --q 0.5 --xi 0.5 --F0 " + (f0 < 1 ? "1e-9" : "1e3"),
-                 {ok},
-                 [f0](const Run& r) {
-                   const Table ref = second_run(r, "spectrum", spectrum_base + " --q 0.5 --xi 0.5 --F0 10");
-                   const Table t = read_csv(r.dir / "out.csv");
-                   expect_near_rel(t.at("freq_khz"), scaled(ref.at("freq_khz"), std::pow(f0 / 10, 1.0 / 6)), 1e-12, "f");
-                   expect_near_rel(t.at("ipr"), ref.at("ipr"), 1e-8, "IPR");
-                 }});
+  add_f0_scaling_cells(v, "spectrum", "spectrum_F0_", "_scales_as_F0_pow_1_6", spectrum_base + " --q 0.5 --xi 0.5");
   for (std::size_t n : {2u, 3u})
     v.push_back({std::string("spectrum_N") + std::to_string(n) + "_analytic",
                  "spectrum",
@@ -293,17 +300,7 @@ std::vector<Cell> cells() {
                                  "q = 0: f ∝ xi^-4/3");
                  expect_near_rel(cell("ipr", 0), cell("ipr", 1), 1e-9, "q = 0: same modes");
                }});
-  for (double f0 : {1e-9, 1e3})
-    v.push_back({std::string("ipr_map_F0_") + (f0 < 1 ? "1em9" : "1e3"),
-                 "ipr-map",
-                 map_base + " --xi 0.3 --q 0.5 --F0 " + (f0 < 1 ? "1e-9" : "1e3"),
-                 {ok},
-                 [f0](const Run& r) {
-                   const Table ref = second_run(r, "ipr-map", map_base + " --xi 0.3 --q 0.5 --F0 10");
-                   const Table t = read_csv(r.dir / "out.csv");
-                   expect_near_rel(t.at("freq_khz"), scaled(ref.at("freq_khz"), std::pow(f0 / 10, 1.0 / 6)), 1e-12, "f");
-                   expect_near_rel(t.at("ipr"), ref.at("ipr"), 1e-8, "IPR");
-                 }});
+  add_f0_scaling_cells(v, "ipr-map", "ipr_map_F0_", "", map_base + " --xi 0.3 --q 0.5");
   for (std::size_t n : {2u, 3u})
     v.push_back({std::string("ipr_map_N") + std::to_string(n) + "_analytic",
                  "ipr-map",

@@ -262,16 +262,19 @@ void lane_group(const SymTridiagonal& t, std::vector<double>& values, const std:
   // vector to unit length on the fly); backward solve + ‖y‖² + yᵀTy (T y lags one row behind).
   // Converged by the free residual estimate ‖x_old‖/‖y‖ of the solve (T − μ) y = x_old, then
   // confirmed by one pass computing ‖T x − ρ x‖ exactly.
-  std::vector<double> sc(m, 1.0);  // the vector of lane j is sc[j] · x[· L + j]
+  std::vector<double> sc(m, 1.0);                                       // the vector of lane j is sc[j] · x[· L + j]
+  auto t_times = [&](std::size_t i, const double* xi, std::size_t j) {  // (T x)_i of lane j; xi = &x[i L]
+    double tx = a[i] * xi[j];
+    if (i > 0) tx += e[i - 1] * xi[j - L];
+    if (i + 1 < n) tx += e[i] * xi[j + L];
+    return tx;
+  };
   auto true_residuals = [&] {
     std::fill(res.begin(), res.end(), 0.0);
     for (std::size_t i = 0; i < n; ++i) {
       const double* xi = &x[i * L];
       for (std::size_t j = 0; j < L; ++j) {
-        double tx = a[i] * xi[j];
-        if (i > 0) tx += e[i - 1] * xi[j - L];
-        if (i + 1 < n) tx += e[i] * xi[j + L];
-        const double r = sc[j] * (tx - rho[j] * xi[j]);
+        const double r = sc[j] * (t_times(i, xi, j) - rho[j] * xi[j]);
         res[j] += r * r;
       }
     }
@@ -288,11 +291,8 @@ void lane_group(const SymTridiagonal& t, std::vector<double>& values, const std:
     for (std::size_t i = 0; i < n; ++i) {
       const double* xi = &x[i * L];
       for (std::size_t j = 0; j < L; ++j) {
-        double tx = a[i] * xi[j];
-        if (i > 0) tx += e[i - 1] * xi[j - L];
-        if (i + 1 < n) tx += e[i] * xi[j + L];
         s2[j] += xi[j] * xi[j];
-        xtx[j] += xi[j] * tx;
+        xtx[j] += xi[j] * t_times(i, xi, j);
       }
     }
   };
