@@ -4,6 +4,7 @@
 // SpreadingConfig, ExponentTableConfig) bound with their C++ defaults, and one call per job that
 // takes them, turns them into a TransportCase by the tools' rule (study/transport_choices.hpp),
 // runs it and returns its results as NumPy arrays with the library's own JSON and CSV writers.
+#include <algorithm>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
@@ -177,6 +178,8 @@ py::dict transport(const ChainRecipe& recipe, const std::string& ic, long long r
 
   // Read before the run, which rewrites the checkpoint under this code's name.
   const std::string made_by = options.resume_other_version ? CheckpointLog::code_of(log) : std::string();
+  std::vector<std::string> versions =
+      options.resume_other_version ? CheckpointLog::codes_of(log) : std::vector<std::string>{};
   TransportSummary s;
   run_long("transport", c.realizations, options.progress, [&](const LongRun& control) {
     RunOptions run;
@@ -193,7 +196,13 @@ py::dict transport(const ChainRecipe& recipe, const std::string& ic, long long r
   nlohmann::json meta = metadata_head("transport");
   meta["parameters"] = describe_parameters(c, describe(c.chain, 0), first, true);
   meta["seed"] = c.chain.seed;
-  if (!made_by.empty()) meta["resumed_checkpoint"] = {{"made_by", made_by}, {"resumed_by", CheckpointLog::this_code()}};
+  if (!made_by.empty()) {  // every version whose realizations the result holds, oldest first
+    if (std::find(versions.begin(), versions.end(), CheckpointLog::this_code()) == versions.end())
+      versions.push_back(CheckpointLog::this_code());
+    meta["resumed_checkpoint"] = {{"made_by", made_by},
+                                  {"resumed_by", CheckpointLog::this_code()},
+                                  {"versions", versions}};
+  }
   const nlohmann::json fitted = describe_exponents(s.exponents, c.centre);
   meta.update(fitted);
   meta["ensemble"] = {{"realizations", s.realizations},
