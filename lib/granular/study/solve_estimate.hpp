@@ -29,8 +29,9 @@ inline constexpr double announced_solve_seconds = 5;
 
 /// The estimate for every mode of `d` by `config` (method lapack or fast, `selection` all modes),
 /// from timed solves of its leading `sample` and 2·`sample` beads; nothing (seconds = 0) for
-/// selected modes, another method, or N < 8·sample. From 8·sample on, the timing costs about
-/// (1/8)^p·1.1 (≤ 2 %) of the solve it announces; below, the solve is short (4,000 beads: ~1 s).
+/// selected modes, another method, or N < 8·sample. The timing (each block twice) costs
+/// 2(1 + 2^-p)(2·sample/N)^p of the solve it announces: at most 16 % at N = 8·sample with p = 2,
+/// 4 % at 16·sample; below 8·sample the solve is short (4,000 beads: about a second).
 SolveEstimate estimate_every_mode_solve(const DynamicalMatrix& d, const SpectrumConfig& config,
                                         const ModeSelection& selection, std::size_t sample = 500);
 
