@@ -80,8 +80,7 @@ int main(int argc, char** argv) {
     config.automatic_length = auto_n;
     std::vector<TransportCase> cases = exponent_cases(config);
     const nlohmann::json length_rules = tool::length_rules(cases, auto_n, dynamics.choices.site);
-    for (const auto& c : cases) validate(c);
-    const nlohmann::json step_rule = tool::settle_time_step(cases, dynamics, app.count("--dt") > 0);
+    const nlohmann::json step_rule = tool::validate_and_settle(cases, dynamics, app.count("--dt") > 0);
     base.dynamics = cases.front().dynamics;  // τ and scheme as settled
     const auto paper = compare ? read_paper_table(paper_table) : std::vector<PaperCell>{};
     const ExponentPaths paths = exponent_paths(output, compare);

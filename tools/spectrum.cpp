@@ -2,6 +2,8 @@
 // frequency: all of them, or the K nearest a frequency (--near/--count) or those in a band
 // (--window), by any solver of granular::spectrum. Under `mpirun -np P ... --method slepc` the
 // matrix rows are spread over the ranks; rank 0 writes.
+#include <chrono>
+#include <cstdio>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -13,6 +15,7 @@
 #include "common/tool_main.hpp"
 #include "granular/io/atomic_file.hpp"
 #include "granular/parallel/mpi_context.hpp"
+#include "granular/study/solve_estimate.hpp"
 #include "granular/study/spectrum_file.hpp"
 
 int main(int argc, char** argv) {
@@ -83,7 +86,16 @@ int main(int argc, char** argv) {
       if (!vectors_file.empty()) check_writable(vectors_file);
     }
     if (writer && !dump_matrix.empty()) write_matrix_dump(dump_matrix, d);
+    // A solve of every mode is one silent call: say how long it will be when that is more than a few seconds.
+    const SolveEstimate estimate =
+        quiet || !writer ? SolveEstimate{} : estimate_every_mode_solve(d, request.config, selection);
+    const bool announced = estimate.seconds > announced_solve_seconds;
+    if (announced) std::fprintf(stderr, "spectrum: %s\n", describe(estimate).c_str());
+    const auto start = std::chrono::steady_clock::now();
     const Spectrum result = spectrum(d, selection, request.config);
+    if (announced)
+      std::fprintf(stderr, "spectrum: the solve took %.0f s\n",
+                   std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
     if (!writer) return;
 
     if (!quiet && result.size() == 0) std::fprintf(stderr, "spectrum: note: no modes in the window\n");

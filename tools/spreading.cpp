@@ -75,7 +75,7 @@ int main(int argc, char** argv) {
                      const TransportSummary* means = summary ? &*summary : nullptr;
                      for (const auto& note : run.quiet ? std::vector<std::string>{} : spreading_notes(c, r, means))
                        std::fprintf(stderr, "spreading: %s\n", note.c_str());
-                     const auto files = write_spreading_files(paths, r, means, d);
+                     auto files = write_spreading_files(paths, r, means, d);
                      if (!more.spectrum.empty())
                        meta["spectrum"] = {{"file", more.spectrum},
                                            {"of", to_string(d.spectrum_source)},
@@ -95,8 +95,8 @@ int main(int argc, char** argv) {
                                            {"reached_walls", summary->reached_walls}};
                      if (!summary || single) meta["run"] = describe_run(r, options.chain.realization);
                      meta["output"] = paths.csv;
-                     meta.write(paths.json);  // the JSON first, then the CSVs: never a CSV without its metadata
-                     for (auto& f : files) f->commit();
+                     meta.write(paths.json);  // the JSON first, then the rest: never an output without its metadata
+                     files.commit();
                      if (ensemble) CheckpointLog::remove_all(paths.checkpoint);
                    },
                    {{"spectrum_source", "--spectrum-of"},

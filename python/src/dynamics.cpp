@@ -4,6 +4,7 @@
 // SpreadingConfig, ExponentTableConfig) bound with their C++ defaults, and one call per job that
 // takes them, turns them into a TransportCase by the tools' rule (study/transport_choices.hpp),
 // runs it and returns its results as NumPy arrays with the library's own JSON and CSV writers.
+#include <algorithm>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
@@ -12,11 +13,10 @@
 #include "granular/ensemble/checkpoint_log.hpp"
 #include "granular/error.hpp"
 #include "granular/parallel/mpi_context.hpp"
-#include "granular/study/chain_length_rule.hpp"
+#include "granular/study/case_settling.hpp"
 #include "granular/study/exponent_files.hpp"
 #include "granular/study/exponent_table.hpp"
 #include "granular/study/paper_comparison.hpp"
-#include "granular/study/scheme_choice.hpp"
 #include "granular/study/spreading_files.hpp"
 #include "granular/study/transport_choices.hpp"
 
@@ -81,11 +81,12 @@ py::dict spreading(const PyChain& chain, const std::string& ic, const TransportC
   if ((mode.mode != 0 || mode.near_khz >= 0 || mode.energy != 0) && c.kick != Kick::mode)
     bad_value("mode", ": mode, mode_khz and energy only with ic='mode'");
   c.mode = {.mode = mode.mode, .near_khz = mode.near_khz, .energy = mode.energy, .amplitude = 0};
-  validate(c);
   // τ by the stability rule on the chain's recipe: every realization of a random chain (as the
-  // tool's --disorder), this very chain for a given one (as the tool's --config/--radii).
-  const nlohmann::json step_rule = settle_scheme_and_step(c, automatic, dt_given);
-  if (const std::string w = duration_warning(c, "T"); !w.empty()) warn({w});  // after the errors
+  // tool's --disorder), this very chain for a given one (as the tool's --config/--radii); a dt past
+  // it named before anything judged on its grid.
+  std::string t_warning;
+  const nlohmann::json step_rule = validate_and_settle(c, automatic, dt_given, "T", t_warning);
+  if (!t_warning.empty()) warn({t_warning});  // after the errors
   const KickedChain kicked = kick(c, chain.chain);
 
   SpreadingResult r;
@@ -165,9 +166,9 @@ py::dict transport(const ChainRecipe& recipe, const std::string& ic, long long r
   c.profile_realizations = profile ? c.realizations : 0;
   const bool automatic = apply_choices(choices, beyond, c);
   c.fit = c.fit_end <= c.dynamics.duration * (1 + 1e-12);
-  validate(c);
-  const nlohmann::json step_rule = settle_scheme_and_step(c, automatic, dt_given);
-  if (const std::string w = duration_warning(c, "T"); !w.empty()) warn({w});  // after the errors
+  std::string t_warning;
+  const nlohmann::json step_rule = validate_and_settle(c, automatic, dt_given, "T", t_warning);
+  if (!t_warning.empty()) warn({t_warning});  // after the errors
   const int thread_request = options.thread_request();
   const std::string& log = options.checkpoint;
   const bool resume = options.resume || options.resume_other_version;
@@ -177,6 +178,8 @@ py::dict transport(const ChainRecipe& recipe, const std::string& ic, long long r
 
   // Read before the run, which rewrites the checkpoint under this code's name.
   const std::string made_by = options.resume_other_version ? CheckpointLog::code_of(log) : std::string();
+  std::vector<std::string> versions =
+      options.resume_other_version ? CheckpointLog::codes_of(log) : std::vector<std::string>{};
   TransportSummary s;
   run_long("transport", c.realizations, options.progress, [&](const LongRun& control) {
     RunOptions run;
@@ -193,7 +196,13 @@ py::dict transport(const ChainRecipe& recipe, const std::string& ic, long long r
   nlohmann::json meta = metadata_head("transport");
   meta["parameters"] = describe_parameters(c, describe(c.chain, 0), first, true);
   meta["seed"] = c.chain.seed;
-  if (!made_by.empty()) meta["resumed_checkpoint"] = {{"made_by", made_by}, {"resumed_by", CheckpointLog::this_code()}};
+  if (!made_by.empty()) {  // every version whose realizations the result holds, oldest first
+    if (std::find(versions.begin(), versions.end(), CheckpointLog::this_code()) == versions.end())
+      versions.push_back(CheckpointLog::this_code());
+    meta["resumed_checkpoint"] = {{"made_by", made_by},
+                                  {"resumed_by", CheckpointLog::this_code()},
+                                  {"versions", versions}};
+  }
   const nlohmann::json fitted = describe_exponents(s.exponents, c.centre);
   meta.update(fitted);
   meta["ensemble"] = {{"realizations", s.realizations},
@@ -249,14 +258,10 @@ py::dict exponent_table(const std::vector<std::string>& chains, const std::vecto
   TransportCase& base = config.base;
   const bool automatic = apply_choices(choices, beyond, base);
   auto cases = exponent_cases(config);
-  for (const auto& c : cases) validate(c);
-  const nlohmann::json step_rule = settle_scheme_and_step(cases, automatic, dt_given);
-  for (const auto& c : cases)  // after the errors; one warning is enough: the cases share T
-    if (const std::string w = duration_warning(c, "T"); !w.empty()) {
-      warn({w});
-      break;
-    }
-  base.dynamics = cases.front().dynamics;  // τ and scheme as settled
+  std::string t_warning;  // one is enough: the cases share T
+  const nlohmann::json step_rule = validate_and_settle(cases, automatic, dt_given, "T", t_warning);
+  if (!t_warning.empty()) warn({t_warning});  // after the errors
+  base.dynamics = cases.front().dynamics;     // τ and scheme as settled
   std::size_t total = 0;
   for (const auto& c : cases) total += c.realizations;
   const int thread_request = options.thread_request();

@@ -215,3 +215,6 @@ def test_numerical_failures_raise_granular_numerical_error():
     # dt past the stability limit is refused before the run, naming the largest stable step
     with pytest.raises(ValueError, match=r"dt 1e-04 s: past the stability limit.*largest stable time step"):
         gr.spreading(gr.anderson(N=21), alpha=5e-6, dt=1e-4, T=1e-2, fit=(4e-3, 1e-2), fit_step=1e-4)
+    # also with the default fit_step (1e-5 s, no whole number of 1e-4 s steps): dt is what to mend first
+    with pytest.raises(ValueError, match=r"^dt 1e-04 s: past the stability limit"):
+        gr.spreading(gr.anderson(N=21), alpha=5e-6, dt=1e-4, T=1e-2)

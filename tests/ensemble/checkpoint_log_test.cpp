@@ -97,6 +97,66 @@ TEST(CheckpointLog, ThisCodeIsNamedAsTheMakerOfItsLogs) {
   CheckpointLog::remove_all(path);
 }
 
+// The log at `path` as if `version` had written it: this code's version replaced in its header,
+// also where a list of contributors names this code (the records kept).
+void checkpoint_log_rewritten_by(const std::string& path, const std::string& version) {
+  std::ifstream in(path, std::ios::binary);
+  std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  const std::string ours = std::string("\"granular_version\":\"") + code_version() + "\"";
+  const std::size_t at = text.find(ours);
+  ASSERT_NE(at, std::string::npos) << text;
+  text.replace(at, ours.size(), "\"granular_version\":\"" + version + "\"");
+  const std::string listed = std::string("\"") + code_version() + " (commit ";
+  if (const std::size_t in_list = text.find(listed); in_list != std::string::npos && in_list < text.find('\n'))
+    text.replace(in_list, listed.size(), "\"" + version + " (commit ");
+  std::ofstream(path, std::ios::binary) << text;
+}
+
+// Two resumes accepted across versions: 0.0.8 made the log, 0.0.9 resumed it, this code resumes it
+// again. Every one of them made records, and the log names all three, oldest first.
+TEST(CheckpointLog, EveryVersionThatContributedIsListedAfterTwoAcceptedResumes) {
+  const std::string path = temp_path("contributors"), parameters = R"({"N":10,"seed":1})";
+  const std::string commit = std::string(" (commit ") + code_commit() + ")";
+  {
+    CheckpointLog log(path, parameters);
+    log.append(0, {1.0});
+  }
+  checkpoint_log_rewritten_by(path, "0.0.8");
+  EXPECT_EQ(CheckpointLog::codes_of(path), (std::vector<std::string>{"0.0.8" + commit}));
+  {  // resumed by "0.0.9" (this code, renamed below)
+    CheckpointLog log(path, parameters, CheckpointLog::load(path, parameters, true));
+    log.append(1, {2.0});
+  }
+  checkpoint_log_rewritten_by(path, "0.0.9");
+  EXPECT_EQ(CheckpointLog::codes_of(path), (std::vector<std::string>{"0.0.8" + commit, "0.0.9" + commit}));
+  EXPECT_THROW(CheckpointLog::load(path, parameters), InvalidInput);  // not accepted: refused
+  {
+    CheckpointLog log(path, parameters, CheckpointLog::load(path, parameters, true));
+    log.append(2, {3.0});
+  }
+  EXPECT_EQ(CheckpointLog::code_of(path), CheckpointLog::this_code());
+  EXPECT_EQ(CheckpointLog::codes_of(path),
+            (std::vector<std::string>{"0.0.8" + commit, "0.0.9" + commit, CheckpointLog::this_code()}));
+  const CheckpointRecords all = CheckpointLog::load(path, parameters);  // this code's own: no acceptance needed
+  EXPECT_EQ(all.size(), 3u);
+  CheckpointLog::remove_all(path);
+}
+
+// A resume by the same code keeps the header as it was: no list of one.
+TEST(CheckpointLog, ASameVersionResumeListsNoContributors) {
+  const std::string path = temp_path("same-code"), parameters = R"({"N":10,"seed":1})";
+  {
+    CheckpointLog log(path, parameters);
+    log.append(0, {1.0});
+  }
+  { CheckpointLog log(path, parameters, CheckpointLog::load(path, parameters)); }
+  std::ifstream in(path, std::ios::binary);
+  const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  EXPECT_EQ(text.find("granular_contributors"), std::string::npos) << text;
+  EXPECT_EQ(CheckpointLog::codes_of(path), (std::vector<std::string>{CheckpointLog::this_code()}));
+  CheckpointLog::remove_all(path);
+}
+
 TEST(CheckpointLog, FilesNameExactlyTheMembersAskedFor) {
   const std::string base = temp_path("members");
   const std::vector<std::string> logs = {base, base + ".rank1", base + ".rank12"};

@@ -1,5 +1,5 @@
 // The files of the spreading and exponent studies: one writer each, every path named before the
-// run, the CSVs left uncommitted until the JSON is written.
+// run, the CSVs and the HDF5 energy map left uncommitted until the JSON is written.
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -33,16 +33,21 @@ TEST(SpreadingFiles, WritesTheRunsFilesUncommittedUntilTold) {
   c.dynamics.samples = 5;
   c.fit = false;
   c.dynamics.force_sites = {3};
+  c.dynamics.map_samples = 5;
   const Chain chain = c.chain.chain(0);
   const SpreadingResult run = run_spreading(chain, kick(c, chain).initial, spreading_config(c));
   SpreadingPaths paths = spreading_paths(scratch("one"), false, true, true);
   paths.final_state = scratch("one-final.csv");
+  paths.energy_map = scratch("one-map.h5");
   for (const auto& p : paths.all())
     if (!p.empty()) std::filesystem::remove(p);
-  const auto files = write_spreading_files(paths, run, nullptr, c.dynamics);
-  ASSERT_EQ(files.size(), 4u);  // curves, profile, forces, final state
+  auto files = write_spreading_files(paths, run, nullptr, c.dynamics);
+  ASSERT_EQ(files.text.size(), 4u);  // curves, profile, forces, final state
+  ASSERT_TRUE(files.energy_map);
   EXPECT_FALSE(std::filesystem::exists(paths.csv));
-  for (const auto& f : files) f->commit();
+  EXPECT_FALSE(std::filesystem::exists(paths.energy_map));  // the map too waits for the JSON
+  files.commit();
+  EXPECT_TRUE(std::filesystem::exists(paths.energy_map));
   std::ostringstream expected;
   write_spreading_csv(expected, run);
   std::ifstream in(paths.csv);

@@ -66,6 +66,10 @@ const BadInput cases[] = {
     {"localization", "--walls sphere --N 1e9", "--N"},
     {"spreading", "--walls none", "--walls"},
     {"exponents", "--walls none", "--walls"},
+    // A --dt past the stability limit is named as such, not as the --fit-step (1e-5 s) judged on it.
+    {"spreading", "--dt 1e-4", "--dt 1e-04 s: past the stability limit"},
+    {"exponents", "--dt 1e-4", "--dt 1e-04 s: past the stability limit"},
+    {"spreading", "--dt 2e-6 --fit-step 5e-6", "--fit-step"},  // stable: the grid is still checked
     {"spectrum", "--disorder RDM3", "--disorder"},
     {"spectrum", "--quasi s3", "--quasi"},
     {"spectrum", "--quasi s2 --modulation 1", "--modulation"},

@@ -10,6 +10,7 @@
 #include <string>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include "process_control.hpp"
 #include "tool_runner.hpp"
@@ -194,6 +195,10 @@ TEST(CheckpointVersion, ACheckpointOfAnotherVersionIsRefusedUnlessAccepted) {
   EXPECT_NE(json.find("\"resumed_checkpoint\""), std::string::npos) << json;
   EXPECT_NE(json.find("\"made_by\": \"0.0.9 (commit "), std::string::npos) << json;
   EXPECT_NE(json.find(std::string("\"resumed_by\": \"") + GRANULAR_VERSION + " (commit "), std::string::npos) << json;
+  const nlohmann::json versions = nlohmann::json::parse(json)["resumed_checkpoint"]["versions"];  // both, oldest first
+  ASSERT_EQ(versions.size(), 2u) << json;
+  EXPECT_EQ(versions[0].get<std::string>().rfind("0.0.9 (commit ", 0), 0u) << json;
+  EXPECT_EQ(versions[1].get<std::string>().rfind(std::string(GRANULAR_VERSION) + " (commit ", 0), 0u) << json;
   std::filesystem::remove_all(dir);
 }
 

@@ -15,8 +15,7 @@
 #include "granular/error.hpp"
 #include "granular/io/range_syntax.hpp"
 #include "granular/number_format.hpp"
-#include "granular/study/chain_length_rule.hpp"
-#include "granular/study/scheme_choice.hpp"
+#include "granular/study/case_settling.hpp"
 #include "granular/study/time_step_rule.hpp"
 #include "granular/study/transport_choices.hpp"
 #include "granular/study/transport_study.hpp"
@@ -83,19 +82,22 @@ inline void apply(const DynamicsOptions& o, TransportCase& c) {
   apply(o.beyond, c.dynamics);
 }
 
-/// granular::settle_scheme_and_step (scheme_choice.hpp): the time step, and with `--integrator auto`
-/// the scheme first (SRKN14a at 5 µs where no contact can open and it is cheaper, else SABA2C).
-inline nlohmann::json settle_time_step(std::vector<TransportCase>& cases, const DynamicsOptions& o, bool dt_given) {
-  nlohmann::json rule = settle_scheme_and_step(cases, o.choices.integrator == "auto", dt_given);
-  for (const auto& c : cases)  // after the errors (a user acts on those first); the cases share T
-    if (warn({duration_warning(c, "--T")})) break;
+/// granular::validate_and_settle (case_settling.hpp): the cases validated with the errors in the
+/// order a user can act on them (a --dt past the stability limit before a --fit-step judged on
+/// it), the time step, and with `--integrator auto` the scheme first (SRKN14a at 5 µs where no
+/// contact can open and it is cheaper, else SABA2C); then the --T warning, after the errors.
+inline nlohmann::json validate_and_settle(std::vector<TransportCase>& cases, const DynamicsOptions& o, bool dt_given) {
+  std::string warning;
+  nlohmann::json rule = granular::validate_and_settle(cases, o.choices.integrator == "auto", dt_given, "--T", warning);
+  warn({warning});
   return rule;
 }
 
 /// The same for one case.
-inline nlohmann::json settle_time_step(TransportCase& c, const DynamicsOptions& o, bool dt_given) {
-  nlohmann::json rule = settle_scheme_and_step(c, o.choices.integrator == "auto", dt_given);
-  warn({duration_warning(c, "--T")});
+inline nlohmann::json validate_and_settle(TransportCase& c, const DynamicsOptions& o, bool dt_given) {
+  std::string warning;
+  nlohmann::json rule = granular::validate_and_settle(c, o.choices.integrator == "auto", dt_given, "--T", warning);
+  warn({warning});
   return rule;
 }
 

@@ -60,11 +60,11 @@ inline KickedCase kicked_case(KickedCaseOptions& o, bool ensemble) {
   return k;
 }
 
-/// Validates the case, then settles its time step (and scheme, with --integrator auto) by the
-/// rules on its very chain or chains. Returns the rule for the JSON.
+/// Validates the case and settles its time step (and scheme, with --integrator auto) by the rules
+/// on its very chain or chains, a --dt past the stability limit named before anything judged on
+/// its grid (validate_and_settle). Returns the rule for the JSON.
 inline nlohmann::json settle(TransportCase& c, const KickedCaseOptions& o, bool dt_given) {
-  validate(c);
-  return settle_time_step(c, o.dynamics, dt_given);
+  return validate_and_settle(c, o.dynamics, dt_given);
 }
 
 }  // namespace granular::tool

@@ -3,6 +3,7 @@
 // threads, checkpoint and resume (--resume continues, --fresh discards), what a failing
 // realization does (stop with the command that replays it alone, or --skip-failed: leave it out,
 // say so everywhere), and Ctrl-C as a clean stop that prints the command resuming the run.
+#include <algorithm>
 #include <cstdint>
 #include <cstdio>
 #include <string>
@@ -73,7 +74,8 @@ inline ExponentRunOptions exponent_run_options(const LongRunOptions& o, const st
 }
 
 /// With --resume-other-version: which code made the checkpoint (`checkpoints`, the first that
-/// exists) and which resumes it, for the JSON; null otherwise.
+/// exists), which resumes it, and every version whose realizations the result holds ("versions",
+/// oldest first: all those of earlier accepted resumes too), for the JSON; null otherwise.
 /// A plain --resume of a checkpoint another version made is refused here, in this tool's words.
 inline nlohmann::json resumed_code(const LongRunOptions& o, const std::vector<std::string>& checkpoints) {
   if (o.resume && !o.other_version)
@@ -83,8 +85,15 @@ inline nlohmann::json resumed_code(const LongRunOptions& o, const std::vector<st
                                          "--resume-other-version");
   if (!o.other_version) return nullptr;
   for (const std::string& c : checkpoints)
-    if (const std::string made_by = CheckpointLog::code_of(c); !made_by.empty())
-      return {{"made_by", made_by}, {"resumed_by", CheckpointLog::this_code()}};
+    if (const std::string made_by = CheckpointLog::code_of(c); !made_by.empty()) {
+      std::vector<std::string> versions;
+      for (const std::string& each : checkpoints)  // a study's cases: the union, in order
+        for (const std::string& code : CheckpointLog::codes_of(each))
+          if (std::find(versions.begin(), versions.end(), code) == versions.end()) versions.push_back(code);
+      if (std::find(versions.begin(), versions.end(), CheckpointLog::this_code()) == versions.end())
+        versions.push_back(CheckpointLog::this_code());
+      return {{"made_by", made_by}, {"resumed_by", CheckpointLog::this_code()}, {"versions", versions}};
+    }
   return nullptr;
 }
 

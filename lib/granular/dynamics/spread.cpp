@@ -14,11 +14,15 @@
 
 namespace granular {
 
-void validate(const IntegrationConfig& c) {
+void validate_step_and_duration(const IntegrationConfig& c) {
   if (!std::isfinite(c.time_step) || !(c.time_step > 0))
     throw InvalidInput("time_step", " " + format_number(c.time_step) + ": the time step must be finite and > 0");
   if (!std::isfinite(c.duration) || !(c.duration > 0))
     throw InvalidInput("duration", " " + format_number(c.duration) + ": the duration must be finite and > 0");
+}
+
+void validate(const IntegrationConfig& c) {
+  validate_step_and_duration(c);
   const double ratio = c.duration / c.time_step;
   if (ratio > 1e12)
     throw InvalidInput("duration", " " + format_number(c.duration) + " s / time_step " + format_number(c.time_step) +

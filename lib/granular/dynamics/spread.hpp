@@ -40,6 +40,9 @@ struct IntegrationConfig {
 /// Throws InvalidInput naming the field (time_step, duration, window_threshold, damping_time,
 /// kk_gamma, integrator, lyapunov) on a bad config.
 void validate(const IntegrationConfig& config);
+/// The first of those checks: τ and T each finite and > 0 (naming time_step or duration), without
+/// the checks of T on τ's grid — what a stability limit on τ needs before it can be judged.
+void validate_step_and_duration(const IntegrationConfig& config);
 
 /// How to step: the propagator `config` asks for on `law` from `initial` — the tangent map (a
 /// TangentPropagator) when config.lyapunov is on, the damped splitting when config.damping is,

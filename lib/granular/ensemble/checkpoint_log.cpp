@@ -24,6 +24,9 @@ namespace {
 constexpr const char* magic = "granular-checkpoint 1 ";
 constexpr const char* version_key = "granular_version";
 constexpr const char* commit_key = "granular_commit";
+// Every code whose realizations the log holds, oldest first, when more than one did (a resume
+// accepted across versions); absent when the code of version_key/commit_key made them all.
+constexpr const char* contributors_key = "granular_contributors";
 
 /// FNV-1a over the record's text: catches a torn or edited line.
 std::uint64_t checksum(std::string_view text) {
@@ -73,10 +76,12 @@ std::string first_difference(const std::string& a, const std::string& b) {
 }
 
 /// The header's JSON: the run's parameters with the code that made the records put in front
-/// (the parameters' own text is kept byte for byte after it). Other text stays as it is.
-std::string with_code(const std::string& parameters) {
+/// (the parameters' own text is kept byte for byte after it), and every code whose records it
+/// holds when that is more than this one. Other text stays as it is.
+std::string with_code(const std::string& parameters, const std::vector<std::string>& contributors = {}) {
   if (parameters.empty() || parameters.front() != '{') return parameters;
-  const nlohmann::json code = {{version_key, code_version()}, {commit_key, code_commit()}};
+  nlohmann::json code = {{version_key, code_version()}, {commit_key, code_commit()}};
+  if (contributors.size() > 1) code[contributors_key] = contributors;
   const std::string head = code.dump();  // {"granular_commit":"…","granular_version":"…"}
   const bool empty = parameters.find_first_not_of(" ", 1) == parameters.find('}');
   std::string out(head, 0, head.size() - 1);  // appended piece by piece: GCC 12 warns falsely on a + b + c
@@ -99,10 +104,41 @@ std::string code_named(const nlohmann::json& header) {
   return name;
 }
 
+/// The codes whose records a log with this header holds, oldest first: its list of contributors,
+/// else the one code that wrote it.
+std::vector<std::string> codes_in(const nlohmann::json& header) {
+  if (header.contains(contributors_key) && header[contributors_key].is_array()) {
+    std::vector<std::string> codes;
+    for (const auto& c : header[contributors_key])
+      if (c.is_string()) codes.push_back(c.get<std::string>());
+    if (!codes.empty()) return codes;
+  }
+  return {code_named(header)};
+}
+
+/// `codes` with `code` appended unless it is there already.
+std::vector<std::string> with_member(std::vector<std::string> codes, const std::string& code) {
+  if (std::find(codes.begin(), codes.end(), code) == codes.end()) codes.push_back(code);
+  return codes;
+}
+
 /// "checkpoint 'run.checkpoint' was made by granular 0.0.9 (commit …), this is granular 0.1.0 (commit …)"
 std::string other_version_text(const std::string& path, const nlohmann::json& header) {
   return "checkpoint '" + path + "' was made by granular " + code_named(header) + ", this is granular " +
          CheckpointLog::this_code();
+}
+
+/// The JSON header of the checkpoint at `path`, or nothing when it is not one (or unreadable).
+std::optional<nlohmann::json> header_of(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::string line;
+  std::getline(in, line);
+  if (line.compare(0, std::strlen(magic), magic) != 0) return std::nullopt;
+  try {
+    return nlohmann::json::parse(line.substr(std::strlen(magic)));
+  } catch (const nlohmann::json::exception&) {
+    return std::nullopt;
+  }
 }
 
 }  // namespace
@@ -171,8 +207,13 @@ CheckpointLog::CheckpointLog(std::string path, std::string parameters, const Che
   // Written whole under a new temporary name (never through a symlink planted there), fsynced and
   // renamed, the folder fsynced: a kill never leaves a half header. The records are then appended
   // through the same descriptor, never by reopening the name.
+  // The records carried over from the log being replaced keep their makers (a resume across
+  // versions, accepted): the new header lists them with this code.
+  std::vector<std::string> contributors;
+  if (const auto old = records.empty() ? std::nullopt : header_of(path_); old && old->is_object())
+    contributors = with_member(codes_in(*old), this_code());
   detail::TemporaryFile temporary(path_, "checkpoint ");
-  std::string text = magic + with_code(parameters) + "\n";
+  std::string text = magic + with_code(parameters, contributors) + "\n";
   for (const auto& [index, values] : records) text += format_record(index, values);
   const char* p = text.data();
   const char* end = text.data() + text.size();
@@ -236,6 +277,7 @@ CheckpointRecords CheckpointLog::load(const std::string& base, const std::string
         if (recorded.is_object()) {
           recorded.erase(version_key);
           recorded.erase(commit_key);
+          recorded.erase(contributors_key);
           theirs = recorded.dump();
         }
       } catch (const nlohmann::json::exception&) {
@@ -250,23 +292,6 @@ CheckpointRecords CheckpointLog::load(const std::string& base, const std::string
   return all;
 }
 
-namespace {
-
-/// The JSON header of the checkpoint at `path`, or nothing when it is not one (or unreadable).
-std::optional<nlohmann::json> header_of(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::string line;
-  std::getline(in, line);
-  if (line.compare(0, std::strlen(magic), magic) != 0) return std::nullopt;
-  try {
-    return nlohmann::json::parse(line.substr(std::strlen(magic)));
-  } catch (const nlohmann::json::exception&) {
-    return std::nullopt;
-  }
-}
-
-}  // namespace
-
 std::string CheckpointLog::other_version(const std::string& base) {
   for (const std::string& path : family(base))
     if (const auto header = header_of(path);
@@ -279,6 +304,14 @@ std::string CheckpointLog::code_of(const std::string& base) {
   for (const std::string& path : family(base))
     if (const auto header = header_of(path)) return code_named(*header);
   return "";
+}
+
+std::vector<std::string> CheckpointLog::codes_of(const std::string& base) {
+  std::vector<std::string> codes;
+  for (const std::string& path : family(base))
+    if (const auto header = header_of(path); header && header->is_object())
+      for (const std::string& code : codes_in(*header)) codes = with_member(std::move(codes), code);
+  return codes;
 }
 
 std::string CheckpointLog::this_code() { return code_named(nlohmann::json::parse(with_code("{}"))); }

@@ -44,6 +44,10 @@ class CheckpointLog {
 
   /// The code that made the log at `base` ("0.1.0 (commit 0123456789ab)"), "" when there is none.
   static std::string code_of(const std::string& base);
+  /// Every code whose realizations the logs of `base` hold, oldest first: after resumes accepted
+  /// across versions, each of them (a log rewritten on resume keeps the list of the one it
+  /// replaces, in its header's "granular_contributors"); empty when there is no log.
+  static std::vector<std::string> codes_of(const std::string& base);
 
   /// Which files belong to the checkpoint `base`: always `base` and every `base.rank<k>` (the logs
   /// of further MPI ranks); with `cases`, also `base.<i>[.rank<k>]` (the logs of a study's cases,

@@ -39,11 +39,11 @@ ChainLength size_for_long_times(TransportCase& c) {
   return length;
 }
 
-std::string duration_warning(const TransportCase& c, const std::string& option) {
+std::string duration_warning(const TransportCase& c, double omega_max, const std::string& option) {
   const std::size_t n = c.chain.size();
   if (c.site >= n) return "";  // validate() names it
   const double wall = static_cast<double>(std::min(c.site + 1, n - c.site));
-  const double speed = time_step_limit(c).omega_max / 2;
+  const double speed = omega_max / 2;
   if (!(speed * c.dynamics.duration > 10 * wall)) return "";
   return option + " " + format_number(c.dynamics.duration) + ": waves from the kick reach a wall after about " +
          format_number(std::round(wall / speed * 1e6) / 1e6) + " s and cross the " + std::to_string(n) +

@@ -38,10 +38,11 @@ ChainLength automatic_chain_length(const TransportCase& c);
 ChainLength size_for_long_times(TransportCase& c);
 
 /// A warning when waves from the kick could travel ten times the distance from the kicked bead
-/// to the nearer wall of the case's chain by T (v T > 10 × that distance, v as above): a duration
-/// typed in milliseconds as seconds, most likely. `option` names T as the user typed it ("--T",
-/// "T"); "" when T is plausible.
-std::string duration_warning(const TransportCase& c, const std::string& option);
+/// to the nearer wall of the case's chain by T (v T > 10 × that distance, v = omega_max/2 as
+/// above, omega_max [rad/s] the time-step rule's TimeStepLimit::omega_max of the case, computed
+/// once when its step is settled): a duration typed in milliseconds as seconds, most likely.
+/// `option` names T as the user typed it ("--T", "T"); "" when T is plausible.
+std::string duration_warning(const TransportCase& c, double omega_max, const std::string& option);
 
 /// The rule and its numbers, for the JSON.
 nlohmann::json to_json(const ChainLength& length);

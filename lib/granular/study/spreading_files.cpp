@@ -77,12 +77,14 @@ void write_spectrum_csv(std::ostream& out, const SpreadingResult& r) {
   for (std::size_t j = 0; j < r.spectrum.size(); ++j) t.row(r.spectrum_khz[j], r.spectrum[j]);
 }
 
-void write_energy_map(const std::string& path, const SpreadingResult& r, std::size_t stride) {
+std::unique_ptr<Hdf5File> write_energy_map(const std::string& path, const SpreadingResult& r, std::size_t stride) {
   std::vector<double> sites;
   for (std::size_t k = 0; k < r.map_columns; ++k) sites.push_back(static_cast<double>(k * stride + 1));
-  write_hdf5_atomically(path, {{"energy", {r.map_t.size(), r.map_columns}, r.map_energy.data()},
-                               {"t", {r.map_t.size()}, r.map_t.data()},
-                               {"site", {sites.size()}, sites.data()}});
+  auto file = std::make_unique<Hdf5File>(path);
+  file->write("energy", r.map_energy.data(), r.map_t.size(), r.map_columns);
+  file->write("t", r.map_t);
+  file->write("site", sites);
+  return file;
 }
 
 nlohmann::json describe_run(const SpreadingResult& r, const nlohmann::json& realization) {
@@ -113,12 +115,16 @@ SpreadingPaths spreading_paths(const std::string& prefix, bool ensemble, bool pr
   return p;
 }
 
-std::vector<std::unique_ptr<AtomicFile>> write_spreading_files(const SpreadingPaths& paths, const SpreadingResult& run,
-                                                               const TransportSummary* ensemble,
-                                                               const SpreadingConfig& config) {
-  std::vector<std::unique_ptr<AtomicFile>> files;
+void SpreadingFiles::commit() {
+  for (auto& f : text) f->commit();
+  if (energy_map) energy_map->commit();
+}
+
+SpreadingFiles write_spreading_files(const SpreadingPaths& paths, const SpreadingResult& run,
+                                     const TransportSummary* ensemble, const SpreadingConfig& config) {
+  SpreadingFiles files;
   const auto open = [&](const std::string& path) -> std::ostream& {
-    return files.emplace_back(std::make_unique<AtomicFile>(path))->stream();
+    return files.text.emplace_back(std::make_unique<AtomicFile>(path))->stream();
   };
   ensemble ? write_spreading_csv(open(paths.csv), *ensemble) : write_spreading_csv(open(paths.csv), run);
   if (ensemble) write_standard_errors_csv(open(paths.sem), *ensemble);
@@ -127,7 +133,7 @@ std::vector<std::unique_ptr<AtomicFile>> write_spreading_files(const SpreadingPa
   if (!paths.forces.empty()) write_forces_csv(open(paths.forces), run, config.force_sites);
   if (!paths.final_state.empty()) write_final_state_csv(open(paths.final_state), run);
   if (!paths.spectrum.empty()) write_spectrum_csv(open(paths.spectrum), run);
-  if (!paths.energy_map.empty()) write_energy_map(paths.energy_map, run, config.map_stride);
+  if (!paths.energy_map.empty()) files.energy_map = write_energy_map(paths.energy_map, run, config.map_stride);
   if (!paths.deviation.empty()) write_deviation_csv(open(paths.deviation), run);
   return files;
 }

@@ -12,6 +12,7 @@
 
 #include "granular/dynamics/spreading.hpp"
 #include "granular/io/atomic_file.hpp"
+#include "granular/io/hdf5_file.hpp"
 #include "granular/study/transport_study.hpp"
 
 namespace granular {
@@ -35,8 +36,9 @@ void write_spectrum_csv(std::ostream& out, const SpreadingResult& run);
 /// t,site,share: the deviation vector's distribution along the chain (spreading --mle).
 void write_deviation_csv(std::ostream& out, const SpreadingResult& run);
 /// The energy map as HDF5, whole or not at all: datasets energy [time][column] [J], t [s] and
-/// site (the first bead of each column, from 1; `stride` beads per column).
-void write_energy_map(const std::string& path, const SpreadingResult& run, std::size_t stride);
+/// site (the first bead of each column, from 1; `stride` beads per column). Written under its
+/// temporary name and returned uncommitted, as AtomicFile is (Hdf5File::commit puts it in place).
+std::unique_ptr<Hdf5File> write_energy_map(const std::string& path, const SpreadingResult& run, std::size_t stride);
 
 /// The "run" entry of a run's JSON: the realization, initial energy, worst energy error, steps,
 /// bond updates, integration time, final active window (beads from 1), wall energy; the energy
@@ -58,12 +60,16 @@ SpreadingPaths spreading_paths(const std::string& prefix, bool ensemble, bool pr
 /// Writes every file of `paths` but the JSON and the checkpoint: the means of `ensemble` where
 /// there is one (the curves, their standard errors, the profile), else those of `run`, and what
 /// only one realization has (forces at config.force_sites, final state, g(ν), energy map with
-/// config.map_stride, deviation vector) from `run`. The CSVs are returned under their temporary
-/// names, to be committed after the JSON (never a CSV without its metadata); the HDF5 map is
-/// written whole at once.
-std::vector<std::unique_ptr<AtomicFile>> write_spreading_files(const SpreadingPaths& paths, const SpreadingResult& run,
-                                                               const TransportSummary* ensemble,
-                                                               const SpreadingConfig& config);
+/// config.map_stride, deviation vector) from `run`. Every file, the HDF5 map included, is returned
+/// under its temporary name, to be committed after the JSON (never an output without its metadata).
+struct SpreadingFiles {
+  std::vector<std::unique_ptr<AtomicFile>> text;  ///< the CSVs
+  std::unique_ptr<Hdf5File> energy_map;           ///< null without a map
+  /// Puts every file in place (after the JSON); throws IoError.
+  void commit();
+};
+SpreadingFiles write_spreading_files(const SpreadingPaths& paths, const SpreadingResult& run,
+                                     const TransportSummary* ensemble, const SpreadingConfig& config);
 
 /// What a user must read after the run: the ensemble's warnings, the run's (none from a run not
 /// made), the notes on the case.

@@ -228,13 +228,13 @@ double kick_energy_bound(const TransportCase& c, const std::vector<Chain>& chain
 
 TimeStepLimit time_step_limit(const TransportCase& c, const Chain* chain) {
   TimeStepLimit limit;
-  if (c.dynamics.integrator.reference) return limit;  // adaptive: no step to bound
-  limit.scheme_limit = stable_step_limit(c.dynamics.integrator.scheme);
   const std::vector<Chain> chains = rule_chains(c, chain);
   const double energy = kick_energy_bound(c, chains, chain || !c.chain.drawn());
   for (const Chain& ch : chains)
     limit.omega_max =
         std::max(limit.omega_max, highest_frequency_bound(make_force_law(c.dynamics.force_law, ch), ch, energy));
+  if (c.dynamics.integrator.reference) return limit;  // adaptive: no step to bound (ω_max still bounds the waves)
+  limit.scheme_limit = stable_step_limit(c.dynamics.integrator.scheme);
   limit.max_time_step = limit.scheme_limit / limit.omega_max;
   return limit;
 }
@@ -261,7 +261,7 @@ nlohmann::json to_json(const TimeStepLimit& limit) {
            "bond at the stiffest strain the kick energy reaches); default tau = 1e-6 s, or 1e-6/k s with the "
            "smallest integer k giving tau <= max_time_step/6"},
           {"scheme_limit", bounded ? nlohmann::json(limit.scheme_limit) : nlohmann::json(nullptr)},
-          {"omega_max_rad_s", bounded ? nlohmann::json(limit.omega_max) : nlohmann::json(nullptr)},
+          {"omega_max_rad_s", limit.omega_max},
           {"max_time_step_s", bounded ? nlohmann::json(limit.max_time_step) : nlohmann::json(nullptr)}};
 }
 
@@ -270,6 +270,7 @@ nlohmann::json settle_time_step(std::vector<TransportCase>& cases, bool dt_given
   for (const TransportCase& c : cases) {
     const TimeStepLimit limit = time_step_limit(c, chain);
     if (limit.max_time_step < tightest.max_time_step) tightest = limit;
+    tightest.omega_max = std::max(tightest.omega_max, limit.omega_max);  // the same scheme: the tightest has it
     if (dt_given) check_time_step(c, limit);
   }
   const double tau = dt_given || cases.empty() ? 0 : default_time_step(tightest, cases.front().dynamics.time_step);

@@ -36,7 +36,7 @@ double stable_step_limit(const SplittingScheme& scheme);
 double highest_frequency_bound(const ForceLaw& law, const Chain& chain, double energy);
 
 struct TimeStepLimit {
-  double omega_max = 0;                                            ///< ω_max [rad/s]
+  double omega_max = 0;                                            ///< ω_max [rad/s] (of any integrator)
   double scheme_limit = 0;                                         ///< h* of the integrator
   double max_time_step = std::numeric_limits<double>::infinity();  ///< τ_max [s]; ∞ for the adaptive reference
 };

@@ -7,6 +7,7 @@
 #include "granular/detail/enum_names.hpp"
 #include "granular/dynamics/force_law.hpp"
 #include "granular/dynamics/initial_conditions.hpp"
+#include "granular/dynamics/spread.hpp"
 #include "granular/ensemble/ensemble_runner.hpp"
 #include "granular/error.hpp"
 #include "granular/model/centred_configuration.hpp"
@@ -33,7 +34,7 @@ ModeKick mode_of(const TransportCase& c) {
 }
 }  // namespace
 
-void validate(const TransportCase& c) {
+void validate_before_time_step(const TransportCase& c) {
   validate(c.chain);
   const std::size_t n = c.chain.size();
   if (c.chain.centred && c.site != (n - 1) / 2)
@@ -43,7 +44,7 @@ void validate(const TransportCase& c) {
     throw InvalidInput("site",
                        " " + std::to_string(c.site + 1) + ": outside the chain of " + std::to_string(n) + " beads");
   if (c.realizations < 1) throw InvalidInput("realizations", ": must be >= 1");
-  validate(c.dynamics, n);  // T and τ first: a fit window is judged against them
+  validate_step_and_duration(integration_config(c.dynamics));  // T and τ first: a fit window is judged against them
   if (c.fit && (!(c.fit_begin > 0) || !(c.fit_end > c.fit_begin) || !std::isfinite(c.fit_end)))
     throw InvalidInput("fit", ": need 0 < start < stop");
   if (c.fit && c.fit_end > c.dynamics.duration * (1 + 1e-12))
@@ -66,6 +67,12 @@ void validate(const TransportCase& c) {
     throw InvalidInput("beta", " " + format_number(c.beta) + ": must be finite and non-zero [m/s], or 'match'");
   if (c.fit && !(std::isfinite(c.fit_step) && c.fit_step > 0))
     throw InvalidInput("fit_step", " " + format_number(c.fit_step) + " s: must be finite and > 0");
+}
+
+void validate(const TransportCase& c) {
+  validate_before_time_step(c);
+  const std::size_t n = c.chain.size();
+  validate(c.dynamics, n);  // on τ's grid: T and every sampling a whole number of steps
   const SpreadingConfig config = spreading_config(c);
   validate(config, n);
   if (c.fit) {  // a fit that cannot work is bad input, found before the run rather than after it
