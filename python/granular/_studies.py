@@ -109,6 +109,8 @@ def ipr_map(*, disorder="A", xi="0.1:1", q="0.2,0.5,0.8", N=100, F0=10.0, R1=_co
     c.realizations = _core._size(realizations, "realizations", 1)
     recipe.seed = _core._size(seed, "seed")
     _set_quasi(recipe, quasi, modulation, ratio, phase, angle, k0)
+    if quasi is not None:  # one cell, as the ipr-map tool: realizations are phases
+        c.q_values = c.xi_values = [math.nan]
     c.chain = recipe
     c.bin_khz = bin_khz
     return IprMap(_core._ipr_map(c, solver, near, count, window, method, _run(threads, progress=progress)))
