@@ -85,6 +85,20 @@ def _beyond(damping_time, kk_gamma, mle, renormalize, deviation_samples=0):
     return b
 
 
+_QUASI_DOC = """\
+    quasi: None, or a quasiperiodic chain instead of a random one (the tools' --quasi): 's1' (on-site springs), \
+'s2' (masses) or 'cylinders' (crossing angles), with modulation, ratio ('golden', 'p/q' or a number), phase [rad] \
+(None: drawn uniformly per seed and realization, the phase ensemble), angle [degrees] and k0 as \
+granular.quasiperiodic's; disorder, q and xi are then not used
+"""
+
+
+def _set_quasi(recipe, quasi, modulation, ratio, phase, angle, k0):
+    """Makes `recipe` (a _core.ChainRecipe, F0 already set) the quasiperiodic chain `quasi`, if not None."""
+    if quasi is not None:
+        recipe._set_quasi(quasi, modulation, ratio if isinstance(ratio, str) else repr(float(ratio)), phase, angle, k0)
+
+
 def _run(threads=0, checkpoint=None, resume=False, resume_other_version=False, progress=False):
     r = _core.RunOptions()
     r.threads = threads
@@ -154,12 +168,14 @@ def transport(*, disorder="A", N=2501, q=0.5, xi=0.5, F0=10.0, R1=_core.paper_r1
               t_star=4e-3, kappa=0.1, bootstrap=1000, active_window=True, window_threshold=1e-30,
               reference_max_step=0.01e-6, max_energy_error=1e-3, energy_guard="stop", profile=False, threads=0,
               checkpoint=None, resume=False, resume_other_version=False, progress=False, damping_time=0.0,
-              kk_gamma=0.0, mle=False, renormalize=10, walls="flat"):
+              kk_gamma=0.0, mle=False, renormalize=10, walls="flat", quasi=None, modulation=0.0, ratio="golden",
+              phase=None, angle=45.0, k0=4.0):
     recipe = _core.ChainRecipe()
     recipe.disorder = disorder
     recipe.q, recipe.xi, recipe.F0, recipe.R1, recipe.walls = q, xi, F0, R1, walls
     recipe.N = _core._size(N, "N", 2, _MAX)
     recipe.seed = _core._size(seed, "seed")
+    _set_quasi(recipe, quasi, modulation, ratio, phase, angle, k0)
     choices = _choices(alpha, beta, site, centre, T, dt, integrator, force_law, samples, sampling, fit, fit_step,
                        t_star, kappa, bootstrap, active_window, window_threshold, reference_max_step,
                        max_energy_error, energy_guard)
@@ -172,7 +188,7 @@ transport.__doc__ = (
     "An ensemble of spreading runs: realizations 0..R-1 of seed `seed` of a disordered chain, each "
     "kicked and integrated to T, averaged and fitted (the spreading tool's --realizations R).\n\n"
     "    disorder, N, q, xi, F0 [N], R1 [m], seed, walls: the chains, as granular.random_chain's\n"
-    "    realizations: R; ic: 'displacement' | 'velocity'\n" + _DYNAMICS_DOC + _BEYOND_DOC +
+    "    realizations: R; ic: 'displacement' | 'velocity'\n" + _QUASI_DOC + _DYNAMICS_DOC + _BEYOND_DOC +
     "    profile: also average the site energies E_n(T)\n"
     "    threads: worker threads (0: every core); results do not depend on it\n"
     "    checkpoint: a file logging each finished realization (removed once the run completes); resume=True "

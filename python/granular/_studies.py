@@ -7,7 +7,7 @@ import math
 import numpy as np
 
 from . import _core
-from ._dynamics import _run
+from ._dynamics import _run, _set_quasi
 
 _MAX = 100000000
 
@@ -78,7 +78,7 @@ class IprMap:
 
 def ipr_map(*, disorder="A", xi="0.1:1", q="0.2,0.5,0.8", N=100, F0=10.0, R1=_core.paper_r1, realizations=100, seed=1,
             solver="fast", near=None, count=None, window=None, method=None, bin_khz=0.0, threads=0, progress=False,
-            walls="flat"):
+            walls="flat", quasi=None, modulation=0.0, ratio="golden", phase=None, angle=45.0, k0=4.0):
     """Mean frequency [kHz] and displacement IPR of every mode of disordered chains over realizations, on a (q, xi)
     grid: the paper's IPR map, as the ipr-map tool computes it (same numbers for the same keywords).
 
@@ -96,6 +96,8 @@ def ipr_map(*, disorder="A", xi="0.1:1", q="0.2,0.5,0.8", N=100, F0=10.0, R1=_co
         IprMap.rows())
     threads: worker threads (0: every core); the result does not depend on it
     progress: draw a progress bar on stderr
+    quasi, modulation, ratio, phase, angle, k0: a quasiperiodic chain instead (the tools' --quasi, as
+        granular.quasiperiodic's keywords): one cell, q = xi = NaN; phase None averages over phases
     Returns a granular.IprMap. Releases the GIL; Ctrl-C stops it (KeyboardInterrupt) after the cell in flight."""
     c = _core.IprMapConfig()
     recipe = _core.ChainRecipe()
@@ -106,6 +108,9 @@ def ipr_map(*, disorder="A", xi="0.1:1", q="0.2,0.5,0.8", N=100, F0=10.0, R1=_co
     recipe.F0, recipe.R1, recipe.walls = F0, R1, walls
     c.realizations = _core._size(realizations, "realizations", 1)
     recipe.seed = _core._size(seed, "seed")
+    _set_quasi(recipe, quasi, modulation, ratio, phase, angle, k0)
+    if quasi is not None:  # one cell, as the ipr-map tool: realizations are phases
+        c.q_values = c.xi_values = [math.nan]
     c.chain = recipe
     c.bin_khz = bin_khz
     return IprMap(_core._ipr_map(c, solver, near, count, window, method, _run(threads, progress=progress)))
@@ -157,7 +162,8 @@ class Localization:
 
 
 def localization(chain=None, *, disorder="A", N=1000000, q=0.5, xi=0.5, seed=1, realization=0, F0=10.0,
-                 R1=_core.paper_r1, f="0:50:0.01", segments=32, threads=0, progress=False, walls="flat"):
+                 R1=_core.paper_r1, f="0:50:0.01", segments=32, threads=0, progress=False, walls="flat", quasi=None,
+                 modulation=0.0, ratio="golden", phase=None, angle=45.0, k0=4.0):
     """Localization length and density of states of one long chain by transfer matrices (docs/physics.md, 'Infinite
     chains'): the localization tool.
 
@@ -167,6 +173,8 @@ def localization(chain=None, *, disorder="A", N=1000000, q=0.5, xi=0.5, seed=1, 
     f: frequencies [kHz], increasing: a sequence or the tools' range string ('0:50:0.01')
     segments: chain pieces whose exponents give lyapunov_err (2 ... 1e6)
     threads: workers over blocks of frequencies (0: every core); results do not depend on it
+    quasi, modulation, ratio, phase, angle, k0: with chain None, a quasiperiodic chain instead of a random one
+        (the tools' --quasi, as granular.quasiperiodic's keywords; stored, so N <= 1e8)
     Returns a granular.Localization (freq_khz, lyapunov [1/bead], lyapunov_err, loc_length [beads], modes_below,
     idos, dos, metadata). Releases the GIL; Ctrl-C stops it."""
     recipe = _core.ChainRecipe()
@@ -178,6 +186,7 @@ def localization(chain=None, *, disorder="A", N=1000000, q=0.5, xi=0.5, seed=1, 
         recipe.disorder = disorder
         recipe.N, recipe.q, recipe.xi, recipe.F0, recipe.R1, recipe.walls = int(n), q, xi, F0, R1, walls
         recipe.seed = _core._size(seed, "seed")
+        _set_quasi(recipe, quasi, modulation, ratio, phase, angle, k0)
         r = _core._size(realization, "realization")
     return Localization(_core._localization(chain, recipe, r, f, segments, _run(threads, progress=progress)))
 

@@ -6,12 +6,14 @@
 // runs it and returns its results as NumPy arrays with the library's own JSON and CSV writers.
 #include <algorithm>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <sstream>
 #include <string>
 
 #include "bindings.hpp"
 #include "granular/ensemble/checkpoint_log.hpp"
 #include "granular/error.hpp"
+#include "granular/model/quasiperiodic.hpp"
 #include "granular/parallel/mpi_context.hpp"
 #include "granular/study/case_settling.hpp"
 #include "granular/study/exponent_files.hpp"
@@ -366,7 +368,18 @@ void bind_dynamics(py::module_& m) {
           [](R& r, const std::string& name) { r.disorder = disorder_of(name); })
       .def_property(
           "walls", [](const R& r) { return r.walls == WallShape::flat ? "flat" : "sphere"; },
-          [](R& r, const std::string& word) { r.walls = parse_wall_shape(word); });
+          [](R& r, const std::string& word) { r.walls = parse_wall_shape(word); })
+      // A quasiperiodic chain instead of a random one (granular.quasiperiodic's keywords; the tools' --quasi).
+      .def("_set_quasi", [](R& r, const std::string& kind, double modulation, const std::string& ratio,
+                            const py::object& phase, double angle, double k0) {
+        r.quasi = Quasiperiodic{.kind = parse_quasi_kind(kind),
+                                .modulation = modulation,
+                                .ratio = parse_ratio(ratio),
+                                .phase = phase.is_none() ? std::nullopt : std::optional<double>(phase.cast<double>()),
+                                .angle = angle,
+                                .k0 = k0};
+        validate(*r.quasi, r.F0);
+      });
   using E = ExponentTableConfig;
   config_class(m, "ExponentTableConfig", {"precompressions", "profile_precompressions", "profile_realizations", "base"},
                &E::precompressions, &E::profile_precompressions, &E::profile_realizations, &E::base);

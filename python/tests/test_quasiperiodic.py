@@ -56,3 +56,32 @@ def test_butterfly_equals_the_tool_and_draws(tools):
     assert len(fig.axes) >= 2
     fig = gp.butterfly(tools.path("b.csv"))
     assert len(fig.axes) >= 2
+
+
+def test_quasi_keywords_run_the_tools_chains(tools):
+    # localization: the transfer matrices with the on-site springs, equal to the tool's numbers
+    csv, _ = tools.run("localization", "--quasi", "s1", "--modulation", "0.7", "--phase", "0.4", "--N", "20000",
+                       "--f", "20:30:5")
+    result = gr.localization(quasi="s1", modulation=0.7, phase=0.4, N=20000, f="20:30:5")
+    assert_identical(result.lyapunov, csv["lyapunov"])
+    # and the same as a granular.Chain of the same recipe
+    chain = gr.quasiperiodic("s1", N=20000, modulation=0.7, phase=0.4)
+    assert_identical(gr.localization(chain, f="20:30:5").lyapunov, result.lyapunov)
+    # ipr-map: one cell over phases, the tool's numbers
+    csv, _ = tools.run("ipr-map", "--quasi", "s2", "--modulation", "0.5", "--N", "40", "--realizations", "3")
+    m = gr.ipr_map(quasi="s2", modulation=0.5, N=40, realizations=3)
+    assert_identical(m.ipr.ravel(), csv["ipr"])
+    # transport over a phase ensemble of S1, the spreading tool's ensemble
+    csv, _ = tools.run("spreading", "--quasi", "s1", "--modulation", "0.7", "--N", "101", "--T", "2e-4",
+                       "--fit", "1e-4:2e-4", "--t-star", "1e-4", "--realizations", "2", "--samples", "10")
+    t = gr.transport(quasi="s1", modulation=0.7, N=101, T=2e-4, fit=(1e-4, 2e-4), t_star=1e-4, realizations=2,
+                     samples=10)
+    assert_identical(t.m2, csv["m2"])
+    assert np.all(t.energy_error < 1e-5)  # SABA2C at 1 us, omega tau <= 0.17 on S1: measured <= 2.5e-6
+
+
+def test_quasi_keyword_errors_name_the_keyword():
+    with pytest.raises(ValueError, match="modulation"):
+        gr.localization(quasi="s1", modulation=1.2, N=100, f="1:2")
+    with pytest.raises(ValueError, match="quasi"):
+        gr.ipr_map(quasi="s4", N=40)

@@ -38,6 +38,33 @@ TEST(ExponentsTool, ByteIdenticalForThreadCounts) {
   std::filesystem::remove_all(dir);
 }
 
+// --quasi: an ensemble over the phase φ (realization r draws φ from (seed, r)), the very ensemble
+// `spreading --quasi --realizations R` runs, and independent of the thread count.
+TEST(ExponentsTool, QuasiperiodicPhaseEnsembleIsSpreadingsAndThreadCountInvariant) {
+  const std::string dir = scratch_folder("exp-quasi");
+  const std::string chain =
+      " --quasi s1 --modulation 0.7 --F0 10 --N 101 --T 2e-4 --fit 1e-4:2e-4 --samples 10 "
+      "--realizations 4 --quiet";
+  const std::string args = "--chains none --ic displacement --profile-F0 none" + chain;
+  ASSERT_EQ(run_tool("exponents", args + " --threads 1 --output " + dir + "/t1").exit_code, 0);
+  ASSERT_EQ(run_tool("exponents", args + " --threads 2 --output " + dir + "/t2").exit_code, 0);
+  EXPECT_EQ(read_file(dir + "/t1.csv") + read_file(dir + "/t1-curves.csv"),
+            read_file(dir + "/t2.csv") + read_file(dir + "/t2-curves.csv"));
+  ASSERT_EQ(run_tool("spreading", chain.substr(1) + " --output " + dir + "/s").exit_code, 0);
+  const auto spreading = nlohmann::json::parse(read_file(dir + "/s.json"));
+  std::istringstream csv(read_file(dir + "/t1.csv"));
+  std::string header, row;
+  std::getline(csv, header);
+  std::getline(csv, row);
+  EXPECT_NE(row.find(",quasi-s1,"), std::string::npos) << row;
+  // gamma is the fifth column (ic, F0, disorder, centre, gamma)
+  std::istringstream cells(row);
+  std::string cell;
+  for (int i = 0; i < 5; ++i) std::getline(cells, cell, ',');
+  EXPECT_EQ(std::stod(cell), spreading["gamma"].get<double>());
+  std::filesystem::remove_all(dir);
+}
+
 #ifdef GRANULAR_MPIEXEC_PATH
 TEST(ExponentsTool, ByteIdenticalForOneAndTwoMpiRanks) {
   const std::string dir = scratch_folder("exp-mpi");

@@ -1,8 +1,8 @@
 #pragma once
 // The options `exponents` has beyond the paper's study: which chains (--chains,
 // and a chain of the user's own from --types / --type-masses / --polydisperse, named by
-// --chain-name), which kicks (--ic, and the mode of --ic mode: --mode / --mode-khz / --energy),
-// and the maximal Lyapunov exponent (--mle). The same option words as `spreading`.
+// --chain-name, or a quasiperiodic chain from --quasi over phases), which kicks (--ic, and the mode of --ic mode:
+// --mode / --mode-khz / --energy), and the maximal Lyapunov exponent (--mle). The same option words as `spreading`.
 #include <string>
 
 #include <CLI/CLI.hpp>
@@ -32,13 +32,15 @@ inline void add_exponent_choices(CLI::App& app, ExponentChoices& o, BeyondOption
   add_option(app, "--chains", o.chains,
              "chain kinds: comma list of h, A, RDM1, RDM2, or 'none' (only the chain of --types/--polydisperse)");
   add_option(app, "--ic", o.kicks, "kicks: comma list of displacement, velocity, mode (--mode or --mode-khz)");
-  add_bead_distribution_options(app, o.beads, "--types-rule");
+  auto* quasi = add_quasiperiodic_options(app, o.beads);
+  for (auto* a : add_bead_distribution_options(app, o.beads, "--types-rule")) a->excludes(quasi), quasi->excludes(a);
   app.add_option("--types-rule", o.beads.disorder,
                  "how --types/--type-masses are drawn: A (each bead, the default), RDM1 (each dimer), RDM2 (two "
                  "types: dimers 12 or 21)");
   app.add_option("--chain-name", o.chain_name,
-                 "the name of the chain of --types/--type-masses/--polydisperse in the outputs (its 'disorder' "
-                 "column; default: types or polydisperse); it runs after the --chains kinds, R realizations");
+                 "the name of the chain of --types/--type-masses/--polydisperse/--quasi in the outputs (its "
+                 "'disorder' column; default: types, polydisperse or quasi-KIND); it runs after the --chains kinds, "
+                 "R realizations (R phases for --quasi without --phase)");
   add_mode_kick_options(app, o.mode);
   add_mle_options(app, beyond,
                   "maximal Lyapunov exponent by the tangent map: X1 at T [1/s], its ensemble mean (columns mle, "
@@ -62,11 +64,14 @@ inline void apply(const ExponentChoices& o, ExponentTableConfig& config) {
   } catch (const InvalidInput&) {  // told here: the tool tells the library's `disorder` as --chains
     throw InvalidInput("--types-rule '" + drawn.disorder + "': expected A, RDM1 or RDM2");
   }
-  if (const auto beads = bead_distribution(drawn)) {
+  if (const auto q = quasiperiodic(drawn)) {
+    config.bead_chains.push_back({o.chain_name.empty() ? "quasi-" + to_string(q->kind) : o.chain_name, {}, *q});
+  } else if (const auto beads = bead_distribution(drawn)) {
     const bool types = beads->kind == BeadDistribution::Kind::types;
     config.bead_chains.push_back({o.chain_name.empty() ? (types ? "types" : "polydisperse") : o.chain_name, *beads});
   } else if (!o.chain_name.empty()) {
-    throw InvalidInput("--chain-name '" + o.chain_name + "': only with --types, --type-masses or --polydisperse");
+    throw InvalidInput("--chain-name '" + o.chain_name +
+                       "': only with --types, --type-masses, --polydisperse or --quasi");
   }
   apply(o.mode, config.kicks, config.base);
   validate(config);

@@ -320,6 +320,8 @@ std::unique_ptr<Propagator> make_damped_propagator(const ForceLaw& law, const Ch
   validate_propagation(chain, time_step, initial);
   validate(damping);
   if (!damping.any()) return make_splitting_propagator(law, chain, scheme, time_step, initial, ActiveWindow{false});
+  if (grounded(law))  // the boundary kernels here carry no on-site term; refuse rather than drop it
+    throw InvalidInput("quasi", " s1: damping is not available on a chain with on-site springs");
   return std::visit(
       [&](const auto& l) -> std::unique_ptr<Propagator> {
         using Law = std::decay_t<decltype(l)>;

@@ -14,7 +14,8 @@ ForceLawKind parse_force_law(std::string_view name) { return force_law_names.par
 std::string to_string(ForceLawKind kind) { return std::string(force_law_names.name_of(kind)); }
 
 HertzLaw::HertzLaw(const Chain& chain)
-    : contact_(chain.contact), overlap_(chain.overlap), rest_(chain.bonds(), 0.0), rest_potential_(chain.bonds()) {
+    : OnsiteSprings(chain), contact_(chain.contact), overlap_(chain.overlap), rest_(chain.bonds(), 0.0),
+      rest_potential_(chain.bonds()) {
   // The rest force through the kernel itself (rest_ = 0 here), so force(k, 0) == 0 exactly.
   for (std::size_t k = 0; k < bonds(); ++k) rest_[k] = view().force(k, 0.0);
   for (std::size_t k = 0; k < bonds(); ++k) {
@@ -29,7 +30,8 @@ double HertzLaw::potential(std::size_t k, double x) const {
   return 0.4 * contact_[k] * d * d * std::sqrt(d) - rest_potential_[k] - rest_[k] * x;
 }
 
-PolynomialLaw::PolynomialLaw(const Chain& chain, int degree) : precompression_(chain.precompression) {
+PolynomialLaw::PolynomialLaw(const Chain& chain, int degree)
+    : OnsiteSprings(chain), precompression_(chain.precompression) {
   if (!(chain.precompression > 0))
     throw InvalidInput("force_law", " " + std::string(degree == 1 ? "linear" : "fpu") +
                                         ": needs F0 > 0 (the sonic vacuum has no expansion about rest)");
@@ -48,8 +50,6 @@ PolynomialLaw::PolynomialLaw(const Chain& chain, int degree) : precompression_(c
 }
 
 ForceLaw make_force_law(ForceLawKind kind, const Chain& chain) {
-  if (!chain.onsite.empty())  // the bond laws have no ground springs; refuse rather than drop them
-    throw InvalidInput("quasi", " s1: on-site springs are not in the dynamics yet (spectrum and ipr-map only)");
   switch (kind) {
     case ForceLawKind::hertz: return HertzLaw(chain);
     case ForceLawKind::fpu: return PolynomialLaw(chain, 3);

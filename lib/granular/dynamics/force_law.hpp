@@ -8,6 +8,7 @@
 //   potential(k, x)    φ_k(x) with φ_k(0) = 0 and φ_k' = force (the static force F0 x term
 //                      cancels between bonds, docs/physics.md, "Nonlinear dynamics")
 //   contact_force(k,x) the full compressive contact force (static + dynamic), ≥ 0 for Hertz
+// and, for the beads, the on-site springs of the chain (OnsiteSprings: none for most chains).
 // The rest force f_k(0) is subtracted per bond with the very expression the kernel uses, so
 // the undisturbed chain is an exact equilibrium in floating point: quiescent particles stay
 // exactly at rest, which the active window relies on.
@@ -35,7 +36,26 @@ enum class ForceLawKind {
 ForceLawKind parse_force_law(std::string_view name);
 std::string to_string(ForceLawKind kind);
 
-class HertzLaw {
+/// The linear springs holding bead n to the ground (Chain::onsite, the quasiperiodic chain S1):
+/// force −k_n u_n [N] on bead n, energy ½ k_n u_n² [J]. Every law carries them, so that each
+/// integrator adds them where it adds the bond forces, once; kernels read them from the view's
+/// `onsite` pointer, null when the chain has none (then they run the bond-only loops unchanged).
+class OnsiteSprings {
+ public:
+  explicit OnsiteSprings(const Chain& chain) : k_(chain.onsite) {}
+  bool grounded() const { return !k_.empty(); }
+  /// k_n [N/m] per bead, or null.
+  const double* onsite_data() const { return k_.empty() ? nullptr : k_.data(); }
+  /// ½ k_n u² [J] of bead n at displacement u [m]; 0 without springs.
+  double onsite_potential(std::size_t n, double u) const { return k_.empty() ? 0.0 : 0.5 * k_[n] * u * u; }
+  /// k_n [N/m]; 0 without springs.
+  double onsite_stiffness(std::size_t n) const { return k_.empty() ? 0.0 : k_[n]; }
+
+ private:
+  std::vector<double> k_;
+};
+
+class HertzLaw : public OnsiteSprings {
  public:
   explicit HertzLaw(const Chain& chain);
 
@@ -43,6 +63,7 @@ class HertzLaw {
     const double* __restrict contact;
     const double* __restrict overlap;
     const double* __restrict rest;
+    const double* onsite;  ///< k_n [N/m] per bead, null when the chain has no on-site springs
     double force(std::size_t k, double x) const {
       const double d = std::max(overlap[k] + x, 0.0);  // [δ]_+ branch-free (maxsd)
       return contact[k] * d * std::sqrt(d) - rest[k];
@@ -54,7 +75,7 @@ class HertzLaw {
       stiff = 1.5 * contact[k] * s;
     }
   };
-  View view() const { return {contact_.data(), overlap_.data(), rest_.data()}; }
+  View view() const { return {contact_.data(), overlap_.data(), rest_.data(), onsite_data()}; }
 
   double force(std::size_t k, double x) const { return view().force(k, x); }
   double stiffness(std::size_t k, double x) const {
@@ -69,7 +90,7 @@ class HertzLaw {
 };
 
 /// Polynomial bond force f(x) = c1 x + c2 x² + c3 x³ (c2 = c3 = 0: linear). Needs F0 > 0.
-class PolynomialLaw {
+class PolynomialLaw : public OnsiteSprings {
  public:
   PolynomialLaw(const Chain& chain, int degree);
 
@@ -77,13 +98,14 @@ class PolynomialLaw {
     const double* __restrict c1;
     const double* __restrict c2;
     const double* __restrict c3;
+    const double* onsite;  ///< k_n [N/m] per bead, null when the chain has no on-site springs
     double force(std::size_t k, double x) const { return x * (c1[k] + x * (c2[k] + x * c3[k])); }
     void force_stiffness(std::size_t k, double x, double& f, double& stiff) const {
       f = force(k, x);
       stiff = c1[k] + x * (2 * c2[k] + x * 3 * c3[k]);
     }
   };
-  View view() const { return {c1_.data(), c2_.data(), c3_.data()}; }
+  View view() const { return {c1_.data(), c2_.data(), c3_.data(), onsite_data()}; }
 
   double force(std::size_t k, double x) const { return view().force(k, x); }
   double stiffness(std::size_t k, double x) const { return c1_[k] + x * (2 * c2_[k] + x * 3 * c3_[k]); }
@@ -104,13 +126,20 @@ concept BondForceLaw = requires(const L& law, std::size_t k, double x, double& o
   { law.potential(k, x) } -> std::same_as<double>;
   { law.contact_force(k, x) } -> std::same_as<double>;
   { law.bonds() } -> std::same_as<std::size_t>;
+  { law.onsite_potential(k, x) } -> std::same_as<double>;
+  { law.view().onsite } -> std::convertible_to<const double*>;
   law.view().force_stiffness(k, x, out, out);
 };
 
 using ForceLaw = std::variant<HertzLaw, PolynomialLaw>;
 
-/// The law of `kind` on this chain's bonds. Throws InvalidInput for fpu/linear at F0 = 0 and for
-/// a chain with on-site springs (Chain::onsite), which no law here integrates yet.
+/// Whether the law's beads have on-site springs.
+inline bool grounded(const ForceLaw& law) {
+  return std::visit([](const auto& l) { return l.grounded(); }, law);
+}
+
+/// The law of `kind` on this chain's bonds, with its on-site springs. Throws InvalidInput for
+/// fpu/linear at F0 = 0.
 ForceLaw make_force_law(ForceLawKind kind, const Chain& chain);
 
 }  // namespace granular

@@ -19,7 +19,7 @@ void site_energies(const ForceLaw& law, const Chain& chain, std::span<const doub
         double left = l.potential(begin, bond_strain(u, begin));
         for (std::size_t i = begin; i < end; ++i) {
           const double right = l.potential(i + 1, bond_strain(u, i + 1));
-          energy[i] = 0.5 * chain.mass[i] * v[i] * v[i] + 0.5 * (left + right);
+          energy[i] = 0.5 * chain.mass[i] * v[i] * v[i] + 0.5 * (left + right) + l.onsite_potential(i, u[i]);
           left = right;
         }
         // Half of an edge bond's energy belongs to the (resting) bead just outside the range.

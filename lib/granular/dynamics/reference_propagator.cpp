@@ -41,6 +41,8 @@ struct ScaledChain {
     f[n] = l.force(n, length * q[n - 1]);
     const double scale = time_unit / length;
     for (std::size_t i = 0; i < n; ++i) dw[i] = scale * im[i] * (f[i] - f[i + 1]);
+    if (l.onsite)  // the on-site springs' −k u
+      for (std::size_t i = 0; i < n; ++i) dw[i] -= scale * im[i] * l.onsite[i] * length * q[i];
     *bond_updates += n + 1;
   }
 };

@@ -28,11 +28,12 @@ inline double curvature(const PolynomialLaw::View& l, std::size_t k, double x, d
 // drifts and correctors merge across steps as there. Padded arrays: u/du[i+1] is bead i, ends 0.
 using detail::block;
 
-// Kick v += h F/m, δv += h δF/m (δF_k = K_k δx_k), then the drift u += d v, δu += d δv.
-template <class View>
-void kick_and_drift(const View law, double* __restrict u, double* __restrict du, double* __restrict f,
-                    double* __restrict kx, double* __restrict v, double* __restrict dv, const double* __restrict im,
-                    std::size_t n, double h, double d) {
+// Kick v += h F/m, δv += h δF/m (δF_k = K_k δx_k), then the drift u += d v, δu += d δv. On-site
+// springs (`grounded`, ks the k_n per bead) add −k u to F and −k δu to δF, as the stepper's kernels.
+template <bool grounded, class View>
+void kick_and_drift(const View law, const double* __restrict ks, double* __restrict u, double* __restrict du,
+                    double* __restrict f, double* __restrict kx, double* __restrict v, double* __restrict dv,
+                    const double* __restrict im, std::size_t n, double h, double d) {
   double stiff = 0;
   law.force_stiffness(0, u[0] - u[1], f[0], stiff);
   kx[0] = stiff * (du[0] - du[1]);
@@ -44,9 +45,14 @@ void kick_and_drift(const View law, double* __restrict u, double* __restrict du,
       kx[k] = s * (du[k] - du[k + 1]);
     }
     for (std::size_t k = b0; k < b1; ++k) {
-      v[k - 1] += h * im[k - 1] * (f[k - 1] - f[k]);
+      double force = f[k - 1] - f[k], dforce = kx[k - 1] - kx[k];
+      if constexpr (grounded) {
+        force -= ks[k - 1] * u[k];
+        dforce -= ks[k - 1] * du[k];
+      }
+      v[k - 1] += h * im[k - 1] * force;
       u[k] += d * v[k - 1];
-      dv[k - 1] += h * im[k - 1] * (kx[k - 1] - kx[k]);
+      dv[k - 1] += h * im[k - 1] * dforce;
       du[k] += d * dv[k - 1];
     }
   }
@@ -62,18 +68,43 @@ inline void corrector_bond(const View law, const double* __restrict u, const dou
   cx[k] = curvature(law, k, x, stiff[k]) * dx;
 }
 
+// Bead i of a corrector, once a and da of beads i − 1 … i + 1 (padded i … i + 2) are known.
+template <bool grounded>
+inline void corrector_bead(const double* __restrict ks, double* __restrict u, double* __restrict du,
+                           const double* __restrict stiff, const double* __restrict cx, const double* __restrict a,
+                           const double* __restrict da, double* __restrict v, double* __restrict dv,
+                           const double* __restrict im, std::size_t i, double c, double d) {
+  double g = stiff[i] * (a[i] - a[i + 1]) - stiff[i + 1] * (a[i + 1] - a[i + 2]);
+  double dg = cx[i] * (a[i] - a[i + 1]) + stiff[i] * (da[i] - da[i + 1]) - cx[i + 1] * (a[i + 1] - a[i + 2]) -
+              stiff[i + 1] * (da[i + 1] - da[i + 2]);
+  if constexpr (grounded) {
+    g -= ks[i] * a[i + 1];
+    dg -= ks[i] * da[i + 1];
+  }
+  v[i] += c * im[i] * g;
+  dv[i] += c * im[i] * dg;
+  u[i + 1] += d * v[i];
+  du[i + 1] += d * dv[i];
+}
+
 // The corrector v_i += c im_i G_i, G_i = K_i (a_{i−1} − a_i) − K_{i+1} (a_i − a_{i+1}), and its
 // derivative δG_i (δa_i = im_i (δF_i − δF_{i+1})), then the drift, blocked as
-// detail::correct_and_drift; a and da are padded like u, 0 at the walls.
-template <class View>
-void correct_and_drift(const View law, double* __restrict u, double* __restrict du, double* __restrict f,
-                       double* __restrict stiff, double* __restrict kx, double* __restrict cx, double* __restrict a,
-                       double* __restrict da, double* __restrict v, double* __restrict dv, const double* __restrict im,
-                       std::size_t n, double c, double d) {
+// detail::correct_and_drift; a and da are padded like u, 0 at the walls. On-site springs add
+// −k_i a_i to G_i and −k_i δa_i to δG_i (k_i is constant: no curvature term).
+template <bool grounded, class View>
+void correct_and_drift(const View law, const double* __restrict ks, double* __restrict u, double* __restrict du,
+                       double* __restrict f, double* __restrict stiff, double* __restrict kx, double* __restrict cx,
+                       double* __restrict a, double* __restrict da, double* __restrict v, double* __restrict dv,
+                       const double* __restrict im, std::size_t n, double c, double d) {
   corrector_bond(law, u, du, f, stiff, kx, cx, 0);
   corrector_bond(law, u, du, f, stiff, kx, cx, 1);
-  a[1] = im[0] * (f[0] - f[1]);
-  da[1] = im[0] * (kx[0] - kx[1]);
+  double first = f[0] - f[1], dfirst = kx[0] - kx[1];
+  if constexpr (grounded) {
+    first -= ks[0] * u[1];
+    dfirst -= ks[0] * du[1];
+  }
+  a[1] = im[0] * first;
+  da[1] = im[0] * dfirst;
   for (std::size_t b0 = 2; b0 <= n; b0 += block) {
     const std::size_t b1 = std::min(n + 1, b0 + block);
     for (std::size_t k = b0; k < b1; ++k) {
@@ -83,26 +114,17 @@ void correct_and_drift(const View law, double* __restrict u, double* __restrict 
       cx[k] = curvature(law, k, x, stiff[k]) * dx;
     }
     for (std::size_t k = b0; k < b1; ++k) {
-      a[k] = im[k - 1] * (f[k - 1] - f[k]);
-      da[k] = im[k - 1] * (kx[k - 1] - kx[k]);
+      double force = f[k - 1] - f[k], dforce = kx[k - 1] - kx[k];
+      if constexpr (grounded) {
+        force -= ks[k - 1] * u[k];
+        dforce -= ks[k - 1] * du[k];
+      }
+      a[k] = im[k - 1] * force;
+      da[k] = im[k - 1] * dforce;
     }
-    for (std::size_t k = b0; k < b1; ++k) {
-      const std::size_t i = k - 2;
-      v[i] += c * im[i] * (stiff[i] * (a[i] - a[i + 1]) - stiff[i + 1] * (a[i + 1] - a[k]));
-      dv[i] += c * im[i] *
-               (cx[i] * (a[i] - a[i + 1]) + stiff[i] * (da[i] - da[i + 1]) - cx[i + 1] * (a[i + 1] - a[k]) -
-                stiff[i + 1] * (da[i + 1] - da[k]));
-      u[i + 1] += d * v[i];
-      du[i + 1] += d * dv[i];
-    }
+    for (std::size_t k = b0; k < b1; ++k) corrector_bead<grounded>(ks, u, du, stiff, cx, a, da, v, dv, im, k - 2, c, d);
   }
-  const std::size_t i = n - 1;  // the last bead: a[n+1] and da[n+1] (the wall) are 0
-  v[i] += c * im[i] * (stiff[i] * (a[i] - a[i + 1]) - stiff[i + 1] * (a[i + 1] - a[i + 2]));
-  dv[i] += c * im[i] *
-           (cx[i] * (a[i] - a[i + 1]) + stiff[i] * (da[i] - da[i + 1]) - cx[i + 1] * (a[i + 1] - a[i + 2]) -
-            stiff[i + 1] * (da[i + 1] - da[i + 2]));
-  u[i + 1] += d * v[i];
-  du[i + 1] += d * dv[i];
+  corrector_bead<grounded>(ks, u, du, stiff, cx, a, da, v, dv, im, n - 1, c, d);  // a, da[n+1] (the wall) are 0
 }
 
 void drift(double* __restrict u, double* __restrict du, const double* __restrict v, const double* __restrict dv,
@@ -136,7 +158,15 @@ class SplittingTangentPropagator final : public TangentPropagator {
 
   void advance(std::size_t steps) override {
     if (steps == 0) return;
+    if (law_.grounded()) run<true>(steps);
+    else run<false>(steps);
+  }
+
+  // advance() with the on-site springs compiled in or out.
+  template <bool grounded>
+  void run(std::size_t steps) {
     const auto view = law_.view();
+    const double* ks = view.onsite;
     const double tau = tau_;
     const double g = scheme_.corrector * tau * tau * tau;
     const auto& a = scheme_.drift;
@@ -147,18 +177,18 @@ class SplittingTangentPropagator final : public TangentPropagator {
     // there is no corrector, and the correctors of two steps merge (2 g τ³). A renormalization
     // inside a merged boundary scales w a fraction of a step early; the map is linear, so the sum
     // of the logarithms telescopes to the same X1.
-    if (g != 0) correct(view, g, a[0] * tau);
+    if (g != 0) correct<grounded>(view, g, a[0] * tau);
     else drift(up_.data(), dup_.data(), v_.data(), dv_.data(), n_, a[0] * tau);
     for (std::size_t step = 0; step < steps; ++step) {
       const bool more = step + 1 < steps;
       for (std::size_t j = 0; j <= last; ++j) {
         double after = a[j + 1] * tau;
         if (j == last && g == 0 && more) after += a[0] * tau;
-        kick_and_drift(view, up_.data(), dup_.data(), f_.data(), kx_.data(), v_.data(), dv_.data(), im_.data(), n_,
-                       b[j] * tau, after);
+        kick_and_drift<grounded>(view, ks, up_.data(), dup_.data(), f_.data(), kx_.data(), v_.data(), dv_.data(),
+                                 im_.data(), n_, b[j] * tau, after);
         bond_updates_ += n_ + 1;
       }
-      if (g != 0) correct(view, more ? 2 * g : g, more ? a[0] * tau : 0.0);
+      if (g != 0) correct<grounded>(view, more ? 2 * g : g, more ? a[0] * tau : 0.0);
       ++steps_;
       if (config_.renormalize_every > 0 && steps_ % config_.renormalize_every == 0) renormalize();
     }
@@ -175,10 +205,10 @@ class SplittingTangentPropagator final : public TangentPropagator {
   double time_unit() const override { return config_.time_unit; }
 
  private:
-  template <class View>
+  template <bool grounded, class View>
   void correct(const View view, double c, double d) {
-    correct_and_drift(view, up_.data(), dup_.data(), f_.data(), stiff_.data(), kx_.data(), cx_.data(), ap_.data(),
-                      dap_.data(), v_.data(), dv_.data(), im_.data(), n_, c, d);
+    correct_and_drift<grounded>(view, view.onsite, up_.data(), dup_.data(), f_.data(), stiff_.data(), kx_.data(),
+                                cx_.data(), ap_.data(), dap_.data(), v_.data(), dv_.data(), im_.data(), n_, c, d);
     bond_updates_ += n_ + 1;
   }
 

@@ -129,14 +129,18 @@ void run_blocks(const BeadSource& chain, const std::vector<double>& omega2, std:
   if (blocks.empty()) return;
   std::vector<double> mass(piece_beads), stiffness(piece_beads + 1), alpha(piece_beads), beta(piece_beads),
       gamma(piece_beads);
+  const bool grounded = chain.grounded();
+  std::vector<double> onsite(grounded ? piece_beads : 0);
   for (std::size_t seg = 0; seg < segments; ++seg) {
     const std::size_t begin = n * seg / segments, end = n * (seg + 1) / segments;
     for (std::size_t p = begin; p < end; p += piece_beads) {
       const std::size_t m = std::min(piece_beads, end - p);
       chain.read(p, m, mass.data(), stiffness.data());
+      if (grounded) chain.read_onsite(p, m, onsite.data());
       for (std::size_t i = 0; i < m; ++i) {
         const double inverse = 1.0 / stiffness[i + 1];
-        alpha[i] = (stiffness[i] + stiffness[i + 1]) * inverse;
+        // An on-site spring adds k_n to the diagonal of K: (B_n + B_{n+1} + k_n − m_n ω²) u_n.
+        alpha[i] = (grounded ? stiffness[i] + stiffness[i + 1] + onsite[i] : stiffness[i] + stiffness[i + 1]) * inverse;
         beta[i] = mass[i] * inverse;
         gamma[i] = stiffness[i] * inverse;
       }

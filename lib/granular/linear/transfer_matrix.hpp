@@ -1,8 +1,9 @@
 #pragma once
 // Transfer matrices of the linearized chain (docs/physics.md, "Infinite chains"). At angular frequency
 // ω the equations of motion give the recursion
-//     u_{n+1} = [(B_n + B_{n+1} − m_n ω²) u_n − B_n u_{n−1}] / B_{n+1},   u_0 = 0, u_1 = 1
-// (beads n = 1 … N, bond n to the left of bead n, u_0 and u_{N+1} at the walls). Two numbers
+//     u_{n+1} = [(B_n + B_{n+1} + k_n − m_n ω²) u_n − B_n u_{n−1}] / B_{n+1},   u_0 = 0, u_1 = 1
+// (beads n = 1 … N, bond n to the left of bead n, u_0 and u_{N+1} at the walls; k_n the on-site
+// spring of bead n, BeadSource::read_onsite, 0 for every chain but S1). Two numbers
 // come out of one walk along the chain:
 //  - the Lyapunov exponent λ = (1/N) ln ‖(u_{N+1}, u_N)‖ [1/bead], the inverse localization
 //    length of the infinite chain as N → ∞ (ℓ = 1/λ beads);

@@ -121,11 +121,8 @@ class TypedBeads final : public BeadSource {
 
 class ChainBeads final : public BeadSource {
  public:
-  explicit ChainBeads(const Chain& chain) : mass_(chain.mass) {
+  explicit ChainBeads(const Chain& chain) : mass_(chain.mass), onsite_(chain.onsite) {
     require_linear_limit(chain.precompression);
-    if (!chain.onsite.empty())  // the transfer matrices read masses and bonds only
-      throw InvalidInput("quasi",
-                         " s1: on-site springs are not in the transfer matrices yet (use spectrum or ipr-map)");
     stiffness_ = linear_stiffness(chain);
   }
   std::size_t size() const override { return mass_.size(); }
@@ -136,9 +133,17 @@ class ChainBeads final : public BeadSource {
     for (std::size_t i = 0; i < count; ++i) mass[i] = mass_[first + i];
     for (std::size_t i = 0; i <= count; ++i) stiffness[i] = stiffness_[first + i];
   }
+  bool grounded() const override { return !onsite_.empty(); }
+  void read_onsite(std::size_t first, std::size_t count, double* onsite) const override {
+    if (onsite_.empty()) return BeadSource::read_onsite(first, count, onsite);
+    if (first > onsite_.size() || count > onsite_.size() - first)
+      throw InvalidInput("first", " " + std::to_string(first) + " + count " + std::to_string(count) +
+                                      ": beyond N = " + std::to_string(onsite_.size()));
+    for (std::size_t i = 0; i < count; ++i) onsite[i] = onsite_[first + i];
+  }
 
  private:
-  std::vector<double> mass_, stiffness_;
+  std::vector<double> mass_, onsite_, stiffness_;
 };
 
 }  // namespace

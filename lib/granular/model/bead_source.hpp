@@ -28,6 +28,14 @@ class BeadSource {
   /// `stiffness` (count+1 values). Requires first + count ≤ N. Const and thread-safe: any thread
   /// may read any piece, in any order.
   virtual void read(std::size_t first, std::size_t count, double* mass, double* stiffness) const = 0;
+  /// Whether beads are held to the ground by linear springs (Chain::onsite, the quasiperiodic
+  /// chain S1); read_onsite then gives them. False for every other chain.
+  virtual bool grounded() const { return false; }
+  /// On-site stiffnesses k_n [N/m] of beads first … first+count-1 into `onsite` (count values),
+  /// zeros when not grounded(). Same contract as read.
+  virtual void read_onsite(std::size_t /*first*/, std::size_t count, double* onsite) const {
+    for (std::size_t i = 0; i < count; ++i) onsite[i] = 0;
+  }
 };
 
 /// Realization p.realization of seed p.seed of a disordered chain of p.N beads — the chain
@@ -42,8 +50,9 @@ std::unique_ptr<BeadSource> random_beads(Disorder disorder, const ChainParameter
 /// from_types(types, p) builds (p.N, p.q, p.seed, p.realization ignored). Memory N bytes.
 std::unique_ptr<BeadSource> typed_beads(Configuration types, const ChainParameters& p = {});
 
-/// Any chain (radii file, several materials, other walls): masses and B_k = linear_stiffness
-/// of its contact coefficients, copied (memory 2N doubles). Throws InvalidInput if F0 = 0.
+/// Any chain (radii file, several materials, other walls, on-site springs): masses, B_k =
+/// linear_stiffness of its contact coefficients and the on-site k_n, copied (memory 2N or 3N
+/// doubles). Throws InvalidInput if F0 = 0.
 std::unique_ptr<BeadSource> chain_beads(const Chain& chain);
 
 }  // namespace granular

@@ -37,7 +37,7 @@ void validate(const ExponentTableConfig& config) {
     if (kind) throw InvalidInput("chain_name", " '" + name + "': the name of a chain kind; choose another");
     for (std::size_t j = 0; j < i; ++j)
       if (config.bead_chains[j].name == name) throw InvalidInput("chain_name", " '" + name + "': given twice");
-    validate(config.bead_chains[i].beads);
+    if (!config.bead_chains[i].quasi) validate(config.bead_chains[i].beads);
   }
 }
 
@@ -63,8 +63,10 @@ std::vector<TransportCase> exponent_cases(const ExponentTableConfig& config) {
       }
       c.realizations = config.base.realizations;
       for (const BeadChain& b : config.bead_chains) {
-        c.chain.distribution = b.beads;
-        c.chain.disorder = b.beads.kind == BeadDistribution::Kind::types ? b.beads.rule : Disorder::anderson;
+        c.chain.quasi = b.quasi;
+        if (b.quasi) c.chain.distribution.reset();
+        else c.chain.distribution = b.beads;
+        c.chain.disorder = b.beads.kind == BeadDistribution::Kind::types && !b.quasi ? b.beads.rule : Disorder::anderson;
         add(c);
       }
     }

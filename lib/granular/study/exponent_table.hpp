@@ -2,21 +2,26 @@
 // The paper's whole protocol (docs/physics.md, "Nonlinear dynamics"): transport exponents γ (m̃2 ∝ t^γ) and η (P⁻¹ ∝ t^−η)
 // for every chain kind × precompression × kick, each an ensemble (transport_study.hpp).
 // Homogeneous chains are deterministic, so they run one realization whatever R is. Chains beyond
-// the paper's kinds (k bead types, polydisperse radii) join the study as named bead distributions.
+// the paper's kinds (k bead types, polydisperse radii, a quasiperiodic chain) join the study by name.
 #include <functional>
+#include <optional>
 #include <ostream>
 #include <string>
 #include <vector>
 
+#include "granular/model/quasiperiodic.hpp"
 #include "granular/study/transport_study.hpp"
 
 namespace granular {
 
-/// A chain of the study drawn from a bead distribution (k types or polydisperse radii), under its
-/// own name: the `disorder` column of the outputs and the column of the tables.
+/// A chain of the study drawn from a bead distribution (k types or polydisperse radii), or a
+/// quasiperiodic chain (realization r takes the phase of (seed, r) unless one is given: an
+/// ensemble over φ), under its own name: the `disorder` column of the outputs and the column of
+/// the tables.
 struct BeadChain {
   std::string name;
   BeadDistribution beads;
+  std::optional<Quasiperiodic> quasi{};  ///< given: this chain instead of `beads`
 };
 
 struct ExponentTableConfig {
