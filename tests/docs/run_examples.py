@@ -32,7 +32,12 @@ SMALLER = [(r"exponents --compare-paper(?!\S)",
            (r"(localization .*)--N 1e7", r"\1--N 1e5"),
            (r"(exponents .*)--realizations (20|50)(?!\d)", r"\1--realizations 4 --bootstrap 50"),
            (r"(spreading .*)--realizations 100(?!\d)", r"\1--realizations 10"),
-           (r"--N 100000(?=.*--method slepc)", "--N 10000")]
+           (r"--N 100000(?=.*--method slepc)", "--N 10000"),
+           # the quasiperiodic chains' scans over kinds and modulations: three modulations, shorter chains
+           (r"for lam in [0-9. ]+; do", "for lam in 0.1 0.5 0.9; do"),
+           (r"for n in 377 1597; do", "for n in 377; do"),
+           (r"(spectrum --quasi .*)--N 1597", r"\1--N 377"),
+           (r"(localization --quasi .*)--N 100000", r"\1--N 10000")]
 
 
 def blocks(page):
