@@ -19,6 +19,7 @@
 #include "granular/model/chain.hpp"
 #include "granular/model/chain_recipe.hpp"
 #include "granular/model/disorder.hpp"
+#include "granular/model/quasiperiodic.hpp"
 
 namespace granular::python {
 
@@ -112,6 +113,9 @@ nlohmann::json metadata_head(const std::string& function);
 
 // --- parsing the tools' words --------------------------------------------------------------------
 Disorder disorder_of(const std::string& name);
+/// A quasiperiodic chain from granular.quasiperiodic's keywords (phase None: drawn per realization).
+Quasiperiodic quasi_of(const std::string& kind, double modulation, const std::string& ratio, const py::object& phase,
+                       double angle, double k0);
 /// A list of numbers: a Python sequence / array, or a string in the tools' range syntax
 /// ("0.1:1", "0.1:1:0.05", "0.2,0.5,0.8"), with the tools' default step.
 std::vector<double> number_list(const py::handle& values, const char* keyword, double default_step);

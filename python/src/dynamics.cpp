@@ -372,12 +372,7 @@ void bind_dynamics(py::module_& m) {
       // A quasiperiodic chain instead of a random one (granular.quasiperiodic's keywords; the tools' --quasi).
       .def("_set_quasi", [](R& r, const std::string& kind, double modulation, const std::string& ratio,
                             const py::object& phase, double angle, double k0) {
-        r.quasi = Quasiperiodic{.kind = parse_quasi_kind(kind),
-                                .modulation = modulation,
-                                .ratio = parse_ratio(ratio),
-                                .phase = phase.is_none() ? std::nullopt : std::optional<double>(phase.cast<double>()),
-                                .angle = angle,
-                                .k0 = k0};
+        r.quasi = quasi_of(kind, modulation, ratio, phase, angle, k0);
         validate(*r.quasi, r.F0);
       });
   using E = ExponentTableConfig;

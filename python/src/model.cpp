@@ -3,6 +3,7 @@
 // the chain makers check their values with the library's rules and build through ChainRecipe.
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <string>
 
 #include "bindings.hpp"
@@ -64,6 +65,16 @@ PyChain py_chain(ChainRecipe recipe, std::uint64_t realization, const std::strin
   c.recipe = std::move(recipe);
   c.realization = realization;
   return c;
+}
+
+Quasiperiodic quasi_of(const std::string& kind, double modulation, const std::string& ratio, const py::object& phase,
+                       double angle, double k0) {
+  return Quasiperiodic{.kind = parse_quasi_kind(kind),
+                       .modulation = modulation,
+                       .ratio = parse_ratio(ratio),
+                       .phase = phase.is_none() ? std::nullopt : std::optional<double>(phase.cast<double>()),
+                       .angle = angle,
+                       .k0 = k0};
 }
 
 void bind_model(py::module_& m) {
@@ -145,12 +156,7 @@ void bind_model(py::module_& m) {
                   .F0 = F0,
                   .material = material,
                   .seed = checked_size(seed, "seed")};
-    r.quasi = Quasiperiodic{.kind = parse_quasi_kind(kind),
-                            .modulation = modulation,
-                            .ratio = parse_ratio(ratio),
-                            .phase = phase.is_none() ? std::nullopt : std::optional<double>(phase.cast<double>()),
-                            .angle = angle,
-                            .k0 = k0};
+    r.quasi = quasi_of(kind, modulation, ratio, phase, angle, k0);
     return py_chain(r, checked_size(realization, "realization"));
   });
   m.def("_configuration", [](const std::string& disorder, double q, long long N, long long seed, long long realization) {

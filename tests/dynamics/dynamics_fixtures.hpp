@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdint>
 #include <span>
+#include <vector>
 
 #include "fixtures.hpp"
 #include "granular/dynamics/initial_conditions.hpp"
@@ -36,6 +37,20 @@ inline double relative_difference(std::span<const double> a, std::span<const dou
 inline std::unique_ptr<Propagator> run(std::unique_ptr<Propagator> p, std::size_t steps) {
   p->advance(steps);
   return p;
+}
+
+/// The deviation (δu, δv) the tangent map should carry, by finite differences of two orbits whose
+/// starts differ by `epsilon` times the deviation's start: (b − a) / epsilon.
+struct FiniteDifferenceDeviation {
+  std::vector<double> u, v;
+};
+inline FiniteDifferenceDeviation finite_difference_deviation(const Propagator& a, const Propagator& b, double epsilon) {
+  FiniteDifferenceDeviation d{std::vector<double>(a.displacement().size()), std::vector<double>(a.velocity().size())};
+  for (std::size_t i = 0; i < d.u.size(); ++i) {
+    d.u[i] = (b.displacement()[i] - a.displacement()[i]) / epsilon;
+    d.v[i] = (b.velocity()[i] - a.velocity()[i]) / epsilon;
+  }
+  return d;
 }
 
 }  // namespace granular::fixtures

@@ -156,13 +156,9 @@ TEST(OnsiteSprings, TangentMapIsTheDifferenceOfTwoNearbyOrbits) {
     auto pa = fixtures::run(make_splitting_propagator(law, chain, saba2c(), tau, a, {.enabled = false}), steps);
     auto pb = fixtures::run(make_splitting_propagator(law, chain, saba2c(), tau, b, {.enabled = false}), steps);
     EXPECT_EQ(relative_difference(tangent->displacement(), pa->displacement()), 0.0);  // the stepper's orbit
-    std::vector<double> du(a.size()), dv(a.size());
-    for (std::size_t i = 0; i < a.size(); ++i) {
-      du[i] = (pb->displacement()[i] - pa->displacement()[i]) / epsilon;
-      dv[i] = (pb->velocity()[i] - pa->velocity()[i]) / epsilon;
-    }
-    const double eu = relative_difference(tangent->deviation_displacement(), du);
-    const double ev = relative_difference(tangent->deviation_velocity(), dv);
+    const auto fd = fixtures::finite_difference_deviation(*pa, *pb, epsilon);
+    const double eu = relative_difference(tangent->deviation_displacement(), fd.u);
+    const double ev = relative_difference(tangent->deviation_velocity(), fd.v);
     std::printf("  %s: |dev - finite difference| / |dev|: u %.2e, v %.2e\n", to_string(kind).c_str(), eu, ev);
     EXPECT_LT(eu, 1e-5);
     EXPECT_LT(ev, 1e-5);

@@ -49,13 +49,9 @@ TEST(TangentMap, DeviationIsTheDifferenceOfTwoNearbyOrbits) {
       auto pa = fixtures::run(make_damped_propagator(law, chain, scheme, tau, a, {}), steps);
       auto pb = fixtures::run(make_damped_propagator(law, chain, scheme, tau, b, {}), steps);
       EXPECT_EQ(relative_difference(tangent->displacement(), pa->displacement()), 0.0);  // same orbit
-      std::vector<double> du(a.size()), dv(a.size());
-      for (std::size_t i = 0; i < a.size(); ++i) {
-        du[i] = (pb->displacement()[i] - pa->displacement()[i]) / epsilon;
-        dv[i] = (pb->velocity()[i] - pa->velocity()[i]) / epsilon;
-      }
-      const double eu = relative_difference(tangent->deviation_displacement(), du);
-      const double ev = relative_difference(tangent->deviation_velocity(), dv);
+      const auto fd = fixtures::finite_difference_deviation(*pa, *pb, epsilon);
+      const double eu = relative_difference(tangent->deviation_displacement(), fd.u);
+      const double ev = relative_difference(tangent->deviation_velocity(), fd.v);
       // How far w has moved from its start: the comparison is not trivial.
       const double moved = relative_difference(tangent->deviation_displacement(), w.u);
       std::printf("  %s %s: |dev - finite difference| / |dev|: u %.2e, v %.2e (moved %.2f)\n", to_string(kind).c_str(),
