@@ -14,32 +14,38 @@
 namespace granular {
 namespace {
 
+// A profile E_n with the kicked bead n0 and its moments worked out by hand.
+struct HandProfile {
+  std::vector<double> e;
+  std::size_t site;
+  double centroid, m2_site, m2_centroid, ipr;
+};
+
+void expect_hand_values(const HandProfile& p) {
+  const EnergySpread s = energy_spread(p.e, p.site);
+  EXPECT_DOUBLE_EQ(s.total, 4.0);
+  EXPECT_DOUBLE_EQ(s.centroid, p.centroid);
+  EXPECT_DOUBLE_EQ(s.m2_site, p.m2_site);
+  EXPECT_DOUBLE_EQ(s.m2_centroid, p.m2_centroid);
+  EXPECT_DOUBLE_EQ(s.ipr, p.ipr);
+  EXPECT_EQ(s.m2(SpreadCentre::site), s.m2_site);
+  EXPECT_EQ(s.m2(SpreadCentre::centroid), s.m2_centroid);
+}
+
 TEST(EnergySpread, HandValuesOfASymmetricProfile) {
   // E = (0, 1, 2, 1, 0), kicked bead n0 = 2 (0-based). Σ E = 4; n̄ = (1·1 + 2·2 + 3·1)/4 = 2.
   // m̃2 about n0 = about n̄ = (1·1 + 0·2 + 1·1)/4 = 0.5; P⁻¹ = (1 + 4 + 1)/4² = 0.375.
-  const std::vector<double> e{0, 1, 2, 1, 0};
-  const EnergySpread s = energy_spread(e, 2);
-  EXPECT_DOUBLE_EQ(s.total, 4.0);
-  EXPECT_DOUBLE_EQ(s.centroid, 2.0);
-  EXPECT_DOUBLE_EQ(s.m2_site, 0.5);
-  EXPECT_DOUBLE_EQ(s.m2_centroid, 0.5);
-  EXPECT_DOUBLE_EQ(s.ipr, 0.375);
+  expect_hand_values({{0, 1, 2, 1, 0}, 2, 2.0, 0.5, 0.5, 0.375});
 }
 
 TEST(EnergySpread, HandValuesOfAOneSidedProfile) {
   // E = (0, 0, 1, 3, 0), n0 = 2: the energy has left to the right, as after a velocity kick near
   // F0 = 0. Σ E = 4; n̄ = (2·1 + 3·3)/4 = 2.75.
   // about n0: (0²·1 + 1²·3)/4 = 0.75; about n̄: ((−0.75)²·1 + 0.25²·3)/4 = (0.5625 + 0.1875)/4 = 0.1875;
-  // and 0.1875 + (2.75 − 2)² = 0.75. P⁻¹ = (1 + 9)/16 = 0.625. m2(site) picks the site's.
-  const std::vector<double> e{0, 0, 1, 3, 0};
-  const EnergySpread s = energy_spread(e, 2);
-  EXPECT_DOUBLE_EQ(s.centroid, 2.75);
-  EXPECT_DOUBLE_EQ(s.m2_site, 0.75);
-  EXPECT_DOUBLE_EQ(s.m2_centroid, 0.1875);
-  EXPECT_DOUBLE_EQ(s.ipr, 0.625);
-  EXPECT_EQ(s.m2(SpreadCentre::site), s.m2_site);
-  EXPECT_EQ(s.m2(SpreadCentre::centroid), s.m2_centroid);
-  EXPECT_DOUBLE_EQ(energy_spread(e, 0).m2_site, (4.0 * 1 + 9.0 * 3) / 4);  // about bead 0: (2²·1 + 3²·3)/4
+  // and 0.1875 + (2.75 − 2)² = 0.75. P⁻¹ = (1 + 9)/16 = 0.625.
+  expect_hand_values({{0, 0, 1, 3, 0}, 2, 2.75, 0.75, 0.1875, 0.625});
+  // about bead 0: (2²·1 + 3²·3)/4
+  EXPECT_DOUBLE_EQ(energy_spread(std::vector<double>{0, 0, 1, 3, 0}, 0).m2_site, (4.0 * 1 + 9.0 * 3) / 4);
 }
 
 TEST(EnergySpread, SiteMomentIsCentroidMomentPlusSquaredOffset) {

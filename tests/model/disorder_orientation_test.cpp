@@ -18,6 +18,21 @@ void expect_fraction(double count, double draws, double q, const char* what) {
   EXPECT_NEAR(count / draws, q, 5 * sigma) << what;
 }
 
+// The dimers (beads 2j, 2j + 1) of a configuration: how many start with a type-1 bead, how many
+// hold two different types.
+struct DimerCount {
+  double starting_with_one = 0;
+  std::size_t unlike = 0;
+};
+DimerCount count_dimers(const Configuration& c) {
+  DimerCount d;
+  for (std::size_t j = 0; j + 1 < c.size(); j += 2) {
+    d.starting_with_one += c[j] == 1;
+    d.unlike += c[j] != c[j + 1];
+  }
+  return d;
+}
+
 TEST(DisorderOrientation, AndersonCountsTypeOneBeads) {
   for (double q : {0.2, 0.8}) {
     const Configuration c = realization_configuration(Disorder::anderson, q, beads, 1, 0);
@@ -30,24 +45,18 @@ TEST(DisorderOrientation, AndersonCountsTypeOneBeads) {
 TEST(DisorderOrientation, Rdm1CountsOneOneDimersAndNeverMixesADimer) {
   for (double q : {0.2, 0.8}) {
     const Configuration c = realization_configuration(Disorder::rdm1, q, beads, 1, 0);
-    double ones = 0;
-    for (std::size_t j = 0; j + 1 < c.size(); j += 2) {
-      ASSERT_EQ(c[j], c[j + 1]) << "RDM1 dimer " << j / 2 << " is mixed";  // only 11 or 22
-      ones += c[j] == 1;
-    }
-    expect_fraction(ones, beads / 2, q, "RDM1: fraction of 11 dimers");
+    const DimerCount d = count_dimers(c);
+    EXPECT_EQ(d.unlike, 0u) << "RDM1 dimers are only 11 or 22";
+    expect_fraction(d.starting_with_one, beads / 2, q, "RDM1: fraction of 11 dimers");
   }
 }
 
 TEST(DisorderOrientation, Rdm2CountsOneTwoDimersAndHasNoLikePairInADimer) {
   for (double q : {0.2, 0.8}) {
     const Configuration c = realization_configuration(Disorder::rdm2, q, beads, 1, 0);
-    double one_two = 0;
-    for (std::size_t j = 0; j + 1 < c.size(); j += 2) {
-      ASSERT_NE(c[j], c[j + 1]) << "RDM2 dimer " << j / 2 << " is 11 or 22";  // only 12 or 21
-      one_two += c[j] == 1;
-    }
-    expect_fraction(one_two, beads / 2, q, "RDM2: fraction of 12 dimers");
+    const DimerCount d = count_dimers(c);
+    EXPECT_EQ(d.unlike, beads / 2) << "RDM2 dimers are only 12 or 21";
+    expect_fraction(d.starting_with_one, beads / 2, q, "RDM2: fraction of 12 dimers");
     // Hence no run of three like beads anywhere (any three consecutive beads hold a whole dimer).
     for (std::size_t i = 0; i + 2 < c.size(); ++i)
       ASSERT_FALSE(c[i] == c[i + 1] && c[i + 1] == c[i + 2]) << "three like beads at " << i;

@@ -2,6 +2,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -12,6 +14,18 @@
 namespace granular {
 namespace {
 
+// A map over the (q, ξ) grid of `disorder` chains of N beads, `realizations` each.
+IprMapConfig bins_config(Disorder disorder, std::vector<double> q, std::vector<double> xi, std::size_t N,
+                         std::size_t realizations) {
+  IprMapConfig c;
+  c.chain.disorder = disorder;
+  c.q_values = std::move(q);
+  c.xi_values = std::move(xi);
+  c.chain.N = N;
+  c.realizations = realizations;
+  return c;
+}
+
 // The periodic diatomic chain 1 2 1 2 … (RDM2 at q = 1: every dimer "1 2") has no bulk mode in
 // the gap (fb1, fb2) of the infinite chain; frequency bins show that, where mode-number averaging
 // of a disordered ensemble puts points in the gap. The finite chain between flat walls does have
@@ -20,12 +34,7 @@ namespace {
 // mode per wall per realization, and only strongly localized ones (IPR > 0.2; the band modes of
 // 200 beads have IPR ~ 1/100), every other gap bin is empty with IPR NaN.
 TEST(IprMapBins, NoBulkModeInTheDiatomicGap) {
-  IprMapConfig c;
-  c.chain.disorder = Disorder::rdm2;
-  c.q_values = {1.0};
-  c.xi_values = {0.5};
-  c.chain.N = 200;
-  c.realizations = 2;
+  IprMapConfig c = bins_config(Disorder::rdm2, {1.0}, {0.5}, 200, 2);
   c.bin_khz = 0.25;
   const auto cells = compute_ipr_map(c);
   ASSERT_EQ(cells.size(), 1u);
@@ -53,12 +62,7 @@ TEST(IprMapBins, NoBulkModeInTheDiatomicGap) {
 // Bins narrower than every level spacing hold one mode each (one realization): the binned mean
 // is then that mode's IPR, bin by bin, exactly as the by-mode map gives it.
 TEST(IprMapBins, OneModePerBinEqualsThePerModeMean) {
-  IprMapConfig c;
-  c.chain.disorder = Disorder::anderson;
-  c.q_values = {0.5};
-  c.xi_values = {0.6};
-  c.chain.N = 60;
-  c.realizations = 1;
+  IprMapConfig c = bins_config(Disorder::anderson, {0.5}, {0.6}, 60, 1);
   const auto by_mode = compute_ipr_map(c);
   const auto& f = by_mode[0].freq_khz;
   double spacing = std::numeric_limits<double>::infinity();
@@ -81,12 +85,7 @@ TEST(IprMapBins, OneModePerBinEqualsThePerModeMean) {
 }
 
 TEST(IprMapBins, IdenticalForOneAndTwoThreads) {
-  IprMapConfig c;
-  c.chain.disorder = Disorder::rdm1;
-  c.q_values = {0.3, 0.7};
-  c.xi_values = {0.4, 0.9};
-  c.chain.N = 80;
-  c.realizations = 9;
+  IprMapConfig c = bins_config(Disorder::rdm1, {0.3, 0.7}, {0.4, 0.9}, 80, 9);
   c.bin_khz = 0.5;
   const auto one = compute_ipr_map(c, {.threads = 1});
   const auto two = compute_ipr_map(c, {.threads = 2});

@@ -9,18 +9,25 @@
 namespace granular {
 namespace {
 
-TransportCase small_case(Disorder d, double f0) {
+// N beads kicked at the centre bead, integrated to T [s] with `samples` samples, fitted from
+// `fit_begin` [s] to T.
+TransportCase short_case(std::size_t N, std::size_t realizations, double T, std::size_t samples, double fit_begin) {
   TransportCase c;
+  c.chain.N = N;
+  c.site = N / 2;
+  c.realizations = realizations;
+  c.dynamics.duration = T;
+  c.dynamics.samples = samples;
+  c.fit_begin = fit_begin;
+  c.fit_end = T;
+  c.criterion.t_start = fit_begin;
+  return c;
+}
+
+TransportCase small_case(Disorder d, double f0) {
+  TransportCase c = short_case(301, 6, 1e-3, 40, 4e-4);
   c.chain.disorder = d;
-  c.chain.N = 301;
-  c.site = 150;
   c.chain.F0 = f0;
-  c.realizations = 6;
-  c.dynamics.duration = 1e-3;
-  c.dynamics.samples = 40;
-  c.fit_begin = 4e-4;
-  c.fit_end = 1e-3;
-  c.criterion.t_start = 4e-4;
   return c;
 }
 
@@ -165,15 +172,7 @@ namespace {
 // An ensemble of polydisperse chains (radii drawn per realization) is
 // bit-identical for any thread count, and its realizations really differ.
 TEST(TransportStudy, PolydisperseEnsembleIsBitIdenticalForOneAndTwoThreads) {
-  TransportCase c;
-  c.chain.N = 201;
-  c.site = 100;
-  c.realizations = 5;
-  c.dynamics.duration = 5e-4;
-  c.dynamics.samples = 30;
-  c.fit_begin = 2e-4;
-  c.fit_end = 5e-4;
-  c.criterion.t_start = 2e-4;
+  TransportCase c = short_case(201, 5, 5e-4, 30, 2e-4);
   c.chain.distribution =
       BeadDistribution{.kind = BeadDistribution::Kind::normal, .mean = 4e-3, .sd = 1e-3, .minimum = 2e-3};
   const TransportSummary one = run_transport_study(c, {1, "", false, nullptr});
