@@ -90,6 +90,19 @@ TEST(PeriodicOrbit, RefusesWhatItCannotDo) {
   // One Newton step from an arbitrary profile does not reach 1e-10: a NumericalError, not garbage.
   EXPECT_THROW(find_periodic_orbit(law, chain, omega, profile(chain, 0.3 * chain.overlap[0]), {.max_iterations = 1}),
                NumericalError);
+  // The arclength corrector needs a step count fixed along the branch, and a tangent per bead.
+  ArcPrediction arc{.x = profile(chain, 1e-8),
+                    .omega = omega,
+                    .tangent_x = std::vector<double>(9, 0.0),
+                    .tangent_omega = 1};
+  try {
+    find_periodic_orbit_on_arc(law, chain, arc, {});
+    ADD_FAILURE() << "no exception";
+  } catch (const InvalidInput& e) {
+    EXPECT_EQ(e.parameter(), "steps_per_period");
+  }
+  arc.tangent_x.pop_back();
+  EXPECT_THROW(find_periodic_orbit_on_arc(law, chain, arc, {.steps_per_period = 256}), InvalidInput);
 }
 
 }  // namespace

@@ -51,6 +51,12 @@ long lowest_optical_mode(const Chain& chain, const BandEdges& edges) {
   return k + 1;
 }
 
+double norm2_of(const std::vector<double>& x) {
+  double s = 0;
+  for (double v : x) s += v * v;
+  return std::sqrt(s);
+}
+
 double profile_difference(const std::vector<double>& a, const std::vector<double>& b) {
   double na = 0, nb = 0, dot = 0, d = 0;
   for (std::size_t i = 0; i < a.size(); ++i) na += a[i] * a[i], nb += b[i] * b[i], dot += a[i] * b[i];
@@ -177,6 +183,60 @@ TEST(BreatherBranch, DiatomicGapBreathersBifurcateFromTheOpticalEdgeIntoTheGap) 
       EXPECT_EQ(branch.points.back().centre, 20u);
       EXPECT_FALSE(any_unstable);
     }
+  }
+}
+
+// Through the contact openings the light-centred gap breathers of the 41-bead diatomic chain turn
+// back in frequency (docs/breathers.md): natural-parameter continuation stalls at its fold, 18.206
+// kHz. Pseudo-arclength follows a branch round a fold: its frequency has an interior minimum with
+// converged points after it, higher in energy; before it, down to 19 kHz, its points are the
+// fixed-frequency orbits the natural continuation finds (Newton at the same ω_b from the natural
+// branch's profile lands on them). Near 18.6 kHz the two continuations part onto different
+// branches (both converged orbits), so the natural branch is compared above that only.
+// About 8 s: Release pass only.
+TEST(Long_BreatherBranch, ArclengthContinuationPassesTheFoldWhereNaturalStops) {
+  const BandEdges edges = band_edges(steel, r1, 0.5, 10);
+  BreatherBranchConfig c;
+  c.chain.given_types = alternating(41, 2);
+  c.chain.xi = 0.5;
+  c.mode = lowest_optical_mode(c.chain.chain(0), edges);
+  c.stop_at_opening = false;
+  c.max_points = 200;
+  const BreatherBranch natural = continue_breather(c);
+  ASSERT_TRUE(natural.stop_reason.starts_with("Newton failed")) << natural.stop_reason;
+  c.continuation = Continuation::arclength;
+  c.max_points = 125;
+  const BreatherBranch arc = continue_breather(c);
+  ASSERT_EQ(arc.points.size(), c.max_points) << arc.stop_reason;
+  std::size_t fold = 0;
+  for (std::size_t k = 0; k < arc.points.size(); ++k) {
+    EXPECT_LE(arc.points[k].residual, c.shooting.tolerance) << "point " << k;
+    if (arc.points[k].freq_khz < arc.points[fold].freq_khz) fold = k;
+  }
+  std::printf("natural stops at %.4f kHz (point %zu); arclength turns at %.4f kHz (point %zu)\n",
+              natural.points.back().freq_khz, natural.points.size(), arc.points[fold].freq_khz, fold + 1);
+  ASSERT_GT(fold, 0u);
+  ASSERT_GE(arc.points.size() - fold, 10u) << "too few points after the fold";
+  for (std::size_t k = fold + 1; k < arc.points.size(); ++k) {
+    EXPECT_GT(arc.points[k].freq_khz, arc.points[k - 1].freq_khz) << "point " << k;
+    EXPECT_GT(arc.points[k].energy, arc.points[k - 1].energy) << "point " << k;
+  }
+  const Chain chain = c.chain.chain(0);
+  const ForceLaw law = make_force_law(ForceLawKind::hertz, chain);
+  ShootingConfig shooting = c.shooting;
+  shooting.steps_per_period = arc.steps_per_period;
+  for (const BreatherPoint& from : natural.points) {
+    if (from.freq_khz < 19) break;
+    std::size_t near = 0;
+    for (std::size_t j = 0; j < fold; ++j)
+      if (std::abs(arc.points[j].freq_khz - from.freq_khz) < std::abs(arc.points[near].freq_khz - from.freq_khz))
+        near = j;
+    const PeriodicOrbit fixed = find_periodic_orbit(law, chain, arc.points[near].omega, from.x0, shooting);
+    // Two orbits converged to a relative residual of 1e-10 differ by up to that times the
+    // Jacobian's condition (4e-7 next to the band edge, where a linear mode is near ω_b); another
+    // branch at the same frequency differs by ~1e-2 (0.09 at 18.2 kHz).
+    EXPECT_LT(profile_difference(fixed.x0, arc.points[near].x0), 1e-5) << arc.points[near].freq_khz << " kHz";
+    EXPECT_NEAR(norm2_of(fixed.x0), norm2_of(arc.points[near].x0), 1e-5 * norm2_of(fixed.x0));
   }
 }
 

@@ -139,6 +139,97 @@ PeriodicOrbit find_periodic_orbit(const ForceLaw& law, const Chain& chain, doubl
   return orbit;
 }
 
+PeriodicOrbit find_periodic_orbit_on_arc(const ForceLaw& law, const Chain& chain, const ArcPrediction& p,
+                                         const ShootingConfig& config) {
+  check_frequency(p.omega);
+  const std::size_t n = chain.size();
+  if (n > config.max_dense_beads)
+    throw InvalidInput("N", " " + std::to_string(n) + ": more beads than the dense shooting Jacobian allows (" +
+                                std::to_string(config.max_dense_beads) + ")");
+  if (p.x.size() != n || p.tangent_x.size() != n)
+    throw InvalidInput("guess", ": the prediction and its tangent must have one displacement per bead");
+  if (config.steps_per_period == 0)
+    throw InvalidInput("steps_per_period", ": must be set (fixed along the branch) for arclength continuation");
+  if (!(p.x_scale > 0) || !(p.omega_scale > 0)) throw InvalidInput("guess", ": the scales must be > 0");
+  const double guess_norm = norm2(p.x);
+  if (!(guess_norm > 0) || !std::isfinite(guess_norm))
+    throw InvalidInput("guess", ": must be finite and not all zero (zero is the trivial orbit)");
+  const double xs = p.x_scale, ws = p.omega_scale;
+  const auto map = [&](const std::vector<double>& x, double omega, bool jac) {
+    return half_period_map(law, chain, config.scheme, config.steps_per_period, omega, x, jac);
+  };
+  // The arclength condition: the scaled correction from the prediction along the tangent.
+  const auto along = [&](const std::vector<double>& x, double omega) {
+    double s = p.tangent_omega * (omega - p.omega) / ws;
+    for (std::size_t i = 0; i < n; ++i) s += p.tangent_x[i] * (x[i] - p.x[i]) / xs;
+    return s;
+  };
+  const auto khz = [](double omega) { return format_number(omega / (2 * std::numbers::pi) / 1e3); };
+
+  PeriodicOrbit orbit;
+  orbit.scheme = config.scheme;
+  orbit.steps_per_period = config.steps_per_period;
+  orbit.x0 = p.x;
+  double omega = p.omega;
+  auto current = map(orbit.x0, omega, true);
+  double r = relative_residual(current.velocity, omega, orbit.x0), c = along(orbit.x0, omega);
+  orbit.residuals.push_back(r);
+  const std::size_t m = n + 1;
+  const int mm = static_cast<int>(m);
+  std::vector<int> pivots(m);
+  std::vector<double> a(m * m), step(m), trial(n);
+  while (r > config.tolerance || std::abs(c) > config.tolerance) {
+    if (orbit.iterations >= config.max_iterations)
+      throw NumericalError("shooting: arclength Newton did not converge in " + std::to_string(config.max_iterations) +
+                           " iterations near " + khz(omega) + " kHz (relative residual " + format_number(r) + ")");
+    // The bordered system in scaled unknowns (δx/xs, δω/ωs), the shooting rows divided by ω xs.
+    const double h = 1e-6 * omega;
+    const auto up = map(orbit.x0, omega + h, false), down = map(orbit.x0, omega - h, false);
+    const double row = 1 / (omega * xs);
+    for (std::size_t j = 0; j < n; ++j) {
+      for (std::size_t i = 0; i < n; ++i) a[j * m + i] = current.jacobian[j * n + i] * xs * row;
+      a[j * m + n] = p.tangent_x[j];
+    }
+    for (std::size_t i = 0; i < n; ++i) a[n * m + i] = (up.velocity[i] - down.velocity[i]) / (2 * h) * ws * row;
+    a[n * m + n] = p.tangent_omega;
+    for (std::size_t i = 0; i < n; ++i) step[i] = -current.velocity[i] * row;
+    step[n] = -c;
+    int one = 1, info = 0;
+    dgesv_(&mm, &one, a.data(), &mm, pivots.data(), step.data(), &mm, &info);
+    if (info != 0)
+      throw NumericalError("shooting: the bordered arclength system is singular near " + khz(omega) + " kHz");
+    const double merit = std::hypot(r, c);
+    bool accepted = false;
+    double lambda = 1, trial_omega = omega;
+    for (int halving = 0; halving <= 10 && !accepted; ++halving, lambda /= 2) {
+      for (std::size_t i = 0; i < n; ++i) trial[i] = orbit.x0[i] + lambda * step[i] * xs;
+      trial_omega = omega + lambda * step[n] * ws;
+      if (!(trial_omega > 0)) continue;
+      const auto tried = map(trial, trial_omega, false);
+      const double rt = relative_residual(tried.velocity, trial_omega, trial), ct = along(trial, trial_omega);
+      if (std::hypot(rt, ct) < merit) {
+        accepted = true;
+        r = rt, c = ct;
+      }
+    }
+    if (!accepted)
+      throw NumericalError("shooting: arclength Newton stalled at relative residual " + format_number(r) + " near " +
+                           khz(omega) + " kHz");
+    orbit.x0 = trial;
+    omega = trial_omega;
+    ++orbit.iterations;
+    orbit.residuals.push_back(r);
+    if (norm2(orbit.x0) < 1e-6 * guess_norm)
+      throw NumericalError("shooting: arclength Newton fell to the rest state (the trivial orbit) near " + khz(omega) +
+                           " kHz");
+    if (r > config.tolerance || std::abs(c) > config.tolerance) current = map(orbit.x0, omega, true);
+  }
+  orbit.omega = omega;
+  orbit.period = 2 * std::numbers::pi / omega;
+  orbit.time_step = orbit.period / static_cast<double>(orbit.steps_per_period);
+  return orbit;
+}
+
 State turning_state(const PeriodicOrbit& orbit) {
   State s(orbit.x0.size());
   s.u = orbit.x0;

@@ -74,6 +74,29 @@ struct PeriodicOrbit {
 PeriodicOrbit find_periodic_orbit(const ForceLaw& law, const Chain& chain, double omega,
                                   const std::vector<double>& guess, const ShootingConfig& config = {});
 
+/// A point predicted along a branch of orbits and the branch's direction there, for
+/// pseudo-arclength correction. The direction is in scaled units: x by `x_scale` [m], ω_b by
+/// `omega_scale` [rad/s] (e.g. the last point's ‖x0‖ and ω_b), so that both parts weigh alike.
+struct ArcPrediction {
+  std::vector<double> x;          ///< predicted displacements [m]
+  double omega = 0;               ///< predicted ω_b [rad/s]
+  std::vector<double> tangent_x;  ///< the branch's unit tangent: its x part (scaled)
+  double tangent_omega = 0;       ///< … and its ω_b part (scaled)
+  double x_scale = 1;             ///< [m]
+  double omega_scale = 1;         ///< [rad/s]
+};
+
+/// Newton's method on (x0, ω_b) together: the N shooting equations and the pseudo-arclength
+/// condition that the correction from the prediction be orthogonal to the tangent (in scaled
+/// units). At a fold of the branch in ω_b, where find_periodic_orbit has no solution near its guess,
+/// this bordered system stays regular, so a continuation can pass the fold. ∂u̇(T/2)/∂ω_b comes
+/// from central differences of the map (relative step 1e-6) at the fixed config.steps_per_period,
+/// which must be set (a step count that changed with ω_b would make the map jump). Converged when
+/// the relative residual and the arclength condition are both ≤ config.tolerance; the same damping
+/// and failures (NumericalError) as find_periodic_orbit; the residuals recorded are the shooting ones.
+PeriodicOrbit find_periodic_orbit_on_arc(const ForceLaw& law, const Chain& chain, const ArcPrediction& prediction,
+                                         const ShootingConfig& config);
+
 /// The state (x0, 0) of an orbit at t = 0.
 State turning_state(const PeriodicOrbit& orbit);
 

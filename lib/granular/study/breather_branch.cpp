@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "granular/detail/enum_names.hpp"
 #include "granular/dynamics/observables.hpp"
 #include "granular/dynamics/propagator.hpp"
 #include "granular/error.hpp"
@@ -21,6 +22,18 @@ namespace {
 constexpr double two_pi = 2 * std::numbers::pi;
 double to_omega(double khz) { return two_pi * khz * 1e3; }
 double to_khz(double omega) { return omega / two_pi / 1e3; }
+// The largest arclength step: a 5 % change of (x0, ω_b) relative to the last point.
+constexpr double max_arc = 0.05;
+
+double norm(const std::vector<double>& x) {
+  double s = 0;
+  for (double v : x) s += v * v;
+  return std::sqrt(s);
+}
+
+constexpr auto continuation_names =
+    detail::enum_names<Continuation>("continuation",
+                                     {{Continuation::natural, "natural"}, {Continuation::arclength, "arclength"}});
 
 // The component of u̇(T/2) along the mode, per unit amplitude: its sign tells whether the seed
 // aφ oscillates faster (> 0 below the mode for a softening chain) or slower than ω_b.
@@ -52,6 +65,9 @@ BreatherPoint make_point(const ForceLaw& law, const Chain& chain, const Periodic
 }
 
 }  // namespace
+
+Continuation parse_continuation(const std::string& name) { return continuation_names.parse(name); }
+std::string to_string(Continuation continuation) { return std::string(continuation_names.name_of(continuation)); }
 
 void validate(const BreatherBranchConfig& c) {
   validate(c.chain);
@@ -174,16 +190,19 @@ BreatherBranch continue_breather(const BreatherBranchConfig& c,
   branch.points.push_back(make_point(law, chain, orbit, c.stability_tolerance));
   if (progress) progress(branch.points.back());
 
-  // Natural-parameter continuation with a secant predictor.
+  // Continuation with a secant predictor: natural-parameter (the next ω_b fixed) or, once two
+  // points give a secant, pseudo-arclength (the next point on the hyperplane orthogonal to the
+  // secant, in units of the last point's ‖x0‖ and ω_b), which passes folds in ω_b.
   const double target = c.target_khz;
   // Default steps: from the start's distance to the seed, growing to 2 % of the seed frequency.
   const double first_step = c.step_khz > 0 ? c.step_khz : std::abs(branch.seed_khz - start_khz);
   double step = -down * first_step;  // kHz, signed
   const double min_step = 1e-4 * first_step, max_step = c.step_khz > 0 ? 8 * first_step : 0.02 * branch.seed_khz;
+  double arc = 0, min_arc = 0;  // the arclength step (scaled), set from the first secant
   ShootingConfig follow = shooting;
   follow.max_iterations = std::min(shooting.max_iterations, 10);
   std::vector<double> previous;
-  double previous_khz = 0;
+  double previous_khz = 0, previous_omega = 0;
   while (true) {
     const BreatherPoint& last = branch.points.back();
     if (c.stop_at_opening && last.max_open_fraction > 0) {
@@ -198,8 +217,27 @@ BreatherBranch continue_breather(const BreatherBranchConfig& c,
       branch.stop_reason = "max_points reached";
       break;
     }
+    ArcPrediction arc_guess;
+    const bool on_arc = c.continuation == Continuation::arclength && !previous.empty();
     double next = last.freq_khz + step;
-    if (!std::isnan(target) && (next - target) * (last.freq_khz - target) <= 0) next = target;
+    if (on_arc) {
+      arc_guess.x_scale = norm(last.x0);
+      arc_guess.omega_scale = last.omega;
+      arc_guess.tangent_x.resize(n);
+      for (std::size_t i = 0; i < n; ++i) arc_guess.tangent_x[i] = (last.x0[i] - previous[i]) / arc_guess.x_scale;
+      arc_guess.tangent_omega = (last.omega - previous_omega) / last.omega;
+      const double length = std::hypot(norm(arc_guess.tangent_x), arc_guess.tangent_omega);
+      for (double& t : arc_guess.tangent_x) t /= length;
+      arc_guess.tangent_omega /= length;
+      if (arc == 0) arc = length, min_arc = 1e-4 * length;
+      arc_guess.x.resize(n);
+      for (std::size_t i = 0; i < n; ++i)
+        arc_guess.x[i] = last.x0[i] + arc * arc_guess.tangent_x[i] * arc_guess.x_scale;
+      arc_guess.omega = last.omega * (1 + arc * arc_guess.tangent_omega);
+      next = to_khz(arc_guess.omega);
+    }
+    const bool to_target = !std::isnan(target) && (next - target) * (last.freq_khz - target) <= 0;
+    if (to_target) next = target;
     // A linear frequency between this point and the next: the breather meets a band (or a mode).
     bool crosses = false;
     for (double f : branch.linear_khz)
@@ -208,15 +246,19 @@ BreatherBranch continue_breather(const BreatherBranchConfig& c,
       branch.stop_reason = "reached a linear mode frequency near " + format_number(next) + " kHz (band edge)";
       break;
     }
-    std::vector<double> guess = last.x0;
-    if (!previous.empty())
-      for (std::size_t i = 0; i < n; ++i)
-        guess[i] += (next - last.freq_khz) / (last.freq_khz - previous_khz) * (last.x0[i] - previous[i]);
     try {
-      orbit = find_periodic_orbit(law, chain, to_omega(next), guess, follow);
+      if (on_arc && !to_target) {
+        orbit = find_periodic_orbit_on_arc(law, chain, arc_guess, follow);
+      } else {
+        std::vector<double> guess = last.x0;
+        if (!previous.empty())
+          for (std::size_t i = 0; i < n; ++i)
+            guess[i] += (next - last.freq_khz) / (last.freq_khz - previous_khz) * (last.x0[i] - previous[i]);
+        orbit = find_periodic_orbit(law, chain, to_omega(next), guess, follow);
+      }
     } catch (const NumericalError& e) {
-      step /= 2;
-      if (std::abs(step) < min_step) {
+      const bool smallest = on_arc ? (arc /= 2) < min_arc : std::abs(step /= 2) < min_step;
+      if (smallest) {
         branch.stop_reason = std::string("Newton failed with the smallest step: ") + e.what();
         break;
       }
@@ -224,9 +266,13 @@ BreatherBranch continue_breather(const BreatherBranchConfig& c,
     }
     previous = last.x0;
     previous_khz = last.freq_khz;
+    previous_omega = last.omega;
     branch.points.push_back(make_point(law, chain, orbit, c.stability_tolerance));
     if (progress) progress(branch.points.back());
-    if (orbit.iterations <= 3) step = std::copysign(std::min(std::abs(step) * 1.5, max_step), step);
+    if (orbit.iterations <= 3) {
+      step = std::copysign(std::min(std::abs(step) * 1.5, max_step), step);
+      arc = std::min(arc * 1.5, max_arc);
+    }
   }
   return branch;
 }
@@ -246,7 +292,12 @@ nlohmann::json describe_breather_branch(const BreatherBranchConfig& c, const Bre
   j["chain"] = describe(c.chain, c.chain.drawn() ? std::optional<std::uint64_t>(c.realization) : std::nullopt);
   j["force_law"] = to_string(c.law);
   j["seed"] = {{"mode", b.seed_mode}, {"linear_khz", b.seed_khz}, {"amplitude_m", b.seed_amplitude}};
-  j["continuation"] = {{"method", "natural-parameter in frequency, secant predictor, step halving/growth"},
+  j["continuation"] = {{"method",
+                        c.continuation == Continuation::natural
+                            ? "natural-parameter in frequency, secant predictor, step halving/growth"
+                            : "pseudo-arclength in (x0, frequency) scaled by the last point's norm and "
+                              "frequency, secant predictor and tangent, step halving/growth (natural-parameter "
+                              "for the second point and the step onto a target)"},
                        {"start_khz", b.points.empty() ? 0.0 : b.points.front().freq_khz},
                        {"target_khz", std::isnan(c.target_khz) ? nlohmann::json() : nlohmann::json(c.target_khz)},
                        {"max_points", c.max_points},

@@ -9,8 +9,9 @@
 //   c.target_khz = 8.0;                        // continue down into the gap
 //   auto branch = granular::continue_breather(c);
 //
-// Continuation is natural-parameter in ω_b with a secant predictor and step control (not
-// pseudo-arclength: a turning point in ω_b stops the branch as a Newton failure).
+// Continuation is natural-parameter in ω_b with a secant predictor and step control (a fold in ω_b
+// stops the branch as a Newton failure), or pseudo-arclength (`Continuation::arclength`), which
+// follows the branch through folds.
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -27,6 +28,12 @@
 #include "granular/model/chain_recipe.hpp"
 
 namespace granular {
+
+/// How the branch is followed: natural — the next point at a given ω_b (stops at a fold in ω_b);
+/// arclength — pseudo-arclength in (x0, ω_b) after the first two points (passes folds).
+enum class Continuation { natural, arclength };
+Continuation parse_continuation(const std::string& name);  ///< "natural" | "arclength"
+std::string to_string(Continuation continuation);
 
 struct BreatherBranchConfig {
   ChainRecipe chain{};            ///< F0 > 0: the seed is a linear mode
@@ -45,6 +52,7 @@ struct BreatherBranchConfig {
       0;  ///< first step [kHz] (sign ignored), growing to 8×; 0: the start's distance from the seed, growing to 2 % of it
   std::size_t max_points = 100;  ///< points on the branch
   bool stop_at_opening = true;   ///< stop at the first point with an open contact
+  Continuation continuation = Continuation::natural;
   ShootingConfig shooting{};
   double stability_tolerance = 1e-6;  ///< stable when max |μ| ≤ 1 + this
 };
