@@ -68,17 +68,19 @@ double profile_difference(const std::vector<double>& a, const std::vector<double
   return std::sqrt(d);
 }
 
-TEST(BreatherBranch, LinearLimitIsTheLinearModeAtItsFrequency) {
-  auto c = impurity_config();
+// Breathers of `c` (seeded from mode `k`, 0-based) at relative offsets `first`, first/2, first/4
+// below the mode tend to the linear mode: frequency (extrapolated to zero energy) and profile; all
+// multipliers on the unit circle.
+void expect_linear_limit(BreatherBranchConfig c, std::size_t k, double first) {
   const Chain chain = c.chain.chain(0);
   const DynamicalMatrix d = dynamical_matrix(chain);
   const Spectrum modes = spectrum(d, all_modes(), {.vectors = true});
   std::vector<double> mode(chain.size());
-  for (std::size_t i = 0; i < mode.size(); ++i) mode[i] = modes.vector(20)[i] * d.inverse_sqrt_mass[i];
-  const double omega_linear = std::sqrt(modes.omega2[20]);
+  for (std::size_t i = 0; i < mode.size(); ++i) mode[i] = modes.vector(k)[i] * d.inverse_sqrt_mass[i];
+  const double omega_linear = std::sqrt(modes.omega2[k]);
 
   std::vector<BreatherPoint> points;
-  for (double offset : {4e-4, 2e-4, 1e-4}) {
+  for (double offset : {first, first / 2, first / 4}) {
     c.start_offset = offset;
     points.push_back(continue_breather(c).points.front());
   }
@@ -105,6 +107,20 @@ TEST(BreatherBranch, LinearLimitIsTheLinearModeAtItsFrequency) {
     EXPECT_LE(p.residual, 1e-10);
     for (const auto mu : p.floquet.multipliers) EXPECT_NEAR(std::abs(mu), 1.0, 1e-6);
   }
+}
+
+TEST(BreatherBranch, LinearLimitIsTheLinearModeAtItsFrequency) { expect_linear_limit(impurity_config(), 20, 4e-4); }
+
+// The same on a quasiperiodic S1 chain above its transition (λ = 0.8: every linear mode localized),
+// whose on-site springs enter the shooting map, its tangent map and the linear seed alike.
+TEST(BreatherBranch, LinearLimitOnAnOnsiteSpringChain) {
+  BreatherBranchConfig c;
+  c.chain.quasi = Quasiperiodic{.kind = Quasiperiodic::Kind::s1, .modulation = 0.8, .phase = 0.4};
+  c.chain.N = 101;
+  c.chain.F0 = 10;
+  c.mode = 101;
+  c.max_points = 1;
+  expect_linear_limit(c, 100, 4e-5);  // below a quarter of the way to mode 100, 2e-4 lower
 }
 
 TEST(BreatherBranch, NewtonConvergesQuadratically) {
