@@ -11,8 +11,6 @@
 #include "granular/dynamics/observables.hpp"
 #include "granular/dynamics/spreading.hpp"
 #include "granular/error.hpp"
-#include "granular/linear/detail/lapack_eigensolver.hpp"
-#include "granular/linear/dynamical_matrix.hpp"
 
 namespace granular {
 namespace {
@@ -21,36 +19,12 @@ using fixtures::relative_difference;
 
 using fixtures::steps_for;
 
-// Exact solution of M ü = −B u − (M/τ_d) u̇: every mode k obeys q̈ + q̇/τ_d + ω_k² q = 0, so
-// q(t) = e^{−t/(2τ_d)} [q0 cos ω_d t + (q̇0 + q0/(2τ_d)) sin(ω_d t)/ω_d], ω_d² = ω_k² − 1/(4τ_d²).
-// Also returns each mode's amplitude envelope ratio for the decay check.
-std::vector<double> damped_modal_solution(const Chain& chain, const State& s0, double t, double tau_d) {
-  const EigenDecomposition e = LapackEigensolver().solve(dynamical_matrix(chain), true);
-  const std::size_t n = chain.size();
-  std::vector<double> u(n, 0.0);
-  const double decay = std::exp(-t / (2 * tau_d));
-  for (std::size_t k = 0; k < n; ++k) {
-    const auto kk = static_cast<Eigen::Index>(k);
-    const double omega = std::sqrt(e.values[kk] - 1 / (4 * tau_d * tau_d));
-    double a = 0, b = 0;
-    for (std::size_t i = 0; i < n; ++i) {
-      const double w = e.vectors(static_cast<Eigen::Index>(i), kk);
-      a += w * std::sqrt(chain.mass[i]) * s0.u[i];
-      b += w * std::sqrt(chain.mass[i]) * s0.v[i];
-    }
-    const double c = decay * (a * std::cos(omega * t) + (b + a / (2 * tau_d)) * std::sin(omega * t) / omega);
-    for (std::size_t i = 0; i < n; ++i)
-      u[i] += c * e.vectors(static_cast<Eigen::Index>(i), kk) / std::sqrt(chain.mass[i]);
-  }
-  return u;
-}
-
 TEST(Damping, LinearChainDecaysEveryModeAsTheExactDampedOscillator) {
   const Chain chain = fixtures::anderson(41, 10.0);
   const ForceLaw law = make_force_law(ForceLawKind::linear, chain);
   const State s0 = displacement_kick(chain, 20, 1e-7);
   const double tau_d = 0.1e-3, duration = 0.3e-3;  // the amplitude falls by e^{-1.5}
-  const std::vector<double> exact = damped_modal_solution(chain, s0, duration, tau_d);
+  const std::vector<double> exact = fixtures::damped_modal_solution(chain, s0, duration, tau_d);
   // Undamped, the same state would be far off: the test sees the decay.
   const auto free = fixtures::run(make_splitting_propagator(law, chain, saba2c(), 0.01e-6, s0, {false}),
                                   steps_for(duration, 0.01e-6));

@@ -10,6 +10,8 @@
 #include "fixtures.hpp"
 #include "granular/dynamics/initial_conditions.hpp"
 #include "granular/dynamics/propagator.hpp"
+#include "granular/linear/detail/lapack_eigensolver.hpp"
+#include "granular/linear/dynamical_matrix.hpp"
 #include "granular/model/chain.hpp"
 #include "granular/model/disorder.hpp"
 
@@ -51,6 +53,29 @@ inline FiniteDifferenceDeviation finite_difference_deviation(const Propagator& a
     d.v[i] = (b.velocity()[i] - a.velocity()[i]) / epsilon;
   }
   return d;
+}
+
+// Exact solution of M ü = −B u − (M/τ_d) u̇ (B with the on-site springs, if any): every mode k obeys q̈ + q̇/τ_d + ω_k² q
+// = 0, so q(t) = e^{−t/(2τ_d)} [q0 cos ω_d t + (q̇0 + q0/(2τ_d)) sin(ω_d t)/ω_d], ω_d² = ω_k² − 1/(4τ_d²).
+inline std::vector<double> damped_modal_solution(const Chain& chain, const State& s0, double t, double tau_d) {
+  const EigenDecomposition e = LapackEigensolver().solve(dynamical_matrix(chain), true);
+  const std::size_t n = chain.size();
+  std::vector<double> u(n, 0.0);
+  const double decay = std::exp(-t / (2 * tau_d));
+  for (std::size_t k = 0; k < n; ++k) {
+    const auto kk = static_cast<Eigen::Index>(k);
+    const double omega = std::sqrt(e.values[kk] - 1 / (4 * tau_d * tau_d));
+    double a = 0, b = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      const double w = e.vectors(static_cast<Eigen::Index>(i), kk);
+      a += w * std::sqrt(chain.mass[i]) * s0.u[i];
+      b += w * std::sqrt(chain.mass[i]) * s0.v[i];
+    }
+    const double c = decay * (a * std::cos(omega * t) + (b + a / (2 * tau_d)) * std::sin(omega * t) / omega);
+    for (std::size_t i = 0; i < n; ++i)
+      u[i] += c * e.vectors(static_cast<Eigen::Index>(i), kk) / std::sqrt(chain.mass[i]);
+  }
+  return u;
 }
 
 }  // namespace granular::fixtures

@@ -148,18 +148,28 @@ void boundary_bonds([[maybe_unused]] const View law, const double* __restrict u,
   }
 }
 
-// a_p = F/m of bead p − 1 (padded: a[0] = a[n+1] = 0 stay untouched, the walls).
-void accelerations(const double* __restrict f, double* __restrict a, const double* __restrict im, std::size_t lo,
-                   std::size_t hi) {
-  for (std::size_t p = lo; p < hi; ++p) a[p] = im[p - 1] * (f[p - 1] - f[p]);
+// a_p = F/m of bead p − 1 (padded: a[0] = a[n+1] = 0 stay untouched, the walls). On-site springs
+// (`ks`, null when the chain has none) add −k u to F, as in detail::correct_and_drift.
+void accelerations(const double* __restrict f, double* __restrict a, const double* __restrict im,
+                   const double* __restrict ks, const double* __restrict u, std::size_t lo, std::size_t hi) {
+  if (ks)
+    for (std::size_t p = lo; p < hi; ++p) a[p] = im[p - 1] * (f[p - 1] - f[p] - ks[p - 1] * u[p]);
+  else
+    for (std::size_t p = lo; p < hi; ++p) a[p] = im[p - 1] * (f[p - 1] - f[p]);
 }
 
 // The corrector's velocity change c (1/m) [K_{p−1} (a_{p−1} − a_p) − K_p (a_p − a_{p+1})] of bead
-// p − 1 (docs/physics.md, "Nonlinear dynamics"; the expression of detail::correct_and_drift).
+// p − 1 (docs/physics.md, "Nonlinear dynamics"; the expression of detail::correct_and_drift), with
+// − k a_p from on-site springs (their −k on the Hessian's diagonal).
 void corrector_change(const double* __restrict stiff, const double* __restrict a, double* __restrict dv,
-                      const double* __restrict im, std::size_t lo, std::size_t hi, double c) {
-  for (std::size_t p = lo; p < hi; ++p)
-    dv[p] = c * im[p - 1] * (stiff[p - 1] * (a[p - 1] - a[p]) - stiff[p] * (a[p] - a[p + 1]));
+                      const double* __restrict im, const double* __restrict ks, std::size_t lo, std::size_t hi,
+                      double c) {
+  if (ks)
+    for (std::size_t p = lo; p < hi; ++p)
+      dv[p] = c * im[p - 1] * (stiff[p - 1] * (a[p - 1] - a[p]) - stiff[p] * (a[p] - a[p + 1]) - ks[p - 1] * a[p]);
+  else
+    for (std::size_t p = lo; p < hi; ++p)
+      dv[p] = c * im[p - 1] * (stiff[p - 1] * (a[p - 1] - a[p]) - stiff[p] * (a[p] - a[p + 1]));
 }
 
 void add(double* __restrict v, const double* __restrict dv, std::size_t lo, std::size_t hi) {
@@ -273,9 +283,9 @@ class DampedPropagator final : public Propagator {
       }
       if (g != 0) {
         const auto [b0, e0] = range(0, 1);
-        accelerations(f_.data(), ap_.data(), im_.data(), b0, e0);
+        accelerations(f_.data(), ap_.data(), im_.data(), view.onsite, u, b0, e0);
         const auto [b1, e1] = range(1, 1);
-        corrector_change(stiff_.data(), ap_.data(), dv, im_.data(), b1, e1, g);
+        corrector_change(stiff_.data(), ap_.data(), dv, im_.data(), view.onsite, b1, e1, g);
         if (end) add(v, dv, b1, e1);
       }
       {
@@ -320,8 +330,6 @@ std::unique_ptr<Propagator> make_damped_propagator(const ForceLaw& law, const Ch
   validate_propagation(chain, time_step, initial);
   validate(damping);
   if (!damping.any()) return make_splitting_propagator(law, chain, scheme, time_step, initial, ActiveWindow{false});
-  if (grounded(law))  // the boundary kernels here carry no on-site term; refuse rather than drop it
-    throw InvalidInput("quasi", " s1: damping is not available on a chain with on-site springs");
   return std::visit(
       [&](const auto& l) -> std::unique_ptr<Propagator> {
         using Law = std::decay_t<decltype(l)>;
