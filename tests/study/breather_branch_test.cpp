@@ -9,6 +9,7 @@
 #include <vector>
 
 #include <gtest/gtest.h>
+#include <hdf5.h>
 
 #include "granular/dynamics/periodic_orbit.hpp"
 #include "granular/dynamics/propagator.hpp"
@@ -17,6 +18,7 @@
 #include "granular/linear/dynamical_matrix.hpp"
 #include "granular/linear/spectrum.hpp"
 #include "granular/study/breather_branch.hpp"
+#include "scratch.hpp"
 
 namespace granular {
 namespace {
@@ -349,6 +351,39 @@ TEST(BreatherBranch, UnstableBreatherDepartsAtTheFloquetRate) {
   std::printf("max |mu| %.4f; measured growth per period %.4f\n", worst->floquet.max_modulus, measured);
   EXPECT_NEAR(measured, worst->floquet.max_modulus, 0.02 * worst->floquet.max_modulus);
   EXPECT_LT(d20, 1e-3 * worst->amplitude);  // still linear
+}
+
+// The HDF5 file holds what the branch holds: profiles and multipliers, point by point.
+TEST(BreatherBranch, Hdf5FileHoldsTheProfilesAndMultipliers) {
+  auto c = impurity_config();
+  c.max_points = 2;
+  const BreatherBranch branch = continue_breather(c);
+  ASSERT_EQ(branch.points.size(), 2u);
+  const std::string path = testing::scratch_path("breather_branch_test", "branch.h5");
+  write_breather_hdf5(path, branch);
+  const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  ASSERT_GE(file, 0);
+  const auto read = [&](const char* name, std::size_t size) {
+    std::vector<double> data(size);
+    const hid_t set = H5Dopen2(file, name, H5P_DEFAULT);
+    EXPECT_GE(H5Dread(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()), 0) << name;
+    H5Dclose(set);
+    return data;
+  };
+  const std::size_t n = 21;
+  const auto x0 = read("x0", 2 * n), re = read("multipliers_real", 4 * n), im = read("multipliers_imag", 4 * n);
+  const auto open = read("open_fraction", 2 * (n + 1)), freq = read("freq_khz", 2);
+  H5Fclose(file);
+  for (std::size_t j = 0; j < 2; ++j) {
+    const BreatherPoint& p = branch.points[j];
+    EXPECT_EQ(freq[j], p.freq_khz);
+    for (std::size_t i = 0; i < n; ++i) EXPECT_EQ(x0[j * n + i], p.x0[i]);
+    for (std::size_t i = 0; i < 2 * n; ++i) {
+      EXPECT_EQ(re[j * 2 * n + i], p.floquet.multipliers[i].real());
+      EXPECT_EQ(im[j * 2 * n + i], p.floquet.multipliers[i].imag());
+    }
+    for (std::size_t k = 0; k <= n; ++k) EXPECT_EQ(open[j * (n + 1) + k], p.open_fraction[k]);
+  }
 }
 
 TEST(BreatherBranch, BadInputIsRefusedBeforeAnyWork) {

@@ -12,6 +12,7 @@
 #include "granular/dynamics/observables.hpp"
 #include "granular/dynamics/propagator.hpp"
 #include "granular/error.hpp"
+#include "granular/io/hdf5_file.hpp"
 #include "granular/linear/dynamical_matrix.hpp"
 #include "granular/linear/spectrum.hpp"
 #include "granular/number_format.hpp"
@@ -285,6 +286,34 @@ void write_breather_csv(std::ostream& out, const BreatherBranch& branch) {
         << format_number(p.amplitude) << ',' << p.centre + 1 << ',' << format_number(p.floquet.max_modulus) << ','
         << (p.floquet.stable ? 1 : 0) << ',' << p.iterations << ',' << format_number(p.residual) << ','
         << format_number(p.max_open_fraction) << '\n';
+}
+
+void write_breather_hdf5(const std::string& path, const BreatherBranch& b) {
+  const std::size_t rows = b.points.size(), n = rows > 0 ? b.points.front().x0.size() : 0;
+  std::vector<double> freq, omega, energy, x0, re, im, open;
+  for (const auto& p : b.points) {
+    freq.push_back(p.freq_khz);
+    omega.push_back(p.omega);
+    energy.push_back(p.energy);
+    x0.insert(x0.end(), p.x0.begin(), p.x0.end());
+    for (const auto& mu : p.floquet.multipliers) re.push_back(mu.real()), im.push_back(mu.imag());
+    open.insert(open.end(), p.open_fraction.begin(), p.open_fraction.end());
+  }
+  Hdf5File file(path);
+  file.write("freq_khz", freq);
+  file.write("omega_rad_s", omega);
+  file.write("energy_J", energy);
+  file.write("x0", x0.data(), rows, n);
+  file.write("multipliers_real", re.data(), rows, 2 * n);
+  file.write("multipliers_imag", im.data(), rows, 2 * n);
+  file.write("open_fraction", open.data(), rows, n + 1);
+  file.write("linear_khz", b.linear_khz);
+  file.attribute("layout",
+                 "row j = point j of the branch (as in the CSV); x0: displacements [m] at the turning point "
+                 "(velocities 0); multipliers: the 2N Floquet multipliers, by modulus descending; open_fraction: "
+                 "per bond 0..N (walls included), the fraction of the period it is open");
+  file.attribute("stop_reason", b.stop_reason);
+  file.commit();
 }
 
 nlohmann::json describe_breather_branch(const BreatherBranchConfig& c, const BreatherBranch& b) {

@@ -102,6 +102,12 @@ BreatherBranch continue_breather(const BreatherBranchConfig& config,
 /// residual,max_open_fraction (one row per point).
 void write_breather_csv(std::ostream& out, const BreatherBranch& branch);
 
+/// HDF5 of the branch (one row per point): freq_khz, omega_rad_s, energy_J; x0 (points × N, the
+/// turning-point profiles [m]); multipliers_real and multipliers_imag (points × 2N, by |μ|
+/// descending); open_fraction (points × (N+1), per bond); linear_khz (N). Appears whole or not at
+/// all; throws IoError.
+void write_breather_hdf5(const std::string& path, const BreatherBranch& branch);
+
 /// The JSON entries of a branch run: parameters (chain, seed, continuation, shooting) and results
 /// (stop reason, points' Newton histories and multiplier checks).
 nlohmann::json describe_breather_branch(const BreatherBranchConfig& config, const BreatherBranch& branch);
