@@ -5,7 +5,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <numbers>
+#include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -351,6 +353,51 @@ TEST(BreatherBranch, UnstableBreatherDepartsAtTheFloquetRate) {
   std::printf("max |mu| %.4f; measured growth per period %.4f\n", worst->floquet.max_modulus, measured);
   EXPECT_NEAR(measured, worst->floquet.max_modulus, 0.02 * worst->floquet.max_modulus);
   EXPECT_LT(d20, 1e-3 * worst->amplitude);  // still linear
+}
+
+// Seeded from a state (here a branch point's profile, distorted by 1 %) at its frequency, Newton
+// lands on that point, and the branch continues from it.
+TEST(BreatherBranch, SeedProfileLandsOnTheOrbitNearIt) {
+  auto c = impurity_config();
+  c.start_offset = 2e-2;
+  c.max_points = 2;
+  const BreatherPoint p = continue_breather(c).points.back();
+  BreatherBranchConfig from = impurity_config();
+  from.mode = 0;
+  from.seed_profile = p.x0;
+  for (std::size_t i = 0; i < p.x0.size(); ++i)
+    from.seed_profile[i] *= 1 + 0.01 * std::sin(1.7 * static_cast<double>(i) + 0.5);
+  from.start_khz = p.freq_khz;
+  from.max_points = 2;
+  const BreatherBranch branch = continue_breather(from);
+  ASSERT_EQ(branch.points.size(), 2u) << branch.stop_reason;
+  EXPECT_EQ(branch.seed_mode, 0);
+  EXPECT_EQ(branch.points[0].freq_khz, p.freq_khz);
+  EXPECT_LT(profile_difference(branch.points[0].x0, p.x0), 1e-6);
+  EXPECT_NEAR(norm2_of(branch.points[0].x0), norm2_of(p.x0), 1e-6 * norm2_of(p.x0));
+  EXPECT_LT(branch.points[1].freq_khz, p.freq_khz);  // on, down the branch
+  EXPECT_LE(branch.points[1].residual, 1e-10);
+  // What a seed profile needs, named.
+  const auto parameter_of = [](const BreatherBranchConfig& bad) {
+    try {
+      validate(bad);
+    } catch (const InvalidInput& e) {
+      return e.parameter();
+    }
+    return std::string("none");
+  };
+  BreatherBranchConfig bad = from;
+  bad.seed_profile.pop_back();
+  EXPECT_EQ(parameter_of(bad), "seed_profile");
+  bad = from;
+  bad.start_khz = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_EQ(parameter_of(bad), "start_khz");
+  bad = from;
+  bad.mode = 3;
+  EXPECT_EQ(parameter_of(bad), "seed_profile");
+  bad = from;
+  bad.seed_profile.assign(bad.seed_profile.size(), 0.0);
+  EXPECT_EQ(parameter_of(bad), "seed_profile");
 }
 
 // The HDF5 file holds what the branch holds: profiles and multipliers, point by point.

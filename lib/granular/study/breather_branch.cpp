@@ -79,6 +79,18 @@ void validate(const BreatherBranchConfig& c) {
   for (const auto& [name, v] :
        {std::pair{"near_khz", c.near_khz}, {"start_khz", c.start_khz}, {"target_khz", c.target_khz}})
     if (!std::isnan(v) && !(v > 0 && std::isfinite(v))) throw InvalidInput(name, ": must be finite and > 0 [kHz]");
+  if (!c.seed_profile.empty()) {
+    if (c.seed_profile.size() != static_cast<std::size_t>(n))
+      throw InvalidInput("seed_profile", ": " + std::to_string(c.seed_profile.size()) +
+                                             " displacements for a chain of N = " + std::to_string(n));
+    double norm = 0;
+    for (double v : c.seed_profile) norm += v * v;
+    if (!(norm > 0) || !std::isfinite(norm))
+      throw InvalidInput("seed_profile", ": must be finite and not all zero (zero is the rest state)");
+    if (std::isnan(c.start_khz)) throw InvalidInput("start_khz", ": required with a seed profile (its frequency)");
+    if (c.mode != 0 || !std::isnan(c.near_khz))
+      throw InvalidInput("seed_profile", ": give either a seed profile or a seed mode (mode, near_khz), not both");
+  }
   if (c.mode == 0 && std::isnan(c.near_khz) && std::isnan(c.start_khz))
     throw InvalidInput("mode", ": no seed: give a mode number, a frequency to seed from (near_khz) or start_khz");
   if (!(c.step_khz >= 0) || !std::isfinite(c.step_khz)) throw InvalidInput("step_khz", ": must be finite and >= 0");
@@ -127,66 +139,79 @@ BreatherBranch continue_breather(const BreatherBranchConfig& c,
   const Spectrum modes = spectrum(d, all_modes(), {.vectors = true});
   branch.linear_khz = modes.freq_khz;
 
-  // The seed mode.
-  std::size_t j = 0;
-  if (c.mode > 0) {
-    j = static_cast<std::size_t>(c.mode - 1);
-  } else {
-    const double near = std::isnan(c.near_khz) ? c.start_khz : c.near_khz;
-    if (std::isnan(c.near_khz) && inside_linear_band(branch.linear_khz, c.start_khz))
-      throw InvalidInput("start_khz", " " + format_number(c.start_khz) +
-                                          ": inside a linear band of the chain, where no breather is isolated; "
-                                          "give a seed (mode or near_khz)");
-    for (std::size_t k = 1; k < n; ++k)
-      if (std::abs(modes.freq_khz[k] - near) < std::abs(modes.freq_khz[j] - near)) j = k;
-  }
-  branch.seed_mode = static_cast<long>(j + 1);
-  branch.seed_khz = modes.freq_khz[j];
-  std::vector<double> phi(n);
-  double peak = 0;
-  for (std::size_t i = 0; i < n; ++i) {
-    phi[i] = modes.vector(j)[i] * d.inverse_sqrt_mass[i];
-    peak = std::max(peak, std::abs(phi[i]));
-  }
-  for (double& x : phi) x /= peak;
-
-  const double down = !std::isnan(c.target_khz) ? (c.target_khz < branch.seed_khz ? 1.0 : -1.0) : 1.0;
-  // Start off the mode by start_offset, but by at most a quarter of the way to the next mode on
-  // that side (near a band edge the modes crowd, and passing one is a resonance).
-  // Near a band edge the neighbours on the far side matter too: the seed's nonlinear shift must
-  // stay well below their distance, or the mode's shape is a poor guess.
-  double shift = c.start_offset * branch.seed_khz;
-  if (j > 0) shift = std::min(shift, (down > 0 ? 0.25 : 0.1) * (branch.seed_khz - modes.freq_khz[j - 1]));
-  if (j + 1 < n) shift = std::min(shift, (down < 0 ? 0.25 : 0.1) * (modes.freq_khz[j + 1] - branch.seed_khz));
-  const double start_khz = std::isnan(c.start_khz) ? branch.seed_khz - down * shift : c.start_khz;
-  double omega = to_omega(start_khz);
-  const std::size_t steps = c.shooting.steps_per_period > 0 ? c.shooting.steps_per_period : shooting_steps(chain, omega);
-  ShootingConfig shooting = c.shooting;
-  shooting.steps_per_period = steps;
-  branch.steps_per_period = steps;
-
-  // The seed's amplitude: the smallest a at which the residual along the mode changes sign,
-  // bracketed by doubling from 1e-6 of the smallest static overlap and refined by bisection.
-  const double overlap = *std::min_element(chain.overlap.begin(), chain.overlap.end());
-  double a_lo = 1e-6 * overlap, g_lo = mode_residual(law, chain, shooting, steps, omega, phi, a_lo);
-  double a_hi = a_lo, g_hi = g_lo;
-  while (g_hi * g_lo > 0 && a_hi < 10 * overlap) {
-    a_lo = a_hi, g_lo = g_hi;
-    a_hi *= 2;
-    g_hi = mode_residual(law, chain, shooting, steps, omega, phi, a_hi);
-  }
-  if (g_hi * g_lo > 0)
-    throw NumericalError("breathers: no periodic orbit of the shape of mode " + std::to_string(j + 1) + " (" +
-                         format_number(branch.seed_khz) + " kHz) at " + format_number(start_khz) +
-                         " kHz up to amplitude 10 static overlaps (the nonlinearity shifts it the other way?)");
-  for (int i = 0; i < 30 && a_hi - a_lo > 1e-4 * a_hi; ++i) {
-    const double a = (a_lo + a_hi) / 2, g = mode_residual(law, chain, shooting, steps, omega, phi, a);
-    (g * g_lo > 0 ? a_lo : a_hi) = a;
-    if (g * g_lo > 0) g_lo = g;
-  }
-  branch.seed_amplitude = (a_lo + a_hi) / 2;
+  double down = 1, start_khz = c.start_khz, omega = 0;
   std::vector<double> x(n);
-  for (std::size_t i = 0; i < n; ++i) x[i] = branch.seed_amplitude * phi[i];
+  std::size_t steps = 0;
+  ShootingConfig shooting = c.shooting;
+  if (!c.seed_profile.empty()) {
+    // The user's state at rest is Newton's first guess at start_khz.
+    branch.seed_khz = start_khz;
+    if (!std::isnan(c.target_khz)) down = c.target_khz < start_khz ? 1.0 : -1.0;
+    x = c.seed_profile;
+    for (double v : x) branch.seed_amplitude = std::max(branch.seed_amplitude, std::abs(v));
+    omega = to_omega(start_khz);
+    steps = c.shooting.steps_per_period > 0 ? c.shooting.steps_per_period : shooting_steps(chain, omega);
+    shooting.steps_per_period = steps;
+  } else {
+    // The seed mode.
+    std::size_t j = 0;
+    if (c.mode > 0) {
+      j = static_cast<std::size_t>(c.mode - 1);
+    } else {
+      const double near = std::isnan(c.near_khz) ? c.start_khz : c.near_khz;
+      if (std::isnan(c.near_khz) && inside_linear_band(branch.linear_khz, c.start_khz))
+        throw InvalidInput("start_khz", " " + format_number(c.start_khz) +
+                                            ": inside a linear band of the chain, where no breather is isolated; "
+                                            "give a seed (mode or near_khz)");
+      for (std::size_t k = 1; k < n; ++k)
+        if (std::abs(modes.freq_khz[k] - near) < std::abs(modes.freq_khz[j] - near)) j = k;
+    }
+    branch.seed_mode = static_cast<long>(j + 1);
+    branch.seed_khz = modes.freq_khz[j];
+    std::vector<double> phi(n);
+    double peak = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      phi[i] = modes.vector(j)[i] * d.inverse_sqrt_mass[i];
+      peak = std::max(peak, std::abs(phi[i]));
+    }
+    for (double& x : phi) x /= peak;
+
+    down = !std::isnan(c.target_khz) ? (c.target_khz < branch.seed_khz ? 1.0 : -1.0) : 1.0;
+    // Start off the mode by start_offset, but by at most a quarter of the way to the next mode on
+    // that side (near a band edge the modes crowd, and passing one is a resonance).
+    // Near a band edge the neighbours on the far side matter too: the seed's nonlinear shift must
+    // stay well below their distance, or the mode's shape is a poor guess.
+    double shift = c.start_offset * branch.seed_khz;
+    if (j > 0) shift = std::min(shift, (down > 0 ? 0.25 : 0.1) * (branch.seed_khz - modes.freq_khz[j - 1]));
+    if (j + 1 < n) shift = std::min(shift, (down < 0 ? 0.25 : 0.1) * (modes.freq_khz[j + 1] - branch.seed_khz));
+    start_khz = std::isnan(c.start_khz) ? branch.seed_khz - down * shift : c.start_khz;
+    omega = to_omega(start_khz);
+    steps = c.shooting.steps_per_period > 0 ? c.shooting.steps_per_period : shooting_steps(chain, omega);
+    shooting.steps_per_period = steps;
+
+    // The seed's amplitude: the smallest a at which the residual along the mode changes sign,
+    // bracketed by doubling from 1e-6 of the smallest static overlap and refined by bisection.
+    const double overlap = *std::min_element(chain.overlap.begin(), chain.overlap.end());
+    double a_lo = 1e-6 * overlap, g_lo = mode_residual(law, chain, shooting, steps, omega, phi, a_lo);
+    double a_hi = a_lo, g_hi = g_lo;
+    while (g_hi * g_lo > 0 && a_hi < 10 * overlap) {
+      a_lo = a_hi, g_lo = g_hi;
+      a_hi *= 2;
+      g_hi = mode_residual(law, chain, shooting, steps, omega, phi, a_hi);
+    }
+    if (g_hi * g_lo > 0)
+      throw NumericalError("breathers: no periodic orbit of the shape of mode " + std::to_string(j + 1) + " (" +
+                           format_number(branch.seed_khz) + " kHz) at " + format_number(start_khz) +
+                           " kHz up to amplitude 10 static overlaps (the nonlinearity shifts it the other way?)");
+    for (int i = 0; i < 30 && a_hi - a_lo > 1e-4 * a_hi; ++i) {
+      const double a = (a_lo + a_hi) / 2, g = mode_residual(law, chain, shooting, steps, omega, phi, a);
+      (g * g_lo > 0 ? a_lo : a_hi) = a;
+      if (g * g_lo > 0) g_lo = g;
+    }
+    branch.seed_amplitude = (a_lo + a_hi) / 2;
+    for (std::size_t i = 0; i < n; ++i) x[i] = branch.seed_amplitude * phi[i];
+  }
+  branch.steps_per_period = steps;
   PeriodicOrbit orbit = find_periodic_orbit(law, chain, omega, x, shooting);
   branch.points.push_back(make_point(law, chain, orbit, c.stability_tolerance));
   if (progress) progress(branch.points.back());
@@ -196,7 +221,10 @@ BreatherBranch continue_breather(const BreatherBranchConfig& c,
   // secant, in units of the last point's ‖x0‖ and ω_b), which passes folds in ω_b.
   const double target = c.target_khz;
   // Default steps: from the start's distance to the seed, growing to 2 % of the seed frequency.
-  const double first_step = c.step_khz > 0 ? c.step_khz : std::abs(branch.seed_khz - start_khz);
+  // From a seed profile: 0.1 % of the start frequency.
+  const double first_step = c.step_khz > 0           ? c.step_khz
+                            : c.seed_profile.empty() ? std::abs(branch.seed_khz - start_khz)
+                                                     : 1e-3 * start_khz;
   double step = -down * first_step;  // kHz, signed
   const double min_step = 1e-4 * first_step, max_step = c.step_khz > 0 ? 8 * first_step : 0.02 * branch.seed_khz;
   double arc = 0, min_arc = 0;  // the arclength step (scaled), set from the first secant
@@ -321,6 +349,8 @@ nlohmann::json describe_breather_branch(const BreatherBranchConfig& c, const Bre
   j["chain"] = describe(c.chain, c.chain.drawn() ? std::optional<std::uint64_t>(c.realization) : std::nullopt);
   j["force_law"] = to_string(c.law);
   j["seed"] = {{"mode", b.seed_mode}, {"linear_khz", b.seed_khz}, {"amplitude_m", b.seed_amplitude}};
+  if (b.seed_mode == 0)
+    j["seed"] = {{"profile", "given"}, {"start_khz", b.seed_khz}, {"amplitude_m", b.seed_amplitude}};
   j["continuation"] = {{"method",
                         c.continuation == Continuation::natural
                             ? "natural-parameter in frequency, secant predictor, step halving/growth"

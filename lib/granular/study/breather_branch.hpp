@@ -47,6 +47,9 @@ struct BreatherBranchConfig {
   /// near_khz the seed is the mode nearest start_khz, which must then lie outside the linear bands.
   double start_khz = std::numeric_limits<double>::quiet_NaN();
   double start_offset = 1e-3;
+  /// Seed from a state instead of a mode: N displacements [m] of a state at rest, Newton's first
+  /// guess at start_khz (then required; mode and near_khz unset). Empty: seed from a mode.
+  std::vector<double> seed_profile{};
   double target_khz = std::numeric_limits<double>::quiet_NaN();  ///< stop here [kHz]; NaN: no target
   double step_khz =
       0;  ///< first step [kHz] (sign ignored), growing to 8×; 0: the start's distance from the seed, growing to 2 % of it
@@ -58,7 +61,7 @@ struct BreatherBranchConfig {
 };
 
 /// Throws InvalidInput naming the field (mode, near_khz, start_khz, target_khz, step_khz,
-/// max_points, N, F0) before any work.
+/// max_points, N, F0, seed_profile) before any work.
 void validate(const BreatherBranchConfig& config);
 
 struct BreatherPoint {
@@ -77,8 +80,8 @@ struct BreatherPoint {
 };
 
 struct BreatherBranch {
-  long seed_mode = 0;                ///< 1…N
-  double seed_khz = 0;               ///< its linear frequency [kHz]
+  long seed_mode = 0;                ///< 1…N; 0: seeded from a profile
+  double seed_khz = 0;               ///< its linear frequency [kHz] (a profile's: start_khz)
   double seed_amplitude = 0;         ///< amplitude [m] of the first point's seed
   std::size_t steps_per_period = 0;  ///< of the first point
   std::vector<double> linear_khz;    ///< every linear mode [kHz], ascending
