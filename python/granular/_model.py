@@ -89,7 +89,23 @@ def from_radii(radii, F0=10.0, material=steel, walls="flat"):
     """A chain of beads of given radii [m] (any 1-D array-like, each finite and > 0) of one material under
     precompression F0 [N], between walls of the same material: "flat", or "sphere" (fixed spheres of the end beads'
     radii)."""
-    return _core._from_radii(radii, F0, material, walls)
+    recipe = _core.ChainRecipe()
+    recipe.given_radii = _core._vector(radii, "radii")
+    if len(recipe.given_radii) < 2:
+        raise ValueError(f"radii: {len(recipe.given_radii)} beads; a chain needs at least 2")
+    recipe.F0, recipe.material, recipe.walls = F0, material, walls
+    return _core._chain(recipe, 0)
+
+
+def _quasi(kind, modulation, ratio, phase, angle, k0):
+    """A _core.Quasiperiodic of granular.quasiperiodic's keywords."""
+    q = _core.Quasiperiodic()
+    q.kind = kind
+    q.modulation = modulation
+    if ratio is not None:  # None: the default (the golden mean)
+        q.ratio = ratio if isinstance(ratio, str) else repr(float(ratio))
+    q.phase, q.angle, q.k0 = phase, angle, k0
+    return q
 
 
 def quasiperiodic(kind="s2", N=100, modulation=0.0, ratio="golden", phase=None, angle=45.0, k0=4.0, seed=1,
@@ -99,8 +115,13 @@ def quasiperiodic(kind="s2", N=100, modulation=0.0, ratio="golden", phase=None, 
     'cylinders' (crossing angles angle*(...) [degrees] of cylinders of radius R1, length 2 R1); the tools' --quasi.
     |modulation| < 1; ratio > 0: 'golden', 'p/q' or a number; phase [rad], or None to draw it uniformly in [0, 2 pi)
     from (seed, realization). F0 [N], R1 [m]. Raises ValueError naming the keyword when a value is out of range."""
-    return _core._quasiperiodic_chain(kind, N, modulation, ratio if isinstance(ratio, str) else repr(float(ratio)),
-                                      phase, angle, k0, seed, realization, F0, R1, material)
+    recipe = _core.ChainRecipe()
+    recipe.R1 = R1
+    recipe.N = _core._size(N, "N", 2, 100000000)
+    recipe.F0, recipe.material = F0, material
+    recipe.seed = _core._size(seed, "seed")
+    recipe.quasi = _quasi(kind, modulation, ratio, phase, angle, k0)
+    return _core._chain(recipe, _core._size(realization, "realization"))
 
 
 def configuration(disorder="A", q=0.5, N=100, seed=1, realization=0):

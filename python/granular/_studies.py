@@ -8,6 +8,7 @@ import numpy as np
 
 from . import _core
 from ._dynamics import _run, _set_quasi
+from ._model import _quasi
 
 _MAX = 100000000
 
@@ -138,9 +139,18 @@ def butterfly(kind="s1", *, ratios="0.005:0.995:0.005", N=100, modulation=0.0, p
     on boxes from largest_box x its extent down to smallest_box mean level spacings (box_sizes sizes). kind,
     modulation, phase, angle, k0, seed, realization, N, F0, R1: as granular.quasiperiodic. The same numbers as
     the butterfly tool for the same options. Returns a granular.Butterfly."""
-    values = _core._butterfly(kind, _core._numbers(ratios, "ratios", 0.005), N, modulation, phase, angle, k0, seed,
-                              realization, F0, R1, largest_box, smallest_box, box_sizes,
-                              _run(threads, progress=progress))
+    c = _core.ButterflyConfig()
+    c.ratios = _core._numbers(ratios, "ratios", 0.005)
+    recipe = _core.ChainRecipe()
+    recipe.N = _core._size(N, "N", 2, _MAX)
+    recipe.F0, recipe.R1 = F0, R1
+    recipe.seed = _core._size(seed, "seed")
+    recipe.quasi = _quasi(kind, modulation, None, phase, angle, k0)  # each ratio of `ratios` in turn
+    c.chain = recipe
+    c.realization = _core._size(realization, "realization")
+    c.largest_box, c.smallest_box_spacings = largest_box, smallest_box
+    c.box_sizes = _core._size(box_sizes, "box_sizes", 2)
+    values = _core._butterfly(c, _run(threads, progress=progress))
     return Butterfly(values)
 
 

@@ -67,16 +67,6 @@ PyChain py_chain(ChainRecipe recipe, std::uint64_t realization, const std::strin
   return c;
 }
 
-Quasiperiodic quasi_of(const std::string& kind, double modulation, const std::string& ratio, const py::object& phase,
-                       double angle, double k0) {
-  return Quasiperiodic{.kind = parse_quasi_kind(kind),
-                       .modulation = modulation,
-                       .ratio = parse_ratio(ratio),
-                       .phase = phase.is_none() ? std::nullopt : std::optional<double>(phase.cast<double>()),
-                       .angle = angle,
-                       .k0 = k0};
-}
-
 void bind_model(py::module_& m) {
   m.attr("paper_r1") = paper_r1;
   m.attr("flat_wall") = flat_wall;
@@ -94,6 +84,15 @@ void bind_model(py::module_& m) {
                ", density=" + format_number(x.density) + ")";
       });
   m.attr("steel") = steel;
+
+  using Q = Quasiperiodic;  // granular.quasiperiodic's keywords (the tools' --quasi)
+  config_class(m, "Quasiperiodic", "modulation phase angle k0", &Q::modulation, &Q::phase, &Q::angle, &Q::k0)
+      .def_property(
+          "kind", [](const Q& q) { return to_string(q.kind); },
+          [](Q& q, const std::string& word) { q.kind = parse_quasi_kind(word); })
+      .def_property(
+          "ratio", [](const Q& q) { return q.ratio; },
+          [](Q& q, const std::string& text) { q.ratio = parse_ratio(text); });
 
   py::class_<PyChain>(m, "Chain")
       .def_property_readonly("N", [](const PyChain& c) { return c.chain.size(); })
@@ -143,22 +142,8 @@ void bind_model(py::module_& m) {
     r.given_types = std::move(t);
     return py_chain(r, 0);
   });
-  m.def("_from_radii", [](const py::object& radii, double F0, const Material& material, const std::string& walls) {
-    std::vector<double> r = double_vector(radii, "radii");
-    if (r.size() < 2) bad_value("radii", ": " + std::to_string(r.size()) + " beads; a chain needs at least 2");
-    return py_chain({.given_radii = std::move(r), .F0 = F0, .material = material, .walls = parse_wall_shape(walls)}, 0);
-  });
-  m.def("_quasiperiodic_chain", [](const std::string& kind, long long N, double modulation, const std::string& ratio,
-                                   const py::object& phase, double angle, double k0, long long seed,
-                                   long long realization, double F0, double R1, const Material& material) {
-    ChainRecipe r{.R1 = R1,
-                  .N = checked_size(N, "N", 2, 100000000),
-                  .F0 = F0,
-                  .material = material,
-                  .seed = checked_size(seed, "seed")};
-    r.quasi = quasi_of(kind, modulation, ratio, phase, angle, k0);
-    return py_chain(r, checked_size(realization, "realization"));
-  });
+  // A chain of a recipe filled in granular/_model.py (given radii, a quasiperiodic chain).
+  m.def("_chain", [](const ChainRecipe& recipe, std::uint64_t realization) { return py_chain(recipe, realization); });
   m.def("_configuration", [](const std::string& disorder, double q, long long N, long long seed, long long realization) {
     validate_probability(q);
     auto t = realization_configuration(disorder_of(disorder), q, checked_size(N, "N", 2, 100000000),

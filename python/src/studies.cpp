@@ -76,21 +76,12 @@ py::dict ipr_map(IprMapConfig c, const std::string& solver, const py::object& ne
   nlohmann::json meta = metadata_head("ipr_map");
   meta.update(describe_ipr_map(c, cells, {solver, method_name, resolve_threads(thread_request)}));
   py::list out_cells;
-  for (auto& cell : cells) {
-    py::dict d;
-    d["q"] = cell.q, d["xi"] = cell.xi;
-    d["freq_khz"] = to_numpy(std::move(cell.freq_khz)), d["ipr"] = to_numpy(std::move(cell.ipr));
-    d["mode"] = to_numpy(std::vector<long long>(cell.mode.begin(), cell.mode.end()));
-    d["realization"] = to_numpy(std::vector<long long>(cell.realization.begin(), cell.realization.end()));
-    d["bin_modes"] = to_numpy(std::vector<long long>(cell.bin_modes.begin(), cell.bin_modes.end()));
-    d["bin_ipr"] = to_numpy(std::move(cell.bin_ipr));
-    out_cells.append(d);
-  }
-  py::dict out;
-  out["disorder"] = to_string(c.chain.disorder), out["N"] = c.chain.N, out["bin_khz"] = c.bin_khz;
-  out["q"] = to_numpy(c.q_values), out["xi"] = to_numpy(c.xi_values);
-  out["selection"] = c.selection.kind != ModeSelection::Kind::all;
-  out["cells"] = out_cells;
+  for (auto& cell : cells)
+    out_cells.append(fields("q xi freq_khz ipr mode realization bin_modes bin_ipr", cell.q, cell.xi,
+                            std::move(cell.freq_khz), std::move(cell.ipr), signed_of(cell.mode),
+                            signed_of(cell.realization), signed_of(cell.bin_modes), std::move(cell.bin_ipr)));
+  py::dict out = fields("disorder N bin_khz q xi selection cells", to_string(c.chain.disorder), c.chain.N, c.bin_khz,
+                        c.q_values, c.xi_values, c.selection.kind != ModeSelection::Kind::all, out_cells);
   out["metadata"] = to_python(meta);
   return out;
 }
@@ -140,14 +131,11 @@ py::dict localization(const py::object& chain, const ChainRecipe& recipe, std::u
                                     py::isinstance<py::str>(f) ? nlohmann::json(f.cast<std::string>())
                                                                : nlohmann::json(config.frequency_khz),
                                     resolve_threads(thread_request), steel));
-  py::dict out;
-  out["freq_khz"] = to_numpy(std::move(scan.frequency_khz)), out["lyapunov"] = to_numpy(std::move(scan.lyapunov));
-  out["lyapunov_err"] = to_numpy(std::move(scan.lyapunov_error));
-  out["loc_length"] = to_numpy(std::move(scan.localization_length));
-  out["resolved"] = to_numpy(std::vector<std::uint8_t>(scan.resolved.begin(), scan.resolved.end()));
-  out["modes_below"] = to_numpy(std::vector<long long>(scan.modes_below.begin(), scan.modes_below.end()));
-  out["idos"] = to_numpy(std::move(scan.idos)), out["dos"] = to_numpy(std::move(scan.dos));
-  out["N"] = scan.beads;
+  py::dict out =
+      fields("freq_khz lyapunov lyapunov_err loc_length resolved modes_below idos dos N", std::move(scan.frequency_khz),
+             std::move(scan.lyapunov), std::move(scan.lyapunov_error), std::move(scan.localization_length),
+             std::vector<std::uint8_t>(scan.resolved.begin(), scan.resolved.end()), signed_of(scan.modes_below),
+             std::move(scan.idos), std::move(scan.dos), scan.beads);
   out["metadata"] = to_python(meta);
   return out;
 }
@@ -160,31 +148,13 @@ py::dict correlations(const CorrelationConfig& c, const PyRun& options) {
            [&](const LongRun& control) { result = correlation_study(c, run_of(options, control)); });
   nlohmann::json meta = metadata_head("correlations");
   meta.update(describe_correlations(c, result));
-  py::dict out;
-  out["rho_mean"] = to_numpy(std::move(result.mean)), out["rho_std"] = to_numpy(std::move(result.deviation));
-  out["rho_theory"] = to_numpy(std::move(result.theory)), out["used"] = result.used;
+  py::dict out = fields("rho_mean rho_std rho_theory used", std::move(result.mean), std::move(result.deviation),
+                        std::move(result.theory), result.used);
   out["metadata"] = to_python(meta);
   return out;
 }
 
-py::dict butterfly(const std::string& kind, const std::vector<double>& ratios, long long N, double modulation,
-                   const py::object& phase, double angle, double k0, long long seed, long long realization, double F0,
-                   double R1, double largest_box, double smallest_box, long long box_sizes, const PyRun& options) {
-  ButterflyConfig c;
-  c.chain.N = checked_size(N, "N", 2, 100000000);
-  c.chain.F0 = F0;
-  c.chain.R1 = R1;
-  c.chain.seed = checked_size(seed, "seed");
-  c.chain.quasi = Quasiperiodic{.kind = parse_quasi_kind(kind),
-                                .modulation = modulation,
-                                .phase = phase.is_none() ? std::nullopt : std::optional<double>(phase.cast<double>()),
-                                .angle = angle,
-                                .k0 = k0};
-  c.ratios = ratios;
-  c.realization = checked_size(realization, "realization");
-  c.largest_box = largest_box;
-  c.smallest_box_spacings = smallest_box;
-  c.box_sizes = checked_size(box_sizes, "box_sizes", 2);
+py::dict butterfly(const ButterflyConfig& c, const PyRun& options) {
   validate(c);
   std::vector<ButterflyColumn> columns;
   run_long("butterfly", c.ratios.size(), options.progress,
@@ -200,11 +170,8 @@ py::dict butterfly(const std::string& kind, const std::vector<double>& ratios, l
     dimension.push_back(col.dimension.dimension);
     error.push_back(col.dimension.error);
   }
-  py::dict out;
-  out["ratio"] = to_numpy(std::move(ratio)), out["mode"] = to_numpy(std::move(mode));
-  out["freq_khz"] = to_numpy(std::move(freq)), out["ipr"] = to_numpy(std::move(ipr));
-  out["ratios"] = to_numpy(std::vector<double>(c.ratios));
-  out["dimension"] = to_numpy(std::move(dimension)), out["dimension_error"] = to_numpy(std::move(error));
+  py::dict out = fields("ratio mode freq_khz ipr ratios dimension dimension_error", std::move(ratio), std::move(mode),
+                        std::move(freq), std::move(ipr), c.ratios, std::move(dimension), std::move(error));
   out["metadata"] = to_python(meta);
   return out;
 }
@@ -213,11 +180,13 @@ py::dict butterfly(const std::string& kind, const std::vector<double>& ratios, l
 
 void bind_studies(py::module_& m) {
   using I = IprMapConfig;
-  config_class(m, "IprMapConfig", {"chain", "q_values", "xi_values", "realizations", "bin_khz"}, &I::chain,
-               &I::q_values, &I::xi_values, &I::realizations, &I::bin_khz);
+  config_class(m, "IprMapConfig", "chain q_values xi_values realizations bin_khz", &I::chain, &I::q_values,
+               &I::xi_values, &I::realizations, &I::bin_khz);
   using C = CorrelationConfig;
-  config_class(m, "CorrelationConfig", {"chain", "realizations", "max_distance"}, &C::chain, &C::realizations,
-               &C::max_distance);
+  config_class(m, "CorrelationConfig", "chain realizations max_distance", &C::chain, &C::realizations, &C::max_distance);
+  using B = ButterflyConfig;
+  config_class(m, "ButterflyConfig", "chain ratios realization largest_box smallest_box_spacings box_sizes", &B::chain,
+               &B::ratios, &B::realization, &B::largest_box, &B::smallest_box_spacings, &B::box_sizes);
   m.def("_ipr_map", &ipr_map);
   m.def("_localization", &localization);
   m.def("_correlations", &correlations);

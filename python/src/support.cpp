@@ -144,10 +144,6 @@ py::array_t<double> to_numpy_2d(std::vector<double>&& values, std::size_t rows, 
   return py::array_t<double>({rows, cols}, {cols * sizeof(double), sizeof(double)}, owner->data(), base);
 }
 
-void put(py::dict& dict, std::initializer_list<std::pair<const char*, std::vector<double>*>> arrays) {
-  for (auto [name, values] : arrays) dict[name] = to_numpy(std::move(*values));
-}
-
 py::array_t<double> view(const std::vector<double>& data, const py::handle& owner) {
   py::array_t<double> a({data.size()}, {sizeof(double)}, data.data(), owner);
   py::detail::array_proxy(a.ptr())->flags &= ~py::detail::npy_api::NPY_ARRAY_WRITEABLE_;
