@@ -8,6 +8,7 @@ import numpy as np
 
 from . import _core
 from ._dynamics import _run, _set_quasi
+from ._linear import _selection
 from ._model import _quasi
 
 _MAX = 100000000
@@ -114,7 +115,25 @@ def ipr_map(*, disorder="A", xi="0.1:1", q="0.2,0.5,0.8", N=100, F0=10.0, R1=_co
         c.q_values = c.xi_values = [math.nan]
     c.chain = recipe
     c.bin_khz = bin_khz
-    return IprMap(_core._ipr_map(c, solver, near, count, window, method, _run(threads, progress=progress)))
+    _core._size(threads, "threads", 0, 4096)
+    solver_error = f"solver '{solver}': expected fast, lapack or lapack-<stevr|stemr|stevd|steqr>"
+    if solver != "fast" and solver != "lapack" and not solver.startswith("lapack-"):
+        raise ValueError(solver_error)
+    c.spectrum.method = "fast" if solver == "fast" else "lapack"
+    if solver.startswith("lapack-"):
+        try:
+            c.spectrum.driver = solver[7:]
+        except ValueError:
+            raise ValueError(solver_error) from None
+    method_name = "lapack" if method is None else method
+    if near is not None or count is not None or window is not None:
+        c.selection = _selection(near, count, window, got=False)
+        c.spectrum.method = method_name
+        if c.spectrum.method == "fast":
+            raise ValueError("method fast: computes every mode; use lapack, bisect or arpack with near/window")
+    elif method is not None:
+        raise ValueError("method: only with near/count or window (the full map uses solver=)")
+    return IprMap(_core._ipr_map(c, solver, method_name, _run(threads, progress=progress)))
 
 
 class Butterfly:

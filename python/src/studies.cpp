@@ -30,43 +30,8 @@ RunOptions run_of(const PyRun& options, const LongRun& control) {
   return run;
 }
 
-[[noreturn]] void bad_solver(const std::string& solver) {
-  bad_value("solver", " '" + solver + "': expected fast, lapack or lapack-<stevr|stemr|stevd|steqr>");
-}
-
-py::dict ipr_map(IprMapConfig c, const std::string& solver, const py::object& near, const py::object& count,
-                 const py::object& window, const py::object& method, const PyRun& options) {
+py::dict ipr_map(const IprMapConfig& c, const std::string& solver, const std::string& method, const PyRun& options) {
   const int thread_request = options.thread_request();
-  if (solver != "fast" && solver != "lapack" && !solver.starts_with("lapack-")) bad_solver(solver);
-  c.spectrum.method = solver == "fast" ? SpectrumMethod::fast : SpectrumMethod::lapack;
-  if (solver.starts_with("lapack-")) {
-    try {
-      c.spectrum.driver = parse_lapack_driver(solver.substr(7));
-    } catch (const InvalidInput&) {
-      bad_solver(solver);
-    }
-  }
-  const bool selected = !near.is_none() || !count.is_none() || !window.is_none();
-  std::string method_name = method.is_none() ? "lapack" : method.cast<std::string>();
-  if (selected) {
-    if (!window.is_none()) {
-      if (!near.is_none() || !count.is_none()) bad_value("window", ": cannot be combined with near/count");
-      const std::vector<double> w = double_vector(window, "window", false);
-      if (w.size() != 2) bad_value("window", ": expected (lo, hi) in kHz");
-      c.selection = granular::window(w[0], w[1]);
-    } else {
-      if (count.is_none()) bad_value("near", ": needs count (how many modes)");
-      if (near.is_none()) bad_value("count", ": needs near (the target frequency in kHz)");
-      const long long k = count.cast<long long>();
-      if (k < 1) bad_value("count", " " + std::to_string(k) + ": must be >= 1");
-      c.selection = nearest(near.cast<double>(), static_cast<long>(std::min<long long>(k, 1LL << 40)));
-    }
-    c.spectrum.method = parse_spectrum_method(method_name);
-    if (c.spectrum.method == SpectrumMethod::fast)
-      bad_value("method", " fast: computes every mode; use lapack, bisect or arpack with near/window");
-  } else if (!method.is_none()) {
-    bad_value("method", ": only with near/count or window (the full map uses solver=)");
-  }
   validate(c);
 
   std::vector<IprMapCell> cells;
@@ -74,7 +39,7 @@ py::dict ipr_map(IprMapConfig c, const std::string& solver, const py::object& ne
            [&](const LongRun& control) { cells = compute_ipr_map(c, run_of(options, control)); });
 
   nlohmann::json meta = metadata_head("ipr_map");
-  meta.update(describe_ipr_map(c, cells, {solver, method_name, resolve_threads(thread_request)}));
+  meta.update(describe_ipr_map(c, cells, {solver, method, resolve_threads(thread_request)}));
   py::list out_cells;
   for (auto& cell : cells)
     out_cells.append(fields("q xi freq_khz ipr mode realization bin_modes bin_ipr", cell.q, cell.xi,
@@ -180,8 +145,8 @@ py::dict butterfly(const ButterflyConfig& c, const PyRun& options) {
 
 void bind_studies(py::module_& m) {
   using I = IprMapConfig;
-  config_class(m, "IprMapConfig", "chain q_values xi_values realizations bin_khz", &I::chain, &I::q_values,
-               &I::xi_values, &I::realizations, &I::bin_khz);
+  config_class(m, "IprMapConfig", "chain q_values xi_values realizations bin_khz selection spectrum", &I::chain,
+               &I::q_values, &I::xi_values, &I::realizations, &I::bin_khz, &I::selection, &I::spectrum);
   using C = CorrelationConfig;
   config_class(m, "CorrelationConfig", "chain realizations max_distance", &C::chain, &C::realizations, &C::max_distance);
   using B = ButterflyConfig;

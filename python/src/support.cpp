@@ -70,7 +70,7 @@ void bind_errors(py::module_& m) {
   m.def("_size", &checked_size, py::arg("value"), py::arg("keyword"), py::arg("lo") = 0,
         py::arg("hi") = 100000000000000000LL);
   m.def("_finite", &finite);
-  m.def("_vector", [](const py::handle& x, const char* keyword) { return double_vector(x, keyword); });
+  m.def("_vector", &double_vector, py::arg("values"), py::arg("keyword"), py::arg("require_finite") = true);
   m.def("_numbers", &number_list);
   m.def("_format_number", [](double x) { return format_number(x); });
   static py::exception<NumericalError> numerical(m, "NumericalError", PyExc_RuntimeError);
