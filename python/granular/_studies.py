@@ -217,7 +217,16 @@ def localization(chain=None, *, disorder="A", N=1000000, q=0.5, xi=0.5, seed=1, 
         recipe.seed = _core._size(seed, "seed")
         _set_quasi(recipe, quasi, modulation, ratio, phase, angle, k0)
         r = _core._size(realization, "realization")
-    return Localization(_core._localization(chain, recipe, r, f, segments, _run(threads, progress=progress)))
+    frequencies = _core._numbers(f, "f", 0.01)
+    for k, v in enumerate(frequencies):
+        if v < 0:
+            raise ValueError(f"f: frequency {_core._format_number(v)} kHz is negative")
+        if k > 0 and not v > frequencies[k - 1]:
+            raise ValueError("f: frequencies must increase (the DOS differences neighbours)")
+    config = _core.LocalizationScanConfig()
+    config.frequency_khz = frequencies
+    config.segments = _core._size(segments, "segments", 2, 1000000)
+    return Localization(_core._localization(chain, recipe, r, config, f, _run(threads, progress=progress)))
 
 
 class Correlations:

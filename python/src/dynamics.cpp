@@ -331,8 +331,8 @@ void bind_dynamics(py::module_& m) {
       .value("displacement", SpectrumSource::displacement)
       .value("velocity", SpectrumSource::velocity);
   using R = ChainRecipe;
-  config_class(m, "ChainRecipe", "q xi R1 N F0 material seed quasi given_radii", &R::q, &R::xi, &R::R1, &R::N, &R::F0,
-               &R::material, &R::seed, &R::quasi, &R::given_radii)
+  config_class(m, "ChainRecipe", "q xi R1 N F0 material seed quasi given_radii given_types", &R::q, &R::xi, &R::R1,
+               &R::N, &R::F0, &R::material, &R::seed, &R::quasi, &R::given_radii, &R::given_types)
       .def_property(
           "disorder", [](const R& r) { return to_string(r.disorder); },
           [](R& r, const std::string& name) { r.disorder = disorder_of(name); })

@@ -12,7 +12,6 @@
 #include "granular/model/bead_source.hpp"
 #include "granular/model/named_chains.hpp"
 #include "granular/model/plausibility.hpp"
-#include "granular/number_format.hpp"
 #include "granular/study/butterfly.hpp"
 #include "granular/study/correlation_files.hpp"
 #include "granular/study/ipr_map_files.hpp"
@@ -53,16 +52,7 @@ py::dict ipr_map(const IprMapConfig& c, const std::string& solver, const std::st
 
 /// `chain`, or (None) realization `realization` of `recipe` streamed a piece at a time.
 py::dict localization(const py::object& chain, const ChainRecipe& recipe, std::uint64_t realization,
-                      const py::object& f, long long segments, const PyRun& options) {
-  LocalizationScanConfig config;
-  config.frequency_khz = number_list(f, "f", 0.01);
-  for (std::size_t k = 0; k < config.frequency_khz.size(); ++k) {
-    const double v = config.frequency_khz[k];
-    if (v < 0) bad_value("f", ": frequency " + format_number(v) + " kHz is negative");
-    if (k > 0 && !(v > config.frequency_khz[k - 1]))
-      bad_value("f", ": frequencies must increase (the DOS differences neighbours)");
-  }
-  config.segments = checked_size(segments, "segments", 2, 1000000);
+                      const LocalizationScanConfig& config, const py::object& f, const PyRun& options) {
   const int thread_request = options.thread_request();
   // The beads as the localization tool reads them (ChainRecipe::beads): a random realization is
   // drawn a piece at a time (memory independent of N).
@@ -148,6 +138,8 @@ void bind_studies(py::module_& m) {
   config_class(m, "IprMapConfig", "chain q_values xi_values realizations bin_khz selection spectrum", &I::chain,
                &I::q_values, &I::xi_values, &I::realizations, &I::bin_khz, &I::selection, &I::spectrum);
   using C = CorrelationConfig;
+  config_class(m, "LocalizationScanConfig", "frequency_khz segments", &LocalizationScanConfig::frequency_khz,
+               &LocalizationScanConfig::segments);
   config_class(m, "CorrelationConfig", "chain realizations max_distance", &C::chain, &C::realizations, &C::max_distance);
   using B = ButterflyConfig;
   config_class(m, "ButterflyConfig", "chain ratios realization largest_box smallest_box_spacings box_sizes", &B::chain,
