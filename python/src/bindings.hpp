@@ -18,6 +18,7 @@
 #include <nlohmann/json.hpp>
 
 #include "granular/ensemble/progress_meter.hpp"
+#include "granular/ensemble/run_options.hpp"
 #include "granular/model/chain.hpp"
 #include "granular/model/chain_recipe.hpp"
 #include "granular/model/disorder.hpp"
@@ -168,6 +169,8 @@ struct PyRun {
   std::string checkpoint;  ///< "" = none
   bool resume = false, resume_other_version = false, progress = false;
   int thread_request() const { return static_cast<int>(checked_size(threads, "threads", 0, 4096)); }
+  /// The library's RunOptions of these, driven by `control`.
+  RunOptions run(const LongRun& control) const;
 };
 
 }  // namespace granular::python

@@ -177,16 +177,8 @@ py::dict transport(const ChainRecipe& recipe, const std::string& ic, long long r
   std::vector<std::string> versions =
       options.resume_other_version ? CheckpointLog::codes_of(log) : std::vector<std::string>{};
   TransportSummary s;
-  run_long("transport", c.realizations, options.progress, [&](const LongRun& control) {
-    RunOptions run;
-    run.threads = thread_request;
-    run.checkpoint = log;
-    run.resume = resume;
-    run.accept_other_version = options.resume_other_version;
-    run.progress = control.meter;
-    run.cancelled = control.cancelled;
-    s = run_transport_study(c, run);
-  });
+  run_long("transport", c.realizations, options.progress,
+           [&](const LongRun& control) { s = run_transport_study(c, options.run(control)); });
   if (!log.empty()) CheckpointLog::remove_all(log);  // finished: the result is in memory, as the tool's in files
 
   nlohmann::json meta = metadata_head("transport");

@@ -83,12 +83,8 @@ py::dict wrap(Spectrum&& r, const DynamicalMatrix& d, const nlohmann::json& meta
   out["inverse_sqrt_mass"] = to_numpy(d.inverse_sqrt_mass);
   out["N"] = s.beads;
   const SpectrumInfo& i = s.info;
-  out["info"] = to_python({{"method", i.method},
-                           {"fallbacks", i.fallbacks},
-                           {"restarts", i.restarts},
-                           {"candidates", i.candidates},
-                           {"max_residual", i.max_residual},
-                           {"clusters", i.clusters}});
+  out["info"] = fields("method fallbacks restarts candidates max_residual clusters", i.method, i.fallbacks, i.restarts,
+                       i.candidates, i.max_residual, i.clusters);
   out["metadata"] = to_python(metadata);
   return out;
 }

@@ -20,22 +20,13 @@
 namespace granular::python {
 namespace {
 
-/// RunOptions of `options` driven by `control`.
-RunOptions run_of(const PyRun& options, const LongRun& control) {
-  RunOptions run;
-  run.threads = options.thread_request();
-  run.progress = control.meter;
-  run.cancelled = control.cancelled;
-  return run;
-}
-
 py::dict ipr_map(const IprMapConfig& c, const std::string& solver, const std::string& method, const PyRun& options) {
   const int thread_request = options.thread_request();
   validate(c);
 
   std::vector<IprMapCell> cells;
   run_long("ipr_map", c.q_values.size() * c.xi_values.size() * c.realizations, options.progress,
-           [&](const LongRun& control) { cells = compute_ipr_map(c, run_of(options, control)); });
+           [&](const LongRun& control) { cells = compute_ipr_map(c, options.run(control)); });
 
   nlohmann::json meta = metadata_head("ipr_map");
   meta.update(describe_ipr_map(c, cells, {solver, method, resolve_threads(thread_request)}));
@@ -80,7 +71,7 @@ py::dict localization(const py::object& chain, const ChainRecipe& recipe, std::u
     }
   LocalizationScan scan;
   run_long("localization", beads->size() * config.frequency_khz.size(), options.progress,
-           [&](const LongRun& control) { scan = localization_scan(*beads, config, run_of(options, control)); });
+           [&](const LongRun& control) { scan = localization_scan(*beads, config, options.run(control)); });
   nlohmann::json meta = metadata_head("localization");
   meta.update(describe_localization(scan, description,
                                     py::isinstance<py::str>(f) ? nlohmann::json(f.cast<std::string>())
@@ -100,7 +91,7 @@ py::dict correlations(const CorrelationConfig& c, const PyRun& options) {
   validate(c);
   CorrelationResult result;
   run_long("correlations", c.realizations, options.progress,
-           [&](const LongRun& control) { result = correlation_study(c, run_of(options, control)); });
+           [&](const LongRun& control) { result = correlation_study(c, options.run(control)); });
   nlohmann::json meta = metadata_head("correlations");
   meta.update(describe_correlations(c, result));
   py::dict out = fields("rho_mean rho_std rho_theory used", std::move(result.mean), std::move(result.deviation),
@@ -113,7 +104,7 @@ py::dict butterfly(const ButterflyConfig& c, const PyRun& options) {
   validate(c);
   std::vector<ButterflyColumn> columns;
   run_long("butterfly", c.ratios.size(), options.progress,
-           [&](const LongRun& control) { columns = compute_butterfly(c, run_of(options, control)); });
+           [&](const LongRun& control) { columns = compute_butterfly(c, options.run(control)); });
   nlohmann::json meta = metadata_head("butterfly");
   meta.update(describe_butterfly(c, columns));
   meta["threads"] = resolve_threads(options.thread_request());

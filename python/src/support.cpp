@@ -139,9 +139,7 @@ Configuration types_vector(const py::handle& values, const char* keyword) {
 }
 
 py::array_t<double> to_numpy_2d(std::vector<double>&& values, std::size_t rows, std::size_t cols) {
-  auto* owner = new std::vector<double>(std::move(values));
-  py::capsule base(owner, [](void* p) { delete static_cast<std::vector<double>*>(p); });
-  return py::array_t<double>({rows, cols}, {cols * sizeof(double), sizeof(double)}, owner->data(), base);
+  return to_numpy(std::move(values)).reshape({rows, cols});
 }
 
 py::array_t<double> view(const std::vector<double>& data, const py::handle& owner) {
@@ -268,6 +266,17 @@ void run_long(const std::string& label, std::size_t total, bool progress,
     bar.attr("close")(failure == nullptr);
   }
   if (failure) std::rethrow_exception(failure);
+}
+
+RunOptions PyRun::run(const LongRun& control) const {
+  RunOptions run;
+  run.threads = thread_request();
+  run.checkpoint = checkpoint;
+  run.resume = resume || resume_other_version;
+  run.accept_other_version = resume_other_version;
+  run.progress = control.meter;
+  run.cancelled = control.cancelled;
+  return run;
 }
 
 /// Each warning of the library as a Python RuntimeWarning (the tools print them on stderr).
