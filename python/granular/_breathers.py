@@ -45,7 +45,17 @@ def breathers(chain, *, mode=0, near_khz=None, start_khz=None, target_khz=None, 
     law: 'hertz' | 'fpu'; scheme: the splitting scheme of shooting and monodromy; steps_per_period: 0 chooses;
     tolerance: Newton's relative residual; stability_tolerance: stable when max |mu| <= 1 + it.
     Returns a granular.Breathers. Releases the GIL."""
-    return Breathers(_core._breathers(chain, int(mode), _nan(near_khz), _nan(start_khz), _nan(target_khz),
-                                      float(step_khz), max_points, law, scheme, steps_per_period, tolerance,
-                                      stability_tolerance, bool(through_opening)))
-
+    c = _core.BreatherBranchConfig()
+    c.mode = int(mode)
+    c.near_khz, c.start_khz, c.target_khz = _nan(near_khz), _nan(start_khz), _nan(target_khz)
+    c.step_khz = float(step_khz)
+    if not isinstance(chain, _core.Chain):
+        raise TypeError("chain: expected a granular.Chain")
+    c.max_points = _core._size(max_points, "max_points", 1, 1000000)
+    c.law = law
+    c.shooting.scheme = scheme
+    c.shooting.steps_per_period = _core._size(steps_per_period, "steps_per_period", 0, 100000000)
+    c.shooting.tolerance = _core._finite(tolerance, "tolerance")
+    c.stability_tolerance = _core._finite(stability_tolerance, "stability_tolerance")
+    c.stop_at_opening = not through_opening
+    return Breathers(_core._breathers(chain, c))

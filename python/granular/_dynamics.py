@@ -5,6 +5,7 @@ tools use (study/transport_choices.hpp), runs it and returns its arrays and meta
 import math
 
 from . import _core
+from ._model import _quasi
 from ._results import ExponentTable, SpreadingRun, Transport
 
 _DYNAMICS_DOC = """\
@@ -96,7 +97,8 @@ granular.quasiperiodic's; disorder, q and xi are then not used
 def _set_quasi(recipe, quasi, modulation, ratio, phase, angle, k0):
     """Makes `recipe` (a _core.ChainRecipe, F0 already set) the quasiperiodic chain `quasi`, if not None."""
     if quasi is not None:
-        recipe._set_quasi(quasi, modulation, ratio if isinstance(ratio, str) else repr(float(ratio)), phase, angle, k0)
+        recipe.quasi = _quasi(quasi, modulation, ratio, phase, angle, k0)
+        recipe._validate_quasi()
 
 
 def _run(threads=0, checkpoint=None, resume=False, resume_other_version=False, progress=False):

@@ -1,7 +1,10 @@
 """granular.spectrum, SpectrumSolver, DynamicalMatrix and band_edges: keywords, defaults and docstrings. The
 matrices and solvers are granular._core's (the library's), frequencies in kHz as the tools give them."""
-from . import _core
+import operator
+
 import numpy as np
+
+from . import _core
 
 from ._core import DynamicalMatrix
 from ._model import _document, paper_r1, steel
@@ -62,16 +65,53 @@ class Spectrum:
         return f"<granular.Spectrum {len(self)} of {self.N} modes, {self.info['method']}>"
 
 
+def _selection(near, count, window, got=True):
+    """The _core.ModeSelection of the keywords near, count / window (every mode without them); `got`: say how many
+    values a window of the wrong length had."""
+    if window is not None:
+        if near is not None or count is not None:
+            raise ValueError("window: cannot be combined with near/count")
+        w = _core._vector(window, "window", False)
+        if len(w) != 2:
+            raise ValueError("window: expected (lo, hi) in kHz" + (f", got {len(w)} values" if got else ""))
+        return _core._window(w[0], w[1])
+    if near is None and count is None:
+        return _core.ModeSelection()
+    if count is None:
+        raise ValueError("near: needs count (how many modes)")
+    if near is None:
+        raise ValueError("count: needs near (the target frequency in kHz)")
+    k = operator.index(count)
+    if k < 1:
+        raise ValueError(f"count {k}: must be >= 1")
+    return _core._nearest(float(near), min(k, 1 << 40))
+
+
+def _config(method, driver, vectors, tolerance, subspace, lanes):
+    """The _core.SpectrumConfig of the solver keywords."""
+    c = _core.SpectrumConfig()
+    c.method, c.driver, c.vectors, c.tolerance = method, driver, vectors, tolerance
+    if subspace < 0 or subspace > 1000000000:
+        raise ValueError(f"subspace {subspace}: must be >= 0")
+    c.subspace = subspace
+    c.lanes = _core._size(lanes, "lanes", 1, 64)
+    return c
+
+
 class SpectrumSolver(_core._SpectrumSolver):
     __doc__ = ("A spectrum solver that keeps its workspaces between calls: for loops over many chains of one size "
                "(what the IPR map does per thread). solve() gives exactly what granular.spectrum gives.\n\n"
                "SpectrumSolver(*, method='lapack', driver='stevd', vectors=False, tolerance=0.0, subspace=0, "
                "lanes=8): keywords as granular.spectrum's:\n" + _CONFIG_DOC)
 
+    def __init__(self, *, method="lapack", driver="stevd", vectors=False, tolerance=0.0, subspace=0, lanes=8):
+        super().__init__(_config(method, driver, vectors, tolerance, subspace, lanes), method)
+
     def solve(self, system, *, near=None, count=None, window=None):
         """The selected modes of a granular.Chain or granular.DynamicalMatrix (near, count / window as
         granular.spectrum's). Returns a granular.Spectrum."""
-        return Spectrum(self._solve(system, near, count, window))
+        return Spectrum(self._solve(system, _selection(near, count, window)))
+
 
 def dynamical_matrix(chain):
     """The dynamical matrix of a chain (ValueError naming F0 at F0 = 0: the sonic vacuum has no linear limit)."""
@@ -90,7 +130,9 @@ def omega2_of_khz(khz):
 
 def spectrum(system, *, near=None, count=None, window=None, method="lapack", driver="stevd", vectors=False,
              tolerance=0.0, subspace=0, lanes=8):
-    return Spectrum(_core._spectrum(system, near, count, window, method, driver, vectors, tolerance, subspace, lanes))
+    selection = _selection(near, count, window)
+    config = _config(method, driver, vectors, tolerance, subspace, lanes)
+    return Spectrum(_core._spectrum(system, selection, config, method))
 
 
 spectrum.__doc__ = (

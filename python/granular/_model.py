@@ -4,6 +4,8 @@ docstrings. The values are checked and the chains built by granular._core, with 
 from . import _core
 from ._core import Chain, FpuCoefficients, Material, flat_wall, paper_r1, steel
 
+_MAX = 100000000  # beads of a stored chain
+
 
 def _document(cls, doc, **properties):
     """Sets the docstrings of a class of granular._core and of its properties."""
@@ -50,7 +52,14 @@ Returns a granular.Chain. Raises ValueError naming the keyword when a value is o
 
 def random_chain(disorder="A", N=100, q=0.5, xi=0.5, seed=1, realization=0, F0=10.0, R1=paper_r1, material=steel,
                  walls="flat"):
-    return _core._random_chain(disorder, N, q, xi, seed, realization, F0, R1, material, walls)
+    recipe = _core.ChainRecipe()
+    recipe.disorder = disorder
+    recipe.N = _core._size(N, "N", 2, _MAX)
+    recipe.q, recipe.xi = q, xi
+    recipe.seed = _core._size(seed, "seed")
+    realization = _core._size(realization, "realization")
+    recipe.F0, recipe.R1, recipe.material = F0, R1, material
+    return _core._typed_chain(recipe, realization, walls, "")
 
 
 def _kind(disorder, name, summary):
@@ -76,20 +85,44 @@ random_chain.__doc__ = ("Realization `realization` of seed `seed` of a disorder 
 def diatomic(N=100, xi=0.5, F0=10.0, R1=paper_r1, material=steel, walls="flat"):
     """Alternating types 1, 2, 1, 2, ...: the ordered chain whose band edges fb1, fb2, fb3 granular.band_edges
     gives. N beads, xi = R2/R1 in (0, 1], F0 [N], R1 [m], walls "flat" or "sphere" (as random_chain)."""
-    return _core._diatomic(N, xi, F0, R1, material, walls)
+    recipe = _core.ChainRecipe()
+    recipe.N = _core._size(N, "N", 2, _MAX)
+    recipe.given_types = ([1, 2] * recipe.N)[:recipe.N]
+    recipe.xi, recipe.F0, recipe.R1, recipe.material = xi, F0, R1, material
+    return _core._typed_chain(recipe, 0, walls, "diatomic")
 
 
 def from_types(types, xi=0.5, F0=10.0, R1=paper_r1, material=steel, walls="flat"):
     """A chain of given bead types: `types` is any array-like of 1 and 2 (type 1 has radius R1 [m], type 2 xi*R1),
     as a --config file holds them. F0 [N]; walls "flat" or "sphere" (as random_chain)."""
-    return _core._from_types(types, xi, F0, R1, material, walls)
+    recipe = _core.ChainRecipe()
+    recipe.given_types = _core._types(types, "types")
+    recipe.N = max(len(recipe.given_types), 2)
+    recipe.xi, recipe.F0, recipe.R1, recipe.material = xi, F0, R1, material
+    return _core._typed_chain(recipe, 0, walls, "")
 
 
 def from_radii(radii, F0=10.0, material=steel, walls="flat"):
     """A chain of beads of given radii [m] (any 1-D array-like, each finite and > 0) of one material under
     precompression F0 [N], between walls of the same material: "flat", or "sphere" (fixed spheres of the end beads'
     radii)."""
-    return _core._from_radii(radii, F0, material, walls)
+    recipe = _core.ChainRecipe()
+    recipe.given_radii = _core._vector(radii, "radii")
+    if len(recipe.given_radii) < 2:
+        raise ValueError(f"radii: {len(recipe.given_radii)} beads; a chain needs at least 2")
+    recipe.F0, recipe.material, recipe.walls = F0, material, walls
+    return _core._chain(recipe, 0)
+
+
+def _quasi(kind, modulation, ratio, phase, angle, k0):
+    """A _core.Quasiperiodic of granular.quasiperiodic's keywords."""
+    q = _core.Quasiperiodic()
+    q.kind = kind
+    q.modulation = modulation
+    if ratio is not None:  # None: the default (the golden mean)
+        q.ratio = ratio if isinstance(ratio, str) else repr(float(ratio))
+    q.phase, q.angle, q.k0 = phase, angle, k0
+    return q
 
 
 def quasiperiodic(kind="s2", N=100, modulation=0.0, ratio="golden", phase=None, angle=45.0, k0=4.0, seed=1,
@@ -99,8 +132,13 @@ def quasiperiodic(kind="s2", N=100, modulation=0.0, ratio="golden", phase=None, 
     'cylinders' (crossing angles angle*(...) [degrees] of cylinders of radius R1, length 2 R1); the tools' --quasi.
     |modulation| < 1; ratio > 0: 'golden', 'p/q' or a number; phase [rad], or None to draw it uniformly in [0, 2 pi)
     from (seed, realization). F0 [N], R1 [m]. Raises ValueError naming the keyword when a value is out of range."""
-    return _core._quasiperiodic_chain(kind, N, modulation, ratio if isinstance(ratio, str) else repr(float(ratio)),
-                                      phase, angle, k0, seed, realization, F0, R1, material)
+    recipe = _core.ChainRecipe()
+    recipe.R1 = R1
+    recipe.N = _core._size(N, "N", 2, _MAX)
+    recipe.F0, recipe.material = F0, material
+    recipe.seed = _core._size(seed, "seed")
+    recipe.quasi = _quasi(kind, modulation, ratio, phase, angle, k0)
+    return _core._chain(recipe, _core._size(realization, "realization"))
 
 
 def configuration(disorder="A", q=0.5, N=100, seed=1, realization=0):

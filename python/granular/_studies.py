@@ -8,6 +8,8 @@ import numpy as np
 
 from . import _core
 from ._dynamics import _run, _set_quasi
+from ._linear import _selection
+from ._model import _quasi
 
 _MAX = 100000000
 
@@ -113,7 +115,25 @@ def ipr_map(*, disorder="A", xi="0.1:1", q="0.2,0.5,0.8", N=100, F0=10.0, R1=_co
         c.q_values = c.xi_values = [math.nan]
     c.chain = recipe
     c.bin_khz = bin_khz
-    return IprMap(_core._ipr_map(c, solver, near, count, window, method, _run(threads, progress=progress)))
+    _core._size(threads, "threads", 0, 4096)
+    solver_error = f"solver '{solver}': expected fast, lapack or lapack-<stevr|stemr|stevd|steqr>"
+    if solver != "fast" and solver != "lapack" and not solver.startswith("lapack-"):
+        raise ValueError(solver_error)
+    c.spectrum.method = "fast" if solver == "fast" else "lapack"
+    if solver.startswith("lapack-"):
+        try:
+            c.spectrum.driver = solver[7:]
+        except ValueError:
+            raise ValueError(solver_error) from None
+    method_name = "lapack" if method is None else method
+    if near is not None or count is not None or window is not None:
+        c.selection = _selection(near, count, window, got=False)
+        c.spectrum.method = method_name
+        if c.spectrum.method == "fast":
+            raise ValueError("method fast: computes every mode; use lapack, bisect or arpack with near/window")
+    elif method is not None:
+        raise ValueError("method: only with near/count or window (the full map uses solver=)")
+    return IprMap(_core._ipr_map(c, solver, method_name, _run(threads, progress=progress)))
 
 
 class Butterfly:
@@ -138,9 +158,18 @@ def butterfly(kind="s1", *, ratios="0.005:0.995:0.005", N=100, modulation=0.0, p
     on boxes from largest_box x its extent down to smallest_box mean level spacings (box_sizes sizes). kind,
     modulation, phase, angle, k0, seed, realization, N, F0, R1: as granular.quasiperiodic. The same numbers as
     the butterfly tool for the same options. Returns a granular.Butterfly."""
-    values = _core._butterfly(kind, _core._numbers(ratios, "ratios", 0.005), N, modulation, phase, angle, k0, seed,
-                              realization, F0, R1, largest_box, smallest_box, box_sizes,
-                              _run(threads, progress=progress))
+    c = _core.ButterflyConfig()
+    c.ratios = _core._numbers(ratios, "ratios", 0.005)
+    recipe = _core.ChainRecipe()
+    recipe.N = _core._size(N, "N", 2, _MAX)
+    recipe.F0, recipe.R1 = F0, R1
+    recipe.seed = _core._size(seed, "seed")
+    recipe.quasi = _quasi(kind, modulation, None, phase, angle, k0)  # each ratio of `ratios` in turn
+    c.chain = recipe
+    c.realization = _core._size(realization, "realization")
+    c.largest_box, c.smallest_box_spacings = largest_box, smallest_box
+    c.box_sizes = _core._size(box_sizes, "box_sizes", 2)
+    values = _core._butterfly(c, _run(threads, progress=progress))
     return Butterfly(values)
 
 
@@ -188,7 +217,16 @@ def localization(chain=None, *, disorder="A", N=1000000, q=0.5, xi=0.5, seed=1, 
         recipe.seed = _core._size(seed, "seed")
         _set_quasi(recipe, quasi, modulation, ratio, phase, angle, k0)
         r = _core._size(realization, "realization")
-    return Localization(_core._localization(chain, recipe, r, f, segments, _run(threads, progress=progress)))
+    frequencies = _core._numbers(f, "f", 0.01)
+    for k, v in enumerate(frequencies):
+        if v < 0:
+            raise ValueError(f"f: frequency {_core._format_number(v)} kHz is negative")
+        if k > 0 and not v > frequencies[k - 1]:
+            raise ValueError("f: frequencies must increase (the DOS differences neighbours)")
+    config = _core.LocalizationScanConfig()
+    config.frequency_khz = frequencies
+    config.segments = _core._size(segments, "segments", 2, 1000000)
+    return Localization(_core._localization(chain, recipe, r, config, f, _run(threads, progress=progress)))
 
 
 class Correlations:

@@ -6,7 +6,9 @@
 #include <cstdint>
 #include <functional>
 #include <initializer_list>
+#include <sstream>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -16,6 +18,7 @@
 #include <nlohmann/json.hpp>
 
 #include "granular/ensemble/progress_meter.hpp"
+#include "granular/ensemble/run_options.hpp"
 #include "granular/model/chain.hpp"
 #include "granular/model/chain_recipe.hpp"
 #include "granular/model/disorder.hpp"
@@ -26,14 +29,14 @@ namespace granular::python {
 namespace py = pybind11;
 
 /// A library config struct as Python fills it: default-constructed (its C++ defaults), with a
-/// read-write attribute per (name, member), in order.
+/// read-write attribute per member, named by the space-separated `names` in order.
 template <class C, class... M>
-py::class_<C> config_class(py::module_& m, const char* name, std::initializer_list<const char*> names,
-                           M C::*... members) {
+py::class_<C> config_class(py::module_& m, const char* name, const char* names, M C::*... members) {
   py::class_<C> c(m, name);
   c.def(py::init<>());
-  auto field = names.begin();
-  (c.def_readwrite(*field++, members), ...);
+  std::istringstream words(names);
+  std::string field;
+  ((words >> field, c.def_readwrite(field.c_str(), members)), ...);
   return c;
 }
 
@@ -103,8 +106,37 @@ template <class Self, class Get>
 auto viewer(Get get) {
   return [get](py::object self) { return view(get(self.cast<const Self&>()), self); };
 }
-/// dict[name] = the NumPy array of each vector, which it takes over.
-void put(py::dict& dict, std::initializer_list<std::pair<const char*, std::vector<double>*>> arrays);
+/// Counts and indices as signed integers (NumPy arithmetic on them stays integer).
+template <class T>
+std::vector<long long> signed_of(const std::vector<T>& values) {
+  return {values.begin(), values.end()};
+}
+template <class T>
+constexpr bool is_number_vector = false;
+template <class T>
+constexpr bool is_number_vector<std::vector<T>> = std::is_arithmetic_v<T>;
+/// A C++ value as Python gets it: a vector of numbers as a NumPy array (taken over when an rvalue),
+/// a Python object as it is, the rest as pybind11 casts it.
+template <class T>
+py::object to_py(T&& value) {
+  using V = std::remove_cvref_t<T>;
+  if constexpr (is_number_vector<V>) {
+    return to_numpy(std::forward<T>(value));
+  } else if constexpr (std::is_base_of_v<py::object, V>) {
+    return value;
+  } else {
+    return py::cast(std::forward<T>(value));
+  }
+}
+/// {name: to_py(value)} for the space-separated `names` and the values, in order.
+template <class... T>
+py::dict fields(const char* names, T&&... values) {
+  py::dict out;
+  std::istringstream words(names);
+  std::string name;
+  ((words >> name, out[py::str(name)] = to_py(std::forward<T>(values))), ...);
+  return out;
+}
 
 // --- metadata ----------------------------------------------------------------------------------
 py::object to_python(const nlohmann::json& value);
@@ -113,9 +145,6 @@ nlohmann::json metadata_head(const std::string& function);
 
 // --- parsing the tools' words --------------------------------------------------------------------
 Disorder disorder_of(const std::string& name);
-/// A quasiperiodic chain from granular.quasiperiodic's keywords (phase None: drawn per realization).
-Quasiperiodic quasi_of(const std::string& kind, double modulation, const std::string& ratio, const py::object& phase,
-                       double angle, double k0);
 /// A list of numbers: a Python sequence / array, or a string in the tools' range syntax
 /// ("0.1:1", "0.1:1:0.05", "0.2,0.5,0.8"), with the tools' default step.
 std::vector<double> number_list(const py::handle& values, const char* keyword, double default_step);
@@ -140,6 +169,8 @@ struct PyRun {
   std::string checkpoint;  ///< "" = none
   bool resume = false, resume_other_version = false, progress = false;
   int thread_request() const { return static_cast<int>(checked_size(threads, "threads", 0, 4096)); }
+  /// The library's RunOptions of these, driven by `control`.
+  RunOptions run(const LongRun& control) const;
 };
 
 }  // namespace granular::python

@@ -13,26 +13,9 @@
 namespace granular::python {
 namespace {
 
-py::dict breathers(const py::object& chain, long mode, double near_khz, double start_khz, double target_khz,
-                   double step_khz, long long max_points, const std::string& law, const std::string& scheme,
-                   long long steps_per_period, double tolerance, double stability_tolerance, bool through_opening) {
-  if (!py::isinstance<PyChain>(chain)) throw py::type_error("chain: expected a granular.Chain");
-  const PyChain& c = chain.cast<const PyChain&>();
-  BreatherBranchConfig config;
+py::dict breathers(const PyChain& c, BreatherBranchConfig config) {
   config.chain = c.recipe;
   config.realization = c.realization;
-  config.mode = mode;
-  config.near_khz = near_khz, config.start_khz = start_khz, config.target_khz = target_khz;
-  config.step_khz = step_khz;
-  config.max_points = checked_size(max_points, "max_points", 1, 1000000);
-  config.law = parse_force_law(law);
-  if (config.law == ForceLawKind::linear)
-    bad_value("law", " linear: every amplitude is a periodic orbit; use hertz or fpu");
-  config.shooting.scheme = parse_scheme(scheme);
-  config.shooting.steps_per_period = checked_size(steps_per_period, "steps_per_period", 0, 100000000);
-  config.shooting.tolerance = finite(tolerance, "tolerance");
-  config.stability_tolerance = finite(stability_tolerance, "stability_tolerance");
-  config.stop_at_opening = !through_opening;
   validate(config);
   BreatherBranch branch;
   {
@@ -54,31 +37,41 @@ py::dict breathers(const py::object& chain, long mode, double near_khz, double s
     open.insert(open.end(), p.open_fraction.begin(), p.open_fraction.end());
     for (const auto mu : p.floquet.multipliers) mu_re.push_back(mu.real()), mu_im.push_back(mu.imag());
   }
-  py::dict out;
-  put(out, {{"omega", &omega},
-            {"freq_khz", &freq},
-            {"energy", &energy},
-            {"amplitude", &amplitude},
-            {"max_multiplier", &max_mu},
-            {"residual", &residual},
-            {"max_open_fraction", &open_max}});
-  out["centre"] = to_numpy(std::move(centre));
-  out["newton_iterations"] = to_numpy(std::move(iterations));
-  out["stable"] = to_numpy(std::move(stable));
+  py::dict out = fields(
+      "omega freq_khz energy amplitude max_multiplier residual max_open_fraction centre "
+      "newton_iterations stable linear_khz seed_mode seed_khz stop_reason",
+      std::move(omega), std::move(freq), std::move(energy), std::move(amplitude), std::move(max_mu),
+      std::move(residual), std::move(open_max), std::move(centre), std::move(iterations), std::move(stable),
+      std::move(branch.linear_khz), branch.seed_mode, branch.seed_khz, branch.stop_reason);
   out["profiles"] = to_numpy_2d(std::move(profiles), points, n);
   out["open_fraction"] = to_numpy_2d(std::move(open), points, n + 1);
   out["multipliers_real"] = to_numpy_2d(std::move(mu_re), points, 2 * n);
   out["multipliers_imag"] = to_numpy_2d(std::move(mu_im), points, 2 * n);
-  out["linear_khz"] = to_numpy(branch.linear_khz);
-  out["seed_mode"] = branch.seed_mode;
-  out["seed_khz"] = branch.seed_khz;
-  out["stop_reason"] = branch.stop_reason;
   out["metadata"] = to_python(meta);
   return out;
 }
 
 }  // namespace
 
-void bind_breathers(py::module_& m) { m.def("_breathers", &breathers); }
+void bind_breathers(py::module_& m) {
+  using B = BreatherBranchConfig;  // granular.breathers's keywords, its chain set from the granular.Chain
+  config_class(m, "BreatherBranchConfig",
+               "mode near_khz start_khz target_khz step_khz max_points stop_at_opening stability_tolerance shooting",
+               &B::mode, &B::near_khz, &B::start_khz, &B::target_khz, &B::step_khz, &B::max_points, &B::stop_at_opening,
+               &B::stability_tolerance, &B::shooting)
+      .def_property(
+          "law", [](const B& b) { return to_string(b.law); },
+          [](B& b, const std::string& word) {
+            b.law = parse_force_law(word);
+            if (b.law == ForceLawKind::linear)
+              bad_value("law", " linear: every amplitude is a periodic orbit; use hertz or fpu");
+          });
+  using S = ShootingConfig;
+  config_class(m, "ShootingConfig", "steps_per_period tolerance", &S::steps_per_period, &S::tolerance)
+      .def_property(
+          "scheme", [](const S& s) { return s.scheme.name; },
+          [](S& s, const std::string& word) { s.scheme = parse_scheme(word); });
+  m.def("_breathers", &breathers);
+}
 
 }  // namespace granular::python

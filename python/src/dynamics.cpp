@@ -114,14 +114,11 @@ py::dict spreading(const PyChain& chain, const std::string& ic, const TransportC
   std::vector<std::string> said = notes(c);
   for (const auto& w : warnings(r, d)) said.push_back(w);
   out["warnings"] = warn(said);
-  put(out,
-      {{"t", &r.t}, {"m2", &r.m2}, {"m2_centroid", &r.m2_centroid}, {"ipr", &r.ipr}, {"energy_error", &r.energy_error}});
-  out["initial_energy"] = r.initial_energy;
-  out["max_energy_error"] = r.max_energy_error;
-  py::dict final_state;
-  put(final_state,
-      {{"u", &r.final_state.u}, {"v", &r.final_state.v}, {"energy", &r.final_energy}, {"force", &r.final_force}});
-  out["final_state"] = final_state;
+  out.attr("update")(fields("t m2 m2_centroid ipr energy_error initial_energy max_energy_error", std::move(r.t),
+                            std::move(r.m2), std::move(r.m2_centroid), std::move(r.ipr), std::move(r.energy_error),
+                            r.initial_energy, r.max_energy_error));
+  out["final_state"] = fields("u v energy force", std::move(r.final_state.u), std::move(r.final_state.v),
+                              std::move(r.final_energy), std::move(r.final_force));
   // Beyond the paper: the columns `dissipated` and `mle` of the tool's CSV, and its --deviation file.
   out["dissipated"] = array_or_none(std::move(r.dissipated));
   out["mle"] = array_or_none(std::move(r.mle));
@@ -148,13 +145,10 @@ py::dict spreading(const PyChain& chain, const std::string& ic, const TransportC
   }
   out["spectral_density"] = py::none();
   if (d.spectrum_samples > 0)
-    out["spectral_density"] =
-        py::dict("freq_khz"_a = to_numpy(std::move(r.spectrum_khz)), "g"_a = to_numpy(std::move(r.spectrum)));
-  out["wall_energy"] = r.wall_energy;
-  out["reached_walls"] = r.reached_walls;
+    out["spectral_density"] = fields("freq_khz g", std::move(r.spectrum_khz), std::move(r.spectrum));
+  out.attr("update")(
+      fields("wall_energy reached_walls steps seconds", r.wall_energy, r.reached_walls, r.steps, r.seconds));
   out["energy_guard_time"] = r.energy_guard_time < 0 ? py::object(py::none()) : py::float_(r.energy_guard_time);
-  out["steps"] = r.steps;
-  out["seconds"] = r.seconds;
   out["metadata"] = to_python(meta);
   return out;
 }
@@ -183,16 +177,8 @@ py::dict transport(const ChainRecipe& recipe, const std::string& ic, long long r
   std::vector<std::string> versions =
       options.resume_other_version ? CheckpointLog::codes_of(log) : std::vector<std::string>{};
   TransportSummary s;
-  run_long("transport", c.realizations, options.progress, [&](const LongRun& control) {
-    RunOptions run;
-    run.threads = thread_request;
-    run.checkpoint = log;
-    run.resume = resume;
-    run.accept_other_version = options.resume_other_version;
-    run.progress = control.meter;
-    run.cancelled = control.cancelled;
-    s = run_transport_study(c, run);
-  });
+  run_long("transport", c.realizations, options.progress,
+           [&](const LongRun& control) { s = run_transport_study(c, options.run(control)); });
   if (!log.empty()) CheckpointLog::remove_all(log);  // finished: the result is in memory, as the tool's in files
 
   nlohmann::json meta = metadata_head("transport");
@@ -219,25 +205,19 @@ py::dict transport(const ChainRecipe& recipe, const std::string& ic, long long r
   std::vector<std::string> said = notes(c);
   for (const auto& w : warnings(s, c.dynamics)) said.push_back(w);
   out["warnings"] = warn(said);
-  out["t"] = to_numpy(std::move(s.t));
-  const std::pair<const char*, SeriesSummary*> summaries[] = {{"m2", &s.m2},
-                                                              {"m2_centroid", &s.m2_centroid},
-                                                              {"ipr", &s.ipr},
-                                                              {"energy_error", &s.energy_error}};
-  for (auto [name, x] : summaries) {
-    out[name] = to_numpy(std::move(x->mean));
-    out[(std::string(name) + "_se").c_str()] = to_numpy(std::move(x->standard_error));
-  }
+  out.attr("update")(fields("t m2 m2_se m2_centroid m2_centroid_se ipr ipr_se energy_error energy_error_se",
+                            std::move(s.t), std::move(s.m2.mean), std::move(s.m2.standard_error),
+                            std::move(s.m2_centroid.mean), std::move(s.m2_centroid.standard_error),
+                            std::move(s.ipr.mean), std::move(s.ipr.standard_error), std::move(s.energy_error.mean),
+                            std::move(s.energy_error.standard_error)));
   out["profile"] = py::none();
   if (profile)
-    out["profile"] = py::dict("energy"_a = to_numpy(std::move(s.profile.mean)),
-                              "energy_se"_a = to_numpy(std::move(s.profile.standard_error)));
+    out["profile"] = fields("energy energy_se", std::move(s.profile.mean), std::move(s.profile.standard_error));
   // With the tangent map: <X1(t)> [1/s] (the tool's column mle) and its standard error.
   out["mle"] = array_or_none(std::move(s.mle.mean));
   out["mle_se"] = array_or_none(std::move(s.mle.standard_error));
-  out["max_energy_error"] = s.max_energy_error;
-  out["reached_walls"] = s.reached_walls;
-  out["realizations"] = s.realizations;
+  out.attr("update")(
+      fields("max_energy_error reached_walls realizations", s.max_energy_error, s.reached_walls, s.realizations));
   out["metadata"] = to_python(meta);
   return out;
 }
@@ -324,64 +304,41 @@ py::dict exponent_table(const std::vector<std::string>& chains, const std::vecto
 void bind_dynamics(py::module_& m) {
   using T = TransportChoices;
   config_class(m, "TransportChoices",
-               {"alpha",
-                "beta",
-                "site",
-                "centre",
-                "duration",
-                "time_step",
-                "integrator",
-                "force_law",
-                "samples",
-                "sampling",
-                "fit_begin",
-                "fit_end",
-                "fit_step",
-                "t_star",
-                "kappa",
-                "bootstrap",
-                "active_window",
-                "window_threshold",
-                "reference_max_step",
-                "max_energy_error",
-                "energy_guard"},
+               "alpha beta site centre duration time_step integrator force_law samples sampling fit_begin fit_end "
+               "fit_step t_star kappa bootstrap active_window window_threshold reference_max_step max_energy_error "
+               "energy_guard",
                &T::alpha, &T::beta, &T::site, &T::centre, &T::duration, &T::time_step, &T::integrator, &T::force_law,
                &T::samples, &T::sampling, &T::fit_begin, &T::fit_end, &T::fit_step, &T::t_star, &T::kappa, &T::bootstrap,
                &T::active_window, &T::window_threshold, &T::reference_max_step, &T::max_energy_error, &T::energy_guard);
   m.attr("paper_beta") = paper_beta;
   using B = BeyondChoices;
-  config_class(m, "BeyondChoices", {"damping_time", "kk_gamma", "mle", "renormalize", "deviation_samples"},
-               &B::damping_time, &B::kk_gamma, &B::mle, &B::renormalize, &B::deviation_samples);
-  config_class(m, "ModeKick", {"mode", "near_khz", "energy"}, &ModeKick::mode, &ModeKick::near_khz, &ModeKick::energy);
+  config_class(m, "BeyondChoices", "damping_time kk_gamma mle renormalize deviation_samples", &B::damping_time,
+               &B::kk_gamma, &B::mle, &B::renormalize, &B::deviation_samples);
+  config_class(m, "ModeKick", "mode near_khz energy", &ModeKick::mode, &ModeKick::near_khz, &ModeKick::energy);
   using S = SpreadingConfig;  // only its observers' settings
   config_class(m, "SpreadingObservers",
-               {"force_sites", "force_samples", "map_samples", "map_stride", "spectrum_samples", "spectrum_source"},
-               &S::force_sites, &S::force_samples, &S::map_samples, &S::map_stride, &S::spectrum_samples,
-               &S::spectrum_source);
+               "force_sites force_samples map_samples map_stride spectrum_samples spectrum_source", &S::force_sites,
+               &S::force_samples, &S::map_samples, &S::map_stride, &S::spectrum_samples, &S::spectrum_source);
   py::enum_<SpectrumSource>(m, "SpectrumSource")
       .value("displacement", SpectrumSource::displacement)
       .value("velocity", SpectrumSource::velocity);
   using R = ChainRecipe;
-  config_class(m, "ChainRecipe", {"q", "xi", "R1", "N", "F0", "seed"}, &R::q, &R::xi, &R::R1, &R::N, &R::F0, &R::seed)
+  config_class(m, "ChainRecipe", "q xi R1 N F0 material seed quasi given_radii given_types", &R::q, &R::xi, &R::R1,
+               &R::N, &R::F0, &R::material, &R::seed, &R::quasi, &R::given_radii, &R::given_types)
       .def_property(
           "disorder", [](const R& r) { return to_string(r.disorder); },
           [](R& r, const std::string& name) { r.disorder = disorder_of(name); })
       .def_property(
           "walls", [](const R& r) { return r.walls == WallShape::flat ? "flat" : "sphere"; },
           [](R& r, const std::string& word) { r.walls = parse_wall_shape(word); })
-      // A quasiperiodic chain instead of a random one (granular.quasiperiodic's keywords; the tools' --quasi).
-      .def("_set_quasi", [](R& r, const std::string& kind, double modulation, const std::string& ratio,
-                            const py::object& phase, double angle, double k0) {
-        r.quasi = quasi_of(kind, modulation, ratio, phase, angle, k0);
-        validate(*r.quasi, r.F0);
-      });
+      .def("_validate_quasi", [](const R& r) { validate(*r.quasi, r.F0); });
   using E = ExponentTableConfig;
-  config_class(m, "ExponentTableConfig", {"precompressions", "profile_precompressions", "profile_realizations", "base"},
+  config_class(m, "ExponentTableConfig", "precompressions profile_precompressions profile_realizations base",
                &E::precompressions, &E::profile_precompressions, &E::profile_realizations, &E::base);
   using C = TransportCase;  // what the exponent table's cases share beyond the choices
-  config_class(m, "TransportCase", {"chain", "realizations"}, &C::chain, &C::realizations);
-  config_class(m, "RunOptions", {"threads", "checkpoint", "resume", "resume_other_version", "progress"},
-               &PyRun::threads, &PyRun::checkpoint, &PyRun::resume, &PyRun::resume_other_version, &PyRun::progress);
+  config_class(m, "TransportCase", "chain realizations", &C::chain, &C::realizations);
+  config_class(m, "RunOptions", "threads checkpoint resume resume_other_version progress", &PyRun::threads,
+               &PyRun::checkpoint, &PyRun::resume, &PyRun::resume_other_version, &PyRun::progress);
   m.def("_spreading", &spreading);
   m.def("_transport", &transport);
   m.def("_exponent_table", &exponent_table);

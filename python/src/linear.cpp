@@ -36,35 +36,6 @@ std::mutex& serial_solvers() {
 
 using SolverRequest = SpectrumRequest;
 
-ModeSelection selection_of(const py::object& near, const py::object& count, const py::object& window) {
-  if (!window.is_none()) {
-    if (!near.is_none() || !count.is_none()) bad_value("window", ": cannot be combined with near/count");
-    const std::vector<double> w = double_vector(window, "window", false);
-    if (w.size() != 2) bad_value("window", ": expected (lo, hi) in kHz, got " + std::to_string(w.size()) + " values");
-    return granular::window(w[0], w[1]);
-  }
-  if (near.is_none() && count.is_none()) return all_modes();
-  if (count.is_none()) bad_value("near", ": needs count (how many modes)");
-  if (near.is_none()) bad_value("count", ": needs near (the target frequency in kHz)");
-  const double khz = near.cast<double>();
-  const long long k = count.cast<long long>();
-  if (k < 1) bad_value("count", " " + std::to_string(k) + ": must be >= 1");
-  return nearest(khz, static_cast<long>(std::min<long long>(k, 1LL << 40)));
-}
-
-SpectrumConfig config_of(const std::string& method, const std::string& driver, bool vectors, double tolerance,
-                         long long subspace, long long lanes) {
-  SpectrumConfig c;
-  c.method = parse_spectrum_method(method);
-  c.driver = parse_lapack_driver(driver);
-  c.vectors = vectors;
-  c.tolerance = tolerance;
-  if (subspace < 0 || subspace > 1000000000) bad_value("subspace", " " + std::to_string(subspace) + ": must be >= 0");
-  c.subspace = static_cast<int>(subspace);
-  c.lanes = checked_size(lanes, "lanes", 1, 64);
-  return c;
-}
-
 /// The matrix of a Chain or a DynamicalMatrix argument (the chain kept for the metadata).
 struct System {
   DynamicalMatrix owned;
@@ -112,12 +83,8 @@ py::dict wrap(Spectrum&& r, const DynamicalMatrix& d, const nlohmann::json& meta
   out["inverse_sqrt_mass"] = to_numpy(d.inverse_sqrt_mass);
   out["N"] = s.beads;
   const SpectrumInfo& i = s.info;
-  out["info"] = to_python({{"method", i.method},
-                           {"fallbacks", i.fallbacks},
-                           {"restarts", i.restarts},
-                           {"candidates", i.candidates},
-                           {"max_residual", i.max_residual},
-                           {"clusters", i.clusters}});
+  out["info"] = fields("method fallbacks restarts candidates max_residual clusters", i.method, i.fallbacks, i.restarts,
+                       i.candidates, i.max_residual, i.clusters);
   out["metadata"] = to_python(metadata);
   return out;
 }
@@ -184,11 +151,23 @@ void bind_linear(py::module_& m) {
   m.def("_frequency_khz", [](py::array_t<double> omega2) { return py::vectorize(frequency_khz)(omega2); });
   m.def("_omega2_of_khz", [](py::array_t<double> khz) { return py::vectorize(omega_squared_of_khz)(khz); });
 
-  m.def("_spectrum", [](const py::object& system, const py::object& near, const py::object& count,
-                        const py::object& window, const std::string& method, const std::string& driver, bool vectors,
-                        double tolerance, long long subspace, long long lanes) {
-    const SolverRequest q{selection_of(near, count, window),
-                          config_of(method, driver, vectors, tolerance, subspace, lanes), method};
+  // What granular/_linear.py fills from the keywords: the selection and the solver's config.
+  py::class_<ModeSelection>(m, "ModeSelection").def(py::init<>());
+  m.def("_nearest", &nearest);
+  m.def("_window", &granular::window);
+  using C = SpectrumConfig;
+  config_class(m, "SpectrumConfig", "vectors tolerance subspace lanes", &C::vectors, &C::tolerance, &C::subspace,
+               &C::lanes)
+      .def_property(
+          "method", [](const C& c) { return std::string(to_string(c.method)); },
+          [](C& c, const std::string& name) { c.method = parse_spectrum_method(name); })
+      .def_property(
+          "driver", [](const C& c) { return std::string(to_string(c.driver)); },
+          [](C& c, const std::string& name) { c.driver = parse_lapack_driver(name); });
+
+  m.def("_spectrum", [](const py::object& system, const ModeSelection& selection, const SpectrumConfig& config,
+                        const std::string& method) {
+    const SolverRequest q{selection, config, method};
     validate(q.config, q.selection);
     System s = system_of(system);
     if (q.selection.kind != ModeSelection::Kind::all) {  // a unit slip (Hz as kHz) deserves a word
@@ -207,27 +186,20 @@ void bind_linear(py::module_& m) {
   });
 
   py::class_<PySolver>(m, "_SpectrumSolver")
-      .def(py::init([](const std::string& method, const std::string& driver, bool vectors, double tolerance,
-                       long long subspace, long long lanes) {
-             auto p = std::make_unique<PySolver>();
-             p->solver = SpectrumSolver(config_of(method, driver, vectors, tolerance, subspace, lanes));
-             p->method = method;
-             return p;
-           }),
-           py::kw_only(), py::arg("method") = "lapack", py::arg("driver") = "stevd", py::arg("vectors") = false,
-           py::arg("tolerance") = 0.0, py::arg("subspace") = 0, py::arg("lanes") = 8)
-      .def(
-          "_solve",
-          [](PySolver& p, const py::object& system, const py::object& near, const py::object& count,
-             const py::object& window) {
-            const SolverRequest q{selection_of(near, count, window), p.solver.config(), p.method};
-            validate(q.config, q.selection);
-            System s = system_of(system);
-            Spectrum r = solve(p.solver, s, q.selection, &p.busy);
-            const nlohmann::json meta = spectrum_metadata(r, s, q);
-            return wrap(std::move(r), *s.matrix, meta);
-          },
-          py::arg("system"), py::arg("near"), py::arg("count"), py::arg("window"));
+      .def(py::init([](const SpectrumConfig& config, const std::string& method) {
+        auto p = std::make_unique<PySolver>();
+        p->solver = SpectrumSolver(config);
+        p->method = method;
+        return p;
+      }))
+      .def("_solve", [](PySolver& p, const py::object& system, const ModeSelection& selection) {
+        const SolverRequest q{selection, p.solver.config(), p.method};
+        validate(q.config, q.selection);
+        System s = system_of(system);
+        Spectrum r = solve(p.solver, s, q.selection, &p.busy);
+        const nlohmann::json meta = spectrum_metadata(r, s, q);
+        return wrap(std::move(r), *s.matrix, meta);
+      });
 
   m.def("_band_edges", [](double xi, double F0, double R1, const Material& material) {
     const BandEdges e = band_edges(material, R1, xi, F0);

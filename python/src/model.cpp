@@ -19,32 +19,6 @@
 namespace granular::python {
 namespace {
 
-ChainParameters chain_parameters(long long N, double q, double xi, long long seed, long long realization, double F0,
-                                 double R1, const Material& material) {
-  ChainParameters p;
-  p.N = checked_size(N, "N", 2, 100000000);
-  p.q = q;
-  p.xi = xi;
-  p.seed = checked_size(seed, "seed");
-  p.realization = checked_size(realization, "realization");
-  p.F0 = F0;
-  p.R1 = R1;
-  p.material = material;
-  validate(p);
-  return p;
-}
-
-ChainRecipe recipe_of(const ChainParameters& p) {
-  return {.q = p.q, .xi = p.xi, .R1 = p.R1, .N = p.N, .F0 = p.F0, .material = p.material, .seed = p.seed};
-}
-
-PyChain random_py_chain(Disorder kind, const ChainParameters& p, const std::string& walls) {
-  ChainRecipe r = recipe_of(p);
-  r.disorder = kind;
-  r.walls = parse_wall_shape(walls);
-  return py_chain(r, p.realization);
-}
-
 py::object chain_types(const PyChain& c) {
   if (c.types.empty()) return py::none();
   std::vector<std::uint8_t> copy(c.types.begin(), c.types.end());
@@ -67,16 +41,6 @@ PyChain py_chain(ChainRecipe recipe, std::uint64_t realization, const std::strin
   return c;
 }
 
-Quasiperiodic quasi_of(const std::string& kind, double modulation, const std::string& ratio, const py::object& phase,
-                       double angle, double k0) {
-  return Quasiperiodic{.kind = parse_quasi_kind(kind),
-                       .modulation = modulation,
-                       .ratio = parse_ratio(ratio),
-                       .phase = phase.is_none() ? std::nullopt : std::optional<double>(phase.cast<double>()),
-                       .angle = angle,
-                       .k0 = k0};
-}
-
 void bind_model(py::module_& m) {
   m.attr("paper_r1") = paper_r1;
   m.attr("flat_wall") = flat_wall;
@@ -94,6 +58,15 @@ void bind_model(py::module_& m) {
                ", density=" + format_number(x.density) + ")";
       });
   m.attr("steel") = steel;
+
+  using Q = Quasiperiodic;  // granular.quasiperiodic's keywords (the tools' --quasi)
+  config_class(m, "Quasiperiodic", "modulation phase angle k0", &Q::modulation, &Q::phase, &Q::angle, &Q::k0)
+      .def_property(
+          "kind", [](const Q& q) { return to_string(q.kind); },
+          [](Q& q, const std::string& word) { q.kind = parse_quasi_kind(word); })
+      .def_property(
+          "ratio", [](const Q& q) { return q.ratio; },
+          [](Q& q, const std::string& text) { q.ratio = parse_ratio(text); });
 
   py::class_<PyChain>(m, "Chain")
       .def_property_readonly("N", [](const PyChain& c) { return c.chain.size(); })
@@ -118,47 +91,19 @@ void bind_model(py::module_& m) {
                ", F0=" + format_number(c.chain.precompression) + " N>";
       });
 
-  m.def("_random_chain",
-        [](const std::string& disorder, long long N, double q, double xi, long long seed, long long realization,
-           double F0, double R1, const Material& material, const std::string& walls) {
-          return random_py_chain(disorder_of(disorder), chain_parameters(N, q, xi, seed, realization, F0, R1, material),
-                                 walls);
-        });
-  m.def("_diatomic",
-        [](long long N, double xi, double F0, double R1, const Material& material, const std::string& walls) {
-          ChainRecipe r = recipe_of(chain_parameters(N, 0.5, xi, 1, 0, F0, R1, material));
-          r.walls = parse_wall_shape(walls);
-          r.given_types = Configuration(r.N);
-          for (std::size_t i = 0; i < r.N; ++i) (*r.given_types)[i] = i % 2 == 0 ? 1 : 2;
-          return py_chain(r, 0, "diatomic");
-        });
-  m.def("_from_types", [](const py::object& types, double xi, double F0, double R1, const Material& material,
-                          const std::string& walls) {
-    Configuration t = types_vector(types, "types");
-    const ChainParameters p =
-        chain_parameters(static_cast<long long>(std::max<std::size_t>(t.size(), 2)), 0.5, xi, 1, 0, F0, R1, material);
-    if (t.size() < 2) bad_value("types", ": " + std::to_string(t.size()) + " beads; a chain needs at least 2");
-    ChainRecipe r = recipe_of(p);
+  // A chain of bead types 1 and 2 filled in granular/_model.py (drawn, or given types), checked by
+  // the named chains' rules (ChainParameters) before its walls are read.
+  m.def("_typed_chain", [](ChainRecipe r, std::uint64_t realization, const std::string& walls, const std::string& name) {
+    const std::size_t n = r.given_types ? std::max<std::size_t>(r.given_types->size(), 2) : r.N;
+    validate(ChainParameters{.N = n, .q = r.q, .xi = r.xi, .F0 = r.F0, .R1 = r.R1, .material = r.material});
+    if (r.given_types && r.given_types->size() < 2)
+      bad_value("types", ": " + std::to_string(r.given_types->size()) + " beads; a chain needs at least 2");
     r.walls = parse_wall_shape(walls);
-    r.given_types = std::move(t);
-    return py_chain(r, 0);
+    return py_chain(r, realization, name);
   });
-  m.def("_from_radii", [](const py::object& radii, double F0, const Material& material, const std::string& walls) {
-    std::vector<double> r = double_vector(radii, "radii");
-    if (r.size() < 2) bad_value("radii", ": " + std::to_string(r.size()) + " beads; a chain needs at least 2");
-    return py_chain({.given_radii = std::move(r), .F0 = F0, .material = material, .walls = parse_wall_shape(walls)}, 0);
-  });
-  m.def("_quasiperiodic_chain", [](const std::string& kind, long long N, double modulation, const std::string& ratio,
-                                   const py::object& phase, double angle, double k0, long long seed,
-                                   long long realization, double F0, double R1, const Material& material) {
-    ChainRecipe r{.R1 = R1,
-                  .N = checked_size(N, "N", 2, 100000000),
-                  .F0 = F0,
-                  .material = material,
-                  .seed = checked_size(seed, "seed")};
-    r.quasi = quasi_of(kind, modulation, ratio, phase, angle, k0);
-    return py_chain(r, checked_size(realization, "realization"));
-  });
+  m.def("_types", &types_vector);
+  // A chain of a recipe filled in granular/_model.py (given radii, a quasiperiodic chain).
+  m.def("_chain", [](const ChainRecipe& recipe, std::uint64_t realization) { return py_chain(recipe, realization); });
   m.def("_configuration", [](const std::string& disorder, double q, long long N, long long seed, long long realization) {
     validate_probability(q);
     auto t = realization_configuration(disorder_of(disorder), q, checked_size(N, "N", 2, 100000000),

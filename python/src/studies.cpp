@@ -12,7 +12,6 @@
 #include "granular/model/bead_source.hpp"
 #include "granular/model/named_chains.hpp"
 #include "granular/model/plausibility.hpp"
-#include "granular/number_format.hpp"
 #include "granular/study/butterfly.hpp"
 #include "granular/study/correlation_files.hpp"
 #include "granular/study/ipr_map_files.hpp"
@@ -21,92 +20,30 @@
 namespace granular::python {
 namespace {
 
-/// RunOptions of `options` driven by `control`.
-RunOptions run_of(const PyRun& options, const LongRun& control) {
-  RunOptions run;
-  run.threads = options.thread_request();
-  run.progress = control.meter;
-  run.cancelled = control.cancelled;
-  return run;
-}
-
-[[noreturn]] void bad_solver(const std::string& solver) {
-  bad_value("solver", " '" + solver + "': expected fast, lapack or lapack-<stevr|stemr|stevd|steqr>");
-}
-
-py::dict ipr_map(IprMapConfig c, const std::string& solver, const py::object& near, const py::object& count,
-                 const py::object& window, const py::object& method, const PyRun& options) {
+py::dict ipr_map(const IprMapConfig& c, const std::string& solver, const std::string& method, const PyRun& options) {
   const int thread_request = options.thread_request();
-  if (solver != "fast" && solver != "lapack" && !solver.starts_with("lapack-")) bad_solver(solver);
-  c.spectrum.method = solver == "fast" ? SpectrumMethod::fast : SpectrumMethod::lapack;
-  if (solver.starts_with("lapack-")) {
-    try {
-      c.spectrum.driver = parse_lapack_driver(solver.substr(7));
-    } catch (const InvalidInput&) {
-      bad_solver(solver);
-    }
-  }
-  const bool selected = !near.is_none() || !count.is_none() || !window.is_none();
-  std::string method_name = method.is_none() ? "lapack" : method.cast<std::string>();
-  if (selected) {
-    if (!window.is_none()) {
-      if (!near.is_none() || !count.is_none()) bad_value("window", ": cannot be combined with near/count");
-      const std::vector<double> w = double_vector(window, "window", false);
-      if (w.size() != 2) bad_value("window", ": expected (lo, hi) in kHz");
-      c.selection = granular::window(w[0], w[1]);
-    } else {
-      if (count.is_none()) bad_value("near", ": needs count (how many modes)");
-      if (near.is_none()) bad_value("count", ": needs near (the target frequency in kHz)");
-      const long long k = count.cast<long long>();
-      if (k < 1) bad_value("count", " " + std::to_string(k) + ": must be >= 1");
-      c.selection = nearest(near.cast<double>(), static_cast<long>(std::min<long long>(k, 1LL << 40)));
-    }
-    c.spectrum.method = parse_spectrum_method(method_name);
-    if (c.spectrum.method == SpectrumMethod::fast)
-      bad_value("method", " fast: computes every mode; use lapack, bisect or arpack with near/window");
-  } else if (!method.is_none()) {
-    bad_value("method", ": only with near/count or window (the full map uses solver=)");
-  }
   validate(c);
 
   std::vector<IprMapCell> cells;
   run_long("ipr_map", c.q_values.size() * c.xi_values.size() * c.realizations, options.progress,
-           [&](const LongRun& control) { cells = compute_ipr_map(c, run_of(options, control)); });
+           [&](const LongRun& control) { cells = compute_ipr_map(c, options.run(control)); });
 
   nlohmann::json meta = metadata_head("ipr_map");
-  meta.update(describe_ipr_map(c, cells, {solver, method_name, resolve_threads(thread_request)}));
+  meta.update(describe_ipr_map(c, cells, {solver, method, resolve_threads(thread_request)}));
   py::list out_cells;
-  for (auto& cell : cells) {
-    py::dict d;
-    d["q"] = cell.q, d["xi"] = cell.xi;
-    d["freq_khz"] = to_numpy(std::move(cell.freq_khz)), d["ipr"] = to_numpy(std::move(cell.ipr));
-    d["mode"] = to_numpy(std::vector<long long>(cell.mode.begin(), cell.mode.end()));
-    d["realization"] = to_numpy(std::vector<long long>(cell.realization.begin(), cell.realization.end()));
-    d["bin_modes"] = to_numpy(std::vector<long long>(cell.bin_modes.begin(), cell.bin_modes.end()));
-    d["bin_ipr"] = to_numpy(std::move(cell.bin_ipr));
-    out_cells.append(d);
-  }
-  py::dict out;
-  out["disorder"] = to_string(c.chain.disorder), out["N"] = c.chain.N, out["bin_khz"] = c.bin_khz;
-  out["q"] = to_numpy(c.q_values), out["xi"] = to_numpy(c.xi_values);
-  out["selection"] = c.selection.kind != ModeSelection::Kind::all;
-  out["cells"] = out_cells;
+  for (auto& cell : cells)
+    out_cells.append(fields("q xi freq_khz ipr mode realization bin_modes bin_ipr", cell.q, cell.xi,
+                            std::move(cell.freq_khz), std::move(cell.ipr), signed_of(cell.mode),
+                            signed_of(cell.realization), signed_of(cell.bin_modes), std::move(cell.bin_ipr)));
+  py::dict out = fields("disorder N bin_khz q xi selection cells", to_string(c.chain.disorder), c.chain.N, c.bin_khz,
+                        c.q_values, c.xi_values, c.selection.kind != ModeSelection::Kind::all, out_cells);
   out["metadata"] = to_python(meta);
   return out;
 }
 
 /// `chain`, or (None) realization `realization` of `recipe` streamed a piece at a time.
 py::dict localization(const py::object& chain, const ChainRecipe& recipe, std::uint64_t realization,
-                      const py::object& f, long long segments, const PyRun& options) {
-  LocalizationScanConfig config;
-  config.frequency_khz = number_list(f, "f", 0.01);
-  for (std::size_t k = 0; k < config.frequency_khz.size(); ++k) {
-    const double v = config.frequency_khz[k];
-    if (v < 0) bad_value("f", ": frequency " + format_number(v) + " kHz is negative");
-    if (k > 0 && !(v > config.frequency_khz[k - 1]))
-      bad_value("f", ": frequencies must increase (the DOS differences neighbours)");
-  }
-  config.segments = checked_size(segments, "segments", 2, 1000000);
+                      const LocalizationScanConfig& config, const py::object& f, const PyRun& options) {
   const int thread_request = options.thread_request();
   // The beads as the localization tool reads them (ChainRecipe::beads): a random realization is
   // drawn a piece at a time (memory independent of N).
@@ -134,20 +71,17 @@ py::dict localization(const py::object& chain, const ChainRecipe& recipe, std::u
     }
   LocalizationScan scan;
   run_long("localization", beads->size() * config.frequency_khz.size(), options.progress,
-           [&](const LongRun& control) { scan = localization_scan(*beads, config, run_of(options, control)); });
+           [&](const LongRun& control) { scan = localization_scan(*beads, config, options.run(control)); });
   nlohmann::json meta = metadata_head("localization");
   meta.update(describe_localization(scan, description,
                                     py::isinstance<py::str>(f) ? nlohmann::json(f.cast<std::string>())
                                                                : nlohmann::json(config.frequency_khz),
                                     resolve_threads(thread_request), steel));
-  py::dict out;
-  out["freq_khz"] = to_numpy(std::move(scan.frequency_khz)), out["lyapunov"] = to_numpy(std::move(scan.lyapunov));
-  out["lyapunov_err"] = to_numpy(std::move(scan.lyapunov_error));
-  out["loc_length"] = to_numpy(std::move(scan.localization_length));
-  out["resolved"] = to_numpy(std::vector<std::uint8_t>(scan.resolved.begin(), scan.resolved.end()));
-  out["modes_below"] = to_numpy(std::vector<long long>(scan.modes_below.begin(), scan.modes_below.end()));
-  out["idos"] = to_numpy(std::move(scan.idos)), out["dos"] = to_numpy(std::move(scan.dos));
-  out["N"] = scan.beads;
+  py::dict out =
+      fields("freq_khz lyapunov lyapunov_err loc_length resolved modes_below idos dos N", std::move(scan.frequency_khz),
+             std::move(scan.lyapunov), std::move(scan.lyapunov_error), std::move(scan.localization_length),
+             std::vector<std::uint8_t>(scan.resolved.begin(), scan.resolved.end()), signed_of(scan.modes_below),
+             std::move(scan.idos), std::move(scan.dos), scan.beads);
   out["metadata"] = to_python(meta);
   return out;
 }
@@ -157,38 +91,20 @@ py::dict correlations(const CorrelationConfig& c, const PyRun& options) {
   validate(c);
   CorrelationResult result;
   run_long("correlations", c.realizations, options.progress,
-           [&](const LongRun& control) { result = correlation_study(c, run_of(options, control)); });
+           [&](const LongRun& control) { result = correlation_study(c, options.run(control)); });
   nlohmann::json meta = metadata_head("correlations");
   meta.update(describe_correlations(c, result));
-  py::dict out;
-  out["rho_mean"] = to_numpy(std::move(result.mean)), out["rho_std"] = to_numpy(std::move(result.deviation));
-  out["rho_theory"] = to_numpy(std::move(result.theory)), out["used"] = result.used;
+  py::dict out = fields("rho_mean rho_std rho_theory used", std::move(result.mean), std::move(result.deviation),
+                        std::move(result.theory), result.used);
   out["metadata"] = to_python(meta);
   return out;
 }
 
-py::dict butterfly(const std::string& kind, const std::vector<double>& ratios, long long N, double modulation,
-                   const py::object& phase, double angle, double k0, long long seed, long long realization, double F0,
-                   double R1, double largest_box, double smallest_box, long long box_sizes, const PyRun& options) {
-  ButterflyConfig c;
-  c.chain.N = checked_size(N, "N", 2, 100000000);
-  c.chain.F0 = F0;
-  c.chain.R1 = R1;
-  c.chain.seed = checked_size(seed, "seed");
-  c.chain.quasi = Quasiperiodic{.kind = parse_quasi_kind(kind),
-                                .modulation = modulation,
-                                .phase = phase.is_none() ? std::nullopt : std::optional<double>(phase.cast<double>()),
-                                .angle = angle,
-                                .k0 = k0};
-  c.ratios = ratios;
-  c.realization = checked_size(realization, "realization");
-  c.largest_box = largest_box;
-  c.smallest_box_spacings = smallest_box;
-  c.box_sizes = checked_size(box_sizes, "box_sizes", 2);
+py::dict butterfly(const ButterflyConfig& c, const PyRun& options) {
   validate(c);
   std::vector<ButterflyColumn> columns;
   run_long("butterfly", c.ratios.size(), options.progress,
-           [&](const LongRun& control) { columns = compute_butterfly(c, run_of(options, control)); });
+           [&](const LongRun& control) { columns = compute_butterfly(c, options.run(control)); });
   nlohmann::json meta = metadata_head("butterfly");
   meta.update(describe_butterfly(c, columns));
   meta["threads"] = resolve_threads(options.thread_request());
@@ -200,11 +116,8 @@ py::dict butterfly(const std::string& kind, const std::vector<double>& ratios, l
     dimension.push_back(col.dimension.dimension);
     error.push_back(col.dimension.error);
   }
-  py::dict out;
-  out["ratio"] = to_numpy(std::move(ratio)), out["mode"] = to_numpy(std::move(mode));
-  out["freq_khz"] = to_numpy(std::move(freq)), out["ipr"] = to_numpy(std::move(ipr));
-  out["ratios"] = to_numpy(std::vector<double>(c.ratios));
-  out["dimension"] = to_numpy(std::move(dimension)), out["dimension_error"] = to_numpy(std::move(error));
+  py::dict out = fields("ratio mode freq_khz ipr ratios dimension dimension_error", std::move(ratio), std::move(mode),
+                        std::move(freq), std::move(ipr), c.ratios, std::move(dimension), std::move(error));
   out["metadata"] = to_python(meta);
   return out;
 }
@@ -213,11 +126,15 @@ py::dict butterfly(const std::string& kind, const std::vector<double>& ratios, l
 
 void bind_studies(py::module_& m) {
   using I = IprMapConfig;
-  config_class(m, "IprMapConfig", {"chain", "q_values", "xi_values", "realizations", "bin_khz"}, &I::chain,
-               &I::q_values, &I::xi_values, &I::realizations, &I::bin_khz);
+  config_class(m, "IprMapConfig", "chain q_values xi_values realizations bin_khz selection spectrum", &I::chain,
+               &I::q_values, &I::xi_values, &I::realizations, &I::bin_khz, &I::selection, &I::spectrum);
   using C = CorrelationConfig;
-  config_class(m, "CorrelationConfig", {"chain", "realizations", "max_distance"}, &C::chain, &C::realizations,
-               &C::max_distance);
+  config_class(m, "LocalizationScanConfig", "frequency_khz segments", &LocalizationScanConfig::frequency_khz,
+               &LocalizationScanConfig::segments);
+  config_class(m, "CorrelationConfig", "chain realizations max_distance", &C::chain, &C::realizations, &C::max_distance);
+  using B = ButterflyConfig;
+  config_class(m, "ButterflyConfig", "chain ratios realization largest_box smallest_box_spacings box_sizes", &B::chain,
+               &B::ratios, &B::realization, &B::largest_box, &B::smallest_box_spacings, &B::box_sizes);
   m.def("_ipr_map", &ipr_map);
   m.def("_localization", &localization);
   m.def("_correlations", &correlations);

@@ -70,7 +70,7 @@ void bind_errors(py::module_& m) {
   m.def("_size", &checked_size, py::arg("value"), py::arg("keyword"), py::arg("lo") = 0,
         py::arg("hi") = 100000000000000000LL);
   m.def("_finite", &finite);
-  m.def("_vector", [](const py::handle& x, const char* keyword) { return double_vector(x, keyword); });
+  m.def("_vector", &double_vector, py::arg("values"), py::arg("keyword"), py::arg("require_finite") = true);
   m.def("_numbers", &number_list);
   m.def("_format_number", [](double x) { return format_number(x); });
   static py::exception<NumericalError> numerical(m, "NumericalError", PyExc_RuntimeError);
@@ -139,13 +139,7 @@ Configuration types_vector(const py::handle& values, const char* keyword) {
 }
 
 py::array_t<double> to_numpy_2d(std::vector<double>&& values, std::size_t rows, std::size_t cols) {
-  auto* owner = new std::vector<double>(std::move(values));
-  py::capsule base(owner, [](void* p) { delete static_cast<std::vector<double>*>(p); });
-  return py::array_t<double>({rows, cols}, {cols * sizeof(double), sizeof(double)}, owner->data(), base);
-}
-
-void put(py::dict& dict, std::initializer_list<std::pair<const char*, std::vector<double>*>> arrays) {
-  for (auto [name, values] : arrays) dict[name] = to_numpy(std::move(*values));
+  return to_numpy(std::move(values)).reshape({rows, cols});
 }
 
 py::array_t<double> view(const std::vector<double>& data, const py::handle& owner) {
@@ -272,6 +266,17 @@ void run_long(const std::string& label, std::size_t total, bool progress,
     bar.attr("close")(failure == nullptr);
   }
   if (failure) std::rethrow_exception(failure);
+}
+
+RunOptions PyRun::run(const LongRun& control) const {
+  RunOptions run;
+  run.threads = thread_request();
+  run.checkpoint = checkpoint;
+  run.resume = resume || resume_other_version;
+  run.accept_other_version = resume_other_version;
+  run.progress = control.meter;
+  run.cancelled = control.cancelled;
+  return run;
 }
 
 /// Each warning of the library as a Python RuntimeWarning (the tools print them on stderr).
