@@ -34,14 +34,17 @@ def _nan(value):
 
 def breathers(chain, *, mode=0, near_khz=None, start_khz=None, target_khz=None, step_khz=0.0, max_points=100,
               law="hertz", scheme="saba2c", steps_per_period=0, tolerance=1e-10, stability_tolerance=1e-6,
-              through_opening=False):
+              through_opening=False, continuation="natural", seed_profile=None):
     """A branch of breathers of `chain` (a granular.Chain with F0 > 0), as the breathers tool computes it.
 
     Seed: linear mode number `mode` (1..N), or the mode nearest `near_khz`, or the mode nearest `start_khz` (which
-    must then lie outside the linear bands). The first point is at start_khz, by default just off the seed towards
+    must then lie outside the linear bands), or `seed_profile`: N displacements [m] of a state at rest, Newton's
+    first guess at start_khz (then required, mode and near_khz unset), e.g. an earlier branch's profiles[k]. The first point is at start_khz, by default just off the seed towards
     target_khz (downwards without one: the precompressed Hertz chain softens); the branch is continued in frequency
-    (natural parameter, secant predictor, step control; first step step_khz, 0: automatic) until target_khz,
-    max_points, a Newton failure, a linear mode frequency, or (unless through_opening) the first open contact.
+    (continuation='natural': natural parameter, secant predictor, step control, first step step_khz, 0: automatic;
+    a fold in frequency ends it. continuation='arclength': pseudo-arclength in (x0, omega) from the third point on,
+    which follows the branch round folds) until target_khz, max_points, a Newton failure, a linear mode frequency, or
+    (unless through_opening) the first open contact.
     law: 'hertz' | 'fpu'; scheme: the splitting scheme of shooting and monodromy; steps_per_period: 0 chooses;
     tolerance: Newton's relative residual; stability_tolerance: stable when max |mu| <= 1 + it.
     Returns a granular.Breathers. Releases the GIL."""
@@ -58,4 +61,7 @@ def breathers(chain, *, mode=0, near_khz=None, start_khz=None, target_khz=None, 
     c.shooting.tolerance = _core._finite(tolerance, "tolerance")
     c.stability_tolerance = _core._finite(stability_tolerance, "stability_tolerance")
     c.stop_at_opening = not through_opening
+    c.continuation = continuation
+    if seed_profile is not None:
+        c.seed_profile = [float(x) for x in seed_profile]
     return Breathers(_core._breathers(chain, c))

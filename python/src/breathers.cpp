@@ -56,9 +56,13 @@ py::dict breathers(const PyChain& c, BreatherBranchConfig config) {
 void bind_breathers(py::module_& m) {
   using B = BreatherBranchConfig;  // granular.breathers's keywords, its chain set from the granular.Chain
   config_class(m, "BreatherBranchConfig",
-               "mode near_khz start_khz target_khz step_khz max_points stop_at_opening stability_tolerance shooting",
+               "mode near_khz start_khz target_khz step_khz max_points stop_at_opening stability_tolerance shooting "
+               "seed_profile",
                &B::mode, &B::near_khz, &B::start_khz, &B::target_khz, &B::step_khz, &B::max_points, &B::stop_at_opening,
-               &B::stability_tolerance, &B::shooting)
+               &B::stability_tolerance, &B::shooting, &B::seed_profile)
+      .def_property(
+          "continuation", [](const B& b) { return to_string(b.continuation); },
+          [](B& b, const std::string& word) { b.continuation = parse_continuation(word); })
       .def_property(
           "law", [](const B& b) { return to_string(b.law); },
           [](B& b, const std::string& word) {

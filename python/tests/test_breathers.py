@@ -31,3 +31,23 @@ def test_breathers_rejects_bad_input():
         gr.breathers(gr.diatomic(N=21))
     with pytest.raises(TypeError):
         gr.breathers("not a chain", mode=3)
+
+
+def test_breathers_from_a_profile_and_by_arclength():
+    types = [2 if i % 2 == 0 else 1 for i in range(21)]
+    chain = gr.from_types(types, xi=0.5)
+    edge = gr.band_edges(xi=0.5).fb2
+    natural = gr.breathers(chain, near_khz=edge, max_points=4)
+    # Pseudo-arclength takes over from the third point: the same branch, on other frequencies.
+    arc = gr.breathers(chain, near_khz=edge, max_points=4, continuation="arclength")
+    assert arc.metadata["continuation"]["method"].startswith("pseudo-arclength")
+    assert_identical(arc.freq_khz[:2], natural.freq_khz[:2])
+    assert (np.diff(arc.freq_khz) < 0).all() and (arc.residual <= 1e-10).all()
+    # Seeded from the natural branch's last profile at its frequency: Newton lands on that point.
+    again = gr.breathers(chain, seed_profile=natural.profiles[-1], start_khz=natural.freq_khz[-1], max_points=1)
+    assert again.seed_mode == 0
+    assert np.allclose(again.profiles[0], natural.profiles[-1], rtol=0, atol=1e-6 * np.abs(natural.profiles[-1]).max())
+    with pytest.raises(ValueError, match="continuation"):
+        gr.breathers(chain, near_khz=edge, continuation="pseudo")
+    with pytest.raises(ValueError, match="seed_profile"):
+        gr.breathers(chain, seed_profile=natural.profiles[-1][:-1], start_khz=natural.freq_khz[-1])

@@ -37,7 +37,10 @@ SMALLER = [(r"exponents --compare-paper(?!\S)",
            (r"for lam in [0-9. ]+; do", "for lam in 0.1 0.5 0.9; do"),
            (r"for n in 377 1597; do", "for n in 377; do"),
            (r"(spectrum --quasi .*)--N 1597", r"\1--N 377"),
-           (r"(localization --quasi .*)--N 100000", r"\1--N 10000")]
+           (r"(localization --quasi .*)--N 100000", r"\1--N 10000"),
+           # their transport regimes: one modulation per kind, short chains and runs
+           (r"for case in s1:\S+ s2:\S+ cylinders:\S+; do", "for case in s1:0.5 s2:0.5 cylinders:0.6; do"),
+           (r"(exponents --chains none --quasi .*)--F0 10,0.1,0.01", r"\1--N 301 --T 1e-3 --fit 4e-4:1e-3 --t-star 4e-4 --F0 10")]
 
 
 def blocks(page):

@@ -82,7 +82,6 @@ const BadInput cases[] = {
     {"localization", "--quasi s2 --modulation -1.5 --f 10", "--modulation"},
     {"localization", "--quasi s1 --k0 -1 --f 10", "--k0"},
     {"spreading", "--quasi s2 --ratio 0 --T 1e-4", "--ratio"},
-    {"spreading", "--quasi s1 --modulation 0.2 --T 1e-4 --damping-time 1e-3", "--quasi"},
     {"exponents", "--chains none --quasi s1 --F0 10 --modulation 1.5", "--modulation"},
     {"exponents", "--chains none --quasi s1", "--F0"},
     {"exponents", "--quasi s2 --polydisperse uniform:0.004:0.005", "--quasi"},
