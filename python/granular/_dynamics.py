@@ -211,8 +211,16 @@ def exponent_table(*, chains=["h", "A", "RDM1", "RDM2"], F0=[10.0, 0.5, 0.1, 0.0
                    kappa=0.1, bootstrap=1000, active_window=True, window_threshold=1e-30, reference_max_step=0.01e-6,
                    max_energy_error=1e-3, energy_guard="stop", profile_F0=[10.0, 0.1, 0.0], profile_realizations=100,
                    compare_paper=False, threads=0, checkpoint=None, resume=False, resume_other_version=False,
-                   progress=False, damping_time=0.0, kk_gamma=0.0, mle=False, renormalize=10, walls="flat"):
+                   progress=False, damping_time=0.0, kk_gamma=0.0, mle=False, renormalize=10, walls="flat",
+                   quasi=None, modulation=0.0, ratio="golden", phase=None, angle=45.0, k0=4.0, chain_name=None):
     table = _core.ExponentTableConfig()
+    if quasi is not None:
+        chain = _core.BeadChain()
+        chain.quasi = _quasi(quasi, modulation, ratio, phase, angle, k0)
+        chain.name = f"quasi-{chain.quasi.kind}" if chain_name is None else str(chain_name)
+        table.bead_chains = [chain]
+    if chains is None or chains == "none":
+        chains = []
     table.precompressions = _core._numbers(F0, "F0", 0)
     table.profile_precompressions = [] if profile_F0 is None else _core._numbers(profile_F0, "profile_F0", 0)
     table.profile_realizations = _core._size(profile_realizations, "profile_realizations")
@@ -235,8 +243,13 @@ exponent_table.__doc__ = (
     "The paper's transport study (the exponents tool): gamma (m2 ~ t^gamma) and eta (P^-1 ~ t^-eta) "
     "for every chain kind x F0 x kick, each an ensemble of `realizations` (h runs one: it is "
     "deterministic).\n\n"
-    "    chains: kinds among 'h', 'A', 'RDM1', 'RDM2'; F0: precompressions [N] (0: sonic vacuum); ic: "
-    "kicks\n    N, xi, q, realizations, seed, walls ('flat' | 'sphere'): the chains\n" + _DYNAMICS_DOC + _BEYOND_DOC +
+    "    chains: kinds among 'h', 'A', 'RDM1', 'RDM2' ('none' or []: only the quasiperiodic chain); F0: "
+    "precompressions [N] (0: sonic vacuum); ic: kicks\n    N, xi, q, realizations, seed, walls ('flat' | 'sphere'): "
+    "the chains\n"
+    "    quasi: None, or one more chain after the kinds, quasiperiodic (the tool's --quasi): 's1', 's2' or "
+    "'cylinders', with modulation, ratio, phase (None: drawn per seed and realization, R phases), angle and k0 as "
+    "granular.quasiperiodic's; chain_name: its name in the table (default 'quasi-KIND')\n" +
+    _DYNAMICS_DOC + _BEYOND_DOC +
     "    profile_F0, profile_realizations: F0s whose E_n(T) is averaged, over how many realizations (None: none)\n"
     "    compare_paper: True (or the path of a table in its format) to compare gamma with the paper's Table I "
     "(z-scores with both error sources)\n"

@@ -233,7 +233,7 @@ py::dict exponent_table(const std::vector<std::string>& chains, const std::vecto
       bad_value("chains", " '" + name + "': expected h, A, RDM1 or RDM2");
     }
   }
-  if (config.chains.empty()) bad_value("chains", ": none given");
+  if (config.chains.empty() && config.bead_chains.empty()) bad_value("chains", ": none given (nor quasi)");
   config.kicks.clear();
   for (const auto& name : ic) config.kicks.push_back(parse_kick(name));
   if (config.kicks.empty()) bad_value("ic", ": none given");
@@ -274,6 +274,7 @@ py::dict exponent_table(const std::vector<std::string>& chains, const std::vecto
   const nlohmann::json described = describe_cells(cells);
   std::string chain_list, kick_list;
   for (const auto& name : chains) chain_list += (chain_list.empty() ? "" : ",") + name;
+  if (chains.empty()) chain_list = "none";
   for (const auto& name : ic) kick_list += (kick_list.empty() ? "" : ",") + name;
   nlohmann::json meta = metadata_head("exponent_table");
   meta["parameters"] = {{"chains", chain_list},
@@ -333,8 +334,9 @@ void bind_dynamics(py::module_& m) {
           [](R& r, const std::string& word) { r.walls = parse_wall_shape(word); })
       .def("_validate_quasi", [](const R& r) { validate(*r.quasi, r.F0); });
   using E = ExponentTableConfig;
-  config_class(m, "ExponentTableConfig", "precompressions profile_precompressions profile_realizations base",
-               &E::precompressions, &E::profile_precompressions, &E::profile_realizations, &E::base);
+  config_class(m, "ExponentTableConfig", "precompressions profile_precompressions profile_realizations base bead_chains",
+               &E::precompressions, &E::profile_precompressions, &E::profile_realizations, &E::base, &E::bead_chains);
+  config_class(m, "BeadChain", "name quasi", &BeadChain::name, &BeadChain::quasi);  // a quasiperiodic chain only
   using C = TransportCase;  // what the exponent table's cases share beyond the choices
   config_class(m, "TransportCase", "chain realizations", &C::chain, &C::realizations);
   config_class(m, "RunOptions", "threads checkpoint resume resume_other_version progress", &PyRun::threads,

@@ -80,6 +80,22 @@ def test_quasi_keywords_run_the_tools_chains(tools):
     assert np.all(t.energy_error < 1e-5)  # SABA2C at 1 us, omega tau <= 0.17 on S1: measured <= 2.5e-6
 
 
+def test_exponent_table_over_phases_equals_the_exponents_tool(tools):
+    flags = ["--chains", "none", "--quasi", "s1", "--modulation", "0.5", "--F0", "10", "--ic", "displacement",
+             "--N", "151", "--T", "1e-3", "--fit", "4e-4:1e-3", "--t-star", "4e-4", "--realizations", "3",
+             "--samples", "20", "--profile-F0", "none", "--bootstrap", "50", "--quiet"]
+    csv, meta = tools.run("exponents", *flags, output="qexp")
+    table = gr.exponent_table(chains="none", quasi="s1", modulation=0.5, F0=[10], ic=["displacement"], N=151,
+                              T=1e-3, fit=(4e-4, 1e-3), t_star=4e-4, realizations=3, samples=20, profile_F0=None,
+                              bootstrap=50)
+    assert list(table.table["disorder"]) == ["quasi-s1"]
+    for key in ("gamma", "gamma_err", "eta", "max_energy_error"):
+        assert_identical(table.table[key], csv[key])
+    assert table.metadata["cases"] == meta["cases"]
+    with pytest.raises(ValueError, match="chains"):
+        gr.exponent_table(chains="none", F0=[10], N=151, T=1e-3, realizations=1)
+
+
 def test_quasi_keyword_errors_name_the_keyword():
     with pytest.raises(ValueError, match="modulation"):
         gr.localization(quasi="s1", modulation=1.2, N=100, f="1:2")
