@@ -34,6 +34,19 @@ TEST(ConfigurationFile, ReadsRadii) {
   EXPECT_THROW(parse_radii_text("1e-3\n0\n", "r"), InvalidInput);
 }
 
+TEST(ConfigurationFile, ReadsDisplacements) {
+  EXPECT_EQ(parse_displacements_text("1e-7\n-2.5e-8 # left\n\n0\n", "u"), (std::vector<double>{1e-7, -2.5e-8, 0}));
+  EXPECT_THROW(parse_displacements_text("1e-7\nnan\n", "u"), InvalidInput);
+  EXPECT_THROW(parse_displacements_text("1e-7\n3m\n", "u"), InvalidInput);
+  EXPECT_THROW(parse_displacements_text("# nothing\n", "u"), InvalidInput);
+  try {
+    read_displacements_file("/nonexistent/seed.txt", "seed_profile");
+    FAIL() << "read a missing file";
+  } catch (const InvalidInput& e) {
+    EXPECT_EQ(e.parameter(), "seed_profile");
+  }
+}
+
 TEST(ConfigurationFile, ExampleFilesLoad) {
   EXPECT_EQ(read_configuration_file(std::string(GRANULAR_DATA_DIR) + "/examples/diatomic-10.types").size(), 10u);
   EXPECT_EQ(read_radii_file(std::string(GRANULAR_DATA_DIR) + "/examples/single-impurity-11.radii").size(), 11u);

@@ -85,6 +85,23 @@ std::vector<double> parse_radii_text(const std::string& text, const std::string&
   return radii;
 }
 
+std::vector<double> parse_displacements_text(const std::string& text, const std::string& source) {
+  std::vector<double> u;
+  for_each_value(text, source, [&](std::string_view token, std::size_t line) {
+    double x = 0;
+    auto [end, ec] = std::from_chars(token.data(), token.data() + token.size(), x);
+    if (ec != std::errc() || end != token.data() + token.size()) bad_line(source, line, token, "is not a number");
+    if (!std::isfinite(x)) bad_line(source, line, token, "is not a finite displacement (metres)");
+    u.push_back(x);
+  });
+  if (u.empty()) throw InvalidInput(source + ": no displacements");
+  return u;
+}
+
+std::vector<double> read_displacements_file(const std::string& path, const char* parameter) {
+  return parse_displacements_text(read_text(path, parameter), path);
+}
+
 Configuration read_configuration_file(const std::string& path) {
   return parse_configuration_text(read_text(path, "config"), path);
 }
