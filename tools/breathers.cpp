@@ -6,9 +6,7 @@
 #include <string>
 
 #include "common/chain_options.hpp"
-#include "common/metadata.hpp"
-#include "common/output_claim.hpp"
-#include "common/output_paths.hpp"
+#include "common/outputs.hpp"
 #include "common/tool_main.hpp"
 #include "granular/io/atomic_file.hpp"
 #include "granular/study/breather_branch.hpp"

@@ -8,8 +8,7 @@
 
 #include "common/kicked_case.hpp"
 #include "common/long_run_options.hpp"
-#include "common/metadata.hpp"
-#include "common/output_paths.hpp"
+#include "common/outputs.hpp"
 #include "common/spreading_outputs.hpp"
 #include "common/tool_main.hpp"
 #include "granular/ensemble/checkpoint_log.hpp"

@@ -19,8 +19,7 @@
 #include "granular/study/exponent_table.hpp"
 #include "granular/study/resumed_checkpoint.hpp"
 #include "granular/study/transport_study.hpp"
-#include "metadata.hpp"
-#include "output_claim.hpp"
+#include "outputs.hpp"
 #include "replay_command.hpp"
 #include "tool_main.hpp"
 
