@@ -6,9 +6,7 @@
 #include <string>
 
 #include "common/chain_options.hpp"
-#include "common/metadata.hpp"
-#include "common/output_claim.hpp"
-#include "common/output_paths.hpp"
+#include "common/outputs.hpp"
 #include "common/tool_main.hpp"
 #include "granular/io/atomic_file.hpp"
 #include "granular/study/breather_branch.hpp"
@@ -61,10 +59,8 @@ int main(int argc, char** argv) {
     config.stop_at_opening = !through_opening;
     validate(config);
     tool::warn_implausible(config.chain, chain_options);
-    const std::string csv_path = output + ".csv", json_path = output + ".json";
     const auto claim = tool::claim_output(output, meta.command());
-    check_writable(csv_path);
-    check_writable(json_path);
+    const TableOutputs paths = table_outputs(output);
     const auto branch = continue_breather(config, [&](const BreatherPoint& p) {
       if (!quiet)
         std::fprintf(stderr, "breathers: %.6f kHz  E = %.4g J  max|mu| = %.10f  Newton %d  residual %.2g\n", p.freq_khz,
@@ -72,10 +68,10 @@ int main(int argc, char** argv) {
     });
     if (!quiet)
       std::fprintf(stderr, "breathers: %zu points; stopped: %s\n", branch.points.size(), branch.stop_reason.c_str());
-    AtomicFile csv(csv_path);
+    AtomicFile csv(paths.csv);
     write_breather_csv(csv.stream(), branch);
     meta.merge(describe_breather_branch(config, branch));
-    meta["output"] = csv_path;
-    meta.write(json_path, {&csv});
+    meta["output"] = paths.csv;
+    meta.write(paths.json, {&csv});
   });
 }

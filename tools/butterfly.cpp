@@ -5,9 +5,7 @@
 #include <string>
 
 #include "common/chain_options.hpp"
-#include "common/metadata.hpp"
-#include "common/output_claim.hpp"
-#include "common/output_paths.hpp"
+#include "common/outputs.hpp"
 #include "common/tool_main.hpp"
 #include "granular/ensemble/parallel_realizations.hpp"
 #include "granular/io/atomic_file.hpp"
@@ -53,21 +51,19 @@ int main(int argc, char** argv) {
     config.chain = tool::chain_recipe(o);
     config.realization = tool::chain_realization(o);
     validate(config);
-    const std::string csv_path = output + ".csv", json_path = output + ".json";
     const auto claim = tool::claim_output(output, meta.command());
-    check_writable(csv_path);
-    check_writable(json_path);
+    const TableOutputs paths = table_outputs(output);
 
     ProgressMeter progress(config.ratios.size(), "butterfly", quiet ? 0 : -1);
     run.progress = &progress;
     const auto columns = compute_butterfly(config, run);
     progress.finish();
 
-    AtomicFile csv(csv_path);
+    AtomicFile csv(paths.csv);
     write_butterfly_csv(csv.stream(), columns);
     meta.merge(describe_butterfly(config, columns));
     meta["threads"] = resolve_threads(run.threads);
-    meta["output"] = csv_path;
-    meta.write(json_path, {&csv});
+    meta["output"] = paths.csv;
+    meta.write(paths.json, {&csv});
   });
 }

@@ -5,9 +5,7 @@
 #include <string>
 
 #include "common/chain_options.hpp"
-#include "common/metadata.hpp"
-#include "common/output_claim.hpp"
-#include "common/output_paths.hpp"
+#include "common/outputs.hpp"
 #include "common/tool_main.hpp"
 #include "granular/io/atomic_file.hpp"
 #include "granular/study/correlation_files.hpp"
@@ -48,16 +46,14 @@ int main(int argc, char** argv) {
       config.max_distance = config.chain.N - 1;
     if (run.threads < 0) throw InvalidInput("threads", " " + std::to_string(run.threads) + ": must be >= 0");
     validate(config);
-    const std::string csv_path = output + ".csv", json_path = output + ".json";
     const auto claim = tool::claim_output(output, meta.command());
-    check_writable(csv_path);
-    check_writable(json_path);
+    const TableOutputs paths = table_outputs(output);
 
     const CorrelationResult result = correlation_study(config, run);
-    AtomicFile csv(csv_path);
+    AtomicFile csv(paths.csv);
     write_correlations_csv(csv.stream(), result);
     meta.merge(describe_correlations(config, result));
-    meta["output"] = csv_path;
-    meta.write(json_path, {&csv});
+    meta["output"] = paths.csv;
+    meta.write(paths.json, {&csv});
   });
 }

@@ -9,8 +9,7 @@
 #include "common/exponent_options.hpp"
 #include "common/long_run_options.hpp"
 #include "common/long_time_options.hpp"
-#include "common/metadata.hpp"
-#include "common/output_paths.hpp"
+#include "common/outputs.hpp"
 #include "common/tool_main.hpp"
 #include "granular/ensemble/checkpoint_log.hpp"
 #include "granular/io/atomic_file.hpp"
@@ -40,7 +39,7 @@ int main(int argc, char** argv) {
   tool::LongRunOptions run_options;
   bool compare = false, auto_n = false;
   tool::add_option(app, "--F0", f0_text, "precompressions [N], comma list (0 = sonic vacuum)");
-  tool::add_exponent_choices(app, choices, dynamics.beyond);
+  tool::add_exponent_choices(app, choices, dynamics);
   tool::add_option(app, "--N", n, "beads per chain");
   tool::add_option(app, "--xi", xi, "size ratio R2/R1 in (0,1]");
   tool::add_option(app, "--q", q, "disorder probability in [0,1]");
@@ -79,7 +78,7 @@ int main(int argc, char** argv) {
     tool::apply(dynamics, base);
     config.automatic_length = auto_n;
     std::vector<TransportCase> cases = exponent_cases(config);
-    const nlohmann::json length_rules = tool::length_rules(cases, auto_n, dynamics.choices.site);
+    const nlohmann::json length_rules = tool::length_rules(cases, auto_n, dynamics.site);
     const nlohmann::json step_rule = tool::validate_and_settle(cases, dynamics, app.count("--dt") > 0);
     base.dynamics = cases.front().dynamics;  // τ and scheme as settled
     const auto paper = compare ? read_paper_table(paper_table) : std::vector<PaperCell>{};

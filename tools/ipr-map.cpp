@@ -5,9 +5,7 @@
 #include <string>
 
 #include "common/chain_options.hpp"
-#include "common/metadata.hpp"
-#include "common/output_claim.hpp"
-#include "common/output_paths.hpp"
+#include "common/outputs.hpp"
 #include "common/spectrum_options.hpp"
 #include "common/tool_main.hpp"
 #include "granular/ensemble/parallel_realizations.hpp"
@@ -83,10 +81,8 @@ int main(int argc, char** argv) {
       config.q_values = config.xi_values = {std::numeric_limits<double>::quiet_NaN()};  // one cell
     validate(config);
     tool::warn_implausible(config.chain, beads);
-    const std::string csv_path = output + ".csv", json_path = output + ".json";
     const auto claim = tool::claim_output(output, meta.command());
-    check_writable(csv_path);
-    check_writable(json_path);
+    const TableOutputs paths = table_outputs(output);
 
     ProgressMeter progress(config.q_values.size() * config.xi_values.size() * config.realizations, "ipr-map",
                            quiet ? 0 : -1);
@@ -94,10 +90,10 @@ int main(int argc, char** argv) {
     const auto cells = compute_ipr_map(config, run);
     progress.finish();
 
-    AtomicFile csv(csv_path);
+    AtomicFile csv(paths.csv);
     write_ipr_map_csv(csv.stream(), config, cells);
     meta.merge(describe_ipr_map(config, cells, {solver, method, resolve_threads(run.threads)}));
-    meta["output"] = csv_path;
-    meta.write(json_path, {&csv});
+    meta["output"] = paths.csv;
+    meta.write(paths.json, {&csv});
   });
 }

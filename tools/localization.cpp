@@ -6,9 +6,7 @@
 #include <string>
 
 #include "common/bead_source_options.hpp"
-#include "common/metadata.hpp"
-#include "common/output_claim.hpp"
-#include "common/output_paths.hpp"
+#include "common/outputs.hpp"
 #include "common/tool_main.hpp"
 #include "granular/ensemble/parallel_realizations.hpp"
 #include "granular/io/atomic_file.hpp"
@@ -59,25 +57,23 @@ int main(int argc, char** argv) {
           throw InvalidInput("segments", " " + std::to_string(segments) + ": must be in [2, 1e6]");
         if (run.threads < 0) throw InvalidInput("threads", " " + std::to_string(run.threads) + ": must be >= 0");
         config.segments = static_cast<std::size_t>(segments);
-        const std::string csv_path = output + ".csv", json_path = output + ".json";
         const tool::StreamedChain chain = tool::build_bead_source(chain_options);
         for (double f : config.frequency_khz)  // the first one above the chain's frequencies
           if (tool::warn({frequency_warning("--f", f, chain.highest_frequency_khz)})) break;
         validate(config);
         const auto claim = tool::claim_output(output, meta.command());
-        check_writable(csv_path);
-        check_writable(json_path);
+        const TableOutputs paths = table_outputs(output);
 
         ProgressMeter progress(chain.source->size() * config.frequency_khz.size(), "localization", quiet ? 0 : -1);
         run.progress = &progress;
         const LocalizationScan scan = localization_scan(*chain.source, config, run);
         progress.finish();
 
-        AtomicFile csv(csv_path);
+        AtomicFile csv(paths.csv);
         write_localization_csv(csv.stream(), scan);
         meta.merge(describe_localization(scan, chain.description, frequencies, resolve_threads(run.threads), steel));
-        meta["output"] = csv_path;
-        meta.write(json_path, {&csv});
+        meta["output"] = paths.csv;
+        meta.write(paths.json, {&csv});
       },
       {{"frequencies", "--f"}});
 }

@@ -5,8 +5,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "common/metadata.hpp"
-#include "common/output_paths.hpp"
+#include "common/outputs.hpp"
 #include "common/tool_main.hpp"
 #include "granular/dynamics/restitution.hpp"
 #include "granular/io/atomic_file.hpp"

@@ -8,9 +8,7 @@
 #include <string>
 
 #include "common/chain_options.hpp"
-#include "common/metadata.hpp"
-#include "common/output_claim.hpp"
-#include "common/output_paths.hpp"
+#include "common/outputs.hpp"
 #include "common/spectrum_options.hpp"
 #include "common/tool_main.hpp"
 #include "granular/io/atomic_file.hpp"

@@ -8,8 +8,7 @@
 
 #include "common/kicked_case.hpp"
 #include "common/long_run_options.hpp"
-#include "common/metadata.hpp"
-#include "common/output_paths.hpp"
+#include "common/outputs.hpp"
 #include "common/spreading_outputs.hpp"
 #include "common/tool_main.hpp"
 #include "granular/ensemble/checkpoint_log.hpp"
@@ -49,15 +48,15 @@ int main(int argc, char** argv) {
                      c.profile_realizations = more.profile ? c.realizations : 0;
                      const SpreadingConfig& d = c.dynamics;
                      tool::apply(more, c);
-                     const nlohmann::json step_rule = tool::settle(c, options, app.count("--dt") > 0);
+                     const nlohmann::json step_rule = tool::validate_and_settle(c, dynamics, app.count("--dt") > 0);
                      SpreadingPaths paths = spreading_paths(output, ensemble, more.profile, !d.force_sites.empty());
                      paths.final_state = more.final_state, paths.energy_map = more.energy_map,
                      paths.spectrum = more.spectrum;
-                     paths.deviation = dynamics.beyond.deviation;
+                     paths.deviation = dynamics.deviation;
                      const auto claim = tool::claim_output(output, meta.command(),
                                                            ensemble ? std::optional(run.checkpoints()) : std::nullopt);
                      check_outputs(paths.all(), "--output/--final-state/--energy-map/--spectrum");
-                     const bool single = more.single() || !dynamics.beyond.deviation.empty();  // a run of its own
+                     const bool single = more.single() || !dynamics.deviation.empty();  // a run of its own
 
                      // Read before the run: resuming rewrites the checkpoint under this code's name.
                      const nlohmann::json resumed = ensemble ? tool::resumed_code(run, {paths.checkpoint}) : nullptr;

@@ -54,6 +54,7 @@
 #include "granular/study/localization_scan.hpp"
 #include "granular/study/mode_kick.hpp"
 #include "granular/study/paper_comparison.hpp"
+#include "granular/study/resumed_checkpoint.hpp"
 #include "granular/study/spectrum_file.hpp"
 #include "granular/study/spreading_files.hpp"
 #include "granular/study/time_step_rule.hpp"

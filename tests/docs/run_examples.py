@@ -58,7 +58,7 @@ def shell_block(body):
 def localize(body):
     body = re.sub(r"(?<![\w/.])\./build(?![\w.-])", str(build), body)
     body = re.sub(r"(?<![\w/.$])build/", f"{build}/", body)
-    body = re.sub(r"(?<![\w/.])(tools|data)/", lambda m: f"{source}/{m.group(1)}/", body)
+    body = re.sub(r"(?<![\w/.-])(tools|data)/", lambda m: f"{source}/{m.group(1)}/", body)
     body = body.replace("-o docs/figures/", "-o ").replace("--output docs/", "--output ")
     for pattern, replacement in SMALLER:
         if re.search(pattern, body):

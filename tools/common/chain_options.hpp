@@ -13,12 +13,14 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include "flag_table.hpp"
 #include "granular/io/bead_distribution_syntax.hpp"
 #include "granular/model/bead_distribution.hpp"
 #include "granular/model/chain_recipe.hpp"
 #include "granular/model/configuration_file.hpp"
 #include "granular/model/named_chains.hpp"
 #include "granular/model/plausibility.hpp"
+#include "granular/number_format.hpp"
 #include "tool_main.hpp"
 
 namespace granular::tool {
@@ -61,18 +63,37 @@ inline void add_walls_option(CLI::App& app, std::string& walls) {
              "fixed-end lattice");
 }
 
-/// --quasi and its parameters (model/quasiperiodic.hpp); returns --quasi for exclusions.
+/// --quasi and its parameters (model/quasiperiodic.hpp), each spelled by a replay of a quasiperiodic chain.
+inline const std::vector<Flag<ChainOptions>>& quasi_flags() {
+  using O = ChainOptions;
+  static const std::vector<Flag<O>> flags{
+      {"--quasi", &O::quasi,
+       "quasiperiodic chain: s1 (on-site springs), s2 (masses) or cylinders (crossing angles), modulated by 1 + "
+       "modulation cos(2 pi ratio n + phase); R1 is the beads' radius",
+       false},
+      {"--modulation", &O::modulation, "--quasi: relative modulation strength lambda, |lambda| < 1"},
+      {"--ratio", &O::ratio, "--quasi: the incommensurate ratio beta > 0: golden, p/q or a number"},
+      {"--phase", &O::phase,
+       "--quasi: the phase [rad] (default: drawn uniformly in [0, 2 pi) per --seed and --realization)", false,
+       [](const TransportCase& c) { return c.chain.quasi && c.chain.quasi->phase; }},
+      {"--angle", &O::angle, "--quasi cylinders: mean crossing angle alpha0 [degrees] in (0, 180)"},
+      {"--k0", &O::k0, "--quasi s1: mean on-site stiffness in units of the bond stiffness K"},
+  };
+  return flags;
+}
+
+/// Registers quasi_flags(); returns --quasi for exclusions.
 inline CLI::Option* add_quasiperiodic_options(CLI::App& app, ChainOptions& o) {
-  auto* quasi = app.add_option("--quasi", o.quasi,
-                               "quasiperiodic chain: s1 (on-site springs), s2 (masses) or cylinders (crossing angles), "
-                               "modulated by 1 + modulation cos(2 pi ratio n + phase); R1 is the beads' radius");
-  add_option(app, "--modulation", o.modulation, "--quasi: relative modulation strength lambda, |lambda| < 1");
-  add_option(app, "--ratio", o.ratio, "--quasi: the incommensurate ratio beta > 0: golden, p/q or a number");
-  app.add_option("--phase", o.phase,
-                 "--quasi: the phase [rad] (default: drawn uniformly in [0, 2 pi) per --seed and --realization)");
-  add_option(app, "--angle", o.angle, "--quasi cylinders: mean crossing angle alpha0 [degrees] in (0, 180)");
-  add_option(app, "--k0", o.k0, "--quasi s1: mean on-site stiffness in units of the bond stiffness K");
-  return quasi;
+  add_flags(app, o, quasi_flags());
+  return app.get_option("--quasi");
+}
+
+/// The options that give `q` (the inverse of quasiperiodic()).
+inline ChainOptions options_of(const Quasiperiodic& q) {
+  ChainOptions o;
+  o.quasi = to_string(q.kind), o.modulation = q.modulation, o.ratio = format_number(q.ratio);
+  o.phase = q.phase, o.angle = q.angle, o.k0 = q.k0;
+  return o;
 }
 
 /// The quasiperiodic chain the options pick, if --quasi is given.

@@ -4,14 +4,17 @@
 // β = 8e-3 m/s, the kick at the centre bead, m̃2 about the excited site, fits on 4–10 ms sampled
 // every 10 µs, t* = 4 ms, κ = 0.1), one --fit and one --beta parser. The library's messages name
 // parameters (`fit_step`, `t_star`); tool::run tells them as these flags (`--fit-step`, `--t-star`).
+// Beyond the paper (docs/physics.md, "Nonlinear dynamics"): dissipation (--damping-time, --kk-gamma)
+// and the maximal Lyapunov exponent by the tangent map (`spreading --mle`, `exponents --mle`).
 #include <cstdio>
 #include <string>
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
-#include "beyond_options.hpp"
 #include "chain_options.hpp"
+#include "flag_table.hpp"
+#include "granular/dynamics/spreading.hpp"
 #include "granular/error.hpp"
 #include "granular/io/range_syntax.hpp"
 #include "granular/number_format.hpp"
@@ -23,80 +26,133 @@
 
 namespace granular::tool {
 
-/// The options bind straight into the library's choices, except the three whose words only a
-/// command line has: --beta (a number or 'match'), --fit (start:stop), --active-window (on|off).
-struct DynamicsOptions {
-  TransportChoices choices;
-  std::string beta = "8e-3", fit = "4e-3:1e-2", active_window = "on";
-  BeyondOptions beyond;  ///< damping (here) and the tangent map (spreading adds its flags)
+/// The library's choices, with the file only the tool writes: --deviation FILE turns on --deviation-samples.
+struct BeyondOptions : BeyondChoices {
+  BeyondOptions() { deviation_samples = 20; }
+  std::string deviation;  ///< CSV of the deviation-vector distribution; empty = none
 };
 
+/// --mle (with `help`: what the tool writes) and --renormalize.
+inline void add_mle_options(CLI::App& app, BeyondOptions& o, const std::string& help) {
+  app.add_flag("--mle", o.mle, help);
+  add_option(app, "--renormalize", o.renormalize, "steps between renormalizations of the deviation vector");
+}
+
+inline void add_lyapunov_options(CLI::App& app, BeyondOptions& o) {
+  add_mle_options(app, o, "maximal Lyapunov exponent by the tangent map: column mle = X1(t) [1/s] (ensemble: its mean)");
+  app.add_option("--deviation", o.deviation, "CSV t,site,share: the deviation vector along the chain (with --mle)");
+  add_option(app, "--deviation-samples", o.deviation_samples, "uniform times of --deviation");
+}
+
+/// granular::apply(BeyondChoices) (transport_choices.hpp), once --deviation is read.
+inline void apply(const BeyondOptions& o, SpreadingConfig& d) {
+  if (!o.deviation.empty() && !o.mle) throw InvalidInput("--deviation: needs --mle");
+  if (o.deviation_samples < 2)
+    throw InvalidInput("--deviation-samples " + std::to_string(o.deviation_samples) + ": at least 2");
+  BeyondChoices choices = o;
+  if (o.deviation.empty()) choices.deviation_samples = 0;
+  granular::apply(choices, d);
+}
+
+/// The options bind straight into the library's choices, except the three whose words only a
+/// command line has: --beta (a number or 'match'), --fit (start:stop), --active-window (on|off);
+/// and damping (here) and the tangent map (spreading adds its flags).
+struct DynamicsOptions : TransportChoices, BeyondOptions {
+  std::string beta_text = "8e-3", fit_text = "4e-3:1e-2", active_window_text = "on";
+};
+
+/// The kick's flags (a replay spells them right after --ic).
+inline const std::vector<Flag<DynamicsOptions>>& kick_flags() {
+  static const std::vector<Flag<DynamicsOptions>> flags{
+      {"--alpha", &DynamicsOptions::alpha, "displacement kick [m] (also what --beta match matches)"},
+      {"--beta", &DynamicsOptions::beta_text,
+       "velocity kick [m/s] (the paper's 8e-3 for every F0), or 'match': the energy of --alpha on each chain", true,
+       [](const TransportCase& c) { return c.kick == Kick::velocity; }},
+  };
+  return flags;
+}
+
+/// The run's flags: where the kick lands, the scheme, the samples, the fit and the guards.
+inline const std::vector<Flag<DynamicsOptions>>& run_flags() {
+  using O = DynamicsOptions;
+  static const std::vector<Flag<O>> flags{
+      {"--site", &O::site, "kicked bead n0, 1..N (0 = the centre, (N+1)/2)", true,
+       [](const TransportCase& c) { return !c.chain.centred; }},  // --N auto kicks the centre by rule
+      {"--centre", &O::centre,
+       "m2 about the kicked 'site' (the paper's n_c) or the energy 'centroid'; both are written"},
+      {"--T", &O::duration, "duration [s], a whole number of --dt"},
+      {"--dt", &O::time_step,
+       "time step tau [s]; must meet tau <= h*/omega_max (docs/physics.md, 'Time step'): a larger one is "
+       "refused, naming the largest stable tau; by default 1e-6, or 1e-6/k (smallest integer k) where 1e-6 "
+       "is past a sixth of that limit"},
+      {"--integrator", &O::integrator,
+       "saba2c | saba2 | aba864 | srkn14a | reference (Odeint RKF78) | auto: the cheapest scheme and step "
+       "keeping the energy error at SABA2C's at 1e-6 s: SRKN14a at 5e-6 s where no contact can open, else "
+       "SABA2C (docs/physics.md, 'Chain length for long times'); no --dt with it"},
+      {"--force-law", &O::force_law, "hertz | fpu | linear"},
+      {"--samples", &O::samples, "log-spaced sample times (tau..T) outside the fit window"},
+      {"--sampling", &O::sampling, "log (tau..T) | uniform (0..T) for those samples"},
+      {"--fit", &O::fit_text, "fit window start:stop [s] of gamma (m2 ~ t^gamma) and eta (P^-1 ~ t^-eta)"},
+      {"--fit-step", &O::fit_step, "spacing of the samples inside the fit window [s], a multiple of --dt"},
+      {"--t-star", &O::t_star, "t*: from here on, |L_d - gamma| >= --kappa means 'not a power law' [s]"},
+      {"--kappa", &O::kappa, "largest |L_d - gamma| of a power law after --t-star"},
+      {"--bootstrap", &O::bootstrap, "resamples of the realization bootstrap of gamma and eta"},
+      {"--active-window", &O::active_window_text, "on | off: integrate only where the wave has arrived"},
+      {"--window-threshold", &O::window_threshold, "relative kinetic energy that grows the window"},
+      {"--reference-max-step", &O::reference_max_step, "largest step of --integrator reference [s], 0 = none"},
+      {"--max-energy-error", &O::max_energy_error, "guard: relative energy error that stops (or is reported), 0 = off"},
+      {"--energy-guard", &O::energy_guard, "stop | warn: what passing --max-energy-error does"},
+      {"--damping-time", &O::damping_time, "on-site viscous damping time tau_d [s] of -(m/tau_d) du/dt; 0 = none", true,
+       [](const TransportCase& c) { return c.dynamics.damping.time > 0; }},
+      {"--kk-gamma", &O::kk_gamma,
+       "Kuwabara-Kono contact damping gamma_KK [s]: bond force A[d]^{3/2} + gamma A [d]^{1/2} dd/dt; 0 = none", true,
+       [](const TransportCase& c) { return c.dynamics.damping.kk_gamma > 0; }},
+  };
+  return flags;
+}
+
 inline void add_dynamics_options(CLI::App& app, DynamicsOptions& o) {
-  TransportChoices& c = o.choices;
-  add_option(app, "--alpha", c.alpha, "displacement kick [m] (also what --beta match matches)");
-  add_option(app, "--beta", o.beta,
-             "velocity kick [m/s] (the paper's 8e-3 for every F0), or 'match': the energy of --alpha on each chain");
-  add_option(app, "--site", c.site, "kicked bead n0, 1..N (0 = the centre, (N+1)/2)");
-  add_option(app, "--centre", c.centre,
-             "m2 about the kicked 'site' (the paper's n_c) or the energy 'centroid'; both are written");
-  add_option(app, "--T", c.duration, "duration [s], a whole number of --dt");
-  add_option(app, "--dt", c.time_step,
-             "time step tau [s]; must meet tau <= h*/omega_max (docs/physics.md, 'Time step'): a larger one is "
-             "refused, naming the largest stable tau; by default 1e-6, or 1e-6/k (smallest integer k) where 1e-6 "
-             "is past a sixth of that limit");
-  add_option(app, "--integrator", c.integrator,
-             "saba2c | saba2 | aba864 | srkn14a | reference (Odeint RKF78) | auto: the cheapest scheme and step "
-             "keeping the energy error at SABA2C's at 1e-6 s: SRKN14a at 5e-6 s where no contact can open, else "
-             "SABA2C (docs/physics.md, 'Chain length for long times'); no --dt with it");
-  add_option(app, "--force-law", c.force_law, "hertz | fpu | linear");
-  add_option(app, "--samples", c.samples, "log-spaced sample times (tau..T) outside the fit window");
-  add_option(app, "--sampling", c.sampling, "log (tau..T) | uniform (0..T) for those samples");
-  add_option(app, "--fit", o.fit, "fit window start:stop [s] of gamma (m2 ~ t^gamma) and eta (P^-1 ~ t^-eta)");
-  add_option(app, "--fit-step", c.fit_step, "spacing of the samples inside the fit window [s], a multiple of --dt");
-  add_option(app, "--t-star", c.t_star, "t*: from here on, |L_d - gamma| >= --kappa means 'not a power law' [s]");
-  add_option(app, "--kappa", c.kappa, "largest |L_d - gamma| of a power law after --t-star");
-  add_option(app, "--bootstrap", c.bootstrap, "resamples of the realization bootstrap of gamma and eta");
-  add_option(app, "--active-window", o.active_window, "on | off: integrate only where the wave has arrived");
-  add_option(app, "--window-threshold", c.window_threshold, "relative kinetic energy that grows the window");
-  add_option(app, "--reference-max-step", c.reference_max_step, "largest step of --integrator reference [s], 0 = none");
-  add_option(app, "--max-energy-error", c.max_energy_error,
-             "guard: relative energy error that stops (or is reported), 0 = off");
-  add_option(app, "--energy-guard", c.energy_guard, "stop | warn: what passing --max-energy-error does");
-  add_damping_options(app, o.beyond);
+  add_flags(app, o, kick_flags());
+  add_flags(app, o, run_flags());
+}
+
+/// The options that give `c` (the inverse of apply): what a replay spells.
+inline DynamicsOptions options_of(const TransportCase& c) {
+  DynamicsOptions o;
+  static_cast<TransportChoices&>(o) = choices_of(c);
+  static_cast<BeyondChoices&>(o) = beyond_choices_of(c.dynamics);
+  o.beta_text = c.match_beta ? "match" : format_number(c.beta);
+  o.fit_text = format_number(c.fit_begin) + ":" + format_number(c.fit_end);
+  o.active_window_text = c.dynamics.window.enabled ? "on" : "off";
+  return o;
 }
 
 /// Fills `c` from the options: granular::apply(TransportChoices) once the three command-line
 /// words are read. Needs c.n (for --site).
 inline void apply(const DynamicsOptions& o, TransportCase& c) {
-  TransportChoices choices = o.choices;
+  TransportChoices choices = o;
   if (choices.integrator == "auto") choices.integrator = "saba2c";  // settled with the step (settle_time_step)
-  if (o.beta != "match") choices.beta = parse_number_list(o.beta, "--beta", 0, 1).at(0);
+  if (o.beta_text != "match") choices.beta = parse_number_list(o.beta_text, "--beta", 0, 1).at(0);
   else choices.beta.reset();
-  if (o.active_window != "on" && o.active_window != "off")
-    throw InvalidInput("--active-window '" + o.active_window + "': on or off");
-  choices.active_window = o.active_window == "on";
-  const Interval fit = parse_interval(o.fit, "--fit");
+  if (o.active_window_text != "on" && o.active_window_text != "off")
+    throw InvalidInput("--active-window '" + o.active_window_text + "': on or off");
+  choices.active_window = o.active_window_text == "on";
+  const Interval fit = parse_interval(o.fit_text, "--fit");
   choices.fit_begin = fit.start;
   choices.fit_end = fit.stop;
   granular::apply(choices, c);
-  apply(o.beyond, c.dynamics);
+  apply(static_cast<const BeyondOptions&>(o), c.dynamics);
 }
 
 /// granular::validate_and_settle (case_settling.hpp): the cases validated with the errors in the
 /// order a user can act on them (a --dt past the stability limit before a --fit-step judged on
 /// it), the time step, and with `--integrator auto` the scheme first (SRKN14a at 5 µs where no
 /// contact can open and it is cheaper, else SABA2C); then the --T warning, after the errors.
-inline nlohmann::json validate_and_settle(std::vector<TransportCase>& cases, const DynamicsOptions& o, bool dt_given) {
+/// `cases`: one TransportCase or a std::vector of them.
+template <class Cases>
+nlohmann::json validate_and_settle(Cases& cases, const DynamicsOptions& o, bool dt_given) {
   std::string warning;
-  nlohmann::json rule = granular::validate_and_settle(cases, o.choices.integrator == "auto", dt_given, "--T", warning);
-  warn({warning});
-  return rule;
-}
-
-/// The same for one case.
-inline nlohmann::json validate_and_settle(TransportCase& c, const DynamicsOptions& o, bool dt_given) {
-  std::string warning;
-  nlohmann::json rule = granular::validate_and_settle(c, o.choices.integrator == "auto", dt_given, "--T", warning);
+  nlohmann::json rule = granular::validate_and_settle(cases, o.integrator == "auto", dt_given, "--T", warning);
   warn({warning});
   return rule;
 }

@@ -7,8 +7,8 @@
 
 #include <CLI/CLI.hpp>
 
-#include "beyond_options.hpp"
 #include "chain_options.hpp"
+#include "dynamics_options.hpp"
 #include "granular/io/range_syntax.hpp"
 #include "granular/study/exponent_table.hpp"
 #include "mode_kick_options.hpp"

@@ -31,7 +31,7 @@ inline void add_kicked_case_options(CLI::App& app, KickedCaseOptions& o) {
   add_option(app, "--ic", o.ic, "initial condition: displacement | velocity | mode (a linear mode: --mode, --mode-khz)");
   add_dynamics_options(app, o.dynamics);
   add_mode_kick_options(app, o.mode);
-  add_lyapunov_options(app, o.dynamics.beyond);
+  add_lyapunov_options(app, o.dynamics);
   add_option(app, "--realizations", o.realizations, "realizations to average (ensemble means and exponents)");
 }
 
@@ -58,13 +58,6 @@ inline KickedCase kicked_case(KickedCaseOptions& o, bool ensemble) {
   apply(o.dynamics, c);
   c.fit = c.fit_end <= c.dynamics.duration * (1 + 1e-12);  // a window beyond T: no exponents, a note
   return k;
-}
-
-/// Validates the case and settles its time step (and scheme, with --integrator auto) by the rules
-/// on its very chain or chains, a --dt past the stability limit named before anything judged on
-/// its grid (validate_and_settle). Returns the rule for the JSON.
-inline nlohmann::json settle(TransportCase& c, const KickedCaseOptions& o, bool dt_given) {
-  return validate_and_settle(c, o.dynamics, dt_given);
 }
 
 }  // namespace granular::tool

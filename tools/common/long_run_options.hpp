@@ -17,9 +17,9 @@
 #include "granular/ensemble/run_options.hpp"
 #include "granular/parallel/mpi_context.hpp"
 #include "granular/study/exponent_table.hpp"
+#include "granular/study/resumed_checkpoint.hpp"
 #include "granular/study/transport_study.hpp"
-#include "metadata.hpp"
-#include "output_claim.hpp"
+#include "outputs.hpp"
 #include "replay_command.hpp"
 #include "tool_main.hpp"
 
@@ -73,28 +73,16 @@ inline ExponentRunOptions exponent_run_options(const LongRunOptions& o, const st
           .skip_failed = r.skip_failed};
 }
 
-/// With --resume-other-version: which code made the checkpoint (`checkpoints`, the first that
-/// exists), which resumes it, and every version whose realizations the result holds ("versions",
-/// oldest first: all those of earlier accepted resumes too), for the JSON; null otherwise.
-/// A plain --resume of a checkpoint another version made is refused here, in this tool's words.
+/// With --resume-other-version: the code versions of the result (study/resumed_checkpoint.hpp)
+/// for the JSON; null otherwise. A plain --resume of a checkpoint another version made is refused
+/// here, in this tool's words.
 inline nlohmann::json resumed_code(const LongRunOptions& o, const std::vector<std::string>& checkpoints) {
   if (o.resume && !o.other_version)
     for (const std::string& c : checkpoints)
       if (const std::string other = CheckpointLog::other_version(c); !other.empty())
         throw InvalidInput("resume", ": " + other + "; resume it with that version, or accept the mix with " +
                                          "--resume-other-version");
-  if (!o.other_version) return nullptr;
-  for (const std::string& c : checkpoints)
-    if (const std::string made_by = CheckpointLog::code_of(c); !made_by.empty()) {
-      std::vector<std::string> versions;
-      for (const std::string& each : checkpoints)  // a study's cases: the union, in order
-        for (const std::string& code : CheckpointLog::codes_of(each))
-          if (std::find(versions.begin(), versions.end(), code) == versions.end()) versions.push_back(code);
-      if (std::find(versions.begin(), versions.end(), CheckpointLog::this_code()) == versions.end())
-        versions.push_back(CheckpointLog::this_code());
-      return {{"made_by", made_by}, {"resumed_by", CheckpointLog::this_code()}, {"versions", versions}};
-    }
-  return nullptr;
+  return o.other_version ? resumed_checkpoint(checkpoints) : nullptr;
 }
 
 /// Runs `study` (a call of run_transport_study or run_exponent_table); a realization failing in

@@ -35,17 +35,15 @@ inline void add_auto_length(CLI::App& app, bool& auto_n) {
   n->type_name("INT|auto");
 }
 
-/// Sizes `c` (its chain, kick, F0, force law and T set) for --N auto: N, the centre kick, the
-/// centred draw. `site`: the --site given (only 0, the centre, goes with auto). Returns the rule.
-inline nlohmann::json size_chain(TransportCase& c, long long site) {
+/// --N auto kicks the centre bead: only --site 0 goes with it.
+inline void require_centre_kick(long long site) {
   if (site != 0) throw InvalidInput("--site " + std::to_string(site) + ": --N auto kicks the centre bead (--site 0)");
-  return to_json(size_for_long_times(c));
 }
 
 /// exponents: the rules of its cases (sized by exponent_cases) when `auto_n`, else null.
 inline nlohmann::json length_rules(const std::vector<TransportCase>& cases, bool auto_n, long long site) {
   if (!auto_n) return nullptr;
-  if (site != 0) throw InvalidInput("--site " + std::to_string(site) + ": --N auto kicks the centre bead (--site 0)");
+  require_centre_kick(site);
   nlohmann::json rules = nlohmann::json::array();
   for (const TransportCase& c : cases) rules.push_back(to_json(automatic_chain_length(c)));
   return rules;
@@ -64,9 +62,10 @@ inline void size_chain(ChainOptions& chain, const DynamicsOptions& dynamics, con
   probe.chain = chain_recipe(three);
   probe.kick = parse_kick(ic);
   DynamicsOptions centre = dynamics;
-  centre.choices.site = 0;
+  centre.site = 0;
   apply(centre, probe);
-  chain.length_rule = size_chain(probe, dynamics.choices.site);
+  require_centre_kick(dynamics.site);
+  chain.length_rule = to_json(size_for_long_times(probe));  // N, the centre kick, the centred draw
   chain.n = static_cast<long long>(probe.chain.N);
 }
 

@@ -7,6 +7,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "flag_table.hpp"
 #include "granular/study/transport_study.hpp"
 
 namespace granular::tool {
@@ -16,11 +17,26 @@ struct ModeKickOptions {
   double mode_khz = -1, energy = 0;
 };
 
-inline void add_mode_kick_options(CLI::App& app, ModeKickOptions& o) {
-  app.add_option("--mode", o.mode, "--ic mode: the linear mode number K, 1..N by increasing frequency");
-  app.add_option("--mode-khz", o.mode_khz, "--ic mode: the linear mode nearest this frequency [kHz]");
-  app.add_option("--energy", o.energy,
-                 "--ic mode: total energy of the initial state [J] (without it --alpha is the largest |u_n|)");
+/// The flags, each spelled by a replay only where a mode kick uses it.
+inline const std::vector<Flag<ModeKickOptions>>& mode_flags() {
+  using O = ModeKickOptions;
+  static const std::vector<Flag<O>> flags{
+      {"--mode", &O::mode, "--ic mode: the linear mode number K, 1..N by increasing frequency", false,
+       [](const TransportCase& c) { return c.kick == Kick::mode && c.mode.mode != 0; }},
+      {"--mode-khz", &O::mode_khz, "--ic mode: the linear mode nearest this frequency [kHz]", false,
+       [](const TransportCase& c) { return c.kick == Kick::mode && c.mode.near_khz >= 0; }},
+      {"--energy", &O::energy,
+       "--ic mode: total energy of the initial state [J] (without it --alpha is the largest |u_n|)", false,
+       [](const TransportCase& c) { return c.kick == Kick::mode && c.mode.energy != 0; }},
+  };
+  return flags;
+}
+
+inline void add_mode_kick_options(CLI::App& app, ModeKickOptions& o) { add_flags(app, o, mode_flags()); }
+
+/// The options that give c's mode kick.
+inline ModeKickOptions options_of(const ModeKick& m) {
+  return {.mode = m.mode, .mode_khz = m.near_khz, .energy = m.energy};
 }
 
 /// Into `c`, whose mode kicks (if `kicks` holds one) use it: only a mode kick may use these options.

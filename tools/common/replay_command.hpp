@@ -1,7 +1,8 @@
 #pragma once
 // The `spreading` command that computes one realization of a kicked-chain case alone, printed
 // when a realization of an ensemble fails: every field of the case spelled as spreading's flags
-// (numbers in shortest round-trip form), read back with spreading's own options (kicked_case.hpp)
+// (the kick's and the run's from the rows that declare them: flag_table.hpp; numbers in shortest
+// round-trip form), read back with spreading's own options (kicked_case.hpp)
 // and checked by study/case_replay.hpp before it is printed.
 #include <algorithm>
 #include <cstdint>
@@ -24,7 +25,6 @@ inline std::vector<std::string> replay_flags(const TransportCase& c, std::uint64
   const auto add = [&](const std::string& flag, const std::string& value) { a.insert(a.end(), {flag, value}); };
   const auto number = [](double x) { return format_number(x); };
   const ChainRecipe& chain = c.chain;
-  const SpreadingConfig& d = c.dynamics;
   if (const auto& b = chain.distribution) {
     const bool types = b->kind == BeadDistribution::Kind::types;
     add(types ? "--types" : "--polydisperse", spell(*b));
@@ -32,12 +32,7 @@ inline std::vector<std::string> replay_flags(const TransportCase& c, std::uint64
   } else if (chain.given_radii) {
     add("--radii", chain.source);
   } else if (const auto& q = chain.quasi) {
-    add("--quasi", to_string(q->kind));
-    add("--modulation", number(q->modulation));
-    add("--ratio", number(q->ratio));
-    if (q->phase) add("--phase", number(*q->phase));
-    add("--angle", number(q->angle));
-    add("--k0", number(q->k0));
+    spell_flags(quasi_flags(), options_of(*q), c, a);
     add("--R1", number(chain.R1));
   } else {
     if (chain.given_types) add("--config", chain.source);
@@ -53,36 +48,13 @@ inline std::vector<std::string> replay_flags(const TransportCase& c, std::uint64
   add("--F0", number(chain.F0));
   if (chain.walls != WallShape::flat) add("--walls", "sphere");
   add("--ic", to_string(c.kick));
-  add("--alpha", number(c.alpha));
-  if (c.kick == Kick::velocity) add("--beta", c.match_beta ? "match" : number(c.beta));
-  if (c.kick == Kick::mode) {
-    if (c.mode.mode != 0) add("--mode", std::to_string(c.mode.mode));
-    if (c.mode.near_khz >= 0) add("--mode-khz", number(c.mode.near_khz));
-    if (c.mode.energy != 0) add("--energy", number(c.mode.energy));
-  }
-  if (!chain.centred) add("--site", std::to_string(c.site + 1));  // --N auto kicks the centre by rule
-  add("--centre", to_string(c.centre));
-  add("--T", number(d.duration));
-  add("--dt", number(d.time_step));
-  add("--integrator", d.integrator.name());
-  add("--force-law", to_string(d.force_law));
-  add("--samples", std::to_string(d.samples));
-  add("--sampling", to_string(d.sampling));
-  add("--fit", number(c.fit_begin) + ":" + number(c.fit_end));
-  add("--fit-step", number(c.fit_step));
-  add("--t-star", number(c.criterion.t_start));
-  add("--kappa", number(c.criterion.kappa));
-  add("--bootstrap", std::to_string(c.bootstrap.resamples));
-  add("--active-window", d.window.enabled ? "on" : "off");
-  add("--window-threshold", number(d.window.threshold));
-  add("--reference-max-step", number(d.integrator.tolerance.max_step));
-  add("--max-energy-error", number(d.max_energy_error));
-  add("--energy-guard", d.stop_on_energy_error ? "stop" : "warn");
-  if (d.damping.time > 0) add("--damping-time", number(d.damping.time));
-  if (d.damping.kk_gamma > 0) add("--kk-gamma", number(d.damping.kk_gamma));
-  if (d.lyapunov.enabled) {
+  const DynamicsOptions dynamics = options_of(c);
+  spell_flags(kick_flags(), dynamics, c, a);
+  spell_flags(mode_flags(), options_of(c.mode), c, a);
+  spell_flags(run_flags(), dynamics, c, a);
+  if (c.dynamics.lyapunov.enabled) {
     a.emplace_back("--mle");
-    add("--renormalize", std::to_string(d.lyapunov.renormalize_every));
+    add("--renormalize", std::to_string(dynamics.renormalize));
   }
   return a;
 }
@@ -95,7 +67,7 @@ inline TransportCase read_kicked_case(const std::vector<std::string>& arguments)
   std::vector<std::string> reversed(arguments.rbegin(), arguments.rend());  // CLI11 reads them from the back
   app.parse(reversed);
   KickedCase k = kicked_case(o, false);
-  settle(k.c, o, app.count("--dt") > 0);
+  validate_and_settle(k.c, o.dynamics, app.count("--dt") > 0);
   return k.c;
 }
 

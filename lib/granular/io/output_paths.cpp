@@ -27,4 +27,11 @@ void check_outputs(const std::vector<std::string>& paths, const std::string& nam
     if (!p.empty()) check_writable(p);
 }
 
+TableOutputs table_outputs(const std::string& prefix) {
+  TableOutputs paths{prefix + ".csv", prefix + ".json"};
+  check_writable(paths.csv);
+  check_writable(paths.json);
+  return paths;
+}
+
 }  // namespace granular

@@ -16,4 +16,13 @@ std::string output_prefix(const std::string& output);
 /// these outputs, e.g. the options that name them).
 void check_outputs(const std::vector<std::string>& paths, const std::string& names);
 
+/// The outputs of a run that writes one table: PREFIX.csv and its JSON, PREFIX.json.
+struct TableOutputs {
+  std::string csv, json;
+};
+
+/// PREFIX.csv and PREFIX.json of `prefix`, each checked writable (atomic_file.hpp: check_writable)
+/// before the run.
+TableOutputs table_outputs(const std::string& prefix);
+
 }  // namespace granular

@@ -55,6 +55,41 @@ void apply(const TransportChoices& o, TransportCase& c) {
   c.bootstrap.resamples = static_cast<std::size_t>(o.bootstrap);
 }
 
+TransportChoices choices_of(const TransportCase& c) {
+  const SpreadingConfig& d = c.dynamics;
+  TransportChoices o;
+  o.alpha = c.alpha;
+  o.beta = c.match_beta ? std::nullopt : std::optional(c.beta);
+  o.site = static_cast<long long>(c.site) + 1;
+  o.centre = to_string(c.centre);
+  o.duration = d.duration;
+  o.time_step = d.time_step;
+  o.integrator = d.integrator.name();
+  o.force_law = to_string(d.force_law);
+  o.samples = static_cast<long long>(d.samples);
+  o.sampling = to_string(d.sampling);
+  o.fit_begin = c.fit_begin;
+  o.fit_end = c.fit_end;
+  o.fit_step = c.fit_step;
+  o.t_star = c.criterion.t_start;
+  o.kappa = c.criterion.kappa;
+  o.bootstrap = static_cast<long long>(c.bootstrap.resamples);
+  o.active_window = d.window.enabled;
+  o.window_threshold = d.window.threshold;
+  o.reference_max_step = d.integrator.tolerance.max_step;
+  o.max_energy_error = d.max_energy_error;
+  o.energy_guard = d.stop_on_energy_error ? "stop" : "warn";
+  return o;
+}
+
+BeyondChoices beyond_choices_of(const SpreadingConfig& d) {
+  return {.damping_time = d.damping.time,
+          .kk_gamma = d.damping.kk_gamma,
+          .mle = d.lyapunov.enabled,
+          .renormalize = static_cast<long long>(d.lyapunov.renormalize_every),
+          .deviation_samples = static_cast<long long>(d.deviation_samples)};
+}
+
 void apply(const BeyondChoices& o, SpreadingConfig& d) {
   d.damping = {o.damping_time, o.kk_gamma};
   validate(d.damping);
