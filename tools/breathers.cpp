@@ -9,6 +9,7 @@
 #include "common/outputs.hpp"
 #include "common/tool_main.hpp"
 #include "granular/io/atomic_file.hpp"
+#include "granular/model/configuration_file.hpp"
 #include "granular/study/breather_branch.hpp"
 
 int main(int argc, char** argv) {
@@ -16,15 +17,16 @@ int main(int argc, char** argv) {
   CLI::App app{
       "Breathers of one precompressed chain: periodic orbits by half-period shooting (Newton, Jacobian from\n"
       "the tangent map), continued in frequency from a linear mode (--mode K, or --near-khz F, or the mode\n"
-      "nearest --start-khz outside the bands), with Floquet multipliers. Writes PREFIX.csv (columns\n"
-      "omega_rad_s,freq_khz,energy_J,amplitude_m,centre,max_multiplier,stable,newton_iterations,residual,\n"
-      "max_open_fraction) and PREFIX.json (parameters, Newton histories, multiplier checks).",
+      "nearest --start-khz outside the bands, or a state from --seed-file at --start-khz), with Floquet\n"
+      "multipliers. Writes PREFIX.csv (columns omega_rad_s,freq_khz,energy_J,amplitude_m,centre,max_multiplier,\n"
+      "stable,newton_iterations,residual,max_open_fraction), PREFIX.h5 (profiles x0, multipliers, open fractions\n"
+      "per point) and PREFIX.json (parameters, Newton histories, multiplier checks).",
       "breathers"};
   tool::describe_common(app);
   tool::ChainOptions chain_options;
   tool::add_chain_options(app, chain_options);
   BreatherBranchConfig config;
-  std::string law = "hertz", scheme = "saba2c", output = "breathers";
+  std::string law = "hertz", scheme = "saba2c", output = "breathers", continuation = "natural", seed_file;
   bool quiet = false, through_opening = false;
   tool::add_integer(app, "--mode", config.mode, "seed: linear mode number 1..N (0: by --near-khz or --start-khz)");
   app.add_option("--near-khz", config.near_khz, "seed: the linear mode nearest this frequency [kHz]");
@@ -33,7 +35,13 @@ int main(int argc, char** argv) {
       "first breather frequency [kHz] (default: the seed's, shifted by --start-offset towards --target-khz)");
   tool::add_option(app, "--start-offset", config.start_offset, "relative shift of the first frequency from the seed");
   app.add_option("--target-khz", config.target_khz, "stop at this frequency [kHz] (default: no target, go down)");
-  tool::add_option(app, "--step-khz", config.step_khz, "first continuation step [kHz] (0: 0.5 % of the seed)");
+  app.add_option("--seed-file", seed_file,
+                 "seed: a state at rest, one displacement [m] per bead and line ('#' comments), Newton's first guess "
+                 "at --start-khz (instead of a mode)");
+  tool::add_option(app, "--step-khz", config.step_khz,
+                   "first continuation step [kHz] (0: the start's distance from the seed; 0.1 % of it from a file)");
+  tool::add_option(app, "--continuation", continuation,
+                   "natural (in frequency; a fold ends the branch) | arclength (pseudo-arclength: passes folds)");
   tool::add_integer(app, "--max-points", config.max_points, "points on the branch at most");
   tool::add_option(app, "--law", law, "bond force law: hertz | fpu");
   tool::add_option(app, "--scheme", scheme,
@@ -47,31 +55,40 @@ int main(int argc, char** argv) {
   tool::add_output_option(app, output);
   app.add_flag("--quiet", quiet, "no progress lines on stderr");
 
-  return tool::run(app, argc, argv, [&] {
-    tool::Metadata meta("breathers", argc, argv);
-    config.chain = tool::chain_recipe(chain_options);
-    config.realization = tool::chain_realization(chain_options);
-    config.law = parse_force_law(law);
-    if (config.law == ForceLawKind::linear)
-      throw InvalidInput("--law",
-                         " linear: every amplitude is a periodic orbit at a mode's frequency; use hertz or fpu");
-    config.shooting.scheme = parse_scheme(scheme, "--scheme");
-    config.stop_at_opening = !through_opening;
-    validate(config);
-    tool::warn_implausible(config.chain, chain_options);
-    const auto claim = tool::claim_output(output, meta.command());
-    const TableOutputs paths = table_outputs(output);
-    const auto branch = continue_breather(config, [&](const BreatherPoint& p) {
-      if (!quiet)
-        std::fprintf(stderr, "breathers: %.6f kHz  E = %.4g J  max|mu| = %.10f  Newton %d  residual %.2g\n", p.freq_khz,
-                     p.energy, p.floquet.max_modulus, p.iterations, p.residual);
-    });
-    if (!quiet)
-      std::fprintf(stderr, "breathers: %zu points; stopped: %s\n", branch.points.size(), branch.stop_reason.c_str());
-    AtomicFile csv(paths.csv);
-    write_breather_csv(csv.stream(), branch);
-    meta.merge(describe_breather_branch(config, branch));
-    meta["output"] = paths.csv;
-    meta.write(paths.json, {&csv});
-  });
+  return tool::run(
+      app, argc, argv,
+      [&] {
+        tool::Metadata meta("breathers", argc, argv);
+        config.chain = tool::chain_recipe(chain_options);
+        config.realization = tool::chain_realization(chain_options);
+        config.law = parse_force_law(law);
+        if (config.law == ForceLawKind::linear)
+          throw InvalidInput("--law",
+                             " linear: every amplitude is a periodic orbit at a mode's frequency; use hertz or fpu");
+        config.shooting.scheme = parse_scheme(scheme, "--scheme");
+        config.stop_at_opening = !through_opening;
+        config.continuation = parse_continuation(continuation);
+        if (!seed_file.empty()) config.seed_profile = read_displacements_file(seed_file, "seed_profile");
+        validate(config);
+        tool::warn_implausible(config.chain, chain_options);
+        const auto claim = tool::claim_output(output, meta.command());
+        const TableOutputs paths = table_outputs(output);
+        const std::string h5 = output + ".h5";
+        check_writable(h5);
+        const auto branch = continue_breather(config, [&](const BreatherPoint& p) {
+          if (!quiet)
+            std::fprintf(stderr, "breathers: %.6f kHz  E = %.4g J  max|mu| = %.10f  Newton %d  residual %.2g\n",
+                         p.freq_khz, p.energy, p.floquet.max_modulus, p.iterations, p.residual);
+        });
+        if (!quiet)
+          std::fprintf(stderr, "breathers: %zu points; stopped: %s\n", branch.points.size(), branch.stop_reason.c_str());
+        AtomicFile csv(paths.csv);
+        write_breather_csv(csv.stream(), branch);
+        meta.merge(describe_breather_branch(config, branch));
+        write_breather_hdf5(h5, branch);
+        meta["output"] = paths.csv;
+        meta["profiles"] = h5;
+        meta.write(paths.json, {&csv});
+      },
+      {{"seed_profile", "--seed-file"}});
 }

@@ -4,9 +4,11 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <iomanip>
 #include <sstream>
 
 #include <gtest/gtest.h>
+#include <hdf5.h>
 #include <nlohmann/json.hpp>
 
 #include "granular/linear/band_edges.hpp"
@@ -58,6 +60,49 @@ TEST(BreathersTool, ShortDiatomicBranchWritesCsvAndJson) {
   std::filesystem::remove_all(dir);
 }
 
+// Pseudo-arclength from the tool, its HDF5 profiles, and a profile from there as a seed file: the
+// seeded run starts on that point of the branch.
+TEST(BreathersTool, ArclengthBranchProfilesSeedTheNextRun) {
+  const std::string dir = scratch_folder("breathers-arc");
+  const std::string chain = "--config " + diatomic_file(dir, 21) + " --xi 0.5 --quiet";
+  auto r = run_tool_in(dir, "breathers",
+                       chain + " --near-khz " + std::to_string(optical_edge_khz()) +
+                           " --max-points 4 --continuation arclength --output arc");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto meta = nlohmann::json::parse(read_file(dir + "/arc.json"));
+  EXPECT_TRUE(meta["continuation"]["method"].get<std::string>().starts_with("pseudo-arclength"));
+  EXPECT_EQ(meta["profiles"], "arc.h5");
+  const hid_t file = H5Fopen((dir + "/arc.h5").c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  ASSERT_GE(file, 0);
+  std::vector<double> x0(4 * 21), freq(4);
+  for (const auto& [name, data] : {std::pair{"x0", &x0}, std::pair{"freq_khz", &freq}}) {
+    const hid_t set = H5Dopen2(file, name, H5P_DEFAULT);
+    ASSERT_GE(H5Dread(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, data->data()), 0) << name;
+    H5Dclose(set);
+  }
+  H5Fclose(file);
+  {
+    std::ofstream seed(dir + "/seed.txt");
+    seed << "# the last point's profile [m]\n" << std::setprecision(17);
+    for (std::size_t i = 0; i < 21; ++i) seed << x0[3 * 21 + i] << '\n';
+  }
+  std::ostringstream start;
+  start << std::setprecision(17) << freq[3];
+  r = run_tool_in(dir, "breathers",
+                  chain + " --seed-file seed.txt --start-khz " + start.str() + " --max-points 2 --output seeded");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  std::istringstream csv(read_file(dir + "/seeded.csv"));
+  std::string header, first;
+  std::getline(csv, header);
+  std::getline(csv, first);
+  EXPECT_EQ(std::stod(first.substr(first.find(',') + 1)), freq[3]);
+  const auto seeded = nlohmann::json::parse(read_file(dir + "/seeded.json"));
+  EXPECT_EQ(seeded["seed"]["profile"], "given");
+  EXPECT_LE(seeded["points"][0]["newton_residuals"].back().get<double>(), 1e-10);
+  EXPECT_LE(seeded["points"][0]["newton_residuals"].size(), 2u);  // it started on the orbit
+  std::filesystem::remove_all(dir);
+}
+
 TEST(BreathersTool, BadInputExitsWithOneLineAndWritesNothing) {
   const std::string dir = scratch_folder("breathers-bad");
   const std::string config = diatomic_file(dir, 21);
@@ -70,6 +115,9 @@ TEST(BreathersTool, BadInputExitsWithOneLineAndWritesNothing) {
       {"--N 2000 --mode 3", "--N", 2},
       {"--config " + config + " --xi 0.5 --mode 0", "--mode", 2},
       {"--config " + config + " --xi 0.5 --law linear --mode 3", "--law", 2},
+      {"--config " + config + " --xi 0.5 --mode 3 --continuation pseudo", "--continuation", 2},
+      {"--config " + config + " --xi 0.5 --seed-file " + dir + "/missing.txt --start-khz 30", "--seed-file", 2},
+      {"--config " + config + " --xi 0.5 --seed-file " + config + " --start-khz 30 --mode 3", "--seed-file", 2},
       // Newton cannot reach a residual below rounding: a numerical failure.
       {"--config " + config + " --xi 0.5 --near-khz " + std::to_string(optical_edge_khz()) + " --tolerance 1e-30",
        "Newton", 3},
@@ -81,6 +129,7 @@ TEST(BreathersTool, BadInputExitsWithOneLineAndWritesNothing) {
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
     EXPECT_FALSE(std::filesystem::exists(dir + "/out.csv"));
     EXPECT_FALSE(std::filesystem::exists(dir + "/out.json"));
+    EXPECT_FALSE(std::filesystem::exists(dir + "/out.h5"));
   }
   std::filesystem::remove_all(dir);
 }
