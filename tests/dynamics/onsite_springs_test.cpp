@@ -180,19 +180,7 @@ TEST(OnsiteSprings, DampedLinearChainDecaysAsItsExactDampedModes) {
                                            onsite_springs_removed(chain), saba2c(), 0.04e-6, s0, {tau_d, 0}),
                     fixtures::steps_for(duration, 0.04e-6));
   EXPECT_GT(relative_difference(without->displacement(), exact), 0.5);
-  double previous = 0;
-  for (double tau : {0.04e-6, 0.02e-6}) {
-    const auto p = fixtures::run(make_damped_propagator(law, chain, saba2c(), tau, s0, {tau_d, 0}),
-                                 fixtures::steps_for(duration, tau));
-    const double error = relative_difference(p->displacement(), exact);
-    std::printf("  tau = %g us: relative difference from the exact damped modes %.3e\n", tau * 1e6, error);
-    EXPECT_LT(error, 1e-5);
-    if (previous > 0) {  // Strang splitting: 2nd order
-      EXPECT_GT(previous / error, 3.0);
-      EXPECT_LT(previous / error, 5.0);
-    }
-    previous = error;
-  }
+  fixtures::expect_second_order_to_exact_damped_modes(law, chain, s0, tau_d, duration, {0.04e-6, 0.02e-6}, exact);
 }
 
 TEST(OnsiteSprings, DampedEnergyBalanceClosesWithTheSprings) {
@@ -200,20 +188,10 @@ TEST(OnsiteSprings, DampedEnergyBalanceClosesWithTheSprings) {
   const Chain chain = quasiperiodic_chain(q, 101, fixtures::r1, 0.1, steel, 0.4);  // F0 = 0.1 N: contacts open
   const ForceLaw law = make_force_law(ForceLawKind::hertz, chain);
   const State s0 = velocity_kick(chain, 50, 8e-3);
-  const double h0 = total_energy(law, chain, s0);
   for (const Damping damping : {Damping{0.3e-3, 0}, Damping{1e-3, 5e-6}}) {
-    auto p = make_damped_propagator(law, chain, saba2c(), 0.05e-6, s0, damping);
-    double worst = 0;
-    for (int k = 0; k < 5; ++k) {
-      p->advance(2000);  // 0.1 ms
-      const double h = total_energy(law, chain, p->state());
-      worst = std::max(worst, std::abs(h + p->dissipated_energy() - h0) / h0);
-    }
-    const double lost = p->dissipated_energy() / h0;
-    std::printf("  tau_d = %g s, gamma_KK = %g s: dissipated %.4f of H0, balance error %.2e\n", damping.time,
-                damping.kk_gamma, lost, worst);
-    EXPECT_GT(lost, 0.1);
-    EXPECT_LT(worst, 1e-7);
+    const auto balance = fixtures::damped_energy_balance(law, chain, s0, damping, 5);
+    EXPECT_GT(balance.lost, 0.1);
+    EXPECT_LT(balance.worst, 1e-7);
   }
 }
 

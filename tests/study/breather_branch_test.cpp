@@ -55,6 +55,16 @@ long lowest_optical_mode(const Chain& chain, const BandEdges& edges) {
   return k + 1;
 }
 
+// The diatomic chain of 41 beads with a bead of type `centre_type` in the middle (ξ = 0.5), seeded
+// from the optical band's lowest mode.
+BreatherBranchConfig diatomic_gap_config(int centre_type, const BandEdges& edges) {
+  BreatherBranchConfig c;
+  c.chain.given_types = alternating(41, centre_type);
+  c.chain.xi = 0.5;
+  c.mode = lowest_optical_mode(c.chain.chain(0), edges);
+  return c;
+}
+
 double norm2_of(const std::vector<double>& x) {
   double s = 0;
   for (double v : x) s += v * v;
@@ -172,10 +182,7 @@ TEST(BreatherBranch, MultipliersComeInSymplecticPairs) {
 TEST(BreatherBranch, DiatomicGapBreathersBifurcateFromTheOpticalEdgeIntoTheGap) {
   const BandEdges edges = band_edges(steel, r1, 0.5, 10);
   for (int centre_type : {1, 2}) {
-    BreatherBranchConfig c;
-    c.chain.given_types = alternating(41, centre_type);  // bead 21 (the centre) is of type centre_type
-    c.chain.xi = 0.5;
-    c.mode = lowest_optical_mode(c.chain.chain(0), edges);
+    BreatherBranchConfig c = diatomic_gap_config(centre_type, edges);  // bead 21 (the centre) is of type centre_type
     c.target_khz = (edges.fb1 + edges.fb2) / 2e3;
     c.max_points = 60;
     const auto branch = continue_breather(c);
@@ -216,10 +223,7 @@ TEST(BreatherBranch, DiatomicGapBreathersBifurcateFromTheOpticalEdgeIntoTheGap) 
 // About 8 s: Release pass only.
 TEST(Long_BreatherBranch, ArclengthContinuationPassesTheFoldWhereNaturalStops) {
   const BandEdges edges = band_edges(steel, r1, 0.5, 10);
-  BreatherBranchConfig c;
-  c.chain.given_types = alternating(41, 2);
-  c.chain.xi = 0.5;
-  c.mode = lowest_optical_mode(c.chain.chain(0), edges);
+  BreatherBranchConfig c = diatomic_gap_config(2, edges);
   c.stop_at_opening = false;
   c.max_points = 200;
   const BreatherBranch natural = continue_breather(c);
@@ -318,10 +322,7 @@ TEST(BreatherBranch, DisorderedChainBreathersFromAnImpurityModeStayPeriodic) {
 // grows by the largest Floquet multiplier per period under direct integration.
 TEST(BreatherBranch, UnstableBreatherDepartsAtTheFloquetRate) {
   const BandEdges edges = band_edges(steel, r1, 0.5, 10);
-  BreatherBranchConfig c;
-  c.chain.given_types = alternating(41, 1);
-  c.chain.xi = 0.5;
-  c.mode = lowest_optical_mode(c.chain.chain(0), edges);
+  BreatherBranchConfig c = diatomic_gap_config(1, edges);
   c.max_points = 60;
   const auto branch = continue_breather(c);
   const BreatherPoint* worst = nullptr;  // the most unstable point with every contact closed
