@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 #include <hdf5.h>
 
+#include "granular/detail/euclidean_norm.hpp"
 #include "granular/dynamics/periodic_orbit.hpp"
 #include "granular/dynamics/propagator.hpp"
 #include "granular/error.hpp"
@@ -25,6 +26,7 @@
 namespace granular {
 namespace {
 
+using detail::euclidean_norm;
 constexpr double r1 = paper_r1;
 
 // 21 beads of radius R1 with one bead of radius R1/2 in the middle: a light impurity whose
@@ -63,12 +65,6 @@ BreatherBranchConfig diatomic_gap_config(int centre_type, const BandEdges& edges
   c.chain.xi = 0.5;
   c.mode = lowest_optical_mode(c.chain.chain(0), edges);
   return c;
-}
-
-double norm2_of(const std::vector<double>& x) {
-  double s = 0;
-  for (double v : x) s += v * v;
-  return std::sqrt(s);
 }
 
 double profile_difference(const std::vector<double>& a, const std::vector<double>& b) {
@@ -260,7 +256,7 @@ TEST(Long_BreatherBranch, ArclengthContinuationPassesTheFoldWhereNaturalStops) {
     // Jacobian's condition (4e-7 next to the band edge, where a linear mode is near ω_b); another
     // branch at the same frequency differs by ~1e-2 (0.09 at 18.2 kHz).
     EXPECT_LT(profile_difference(fixed.x0, arc.points[near].x0), 1e-5) << arc.points[near].freq_khz << " kHz";
-    EXPECT_NEAR(norm2_of(fixed.x0), norm2_of(arc.points[near].x0), 1e-5 * norm2_of(fixed.x0));
+    EXPECT_NEAR(euclidean_norm(fixed.x0), euclidean_norm(arc.points[near].x0), 1e-5 * euclidean_norm(fixed.x0));
   }
 }
 
@@ -375,7 +371,7 @@ TEST(BreatherBranch, SeedProfileLandsOnTheOrbitNearIt) {
   EXPECT_EQ(branch.seed_mode, 0);
   EXPECT_EQ(branch.points[0].freq_khz, p.freq_khz);
   EXPECT_LT(profile_difference(branch.points[0].x0, p.x0), 1e-6);
-  EXPECT_NEAR(norm2_of(branch.points[0].x0), norm2_of(p.x0), 1e-6 * norm2_of(p.x0));
+  EXPECT_NEAR(euclidean_norm(branch.points[0].x0), euclidean_norm(p.x0), 1e-6 * euclidean_norm(p.x0));
   EXPECT_LT(branch.points[1].freq_khz, p.freq_khz);  // on, down the branch
   EXPECT_LE(branch.points[1].residual, 1e-10);
   // What a seed profile needs, named.

@@ -5,7 +5,9 @@
 #include <limits>
 #include <numbers>
 #include <string>
+#include <utility>
 
+#include "granular/detail/euclidean_norm.hpp"
 #include "granular/dynamics/detail/dense_lapack.hpp"
 #include "granular/dynamics/tangent_map.hpp"
 #include "granular/error.hpp"
@@ -14,15 +16,20 @@
 namespace granular {
 namespace {
 
-double norm2(const std::vector<double>& x) {
-  double s = 0;
-  for (double v : x) s += v * v;
-  return std::sqrt(s);
-}
+using detail::euclidean_norm;
+constexpr double inf = std::numeric_limits<double>::infinity();
 
 void check_frequency(double omega) {
   if (!(omega > 0) || !std::isfinite(omega)) throw InvalidInput("omega", ": the frequency must be finite and > 0");
 }
+
+void check_dense(std::size_t n, const ShootingConfig& config) {
+  if (n > config.max_dense_beads)
+    throw InvalidInput("N", " " + std::to_string(n) + ": more beads than the dense shooting Jacobian allows (" +
+                                std::to_string(config.max_dense_beads) + ")");
+}
+
+std::string khz(double omega) { return format_number(omega / (2 * std::numbers::pi) / 1e3); }
 
 }  // namespace
 
@@ -69,123 +76,145 @@ HalfPeriodMap half_period_map(const ForceLaw& law, const Chain& chain, const Spl
 }
 
 double relative_residual(const std::vector<double>& velocity, double omega, const std::vector<double>& x0) {
-  const double scale = omega * norm2(x0);
-  return scale > 0 ? norm2(velocity) / scale : std::numeric_limits<double>::infinity();
+  const double scale = omega * euclidean_norm(x0);
+  return scale > 0 ? euclidean_norm(velocity) / scale : inf;
 }
+
+namespace {
+
+// The unknowns of a shooting problem: the turning-point displacements x0 [m] and ω_b [rad/s].
+struct ShootingPoint {
+  std::vector<double> x;
+  double omega = 0;
+};
+
+// How far a point is from an orbit: the relative residual of u̇(T/2) and, on an arc, the
+// arclength condition (0 at fixed frequency).
+struct ShootingMisfit {
+  double residual = 0;
+  double arc = 0;
+  [[nodiscard]] double merit() const { return std::hypot(residual, arc); }
+  [[nodiscard]] bool within(double tolerance) const { return residual <= tolerance && std::abs(arc) <= tolerance; }
+};
+
+// How the messages name the method and place the frequency: {"Newton", "at"}.
+struct NewtonWords {
+  std::string method;
+  std::string where;
+};
+
+// The damped Newton iteration both problems share: newton_step(z) linearizes at z and returns the
+// full correction, misfit(z) measures a trial; a step is halved (up to 10 times) until the merit
+// falls, and an iterate that shrinks to the rest state is refused (zero is always an orbit).
+template <class NewtonStep, class Misfit>
+PeriodicOrbit damped_newton(ShootingPoint z, const NewtonWords& words, const ShootingConfig& config,
+                            std::size_t steps_per_period, NewtonStep newton_step, Misfit misfit) {
+  const double guess_norm = euclidean_norm(z.x);
+  if (!(guess_norm > 0) || !std::isfinite(guess_norm))
+    throw InvalidInput("guess", ": must be finite and not all zero (zero is the trivial orbit)");
+  const auto at = [&] { return " " + words.where + " " + khz(z.omega) + " kHz"; };
+  PeriodicOrbit orbit;
+  orbit.scheme = config.scheme;
+  orbit.steps_per_period = steps_per_period;
+  ShootingMisfit now = misfit(z);
+  orbit.residuals.push_back(now.residual);
+  ShootingPoint trial;
+  while (!now.within(config.tolerance)) {
+    if (orbit.iterations >= config.max_iterations)
+      throw NumericalError("shooting: " + words.method + " did not converge in " + std::to_string(config.max_iterations) +
+                           " iterations" + at() + " (relative residual " + format_number(now.residual) + ")");
+    const ShootingPoint step = newton_step(z);
+    bool accepted = false;
+    double lambda = 1;
+    for (int halving = 0; halving <= 10 && !accepted; ++halving, lambda /= 2) {
+      trial.x.resize(z.x.size());
+      for (std::size_t i = 0; i < z.x.size(); ++i) trial.x[i] = z.x[i] + lambda * step.x[i];
+      trial.omega = z.omega + lambda * step.omega;
+      const ShootingMisfit tried = misfit(trial);
+      if (tried.merit() < now.merit()) {
+        accepted = true;
+        now = tried;
+      }
+    }
+    if (!accepted)
+      throw NumericalError("shooting: " + words.method + " stalled at relative residual " +
+                           format_number(now.residual) + at());
+    std::swap(z, trial);
+    ++orbit.iterations;
+    orbit.residuals.push_back(now.residual);
+    if (euclidean_norm(z.x) < 1e-6 * guess_norm)
+      throw NumericalError("shooting: " + words.method + " fell to the rest state (the trivial orbit)" + at());
+  }
+  orbit.x0 = std::move(z.x);
+  orbit.omega = z.omega;
+  orbit.period = 2 * std::numbers::pi / z.omega;
+  orbit.time_step = orbit.period / static_cast<double>(steps_per_period);
+  return orbit;
+}
+
+}  // namespace
 
 PeriodicOrbit find_periodic_orbit(const ForceLaw& law, const Chain& chain, double omega,
                                   const std::vector<double>& guess, const ShootingConfig& config) {
   check_frequency(omega);
   const std::size_t n = chain.size();
-  if (n > config.max_dense_beads)
-    throw InvalidInput("N", " " + std::to_string(n) + ": more beads than the dense shooting Jacobian allows (" +
-                                std::to_string(config.max_dense_beads) + ")");
+  check_dense(n, config);
   if (guess.size() != n) throw InvalidInput("guess", ": must have one displacement per bead");
-  const double guess_norm = norm2(guess);
-  if (!(guess_norm > 0) || !std::isfinite(guess_norm))
-    throw InvalidInput("guess", ": must be finite and not all zero (zero is the trivial orbit)");
-  PeriodicOrbit orbit;
-  orbit.omega = omega;
-  orbit.period = 2 * std::numbers::pi / omega;
-  orbit.steps_per_period = config.steps_per_period > 0 ? config.steps_per_period : shooting_steps(chain, omega);
-  orbit.time_step = orbit.period / static_cast<double>(orbit.steps_per_period);
-  orbit.scheme = config.scheme;
-  orbit.x0 = guess;
+  const std::size_t steps = config.steps_per_period > 0 ? config.steps_per_period : shooting_steps(chain, omega);
   const auto map = [&](const std::vector<double>& x, bool jac) {
-    return half_period_map(law, chain, config.scheme, orbit.steps_per_period, omega, x, jac);
+    return half_period_map(law, chain, config.scheme, steps, omega, x, jac);
   };
-
-  auto current = map(orbit.x0, true);
-  double r = relative_residual(current.velocity, omega, orbit.x0);
-  orbit.residuals.push_back(r);
   const int nn = static_cast<int>(n);
   std::vector<int> pivots(n);
-  while (r > config.tolerance) {
-    if (orbit.iterations >= config.max_iterations)
-      throw NumericalError("shooting: Newton did not converge in " + std::to_string(config.max_iterations) +
-                           " iterations at " + format_number(omega / (2 * std::numbers::pi) / 1e3) +
-                           " kHz (relative residual " + format_number(r) + ")");
-    std::vector<double> step(current.velocity);
-    for (double& s : step) s = -s;
+  // Newton on u̇(T/2; x) = 0 at fixed ω: J δx = −u̇.
+  const auto newton_step = [&](const ShootingPoint& z) {
+    auto current = map(z.x, true);
+    ShootingPoint step{std::move(current.velocity), 0};
+    for (double& s : step.x) s = -s;
     int one = 1, info = 0;
-    dgesv_(&nn, &one, current.jacobian.data(), &nn, pivots.data(), step.data(), &nn, &info);
+    dgesv_(&nn, &one, current.jacobian.data(), &nn, pivots.data(), step.x.data(), &nn, &info);
     if (info != 0)
-      throw NumericalError("shooting: the Jacobian is singular at " +
-                           format_number(omega / (2 * std::numbers::pi) / 1e3) +
+      throw NumericalError("shooting: the Jacobian is singular at " + khz(omega) +
                            " kHz (a linear mode at this frequency?)");
-    double lambda = 1;
-    std::vector<double> trial(n);
-    bool accepted = false;
-    for (int halving = 0; halving <= 10 && !accepted; ++halving, lambda /= 2) {
-      for (std::size_t i = 0; i < n; ++i) trial[i] = orbit.x0[i] + lambda * step[i];
-      const auto tried = map(trial, false);
-      const double rt = relative_residual(tried.velocity, omega, trial);
-      if (rt < r) {
-        accepted = true;
-        r = rt;
-      }
-    }
-    if (!accepted)
-      throw NumericalError("shooting: Newton stalled at relative residual " + format_number(r) + " at " +
-                           format_number(omega / (2 * std::numbers::pi) / 1e3) + " kHz");
-    orbit.x0 = trial;
-    ++orbit.iterations;
-    orbit.residuals.push_back(r);
-    if (norm2(orbit.x0) < 1e-6 * guess_norm)
-      throw NumericalError("shooting: Newton fell to the rest state (the trivial orbit) at " +
-                           format_number(omega / (2 * std::numbers::pi) / 1e3) + " kHz");
-    if (r > config.tolerance) current = map(orbit.x0, true);
-  }
-  return orbit;
+    return step;
+  };
+  const auto misfit = [&](const ShootingPoint& z) {
+    return ShootingMisfit{relative_residual(map(z.x, false).velocity, omega, z.x), 0};
+  };
+  return damped_newton({guess, omega}, {"Newton", "at"}, config, steps, newton_step, misfit);
 }
 
 PeriodicOrbit find_periodic_orbit_on_arc(const ForceLaw& law, const Chain& chain, const ArcPrediction& p,
                                          const ShootingConfig& config) {
   check_frequency(p.omega);
   const std::size_t n = chain.size();
-  if (n > config.max_dense_beads)
-    throw InvalidInput("N", " " + std::to_string(n) + ": more beads than the dense shooting Jacobian allows (" +
-                                std::to_string(config.max_dense_beads) + ")");
+  check_dense(n, config);
   if (p.x.size() != n || p.tangent_x.size() != n)
     throw InvalidInput("guess", ": the prediction and its tangent must have one displacement per bead");
   if (config.steps_per_period == 0)
     throw InvalidInput("steps_per_period", ": must be set (fixed along the branch) for arclength continuation");
   if (!(p.x_scale > 0) || !(p.omega_scale > 0)) throw InvalidInput("guess", ": the scales must be > 0");
-  const double guess_norm = norm2(p.x);
-  if (!(guess_norm > 0) || !std::isfinite(guess_norm))
-    throw InvalidInput("guess", ": must be finite and not all zero (zero is the trivial orbit)");
   const double xs = p.x_scale, ws = p.omega_scale;
   const auto map = [&](const std::vector<double>& x, double omega, bool jac) {
     return half_period_map(law, chain, config.scheme, config.steps_per_period, omega, x, jac);
   };
   // The arclength condition: the scaled correction from the prediction along the tangent.
-  const auto along = [&](const std::vector<double>& x, double omega) {
-    double s = p.tangent_omega * (omega - p.omega) / ws;
-    for (std::size_t i = 0; i < n; ++i) s += p.tangent_x[i] * (x[i] - p.x[i]) / xs;
+  const auto along = [&](const ShootingPoint& z) {
+    double s = p.tangent_omega * (z.omega - p.omega) / ws;
+    for (std::size_t i = 0; i < n; ++i) s += p.tangent_x[i] * (z.x[i] - p.x[i]) / xs;
     return s;
   };
-  const auto khz = [](double omega) { return format_number(omega / (2 * std::numbers::pi) / 1e3); };
-
-  PeriodicOrbit orbit;
-  orbit.scheme = config.scheme;
-  orbit.steps_per_period = config.steps_per_period;
-  orbit.x0 = p.x;
-  double omega = p.omega;
-  auto current = map(orbit.x0, omega, true);
-  double r = relative_residual(current.velocity, omega, orbit.x0), c = along(orbit.x0, omega);
-  orbit.residuals.push_back(r);
   const std::size_t m = n + 1;
   const int mm = static_cast<int>(m);
   std::vector<int> pivots(m);
-  std::vector<double> a(m * m), step(m), trial(n);
-  while (r > config.tolerance || std::abs(c) > config.tolerance) {
-    if (orbit.iterations >= config.max_iterations)
-      throw NumericalError("shooting: arclength Newton did not converge in " + std::to_string(config.max_iterations) +
-                           " iterations near " + khz(omega) + " kHz (relative residual " + format_number(r) + ")");
-    // The bordered system in scaled unknowns (δx/xs, δω/ωs), the shooting rows divided by ω xs.
-    const double h = 1e-6 * omega;
-    const auto up = map(orbit.x0, omega + h, false), down = map(orbit.x0, omega - h, false);
-    const double row = 1 / (omega * xs);
+  std::vector<double> a(m * m), step(m);
+  // Newton on the bordered system in scaled unknowns (δx/xs, δω/ωs), the shooting rows divided
+  // by ω xs; ∂u̇/∂ω by central differences.
+  const auto newton_step = [&](const ShootingPoint& z) {
+    const auto current = map(z.x, z.omega, true);
+    const double h = 1e-6 * z.omega;
+    const auto up = map(z.x, z.omega + h, false), down = map(z.x, z.omega - h, false);
+    const double row = 1 / (z.omega * xs);
     for (std::size_t j = 0; j < n; ++j) {
       for (std::size_t i = 0; i < n; ++i) a[j * m + i] = current.jacobian[j * n + i] * xs * row;
       a[j * m + n] = p.tangent_x[j];
@@ -193,41 +222,21 @@ PeriodicOrbit find_periodic_orbit_on_arc(const ForceLaw& law, const Chain& chain
     for (std::size_t i = 0; i < n; ++i) a[n * m + i] = (up.velocity[i] - down.velocity[i]) / (2 * h) * ws * row;
     a[n * m + n] = p.tangent_omega;
     for (std::size_t i = 0; i < n; ++i) step[i] = -current.velocity[i] * row;
-    step[n] = -c;
+    step[n] = -along(z);
     int one = 1, info = 0;
     dgesv_(&mm, &one, a.data(), &mm, pivots.data(), step.data(), &mm, &info);
     if (info != 0)
-      throw NumericalError("shooting: the bordered arclength system is singular near " + khz(omega) + " kHz");
-    const double merit = std::hypot(r, c);
-    bool accepted = false;
-    double lambda = 1, trial_omega = omega;
-    for (int halving = 0; halving <= 10 && !accepted; ++halving, lambda /= 2) {
-      for (std::size_t i = 0; i < n; ++i) trial[i] = orbit.x0[i] + lambda * step[i] * xs;
-      trial_omega = omega + lambda * step[n] * ws;
-      if (!(trial_omega > 0)) continue;
-      const auto tried = map(trial, trial_omega, false);
-      const double rt = relative_residual(tried.velocity, trial_omega, trial), ct = along(trial, trial_omega);
-      if (std::hypot(rt, ct) < merit) {
-        accepted = true;
-        r = rt, c = ct;
-      }
-    }
-    if (!accepted)
-      throw NumericalError("shooting: arclength Newton stalled at relative residual " + format_number(r) + " near " +
-                           khz(omega) + " kHz");
-    orbit.x0 = trial;
-    omega = trial_omega;
-    ++orbit.iterations;
-    orbit.residuals.push_back(r);
-    if (norm2(orbit.x0) < 1e-6 * guess_norm)
-      throw NumericalError("shooting: arclength Newton fell to the rest state (the trivial orbit) near " + khz(omega) +
-                           " kHz");
-    if (r > config.tolerance || std::abs(c) > config.tolerance) current = map(orbit.x0, omega, true);
-  }
-  orbit.omega = omega;
-  orbit.period = 2 * std::numbers::pi / omega;
-  orbit.time_step = orbit.period / static_cast<double>(orbit.steps_per_period);
-  return orbit;
+      throw NumericalError("shooting: the bordered arclength system is singular near " + khz(z.omega) + " kHz");
+    ShootingPoint out{std::vector<double>(n), step[n] * ws};
+    for (std::size_t i = 0; i < n; ++i) out.x[i] = step[i] * xs;
+    return out;
+  };
+  const auto misfit = [&](const ShootingPoint& z) {
+    if (!(z.omega > 0)) return ShootingMisfit{inf, inf};
+    return ShootingMisfit{relative_residual(map(z.x, z.omega, false).velocity, z.omega, z.x), along(z)};
+  };
+  return damped_newton({p.x, p.omega}, {"arclength Newton", "near"}, config, config.steps_per_period, newton_step,
+                       misfit);
 }
 
 State turning_state(const PeriodicOrbit& orbit) {

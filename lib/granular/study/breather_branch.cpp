@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "granular/detail/enum_names.hpp"
+#include "granular/detail/euclidean_norm.hpp"
 #include "granular/dynamics/observables.hpp"
 #include "granular/dynamics/propagator.hpp"
 #include "granular/error.hpp"
@@ -25,12 +26,6 @@ double to_omega(double khz) { return two_pi * khz * 1e3; }
 double to_khz(double omega) { return omega / two_pi / 1e3; }
 // The largest arclength step: a 5 % change of (x0, ω_b) relative to the last point.
 constexpr double max_arc = 0.05;
-
-double norm(const std::vector<double>& x) {
-  double s = 0;
-  for (double v : x) s += v * v;
-  return std::sqrt(s);
-}
 
 constexpr auto continuation_names =
     detail::enum_names<Continuation>("continuation",
@@ -83,8 +78,7 @@ void validate(const BreatherBranchConfig& c) {
     if (c.seed_profile.size() != static_cast<std::size_t>(n))
       throw InvalidInput("seed_profile", ": " + std::to_string(c.seed_profile.size()) +
                                              " displacements for a chain of N = " + std::to_string(n));
-    double norm = 0;
-    for (double v : c.seed_profile) norm += v * v;
+    const double norm = detail::euclidean_norm(c.seed_profile);
     if (!(norm > 0) || !std::isfinite(norm))
       throw InvalidInput("seed_profile", ": must be finite and not all zero (zero is the rest state)");
     if (std::isnan(c.start_khz)) throw InvalidInput("start_khz", ": required with a seed profile (its frequency)");
@@ -250,12 +244,12 @@ BreatherBranch continue_breather(const BreatherBranchConfig& c,
     const bool on_arc = c.continuation == Continuation::arclength && !previous.empty();
     double next = last.freq_khz + step;
     if (on_arc) {
-      arc_guess.x_scale = norm(last.x0);
+      arc_guess.x_scale = detail::euclidean_norm(last.x0);
       arc_guess.omega_scale = last.omega;
       arc_guess.tangent_x.resize(n);
       for (std::size_t i = 0; i < n; ++i) arc_guess.tangent_x[i] = (last.x0[i] - previous[i]) / arc_guess.x_scale;
       arc_guess.tangent_omega = (last.omega - previous_omega) / last.omega;
-      const double length = std::hypot(norm(arc_guess.tangent_x), arc_guess.tangent_omega);
+      const double length = std::hypot(detail::euclidean_norm(arc_guess.tangent_x), arc_guess.tangent_omega);
       for (double& t : arc_guess.tangent_x) t /= length;
       arc_guess.tangent_omega /= length;
       if (arc == 0) arc = length, min_arc = 1e-4 * length;
