@@ -85,10 +85,10 @@ int main(int argc, char** argv) {
         AtomicFile csv(paths.csv);
         write_breather_csv(csv.stream(), branch);
         meta.merge(describe_breather_branch(config, branch));
-        write_breather_hdf5(h5, branch);
+        const auto profiles = write_breather_hdf5(h5, branch);
         meta["output"] = paths.csv;
         meta["profiles"] = h5;
-        meta.write(paths.json, {&csv});
+        meta.write(paths.json, {&csv, profiles.get()});
       },
       {{"seed_profile", "--seed-file"}});
 }

@@ -4,8 +4,10 @@
 // matrix rows are spread over the ranks; rank 0 writes.
 #include <chrono>
 #include <cstdio>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 #include "common/chain_options.hpp"
 #include "common/outputs.hpp"
@@ -101,10 +103,13 @@ int main(int argc, char** argv) {
     write_spectrum_csv(csv.stream(), result, clusters);
     meta.merge(describe_spectrum(result, request, chain_description, material));
     meta["output"] = csv_path;
+    std::vector<PendingOutput*> outputs{&csv};
+    std::unique_ptr<Hdf5File> vectors;
     if (!vectors_file.empty()) {
-      write_spectrum_hdf5(vectors_file, result, d);
+      vectors = write_spectrum_hdf5(vectors_file, result, d);
+      outputs.push_back(vectors.get());
       meta["vectors"] = vectors_file;
     }
-    meta.write(json_path, {&csv});
+    meta.write(json_path, outputs);
   });
 }

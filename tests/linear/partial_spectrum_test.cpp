@@ -250,7 +250,7 @@ TEST(PartialSpectrum, WritesEigenvectorsToHdf5) {
   const auto p = spectrum(chain, nearest(20, 4), config);
   const std::string path = std::string(GRANULAR_BINARY_DIR) + "/partial_spectrum_test.h5";
   ;
-  write_spectrum_hdf5(path, p, chain);
+  write_spectrum_hdf5(path, p, chain)->commit();
   const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
   ASSERT_GE(file, 0);
   const hid_t set = H5Dopen2(file, "eigenvectors", H5P_DEFAULT);

@@ -404,7 +404,7 @@ TEST(BreatherBranch, Hdf5FileHoldsTheProfilesAndMultipliers) {
   const BreatherBranch branch = continue_breather(c);
   ASSERT_EQ(branch.points.size(), 2u);
   const std::string path = testing::scratch_path("breather_branch_test", "branch.h5");
-  write_breather_hdf5(path, branch);
+  write_breather_hdf5(path, branch)->commit();
   const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
   ASSERT_GE(file, 0);
   const auto read = [&](const char* name, std::size_t size) {

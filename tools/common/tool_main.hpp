@@ -15,6 +15,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include "granular/blas_library.hpp"
+#include "granular/code_identity.hpp"
 #include "granular/error.hpp"
 #include "granular/io/nearest_word.hpp"
 #include "granular/io/output_claim.hpp"
@@ -42,7 +44,10 @@ inline std::string resume_command(int argc, char** argv) {
 }
 
 inline void describe_common(CLI::App& app) {
-  app.set_version_flag("--version", std::string("granular ") + GRANULAR_VERSION);
+  // The BLAS is resolved when the process starts (Debian's alternatives), so --version asks it.
+  app.set_version_flag("--version", [] {
+    return std::string("granular ") + GRANULAR_VERSION + " (commit " + code_commit() + ")\nBLAS: " + blas_library();
+  });
   app.get_formatter()->column_width(34);
   app.footer("Physics and units: docs/physics.md (installed to share/doc/granular/physics.md)");
 }

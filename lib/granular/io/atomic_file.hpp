@@ -6,23 +6,25 @@
 #include <ostream>
 #include <string>
 
+#include "granular/io/pending_output.hpp"
+
 namespace granular {
 
 namespace detail {
 class TemporaryFile;
 }
 
-class AtomicFile {
+class AtomicFile : public PendingOutput {
  public:
   explicit AtomicFile(std::string path);
   AtomicFile(const AtomicFile&) = delete;
   AtomicFile& operator=(const AtomicFile&) = delete;
-  ~AtomicFile();
+  ~AtomicFile() override;
 
   std::ostream& stream() { return out_; }
   /// Flushes, closes and fsyncs the file, renames it onto the target and fsyncs the folder;
   /// throws IoError naming the file and the cause ("No space left on device") on failure.
-  void commit();
+  void commit() override;
   const std::string& path() const { return path_; }
 
  private:

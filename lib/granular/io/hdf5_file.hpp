@@ -7,19 +7,21 @@
 #include <string>
 #include <vector>
 
+#include "granular/io/pending_output.hpp"
+
 namespace granular {
 
 namespace detail {
 class TemporaryFile;
 }
 
-class Hdf5File {
+class Hdf5File : public PendingOutput {
  public:
   /// Creates PATH.tmp.<pid>; throws IoError.
   explicit Hdf5File(std::string path);
   Hdf5File(const Hdf5File&) = delete;
   Hdf5File& operator=(const Hdf5File&) = delete;
-  ~Hdf5File();
+  ~Hdf5File() override;
 
   /// A rows × cols row-major dataset (cols = 1 writes a 1-D dataset of `rows`).
   void write(const std::string& name, const double* data, std::size_t rows, std::size_t cols = 1);
@@ -28,7 +30,7 @@ class Hdf5File {
   /// A string attribute on the root group.
   void attribute(const std::string& name, const std::string& value);
   /// Closes, fsyncs and renames onto the target, then fsyncs the folder; throws IoError.
-  void commit();
+  void commit() override;
 
  private:
   std::string path_;

@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <ctime>
 
+#include "granular/blas_library.hpp"
 #include "granular/code_identity.hpp"
 
 namespace granular {
@@ -11,6 +12,7 @@ RunMetadata::RunMetadata(const std::string& program, const std::string& command,
     : start_(std::chrono::steady_clock::now()), quiet_(quiet) {
   json_["tool"] = program;
   json_["version"] = code_version();
+  json_["blas"] = blas_library();
   json_["command"] = command;
   const std::time_t now = std::time(nullptr);
   char stamp[32];
@@ -18,9 +20,9 @@ RunMetadata::RunMetadata(const std::string& program, const std::string& command,
   json_["started_utc"] = stamp;
 }
 
-void RunMetadata::write(const std::string& path, const std::vector<AtomicFile*>& outputs) {
+void RunMetadata::write(const std::string& path, const std::vector<PendingOutput*>& outputs) {
   write_json(path);
-  for (AtomicFile* f : outputs) f->commit();
+  for (PendingOutput* f : outputs) f->commit();
   report(path);
 }
 

@@ -16,6 +16,7 @@
 #include <nlohmann/json.hpp>
 
 #include "granular/io/atomic_file.hpp"
+#include "granular/io/pending_output.hpp"
 
 namespace granular {
 
@@ -35,7 +36,7 @@ class RunMetadata {
 
   /// Writes the JSON at `path` (with the wall time, atomically), then commits `outputs` (already
   /// written under their temporary names), then ends the run with the final line.
-  void write(const std::string& path, const std::vector<AtomicFile*>& outputs);
+  void write(const std::string& path, const std::vector<PendingOutput*>& outputs);
   void write(const std::string& path, const std::vector<std::unique_ptr<AtomicFile>>& outputs);
   /// The same with no outputs to commit (the caller commits its own after this).
   void write(const std::string& path);

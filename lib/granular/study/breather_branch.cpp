@@ -310,7 +310,7 @@ void write_breather_csv(std::ostream& out, const BreatherBranch& branch) {
         << format_number(p.max_open_fraction) << '\n';
 }
 
-void write_breather_hdf5(const std::string& path, const BreatherBranch& b) {
+std::unique_ptr<Hdf5File> write_breather_hdf5(const std::string& path, const BreatherBranch& b) {
   const std::size_t rows = b.points.size(), n = rows > 0 ? b.points.front().x0.size() : 0;
   std::vector<double> freq, omega, energy, x0, re, im, open;
   for (const auto& p : b.points) {
@@ -321,7 +321,8 @@ void write_breather_hdf5(const std::string& path, const BreatherBranch& b) {
     for (const auto& mu : p.floquet.multipliers) re.push_back(mu.real()), im.push_back(mu.imag());
     open.insert(open.end(), p.open_fraction.begin(), p.open_fraction.end());
   }
-  Hdf5File file(path);
+  auto out = std::make_unique<Hdf5File>(path);
+  Hdf5File& file = *out;
   file.write("freq_khz", freq);
   file.write("omega_rad_s", omega);
   file.write("energy_J", energy);
@@ -335,7 +336,7 @@ void write_breather_hdf5(const std::string& path, const BreatherBranch& b) {
                  "(velocities 0); multipliers: the 2N Floquet multipliers, by modulus descending; open_fraction: "
                  "per bond 0..N (walls included), the fraction of the period it is open");
   file.attribute("stop_reason", b.stop_reason);
-  file.commit();
+  return out;
 }
 
 nlohmann::json describe_breather_branch(const BreatherBranchConfig& c, const BreatherBranch& b) {

@@ -17,6 +17,7 @@
 #include <functional>
 #include <iosfwd>
 #include <limits>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -25,6 +26,7 @@
 #include "granular/dynamics/floquet.hpp"
 #include "granular/dynamics/force_law.hpp"
 #include "granular/dynamics/periodic_orbit.hpp"
+#include "granular/io/hdf5_file.hpp"
 #include "granular/model/chain_recipe.hpp"
 
 namespace granular {
@@ -107,9 +109,10 @@ void write_breather_csv(std::ostream& out, const BreatherBranch& branch);
 
 /// HDF5 of the branch (one row per point): freq_khz, omega_rad_s, energy_J; x0 (points × N, the
 /// turning-point profiles [m]); multipliers_real and multipliers_imag (points × 2N, by |μ|
-/// descending); open_fraction (points × (N+1), per bond); linear_khz (N). Appears whole or not at
-/// all; throws IoError.
-void write_breather_hdf5(const std::string& path, const BreatherBranch& branch);
+/// descending); open_fraction (points × (N+1), per bond); linear_khz (N). Written under its
+/// temporary name and returned uncommitted, for RunMetadata::write to put in place after the
+/// JSON; throws IoError.
+std::unique_ptr<Hdf5File> write_breather_hdf5(const std::string& path, const BreatherBranch& branch);
 
 /// The JSON entries of a branch run: parameters (chain, seed, continuation, shooting) and results
 /// (stop reason, points' Newton histories and multiplier checks).

@@ -11,8 +11,9 @@
 
 namespace granular {
 
-void write_spectrum_hdf5(const std::string& path, const Spectrum& s, const DynamicalMatrix& matrix) {
-  Hdf5File file(path);
+std::unique_ptr<Hdf5File> write_spectrum_hdf5(const std::string& path, const Spectrum& s, const DynamicalMatrix& matrix) {
+  auto out = std::make_unique<Hdf5File>(path);
+  Hdf5File& file = *out;
   file.write("mode", std::vector<std::uint64_t>(s.mode.begin(), s.mode.end()));
   file.write("omega2", s.omega2);
   file.write("freq_khz", s.freq_khz);
@@ -25,7 +26,7 @@ void write_spectrum_hdf5(const std::string& path, const Spectrum& s, const Dynam
   file.attribute(
       "eigenvectors_layout",
       "row j = unit eigenvector w of the dynamical matrix for mode[j]; displacement v = w * inverse_sqrt_mass");
-  file.commit();
+  return out;
 }
 
 void write_spectrum_csv(std::ostream& out, const Spectrum& s, bool clusters) {

@@ -3,11 +3,13 @@
 // entries that describe the solve, the eigenvectors as HDF5 and the raw matrix dump — one writer
 // each, so that the tool and Python write them alike (where the linear module meets the file
 // formats: neither knows the other).
+#include <memory>
 #include <ostream>
 #include <string>
 
 #include <nlohmann/json_fwd.hpp>
 
+#include "granular/io/hdf5_file.hpp"
 #include "granular/linear/band_edges.hpp"
 #include "granular/linear/spectrum.hpp"
 #include "granular/model/material.hpp"
@@ -17,8 +19,10 @@ namespace granular {
 /// Writes `spectrum` and the matrix's m^{-1/2} to an HDF5 file that appears whole or not at all.
 /// Datasets: /mode, /omega2 [1/s²], /freq_khz, /ipr, /residual (K each), /inverse_sqrt_mass (N),
 /// /eigenvectors (K × N, row j = unit w of mode j; displacements v = w ⊙ inverse_sqrt_mass) when
-/// the spectrum holds vectors; attribute "method". Throws IoError.
-void write_spectrum_hdf5(const std::string& path, const Spectrum& spectrum, const DynamicalMatrix& matrix);
+/// the spectrum holds vectors; attribute "method". Written under its temporary name and returned
+/// uncommitted, for RunMetadata::write to put in place after the JSON. Throws IoError.
+std::unique_ptr<Hdf5File> write_spectrum_hdf5(const std::string& path, const Spectrum& spectrum,
+                                              const DynamicalMatrix& matrix);
 
 /// mode,freq_khz,ipr — and clustered (1 for a mode in a near-degenerate cluster) with `clusters`.
 void write_spectrum_csv(std::ostream& out, const Spectrum& spectrum, bool clusters);
