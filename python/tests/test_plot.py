@@ -16,7 +16,7 @@ import granular.plot as gp  # noqa: E402
 from conftest import BUILD, SOURCE  # noqa: E402
 
 DIMENSIONLESS = ("IPR", "P^{-1}", "rho", "L_d", "mode number", "bead", "g(", "log_{10}", "error", "distance", "size ratio", "exponent",
-                 "modes per bin", "P$^{-1}$", r"$\gamma$", r"$\eta$")
+                 "modes per bin", "P$^{-1}$", r"$\gamma$", r"$\eta$", r"$\mu$")
 
 
 def check_axes(fig):
@@ -277,3 +277,33 @@ def test_localization_figure_marks_unresolved_lengths(tools):
     assert any(label.startswith("not resolved") for label in labels)
     measured = fig.axes[0].lines[0].get_ydata()
     assert np.isnan(measured[rows["resolved"] == 0]).all()
+
+
+def test_breather_figure_draws_the_branch_from_the_result_and_the_tools_files(tools):
+    """The same points, stability and multipliers from a granular.Breathers and from the tool's CSV + JSON + H5."""
+    types = [2 if i % 2 == 0 else 1 for i in range(21)]
+    config = tools.folder / "diatomic.txt"
+    config.write_text("\n".join(map(str, types)) + "\n")
+    edge = gr.band_edges(xi=0.5).fb2
+    tools.run("breathers", "--config", config, "--xi", "0.5", "--near-khz", repr(edge), "--max-points", "3",
+              "--quiet", output="br")
+    b = gr.breathers(gr.from_types(types, xi=0.5), near_khz=edge, max_points=3)
+    for source in (b, tools.folder / "br.csv"):
+        fig = gp.breather_branch(source, point=1)
+        check_axes(fig)
+        branch, circle = fig.axes[:2]
+        stable, unstable = branch.lines[1], branch.lines[2]
+        drawn = np.sort(np.concatenate([stable.get_xdata(), unstable.get_xdata()]))
+        assert np.array_equal(drawn, np.sort(b.freq_khz))
+        assert np.array_equal(stable.get_xdata(), b.freq_khz[b.stable])
+        profiles = fig.axes[2:]  # of the first, middle and last points
+        assert len(profiles) == 3
+        for ax, j in zip(profiles, (0, 1, 2)):
+            assert np.allclose([bar.get_height() for bar in ax.patches], b.profiles[j] * 1e6, rtol=1e-12, atol=0)
+        mu = circle.lines[1]
+        assert np.allclose(mu.get_xdata() + 1j * mu.get_ydata(), b.multipliers[1], rtol=0, atol=1e-12)
+    done = cli("-m", "granular.plot", "breathers", "br.csv", "--point", "0", cwd=tools.folder)
+    assert done.returncode == 0, done.stderr
+    assert (tools.folder / "br.png").stat().st_size > 10000
+    bad = cli("-m", "granular.plot", "breathers", "br.csv", "--point", "7", cwd=tools.folder)
+    assert bad.returncode == 2 and "Traceback" not in bad.stderr

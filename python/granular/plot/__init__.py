@@ -26,6 +26,8 @@ look, _io the reading of results and files:
     mode_kicks(runs_or_csvs)                   m2(t) and P^-1(t) from linear modes beside a site kick
     spectral_densities(pairs, titles)          g(nu) of the displacements beside that of the velocities
     cost(benchmark_json)                       integrators' cost-accuracy curves
+  breathers: time-periodic localized orbits
+    breather_branch(result_or_csv, point)      energy vs f_b, stability, linear modes, profiles, multipliers
   quasiperiodic: quasiperiodic chains
     butterfly(result_or_csv)                   the Hofstadter butterfly coloured by IPR, its box-counting dimension
   transport_exponents: the paper's transport study (an exponents run)
@@ -35,12 +37,13 @@ look, _io the reading of results and files:
     profiles(table_or_prefix)                  averaged energy profiles E_n(T)
     study_comparison(table, reference)         gamma and eta of two runs side by side (e.g. 100 ms, 10 ms)
 """
+from .breathers import breather_branch
 from .disorder import correlations, localization
 from .dynamics import cost, energy_map, forces, mode_kicks, spectral_densities, spreading
 from .modes import ipr_averaging, ipr_map, partial_spectrum_ipr, spectrum
 from .quasiperiodic import butterfly
 from .transport_exponents import centres, exponents, paper_comparison, profiles, study_comparison
 
-__all__ = ["ipr_map", "spectrum", "partial_spectrum_ipr", "ipr_averaging", "correlations", "localization", "energy_map",
+__all__ = ["breather_branch", "ipr_map", "spectrum", "partial_spectrum_ipr", "ipr_averaging", "correlations", "localization", "energy_map",
            "forces", "spreading", "mode_kicks", "spectral_densities", "cost", "exponents", "centres",
            "paper_comparison", "profiles", "study_comparison", "butterfly"]

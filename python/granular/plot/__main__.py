@@ -100,6 +100,11 @@ def parser(prog=None):
     q = kind("butterfly", "the Hofstadter butterfly coloured by IPR beside the box-counting dimension, from a "
                           "butterfly CSV")
     q.add_argument("csv", nargs="?", default="butterfly.csv")
+    q = kind("breathers", "a breather branch: energy against frequency with stability and the linear modes, "
+                          "profiles, Floquet multipliers, from a breathers CSV (its .json and .h5 beside it)")
+    q.add_argument("csv", nargs="?", default="breathers.csv")
+    q.add_argument("--point", type=int, default=-1, help="the point whose multipliers are drawn: 0 = first, "
+                                                         "-1 = last (default)")
     q = kind("cost", "integrators' cost-accuracy curves, from dynamics_benchmark --benchmark_out JSON")
     q.add_argument("bench")
     return p
@@ -175,9 +180,11 @@ def main(argv=None, prog=None):
             save(plot.profiles(args.prefix, decades=args.decades), args.output or f"{args.prefix}-profiles.png")
         elif args.kind == "butterfly":
             save(plot.butterfly(args.csv), args.output or _default_output(args.csv))
+        elif args.kind == "breathers":
+            save(plot.breather_branch(args.csv, args.point), args.output or _default_output(args.csv))
         elif args.kind == "cost":
             save(plot.cost(args.bench), args.output or _default_output(args.bench))
-    except (OSError, ValueError, KeyError) as error:  # a missing or wrong file: one line, exit code 2
+    except (OSError, ValueError, KeyError, IndexError) as error:  # a missing or wrong file: one line, exit code 2
         name = prog or "granular.plot"
         print(f"{name}: error: {error}", file=sys.stderr)
         return 2
