@@ -5,6 +5,7 @@
 #   1. the Release build with warnings as errors: every GoogleTest suite and tool test (ctest),
 #      the Python suite, the documentation site and examples; not the label `manual` (the full
 #      `pip install .` build, 11 min: `ctest -L manual`);
+#      then the suites whose numbers pass through BLAS/LAPACK once more on the reference BLAS;
 #   2. the same suites built with AddressSanitizer + UndefinedBehaviorSanitizer (any report fails);
 #   3. the threaded suites (ensembles, IPR map, localization, bootstrap) built with clang and
 #      ThreadSanitizer, OpenMP through LLVM's libomp with its archer tool (any report fails);
@@ -69,6 +70,9 @@ build_tsan() {
 }
 quick() { [ "${GRANULAR_QUICK:-0}" = 1 ]; }
 
+# Tests whose numbers pass through BLAS/LAPACK, run again on the reference BLAS (pass 1b).
+blas_tests='Spectrum|Lapack|Arpack|Slepc|Partial|MethodsAgree|PeriodicOrbit|Breather|Floquet|ModeIpr|IprMap|BandEdges'
+
 stamp "pass 1: Release build, all tests"
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DGRANULAR_WERROR=ON >/dev/null
 cmake --build build -j"$jobs"
@@ -76,6 +80,17 @@ stamp "pass 1 build done"
 quick || start_build sanitize build_sanitize
 ctest --test-dir build -j"$jobs" --output-on-failure -LE manual | tee "$logs/pass1"
 count "$logs/pass1"
+# The suites whose results go through BLAS/LAPACK (spectra by LAPACK, ARPACK and SLEPc; shooting
+# and Floquet by dgesv/dgeev) once more on Debian's reference BLAS, when the alternatives picked
+# another one (OpenBLAS, from tools/install-deps.sh): their tolerances must hold on both.
+reference_blas=/usr/lib/x86_64-linux-gnu/blas
+if [ -e "$reference_blas/libblas.so.3" ] && ! ./build/spectrum --version | grep -q "BLAS: $reference_blas/"; then
+  stamp "pass 1b: the linear-algebra suites on the reference BLAS"
+  LD_LIBRARY_PATH="$reference_blas:/usr/lib/x86_64-linux-gnu/lapack${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}" \
+    ctest --test-dir build -j"$jobs" --output-on-failure -LE "manual|long" \
+    -R "$blas_tests" | tee "$logs/pass1b"
+  count "$logs/pass1b"
+fi
 
 if ! quick; then
   stamp "pass 2: AddressSanitizer + UndefinedBehaviorSanitizer"

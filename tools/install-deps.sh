@@ -2,16 +2,22 @@
 # Installs the Debian 12 packages the toolkit builds, tests and plots with.
 # Idempotent: when every package is already there it changes nothing and takes a second.
 # Works as root or through sudo.
+#
+# BLAS: the build links Debian's libblas.so.3 / liblapack.so.3, and libopenblas0-pthread makes
+# update-alternatives point both at OpenBLAS (priority 100 over the reference BLAS's 10), the
+# library anyone who cares about speed runs NumPy, SciPy and LAPACK on. The reference BLAS stays
+# installed: tests/run-all.sh runs the linear-algebra suites on it too (LD_LIBRARY_PATH), and
+# `TOOL --version` or any run's JSON ("blas") says which one a process used.
 set -euo pipefail
 
 packages=(
   build-essential cmake pkg-config git time help2man man-db
-  libeigen3-dev liblapack-dev libblas-dev libarpack2-dev
+  libeigen3-dev liblapack-dev libblas-dev libopenblas0-pthread libarpack2-dev
   libfftw3-dev libhdf5-dev libboost-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   libcli11-dev nlohmann-json3-dev librandom123-dev
   openmpi-bin libopenmpi-dev petsc-dev slepc-dev
-  python3 python3-venv python3-numpy python3-scipy python3-matplotlib python3-h5py
+  python3 python3-venv python3-numpy python3-scipy python3-threadpoolctl python3-matplotlib python3-h5py
   pybind11-dev python3-pybind11 python3-pytest jupyter-nbconvert python3-nbformat python3-ipykernel
   clang libclang-rt-14-dev libomp-14-dev clang-format
   python3-sphinx python3-myst-parser python3-breathe python3-nbsphinx python3-sphinx-rtd-theme doxygen pandoc chromium

@@ -12,6 +12,7 @@
 #include <thread>
 
 #include "bindings.hpp"
+#include "granular/blas_library.hpp"
 #include "granular/code_identity.hpp"
 #include "granular/error.hpp"
 #include "granular/io/range_syntax.hpp"
@@ -173,7 +174,7 @@ py::object to_python(const nlohmann::json& v) {
 }
 
 nlohmann::json metadata_head(const std::string& function) {
-  return {{"function", "granular." + function}, {"version", code_version()}};
+  return {{"function", "granular." + function}, {"version", code_version()}, {"blas", blas_library()}};
 }
 
 Disorder disorder_of(const std::string& name) {
