@@ -115,17 +115,30 @@ double largest_eigenvalue(const SymTridiagonal& d) {
 }
 
 /// Cluster flags of a partial result: is there a second eigenvalue within the threshold of each?
+/// First with the threshold of the Gershgorin bound, which is ≥ the largest eigenvalue: a mode
+/// alone in that wider window is alone in the true one (counts are monotonic), and that settles
+/// almost every mode in one sweep, without the ~14 sweeps of largest_eigenvalue.
 std::vector<std::uint8_t> partial_cluster_flags(const DynamicalMatrix& d, const std::vector<double>& omega2) {
   if (omega2.empty()) return {};
-  const double delta = cluster_relative_gap * largest_eigenvalue(d);
-  std::vector<double> shifts;
-  for (double w : omega2) {
-    shifts.push_back(w - delta);
-    shifts.push_back(w + delta);
-  }
-  const std::vector<long> below = count_below_many(d, shifts);
-  std::vector<std::uint8_t> flags(omega2.size());
-  for (std::size_t j = 0; j < omega2.size(); ++j) flags[j] = below[2 * j + 1] - below[2 * j] > 1 ? 1 : 0;
+  auto neighbours = [&](double delta, const std::vector<std::size_t>& modes) {
+    std::vector<double> shifts;
+    for (std::size_t j : modes) {
+      shifts.push_back(omega2[j] - delta);
+      shifts.push_back(omega2[j] + delta);
+    }
+    const std::vector<long> below = count_below_many(d, shifts);
+    std::vector<std::size_t> crowded;
+    for (std::size_t q = 0; q < modes.size(); ++q)
+      if (below[2 * q + 1] - below[2 * q] > 1) crowded.push_back(modes[q]);
+    return crowded;
+  };
+  std::vector<std::size_t> every(omega2.size());
+  for (std::size_t j = 0; j < every.size(); ++j) every[j] = j;
+  const double bound = std::max(0.0, gershgorin_bounds(d, RowSum::left_to_right).second);
+  std::vector<std::size_t> crowded = neighbours(cluster_relative_gap * bound, every);
+  if (!crowded.empty()) crowded = neighbours(cluster_relative_gap * largest_eigenvalue(d), crowded);
+  std::vector<std::uint8_t> flags(omega2.size(), 0);
+  for (std::size_t j : crowded) flags[j] = 1;
   return flags;
 }
 
