@@ -11,6 +11,7 @@
 
 #include "granular/error.hpp"
 #include "granular/linear/detail/lapack_eigensolver.hpp"
+#include "granular/linear/detail/localized_modes.hpp"
 #include "granular/linear/detail/mode_vector.hpp"
 #include "granular/linear/detail/shift_invert_eigensolvers.hpp"
 #include "granular/linear/detail/sturm_bisection.hpp"
@@ -89,6 +90,19 @@ Eigen::MatrixXd bisect_pairs(const SymTridiagonal& t, long first, long last, std
   residual.clear();
   if (last - first + 1 <= 64) {
     if (brackets.empty()) values = bisect_eigenvalues(t, f, l, 1e-14, kIsolated, &brackets);
+    const std::size_t n = t.size(), m = values.size();
+    // Localized modes on windows of the chain first; the rest (extended, clustered) in the whole chain.
+    Eigen::MatrixXd z(static_cast<Eigen::Index>(n), keep ? static_cast<Eigen::Index>(m) : 0);
+    LocalizedModes local = solve_localized_modes(t, values, brackets, inverse_sqrt_mass, keep ? &z : nullptr);
+    std::vector<std::size_t> rest;
+    std::vector<double> rest_values, rest_brackets;
+    for (std::size_t j = 0; j < m; ++j)
+      if (!local.solved[j]) {
+        rest.push_back(j);
+        rest_values.push_back(values[j]);
+        rest_brackets.push_back(brackets[2 * j]);
+        rest_brackets.push_back(brackets[2 * j + 1]);
+      }
     LaneOptions lanes;
     lanes.keep_vectors = keep;  // IPRs and residuals come from the lanes: no N × K copy needed
     lanes.group = group;
@@ -96,7 +110,19 @@ Eigen::MatrixXd bisect_pairs(const SymTridiagonal& t, long first, long last, std
     lanes.ipr = &ipr;
     lanes.residual = &residual;
     try {
-      return lane_inverse_iteration(t, values, &brackets, lanes);
+      const Eigen::MatrixXd zr =
+          rest.empty() ? Eigen::MatrixXd{} : lane_inverse_iteration(t, rest_values, &rest_brackets, lanes);
+      for (std::size_t q = 0; q < rest.size(); ++q) {
+        const std::size_t j = rest[q];
+        local.values[j] = rest_values[q];
+        local.ipr[j] = ipr[q];
+        local.residual[j] = residual[q];
+        if (keep) z.col(static_cast<Eigen::Index>(j)) = zr.col(static_cast<Eigen::Index>(q));
+      }
+      values = std::move(local.values);
+      ipr = std::move(local.ipr);
+      residual = std::move(local.residual);
+      return z;
     } catch (const NumericalError&) {
       ipr.clear();
       residual.clear();
