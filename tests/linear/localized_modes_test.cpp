@@ -10,6 +10,7 @@
 #include "granular/linear/detail/localized_modes.hpp"
 #include "granular/linear/detail/sturm_bisection.hpp"
 #include "granular/linear/dynamical_matrix.hpp"
+#include "granular/linear/spectrum.hpp"
 #include "granular/linear/tridiagonal_operator.hpp"
 #include "granular/model/named_chains.hpp"
 
@@ -61,6 +62,25 @@ TEST(LocalizedModes, WindowVectorsEqualTheWholeChainSolve) {
   }
   // Localization lengths at 15 kHz are tens of beads: every mode fits a window here.
   EXPECT_EQ(solved, m);
+}
+
+TEST(LocalizedModes, BisectVectorsOfALongChainEqualLapacks) {
+  // 20000 beads: the bisect method solves these modes on windows; dstemr solves the whole chain.
+  const DynamicalMatrix d = localized_test_chain(Disorder::anderson, 20000, 5);
+  SpectrumConfig config;
+  config.vectors = true;
+  config.method = SpectrumMethod::lapack;
+  const Spectrum ref = spectrum(d, nearest(15.0, 12), config);
+  config.method = SpectrumMethod::bisect;
+  const Spectrum got = spectrum(d, nearest(15.0, 12), config);
+  ASSERT_EQ(got.mode, ref.mode);
+  for (std::size_t j = 0; j < got.size(); ++j) {
+    EXPECT_NEAR(got.omega2[j], ref.omega2[j], 1e-10 * ref.omega2[j]);
+    EXPECT_LE(got.residual[j], 1e-13);
+    double overlap = 0;
+    for (std::size_t i = 0; i < d.size(); ++i) overlap += got.vector(j)[i] * ref.vector(j)[i];
+    EXPECT_NEAR(overlap, 1.0, 1e-8) << "mode " << got.mode[j];  // same sign convention (largest entry > 0)
+  }
 }
 
 TEST(LocalizedModes, AnchorsFallInsideTheirModes) {
