@@ -15,7 +15,9 @@
 //                 (eigenvalues + one twisted factorization per mode: ~5× faster, no eigenvectors;
 //                 the IPR map's default);
 //   nearest/window: lapack (dstemr by index), bisect (many-shift Sturm bisection + inverse
-//                 iteration: the fastest for long chains, O(N) memory per 8 modes), arpack or slepc
+//                 iteration: the fastest for long chains; a localized mode of a chain of ≥ 8192
+//                 beads is solved on a window of a few thousand rows, other modes in the whole
+//                 chain with 2 N doubles per lane), arpack or slepc
 //                 (shift-invert Krylov; slepc is collective over MPI ranks: under mpirun every rank
 //                 calls it with the same matrix and gets the same result).
 #include <cstddef>
@@ -74,7 +76,8 @@ struct SpectrumConfig {
   bool vectors = false;                       ///< also return the eigenvectors (not with fast)
   double tolerance = 0;                       ///< arpack/slepc: Ritz tolerance; 0 = each method's tightest default
   int subspace = 0;                           ///< arpack/slepc: Krylov basis size; 0 = max(2K + 1, 20)
-  std::size_t lanes = 8;  ///< bisect: eigenvectors computed together, 1…64 (memory 2 N × lanes doubles)
+  std::size_t lanes = 8;  ///< bisect: eigenvectors computed together in the whole chain, 1…64 (memory 2 N × lanes
+                          ///< doubles; localized modes of long chains are solved on windows instead)
 };
 
 /// Throws InvalidInput (naming the field) on a method that cannot do the selection, fast with

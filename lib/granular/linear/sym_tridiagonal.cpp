@@ -20,10 +20,12 @@ void SymTridiagonal::multiply(const double* x, double* y) const {
 }
 
 double SymTridiagonal::max_abs() const {
-  // fmax alone would skip a NaN and hand a solver a finite scale for a broken matrix.
+  // A max alone would skip a NaN and hand a solver a finite scale for a broken matrix: all_finite
+  // decides. std::max, not std::fmax: the compiler vectorizes it (fmax was a libm call per entry,
+  // ~5 ms a call at N = 1e6); for finite entries both give the same maximum.
   double m = 0;
-  for (double d : diagonal) m = std::fmax(m, std::fabs(d));
-  for (double e : off_diagonal) m = std::fmax(m, std::fabs(e));
+  for (double d : diagonal) m = std::max(m, std::fabs(d));
+  for (double e : off_diagonal) m = std::max(m, std::fabs(e));
   if (!std::isfinite(m) || !all_finite()) throw InvalidInput("matrix", ": has NaN or infinite entries");
   return m;
 }

@@ -11,6 +11,7 @@
 
 #include "granular/error.hpp"
 #include "granular/linear/detail/lapack_eigensolver.hpp"
+#include "granular/linear/detail/localized_modes.hpp"
 #include "granular/linear/detail/mode_vector.hpp"
 #include "granular/linear/detail/shift_invert_eigensolvers.hpp"
 #include "granular/linear/detail/sturm_bisection.hpp"
@@ -89,6 +90,19 @@ Eigen::MatrixXd bisect_pairs(const SymTridiagonal& t, long first, long last, std
   residual.clear();
   if (last - first + 1 <= 64) {
     if (brackets.empty()) values = bisect_eigenvalues(t, f, l, 1e-14, kIsolated, &brackets);
+    const std::size_t n = t.size(), m = values.size();
+    // Localized modes on windows of the chain first; the rest (extended, clustered) in the whole chain.
+    Eigen::MatrixXd z(static_cast<Eigen::Index>(n), keep ? static_cast<Eigen::Index>(m) : 0);
+    LocalizedModes local = solve_localized_modes(t, values, brackets, inverse_sqrt_mass, keep ? &z : nullptr);
+    std::vector<std::size_t> rest;
+    std::vector<double> rest_values, rest_brackets;
+    for (std::size_t j = 0; j < m; ++j)
+      if (!local.solved[j]) {
+        rest.push_back(j);
+        rest_values.push_back(values[j]);
+        rest_brackets.push_back(brackets[2 * j]);
+        rest_brackets.push_back(brackets[2 * j + 1]);
+      }
     LaneOptions lanes;
     lanes.keep_vectors = keep;  // IPRs and residuals come from the lanes: no N × K copy needed
     lanes.group = group;
@@ -96,7 +110,19 @@ Eigen::MatrixXd bisect_pairs(const SymTridiagonal& t, long first, long last, std
     lanes.ipr = &ipr;
     lanes.residual = &residual;
     try {
-      return lane_inverse_iteration(t, values, &brackets, lanes);
+      const Eigen::MatrixXd zr =
+          rest.empty() ? Eigen::MatrixXd{} : lane_inverse_iteration(t, rest_values, &rest_brackets, lanes);
+      for (std::size_t q = 0; q < rest.size(); ++q) {
+        const std::size_t j = rest[q];
+        local.values[j] = rest_values[q];
+        local.ipr[j] = ipr[q];
+        local.residual[j] = residual[q];
+        if (keep) z.col(static_cast<Eigen::Index>(j)) = zr.col(static_cast<Eigen::Index>(q));
+      }
+      values = std::move(local.values);
+      ipr = std::move(local.ipr);
+      residual = std::move(local.residual);
+      return z;
     } catch (const NumericalError&) {
       ipr.clear();
       residual.clear();
@@ -189,7 +215,7 @@ Spectrum solve_partial(const SymTridiagonal& t, const std::vector<double>& inver
         const bool coarse = last - first + 1 <= 64;
         std::vector<double> brackets;
         const auto values = bisect_eigenvalues(t, static_cast<int>(first), static_cast<int>(last), 1e-14,
-                                               coarse ? kIsolated : 0, &brackets);
+                                               coarse ? kIsolated : 0, &brackets, sigma);
         const auto pick = nearest_in_frequency(values, f0, k);
         const long a = std::max(first, first + static_cast<long>(pick.front()) - 1);
         const long b = std::min(last, first + static_cast<long>(pick.back()) + 1);
@@ -321,14 +347,41 @@ std::string node_count_check(const Spectrum& p, const ModeSelection& selection, 
     return static_cast<std::size_t>(
         std::count_if(p.omega2.begin(), p.omega2.end(), [&](double v) { return v >= a && v < b; }));
   };
-  auto count = [&](double a, double b) { return b > a ? op.count_below(b) - op.count_below(a) : std::size_t{0}; };
   double rmax = 0;
   for (double r : p.residual) rmax = std::max(rmax, r);
   const double delta = std::max(64 * std::numeric_limits<double>::epsilon(), 2 * rmax) * scale;
+  const double inf = std::numeric_limits<double>::infinity();
+  // Every inertia count the check needs, in one many-shift sweep (one count per O(N) sweep was
+  // ~10 sweeps at N = 1e6); its pivots are op.count_below's (an AVX-512 build divides by a refined reciprocal).
+  double lo = 0, hi_up = 0, a_near = -inf, b_near = 0;
+  std::vector<double> points;
   if (selection.kind == ModeSelection::Kind::window) {
-    const double lo = omega_squared_of_khz(selection.lo_khz), hi = omega_squared_of_khz(selection.hi_khz);
-    const std::size_t expect =
-        op.count_below(std::nextafter(hi, std::numeric_limits<double>::infinity())) - op.count_below(lo);
+    lo = omega_squared_of_khz(selection.lo_khz);
+    hi_up = std::nextafter(omega_squared_of_khz(selection.hi_khz), inf);
+    points = {lo, hi_up};
+  }
+  if (m > 0) {
+    const double vmin = p.omega2.front(), vmax = p.omega2.back();
+    for (double x : {vmin - delta, vmin + delta, vmax - delta, vmax + delta}) points.push_back(x);
+    if (selection.kind == ModeSelection::Kind::nearest) {
+      const double f0 = selection.near_khz;
+      double dk = 0;
+      for (double f : p.freq_khz) dk = std::max(dk, std::fabs(f - f0));
+      a_near = f0 > dk ? omega_squared_of_khz(f0 - dk) + delta : -inf;
+      b_near = omega_squared_of_khz(f0 + dk) - delta;
+      if (std::isfinite(a_near)) points.push_back(a_near);
+      points.push_back(b_near);
+    }
+  }
+  const std::vector<long> counted = points.empty() ? std::vector<long>{} : count_below_many(op.matrix(), points);
+  auto below = [&](double x) {
+    const auto at = std::find(points.begin(), points.end(), x);
+    return at == points.end() ? op.count_below(x) : static_cast<std::size_t>(counted[at - points.begin()]);
+  };
+  auto count = [&](double a, double b) { return b > a ? below(b) - below(a) : std::size_t{0}; };
+  if (selection.kind == ModeSelection::Kind::window) {
+    const double hi = omega_squared_of_khz(selection.hi_khz);
+    const std::size_t expect = below(hi_up) - below(lo);
     if (m != expect)
       return "the window holds " + std::to_string(expect) + " eigenvalues by node count, " + std::to_string(m) +
              " returned";
@@ -342,7 +395,7 @@ std::string node_count_check(const Spectrum& p, const ModeSelection& selection, 
     if (p.mode[j] != p.mode[j - 1] + 1 || p.omega2[j] < p.omega2[j - 1] - delta)
       return "the returned modes are not consecutive";
   const double vmin = p.omega2.front(), vmax = p.omega2.back();
-  const std::size_t below_lo = op.count_below(vmin - delta), above_lo = op.count_below(vmin + delta);
+  const std::size_t below_lo = below(vmin - delta), above_lo = below(vmin + delta);
   if (!(p.mode.front() > below_lo && p.mode.front() <= above_lo))
     return "mode " + std::to_string(p.mode.front()) + " is numbered " + std::to_string(below_lo + 1) + ".." +
            std::to_string(above_lo) + " by node count";
@@ -363,12 +416,8 @@ std::string node_count_check(const Spectrum& p, const ModeSelection& selection, 
       return "more eigenvalues returned at an end than exist there";
   }
   if (selection.kind == ModeSelection::Kind::nearest) {
-    const double f0 = selection.near_khz;
-    double dk = 0;
-    for (double f : p.freq_khz) dk = std::max(dk, std::fabs(f - f0));
-    const double a = f0 > dk ? omega_squared_of_khz(f0 - dk) + delta : -std::numeric_limits<double>::infinity();
-    const double b = omega_squared_of_khz(f0 + dk) - delta;
-    const std::size_t truth = b > a ? op.count_below(b) - (std::isfinite(a) ? op.count_below(a) : 0) : 0;
+    const double a = a_near, b = b_near;
+    const std::size_t truth = b > a ? below(b) - (std::isfinite(a) ? below(a) : 0) : 0;
     if (b > a && !(truth >= in(a + 0.5 * delta, b - 0.5 * delta) && truth <= in(a - 0.5 * delta, b + 0.5 * delta)))
       return "an eigenvalue nearer to near_khz than the farthest returned mode was left out (node count " +
              std::to_string(truth) + ", returned " + std::to_string(in(a, b)) + ")";

@@ -3,7 +3,8 @@
 // frequency, or every mode in a frequency window, with their displacement IPRs, by one of four interchangeable methods:
 //   lapack  dstemr (MRRR) restricted to an index range found by two O(N) inertia counts;
 //   bisect  the same index range by many-shift Sturm bisection (sturm_bisection.hpp), vectors by
-//           LAPACK inverse iteration (dstein): the fastest for long chains;
+//           inverse iteration: on a window of the chain for a localized mode (localized_modes.hpp),
+//           else in the whole chain, several modes at once: the fastest for long chains;
 //   arpack  ARPACK shift-invert around σ = (2π f)², (T − σI)⁻¹ by an O(N) tridiagonal LU;
 //   slepc   SLEPc Krylov–Schur + shift-invert on a PETSc MPI matrix (collective: under mpirun
 //           every rank calls it with the same matrix and gets the same result).

@@ -62,11 +62,52 @@ void count_block_avx512(const SymTridiagonal& t, double pivmin, const double* sh
 }
 #endif
 
-/// One sweep of L shifts: the AVX-512 kernel where the build has it, else the scalar lanes.
+#if defined(__GNUC__)
+/// The Sturm count of detail/sturm_count.hpp in explicit 4-wide vectors (GCC/Clang vector
+/// extensions: AVX2 where the build has it, SSE pairs else), with the very same IEEE operations per
+/// lane, so its counts equal the scalar kernel's bit for bit. Why not leave it to the compiler: GCC
+/// vectorized sturm_counts<32> but left <8> and <16> scalar (vdivsd), 4.5× slower per shift.
+/// L lanes = L/4 independent division chains, enough to cover the divider's latency from L = 16.
+template <int L>
+void count_block_vector(const SymTridiagonal& t, double pivmin, const double* shift, long* count) {
+  static_assert(L % 4 == 0);
+  using v4 = double __attribute__((vector_size(32)));
+  using m4 = long long __attribute__((vector_size(32)));  // lane masks: −1 true, 0 false
+  constexpr int V = L / 4;
+  const std::size_t n = t.size();
+  const double* a = t.diagonal.data();
+  const double* b = t.off_diagonal.data();
+  const v4 zero{}, npm = zero - pivmin, pm = zero + pivmin;
+  v4 p[V], s[V];
+  m4 c[V];
+  auto guard = [&](v4 q) {  // |q| <= pivmin -> -pivmin: a zero pivot counts as negative
+    const v4 mag = q < zero ? -q : q;
+    return mag <= pm ? npm : q;
+  };
+  for (int v = 0; v < V; ++v) {
+    for (int k = 0; k < 4; ++k) s[v][k] = shift[4 * v + k];
+    p[v] = guard((zero + a[0]) - s[v]);
+    c[v] = -(p[v] < zero);
+  }
+  for (std::size_t i = 1; i < n; ++i) {
+    const v4 ai = zero + a[i], b2 = zero + b[i - 1] * b[i - 1];
+    for (int v = 0; v < V; ++v) {
+      p[v] = guard((ai - s[v]) - b2 / p[v]);
+      c[v] -= p[v] < zero;
+    }
+  }
+  for (int v = 0; v < V; ++v)
+    for (int k = 0; k < 4; ++k) count[4 * v + k] = static_cast<long>(c[v][k]);
+}
+#endif
+
+/// One sweep of L shifts: the AVX-512 kernel where the build has it, else the vector lanes.
 template <int L>
 void sweep(const SymTridiagonal& t, double pivmin, const double* shift, long* count) {
 #if defined(__AVX512F__)
   count_block_avx512<L>(t, pivmin, shift, count);
+#elif defined(__GNUC__)
+  count_block_vector<L>(t, pivmin, shift, count);
 #else
   sturm_counts<L>(t, pivmin, shift, count);
 #endif
@@ -101,7 +142,7 @@ std::vector<long> count_below_many(const SymTridiagonal& t, const std::vector<do
 }
 
 std::vector<double> bisect_eigenvalues(const SymTridiagonal& t, int first, int last, double relative_width,
-                                       double isolated_width, std::vector<double>* brackets) {
+                                       double isolated_width, std::vector<double>* brackets, double centre) {
   const int n = static_cast<int>(t.size());
   if (first < 1 || last < first || last > n)
     throw InvalidInput("eigenvalue index range " + std::to_string(first) + ".." + std::to_string(last) +
@@ -126,21 +167,40 @@ std::vector<double> bisect_eigenvalues(const SymTridiagonal& t, int first, int l
   };
   std::vector<double> shifts;
   std::vector<long> counts;
+  std::vector<std::pair<int, int>> groups;
   for (int pass = 0; pass < 4000; ++pass) {
     shifts.clear();
     // Lanes with the same bracket form a group; its g lanes spread g shifts evenly over it.
+    groups.clear();
+    int lanes = 0;
     for (int j = 0; j < m;) {
       int k = j;
       while (k + 1 < m && lo[k + 1] == lo[j] && hi[k + 1] == hi[j]) ++k;
       bool any = false;
       for (int r = j; r <= k; ++r) any = any || !done(r);
       if (any) {
-        const int g = k - j + 1;
-        for (int r = 1; r <= g; ++r) shifts.push_back(lo[j] + (hi[j] - lo[j]) * r / (g + 1));
+        groups.emplace_back(j, k - j + 1);
+        lanes += k - j + 1;
       }
       j = k + 1;
     }
-    if (shifts.empty()) break;
+    if (groups.empty()) break;
+    // A sweep of up to 16 shifts costs what one of 1 does (the divider's latency, not its
+    // throughput, bounds it): a pass with few lanes left gives each group more shifts.
+    const int spread = lanes <= 8 ? 16 / lanes : 1;
+    for (const auto& [j, g] : groups)
+      for (int r = 1; r <= g * spread; ++r) shifts.push_back(lo[j] + (hi[j] - lo[j]) * r / (g * spread + 1));
+    // First pass with a centre: 16 pairs of shifts around it, 4× closer each, instead of even
+    // ones over the whole spectrum (three passes fewer for a run of modes near the centre).
+    if (pass == 0 && std::isfinite(centre) && centre > glo && centre < ghi) {
+      shifts.clear();
+      const double span = ghi - glo;
+      for (int k = 0; k < 16; ++k) {
+        const double d = 0.5 * span * std::pow(0.25, k);
+        shifts.push_back(std::max(glo, centre - d));
+        shifts.push_back(std::min(ghi, centre + d));
+      }
+    }
     count_many(t, pivmin, shifts, counts);
     // Every count narrows every bracket: λ_k < s ⇔ count(s) ≥ k.
     for (std::size_t q = 0; q < shifts.size(); ++q) {

@@ -8,6 +8,7 @@
 // several vectors at once (lane_inverse_iteration), or one by one on the pivoted LU
 // (inverse_iteration; LAPACK's dstein was 5× slower: it reorthogonalizes every vector against
 // all others within 1e-3‖T‖, i.e. all of them in a long chain).
+#include <limits>
 #include <vector>
 
 #include <Eigen/Core>
@@ -21,8 +22,12 @@ namespace granular {
 /// (relative) once the bracket holds that eigenvalue alone, which is all a Rayleigh-quotient
 /// refinement needs (lane_inverse_iteration). Throws InvalidInput on a bad range.
 /// `brackets`, if given, receives each eigenvalue's final bracket [lo, hi] (2 m entries).
+/// `centre` (finite): where the eigenvalues are expected (e.g. the shift of a nearest selection);
+/// the first sweep then probes around it instead of evenly over the spectrum. Results do not
+/// depend on it beyond the brackets' last bits.
 std::vector<double> bisect_eigenvalues(const SymTridiagonal& t, int first, int last, double relative_width,
-                                       double isolated_width = 0, std::vector<double>* brackets = nullptr);
+                                       double isolated_width = 0, std::vector<double>* brackets = nullptr,
+                                       double centre = std::numeric_limits<double>::quiet_NaN());
 
 /// Unit eigenvectors (N × values.size()) for accurate eigenvalues `values` (ascending) by inverse
 /// iteration: one O(N) pivoted LU of T − λI (dgttrf), then solves until the residual
