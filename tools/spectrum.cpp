@@ -40,7 +40,8 @@ int main(int argc, char** argv) {
                    "(shift-invert; slepc runs on every mpirun rank)");
   tool::add_option(app, "--tolerance", config.tolerance, "ARPACK/SLEPc Ritz tolerance (0 = tightest default)");
   tool::add_integer(app, "--lanes", config.lanes,
-                    "bisect: eigenvectors computed together, 1..64 (memory 2 N x lanes doubles)");
+                    "bisect: eigenvectors computed together, 1..64 (2 N x lanes doubles on a whole-chain "
+                    "solve; localized modes of long chains are solved on windows)");
   app.add_option("--vectors", vectors_file, "also write the eigenvectors to this HDF5 file");
   app.add_option("--dump-matrix", dump_matrix,
                  "also write the dynamical matrix as raw little-endian doubles PREFIX.diag.f64 (N) and "
