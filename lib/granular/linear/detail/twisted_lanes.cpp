@@ -15,8 +15,7 @@ constexpr double negligible = 1e-60;    // |z| below this (z_r = 1) ends a recur
 
 // The lanes are H native vectors of W doubles (generic vectors wider than the hardware's were
 // lowered element by element through the stack: 3× slower than scalar code). Vectors are only
-// ever locals or references, so no calling convention depends on their width. aligned(8): loads
-// and stores through these types may be unaligned.
+// ever locals or references, so no calling convention depends on their width.
 #if defined(__AVX512F__)
 constexpr std::size_t W = 8;
 #elif defined(__AVX__)
@@ -26,8 +25,8 @@ constexpr std::size_t W = 2;
 #endif
 constexpr std::size_t H = L / W;
 static_assert(L % W == 0);
-typedef double V __attribute__((vector_size(W * sizeof(double)), aligned(8)));
-typedef long M __attribute__((vector_size(W * sizeof(long)), aligned(8)));
+typedef double V __attribute__((vector_size(W * sizeof(double))));
+typedef long M __attribute__((vector_size(W * sizeof(long))));
 static_assert(sizeof(long) == sizeof(double));
 
 constexpr long sign_bits = 0x7fffffffffffffffL;
@@ -43,8 +42,14 @@ bool any(const M (&mask)[K]) {
   return out != 0;
 }
 
-V load(const double* p) { return *reinterpret_cast<const V*>(p); }
-void store(double* p, const V& x) { *reinterpret_cast<V*>(p) = x; }
+// memcpy: an unaligned load or store on every compiler (Clang ignored aligned(8) on the vector
+// typedef and emitted aligned moves)
+V load(const double* p) {
+  V x;
+  std::memcpy(&x, p, sizeof x);
+  return x;
+}
+void store(double* p, const V& x) { std::memcpy(p, &x, sizeof x); }
 
 // One z sweep away from the twist (z_r = 1 in every lane) for the G vectors from `first`. Up:
 // i = max r − 1 … 0 with z_i = −L⁺_i z_{i+1}; down: i = min r … n − 2 with z_{i+1} = −U_i z_i.
@@ -102,6 +107,41 @@ void sweep(const double* d, const double* e, const double* m, std::size_t n, con
       v2[h] += vv;
       v4[h] += vv * vv;
     }
+  }
+}
+
+// The z sweeps of one shift, scalar: L⁺ and U⁻ at lp[i·stride] and um[i·stride]; `s` holds the
+// z_r = 1 term. twisted_one's, and twisted_lanes' where vectors are only 2 wide (no AVX): there
+// masked vector sweeps cost more than the scalar ones, which stop at each lane's own end.
+void scalar_sweeps(const double* d, const double* e, const double* m, std::size_t n, const double* lp, const double* um,
+                   std::size_t stride, double sigma, TwistedSums& s) {
+  const std::size_t r = s.twist;
+  auto add = [&](double z, double mass) {
+    const double v = z * mass, vv = v * v;
+    s.z2 += z * z;
+    s.v2 += vv;
+    s.v4 += vv * vv;
+  };
+  double z = 1.0, z1 = 0;  // z1: the component one further from the twist
+  for (std::size_t i = r; i-- > 0;) {
+    const double li = lp[i * stride];
+    const double next =
+        std::fabs(li) > node_ratio ? -((d[i + 1] - sigma) * z + (i + 2 < n ? e[i + 1] * z1 : 0.0)) / e[i] : -li * z;
+    z1 = z;
+    z = next;
+    if (!(std::fabs(z) >= negligible) && !(std::fabs(z1) >= negligible)) break;
+    add(z, m[i]);
+  }
+  z = 1.0;
+  z1 = 0;
+  for (std::size_t i = r; i + 1 < n; ++i) {
+    const double ui = um[i * stride];
+    const double next =
+        std::fabs(ui) > node_ratio ? -((d[i] - sigma) * z + (i > 0 ? e[i - 1] * z1 : 0.0)) / e[i] : -ui * z;
+    z1 = z;
+    z = next;
+    if (!(std::fabs(z) >= negligible) && !(std::fabs(z1) >= negligible)) break;
+    add(z, m[i + 1]);
   }
 }
 
@@ -180,6 +220,15 @@ void twisted_lanes(const double* d, const double* e, const double* m, std::size_
     v2[h] = vv;
     v4[h] = vv * vv;
   }
+  if constexpr (W < 4) {
+    for (std::size_t h = 0; h < H; ++h)
+      for (std::size_t w = 0; w < W; ++w) {
+        const std::size_t l = h * W + w;
+        out[l] = {best[h][w], z2[h][w], v2[h][w], v4[h][w], static_cast<std::size_t>(twist[h][w])};
+        scalar_sweeps(d, e, m, n, lp + l, um + l, L, shift[l], out[l]);
+      }
+    return;
+  }
   for (std::size_t h = 0; h < H; h += G) {
     sweep<true>(d, e, m, n, lp, node_up, sigma, twist, h, z2, v2, v4);
     sweep<false>(d, e, m, n, um, node_down, sigma, twist, h, z2, v2, v4);
@@ -219,38 +268,10 @@ TwistedSums twisted_one(const double* d, const double* e, const double* m, std::
     }
   }
   TwistedSums s{best, 1.0, 0, 0, r};
-  auto add = [&](double z, double mass) {
-    const double v = z * mass, vv = v * v;
-    s.z2 += z * z;  // only after the first component (z_r = 1 is in z2 already)
-    s.v2 += vv;
-    s.v4 += vv * vv;
-  };
-  {
-    const double v = 1.0 * m[r], vv = v * v;
-    s.v2 = vv;
-    s.v4 = vv * vv;
-  }
-  double z = 1.0, z1 = 0;  // z1: the component one further from the twist
-  for (std::size_t i = r; i-- > 0;) {
-    const double li = lp[i];
-    const double next =
-        std::fabs(li) > node_ratio ? -((d[i + 1] - sigma) * z + (i + 2 < n ? e[i + 1] * z1 : 0.0)) / e[i] : -li * z;
-    z1 = z;
-    z = next;
-    if (!(std::fabs(z) >= negligible) && !(std::fabs(z1) >= negligible)) break;
-    add(z, m[i]);
-  }
-  z = 1.0;
-  z1 = 0;
-  for (std::size_t i = r; i + 1 < n; ++i) {
-    const double ui = um[i];
-    const double next =
-        std::fabs(ui) > node_ratio ? -((d[i] - sigma) * z + (i > 0 ? e[i - 1] * z1 : 0.0)) / e[i] : -ui * z;
-    z1 = z;
-    z = next;
-    if (!(std::fabs(z) >= negligible) && !(std::fabs(z1) >= negligible)) break;
-    add(z, m[i + 1]);
-  }
+  const double v = 1.0 * m[r], vv = v * v;
+  s.v2 = vv;
+  s.v4 = vv * vv;
+  scalar_sweeps(d, e, m, n, lp, um, 1, sigma, s);
   return s;
 }
 
