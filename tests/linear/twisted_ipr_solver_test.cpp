@@ -286,6 +286,32 @@ TEST(TwistedModeIpr, AgreesWithStevrOnTheDefaultIprMapGrid) {
               tally.worst_strict, tally.checked_strict, tally.worst_conditioned);
 }
 
+// Chains ten times the default length (N = 997: no multiple of the lane count, so every chain
+// ends with a partly filled batch of twisted factorizations) against dstevd, under the same rules.
+TEST(TwistedModeIpr, AgreesWithStevdOnLongChains) {
+  TwistedModeIpr fast;
+  Tally tally;
+  std::size_t chains = 0;
+  for (double q : {0.2, 0.8})
+    for (double xi : {0.1, 0.35, 0.7, 1.0}) {
+      const auto types = realization_configuration(Disorder::anderson, q, 997, 5, chains);
+      const Chain chain = make_chain(radii_of(types, 4.76e-3, xi), 10.0);
+      const SymTridiagonal d = dynamical_matrix(chain);
+      const std::vector<double> s = inverse_sqrt_mass(chain.inverse_mass);
+      Solution stevd;
+      LapackModeIpr(LapackDriver::stevd).solve(d, s, stevd.omega2, stevd.ipr);
+      Solution got;
+      fast.solve(d, s, got.omega2, got.ipr);
+      compare(got, stevd, "N=997 q=" + std::to_string(q) + " xi=" + std::to_string(xi), tally);
+      ++chains;
+    }
+  EXPECT_EQ(fast.info().fallbacks, 0u);
+  EXPECT_GT(tally.checked_strict, 100u * chains);
+  std::printf(
+      "[ info ] N=997: worst |dIPR| %.3g on %zu modes (relgap >= 1e-4), worst |dIPR|*relgap %.3g, in clusters %zu\n",
+      tally.worst_strict, tally.checked_strict, tally.worst_conditioned, tally.clustered);
+}
+
 // Two identical chains joined by a vanishing bond: every eigenvalue is exactly double, the
 // cluster case in its purest form. Any orthonormal basis {c a + s b, −s a + c b} of a pair (a, b
 // the mode on either copy) gives both vectors the IPR (c⁴ + s⁴) P, P the single copy's IPR, in

@@ -13,9 +13,6 @@ namespace granular {
 namespace {
 
 constexpr std::size_t L = TwistedModeIpr::lanes;
-constexpr double pivot_floor = 1e-290;  // a zero pivot becomes -pivot_floor (|e| ≤ 1 after scaling)
-constexpr double node_ratio = 1e3;      // |L⁺| or |U⁻| above this: a near-zero pivot, a node of z
-constexpr double negligible = 1e-60;    // |z| below this (z_r = 1) ends a recurrence
 
 // IPR accumulation of one component; returns false once the component is negligible.
 struct Sums {
@@ -117,7 +114,7 @@ void TwistedModeIpr::reserve(std::size_t n) {
   for (Slot& slot : slots_)
     for (auto* v : {&slot.d, &slot.e, &slot.e2, &slot.lambda, &slot.mass}) v->resize(n);
   stein_w_.resize(n);
-  for (auto* v : {&lplus_, &dplus_, &uminus_}) v->resize(n * L);
+  lane_work_.reserve(n);
   isolated_.resize(n);
   stein_z_.resize(n * n);
   stein_work_.resize(5 * n);
@@ -240,82 +237,13 @@ bool TwistedModeIpr::solve_modes(const Slot& slot, std::vector<double>& ipr) {
 
 bool TwistedModeIpr::twisted_batch(const Slot& slot, const std::size_t* modes, std::size_t count,
                                    std::vector<double>& ipr) {
-  const std::size_t n = slot.n;
-  const double* d = slot.d.data();
-  const double* e = slot.e.data();
-  double* lp = lplus_.data();
-  double* dp = dplus_.data();
-  double* um = uminus_.data();
-  alignas(64) double sigma[L], piv[L], best[L];
-  alignas(64) std::size_t twist[L];
+  alignas(64) double sigma[L];
+  detail::TwistedSums sums[L];
   for (std::size_t l = 0; l < L; ++l) sigma[l] = slot.lambda[modes[std::min(l, count - 1)]];
-
-  // stationary L D Lᵀ = T − σ from the top: D⁺_{i+1} = d_{i+1} − σ − e_i L⁺_i, L⁺_i = e_i / D⁺_i
-  for (std::size_t l = 0; l < L; ++l) piv[l] = d[0] - sigma[l];
-  for (std::size_t i = 0; i + 1 < n; ++i) {
-    const double ei = e[i], dn = d[i + 1];
-    for (std::size_t l = 0; l < L; ++l) {
-      const double p = std::fabs(piv[l]) < pivot_floor ? -pivot_floor : piv[l];
-      const double li = ei / p;
-      dp[i * L + l] = p;
-      lp[i * L + l] = li;
-      piv[l] = (dn - sigma[l]) - ei * li;
-    }
-  }
-  for (std::size_t l = 0; l < L; ++l) {
-    dp[(n - 1) * L + l] = piv[l];
-    best[l] = std::fabs(piv[l]);  // γ_{n-1} = D⁺_{n-1}
-    twist[l] = n - 1;
-  }
-  // progressive U D Uᵀ from the bottom: U_i = e_i / D⁻_{i+1}; γ_i = D⁺_i − e_i U_i
-  for (std::size_t l = 0; l < L; ++l) piv[l] = d[n - 1] - sigma[l];
-  for (std::size_t i = n - 1; i-- > 0;) {
-    const double ei = e[i], di = d[i];
-    for (std::size_t l = 0; l < L; ++l) {
-      const double p = std::fabs(piv[l]) < pivot_floor ? -pivot_floor : piv[l];
-      const double ui = ei / p;
-      um[i * L + l] = ui;
-      piv[l] = (di - sigma[l]) - ei * ui;
-      const double g = std::fabs(dp[i * L + l] - ei * ui);
-      const bool better = g < best[l];
-      best[l] = better ? g : best[l];
-      twist[l] = better ? i : twist[l];
-    }
-  }
-  // z_r = 1; z_i = −L⁺_i z_{i+1} above the twist, z_{i+1} = −U_i z_i below it
-  const double* m = slot.mass.data();
+  detail::twisted_lanes(slot.d.data(), slot.e.data(), slot.mass.data(), slot.n, sigma, lane_work_, sums);
   for (std::size_t l = 0; l < count; ++l) {
-    const std::size_t r = twist[l];
-    Sums sums;
-    sums.add(1.0, m[r]);
-    double z = 1.0;
-    // Where a pivot is tiny the eigenvector has a node next to it (z_{i+1} ≈ 0 between two
-    // lumps of one mode), and the two-term product 0·∞ loses the far lump; there the three-term
-    // row of (T − σ) z = 0 carries z across instead (LAPACK's dlar1v does the same at exact zeros).
-    const double s_l = sigma[l];
-    double z1 = 0;  // the component one further from the twist
-    for (std::size_t i = r; i-- > 0;) {
-      const double li = lp[i * L + l];
-      const double next =
-          std::fabs(li) > node_ratio ? -((d[i + 1] - s_l) * z + (i + 2 < n ? e[i + 1] * z1 : 0.0)) / e[i] : -li * z;
-      z1 = z;
-      z = next;
-      if (!(std::fabs(z) >= negligible) && !(std::fabs(z1) >= negligible)) break;
-      sums.add(z, m[i]);
-    }
-    z = 1.0;
-    z1 = 0;
-    for (std::size_t i = r; i + 1 < n; ++i) {
-      const double ui = um[i * L + l];
-      const double next =
-          std::fabs(ui) > node_ratio ? -((d[i] - s_l) * z + (i > 0 ? e[i - 1] * z1 : 0.0)) / e[i] : -ui * z;
-      z1 = z;
-      z = next;
-      if (!(std::fabs(z) >= negligible) && !(std::fabs(z1) >= negligible)) break;
-      sums.add(z, m[i + 1]);
-    }
-    const double residual = best[l] / std::sqrt(sums.z2);
-    const double p = sums.v4 / (sums.v2 * sums.v2);
+    const double residual = sums[l].gamma / std::sqrt(sums[l].z2);
+    const double p = sums[l].v4 / (sums[l].v2 * sums[l].v2);
     if (!(residual <= residual_limit_) || !(p > 0 && p <= 1 + 1e-12)) return false;
     ipr[modes[l]] = std::fmin(p, 1.0);
   }

@@ -20,9 +20,10 @@
 //     stop once |z| < 1e-60. Components keep decaying past that point unless a second
 //     localization centre lies beyond it, and a dip to 1e-60 between two centres means a
 //     splitting ~1e-120, far inside a cluster, so an isolated mode loses < 1e-100 of its Σz²
-//     (truncating at 1e-7 instead is caught by the tests: two-centre modes exist). Eight shifts go
-//     through the factorizations together so the compiler vectorizes them (the recurrences
-//     are serial in n, not across shifts). O(N) per mode, no allocation per solve.
+//     (truncating at 1e-7 instead is caught by the tests: two-centre modes exist). Sixteen shifts
+//     go through the factorizations and the z sweeps together in vector lanes
+//     (twisted_lanes.hpp; the recurrences are serial in n, not across shifts; the results are
+//     those of the scalar recurrences bit for bit). O(N) per mode, no allocation per solve.
 //  3. Clusters. Mode k is *isolated* when its relative gap
 //         relgap_k = min(λ_k − λ_{k−1}, λ_{k+1} − λ_k) / max|λ|
 //     is at least `cluster_gap` (default 1e-10); maximal runs of consecutive modes whose
@@ -59,6 +60,7 @@
 #include <vector>
 
 #include "granular/linear/detail/mode_ipr_solver.hpp"
+#include "granular/linear/detail/twisted_lanes.hpp"
 
 namespace granular {
 
@@ -85,7 +87,7 @@ class TwistedModeIpr final : public ModeIprSolver {
   const TwistedIprConfig& config() const { return config_; }
 
   /// Batch width of the vectorized twisted factorizations.
-  static constexpr std::size_t lanes = 8;
+  static constexpr std::size_t lanes = detail::twisted_lane_count;
   /// Chains whose QL iterations run interleaved.
   static constexpr std::size_t interleave = 4;
 
@@ -110,8 +112,7 @@ class TwistedModeIpr final : public ModeIprSolver {
   std::size_t capacity_ = 0;
   double residual_limit_ = 0;
   Slot slots_[interleave];
-  // batched factorization: [i * lanes + lane]
-  std::vector<double> lplus_, dplus_, uminus_;
+  detail::TwistedLaneWork lane_work_;  // the batched factorizations
   std::vector<std::size_t> isolated_;
   // dstein workspace
   std::vector<double> stein_w_, stein_z_, stein_work_;
