@@ -22,19 +22,16 @@ constexpr std::size_t kFirstWindow = 2048, kLastWindow = 32768;
 template <int G>
 void anchor_sweep(const SymTridiagonal& t, double pivmin, const double* lo, const double* hi, std::size_t* anchor) {
 #if defined(__GNUC__)
-  using v4 = double __attribute__((vector_size(32)));
-  using m4 = long long __attribute__((vector_size(32)));
+  using v4 = detail::SturmLanes;
+  using m4 = detail::SturmMasks;
 #else
 #error "mode_anchors needs GCC/Clang vector extensions"
 #endif
   const std::size_t n = t.size();
   const double* a = t.diagonal.data();
   const double* b = t.off_diagonal.data();
-  const v4 zero{}, npm = zero - pivmin, pm = zero + pivmin;
-  auto guard = [&](v4 q) {  // |q| <= pivmin -> -pivmin, as the Sturm count
-    const v4 mag = q < zero ? -q : q;
-    return mag <= pm ? npm : q;
-  };
+  const v4 zero{}, pm = zero + pivmin;
+  auto guard = [&](v4 q) { return detail::sturm_guard(q, pm); };
   v4 slo[G], shi[G], plo[G], phi[G];
   m4 clo[G], chi[G], inside[G], last[G];
   for (int g = 0; g < G; ++g) {
@@ -94,9 +91,9 @@ LocalizedModes solve_localized_modes(const SymTridiagonal& t, const std::vector<
   const std::size_t n = t.size(), m = values.size();
   LocalizedModes out{values, std::vector<double>(m, 0.0), std::vector<double>(m, 0.0), std::vector<bool>(m, false)};
   if (m == 0 || n < 4 * kFirstWindow || brackets.size() != 2 * m || inverse_sqrt_mass.size() != n) return out;
-  const double norm = t.max_abs(), eps = std::numeric_limits<double>::epsilon();
-  // The whole-chain solve's targets (lane_inverse_iteration): residual, bracket slack, clusters.
-  const double target = 64 * eps * norm, slack = 64 * eps * norm, cluster = 1e-10 * norm;
+  const double norm = t.max_abs();
+  // The whole-chain solve's targets (lane_inverse_iteration): residual (also the bracket slack), clusters.
+  const double target = kResidualTarget * norm, slack = target, cluster = kClusterGap * norm;
   auto isolated = [&](std::size_t j) {
     const bool below = j > 0 && brackets[2 * j] - brackets[2 * j - 1] < cluster;
     const bool above = j + 1 < m && brackets[2 * j + 2] - brackets[2 * j + 1] < cluster;

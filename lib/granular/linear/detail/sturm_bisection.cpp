@@ -71,19 +71,16 @@ void count_block_avx512(const SymTridiagonal& t, double pivmin, const double* sh
 template <int L>
 void count_block_vector(const SymTridiagonal& t, double pivmin, const double* shift, long* count) {
   static_assert(L % 4 == 0);
-  using v4 = double __attribute__((vector_size(32)));
-  using m4 = long long __attribute__((vector_size(32)));  // lane masks: −1 true, 0 false
+  using v4 = detail::SturmLanes;
+  using m4 = detail::SturmMasks;
   constexpr int V = L / 4;
   const std::size_t n = t.size();
   const double* a = t.diagonal.data();
   const double* b = t.off_diagonal.data();
-  const v4 zero{}, npm = zero - pivmin, pm = zero + pivmin;
+  const v4 zero{}, pm = zero + pivmin;
   v4 p[V], s[V];
   m4 c[V];
-  auto guard = [&](v4 q) {  // |q| <= pivmin -> -pivmin: a zero pivot counts as negative
-    const v4 mag = q < zero ? -q : q;
-    return mag <= pm ? npm : q;
-  };
+  auto guard = [&](v4 q) { return detail::sturm_guard(q, pm); };
   for (int v = 0; v < V; ++v) {
     for (int k = 0; k < 4; ++k) s[v][k] = shift[4 * v + k];
     p[v] = guard((zero + a[0]) - s[v]);
@@ -243,7 +240,7 @@ Eigen::MatrixXd inverse_iteration(const SymTridiagonal& t, std::vector<double>& 
   const double eps = std::numeric_limits<double>::epsilon();
   // Vectors whose eigenvalues are closer than this are made orthogonal explicitly; farther ones
   // already are, to ~eps‖T‖/gap, by the accuracy of each vector.
-  const double cluster = 1e-10 * norm;
+  const double cluster = kClusterGap * norm;
   ShiftInvertOperator lu;
   std::vector<double> tw(n);
   std::uint64_t seed = 0x2545F4914F6CDD1Dull;
@@ -259,7 +256,7 @@ Eigen::MatrixXd inverse_iteration(const SymTridiagonal& t, std::vector<double>& 
     std::size_t first_close = j;
     while (first_close > 0 && values[j] - values[first_close - 1] < cluster) --first_close;
     double residual = std::numeric_limits<double>::infinity();
-    for (int it = 0; it < 6 && residual > 64 * eps * norm; ++it) {
+    for (int it = 0; it < 6 && residual > kResidualTarget * norm; ++it) {
       lu.solve(x);
       for (std::size_t k = first_close; k < j; ++k) {  // Gram–Schmidt within the cluster
         const double* y = z.col(static_cast<Eigen::Index>(k)).data();
@@ -278,7 +275,7 @@ Eigen::MatrixXd inverse_iteration(const SymTridiagonal& t, std::vector<double>& 
       double r2 = 0;
       for (std::size_t i = 0; i < n; ++i) r2 += (tw[i] - rho * x[i]) * (tw[i] - rho * x[i]);
       residual = std::sqrt(r2);
-      if (it > 0 || residual <= 64 * eps * norm) values[j] = rho;
+      if (it > 0 || residual <= kResidualTarget * norm) values[j] = rho;
     }
     if (!(residual <= 1e3 * eps * norm))
       throw NumericalError("inverse iteration: eigenvector " + std::to_string(j) + " did not converge (residual " +
@@ -298,7 +295,7 @@ void lane_group(const SymTridiagonal& t, std::vector<double>& values, const std:
   // Lanes closer than this (or with touching brackets) are made orthogonal explicitly: their
   // shifts cannot tell them apart. Lanes farther apart converge to distinct eigenvectors inside
   // disjoint brackets, orthogonal to ~ε‖T‖/gap without help.
-  const double floor = eps * norm, target = 64 * eps * norm, cluster = 1e-10 * norm;
+  const double floor = eps * norm, target = kResidualTarget * norm, cluster = kClusterGap * norm;
   const double* a = t.diagonal.data();
   const double* e = t.off_diagonal.data();
   const std::size_t L = m;
@@ -312,7 +309,7 @@ void lane_group(const SymTridiagonal& t, std::vector<double>& values, const std:
   }
   std::vector<double> mu(values), rho(values), res(m, std::numeric_limits<double>::infinity()), s2(m), xtx(m);
   const std::vector<double> start(values);
-  const double slack = 64 * eps * norm;
+  const double slack = kResidualTarget * norm;
   auto inside = [&](std::size_t j, double v) {
     if (!brackets) return std::fabs(v - start[j]) < cluster;
     return v >= (*brackets)[2 * j] - slack && v <= (*brackets)[2 * j + 1] + slack;
@@ -483,7 +480,7 @@ Eigen::MatrixXd lane_inverse_iteration(const SymTridiagonal& t, std::vector<doub
   // Lanes closer than this (or with touching brackets) are made orthogonal explicitly: their
   // shifts cannot tell them apart. Lanes farther apart converge to distinct eigenvectors inside
   // disjoint brackets, orthogonal to ~ε‖T‖/gap without help.
-  const double cluster = 1e-10 * norm;
+  const double cluster = kClusterGap * norm;
   auto touching = [&](std::size_t j, std::size_t k) {  // k < j
     return (brackets && (*brackets)[2 * j] - (*brackets)[2 * k + 1] < cluster) ||
            std::fabs(values[j] - values[k]) < cluster;

@@ -47,6 +47,11 @@ Eigen::MatrixXd inverse_iteration(const SymTridiagonal& t, std::vector<double>& 
 /// are solved in groups that never split a cluster (8 lanes fill one AVX-512 register).
 /// With `brackets` (from bisect_eigenvalues) a shift only moves, and a lane only counts as
 /// converged, inside its own bracket: a lane cannot drift to a neighbour's eigenvalue.
+/// Inverse iteration's targets in units of ‖T‖ (max_abs): a unit vector is converged at a
+/// residual ≤ kResidualTarget (64 ε), and eigenvalues (or brackets) closer than kClusterGap are
+/// one cluster. Shared by every inverse iteration on a tridiagonal (whole chain and windows).
+inline constexpr double kResidualTarget = 64 * std::numeric_limits<double>::epsilon(), kClusterGap = 1e-10;
+
 struct LaneOptions {
   std::size_t group = 8;     ///< lanes solved together (memory 2 N × group doubles); 0 = all at once
   bool keep_vectors = true;  ///< false: return an N × 0 matrix (IPR and residuals still computed)

@@ -50,4 +50,20 @@ void sturm_counts(const SymTridiagonal& t, double pivmin, const double* shift, l
   for (int j = 0; j < L; ++j) count[j] = static_cast<long>(c[j]);
 }
 
+#if defined(__GNUC__)
+/// Four shifts' pivots side by side (GCC/Clang vector extensions; the compiler left the loop over
+/// lanes above scalar for 8 and 16 lanes): the vector sweeps of sturm_bisection.cpp (counts) and
+/// localized_modes.cpp (mode anchors) guard their pivots with sturm_guard, as sturm_counts does,
+/// and compute them with its arithmetic, so their counts equal its counts.
+using SturmLanes = double __attribute__((vector_size(32)));
+using SturmMasks = long long __attribute__((vector_size(32)));  ///< lane masks: −1 true, 0 false
+
+/// dstebz's guard per lane: a pivot q with |q| ≤ pivmin becomes −pivmin (counts as negative).
+inline SturmLanes sturm_guard(SturmLanes q, SturmLanes pivmin) {
+  const SturmLanes zero{};
+  const SturmLanes mag = q < zero ? -q : q;
+  return mag <= pivmin ? -pivmin : q;
+}
+#endif
+
 }  // namespace granular::detail
