@@ -2,7 +2,11 @@
 
 import math
 
+import numpy as np
+
 from . import _core
+
+_NUMBERS = ("omega", "freq_khz", "energy", "amplitude", "max_multiplier", "residual", "max_open_fraction")
 
 
 class Breathers:
@@ -16,10 +20,15 @@ class Breathers:
     breathers tool's JSON (parameters, Newton histories, symplectic checks)."""
 
     def __init__(self, values):
+        points = values.pop("points")  # one dict per point, stacked here into arrays
         self.__dict__.update(values)
-        self.stable = self.stable.astype(bool)
-        self.multipliers = self.multipliers_real + 1j * self.multipliers_imag
-        del self.multipliers_real, self.multipliers_imag
+        n, rows = len(self.linear_khz), len(points)
+        columns = [(name, float, None) for name in _NUMBERS] + [
+            ("centre", np.int64, None), ("newton_iterations", np.int64, None), ("stable", bool, None),
+            ("profiles", float, n), ("open_fraction", float, n + 1), ("multipliers", complex, 2 * n)]
+        for name, dtype, width in columns:
+            column = np.array([p[name] for p in points], dtype=dtype)
+            setattr(self, name, column if width is None else column.reshape(rows, width))
 
     def __len__(self):
         return len(self.freq_khz)
@@ -56,6 +65,8 @@ def breathers(chain, *, mode=0, near_khz=None, start_khz=None, target_khz=None, 
         raise TypeError("chain: expected a granular.Chain")
     c.max_points = _core._size(max_points, "max_points", 1, 1000000)
     c.law = law
+    if c.law == "linear":
+        raise ValueError("law linear: every amplitude is a periodic orbit; use hertz or fpu")
     c.shooting.scheme = scheme
     c.shooting.steps_per_period = _core._size(steps_per_period, "steps_per_period", 0, 100000000)
     c.shooting.tolerance = _core._finite(tolerance, "tolerance")

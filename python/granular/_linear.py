@@ -31,6 +31,27 @@ _document(DynamicalMatrix, "The symmetric tridiagonal dynamical matrix D = M^(-1
           N="rows", diagonal="D(i, i) = (B_i + B_(i+1)) / m_i [1/s^2], N entries",
           off_diagonal="D(i, i+1) = -B_(i+1) / sqrt(m_i m_(i+1)) [1/s^2], N-1 entries",
           inverse_sqrt_mass="m_n^(-1/2) [kg^(-1/2)], N entries")
+_matrix = DynamicalMatrix.__init__
+
+
+def _matrix_init(self, diagonal, off_diagonal, inverse_sqrt_mass=None):
+    diagonal, off_diagonal = _core._vector(diagonal, "diagonal"), _core._vector(off_diagonal, "off_diagonal")
+    if not diagonal:
+        raise ValueError("diagonal: empty (a matrix needs at least one row)")
+    if len(off_diagonal) + 1 != len(diagonal):
+        raise ValueError(f"off_diagonal: has {len(off_diagonal)} entries; need N - 1 = {len(diagonal) - 1}")
+    if inverse_sqrt_mass is None:
+        inverse_sqrt_mass = [1.0] * len(diagonal)
+    else:
+        inverse_sqrt_mass = _core._vector(inverse_sqrt_mass, "inverse_sqrt_mass")
+        if len(inverse_sqrt_mass) != len(diagonal):
+            raise ValueError(f"inverse_sqrt_mass: has {len(inverse_sqrt_mass)} entries; need N = {len(diagonal)}")
+        if not all(x > 0 for x in inverse_sqrt_mass):
+            raise ValueError("inverse_sqrt_mass: entries must be > 0 [kg^(-1/2)]")
+    _matrix(self, diagonal, off_diagonal, inverse_sqrt_mass)
+
+
+DynamicalMatrix.__init__ = _matrix_init
 
 
 class Spectrum:
@@ -87,6 +108,13 @@ def _selection(near, count, window, got=True):
     return _core._nearest(float(near), min(k, 1 << 40))
 
 
+def _system(system):
+    """A granular.Chain or granular.DynamicalMatrix, TypeError otherwise."""
+    if not isinstance(system, (_core.Chain, DynamicalMatrix)):
+        raise TypeError(f"expected a granular.Chain or a granular.DynamicalMatrix, got {type(system)}")
+    return system
+
+
 def _config(method, driver, vectors, tolerance, subspace, lanes):
     """The _core.SpectrumConfig of the solver keywords."""
     c = _core.SpectrumConfig()
@@ -110,7 +138,7 @@ class SpectrumSolver(_core._SpectrumSolver):
     def solve(self, system, *, near=None, count=None, window=None):
         """The selected modes of a granular.Chain or granular.DynamicalMatrix (near, count / window as
         granular.spectrum's). Returns a granular.Spectrum."""
-        return Spectrum(self._solve(system, _selection(near, count, window)))
+        return Spectrum(self._solve(_system(system), _selection(near, count, window), False))
 
 
 def dynamical_matrix(chain):
@@ -132,7 +160,7 @@ def spectrum(system, *, near=None, count=None, window=None, method="lapack", dri
              tolerance=0.0, subspace=0, lanes=8):
     selection = _selection(near, count, window)
     config = _config(method, driver, vectors, tolerance, subspace, lanes)
-    return Spectrum(_core._spectrum(system, selection, config, method))
+    return Spectrum(_core._SpectrumSolver(config, method)._solve(_system(system), selection, True))
 
 
 spectrum.__doc__ = (

@@ -1,6 +1,10 @@
 """granular.Material, granular.Chain and the ways of making one; the contact law; bead-type correlations of one
 chain: keywords (the tools' option names and units: N, q, xi, seed, realization, F0 [N], R1 [m]), defaults and
 docstrings. The values are checked and the chains built by granular._core, with the library's rules."""
+import math
+
+import numpy as np
+
 from . import _core
 from ._core import Chain, FpuCoefficients, Material, flat_wall, paper_r1, steel
 
@@ -8,10 +12,10 @@ _MAX = 100000000  # beads of a stored chain
 
 
 def _document(cls, doc, **properties):
-    """Sets the docstrings of a class of granular._core and of its properties."""
+    """Sets the docstrings of a class of granular._core (or of a subclass) and of its properties."""
     cls.__doc__ = doc
     for name, text in properties.items():
-        getattr(cls, "__dict__")[name].__doc__ = text
+        next(c.__dict__[name] for c in cls.__mro__ if name in c.__dict__).__doc__ = text
 
 
 _document(Material, "Elastic material of beads and walls, SI units.\n\nMaterial(young, poisson, density): young: "
@@ -34,6 +38,18 @@ _document(FpuCoefficients, "Taylor coefficients of the Hertz force about the pre
           b2="(3/8) A^(4/3) F0^(-1/3) [N/m^2]", b3="-(3/48) A^2 F0^(-1) [N/m^3]",
           modulational_discriminant="3 b1 b3 - 4 b2^2 [N^2/m^4]: band-edge waves are modulationally unstable only "
           "if > 0 (always negative for Hertz)")
+
+
+
+def _repr(cls, *names):
+    """A repr of a class of granular._core naming its values, as the tools print numbers."""
+    cls.__repr__ = lambda x: f"{cls.__name__}({', '.join(f'{n}={_core._format_number(getattr(x, n))}' for n in names)})"
+
+
+_repr(Material, "young", "poisson", "density")
+_repr(FpuCoefficients, "b1", "b2", "b3")
+Chain.__repr__ = lambda c: (f"<granular.Chain {c.metadata.get('disorder', 'radii' if c.types is None else 'types')}, "
+                            f"N={c.N}, F0={_core._format_number(c.F0)} N>")
 
 _CHAIN_KEYWORDS = """
 
@@ -92,11 +108,20 @@ def diatomic(N=100, xi=0.5, F0=10.0, R1=paper_r1, material=steel, walls="flat"):
     return _core._typed_chain(recipe, 0, walls, "diatomic")
 
 
+def _types(values):
+    """Bead types 1 or 2 (a list) from any array-like of numbers, ValueError naming `types` otherwise."""
+    numbers = _core._vector(values, "types", False)
+    for i, x in enumerate(numbers):
+        if x != 1 and x != 2:
+            raise ValueError(f"types: bead {i + 1} has type {_core._format_number(x)} (must be 1 or 2)")
+    return [int(x) for x in numbers]
+
+
 def from_types(types, xi=0.5, F0=10.0, R1=paper_r1, material=steel, walls="flat"):
     """A chain of given bead types: `types` is any array-like of 1 and 2 (type 1 has radius R1 [m], type 2 xi*R1),
     as a --config file holds them. F0 [N]; walls "flat" or "sphere" (as random_chain)."""
     recipe = _core.ChainRecipe()
-    recipe.given_types = _core._types(types, "types")
+    recipe.given_types = _types(types)
     recipe.N = max(len(recipe.given_types), 2)
     recipe.xi, recipe.F0, recipe.R1, recipe.material = xi, F0, R1, material
     return _core._typed_chain(recipe, 0, walls, "")
@@ -202,10 +227,20 @@ def nonlinearity_ratio(alpha, contact, F0):
 def cyclic_correlation(types, max_distance=10):
     """Pearson coefficient rho(d), d = 0..max_distance (< N), of the bead types (type 1 -> 0, type 2 -> 1) with their
     cyclic shift by d; `types` is a granular.Chain or an array of 1 and 2. NaN when the chain has one type only."""
+    types = (types.types.tolist() if types.types is not None else []) if isinstance(types, Chain) else _types(types)
+    if not types:
+        raise ValueError("types: the chain was built from radii and has no bead types")
     return _core._cyclic_correlation(types, max_distance)
 
 
 def correlation_theory(disorder, q, distance):
     """Infinite-chain rho(d) of a disorder kind at probability q, for one distance or an array of distances [beads];
     NaN where undefined (h; A at q in {0, 1})."""
-    return _core._correlation_theory(disorder, q, distance)
+    if isinstance(distance, int):
+        return _core._correlation_theory(disorder, q, distance)
+    _core._correlation_theory(disorder, q, 0)  # q and disorder checked first
+    distance = _core._vector(distance, "distance")
+    for i, d in enumerate(distance):
+        if d < 0 or d != math.floor(d):
+            raise ValueError(f"distance: entry {i} is {_core._format_number(d)} (must be a whole number >= 0)")
+    return np.array([_core._correlation_theory(disorder, q, int(d)) for d in distance], dtype=float)

@@ -1,9 +1,75 @@
 """The dynamics as the library has it: an initial state, granular.spread() -- which owns time and the integrator
 -- and observers that measure the run. The classes are granular._core's; their docstrings and the keywords of
 spread() and the kicks are here. Beads are 0-based, as in granular.Chain's arrays."""
+import operator
+
 from . import _core
-from ._core import EnergyMap, EnergySpread, FinalState, Forces, Observer, RunPlan, Snapshot, SpectralDensity, State
+from ._core import FinalState, Observer, RunPlan, Snapshot, State
 from ._model import _document
+
+
+_state = State.__init__
+
+
+def _state_init(self, u, v):
+    u, v = _core._vector(u, "u"), _core._vector(v, "v")
+    if len(u) != len(v):
+        raise ValueError("v: needs as many entries as u")
+    _state(self, u, v)
+
+
+State.__init__ = _state_init
+
+
+def _site(site, keyword):
+    """A bead index (0-based), ValueError naming `keyword` when negative."""
+    site = operator.index(site)
+    if site < 0:
+        raise ValueError(f"{keyword} {site}: a bead index (0-based) is >= 0")
+    return site
+
+
+class EnergySpread(_core.EnergySpread):
+    def __init__(self, *, samples=100, sampling="log", site=None, fit=None, fit_step=1e-5, max_energy_error=1e-3,
+                 energy_guard="stop", wall_warning=1e-10):
+        s = _core.EnergySpreadSettings()
+        s.samples = _core._size(samples, "samples", 2)
+        s.sampling = sampling
+        if site is not None:
+            s.site = _site(site, "site")
+        if fit is not None:
+            window = _core._vector(fit, "fit")
+            if len(window) != 2:
+                raise ValueError("fit: expected (start, stop) [s]")
+            s.dense.begin, s.dense.end, s.dense.step = window[0], window[1], fit_step
+        s.max_energy_error = _core._finite(max_energy_error, "max_energy_error")
+        if energy_guard not in ("stop", "warn"):
+            raise ValueError(f"energy_guard '{energy_guard}': stop or warn")
+        s.stop_on_energy_error, s.wall_warning = energy_guard == "stop", wall_warning
+        super().__init__(s)
+
+
+class Forces(_core.Forces):
+    def __init__(self, at, *, samples=1000):
+        s = _core.ForcesSettings()
+        s.sites = [_site(site, "at") for site in at]
+        s.samples = _core._size(samples, "samples", 2)
+        super().__init__(s)
+
+
+class EnergyMap(_core.EnergyMap):
+    def __init__(self, *, samples=500, stride=1):
+        s = _core.EnergyMapSettings()
+        s.samples, s.stride = _core._size(samples, "samples", 2), _core._size(stride, "stride", 1)
+        super().__init__(s)
+
+
+class SpectralDensity(_core.SpectralDensity):
+    def __init__(self, *, samples=2000, of="displacement"):
+        s = _core.SpectralDensitySettings()
+        s.samples, s.of = _core._size(samples, "samples", 2), of
+        super().__init__(s)
+
 
 _document(State, "A phase-space state: u [m] and v [m/s] of every bead (0-based), walls excluded.")
 _document(RunPlan, "What an observer learns before the run.", total_steps="T / dt", time_step="dt [s]",
@@ -28,12 +94,12 @@ _document(FinalState, "The state at T with its site energies and bead forces.")
 
 def displacement_kick(chain, site, alpha=1e-7):
     """u_n = alpha at bead `site` (0-based), the rest at rest: the paper's displacement kick [m]."""
-    return _core._displacement_kick(chain, site, alpha)
+    return _core._displacement_kick(chain, _site(site, "site"), alpha)
 
 
 def velocity_kick(chain, site, beta=8e-3):
     """v_n = beta at bead `site` (0-based), the rest at rest: the paper's velocity kick [m/s]."""
-    return _core._velocity_kick(chain, site, beta)
+    return _core._velocity_kick(chain, _site(site, "site"), beta)
 
 
 def spread(chain, initial, observers=[], *, T=1e-2, dt=1e-6, integrator="saba2c",  # noqa: B006 (read only)

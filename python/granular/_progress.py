@@ -1,6 +1,45 @@
-"""The progress bar long calls draw with progress=True (on stderr: a terminal or a notebook)."""
+"""How long calls run: on a thread of their own, with the progress bar they draw with progress=True (on stderr: a
+terminal or a notebook) and a clean stop on Ctrl-C."""
 import sys
+import threading
 import time
+
+
+def run_long(work, done, cancel, label, total, progress):
+    """Runs work() (a _core call that releases the GIL) on a thread of its own while this (calling) thread waits in
+    50 ms steps, so Ctrl-C reaches it, and draws a ProgressBar of done() out of `total` when `progress`. On
+    KeyboardInterrupt it calls cancel(), waits for work() to stop (the library finishes and checkpoints the
+    realizations in flight) and raises the KeyboardInterrupt; an exception of work() is raised here."""
+    bar = ProgressBar(total, label) if progress else None
+    failure = []
+
+    def target():
+        try:
+            work()
+        except BaseException as error:  # noqa: B036 (raised again on the calling thread)
+            failure.append(error)
+
+    worker = threading.Thread(target=target, name=f"granular {label}", daemon=True)
+    worker.start()
+    try:
+        while worker.is_alive():
+            worker.join(0.05)
+            if bar is not None:
+                bar.update(done())
+    except BaseException:
+        cancel()  # whatever happened here, the worker is stopped and joined before its C++ state goes
+        worker.join()
+        if bar is not None:
+            try:
+                bar.close(False)
+            except Exception:  # noqa: S110 (the first exception is the one to report)
+                pass
+        raise
+    if bar is not None:
+        bar.update(done())
+        bar.close(not failure)
+    if failure:
+        raise failure[0]
 
 
 class ProgressBar:

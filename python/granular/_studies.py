@@ -143,7 +143,15 @@ class Butterfly:
     box_counting with the fitted box sizes)."""
 
     def __init__(self, values):
+        columns = values.pop("columns")  # one dict per ratio: its modes become rows
         self.__dict__.update(values)
+        modes = [len(c["freq_khz"]) for c in columns]
+        self.ratio = np.repeat([c["ratio"] for c in columns], modes).astype(float)
+        self.mode = np.concatenate([np.arange(1, k + 1, dtype=np.uint64) for k in modes] + [np.zeros(0, np.uint64)])
+        for name in ("freq_khz", "ipr"):
+            setattr(self, name, np.concatenate([c[name] for c in columns] + [np.zeros(0)]))
+        for name in ("dimension", "dimension_error"):
+            setattr(self, name, np.array([c[name] for c in columns], dtype=float))
 
     def __repr__(self):
         return f"<granular.Butterfly {len(self.ratios)} ratios, {len(self.freq_khz)} modes>"

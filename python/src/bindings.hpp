@@ -40,6 +40,15 @@ py::class_<C> config_class(py::module_& m, const char* name, const char* names, 
   return c;
 }
 
+/// A getter and a setter of an enum member spelled as the tools' word (to_string / `parse`).
+template <class C, class T>
+auto word_getter(T C::*member) {
+  return [member](const C& c) { return std::string(to_string(c.*member)); };
+}
+template <class C, class T, class Parse>
+auto word_setter(T C::*member, Parse parse) {
+  return [member, parse](C& c, const std::string& word) { c.*member = parse(word); };
+}
 // --- the binding sources, one per library area -------------------------------------------
 void bind_errors(py::module_& m);
 void bind_model(py::module_& m);
@@ -71,7 +80,7 @@ std::string keyword_of(const std::string& parameter);
 [[noreturn]] void bad_value(const std::string& keyword, const std::string& problem);
 
 /// Each warning of the library as a Python RuntimeWarning (the tools print them on stderr);
-/// returns them as a list.
+/// returns them as a list. Empty strings are no warning.
 py::list warn(const std::vector<std::string>& notes);
 /// A size-like integer keyword: ValueError naming it unless lo ≤ value (≤ hi).
 std::size_t checked_size(long long value, const char* keyword, long long lo = 0, long long hi = 100000000000000000LL);
@@ -83,8 +92,6 @@ double finite(double value, const char* keyword);
 /// converted; a copy only when needed). ValueError naming `keyword` on the wrong shape, a
 /// non-numeric input or (when `require_finite`) NaN/infinity.
 std::vector<double> double_vector(const py::handle& values, const char* keyword, bool require_finite = true);
-/// Bead types 1 or 2 from any array-like of integers (floats must be whole numbers).
-Configuration types_vector(const py::handle& values, const char* keyword);
 
 /// A NumPy array that takes over `values` (no copy; freed with the array).
 template <class T>
@@ -138,6 +145,17 @@ py::dict fields(const char* names, T&&... values) {
   return out;
 }
 
+/// Read-only attributes of a bound class named by the space-separated `names`, each a NumPy copy
+/// of a vector member (in order).
+template <class Class, class T, class... M>
+Class& arrays(Class&& c, const char* names, M T::*... members) {
+  std::istringstream words(names);
+  std::string field;
+  ((words >> field, c.def_property_readonly(field.c_str(), [members](const T& x) { return to_numpy(x.*members); })),
+   ...);
+  return c;
+}
+
 // --- metadata ----------------------------------------------------------------------------------
 py::object to_python(const nlohmann::json& value);
 /// {"function": "granular.<name>", "version": …}: the head of every result's metadata.
@@ -156,11 +174,10 @@ struct LongRun {
   std::function<bool()> cancelled;
   ProgressMeter* meter = nullptr;
 };
-/// Runs `work` on a thread of its own with the GIL released while this (calling) thread polls
-/// every 50 ms for Ctrl-C (PyErr_CheckSignals) and draws a progress bar (granular._progress) when
-/// `progress`. On KeyboardInterrupt it sets the cancellation flag, waits for `work` to stop (the
-/// library finishes and checkpoints the realizations in flight) and raises KeyboardInterrupt.
-/// `work` must not touch Python objects. Library exceptions propagate.
+/// Runs `work` with the GIL released on a thread of its own through granular._progress.run_long,
+/// which polls for Ctrl-C, draws the progress bar when `progress`, and on KeyboardInterrupt sets
+/// the cancellation flag and waits for `work` to stop. `work` must not touch Python objects.
+/// Library exceptions propagate (as Python exceptions).
 void run_long(const std::string& label, std::size_t total, bool progress,
               const std::function<void(const LongRun&)>& work);
 /// How a long call runs, as the keyword functions in granular/*.py fill it (granular._core.RunOptions).

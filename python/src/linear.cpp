@@ -42,16 +42,10 @@ struct System {
   const DynamicalMatrix* matrix = nullptr;
   const PyChain* chain = nullptr;
 };
-System system_of(const py::object& system) {
+System system_of(const py::object& system) {  // a Chain or a DynamicalMatrix (checked in granular/_linear.py)
   System s;
-  if (py::isinstance<PyChain>(system)) {
-    s.chain = &system.cast<const PyChain&>();
-  } else if (py::isinstance<DynamicalMatrix>(system)) {
-    s.matrix = &system.cast<const DynamicalMatrix&>();
-  } else {
-    throw py::type_error("expected a granular.Chain or a granular.DynamicalMatrix, got " +
-                         py::str(py::type::of(system)).cast<std::string>());
-  }
+  if (py::isinstance<PyChain>(system)) s.chain = &system.cast<const PyChain&>();
+  else s.matrix = &system.cast<const DynamicalMatrix&>();
   return s;
 }
 
@@ -116,28 +110,14 @@ struct PySolver {
 }  // namespace
 
 void bind_linear(py::module_& m) {
-  py::class_<DynamicalMatrix>(m, "DynamicalMatrix")
-      .def(py::init([](const py::object& diagonal, const py::object& off_diagonal, const py::object& inverse_sqrt_mass) {
-             DynamicalMatrix d;
-             d.diagonal = double_vector(diagonal, "diagonal");
-             d.off_diagonal = double_vector(off_diagonal, "off_diagonal");
-             if (d.diagonal.empty()) bad_value("diagonal", ": empty (a matrix needs at least one row)");
-             if (d.off_diagonal.size() + 1 != d.diagonal.size())
-               bad_value("off_diagonal", ": has " + std::to_string(d.off_diagonal.size()) +
-                                             " entries; need N - 1 = " + std::to_string(d.diagonal.size() - 1));
-             if (inverse_sqrt_mass.is_none()) {
-               d.inverse_sqrt_mass.assign(d.diagonal.size(), 1.0);
-             } else {
-               d.inverse_sqrt_mass = double_vector(inverse_sqrt_mass, "inverse_sqrt_mass");
-               if (d.inverse_sqrt_mass.size() != d.diagonal.size())
-                 bad_value("inverse_sqrt_mass", ": has " + std::to_string(d.inverse_sqrt_mass.size()) +
-                                                    " entries; need N = " + std::to_string(d.diagonal.size()));
-               for (double x : d.inverse_sqrt_mass)
-                 if (!(x > 0)) bad_value("inverse_sqrt_mass", ": entries must be > 0 [kg^(-1/2)]");
-             }
-             return d;
-           }),
-           py::arg("diagonal"), py::arg("off_diagonal"), py::arg("inverse_sqrt_mass") = py::none())
+  py::class_<DynamicalMatrix>(m, "DynamicalMatrix")  // checked in granular/_linear.py
+      .def(py::init(
+          [](std::vector<double> diagonal, std::vector<double> off_diagonal, std::vector<double> inverse_sqrt_mass) {
+            DynamicalMatrix d;
+            d.diagonal = std::move(diagonal), d.off_diagonal = std::move(off_diagonal);
+            d.inverse_sqrt_mass = std::move(inverse_sqrt_mass);
+            return d;
+          }))
       .def_property_readonly("N", &DynamicalMatrix::size)
       .def("__len__", &DynamicalMatrix::size)
       .def_property_readonly("diagonal", viewer<DynamicalMatrix>(std::mem_fn(&DynamicalMatrix::diagonal)))
@@ -158,33 +138,11 @@ void bind_linear(py::module_& m) {
   using C = SpectrumConfig;
   config_class(m, "SpectrumConfig", "vectors tolerance subspace lanes", &C::vectors, &C::tolerance, &C::subspace,
                &C::lanes)
-      .def_property(
-          "method", [](const C& c) { return std::string(to_string(c.method)); },
-          [](C& c, const std::string& name) { c.method = parse_spectrum_method(name); })
-      .def_property(
-          "driver", [](const C& c) { return std::string(to_string(c.driver)); },
-          [](C& c, const std::string& name) { c.driver = parse_lapack_driver(name); });
+      .def_property("method", word_getter(&C::method), word_setter(&C::method, parse_spectrum_method))
+      .def_property("driver", word_getter(&C::driver), word_setter(&C::driver, parse_lapack_driver));
 
-  m.def("_spectrum", [](const py::object& system, const ModeSelection& selection, const SpectrumConfig& config,
-                        const std::string& method) {
-    const SolverRequest q{selection, config, method};
-    validate(q.config, q.selection);
-    System s = system_of(system);
-    if (q.selection.kind != ModeSelection::Kind::all) {  // a unit slip (Hz as kHz) deserves a word
-      const bool by_near = q.selection.kind == ModeSelection::Kind::nearest;
-      const double top = s.matrix ? frequency_khz(std::max(0.0, gershgorin_bounds(*s.matrix).second))
-                                  : highest_frequency_bound_khz(s.chain->recipe);
-      if (const std::string w =
-              frequency_warning(by_near ? "near" : "window", by_near ? q.selection.near_khz : q.selection.lo_khz, top);
-          !w.empty())
-        warn({w});
-    }
-    SpectrumSolver solver(q.config);
-    Spectrum r = solve(solver, s, q.selection);
-    const nlohmann::json meta = spectrum_metadata(r, s, q);
-    return wrap(std::move(r), *s.matrix, meta);
-  });
-
+  // granular.spectrum and granular.SpectrumSolver: one solve; `check_units` warns of a frequency
+  // keyword beyond the chain's highest frequency (Hz given as kHz).
   py::class_<PySolver>(m, "_SpectrumSolver")
       .def(py::init([](const SpectrumConfig& config, const std::string& method) {
         auto p = std::make_unique<PySolver>();
@@ -192,10 +150,17 @@ void bind_linear(py::module_& m) {
         p->method = method;
         return p;
       }))
-      .def("_solve", [](PySolver& p, const py::object& system, const ModeSelection& selection) {
+      .def("_solve", [](PySolver& p, const py::object& system, const ModeSelection& selection, bool check_units) {
         const SolverRequest q{selection, p.solver.config(), p.method};
         validate(q.config, q.selection);
         System s = system_of(system);
+        if (check_units && q.selection.kind != ModeSelection::Kind::all) {
+          const bool by_near = q.selection.kind == ModeSelection::Kind::nearest;
+          const double top = s.matrix ? frequency_khz(std::max(0.0, gershgorin_bounds(*s.matrix).second))
+                                      : highest_frequency_bound_khz(s.chain->recipe);
+          warn({frequency_warning(by_near ? "near" : "window", by_near ? q.selection.near_khz : q.selection.lo_khz,
+                                  top)});
+        }
         Spectrum r = solve(p.solver, s, q.selection, &p.busy);
         const nlohmann::json meta = spectrum_metadata(r, s, q);
         return wrap(std::move(r), *s.matrix, meta);

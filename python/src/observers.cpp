@@ -52,32 +52,22 @@ class PyObserver : public Observer {
   }
 };
 
-std::size_t site_of(const py::object& site, const char* keyword) {
-  const long long s = site.cast<long long>();
-  if (s < 0) bad_value(keyword, " " + std::to_string(s) + ": a bead index (0-based) is >= 0");
-  return static_cast<std::size_t>(s);
-}
-
 }  // namespace
 
 void bind_observers(py::module_& m) {
-  py::class_<State>(m, "State")
-      .def(py::init([](const py::object& u, const py::object& v) {
-             State s;
-             s.u = double_vector(u, "u");
-             s.v = double_vector(v, "v");
-             if (s.u.size() != s.v.size()) bad_value("v", ": needs as many entries as u");
-             return s;
-           }),
-           py::arg("u"), py::arg("v"))
+  py::class_<State>(m, "State")  // checked in granular/_observers.py
+      .def(py::init([](std::vector<double> u, std::vector<double> v) {
+        State s;
+        s.u = std::move(u), s.v = std::move(v);
+        return s;
+      }))
       .def_property_readonly("u", [](const State& s) { return to_numpy(s.u); })
       .def_property_readonly("v", [](const State& s) { return to_numpy(s.v); });
-  m.def("_displacement_kick", [](const PyChain& chain, const py::object& site, double alpha) {
-    return displacement_kick(chain.chain, site_of(site, "site"), alpha);
-  });
-  m.def("_velocity_kick", [](const PyChain& chain, const py::object& site, double beta) {
-    return velocity_kick(chain.chain, site_of(site, "site"), beta);
-  });
+  // Kicks and observers take their settings checked in granular/_observers.py (sites as 0-based indices).
+  m.def("_displacement_kick",
+        [](const PyChain& c, std::size_t site, double alpha) { return displacement_kick(c.chain, site, alpha); });
+  m.def("_velocity_kick",
+        [](const PyChain& c, std::size_t site, double beta) { return velocity_kick(c.chain, site, beta); });
 
   py::class_<RunPlan>(m, "RunPlan")
       .def_readonly("beads", &RunPlan::beads)
@@ -105,80 +95,48 @@ void bind_observers(py::module_& m) {
       .def(
           "finish", [](Observer&, const SnapshotCopy&) {}, py::arg("snapshot"));
 
-  py::class_<EnergySpreadObserver, Observer>(m, "EnergySpread")
-      .def(py::init([](long long samples, const std::string& sampling, const py::object& site, const py::object& fit,
-                       double fit_step, double max_energy_error, const std::string& energy_guard, double wall_warning) {
-             EnergySpreadObserver::Settings s;
-             s.samples = checked_size(samples, "samples", 2);
-             s.sampling = parse_sampling(sampling);
-             if (!site.is_none()) s.site = site_of(site, "site");
-             if (!fit.is_none()) {
-               const std::vector<double> window = double_vector(fit, "fit");
-               if (window.size() != 2) bad_value("fit", ": expected (start, stop) [s]");
-               s.dense = {window[0], window[1], fit_step};
-             }
-             s.max_energy_error = finite(max_energy_error, "max_energy_error");
-             if (energy_guard != "stop" && energy_guard != "warn")
-               bad_value("energy_guard", " '" + energy_guard + "': stop or warn");
-             s.stop_on_energy_error = energy_guard == "stop";
-             s.wall_warning = wall_warning;
-             return EnergySpreadObserver(s);
-           }),
-           py::kw_only(), py::arg("samples") = 100, py::arg("sampling") = "log", py::arg("site") = py::none(),
-           py::arg("fit") = py::none(), py::arg("fit_step") = 1e-5, py::arg("max_energy_error") = 1e-3,
-           py::arg("energy_guard") = "stop", py::arg("wall_warning") = 1e-10)
-      .def_property_readonly("t", [](const EnergySpreadObserver& o) { return to_numpy(o.t); })
-      .def_property_readonly("m2", [](const EnergySpreadObserver& o) { return to_numpy(o.m2); })
-      .def_property_readonly("m2_centroid", [](const EnergySpreadObserver& o) { return to_numpy(o.m2_centroid); })
-      .def_property_readonly("ipr", [](const EnergySpreadObserver& o) { return to_numpy(o.ipr); })
-      .def_property_readonly("energy_error", [](const EnergySpreadObserver& o) { return to_numpy(o.energy_error); })
-      .def_readonly("max_energy_error", &EnergySpreadObserver::max_energy_error)
-      .def_readonly("wall_energy", &EnergySpreadObserver::wall_energy)
-      .def_property_readonly("reached_walls", &EnergySpreadObserver::reached_walls)
-      .def_property_readonly("energy_guard_time", [](const EnergySpreadObserver& o) {
+  config_class(m, "DenseGrid", "begin end step", &DenseGrid::begin, &DenseGrid::end, &DenseGrid::step);
+  using E = EnergySpreadObserver;
+  config_class(m, "EnergySpreadSettings", "samples dense site max_energy_error stop_on_energy_error wall_warning",
+               &E::Settings::samples, &E::Settings::dense, &E::Settings::site, &E::Settings::max_energy_error,
+               &E::Settings::stop_on_energy_error, &E::Settings::wall_warning)
+      .def_property("sampling", word_getter(&E::Settings::sampling),
+                    word_setter(&E::Settings::sampling, parse_sampling));
+  arrays(py::class_<E, Observer>(m, "EnergySpread").def(py::init<const E::Settings&>()),
+         "t m2 m2_centroid ipr energy_error", &E::t, &E::m2, &E::m2_centroid, &E::ipr, &E::energy_error)
+      .def_readonly("max_energy_error", &E::max_energy_error)
+      .def_readonly("wall_energy", &E::wall_energy)
+      .def_property_readonly("reached_walls", &E::reached_walls)
+      .def_property_readonly("energy_guard_time", [](const E& o) {
         return o.energy_guard_time < 0 ? py::object(py::none()) : py::float_(o.energy_guard_time);
       });
 
-  py::class_<ForceObserver, Observer>(m, "Forces")
-      .def(py::init([](const py::object& at, long long samples) {
-             ForceObserver::Settings s;
-             for (const py::handle& site : at)
-               s.sites.push_back(site_of(py::reinterpret_borrow<py::object>(site), "at"));
-             s.samples = checked_size(samples, "samples", 2);
-             return ForceObserver(s);
-           }),
-           py::arg("at"), py::kw_only(), py::arg("samples") = 1000)
-      .def_property_readonly("t", [](const ForceObserver& o) { return to_numpy(o.t); })
+  config_class(m, "ForcesSettings", "sites samples", &ForceObserver::Settings::sites, &ForceObserver::Settings::samples);
+  arrays(py::class_<ForceObserver, Observer>(m, "Forces").def(py::init<ForceObserver::Settings>()), "t",
+         &ForceObserver::t)
       .def_property_readonly("force", [](const ForceObserver& o) {
         std::vector<double> values;
         for (const auto& series : o.forces) values.insert(values.end(), series.begin(), series.end());
         return to_numpy_2d(std::move(values), o.forces.size(), o.t.size());
       });
 
-  py::class_<EnergyMapObserver, Observer>(m, "EnergyMap")
-      .def(py::init([](long long samples, long long stride) {
-             return EnergyMapObserver({checked_size(samples, "samples", 2), checked_size(stride, "stride", 1)});
-           }),
-           py::kw_only(), py::arg("samples") = 500, py::arg("stride") = 1)
-      .def_property_readonly("t", [](const EnergyMapObserver& o) { return to_numpy(o.t); })
-      .def_property_readonly("energy", [](const EnergyMapObserver& o) {
+  using M = EnergyMapObserver;
+  config_class(m, "EnergyMapSettings", "samples stride", &M::Settings::samples, &M::Settings::stride);
+  arrays(py::class_<M, Observer>(m, "EnergyMap").def(py::init<const M::Settings&>()), "t", &M::t)
+      .def_property_readonly("energy", [](const M& o) {
         return to_numpy_2d(std::vector<double>(o.energy), o.t.size(), o.columns);
       });
 
-  py::class_<SpectralDensityObserver, Observer>(m, "SpectralDensity")
-      .def(py::init([](long long samples, const std::string& of) {
-             return SpectralDensityObserver({checked_size(samples, "samples", 2), parse_spectrum_source(of)});
-           }),
-           py::kw_only(), py::arg("samples") = 2000, py::arg("of") = "displacement")
-      .def_property_readonly("freq_khz", [](const SpectralDensityObserver& o) { return to_numpy(o.freq_khz); })
-      .def_property_readonly("g", [](const SpectralDensityObserver& o) { return to_numpy(o.density); });
+  using D = SpectralDensityObserver;
+  config_class(m, "SpectralDensitySettings", "samples", &D::Settings::samples)
+      .def_property("of", word_getter(&D::Settings::source), word_setter(&D::Settings::source, parse_spectrum_source));
+  arrays(py::class_<D, Observer>(m, "SpectralDensity").def(py::init<const D::Settings&>()), "freq_khz g", &D::freq_khz,
+         &D::density);
 
-  py::class_<FinalStateObserver, Observer>(m, "FinalState")
-      .def(py::init<>())
+  arrays(py::class_<FinalStateObserver, Observer>(m, "FinalState").def(py::init<>()), "energy force",
+         &FinalStateObserver::energy, &FinalStateObserver::force)
       .def_property_readonly("u", [](const FinalStateObserver& o) { return to_numpy(o.state.u); })
-      .def_property_readonly("v", [](const FinalStateObserver& o) { return to_numpy(o.state.v); })
-      .def_property_readonly("energy", [](const FinalStateObserver& o) { return to_numpy(o.energy); })
-      .def_property_readonly("force", [](const FinalStateObserver& o) { return to_numpy(o.force); });
+      .def_property_readonly("v", [](const FinalStateObserver& o) { return to_numpy(o.state.v); });
 
   m.def("_spread", [](const PyChain& chain, const State& initial, const py::list& observers, double T, double dt,
                       const std::string& integrator, const std::string& force_law, bool active_window,

@@ -108,16 +108,11 @@ py::dict butterfly(const ButterflyConfig& c, const PyRun& options) {
   nlohmann::json meta = metadata_head("butterfly");
   meta.update(describe_butterfly(c, columns));
   meta["threads"] = resolve_threads(options.thread_request());
-  std::vector<double> ratio, freq, ipr, dimension, error;
-  std::vector<std::size_t> mode;
-  for (const ButterflyColumn& col : columns) {
-    for (std::size_t k = 0; k < col.freq_khz.size(); ++k)
-      ratio.push_back(col.ratio), mode.push_back(k + 1), freq.push_back(col.freq_khz[k]), ipr.push_back(col.ipr[k]);
-    dimension.push_back(col.dimension.dimension);
-    error.push_back(col.dimension.error);
-  }
-  py::dict out = fields("ratio mode freq_khz ipr ratios dimension dimension_error", std::move(ratio), std::move(mode),
-                        std::move(freq), std::move(ipr), c.ratios, std::move(dimension), std::move(error));
+  py::list out_columns;  // one dict per ratio, flattened into the tool's rows by granular/_studies.py
+  for (ButterflyColumn& col : columns)
+    out_columns.append(fields("ratio freq_khz ipr dimension dimension_error", col.ratio, std::move(col.freq_khz),
+                              std::move(col.ipr), col.dimension.dimension, col.dimension.error));
+  py::dict out = fields("ratios columns", c.ratios, out_columns);
   out["metadata"] = to_python(meta);
   return out;
 }

@@ -1,15 +1,11 @@
 // The shared helpers of bindings.hpp: conversions at the boundary and the long-run driver.
 #include <atomic>
-#include <chrono>
 #include <cmath>
-#include <condition_variable>
 #include <exception>
 #include <map>
 #include <memory>
-#include <mutex>
 #include <nlohmann/json.hpp>
 #include <regex>
-#include <thread>
 
 #include "bindings.hpp"
 #include "granular/blas_library.hpp"
@@ -127,18 +123,6 @@ std::vector<double> double_vector(const py::handle& values, const char* keyword,
   return out;
 }
 
-Configuration types_vector(const py::handle& values, const char* keyword) {
-  const std::vector<double> numbers = double_vector(values, keyword, false);
-  Configuration types(numbers.size());
-  for (std::size_t i = 0; i < numbers.size(); ++i) {
-    if (numbers[i] != 1 && numbers[i] != 2)
-      bad_value(keyword,
-                ": bead " + std::to_string(i + 1) + " has type " + format_number(numbers[i]) + " (must be 1 or 2)");
-    types[i] = static_cast<std::uint8_t>(numbers[i]);
-  }
-  return types;
-}
-
 py::array_t<double> to_numpy_2d(std::vector<double>&& values, std::size_t rows, std::size_t cols) {
   return to_numpy(std::move(values)).reshape({rows, cols});
 }
@@ -151,26 +135,9 @@ py::array_t<double> view(const std::vector<double>& data, const py::handle& owne
 
 // --- metadata ------------------------------------------------------------------------------------
 
-py::object to_python(const nlohmann::json& v) {
-  switch (v.type()) {
-    case nlohmann::json::value_t::null: return py::none();
-    case nlohmann::json::value_t::boolean: return py::bool_(v.get<bool>());
-    case nlohmann::json::value_t::number_integer: return py::int_(v.get<long long>());
-    case nlohmann::json::value_t::number_unsigned: return py::int_(v.get<unsigned long long>());
-    case nlohmann::json::value_t::number_float: return py::float_(v.get<double>());
-    case nlohmann::json::value_t::string: return py::str(v.get<std::string>());
-    case nlohmann::json::value_t::array: {
-      py::list list;
-      for (const auto& item : v) list.append(to_python(item));
-      return list;
-    }
-    case nlohmann::json::value_t::object: {
-      py::dict dict;
-      for (const auto& [key, item] : v.items()) dict[py::str(key)] = to_python(item);
-      return dict;
-    }
-    default: return py::none();
-  }
+py::object to_python(const nlohmann::json& value) {
+  // The library's JSON text read by Python's json module: the same dict the tools' files hold.
+  return py::module_::import("json").attr("loads")(value.dump());
 }
 
 nlohmann::json metadata_head(const std::string& function) {
@@ -204,69 +171,22 @@ std::vector<double> number_list(const py::handle& values, const char* keyword, d
 
 void run_long(const std::string& label, std::size_t total, bool progress,
               const std::function<void(const LongRun&)>& work) {
-  ProgressMeter meter(total, label, 0);  // silent: the bar is drawn from Python
+  auto meter = std::make_shared<ProgressMeter>(total, label, 0);  // silent: the bar is drawn from Python
   auto cancel = std::make_shared<std::atomic<bool>>(false);
-  LongRun control{[cancel] { return cancel->load(std::memory_order_relaxed); }, &meter};
-
-  // Under mpirun the ranks talk MPI from the thread that started it: stay on this thread.
-  if (MpiContext::instance().size() > 1) {
+  const LongRun control{[cancel] { return cancel->load(std::memory_order_relaxed); }, meter.get()};
+  const py::cpp_function call([&] {
     py::gil_scoped_release release;
     work(control);
+  });
+  // Under mpirun the ranks talk MPI from the thread that started it: stay on this thread.
+  if (MpiContext::instance().size() > 1) {
+    call();
     return;
   }
-  py::object bar = progress ? py::module_::import("granular._progress").attr("ProgressBar")(total, label) : py::none();
-
-  std::mutex mutex;
-  std::condition_variable finished_cv;
-  bool finished = false;
-  std::exception_ptr failure;
-  std::thread worker([&] {
-    try {
-      work(control);
-    } catch (...) {
-      failure = std::current_exception();
-    }
-    std::lock_guard lock(mutex);
-    finished = true;
-    finished_cv.notify_all();
-  });
-  // Whatever happens on this thread (KeyboardInterrupt, an error drawing the bar), the worker is
-  // told to stop and joined before anything it uses goes out of scope.
-  auto stop_and_join = [&] {
-    cancel->store(true);
-    py::gil_scoped_release release;
-    if (worker.joinable()) worker.join();
-  };
-  try {
-    while (true) {
-      {
-        py::gil_scoped_release release;
-        std::unique_lock lock(mutex);
-        finished_cv.wait_for(lock, std::chrono::milliseconds(50), [&] { return finished; });
-        if (finished) break;
-      }
-      if (!bar.is_none()) bar.attr("update")(meter.done());
-      if (PyErr_CheckSignals() != 0) throw py::error_already_set();
-    }
-  } catch (...) {
-    stop_and_join();
-    if (!bar.is_none()) {
-      try {
-        bar.attr("close")(false);
-      } catch (const py::error_already_set&) {  // the first exception is the one to report
-      }
-    }
-    throw;
-  }
-  {
-    py::gil_scoped_release release;
-    worker.join();
-  }
-  if (!bar.is_none()) {
-    bar.attr("update")(meter.done());
-    bar.attr("close")(failure == nullptr);
-  }
-  if (failure) std::rethrow_exception(failure);
+  // granular._progress.run_long joins the worker before it returns or raises: `work` outlives it.
+  py::module_::import("granular._progress")
+      .attr("run_long")(call, py::cpp_function([meter] { return meter->done(); }),
+                        py::cpp_function([cancel] { cancel->store(true); }), label, total, progress);
 }
 
 RunOptions PyRun::run(const LongRun& control) const {
@@ -284,6 +204,7 @@ RunOptions PyRun::run(const LongRun& control) const {
 py::list warn(const std::vector<std::string>& notes) {
   py::list out;
   for (const auto& note : notes) {
+    if (note.empty()) continue;  // no warning
     out.append(note);
     if (PyErr_WarnEx(PyExc_RuntimeWarning, note.c_str(), 2) != 0) throw py::error_already_set();
   }
