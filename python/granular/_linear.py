@@ -72,6 +72,7 @@ class Spectrum:
         self._inverse_sqrt_mass = values.pop("inverse_sqrt_mass")
         self.__dict__.update(values)
         self.clustered = self.clustered.astype(bool)
+        self.mode.flags.writeable = False
 
     def displacements(self):
         """N x K displacement modes v = w * m^(-1/2) [kg^(-1/2)] (column j: mode j), or None without vectors"""

@@ -47,6 +47,15 @@ def _repr(cls, *names):
 
 
 _repr(Material, "young", "poisson", "density")
+_material = Material.__init__
+
+
+def _material_init(self, young=steel.young, poisson=steel.poisson, density=steel.density):
+    _material(self)
+    self.young, self.poisson, self.density = young, poisson, density
+
+
+Material.__init__ = _material_init
 _repr(FpuCoefficients, "b1", "b2", "b3")
 Chain.__repr__ = lambda c: (f"<granular.Chain {c.metadata.get('disorder', 'radii' if c.types is None else 'types')}, "
                             f"N={c.N}, F0={_core._format_number(c.F0)} N>")

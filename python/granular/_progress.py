@@ -9,7 +9,9 @@ def run_long(work, done, cancel, label, total, progress):
     """Runs work() (a _core call that releases the GIL) on a thread of its own while this (calling) thread waits in
     50 ms steps, so Ctrl-C reaches it, and draws a ProgressBar of done() out of `total` when `progress`. On
     KeyboardInterrupt it calls cancel(), waits for work() to stop (the library finishes and checkpoints the
-    realizations in flight) and raises the KeyboardInterrupt; an exception of work() is raised here."""
+    realizations in flight) and raises the KeyboardInterrupt; an exception of work() is raised here. (The C++
+    caller waits for work() too, whatever happens here: Python 3.11's Thread.join can return early when
+    interrupted.)"""
     bar = ProgressBar(total, label) if progress else None
     failure = []
 

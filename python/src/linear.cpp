@@ -22,12 +22,6 @@
 namespace granular::python {
 namespace {
 
-/// A spectrum's arrays, owned by the NumPy views of granular.Spectrum (granular/_linear.py).
-struct Modes {
-  Spectrum s;
-  std::vector<long long> mode;  ///< mode numbers as signed integers (NumPy arithmetic stays integer)
-};
-
 /// ARPACK keeps state in Fortran SAVE variables and SLEPc talks MPI: one call at a time per process.
 std::mutex& serial_solvers() {
   static std::mutex m;
@@ -57,29 +51,26 @@ nlohmann::json spectrum_metadata(const Spectrum& r, const System& s, const Solve
   return meta;
 }
 
-/// The arrays of `r` as read-only views (no copies), the masses for displacements, and the metadata.
+/// The arrays of `r` as read-only views of it (no copies; mode numbers as signed integers), the
+/// masses for displacements, and the metadata.
 py::dict wrap(Spectrum&& r, const DynamicalMatrix& d, const nlohmann::json& metadata) {
-  auto* owned = new Modes{std::move(r), {}};
-  const Spectrum& s = owned->s;
-  owned->mode.assign(s.mode.begin(), s.mode.end());
-  py::capsule owner(owned, [](void* p) { delete static_cast<Modes*>(p); });
-  py::dict out;
-  out["mode"] = py::array_t<long long>({s.mode.size()}, {sizeof(long long)}, owned->mode.data(), owner);
-  out["omega2"] = view(s.omega2, owner), out["freq_khz"] = view(s.freq_khz, owner);
-  out["ipr"] = view(s.ipr, owner), out["residual"] = view(s.residual, owner);
-  out["clustered"] = to_numpy(std::vector<std::uint8_t>(s.clustered.begin(), s.clustered.end()));
+  const py::object owner = py::cast(std::move(r));  // a granular._core._Modes, kept alive by the views
+  const Spectrum& s = owner.cast<const Spectrum&>();
+  const SpectrumInfo& i = s.info;
+  py::dict out = fields("mode clustered inverse_sqrt_mass N metadata", signed_of(s.mode),
+                        std::vector<std::uint8_t>(s.clustered.begin(), s.clustered.end()), d.inverse_sqrt_mass, s.beads,
+                        to_python(metadata));
+  out["info"] = fields("method fallbacks restarts candidates max_residual clusters", i.method, i.fallbacks, i.restarts,
+                       i.candidates, i.max_residual, i.clusters);
+  for (const auto& [name, values] :
+       {std::pair{"omega2", &s.omega2}, {"freq_khz", &s.freq_khz}, {"ipr", &s.ipr}, {"residual", &s.residual}})
+    out[name] = view(*values, owner);
   out["vectors"] = py::none();
   if (!s.vectors.empty()) {
     py::array_t<double> a({s.beads, s.size()}, {sizeof(double), s.beads * sizeof(double)}, s.vectors.data(), owner);
     py::detail::array_proxy(a.ptr())->flags &= ~py::detail::npy_api::NPY_ARRAY_WRITEABLE_;
     out["vectors"] = a;
   }
-  out["inverse_sqrt_mass"] = to_numpy(d.inverse_sqrt_mass);
-  out["N"] = s.beads;
-  const SpectrumInfo& i = s.info;
-  out["info"] = fields("method fallbacks restarts candidates max_residual clusters", i.method, i.fallbacks, i.restarts,
-                       i.candidates, i.max_residual, i.clusters);
-  out["metadata"] = to_python(metadata);
   return out;
 }
 
@@ -110,6 +101,7 @@ struct PySolver {
 }  // namespace
 
 void bind_linear(py::module_& m) {
+  py::class_<Spectrum>(m, "_Modes");                 // what the arrays of a granular.Spectrum view
   py::class_<DynamicalMatrix>(m, "DynamicalMatrix")  // checked in granular/_linear.py
       .def(py::init(
           [](std::vector<double> diagonal, std::vector<double> off_diagonal, std::vector<double> inverse_sqrt_mass) {

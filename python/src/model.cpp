@@ -31,14 +31,8 @@ void bind_model(py::module_& m) {
   m.attr("paper_r1") = paper_r1;
   m.attr("flat_wall") = flat_wall;
 
-  py::class_<Material>(m, "Material")
-      .def(py::init([](double young, double poisson, double density) {
-             return Material{young, poisson, density};
-           }),
-           py::arg("young") = steel.young, py::arg("poisson") = steel.poisson, py::arg("density") = steel.density)
-      .def_readwrite("young", &Material::young)
-      .def_readwrite("poisson", &Material::poisson)
-      .def_readwrite("density", &Material::density);  // __repr__s in granular/_model.py
+  // granular.Material(young, poisson, density): keywords (default: the paper's steel) in granular/_model.py
+  config_class(m, "Material", "young poisson density", &Material::young, &Material::poisson, &Material::density);
   m.attr("steel") = steel;
 
   using Q = Quasiperiodic;  // granular.quasiperiodic's keywords (the tools' --quasi)

@@ -1,9 +1,11 @@
 // The shared helpers of bindings.hpp: conversions at the boundary and the long-run driver.
 #include <atomic>
 #include <cmath>
+#include <condition_variable>
 #include <exception>
 #include <map>
 #include <memory>
+#include <mutex>
 #include <nlohmann/json.hpp>
 #include <regex>
 
@@ -169,21 +171,51 @@ std::vector<double> number_list(const py::handle& values, const char* keyword, d
 
 // --- long runs -----------------------------------------------------------------------------------
 
+namespace {
+template <class F>
+struct Finally {  ///< calls f when it goes out of scope
+  F f;
+  ~Finally() { f(); }
+};
+}  // namespace
+
 void run_long(const std::string& label, std::size_t total, bool progress,
               const std::function<void(const LongRun&)>& work) {
+  struct Shared {  // whether `work` may start (run_long has not returned) and whether it runs
+    std::mutex mutex;
+    std::condition_variable stopped;
+    bool open = true, running = false;
+  };
+  auto shared = std::make_shared<Shared>();
   auto meter = std::make_shared<ProgressMeter>(total, label, 0);  // silent: the bar is drawn from Python
   auto cancel = std::make_shared<std::atomic<bool>>(false);
   const LongRun control{[cancel] { return cancel->load(std::memory_order_relaxed); }, meter.get()};
-  const py::cpp_function call([&] {
+  const py::cpp_function call([&, shared] {
+    if (std::lock_guard lock(shared->mutex); !shared->open) return;  // too late: run_long has returned
+    else shared->running = true;
+    const Finally stop{[&s = *shared] {
+      std::lock_guard lock(s.mutex);
+      s.running = false;
+      s.stopped.notify_all();
+    }};
     py::gil_scoped_release release;
     work(control);
   });
+  // However this returns (a KeyboardInterrupt anywhere in the Python driver included), `work` is
+  // told to stop and waited for before what it uses goes out of scope.
+  const Finally close{[&] {
+    cancel->store(true);
+    py::gil_scoped_release release;
+    std::unique_lock lock(shared->mutex);
+    shared->open = false;
+    shared->stopped.wait(lock, [&] { return !shared->running; });
+  }};
   // Under mpirun the ranks talk MPI from the thread that started it: stay on this thread.
   if (MpiContext::instance().size() > 1) {
     call();
     return;
   }
-  // granular._progress.run_long joins the worker before it returns or raises: `work` outlives it.
+  // granular._progress.run_long: a worker thread, the progress bar and Ctrl-C.
   py::module_::import("granular._progress")
       .attr("run_long")(call, py::cpp_function([meter] { return meter->done(); }),
                         py::cpp_function([cancel] { cancel->store(true); }), label, total, progress);
