@@ -12,10 +12,15 @@ _MAX = 100000000  # beads of a stored chain
 
 
 def _document(cls, doc, **properties):
-    """Sets the docstrings of a class of granular._core (or of a subclass) and of its properties."""
+    """Sets the docstrings of a class of granular._core (or of a Python subclass: its properties documented then
+    become its own) and of its properties."""
     cls.__doc__ = doc
     for name, text in properties.items():
-        next(c.__dict__[name] for c in cls.__mro__ if name in c.__dict__).__doc__ = text
+        if name in cls.__dict__:
+            cls.__dict__[name].__doc__ = text
+        else:
+            inherited = getattr(cls, name)
+            setattr(cls, name, property(inherited.fget, inherited.fset, inherited.fdel, text))
 
 
 _document(Material, "Elastic material of beads and walls, SI units.\n\nMaterial(young, poisson, density): young: "

@@ -216,6 +216,10 @@ def localization(chain=None, *, disorder="A", N=1000000, q=0.5, xi=0.5, seed=1, 
     idos, dos, metadata). Releases the GIL; Ctrl-C stops it."""
     recipe = _core.ChainRecipe()
     r = 0
+    if chain is not None and not isinstance(chain, _core.Chain):
+        raise TypeError("chain: expected a granular.Chain or None")
+    if chain is not None and not chain.F0 > 0:
+        raise ValueError("F0 0: the sonic vacuum has no linear limit (needs F0 > 0)")
     if chain is None:
         n = float(N)
         if not (n >= 2) or not (n <= 1e12) or n != math.floor(n):

@@ -41,23 +41,19 @@ py::dict ipr_map(const IprMapConfig& c, const std::string& solver, const std::st
   return out;
 }
 
-/// `chain`, or (None) realization `realization` of `recipe` streamed a piece at a time.
-py::dict localization(const py::object& chain, const ChainRecipe& recipe, std::uint64_t realization,
+/// `chain` (checked in granular/_studies.py), or (None) realization `realization` of `recipe`
+/// streamed a piece at a time.
+py::dict localization(const PyChain* chain, const ChainRecipe& recipe, std::uint64_t realization,
                       const LocalizationScanConfig& config, const py::object& f, const PyRun& options) {
   const int thread_request = options.thread_request();
   // The beads as the localization tool reads them (ChainRecipe::beads): a random realization is
   // drawn a piece at a time (memory independent of N).
-  ChainRecipe r = recipe;
-  nlohmann::json description;
-  if (!chain.is_none()) {
-    if (!py::isinstance<PyChain>(chain)) throw py::type_error("chain: expected a granular.Chain or None");
-    const PyChain& c = chain.cast<const PyChain&>();
-    if (!(c.chain.precompression > 0)) bad_value("F0", " 0: the sonic vacuum has no linear limit (needs F0 > 0)");
-    r = c.recipe, realization = c.realization, description = c.description;
-  }
-  if (chain.is_none()) validate(r, r.walls == WallShape::flat ? 1000000000000 : 100000000);  // sphere walls: stored
+  const ChainRecipe& r = chain ? chain->recipe : recipe;
+  if (chain) realization = chain->realization;
+  nlohmann::json description = chain ? chain->description : nlohmann::json();
+  if (!chain) validate(r, r.walls == WallShape::flat ? 1000000000000 : 100000000);  // sphere walls: stored
   const std::unique_ptr<BeadSource> beads = r.beads(realization);
-  if (chain.is_none()) {
+  if (!chain) {
     warn(radius_warnings(r, {"R1", "beads", "radii"}));
     description = describe(r, realization);
   }
