@@ -40,6 +40,9 @@ finally:
 
 if _core is not None:
     from ._core import NumericalError  # noqa: F401
+
+    NumericalError.__doc__ = ("A numerical method failed: a solver did not converge, a guard tripped (energy error, "
+                              "NaN), or every LAPACK driver failed. The message says which and how to replay it.")
     from ._dynamics import exponent_table, spreading, transport  # noqa: F401
     from ._linear import (  # noqa: F401
         BandEdges,

@@ -29,7 +29,7 @@ def run_long(work, done, cancel, label, total, progress):
             if bar is not None:
                 bar.update(done())
     except BaseException:
-        cancel()  # whatever happened here, the worker is stopped and joined before its C++ state goes
+        cancel()  # whatever happened here, the worker is told to stop and waited for
         worker.join()
         if bar is not None:
             try:

@@ -72,10 +72,7 @@ void bind_errors(py::module_& m) {
   m.def("_vector", &double_vector, py::arg("values"), py::arg("keyword"), py::arg("require_finite") = true);
   m.def("_numbers", &number_list);
   m.def("_format_number", [](double x) { return format_number(x); });
-  static py::exception<NumericalError> numerical(m, "NumericalError", PyExc_RuntimeError);
-  numerical.doc() =
-      "A numerical method failed: a solver did not converge, a guard tripped (energy error, NaN), or "
-      "every LAPACK driver failed. The message says which and how to replay it.";
+  static py::exception<NumericalError> numerical(m, "NumericalError", PyExc_RuntimeError);  // doc: __init__.py
   py::register_exception_translator([](std::exception_ptr p) {
     try {
       if (p) std::rethrow_exception(p);
