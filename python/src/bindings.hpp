@@ -69,13 +69,8 @@ struct PyChain {
   Material material = steel;
   nlohmann::json description;  ///< describe(recipe, realization), as the tools' "chain" entry
 };
-/// The chain of a recipe, built and described ("disorder": `name` for a named given chain).
-PyChain py_chain(ChainRecipe recipe, std::uint64_t realization, const std::string& name = "");
 
 // --- errors ----------------------------------------------------------------------------------
-/// The Python keyword a library parameter name stands for (`precompression` → `F0`, `time_step`
-/// → `dt`, a legacy flag `--force-law` → `force_law`); keywords are the tools' option names.
-std::string keyword_of(const std::string& parameter);
 /// Throws InvalidInput(keyword, " <value>: <rule>") — the message format of the library.
 [[noreturn]] void bad_value(const std::string& keyword, const std::string& problem);
 

@@ -13,7 +13,9 @@
 #include "granular/model/quasiperiodic.hpp"
 
 namespace granular::python {
-PyChain py_chain(ChainRecipe recipe, std::uint64_t realization, const std::string& name) {
+namespace {
+/// The chain of a recipe, built and described ("disorder": `name` for a named given chain).
+PyChain py_chain(ChainRecipe recipe, std::uint64_t realization, const std::string& name = "") {
   validate(recipe);
   warn(radius_warnings(recipe, {"R1", "beads", "radii"}));
   PyChain c;
@@ -26,6 +28,8 @@ PyChain py_chain(ChainRecipe recipe, std::uint64_t realization, const std::strin
   c.realization = realization;
   return c;
 }
+
+}  // namespace
 
 void bind_model(py::module_& m) {
   m.attr("paper_r1") = paper_r1;

@@ -19,6 +19,9 @@
 
 namespace granular::python {
 
+namespace {
+/// The Python keyword a library parameter name stands for (`precompression` → `F0`, `time_step`
+/// → `dt`, a legacy flag `--force-law` → `force_law`); keywords are the tools' option names.
 std::string keyword_of(const std::string& parameter) {
   // Library names that are not the keyword itself (the keywords are the tools' option names).
   static const std::map<std::string, std::string> synonyms{
@@ -35,7 +38,6 @@ std::string keyword_of(const std::string& parameter) {
   return name;
 }
 
-namespace {
 /// Messages written in flag vocabulary ("--T 0.5: …", "… beyond --T 0.01") told in keywords.
 std::string keywords_in(const std::string& message) {
   static const std::regex flag(R"(--([A-Za-z][A-Za-z0-9-]*))");
