@@ -208,7 +208,14 @@ TEST(InputRejection, FullSpectrumThatCannotFitIsRefusedNamingTheMethodsThatFit) 
   const std::string err = dir + "/err";
   // AddressSanitizer reserves terabytes of address space for its shadow memory, so under it the
   // limit is left out (the message and exit code are still checked; the limit is checked in Release).
-#if defined(__SANITIZE_ADDRESS__)
+#if defined(__SANITIZE_ADDRESS__)  // GCC's name
+#define GRANULAR_INPUT_REJECTION_ASAN 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)  // clang's
+#define GRANULAR_INPUT_REJECTION_ASAN 1
+#endif
+#endif
+#ifdef GRANULAR_INPUT_REJECTION_ASAN
   const std::string limit = "";
 #else
   const std::string limit = "ulimit -v 2000000; ";

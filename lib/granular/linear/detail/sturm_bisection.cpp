@@ -322,8 +322,8 @@ void lane_group(const SymTridiagonal& t, std::vector<double>& values, const std:
   std::vector<double> sc(m, 1.0);                                       // the vector of lane j is sc[j] · x[· L + j]
   auto t_times = [&](std::size_t i, const double* xi, std::size_t j) {  // (T x)_i of lane j; xi = &x[i L]
     double tx = a[i] * xi[j];
-    if (i > 0) tx += e[i - 1] * xi[j - L];
-    if (i + 1 < n) tx += e[i] * xi[j + L];
+    if (i > 0) tx += e[i - 1] * (xi - L)[j];  // (not xi[j - L]: j - L wraps around as an unsigned offset)
+    if (i + 1 < n) tx += e[i] * (xi + L)[j];
     return tx;
   };
   auto true_residuals = [&] {
