@@ -11,7 +11,7 @@ int main() {
   c.chain = {.disorder = granular::Disorder::anderson, .N = 501};
   c.site = 250;
   c.realizations = 4;
-  c.dynamics.duration = 2e-3;
+  c.dynamics.integration.duration = 2e-3;
   c.fit_begin = 1e-3;
   c.fit_end = 2e-3;
   const granular::TransportSummary one = granular::run_transport_study(c, {.threads = 1});

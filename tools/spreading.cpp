@@ -46,10 +46,10 @@ int main(int argc, char** argv) {
                      const tool::SelectedChain& selected = k.selected;
                      TransportCase& c = k.c;
                      c.profile_realizations = more.profile ? c.realizations : 0;
-                     const SpreadingConfig& d = c.dynamics;
+                     const SpreadingRunConfig& d = c.dynamics;
                      tool::apply(more, c);
                      const nlohmann::json step_rule = tool::validate_and_settle(c, dynamics, app.count("--dt") > 0);
-                     SpreadingPaths paths = spreading_paths(output, ensemble, more.profile, !d.force_sites.empty());
+                     SpreadingPaths paths = spreading_paths(output, ensemble, more.profile, !d.forces.sites.empty());
                      paths.final_state = more.final_state, paths.energy_map = more.energy_map,
                      paths.spectrum = more.spectrum;
                      paths.deviation = dynamics.deviation;
@@ -77,7 +77,7 @@ int main(int argc, char** argv) {
                      auto files = write_spreading_files(paths, r, means, d);
                      if (!more.spectrum.empty())
                        meta["spectrum"] = {{"file", more.spectrum},
-                                           {"of", to_string(d.spectrum_source)},
+                                           {"of", to_string(d.spectrum->source)},
                                            {"samples", more.spectrum_samples}};
                      meta["parameters"] = describe_parameters(c, selected.description, kicked, ensemble);
                      meta["seed"] = c.chain.seed;

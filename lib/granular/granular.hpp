@@ -35,7 +35,6 @@
 #include "granular/dynamics/scheme.hpp"
 #include "granular/dynamics/spectral_density.hpp"
 #include "granular/dynamics/spread.hpp"
-#include "granular/dynamics/spreading.hpp"
 
 #include "granular/ensemble/parallel_realizations.hpp"
 #include "granular/ensemble/run_options.hpp"
@@ -57,6 +56,7 @@
 #include "granular/study/resumed_checkpoint.hpp"
 #include "granular/study/spectrum_file.hpp"
 #include "granular/study/spreading_files.hpp"
+#include "granular/study/spreading_run.hpp"
 #include "granular/study/time_step_rule.hpp"
 #include "granular/study/transport_choices.hpp"
 #include "granular/study/transport_study.hpp"

@@ -1,7 +1,7 @@
 // The nonlinear dynamics under granular.spreading, granular.transport and granular.exponent_table,
 // whose keywords, defaults and docstrings live in granular/_dynamics.py. Here: the library's
-// choice structs (TransportChoices, BeyondChoices, ModeKick, ChainRecipe, the observers of a
-// SpreadingConfig, ExponentTableConfig) bound with their C++ defaults, and one call per job that
+// choice structs (TransportChoices, BeyondChoices, ModeKick, ChainRecipe, the optional observers
+// of a SpreadingRunConfig, ExponentTableConfig) bound with their C++ defaults, and one call per job that
 // takes them, turns them into a TransportCase by the tools' rule (study/transport_choices.hpp),
 // runs it and returns its results as NumPy arrays with the library's own JSON and CSV writers.
 #include <algorithm>
@@ -25,6 +25,19 @@
 namespace granular::python {
 namespace {
 using namespace py::literals;
+
+/// The optional observers of granular.spreading, as its keywords give them: 0 samples switch a map
+/// or a spectral density off.
+struct SpreadingObservers {
+  std::vector<std::size_t> force_sites;
+  std::size_t force_samples = 1000, map_samples = 0, map_stride = 1, spectrum_samples = 0;
+  SpectrumSource spectrum_source = SpectrumSource::displacement;
+  void apply_to(SpreadingRunConfig& d) const {
+    d.forces = {force_sites, force_samples};
+    if (map_samples > 0) d.energy_map = EnergyMapObserver::Settings{map_samples, map_stride};
+    if (spectrum_samples > 0) d.spectrum = SpectralDensityObserver::Settings{spectrum_samples, spectrum_source};
+  }
+};
 
 /// `choices` and `beyond` applied to `c` as the tools do; integrator 'auto' stands for SABA2C until
 /// the step is settled. Returns whether it was 'auto'.
@@ -64,7 +77,7 @@ py::dict series(std::vector<double>&& t, std::vector<long long>&& sites, const c
 }
 
 py::dict spreading(const PyChain& chain, const std::string& ic, const TransportChoices& choices,
-                   const BeyondChoices& beyond, const SpreadingConfig& observe, const ModeKick& mode, bool dt_given,
+                   const BeyondChoices& beyond, const SpreadingObservers& observe, const ModeKick& mode, bool dt_given,
                    const PyRun& options) {
   TransportCase c;
   c.chain = chain.recipe;
@@ -72,14 +85,9 @@ py::dict spreading(const PyChain& chain, const std::string& ic, const TransportC
   c.realizations = 1;
   c.profile_realizations = 0;
   const bool automatic = apply_choices(choices, beyond, c);
-  SpreadingConfig& d = c.dynamics;
-  c.fit = c.fit_end <= d.duration * (1 + 1e-12);  // a window beyond T: no exponents
-  d.force_sites = observe.force_sites;
-  d.force_samples = observe.force_samples;
-  d.map_samples = observe.map_samples;
-  d.map_stride = observe.map_stride;
-  d.spectrum_samples = observe.spectrum_samples;
-  d.spectrum_source = observe.spectrum_source;
+  SpreadingRunConfig& d = c.dynamics;
+  c.fit = c.fit_end <= d.integration.duration * (1 + 1e-12);  // a window beyond T: no exponents
+  observe.apply_to(d);
   if ((mode.mode != 0 || mode.near_khz >= 0 || mode.energy != 0) && c.kick != Kick::mode)
     bad_value("mode", ": mode, mode_khz and energy only with ic='mode'");
   c.mode = {.mode = mode.mode, .near_khz = mode.near_khz, .energy = mode.energy, .amplitude = 0};
@@ -107,8 +115,7 @@ py::dict spreading(const PyChain& chain, const std::string& ic, const TransportC
   meta.update(fitted);
   meta["time_step_rule"] = step_rule;
   meta["run"] = describe_run(r, described.value("realization", nlohmann::json(0)));
-  if (d.spectrum_samples > 0)
-    meta["spectrum"] = {{"of", to_string(d.spectrum_source)}, {"samples", d.spectrum_samples}};
+  if (d.spectrum) meta["spectrum"] = {{"of", to_string(d.spectrum->source)}, {"samples", d.spectrum->samples}};
 
   py::dict out = to_python(fitted);
   std::vector<std::string> said = notes(c);
@@ -122,7 +129,7 @@ py::dict spreading(const PyChain& chain, const std::string& ic, const TransportC
   // Beyond the paper: the columns `dissipated` and `mle` of the tool's CSV, and its --deviation file.
   out["dissipated"] = array_or_none(std::move(r.dissipated));
   out["mle"] = array_or_none(std::move(r.mle));
-  const std::size_t n = c.chain.size(), sites = d.force_sites.size();
+  const std::size_t n = c.chain.size(), sites = d.forces.sites.size();
   out["deviation"] = py::none();
   if (d.deviation_samples > 0) {
     const std::size_t rows = r.deviation_t.size();
@@ -134,18 +141,17 @@ py::dict spreading(const PyChain& chain, const std::string& ic, const TransportC
     for (const auto& f : r.forces) values.insert(values.end(), f.begin(), f.end());
     const std::size_t count = r.force_t.size();
     std::vector<long long> numbers;
-    for (std::size_t s : d.force_sites) numbers.push_back(static_cast<long long>(s + 1));
+    for (std::size_t s : d.forces.sites) numbers.push_back(static_cast<long long>(s + 1));
     out["forces"] = series(std::move(r.force_t), std::move(numbers), "force", std::move(values), sites, count);
   }
   out["energy_map"] = py::none();
-  if (d.map_samples > 0) {
+  if (d.energy_map) {
     const std::size_t rows = r.map_t.size();
-    out["energy_map"] = series(std::move(r.map_t), numbered(r.map_columns, d.map_stride), "energy",
+    out["energy_map"] = series(std::move(r.map_t), numbered(r.map_columns, d.energy_map->stride), "energy",
                                std::move(r.map_energy), rows, r.map_columns);
   }
   out["spectral_density"] = py::none();
-  if (d.spectrum_samples > 0)
-    out["spectral_density"] = fields("freq_khz g", std::move(r.spectrum_khz), std::move(r.spectrum));
+  if (d.spectrum) out["spectral_density"] = fields("freq_khz g", std::move(r.spectrum_khz), std::move(r.spectrum));
   out.attr("update")(
       fields("wall_energy reached_walls steps seconds", r.wall_energy, r.reached_walls, r.steps, r.seconds));
   out["energy_guard_time"] = r.energy_guard_time < 0 ? py::object(py::none()) : py::float_(r.energy_guard_time);
@@ -161,7 +167,7 @@ py::dict transport(const ChainRecipe& recipe, const std::string& ic, long long r
   c.realizations = checked_size(realizations, "realizations", 1);
   c.profile_realizations = profile ? c.realizations : 0;
   const bool automatic = apply_choices(choices, beyond, c);
-  c.fit = c.fit_end <= c.dynamics.duration * (1 + 1e-12);
+  c.fit = c.fit_end <= c.dynamics.integration.duration * (1 + 1e-12);
   std::string t_warning;
   const nlohmann::json step_rule = validate_and_settle(c, automatic, dt_given, "T", t_warning);
   if (!t_warning.empty()) warn({t_warning});  // after the errors
@@ -316,7 +322,7 @@ void bind_dynamics(py::module_& m) {
   config_class(m, "BeyondChoices", "damping_time kk_gamma mle renormalize deviation_samples", &B::damping_time,
                &B::kk_gamma, &B::mle, &B::renormalize, &B::deviation_samples);
   config_class(m, "ModeKick", "mode near_khz energy", &ModeKick::mode, &ModeKick::near_khz, &ModeKick::energy);
-  using S = SpreadingConfig;  // only its observers' settings
+  using S = SpreadingObservers;
   config_class(m, "SpreadingObservers",
                "force_sites force_samples map_samples map_stride spectrum_samples spectrum_source", &S::force_sites,
                &S::force_samples, &S::map_samples, &S::map_stride, &S::spectrum_samples, &S::spectrum_source);

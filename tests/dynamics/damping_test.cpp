@@ -3,13 +3,15 @@
 // balance H + dissipated = H0, and "no damping" changing nothing.
 #include <cmath>
 #include <cstdio>
+#include <utility>
 
 #include <gtest/gtest.h>
 
 #include "dynamics_fixtures.hpp"
 #include "granular/dynamics/damping.hpp"
 #include "granular/dynamics/observables.hpp"
-#include "granular/dynamics/spreading.hpp"
+#include "granular/dynamics/observers.hpp"
+#include "granular/dynamics/spread.hpp"
 #include "granular/error.hpp"
 
 namespace granular {
@@ -92,29 +94,25 @@ TEST(Damping, ZeroDampingLeavesTheVelocitiesAndTheRunUnchanged) {
   const auto b = fixtures::run(make_splitting_propagator(law, chain, saba2c(), 1e-7, s, {false}), 2000);
   EXPECT_LT(relative_difference(a->displacement(), b->displacement()), 1e-12);
   EXPECT_EQ(a->dissipated_energy(), 0.0);
-  // And run_spreading without damping takes the conservative path: bit for bit.
-  SpreadingConfig c;
-  c.duration = 0.2e-3;
-  c.time_step = 1e-7;
-  c.dense = {};
-  const SpreadingResult r0 = run_spreading(chain, s, c);
-  c.damping = Damping{0, 0};
-  const SpreadingResult r1 = run_spreading(chain, s, c);
-  EXPECT_EQ(r0.final_state.u, r1.final_state.u);
-  EXPECT_EQ(r0.m2, r1.m2);
+  // And a run without damping takes the conservative path: bit for bit.
+  const auto run = [&](const Damping& damping) {
+    EnergySpreadObserver energy;
+    FinalStateObserver final_state;
+    spread(chain, s, {.duration = 0.2e-3, .time_step = 1e-7, .damping = damping}, energy, final_state);
+    return std::pair(energy.m2, final_state.state.u);
+  };
+  EXPECT_EQ(run({}), run(Damping{0, 0}));
 }
 
 TEST(Damping, SpreadingReportsTheDissipatedEnergy) {
   const Chain chain = fixtures::anderson(101, 1.0);
   const State s = displacement_kick(chain, 50, 1e-7);
-  SpreadingConfig c;
-  c.duration = 1e-3;
-  c.time_step = 0.1e-6;
-  c.damping = Damping{0.5e-3, 1e-6};
-  const SpreadingResult r = run_spreading(chain, s, c);
-  ASSERT_EQ(r.dissipated.size(), r.t.size());
-  EXPECT_GT(r.dissipated.back() / r.initial_energy, 0.5);
-  EXPECT_LT(r.max_energy_error, 1e-7);  // the balance H + dissipated = H0
+  EnergySpreadObserver energy;
+  const RunInfo info =
+      spread(chain, s, {.duration = 1e-3, .time_step = 0.1e-6, .damping = Damping{0.5e-3, 1e-6}}, energy);
+  ASSERT_EQ(energy.dissipated.size(), energy.t.size());
+  EXPECT_GT(energy.dissipated.back() / info.initial_energy, 0.5);
+  EXPECT_LT(energy.max_energy_error, 1e-7);  // the balance H + dissipated = H0
 }
 
 TEST(Damping, RejectsNegativeOrNonFiniteParameters) {

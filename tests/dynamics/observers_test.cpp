@@ -20,7 +20,6 @@
 
 #include "dynamics_fixtures.hpp"
 #include "granular/dynamics/spread.hpp"
-#include "granular/dynamics/spreading.hpp"
 #include "granular/error.hpp"
 #include "granular/model/contact_law.hpp"
 
@@ -164,41 +163,6 @@ TEST(Observers, ObservingDoesNotChangeTheTrajectory) {
                 du);
     EXPECT_LT(du, 1e-12) << integrator.name();
   }
-}
-
-TEST(Observers, RunSpreadingPacksWhatTheObserversMeasured) {
-  const Chain chain = fixtures::anderson(121, 10.0);
-  const State initial = displacement_kick(chain, 60, 1e-7);
-  SpreadingConfig c;
-  c.duration = 2e-4;
-  c.samples = 30;
-  c.dense = {1e-4, 2e-4, 1e-5};
-  c.site = 60;
-  c.force_sites = {50, 70};
-  c.force_samples = 21;
-  c.map_samples = 11;
-  c.map_stride = 5;
-  c.spectrum_samples = 50;
-  const SpreadingResult r = run_spreading(chain, initial, c);
-
-  EnergySpreadObserver spread(energy_spread_settings(c));
-  ForceObserver forces({c.force_sites, c.force_samples});
-  EnergyMapObserver map({c.map_samples, c.map_stride});
-  SpectralDensityObserver spectrum({c.spectrum_samples, c.spectrum_source});
-  FinalStateObserver final_state;
-  granular::spread(chain, initial, integration_config(c), final_state, spectrum, map, forces, spread);
-  EXPECT_EQ(r.t, spread.t);
-  EXPECT_EQ(r.m2, spread.m2);
-  EXPECT_EQ(r.m2_centroid, spread.m2_centroid);
-  EXPECT_EQ(r.ipr, spread.ipr);
-  EXPECT_EQ(r.energy_error, spread.energy_error);
-  EXPECT_EQ(r.forces, forces.forces);
-  EXPECT_EQ(r.map_energy, map.energy);
-  EXPECT_EQ(r.spectrum, spectrum.density);
-  EXPECT_EQ(r.final_energy, final_state.energy);
-  std::vector<double> t;
-  for (std::uint64_t s : sample_steps(c)) t.push_back(static_cast<double>(s) * c.time_step);
-  EXPECT_EQ(r.t, t);
 }
 
 TEST(Observers, BadSettingsStopTheRunBeforeAnyStep) {

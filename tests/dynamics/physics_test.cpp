@@ -10,7 +10,8 @@
 #include "dynamics_fixtures.hpp"
 #include "granular/analysis/exponent_report.hpp"
 #include "granular/dynamics/observables.hpp"
-#include "granular/dynamics/spreading.hpp"
+#include "granular/dynamics/observers.hpp"
+#include "granular/dynamics/spread.hpp"
 #include "granular/error.hpp"
 #include "granular/linear/detail/lapack_eigensolver.hpp"
 #include "granular/linear/dynamical_matrix.hpp"
@@ -76,44 +77,43 @@ TEST(ActiveWindow, SameFinalStateAsTheFullChain) {
 
 TEST(Spreading, HomogeneousPrecompressedChainIsBallistic) {
   const Chain chain = fixtures::homogeneous(1401, 10.0);  // Ω T ≈ 1137 < N: no wall in 10 ms
-  SpreadingConfig config;
-  config.dense = {4e-3, 1e-2, 1e-5};  // the study's fit grid
-  const SpreadingResult r = run_spreading(chain, displacement_kick(chain, centre_site(1401), 1e-7), config);
+  EnergySpreadObserver r({.dense = {4e-3, 1e-2, 1e-5}});  // the study's fit grid
+  spread(chain, displacement_kick(chain, centre_site(1401), 1e-7), {}, r);
   const ExponentReport fit = report_exponent(r.t, r.m2, 4e-3, 1e-2, {});
   std::printf("  gamma = %.4f ± %.4f, max |L_d − gamma| = %.3f, wall energy %.2e\n", fit.fit.value, fit.fit.error,
               fit.verdict.worst_deviation, r.wall_energy);
   EXPECT_NEAR(fit.fit.value, 2.0, 0.05);
   EXPECT_TRUE(fit.verdict.power_law);
-  EXPECT_FALSE(r.reached_walls);
+  EXPECT_FALSE(r.reached_walls());
 }
 
 TEST(Spreading, SonicVacuumSplitsAKickIntoTwoPulses) {
   const std::size_t n = 801, centre = centre_site(n);
   const Chain chain = fixtures::homogeneous(n, 0.0);
   const ForceLaw law = make_force_law(ForceLawKind::hertz, chain);
-  SpreadingConfig config;
-  config.duration = 4e-3;
-  config.samples = 100;
-  const SpreadingResult r = run_spreading(chain, displacement_kick(chain, centre, 1e-7), config);
+  EnergySpreadObserver energy;
+  FinalStateObserver final_state;
+  spread(chain, displacement_kick(chain, centre, 1e-7), {.duration = 4e-3}, energy, final_state);
   // Two lumps moving apart: most energy far from the kicked bead on both sides.
   double left = 0, right = 0, middle = 0;
   std::size_t peak_left = 0, peak_right = 0;
   for (std::size_t i = 0; i < n; ++i) {
-    const double e = r.final_energy[i];
+    const double e = final_state.energy[i];
     if (i + 20 < centre) {
       left += e;
-      if (e > r.final_energy[peak_left]) peak_left = i;
+      if (e > final_state.energy[peak_left]) peak_left = i;
     } else if (i > centre + 20) {
       right += e;
-      if (e > r.final_energy[peak_right] || peak_right == 0) peak_right = i;
+      if (e > final_state.energy[peak_right] || peak_right == 0) peak_right = i;
     } else {
       middle += e;
     }
   }
   const double total = left + right + middle;
   // P⁻¹ stops decaying: compact pulses keep their shape (a linear chain's would keep falling).
-  const double ipr_half = r.ipr[static_cast<std::size_t>(std::lower_bound(r.t.begin(), r.t.end(), 2e-3) - r.t.begin())];
-  const double ipr_end = r.ipr.back();
+  const double ipr_half =
+      energy.ipr[static_cast<std::size_t>(std::lower_bound(energy.t.begin(), energy.t.end(), 2e-3) - energy.t.begin())];
+  const double ipr_end = energy.ipr.back();
   std::printf("  energy left %.3f right %.3f middle %.3f; peaks at %zu and %zu; P^-1 %.4f at 2 ms, %.4f at 4 ms\n",
               left / total, right / total, middle / total, peak_left, peak_right, ipr_half, ipr_end);
   EXPECT_GT(left / total, 0.1);
@@ -187,23 +187,25 @@ TEST(SpectralDensity, PeaksAtTheFrequencyOfAnExcitedMode) {
   State s0(chain.size());
   for (std::size_t i = 0; i < chain.size(); ++i)
     s0.u[i] = 1e-8 * e.vectors(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(mode)) / std::sqrt(chain.mass[i]);
-  SpreadingConfig config;
-  config.force_law = ForceLawKind::linear;
-  config.duration = 5e-3;
-  config.spectrum_samples = 2001;
-  const SpreadingResult r = run_spreading(chain, s0, config);
+  const IntegrationConfig config{.duration = 5e-3, .force_law = ForceLawKind::linear};
+  const auto run = [&](SpectrumSource source) {
+    EnergySpreadObserver energy;
+    SpectralDensityObserver g({.samples = 2001, .source = source});
+    spread(chain, s0, config, energy, g);
+    return g;
+  };
+  const SpectralDensityObserver r = run(SpectrumSource::displacement);
   const std::size_t peak =
-      static_cast<std::size_t>(std::max_element(r.spectrum.begin(), r.spectrum.end()) - r.spectrum.begin());
+      static_cast<std::size_t>(std::max_element(r.density.begin(), r.density.end()) - r.density.begin());
   const double expected = frequency_khz(e.values[static_cast<Eigen::Index>(mode)]);
-  const double resolution = r.spectrum_khz[1];
-  std::printf("  peak %.4f kHz, mode %.4f kHz, resolution %.4f kHz\n", r.spectrum_khz[peak], expected, resolution);
-  EXPECT_NEAR(r.spectrum_khz[peak], expected, resolution);
-  EXPECT_DOUBLE_EQ(r.spectrum[peak], 1.0);
+  const double resolution = r.freq_khz[1];
+  std::printf("  peak %.4f kHz, mode %.4f kHz, resolution %.4f kHz\n", r.freq_khz[peak], expected, resolution);
+  EXPECT_NEAR(r.freq_khz[peak], expected, resolution);
+  EXPECT_DOUBLE_EQ(r.density[peak], 1.0);
   // The velocities of a single mode oscillate at the same frequency.
-  config.spectrum_source = SpectrumSource::velocity;
-  const SpreadingResult v = run_spreading(chain, s0, config);
-  const auto v_peak = std::max_element(v.spectrum.begin(), v.spectrum.end()) - v.spectrum.begin();
-  EXPECT_NEAR(v.spectrum_khz[static_cast<std::size_t>(v_peak)], expected, resolution);
+  const SpectralDensityObserver v = run(SpectrumSource::velocity);
+  const auto v_peak = std::max_element(v.density.begin(), v.density.end()) - v.density.begin();
+  EXPECT_NEAR(v.freq_khz[static_cast<std::size_t>(v_peak)], expected, resolution);
 }
 
 TEST(SpectralDensity, VelocitySpectrumShowsTheModesAPermanentStepBuries) {
@@ -214,25 +216,24 @@ TEST(SpectralDensity, VelocitySpectrumShowsTheModesAPermanentStepBuries) {
   const std::size_t n = 401;
   for (double f0 : {10.0, 0.0}) {
     const Chain chain = fixtures::anderson(n, f0);
-    SpreadingConfig config;
-    config.duration = 2e-3;
-    config.samples = 10;
-    config.spectrum_samples = 801;  // every 2.5 µs: up to 200 kHz
     const State kick = velocity_kick(chain, centre_site(n), 8e-3);
-    const SpreadingResult u = run_spreading(chain, kick, config);
-    config.spectrum_source = SpectrumSource::velocity;
-    const SpreadingResult v = run_spreading(chain, kick, config);
+    const auto run = [&](SpectrumSource source) {
+      EnergySpreadObserver energy({.samples = 10});
+      SpectralDensityObserver g({.samples = 801, .source = source});  // every 2.5 µs: up to 200 kHz
+      spread(chain, kick, {.duration = 2e-3}, energy, g);
+      return g;
+    };
+    const SpectralDensityObserver u = run(SpectrumSource::displacement), v = run(SpectrumSource::velocity);
     const auto argmax = [](const std::vector<double>& g) {
       return static_cast<std::size_t>(std::max_element(g.begin(), g.end()) - g.begin());
     };
-    const std::size_t at5 = static_cast<std::size_t>(std::lround(5.0 / u.spectrum_khz[1]));  // bin of 5 kHz
+    const std::size_t at5 = static_cast<std::size_t>(std::lround(5.0 / u.freq_khz[1]));  // bin of 5 kHz
     std::printf("  F0 = %g N: displacement peak %.2f kHz, velocity peak %.2f kHz; g(5 kHz) %.2e vs %.2e\n", f0,
-                u.spectrum_khz[argmax(u.spectrum)], v.spectrum_khz[argmax(v.spectrum)], u.spectrum[at5],
-                v.spectrum[at5]);
-    EXPECT_EQ(argmax(u.spectrum), 0u);
-    EXPECT_GT(v.spectrum[at5], 10 * u.spectrum[at5]);  // measured 24× (10 N) and 48× (0 N)
+                u.freq_khz[argmax(u.density)], v.freq_khz[argmax(v.density)], u.density[at5], v.density[at5]);
+    EXPECT_EQ(argmax(u.density), 0u);
+    EXPECT_GT(v.density[at5], 10 * u.density[at5]);  // measured 24× (10 N) and 48× (0 N)
     if (f0 > 0) {
-      EXPECT_GT(v.spectrum_khz[argmax(v.spectrum)], 5.0) << "a mode, not the step";
+      EXPECT_GT(v.freq_khz[argmax(v.density)], 5.0) << "a mode, not the step";
     }
   }
 }

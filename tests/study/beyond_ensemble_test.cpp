@@ -5,10 +5,10 @@
 
 #include <gtest/gtest.h>
 
-#include "granular/dynamics/spreading.hpp"
 #include "granular/error.hpp"
 #include "granular/model/chain.hpp"
 #include "granular/model/disorder.hpp"
+#include "granular/study/spreading_run.hpp"
 #include "granular/study/transport_study.hpp"
 
 namespace granular {
@@ -22,9 +22,9 @@ TransportCase lyapunov_case() {
   c.chain.F0 = 0.1;
   c.realizations = 4;
   c.profile_realizations = 2;
-  c.dynamics.duration = 1e-3;
-  c.dynamics.samples = 30;
-  c.dynamics.lyapunov.enabled = true;
+  c.dynamics.integration.duration = 1e-3;
+  c.dynamics.spread.samples = 30;
+  c.dynamics.integration.lyapunov.enabled = true;
   c.fit_begin = 4e-4;
   c.fit_end = 1e-3;
   c.criterion.t_start = 4e-4;
@@ -54,15 +54,15 @@ TEST(BeyondEnsemble, MeanLyapunovExponentIsBitIdenticalForOneAndTwoThreads) {
 
 TEST(BeyondEnsemble, DampedEnsembleIsBitIdenticalForOneAndTwoThreads) {
   TransportCase c = lyapunov_case();
-  c.dynamics.lyapunov.enabled = false;
-  c.dynamics.damping = {1e-3, 1e-6};
+  c.dynamics.integration.lyapunov.enabled = false;
+  c.dynamics.integration.damping = {1e-3, 1e-6};
   const TransportSummary one = run_transport_study(c, {1, "", false, nullptr});
   const TransportSummary two = run_transport_study(c, {2, "", false, nullptr});
   EXPECT_EQ(one.m2.mean, two.m2.mean);
   EXPECT_TRUE(one.mle.mean.empty());
   // H + dissipated = H0 in every realization, to the accuracy of the conservative scheme on the
   // same case (contacts open at F0 = 0.1 N: SABA2C at τ = 1 µs is far from its smooth-case level).
-  c.dynamics.damping = {};
+  c.dynamics.integration.damping = {};
   const TransportSummary conservative = run_transport_study(c, {1, "", false, nullptr});
   std::printf("  max |H + dissipated - H0| / H0 = %.2e; conservative |H - H0| / H0 = %.2e\n", one.max_energy_error,
               conservative.max_energy_error);
@@ -71,7 +71,7 @@ TEST(BeyondEnsemble, DampedEnsembleIsBitIdenticalForOneAndTwoThreads) {
 
 TEST(BeyondEnsemble, TangentMapAndDampingTogetherAreRejected) {
   TransportCase c = lyapunov_case();
-  c.dynamics.damping = {1e-3, 0};
+  c.dynamics.integration.damping = {1e-3, 0};
   EXPECT_THROW(validate(c.dynamics, c.chain.N), InvalidInput);
 }
 

@@ -23,8 +23,8 @@ TransportCase base() {
   c.site = 120;
   c.realizations = 7;
   c.profile_realizations = 3;
-  c.dynamics.duration = 2e-3;
-  c.dynamics.time_step = 0.5e-6;
+  c.dynamics.integration.duration = 2e-3;
+  c.dynamics.integration.time_step = 0.5e-6;
   c.fit_begin = 1e-3;
   c.fit_end = 2e-3;
   return c;
@@ -83,24 +83,25 @@ std::vector<std::pair<std::string, TransportCase>> families(const std::string& d
     c.kick = Kick::velocity;
     c.match_beta = true;
   });
-  add("damped", [](TransportCase& c) { c.dynamics.damping = {.time = 1e-3, .kk_gamma = 2e-6}; });
-  add("mle",
-      [](TransportCase& c) { c.dynamics.lyapunov = {.enabled = true, .renormalize_every = 7, .time_unit = 2e-6}; });
+  add("damped", [](TransportCase& c) { c.dynamics.integration.damping = {.time = 1e-3, .kk_gamma = 2e-6}; });
+  add("mle", [](TransportCase& c) {
+    c.dynamics.integration.lyapunov = {.enabled = true, .renormalize_every = 7, .time_unit = 2e-6};
+  });
   for (const char* scheme : {"saba2", "aba864", "srkn14a"})
-    add(scheme, [&](TransportCase& c) { c.dynamics.integrator = parse_integrator(scheme); });
+    add(scheme, [&](TransportCase& c) { c.dynamics.integration.integrator = parse_integrator(scheme); });
   add("reference", [](TransportCase& c) {
-    c.dynamics.integrator = parse_integrator("reference");
-    c.dynamics.integrator.tolerance.max_step = 2e-8;
+    c.dynamics.integration.integrator = parse_integrator("reference");
+    c.dynamics.integration.integrator.tolerance.max_step = 2e-8;
   });
   add("no fit", [](TransportCase& c) { c.fit = false; });
   add("observed otherwise", [](TransportCase& c) {
     c.centre = SpreadCentre::centroid;
-    c.dynamics.force_law = ForceLawKind::fpu;
-    c.dynamics.samples = 33;
-    c.dynamics.sampling = Sampling::uniform;
-    c.dynamics.window = {.enabled = false, .threshold = 1e-20};
-    c.dynamics.max_energy_error = 1e-6;
-    c.dynamics.stop_on_energy_error = false;
+    c.dynamics.integration.force_law = ForceLawKind::fpu;
+    c.dynamics.spread.samples = 33;
+    c.dynamics.spread.sampling = Sampling::uniform;
+    c.dynamics.integration.window = {.enabled = false, .threshold = 1e-20};
+    c.dynamics.spread.max_energy_error = 1e-6;
+    c.dynamics.spread.stop_on_energy_error = false;
     c.criterion = {.kappa = 0.2, .t_start = 1.5e-3};
     c.bootstrap.resamples = 99;
     c.fit_step = 2e-5;

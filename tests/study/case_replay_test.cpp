@@ -12,7 +12,7 @@ TransportCase ensemble_case() {
   TransportCase c;
   c.chain.N = 11;
   c.site = 5;
-  c.dynamics.duration = 1e-4;
+  c.dynamics.integration.duration = 1e-4;
   c.fit = false;
   c.realizations = 5;
   c.profile_realizations = 5;
@@ -38,7 +38,7 @@ TEST(CaseReplay, ACaseTheArgumentsCannotSpellGetsTheFieldsThatDiffer) {
   const TransportCase c = ensemble_case();
   TransportCase other = c;
   other.realizations = 1, other.profile_realizations = 0;
-  other.dynamics.duration = 2e-4;
+  other.dynamics.integration.duration = 2e-4;
   const std::string expected = differing_fields(c, other);
   EXPECT_FALSE(expected.empty());
   const CaseSpelling lossy{[](const TransportCase&, std::uint64_t) { return std::vector<std::string>{}; },

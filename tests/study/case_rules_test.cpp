@@ -47,7 +47,7 @@ Energies by_hand(const std::vector<double>& radii, double f0, double alpha) {
 TransportCase paper_case(double alpha) {
   TransportCase c;  // A, q = ξ = 0.5, F0 = 10 N, a displacement kick
   c.alpha = alpha;
-  c.dynamics.duration = 1e-3;
+  c.dynamics.integration.duration = 1e-3;
   c.fit = false;
   return c;
 }
@@ -73,7 +73,7 @@ TEST(CaseRules, AutoDecidesOnTheKTypesDrawn) {
   EXPECT_FALSE(bonds_stay_closed(types));
   const nlohmann::json rule = settle_scheme_and_step(types, true, false);
   EXPECT_FALSE(rule["integrator_choice"]["bonds_stay_closed"].get<bool>()) << rule.dump();
-  EXPECT_EQ(types.dynamics.integrator.name(), "saba2c");
+  EXPECT_EQ(types.dynamics.integration.integrator.name(), "saba2c");
   EXPECT_TRUE(settle_scheme_and_step(paper, true, false)["integrator_choice"]["bonds_stay_closed"].get<bool>());
 }
 
@@ -94,7 +94,7 @@ TEST(CaseRules, AutoDecidesOnARadiiFilesChain) {
   ASSERT_GE(energy, opening) << "the kick on the big beads can open a contact";
   EXPECT_FALSE(bonds_stay_closed(file));
   settle_scheme_and_step(file, true, false);
-  EXPECT_EQ(file.dynamics.integrator.name(), "saba2c");
+  EXPECT_EQ(file.dynamics.integration.integrator.name(), "saba2c");
 }
 
 // A mode kick decides on the real mode: mode 2221 of a 2501-bead chain exists (the old rule built
@@ -125,13 +125,13 @@ TEST(CaseRules, AutoTakesTheRealModeOfAModeKick) {
 TEST(CaseRules, AutoKeepsSaba2cWhenDamped) {
   TransportCase plain = paper_case(1e-7);
   settle_scheme_and_step(plain, true, false);
-  ASSERT_EQ(plain.dynamics.integrator.name(), "srkn14a");
+  ASSERT_EQ(plain.dynamics.integration.integrator.name(), "srkn14a");
   for (const Damping damping : {Damping{.time = 1e-3}, Damping{.kk_gamma = 1e-6}}) {
     TransportCase damped = paper_case(1e-7);
-    damped.dynamics.damping = damping;
+    damped.dynamics.integration.damping = damping;
     const nlohmann::json rule = settle_scheme_and_step(damped, true, false);
-    EXPECT_EQ(damped.dynamics.integrator.name(), "saba2c");
-    EXPECT_EQ(damped.dynamics.time_step, 1e-6);
+    EXPECT_EQ(damped.dynamics.integration.integrator.name(), "saba2c");
+    EXPECT_EQ(damped.dynamics.integration.time_step, 1e-6);
     EXPECT_TRUE(rule["integrator_choice"]["damped"].get<bool>());
     EXPECT_TRUE(rule["integrator_choice"]["bonds_stay_closed"].get<bool>());
   }

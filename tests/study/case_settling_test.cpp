@@ -32,9 +32,9 @@ std::string case_settling_named(F&& call) {
 }
 
 TEST(CaseSettling, ATimeStepPastStabilityIsNamedBeforeTheFitStepOnItsGrid) {
-  TransportCase c;              // the paper's A chain, 2,501 beads, fits sampled every 10 µs
-  c.dynamics.time_step = 1e-4;  // 10× the fit step, and ~10× the stability limit (~9.8 µs)
-  ASSERT_GT(c.dynamics.time_step, time_step_limit(c).max_time_step);
+  TransportCase c;                          // the paper's A chain, 2,501 beads, fits sampled every 10 µs
+  c.dynamics.integration.time_step = 1e-4;  // 10× the fit step, and ~10× the stability limit (~9.8 µs)
+  ASSERT_GT(c.dynamics.integration.time_step, time_step_limit(c).max_time_step);
   EXPECT_EQ(case_settling_named([&] { validate(c); }), "fit_step");  // the order this replaces
   EXPECT_EQ(case_settling_named([&] { validate_before_time_step(c); }), "");
   std::string warning;
@@ -43,7 +43,7 @@ TEST(CaseSettling, ATimeStepPastStabilityIsNamedBeforeTheFitStepOnItsGrid) {
 
 TEST(CaseSettling, AStableTimeStepStillHasItsGridChecked) {
   TransportCase c;
-  c.dynamics.time_step = 2e-6;  // stable; T = 5000 steps, but the fit step 5 µs is 2.5 steps
+  c.dynamics.integration.time_step = 2e-6;  // stable; T = 5000 steps, but the fit step 5 µs is 2.5 steps
   c.fit_step = 5e-6;
   std::string warning;
   EXPECT_EQ(case_settling_named([&] { validate_and_settle(c, false, true, "--T", warning); }), "fit_step");
@@ -58,7 +58,7 @@ TEST(CaseSettling, TheDurationWarningUsesTheRulesOmegaMax) {
   c.chain.N = 101;
   c.site = 50;
   c.fit = false;
-  c.dynamics.duration = 1;  // 1 s typed for 1 ms: waves cross 101 beads thousands of times
+  c.dynamics.integration.duration = 1;  // 1 s typed for 1 ms: waves cross 101 beads thousands of times
   std::string warning;
   const nlohmann::json rule = validate_and_settle(c, false, false, "--T", warning);
   const double omega_max = time_step_limit(c).omega_max;  // anew, as the warning once did
@@ -66,18 +66,18 @@ TEST(CaseSettling, TheDurationWarningUsesTheRulesOmegaMax) {
   EXPECT_EQ(warning, duration_warning(c, omega_max, "--T"));
   EXPECT_EQ(warning.rfind("--T 1:", 0), 0u) << warning;
   // At the threshold: v T = 10 × the 51 beads to the nearer wall, v = ω_max/2; just below it, none.
-  c.dynamics.duration = 0.99 * 10 * 51 / (omega_max / 2);
+  c.dynamics.integration.duration = 0.99 * 10 * 51 / (omega_max / 2);
   EXPECT_EQ(duration_warning(c, omega_max, "--T"), "");
-  c.dynamics.duration = 1.01 * 10 * 51 / (omega_max / 2);
+  c.dynamics.integration.duration = 1.01 * 10 * 51 / (omega_max / 2);
   EXPECT_NE(duration_warning(c, omega_max, "--T"), "");
 }
 
 TEST(CaseSettling, TheReferenceIntegratorStillBoundsTheWaves) {
   TransportCase c;
-  c.dynamics.integrator = parse_integrator("reference");
+  c.dynamics.integration.integrator = parse_integrator("reference");
   const TimeStepLimit limit = time_step_limit(c);
   TransportCase split = c;
-  split.dynamics.integrator = saba2c();
+  split.dynamics.integration.integrator = saba2c();
   EXPECT_EQ(limit.omega_max, time_step_limit(split).omega_max);  // the chain's bound, not the scheme's
   EXPECT_EQ(limit.max_time_step, std::numeric_limits<double>::infinity());
 }

@@ -21,9 +21,9 @@ TransportCase long_case(Disorder d, double f0, Kick kick, double duration) {
   c.chain.disorder = d;
   c.chain.F0 = f0;
   c.kick = kick;
-  c.dynamics.duration = duration;
+  c.dynamics.integration.duration = duration;
   c.fit = false;
-  c.dynamics.samples = 40;
+  c.dynamics.spread.samples = 40;
   c.realizations = 3;
   return c;
 }
@@ -71,8 +71,8 @@ TEST(ChainLengthRule, TheWallGuardNeverFiresAtTheAutomaticN) {
           EXPECT_FALSE(s.reached_walls) << f0 << " " << to_string(kick) << " " << to_string(d);
           EXPECT_EQ(s.wall_energy, 0.0);
           const double reach = static_cast<double>(std::max(c.site - s.window_begin, s.window_end - 1 - c.site));
-          EXPECT_LT(reach, length.max_group_velocity * c.dynamics.duration) << f0 << " " << to_string(kick);
-          fastest = std::max(fastest, reach / (length.max_group_velocity * c.dynamics.duration));
+          EXPECT_LT(reach, length.max_group_velocity * c.dynamics.integration.duration) << f0 << " " << to_string(kick);
+          fastest = std::max(fastest, reach / (length.max_group_velocity * c.dynamics.integration.duration));
         }
         const TransportSummary summary = run_transport_study(c, {1, "", false, nullptr});
         EXPECT_EQ(summary.reached_walls, 0u);

@@ -153,7 +153,7 @@ TEST(ModeKick, TransportCaseRunsAModeKick) {
   c.site = 50;
   c.kick = Kick::mode;
   c.mode = {.near_khz = 30, .energy = 1e-7};
-  c.dynamics.duration = 1e-4;
+  c.dynamics.integration.duration = 1e-4;
   c.fit = false;
   c.realizations = 1;
   validate(c);

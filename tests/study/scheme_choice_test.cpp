@@ -28,7 +28,7 @@ TEST(SchemeChoice, SonicVacuumAndStrongKicksOpenContacts) {
   EXPECT_FALSE(bonds_stay_closed(homogeneous(0, 1e-7)));
   EXPECT_FALSE(bonds_stay_closed(homogeneous(10, 1e-5)));  // stretches a bond past its overlap
   TransportCase linear = homogeneous(0, 1e-5);
-  linear.dynamics.force_law = ForceLawKind::linear;
+  linear.dynamics.integration.force_law = ForceLawKind::linear;
   EXPECT_TRUE(bonds_stay_closed(linear));
 }
 
@@ -70,15 +70,15 @@ TEST(SchemeChoice, SettlesOneSchemeAndStepForAStudy) {
   open.chain.F0 = 0;
   std::vector<TransportCase> one{closed};
   const nlohmann::json rule = settle_scheme_and_step(one, true, false);
-  EXPECT_EQ(one.front().dynamics.integrator.name(), "srkn14a");
-  EXPECT_EQ(one.front().dynamics.time_step, 5e-6);
+  EXPECT_EQ(one.front().dynamics.integration.integrator.name(), "srkn14a");
+  EXPECT_EQ(one.front().dynamics.integration.time_step, 5e-6);
   EXPECT_EQ(rule["integrator_choice"]["integrator"], "srkn14a");
   EXPECT_EQ(rule["time_step_given"], false);
   std::vector<TransportCase> both{closed, open};
   settle_scheme_and_step(both, true, false);
   for (const TransportCase& c : both) {
-    EXPECT_EQ(c.dynamics.integrator.name(), "saba2c");
-    EXPECT_EQ(c.dynamics.time_step, 1e-6);
+    EXPECT_EQ(c.dynamics.integration.integrator.name(), "saba2c");
+    EXPECT_EQ(c.dynamics.integration.time_step, 1e-6);
   }
   std::vector<TransportCase> given{closed};
   try {
@@ -90,7 +90,7 @@ TEST(SchemeChoice, SettlesOneSchemeAndStepForAStudy) {
   // Not automatic: the time-step rule alone, the scheme untouched.
   std::vector<TransportCase> plain{closed};
   const nlohmann::json same = settle_scheme_and_step(plain, false, false);
-  EXPECT_EQ(plain.front().dynamics.integrator.name(), "saba2c");
+  EXPECT_EQ(plain.front().dynamics.integration.integrator.name(), "saba2c");
   EXPECT_FALSE(same.contains("integrator_choice"));
 }
 

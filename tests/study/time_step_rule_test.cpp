@@ -121,7 +121,7 @@ TEST(TimeStepRule, ThePapersCasesKeepOneMicrosecondSmallXiDoesNot) {
   EXPECT_LE(tau, bound);
   EXPECT_GT(tau * (1 + 1e-12), 1e-6 / std::ceil(1e-6 / bound));
   EXPECT_NEAR(1e-6 / tau, std::round(1e-6 / tau), 1e-9);
-  small.dynamics.time_step = 1e-6;
+  small.dynamics.integration.time_step = 1e-6;
   EXPECT_THROW(check_time_step(small, limit), InvalidInput);
 }
 

@@ -29,11 +29,11 @@ TEST(SpreadingFiles, WritesTheRunsFilesUncommittedUntilTold) {
   TransportCase c;
   c.chain.N = 21;
   c.site = 10;
-  c.dynamics.duration = 2e-5;
-  c.dynamics.samples = 5;
+  c.dynamics.integration.duration = 2e-5;
+  c.dynamics.spread.samples = 5;
   c.fit = false;
-  c.dynamics.force_sites = {3};
-  c.dynamics.map_samples = 5;
+  c.dynamics.forces.sites = {3};
+  c.dynamics.energy_map = EnergyMapObserver::Settings{.samples = 5};
   const Chain chain = c.chain.chain(0);
   const SpreadingResult run = run_spreading(chain, kick(c, chain).initial, spreading_config(c));
   SpreadingPaths paths = spreading_paths(scratch("one"), false, true, true);

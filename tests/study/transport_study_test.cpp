@@ -16,8 +16,8 @@ TransportCase short_case(std::size_t N, std::size_t realizations, double T, std:
   c.chain.N = N;
   c.site = N / 2;
   c.realizations = realizations;
-  c.dynamics.duration = T;
-  c.dynamics.samples = samples;
+  c.dynamics.integration.duration = T;
+  c.dynamics.spread.samples = samples;
   c.fit_begin = fit_begin;
   c.fit_end = T;
   c.criterion.t_start = fit_begin;
@@ -56,7 +56,7 @@ TEST(TransportStudy, HomogeneousPrecompressedEnsembleIsBallistic) {
   c.chain.N = 1401;
   c.site = 700;
   c.realizations = 2;
-  c.dynamics.samples = 100;
+  c.dynamics.spread.samples = 100;
   const TransportSummary s = run_transport_study(c, {0, "", false, nullptr});
   ASSERT_TRUE(s.exponents);
   const ExponentReport& g = s.exponents->gamma_site;

@@ -14,11 +14,11 @@
 
 #include "chain_options.hpp"
 #include "flag_table.hpp"
-#include "granular/dynamics/spreading.hpp"
 #include "granular/error.hpp"
 #include "granular/io/range_syntax.hpp"
 #include "granular/number_format.hpp"
 #include "granular/study/case_settling.hpp"
+#include "granular/study/spreading_run.hpp"
 #include "granular/study/time_step_rule.hpp"
 #include "granular/study/transport_choices.hpp"
 #include "granular/study/transport_study.hpp"
@@ -45,7 +45,7 @@ inline void add_lyapunov_options(CLI::App& app, BeyondOptions& o) {
 }
 
 /// granular::apply(BeyondChoices) (transport_choices.hpp), once --deviation is read.
-inline void apply(const BeyondOptions& o, SpreadingConfig& d) {
+inline void apply(const BeyondOptions& o, SpreadingRunConfig& d) {
   if (!o.deviation.empty() && !o.mle) throw InvalidInput("--deviation: needs --mle");
   if (o.deviation_samples < 2)
     throw InvalidInput("--deviation-samples " + std::to_string(o.deviation_samples) + ": at least 2");
@@ -103,10 +103,10 @@ inline const std::vector<Flag<DynamicsOptions>>& run_flags() {
       {"--max-energy-error", &O::max_energy_error, "guard: relative energy error that stops (or is reported), 0 = off"},
       {"--energy-guard", &O::energy_guard, "stop | warn: what passing --max-energy-error does"},
       {"--damping-time", &O::damping_time, "on-site viscous damping time tau_d [s] of -(m/tau_d) du/dt; 0 = none", true,
-       [](const TransportCase& c) { return c.dynamics.damping.time > 0; }},
+       [](const TransportCase& c) { return c.dynamics.integration.damping.time > 0; }},
       {"--kk-gamma", &O::kk_gamma,
        "Kuwabara-Kono contact damping gamma_KK [s]: bond force A[d]^{3/2} + gamma A [d]^{1/2} dd/dt; 0 = none", true,
-       [](const TransportCase& c) { return c.dynamics.damping.kk_gamma > 0; }},
+       [](const TransportCase& c) { return c.dynamics.integration.damping.kk_gamma > 0; }},
   };
   return flags;
 }
@@ -123,7 +123,7 @@ inline DynamicsOptions options_of(const TransportCase& c) {
   static_cast<BeyondChoices&>(o) = beyond_choices_of(c.dynamics);
   o.beta_text = c.match_beta ? "match" : format_number(c.beta);
   o.fit_text = format_number(c.fit_begin) + ":" + format_number(c.fit_end);
-  o.active_window_text = c.dynamics.window.enabled ? "on" : "off";
+  o.active_window_text = c.dynamics.integration.window.enabled ? "on" : "off";
   return o;
 }
 

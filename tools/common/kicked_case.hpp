@@ -56,7 +56,7 @@ inline KickedCase kicked_case(KickedCaseOptions& o, bool ensemble) {
   c.realizations = static_cast<std::size_t>(o.realizations);
   c.profile_realizations = 0;  // E_n(T) only when an output asks for it
   apply(o.dynamics, c);
-  c.fit = c.fit_end <= c.dynamics.duration * (1 + 1e-12);  // a window beyond T: no exponents, a note
+  c.fit = c.fit_end <= c.dynamics.integration.duration * (1 + 1e-12);  // a window beyond T: no exponents, a note
   return k;
 }
 

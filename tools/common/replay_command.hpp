@@ -52,7 +52,7 @@ inline std::vector<std::string> replay_flags(const TransportCase& c, std::uint64
   spell_flags(kick_flags(), dynamics, c, a);
   spell_flags(mode_flags(), options_of(c.mode), c, a);
   spell_flags(run_flags(), dynamics, c, a);
-  if (c.dynamics.lyapunov.enabled) {
+  if (c.dynamics.integration.lyapunov.enabled) {
     a.emplace_back("--mle");
     add("--renormalize", std::to_string(dynamics.renormalize));
   }

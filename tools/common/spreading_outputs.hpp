@@ -46,18 +46,20 @@ inline void apply(const SpreadingOutputs& o, TransportCase& c) {
                              {"--map-stride", o.map_stride},
                              {"--spectrum-samples", o.spectrum_samples}})
     if (value < 1) throw InvalidInput(std::string(name) + " " + std::to_string(value) + ": must be >= 1");
-  SpreadingConfig& d = c.dynamics;
+  SpreadingRunConfig& d = c.dynamics;
   for (long s : o.forces_at.empty() ? std::vector<long>{} : parse_integer_list(o.forces_at, "--forces-at")) {
     if (s < 1 || static_cast<std::size_t>(s) > c.chain.size())
       throw InvalidInput("--forces-at " + std::to_string(s) + ": outside the chain of " +
                          std::to_string(c.chain.size()) + " beads");
-    d.force_sites.push_back(static_cast<std::size_t>(s - 1));
+    d.forces.sites.push_back(static_cast<std::size_t>(s - 1));
   }
-  d.force_samples = static_cast<std::size_t>(o.force_samples);
-  d.map_samples = o.energy_map.empty() ? 0 : static_cast<std::size_t>(o.map_samples);
-  d.map_stride = static_cast<std::size_t>(o.map_stride);
-  d.spectrum_samples = o.spectrum.empty() ? 0 : static_cast<std::size_t>(o.spectrum_samples);
-  d.spectrum_source = parse_spectrum_source(o.spectrum_of);
+  d.forces.samples = static_cast<std::size_t>(o.force_samples);
+  const SpectrumSource source = parse_spectrum_source(o.spectrum_of);
+  if (!o.energy_map.empty())
+    d.energy_map =
+        EnergyMapObserver::Settings{static_cast<std::size_t>(o.map_samples), static_cast<std::size_t>(o.map_stride)};
+  if (!o.spectrum.empty())
+    d.spectrum = SpectralDensityObserver::Settings{static_cast<std::size_t>(o.spectrum_samples), source};
 }
 
 }  // namespace granular::tool

@@ -1,7 +1,7 @@
 #pragma once
 // Spectral density of N sampled series (docs/physics.md, "Nonlinear dynamics"): g(ν) = Σ_n |x̂_n(ν)|² / max_ν Σ_n |x̂_n(ν)|²,
 // x̂_n the DFT of x_n over K uniform samples. The paper's x is the displacement u; the velocity
-// is the other choice a run offers (spreading.hpp, SpectrumSource). FFTW plans once per (N, K) —
+// is the other choice a run offers (observers.hpp, SpectrumSource). FFTW plans once per (N, K) —
 // planning is where its cost and its only failure are — and the plan is executed on every call.
 #include <cstddef>
 #include <vector>

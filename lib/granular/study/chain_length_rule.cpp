@@ -15,17 +15,17 @@ ChainLength automatic_chain_length(const TransportCase& c) {
   if (c.kick == Kick::mode && !(c.mode.energy > 0))  // α bounds a mode's energy only for a known N
     throw InvalidInput("energy", ": a mode kick on the automatic N needs its energy, not its amplitude");
   TransportCase probe = c;  // ω_max depends on the chain and the kick, not on the scheme
-  probe.dynamics.integrator = saba2c();
+  probe.dynamics.integration.integrator = saba2c();
   probe.chain.N = 3;
   probe.chain.centred = false;
   probe.site = 1;
   ChainLength length;
   length.omega_max = time_step_limit(probe).omega_max;
   length.max_group_velocity = length.omega_max / 2;
-  length.reach = length.max_group_velocity * c.dynamics.duration;
+  length.reach = length.max_group_velocity * c.dynamics.integration.duration;
   const double half = std::ceil(length.safety * length.reach) + static_cast<double>(length.pad);
   if (!(half < 5e7))
-    throw InvalidInput("N", ": the automatic chain length for T = " + std::to_string(c.dynamics.duration) +
+    throw InvalidInput("N", ": the automatic chain length for T = " + std::to_string(c.dynamics.integration.duration) +
                                 " s passes 1e8 beads");
   length.n = 2 * static_cast<std::size_t>(half) + 1;
   return length;
@@ -44,9 +44,10 @@ std::string duration_warning(const TransportCase& c, double omega_max, const std
   if (c.site >= n) return "";  // validate() names it
   const double wall = static_cast<double>(std::min(c.site + 1, n - c.site));
   const double speed = omega_max / 2;
-  if (!(speed * c.dynamics.duration > 10 * wall)) return "";
-  return option + " " + format_number(c.dynamics.duration) + ": waves from the kick reach a wall after about " +
-         format_number(std::round(wall / speed * 1e6) / 1e6) + " s and cross the " + std::to_string(n) +
+  if (!(speed * c.dynamics.integration.duration > 10 * wall)) return "";
+  return option + " " + format_number(c.dynamics.integration.duration) +
+         ": waves from the kick reach a wall after about " + format_number(std::round(wall / speed * 1e6) / 1e6) +
+         " s and cross the " + std::to_string(n) +
          "-bead chain many times by T; T is in seconds (milliseconds typed as seconds?)";
 }
 

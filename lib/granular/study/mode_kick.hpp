@@ -6,7 +6,7 @@
 // released from rest, so under the linear force law the chain stays in that mode for ever.
 //
 //   auto k   = granular::mode_kick(chain, granular::ForceLawKind::hertz, {.near_khz = 30, .energy = 1e-7});
-//   auto run = granular::run_spreading(chain, k.initial, config);
+//   auto r   = granular::run_spreading(chain, k.initial, config);  // spreading_run.hpp
 #include <cstddef>
 #include <span>
 #include <vector>

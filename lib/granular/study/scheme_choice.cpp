@@ -21,7 +21,7 @@ double srkn14a_default_step(double omega_max) {
 }
 
 bool bonds_stay_closed(const TransportCase& c, const Chain* chain) {
-  if (c.dynamics.force_law != ForceLawKind::hertz) return true;
+  if (c.dynamics.integration.force_law != ForceLawKind::hertz) return true;
   if (!(c.chain.F0 > 0)) return false;
   const std::vector<Chain> chains = rule_chains(c, chain);
   const double energy = kick_energy_bound(c, chains, chain || !c.chain.drawn());
@@ -61,20 +61,20 @@ nlohmann::json settle_scheme_and_step(std::vector<TransportCase>& cases, bool au
   if (time_step_given)
     throw InvalidInput("dt", ": integrator auto chooses the time step too; leave it out or name a scheme");
   std::vector<TransportCase> trial = cases;  // SABA2C at its default step
-  for (TransportCase& c : trial) c.dynamics.integrator = saba2c();
+  for (TransportCase& c : trial) c.dynamics.integration.integrator = saba2c();
   settle_time_step(trial, false, chain);
   double omega_max = 0;
   bool closed = true, damped = false;
   for (const TransportCase& c : trial) {
     omega_max = std::max(omega_max, time_step_limit(c, chain).omega_max);
     closed = closed && bonds_stay_closed(c, chain);
-    damped = damped || c.dynamics.damping.any();
+    damped = damped || c.dynamics.integration.damping.any();
   }
   const SchemeChoice choice =
-      choose_scheme(trial.front().dynamics.time_step, srkn14a_default_step(omega_max), closed, damped);
+      choose_scheme(trial.front().dynamics.integration.time_step, srkn14a_default_step(omega_max), closed, damped);
   for (TransportCase& c : cases) {
-    c.dynamics.integrator = parse_integrator(choice.integrator);
-    c.dynamics.time_step = choice.time_step;
+    c.dynamics.integration.integrator = parse_integrator(choice.integrator);
+    c.dynamics.integration.time_step = choice.time_step;
   }
   nlohmann::json rule = settle_time_step(cases, true, chain);  // the chosen τ, checked against stability
   rule["time_step_given"] = false;

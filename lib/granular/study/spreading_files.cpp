@@ -121,7 +121,7 @@ void SpreadingFiles::commit() {
 }
 
 SpreadingFiles write_spreading_files(const SpreadingPaths& paths, const SpreadingResult& run,
-                                     const TransportSummary* ensemble, const SpreadingConfig& config) {
+                                     const TransportSummary* ensemble, const SpreadingRunConfig& config) {
   SpreadingFiles files;
   const auto open = [&](const std::string& path) -> std::ostream& {
     return files.text.emplace_back(std::make_unique<AtomicFile>(path))->stream();
@@ -130,10 +130,11 @@ SpreadingFiles write_spreading_files(const SpreadingPaths& paths, const Spreadin
   if (ensemble) write_standard_errors_csv(open(paths.sem), *ensemble);
   if (!paths.profile.empty())
     ensemble ? write_profile_csv(open(paths.profile), *ensemble) : write_profile_csv(open(paths.profile), run);
-  if (!paths.forces.empty()) write_forces_csv(open(paths.forces), run, config.force_sites);
+  if (!paths.forces.empty()) write_forces_csv(open(paths.forces), run, config.forces.sites);
   if (!paths.final_state.empty()) write_final_state_csv(open(paths.final_state), run);
   if (!paths.spectrum.empty()) write_spectrum_csv(open(paths.spectrum), run);
-  if (!paths.energy_map.empty()) files.energy_map = write_energy_map(paths.energy_map, run, config.map_stride);
+  if (!paths.energy_map.empty())
+    files.energy_map = write_energy_map(paths.energy_map, run, config.energy_map ? config.energy_map->stride : 1);
   if (!paths.deviation.empty()) write_deviation_csv(open(paths.deviation), run);
   return files;
 }

@@ -10,9 +10,9 @@
 
 #include <nlohmann/json_fwd.hpp>
 
-#include "granular/dynamics/spreading.hpp"
 #include "granular/io/atomic_file.hpp"
 #include "granular/io/hdf5_file.hpp"
+#include "granular/study/spreading_run.hpp"
 #include "granular/study/transport_study.hpp"
 
 namespace granular {
@@ -59,8 +59,8 @@ SpreadingPaths spreading_paths(const std::string& prefix, bool ensemble, bool pr
 
 /// Writes every file of `paths` but the JSON and the checkpoint: the means of `ensemble` where
 /// there is one (the curves, their standard errors, the profile), else those of `run`, and what
-/// only one realization has (forces at config.force_sites, final state, g(ν), energy map with
-/// config.map_stride, deviation vector) from `run`. Every file, the HDF5 map included, is returned
+/// only one realization has (forces at config.forces.sites, final state, g(ν), energy map with
+/// config.energy_map->stride, deviation vector) from `run`. Every file, the HDF5 map included, is returned
 /// under its temporary name, to be committed after the JSON (never an output without its metadata).
 struct SpreadingFiles {
   std::vector<std::unique_ptr<AtomicFile>> text;  ///< the CSVs
@@ -69,7 +69,7 @@ struct SpreadingFiles {
   void commit();
 };
 SpreadingFiles write_spreading_files(const SpreadingPaths& paths, const SpreadingResult& run,
-                                     const TransportSummary* ensemble, const SpreadingConfig& config);
+                                     const TransportSummary* ensemble, const SpreadingRunConfig& config);
 
 /// What a user must read after the run: the ensemble's warnings, the run's (none from a run not
 /// made), the notes on the case.

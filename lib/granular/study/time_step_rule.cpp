@@ -214,7 +214,7 @@ double kick_energy_bound(const TransportCase& c, const std::vector<Chain>& chain
   TransportCase probe = c;
   double energy = 0, bond = 0;
   for (const Chain& ch : chains) {
-    const ForceLaw law = make_force_law(c.dynamics.force_law, ch);
+    const ForceLaw law = make_force_law(c.dynamics.integration.force_law, ch);
     for (std::size_t site = 0; site < ch.size(); ++site) {
       if (whole_chain && site != c.site) continue;
       probe.site = site;
@@ -233,9 +233,11 @@ TimeStepLimit time_step_limit(const TransportCase& c, const Chain* chain) {
   const double energy = kick_energy_bound(c, chains, chain || !c.chain.drawn());
   for (const Chain& ch : chains)
     limit.omega_max =
-        std::max(limit.omega_max, highest_frequency_bound(make_force_law(c.dynamics.force_law, ch), ch, energy));
-  if (c.dynamics.integrator.reference) return limit;  // adaptive: no step to bound (ω_max still bounds the waves)
-  limit.scheme_limit = stable_step_limit(c.dynamics.integrator.scheme);
+        std::max(limit.omega_max,
+                 highest_frequency_bound(make_force_law(c.dynamics.integration.force_law, ch), ch, energy));
+  if (c.dynamics.integration.integrator.reference)
+    return limit;  // adaptive: no step to bound (ω_max still bounds the waves)
+  limit.scheme_limit = stable_step_limit(c.dynamics.integration.integrator.scheme);
   limit.max_time_step = limit.scheme_limit / limit.omega_max;
   return limit;
 }
@@ -247,12 +249,13 @@ double default_time_step(const TimeStepLimit& limit, double preferred) {
 }
 
 void check_time_step(const TransportCase& c, const TimeStepLimit& limit) {
-  if (c.dynamics.time_step > limit.max_time_step)
-    throw InvalidInput("time_step",
-                       " " + format_number(c.dynamics.time_step) + " s: past the stability limit of " +
-                           c.dynamics.integrator.name() + " on this chain; the largest stable time step is " +
-                           format_number(limit.max_time_step) + " s (h* = " + format_number(limit.scheme_limit) +
-                           ", omega_max = " + format_number(limit.omega_max) + " rad/s)");
+  if (c.dynamics.integration.time_step > limit.max_time_step)
+    throw InvalidInput("time_step", " " + format_number(c.dynamics.integration.time_step) +
+                                        " s: past the stability limit of " + c.dynamics.integration.integrator.name() +
+                                        " on this chain; the largest stable time step is " +
+                                        format_number(limit.max_time_step) +
+                                        " s (h* = " + format_number(limit.scheme_limit) +
+                                        ", omega_max = " + format_number(limit.omega_max) + " rad/s)");
 }
 
 nlohmann::json to_json(const TimeStepLimit& limit) {
@@ -274,11 +277,12 @@ nlohmann::json settle_time_step(std::vector<TransportCase>& cases, bool dt_given
     tightest.omega_max = std::max(tightest.omega_max, limit.omega_max);  // the same scheme: the tightest has it
     if (dt_given) check_time_step(c, limit);
   }
-  const double tau = dt_given || cases.empty() ? 0 : default_time_step(tightest, cases.front().dynamics.time_step);
+  const double tau =
+      dt_given || cases.empty() ? 0 : default_time_step(tightest, cases.front().dynamics.integration.time_step);
   for (TransportCase& c : cases)
-    if (!dt_given) c.dynamics.time_step = tau;
+    if (!dt_given) c.dynamics.integration.time_step = tau;
   nlohmann::json rule = to_json(tightest);
-  if (!cases.empty()) rule["time_step_s"] = cases.front().dynamics.time_step;
+  if (!cases.empty()) rule["time_step_s"] = cases.front().dynamics.integration.time_step;
   rule["time_step_given"] = dt_given;
   return rule;
 }

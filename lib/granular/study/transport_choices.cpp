@@ -27,21 +27,21 @@ void apply(const TransportChoices& o, TransportCase& c) {
                                    " beads (1..N, 0 = centre)");
   c.site = o.site == 0 ? (n - 1) / 2 : static_cast<std::size_t>(o.site - 1);
   c.centre = parse_spread_centre(o.centre);
-  SpreadingConfig& d = c.dynamics;
-  d.duration = o.duration;
-  d.time_step = o.time_step;
-  d.integrator = parse_integrator(o.integrator);
-  d.force_law = parse_force_law(o.force_law);
+  SpreadingRunConfig& d = c.dynamics;
+  d.integration.duration = o.duration;
+  d.integration.time_step = o.time_step;
+  d.integration.integrator = parse_integrator(o.integrator);
+  d.integration.force_law = parse_force_law(o.force_law);
   if (o.samples < 2) throw InvalidInput("samples", " " + std::to_string(o.samples) + ": at least 2");
-  d.samples = static_cast<std::size_t>(o.samples);
-  d.sampling = parse_sampling(o.sampling);
-  d.window.enabled = o.active_window;
-  d.window.threshold = finite_non_negative(o.window_threshold, "window_threshold");
-  d.integrator.tolerance.max_step = finite_non_negative(o.reference_max_step, "reference_max_step");
-  d.max_energy_error = finite_non_negative(o.max_energy_error, "max_energy_error");
+  d.spread.samples = static_cast<std::size_t>(o.samples);
+  d.spread.sampling = parse_sampling(o.sampling);
+  d.integration.window.enabled = o.active_window;
+  d.integration.window.threshold = finite_non_negative(o.window_threshold, "window_threshold");
+  d.integration.integrator.tolerance.max_step = finite_non_negative(o.reference_max_step, "reference_max_step");
+  d.spread.max_energy_error = finite_non_negative(o.max_energy_error, "max_energy_error");
   if (o.energy_guard != "stop" && o.energy_guard != "warn")
     throw InvalidInput("energy_guard", " '" + o.energy_guard + "': stop or warn");
-  d.stop_on_energy_error = o.energy_guard == "stop";
+  d.spread.stop_on_energy_error = o.energy_guard == "stop";
   if (!(o.fit_begin > 0) || !(o.fit_end > o.fit_begin))
     throw InvalidInput("fit", " " + format_number(o.fit_begin) + ":" + format_number(o.fit_end) +
                                   ": expected start:stop with 0 < start < stop [s]");
@@ -56,46 +56,46 @@ void apply(const TransportChoices& o, TransportCase& c) {
 }
 
 TransportChoices choices_of(const TransportCase& c) {
-  const SpreadingConfig& d = c.dynamics;
+  const SpreadingRunConfig& d = c.dynamics;
   TransportChoices o;
   o.alpha = c.alpha;
   o.beta = c.match_beta ? std::nullopt : std::optional(c.beta);
   o.site = static_cast<long long>(c.site) + 1;
   o.centre = to_string(c.centre);
-  o.duration = d.duration;
-  o.time_step = d.time_step;
-  o.integrator = d.integrator.name();
-  o.force_law = to_string(d.force_law);
-  o.samples = static_cast<long long>(d.samples);
-  o.sampling = to_string(d.sampling);
+  o.duration = d.integration.duration;
+  o.time_step = d.integration.time_step;
+  o.integrator = d.integration.integrator.name();
+  o.force_law = to_string(d.integration.force_law);
+  o.samples = static_cast<long long>(d.spread.samples);
+  o.sampling = to_string(d.spread.sampling);
   o.fit_begin = c.fit_begin;
   o.fit_end = c.fit_end;
   o.fit_step = c.fit_step;
   o.t_star = c.criterion.t_start;
   o.kappa = c.criterion.kappa;
   o.bootstrap = static_cast<long long>(c.bootstrap.resamples);
-  o.active_window = d.window.enabled;
-  o.window_threshold = d.window.threshold;
-  o.reference_max_step = d.integrator.tolerance.max_step;
-  o.max_energy_error = d.max_energy_error;
-  o.energy_guard = d.stop_on_energy_error ? "stop" : "warn";
+  o.active_window = d.integration.window.enabled;
+  o.window_threshold = d.integration.window.threshold;
+  o.reference_max_step = d.integration.integrator.tolerance.max_step;
+  o.max_energy_error = d.spread.max_energy_error;
+  o.energy_guard = d.spread.stop_on_energy_error ? "stop" : "warn";
   return o;
 }
 
-BeyondChoices beyond_choices_of(const SpreadingConfig& d) {
-  return {.damping_time = d.damping.time,
-          .kk_gamma = d.damping.kk_gamma,
-          .mle = d.lyapunov.enabled,
-          .renormalize = static_cast<long long>(d.lyapunov.renormalize_every),
+BeyondChoices beyond_choices_of(const SpreadingRunConfig& d) {
+  return {.damping_time = d.integration.damping.time,
+          .kk_gamma = d.integration.damping.kk_gamma,
+          .mle = d.integration.lyapunov.enabled,
+          .renormalize = static_cast<long long>(d.integration.lyapunov.renormalize_every),
           .deviation_samples = static_cast<long long>(d.deviation_samples)};
 }
 
-void apply(const BeyondChoices& o, SpreadingConfig& d) {
-  d.damping = {o.damping_time, o.kk_gamma};
-  validate(d.damping);
-  d.lyapunov.enabled = o.mle;
+void apply(const BeyondChoices& o, SpreadingRunConfig& d) {
+  d.integration.damping = {o.damping_time, o.kk_gamma};
+  validate(d.integration.damping);
+  d.integration.lyapunov.enabled = o.mle;
   if (o.renormalize < 1) throw InvalidInput("renormalize", " " + std::to_string(o.renormalize) + ": at least 1");
-  d.lyapunov.renormalize_every = static_cast<std::size_t>(o.renormalize);
+  d.integration.lyapunov.renormalize_every = static_cast<std::size_t>(o.renormalize);
   if (o.deviation_samples != 0 && !o.mle) throw InvalidInput("deviation_samples", ": needs mle (the tangent map)");
   if (o.deviation_samples < 0 || o.deviation_samples == 1)
     throw InvalidInput("deviation_samples", " " + std::to_string(o.deviation_samples) + ": 0 (none) or at least 2");

@@ -52,11 +52,11 @@ struct BeyondChoices {
   long long deviation_samples = 0;  ///< times of the deviation vector's distribution (0 = none, else ≥ 2; needs mle)
 };
 
-/// Sets d.damping, d.lyapunov and d.deviation_samples. Throws InvalidInput naming the choice
+/// Sets d.integration.damping, d.integration.lyapunov and d.deviation_samples. Throws InvalidInput naming the choice
 /// (`damping_time`, `kk_gamma`, `renormalize`, `deviation_samples`).
-void apply(const BeyondChoices& choices, SpreadingConfig& d);
+void apply(const BeyondChoices& choices, SpreadingRunConfig& d);
 
 /// The choices that give `d`'s damping and tangent map (the inverse of apply).
-BeyondChoices beyond_choices_of(const SpreadingConfig& d);
+BeyondChoices beyond_choices_of(const SpreadingRunConfig& d);
 
 }  // namespace granular

@@ -47,9 +47,9 @@ void validate_before_time_step(const TransportCase& c) {
   validate_step_and_duration(integration_config(c.dynamics));  // T and τ first: a fit window is judged against them
   if (c.fit && (!(c.fit_begin > 0) || !(c.fit_end > c.fit_begin) || !std::isfinite(c.fit_end)))
     throw InvalidInput("fit", ": need 0 < start < stop");
-  if (c.fit && c.fit_end > c.dynamics.duration * (1 + 1e-12))
+  if (c.fit && c.fit_end > c.dynamics.integration.duration * (1 + 1e-12))
     throw InvalidInput("fit", " " + format_number(c.fit_begin) + ":" + format_number(c.fit_end) +
-                                  ": reaches beyond the duration T = " + format_number(c.dynamics.duration));
+                                  ": reaches beyond the duration T = " + format_number(c.dynamics.integration.duration));
   if (!(c.criterion.kappa > 0) || !std::isfinite(c.criterion.kappa))
     throw InvalidInput("kappa", " " + format_number(c.criterion.kappa) + ": must be finite and > 0");
   if (!(c.criterion.t_start >= 0) || !std::isfinite(c.criterion.t_start))
@@ -73,11 +73,11 @@ void validate(const TransportCase& c) {
   validate_before_time_step(c);
   const std::size_t n = c.chain.size();
   validate(c.dynamics, n);  // on τ's grid: T and every sampling a whole number of steps
-  const SpreadingConfig config = spreading_config(c);
+  const SpreadingRunConfig config = spreading_config(c);
   validate(config, n);
   if (c.fit) {  // a fit that cannot work is bad input, found before the run rather than after it
     std::vector<double> t;
-    for (auto step : sample_steps(config)) t.push_back(static_cast<double>(step) * config.time_step);
+    for (auto step : sample_steps(config)) t.push_back(static_cast<double>(step) * config.integration.time_step);
     try {
       windowed_exponent(t, t, c.fit_begin, c.fit_end);
     } catch (const InvalidInput& e) {
@@ -87,27 +87,28 @@ void validate(const TransportCase& c) {
   }
 }
 
-SpreadingConfig spreading_config(const TransportCase& c) {
-  SpreadingConfig config = c.dynamics;
-  config.site = c.site;
-  config.dense = c.fit ? DenseGrid{c.fit_begin, c.fit_end, c.fit_step} : DenseGrid{};
+SpreadingRunConfig spreading_config(const TransportCase& c) {
+  SpreadingRunConfig config = c.dynamics;
+  config.spread.site = c.site;
+  config.spread.dense = c.fit ? DenseGrid{c.fit_begin, c.fit_end, c.fit_step} : DenseGrid{};
   return config;
 }
 
 KickedChain kick(const TransportCase& c, const Chain& chain) {
   if (c.kick == Kick::displacement) return {displacement_kick(chain, c.site, c.alpha), 0.0, {}};
   if (c.kick == Kick::mode) {
-    ModeKickResult mode = mode_kick(chain, c.dynamics.force_law, mode_of(c));
+    ModeKickResult mode = mode_kick(chain, c.dynamics.integration.force_law, mode_of(c));
     State initial = mode.initial;
     return {std::move(initial), 0.0, std::move(mode)};
   }
   const double beta =
-      c.match_beta ? matched_velocity(make_force_law(c.dynamics.force_law, chain), chain, c.site, c.alpha) : c.beta;
+      c.match_beta ? matched_velocity(make_force_law(c.dynamics.integration.force_law, chain), chain, c.site, c.alpha)
+                   : c.beta;
   return {velocity_kick(chain, c.site, beta), beta, {}};
 }
 
 static nlohmann::json describe_conservative(const TransportCase& c) {
-  const SpreadingConfig& d = c.dynamics;
+  const SpreadingRunConfig& d = c.dynamics;
   const bool uses_alpha = c.kick == Kick::displacement || c.match_beta || (c.kick == Kick::mode && c.mode.energy == 0);
   nlohmann::json beta = nullptr;  // the values used: α only where the kick uses it, β only for a velocity kick
   if (c.kick == Kick::velocity) beta = c.match_beta ? nlohmann::json("match") : nlohmann::json(c.beta);
@@ -116,22 +117,22 @@ static nlohmann::json describe_conservative(const TransportCase& c) {
                               {"beta_m_s", beta},
                               {"site", c.site + 1},
                               {"m2_centre", to_string(c.centre)},
-                              {"T_s", d.duration},
-                              {"dt_s", d.time_step},
-                              {"integrator", d.integrator.name()},
-                              {"force_law", to_string(d.force_law)},
-                              {"samples", d.samples},
-                              {"sampling", to_string(d.sampling)},
+                              {"T_s", d.integration.duration},
+                              {"dt_s", d.integration.time_step},
+                              {"integrator", d.integration.integrator.name()},
+                              {"force_law", to_string(d.integration.force_law)},
+                              {"samples", d.spread.samples},
+                              {"sampling", to_string(d.spread.sampling)},
                               {"fit_s", c.fit ? nlohmann::json({c.fit_begin, c.fit_end}) : nlohmann::json(nullptr)},
                               {"fit_step_s", c.fit_step},
                               {"kappa", c.criterion.kappa},
                               {"t_star_s", c.criterion.t_start},
                               {"bootstrap_resamples", c.bootstrap.resamples},
                               {"bootstrap_seed", c.bootstrap.seed},
-                              {"active_window", d.window.enabled},
-                              {"window_threshold", d.window.threshold},
-                              {"max_energy_error", d.max_energy_error},
-                              {"stop_on_energy_error", d.stop_on_energy_error},
+                              {"active_window", d.integration.window.enabled},
+                              {"window_threshold", d.integration.window.threshold},
+                              {"max_energy_error", d.spread.max_energy_error},
+                              {"stop_on_energy_error", d.spread.stop_on_energy_error},
                               {"realizations", c.realizations},
                               {"profile_realizations", std::min(c.profile_realizations, c.realizations)}};
   describe_fields(c.chain, described);
@@ -146,12 +147,14 @@ static nlohmann::json describe_conservative(const TransportCase& c) {
 nlohmann::json describe(const TransportCase& c) {
   nlohmann::json j = describe_conservative(c);
   // Only when switched on, so that conservative runs keep their parameters (and checkpoints).
-  const SpreadingConfig& d = c.dynamics;
-  if (d.damping.any()) j["damping"] = {{"time_s", d.damping.time}, {"kk_gamma_s", d.damping.kk_gamma}};
-  if (d.integrator.reference) j["reference_max_step_s"] = d.integrator.tolerance.max_step;  // only then it matters
-  if (d.lyapunov.enabled)
-    j["lyapunov"] = {{"renormalize_every", d.lyapunov.renormalize_every},
-                     {"norm_time_unit_s", d.lyapunov.time_unit},
+  const SpreadingRunConfig& d = c.dynamics;
+  if (d.integration.damping.any())
+    j["damping"] = {{"time_s", d.integration.damping.time}, {"kk_gamma_s", d.integration.damping.kk_gamma}};
+  if (d.integration.integrator.reference)
+    j["reference_max_step_s"] = d.integration.integrator.tolerance.max_step;  // only then it matters
+  if (d.integration.lyapunov.enabled)
+    j["lyapunov"] = {{"renormalize_every", d.integration.lyapunov.renormalize_every},
+                     {"norm_time_unit_s", d.integration.lyapunov.time_unit},
                      {"initial_deviation", "du = 1, dv = 1/time_unit on the kicked bead"}};
   return j;
 }
@@ -168,15 +171,15 @@ TransportCase parse_case(const nlohmann::json& j) {
     if (beta.is_number()) c.beta = beta.get<double>();
     c.site = j.at("site").get<std::size_t>() - 1;
     c.centre = parse_spread_centre(j.at("m2_centre").get<std::string>());
-    SpreadingConfig& d = c.dynamics;
-    d.duration = j.at("T_s").get<double>();
-    d.time_step = j.at("dt_s").get<double>();
-    d.integrator = parse_integrator(j.at("integrator").get<std::string>());
+    SpreadingRunConfig& d = c.dynamics;
+    d.integration.duration = j.at("T_s").get<double>();
+    d.integration.time_step = j.at("dt_s").get<double>();
+    d.integration.integrator = parse_integrator(j.at("integrator").get<std::string>());
     if (j.contains("reference_max_step_s"))
-      d.integrator.tolerance.max_step = j.at("reference_max_step_s").get<double>();
-    d.force_law = parse_force_law(j.at("force_law").get<std::string>());
-    d.samples = j.at("samples").get<std::size_t>();
-    d.sampling = parse_sampling(j.at("sampling").get<std::string>());
+      d.integration.integrator.tolerance.max_step = j.at("reference_max_step_s").get<double>();
+    d.integration.force_law = parse_force_law(j.at("force_law").get<std::string>());
+    d.spread.samples = j.at("samples").get<std::size_t>();
+    d.spread.sampling = parse_sampling(j.at("sampling").get<std::string>());
     c.fit = !j.at("fit_s").is_null();
     if (c.fit) c.fit_begin = j.at("fit_s").at(0).get<double>(), c.fit_end = j.at("fit_s").at(1).get<double>();
     c.fit_step = j.at("fit_step_s").get<double>();
@@ -184,10 +187,10 @@ TransportCase parse_case(const nlohmann::json& j) {
     c.criterion.t_start = j.at("t_star_s").get<double>();
     c.bootstrap.resamples = j.at("bootstrap_resamples").get<std::size_t>();
     c.bootstrap.seed = j.at("bootstrap_seed").get<std::uint64_t>();
-    d.window.enabled = j.at("active_window").get<bool>();
-    d.window.threshold = j.at("window_threshold").get<double>();
-    d.max_energy_error = j.at("max_energy_error").get<double>();
-    d.stop_on_energy_error = j.at("stop_on_energy_error").get<bool>();
+    d.integration.window.enabled = j.at("active_window").get<bool>();
+    d.integration.window.threshold = j.at("window_threshold").get<double>();
+    d.spread.max_energy_error = j.at("max_energy_error").get<double>();
+    d.spread.stop_on_energy_error = j.at("stop_on_energy_error").get<bool>();
     c.realizations = j.at("realizations").get<std::size_t>();
     c.profile_realizations = j.at("profile_realizations").get<std::size_t>();
     if (j.contains("mode_kick")) {
@@ -197,13 +200,13 @@ TransportCase parse_case(const nlohmann::json& j) {
       if (!m.at("energy_J").is_null()) c.mode.energy = m.at("energy_J").get<double>();
     }
     if (j.contains("damping")) {
-      d.damping.time = j.at("damping").at("time_s").get<double>();
-      d.damping.kk_gamma = j.at("damping").at("kk_gamma_s").get<double>();
+      d.integration.damping.time = j.at("damping").at("time_s").get<double>();
+      d.integration.damping.kk_gamma = j.at("damping").at("kk_gamma_s").get<double>();
     }
     if (j.contains("lyapunov")) {
-      d.lyapunov.enabled = true;
-      d.lyapunov.renormalize_every = j.at("lyapunov").at("renormalize_every").get<std::size_t>();
-      d.lyapunov.time_unit = j.at("lyapunov").at("norm_time_unit_s").get<double>();
+      d.integration.lyapunov.enabled = true;
+      d.integration.lyapunov.renormalize_every = j.at("lyapunov").at("renormalize_every").get<std::size_t>();
+      d.integration.lyapunov.time_unit = j.at("lyapunov").at("norm_time_unit_s").get<double>();
     }
   } catch (const nlohmann::json::exception& e) {
     throw InvalidInput("case", std::string(": ") + e.what());
@@ -258,22 +261,22 @@ nlohmann::json to_json(const TransportExponents& e, SpreadCentre shown) {
        {{"gamma_site", to_json(e.gamma_site)}, {"gamma_centroid", to_json(e.gamma_centroid)}, {"eta", to_json(e.eta)}}}};
 }
 
-std::vector<std::string> warnings(const SpreadingResult& r, const SpreadingConfig& config) {
+std::vector<std::string> warnings(const SpreadingResult& r, const SpreadingRunConfig& config) {
   std::vector<std::string> w;
   if (r.reached_walls)
     w.push_back("energy reached the walls ((E_1 + E_N)/H0 up to " + format_number(r.wall_energy) +
                 "): the chain is too short for T");
   if (r.energy_guard_time >= 0)
-    w.push_back("relative energy error passed the guard max_energy_error = " + format_number(config.max_energy_error) +
-                " at t = " + format_number(r.energy_guard_time) + " s");
+    w.push_back("relative energy error passed the guard max_energy_error = " +
+                format_number(config.spread.max_energy_error) + " at t = " + format_number(r.energy_guard_time) + " s");
   return w;
 }
 
-std::vector<std::string> warnings(const TransportSummary& s, const SpreadingConfig& config) {
+std::vector<std::string> warnings(const TransportSummary& s, const SpreadingRunConfig& config) {
   std::vector<std::string> w;
-  if (config.max_energy_error > 0 && s.max_energy_error > config.max_energy_error)
+  if (config.spread.max_energy_error > 0 && s.max_energy_error > config.spread.max_energy_error)
     w.push_back("relative energy error reached " + format_number(s.max_energy_error) +
-                ", past the guard max_energy_error = " + format_number(config.max_energy_error));
+                ", past the guard max_energy_error = " + format_number(config.spread.max_energy_error));
   if (s.reached_walls > 0)
     w.push_back("energy reached the walls in " + std::to_string(s.reached_walls) + " of " +
                 std::to_string(s.realizations) + " realizations: the chain is too short for T");
@@ -282,59 +285,105 @@ std::vector<std::string> warnings(const TransportSummary& s, const SpreadingConf
 
 namespace {
 
-// What one realization leaves behind, and its flat form in the ensemble's rows and checkpoints:
-// m̃2 about the site | m̃2 about the centroid | P⁻¹ | energy error (each on the S sample times) |
-// max energy error | wall energy | X1 on the S sample times (only with the tangent map) |
-// E_n(T) (N, only for the first profile_realizations: profiles are long, and checkpoints hold
-// every row).
+// What one realization leaves behind, by name. Its row in the ensemble's results and checkpoints
+// keeps one order, which every checkpoint already written resumes with: m̃2 about the site | m̃2
+// about the centroid | P⁻¹ | energy error (each on the S sample times) | max energy error | wall
+// energy | X1 on the S sample times (only with the tangent map) | E_n(T) (N, only for the first
+// profile_realizations: profiles are long, and checkpoints hold every row).
 struct RealizationRecord {
-  static constexpr std::size_t series = 4;
-  enum Series { m2_site = 0, m2_centroid = 1, ipr = 2, energy_error = 3 };
-  static std::size_t offset(Series s, std::size_t samples) { return static_cast<std::size_t>(s) * samples; }
-  static std::size_t scalars(std::size_t samples) { return series * samples; }
-  static std::size_t profile(std::size_t samples) { return series * samples + 2; }
+  std::vector<double> m2_site, m2_centroid, ipr, energy_error;  ///< on the S sample times
+  double max_energy_error = 0, wall_energy = 0;
+  std::vector<double> mle;      ///< X1(t) on the sample times; empty without the tangent map
+  std::vector<double> profile;  ///< E_n(T); empty unless profiled
 
-  static std::vector<double> pack(const SpreadingResult& r, bool with_profile) {
-    std::vector<double> row;
-    row.reserve(profile(r.t.size()) + (with_profile ? r.final_energy.size() : 0));
-    for (const auto* s : {&r.m2, &r.m2_centroid, &r.ipr, &r.energy_error}) row.insert(row.end(), s->begin(), s->end());
-    row.push_back(r.max_energy_error);
-    row.push_back(r.wall_energy);
-    row.insert(row.end(), r.mle.begin(), r.mle.end());  // X1(t) when the tangent map runs
-    if (with_profile) row.insert(row.end(), r.final_energy.begin(), r.final_energy.end());
-    return row;
+  std::vector<double> row() const {
+    std::vector<double> out;
+    out.reserve(4 * m2_site.size() + 2 + mle.size() + profile.size());
+    for (const auto* s : {&m2_site, &m2_centroid, &ipr, &energy_error}) out.insert(out.end(), s->begin(), s->end());
+    out.push_back(max_energy_error);
+    out.push_back(wall_energy);
+    out.insert(out.end(), mle.begin(), mle.end());
+    out.insert(out.end(), profile.begin(), profile.end());
+    return out;
+  }
+
+  /// The record a row of S = `samples` holds, with X1 when `with_mle` and a profile of `beads`
+  /// (0: none); nullopt when the row has another length.
+  static std::optional<RealizationRecord> of_row(const std::vector<double>& row, std::size_t samples, bool with_mle,
+                                                 std::size_t beads) {
+    if (row.size() != 4 * samples + 2 + (with_mle ? samples : 0) + beads) return std::nullopt;
+    auto next = row.begin();
+    const auto take = [&](std::size_t n) {
+      std::vector<double> part(next, next + static_cast<long>(n));
+      next += static_cast<long>(n);
+      return part;
+    };
+    RealizationRecord r;
+    r.m2_site = take(samples);
+    r.m2_centroid = take(samples);
+    r.ipr = take(samples);
+    r.energy_error = take(samples);
+    r.max_energy_error = *next++;
+    r.wall_energy = *next++;
+    if (with_mle) r.mle = take(samples);
+    r.profile = take(beads);
+    return r;
   }
 };
 
-std::vector<double> realization_row(const TransportCase& c, std::uint64_t r) {
+/// One realization of `c`, measured by what the ensemble keeps: the energy spread, X1(t) with the
+/// tangent map, and E_n(T) when profiled.
+RealizationRecord measure_realization(const TransportCase& c, std::uint64_t r) {
   const Chain chain = c.chain.chain(r);
-  SpreadingConfig config = spreading_config(c);
-  config.force_sites.clear();
-  config.map_samples = 0;
-  config.spectrum_samples = 0;
-  return RealizationRecord::pack(run_spreading(chain, kick(c, chain).initial, config), r < c.profile_realizations);
+  const SpreadingRunConfig run = spreading_config(c);
+  EnergySpreadObserver energy(run.spread);
+  FinalStateObserver final_state;
+  std::optional<LyapunovObserver> lyapunov;
+  std::vector<Observer*> observers{&energy, &final_state};
+  if (run.integration.lyapunov.enabled) observers.push_back(&lyapunov.emplace(lyapunov_settings(run)));
+  spread(chain, kick(c, chain).initial, integration_config(run), observers);
+  RealizationRecord record{.m2_site = std::move(energy.m2),
+                           .m2_centroid = std::move(energy.m2_centroid),
+                           .ipr = std::move(energy.ipr),
+                           .energy_error = std::move(energy.energy_error),
+                           .max_energy_error = energy.max_energy_error,
+                           .wall_energy = energy.wall_energy,
+                           .mle = {},
+                           .profile = {}};
+  if (lyapunov) record.mle = std::move(lyapunov->mle);
+  if (r < c.profile_realizations) record.profile = std::move(final_state.energy);
+  return record;
 }
 
-// Realization errors of γ (both centres) and η: the bootstrap over the rows, on the fit window's
-// samples only (the only ones the statistics read).
+/// The non-empty `field` of every record, in order.
+std::vector<std::vector<double>> series_of(const std::vector<RealizationRecord>& records,
+                                           std::vector<double> RealizationRecord::*field) {
+  std::vector<std::vector<double>> out;
+  out.reserve(records.size());
+  for (const auto& record : records)
+    if (!(record.*field).empty()) out.push_back(record.*field);
+  return out;
+}
+
+// Realization errors of γ (both centres) and η: the bootstrap over the records, on the fit
+// window's samples only (the only ones the statistics read).
 void add_realization_errors(const TransportCase& c, const std::vector<double>& t,
-                            const std::vector<std::vector<double>>& rows, int threads, TransportExponents& e) {
+                            const std::vector<RealizationRecord>& records, int threads, TransportExponents& e) {
   std::vector<std::size_t> window;
   for (std::size_t i = 0; i < t.size(); ++i)
     if (t[i] >= c.fit_begin * (1 - 1e-9) && t[i] <= c.fit_end * (1 + 1e-9)) window.push_back(i);
-  const std::size_t g = window.size(), samples = t.size();
+  const std::size_t g = window.size();
   std::vector<double> t_fit;
   for (std::size_t i : window) t_fit.push_back(t[i]);
-  using R = RealizationRecord;
   std::vector<double> matrix;  // R × 3g: m̃2 site | m̃2 centroid | 1/P⁻¹ on the window
-  matrix.reserve(rows.size() * 3 * g);
-  for (const auto& row : rows) {
-    for (std::size_t i : window) matrix.push_back(row[R::offset(R::m2_site, samples) + i]);
-    for (std::size_t i : window) matrix.push_back(row[R::offset(R::m2_centroid, samples) + i]);
-    for (std::size_t i : window) matrix.push_back(row[R::offset(R::ipr, samples) + i]);
+  matrix.reserve(records.size() * 3 * g);
+  for (const auto& record : records) {
+    for (std::size_t i : window) matrix.push_back(record.m2_site[i]);
+    for (std::size_t i : window) matrix.push_back(record.m2_centroid[i]);
+    for (std::size_t i : window) matrix.push_back(record.ipr[i]);
   }
   std::vector<double> sd(6, 0.0);
-  if (rows.size() > 1) {
+  if (records.size() > 1) {
     BootstrapConfig config = c.bootstrap;
     config.threads = threads;
     sd = bootstrap_standard_deviation(
@@ -364,9 +413,9 @@ void add_realization_errors(const TransportCase& c, const std::vector<double>& t
 
 TransportSummary run_transport_study(const TransportCase& c, const StudyRunOptions& options) {
   validate(c);
-  const SpreadingConfig config = spreading_config(c);
+  const SpreadingRunConfig config = spreading_config(c);
   TransportSummary s;
-  for (auto step : sample_steps(config)) s.t.push_back(static_cast<double>(step) * config.time_step);
+  for (auto step : sample_steps(config)) s.t.push_back(static_cast<double>(step) * config.integration.time_step);
   const std::size_t samples = s.t.size();
 
   EnsembleOptions ensemble;
@@ -380,7 +429,7 @@ TransportSummary run_transport_study(const TransportCase& c, const StudyRunOptio
   ensemble.cancelled = options.cancelled;
   std::vector<std::vector<double>> rows = run_ensemble(ensemble, [&](std::uint64_t r, int) {
     try {
-      return realization_row(c, r);
+      return measure_realization(c, r).row();
     } catch (const NumericalError& e) {
       // Say which chain, so it can be replayed alone; or log it as failed: left out, listed.
       if (options.skip_failed) return std::vector<double>{};
@@ -389,13 +438,10 @@ TransportSummary run_transport_study(const TransportCase& c, const StudyRunOptio
   });
   if (!MpiContext::instance().root()) return s;
 
-  using R = RealizationRecord;
-  const std::size_t mle_samples = c.dynamics.lyapunov.enabled ? samples : 0;
-  const std::size_t width = R::profile(samples) + mle_samples;
+  const bool with_mle = c.dynamics.integration.lyapunov.enabled;
   const std::size_t all_profiled = std::min(c.profile_realizations, c.realizations);
-  std::size_t profiled = 0;  // realizations averaged into the profile: the first all_profiled, less the failed
-  std::vector<std::vector<double>> kept;
-  kept.reserve(rows.size());
+  std::vector<RealizationRecord> records;
+  records.reserve(rows.size());
   for (std::size_t r = 0; r < rows.size(); ++r) {
     if (rows[r].empty()) {  // failed, here or in the run this one resumes
       if (!options.skip_failed)
@@ -403,34 +449,34 @@ TransportSummary run_transport_study(const TransportCase& c, const StudyRunOptio
       s.excluded.push_back(r);
       continue;
     }
-    if (rows[r].size() != width + (r < all_profiled ? c.chain.size() : 0))
-      throw NumericalError("realization " + std::to_string(r) + " has a row of the wrong length");
-    profiled += r < all_profiled;
-    kept.push_back(std::move(rows[r]));
+    auto record = RealizationRecord::of_row(rows[r], samples, with_mle, r < all_profiled ? c.chain.size() : 0);
+    if (!record) throw NumericalError("realization " + std::to_string(r) + " has a row of the wrong length");
+    records.push_back(std::move(*record));
+    std::vector<double>().swap(rows[r]);
   }
-  rows = std::move(kept);
-  if (rows.empty()) throw NumericalError("every one of the " + std::to_string(c.realizations) + " realizations failed");
-  s.realizations = rows.size();
-  s.m2 = summarize(rows, R::offset(R::m2_site, samples), samples);
-  s.m2_centroid = summarize(rows, R::offset(R::m2_centroid, samples), samples);
-  s.ipr = summarize(rows, R::offset(R::ipr, samples), samples);
-  s.energy_error = summarize(rows, R::offset(R::energy_error, samples), samples);
-  for (const auto& row : rows) {
-    s.max_energy_error = std::fmax(s.max_energy_error, row[R::scalars(samples)]);
-    s.reached_walls += row[R::scalars(samples) + 1] > c.dynamics.wall_warning;
+  if (records.empty())
+    throw NumericalError("every one of the " + std::to_string(c.realizations) + " realizations failed");
+  s.realizations = records.size();
+  s.m2 = summarize(series_of(records, &RealizationRecord::m2_site));
+  s.m2_centroid = summarize(series_of(records, &RealizationRecord::m2_centroid));
+  s.ipr = summarize(series_of(records, &RealizationRecord::ipr));
+  s.energy_error = summarize(series_of(records, &RealizationRecord::energy_error));
+  for (const auto& record : records) {
+    s.max_energy_error = std::fmax(s.max_energy_error, record.max_energy_error);
+    s.reached_walls += record.wall_energy > c.dynamics.spread.wall_warning;
   }
-  if (mle_samples > 0) s.mle = summarize(rows, R::profile(samples), samples);
-  if (profiled > 0) s.profile = summarize(rows, width, c.chain.size(), profiled);
+  if (with_mle) s.mle = summarize(series_of(records, &RealizationRecord::mle));
+  s.profile = summarize(series_of(records, &RealizationRecord::profile));
   if (!c.fit) return s;
   s.exponents = transport_exponents(c, s.t, s.m2.mean, s.m2_centroid.mean, s.ipr.mean);
-  add_realization_errors(c, s.t, rows, options.threads, *s.exponents);
+  add_realization_errors(c, s.t, records, options.threads, *s.exponents);
   return s;
 }
 
 std::vector<std::string> notes(const TransportCase& c) {
-  if (c.fit || !(c.fit_end > c.dynamics.duration)) return {};
+  if (c.fit || !(c.fit_end > c.dynamics.integration.duration)) return {};
   return {"note: the fit window " + format_number(c.fit_begin) + ":" + format_number(c.fit_end) +
-          " s reaches beyond T = " + format_number(c.dynamics.duration) + " s; no exponents fitted"};
+          " s reaches beyond T = " + format_number(c.dynamics.integration.duration) + " s; no exponents fitted"};
 }
 
 }  // namespace granular

@@ -4,7 +4,7 @@
 // model (which chain), dynamics (how one realization evolves), ensemble (how many, where) and
 // analysis (what the averages say) meet; none of them knows about the others.
 //
-// Sampling: `dynamics.samples` log-spaced times from τ to T for the curves, replaced inside the
+// Sampling: `dynamics.spread.samples` log-spaced times from τ to T for the curves, replaced inside the
 // fit window by a uniform grid every `fit_step` (10 µs by default), where γ, η and L_d are taken.
 // The mean m̃2 is taken about the excited bead (the paper's definition, the default) and about the
 // energy centroid; both are fitted, both are reported.
@@ -21,13 +21,13 @@
 #include "granular/analysis/exponent_report.hpp"
 #include "granular/analysis/summary_statistics.hpp"
 #include "granular/dynamics/observables.hpp"
-#include "granular/dynamics/spreading.hpp"
 #include "granular/ensemble/run_options.hpp"
 #include "granular/error.hpp"
 #include "granular/model/chain_recipe.hpp"
 #include "granular/model/disorder.hpp"
 #include "granular/model/material.hpp"
 #include "granular/study/mode_kick.hpp"
+#include "granular/study/spreading_run.hpp"
 
 namespace granular {
 
@@ -50,7 +50,7 @@ struct TransportCase {
   ModeKick mode;                             ///< mode kick: which mode and its energy (or amplitude: α)
   std::size_t site = 1250;                   ///< 0-based kicked bead n0 (1251 counting from 1)
   SpreadCentre centre = SpreadCentre::site;  ///< which m̃2 the tables show (both are computed)
-  SpreadingConfig dynamics;                  ///< T, τ, integrator, force law, samples, window
+  SpreadingRunConfig dynamics;               ///< T, τ, integrator, force law, samples, guards, observers
   std::size_t realizations = 500;
   std::size_t profile_realizations =
       std::numeric_limits<std::size_t>::max();  ///< E_n(T) averaged over the first this many (0: none)
@@ -78,7 +78,7 @@ TransportCase parse_case(const nlohmann::json& described);
 
 /// The spreading run of one realization of `c`: its dynamics with the kicked site and the dense
 /// grid of the fit window.
-SpreadingConfig spreading_config(const TransportCase& c);
+SpreadingRunConfig spreading_config(const TransportCase& c);
 
 struct KickedChain {
   State initial;
@@ -104,7 +104,7 @@ struct TransportSummary {
   SeriesSummary m2, m2_centroid;                ///< m̃2 about the site and about the centroid [bead²]
   SeriesSummary ipr, energy_error;              ///< over realizations, at the sample times
   SeriesSummary profile;                        ///< site energies E_n at T (empty if not asked for)
-  SeriesSummary mle;                            ///< X1(t) [1/s] (empty unless dynamics.lyapunov.enabled)
+  SeriesSummary mle;                            ///< X1(t) [1/s] (empty unless dynamics.integration.lyapunov.enabled)
   std::optional<TransportExponents> exponents;  ///< with realization errors; absent when not fitted
   double max_energy_error = 0;                  ///< worst |H(t)−H0|/H0 of any realization
   std::size_t reached_walls = 0;                ///< realizations whose energy reached the walls
@@ -141,8 +141,8 @@ nlohmann::json to_json(const ExponentReport& report);
 nlohmann::json to_json(const TransportExponents& exponents, SpreadCentre shown);
 
 /// Warnings a user must see about a run or an ensemble (energy at the walls, the energy guard).
-std::vector<std::string> warnings(const SpreadingResult& run, const SpreadingConfig& config);
-std::vector<std::string> warnings(const TransportSummary& summary, const SpreadingConfig& config);
+std::vector<std::string> warnings(const SpreadingResult& run, const SpreadingRunConfig& config);
+std::vector<std::string> warnings(const TransportSummary& summary, const SpreadingRunConfig& config);
 /// Notes on the case itself, before any run: a fit window beyond T (no exponents fitted).
 std::vector<std::string> notes(const TransportCase& c);
 
