@@ -68,10 +68,13 @@ class Spectrum:
     result (clustered, chain, method, solver, selection, band_edges_khz, version; granular::describe_spectrum, as the
     tool writes it)."""
 
-    def __init__(self, values):
-        self._inverse_sqrt_mass = values.pop("inverse_sqrt_mass")
-        self.__dict__.update(values)
-        self.clustered = self.clustered.astype(bool)
+    def __init__(self, modes, inverse_sqrt_mass, metadata):
+        # what _core._SpectrumSolver._solve returns: the result (a _core._Modes), m^(-1/2), the metadata
+        for name in ("mode", "omega2", "freq_khz", "ipr", "residual", "N", "info"):
+            setattr(self, name, getattr(modes, name))
+        self.clustered = modes.clustered.astype(bool)
+        self.vectors = modes.vectors.reshape(len(self.omega2), self.N).T if modes.vectors.size else None
+        self.metadata, self._inverse_sqrt_mass = metadata, inverse_sqrt_mass
         self.mode.flags.writeable = False
 
     def displacements(self):
@@ -139,7 +142,7 @@ class SpectrumSolver(_core._SpectrumSolver):
     def solve(self, system, *, near=None, count=None, window=None):
         """The selected modes of a granular.Chain or granular.DynamicalMatrix (near, count / window as
         granular.spectrum's). Returns a granular.Spectrum."""
-        return Spectrum(self._solve(_system(system), _selection(near, count, window), False))
+        return Spectrum(*self._solve(_system(system), _selection(near, count, window), False))
 
 
 def dynamical_matrix(chain):
@@ -161,7 +164,7 @@ def spectrum(system, *, near=None, count=None, window=None, method="lapack", dri
              tolerance=0.0, subspace=0, lanes=8):
     selection = _selection(near, count, window)
     config = _config(method, driver, vectors, tolerance, subspace, lanes)
-    return Spectrum(_core._SpectrumSolver(config, method)._solve(_system(system), selection, True))
+    return Spectrum(*_core._SpectrumSolver(config, method)._solve(_system(system), selection, True))
 
 
 spectrum.__doc__ = (

@@ -55,32 +55,23 @@ class PyObserver : public Observer {
 }  // namespace
 
 void bind_observers(py::module_& m) {
-  py::class_<State>(m, "State")  // checked in granular/_observers.py
+  arrays(py::class_<State>(m, "State"), "u v", &State::u, &State::v)  // checked in granular/_observers.py
       .def(py::init([](std::vector<double> u, std::vector<double> v) {
         State s;
         s.u = std::move(u), s.v = std::move(v);
         return s;
-      }))
-      .def_property_readonly("u", [](const State& s) { return to_numpy(s.u); })
-      .def_property_readonly("v", [](const State& s) { return to_numpy(s.v); });
+      }));
   // Kicks and observers take their settings checked in granular/_observers.py (sites as 0-based indices).
   m.def("_displacement_kick",
         [](const PyChain& c, std::size_t site, double alpha) { return displacement_kick(c.chain, site, alpha); });
   m.def("_velocity_kick",
         [](const PyChain& c, std::size_t site, double beta) { return velocity_kick(c.chain, site, beta); });
 
-  py::class_<RunPlan>(m, "RunPlan")
-      .def_readonly("beads", &RunPlan::beads)
-      .def_readonly("total_steps", &RunPlan::total_steps)
-      .def_readonly("time_step", &RunPlan::time_step)
-      .def_readonly("duration", &RunPlan::duration);
-  py::class_<SnapshotCopy>(m, "Snapshot")
-      .def_readonly("step", &SnapshotCopy::step)
-      .def_readonly("t", &SnapshotCopy::t)
-      .def_property_readonly("u", [](const SnapshotCopy& s) { return to_numpy(s.u); })
-      .def_property_readonly("v", [](const SnapshotCopy& s) { return to_numpy(s.v); })
-      .def_property_readonly("energy", [](const SnapshotCopy& s) { return to_numpy(s.energy); })
-      .def_readonly("initial_energy", &SnapshotCopy::initial_energy);
+  readonly(py::class_<RunPlan>(m, "RunPlan"), "beads total_steps time_step duration", &RunPlan::beads,
+           &RunPlan::total_steps, &RunPlan::time_step, &RunPlan::duration);
+  using S = SnapshotCopy;
+  arrays(readonly(py::class_<S>(m, "Snapshot"), "step t initial_energy", &S::step, &S::t, &S::initial_energy),
+         "u v energy", &S::u, &S::v, &S::energy);
 
   py::class_<Observer, PyObserver>(m, "Observer")
       .def(py::init<>())
@@ -102,10 +93,9 @@ void bind_observers(py::module_& m) {
                &E::Settings::stop_on_energy_error, &E::Settings::wall_warning)
       .def_property("sampling", word_getter(&E::Settings::sampling),
                     word_setter(&E::Settings::sampling, parse_sampling));
-  arrays(py::class_<E, Observer>(m, "EnergySpread").def(py::init<const E::Settings&>()),
-         "t m2 m2_centroid ipr energy_error", &E::t, &E::m2, &E::m2_centroid, &E::ipr, &E::energy_error)
-      .def_readonly("max_energy_error", &E::max_energy_error)
-      .def_readonly("wall_energy", &E::wall_energy)
+  readonly(arrays(py::class_<E, Observer>(m, "EnergySpread").def(py::init<const E::Settings&>()),
+                  "t m2 m2_centroid ipr energy_error", &E::t, &E::m2, &E::m2_centroid, &E::ipr, &E::energy_error),
+           "max_energy_error wall_energy", &E::max_energy_error, &E::wall_energy)
       .def_property_readonly("reached_walls", &E::reached_walls)
       .def_property_readonly("energy_guard_time", [](const E& o) {
         return o.energy_guard_time < 0 ? py::object(py::none()) : py::float_(o.energy_guard_time);
