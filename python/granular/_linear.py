@@ -1,6 +1,7 @@
 """granular.spectrum, SpectrumSolver, DynamicalMatrix and band_edges: keywords, defaults and docstrings. The
 matrices and solvers are granular._core's (the library's), frequencies in kHz as the tools give them."""
 import operator
+import threading
 
 import numpy as np
 
@@ -137,12 +138,15 @@ class SpectrumSolver(_core._SpectrumSolver):
                "lanes=8): keywords as granular.spectrum's:\n" + _CONFIG_DOC)
 
     def __init__(self, *, method="lapack", driver="stevd", vectors=False, tolerance=0.0, subspace=0, lanes=8):
-        super().__init__(_config(method, driver, vectors, tolerance, subspace, lanes), method)
+        super().__init__(_config(method, driver, vectors, tolerance, subspace, lanes))
+        self._method, self._busy = method, threading.Lock()  # its workspace serves one call at a time
 
     def solve(self, system, *, near=None, count=None, window=None):
         """The selected modes of a granular.Chain or granular.DynamicalMatrix (near, count / window as
         granular.spectrum's). Returns a granular.Spectrum."""
-        return Spectrum(*self._solve(_system(system), _selection(near, count, window), False))
+        system, selection = _system(system), _selection(near, count, window)
+        with self._busy:
+            return Spectrum(*self._solve(self._method, system, selection, False))
 
 
 def dynamical_matrix(chain):
@@ -164,7 +168,7 @@ def spectrum(system, *, near=None, count=None, window=None, method="lapack", dri
              tolerance=0.0, subspace=0, lanes=8):
     selection = _selection(near, count, window)
     config = _config(method, driver, vectors, tolerance, subspace, lanes)
-    return Spectrum(*_core._SpectrumSolver(config, method)._solve(_system(system), selection, True))
+    return Spectrum(*_core._SpectrumSolver(config)._solve(method, _system(system), selection, True))
 
 
 spectrum.__doc__ = (

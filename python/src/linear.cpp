@@ -4,7 +4,6 @@
 // method) with the GIL released, the result's arrays as read-only views. Frequencies in kHz.
 #include <cmath>
 #include <functional>
-#include <memory>
 #include <mutex>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -43,11 +42,9 @@ System system_of(const py::object& system) {  // a Chain or a DynamicalMatrix (c
   return s;
 }
 
-/// One solve with the GIL released (holding `busy` when given); ARPACK and SLEPc one at a time.
-Spectrum solve(SpectrumSolver& solver, System& s, const ModeSelection& selection, std::mutex* busy = nullptr) {
+/// One solve with the GIL released; ARPACK and SLEPc one at a time.
+Spectrum solve(SpectrumSolver& solver, System& s, const ModeSelection& selection) {
   py::gil_scoped_release release;
-  std::unique_lock<std::mutex> own;
-  if (busy) own = std::unique_lock(*busy);
   if (!s.matrix) {
     s.owned = dynamical_matrix(s.chain->chain);
     s.matrix = &s.owned;
@@ -60,12 +57,6 @@ Spectrum solve(SpectrumSolver& solver, System& s, const ModeSelection& selection
   }
   return solver.solve(*s.matrix, selection);
 }
-
-struct PySolver {
-  SpectrumSolver solver;
-  std::string method;
-  std::mutex busy;  ///< a solver's workspace serves one call at a time
-};
 
 }  // namespace
 
@@ -113,16 +104,13 @@ void bind_linear(py::module_& m) {
       .def_property("driver", word_getter(&C::driver), word_setter(&C::driver, parse_lapack_driver));
 
   // granular.spectrum and granular.SpectrumSolver: one solve; `check_units` warns of a frequency
-  // keyword beyond the chain's highest frequency (Hz given as kHz).
-  py::class_<PySolver>(m, "_SpectrumSolver")
-      .def(py::init([](const SpectrumConfig& config, const std::string& method) {
-        auto p = std::make_unique<PySolver>();
-        p->solver = SpectrumSolver(config);
-        p->method = method;
-        return p;
-      }))
-      .def("_solve", [](PySolver& p, const py::object& system, const ModeSelection& selection, bool check_units) {
-        const SolverRequest q{selection, p.solver.config(), p.method};
+  // keyword beyond the chain's highest frequency (Hz given as kHz). One call at a time per solver
+  // (its workspace): granular/_linear.py holds a lock around it.
+  py::class_<SpectrumSolver>(m, "_SpectrumSolver")
+      .def(py::init<const SpectrumConfig&>())
+      .def("_solve", [](SpectrumSolver& solver, const std::string& method, const py::object& system,
+                        const ModeSelection& selection, bool check_units) {
+        const SolverRequest q{selection, solver.config(), method};
         validate(q.config, q.selection);
         System s = system_of(system);
         if (check_units && q.selection.kind != ModeSelection::Kind::all) {
@@ -132,7 +120,7 @@ void bind_linear(py::module_& m) {
           warn({frequency_warning(by_near ? "near" : "window", by_near ? q.selection.near_khz : q.selection.lo_khz,
                                   top)});
         }
-        Spectrum r = solve(p.solver, s, q.selection, &p.busy);
+        Spectrum r = solve(solver, s, q.selection);
         // The spectrum tool's JSON for this result (the library's describe_spectrum, as the tool writes it).
         const py::object meta =
             metadata("spectrum", describe_spectrum(r, q, s.chain ? s.chain->description : nlohmann::json(nullptr),

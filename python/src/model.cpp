@@ -72,11 +72,10 @@ void bind_model(py::module_& m) {
   });
   // A chain of a recipe filled in granular/_model.py (given radii, a quasiperiodic chain).
   m.def("_chain", [](const ChainRecipe& recipe, std::uint64_t realization) { return py_chain(recipe, realization); });
-  m.def("_configuration", [](const std::string& disorder, double q, long long N, long long seed, long long realization) {
+  m.def("_configuration", [](const std::string& disorder, double q, std::size_t N, std::uint64_t seed,
+                             std::uint64_t realization) {  // sizes checked in granular/_model.py
     validate_probability(q);
-    auto t = realization_configuration(disorder_of(disorder), q, checked_size(N, "N", 2, 100000000),
-                                       checked_size(seed, "seed"), checked_size(realization, "realization"));
-    return to_numpy(std::move(t));
+    return to_numpy(realization_configuration(disorder_of(disorder), q, N, seed, realization));
   });
   m.def("_read_types", [](const std::string& path) { return to_numpy(read_configuration_file(path)); });
   m.def("_read_radii", [](const std::string& path) { return to_numpy(read_radii_file(path)); });
@@ -93,9 +92,8 @@ void bind_model(py::module_& m) {
   m.def("_fpu_coefficients", [](double contact, double F0) { return fpu_coefficients(contact, F0); });
 
   // --- correlations of one chain -----------------------------------------------------------------
-  m.def("_cyclic_correlation", [](const Configuration& types, long long max_distance) {
-    const auto d = checked_size(max_distance, "max_distance", 0, static_cast<long long>(types.size()) - 1);
-    return to_numpy(cyclic_correlation(types, d));  // types checked in granular/_model.py
+  m.def("_cyclic_correlation", [](const Configuration& types, std::size_t max_distance) {
+    return to_numpy(cyclic_correlation(types, max_distance));  // both checked in granular/_model.py
   });
   m.def("_correlation_theory", [](const std::string& disorder, double q, long long distance) {
     validate_probability(q);  // a distance array is taken apart in granular/_model.py
