@@ -77,13 +77,9 @@ void bind_linear(py::module_& m) {
   using D = DynamicalMatrix;  // checked in granular/_linear.py
   views(py::class_<D>(m, "DynamicalMatrix"), "diagonal off_diagonal inverse_sqrt_mass", std::identity{}, &D::diagonal,
         &D::off_diagonal, &D::inverse_sqrt_mass)
-      .def(py::init(
-          [](std::vector<double> diagonal, std::vector<double> off_diagonal, std::vector<double> inverse_sqrt_mass) {
-            DynamicalMatrix d;
-            d.diagonal = std::move(diagonal), d.off_diagonal = std::move(off_diagonal);
-            d.inverse_sqrt_mass = std::move(inverse_sqrt_mass);
-            return d;
-          }))
+      .def(py::init([](std::vector<double> diagonal, std::vector<double> off_diagonal, std::vector<double> isqm) {
+        return D{{std::move(diagonal), std::move(off_diagonal)}, std::move(isqm)};
+      }))
       .def_property_readonly("N", &DynamicalMatrix::size)
       .def("__len__", &DynamicalMatrix::size)
       .def("__repr__",
