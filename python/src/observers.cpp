@@ -16,7 +16,6 @@
 
 namespace granular::python {
 namespace {
-using namespace py::literals;
 
 /// What Python receives for a Snapshot: a copy of the chain at that time. The library's Snapshot
 /// is a view of the integrator's state, which moves on after the call; an observer that keeps
@@ -146,9 +145,8 @@ void bind_observers(py::module_& m) {
       py::gil_scoped_release release;  // Python observers take it back when called
       info = spread(chain.chain, initial, config, list);
     }
-    return py::dict("initial_energy"_a = info.initial_energy, "steps"_a = info.steps,
-                    "bond_updates"_a = info.bond_updates,
-                    "window"_a = py::make_tuple(info.window_begin, info.window_end), "seconds"_a = info.seconds);
+    return fields("initial_energy steps bond_updates window seconds", info.initial_energy, info.steps,
+                  info.bond_updates, py::make_tuple(info.window_begin, info.window_end), info.seconds);
   });
 }
 
