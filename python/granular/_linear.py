@@ -1,6 +1,7 @@
 """granular.spectrum, SpectrumSolver, DynamicalMatrix and band_edges: keywords, defaults and docstrings. The
 matrices and solvers are granular._core's (the library's), frequencies in kHz as the tools give them."""
 import operator
+import threading
 
 import numpy as np
 
@@ -68,10 +69,13 @@ class Spectrum:
     result (clustered, chain, method, solver, selection, band_edges_khz, version; granular::describe_spectrum, as the
     tool writes it)."""
 
-    def __init__(self, values):
-        self._inverse_sqrt_mass = values.pop("inverse_sqrt_mass")
-        self.__dict__.update(values)
-        self.clustered = self.clustered.astype(bool)
+    def __init__(self, modes, inverse_sqrt_mass, metadata):
+        # what _core._SpectrumSolver._solve returns: the result (a _core._Modes), m^(-1/2), the metadata
+        for name in ("mode", "omega2", "freq_khz", "ipr", "residual", "N", "info"):
+            setattr(self, name, getattr(modes, name))
+        self.clustered = modes.clustered.astype(bool)
+        self.vectors = modes.vectors.reshape(len(self.omega2), self.N).T if modes.vectors.size else None
+        self.metadata, self._inverse_sqrt_mass = metadata, inverse_sqrt_mass
         self.mode.flags.writeable = False
 
     def displacements(self):
@@ -134,12 +138,15 @@ class SpectrumSolver(_core._SpectrumSolver):
                "lanes=8): keywords as granular.spectrum's:\n" + _CONFIG_DOC)
 
     def __init__(self, *, method="lapack", driver="stevd", vectors=False, tolerance=0.0, subspace=0, lanes=8):
-        super().__init__(_config(method, driver, vectors, tolerance, subspace, lanes), method)
+        super().__init__(_config(method, driver, vectors, tolerance, subspace, lanes))
+        self._method, self._busy = method, threading.Lock()  # its workspace serves one call at a time
 
     def solve(self, system, *, near=None, count=None, window=None):
         """The selected modes of a granular.Chain or granular.DynamicalMatrix (near, count / window as
         granular.spectrum's). Returns a granular.Spectrum."""
-        return Spectrum(self._solve(_system(system), _selection(near, count, window), False))
+        system, selection = _system(system), _selection(near, count, window)
+        with self._busy:
+            return Spectrum(*self._solve(self._method, system, selection, False))
 
 
 def dynamical_matrix(chain):
@@ -161,7 +168,7 @@ def spectrum(system, *, near=None, count=None, window=None, method="lapack", dri
              tolerance=0.0, subspace=0, lanes=8):
     selection = _selection(near, count, window)
     config = _config(method, driver, vectors, tolerance, subspace, lanes)
-    return Spectrum(_core._SpectrumSolver(config, method)._solve(_system(system), selection, True))
+    return Spectrum(*_core._SpectrumSolver(config)._solve(method, _system(system), selection, True))
 
 
 spectrum.__doc__ = (

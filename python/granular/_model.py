@@ -183,7 +183,8 @@ def quasiperiodic(kind="s2", N=100, modulation=0.0, ratio="golden", phase=None, 
 def configuration(disorder="A", q=0.5, N=100, seed=1, realization=0):
     """The bead types (uint8 array of 1 and 2) of realization `realization` of seed `seed`: what random_chain builds
     its chain from. All xi of one (disorder, q, N, seed, realization) share it."""
-    return _core._configuration(disorder, q, N, seed, realization)
+    return _core._configuration(disorder, q, _core._size(N, "N", 2, 100000000), _core._size(seed, "seed"),
+                                _core._size(realization, "realization"))
 
 
 def _readable(path):
@@ -244,7 +245,7 @@ def cyclic_correlation(types, max_distance=10):
     types = (types.types.tolist() if types.types is not None else []) if isinstance(types, Chain) else _types(types)
     if not types:
         raise ValueError("types: the chain was built from radii and has no bead types")
-    return _core._cyclic_correlation(types, max_distance)
+    return _core._cyclic_correlation(types, _core._size(max_distance, "max_distance", 0, len(types) - 1))
 
 
 def correlation_theory(disorder, q, distance):

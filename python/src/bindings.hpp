@@ -103,10 +103,19 @@ py::array_t<T> to_numpy(const std::vector<T>& values) {
 py::array_t<double> to_numpy_2d(std::vector<double>&& values, std::size_t rows, std::size_t cols);
 /// A read-only view of `data` (n entries) kept alive by `owner` (the Python object holding it).
 py::array_t<double> view(const std::vector<double>& data, const py::handle& owner);
-/// A read-only property viewing the vector `get(self)` of a bound object (kept alive by it).
-template <class Self, class Get>
-auto viewer(Get get) {
-  return [get](py::object self) { return view(get(self.cast<const Self&>()), self); };
+/// Read-only attributes of a bound class named by the space-separated `names`, each a read-only
+/// view (kept alive by the object) of a vector member of `part(self)` (in order).
+template <class Class, class Part, class... M>
+Class& views(Class&& c, const char* names, Part part, M... members) {
+  using Self = typename std::remove_reference_t<Class>::type;
+  std::istringstream words(names);
+  std::string field;
+  ((words >> field, c.def_property_readonly(field.c_str(),
+                                            [part, members](py::object self) {
+                                              return view(part(self.cast<const Self&>()).*members, self);
+                                            })),
+   ...);
+  return c;
 }
 /// Counts and indices as signed integers (NumPy arithmetic on them stays integer).
 template <class T>
@@ -151,10 +160,23 @@ Class& arrays(Class&& c, const char* names, M T::*... members) {
   return c;
 }
 
+/// Read-only attributes of a bound class named by the space-separated `names`, each a member as
+/// pybind11 casts it (in order).
+template <class Class, class T, class... M>
+Class& readonly(Class&& c, const char* names, M T::*... members) {
+  std::istringstream words(names);
+  std::string field;
+  ((words >> field, c.def_readonly(field.c_str(), members)), ...);
+  return c;
+}
+
 // --- metadata ----------------------------------------------------------------------------------
 py::object to_python(const nlohmann::json& value);
 /// {"function": "granular.<name>", "version": …}: the head of every result's metadata.
 nlohmann::json metadata_head(const std::string& function);
+/// A result's metadata as a dict: metadata_head(function) updated with `described` (the library's
+/// describe_… of it, as the tool writes it).
+py::object metadata(const std::string& function, const nlohmann::json& described);
 
 // --- parsing the tools' words --------------------------------------------------------------------
 Disorder disorder_of(const std::string& name);

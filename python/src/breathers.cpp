@@ -22,8 +22,7 @@ py::dict breathers(const PyChain& c, BreatherBranchConfig config) {
     py::gil_scoped_release release;
     branch = continue_breather(config);
   }
-  nlohmann::json meta = metadata_head("breathers");
-  meta.update(describe_breather_branch(config, branch));
+  const py::object meta = metadata("breathers", describe_breather_branch(config, branch));
   py::list points;  // stacked into arrays by granular/_breathers.py
   for (const BreatherPoint& p : branch.points)
     points.append(
@@ -31,10 +30,8 @@ py::dict breathers(const PyChain& c, BreatherBranchConfig config) {
                "newton_iterations stable profiles open_fraction multipliers",
                p.omega, p.freq_khz, p.energy, p.amplitude, p.floquet.max_modulus, p.residual, p.max_open_fraction,
                p.centre + 1, p.iterations, p.floquet.stable, p.x0, p.open_fraction, p.floquet.multipliers));
-  py::dict out = fields("points linear_khz seed_mode seed_khz stop_reason", points, std::move(branch.linear_khz),
-                        branch.seed_mode, branch.seed_khz, branch.stop_reason);
-  out["metadata"] = to_python(meta);
-  return out;
+  return fields("points linear_khz seed_mode seed_khz stop_reason metadata", points, std::move(branch.linear_khz),
+                branch.seed_mode, branch.seed_khz, branch.stop_reason, meta);
 }
 
 }  // namespace

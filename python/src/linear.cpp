@@ -4,7 +4,6 @@
 // method) with the GIL released, the result's arrays as read-only views. Frequencies in kHz.
 #include <cmath>
 #include <functional>
-#include <memory>
 #include <mutex>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -43,42 +42,9 @@ System system_of(const py::object& system) {  // a Chain or a DynamicalMatrix (c
   return s;
 }
 
-/// The spectrum tool's JSON for this result (the library's describe_spectrum, as the tool writes it).
-nlohmann::json spectrum_metadata(const Spectrum& r, const System& s, const SolverRequest& q) {
-  nlohmann::json meta = metadata_head("spectrum");
-  meta.update(describe_spectrum(r, q, s.chain ? s.chain->description : nlohmann::json(nullptr),
-                                s.chain ? s.chain->material : steel));
-  return meta;
-}
-
-/// The arrays of `r` as read-only views of it (no copies; mode numbers as signed integers), the
-/// masses for displacements, and the metadata.
-py::dict wrap(Spectrum&& r, const DynamicalMatrix& d, const nlohmann::json& metadata) {
-  const py::object owner = py::cast(std::move(r));  // a granular._core._Modes, kept alive by the views
-  const Spectrum& s = owner.cast<const Spectrum&>();
-  const SpectrumInfo& i = s.info;
-  py::dict out = fields("mode clustered inverse_sqrt_mass N metadata", signed_of(s.mode),
-                        std::vector<std::uint8_t>(s.clustered.begin(), s.clustered.end()), d.inverse_sqrt_mass, s.beads,
-                        to_python(metadata));
-  out["info"] = fields("method fallbacks restarts candidates max_residual clusters", i.method, i.fallbacks, i.restarts,
-                       i.candidates, i.max_residual, i.clusters);
-  for (const auto& [name, values] :
-       {std::pair{"omega2", &s.omega2}, {"freq_khz", &s.freq_khz}, {"ipr", &s.ipr}, {"residual", &s.residual}})
-    out[name] = view(*values, owner);
-  out["vectors"] = py::none();
-  if (!s.vectors.empty()) {
-    py::array_t<double> a({s.beads, s.size()}, {sizeof(double), s.beads * sizeof(double)}, s.vectors.data(), owner);
-    py::detail::array_proxy(a.ptr())->flags &= ~py::detail::npy_api::NPY_ARRAY_WRITEABLE_;
-    out["vectors"] = a;
-  }
-  return out;
-}
-
-/// One solve with the GIL released (holding `busy` when given); ARPACK and SLEPc one at a time.
-Spectrum solve(SpectrumSolver& solver, System& s, const ModeSelection& selection, std::mutex* busy = nullptr) {
+/// One solve with the GIL released; ARPACK and SLEPc one at a time.
+Spectrum solve(SpectrumSolver& solver, System& s, const ModeSelection& selection) {
   py::gil_scoped_release release;
-  std::unique_lock<std::mutex> own;
-  if (busy) own = std::unique_lock(*busy);
   if (!s.matrix) {
     s.owned = dynamical_matrix(s.chain->chain);
     s.matrix = &s.owned;
@@ -92,30 +58,30 @@ Spectrum solve(SpectrumSolver& solver, System& s, const ModeSelection& selection
   return solver.solve(*s.matrix, selection);
 }
 
-struct PySolver {
-  SpectrumSolver solver;
-  std::string method;
-  std::mutex busy;  ///< a solver's workspace serves one call at a time
-};
-
 }  // namespace
 
 void bind_linear(py::module_& m) {
-  py::class_<Spectrum>(m, "_Modes");                 // what the arrays of a granular.Spectrum view
-  py::class_<DynamicalMatrix>(m, "DynamicalMatrix")  // checked in granular/_linear.py
-      .def(py::init(
-          [](std::vector<double> diagonal, std::vector<double> off_diagonal, std::vector<double> inverse_sqrt_mass) {
-            DynamicalMatrix d;
-            d.diagonal = std::move(diagonal), d.off_diagonal = std::move(off_diagonal);
-            d.inverse_sqrt_mass = std::move(inverse_sqrt_mass);
-            return d;
-          }))
+  // What a granular.Spectrum (granular/_linear.py) takes its arrays from: read-only views of the
+  // result (eigenvectors N per mode, one after the other), mode numbers as signed integers.
+  using S = Spectrum;
+  views(py::class_<S>(m, "_Modes"), "omega2 freq_khz ipr residual vectors", std::identity{}, &S::omega2, &S::freq_khz,
+        &S::ipr, &S::residual, &S::vectors)
+      .def_property_readonly("mode", [](const S& s) { return to_numpy(signed_of(s.mode)); })
+      .def_property_readonly("clustered", [](const S& s) { return to_numpy(s.clustered); })
+      .def_readonly("N", &S::beads)
+      .def_property_readonly("info", [](const S& s) {
+        const SpectrumInfo& i = s.info;
+        return fields("method fallbacks restarts candidates max_residual clusters", i.method, i.fallbacks, i.restarts,
+                      i.candidates, i.max_residual, i.clusters);
+      });
+  using D = DynamicalMatrix;  // checked in granular/_linear.py
+  views(py::class_<D>(m, "DynamicalMatrix"), "diagonal off_diagonal inverse_sqrt_mass", std::identity{}, &D::diagonal,
+        &D::off_diagonal, &D::inverse_sqrt_mass)
+      .def(py::init([](std::vector<double> diagonal, std::vector<double> off_diagonal, std::vector<double> isqm) {
+        return D{{std::move(diagonal), std::move(off_diagonal)}, std::move(isqm)};
+      }))
       .def_property_readonly("N", &DynamicalMatrix::size)
       .def("__len__", &DynamicalMatrix::size)
-      .def_property_readonly("diagonal", viewer<DynamicalMatrix>(std::mem_fn(&DynamicalMatrix::diagonal)))
-      .def_property_readonly("off_diagonal", viewer<DynamicalMatrix>(std::mem_fn(&DynamicalMatrix::off_diagonal)))
-      .def_property_readonly("inverse_sqrt_mass",
-                             viewer<DynamicalMatrix>(std::mem_fn(&DynamicalMatrix::inverse_sqrt_mass)))
       .def("__repr__",
            [](const DynamicalMatrix& d) { return "<granular.DynamicalMatrix N=" + std::to_string(d.size()) + ">"; });
 
@@ -134,16 +100,13 @@ void bind_linear(py::module_& m) {
       .def_property("driver", word_getter(&C::driver), word_setter(&C::driver, parse_lapack_driver));
 
   // granular.spectrum and granular.SpectrumSolver: one solve; `check_units` warns of a frequency
-  // keyword beyond the chain's highest frequency (Hz given as kHz).
-  py::class_<PySolver>(m, "_SpectrumSolver")
-      .def(py::init([](const SpectrumConfig& config, const std::string& method) {
-        auto p = std::make_unique<PySolver>();
-        p->solver = SpectrumSolver(config);
-        p->method = method;
-        return p;
-      }))
-      .def("_solve", [](PySolver& p, const py::object& system, const ModeSelection& selection, bool check_units) {
-        const SolverRequest q{selection, p.solver.config(), p.method};
+  // keyword beyond the chain's highest frequency (Hz given as kHz). One call at a time per solver
+  // (its workspace): granular/_linear.py holds a lock around it.
+  py::class_<SpectrumSolver>(m, "_SpectrumSolver")
+      .def(py::init<const SpectrumConfig&>())
+      .def("_solve", [](SpectrumSolver& solver, const std::string& method, const py::object& system,
+                        const ModeSelection& selection, bool check_units) {
+        const SolverRequest q{selection, solver.config(), method};
         validate(q.config, q.selection);
         System s = system_of(system);
         if (check_units && q.selection.kind != ModeSelection::Kind::all) {
@@ -153,9 +116,12 @@ void bind_linear(py::module_& m) {
           warn({frequency_warning(by_near ? "near" : "window", by_near ? q.selection.near_khz : q.selection.lo_khz,
                                   top)});
         }
-        Spectrum r = solve(p.solver, s, q.selection, &p.busy);
-        const nlohmann::json meta = spectrum_metadata(r, s, q);
-        return wrap(std::move(r), *s.matrix, meta);
+        Spectrum r = solve(solver, s, q.selection);
+        // The spectrum tool's JSON for this result (the library's describe_spectrum, as the tool writes it).
+        const py::object meta =
+            metadata("spectrum", describe_spectrum(r, q, s.chain ? s.chain->description : nlohmann::json(nullptr),
+                                                   s.chain ? s.chain->material : steel));
+        return py::make_tuple(std::move(r), to_numpy(s.matrix->inverse_sqrt_mass), meta);
       });
 
   m.def("_band_edges", [](double xi, double F0, double R1, const Material& material) {

@@ -46,16 +46,12 @@ void bind_model(py::module_& m) {
           "ratio", [](const Q& q) { return q.ratio; },
           [](Q& q, const std::string& text) { q.ratio = parse_ratio(text); });
 
-  py::class_<PyChain>(m, "Chain")
+  views(
+      py::class_<PyChain>(m, "Chain"), "radius mass inverse_mass contact overlap onsite",
+      [](const PyChain& c) -> const Chain& { return c.chain; }, &Chain::radius, &Chain::mass, &Chain::inverse_mass,
+      &Chain::contact, &Chain::overlap, &Chain::onsite)
       .def_property_readonly("N", [](const PyChain& c) { return c.chain.size(); })
       .def("__len__", [](const PyChain& c) { return c.chain.size(); })
-      .def_property_readonly("radius", viewer<PyChain>([](const PyChain& c) -> auto& { return c.chain.radius; }))
-      .def_property_readonly("mass", viewer<PyChain>([](const PyChain& c) -> auto& { return c.chain.mass; }))
-      .def_property_readonly("inverse_mass",
-                             viewer<PyChain>([](const PyChain& c) -> auto& { return c.chain.inverse_mass; }))
-      .def_property_readonly("contact", viewer<PyChain>([](const PyChain& c) -> auto& { return c.chain.contact; }))
-      .def_property_readonly("overlap", viewer<PyChain>([](const PyChain& c) -> auto& { return c.chain.overlap; }))
-      .def_property_readonly("onsite", viewer<PyChain>([](const PyChain& c) -> auto& { return c.chain.onsite; }))
       .def_property_readonly("F0", [](const PyChain& c) { return c.chain.precompression; })
       .def_property_readonly("types",
                              [](const PyChain& c) { return c.types.empty() ? py::object(py::none()) : to_py(c.types); })
@@ -76,11 +72,10 @@ void bind_model(py::module_& m) {
   });
   // A chain of a recipe filled in granular/_model.py (given radii, a quasiperiodic chain).
   m.def("_chain", [](const ChainRecipe& recipe, std::uint64_t realization) { return py_chain(recipe, realization); });
-  m.def("_configuration", [](const std::string& disorder, double q, long long N, long long seed, long long realization) {
+  m.def("_configuration", [](const std::string& disorder, double q, std::size_t N, std::uint64_t seed,
+                             std::uint64_t realization) {  // sizes checked in granular/_model.py
     validate_probability(q);
-    auto t = realization_configuration(disorder_of(disorder), q, checked_size(N, "N", 2, 100000000),
-                                       checked_size(seed, "seed"), checked_size(realization, "realization"));
-    return to_numpy(std::move(t));
+    return to_numpy(realization_configuration(disorder_of(disorder), q, N, seed, realization));
   });
   m.def("_read_types", [](const std::string& path) { return to_numpy(read_configuration_file(path)); });
   m.def("_read_radii", [](const std::string& path) { return to_numpy(read_radii_file(path)); });
@@ -91,17 +86,14 @@ void bind_model(py::module_& m) {
   m.def("_static_overlap", py::overload_cast<double, double>(&static_overlap));
   m.def("_linear_stiffness", py::overload_cast<double, double>(&linear_stiffness));
   m.def("_nonlinearity_ratio", &nonlinearity_ratio);
-  py::class_<FpuCoefficients>(m, "FpuCoefficients")
-      .def_readonly("b1", &FpuCoefficients::b1)
-      .def_readonly("b2", &FpuCoefficients::b2)
-      .def_readonly("b3", &FpuCoefficients::b3)
+  using F = FpuCoefficients;
+  readonly(py::class_<F>(m, "FpuCoefficients"), "b1 b2 b3", &F::b1, &F::b2, &F::b3)
       .def_property_readonly("modulational_discriminant", &FpuCoefficients::modulational_discriminant);
   m.def("_fpu_coefficients", [](double contact, double F0) { return fpu_coefficients(contact, F0); });
 
   // --- correlations of one chain -----------------------------------------------------------------
-  m.def("_cyclic_correlation", [](const Configuration& types, long long max_distance) {
-    const auto d = checked_size(max_distance, "max_distance", 0, static_cast<long long>(types.size()) - 1);
-    return to_numpy(cyclic_correlation(types, d));  // types checked in granular/_model.py
+  m.def("_cyclic_correlation", [](const Configuration& types, std::size_t max_distance) {
+    return to_numpy(cyclic_correlation(types, max_distance));  // both checked in granular/_model.py
   });
   m.def("_correlation_theory", [](const std::string& disorder, double q, long long distance) {
     validate_probability(q);  // a distance array is taken apart in granular/_model.py

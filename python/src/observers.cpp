@@ -16,7 +16,6 @@
 
 namespace granular::python {
 namespace {
-using namespace py::literals;
 
 /// What Python receives for a Snapshot: a copy of the chain at that time. The library's Snapshot
 /// is a view of the integrator's state, which moves on after the call; an observer that keeps
@@ -55,32 +54,23 @@ class PyObserver : public Observer {
 }  // namespace
 
 void bind_observers(py::module_& m) {
-  py::class_<State>(m, "State")  // checked in granular/_observers.py
+  arrays(py::class_<State>(m, "State"), "u v", &State::u, &State::v)  // checked in granular/_observers.py
       .def(py::init([](std::vector<double> u, std::vector<double> v) {
         State s;
         s.u = std::move(u), s.v = std::move(v);
         return s;
-      }))
-      .def_property_readonly("u", [](const State& s) { return to_numpy(s.u); })
-      .def_property_readonly("v", [](const State& s) { return to_numpy(s.v); });
+      }));
   // Kicks and observers take their settings checked in granular/_observers.py (sites as 0-based indices).
   m.def("_displacement_kick",
         [](const PyChain& c, std::size_t site, double alpha) { return displacement_kick(c.chain, site, alpha); });
   m.def("_velocity_kick",
         [](const PyChain& c, std::size_t site, double beta) { return velocity_kick(c.chain, site, beta); });
 
-  py::class_<RunPlan>(m, "RunPlan")
-      .def_readonly("beads", &RunPlan::beads)
-      .def_readonly("total_steps", &RunPlan::total_steps)
-      .def_readonly("time_step", &RunPlan::time_step)
-      .def_readonly("duration", &RunPlan::duration);
-  py::class_<SnapshotCopy>(m, "Snapshot")
-      .def_readonly("step", &SnapshotCopy::step)
-      .def_readonly("t", &SnapshotCopy::t)
-      .def_property_readonly("u", [](const SnapshotCopy& s) { return to_numpy(s.u); })
-      .def_property_readonly("v", [](const SnapshotCopy& s) { return to_numpy(s.v); })
-      .def_property_readonly("energy", [](const SnapshotCopy& s) { return to_numpy(s.energy); })
-      .def_readonly("initial_energy", &SnapshotCopy::initial_energy);
+  readonly(py::class_<RunPlan>(m, "RunPlan"), "beads total_steps time_step duration", &RunPlan::beads,
+           &RunPlan::total_steps, &RunPlan::time_step, &RunPlan::duration);
+  using S = SnapshotCopy;
+  arrays(readonly(py::class_<S>(m, "Snapshot"), "step t initial_energy", &S::step, &S::t, &S::initial_energy),
+         "u v energy", &S::u, &S::v, &S::energy);
 
   py::class_<Observer, PyObserver>(m, "Observer")
       .def(py::init<>())
@@ -102,10 +92,9 @@ void bind_observers(py::module_& m) {
                &E::Settings::stop_on_energy_error, &E::Settings::wall_warning)
       .def_property("sampling", word_getter(&E::Settings::sampling),
                     word_setter(&E::Settings::sampling, parse_sampling));
-  arrays(py::class_<E, Observer>(m, "EnergySpread").def(py::init<const E::Settings&>()),
-         "t m2 m2_centroid ipr energy_error", &E::t, &E::m2, &E::m2_centroid, &E::ipr, &E::energy_error)
-      .def_readonly("max_energy_error", &E::max_energy_error)
-      .def_readonly("wall_energy", &E::wall_energy)
+  readonly(arrays(py::class_<E, Observer>(m, "EnergySpread").def(py::init<const E::Settings&>()),
+                  "t m2 m2_centroid ipr energy_error", &E::t, &E::m2, &E::m2_centroid, &E::ipr, &E::energy_error),
+           "max_energy_error wall_energy", &E::max_energy_error, &E::wall_energy)
       .def_property_readonly("reached_walls", &E::reached_walls)
       .def_property_readonly("energy_guard_time", [](const E& o) {
         return o.energy_guard_time < 0 ? py::object(py::none()) : py::float_(o.energy_guard_time);
@@ -156,9 +145,8 @@ void bind_observers(py::module_& m) {
       py::gil_scoped_release release;  // Python observers take it back when called
       info = spread(chain.chain, initial, config, list);
     }
-    return py::dict("initial_energy"_a = info.initial_energy, "steps"_a = info.steps,
-                    "bond_updates"_a = info.bond_updates,
-                    "window"_a = py::make_tuple(info.window_begin, info.window_end), "seconds"_a = info.seconds);
+    return fields("initial_energy steps bond_updates window seconds", info.initial_energy, info.steps,
+                  info.bond_updates, py::make_tuple(info.window_begin, info.window_end), info.seconds);
   });
 }
 

@@ -28,17 +28,15 @@ py::dict ipr_map(const IprMapConfig& c, const std::string& solver, const std::st
   run_long("ipr_map", c.q_values.size() * c.xi_values.size() * c.realizations, options.progress,
            [&](const LongRun& control) { cells = compute_ipr_map(c, options.run(control)); });
 
-  nlohmann::json meta = metadata_head("ipr_map");
-  meta.update(describe_ipr_map(c, cells, {solver, method, resolve_threads(thread_request)}));
+  const py::object meta =
+      metadata("ipr_map", describe_ipr_map(c, cells, {solver, method, resolve_threads(thread_request)}));
   py::list out_cells;
   for (auto& cell : cells)
     out_cells.append(fields("q xi freq_khz ipr mode realization bin_modes bin_ipr", cell.q, cell.xi,
                             std::move(cell.freq_khz), std::move(cell.ipr), signed_of(cell.mode),
                             signed_of(cell.realization), signed_of(cell.bin_modes), std::move(cell.bin_ipr)));
-  py::dict out = fields("disorder N bin_khz q xi selection cells", to_string(c.chain.disorder), c.chain.N, c.bin_khz,
-                        c.q_values, c.xi_values, c.selection.kind != ModeSelection::Kind::all, out_cells);
-  out["metadata"] = to_python(meta);
-  return out;
+  return fields("disorder N bin_khz q xi selection cells metadata", to_string(c.chain.disorder), c.chain.N, c.bin_khz,
+                c.q_values, c.xi_values, c.selection.kind != ModeSelection::Kind::all, out_cells, meta);
 }
 
 /// `chain` (checked in granular/_studies.py), or (None) realization `realization` of `recipe`
@@ -68,18 +66,16 @@ py::dict localization(const PyChain* chain, const ChainRecipe& recipe, std::uint
   LocalizationScan scan;
   run_long("localization", beads->size() * config.frequency_khz.size(), options.progress,
            [&](const LongRun& control) { scan = localization_scan(*beads, config, options.run(control)); });
-  nlohmann::json meta = metadata_head("localization");
-  meta.update(describe_localization(scan, description,
-                                    py::isinstance<py::str>(f) ? nlohmann::json(f.cast<std::string>())
-                                                               : nlohmann::json(config.frequency_khz),
-                                    resolve_threads(thread_request), steel));
-  py::dict out =
-      fields("freq_khz lyapunov lyapunov_err loc_length resolved modes_below idos dos N", std::move(scan.frequency_khz),
-             std::move(scan.lyapunov), std::move(scan.lyapunov_error), std::move(scan.localization_length),
-             std::vector<std::uint8_t>(scan.resolved.begin(), scan.resolved.end()), signed_of(scan.modes_below),
-             std::move(scan.idos), std::move(scan.dos), scan.beads);
-  out["metadata"] = to_python(meta);
-  return out;
+  const py::object meta =
+      metadata("localization", describe_localization(scan, description,
+                                                     py::isinstance<py::str>(f) ? nlohmann::json(f.cast<std::string>())
+                                                                                : nlohmann::json(config.frequency_khz),
+                                                     resolve_threads(thread_request), steel));
+  return fields("freq_khz lyapunov lyapunov_err loc_length resolved modes_below idos dos N metadata",
+                std::move(scan.frequency_khz), std::move(scan.lyapunov), std::move(scan.lyapunov_error),
+                std::move(scan.localization_length),
+                std::vector<std::uint8_t>(scan.resolved.begin(), scan.resolved.end()), signed_of(scan.modes_below),
+                std::move(scan.idos), std::move(scan.dos), scan.beads, meta);
 }
 
 py::dict correlations(const CorrelationConfig& c, const PyRun& options) {
@@ -88,12 +84,9 @@ py::dict correlations(const CorrelationConfig& c, const PyRun& options) {
   CorrelationResult result;
   run_long("correlations", c.realizations, options.progress,
            [&](const LongRun& control) { result = correlation_study(c, options.run(control)); });
-  nlohmann::json meta = metadata_head("correlations");
-  meta.update(describe_correlations(c, result));
-  py::dict out = fields("rho_mean rho_std rho_theory used", std::move(result.mean), std::move(result.deviation),
-                        std::move(result.theory), result.used);
-  out["metadata"] = to_python(meta);
-  return out;
+  const py::object meta = metadata("correlations", describe_correlations(c, result));
+  return fields("rho_mean rho_std rho_theory used metadata", std::move(result.mean), std::move(result.deviation),
+                std::move(result.theory), result.used, meta);
 }
 
 py::dict butterfly(const ButterflyConfig& c, const PyRun& options) {
@@ -101,16 +94,13 @@ py::dict butterfly(const ButterflyConfig& c, const PyRun& options) {
   std::vector<ButterflyColumn> columns;
   run_long("butterfly", c.ratios.size(), options.progress,
            [&](const LongRun& control) { columns = compute_butterfly(c, options.run(control)); });
-  nlohmann::json meta = metadata_head("butterfly");
-  meta.update(describe_butterfly(c, columns));
-  meta["threads"] = resolve_threads(options.thread_request());
+  nlohmann::json described = describe_butterfly(c, columns);
+  described["threads"] = resolve_threads(options.thread_request());
   py::list out_columns;  // one dict per ratio, flattened into the tool's rows by granular/_studies.py
   for (ButterflyColumn& col : columns)
     out_columns.append(fields("ratio freq_khz ipr dimension dimension_error", col.ratio, std::move(col.freq_khz),
                               std::move(col.ipr), col.dimension.dimension, col.dimension.error));
-  py::dict out = fields("ratios columns", c.ratios, out_columns);
-  out["metadata"] = to_python(meta);
-  return out;
+  return fields("ratios columns metadata", c.ratios, out_columns, metadata("butterfly", described));
 }
 
 }  // namespace

@@ -145,6 +145,12 @@ nlohmann::json metadata_head(const std::string& function) {
   return {{"function", "granular." + function}, {"version", code_version()}, {"blas", blas_library()}};
 }
 
+py::object metadata(const std::string& function, const nlohmann::json& described) {
+  nlohmann::json meta = metadata_head(function);
+  meta.update(described);
+  return to_python(meta);
+}
+
 Disorder disorder_of(const std::string& name) {
   try {
     return parse_disorder(name);
