@@ -4,7 +4,6 @@
 // of a SpreadingRunConfig, ExponentTableConfig) bound with their C++ defaults, and one call per job that
 // takes them, turns them into a TransportCase by the tools' rule (study/transport_choices.hpp),
 // runs it and returns its results as NumPy arrays with the library's own JSON and CSV writers.
-#include <algorithm>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <sstream>
@@ -19,6 +18,7 @@
 #include "granular/study/exponent_files.hpp"
 #include "granular/study/exponent_table.hpp"
 #include "granular/study/paper_comparison.hpp"
+#include "granular/study/resumed_checkpoint.hpp"
 #include "granular/study/spreading_files.hpp"
 #include "granular/study/transport_choices.hpp"
 
@@ -179,9 +179,7 @@ py::dict transport(const ChainRecipe& recipe, const std::string& ic, long long r
   const KickedChain first = kick(c, c.chain.chain(0));
 
   // Read before the run, which rewrites the checkpoint under this code's name.
-  const std::string made_by = options.resume_other_version ? CheckpointLog::code_of(log) : std::string();
-  std::vector<std::string> versions =
-      options.resume_other_version ? CheckpointLog::codes_of(log) : std::vector<std::string>{};
+  const nlohmann::json resumed = options.resume_other_version ? resumed_checkpoint({log}) : nlohmann::json();
   TransportSummary s;
   run_long("transport", c.realizations, options.progress,
            [&](const LongRun& control) { s = run_transport_study(c, options.run(control)); });
@@ -190,13 +188,7 @@ py::dict transport(const ChainRecipe& recipe, const std::string& ic, long long r
   nlohmann::json meta = metadata_head("transport");
   meta["parameters"] = describe_parameters(c, describe(c.chain, 0), first, true);
   meta["seed"] = c.chain.seed;
-  if (!made_by.empty()) {  // every version whose realizations the result holds, oldest first
-    if (std::find(versions.begin(), versions.end(), CheckpointLog::this_code()) == versions.end())
-      versions.push_back(CheckpointLog::this_code());
-    meta["resumed_checkpoint"] = {{"made_by", made_by},
-                                  {"resumed_by", CheckpointLog::this_code()},
-                                  {"versions", versions}};
-  }
+  if (!resumed.is_null()) meta["resumed_checkpoint"] = resumed;
   const nlohmann::json fitted = describe_exponents(s.exponents, c.centre);
   meta.update(fitted);
   meta["ensemble"] = {{"realizations", s.realizations},
