@@ -182,6 +182,8 @@ struct Finally {  ///< calls f when it goes out of scope
   F f;
   ~Finally() { f(); }
 };
+template <class F>
+Finally(F) -> Finally<F>;  // clang before 17 deduces no aggregate's arguments (the fuzzers build this with clang)
 }  // namespace
 
 void run_long(const std::string& label, std::size_t total, bool progress,
