@@ -70,7 +70,7 @@ int main(int argc, char** argv) {
         config.continuation = parse_continuation(continuation);
         if (!seed_file.empty()) config.seed_profile = read_displacements_file(seed_file, "seed_profile");
         validate(config);
-        tool::warn_implausible(config.chain, chain_options);
+        tool::warn(radius_warnings(config.chain, tool::radius_options(chain_options)));
         const auto claim = tool::claim_output(output, meta.command());
         const TableOutputs paths = table_outputs(output);
         const std::string h5 = output + ".h5";

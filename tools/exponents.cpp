@@ -90,14 +90,15 @@ int main(int argc, char** argv) {
     // Read before the run, which rewrites them.
     const nlohmann::json resumed =
         tool::resumed_code(run_options, case_checkpoints(run.checkpoint_prefix, cases.size()));
-    const auto cells = tool::replaying_failures([&] { return run_exponent_table(config, run); }, argc, argv);
+    const auto cells = tool::replaying_failures([&] { return run_exponent_table(config, run); }, output, argc, argv);
     if (!mpi.root()) return;
 
     std::printf("%s", markdown_tables(cells, config).c_str());
     const auto rows = compare ? compare_with_paper(cells, paper) : std::vector<CellComparison>{};
     if (compare) std::printf("%s", markdown_comparison(rows).c_str());
     const auto files = write_exponent_files(paths, cells, rows);
-    for (const auto& c : cells) tool::report_excluded(c.definition, c.summary, meta, run_options, "exponents", argv[0]);
+    for (const auto& c : cells)
+      tool::report_excluded(c.definition, c.summary, meta, run_options, "exponents", output, argv[0]);
     meta["parameters"] = {{"chains", choices.chains},
                           {"F0", config.precompressions},
                           {"ic", choices.kicks},

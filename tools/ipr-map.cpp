@@ -80,7 +80,7 @@ int main(int argc, char** argv) {
     if ((config.chain.distribution = tool::bead_distribution(beads)) || config.chain.quasi)
       config.q_values = config.xi_values = {std::numeric_limits<double>::quiet_NaN()};  // one cell
     validate(config);
-    tool::warn_implausible(config.chain, beads);
+    tool::warn(radius_warnings(config.chain, tool::radius_options(beads)));
     const auto claim = tool::claim_output(output, meta.command());
     const TableOutputs paths = table_outputs(output);
 

@@ -48,7 +48,7 @@ int main(int argc, char** argv) {
                      c.profile_realizations = more.profile ? c.realizations : 0;
                      const SpreadingRunConfig& d = c.dynamics;
                      tool::apply(more, c);
-                     const nlohmann::json step_rule = tool::validate_and_settle(c, dynamics, app.count("--dt") > 0);
+                     const nlohmann::json step_rule = tool::validate_and_settle(c, dynamics, tool::step_given(app));
                      SpreadingPaths paths = spreading_paths(output, ensemble, more.profile, !d.forces.sites.empty());
                      paths.final_state = more.final_state, paths.energy_map = more.energy_map,
                      paths.spectrum = more.spectrum;
@@ -62,7 +62,7 @@ int main(int argc, char** argv) {
                      const nlohmann::json resumed = ensemble ? tool::resumed_code(run, {paths.checkpoint}) : nullptr;
                      std::optional<TransportSummary> summary;
                      if (ensemble) {
-                       summary = tool::run_ensemble(c, run, paths.checkpoint, "spreading", argc, argv);
+                       summary = tool::run_ensemble(c, run, output, "spreading", argc, argv);
                        if (!MpiContext::instance().root()) return;
                      }
                      const KickedChain kicked = kick(c, selected.chain);
@@ -88,7 +88,7 @@ int main(int argc, char** argv) {
                        meta["ensemble"] = {{"realizations", summary->realizations},
                                            {"threads", run.threads},
                                            {"failed_excluded",
-                                            tool::report_excluded(c, *summary, meta, run, "spreading", argv[0])},
+                                            tool::report_excluded(c, *summary, meta, run, "spreading", output, argv[0])},
                                            {"mpi_ranks", MpiContext::instance().size()},
                                            {"max_energy_error", summary->max_energy_error},
                                            {"reached_walls", summary->reached_walls}};

@@ -45,7 +45,6 @@
 #include "granular/analysis/power_law_fit.hpp"
 #include "granular/analysis/summary_statistics.hpp"
 
-#include "granular/study/case_replay.hpp"
 #include "granular/study/correlation_study.hpp"
 #include "granular/study/exponent_files.hpp"
 #include "granular/study/exponent_table.hpp"

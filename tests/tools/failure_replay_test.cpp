@@ -1,5 +1,6 @@
 // Failures a user can act on: a realization that fails stops the ensemble with a
-// command that replays exactly that realization (running it gives the same failure), every
+// command that replays exactly that realization (running it gives the same failure; the case
+// travels whole in a case file, `spreading --case`), every
 // realization finished before it stays in the checkpoint, and --skip-failed goes on without it,
 // saying so in the JSON and the final line; the means are those of the realizations kept.
 #include <algorithm>
@@ -31,6 +32,14 @@ std::string line_after(const std::string& text, const std::string& marker) {
   if (at == std::string::npos) return "";
   const auto begin = at + marker.size();
   return text.substr(begin, text.find('\n', begin) - begin);
+}
+
+/// The case file a printed replay command reads (`--case FILE`), parsed.
+nlohmann::json replay_case(const std::string& replay) {
+  const auto at = replay.find("--case ");
+  if (at == std::string::npos) return nullptr;
+  const auto begin = at + 7;
+  return nlohmann::json::parse(read_file(replay.substr(begin, replay.find(' ', begin) - begin)));
 }
 
 std::vector<double> column(const std::string& csv_path, std::size_t index) {
@@ -83,13 +92,15 @@ TEST(FailureReplay, TheReplayCommandReproducesTheFailureAndSkipFailedGoesOn) {
   EXPECT_EQ(replayed.exit_code, 3) << replay << "\n" << replayed.err;
   EXPECT_EQ(line_after(replayed.err, "numerical failure: "), cause) << replay << "\n" << replayed.err;
 
-  // exponents on the same case stops at the same realization with the same replay command.
+  // exponents on the same case stops at the same realization, with the same case to replay.
   const ToolResult table =
       run_tool("exponents", "--chains A --xi 0.5 --q 0.5 --N 101 --F0 0.01 --ic velocity --seed 3 " + dynamics +
                                 " --realizations 6 --threads 1 --profile-F0 none --max-energy-error " + guard_text +
                                 " --quiet --output " + dir + "/table");
   EXPECT_EQ(table.exit_code, 3) << table.err;
-  EXPECT_EQ(line_after(table.err, "replay it alone: "), replay);
+  const std::string table_replay = line_after(table.err, "replay it alone: ");
+  EXPECT_NE(table_replay.find("--realization " + std::to_string(failing) + " "), std::string::npos) << table.err;
+  EXPECT_EQ(replay_case(table_replay), replay_case(replay)) << table_replay << "\n" << replay;
 
   // Going on without it: the printed command, run as printed.
   const std::string go_on = line_after(stopped.err, "to go on without this one: ");
@@ -119,9 +130,9 @@ TEST(FailureReplay, TheReplayCommandReproducesTheFailureAndSkipFailedGoesOn) {
   std::filesystem::remove_all(dir);
 }
 
-// With --N auto the kicked bead is the centre by rule (an explicit --site is refused there), so
-// the printed replay must leave --site out and still reproduce the failure. Found when a 100 ms
-// study stopped on its energy guard and the printed command was refused.
+// With --N auto the kicked bead is the centre of a chain drawn outward from it: the replay must
+// keep that draw and still reproduce the failure. Found when a 100 ms study stopped on its
+// energy guard and the printed command (flags, then) was refused.
 TEST(FailureReplay, TheReplayCommandOfAnAutomaticallySizedChainRuns) {
   const std::string dir = scratch_folder("replay-auto");
   const ToolResult stopped =
@@ -129,8 +140,9 @@ TEST(FailureReplay, TheReplayCommandOfAnAutomaticallySizedChainRuns) {
                                 " --realizations 2 --threads 1 --max-energy-error 1e-12 --output " + dir + "/ens");
   ASSERT_EQ(stopped.exit_code, 3) << stopped.err;
   const std::string replay = line_after(stopped.err, "replay it alone: ");
-  ASSERT_NE(replay.find("--N auto"), std::string::npos) << stopped.err;
-  EXPECT_EQ(replay.find("--site"), std::string::npos) << replay;
+  const nlohmann::json replayed_case = replay_case(replay);
+  ASSERT_TRUE(replayed_case.is_object()) << stopped.err;
+  EXPECT_TRUE(replayed_case.contains("chain_draw")) << replayed_case.dump();
   const ToolResult replayed = run_printed(dir, replay);
   EXPECT_EQ(replayed.exit_code, 3) << replay << "\n" << replayed.err;
   EXPECT_EQ(line_after(replayed.err, "numerical failure: "), line_after(stopped.err, "of seed 3: ")) << replay << "\n"
@@ -139,12 +151,12 @@ TEST(FailureReplay, TheReplayCommandOfAnAutomaticallySizedChainRuns) {
 }
 
 // Every option family of a kicked-chain case (issue "one case, one description"): the printed
-// replay command spells the whole case — damping, the tangent map, k types, polydisperse radii,
+// replay command carries the whole case — damping, the tangent map, k types, polydisperse radii,
 // mode kicks, matched β, each scheme — so running it meets the very failure the ensemble met
 // (the same cause, time and error, to the last digit). Before, the command left these flags out
 // and replayed an undamped two-type chain with a single-site kick.
 struct Family {
-  std::string name, flags, spelled;  ///< spelled: what the replay command must contain
+  std::string name, flags, spelled;  ///< spelled: what the replay's case file must contain
 };
 
 void PrintTo(const Family& f, std::ostream* out) { *out << f.name << ": " << f.flags; }
@@ -159,7 +171,7 @@ TEST_P(ReplayFamily, TheReplayCommandReproducesTheFailure) {
   const ToolResult stopped = run_tool("spreading", args);
   ASSERT_EQ(stopped.exit_code, 3) << args << "\n" << stopped.err;
   const std::string replay = line_after(stopped.err, "replay it alone: ");
-  ASSERT_NE(replay.find(f.spelled), std::string::npos) << stopped.err;
+  ASSERT_NE(replay_case(replay).dump().find(f.spelled), std::string::npos) << stopped.err;
   const ToolResult replayed = run_printed(dir, replay);
   EXPECT_EQ(replayed.exit_code, 3) << replay << "\n" << replayed.err;
   const std::string cause = line_after(stopped.err, "of seed 5: ");
@@ -170,22 +182,20 @@ TEST_P(ReplayFamily, TheReplayCommandReproducesTheFailure) {
 
 INSTANTIATE_TEST_SUITE_P(
     Families, ReplayFamily,
-    ::testing::Values(
-        Family{"plain", "--disorder RDM2 --q 0.3 --xi 0.6", "--disorder RDM2 --q 0.3 --xi 0.6"},
-        Family{"damped", "--damping-time 2e-4", "--damping-time 2e-04"},
-        Family{"kk", "--kk-gamma 1e-6", "--kk-gamma 1e-06"},
-        Family{"types", "--types 4.76e-3:0.5,3e-3:0.3,2e-3:0.2 --disorder RDM1",
-               "--types 0.00476:0.5,0.003:0.3,0.002:0.2 --disorder RDM1"},
-        Family{"masses", "--type-masses 3.6e-3:0.4,1e-3:0.6", "--types "},
-        Family{"uniform", "--polydisperse uniform:2e-3:5e-3", "--polydisperse uniform:0.002:0.005"},
-        Family{"normal", "--polydisperse normal:4e-3:5e-4:3e-3", "--polydisperse normal:0.004:5e-04:0.003"},
-        Family{"mle", "--mle --renormalize 5", "--mle --renormalize 5"},
-        Family{"mode", "--ic mode --mode 20 --energy 1e-9", "--ic mode --alpha 1e-07 --mode 20 --energy 1e-09"},
-        Family{"mode-khz", "--ic mode --mode-khz 12", "--mode-khz 12"},
-        Family{"match", "--ic velocity --beta match", "--beta match"},
-        Family{"aba864", "--integrator aba864", "--integrator aba864"},
-        Family{"srkn14a", "--integrator srkn14a --dt 2e-6", "--integrator srkn14a"},
-        Family{"fpu", "--force-law fpu --site 10 --centre centroid", "--force-law fpu"}),
+    ::testing::Values(Family{"plain", "--disorder RDM2 --q 0.3 --xi 0.6", R"("disorder":"RDM2")"},
+                      Family{"damped", "--damping-time 2e-4", R"("damping":{"kk_gamma_s":0.0,"time_s":0.0002})"},
+                      Family{"kk", "--kk-gamma 1e-6", R"("damping":{"kk_gamma_s":1e-06,"time_s":0.0})"},
+                      Family{"types", "--types 4.76e-3:0.5,3e-3:0.3,2e-3:0.2 --disorder RDM1", R"("beads":")"},
+                      Family{"masses", "--type-masses 3.6e-3:0.4,1e-3:0.6", R"("beads":")"},
+                      Family{"uniform", "--polydisperse uniform:2e-3:5e-3", R"x("beads":"uniform(0.002,0.005)")x"},
+                      Family{"normal", "--polydisperse normal:4e-3:5e-4:3e-3", R"("beads":"normal()"},
+                      Family{"mle", "--mle --renormalize 5", R"("renormalize_every":5)"},
+                      Family{"mode", "--ic mode --mode 20 --energy 1e-9", R"("mode_kick":{"energy_J":1e-09,"mode":20)"},
+                      Family{"mode-khz", "--ic mode --mode-khz 12", R"("near_khz":12.0)"},
+                      Family{"match", "--ic velocity --beta match", R"("beta_m_s":"match")"},
+                      Family{"aba864", "--integrator aba864", R"("integrator":"aba864")"},
+                      Family{"srkn14a", "--integrator srkn14a --dt 2e-6", R"("integrator":"srkn14a")"},
+                      Family{"fpu", "--force-law fpu --site 10 --centre centroid", R"("force_law":"fpu")"}),
     [](const ::testing::TestParamInfo<Family>& info) {
       std::string name = info.param.name;
       std::replace(name.begin(), name.end(), '-', '_');

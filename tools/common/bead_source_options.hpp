@@ -29,7 +29,7 @@ inline StreamedChain build_bead_source(const ChainOptions& o) {
     throw InvalidInput("N", " " + std::to_string(o.n) +
                                 ": --types/--polydisperse/--quasi/--walls sphere store the chain (<= 1e8)");
   validate(recipe, streamed ? 1000000000000 : 100000000);
-  warn_implausible(recipe, o);
+  warn(radius_warnings(recipe, radius_options(o)));
   StreamedChain s;
   s.source = recipe.beads(chain_realization(o));
   s.description = describe(recipe, chain_realization(o));

@@ -20,7 +20,6 @@
 #include "granular/model/configuration_file.hpp"
 #include "granular/model/named_chains.hpp"
 #include "granular/model/plausibility.hpp"
-#include "granular/number_format.hpp"
 #include "tool_main.hpp"
 
 namespace granular::tool {
@@ -63,7 +62,7 @@ inline void add_walls_option(CLI::App& app, std::string& walls) {
              "fixed-end lattice");
 }
 
-/// --quasi and its parameters (model/quasiperiodic.hpp), each spelled by a replay of a quasiperiodic chain.
+/// --quasi and its parameters (model/quasiperiodic.hpp).
 inline const std::vector<Flag<ChainOptions>>& quasi_flags() {
   using O = ChainOptions;
   static const std::vector<Flag<O>> flags{
@@ -74,8 +73,7 @@ inline const std::vector<Flag<ChainOptions>>& quasi_flags() {
       {"--modulation", &O::modulation, "--quasi: relative modulation strength lambda, |lambda| < 1"},
       {"--ratio", &O::ratio, "--quasi: the incommensurate ratio beta > 0: golden, p/q or a number"},
       {"--phase", &O::phase,
-       "--quasi: the phase [rad] (default: drawn uniformly in [0, 2 pi) per --seed and --realization)", false,
-       [](const TransportCase& c) { return c.chain.quasi && c.chain.quasi->phase; }},
+       "--quasi: the phase [rad] (default: drawn uniformly in [0, 2 pi) per --seed and --realization)", false},
       {"--angle", &O::angle, "--quasi cylinders: mean crossing angle alpha0 [degrees] in (0, 180)"},
       {"--k0", &O::k0, "--quasi s1: mean on-site stiffness in units of the bond stiffness K"},
   };
@@ -86,14 +84,6 @@ inline const std::vector<Flag<ChainOptions>>& quasi_flags() {
 inline CLI::Option* add_quasiperiodic_options(CLI::App& app, ChainOptions& o) {
   add_flags(app, o, quasi_flags());
   return app.get_option("--quasi");
-}
-
-/// The options that give `q` (the inverse of quasiperiodic()).
-inline ChainOptions options_of(const Quasiperiodic& q) {
-  ChainOptions o;
-  o.quasi = to_string(q.kind), o.modulation = q.modulation, o.ratio = format_number(q.ratio);
-  o.phase = q.phase, o.angle = q.angle, o.k0 = q.k0;
-  return o;
 }
 
 /// The quasiperiodic chain the options pick, if --quasi is given.
@@ -167,13 +157,13 @@ inline ChainRecipe chain_recipe(const ChainOptions& o) {
   return r;
 }
 
-/// Prints, once per chain a tool builds, a warning naming the option for each radius outside
-/// the contact law's plausible range (model/plausibility.hpp).
-inline void warn_implausible(const ChainRecipe& r, const ChainOptions& o) {
+/// The options named in the warnings about implausible radii (model/plausibility.hpp): those that
+/// set R1, the bead distribution and the radii file.
+inline RadiusNames radius_options(const ChainOptions& o) {
   const std::string distribution = !o.types.empty()         ? "--types"
                                    : !o.type_masses.empty() ? "--type-masses"
                                                             : "--polydisperse";
-  warn(radius_warnings(r, {"--R1", distribution, "--radii"}));
+  return {"--R1", distribution, "--radii"};
 }
 
 /// The realization the options pick (0-based).
@@ -185,14 +175,21 @@ struct SelectedChain {
   nlohmann::json description;  ///< the "chain" entry of the tool's JSON
 };
 
+/// Realization `r` of `recipe`, validated (a warning naming one of `radius_options` for each
+/// implausible radius), built and described.
+inline SelectedChain select_chain(ChainRecipe recipe, std::uint64_t r, const RadiusNames& names) {
+  validate(recipe);
+  warn(radius_warnings(recipe, names));
+  SelectedChain s;
+  s.chain = recipe.chain(r);
+  s.description = describe(recipe, r);
+  s.recipe = std::move(recipe);
+  return s;
+}
+
 /// The chain the options pick, built and described (N, and with --N auto its rule).
 inline SelectedChain build_chain(const ChainOptions& o) {
-  SelectedChain s;
-  s.recipe = chain_recipe(o);
-  validate(s.recipe);
-  warn_implausible(s.recipe, o);
-  s.chain = s.recipe.chain(chain_realization(o));
-  s.description = describe(s.recipe, chain_realization(o));
+  SelectedChain s = select_chain(chain_recipe(o), chain_realization(o), radius_options(o));
   if (o.auto_n) s.description["N_rule"] = o.length_rule;
   return s;
 }

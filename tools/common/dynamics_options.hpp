@@ -16,7 +16,6 @@
 #include "flag_table.hpp"
 #include "granular/error.hpp"
 #include "granular/io/range_syntax.hpp"
-#include "granular/number_format.hpp"
 #include "granular/study/case_settling.hpp"
 #include "granular/study/spreading_run.hpp"
 #include "granular/study/time_step_rule.hpp"
@@ -61,13 +60,12 @@ struct DynamicsOptions : TransportChoices, BeyondOptions {
   std::string beta_text = "8e-3", fit_text = "4e-3:1e-2", active_window_text = "on";
 };
 
-/// The kick's flags (a replay spells them right after --ic).
+/// The kick's flags.
 inline const std::vector<Flag<DynamicsOptions>>& kick_flags() {
   static const std::vector<Flag<DynamicsOptions>> flags{
       {"--alpha", &DynamicsOptions::alpha, "displacement kick [m] (also what --beta match matches)"},
       {"--beta", &DynamicsOptions::beta_text,
-       "velocity kick [m/s] (the paper's 8e-3 for every F0), or 'match': the energy of --alpha on each chain", true,
-       [](const TransportCase& c) { return c.kick == Kick::velocity; }},
+       "velocity kick [m/s] (the paper's 8e-3 for every F0), or 'match': the energy of --alpha on each chain"},
   };
   return flags;
 }
@@ -76,8 +74,7 @@ inline const std::vector<Flag<DynamicsOptions>>& kick_flags() {
 inline const std::vector<Flag<DynamicsOptions>>& run_flags() {
   using O = DynamicsOptions;
   static const std::vector<Flag<O>> flags{
-      {"--site", &O::site, "kicked bead n0, 1..N (0 = the centre, (N+1)/2)", true,
-       [](const TransportCase& c) { return !c.chain.centred; }},  // --N auto kicks the centre by rule
+      {"--site", &O::site, "kicked bead n0, 1..N (0 = the centre, (N+1)/2)"},
       {"--centre", &O::centre,
        "m2 about the kicked 'site' (the paper's n_c) or the energy 'centroid'; both are written"},
       {"--T", &O::duration, "duration [s], a whole number of --dt"},
@@ -102,11 +99,9 @@ inline const std::vector<Flag<DynamicsOptions>>& run_flags() {
       {"--reference-max-step", &O::reference_max_step, "largest step of --integrator reference [s], 0 = none"},
       {"--max-energy-error", &O::max_energy_error, "guard: relative energy error that stops (or is reported), 0 = off"},
       {"--energy-guard", &O::energy_guard, "stop | warn: what passing --max-energy-error does"},
-      {"--damping-time", &O::damping_time, "on-site viscous damping time tau_d [s] of -(m/tau_d) du/dt; 0 = none", true,
-       [](const TransportCase& c) { return c.dynamics.integration.damping.time > 0; }},
+      {"--damping-time", &O::damping_time, "on-site viscous damping time tau_d [s] of -(m/tau_d) du/dt; 0 = none"},
       {"--kk-gamma", &O::kk_gamma,
-       "Kuwabara-Kono contact damping gamma_KK [s]: bond force A[d]^{3/2} + gamma A [d]^{1/2} dd/dt; 0 = none", true,
-       [](const TransportCase& c) { return c.dynamics.integration.damping.kk_gamma > 0; }},
+       "Kuwabara-Kono contact damping gamma_KK [s]: bond force A[d]^{3/2} + gamma A [d]^{1/2} dd/dt; 0 = none"},
   };
   return flags;
 }
@@ -114,17 +109,6 @@ inline const std::vector<Flag<DynamicsOptions>>& run_flags() {
 inline void add_dynamics_options(CLI::App& app, DynamicsOptions& o) {
   add_flags(app, o, kick_flags());
   add_flags(app, o, run_flags());
-}
-
-/// The options that give `c` (the inverse of apply): what a replay spells.
-inline DynamicsOptions options_of(const TransportCase& c) {
-  DynamicsOptions o;
-  static_cast<TransportChoices&>(o) = choices_of(c);
-  static_cast<BeyondChoices&>(o) = beyond_choices_of(c.dynamics);
-  o.beta_text = c.match_beta ? "match" : format_number(c.beta);
-  o.fit_text = format_number(c.fit_begin) + ":" + format_number(c.fit_end);
-  o.active_window_text = c.dynamics.integration.window.enabled ? "on" : "off";
-  return o;
 }
 
 /// Fills `c` from the options: granular::apply(TransportChoices) once the three command-line

@@ -1,8 +1,9 @@
 #pragma once
-// The kicked-chain case as `spreading` reads it from its flags: the chain (chain_options.hpp,
-// --N auto), the kick (--ic, the mode options), the dynamics and the tangent map. One reading,
-// used by the tool itself and by the replay command (replay_command.hpp), which checks that the
-// command it prints reads back as the very case that failed.
+// The kicked-chain case as `spreading` reads it: from its flags — the chain (chain_options.hpp,
+// --N auto), the kick (--ic, the mode options), the dynamics and the tangent map — or whole from a
+// case file (--case: a case description, as a replay file or a run's JSON holds it).
+#include <fstream>
+#include <set>
 #include <string>
 
 #include <CLI/CLI.hpp>
@@ -23,9 +24,11 @@ struct KickedCaseOptions {
   ModeKickOptions mode;
   std::string ic = "displacement";
   long long realizations = 1;
+  std::string case_file;  ///< --case: the chain, kick and dynamics from a file instead of the flags
 };
 
 inline void add_kicked_case_options(CLI::App& app, KickedCaseOptions& o) {
+  const std::size_t before = app.get_options().size();
   add_chain_options(app, o.chain);
   add_auto_length(app, o.chain.auto_n);
   add_option(app, "--ic", o.ic, "initial condition: displacement | velocity | mode (a linear mode: --mode, --mode-khz)");
@@ -33,6 +36,28 @@ inline void add_kicked_case_options(CLI::App& app, KickedCaseOptions& o) {
   add_mode_kick_options(app, o.mode);
   add_lyapunov_options(app, o.dynamics);
   add_option(app, "--realizations", o.realizations, "realizations to average (ensemble means and exponents)");
+  auto* file = app.add_option("--case", o.case_file,
+                              "JSON of a case: a replay file a failed ensemble wrote, or a spreading run's PREFIX.json "
+                              "(its parameters); sets the chain, the kick and the dynamics, so none of their flags "
+                              "goes with it; --realization and --realizations still choose what runs");
+  const std::set<std::string> still{"--realization", "--realizations", "--deviation", "--deviation-samples"};
+  const auto options = app.get_options();
+  for (std::size_t i = before; i + 1 < options.size(); ++i)
+    if (!still.contains(options[i]->get_name())) options[i]->excludes(file);
+}
+
+/// The case a JSON file describes: a description (describe(), study/transport_study.hpp) or a
+/// run's JSON with one under "parameters". Throws InvalidInput naming --case.
+inline TransportCase read_case_file(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw InvalidInput("--case", " '" + path + "': cannot be read");
+  const nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
+  if (!j.is_object()) throw InvalidInput("--case", " '" + path + "': not a JSON object");
+  try {
+    return parse_case(j.contains("parameters") ? j.at("parameters") : j);
+  } catch (const InvalidInput& e) {
+    throw InvalidInput("--case", " '" + path + "': " + e.what());
+  }
 }
 
 struct KickedCase {
@@ -44,20 +69,32 @@ struct KickedCase {
 /// `ensemble` when it averages realizations (an ensemble draws random chains, not a file's).
 inline KickedCase kicked_case(KickedCaseOptions& o, bool ensemble) {
   if (o.realizations < 1) throw InvalidInput("--realizations " + std::to_string(o.realizations) + ": must be >= 1");
-  if (ensemble && (!o.chain.config.empty() || !o.chain.radii.empty()))
-    throw InvalidInput("--realizations/--resume: an ensemble draws random chains; --config/--radii give one chain");
-  size_chain(o.chain, o.dynamics, o.ic);  // --N auto
   KickedCase k;  // (not an aggregate initializer: GCC 12 destroys its members twice when one throws)
-  k.selected = build_chain(o.chain);
   TransportCase& c = k.c;
-  c.chain = k.selected.recipe;
-  c.kick = parse_kick(o.ic);
-  apply(o.mode, c);
+  if (!o.case_file.empty()) {
+    c = read_case_file(o.case_file);
+    BeyondOptions beyond;  // the tangent map as the file says, the deviation file as the flags say
+    static_cast<BeyondChoices&>(beyond) = beyond_choices_of(c.dynamics);
+    beyond.deviation = o.dynamics.deviation, beyond.deviation_samples = o.dynamics.deviation_samples;
+    apply(beyond, c.dynamics);
+    k.selected = select_chain(c.chain, chain_realization(o.chain), {"R1_m", "beads", "radii_file"});
+  } else {
+    size_chain(o.chain, o.dynamics, o.ic);  // --N auto
+    k.selected = build_chain(o.chain);
+    c.chain = k.selected.recipe;
+    c.kick = parse_kick(o.ic);
+    apply(o.mode, c);
+    apply(o.dynamics, c);
+    c.fit = c.fit_end <= c.dynamics.integration.duration * (1 + 1e-12);  // a window beyond T: no exponents, a note
+  }
+  if (ensemble && (c.chain.given_types || c.chain.given_radii))
+    throw InvalidInput("--realizations/--resume: an ensemble draws random chains; --config/--radii give one chain");
   c.realizations = static_cast<std::size_t>(o.realizations);
   c.profile_realizations = 0;  // E_n(T) only when an output asks for it
-  apply(o.dynamics, c);
-  c.fit = c.fit_end <= c.dynamics.integration.duration * (1 + 1e-12);  // a window beyond T: no exponents, a note
   return k;
 }
+
+/// Whether the case's time step is given (--dt, or a case file's): else the rule picks it.
+inline bool step_given(const CLI::App& app) { return app.count("--dt") > 0 || app.count("--case") > 0; }
 
 }  // namespace granular::tool

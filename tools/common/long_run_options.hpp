@@ -88,26 +88,27 @@ inline nlohmann::json resumed_code(const LongRunOptions& o, const std::vector<st
 /// Runs `study` (a call of run_transport_study or run_exponent_table); a realization failing in
 /// it becomes a message that says how to replay it alone and how to go on without it (the
 /// realizations finished before it are in the checkpoint).
+/// The replay's case file goes beside the outputs on `prefix`.
 template <class Study>
-auto replaying_failures(const Study& study, int argc, char** argv) -> decltype(study()) {
+auto replaying_failures(const Study& study, const std::string& prefix, int argc, char** argv) -> decltype(study()) {
   try {
     return study();
   } catch (const RealizationFailed& e) {
     std::string go_on = resume_command(argc, argv);
     if (go_on.find(" --skip-failed") == std::string::npos) go_on += " --skip-failed";
     throw NumericalError(std::string(e.what()) +
-                         "\n  replay it alone: " + replay_text(e.failed_case, e.realization, argv[0]) +
+                         "\n  replay it alone: " + replay_text(e.failed_case, e.realization, prefix, argv[0]) +
                          "\n  the realizations finished are kept; to go on without this one: " + go_on);
   }
 }
 
 /// Runs the ensemble of `c` (under mpirun rank 0 alone gets the summary) with a progress line,
-/// Ctrl-C as a clean stop, and failures told with their replay command.
-inline TransportSummary run_ensemble(const TransportCase& c, const LongRunOptions& o, const std::string& checkpoint,
+/// Ctrl-C as a clean stop, and failures told with their replay command; outputs on `prefix`.
+inline TransportSummary run_ensemble(const TransportCase& c, const LongRunOptions& o, const std::string& prefix,
                                      const char* tool, int argc, char** argv) {
   ProgressMeter progress(c.realizations, tool, o.quiet || !MpiContext::instance().root() ? 0 : -1);
-  const RunOptions options = run_options(o, checkpoint, &progress, tool);
-  TransportSummary summary = replaying_failures([&] { return run_transport_study(c, options); }, argc, argv);
+  const RunOptions options = run_options(o, prefix + ".checkpoint", &progress, tool);
+  TransportSummary summary = replaying_failures([&] { return run_transport_study(c, options); }, prefix, argc, argv);
   progress.finish();
   return summary;
 }
@@ -115,10 +116,11 @@ inline TransportSummary run_ensemble(const TransportCase& c, const LongRunOption
 /// Says which realizations of `c` were left out (--skip-failed): a line on stderr for each, with
 /// its replay command (unless quiet), and a note on the final line. Returns them for the JSON.
 inline nlohmann::json report_excluded(const TransportCase& c, const TransportSummary& s, Metadata& meta,
-                                      const LongRunOptions& o, const char* tool, const std::string& argv0) {
+                                      const LongRunOptions& o, const char* tool, const std::string& prefix,
+                                      const std::string& argv0) {
   for (std::uint64_t r : o.quiet ? std::vector<std::uint64_t>{} : s.excluded)
     std::fprintf(stderr, "%s: realization %llu failed and is left out (--skip-failed); replay: %s\n", tool,
-                 static_cast<unsigned long long>(r), replay_text(c, r, argv0).c_str());
+                 static_cast<unsigned long long>(r), replay_text(c, r, prefix, argv0).c_str());
   if (!s.excluded.empty())
     meta.note(std::to_string(s.excluded.size()) + " failed realization(s) of " + std::to_string(c.realizations) +
               " left out");

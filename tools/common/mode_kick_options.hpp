@@ -17,27 +17,19 @@ struct ModeKickOptions {
   double mode_khz = -1, energy = 0;
 };
 
-/// The flags, each spelled by a replay only where a mode kick uses it.
+/// The flags of a mode kick.
 inline const std::vector<Flag<ModeKickOptions>>& mode_flags() {
   using O = ModeKickOptions;
   static const std::vector<Flag<O>> flags{
-      {"--mode", &O::mode, "--ic mode: the linear mode number K, 1..N by increasing frequency", false,
-       [](const TransportCase& c) { return c.kick == Kick::mode && c.mode.mode != 0; }},
-      {"--mode-khz", &O::mode_khz, "--ic mode: the linear mode nearest this frequency [kHz]", false,
-       [](const TransportCase& c) { return c.kick == Kick::mode && c.mode.near_khz >= 0; }},
+      {"--mode", &O::mode, "--ic mode: the linear mode number K, 1..N by increasing frequency", false},
+      {"--mode-khz", &O::mode_khz, "--ic mode: the linear mode nearest this frequency [kHz]", false},
       {"--energy", &O::energy,
-       "--ic mode: total energy of the initial state [J] (without it --alpha is the largest |u_n|)", false,
-       [](const TransportCase& c) { return c.kick == Kick::mode && c.mode.energy != 0; }},
+       "--ic mode: total energy of the initial state [J] (without it --alpha is the largest |u_n|)", false},
   };
   return flags;
 }
 
 inline void add_mode_kick_options(CLI::App& app, ModeKickOptions& o) { add_flags(app, o, mode_flags()); }
-
-/// The options that give c's mode kick.
-inline ModeKickOptions options_of(const ModeKick& m) {
-  return {.mode = m.mode, .mode_khz = m.near_khz, .energy = m.energy};
-}
 
 /// Into `c`, whose mode kicks (if `kicks` holds one) use it: only a mode kick may use these options.
 inline void apply(const ModeKickOptions& o, const std::vector<Kick>& kicks, TransportCase& c) {

@@ -55,33 +55,6 @@ void apply(const TransportChoices& o, TransportCase& c) {
   c.bootstrap.resamples = static_cast<std::size_t>(o.bootstrap);
 }
 
-TransportChoices choices_of(const TransportCase& c) {
-  const SpreadingRunConfig& d = c.dynamics;
-  TransportChoices o;
-  o.alpha = c.alpha;
-  o.beta = c.match_beta ? std::nullopt : std::optional(c.beta);
-  o.site = static_cast<long long>(c.site) + 1;
-  o.centre = to_string(c.centre);
-  o.duration = d.integration.duration;
-  o.time_step = d.integration.time_step;
-  o.integrator = d.integration.integrator.name();
-  o.force_law = to_string(d.integration.force_law);
-  o.samples = static_cast<long long>(d.spread.samples);
-  o.sampling = to_string(d.spread.sampling);
-  o.fit_begin = c.fit_begin;
-  o.fit_end = c.fit_end;
-  o.fit_step = c.fit_step;
-  o.t_star = c.criterion.t_start;
-  o.kappa = c.criterion.kappa;
-  o.bootstrap = static_cast<long long>(c.bootstrap.resamples);
-  o.active_window = d.integration.window.enabled;
-  o.window_threshold = d.integration.window.threshold;
-  o.reference_max_step = d.integration.integrator.tolerance.max_step;
-  o.max_energy_error = d.spread.max_energy_error;
-  o.energy_guard = d.spread.stop_on_energy_error ? "stop" : "warn";
-  return o;
-}
-
 BeyondChoices beyond_choices_of(const SpreadingRunConfig& d) {
   return {.damping_time = d.integration.damping.time,
           .kk_gamma = d.integration.damping.kk_gamma,

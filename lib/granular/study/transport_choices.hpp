@@ -38,10 +38,6 @@ struct TransportChoices {
 /// InvalidInput naming the choice.
 void apply(const TransportChoices& choices, TransportCase& c);
 
-/// The choices that give `c` (the inverse of apply on a validated case): the site counted from 1,
-/// the scheme by its settled name, β none when it matches α's energy.
-TransportChoices choices_of(const TransportCase& c);
-
 /// The choices beyond the paper (docs/physics.md, "Nonlinear dynamics"): dissipation and the tangent map, as the tools'
 /// --damping-time, --kk-gamma, --mle, --renormalize, --deviation-samples and the Python keywords
 /// of the same names take them.

@@ -70,7 +70,7 @@ void validate(const TransportCase& c);
 void validate_before_time_step(const TransportCase& c);
 
 /// Every parameter that determines the result, as JSON (the checkpoint's identity, the run's
-/// "parameters", Python's metadata).
+/// "parameters", Python's metadata, the case file that replays a failed realization).
 nlohmann::json describe(const TransportCase& c);
 /// The inverse of describe: parse_case(describe(c)) describes as c does. Throws InvalidInput
 /// naming the key.
