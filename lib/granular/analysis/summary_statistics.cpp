@@ -7,23 +7,22 @@
 
 namespace granular {
 
-SeriesSummary summarize(const std::vector<std::vector<double>>& rows, std::size_t begin, std::size_t n,
-                        std::size_t row_count) {
+SeriesSummary summarize(const std::vector<std::span<const double>>& rows) {
   SeriesSummary s;
-  const std::size_t count = std::min(row_count, rows.size());
-  if (count == 0) return s;
-  const double r = static_cast<double>(count);
+  if (rows.empty()) return s;
+  const std::size_t n = rows[0].size();
+  for (const auto& row : rows)
+    if (row.size() != n) throw InvalidInput("summarize: realizations have series of different lengths");
+  const double r = static_cast<double>(rows.size());
   s.mean.assign(n, 0.0);
   s.standard_error.assign(n, 0.0);
-  for (std::size_t k = 0; k < count; ++k) {
-    if (rows[k].size() < begin + n) throw InvalidInput("summarize: a realization's series is too short");
-    for (std::size_t i = 0; i < n; ++i) s.mean[i] += rows[k][begin + i];
-  }
+  for (const auto& row : rows)
+    for (std::size_t i = 0; i < n; ++i) s.mean[i] += row[i];
   for (double& m : s.mean) m /= r;
-  if (count < 2) return s;
-  for (std::size_t k = 0; k < count; ++k)  // two passes: no cancellation from E[x²] − E[x]²
+  if (rows.size() < 2) return s;
+  for (const auto& row : rows)  // two passes: no cancellation from E[x²] − E[x]²
     for (std::size_t i = 0; i < n; ++i) {
-      const double d = rows[k][begin + i] - s.mean[i];
+      const double d = row[i] - s.mean[i];
       s.standard_error[i] += d * d;
     }
   for (double& e : s.standard_error) e = std::sqrt(e / (r - 1) / r);
@@ -31,10 +30,7 @@ SeriesSummary summarize(const std::vector<std::vector<double>>& rows, std::size_
 }
 
 SeriesSummary summarize(const std::vector<std::vector<double>>& rows) {
-  if (rows.empty()) return {};
-  for (const auto& row : rows)
-    if (row.size() != rows[0].size()) throw InvalidInput("summarize: realizations have series of different lengths");
-  return summarize(rows, 0, rows[0].size());
+  return summarize(std::vector<std::span<const double>>(rows.begin(), rows.end()));
 }
 
 }  // namespace granular

@@ -2,7 +2,7 @@
 // Mean and standard error of per-realization series, summed in realization order so that the
 // result is bit-identical whatever the thread or rank count that produced the rows.
 #include <cstddef>
-#include <limits>
+#include <span>
 #include <vector>
 
 namespace granular {
@@ -12,12 +12,9 @@ struct SeriesSummary {
   std::vector<double> standard_error;  ///< sample std / sqrt(R); 0 when R = 1
 };
 
-/// `rows[r]` is realization r's series; all rows must have the same length.
+/// `rows[r]` is realization r's series; all rows must have the same length (else InvalidInput).
+SeriesSummary summarize(const std::vector<std::span<const double>>& rows);
+/// The same for series held as vectors.
 SeriesSummary summarize(const std::vector<std::vector<double>>& rows);
-
-/// The series held in columns [begin, begin + count) of the first `row_count` rows (all by
-/// default), without copying them out. Throws InvalidInput if a row is too short.
-SeriesSummary summarize(const std::vector<std::vector<double>>& rows, std::size_t begin, std::size_t count,
-                        std::size_t row_count = std::numeric_limits<std::size_t>::max());
 
 }  // namespace granular

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <span>
+
 #include <nlohmann/json.hpp>
 
 #include "granular/detail/enum_names.hpp"
@@ -355,13 +357,13 @@ RealizationRecord measure_realization(const TransportCase& c, std::uint64_t r) {
   return record;
 }
 
-/// The non-empty `field` of every record, in order.
-std::vector<std::vector<double>> series_of(const std::vector<RealizationRecord>& records,
-                                           std::vector<double> RealizationRecord::*field) {
-  std::vector<std::vector<double>> out;
+/// The non-empty `field` of every record, in order (views: the records hold the series).
+std::vector<std::span<const double>> series_of(const std::vector<RealizationRecord>& records,
+                                               std::vector<double> RealizationRecord::*field) {
+  std::vector<std::span<const double>> out;
   out.reserve(records.size());
   for (const auto& record : records)
-    if (!(record.*field).empty()) out.push_back(record.*field);
+    if (!(record.*field).empty()) out.emplace_back(record.*field);
   return out;
 }
 
