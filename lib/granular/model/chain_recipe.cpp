@@ -119,7 +119,8 @@ void validate(const ChainRecipe& c, std::size_t max_beads) {
     throw InvalidInput("N", ": a chain drawn from its centre (the automatic N) has two bead types, not a bead source");
   if (c.quasi && (c.distribution || !c.drawn() || c.centred))
     throw InvalidInput("quasi",
-                       ": a quasiperiodic chain makes its own beads; not with --types, --config, --radii or --N auto");
+                       ": a quasiperiodic chain makes its own beads; not with a bead distribution, given types or "
+                       "radii, or a centred draw");
   if (c.quasi && c.walls != WallShape::flat)
     throw InvalidInput("walls", ": a quasiperiodic chain has its own walls (flat; fixed cylinders for the cylinders)");
   const std::size_t n = c.size();

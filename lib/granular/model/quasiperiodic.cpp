@@ -87,7 +87,7 @@ void validate(const Quasiperiodic& q, double F0) {
       if (!(std::fabs(q.modulation) < 1))
         throw InvalidInput("modulation", " " + format_number(q.modulation) +
                                              ": on-site stiffnesses k0 (1 + modulation cos) must stay > 0, so "
-                                             "|modulation| < 1 (raise --k0 for a larger amplitude)");
+                                             "|modulation| < 1 (raise k0 for a larger amplitude)");
       break;
     case Quasiperiodic::Kind::cylinders:
       if (!(q.angle > 0 && q.angle < 180))
