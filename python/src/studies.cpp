@@ -49,7 +49,7 @@ py::dict localization(const PyChain* chain, const ChainRecipe& recipe, std::uint
   const ChainRecipe& r = chain ? chain->recipe : recipe;
   if (chain) realization = chain->realization;
   nlohmann::json description = chain ? chain->description : nlohmann::json();
-  if (!chain) validate(r, r.walls == WallShape::flat ? 1000000000000 : 100000000);  // sphere walls: stored
+  if (!chain) validate(r, r.largest_walked_size());  // a quasiperiodic or sphere-walled chain is stored: 1e8
   const std::unique_ptr<BeadSource> beads = r.beads(realization);
   if (!chain) {
     warn(radius_warnings(r, {"R1", "beads", "radii"}));

@@ -99,5 +99,7 @@ def test_exponent_table_over_phases_equals_the_exponents_tool(tools):
 def test_quasi_keyword_errors_name_the_keyword():
     with pytest.raises(ValueError, match="modulation"):
         gr.localization(quasi="s1", modulation=1.2, N=100, f="1:2")
+    with pytest.raises(ValueError, match="N 200000000: more than 1e8"):  # stored, not drawn in pieces
+        gr.localization(quasi="s1", modulation=0.3, N=2e8, f="1:2")
     with pytest.raises(ValueError, match="quasi"):
         gr.ipr_map(quasi="s4", N=40)

@@ -24,11 +24,10 @@ inline StreamedChain build_bead_source(const ChainOptions& o) {
   stored.n = 2;  // N checked below, by what the chain is
   ChainRecipe recipe = chain_recipe(stored);
   recipe.N = static_cast<std::size_t>(o.n);
-  const bool streamed = recipe.drawn() && recipe.typed() && recipe.walls == WallShape::flat;  // else stored
-  if (!streamed && recipe.drawn() && o.n > 100000000)
+  if (!recipe.streamed() && recipe.drawn() && o.n > 100000000)
     throw InvalidInput("N", " " + std::to_string(o.n) +
                                 ": --types/--polydisperse/--quasi/--walls sphere store the chain (<= 1e8)");
-  validate(recipe, streamed ? 1000000000000 : 100000000);
+  validate(recipe, recipe.largest_walked_size());
   warn(radius_warnings(recipe, radius_options(o)));
   StreamedChain s;
   s.source = recipe.beads(chain_realization(o));

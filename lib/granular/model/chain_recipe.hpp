@@ -77,8 +77,12 @@ struct ChainRecipe {
   /// builds from types(r); a study that varies only ξ draws the types once).
   Chain chain_of(const Configuration& types) const;
   /// Realization r as a stream of beads, for methods that walk a chain once (transfer matrices):
-  /// a two-type draw costs memory O(1) whatever N (up to 1e12); the others store the chain.
+  /// a streamed() recipe costs memory O(1) whatever N (up to 1e12); the others store the chain.
   std::unique_ptr<BeadSource> beads(std::uint64_t r) const;
+  /// True when beads() draws the chain a piece at a time: two-type draws between flat walls.
+  bool streamed() const { return drawn() && typed() && !centred && walls == WallShape::flat; }
+  /// The largest N validate() should allow: 1e12 for a streamed() recipe walked once, else 1e8.
+  std::size_t largest_walked_size() const { return streamed() ? 1000000000000 : 100000000; }
   /// Every radius a bead of any realization can have, sampled (the two types, the k types of
   /// positive probability, nine points across a polydisperse range, the given radii): what a
   /// worst-case rule over every realization must try.
