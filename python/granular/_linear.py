@@ -6,6 +6,7 @@ import threading
 import numpy as np
 
 from . import _core
+from ._arguments import double_vector
 
 from ._core import DynamicalMatrix
 from ._model import _document, paper_r1, steel
@@ -36,7 +37,7 @@ _matrix = DynamicalMatrix.__init__
 
 
 def _matrix_init(self, diagonal, off_diagonal, inverse_sqrt_mass=None):
-    diagonal, off_diagonal = _core._vector(diagonal, "diagonal"), _core._vector(off_diagonal, "off_diagonal")
+    diagonal, off_diagonal = double_vector(diagonal, "diagonal"), double_vector(off_diagonal, "off_diagonal")
     if not diagonal:
         raise ValueError("diagonal: empty (a matrix needs at least one row)")
     if len(off_diagonal) + 1 != len(diagonal):
@@ -44,7 +45,7 @@ def _matrix_init(self, diagonal, off_diagonal, inverse_sqrt_mass=None):
     if inverse_sqrt_mass is None:
         inverse_sqrt_mass = [1.0] * len(diagonal)
     else:
-        inverse_sqrt_mass = _core._vector(inverse_sqrt_mass, "inverse_sqrt_mass")
+        inverse_sqrt_mass = double_vector(inverse_sqrt_mass, "inverse_sqrt_mass")
         if len(inverse_sqrt_mass) != len(diagonal):
             raise ValueError(f"inverse_sqrt_mass: has {len(inverse_sqrt_mass)} entries; need N = {len(diagonal)}")
         if not all(x > 0 for x in inverse_sqrt_mass):
@@ -97,7 +98,7 @@ def _selection(near, count, window, got=True):
     if window is not None:
         if near is not None or count is not None:
             raise ValueError("window: cannot be combined with near/count")
-        w = _core._vector(window, "window", False)
+        w = double_vector(window, "window", False)
         if len(w) != 2:
             raise ValueError("window: expected (lo, hi) in kHz" + (f", got {len(w)} values" if got else ""))
         return _core._window(w[0], w[1])

@@ -83,11 +83,6 @@ std::size_t checked_size(long long value, const char* keyword, long long lo = 0,
 double finite(double value, const char* keyword);
 
 // --- arrays ----------------------------------------------------------------------------------
-/// A 1-D array of doubles from any array-like (lists, other dtypes, non-contiguous views are
-/// converted; a copy only when needed). ValueError naming `keyword` on the wrong shape, a
-/// non-numeric input or (when `require_finite`) NaN/infinity.
-std::vector<double> double_vector(const py::handle& values, const char* keyword, bool require_finite = true);
-
 /// A NumPy array that takes over `values` (no copy; freed with the array).
 template <class T>
 py::array_t<T> to_numpy(std::vector<T>&& values) {
@@ -149,24 +144,13 @@ py::dict fields(const char* names, T&&... values) {
   return out;
 }
 
-/// Read-only attributes of a bound class named by the space-separated `names`, each a NumPy copy
-/// of a vector member (in order).
-template <class Class, class T, class... M>
-Class& arrays(Class&& c, const char* names, M T::*... members) {
-  std::istringstream words(names);
-  std::string field;
-  ((words >> field, c.def_property_readonly(field.c_str(), [members](const T& x) { return to_numpy(x.*members); })),
-   ...);
-  return c;
-}
-
 /// Read-only attributes of a bound class named by the space-separated `names`, each a member as
-/// pybind11 casts it (in order).
+/// to_py gives it (in order): a vector of numbers as a NumPy copy, the rest as pybind11 casts it.
 template <class Class, class T, class... M>
 Class& readonly(Class&& c, const char* names, M T::*... members) {
   std::istringstream words(names);
   std::string field;
-  ((words >> field, c.def_readonly(field.c_str(), members)), ...);
+  ((words >> field, c.def_property_readonly(field.c_str(), [members](const T& x) { return to_py(x.*members); })), ...);
   return c;
 }
 
@@ -180,9 +164,6 @@ py::object metadata(const std::string& function, const nlohmann::json& described
 
 // --- parsing the tools' words --------------------------------------------------------------------
 Disorder disorder_of(const std::string& name);
-/// A list of numbers: a Python sequence / array, or a string in the tools' range syntax
-/// ("0.1:1", "0.1:1:0.05", "0.2,0.5,0.8"), with the tools' default step.
-std::vector<double> number_list(const py::handle& values, const char* keyword, double default_step);
 
 // --- long runs ------------------------------------------------------------------------------------
 /// What a long library call gets to cooperate: a cancellation flag for RunOptions::cancelled and

@@ -26,19 +26,6 @@ namespace granular::python {
 namespace {
 using namespace py::literals;
 
-/// The optional observers of granular.spreading, as its keywords give them: 0 samples switch a map
-/// or a spectral density off.
-struct SpreadingObservers {
-  std::vector<std::size_t> force_sites;
-  std::size_t force_samples = 1000, map_samples = 0, map_stride = 1, spectrum_samples = 0;
-  SpectrumSource spectrum_source = SpectrumSource::displacement;
-  void apply_to(SpreadingRunConfig& d) const {
-    d.forces = {force_sites, force_samples};
-    if (map_samples > 0) d.energy_map = EnergyMapObserver::Settings{map_samples, map_stride};
-    if (spectrum_samples > 0) d.spectrum = SpectralDensityObserver::Settings{spectrum_samples, spectrum_source};
-  }
-};
-
 /// `choices` and `beyond` applied to `c` as the tools do; integrator 'auto' stands for SABA2C until
 /// the step is settled. Returns whether it was 'auto'.
 bool apply_choices(TransportChoices choices, const BeyondChoices& beyond, TransportCase& c) {
@@ -55,29 +42,8 @@ py::object csv_text(const std::function<void(std::ostream&)>& write) {
   return py::str(out.str());
 }
 
-py::object array_or_none(std::vector<double>&& x) {
-  return x.empty() ? py::object(py::none()) : py::object(to_numpy(std::move(x)));
-}
-
-/// Bead numbers (from 1) of `count` columns, `stride` beads apart.
-std::vector<long long> numbered(std::size_t count, std::size_t stride = 1) {
-  std::vector<long long> sites;
-  for (std::size_t j = 0; j < count; ++j) sites.push_back(static_cast<long long>(j * stride + 1));
-  return sites;
-}
-
-/// {t, site, <name>: rows × columns} of a recorded series.
-py::dict series(std::vector<double>&& t, std::vector<long long>&& sites, const char* name, std::vector<double>&& values,
-                std::size_t rows, std::size_t cols) {
-  py::dict d;
-  d["t"] = to_numpy(std::move(t));
-  d["site"] = to_numpy(std::move(sites));
-  d[name] = to_numpy_2d(std::move(values), rows, cols);
-  return d;
-}
-
 py::dict spreading(const PyChain& chain, const std::string& ic, const TransportChoices& choices,
-                   const BeyondChoices& beyond, const SpreadingObservers& observe, const ModeKick& mode, bool dt_given,
+                   const BeyondChoices& beyond, const SpreadingRunConfig& observe, const ModeKick& mode, bool dt_given,
                    const PyRun& options) {
   TransportCase c;
   c.chain = chain.recipe;
@@ -87,7 +53,9 @@ py::dict spreading(const PyChain& chain, const std::string& ic, const TransportC
   const bool automatic = apply_choices(choices, beyond, c);
   SpreadingRunConfig& d = c.dynamics;
   c.fit = c.fit_end <= d.integration.duration * (1 + 1e-12);  // a window beyond T: no exponents
-  observe.apply_to(d);
+  d.forces = observe.forces;  // the optional observers, as granular/_dynamics.py chose them
+  d.energy_map = observe.energy_map;
+  d.spectrum = observe.spectrum;
   if ((mode.mode != 0 || mode.near_khz >= 0 || mode.energy != 0) && c.kick != Kick::mode)
     bad_value("mode", ": mode, mode_khz and energy only with ic='mode'");
   c.mode = {.mode = mode.mode, .near_khz = mode.near_khz, .energy = mode.energy, .amplitude = 0};
@@ -117,46 +85,10 @@ py::dict spreading(const PyChain& chain, const std::string& ic, const TransportC
   meta["run"] = describe_run(r, described.value("realization", nlohmann::json(0)));
   if (d.spectrum) meta["spectrum"] = {{"of", to_string(d.spectrum->source)}, {"samples", d.spectrum->samples}};
 
-  py::dict out = to_python(fitted);
   std::vector<std::string> said = notes(c);
   for (const auto& w : warnings(r, d)) said.push_back(w);
-  out["warnings"] = warn(said);
-  out.attr("update")(fields("t m2 m2_centroid ipr energy_error initial_energy max_energy_error", std::move(r.t),
-                            std::move(r.m2), std::move(r.m2_centroid), std::move(r.ipr), std::move(r.energy_error),
-                            r.initial_energy, r.max_energy_error));
-  out["final_state"] = fields("u v energy force", std::move(r.final_state.u), std::move(r.final_state.v),
-                              std::move(r.final_energy), std::move(r.final_force));
-  // Beyond the paper: the columns `dissipated` and `mle` of the tool's CSV, and its --deviation file.
-  out["dissipated"] = array_or_none(std::move(r.dissipated));
-  out["mle"] = array_or_none(std::move(r.mle));
-  const std::size_t n = c.chain.size(), sites = d.forces.sites.size();
-  out["deviation"] = py::none();
-  if (d.deviation_samples > 0) {
-    const std::size_t rows = r.deviation_t.size();
-    out["deviation"] = series(std::move(r.deviation_t), numbered(n), "share", std::move(r.deviation), rows, n);
-  }
-  out["forces"] = py::none();
-  if (sites > 0) {
-    std::vector<double> values;
-    for (const auto& f : r.forces) values.insert(values.end(), f.begin(), f.end());
-    const std::size_t count = r.force_t.size();
-    std::vector<long long> numbers;
-    for (std::size_t s : d.forces.sites) numbers.push_back(static_cast<long long>(s + 1));
-    out["forces"] = series(std::move(r.force_t), std::move(numbers), "force", std::move(values), sites, count);
-  }
-  out["energy_map"] = py::none();
-  if (d.energy_map) {
-    const std::size_t rows = r.map_t.size();
-    out["energy_map"] = series(std::move(r.map_t), numbered(r.map_columns, d.energy_map->stride), "energy",
-                               std::move(r.map_energy), rows, r.map_columns);
-  }
-  out["spectral_density"] = py::none();
-  if (d.spectrum) out["spectral_density"] = fields("freq_khz g", std::move(r.spectrum_khz), std::move(r.spectrum));
-  out.attr("update")(
-      fields("wall_energy reached_walls steps seconds", r.wall_energy, r.reached_walls, r.steps, r.seconds));
-  out["energy_guard_time"] = r.energy_guard_time < 0 ? py::object(py::none()) : py::float_(r.energy_guard_time);
-  out["metadata"] = to_python(meta);
-  return out;
+  // granular/_dynamics.py makes the granular.SpreadingRun of the bound result.
+  return fields("run exponents warnings metadata", std::move(r), to_python(fitted), warn(said), to_python(meta));
 }
 
 py::dict transport(const ChainRecipe& recipe, const std::string& ic, long long realizations, bool profile,
@@ -199,30 +131,15 @@ py::dict transport(const ChainRecipe& recipe, const std::string& ic, long long r
                       {"failed_excluded", s.excluded}};
   meta["time_step_rule"] = step_rule;
 
-  py::dict out = to_python(fitted);
   std::vector<std::string> said = notes(c);
   for (const auto& w : warnings(s, c.dynamics)) said.push_back(w);
-  out["warnings"] = warn(said);
-  out.attr("update")(fields("t m2 m2_se m2_centroid m2_centroid_se ipr ipr_se energy_error energy_error_se",
-                            std::move(s.t), std::move(s.m2.mean), std::move(s.m2.standard_error),
-                            std::move(s.m2_centroid.mean), std::move(s.m2_centroid.standard_error),
-                            std::move(s.ipr.mean), std::move(s.ipr.standard_error), std::move(s.energy_error.mean),
-                            std::move(s.energy_error.standard_error)));
-  out["profile"] = py::none();
-  if (profile)
-    out["profile"] = fields("energy energy_se", std::move(s.profile.mean), std::move(s.profile.standard_error));
-  // With the tangent map: <X1(t)> [1/s] (the tool's column mle) and its standard error.
-  out["mle"] = array_or_none(std::move(s.mle.mean));
-  out["mle_se"] = array_or_none(std::move(s.mle.standard_error));
-  out.attr("update")(
-      fields("max_energy_error reached_walls realizations", s.max_energy_error, s.reached_walls, s.realizations));
-  out["metadata"] = to_python(meta);
-  return out;
+  // granular/_dynamics.py makes the granular.Transport of the bound summary.
+  return fields("summary exponents warnings metadata", std::move(s), to_python(fitted), warn(said), to_python(meta));
 }
 
 py::dict exponent_table(const std::vector<std::string>& chains, const std::vector<std::string>& ic,
                         ExponentTableConfig config, const TransportChoices& choices, const BeyondChoices& beyond,
-                        bool dt_given, const py::object& compare_paper, const PyRun& options) {
+                        bool dt_given, const std::string& paper_path, const PyRun& options) {
   config.chains.clear();
   for (const auto& name : chains) {
     try {
@@ -248,23 +165,15 @@ py::dict exponent_table(const std::vector<std::string>& chains, const std::vecto
   const std::string& prefix = options.checkpoint;
   const bool resume = options.resume || options.resume_other_version;
   if (resume && prefix.empty()) bad_value("resume", ": needs checkpoint= (the prefix of the interrupted run)");
-  const bool compare = py::isinstance<py::str>(compare_paper) || py::bool_(compare_paper);
-  const std::string paper_path = py::isinstance<py::str>(compare_paper)
-                                     ? compare_paper.cast<std::string>()
-                                     : std::string(GRANULAR_SOURCE_DIR) + "/data/paper_table1_gamma.csv";
+  const bool compare = !paper_path.empty();  // "": no comparison with the paper's Table I
   const std::vector<PaperCell> paper = compare ? read_paper_table(paper_path) : std::vector<PaperCell>{};
 
   std::vector<ExponentCell> cells;
   run_long("exponent_table", total, options.progress, [&](const LongRun& control) {
-    ExponentRunOptions run;
-    run.threads = thread_request;
-    run.checkpoint_prefix = prefix;
-    run.resume = resume;
-    run.accept_other_version = options.resume_other_version;
-    run.progress = 0;
-    run.meter = control.meter;
-    run.cancelled = control.cancelled;
-    cells = run_exponent_table(config, run);
+    const RunOptions o = options.run(control);  // the table's own type of them, its bar drawn in Python
+    cells = run_exponent_table(config, {.threads = o.threads, .checkpoint_prefix = o.checkpoint, .resume = o.resume,
+                                        .accept_other_version = o.accept_other_version, .progress = 0,
+                                        .meter = o.progress, .cancelled = o.cancelled});
   });
   if (!prefix.empty())
     for (const std::string& log : case_checkpoints(prefix, cells.size())) CheckpointLog::remove_all(log);
@@ -310,17 +219,13 @@ void bind_dynamics(py::module_& m) {
                &T::samples, &T::sampling, &T::fit_begin, &T::fit_end, &T::fit_step, &T::t_star, &T::kappa, &T::bootstrap,
                &T::active_window, &T::window_threshold, &T::reference_max_step, &T::max_energy_error, &T::energy_guard);
   m.attr("paper_beta") = paper_beta;
+  m.attr("_paper_table") = GRANULAR_SOURCE_DIR "/data/paper_table1_gamma.csv";  // compare_paper=True
   using B = BeyondChoices;
   config_class(m, "BeyondChoices", "damping_time kk_gamma mle renormalize deviation_samples", &B::damping_time,
                &B::kk_gamma, &B::mle, &B::renormalize, &B::deviation_samples);
   config_class(m, "ModeKick", "mode near_khz energy", &ModeKick::mode, &ModeKick::near_khz, &ModeKick::energy);
-  using S = SpreadingObservers;
-  config_class(m, "SpreadingObservers",
-               "force_sites force_samples map_samples map_stride spectrum_samples spectrum_source", &S::force_sites,
-               &S::force_samples, &S::map_samples, &S::map_stride, &S::spectrum_samples, &S::spectrum_source);
-  py::enum_<SpectrumSource>(m, "SpectrumSource")
-      .value("displacement", SpectrumSource::displacement)
-      .value("velocity", SpectrumSource::velocity);
+  using D = SpreadingRunConfig;  // granular.spreading's observers (observers.cpp's settings); none: None
+  config_class(m, "SpreadingRunConfig", "forces energy_map spectrum", &D::forces, &D::energy_map, &D::spectrum);
   using R = ChainRecipe;
   config_class(m, "ChainRecipe", "q xi R1 N F0 material seed quasi given_radii given_types", &R::q, &R::xi, &R::R1,
                &R::N, &R::F0, &R::material, &R::seed, &R::quasi, &R::given_radii, &R::given_types)
@@ -339,6 +244,24 @@ void bind_dynamics(py::module_& m) {
   config_class(m, "TransportCase", "chain realizations", &C::chain, &C::realizations);
   config_class(m, "RunOptions", "threads checkpoint resume resume_other_version progress", &PyRun::threads,
                &PyRun::checkpoint, &PyRun::resume, &PyRun::resume_other_version, &PyRun::progress);
+  // What granular/_dynamics.py makes a SpreadingRun and a Transport of (copies of the arrays).
+  using Run = SpreadingResult;
+  readonly(py::class_<Run>(m, "_SpreadingResult"),
+           "t m2 m2_centroid ipr energy_error dissipated mle deviation_t deviation initial_energy max_energy_error "
+           "final_state final_energy final_force force_t forces map_t map_energy map_columns spectrum_khz spectrum "
+           "wall_energy reached_walls energy_guard_time steps seconds",
+           &Run::t, &Run::m2, &Run::m2_centroid, &Run::ipr, &Run::energy_error, &Run::dissipated, &Run::mle,
+           &Run::deviation_t, &Run::deviation, &Run::initial_energy, &Run::max_energy_error, &Run::final_state,
+           &Run::final_energy, &Run::final_force, &Run::force_t, &Run::forces, &Run::map_t, &Run::map_energy,
+           &Run::map_columns, &Run::spectrum_khz, &Run::spectrum, &Run::wall_energy, &Run::reached_walls,
+           &Run::energy_guard_time, &Run::steps, &Run::seconds);
+  readonly(py::class_<SeriesSummary>(m, "_SeriesSummary"), "mean standard_error", &SeriesSummary::mean,
+           &SeriesSummary::standard_error);
+  using Sum = TransportSummary;
+  readonly(py::class_<Sum>(m, "_TransportSummary"),
+           "t m2 m2_centroid ipr energy_error profile mle max_energy_error reached_walls realizations", &Sum::t,
+           &Sum::m2, &Sum::m2_centroid, &Sum::ipr, &Sum::energy_error, &Sum::profile, &Sum::mle,
+           &Sum::max_energy_error, &Sum::reached_walls, &Sum::realizations);
   m.def("_spreading", &spreading);
   m.def("_transport", &transport);
   m.def("_exponent_table", &exponent_table);

@@ -71,8 +71,9 @@ void bind_errors(py::module_& m) {
   m.def("_size", &checked_size, py::arg("value"), py::arg("keyword"), py::arg("lo") = 0,
         py::arg("hi") = 100000000000000000LL);
   m.def("_finite", &finite);
-  m.def("_vector", &double_vector, py::arg("values"), py::arg("keyword"), py::arg("require_finite") = true);
-  m.def("_numbers", &number_list);
+  m.def("_parse_numbers", [](const std::string& text, const std::string& keyword, double default_step) {
+    return parse_number_list(text, keyword, default_step);  // the tools' range syntax (granular/_arguments.py)
+  });
   m.def("_format_number", [](double x) { return format_number(x); });
   static py::exception<NumericalError> numerical(m, "NumericalError", PyExc_RuntimeError);  // doc: __init__.py
   py::register_exception_translator([](std::exception_ptr p) {
@@ -95,34 +96,6 @@ void bind_errors(py::module_& m) {
 }
 
 // --- arrays ------------------------------------------------------------------------------------
-
-namespace {
-py::array_t<double, py::array::c_style | py::array::forcecast> as_doubles(const py::handle& values, const char* keyword) {
-  if (py::isinstance<py::str>(values) || py::isinstance<py::bytes>(values))
-    bad_value(keyword, ": expected numbers (an array or a sequence), not a string");
-  auto array = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(values);
-  if (!array) {
-    PyErr_Clear();
-    bad_value(keyword, ": expected an array of numbers");
-  }
-  return array;
-}
-}  // namespace
-
-std::vector<double> double_vector(const py::handle& values, const char* keyword, bool require_finite) {
-  auto array = as_doubles(values, keyword);
-  if (array.ndim() != 1) {
-    std::string shape;
-    for (py::ssize_t i = 0; i < array.ndim(); ++i) shape += (i ? ", " : "") + std::to_string(array.shape(i));
-    bad_value(keyword, ": expected a 1-D array, got shape (" + shape + (array.ndim() == 1 ? ",)" : ")"));
-  }
-  std::vector<double> out(array.data(), array.data() + array.size());
-  if (require_finite)
-    for (std::size_t i = 0; i < out.size(); ++i)
-      if (!std::isfinite(out[i]))
-        bad_value(keyword, ": entry " + std::to_string(i) + " is " + format_number(out[i]) + " (must be finite)");
-  return out;
-}
 
 py::array_t<double> to_numpy_2d(std::vector<double>&& values, std::size_t rows, std::size_t cols) {
   return to_numpy(std::move(values)).reshape({rows, cols});
@@ -157,21 +130,6 @@ Disorder disorder_of(const std::string& name) {
   } catch (const InvalidInput&) {
     bad_value("disorder", " '" + name + "': expected h, A, RDM1 or RDM2");
   }
-}
-
-std::vector<double> number_list(const py::handle& values, const char* keyword, double default_step) {
-  if (py::isinstance<py::str>(values)) return parse_number_list(values.cast<std::string>(), keyword, default_step);
-  if (py::isinstance<py::float_>(values) || py::isinstance<py::int_>(values)) {
-    double value = 0;
-    try {
-      value = values.cast<double>();
-    } catch (const py::cast_error&) {  // an int beyond any double (found by tests/fuzz/python_arguments_fuzz)
-      PyErr_Clear();
-      bad_value(keyword, ": the integer is too large for a floating-point number");
-    }
-    return {finite(value, keyword)};
-  }
-  return double_vector(values, keyword);
 }
 
 // --- long runs -----------------------------------------------------------------------------------
