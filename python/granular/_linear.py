@@ -115,10 +115,11 @@ def _selection(near, count, window, got=True):
 
 
 def _system(system):
-    """A granular.Chain or granular.DynamicalMatrix, TypeError otherwise."""
+    """(chain, None) for a granular.Chain, (None, matrix) for a granular.DynamicalMatrix (the arguments of
+    _core._SpectrumSolver._solve), TypeError otherwise."""
     if not isinstance(system, (_core.Chain, DynamicalMatrix)):
         raise TypeError(f"expected a granular.Chain or a granular.DynamicalMatrix, got {type(system)}")
-    return system
+    return (system, None) if isinstance(system, _core.Chain) else (None, system)
 
 
 def _config(method, driver, vectors, tolerance, subspace, lanes):
@@ -147,7 +148,7 @@ class SpectrumSolver(_core._SpectrumSolver):
         granular.spectrum's). Returns a granular.Spectrum."""
         system, selection = _system(system), _selection(near, count, window)
         with self._busy:
-            return Spectrum(*self._solve(self._method, system, selection, False))
+            return Spectrum(*self._solve(self._method, *system, selection, False))
 
 
 def dynamical_matrix(chain):
@@ -169,7 +170,7 @@ def spectrum(system, *, near=None, count=None, window=None, method="lapack", dri
              tolerance=0.0, subspace=0, lanes=8):
     selection = _selection(near, count, window)
     config = _config(method, driver, vectors, tolerance, subspace, lanes)
-    return Spectrum(*_core._SpectrumSolver(config)._solve(method, _system(system), selection, True))
+    return Spectrum(*_core._SpectrumSolver(config)._solve(method, *_system(system), selection, True))
 
 
 spectrum.__doc__ = (

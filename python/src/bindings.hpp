@@ -17,7 +17,6 @@
 #include <pybind11/stl.h>
 #include <nlohmann/json.hpp>
 
-#include "granular/ensemble/progress_meter.hpp"
 #include "granular/ensemble/run_options.hpp"
 #include "granular/model/chain.hpp"
 #include "granular/model/chain_recipe.hpp"
@@ -66,7 +65,6 @@ struct PyChain {
   std::uint64_t realization = 0;
   Chain chain;          ///< recipe.chain(realization)
   Configuration types;  ///< empty when built from radii
-  Material material = steel;
   nlohmann::json description;  ///< describe(recipe, realization), as the tools' "chain" entry
 };
 
@@ -94,8 +92,6 @@ template <class T>
 py::array_t<T> to_numpy(const std::vector<T>& values) {
   return to_numpy(std::vector<T>(values));
 }
-/// rows × cols, row-major, taking over `values`.
-py::array_t<double> to_numpy_2d(std::vector<double>&& values, std::size_t rows, std::size_t cols);
 /// A read-only view of `data` (n entries) kept alive by `owner` (the Python object holding it).
 py::array_t<double> view(const std::vector<double>& data, const py::handle& owner);
 /// Read-only attributes of a bound class named by the space-separated `names`, each a read-only
@@ -112,22 +108,21 @@ Class& views(Class&& c, const char* names, Part part, M... members) {
    ...);
   return c;
 }
-/// Counts and indices as signed integers (NumPy arithmetic on them stays integer).
-template <class T>
-std::vector<long long> signed_of(const std::vector<T>& values) {
-  return {values.begin(), values.end()};
-}
 template <class T>
 constexpr bool is_number_vector = false;
 template <class T>
 constexpr bool is_number_vector<std::vector<T>> = std::is_arithmetic_v<T>;
-/// A C++ value as Python gets it: a vector of numbers as a NumPy array (taken over when an rvalue),
-/// a Python object as it is, the rest as pybind11 casts it.
+/// A C++ value as Python gets it: a vector of numbers as a NumPy array (taken over when an rvalue;
+/// counts and indices as signed integers, so that NumPy arithmetic on them stays integer; bytes as
+/// they are), a Python object as it is, the rest as pybind11 casts it.
 template <class T>
 py::object to_py(T&& value) {
   using V = std::remove_cvref_t<T>;
   if constexpr (is_number_vector<V>) {
-    return to_numpy(std::forward<T>(value));
+    if constexpr (std::is_unsigned_v<typename V::value_type> && sizeof(typename V::value_type) > 1)
+      return to_numpy(std::vector<long long>(value.begin(), value.end()));
+    else
+      return to_numpy(std::forward<T>(value));
   } else if constexpr (std::is_base_of_v<py::object, V>) {
     return value;
   } else {
@@ -156,36 +151,29 @@ Class& readonly(Class&& c, const char* names, M T::*... members) {
 
 // --- metadata ----------------------------------------------------------------------------------
 py::object to_python(const nlohmann::json& value);
-/// {"function": "granular.<name>", "version": …}: the head of every result's metadata.
-nlohmann::json metadata_head(const std::string& function);
-/// A result's metadata as a dict: metadata_head(function) updated with `described` (the library's
-/// describe_… of it, as the tool writes it).
+/// A result's metadata as a dict: {"function": "granular.<function>", "version": …, "blas": …}
+/// updated with `described` (the library's describe_… of it, as the tool writes it).
 py::object metadata(const std::string& function, const nlohmann::json& described);
 
 // --- parsing the tools' words --------------------------------------------------------------------
-Disorder disorder_of(const std::string& name);
+/// A disorder by its name; a ValueError naming `keyword` for another word.
+Disorder disorder_of(const std::string& name, const char* keyword = "disorder");
 
 // --- long runs ------------------------------------------------------------------------------------
-/// What a long library call gets to cooperate: a cancellation flag for RunOptions::cancelled and
-/// a silent meter to advance (RunOptions::progress).
-struct LongRun {
-  std::function<bool()> cancelled;
-  ProgressMeter* meter = nullptr;
-};
-/// Runs `work` with the GIL released on a thread of its own through granular._progress.run_long,
-/// which polls for Ctrl-C, draws the progress bar when `progress`, and on KeyboardInterrupt sets
-/// the cancellation flag and waits for `work` to stop. `work` must not touch Python objects.
-/// Library exceptions propagate (as Python exceptions).
-void run_long(const std::string& label, std::size_t total, bool progress,
-              const std::function<void(const LongRun&)>& work);
 /// How a long call runs, as the keyword functions in granular/*.py fill it (granular._core.RunOptions).
 struct PyRun {
   long long threads = 0;
   std::string checkpoint;  ///< "" = none
   bool resume = false, resume_other_version = false, progress = false;
   int thread_request() const { return static_cast<int>(checked_size(threads, "threads", 0, 4096)); }
-  /// The library's RunOptions of these, driven by `control`.
-  RunOptions run(const LongRun& control) const;
 };
+/// Runs `work` with the GIL released on a thread of its own through granular._progress.run_long,
+/// which polls for Ctrl-C, draws the progress bar when options.progress, and on KeyboardInterrupt
+/// sets the cancellation flag and waits for `work` to stop. `work` gets the library's RunOptions of
+/// `options`, with that flag (RunOptions::cancelled) and a silent meter of `total` steps
+/// (RunOptions::progress). `work` must not touch Python objects. Library exceptions propagate (as
+/// Python exceptions).
+void run_long(const std::string& label, std::size_t total, const PyRun& options,
+              const std::function<void(const RunOptions&)>& work);
 
 }  // namespace granular::python

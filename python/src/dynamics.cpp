@@ -11,7 +11,6 @@
 
 #include "bindings.hpp"
 #include "granular/ensemble/checkpoint_log.hpp"
-#include "granular/error.hpp"
 #include "granular/model/quasiperiodic.hpp"
 #include "granular/parallel/mpi_context.hpp"
 #include "granular/study/case_settling.hpp"
@@ -24,7 +23,6 @@
 
 namespace granular::python {
 namespace {
-using namespace py::literals;
 
 /// `choices` and `beyond` applied to `c` as the tools do; integrator 'auto' stands for SABA2C until
 /// the step is settled. Returns whether it was 'auto'.
@@ -69,26 +67,26 @@ py::dict spreading(const PyChain& chain, const std::string& ic, const TransportC
 
   SpreadingResult r;
   std::optional<TransportExponents> exponents;
-  run_long("spreading", 1, options.progress, [&](const LongRun& control) {
+  run_long("spreading", 1, options, [&](const RunOptions& run) {
     r = run_spreading(chain.chain, kicked.initial, spreading_config(c));
     if (c.fit) exponents = transport_exponents(c, r.t, r.m2, r.m2_centroid, r.ipr);
-    control.meter->advance();
+    run.progress->advance();
   });
 
-  const nlohmann::json& described = chain.description;
-  nlohmann::json meta = metadata_head("spreading");
-  meta["parameters"] = describe_parameters(c, described, kicked, false);
+  nlohmann::json meta;
+  meta["parameters"] = describe_parameters(c, chain.description, kicked, false);
   meta["seed"] = c.chain.seed;
   const nlohmann::json fitted = describe_exponents(exponents, c.centre);
   meta.update(fitted);
   meta["time_step_rule"] = step_rule;
-  meta["run"] = describe_run(r, described.value("realization", nlohmann::json(0)));
+  meta["run"] = describe_run(r, chain.description.value("realization", nlohmann::json(0)));
   if (d.spectrum) meta["spectrum"] = {{"of", to_string(d.spectrum->source)}, {"samples", d.spectrum->samples}};
 
   std::vector<std::string> said = notes(c);
   for (const auto& w : warnings(r, d)) said.push_back(w);
   // granular/_dynamics.py makes the granular.SpreadingRun of the bound result.
-  return fields("run exponents warnings metadata", std::move(r), to_python(fitted), warn(said), to_python(meta));
+  return fields("run exponents warnings metadata", std::move(r), to_python(fitted), warn(said),
+                metadata("spreading", meta));
 }
 
 py::dict transport(const ChainRecipe& recipe, const std::string& ic, long long realizations, bool profile,
@@ -105,19 +103,18 @@ py::dict transport(const ChainRecipe& recipe, const std::string& ic, long long r
   if (!t_warning.empty()) warn({t_warning});  // after the errors
   const int thread_request = options.thread_request();
   const std::string& log = options.checkpoint;
-  const bool resume = options.resume || options.resume_other_version;
-  if (resume && log.empty()) bad_value("resume", ": needs checkpoint= (the file of the interrupted run)");
+  if ((options.resume || options.resume_other_version) && log.empty())
+    bad_value("resume", ": needs checkpoint= (the file of the interrupted run)");
   // The chain of realization 0, as the tool describes it (and the β it kicks it with).
   const KickedChain first = kick(c, c.chain.chain(0));
 
   // Read before the run, which rewrites the checkpoint under this code's name.
   const nlohmann::json resumed = options.resume_other_version ? resumed_checkpoint({log}) : nlohmann::json();
   TransportSummary s;
-  run_long("transport", c.realizations, options.progress,
-           [&](const LongRun& control) { s = run_transport_study(c, options.run(control)); });
+  run_long("transport", c.realizations, options, [&](const RunOptions& run) { s = run_transport_study(c, run); });
   if (!log.empty()) CheckpointLog::remove_all(log);  // finished: the result is in memory, as the tool's in files
 
-  nlohmann::json meta = metadata_head("transport");
+  nlohmann::json meta;
   meta["parameters"] = describe_parameters(c, describe(c.chain, 0), first, true);
   meta["seed"] = c.chain.seed;
   if (!resumed.is_null()) meta["resumed_checkpoint"] = resumed;
@@ -134,20 +131,15 @@ py::dict transport(const ChainRecipe& recipe, const std::string& ic, long long r
   std::vector<std::string> said = notes(c);
   for (const auto& w : warnings(s, c.dynamics)) said.push_back(w);
   // granular/_dynamics.py makes the granular.Transport of the bound summary.
-  return fields("summary exponents warnings metadata", std::move(s), to_python(fitted), warn(said), to_python(meta));
+  return fields("summary exponents warnings metadata", std::move(s), to_python(fitted), warn(said),
+                metadata("transport", meta));
 }
 
 py::dict exponent_table(const std::vector<std::string>& chains, const std::vector<std::string>& ic,
                         ExponentTableConfig config, const TransportChoices& choices, const BeyondChoices& beyond,
                         bool dt_given, const std::string& paper_path, const PyRun& options) {
   config.chains.clear();
-  for (const auto& name : chains) {
-    try {
-      config.chains.push_back(parse_disorder(name));
-    } catch (const InvalidInput&) {
-      bad_value("chains", " '" + name + "': expected h, A, RDM1 or RDM2");
-    }
-  }
+  for (const auto& name : chains) config.chains.push_back(disorder_of(name, "chains"));
   if (config.chains.empty() && config.bead_chains.empty()) bad_value("chains", ": none given (nor quasi)");
   config.kicks.clear();
   for (const auto& name : ic) config.kicks.push_back(parse_kick(name));
@@ -163,14 +155,13 @@ py::dict exponent_table(const std::vector<std::string>& chains, const std::vecto
   for (const auto& c : cases) total += c.realizations;
   const int thread_request = options.thread_request();
   const std::string& prefix = options.checkpoint;
-  const bool resume = options.resume || options.resume_other_version;
-  if (resume && prefix.empty()) bad_value("resume", ": needs checkpoint= (the prefix of the interrupted run)");
+  if ((options.resume || options.resume_other_version) && prefix.empty())
+    bad_value("resume", ": needs checkpoint= (the prefix of the interrupted run)");
   const bool compare = !paper_path.empty();  // "": no comparison with the paper's Table I
   const std::vector<PaperCell> paper = compare ? read_paper_table(paper_path) : std::vector<PaperCell>{};
 
   std::vector<ExponentCell> cells;
-  run_long("exponent_table", total, options.progress, [&](const LongRun& control) {
-    const RunOptions o = options.run(control);  // the table's own type of them, its bar drawn in Python
+  run_long("exponent_table", total, options, [&](const RunOptions& o) {  // as the table's own options
     cells = run_exponent_table(config, {.threads = o.threads, .checkpoint_prefix = o.checkpoint, .resume = o.resume,
                                         .accept_other_version = o.accept_other_version, .progress = 0,
                                         .meter = o.progress, .cancelled = o.cancelled});
@@ -183,7 +174,7 @@ py::dict exponent_table(const std::vector<std::string>& chains, const std::vecto
   for (const auto& name : chains) chain_list += (chain_list.empty() ? "" : ",") + name;
   if (chains.empty()) chain_list = "none";
   for (const auto& name : ic) kick_list += (kick_list.empty() ? "" : ",") + name;
-  nlohmann::json meta = metadata_head("exponent_table");
+  nlohmann::json meta;
   meta["parameters"] = {{"chains", chain_list},
                         {"F0", config.precompressions},
                         {"ic", kick_list},
@@ -203,7 +194,7 @@ py::dict exponent_table(const std::vector<std::string>& chains, const std::vecto
     out["paper_markdown"] = markdown_comparison(rows);
     meta["paper_table"] = paper_path;
   }
-  out["metadata"] = to_python(meta);
+  out["metadata"] = metadata("exponent_table", meta);
   return out;
 }
 
@@ -229,9 +220,8 @@ void bind_dynamics(py::module_& m) {
   using R = ChainRecipe;
   config_class(m, "ChainRecipe", "q xi R1 N F0 material seed quasi given_radii given_types", &R::q, &R::xi, &R::R1,
                &R::N, &R::F0, &R::material, &R::seed, &R::quasi, &R::given_radii, &R::given_types)
-      .def_property(
-          "disorder", [](const R& r) { return to_string(r.disorder); },
-          [](R& r, const std::string& name) { r.disorder = disorder_of(name); })
+      .def_property("disorder", word_getter(&R::disorder),
+                    word_setter(&R::disorder, [](const std::string& name) { return disorder_of(name); }))
       .def_property(
           "walls", [](const R& r) { return r.walls == WallShape::flat ? "flat" : "sphere"; },
           [](R& r, const std::string& word) { r.walls = parse_wall_shape(word); })

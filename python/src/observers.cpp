@@ -106,14 +106,14 @@ void bind_observers(py::module_& m) {
       .def_property_readonly("force", [](const ForceObserver& o) {
         std::vector<double> values;
         for (const auto& series : o.forces) values.insert(values.end(), series.begin(), series.end());
-        return to_numpy_2d(std::move(values), o.forces.size(), o.t.size());
+        return to_numpy(std::move(values)).reshape({o.forces.size(), o.t.size()});  // sites × times
       });
 
   using M = EnergyMapObserver;
   config_class(m, "EnergyMapSettings", "samples stride", &M::Settings::samples, &M::Settings::stride);
   readonly(py::class_<M, Observer>(m, "EnergyMap").def(py::init<const M::Settings&>()), "t", &M::t)
       .def_property_readonly("energy", [](const M& o) {
-        return to_numpy_2d(std::vector<double>(o.energy), o.t.size(), o.columns);
+        return to_numpy(o.energy).reshape({o.t.size(), o.columns});  // times × columns
       });
 
   using D = SpectralDensityObserver;
