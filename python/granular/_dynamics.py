@@ -148,9 +148,11 @@ def spreading(chain, *, ic="displacement", alpha=1e-7, beta=_core.paper_beta, si
         raise ValueError(f"spectrum_of '{spectrum_of}': displacement or velocity")
     spectrum.of = spectrum_of
     observe.spectrum = spectrum if spectral_density else None
-    kick = _core.ModeKick()
-    kick.mode, kick.near_khz, kick.energy = mode, mode_khz, energy
-    raw = _core._spreading(chain, ic, choices, beyond, observe, kick, dt is not None, _run(progress=progress))
+    case = _core.TransportCase()  # one realization: the chain's
+    case.dynamics, case.realizations, case.profile_realizations = observe, 1, 0
+    case.mode.mode, case.mode.near_khz, case.mode.energy = mode, mode_khz, energy
+    case.kick = ic
+    raw = _core._spreading(chain, case, choices, beyond, dt is not None, _run(progress=progress))
     return _spreading_run(raw, chain.N, observe, deviation_samples)
 
 
@@ -238,8 +240,12 @@ def transport(*, disorder="A", N=2501, q=0.5, xi=0.5, F0=10.0, R1=_core.paper_r1
                        max_energy_error, energy_guard)
     beyond = _beyond(damping_time, kk_gamma, mle, renormalize)
     run = _run(threads, checkpoint, resume, resume_other_version, progress)
-    return _transport(_core._transport(recipe, ic, realizations, profile, choices, beyond, dt is not None, run),
-                      profile)
+    case = _core.TransportCase()
+    case.chain = recipe
+    case.kick = ic
+    case.realizations = _core._size(realizations, "realizations", 1)
+    case.profile_realizations = case.realizations if profile else 0
+    return _transport(_core._transport(case, choices, beyond, dt is not None, run), profile)
 
 
 def _transport(raw, profile):

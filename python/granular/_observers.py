@@ -49,6 +49,12 @@ class EnergySpread(_core.EnergySpread):
         s.stop_on_energy_error, s.wall_warning = energy_guard == "stop", wall_warning
         super().__init__(s)
 
+    @property
+    def energy_guard_time(self):
+        """first sample time [s] past the energy guard (energy_guard='warn'), or None"""
+        t = _core.EnergySpread.energy_guard_time.fget(self)  # the library's -1: never
+        return None if t < 0 else t
+
 
 class Forces(_core.Forces):
     def __init__(self, at, *, samples=1000):

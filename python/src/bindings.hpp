@@ -63,8 +63,8 @@ void bind_breathers(py::module_& m);
 struct PyChain {
   ChainRecipe recipe;  ///< what the chain is realization `realization` of
   std::uint64_t realization = 0;
-  Chain chain;          ///< recipe.chain(realization)
-  Configuration types;  ///< empty when built from radii
+  Chain chain;                 ///< recipe.chain(realization)
+  Configuration types;         ///< empty when built from radii
   nlohmann::json description;  ///< describe(recipe, realization), as the tools' "chain" entry
 };
 
@@ -121,8 +121,7 @@ py::object to_py(T&& value) {
   if constexpr (is_number_vector<V>) {
     if constexpr (std::is_unsigned_v<typename V::value_type> && sizeof(typename V::value_type) > 1)
       return to_numpy(std::vector<long long>(value.begin(), value.end()));
-    else
-      return to_numpy(std::forward<T>(value));
+    else return to_numpy(std::forward<T>(value));
   } else if constexpr (std::is_base_of_v<py::object, V>) {
     return value;
   } else {

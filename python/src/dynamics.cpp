@@ -40,23 +40,15 @@ py::object csv_text(const std::function<void(std::ostream&)>& write) {
   return py::str(out.str());
 }
 
-py::dict spreading(const PyChain& chain, const std::string& ic, const TransportChoices& choices,
-                   const BeyondChoices& beyond, const SpreadingRunConfig& observe, const ModeKick& mode, bool dt_given,
-                   const PyRun& options) {
-  TransportCase c;
+/// `c`: the case as granular/_dynamics.py fills it (kick, mode, optional observers), one realization of `chain`.
+py::dict spreading(const PyChain& chain, TransportCase c, const TransportChoices& choices, const BeyondChoices& beyond,
+                   bool dt_given, const PyRun& options) {
   c.chain = chain.recipe;
-  c.kick = parse_kick(ic);
-  c.realizations = 1;
-  c.profile_realizations = 0;
   const bool automatic = apply_choices(choices, beyond, c);
   SpreadingRunConfig& d = c.dynamics;
   c.fit = c.fit_end <= d.integration.duration * (1 + 1e-12);  // a window beyond T: no exponents
-  d.forces = observe.forces;  // the optional observers, as granular/_dynamics.py chose them
-  d.energy_map = observe.energy_map;
-  d.spectrum = observe.spectrum;
-  if ((mode.mode != 0 || mode.near_khz >= 0 || mode.energy != 0) && c.kick != Kick::mode)
+  if ((c.mode.mode != 0 || c.mode.near_khz >= 0 || c.mode.energy != 0) && c.kick != Kick::mode)
     bad_value("mode", ": mode, mode_khz and energy only with ic='mode'");
-  c.mode = {.mode = mode.mode, .near_khz = mode.near_khz, .energy = mode.energy, .amplitude = 0};
   // τ by the stability rule on the chain's recipe: every realization of a random chain (as the
   // tool's --disorder), this very chain for a given one (as the tool's --config/--radii); a dt past
   // it named before anything judged on its grid.
@@ -89,13 +81,9 @@ py::dict spreading(const PyChain& chain, const std::string& ic, const TransportC
                 metadata("spreading", meta));
 }
 
-py::dict transport(const ChainRecipe& recipe, const std::string& ic, long long realizations, bool profile,
-                   const TransportChoices& choices, const BeyondChoices& beyond, bool dt_given, const PyRun& options) {
-  TransportCase c;
-  c.chain = recipe;
-  c.kick = parse_kick(ic);
-  c.realizations = checked_size(realizations, "realizations", 1);
-  c.profile_realizations = profile ? c.realizations : 0;
+/// `c`: the case as granular/_dynamics.py fills it (chain, kick, realizations, profiled ones).
+py::dict transport(TransportCase c, const TransportChoices& choices, const BeyondChoices& beyond, bool dt_given,
+                   const PyRun& options) {
   const bool automatic = apply_choices(choices, beyond, c);
   c.fit = c.fit_end <= c.dynamics.integration.duration * (1 + 1e-12);
   std::string t_warning;
@@ -162,9 +150,13 @@ py::dict exponent_table(const std::vector<std::string>& chains, const std::vecto
 
   std::vector<ExponentCell> cells;
   run_long("exponent_table", total, options, [&](const RunOptions& o) {  // as the table's own options
-    cells = run_exponent_table(config, {.threads = o.threads, .checkpoint_prefix = o.checkpoint, .resume = o.resume,
-                                        .accept_other_version = o.accept_other_version, .progress = 0,
-                                        .meter = o.progress, .cancelled = o.cancelled});
+    cells = run_exponent_table(config, {.threads = o.threads,
+                                        .checkpoint_prefix = o.checkpoint,
+                                        .resume = o.resume,
+                                        .accept_other_version = o.accept_other_version,
+                                        .progress = 0,
+                                        .meter = o.progress,
+                                        .cancelled = o.cancelled});
   });
   if (!prefix.empty())
     for (const std::string& log : case_checkpoints(prefix, cells.size())) CheckpointLog::remove_all(log);
@@ -230,8 +222,10 @@ void bind_dynamics(py::module_& m) {
   config_class(m, "ExponentTableConfig", "precompressions profile_precompressions profile_realizations base bead_chains",
                &E::precompressions, &E::profile_precompressions, &E::profile_realizations, &E::base, &E::bead_chains);
   config_class(m, "BeadChain", "name quasi", &BeadChain::name, &BeadChain::quasi);  // a quasiperiodic chain only
-  using C = TransportCase;  // what the exponent table's cases share beyond the choices
-  config_class(m, "TransportCase", "chain realizations", &C::chain, &C::realizations);
+  using C = TransportCase;  // what the keywords give beyond the choices; the exponent table's cases share it
+  config_class(m, "TransportCase", "chain realizations profile_realizations mode dynamics", &C::chain, &C::realizations,
+               &C::profile_realizations, &C::mode, &C::dynamics)
+      .def_property("kick", word_getter(&C::kick), word_setter(&C::kick, parse_kick));
   config_class(m, "RunOptions", "threads checkpoint resume resume_other_version progress", &PyRun::threads,
                &PyRun::checkpoint, &PyRun::resume, &PyRun::resume_other_version, &PyRun::progress);
   // What granular/_dynamics.py makes a SpreadingRun and a Transport of (copies of the arrays).
@@ -250,8 +244,8 @@ void bind_dynamics(py::module_& m) {
   using Sum = TransportSummary;
   readonly(py::class_<Sum>(m, "_TransportSummary"),
            "t m2 m2_centroid ipr energy_error profile mle max_energy_error reached_walls realizations", &Sum::t,
-           &Sum::m2, &Sum::m2_centroid, &Sum::ipr, &Sum::energy_error, &Sum::profile, &Sum::mle,
-           &Sum::max_energy_error, &Sum::reached_walls, &Sum::realizations);
+           &Sum::m2, &Sum::m2_centroid, &Sum::ipr, &Sum::energy_error, &Sum::profile, &Sum::mle, &Sum::max_energy_error,
+           &Sum::reached_walls, &Sum::realizations);
   m.def("_spreading", &spreading);
   m.def("_transport", &transport);
   m.def("_exponent_table", &exponent_table);

@@ -41,7 +41,8 @@ void bind_model(py::module_& m) {
   using Q = Quasiperiodic;  // granular.quasiperiodic's keywords (the tools' --quasi)
   config_class(m, "Quasiperiodic", "modulation phase angle k0", &Q::modulation, &Q::phase, &Q::angle, &Q::k0)
       .def_property("kind", word_getter(&Q::kind), word_setter(&Q::kind, parse_quasi_kind))
-      .def_property("ratio", [](const Q& q) { return q.ratio; }, word_setter(&Q::ratio, parse_ratio));
+      .def_property(
+          "ratio", [](const Q& q) { return q.ratio; }, word_setter(&Q::ratio, parse_ratio));
 
   views(
       py::class_<PyChain>(m, "Chain"), "radius mass inverse_mass contact overlap onsite",

@@ -69,8 +69,8 @@ void bind_observers(py::module_& m) {
   readonly(py::class_<RunPlan>(m, "RunPlan"), "beads total_steps time_step duration", &RunPlan::beads,
            &RunPlan::total_steps, &RunPlan::time_step, &RunPlan::duration);
   using S = SnapshotCopy;
-  readonly(py::class_<S>(m, "Snapshot"), "step t initial_energy u v energy", &S::step, &S::t, &S::initial_energy,
-           &S::u, &S::v, &S::energy);
+  readonly(py::class_<S>(m, "Snapshot"), "step t initial_energy u v energy", &S::step, &S::t, &S::initial_energy, &S::u,
+           &S::v, &S::energy);
 
   py::class_<Observer, PyObserver>(m, "Observer")
       .def(py::init<>())
@@ -93,12 +93,9 @@ void bind_observers(py::module_& m) {
       .def_property("sampling", word_getter(&E::Settings::sampling),
                     word_setter(&E::Settings::sampling, parse_sampling));
   readonly(py::class_<E, Observer>(m, "EnergySpread").def(py::init<const E::Settings&>()),
-           "t m2 m2_centroid ipr energy_error max_energy_error wall_energy", &E::t, &E::m2, &E::m2_centroid, &E::ipr,
-           &E::energy_error, &E::max_energy_error, &E::wall_energy)
-      .def_property_readonly("reached_walls", &E::reached_walls)
-      .def_property_readonly("energy_guard_time", [](const E& o) {
-        return o.energy_guard_time < 0 ? py::object(py::none()) : py::float_(o.energy_guard_time);
-      });
+           "t m2 m2_centroid ipr energy_error max_energy_error wall_energy energy_guard_time", &E::t, &E::m2,
+           &E::m2_centroid, &E::ipr, &E::energy_error, &E::max_energy_error, &E::wall_energy, &E::energy_guard_time)
+      .def_property_readonly("reached_walls", &E::reached_walls);  // energy_guard_time's None: _observers.py
 
   config_class(m, "ForcesSettings", "sites samples", &ForceObserver::Settings::sites, &ForceObserver::Settings::samples);
   readonly(py::class_<ForceObserver, Observer>(m, "Forces").def(py::init<ForceObserver::Settings>()), "t",

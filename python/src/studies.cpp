@@ -79,8 +79,7 @@ py::dict correlations(const CorrelationConfig& c, const PyRun& options) {
   options.thread_request();
   validate(c);
   CorrelationResult result;
-  run_long("correlations", c.realizations, options,
-           [&](const RunOptions& run) { result = correlation_study(c, run); });
+  run_long("correlations", c.realizations, options, [&](const RunOptions& run) { result = correlation_study(c, run); });
   const py::object meta = metadata("correlations", describe_correlations(c, result));
   return fields("rho_mean rho_std rho_theory used metadata", std::move(result.mean), std::move(result.deviation),
                 std::move(result.theory), result.used, meta);
@@ -89,8 +88,7 @@ py::dict correlations(const CorrelationConfig& c, const PyRun& options) {
 py::dict butterfly(const ButterflyConfig& c, const PyRun& options) {
   validate(c);
   std::vector<ButterflyColumn> columns;
-  run_long("butterfly", c.ratios.size(), options,
-           [&](const RunOptions& run) { columns = compute_butterfly(c, run); });
+  run_long("butterfly", c.ratios.size(), options, [&](const RunOptions& run) { columns = compute_butterfly(c, run); });
   nlohmann::json described = describe_butterfly(c, columns);
   described["threads"] = resolve_threads(options.thread_request());
   py::list out_columns;  // one dict per ratio, flattened into the tool's rows by granular/_studies.py
