@@ -1,7 +1,8 @@
 """granular.spreading, granular.transport and granular.exponent_table: their keywords, defaults and
-docstrings. Each fills the library's choice structs (granular._core.TransportChoices, BeyondChoices,
-...; C++ defaults) and makes one call to granular._core, which builds the case by the rule the
-tools use (study/transport_choices.hpp), runs it and returns its arrays and metadata."""
+docstrings. Each fills the library's structs (granular._core.TransportCase, TransportChoices,
+BeyondChoices, ...; C++ defaults) and makes one call to granular._core, which completes the case by
+the rule the tools use (study/transport_choices.hpp), runs it and returns the library's result and
+metadata; the result dicts (SpreadingRun, Transport) are shaped here."""
 import math
 
 import numpy as np

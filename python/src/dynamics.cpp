@@ -1,9 +1,10 @@
 // The nonlinear dynamics under granular.spreading, granular.transport and granular.exponent_table,
 // whose keywords, defaults and docstrings live in granular/_dynamics.py. Here: the library's
-// choice structs (TransportChoices, BeyondChoices, ModeKick, ChainRecipe, the optional observers
-// of a SpreadingRunConfig, ExponentTableConfig) bound with their C++ defaults, and one call per job that
-// takes them, turns them into a TransportCase by the tools' rule (study/transport_choices.hpp),
-// runs it and returns its results as NumPy arrays with the library's own JSON and CSV writers.
+// structs (TransportCase with its ModeKick and the optional observers of its SpreadingRunConfig,
+// TransportChoices, BeyondChoices, ChainRecipe, ExponentTableConfig) bound with their C++
+// defaults, and one call per job that takes them, completes the case by the tools' rule
+// (study/transport_choices.hpp), runs it and returns the library's result (granular/_dynamics.py
+// shapes it) or the tool's CSV text, with the library's own JSON.
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <sstream>
