@@ -119,9 +119,12 @@ template <class T>
 py::object to_py(T&& value) {
   using V = std::remove_cvref_t<T>;
   if constexpr (is_number_vector<V>) {
-    if constexpr (std::is_unsigned_v<typename V::value_type> && sizeof(typename V::value_type) > 1)
+    using E = typename V::value_type;
+    if constexpr (std::is_unsigned_v<E> && sizeof(E) > 1) {
       return to_numpy(std::vector<long long>(value.begin(), value.end()));
-    else return to_numpy(std::forward<T>(value));
+    } else {
+      return to_numpy(std::forward<T>(value));
+    }
   } else if constexpr (std::is_base_of_v<py::object, V>) {
     return value;
   } else {
