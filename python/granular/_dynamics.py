@@ -1,10 +1,14 @@
 """granular.spreading, granular.transport and granular.exponent_table: their keywords, defaults and
-docstrings. Each fills the library's choice structs (granular._core.TransportChoices, BeyondChoices,
-...; C++ defaults) and makes one call to granular._core, which builds the case by the rule the
-tools use (study/transport_choices.hpp), runs it and returns its arrays and metadata."""
+docstrings. Each fills the library's structs (granular._core.TransportCase, TransportChoices,
+BeyondChoices, ...; C++ defaults) and makes one call to granular._core, which completes the case by
+the rule the tools use (study/transport_choices.hpp), runs it and returns the library's result and
+metadata; the result dicts (SpreadingRun, Transport) are shaped here."""
 import math
 
+import numpy as np
+
 from . import _core
+from ._arguments import double_vector, number_list
 from ._model import _quasi
 from ._results import ExponentTable, SpreadingRun, Transport
 
@@ -68,7 +72,7 @@ def _choices(alpha, beta, site, centre, T, dt, integrator, force_law, samples, s
     c.reference_max_step = reference_max_step
     c.max_energy_error = max_energy_error
     c.energy_guard = energy_guard
-    window = _core._vector(fit, "fit")
+    window = double_vector(fit, "fit")
     if len(window) != 2:
         raise ValueError("fit: expected (start, stop) [s] with 0 < start < stop")
     c.fit_begin, c.fit_end = window
@@ -122,25 +126,79 @@ def spreading(chain, *, ic="displacement", alpha=1e-7, beta=_core.paper_beta, si
                        t_star, kappa, bootstrap, active_window, window_threshold, reference_max_step,
                        max_energy_error, energy_guard)
     beyond = _beyond(damping_time, kk_gamma, mle, renormalize, deviation_samples)
-    observe = _core.SpreadingObservers()
+    observe = _core.SpreadingRunConfig()  # the optional observers (None: not run)
+    forces = _core.ForcesSettings()
     if forces_at is not None:
         sites = []
-        for s in _core._vector(forces_at, "forces_at"):
+        for s in double_vector(forces_at, "forces_at"):
             if s != math.floor(s) or s < 1 or s > chain.N:
                 raise ValueError(f"forces_at {_core._format_number(s)}: outside the chain of {chain.N} beads (1..N)")
             sites.append(int(s) - 1)
-        observe.force_sites = sites
-    observe.force_samples = _core._size(force_samples, "force_samples", 1, _MAX)
-    observe.map_samples = _core._size(map_samples, "map_samples", 2, _MAX) if energy_map else 0
-    observe.map_stride = _core._size(map_stride, "map_stride", 1, _MAX)
-    observe.spectrum_samples = _core._size(spectrum_samples, "spectrum_samples", 2, _MAX) if spectral_density else 0
+        forces.sites = sites
+    forces.samples = _core._size(force_samples, "force_samples", 1, _MAX)
+    observe.forces = forces
+    energy_map_settings = _core.EnergyMapSettings()
+    if energy_map:
+        energy_map_settings.samples = _core._size(map_samples, "map_samples", 2, _MAX)
+    energy_map_settings.stride = _core._size(map_stride, "map_stride", 1, _MAX)
+    observe.energy_map = energy_map_settings if energy_map else None
+    spectrum = _core.SpectralDensitySettings()
+    if spectral_density:
+        spectrum.samples = _core._size(spectrum_samples, "spectrum_samples", 2, _MAX)
     if spectrum_of not in ("displacement", "velocity"):
         raise ValueError(f"spectrum_of '{spectrum_of}': displacement or velocity")
-    observe.spectrum_source = getattr(_core.SpectrumSource, spectrum_of)
-    kick = _core.ModeKick()
-    kick.mode, kick.near_khz, kick.energy = mode, mode_khz, energy
-    return SpreadingRun(_core._spreading(chain, ic, choices, beyond, observe, kick, dt is not None,
-                                         _run(progress=progress)))
+    spectrum.of = spectrum_of
+    observe.spectrum = spectrum if spectral_density else None
+    case = _core.TransportCase()  # one realization: the chain's
+    case.dynamics, case.realizations, case.profile_realizations = observe, 1, 0
+    case.mode.mode, case.mode.near_khz, case.mode.energy = mode, mode_khz, energy
+    case.kick = ic
+    raw = _core._spreading(chain, case, choices, beyond, dt is not None, _run(progress=progress))
+    return _spreading_run(raw, chain.N, observe, deviation_samples)
+
+
+def _array_or_none(x):
+    return x if len(x) else None
+
+
+def _series(t, site, name, values, shape):
+    """{t, site (from 1), <name>: values as a `shape` array} of a recorded series."""
+    return {"t": t, "site": np.asarray(site, dtype=np.int64), name: np.asarray(values, dtype=float).reshape(shape)}
+
+
+def _spreading_run(raw, N, observe, deviation_samples):
+    """The granular.SpreadingRun of _core._spreading's result (run: a _core._SpreadingResult)."""
+    r = raw["run"]
+    out = dict(raw["exponents"])
+    out["warnings"] = raw["warnings"]
+    for name in ("t", "m2", "m2_centroid", "ipr", "energy_error", "initial_energy", "max_energy_error"):
+        out[name] = getattr(r, name)
+    out["final_state"] = {"u": r.final_state.u, "v": r.final_state.v, "energy": r.final_energy,
+                          "force": r.final_force}
+    # Beyond the paper: the columns `dissipated` and `mle` of the tool's CSV, and its --deviation file.
+    out["dissipated"], out["mle"] = _array_or_none(r.dissipated), _array_or_none(r.mle)
+    out["deviation"] = None
+    if deviation_samples > 0:
+        t = r.deviation_t
+        out["deviation"] = _series(t, np.arange(1, N + 1), "share", r.deviation, (len(t), N))
+    sites = observe.forces.sites
+    out["forces"] = None
+    if sites:
+        t = r.force_t
+        out["forces"] = _series(t, [s + 1 for s in sites], "force", r.forces, (len(sites), len(t)))
+    out["energy_map"] = None
+    if observe.energy_map is not None:
+        t, columns = r.map_t, r.map_columns
+        out["energy_map"] = _series(t, np.arange(columns) * observe.energy_map.stride + 1, "energy", r.map_energy,
+                                    (len(t), columns))
+    out["spectral_density"] = None
+    if observe.spectrum is not None:
+        out["spectral_density"] = {"freq_khz": r.spectrum_khz, "g": r.spectrum}
+    for name in ("wall_energy", "reached_walls", "steps", "seconds"):
+        out[name] = getattr(r, name)
+    out["energy_guard_time"] = None if r.energy_guard_time < 0 else r.energy_guard_time
+    out["metadata"] = raw["metadata"]
+    return SpreadingRun(out)
 
 
 spreading.__doc__ = (
@@ -183,7 +241,30 @@ def transport(*, disorder="A", N=2501, q=0.5, xi=0.5, F0=10.0, R1=_core.paper_r1
                        max_energy_error, energy_guard)
     beyond = _beyond(damping_time, kk_gamma, mle, renormalize)
     run = _run(threads, checkpoint, resume, resume_other_version, progress)
-    return Transport(_core._transport(recipe, ic, realizations, profile, choices, beyond, dt is not None, run))
+    case = _core.TransportCase()
+    case.chain = recipe
+    case.kick = ic
+    case.realizations = _core._size(realizations, "realizations", 1)
+    case.profile_realizations = case.realizations if profile else 0
+    return _transport(_core._transport(case, choices, beyond, dt is not None, run), profile)
+
+
+def _transport(raw, profile):
+    """The granular.Transport of _core._transport's result (summary: a _core._TransportSummary)."""
+    s = raw["summary"]
+    out = dict(raw["exponents"])
+    out["warnings"] = raw["warnings"]
+    out["t"] = s.t
+    for name in ("m2", "m2_centroid", "ipr", "energy_error"):
+        series = getattr(s, name)
+        out[name], out[name + "_se"] = series.mean, series.standard_error
+    out["profile"] = {"energy": s.profile.mean, "energy_se": s.profile.standard_error} if profile else None
+    # With the tangent map: <X1(t)> [1/s] (the tool's column mle) and its standard error.
+    out["mle"], out["mle_se"] = _array_or_none(s.mle.mean), _array_or_none(s.mle.standard_error)
+    for name in ("max_energy_error", "reached_walls", "realizations"):
+        out[name] = getattr(s, name)
+    out["metadata"] = raw["metadata"]
+    return Transport(out)
 
 
 transport.__doc__ = (
@@ -221,8 +302,8 @@ def exponent_table(*, chains=["h", "A", "RDM1", "RDM2"], F0=[10.0, 0.5, 0.1, 0.0
         table.bead_chains = [chain]
     if chains is None or chains == "none":
         chains = []
-    table.precompressions = _core._numbers(F0, "F0", 0)
-    table.profile_precompressions = [] if profile_F0 is None else _core._numbers(profile_F0, "profile_F0", 0)
+    table.precompressions = number_list(F0, "F0", 0)
+    table.profile_precompressions = [] if profile_F0 is None else number_list(profile_F0, "profile_F0", 0)
     table.profile_realizations = _core._size(profile_realizations, "profile_realizations")
     recipe = _core.ChainRecipe()
     recipe.N = _core._size(N, "N", 2, _MAX)
@@ -235,8 +316,9 @@ def exponent_table(*, chains=["h", "A", "RDM1", "RDM2"], F0=[10.0, 0.5, 0.1, 0.0
                        max_energy_error, energy_guard)
     beyond = _beyond(damping_time, kk_gamma, mle, renormalize)
     run = _run(threads, checkpoint, resume, resume_other_version, progress)
-    return ExponentTable(_core._exponent_table(chains, ic, table, choices, beyond, dt is not None,
-                                               compare_paper, run))
+    # compare_paper: the path of a table in the paper's format, or True for the paper's own ("": no comparison)
+    paper = compare_paper if isinstance(compare_paper, str) else _core._paper_table if compare_paper else ""
+    return ExponentTable(_core._exponent_table(chains, ic, table, choices, beyond, dt is not None, paper, run))
 
 
 exponent_table.__doc__ = (

@@ -6,6 +6,7 @@ import threading
 import numpy as np
 
 from . import _core
+from ._arguments import double_vector
 
 from ._core import DynamicalMatrix
 from ._model import _document, paper_r1, steel
@@ -36,7 +37,7 @@ _matrix = DynamicalMatrix.__init__
 
 
 def _matrix_init(self, diagonal, off_diagonal, inverse_sqrt_mass=None):
-    diagonal, off_diagonal = _core._vector(diagonal, "diagonal"), _core._vector(off_diagonal, "off_diagonal")
+    diagonal, off_diagonal = double_vector(diagonal, "diagonal"), double_vector(off_diagonal, "off_diagonal")
     if not diagonal:
         raise ValueError("diagonal: empty (a matrix needs at least one row)")
     if len(off_diagonal) + 1 != len(diagonal):
@@ -44,7 +45,7 @@ def _matrix_init(self, diagonal, off_diagonal, inverse_sqrt_mass=None):
     if inverse_sqrt_mass is None:
         inverse_sqrt_mass = [1.0] * len(diagonal)
     else:
-        inverse_sqrt_mass = _core._vector(inverse_sqrt_mass, "inverse_sqrt_mass")
+        inverse_sqrt_mass = double_vector(inverse_sqrt_mass, "inverse_sqrt_mass")
         if len(inverse_sqrt_mass) != len(diagonal):
             raise ValueError(f"inverse_sqrt_mass: has {len(inverse_sqrt_mass)} entries; need N = {len(diagonal)}")
         if not all(x > 0 for x in inverse_sqrt_mass):
@@ -97,7 +98,7 @@ def _selection(near, count, window, got=True):
     if window is not None:
         if near is not None or count is not None:
             raise ValueError("window: cannot be combined with near/count")
-        w = _core._vector(window, "window", False)
+        w = double_vector(window, "window", False)
         if len(w) != 2:
             raise ValueError("window: expected (lo, hi) in kHz" + (f", got {len(w)} values" if got else ""))
         return _core._window(w[0], w[1])
@@ -114,10 +115,11 @@ def _selection(near, count, window, got=True):
 
 
 def _system(system):
-    """A granular.Chain or granular.DynamicalMatrix, TypeError otherwise."""
+    """(chain, None) for a granular.Chain, (None, matrix) for a granular.DynamicalMatrix (the arguments of
+    _core._SpectrumSolver._solve), TypeError otherwise."""
     if not isinstance(system, (_core.Chain, DynamicalMatrix)):
         raise TypeError(f"expected a granular.Chain or a granular.DynamicalMatrix, got {type(system)}")
-    return system
+    return (system, None) if isinstance(system, _core.Chain) else (None, system)
 
 
 def _config(method, driver, vectors, tolerance, subspace, lanes):
@@ -146,7 +148,7 @@ class SpectrumSolver(_core._SpectrumSolver):
         granular.spectrum's). Returns a granular.Spectrum."""
         system, selection = _system(system), _selection(near, count, window)
         with self._busy:
-            return Spectrum(*self._solve(self._method, system, selection, False))
+            return Spectrum(*self._solve(self._method, *system, selection, False))
 
 
 def dynamical_matrix(chain):
@@ -168,7 +170,7 @@ def spectrum(system, *, near=None, count=None, window=None, method="lapack", dri
              tolerance=0.0, subspace=0, lanes=8):
     selection = _selection(near, count, window)
     config = _config(method, driver, vectors, tolerance, subspace, lanes)
-    return Spectrum(*_core._SpectrumSolver(config)._solve(method, _system(system), selection, True))
+    return Spectrum(*_core._SpectrumSolver(config)._solve(method, *_system(system), selection, True))
 
 
 spectrum.__doc__ = (

@@ -6,6 +6,7 @@ import math
 import numpy as np
 
 from . import _core
+from ._arguments import double_vector
 from ._core import Chain, FpuCoefficients, Material, flat_wall, paper_r1, steel
 
 _MAX = 100000000  # beads of a stored chain
@@ -124,7 +125,7 @@ def diatomic(N=100, xi=0.5, F0=10.0, R1=paper_r1, material=steel, walls="flat"):
 
 def _types(values):
     """Bead types 1 or 2 (a list) from any array-like of numbers, ValueError naming `types` otherwise."""
-    numbers = _core._vector(values, "types", False)
+    numbers = double_vector(values, "types", False)
     for i, x in enumerate(numbers):
         if x != 1 and x != 2:
             raise ValueError(f"types: bead {i + 1} has type {_core._format_number(x)} (must be 1 or 2)")
@@ -146,7 +147,7 @@ def from_radii(radii, F0=10.0, material=steel, walls="flat"):
     precompression F0 [N], between walls of the same material: "flat", or "sphere" (fixed spheres of the end beads'
     radii)."""
     recipe = _core.ChainRecipe()
-    recipe.given_radii = _core._vector(radii, "radii")
+    recipe.given_radii = double_vector(radii, "radii")
     if len(recipe.given_radii) < 2:
         raise ValueError(f"radii: {len(recipe.given_radii)} beads; a chain needs at least 2")
     recipe.F0, recipe.material, recipe.walls = F0, material, walls
@@ -254,7 +255,7 @@ def correlation_theory(disorder, q, distance):
     if isinstance(distance, int):
         return _core._correlation_theory(disorder, q, distance)
     _core._correlation_theory(disorder, q, 0)  # q and disorder checked first
-    distance = _core._vector(distance, "distance")
+    distance = double_vector(distance, "distance")
     for i, d in enumerate(distance):
         if d < 0 or d != math.floor(d):
             raise ValueError(f"distance: entry {i} is {_core._format_number(d)} (must be a whole number >= 0)")

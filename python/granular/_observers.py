@@ -4,6 +4,7 @@ spread() and the kicks are here. Beads are 0-based, as in granular.Chain's array
 import operator
 
 from . import _core
+from ._arguments import double_vector
 from ._core import FinalState, Observer, RunPlan, Snapshot, State
 from ._model import _document
 
@@ -12,7 +13,7 @@ _state = State.__init__
 
 
 def _state_init(self, u, v):
-    u, v = _core._vector(u, "u"), _core._vector(v, "v")
+    u, v = double_vector(u, "u"), double_vector(v, "v")
     if len(u) != len(v):
         raise ValueError("v: needs as many entries as u")
     _state(self, u, v)
@@ -38,7 +39,7 @@ class EnergySpread(_core.EnergySpread):
         if site is not None:
             s.site = _site(site, "site")
         if fit is not None:
-            window = _core._vector(fit, "fit")
+            window = double_vector(fit, "fit")
             if len(window) != 2:
                 raise ValueError("fit: expected (start, stop) [s]")
             s.dense.begin, s.dense.end, s.dense.step = window[0], window[1], fit_step
@@ -47,6 +48,12 @@ class EnergySpread(_core.EnergySpread):
             raise ValueError(f"energy_guard '{energy_guard}': stop or warn")
         s.stop_on_energy_error, s.wall_warning = energy_guard == "stop", wall_warning
         super().__init__(s)
+
+    @property
+    def energy_guard_time(self):
+        """first sample time [s] past the energy guard (energy_guard='warn'), or None"""
+        t = _core.EnergySpread.energy_guard_time.fget(self)  # the library's -1: never
+        return None if t < 0 else t
 
 
 class Forces(_core.Forces):

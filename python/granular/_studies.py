@@ -7,6 +7,7 @@ import math
 import numpy as np
 
 from . import _core
+from ._arguments import number_list
 from ._dynamics import _run, _set_quasi
 from ._linear import _selection
 from ._model import _quasi
@@ -104,8 +105,8 @@ def ipr_map(*, disorder="A", xi="0.1:1", q="0.2,0.5,0.8", N=100, F0=10.0, R1=_co
     c = _core.IprMapConfig()
     recipe = _core.ChainRecipe()
     recipe.disorder = disorder
-    c.xi_values = _core._numbers(xi, "xi", 0.01)
-    c.q_values = _core._numbers(q, "q", 0.1)
+    c.xi_values = number_list(xi, "xi", 0.01)
+    c.q_values = number_list(q, "q", 0.1)
     recipe.N = _core._size(N, "N", 2, _MAX)
     recipe.F0, recipe.R1, recipe.walls = F0, R1, walls
     c.realizations = _core._size(realizations, "realizations", 1)
@@ -167,7 +168,7 @@ def butterfly(kind="s1", *, ratios="0.005:0.995:0.005", N=100, modulation=0.0, p
     modulation, phase, angle, k0, seed, realization, N, F0, R1: as granular.quasiperiodic. The same numbers as
     the butterfly tool for the same options. Returns a granular.Butterfly."""
     c = _core.ButterflyConfig()
-    c.ratios = _core._numbers(ratios, "ratios", 0.005)
+    c.ratios = number_list(ratios, "ratios", 0.005)
     recipe = _core.ChainRecipe()
     recipe.N = _core._size(N, "N", 2, _MAX)
     recipe.F0, recipe.R1 = F0, R1
@@ -229,7 +230,7 @@ def localization(chain=None, *, disorder="A", N=1000000, q=0.5, xi=0.5, seed=1, 
         recipe.seed = _core._size(seed, "seed")
         _set_quasi(recipe, quasi, modulation, ratio, phase, angle, k0)
         r = _core._size(realization, "realization")
-    frequencies = _core._numbers(f, "f", 0.01)
+    frequencies = number_list(f, "f", 0.01)
     for k, v in enumerate(frequencies):
         if v < 0:
             raise ValueError(f"f: frequency {_core._format_number(v)} kHz is negative")

@@ -17,7 +17,6 @@
 #include <pybind11/stl.h>
 #include <nlohmann/json.hpp>
 
-#include "granular/ensemble/progress_meter.hpp"
 #include "granular/ensemble/run_options.hpp"
 #include "granular/model/chain.hpp"
 #include "granular/model/chain_recipe.hpp"
@@ -64,9 +63,8 @@ void bind_breathers(py::module_& m);
 struct PyChain {
   ChainRecipe recipe;  ///< what the chain is realization `realization` of
   std::uint64_t realization = 0;
-  Chain chain;          ///< recipe.chain(realization)
-  Configuration types;  ///< empty when built from radii
-  Material material = steel;
+  Chain chain;                 ///< recipe.chain(realization)
+  Configuration types;         ///< empty when built from radii
   nlohmann::json description;  ///< describe(recipe, realization), as the tools' "chain" entry
 };
 
@@ -83,11 +81,6 @@ std::size_t checked_size(long long value, const char* keyword, long long lo = 0,
 double finite(double value, const char* keyword);
 
 // --- arrays ----------------------------------------------------------------------------------
-/// A 1-D array of doubles from any array-like (lists, other dtypes, non-contiguous views are
-/// converted; a copy only when needed). ValueError naming `keyword` on the wrong shape, a
-/// non-numeric input or (when `require_finite`) NaN/infinity.
-std::vector<double> double_vector(const py::handle& values, const char* keyword, bool require_finite = true);
-
 /// A NumPy array that takes over `values` (no copy; freed with the array).
 template <class T>
 py::array_t<T> to_numpy(std::vector<T>&& values) {
@@ -99,8 +92,6 @@ template <class T>
 py::array_t<T> to_numpy(const std::vector<T>& values) {
   return to_numpy(std::vector<T>(values));
 }
-/// rows × cols, row-major, taking over `values`.
-py::array_t<double> to_numpy_2d(std::vector<double>&& values, std::size_t rows, std::size_t cols);
 /// A read-only view of `data` (n entries) kept alive by `owner` (the Python object holding it).
 py::array_t<double> view(const std::vector<double>& data, const py::handle& owner);
 /// Read-only attributes of a bound class named by the space-separated `names`, each a read-only
@@ -117,22 +108,23 @@ Class& views(Class&& c, const char* names, Part part, M... members) {
    ...);
   return c;
 }
-/// Counts and indices as signed integers (NumPy arithmetic on them stays integer).
-template <class T>
-std::vector<long long> signed_of(const std::vector<T>& values) {
-  return {values.begin(), values.end()};
-}
 template <class T>
 constexpr bool is_number_vector = false;
 template <class T>
 constexpr bool is_number_vector<std::vector<T>> = std::is_arithmetic_v<T>;
-/// A C++ value as Python gets it: a vector of numbers as a NumPy array (taken over when an rvalue),
-/// a Python object as it is, the rest as pybind11 casts it.
+/// A C++ value as Python gets it: a vector of numbers as a NumPy array (taken over when an rvalue;
+/// counts and indices as signed integers, so that NumPy arithmetic on them stays integer; bytes as
+/// they are), a Python object as it is, the rest as pybind11 casts it.
 template <class T>
 py::object to_py(T&& value) {
   using V = std::remove_cvref_t<T>;
   if constexpr (is_number_vector<V>) {
-    return to_numpy(std::forward<T>(value));
+    using E = typename V::value_type;
+    if constexpr (std::is_unsigned_v<E> && sizeof(E) > 1) {
+      return to_numpy(std::vector<long long>(value.begin(), value.end()));
+    } else {
+      return to_numpy(std::forward<T>(value));
+    }
   } else if constexpr (std::is_base_of_v<py::object, V>) {
     return value;
   } else {
@@ -149,62 +141,41 @@ py::dict fields(const char* names, T&&... values) {
   return out;
 }
 
-/// Read-only attributes of a bound class named by the space-separated `names`, each a NumPy copy
-/// of a vector member (in order).
-template <class Class, class T, class... M>
-Class& arrays(Class&& c, const char* names, M T::*... members) {
-  std::istringstream words(names);
-  std::string field;
-  ((words >> field, c.def_property_readonly(field.c_str(), [members](const T& x) { return to_numpy(x.*members); })),
-   ...);
-  return c;
-}
-
 /// Read-only attributes of a bound class named by the space-separated `names`, each a member as
-/// pybind11 casts it (in order).
+/// to_py gives it (in order): a vector of numbers as a NumPy copy, the rest as pybind11 casts it.
 template <class Class, class T, class... M>
 Class& readonly(Class&& c, const char* names, M T::*... members) {
   std::istringstream words(names);
   std::string field;
-  ((words >> field, c.def_readonly(field.c_str(), members)), ...);
+  ((words >> field, c.def_property_readonly(field.c_str(), [members](const T& x) { return to_py(x.*members); })), ...);
   return c;
 }
 
 // --- metadata ----------------------------------------------------------------------------------
 py::object to_python(const nlohmann::json& value);
-/// {"function": "granular.<name>", "version": …}: the head of every result's metadata.
-nlohmann::json metadata_head(const std::string& function);
-/// A result's metadata as a dict: metadata_head(function) updated with `described` (the library's
-/// describe_… of it, as the tool writes it).
+/// A result's metadata as a dict: {"function": "granular.<function>", "version": …, "blas": …}
+/// updated with `described` (the library's describe_… of it, as the tool writes it).
 py::object metadata(const std::string& function, const nlohmann::json& described);
 
 // --- parsing the tools' words --------------------------------------------------------------------
-Disorder disorder_of(const std::string& name);
-/// A list of numbers: a Python sequence / array, or a string in the tools' range syntax
-/// ("0.1:1", "0.1:1:0.05", "0.2,0.5,0.8"), with the tools' default step.
-std::vector<double> number_list(const py::handle& values, const char* keyword, double default_step);
+/// A disorder by its name; a ValueError naming `keyword` for another word.
+Disorder disorder_of(const std::string& name, const char* keyword = "disorder");
 
 // --- long runs ------------------------------------------------------------------------------------
-/// What a long library call gets to cooperate: a cancellation flag for RunOptions::cancelled and
-/// a silent meter to advance (RunOptions::progress).
-struct LongRun {
-  std::function<bool()> cancelled;
-  ProgressMeter* meter = nullptr;
-};
-/// Runs `work` with the GIL released on a thread of its own through granular._progress.run_long,
-/// which polls for Ctrl-C, draws the progress bar when `progress`, and on KeyboardInterrupt sets
-/// the cancellation flag and waits for `work` to stop. `work` must not touch Python objects.
-/// Library exceptions propagate (as Python exceptions).
-void run_long(const std::string& label, std::size_t total, bool progress,
-              const std::function<void(const LongRun&)>& work);
 /// How a long call runs, as the keyword functions in granular/*.py fill it (granular._core.RunOptions).
 struct PyRun {
   long long threads = 0;
   std::string checkpoint;  ///< "" = none
   bool resume = false, resume_other_version = false, progress = false;
   int thread_request() const { return static_cast<int>(checked_size(threads, "threads", 0, 4096)); }
-  /// The library's RunOptions of these, driven by `control`.
-  RunOptions run(const LongRun& control) const;
 };
+/// Runs `work` with the GIL released on a thread of its own through granular._progress.run_long,
+/// which polls for Ctrl-C, draws the progress bar when options.progress, and on KeyboardInterrupt
+/// sets the cancellation flag and waits for `work` to stop. `work` gets the library's RunOptions of
+/// `options`, with that flag (RunOptions::cancelled) and a silent meter of `total` steps
+/// (RunOptions::progress). `work` must not touch Python objects. Library exceptions propagate (as
+/// Python exceptions).
+void run_long(const std::string& label, std::size_t total, const PyRun& options,
+              const std::function<void(const RunOptions&)>& work);
 
 }  // namespace granular::python

@@ -1,9 +1,10 @@
 // The nonlinear dynamics under granular.spreading, granular.transport and granular.exponent_table,
 // whose keywords, defaults and docstrings live in granular/_dynamics.py. Here: the library's
-// choice structs (TransportChoices, BeyondChoices, ModeKick, ChainRecipe, the optional observers
-// of a SpreadingRunConfig, ExponentTableConfig) bound with their C++ defaults, and one call per job that
-// takes them, turns them into a TransportCase by the tools' rule (study/transport_choices.hpp),
-// runs it and returns its results as NumPy arrays with the library's own JSON and CSV writers.
+// structs (TransportCase with its ModeKick and the optional observers of its SpreadingRunConfig,
+// TransportChoices, BeyondChoices, ChainRecipe, ExponentTableConfig) bound with their C++
+// defaults, and one call per job that takes them, completes the case by the tools' rule
+// (study/transport_choices.hpp), runs it and returns the library's result (granular/_dynamics.py
+// shapes it) or the tool's CSV text, with the library's own JSON.
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <sstream>
@@ -11,7 +12,6 @@
 
 #include "bindings.hpp"
 #include "granular/ensemble/checkpoint_log.hpp"
-#include "granular/error.hpp"
 #include "granular/model/quasiperiodic.hpp"
 #include "granular/parallel/mpi_context.hpp"
 #include "granular/study/case_settling.hpp"
@@ -24,20 +24,6 @@
 
 namespace granular::python {
 namespace {
-using namespace py::literals;
-
-/// The optional observers of granular.spreading, as its keywords give them: 0 samples switch a map
-/// or a spectral density off.
-struct SpreadingObservers {
-  std::vector<std::size_t> force_sites;
-  std::size_t force_samples = 1000, map_samples = 0, map_stride = 1, spectrum_samples = 0;
-  SpectrumSource spectrum_source = SpectrumSource::displacement;
-  void apply_to(SpreadingRunConfig& d) const {
-    d.forces = {force_sites, force_samples};
-    if (map_samples > 0) d.energy_map = EnergyMapObserver::Settings{map_samples, map_stride};
-    if (spectrum_samples > 0) d.spectrum = SpectralDensityObserver::Settings{spectrum_samples, spectrum_source};
-  }
-};
 
 /// `choices` and `beyond` applied to `c` as the tools do; integrator 'auto' stands for SABA2C until
 /// the step is settled. Returns whether it was 'auto'.
@@ -55,42 +41,15 @@ py::object csv_text(const std::function<void(std::ostream&)>& write) {
   return py::str(out.str());
 }
 
-py::object array_or_none(std::vector<double>&& x) {
-  return x.empty() ? py::object(py::none()) : py::object(to_numpy(std::move(x)));
-}
-
-/// Bead numbers (from 1) of `count` columns, `stride` beads apart.
-std::vector<long long> numbered(std::size_t count, std::size_t stride = 1) {
-  std::vector<long long> sites;
-  for (std::size_t j = 0; j < count; ++j) sites.push_back(static_cast<long long>(j * stride + 1));
-  return sites;
-}
-
-/// {t, site, <name>: rows × columns} of a recorded series.
-py::dict series(std::vector<double>&& t, std::vector<long long>&& sites, const char* name, std::vector<double>&& values,
-                std::size_t rows, std::size_t cols) {
-  py::dict d;
-  d["t"] = to_numpy(std::move(t));
-  d["site"] = to_numpy(std::move(sites));
-  d[name] = to_numpy_2d(std::move(values), rows, cols);
-  return d;
-}
-
-py::dict spreading(const PyChain& chain, const std::string& ic, const TransportChoices& choices,
-                   const BeyondChoices& beyond, const SpreadingObservers& observe, const ModeKick& mode, bool dt_given,
-                   const PyRun& options) {
-  TransportCase c;
+/// `c`: the case as granular/_dynamics.py fills it (kick, mode, optional observers), one realization of `chain`.
+py::dict spreading(const PyChain& chain, TransportCase c, const TransportChoices& choices, const BeyondChoices& beyond,
+                   bool dt_given, const PyRun& options) {
   c.chain = chain.recipe;
-  c.kick = parse_kick(ic);
-  c.realizations = 1;
-  c.profile_realizations = 0;
   const bool automatic = apply_choices(choices, beyond, c);
   SpreadingRunConfig& d = c.dynamics;
   c.fit = c.fit_end <= d.integration.duration * (1 + 1e-12);  // a window beyond T: no exponents
-  observe.apply_to(d);
-  if ((mode.mode != 0 || mode.near_khz >= 0 || mode.energy != 0) && c.kick != Kick::mode)
+  if ((c.mode.mode != 0 || c.mode.near_khz >= 0 || c.mode.energy != 0) && c.kick != Kick::mode)
     bad_value("mode", ": mode, mode_khz and energy only with ic='mode'");
-  c.mode = {.mode = mode.mode, .near_khz = mode.near_khz, .energy = mode.energy, .amplitude = 0};
   // τ by the stability rule on the chain's recipe: every realization of a random chain (as the
   // tool's --disorder), this very chain for a given one (as the tool's --config/--radii); a dt past
   // it named before anything judged on its grid.
@@ -101,71 +60,31 @@ py::dict spreading(const PyChain& chain, const std::string& ic, const TransportC
 
   SpreadingResult r;
   std::optional<TransportExponents> exponents;
-  run_long("spreading", 1, options.progress, [&](const LongRun& control) {
+  run_long("spreading", 1, options, [&](const RunOptions& run) {
     r = run_spreading(chain.chain, kicked.initial, spreading_config(c));
     if (c.fit) exponents = transport_exponents(c, r.t, r.m2, r.m2_centroid, r.ipr);
-    control.meter->advance();
+    run.progress->advance();
   });
 
-  const nlohmann::json& described = chain.description;
-  nlohmann::json meta = metadata_head("spreading");
-  meta["parameters"] = describe_parameters(c, described, kicked, false);
+  nlohmann::json meta;
+  meta["parameters"] = describe_parameters(c, chain.description, kicked, false);
   meta["seed"] = c.chain.seed;
   const nlohmann::json fitted = describe_exponents(exponents, c.centre);
   meta.update(fitted);
   meta["time_step_rule"] = step_rule;
-  meta["run"] = describe_run(r, described.value("realization", nlohmann::json(0)));
+  meta["run"] = describe_run(r, chain.description.value("realization", nlohmann::json(0)));
   if (d.spectrum) meta["spectrum"] = {{"of", to_string(d.spectrum->source)}, {"samples", d.spectrum->samples}};
 
-  py::dict out = to_python(fitted);
   std::vector<std::string> said = notes(c);
   for (const auto& w : warnings(r, d)) said.push_back(w);
-  out["warnings"] = warn(said);
-  out.attr("update")(fields("t m2 m2_centroid ipr energy_error initial_energy max_energy_error", std::move(r.t),
-                            std::move(r.m2), std::move(r.m2_centroid), std::move(r.ipr), std::move(r.energy_error),
-                            r.initial_energy, r.max_energy_error));
-  out["final_state"] = fields("u v energy force", std::move(r.final_state.u), std::move(r.final_state.v),
-                              std::move(r.final_energy), std::move(r.final_force));
-  // Beyond the paper: the columns `dissipated` and `mle` of the tool's CSV, and its --deviation file.
-  out["dissipated"] = array_or_none(std::move(r.dissipated));
-  out["mle"] = array_or_none(std::move(r.mle));
-  const std::size_t n = c.chain.size(), sites = d.forces.sites.size();
-  out["deviation"] = py::none();
-  if (d.deviation_samples > 0) {
-    const std::size_t rows = r.deviation_t.size();
-    out["deviation"] = series(std::move(r.deviation_t), numbered(n), "share", std::move(r.deviation), rows, n);
-  }
-  out["forces"] = py::none();
-  if (sites > 0) {
-    std::vector<double> values;
-    for (const auto& f : r.forces) values.insert(values.end(), f.begin(), f.end());
-    const std::size_t count = r.force_t.size();
-    std::vector<long long> numbers;
-    for (std::size_t s : d.forces.sites) numbers.push_back(static_cast<long long>(s + 1));
-    out["forces"] = series(std::move(r.force_t), std::move(numbers), "force", std::move(values), sites, count);
-  }
-  out["energy_map"] = py::none();
-  if (d.energy_map) {
-    const std::size_t rows = r.map_t.size();
-    out["energy_map"] = series(std::move(r.map_t), numbered(r.map_columns, d.energy_map->stride), "energy",
-                               std::move(r.map_energy), rows, r.map_columns);
-  }
-  out["spectral_density"] = py::none();
-  if (d.spectrum) out["spectral_density"] = fields("freq_khz g", std::move(r.spectrum_khz), std::move(r.spectrum));
-  out.attr("update")(
-      fields("wall_energy reached_walls steps seconds", r.wall_energy, r.reached_walls, r.steps, r.seconds));
-  out["energy_guard_time"] = r.energy_guard_time < 0 ? py::object(py::none()) : py::float_(r.energy_guard_time);
-  out["metadata"] = to_python(meta);
-  return out;
+  // granular/_dynamics.py makes the granular.SpreadingRun of the bound result.
+  return fields("run exponents warnings metadata", std::move(r), to_python(fitted), warn(said),
+                metadata("spreading", meta));
 }
 
-py::dict transport(const ChainRecipe& recipe, const std::string& ic, long long realizations, bool profile,
-                   const TransportChoices& choices, const BeyondChoices& beyond, bool dt_given, const PyRun& options) {
-  TransportCase c;
-  c.chain = recipe;
-  c.kick = parse_kick(ic);
-  c.realizations = checked_size(realizations, "realizations", 1);
-  c.profile_realizations = profile ? c.realizations : 0;
+/// `c`: the case as granular/_dynamics.py fills it (chain, kick, realizations, profiled ones).
+py::dict transport(TransportCase c, const TransportChoices& choices, const BeyondChoices& beyond, bool dt_given,
+                   const PyRun& options) {
   const bool automatic = apply_choices(choices, beyond, c);
   c.fit = c.fit_end <= c.dynamics.integration.duration * (1 + 1e-12);
   std::string t_warning;
@@ -173,19 +92,18 @@ py::dict transport(const ChainRecipe& recipe, const std::string& ic, long long r
   if (!t_warning.empty()) warn({t_warning});  // after the errors
   const int thread_request = options.thread_request();
   const std::string& log = options.checkpoint;
-  const bool resume = options.resume || options.resume_other_version;
-  if (resume && log.empty()) bad_value("resume", ": needs checkpoint= (the file of the interrupted run)");
+  if ((options.resume || options.resume_other_version) && log.empty())
+    bad_value("resume", ": needs checkpoint= (the file of the interrupted run)");
   // The chain of realization 0, as the tool describes it (and the β it kicks it with).
   const KickedChain first = kick(c, c.chain.chain(0));
 
   // Read before the run, which rewrites the checkpoint under this code's name.
   const nlohmann::json resumed = options.resume_other_version ? resumed_checkpoint({log}) : nlohmann::json();
   TransportSummary s;
-  run_long("transport", c.realizations, options.progress,
-           [&](const LongRun& control) { s = run_transport_study(c, options.run(control)); });
+  run_long("transport", c.realizations, options, [&](const RunOptions& run) { s = run_transport_study(c, run); });
   if (!log.empty()) CheckpointLog::remove_all(log);  // finished: the result is in memory, as the tool's in files
 
-  nlohmann::json meta = metadata_head("transport");
+  nlohmann::json meta;
   meta["parameters"] = describe_parameters(c, describe(c.chain, 0), first, true);
   meta["seed"] = c.chain.seed;
   if (!resumed.is_null()) meta["resumed_checkpoint"] = resumed;
@@ -199,38 +117,18 @@ py::dict transport(const ChainRecipe& recipe, const std::string& ic, long long r
                       {"failed_excluded", s.excluded}};
   meta["time_step_rule"] = step_rule;
 
-  py::dict out = to_python(fitted);
   std::vector<std::string> said = notes(c);
   for (const auto& w : warnings(s, c.dynamics)) said.push_back(w);
-  out["warnings"] = warn(said);
-  out.attr("update")(fields("t m2 m2_se m2_centroid m2_centroid_se ipr ipr_se energy_error energy_error_se",
-                            std::move(s.t), std::move(s.m2.mean), std::move(s.m2.standard_error),
-                            std::move(s.m2_centroid.mean), std::move(s.m2_centroid.standard_error),
-                            std::move(s.ipr.mean), std::move(s.ipr.standard_error), std::move(s.energy_error.mean),
-                            std::move(s.energy_error.standard_error)));
-  out["profile"] = py::none();
-  if (profile)
-    out["profile"] = fields("energy energy_se", std::move(s.profile.mean), std::move(s.profile.standard_error));
-  // With the tangent map: <X1(t)> [1/s] (the tool's column mle) and its standard error.
-  out["mle"] = array_or_none(std::move(s.mle.mean));
-  out["mle_se"] = array_or_none(std::move(s.mle.standard_error));
-  out.attr("update")(
-      fields("max_energy_error reached_walls realizations", s.max_energy_error, s.reached_walls, s.realizations));
-  out["metadata"] = to_python(meta);
-  return out;
+  // granular/_dynamics.py makes the granular.Transport of the bound summary.
+  return fields("summary exponents warnings metadata", std::move(s), to_python(fitted), warn(said),
+                metadata("transport", meta));
 }
 
 py::dict exponent_table(const std::vector<std::string>& chains, const std::vector<std::string>& ic,
                         ExponentTableConfig config, const TransportChoices& choices, const BeyondChoices& beyond,
-                        bool dt_given, const py::object& compare_paper, const PyRun& options) {
+                        bool dt_given, const std::string& paper_path, const PyRun& options) {
   config.chains.clear();
-  for (const auto& name : chains) {
-    try {
-      config.chains.push_back(parse_disorder(name));
-    } catch (const InvalidInput&) {
-      bad_value("chains", " '" + name + "': expected h, A, RDM1 or RDM2");
-    }
-  }
+  for (const auto& name : chains) config.chains.push_back(disorder_of(name, "chains"));
   if (config.chains.empty() && config.bead_chains.empty()) bad_value("chains", ": none given (nor quasi)");
   config.kicks.clear();
   for (const auto& name : ic) config.kicks.push_back(parse_kick(name));
@@ -246,25 +144,20 @@ py::dict exponent_table(const std::vector<std::string>& chains, const std::vecto
   for (const auto& c : cases) total += c.realizations;
   const int thread_request = options.thread_request();
   const std::string& prefix = options.checkpoint;
-  const bool resume = options.resume || options.resume_other_version;
-  if (resume && prefix.empty()) bad_value("resume", ": needs checkpoint= (the prefix of the interrupted run)");
-  const bool compare = py::isinstance<py::str>(compare_paper) || py::bool_(compare_paper);
-  const std::string paper_path = py::isinstance<py::str>(compare_paper)
-                                     ? compare_paper.cast<std::string>()
-                                     : std::string(GRANULAR_SOURCE_DIR) + "/data/paper_table1_gamma.csv";
+  if ((options.resume || options.resume_other_version) && prefix.empty())
+    bad_value("resume", ": needs checkpoint= (the prefix of the interrupted run)");
+  const bool compare = !paper_path.empty();  // "": no comparison with the paper's Table I
   const std::vector<PaperCell> paper = compare ? read_paper_table(paper_path) : std::vector<PaperCell>{};
 
   std::vector<ExponentCell> cells;
-  run_long("exponent_table", total, options.progress, [&](const LongRun& control) {
-    ExponentRunOptions run;
-    run.threads = thread_request;
-    run.checkpoint_prefix = prefix;
-    run.resume = resume;
-    run.accept_other_version = options.resume_other_version;
-    run.progress = 0;
-    run.meter = control.meter;
-    run.cancelled = control.cancelled;
-    cells = run_exponent_table(config, run);
+  run_long("exponent_table", total, options, [&](const RunOptions& o) {  // as the table's own options
+    cells = run_exponent_table(config, {.threads = o.threads,
+                                        .checkpoint_prefix = o.checkpoint,
+                                        .resume = o.resume,
+                                        .accept_other_version = o.accept_other_version,
+                                        .progress = 0,
+                                        .meter = o.progress,
+                                        .cancelled = o.cancelled});
   });
   if (!prefix.empty())
     for (const std::string& log : case_checkpoints(prefix, cells.size())) CheckpointLog::remove_all(log);
@@ -274,7 +167,7 @@ py::dict exponent_table(const std::vector<std::string>& chains, const std::vecto
   for (const auto& name : chains) chain_list += (chain_list.empty() ? "" : ",") + name;
   if (chains.empty()) chain_list = "none";
   for (const auto& name : ic) kick_list += (kick_list.empty() ? "" : ",") + name;
-  nlohmann::json meta = metadata_head("exponent_table");
+  nlohmann::json meta;
   meta["parameters"] = {{"chains", chain_list},
                         {"F0", config.precompressions},
                         {"ic", kick_list},
@@ -294,7 +187,7 @@ py::dict exponent_table(const std::vector<std::string>& chains, const std::vecto
     out["paper_markdown"] = markdown_comparison(rows);
     meta["paper_table"] = paper_path;
   }
-  out["metadata"] = to_python(meta);
+  out["metadata"] = metadata("exponent_table", meta);
   return out;
 }
 
@@ -310,23 +203,18 @@ void bind_dynamics(py::module_& m) {
                &T::samples, &T::sampling, &T::fit_begin, &T::fit_end, &T::fit_step, &T::t_star, &T::kappa, &T::bootstrap,
                &T::active_window, &T::window_threshold, &T::reference_max_step, &T::max_energy_error, &T::energy_guard);
   m.attr("paper_beta") = paper_beta;
+  m.attr("_paper_table") = GRANULAR_SOURCE_DIR "/data/paper_table1_gamma.csv";  // compare_paper=True
   using B = BeyondChoices;
   config_class(m, "BeyondChoices", "damping_time kk_gamma mle renormalize deviation_samples", &B::damping_time,
                &B::kk_gamma, &B::mle, &B::renormalize, &B::deviation_samples);
   config_class(m, "ModeKick", "mode near_khz energy", &ModeKick::mode, &ModeKick::near_khz, &ModeKick::energy);
-  using S = SpreadingObservers;
-  config_class(m, "SpreadingObservers",
-               "force_sites force_samples map_samples map_stride spectrum_samples spectrum_source", &S::force_sites,
-               &S::force_samples, &S::map_samples, &S::map_stride, &S::spectrum_samples, &S::spectrum_source);
-  py::enum_<SpectrumSource>(m, "SpectrumSource")
-      .value("displacement", SpectrumSource::displacement)
-      .value("velocity", SpectrumSource::velocity);
+  using D = SpreadingRunConfig;  // granular.spreading's observers (observers.cpp's settings); none: None
+  config_class(m, "SpreadingRunConfig", "forces energy_map spectrum", &D::forces, &D::energy_map, &D::spectrum);
   using R = ChainRecipe;
   config_class(m, "ChainRecipe", "q xi R1 N F0 material seed quasi given_radii given_types", &R::q, &R::xi, &R::R1,
                &R::N, &R::F0, &R::material, &R::seed, &R::quasi, &R::given_radii, &R::given_types)
-      .def_property(
-          "disorder", [](const R& r) { return to_string(r.disorder); },
-          [](R& r, const std::string& name) { r.disorder = disorder_of(name); })
+      .def_property("disorder", word_getter(&R::disorder),
+                    word_setter(&R::disorder, [](const std::string& name) { return disorder_of(name); }))
       .def_property(
           "walls", [](const R& r) { return r.walls == WallShape::flat ? "flat" : "sphere"; },
           [](R& r, const std::string& word) { r.walls = parse_wall_shape(word); })
@@ -335,10 +223,30 @@ void bind_dynamics(py::module_& m) {
   config_class(m, "ExponentTableConfig", "precompressions profile_precompressions profile_realizations base bead_chains",
                &E::precompressions, &E::profile_precompressions, &E::profile_realizations, &E::base, &E::bead_chains);
   config_class(m, "BeadChain", "name quasi", &BeadChain::name, &BeadChain::quasi);  // a quasiperiodic chain only
-  using C = TransportCase;  // what the exponent table's cases share beyond the choices
-  config_class(m, "TransportCase", "chain realizations", &C::chain, &C::realizations);
+  using C = TransportCase;  // what the keywords give beyond the choices; the exponent table's cases share it
+  config_class(m, "TransportCase", "chain realizations profile_realizations mode dynamics", &C::chain, &C::realizations,
+               &C::profile_realizations, &C::mode, &C::dynamics)
+      .def_property("kick", word_getter(&C::kick), word_setter(&C::kick, parse_kick));
   config_class(m, "RunOptions", "threads checkpoint resume resume_other_version progress", &PyRun::threads,
                &PyRun::checkpoint, &PyRun::resume, &PyRun::resume_other_version, &PyRun::progress);
+  // What granular/_dynamics.py makes a SpreadingRun and a Transport of (copies of the arrays).
+  using Run = SpreadingResult;
+  readonly(py::class_<Run>(m, "_SpreadingResult"),
+           "t m2 m2_centroid ipr energy_error dissipated mle deviation_t deviation initial_energy max_energy_error "
+           "final_state final_energy final_force force_t forces map_t map_energy map_columns spectrum_khz spectrum "
+           "wall_energy reached_walls energy_guard_time steps seconds",
+           &Run::t, &Run::m2, &Run::m2_centroid, &Run::ipr, &Run::energy_error, &Run::dissipated, &Run::mle,
+           &Run::deviation_t, &Run::deviation, &Run::initial_energy, &Run::max_energy_error, &Run::final_state,
+           &Run::final_energy, &Run::final_force, &Run::force_t, &Run::forces, &Run::map_t, &Run::map_energy,
+           &Run::map_columns, &Run::spectrum_khz, &Run::spectrum, &Run::wall_energy, &Run::reached_walls,
+           &Run::energy_guard_time, &Run::steps, &Run::seconds);
+  readonly(py::class_<SeriesSummary>(m, "_SeriesSummary"), "mean standard_error", &SeriesSummary::mean,
+           &SeriesSummary::standard_error);
+  using Sum = TransportSummary;
+  readonly(py::class_<Sum>(m, "_TransportSummary"),
+           "t m2 m2_centroid ipr energy_error profile mle max_energy_error reached_walls realizations", &Sum::t,
+           &Sum::m2, &Sum::m2_centroid, &Sum::ipr, &Sum::energy_error, &Sum::profile, &Sum::mle, &Sum::max_energy_error,
+           &Sum::reached_walls, &Sum::realizations);
   m.def("_spreading", &spreading);
   m.def("_transport", &transport);
   m.def("_exponent_table", &exponent_table);

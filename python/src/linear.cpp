@@ -27,35 +27,17 @@ std::mutex& serial_solvers() {
   return m;
 }
 
-using SolverRequest = SpectrumRequest;
-
-/// The matrix of a Chain or a DynamicalMatrix argument (the chain kept for the metadata).
-struct System {
-  DynamicalMatrix owned;
-  const DynamicalMatrix* matrix = nullptr;
-  const PyChain* chain = nullptr;
-};
-System system_of(const py::object& system) {  // a Chain or a DynamicalMatrix (checked in granular/_linear.py)
-  System s;
-  if (py::isinstance<PyChain>(system)) s.chain = &system.cast<const PyChain&>();
-  else s.matrix = &system.cast<const DynamicalMatrix&>();
-  return s;
-}
-
-/// One solve with the GIL released; ARPACK and SLEPc one at a time.
-Spectrum solve(SpectrumSolver& solver, System& s, const ModeSelection& selection) {
+/// One solve of `matrix`, or of the dynamical matrix of `chain` built into `owned`, with the GIL
+/// released; ARPACK and SLEPc one at a time.
+Spectrum solve(SpectrumSolver& solver, const PyChain* chain, const DynamicalMatrix*& matrix, DynamicalMatrix& owned,
+               const ModeSelection& selection) {
   py::gil_scoped_release release;
-  if (!s.matrix) {
-    s.owned = dynamical_matrix(s.chain->chain);
-    s.matrix = &s.owned;
-  }
-  validate(selection, s.matrix->size());
+  if (chain) matrix = &(owned = dynamical_matrix(chain->chain));
+  validate(selection, matrix->size());
   const SpectrumMethod method = solver.config().method;
-  if (method == SpectrumMethod::arpack || method == SpectrumMethod::slepc) {
-    std::lock_guard lock(serial_solvers());
-    return solver.solve(*s.matrix, selection);
-  }
-  return solver.solve(*s.matrix, selection);
+  std::unique_lock lock(serial_solvers(), std::defer_lock);
+  if (method == SpectrumMethod::arpack || method == SpectrumMethod::slepc) lock.lock();
+  return solver.solve(*matrix, selection);
 }
 
 }  // namespace
@@ -64,11 +46,9 @@ void bind_linear(py::module_& m) {
   // What a granular.Spectrum (granular/_linear.py) takes its arrays from: read-only views of the
   // result (eigenvectors N per mode, one after the other), mode numbers as signed integers.
   using S = Spectrum;
-  views(py::class_<S>(m, "_Modes"), "omega2 freq_khz ipr residual vectors", std::identity{}, &S::omega2, &S::freq_khz,
-        &S::ipr, &S::residual, &S::vectors)
-      .def_property_readonly("mode", [](const S& s) { return to_numpy(signed_of(s.mode)); })
-      .def_property_readonly("clustered", [](const S& s) { return to_numpy(s.clustered); })
-      .def_readonly("N", &S::beads)
+  readonly(views(py::class_<S>(m, "_Modes"), "omega2 freq_khz ipr residual vectors", std::identity{}, &S::omega2,
+                 &S::freq_khz, &S::ipr, &S::residual, &S::vectors),
+           "mode clustered N", &S::mode, &S::clustered, &S::beads)
       .def_property_readonly("info", [](const S& s) {
         const SpectrumInfo& i = s.info;
         return fields("method fallbacks restarts candidates max_residual clusters", i.method, i.fallbacks, i.restarts,
@@ -99,29 +79,29 @@ void bind_linear(py::module_& m) {
       .def_property("method", word_getter(&C::method), word_setter(&C::method, parse_spectrum_method))
       .def_property("driver", word_getter(&C::driver), word_setter(&C::driver, parse_lapack_driver));
 
-  // granular.spectrum and granular.SpectrumSolver: one solve; `check_units` warns of a frequency
-  // keyword beyond the chain's highest frequency (Hz given as kHz). One call at a time per solver
-  // (its workspace): granular/_linear.py holds a lock around it.
+  // granular.spectrum and granular.SpectrumSolver: one solve of a Chain or of a DynamicalMatrix
+  // (the other None: granular/_linear.py); `check_units` warns of a frequency keyword beyond the
+  // chain's highest frequency (Hz given as kHz). One call at a time per solver (its workspace):
+  // granular/_linear.py holds a lock around it.
   py::class_<SpectrumSolver>(m, "_SpectrumSolver")
       .def(py::init<const SpectrumConfig&>())
-      .def("_solve", [](SpectrumSolver& solver, const std::string& method, const py::object& system,
-                        const ModeSelection& selection, bool check_units) {
-        const SolverRequest q{selection, solver.config(), method};
+      .def("_solve", [](SpectrumSolver& solver, const std::string& method, const PyChain* chain,
+                        const DynamicalMatrix* matrix, const ModeSelection& selection, bool check_units) {
+        const SpectrumRequest q{selection, solver.config(), method};
         validate(q.config, q.selection);
-        System s = system_of(system);
         if (check_units && q.selection.kind != ModeSelection::Kind::all) {
           const bool by_near = q.selection.kind == ModeSelection::Kind::nearest;
-          const double top = s.matrix ? frequency_khz(std::max(0.0, gershgorin_bounds(*s.matrix).second))
-                                      : highest_frequency_bound_khz(s.chain->recipe);
+          const double top = chain ? highest_frequency_bound_khz(chain->recipe)
+                                   : frequency_khz(std::max(0.0, gershgorin_bounds(*matrix).second));
           warn({frequency_warning(by_near ? "near" : "window", by_near ? q.selection.near_khz : q.selection.lo_khz,
                                   top)});
         }
-        Spectrum r = solve(solver, s, q.selection);
+        DynamicalMatrix owned;
+        Spectrum r = solve(solver, chain, matrix, owned, q.selection);
         // The spectrum tool's JSON for this result (the library's describe_spectrum, as the tool writes it).
-        const py::object meta =
-            metadata("spectrum", describe_spectrum(r, q, s.chain ? s.chain->description : nlohmann::json(nullptr),
-                                                   s.chain ? s.chain->material : steel));
-        return py::make_tuple(std::move(r), to_numpy(s.matrix->inverse_sqrt_mass), meta);
+        const py::object meta = metadata("spectrum", describe_spectrum(r, q, chain ? chain->description : nullptr,
+                                                                       chain ? chain->recipe.material : steel));
+        return py::make_tuple(std::move(r), to_numpy(matrix->inverse_sqrt_mass), meta);
       });
 
   m.def("_band_edges", [](double xi, double F0, double R1, const Material& material) {

@@ -21,7 +21,6 @@ PyChain py_chain(ChainRecipe recipe, std::uint64_t realization, const std::strin
   PyChain c;
   c.chain = recipe.chain(realization);
   c.types = recipe.types(realization);
-  c.material = recipe.material;
   c.description = describe(recipe, realization);
   if (!name.empty()) c.description["disorder"] = name;
   c.recipe = std::move(recipe);
@@ -43,8 +42,7 @@ void bind_model(py::module_& m) {
   config_class(m, "Quasiperiodic", "modulation phase angle k0", &Q::modulation, &Q::phase, &Q::angle, &Q::k0)
       .def_property("kind", word_getter(&Q::kind), word_setter(&Q::kind, parse_quasi_kind))
       .def_property(
-          "ratio", [](const Q& q) { return q.ratio; },
-          [](Q& q, const std::string& text) { q.ratio = parse_ratio(text); });
+          "ratio", [](const Q& q) { return q.ratio; }, word_setter(&Q::ratio, parse_ratio));
 
   views(
       py::class_<PyChain>(m, "Chain"), "radius mass inverse_mass contact overlap onsite",

@@ -54,7 +54,7 @@ class PyObserver : public Observer {
 }  // namespace
 
 void bind_observers(py::module_& m) {
-  arrays(py::class_<State>(m, "State"), "u v", &State::u, &State::v)  // checked in granular/_observers.py
+  readonly(py::class_<State>(m, "State"), "u v", &State::u, &State::v)  // checked in granular/_observers.py
       .def(py::init([](std::vector<double> u, std::vector<double> v) {
         State s;
         s.u = std::move(u), s.v = std::move(v);
@@ -69,8 +69,8 @@ void bind_observers(py::module_& m) {
   readonly(py::class_<RunPlan>(m, "RunPlan"), "beads total_steps time_step duration", &RunPlan::beads,
            &RunPlan::total_steps, &RunPlan::time_step, &RunPlan::duration);
   using S = SnapshotCopy;
-  arrays(readonly(py::class_<S>(m, "Snapshot"), "step t initial_energy", &S::step, &S::t, &S::initial_energy),
-         "u v energy", &S::u, &S::v, &S::energy);
+  readonly(py::class_<S>(m, "Snapshot"), "step t initial_energy u v energy", &S::step, &S::t, &S::initial_energy, &S::u,
+           &S::v, &S::energy);
 
   py::class_<Observer, PyObserver>(m, "Observer")
       .def(py::init<>())
@@ -92,38 +92,35 @@ void bind_observers(py::module_& m) {
                &E::Settings::stop_on_energy_error, &E::Settings::wall_warning)
       .def_property("sampling", word_getter(&E::Settings::sampling),
                     word_setter(&E::Settings::sampling, parse_sampling));
-  readonly(arrays(py::class_<E, Observer>(m, "EnergySpread").def(py::init<const E::Settings&>()),
-                  "t m2 m2_centroid ipr energy_error", &E::t, &E::m2, &E::m2_centroid, &E::ipr, &E::energy_error),
-           "max_energy_error wall_energy", &E::max_energy_error, &E::wall_energy)
-      .def_property_readonly("reached_walls", &E::reached_walls)
-      .def_property_readonly("energy_guard_time", [](const E& o) {
-        return o.energy_guard_time < 0 ? py::object(py::none()) : py::float_(o.energy_guard_time);
-      });
+  readonly(py::class_<E, Observer>(m, "EnergySpread").def(py::init<const E::Settings&>()),
+           "t m2 m2_centroid ipr energy_error max_energy_error wall_energy energy_guard_time", &E::t, &E::m2,
+           &E::m2_centroid, &E::ipr, &E::energy_error, &E::max_energy_error, &E::wall_energy, &E::energy_guard_time)
+      .def_property_readonly("reached_walls", &E::reached_walls);  // energy_guard_time's None: _observers.py
 
   config_class(m, "ForcesSettings", "sites samples", &ForceObserver::Settings::sites, &ForceObserver::Settings::samples);
-  arrays(py::class_<ForceObserver, Observer>(m, "Forces").def(py::init<ForceObserver::Settings>()), "t",
-         &ForceObserver::t)
+  readonly(py::class_<ForceObserver, Observer>(m, "Forces").def(py::init<ForceObserver::Settings>()), "t",
+           &ForceObserver::t)
       .def_property_readonly("force", [](const ForceObserver& o) {
         std::vector<double> values;
         for (const auto& series : o.forces) values.insert(values.end(), series.begin(), series.end());
-        return to_numpy_2d(std::move(values), o.forces.size(), o.t.size());
+        return to_numpy(std::move(values)).reshape({o.forces.size(), o.t.size()});  // sites × times
       });
 
   using M = EnergyMapObserver;
   config_class(m, "EnergyMapSettings", "samples stride", &M::Settings::samples, &M::Settings::stride);
-  arrays(py::class_<M, Observer>(m, "EnergyMap").def(py::init<const M::Settings&>()), "t", &M::t)
+  readonly(py::class_<M, Observer>(m, "EnergyMap").def(py::init<const M::Settings&>()), "t", &M::t)
       .def_property_readonly("energy", [](const M& o) {
-        return to_numpy_2d(std::vector<double>(o.energy), o.t.size(), o.columns);
+        return to_numpy(o.energy).reshape({o.t.size(), o.columns});  // times × columns
       });
 
   using D = SpectralDensityObserver;
   config_class(m, "SpectralDensitySettings", "samples", &D::Settings::samples)
       .def_property("of", word_getter(&D::Settings::source), word_setter(&D::Settings::source, parse_spectrum_source));
-  arrays(py::class_<D, Observer>(m, "SpectralDensity").def(py::init<const D::Settings&>()), "freq_khz g", &D::freq_khz,
-         &D::density);
+  readonly(py::class_<D, Observer>(m, "SpectralDensity").def(py::init<const D::Settings&>()), "freq_khz g",
+           &D::freq_khz, &D::density);
 
-  arrays(py::class_<FinalStateObserver, Observer>(m, "FinalState").def(py::init<>()), "energy force",
-         &FinalStateObserver::energy, &FinalStateObserver::force)
+  readonly(py::class_<FinalStateObserver, Observer>(m, "FinalState").def(py::init<>()), "energy force",
+           &FinalStateObserver::energy, &FinalStateObserver::force)
       .def_property_readonly("u", [](const FinalStateObserver& o) { return to_numpy(o.state.u); })
       .def_property_readonly("v", [](const FinalStateObserver& o) { return to_numpy(o.state.v); });
 

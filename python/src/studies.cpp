@@ -25,16 +25,16 @@ py::dict ipr_map(const IprMapConfig& c, const std::string& solver, const std::st
   validate(c);
 
   std::vector<IprMapCell> cells;
-  run_long("ipr_map", c.q_values.size() * c.xi_values.size() * c.realizations, options.progress,
-           [&](const LongRun& control) { cells = compute_ipr_map(c, options.run(control)); });
+  run_long("ipr_map", c.q_values.size() * c.xi_values.size() * c.realizations, options,
+           [&](const RunOptions& run) { cells = compute_ipr_map(c, run); });
 
   const py::object meta =
       metadata("ipr_map", describe_ipr_map(c, cells, {solver, method, resolve_threads(thread_request)}));
   py::list out_cells;
   for (auto& cell : cells)
     out_cells.append(fields("q xi freq_khz ipr mode realization bin_modes bin_ipr", cell.q, cell.xi,
-                            std::move(cell.freq_khz), std::move(cell.ipr), signed_of(cell.mode),
-                            signed_of(cell.realization), signed_of(cell.bin_modes), std::move(cell.bin_ipr)));
+                            std::move(cell.freq_khz), std::move(cell.ipr), cell.mode, cell.realization, cell.bin_modes,
+                            std::move(cell.bin_ipr)));
   return fields("disorder N bin_khz q xi selection cells metadata", to_string(c.chain.disorder), c.chain.N, c.bin_khz,
                 c.q_values, c.xi_values, c.selection.kind != ModeSelection::Kind::all, out_cells, meta);
 }
@@ -48,13 +48,10 @@ py::dict localization(const PyChain* chain, const ChainRecipe& recipe, std::uint
   // drawn a piece at a time (memory independent of N).
   const ChainRecipe& r = chain ? chain->recipe : recipe;
   if (chain) realization = chain->realization;
-  nlohmann::json description = chain ? chain->description : nlohmann::json();
-  if (!chain) validate(r, r.largest_walked_size());  // a quasiperiodic or sphere-walled chain is stored: 1e8
+  else validate(r, r.largest_walked_size());  // a quasiperiodic or sphere-walled chain is stored: 1e8
   const std::unique_ptr<BeadSource> beads = r.beads(realization);
-  if (!chain) {
-    warn(radius_warnings(r, {"R1", "beads", "radii"}));
-    description = describe(r, realization);
-  }
+  if (!chain) warn(radius_warnings(r, {"R1", "beads", "radii"}));
+  nlohmann::json description = chain ? chain->description : describe(r, realization);
   description["N"] = beads->size();
   const double top_khz = highest_frequency_bound_khz(r);  // bound on the chain's frequencies (unit slips)
   validate(config);
@@ -64,8 +61,8 @@ py::dict localization(const PyChain* chain, const ChainRecipe& recipe, std::uint
       break;
     }
   LocalizationScan scan;
-  run_long("localization", beads->size() * config.frequency_khz.size(), options.progress,
-           [&](const LongRun& control) { scan = localization_scan(*beads, config, options.run(control)); });
+  run_long("localization", beads->size() * config.frequency_khz.size(), options,
+           [&](const RunOptions& run) { scan = localization_scan(*beads, config, run); });
   const py::object meta =
       metadata("localization", describe_localization(scan, description,
                                                      py::isinstance<py::str>(f) ? nlohmann::json(f.cast<std::string>())
@@ -74,7 +71,7 @@ py::dict localization(const PyChain* chain, const ChainRecipe& recipe, std::uint
   return fields("freq_khz lyapunov lyapunov_err loc_length resolved modes_below idos dos N metadata",
                 std::move(scan.frequency_khz), std::move(scan.lyapunov), std::move(scan.lyapunov_error),
                 std::move(scan.localization_length),
-                std::vector<std::uint8_t>(scan.resolved.begin(), scan.resolved.end()), signed_of(scan.modes_below),
+                std::vector<std::uint8_t>(scan.resolved.begin(), scan.resolved.end()), scan.modes_below,
                 std::move(scan.idos), std::move(scan.dos), scan.beads, meta);
 }
 
@@ -82,8 +79,7 @@ py::dict correlations(const CorrelationConfig& c, const PyRun& options) {
   options.thread_request();
   validate(c);
   CorrelationResult result;
-  run_long("correlations", c.realizations, options.progress,
-           [&](const LongRun& control) { result = correlation_study(c, options.run(control)); });
+  run_long("correlations", c.realizations, options, [&](const RunOptions& run) { result = correlation_study(c, run); });
   const py::object meta = metadata("correlations", describe_correlations(c, result));
   return fields("rho_mean rho_std rho_theory used metadata", std::move(result.mean), std::move(result.deviation),
                 std::move(result.theory), result.used, meta);
@@ -92,8 +88,7 @@ py::dict correlations(const CorrelationConfig& c, const PyRun& options) {
 py::dict butterfly(const ButterflyConfig& c, const PyRun& options) {
   validate(c);
   std::vector<ButterflyColumn> columns;
-  run_long("butterfly", c.ratios.size(), options.progress,
-           [&](const LongRun& control) { columns = compute_butterfly(c, options.run(control)); });
+  run_long("butterfly", c.ratios.size(), options, [&](const RunOptions& run) { columns = compute_butterfly(c, run); });
   nlohmann::json described = describe_butterfly(c, columns);
   described["threads"] = resolve_threads(options.thread_request());
   py::list out_columns;  // one dict per ratio, flattened into the tool's rows by granular/_studies.py

@@ -12,6 +12,7 @@
 #include "bindings.hpp"
 #include "granular/blas_library.hpp"
 #include "granular/code_identity.hpp"
+#include "granular/ensemble/progress_meter.hpp"
 #include "granular/error.hpp"
 #include "granular/io/range_syntax.hpp"
 #include "granular/number_format.hpp"
@@ -71,8 +72,9 @@ void bind_errors(py::module_& m) {
   m.def("_size", &checked_size, py::arg("value"), py::arg("keyword"), py::arg("lo") = 0,
         py::arg("hi") = 100000000000000000LL);
   m.def("_finite", &finite);
-  m.def("_vector", &double_vector, py::arg("values"), py::arg("keyword"), py::arg("require_finite") = true);
-  m.def("_numbers", &number_list);
+  m.def("_parse_numbers", [](const std::string& text, const std::string& keyword, double default_step) {
+    return parse_number_list(text, keyword, default_step);  // the tools' range syntax (granular/_arguments.py)
+  });
   m.def("_format_number", [](double x) { return format_number(x); });
   static py::exception<NumericalError> numerical(m, "NumericalError", PyExc_RuntimeError);  // doc: __init__.py
   py::register_exception_translator([](std::exception_ptr p) {
@@ -96,38 +98,6 @@ void bind_errors(py::module_& m) {
 
 // --- arrays ------------------------------------------------------------------------------------
 
-namespace {
-py::array_t<double, py::array::c_style | py::array::forcecast> as_doubles(const py::handle& values, const char* keyword) {
-  if (py::isinstance<py::str>(values) || py::isinstance<py::bytes>(values))
-    bad_value(keyword, ": expected numbers (an array or a sequence), not a string");
-  auto array = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(values);
-  if (!array) {
-    PyErr_Clear();
-    bad_value(keyword, ": expected an array of numbers");
-  }
-  return array;
-}
-}  // namespace
-
-std::vector<double> double_vector(const py::handle& values, const char* keyword, bool require_finite) {
-  auto array = as_doubles(values, keyword);
-  if (array.ndim() != 1) {
-    std::string shape;
-    for (py::ssize_t i = 0; i < array.ndim(); ++i) shape += (i ? ", " : "") + std::to_string(array.shape(i));
-    bad_value(keyword, ": expected a 1-D array, got shape (" + shape + (array.ndim() == 1 ? ",)" : ")"));
-  }
-  std::vector<double> out(array.data(), array.data() + array.size());
-  if (require_finite)
-    for (std::size_t i = 0; i < out.size(); ++i)
-      if (!std::isfinite(out[i]))
-        bad_value(keyword, ": entry " + std::to_string(i) + " is " + format_number(out[i]) + " (must be finite)");
-  return out;
-}
-
-py::array_t<double> to_numpy_2d(std::vector<double>&& values, std::size_t rows, std::size_t cols) {
-  return to_numpy(std::move(values)).reshape({rows, cols});
-}
-
 py::array_t<double> view(const std::vector<double>& data, const py::handle& owner) {
   py::array_t<double> a({data.size()}, {sizeof(double)}, data.data(), owner);
   py::detail::array_proxy(a.ptr())->flags &= ~py::detail::npy_api::NPY_ARRAY_WRITEABLE_;
@@ -141,37 +111,18 @@ py::object to_python(const nlohmann::json& value) {
   return py::module_::import("json").attr("loads")(value.dump());
 }
 
-nlohmann::json metadata_head(const std::string& function) {
-  return {{"function", "granular." + function}, {"version", code_version()}, {"blas", blas_library()}};
-}
-
 py::object metadata(const std::string& function, const nlohmann::json& described) {
-  nlohmann::json meta = metadata_head(function);
+  nlohmann::json meta = {{"function", "granular." + function}, {"version", code_version()}, {"blas", blas_library()}};
   meta.update(described);
   return to_python(meta);
 }
 
-Disorder disorder_of(const std::string& name) {
+Disorder disorder_of(const std::string& name, const char* keyword) {
   try {
     return parse_disorder(name);
   } catch (const InvalidInput&) {
-    bad_value("disorder", " '" + name + "': expected h, A, RDM1 or RDM2");
+    bad_value(keyword, " '" + name + "': expected h, A, RDM1 or RDM2");
   }
-}
-
-std::vector<double> number_list(const py::handle& values, const char* keyword, double default_step) {
-  if (py::isinstance<py::str>(values)) return parse_number_list(values.cast<std::string>(), keyword, default_step);
-  if (py::isinstance<py::float_>(values) || py::isinstance<py::int_>(values)) {
-    double value = 0;
-    try {
-      value = values.cast<double>();
-    } catch (const py::cast_error&) {  // an int beyond any double (found by tests/fuzz/python_arguments_fuzz)
-      PyErr_Clear();
-      bad_value(keyword, ": the integer is too large for a floating-point number");
-    }
-    return {finite(value, keyword)};
-  }
-  return double_vector(values, keyword);
 }
 
 // --- long runs -----------------------------------------------------------------------------------
@@ -186,8 +137,8 @@ template <class F>
 Finally(F) -> Finally<F>;  // clang before 17 deduces no aggregate's arguments (the fuzzers build this with clang)
 }  // namespace
 
-void run_long(const std::string& label, std::size_t total, bool progress,
-              const std::function<void(const LongRun&)>& work) {
+void run_long(const std::string& label, std::size_t total, const PyRun& options,
+              const std::function<void(const RunOptions&)>& work) {
   struct Shared {  // whether `work` may start (run_long has not returned) and whether it runs
     std::mutex mutex;
     std::condition_variable stopped;
@@ -196,7 +147,12 @@ void run_long(const std::string& label, std::size_t total, bool progress,
   auto shared = std::make_shared<Shared>();
   auto meter = std::make_shared<ProgressMeter>(total, label, 0);  // silent: the bar is drawn from Python
   auto cancel = std::make_shared<std::atomic<bool>>(false);
-  const LongRun control{[cancel] { return cancel->load(std::memory_order_relaxed); }, meter.get()};
+  const RunOptions run{.threads = options.thread_request(),
+                       .checkpoint = options.checkpoint,
+                       .resume = options.resume || options.resume_other_version,
+                       .progress = meter.get(),
+                       .cancelled = [cancel] { return cancel->load(std::memory_order_relaxed); },
+                       .accept_other_version = options.resume_other_version};
   const py::cpp_function call([&, shared] {
     if (std::lock_guard lock(shared->mutex); !shared->open) return;  // too late: run_long has returned
     else shared->running = true;
@@ -206,7 +162,7 @@ void run_long(const std::string& label, std::size_t total, bool progress,
       s.stopped.notify_all();
     }};
     py::gil_scoped_release release;
-    work(control);
+    work(run);
   });
   // However this returns (a KeyboardInterrupt anywhere in the Python driver included), `work` is
   // told to stop and waited for before what it uses goes out of scope.
@@ -225,18 +181,7 @@ void run_long(const std::string& label, std::size_t total, bool progress,
   // granular._progress.run_long: a worker thread, the progress bar and Ctrl-C.
   py::module_::import("granular._progress")
       .attr("run_long")(call, py::cpp_function([meter] { return meter->done(); }),
-                        py::cpp_function([cancel] { cancel->store(true); }), label, total, progress);
-}
-
-RunOptions PyRun::run(const LongRun& control) const {
-  RunOptions run;
-  run.threads = thread_request();
-  run.checkpoint = checkpoint;
-  run.resume = resume || resume_other_version;
-  run.accept_other_version = resume_other_version;
-  run.progress = control.meter;
-  run.cancelled = control.cancelled;
-  return run;
+                        py::cpp_function([cancel] { cancel->store(true); }), label, total, options.progress);
 }
 
 /// Each warning of the library as a Python RuntimeWarning (the tools print them on stderr).
