@@ -71,14 +71,15 @@ def _edges(centres):
     return np.concatenate([[2 * c[0] - mid[0]], mid, [2 * c[-1] - mid[-1]]])
 
 
-def dynamical_butterfly(source, eigen=None, ratio=None, floor=1e-8, fmax_khz=None):
+def dynamical_butterfly(source, eigen=None, ratio=None, floor=1e-6, fmax_khz=None, zoom_khz=None):
     """The Hofstadter butterfly from the dynamics: the velocities' power summed over beads against frequency and
     the ratio beta (log colour scale from `floor` to 1, each beta normalized to max 1), and beside it the power of
     one beta (the one nearest `ratio`; default the golden mean's conjugate 0.618 when in range, else the middle)
     against frequency. eigen: a granular.Butterfly or the butterfly tool's (eigen) CSV of the same chain, whose
     eigenfrequencies are drawn over both panels (dots on the map, ticks on the line). source: a
     granular.DynamicalButterfly or the CSV of `butterfly --from dynamics`. fmax_khz: top of the frequency axis
-    [kHz] (default: just above the highest eigenfrequency, else the highest frequency with power above floor)."""
+    [kHz] (default: just above the highest eigenfrequency, else the highest frequency with power above floor).
+    zoom_khz: (lo, hi) [kHz], the frequency range of the right panel (default: the map's)."""
     ratios, freq, power, meta = _dynamical_data(source)
     modes = None
     if eigen is not None:
@@ -106,7 +107,7 @@ def dynamical_butterfly(source, eigen=None, ratio=None, floor=1e-8, fmax_khz=Non
                                norm=LogNorm(vmin=floor, vmax=1), rasterized=True, shading="flat")
         fig.colorbar(mesh, ax=left, label="power summed over beads (max 1 per $\\beta$)")
         if modes is not None:
-            left.scatter(modes[0], modes[1], s=0.4, marker=".", lw=0, color="cyan", alpha=0.6, rasterized=True,
+            left.scatter(modes[0], modes[1], s=0.5, marker=".", lw=0, color="cyan", alpha=0.8, rasterized=True,
                          label="eigenfrequencies")
             left.legend(loc="upper right", markerscale=12)
         left.set_xlabel(r"incommensurate ratio $\beta$")
@@ -120,7 +121,7 @@ def dynamical_butterfly(source, eigen=None, ratio=None, floor=1e-8, fmax_khz=Non
                 right.axvline(f, color="C0", lw=0.5, alpha=0.6, label="eigenfrequencies" if k == 0 else None)
             right.legend(loc="lower left")
         right.set_ylim(floor, 2)
-        right.set_xlim(0, fmax_khz)
+        right.set_xlim(*(zoom_khz if zoom_khz is not None else (0, fmax_khz)))
         right.set_xlabel("frequency f [kHz]")
         right.set_ylabel("power")
         right.set_title(rf"$\beta$ = {ratios[pick]:.4g}")
