@@ -105,8 +105,8 @@ def test_quasi_keyword_errors_name_the_keyword():
 
 def test_dynamical_butterfly_equals_the_tool_and_draws(tools):
     csv, meta = tools.run("butterfly", "--from", "dynamics", "--quasi", "cylinders", "--modulation", "0.3",
-                          "--ratios", "0.3,0.5", "--N", "10", "--phase", "0.4", "--T", "2e-3", "--spectrum-samples", "401",
-                          "--quiet", output="d")
+                          "--ratios", "0.3,0.5", "--N", "10", "--phase", "0.4", "--T", "2e-3",
+                          "--spectrum-samples", "401", "--quiet", output="d")
     result = gr.dynamical_butterfly("cylinders", modulation=0.3, ratios=[0.3, 0.5], N=10, phase=0.4, T=2e-3,
                                     spectrum_samples=401)
     rows = result.rows()
@@ -123,6 +123,15 @@ def test_dynamical_butterfly_equals_the_tool_and_draws(tools):
     eigen = gr.butterfly("cylinders", modulation=0.3, ratios=[0.3, 0.5], N=10, phase=0.4)
     assert len(gp.dynamical_butterfly(result, eigen).axes) >= 2
     assert len(gp.dynamical_butterfly(tools.path("d.csv")).axes) >= 2
+    # the command line: python3 -m granular.plot dynamical-butterfly CSV --eigen CSV
+    tools.run("butterfly", "--quasi", "cylinders", "--modulation", "0.3", "--ratios", "0.3,0.5", "--N", "10",
+              "--phase", "0.4", "--quiet", output="e")
+    from granular.plot.__main__ import main
+    png = tools.path("d.png")
+    assert main(["dynamical-butterfly", str(tools.path("d.csv")), "--eigen", str(tools.path("e.csv")), "--zoom",
+                 "5:15", "-o", str(png)]) == 0
+    assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    assert main(["dynamical-butterfly", str(tools.path("e.csv"))]) == 2  # an eigen CSV: no power column
 
 
 def test_dynamical_butterfly_peaks_are_the_eigenfrequencies():
@@ -143,9 +152,10 @@ def test_dynamical_butterfly_peaks_are_the_eigenfrequencies():
 
 @pytest.mark.parametrize(
     "keywords, name",
-    [({"amplitude": 0}, "amplitude"), ({"amplitude": 1.0}, "amplitude"), ({"spectrum_samples": 50}, "spectrum_samples"),
-     ({"dt": 1e-4}, "dt"), ({"T": -1}, "T"), ({"spectrum_of": "force"}, "spectrum_of"), ({"ratios": [0.5, 0]}, "ratios"),
-     ({"integrator": "rk4"}, "integrator"), ({"force_law": "spring"}, "force_law"), ({"modulation": 1.5}, "modulation")])
+    [({"amplitude": 0}, "amplitude"), ({"amplitude": 1.0}, "amplitude"),
+     ({"spectrum_samples": 50}, "spectrum_samples"), ({"dt": 1e-4}, "dt"), ({"T": -1}, "T"),
+     ({"spectrum_of": "force"}, "spectrum_of"), ({"ratios": [0.5, 0]}, "ratios"), ({"integrator": "rk4"}, "integrator"),
+     ({"force_law": "spring"}, "force_law"), ({"modulation": 1.5}, "modulation")])
 def test_dynamical_butterfly_bad_keywords_are_named(keywords, name):
     with pytest.raises(ValueError, match=name):
         gr.dynamical_butterfly("cylinders", **{"N": 10, "ratios": [0.5], **keywords})

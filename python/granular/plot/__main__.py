@@ -189,8 +189,9 @@ def main(argv=None, prog=None):
         elif args.kind == "butterfly":
             save(plot.butterfly(args.csv), args.output or _default_output(args.csv))
         elif args.kind == "dynamical-butterfly":
-            save(plot.dynamical_butterfly(args.csv, args.eigen, ratio=args.ratio, floor=args.floor,
-                                          fmax_khz=args.fmax, zoom_khz=args.zoom), args.output or _default_output(args.csv))
+            fig = plot.dynamical_butterfly(args.csv, args.eigen, ratio=args.ratio, floor=args.floor,
+                                           fmax_khz=args.fmax, zoom_khz=args.zoom)
+            save(fig, args.output or _default_output(args.csv))
         elif args.kind == "breathers":
             save(plot.breather_branch(args.csv, args.point), args.output or _default_output(args.csv))
         elif args.kind == "cost":
