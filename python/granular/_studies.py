@@ -202,7 +202,7 @@ class DynamicalButterfly:
         return f"<granular.DynamicalButterfly {len(self.ratios)} ratios x {len(self.freq_khz)} frequencies>"
 
 
-def dynamical_butterfly(kind="cylinders", *, ratios="0.005:0.995:0.005", N=100, modulation=0.0, phase=None,
+def dynamical_butterfly(kind="s1", *, ratios="0.005:0.995:0.005", N=100, modulation=0.0, phase=None,
                         angle=45.0, k0=4.0, seed=1, realization=0, F0=10.0, R1=_core.paper_r1, T=1e-2, dt=1e-6,
                         amplitude=1e-5, velocity_seed=1, spectrum_samples=2001, spectrum_of="velocity",
                         integrator="saba2c", force_law="hertz", max_energy_error=1e-3, threads=0, progress=False):
