@@ -210,8 +210,8 @@ def dynamical_butterfly(kind="s1", *, ratios="0.005:0.995:0.005", N=100, modulat
     dynamics"): for each ratio beta of `ratios` (a sequence, a number or the tools' range string) the chain is
     started from u = 0 and velocities uniform in [-amplitude, amplitude] [m/s] on every bead (seed velocity_seed,
     the same for every beta), integrated to T [s] with step dt [s] by `integrator` under `force_law`, and the power
-    of the velocities (spectrum_of='velocity'; or 'displacement') sampled at spectrum_samples uniform times of
-    [0, T] is summed over beads: its peaks sit on the eigenfrequencies (granular.butterfly) within the resolution
+    of the velocities (spectrum_of='velocity'; or 'displacement') sampled at spectrum_samples uniform times spanning
+    [0, T] (spectrum_samples - 1 must divide T/dt) is summed over beads: its peaks sit on the eigenfrequencies (granular.butterfly) within the resolution
     1/T. The amplitude must leave the chain linear: an energy that could open a contact is refused; so are a dt
     past the scheme's stability limit and too few samples for the highest frequency (aliasing). A run whose
     relative energy error passes max_energy_error (0: off) stops with granular.NumericalError. kind, modulation,

@@ -153,7 +153,7 @@ def test_dynamical_butterfly_peaks_are_the_eigenfrequencies():
 @pytest.mark.parametrize(
     "keywords, name",
     [({"amplitude": 0}, "amplitude"), ({"amplitude": 1.0}, "amplitude"),
-     ({"spectrum_samples": 50}, "spectrum_samples"), ({"dt": 1e-4}, "dt"), ({"T": -1}, "T"),
+     ({"spectrum_samples": 50}, "spectrum_samples"), ({"spectrum_samples": 101}, "spectrum_samples"), ({"dt": 1e-4}, "dt"), ({"T": -1}, "T"),
      ({"spectrum_of": "force"}, "spectrum_of"), ({"ratios": [0.5, 0]}, "ratios"), ({"integrator": "rk4"}, "integrator"),
      ({"force_law": "spring"}, "force_law"), ({"modulation": 1.5}, "modulation")])
 def test_dynamical_butterfly_bad_keywords_are_named(keywords, name):

@@ -117,6 +117,8 @@ TEST(DynamicalButterfly, BadInputsAreRefusedByName) {
   EXPECT_EQ(dynbfly_refused(c), "time_step");
   c = good, c.spectrum_samples = 101;  // Nyquist 2.5 kHz: the peaks would alias
   EXPECT_EQ(dynbfly_refused(c), "spectrum_samples");
+  c = good, c.spectrum_samples = 3000;  // 2999 intervals do not divide 20000 steps: the samples stop short of T
+  EXPECT_EQ(dynbfly_refused(c), "spectrum_samples");
   c = good, c.chain.F0 = 0;
   EXPECT_EQ(dynbfly_refused(c), "F0");
   c = good, c.integration.duration = -1;

@@ -95,8 +95,10 @@ const BadInput cases[] = {
     {"butterfly", "--from dynamics --N 20 --ratios 0,0.5", "--ratios"},
     {"butterfly", "--from dynamics --N 20 --amplitude 0", "--amplitude"},
     {"butterfly", "--from dynamics --N 20 --amplitude 1", "--amplitude"},  // would open contacts: not linear
-    {"butterfly", "--from dynamics --N 20 --spectrum-samples 50",
-     "--spectrum-samples"},  // Nyquist 2.5 kHz: aliased peaks
+    {"butterfly", "--from dynamics --N 20 --spectrum-samples 101",
+     "--spectrum-samples"},  // Nyquist 5 kHz: aliased peaks
+    {"butterfly", "--from dynamics --N 20 --spectrum-samples 3000",
+     "--spectrum-samples"},  // 2999 intervals do not divide 10000 steps
     {"butterfly", "--from dynamics --N 20 --dt 1e-4", "--dt"},
     {"butterfly", "--from dynamics --N 20 --T -1", "--T"},
     {"butterfly", "--from dynamics --N 20 --integrator rk4", "--integrator"},

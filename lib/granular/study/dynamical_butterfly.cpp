@@ -41,6 +41,14 @@ double sample_interval(const DynamicalButterflyConfig& c) {
   return static_cast<double>(steps.size() > 1 ? steps[1] : 1) * c.integration.time_step;
 }
 
+// The fewest samples K ≥ at_least whose K − 1 intervals divide the run's steps (so that they span
+// [0, T] and the resolution is 1/T); all steps (one sample per step) when none is fewer.
+std::uint64_t spanning_samples(std::uint64_t steps, std::uint64_t at_least) {
+  for (std::uint64_t k = std::max<std::uint64_t>(at_least, 2); k <= steps; ++k)
+    if (steps % (k - 1) == 0) return k;
+  return steps + 1;
+}
+
 // The least energy that stretches a bond of `chain` from its static overlap to zero (Hertz, the
 // real contact, whatever law the run integrates): below it no contact can open.
 double opening_energy(const Chain& chain) {
@@ -69,6 +77,7 @@ void validate(const DynamicalButterflyConfig& c) {
     throw InvalidInput("amplitude", " " + format_number(c.amplitude) + " m/s: must be finite and > 0");
   validate(integration_of(c));
   if (c.spectrum_samples < 2) throw InvalidInput("spectrum_samples", ": at least 2");
+  const std::uint64_t steps = total_steps(c);
   if (c.max_energy_error < 0 || !std::isfinite(c.max_energy_error))
     throw InvalidInput("max_energy_error", " " + format_number(c.max_energy_error) + ": must be >= 0");
   const double nyquist_hz = 1 / (2 * sample_interval(c));
@@ -98,17 +107,25 @@ void validate(const DynamicalButterflyConfig& c) {
                                             "; the largest stable time step is " + format_number(limit) + " s");
     }
     const double top_hz = omega_max / (2 * std::numbers::pi);
-    if (top_hz >= nyquist_hz)
-      throw InvalidInput(
-          "spectrum_samples",
-          " " + std::to_string(c.spectrum_samples) + ": the Nyquist frequency " + format_number(nyquist_hz / 1e3) +
-              " kHz is below the highest frequency bound " + format_number(top_hz / 1e3) +
-              " kHz of the chain at ratio " + format_number(beta) + " (its peaks would alias); take at least " +
-              std::to_string(static_cast<std::uint64_t>(std::ceil(2 * top_hz * c.integration.duration * 1.05)) + 1) +
-              " samples");
+    if (top_hz >= nyquist_hz) {
+      const auto needed = static_cast<std::uint64_t>(std::ceil(2 * top_hz * c.integration.duration * 1.05)) + 1;
+      throw InvalidInput("spectrum_samples", " " + std::to_string(c.spectrum_samples) + ": the Nyquist frequency " +
+                                                 format_number(nyquist_hz / 1e3) +
+                                                 " kHz is below the highest frequency bound " +
+                                                 format_number(top_hz / 1e3) + " kHz of the chain at ratio " +
+                                                 format_number(beta) + " (its peaks would alias); take " +
+                                                 std::to_string(spanning_samples(steps, needed)) + " samples");
+    }
   }
+  // Samples that stop short of T would make the resolution coarser than 1/T, and silently so.
+  if (steps % (c.spectrum_samples - 1) != 0)
+    throw InvalidInput("spectrum_samples", " " + std::to_string(c.spectrum_samples) +
+                                               ": the samples must span [0, T], i.e. samples - 1 must divide the " +
+                                               std::to_string(steps) +
+                                               " steps of the run (T over the time step); e.g. " +
+                                               std::to_string(spanning_samples(steps, c.spectrum_samples)));
   SpectralDensityObserver::Settings{c.spectrum_samples, c.source}.validate(
-      {c.chain.N, total_steps(c), c.integration.time_step, c.integration.duration});
+      {c.chain.N, steps, c.integration.time_step, c.integration.duration});
 }
 
 std::vector<DynamicalButterflyColumn> compute_dynamical_butterfly(const DynamicalButterflyConfig& c,

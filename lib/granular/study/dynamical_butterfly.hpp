@@ -43,15 +43,18 @@ struct DynamicalButterflyConfig {
   /// T [s] (frequency resolution 1/T), τ [s], force law, integrator. The active window is not
   /// used (every bead moves from t = 0).
   IntegrationConfig integration{};
-  std::size_t spectrum_samples = 2001;  ///< uniform samples of [0, T]: Nyquist frequency (K−1)/(2T) roughly
+  /// K uniform samples spanning [0, T] (K − 1 must divide T/τ): Δt = T/(K − 1), resolution
+  /// 1/(K Δt) ≈ 1/T, Nyquist frequency 1/(2 Δt)
+  std::size_t spectrum_samples = 2001;
   SpectrumSource source = SpectrumSource::velocity;
   double max_energy_error = 1e-3;  ///< guard on the relative energy error; 0 = unwatched
 };
 
 /// Throws InvalidInput naming the field: quasi, ratios, F0, amplitude (zero, not finite, or an
 /// energy that could open a contact of some β's chain), time_step (past the scheme's stability
-/// limit on some β's chain), spectrum_samples (fewer than 2, or a Nyquist frequency below that
-/// chain's highest frequency: the peaks would alias), duration, and the chain's own fields.
+/// limit on some β's chain), spectrum_samples (fewer than 2, K − 1 not dividing T/τ, or a Nyquist
+/// frequency below that chain's highest frequency: the peaks would alias), duration, and the chain's
+/// own fields.
 void validate(const DynamicalButterflyConfig& config);
 
 /// v_n(0) of every chain: a · (2U_n − 1), U_n the uniforms of RandomStream(velocity_seed, 0).
