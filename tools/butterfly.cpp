@@ -1,16 +1,20 @@
 // butterfly: the Hofstadter butterfly of a quasiperiodic chain — every mode's frequency and IPR
-// against the incommensurate ratio β — and the box-counting dimension of each β's spectrum.
-// All the work is in study/butterfly.hpp; this file reads options and writes files.
+// against the incommensurate ratio β — and the box-counting dimension of each β's spectrum; or, with
+// --from dynamics, the same butterfly recovered as the power spectrum of a run.
+// All the work is in study/butterfly.hpp and study/dynamical_butterfly.hpp; this file reads options
+// and writes files.
 #include <nlohmann/json.hpp>
 #include <string>
 
 #include "common/chain_options.hpp"
+#include "common/dynamical_butterfly_options.hpp"
 #include "common/outputs.hpp"
 #include "common/tool_main.hpp"
 #include "granular/ensemble/parallel_realizations.hpp"
 #include "granular/io/atomic_file.hpp"
 #include "granular/io/range_syntax.hpp"
 #include "granular/study/butterfly.hpp"
+#include "granular/study/dynamical_butterfly.hpp"
 
 int main(int argc, char** argv) {
   using namespace granular;
@@ -18,7 +22,10 @@ int main(int argc, char** argv) {
       "Every mode's frequency [kHz] and displacement IPR of a quasiperiodic chain for each ratio beta of a grid\n"
       "(the Hofstadter butterfly), and the box-counting dimension of each beta's spectrum.\n"
       "Writes PREFIX.csv (columns ratio,mode,freq_khz,ipr) and PREFIX.json (every parameter; box_counting:\n"
-      "dimension and error per ratio, with the box sizes fitted).",
+      "dimension and error per ratio, with the box sizes fitted).\n"
+      "--from dynamics: for each beta the chain is run from small random velocities of every bead and the\n"
+      "velocities' power summed over beads is written (columns ratio,freq_khz,power, max 1 per ratio); its\n"
+      "peaks sit on the eigenfrequencies.",
       "butterfly"};
   tool::describe_common(app);
   tool::ChainOptions o;
@@ -27,6 +34,7 @@ int main(int argc, char** argv) {
   ButterflyConfig config;
   RunOptions run;
   bool quiet = false;
+  tool::DynamicalButterflyOptions d;
   tool::add_quasiperiodic_options(app, o);
   app.remove_option(app.get_option("--ratio"));  // the ratios come from --ratios
   tool::add_option(app, "--ratios", ratios, "ratios beta > 0: start:stop[:step] (step 0.005) or a,b,c");
@@ -41,18 +49,36 @@ int main(int argc, char** argv) {
                    "smallest box of the fit, in mean level spacings (extent / N)");
   tool::add_integer(app, "--box-sizes", config.box_sizes, "box sizes fitted, evenly spaced in log");
   tool::add_integer(app, "--threads", run.threads, "worker threads (0 = all cores); results do not depend on it");
+  tool::add_dynamical_butterfly_options(app, d);
   tool::add_output_option(app, output);
   app.add_flag("--quiet", quiet, "no progress line on stderr");
 
   return tool::run(app, argc, argv, [&] {
     tool::Metadata meta("butterfly", argc, argv);
     if (run.threads < 0) throw InvalidInput("threads", " " + std::to_string(run.threads) + ": must be >= 0");
+    const bool dynamics = tool::from_dynamics(app, d, {"--largest-box", "--smallest-box", "--box-sizes"});
     config.ratios = parse_number_list(ratios, "--ratios", 0.005);
     config.chain = tool::chain_recipe(o);
     config.realization = tool::chain_realization(o);
-    validate(config);
+    DynamicalButterflyConfig from_run;
+    from_run.chain = config.chain, from_run.ratios = config.ratios, from_run.realization = config.realization;
+    tool::apply(d, from_run);
+    dynamics ? validate(from_run) : validate(config);
     const auto claim = tool::claim_output(output, meta.command());
     const TableOutputs paths = table_outputs(output);
+    if (dynamics) {
+      ProgressMeter progress(config.ratios.size(), "butterfly from dynamics", quiet ? 0 : -1);
+      run.progress = &progress;
+      const auto columns = compute_dynamical_butterfly(from_run, run);
+      progress.finish();
+      AtomicFile csv(paths.csv);
+      write_dynamical_butterfly_csv(csv.stream(), columns);
+      meta.merge(describe_dynamical_butterfly(from_run, columns));
+      meta["threads"] = resolve_threads(run.threads);
+      meta["output"] = paths.csv;
+      meta.write(paths.json, {&csv});
+      return;
+    }
 
     ProgressMeter progress(config.ratios.size(), "butterfly", quiet ? 0 : -1);
     run.progress = &progress;

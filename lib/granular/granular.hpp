@@ -45,7 +45,9 @@
 #include "granular/analysis/power_law_fit.hpp"
 #include "granular/analysis/summary_statistics.hpp"
 
+#include "granular/study/butterfly.hpp"
 #include "granular/study/correlation_study.hpp"
+#include "granular/study/dynamical_butterfly.hpp"
 #include "granular/study/exponent_files.hpp"
 #include "granular/study/exponent_table.hpp"
 #include "granular/study/ipr_map.hpp"

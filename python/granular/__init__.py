@@ -99,10 +99,12 @@ if _core is not None:
     from ._studies import (  # noqa: F401
         Butterfly,
         Correlations,
+        DynamicalButterfly,
         IprMap,
         Localization,
         butterfly,
         correlations,
+        dynamical_butterfly,
         ipr_map,
         localization,
     )

@@ -182,6 +182,63 @@ def butterfly(kind="s1", *, ratios="0.005:0.995:0.005", N=100, modulation=0.0, p
     return Butterfly(values)
 
 
+class DynamicalButterfly:
+    """The result of granular.dynamical_butterfly: ratios (the betas, in the order given), freq_khz (the
+    frequencies nu_j = j / (K dt) [kHz], the same for every ratio), power (len(ratios) x len(freq_khz): the
+    velocities' power summed over beads, normalized to max 1 per ratio); metadata: the butterfly tool's JSON for
+    --from dynamics (chain, initial_state, integration, spectrum with resolution_khz and nyquist_khz, and per ratio
+    initial_energy_J, energy_over_opening, max_energy_error). rows() gives the tool's CSV columns."""
+
+    def __init__(self, values):
+        self.__dict__.update(values)
+        self.ratios = np.asarray(self.ratios, dtype=float)
+
+    def rows(self):
+        """The tool's CSV columns ratio, freq_khz [kHz], power as 1-D arrays (one row per frequency per ratio)"""
+        n = len(self.freq_khz)
+        return {"ratio": np.repeat(self.ratios, n), "freq_khz": np.tile(self.freq_khz, len(self.ratios)),
+                "power": self.power.ravel()}
+
+    def __repr__(self):
+        return f"<granular.DynamicalButterfly {len(self.ratios)} ratios x {len(self.freq_khz)} frequencies>"
+
+
+def dynamical_butterfly(kind="s1", *, ratios="0.005:0.995:0.005", N=100, modulation=0.0, phase=None,
+                        angle=45.0, k0=4.0, seed=1, realization=0, F0=10.0, R1=_core.paper_r1, T=1e-2, dt=1e-6,
+                        amplitude=1e-5, velocity_seed=1, spectrum_samples=2001, spectrum_of="velocity",
+                        integrator="saba2c", force_law="hertz", max_energy_error=1e-3, threads=0, progress=False):
+    """The Hofstadter butterfly recovered from the dynamics (docs/quasiperiodic.md, "The butterfly from the
+    dynamics"): for each ratio beta of `ratios` (a sequence, a number or the tools' range string) the chain is
+    started from u = 0 and velocities uniform in [-amplitude, amplitude] [m/s] on every bead (seed velocity_seed,
+    the same for every beta), integrated to T [s] with step dt [s] by `integrator` under `force_law`, and the power
+    of the velocities (spectrum_of='velocity'; or 'displacement') sampled at spectrum_samples uniform times spanning
+    [0, T] (spectrum_samples - 1 must divide T/dt) is summed over beads: its peaks sit on the eigenfrequencies (granular.butterfly) within the resolution
+    1/T. The amplitude must leave the chain linear: an energy that could open a contact is refused; so are a dt
+    past the scheme's stability limit and too few samples for the highest frequency (aliasing). A run whose
+    relative energy error passes max_energy_error (0: off) stops with granular.NumericalError. kind, modulation,
+    phase, angle, k0, seed, realization, N, F0 [N], R1 [m]: as granular.quasiperiodic. threads: 0 = every core;
+    results do not depend on it. The same numbers as `butterfly --from dynamics` for the same options. Returns a
+    granular.DynamicalButterfly. Bad keywords raise ValueError naming them."""
+    c = _core.DynamicalButterflyConfig()
+    c.ratios = _core._numbers(ratios, "ratios", 0.005)
+    recipe = _core.ChainRecipe()
+    recipe.N = _core._size(N, "N", 2, _MAX)
+    recipe.F0, recipe.R1 = _core._finite(F0, "F0"), _core._finite(R1, "R1")
+    recipe.seed = _core._size(seed, "seed")
+    recipe.quasi = _quasi(kind, modulation, None, phase, angle, k0)  # each ratio of `ratios` in turn
+    c.chain = recipe
+    c.realization = _core._size(realization, "realization")
+    c.amplitude = _core._finite(amplitude, "amplitude")
+    c.velocity_seed = _core._size(velocity_seed, "velocity_seed")
+    c.spectrum_samples = _core._size(spectrum_samples, "spectrum_samples", 2, _MAX)
+    c.max_energy_error = _core._finite(max_energy_error, "max_energy_error")
+    if spectrum_of not in ("displacement", "velocity"):
+        raise ValueError(f"spectrum_of '{spectrum_of}': displacement or velocity")
+    values = _core._dynamical_butterfly(c, _core._finite(T, "T"), _core._finite(dt, "dt"), integrator, force_law,
+                                        spectrum_of, _run(threads, progress=progress))
+    return DynamicalButterfly(values)
+
+
 class Localization:
     """The result of granular.localization: per frequency the transfer-matrix Lyapunov exponent, the localization
     length and the density of states (the localization tool's columns).

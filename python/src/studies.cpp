@@ -1,4 +1,5 @@
-// The linear studies under granular.ipr_map, granular.localization and granular.correlations
+// The linear studies under granular.ipr_map, granular.localization, granular.correlations and
+// granular.butterfly (and the butterfly from the dynamics, granular.dynamical_butterfly)
 // (keywords, defaults, docstrings and result classes in granular/_studies.py): the library's
 // study configs bound with their C++ defaults, one call per study that runs it (GIL released,
 // threads, progress, Ctrl-C) and returns its arrays with the library's own JSON.
@@ -14,6 +15,7 @@
 #include "granular/model/plausibility.hpp"
 #include "granular/study/butterfly.hpp"
 #include "granular/study/correlation_files.hpp"
+#include "granular/study/dynamical_butterfly.hpp"
 #include "granular/study/ipr_map_files.hpp"
 #include "granular/study/localization_files.hpp"
 
@@ -98,6 +100,30 @@ py::dict butterfly(const ButterflyConfig& c, const PyRun& options) {
   return fields("ratios columns metadata", c.ratios, out_columns, metadata("butterfly", described));
 }
 
+/// The integration's words and numbers are set here (the config's IntegrationConfig is not bound).
+py::dict dynamical_butterfly(DynamicalButterflyConfig c, double duration, double time_step,
+                             const std::string& integrator, const std::string& force_law,
+                             const std::string& spectrum_of, const PyRun& options) {
+  c.integration.duration = duration;
+  c.integration.time_step = time_step;
+  c.integration.integrator = parse_integrator(integrator);
+  c.integration.force_law = parse_force_law(force_law);
+  c.source = parse_spectrum_source(spectrum_of);
+  validate(c);
+  std::vector<DynamicalButterflyColumn> columns;
+  run_long("dynamical_butterfly", c.ratios.size(), options.progress,
+           [&](const LongRun& control) { columns = compute_dynamical_butterfly(c, options.run(control)); });
+  nlohmann::json described = describe_dynamical_butterfly(c, columns);
+  described["threads"] = resolve_threads(options.thread_request());
+  const std::size_t frequencies = columns.empty() ? 0 : columns.front().freq_khz.size();
+  std::vector<double> power;
+  power.reserve(columns.size() * frequencies);
+  for (const DynamicalButterflyColumn& col : columns) power.insert(power.end(), col.power.begin(), col.power.end());
+  std::vector<double> freq = columns.empty() ? std::vector<double>{} : columns.front().freq_khz;
+  return fields("ratios freq_khz power metadata", c.ratios, std::move(freq),
+                to_numpy_2d(std::move(power), columns.size(), frequencies), metadata("dynamical_butterfly", described));
+}
+
 }  // namespace
 
 void bind_studies(py::module_& m) {
@@ -115,6 +141,13 @@ void bind_studies(py::module_& m) {
   m.def("_localization", &localization);
   m.def("_correlations", &correlations);
   m.def("_butterfly", &butterfly);
+  using D = DynamicalButterflyConfig;
+  config_class(m, "DynamicalButterflyConfig",
+               "chain ratios realization amplitude velocity_seed spectrum_samples "
+               "max_energy_error",
+               &D::chain, &D::ratios, &D::realization, &D::amplitude, &D::velocity_seed, &D::spectrum_samples,
+               &D::max_energy_error);
+  m.def("_dynamical_butterfly", &dynamical_butterfly);
 }
 
 }  // namespace granular::python

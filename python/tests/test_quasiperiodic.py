@@ -103,3 +103,61 @@ def test_quasi_keyword_errors_name_the_keyword():
         gr.localization(quasi="s1", modulation=0.3, N=2e8, f="1:2")
     with pytest.raises(ValueError, match="quasi"):
         gr.ipr_map(quasi="s4", N=40)
+
+
+def test_dynamical_butterfly_equals_the_tool_and_draws(tools):
+    csv, meta = tools.run("butterfly", "--from", "dynamics", "--quasi", "cylinders", "--modulation", "0.3",
+                          "--ratios", "0.3,0.5", "--N", "10", "--phase", "0.4", "--T", "2e-3",
+                          "--spectrum-samples", "401", "--quiet", output="d")
+    result = gr.dynamical_butterfly("cylinders", modulation=0.3, ratios=[0.3, 0.5], N=10, phase=0.4, T=2e-3,
+                                    spectrum_samples=401)
+    rows = result.rows()
+    for key in ("ratio", "freq_khz", "power"):
+        assert_identical(rows[key], csv[key])
+    assert result.power.shape == (2, 201)
+    assert result.metadata["chain"] == meta["chain"]
+    assert result.metadata["spectrum"] == meta["spectrum"]
+    # thread-count invariant
+    one = gr.dynamical_butterfly("cylinders", modulation=0.3, ratios=[0.3, 0.5], N=10, phase=0.4, T=2e-3,
+                                 spectrum_samples=401, threads=1)
+    assert_identical(one.power, result.power)
+    import granular.plot as gp
+    eigen = gr.butterfly("cylinders", modulation=0.3, ratios=[0.3, 0.5], N=10, phase=0.4)
+    assert len(gp.dynamical_butterfly(result, eigen).axes) >= 2
+    assert len(gp.dynamical_butterfly(tools.path("d.csv")).axes) >= 2
+    # the command line: python3 -m granular.plot dynamical-butterfly CSV --eigen CSV
+    tools.run("butterfly", "--quasi", "cylinders", "--modulation", "0.3", "--ratios", "0.3,0.5", "--N", "10",
+              "--phase", "0.4", "--quiet", output="e")
+    from granular.plot.__main__ import main
+    png = tools.path("d.png")
+    assert main(["dynamical-butterfly", str(tools.path("d.csv")), "--eigen", str(tools.path("e.csv")), "--zoom",
+                 "5:15", "-o", str(png)]) == 0
+    assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    assert main(["dynamical-butterfly", str(tools.path("e.csv"))]) == 2  # an eigen CSV: no power column
+
+
+def test_dynamical_butterfly_peaks_are_the_eigenfrequencies():
+    # S1 at a rational ratio: every local maximum of the power above 1e-6 lies within 1/T of an eigenfrequency of
+    # the linear solver, and there is one per mode (beads of one mass: the bead sum has no cross terms between
+    # modes, so between two modes the power only falls)
+    T = 2e-2
+    result = gr.dynamical_butterfly("s1", modulation=0.4, ratios=[1 / 3], N=10, phase=0.4, T=T, spectrum_samples=4001)
+    modes = gr.spectrum(gr.quasiperiodic("s1", N=10, modulation=0.4, ratio=1 / 3, phase=0.4)).freq_khz
+    g, f = result.power[0], result.freq_khz
+    peak = (g[1:-1] > g[:-2]) & (g[1:-1] > g[2:]) & (g[1:-1] > 1e-6)
+    peaks = f[1:-1][peak]
+    assert len(peaks) == len(modes)
+    resolution = 1 / T / 1e3
+    assert np.max(np.min(np.abs(peaks[:, None] - modes[None, :]), axis=1)) <= resolution
+    assert np.max(np.min(np.abs(modes[:, None] - peaks[None, :]), axis=1)) <= resolution
+
+
+@pytest.mark.parametrize(
+    "keywords, name",
+    [({"amplitude": 0}, "amplitude"), ({"amplitude": 1.0}, "amplitude"),
+     ({"spectrum_samples": 50}, "spectrum_samples"), ({"spectrum_samples": 101}, "spectrum_samples"), ({"dt": 1e-4}, "dt"), ({"T": -1}, "T"),
+     ({"spectrum_of": "force"}, "spectrum_of"), ({"ratios": [0.5, 0]}, "ratios"), ({"integrator": "rk4"}, "integrator"),
+     ({"force_law": "spring"}, "force_law"), ({"modulation": 1.5}, "modulation")])
+def test_dynamical_butterfly_bad_keywords_are_named(keywords, name):
+    with pytest.raises(ValueError, match=name):
+        gr.dynamical_butterfly("cylinders", **{"N": 10, "ratios": [0.5], **keywords})

@@ -89,6 +89,19 @@ const BadInput cases[] = {
     {"butterfly", "--ratios 0,0.5", "--ratios"},
     {"butterfly", "--quasi s2 --modulation 1.2", "--modulation"},
     {"butterfly", "--smallest-box 0", "--smallest-box"},
+    {"butterfly", "--from spin", "--from"},
+    {"butterfly", "--T 1e-3", "--T"},  // a flag of --from dynamics in the eigen mode
+    {"butterfly", "--from dynamics --box-sizes 5", "--box-sizes"},
+    {"butterfly", "--from dynamics --N 20 --ratios 0,0.5", "--ratios"},
+    {"butterfly", "--from dynamics --N 20 --amplitude 0", "--amplitude"},
+    {"butterfly", "--from dynamics --N 20 --amplitude 1", "--amplitude"},  // would open contacts: not linear
+    {"butterfly", "--from dynamics --N 20 --spectrum-samples 101",
+     "--spectrum-samples"},  // Nyquist 5 kHz: aliased peaks
+    {"butterfly", "--from dynamics --N 20 --spectrum-samples 3000",
+     "--spectrum-samples"},  // 2999 intervals do not divide 10000 steps
+    {"butterfly", "--from dynamics --N 20 --dt 1e-4", "--dt"},
+    {"butterfly", "--from dynamics --N 20 --T -1", "--T"},
+    {"butterfly", "--from dynamics --N 20 --integrator rk4", "--integrator"},
     {"spectrum", "--q 2", "--q"},
     {"spectrum", "--xi 1.01", "--xi"},
     {"spectrum", "--xi -0.5", "--xi"},

@@ -30,6 +30,7 @@ look, _io the reading of results and files:
     breather_branch(result_or_csv, point)      energy vs f_b, stability, linear modes, profiles, multipliers
   quasiperiodic: quasiperiodic chains
     butterfly(result_or_csv)                   the Hofstadter butterfly coloured by IPR, its box-counting dimension
+    dynamical_butterfly(result_or_csv, eigen)  the butterfly from the dynamics: power vs f and beta, modes overlaid
   transport_exponents: the paper's transport study (an exponents run)
     exponents(table_or_prefix, kick)           the paper's transport panels per chain kind and F0
     centres(table_or_prefix, chain)            m2 about the kicked site beside m2 about the centroid
@@ -41,9 +42,10 @@ from .breathers import breather_branch
 from .disorder import correlations, localization
 from .dynamics import cost, energy_map, forces, mode_kicks, spectral_densities, spreading
 from .modes import ipr_averaging, ipr_map, partial_spectrum_ipr, spectrum
-from .quasiperiodic import butterfly
+from .quasiperiodic import butterfly, dynamical_butterfly
 from .transport_exponents import centres, exponents, paper_comparison, profiles, study_comparison
 
 __all__ = ["breather_branch", "ipr_map", "spectrum", "partial_spectrum_ipr", "ipr_averaging", "correlations", "localization", "energy_map",
            "forces", "spreading", "mode_kicks", "spectral_densities", "cost", "exponents", "centres",
-           "paper_comparison", "profiles", "study_comparison", "butterfly"]
+           "paper_comparison", "profiles", "study_comparison", "butterfly",
+           "dynamical_butterfly"]

@@ -100,6 +100,14 @@ def parser(prog=None):
     q = kind("butterfly", "the Hofstadter butterfly coloured by IPR beside the box-counting dimension, from a "
                           "butterfly CSV")
     q.add_argument("csv", nargs="?", default="butterfly.csv")
+    q = kind("dynamical-butterfly", "the butterfly from the dynamics: power against frequency and beta, from a "
+                                    "butterfly --from dynamics CSV, the eigenfrequencies overlaid")
+    q.add_argument("csv")
+    q.add_argument("--eigen", help="the butterfly tool's eigen CSV of the same chain and ratios (overlaid)")
+    q.add_argument("--ratio", type=float, help="the beta of the right panel (default 0.618 when in range)")
+    q.add_argument("--floor", type=float, default=1e-6, help="lowest power shown (default 1e-6)")
+    q.add_argument("--fmax", type=float, help="top of the frequency axis [kHz]")
+    q.add_argument("--zoom", type=_pair, metavar="F0:F1", help="frequency range of the right panel [kHz]")
     q = kind("breathers", "a breather branch: energy against frequency with stability and the linear modes, "
                           "profiles, Floquet multipliers, from a breathers CSV (its .json and .h5 beside it)")
     q.add_argument("csv", nargs="?", default="breathers.csv")
@@ -180,6 +188,10 @@ def main(argv=None, prog=None):
             save(plot.profiles(args.prefix, decades=args.decades), args.output or f"{args.prefix}-profiles.png")
         elif args.kind == "butterfly":
             save(plot.butterfly(args.csv), args.output or _default_output(args.csv))
+        elif args.kind == "dynamical-butterfly":
+            fig = plot.dynamical_butterfly(args.csv, args.eigen, ratio=args.ratio, floor=args.floor,
+                                           fmax_khz=args.fmax, zoom_khz=args.zoom)
+            save(fig, args.output or _default_output(args.csv))
         elif args.kind == "breathers":
             save(plot.breather_branch(args.csv, args.point), args.output or _default_output(args.csv))
         elif args.kind == "cost":
