@@ -192,6 +192,7 @@ class DynamicalButterfly:
     def __init__(self, values):
         self.__dict__.update(values)
         self.ratios = np.asarray(self.ratios, dtype=float)
+        self.power = np.array(self.power, dtype=float).reshape(len(self.ratios), len(self.freq_khz))
 
     def rows(self):
         """The tool's CSV columns ratio, freq_khz [kHz], power as 1-D arrays (one row per frequency per ratio)"""
@@ -220,7 +221,7 @@ def dynamical_butterfly(kind="s1", *, ratios="0.005:0.995:0.005", N=100, modulat
     results do not depend on it. The same numbers as `butterfly --from dynamics` for the same options. Returns a
     granular.DynamicalButterfly. Bad keywords raise ValueError naming them."""
     c = _core.DynamicalButterflyConfig()
-    c.ratios = _core._numbers(ratios, "ratios", 0.005)
+    c.ratios = number_list(ratios, "ratios", 0.005)
     recipe = _core.ChainRecipe()
     recipe.N = _core._size(N, "N", 2, _MAX)
     recipe.F0, recipe.R1 = _core._finite(F0, "F0"), _core._finite(R1, "R1")

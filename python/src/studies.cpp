@@ -111,17 +111,15 @@ py::dict dynamical_butterfly(DynamicalButterflyConfig c, double duration, double
   c.source = parse_spectrum_source(spectrum_of);
   validate(c);
   std::vector<DynamicalButterflyColumn> columns;
-  run_long("dynamical_butterfly", c.ratios.size(), options.progress,
-           [&](const LongRun& control) { columns = compute_dynamical_butterfly(c, options.run(control)); });
+  run_long("dynamical_butterfly", c.ratios.size(), options,
+           [&](const RunOptions& run) { columns = compute_dynamical_butterfly(c, run); });
   nlohmann::json described = describe_dynamical_butterfly(c, columns);
   described["threads"] = resolve_threads(options.thread_request());
-  const std::size_t frequencies = columns.empty() ? 0 : columns.front().freq_khz.size();
-  std::vector<double> power;
-  power.reserve(columns.size() * frequencies);
-  for (const DynamicalButterflyColumn& col : columns) power.insert(power.end(), col.power.begin(), col.power.end());
+  py::list power;  // one row per ratio, stacked by granular/_studies.py
+  for (DynamicalButterflyColumn& col : columns) power.append(to_numpy(std::move(col.power)));
   std::vector<double> freq = columns.empty() ? std::vector<double>{} : columns.front().freq_khz;
-  return fields("ratios freq_khz power metadata", c.ratios, std::move(freq),
-                to_numpy_2d(std::move(power), columns.size(), frequencies), metadata("dynamical_butterfly", described));
+  return fields("ratios freq_khz power metadata", c.ratios, std::move(freq), power,
+                metadata("dynamical_butterfly", described));
 }
 
 }  // namespace
