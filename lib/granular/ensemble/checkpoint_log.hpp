@@ -31,7 +31,7 @@ class CheckpointLog {
   CheckpointLog& operator=(const CheckpointLog&) = delete;
 
   /// Reads the finished realizations of a run: the log at `base` and those of other MPI ranks
-  /// (`base.rank<k>`). Throws InvalidInput when there is none (naming --resume), when a file is
+  /// (`base.rank<k>`). Throws InvalidInput when there is none (naming `resume`), when a file is
   /// not a checkpoint, or when it was made with other parameters (naming the first that differs).
   /// A log made by another version of the toolkit (the header records code_version() and
   /// code_commit()) is refused naming both versions, unless `accept_other_version`.

@@ -2,8 +2,8 @@
 // From a study's cases as read to cases ready to run, with the errors in the order a user can act
 // on them: first what the stability limit of τ needs (the chain, the kick, T and τ finite and
 // > 0), then the step (a τ given past the limit is named as such, with the largest stable τ),
-// then everything judged on the grid of that step (a --fit-step or a T that is no whole number of
-// steps). A τ of 1e-4 s on a 10 ms run is a stability problem first: naming --fit-step instead
+// then everything judged on the grid of that step (a fit_step or a T that is no whole number of
+// steps). A τ of 1e-4 s on a 10 ms run is a stability problem first: naming fit_step instead
 // would send the user to the wrong option. Then the plausibility of T (chain_length_rule.hpp)
 // from the ω_max the step rule found, not found again.
 #include <string>

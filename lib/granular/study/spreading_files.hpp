@@ -33,7 +33,7 @@ void write_profile_csv(std::ostream& out, const TransportSummary& ensemble);
 void write_forces_csv(std::ostream& out, const SpreadingResult& run, const std::vector<std::size_t>& sites);
 /// freq_khz,g.
 void write_spectrum_csv(std::ostream& out, const SpreadingResult& run);
-/// t,site,share: the deviation vector's distribution along the chain (spreading --mle).
+/// t,site,share: the deviation vector's distribution along the chain (with the tangent map).
 void write_deviation_csv(std::ostream& out, const SpreadingResult& run);
 /// The energy map as HDF5, whole or not at all: datasets energy [time][column] [J], t [s] and
 /// site (the first bead of each column, from 1; `stride` beads per column). Written under its

@@ -38,9 +38,9 @@ struct TransportChoices {
 /// InvalidInput naming the choice.
 void apply(const TransportChoices& choices, TransportCase& c);
 
-/// The choices beyond the paper (docs/physics.md, "Nonlinear dynamics"): dissipation and the tangent map, as the tools'
-/// --damping-time, --kk-gamma, --mle, --renormalize, --deviation-samples and the Python keywords
-/// of the same names take them.
+/// The choices beyond the paper (docs/physics.md, "Nonlinear dynamics"): dissipation and the
+/// tangent map, each named as the parameter a front end reads it from (a tool's flag or a Python
+/// keyword of that name).
 struct BeyondChoices {
   double damping_time = 0, kk_gamma = 0;  ///< τ_d, γ_KK [s]; 0 = none
   bool mle = false;                       ///< the tangent map (X1(t))

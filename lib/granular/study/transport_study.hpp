@@ -65,7 +65,7 @@ struct TransportCase {
 void validate(const TransportCase& c);
 /// The checks of validate() that do not judge anything on the grid of time steps: the chain, the
 /// kick, T and τ each finite and > 0, the fit window against T. What the stability limit of τ
-/// needs (time_step_rule.hpp), so that a τ past it can be named before a --fit-step or a T that
+/// needs (time_step_rule.hpp), so that a τ past it can be named before a fit_step or a T that
 /// is no whole number of such steps (validate_and_settle, scheme_choice.hpp).
 void validate_before_time_step(const TransportCase& c);
 
