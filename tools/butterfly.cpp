@@ -66,30 +66,23 @@ int main(int argc, char** argv) {
     dynamics ? validate(from_run) : validate(config);
     const auto claim = tool::claim_output(output, meta.command());
     const TableOutputs paths = table_outputs(output);
-    if (dynamics) {
-      ProgressMeter progress(config.ratios.size(), "butterfly from dynamics", quiet ? 0 : -1);
-      run.progress = &progress;
-      const auto columns = compute_dynamical_butterfly(from_run, run);
+    ProgressMeter progress(config.ratios.size(), dynamics ? "butterfly from dynamics" : "butterfly", quiet ? 0 : -1);
+    run.progress = &progress;
+    const auto write = [&](const auto& columns, const auto& write_csv, const nlohmann::json& described) {
       progress.finish();
       AtomicFile csv(paths.csv);
-      write_dynamical_butterfly_csv(csv.stream(), columns);
-      meta.merge(describe_dynamical_butterfly(from_run, columns));
+      write_csv(csv.stream(), columns);
+      meta.merge(described);
       meta["threads"] = resolve_threads(run.threads);
       meta["output"] = paths.csv;
       meta.write(paths.json, {&csv});
-      return;
+    };
+    if (dynamics) {
+      const auto columns = compute_dynamical_butterfly(from_run, run);
+      write(columns, write_dynamical_butterfly_csv, describe_dynamical_butterfly(from_run, columns));
+    } else {
+      const auto columns = compute_butterfly(config, run);
+      write(columns, write_butterfly_csv, describe_butterfly(config, columns));
     }
-
-    ProgressMeter progress(config.ratios.size(), "butterfly", quiet ? 0 : -1);
-    run.progress = &progress;
-    const auto columns = compute_butterfly(config, run);
-    progress.finish();
-
-    AtomicFile csv(paths.csv);
-    write_butterfly_csv(csv.stream(), columns);
-    meta.merge(describe_butterfly(config, columns));
-    meta["threads"] = resolve_threads(run.threads);
-    meta["output"] = paths.csv;
-    meta.write(paths.json, {&csv});
   });
 }

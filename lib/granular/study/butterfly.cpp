@@ -12,16 +12,23 @@
 
 namespace granular {
 
-void validate(const ButterflyConfig& c) {
-  if (!c.chain.quasi) throw InvalidInput("quasi", ": a butterfly needs a quasiperiodic chain (s1, s2 or cylinders)");
-  if (c.ratios.empty()) throw InvalidInput("ratios", ": no values");
-  for (double beta : c.ratios) {
+ChainRecipe at_ratio(ChainRecipe chain, double beta) {
+  chain.quasi->ratio = beta;
+  return chain;
+}
+
+void validate_ratios(const ChainRecipe& chain, const std::vector<double>& ratios) {
+  if (!chain.quasi) throw InvalidInput("quasi", ": a butterfly needs a quasiperiodic chain (s1, s2 or cylinders)");
+  if (ratios.empty()) throw InvalidInput("ratios", ": no values");
+  for (double beta : ratios) {
     if (!std::isfinite(beta) || !(beta > 0))
       throw InvalidInput("ratios", " " + format_number(beta) + ": every ratio beta must be finite and > 0");
-    ButterflyConfig one = c;
-    one.chain.quasi->ratio = beta;
-    validate(one.chain);
+    validate(at_ratio(chain, beta));
   }
+}
+
+void validate(const ButterflyConfig& c) {
+  validate_ratios(c.chain, c.ratios);
   if (!(c.chain.F0 > 0)) throw InvalidInput("F0", " " + format_number(c.chain.F0) + ": the spectrum needs F0 > 0");
   if (!(c.largest_box > 0 && c.largest_box <= 1))
     throw InvalidInput("largest_box", " " + format_number(c.largest_box) + ": a fraction of the extent in (0, 1]");
@@ -40,10 +47,8 @@ std::vector<ButterflyColumn> compute_butterfly(const ButterflyConfig& c, const R
       c.ratios.size(), resolve_threads(run.threads),
       [&](std::size_t i, int) {
         if (run.cancelled && run.cancelled()) throw Cancelled();
-        ChainRecipe recipe = c.chain;
-        recipe.quasi->ratio = c.ratios[i];
-        const Spectrum s =
-            spectrum(dynamical_matrix(recipe.chain(c.realization)), all_modes(), {.method = SpectrumMethod::fast});
+        const Spectrum s = spectrum(dynamical_matrix(at_ratio(c.chain, c.ratios[i]).chain(c.realization)), all_modes(),
+                                    {.method = SpectrumMethod::fast});
         ButterflyColumn& col = columns[i];
         col.ratio = c.ratios[i];
         col.freq_khz = s.freq_khz;

@@ -33,6 +33,12 @@ struct ButterflyConfig {
 /// Throws InvalidInput naming the field (quasi, ratios, box fields, and the chain's own).
 void validate(const ButterflyConfig& config);
 
+/// `chain`, a quasiperiodic recipe, with its ratio replaced by β: the chain of one column.
+ChainRecipe at_ratio(ChainRecipe chain, double beta);
+/// Throws InvalidInput unless `chain` is quasiperiodic (naming quasi) and `ratios` are some β,
+/// each finite and > 0 (naming ratios), at each of which the chain is valid (naming its field).
+void validate_ratios(const ChainRecipe& chain, const std::vector<double>& ratios);
+
 struct ButterflyColumn {
   double ratio = 0;
   std::vector<double> freq_khz;    ///< every mode, ascending [kHz]
