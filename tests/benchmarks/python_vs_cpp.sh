@@ -7,7 +7,10 @@
 #      plus the Python call alone (without interpreter start and import);
 #   2. a loop of COUNT spectrum calls on chains of N beads (new chain each time, every mode, LAPACK):
 #      the C++ program spectrum_loop against the same loop in Python, in-process wall time,
-#      median of REPEATS, for each N in SIZES.
+#      median of REPEATS, for each N in SIZES;
+#   3. two IPR maps on two Python threads against the same two calls one after the other, and two
+#      ipr-map processes together against one after the other: what two cores give right now
+#      (~0.5 on an idle 2-core machine; 1 for calls that held the GIL), median of REPEATS.
 # Usage: tests/benchmarks/python_vs_cpp.sh [BUILD_DIR] [REPEATS] [SIZES] [COUNT]
 # Needs a Release build with GRANULAR_BENCHMARKS=ON (for benchmarks/spectrum_loop) and the Python
 # module (GRANULAR_PYTHON, on by default). Times on a busy machine are not final: re-run idle.
@@ -57,3 +60,15 @@ for n in $sizes; do
   printf "%d spectrum calls, N = %d (median of %d): C++ %.4f s, Python %.4f s (%.2fx)\n" \
     "$count" "$n" "$repeats" "$cpp" "$py" "$(awk -v a="$py" -v b="$cpp" 'BEGIN {print a / b}')"
 done
+
+# --- 3. two calls on two Python threads ------------------------------------------------------------
+: >"$out/processes"
+run_map() { "$build/ipr-map" --xi 0.1:0.6 --q 0.5 --N 100 --realizations 40 --threads 1 --quiet --output "$out/map$1.csv"; }
+maps_in_turn() { run_map 0; run_map 1; }
+maps_together() { run_map 0 & run_map 1 & wait; }
+for ((r = 0; r < repeats; r++)); do
+  awk -v a="$(wall maps_together)" -v b="$(wall maps_in_turn)" 'BEGIN {print a / b}' >>"$out/processes"
+done
+threads=$("$python" "$root/tests/benchmarks/two_threads.py" "$repeats")
+printf "two IPR maps at once / one after the other (median of %d): two Python threads %.2f, two processes %.2f\n" \
+  "$repeats" "$threads" "$(median <"$out/processes")"
