@@ -60,9 +60,8 @@ int main(int argc, char** argv) {
     config.ratios = parse_number_list(ratios, "--ratios", 0.005);
     config.chain = tool::chain_recipe(o);
     config.realization = tool::chain_realization(o);
-    DynamicalButterflyConfig from_run;
+    DynamicalButterflyConfig& from_run = d.config;
     from_run.chain = config.chain, from_run.ratios = config.ratios, from_run.realization = config.realization;
-    tool::apply(d, from_run);
     dynamics ? validate(from_run) : validate(config);
     const auto claim = tool::claim_output(output, meta.command());
     const TableOutputs paths = table_outputs(output);

@@ -85,12 +85,10 @@ int main(int argc, char** argv) {
     const ExponentPaths paths = exponent_paths(output, compare);
     const auto claim = tool::claim_output(output, meta.command(), run_options.checkpoints());
     for (const auto& p : paths.all()) check_writable(p);
-    const ExponentRunOptions run =
-        tool::exponent_run_options(run_options, output + ".checkpoint", !run_options.quiet && mpi.root(), "exponents");
     // Read before the run, which rewrites them.
     const nlohmann::json resumed =
-        tool::resumed_code(run_options, case_checkpoints(run.checkpoint_prefix, cases.size()));
-    const auto cells = tool::replaying_failures([&] { return run_exponent_table(config, run); }, output, argc, argv);
+        tool::resumed_code(run_options, case_checkpoints(output + ".checkpoint", cases.size()));
+    const auto cells = tool::run_table(config, cases, run_options, output, argc, argv);
     if (!mpi.root()) return;
 
     std::printf("%s", markdown_tables(cells, config).c_str());
@@ -111,7 +109,7 @@ int main(int argc, char** argv) {
     if (compare) meta["paper_table"] = paper_table;
     meta["output"] = paths.csv;
     meta.write(paths.json, files);  // the JSON first, then the CSVs: never a CSV without its metadata
-    for (const auto& log : case_checkpoints(run.checkpoint_prefix, cells.size())) CheckpointLog::remove_all(log);
+    for (const auto& log : case_checkpoints(output + ".checkpoint", cells.size())) CheckpointLog::remove_all(log);
   };
   return tool::run(app, argc, argv, body, {{"disorder", "--chains"}, {"lyapunov", "--mle"}, {"near_khz", "--mode-khz"}});
 }

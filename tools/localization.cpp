@@ -5,7 +5,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "common/bead_source_options.hpp"
+#include "common/chain_options.hpp"
 #include "common/outputs.hpp"
 #include "common/tool_main.hpp"
 #include "granular/ensemble/parallel_realizations.hpp"
@@ -57,16 +57,16 @@ int main(int argc, char** argv) {
           throw InvalidInput("segments", " " + std::to_string(segments) + ": must be in [2, 1e6]");
         if (run.threads < 0) throw InvalidInput("threads", " " + std::to_string(run.threads) + ": must be >= 0");
         config.segments = static_cast<std::size_t>(segments);
-        const tool::StreamedChain chain = tool::build_bead_source(chain_options);
+        const StreamedChain chain = tool::stream_chain(chain_options);
         for (double f : config.frequency_khz)  // the first one above the chain's frequencies
           if (tool::warn({frequency_warning("--f", f, chain.highest_frequency_khz)})) break;
         validate(config);
         const auto claim = tool::claim_output(output, meta.command());
         const TableOutputs paths = table_outputs(output);
 
-        ProgressMeter progress(chain.source->size() * config.frequency_khz.size(), "localization", quiet ? 0 : -1);
+        ProgressMeter progress(chain.beads->size() * config.frequency_khz.size(), "localization", quiet ? 0 : -1);
         run.progress = &progress;
-        const LocalizationScan scan = localization_scan(*chain.source, config, run);
+        const LocalizationScan scan = localization_scan(*chain.beads, config, run);
         progress.finish();
 
         AtomicFile csv(paths.csv);

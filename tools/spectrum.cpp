@@ -63,7 +63,7 @@ int main(int argc, char** argv) {
     nlohmann::json chain_description;
     Material material;
     {  // the chain is only needed for the matrix; free it before a large solve
-      const tool::SelectedChain selected = tool::build_chain(chain_options);
+      const SelectedChain selected = tool::build_chain(chain_options);
       chain_description = selected.description;
       material = selected.recipe.material;
       const double top = highest_frequency_bound_khz(selected.recipe);

@@ -43,7 +43,7 @@ int main(int argc, char** argv) {
                      if (run.threads < 0)
                        throw InvalidInput("--threads " + std::to_string(run.threads) + ": must be >= 0");
                      tool::KickedCase k = tool::kicked_case(options, ensemble);
-                     const tool::SelectedChain& selected = k.selected;
+                     const SelectedChain& selected = k.selected;
                      TransportCase& c = k.c;
                      c.profile_realizations = more.profile ? c.realizations : 0;
                      const SpreadingRunConfig& d = c.dynamics;

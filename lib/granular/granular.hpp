@@ -15,6 +15,7 @@
 #include "granular/model/disorder.hpp"
 #include "granular/model/material.hpp"
 #include "granular/model/named_chains.hpp"
+#include "granular/model/selected_chain.hpp"
 
 #include "granular/linear/band_edges.hpp"
 #include "granular/linear/density_of_states.hpp"

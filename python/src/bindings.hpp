@@ -22,6 +22,7 @@
 #include "granular/model/chain_recipe.hpp"
 #include "granular/model/disorder.hpp"
 #include "granular/model/quasiperiodic.hpp"
+#include "granular/model/selected_chain.hpp"
 
 namespace granular::python {
 
@@ -60,12 +61,8 @@ void bind_breathers(py::module_& m);
 // --- a chain as Python holds it ------------------------------------------------------------
 /// A chain with what made it: the bead types (when it has them) and the description the tools
 /// write as the "chain" entry of their JSON.
-struct PyChain {
-  ChainRecipe recipe;  ///< what the chain is realization `realization` of
-  std::uint64_t realization = 0;
-  Chain chain;                 ///< recipe.chain(realization)
-  Configuration types;         ///< empty when built from radii
-  nlohmann::json description;  ///< describe(recipe, realization), as the tools' "chain" entry
+struct PyChain : SelectedChain {
+  Configuration types;  ///< empty when built from radii
 };
 
 // --- errors ----------------------------------------------------------------------------------

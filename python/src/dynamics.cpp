@@ -140,8 +140,6 @@ py::dict exponent_table(const std::vector<std::string>& chains, const std::vecto
   const nlohmann::json step_rule = validate_and_settle(cases, automatic, dt_given, "T", t_warning);
   if (!t_warning.empty()) warn({t_warning});  // after the errors
   base.dynamics = cases.front().dynamics;     // τ and scheme as settled
-  std::size_t total = 0;
-  for (const auto& c : cases) total += c.realizations;
   const int thread_request = options.thread_request();
   const std::string& prefix = options.checkpoint;
   if ((options.resume || options.resume_other_version) && prefix.empty())
@@ -150,15 +148,8 @@ py::dict exponent_table(const std::vector<std::string>& chains, const std::vecto
   const std::vector<PaperCell> paper = compare ? read_paper_table(paper_path) : std::vector<PaperCell>{};
 
   std::vector<ExponentCell> cells;
-  run_long("exponent_table", total, options, [&](const RunOptions& o) {  // as the table's own options
-    cells = run_exponent_table(config, {.threads = o.threads,
-                                        .checkpoint_prefix = o.checkpoint,
-                                        .resume = o.resume,
-                                        .accept_other_version = o.accept_other_version,
-                                        .progress = 0,
-                                        .meter = o.progress,
-                                        .cancelled = o.cancelled});
-  });
+  run_long("exponent_table", total_realizations(cases), options,
+           [&](const RunOptions& o) { cells = run_exponent_table(config, o); });
   if (!prefix.empty())
     for (const std::string& log : case_checkpoints(prefix, cells.size())) CheckpointLog::remove_all(log);
 

@@ -9,22 +9,18 @@
 #include "granular/model/contact_law.hpp"
 #include "granular/model/correlation.hpp"
 #include "granular/model/named_chains.hpp"
-#include "granular/model/plausibility.hpp"
 #include "granular/model/quasiperiodic.hpp"
+#include "granular/model/selected_chain.hpp"
 
 namespace granular::python {
 namespace {
 /// The chain of a recipe, built and described ("disorder": `name` for a named given chain).
 PyChain py_chain(ChainRecipe recipe, std::uint64_t realization, const std::string& name = "") {
-  validate(recipe);
-  warn(radius_warnings(recipe, {"R1", "beads", "radii"}));
   PyChain c;
-  c.chain = recipe.chain(realization);
-  c.types = recipe.types(realization);
-  c.description = describe(recipe, realization);
+  static_cast<SelectedChain&>(c) = select_chain(std::move(recipe), realization, {"R1", "beads", "radii"});
+  warn(c.warnings);
+  c.types = c.recipe.types(realization);
   if (!name.empty()) c.description["disorder"] = name;
-  c.recipe = std::move(recipe);
-  c.realization = realization;
   return c;
 }
 

@@ -46,16 +46,21 @@ py::dict ipr_map(const IprMapConfig& c, const std::string& solver, const std::st
 py::dict localization(const PyChain* chain, const ChainRecipe& recipe, std::uint64_t realization,
                       const LocalizationScanConfig& config, const py::object& f, const PyRun& options) {
   const int thread_request = options.thread_request();
-  // The beads as the localization tool reads them (ChainRecipe::beads): a random realization is
-  // drawn a piece at a time (memory independent of N).
-  const ChainRecipe& r = chain ? chain->recipe : recipe;
-  if (chain) realization = chain->realization;
-  else validate(r, r.largest_walked_size());  // a quasiperiodic or sphere-walled chain is stored: 1e8
-  const std::unique_ptr<BeadSource> beads = r.beads(realization);
-  if (!chain) warn(radius_warnings(r, {"R1", "beads", "radii"}));
-  nlohmann::json description = chain ? chain->description : describe(r, realization);
+  // The beads as the localization tool reads them: a random realization drawn a piece at a time
+  // (memory independent of N); a given chain walked as it is.
+  StreamedChain s;
+  if (chain) {
+    s.beads = chain->recipe.beads(chain->realization);
+    s.description = chain->description;
+    s.highest_frequency_khz = highest_frequency_bound_khz(chain->recipe);
+  } else {
+    s = stream_chain(recipe, realization, {"R1", "beads", "radii"});
+    warn(s.warnings);
+  }
+  const std::unique_ptr<BeadSource>& beads = s.beads;
+  nlohmann::json& description = s.description;
   description["N"] = beads->size();
-  const double top_khz = highest_frequency_bound_khz(r);  // bound on the chain's frequencies (unit slips)
+  const double top_khz = s.highest_frequency_khz;  // bound on the chain's frequencies (unit slips)
   validate(config);
   for (double v : config.frequency_khz)  // the first one above the chain's frequencies
     if (const std::string w = frequency_warning("f", v, top_khz); !w.empty()) {

@@ -1,25 +1,21 @@
 #pragma once
-// The options that pick one chain, shared by every single-chain tool:
-// a random realization (--disorder --xi --q --N --seed --realization), a file of bead types
-// (--config) or a file of radii (--radii), plus --F0 and --R1; or random chains beyond two types:
-// k types with probabilities (--types radii, --type-masses masses) or polydisperse radii
-// (--polydisperse uniform:LO:HI | normal:MEAN:SD:MIN), realization --realization of --seed;
-// or a quasiperiodic chain (--quasi s1|s2|cylinders --modulation --ratio --phase --angle --k0),
-// whose realization is its phase.
+// The options that pick one chain (a ChainRecipe and its realization), shared by every
+// single-chain tool: a random two-type draw, a types or radii file, k types, polydisperse radii or
+// a quasiperiodic chain; stored, or streamed for tools that walk it once (localization).
 #include <cstdio>
+#include <memory>
 #include <optional>
 #include <string>
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
-#include "flag_table.hpp"
 #include "granular/io/bead_distribution_syntax.hpp"
 #include "granular/model/bead_distribution.hpp"
 #include "granular/model/chain_recipe.hpp"
 #include "granular/model/configuration_file.hpp"
 #include "granular/model/named_chains.hpp"
-#include "granular/model/plausibility.hpp"
+#include "granular/model/selected_chain.hpp"
 #include "tool_main.hpp"
 
 namespace granular::tool {
@@ -32,8 +28,7 @@ struct ChainOptions {
   std::string quasi, ratio = "golden";  ///< --quasi KIND, --ratio β
   double modulation = 0, angle = 45, k0 = 4;
   std::optional<double> phase;
-  bool auto_n = false;         ///< --N auto (long_time_options.hpp): N from T, the chain drawn from its centre
-  nlohmann::json length_rule;  ///< and the rule's numbers
+  bool auto_n = false;  ///< --N auto (long_time_options.hpp): N from T, the chain drawn from its centre
 };
 
 /// --types, --type-masses, --polydisperse (mutually exclusive); returns them for more exclusions.
@@ -62,27 +57,21 @@ inline void add_walls_option(CLI::App& app, std::string& walls) {
              "fixed-end lattice");
 }
 
-/// --quasi and its parameters (model/quasiperiodic.hpp).
-inline const std::vector<Flag<ChainOptions>>& quasi_flags() {
-  using O = ChainOptions;
-  static const std::vector<Flag<O>> flags{
-      {"--quasi", &O::quasi,
-       "quasiperiodic chain: s1 (on-site springs), s2 (masses) or cylinders (crossing angles), modulated by 1 + "
-       "modulation cos(2 pi ratio n + phase); R1 is the beads' radius",
-       false},
-      {"--modulation", &O::modulation, "--quasi: relative modulation strength lambda, |lambda| < 1"},
-      {"--ratio", &O::ratio, "--quasi: the incommensurate ratio beta > 0: golden, p/q or a number"},
-      {"--phase", &O::phase,
-       "--quasi: the phase [rad] (default: drawn uniformly in [0, 2 pi) per --seed and --realization)", false},
-      {"--angle", &O::angle, "--quasi cylinders: mean crossing angle alpha0 [degrees] in (0, 180)"},
-      {"--k0", &O::k0, "--quasi s1: mean on-site stiffness in units of the bond stiffness K"},
-  };
-  return flags;
-}
-
-/// Registers quasi_flags(); returns --quasi for exclusions.
+/// --quasi and its parameters (model/quasiperiodic.hpp); returns --quasi for exclusions.
 inline CLI::Option* add_quasiperiodic_options(CLI::App& app, ChainOptions& o) {
-  add_flags(app, o, quasi_flags());
+  using O = ChainOptions;
+  add_flags<O>(
+      app, o,
+      {{"--quasi", &O::quasi,
+        "quasiperiodic chain: s1 (on-site springs), s2 (masses) or cylinders (crossing angles), modulated by 1 + "
+        "modulation cos(2 pi ratio n + phase); R1 is the beads' radius",
+        false},
+       {"--modulation", &O::modulation, "--quasi: relative modulation strength lambda, |lambda| < 1"},
+       {"--ratio", &O::ratio, "--quasi: the incommensurate ratio beta > 0: golden, p/q or a number"},
+       {"--phase", &O::phase,
+        "--quasi: the phase [rad] (default: drawn uniformly in [0, 2 pi) per --seed and --realization)", false},
+       {"--angle", &O::angle, "--quasi cylinders: mean crossing angle alpha0 [degrees] in (0, 180)"},
+       {"--k0", &O::k0, "--quasi s1: mean on-site stiffness in units of the bond stiffness K"}});
   return app.get_option("--quasi");
 }
 
@@ -169,28 +158,17 @@ inline RadiusNames radius_options(const ChainOptions& o) {
 /// The realization the options pick (0-based).
 inline std::uint64_t chain_realization(const ChainOptions& o) { return static_cast<std::uint64_t>(o.realization); }
 
-struct SelectedChain {
-  ChainRecipe recipe;
-  Chain chain;                 ///< realization --realization of the recipe
-  nlohmann::json description;  ///< the "chain" entry of the tool's JSON
-};
-
-/// Realization `r` of `recipe`, validated (a warning naming one of `radius_options` for each
-/// implausible radius), built and described.
-inline SelectedChain select_chain(ChainRecipe recipe, std::uint64_t r, const RadiusNames& names) {
-  validate(recipe);
-  warn(radius_warnings(recipe, names));
-  SelectedChain s;
-  s.chain = recipe.chain(r);
-  s.description = describe(recipe, r);
-  s.recipe = std::move(recipe);
+/// The chain the options pick, built and described.
+inline SelectedChain build_chain(const ChainOptions& o) {
+  SelectedChain s = granular::select_chain(chain_recipe(o), chain_realization(o), radius_options(o));
+  warn(s.warnings);
   return s;
 }
 
-/// The chain the options pick, built and described (N, and with --N auto its rule).
-inline SelectedChain build_chain(const ChainOptions& o) {
-  SelectedChain s = select_chain(chain_recipe(o), chain_realization(o), radius_options(o));
-  if (o.auto_n) s.description["N_rule"] = o.length_rule;
+/// The chain the options pick, streamed (granular::stream_chain), its warnings printed.
+inline StreamedChain stream_chain(const ChainOptions& o) {
+  StreamedChain s = granular::stream_chain(chain_recipe(o), chain_realization(o), radius_options(o));
+  warn(s.warnings);
   return s;
 }
 

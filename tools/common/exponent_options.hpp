@@ -11,7 +11,6 @@
 #include "dynamics_options.hpp"
 #include "granular/io/range_syntax.hpp"
 #include "granular/study/exponent_table.hpp"
-#include "mode_kick_options.hpp"
 #include "tool_main.hpp"
 
 namespace granular::tool {
@@ -25,7 +24,7 @@ struct ExponentChoices {
     return o;
   }();
   std::string chain_name;  ///< the user's chain in the outputs; empty: "types" or "polydisperse"
-  ModeKickOptions mode;
+  ModeKick mode;
 };
 
 inline void add_exponent_choices(CLI::App& app, ExponentChoices& o, BeyondOptions& beyond) {

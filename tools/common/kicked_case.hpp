@@ -12,7 +12,6 @@
 #include "chain_options.hpp"
 #include "dynamics_options.hpp"
 #include "long_time_options.hpp"
-#include "mode_kick_options.hpp"
 #include "tool_main.hpp"
 
 namespace granular::tool {
@@ -21,7 +20,7 @@ struct KickedCaseOptions {
   KickedCaseOptions() { chain.n = 2501; }
   ChainOptions chain;
   DynamicsOptions dynamics;
-  ModeKickOptions mode;
+  ModeKick mode;
   std::string ic = "displacement";
   long long realizations = 1;
   std::string case_file;  ///< --case: the chain, kick and dynamics from a file instead of the flags
@@ -77,15 +76,23 @@ inline KickedCase kicked_case(KickedCaseOptions& o, bool ensemble) {
     static_cast<BeyondChoices&>(beyond) = beyond_choices_of(c.dynamics);
     beyond.deviation = o.dynamics.deviation, beyond.deviation_samples = o.dynamics.deviation_samples;
     apply(beyond, c.dynamics);
-    k.selected = select_chain(c.chain, chain_realization(o.chain), {"R1_m", "beads", "radii_file"});
+    k.selected = granular::select_chain(c.chain, chain_realization(o.chain), {"R1_m", "beads", "radii_file"});
+    warn(k.selected.warnings);
   } else {
-    size_chain(o.chain, o.dynamics, o.ic);  // --N auto
-    k.selected = build_chain(o.chain);
-    c.chain = k.selected.recipe;
+    if (o.chain.auto_n) require_centre_kick(o.dynamics.site);
+    c.chain = chain_recipe(o.chain);  // with --N auto, N 3 until sized below
     c.kick = parse_kick(o.ic);
     apply(o.mode, c);
     apply(o.dynamics, c);
     c.fit = c.fit_end <= c.dynamics.integration.duration * (1 + 1e-12);  // a window beyond T: no exponents, a note
+    nlohmann::json rule;
+    if (o.chain.auto_n) {
+      validate(c.chain);                       // a drawn two-type chain
+      rule = to_json(size_for_long_times(c));  // N, the centre kick, the centred draw
+    }
+    k.selected = granular::select_chain(c.chain, chain_realization(o.chain), radius_options(o.chain));
+    warn(k.selected.warnings);
+    if (o.chain.auto_n) k.selected.description["N_rule"] = rule;
   }
   if (ensemble && (c.chain.given_types || c.chain.given_radii))
     throw InvalidInput("--realizations/--resume: an ensemble draws random chains; --config/--radii give one chain");

@@ -2,10 +2,13 @@
 // How an ensemble of kicked chains runs, shared by `spreading --realizations` and `exponents`:
 // threads, checkpoint and resume (--resume continues, --fresh discards), what a failing
 // realization does (stop with the command that replays it alone, or --skip-failed: leave it out,
-// say so everywhere), and Ctrl-C as a clean stop that prints the command resuming the run.
+// say so everywhere; a failed realization's case is written to a file that `spreading --case`
+// replays, so every field travels), and Ctrl-C as a clean stop that prints the command resuming the run.
 #include <algorithm>
 #include <cstdint>
 #include <cstdio>
+#include <exception>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -15,12 +18,13 @@
 #include "granular/ensemble/checkpoint_log.hpp"
 #include "granular/ensemble/interrupt.hpp"
 #include "granular/ensemble/run_options.hpp"
+#include "granular/io/atomic_file.hpp"
+#include "granular/io/shell_quote.hpp"
 #include "granular/parallel/mpi_context.hpp"
 #include "granular/study/exponent_table.hpp"
 #include "granular/study/resumed_checkpoint.hpp"
 #include "granular/study/transport_study.hpp"
 #include "outputs.hpp"
-#include "replay_command.hpp"
 #include "tool_main.hpp"
 
 namespace granular::tool {
@@ -59,20 +63,6 @@ inline RunOptions run_options(const LongRunOptions& o, const std::string& checkp
   return run;
 }
 
-/// The same for a study of many cases (case i logs to `checkpoint`.<i>), with a progress line
-/// when `progress`.
-inline ExponentRunOptions exponent_run_options(const LongRunOptions& o, const std::string& checkpoint, bool progress,
-                                               const std::string& tool) {
-  const RunOptions r = run_options(o, checkpoint, nullptr, tool);
-  return {.threads = r.threads,
-          .checkpoint_prefix = checkpoint,
-          .resume = r.resume,
-          .accept_other_version = r.accept_other_version,
-          .progress = progress ? -1 : 0,
-          .cancelled = r.cancelled,
-          .skip_failed = r.skip_failed};
-}
-
 /// With --resume-other-version: the code versions of the result (study/resumed_checkpoint.hpp)
 /// for the JSON; null otherwise. A plain --resume of a checkpoint another version made is refused
 /// here, in this tool's words.
@@ -83,6 +73,30 @@ inline nlohmann::json resumed_code(const LongRunOptions& o, const std::vector<st
         throw InvalidInput("resume", ": " + other + "; resume it with that version, or accept the mix with " +
                                          "--resume-other-version");
   return o.other_version ? resumed_checkpoint(checkpoints) : nullptr;
+}
+
+/// Writes case `c` run alone (one realization, no profile) to PREFIX.replay-<r>-<hash of the case>.json
+/// (cases of one study differ in the hash) and returns the `spreading` command that computes its
+/// realization `r`; `argv0` (how this tool was called) says where `spreading` is. When the file
+/// cannot be written, a sentence saying why.
+inline std::string replay_text(const TransportCase& c, std::uint64_t r, const std::string& prefix,
+                               const std::string& argv0) {
+  TransportCase alone = c;
+  alone.realizations = 1, alone.profile_realizations = 0;
+  const std::string described = describe(alone).dump(2) + "\n";
+  char hash[9];
+  std::snprintf(hash, sizeof hash, "%08llx",
+                static_cast<unsigned long long>(std::hash<std::string>{}(described)&0xffffffffULL));
+  const std::string file = prefix + ".replay-" + std::to_string(r) + "-" + hash + ".json";
+  try {
+    write_file_atomically(file, described);
+  } catch (const std::exception& e) {
+    return std::string("(the case could not be written: ") + e.what() + ")";
+  }
+  const auto slash = argv0.rfind('/');
+  const std::string folder = slash == std::string::npos ? "" : argv0.substr(0, slash + 1);
+  return shell_quote(folder + "spreading") + " --case " + shell_quote(file) + " --realization " + std::to_string(r) +
+         " --output replay-" + std::to_string(r);
 }
 
 /// Runs `study` (a call of run_transport_study or run_exponent_table); a realization failing in
@@ -111,6 +125,17 @@ inline TransportSummary run_ensemble(const TransportCase& c, const LongRunOption
   TransportSummary summary = replaying_failures([&] { return run_transport_study(c, options); }, prefix, argc, argv);
   progress.finish();
   return summary;
+}
+
+/// Runs the study of `config` (its `cases`, exponent_cases) as run_ensemble runs one case; the
+/// cases' checkpoints are PREFIX.checkpoint.<i>.
+inline std::vector<ExponentCell> run_table(const ExponentTableConfig& config, const std::vector<TransportCase>& cases,
+                                           const LongRunOptions& o, const std::string& prefix, int argc, char** argv) {
+  ProgressMeter progress(total_realizations(cases), "exponents", o.quiet || !MpiContext::instance().root() ? 0 : -1);
+  const RunOptions options = run_options(o, prefix + ".checkpoint", &progress, "exponents");
+  auto cells = replaying_failures([&] { return run_exponent_table(config, options); }, prefix, argc, argv);
+  progress.finish();
+  return cells;
 }
 
 /// Says which realizations of `c` were left out (--skip-failed): a line on stderr for each, with

@@ -9,8 +9,6 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
-#include "chain_options.hpp"
-#include "dynamics_options.hpp"
 #include "granular/error.hpp"
 #include "granular/study/chain_length_rule.hpp"
 #include "granular/study/transport_study.hpp"
@@ -47,26 +45,6 @@ inline nlohmann::json length_rules(const std::vector<TransportCase>& cases, bool
   nlohmann::json rules = nlohmann::json::array();
   for (const TransportCase& c : cases) rules.push_back(to_json(automatic_chain_length(c)));
   return rules;
-}
-
-/// spreading: before its chain is built, N for --N auto from the options (a probe case).
-inline void size_chain(ChainOptions& chain, const DynamicsOptions& dynamics, const std::string& ic) {
-  if (!chain.auto_n) return;
-  if (!chain.config.empty() || !chain.radii.empty())
-    throw InvalidInput("--N auto: sizes a drawn chain; --config/--radii give their own");
-  if (!chain.types.empty() || !chain.polydisperse.empty())
-    throw InvalidInput("--N auto: draws two-type chains (--disorder); not with --types/--polydisperse");
-  TransportCase probe;
-  ChainOptions three = chain;
-  three.n = 3;
-  probe.chain = chain_recipe(three);
-  probe.kick = parse_kick(ic);
-  DynamicsOptions centre = dynamics;
-  centre.site = 0;
-  apply(centre, probe);
-  require_centre_kick(dynamics.site);
-  chain.length_rule = to_json(size_for_long_times(probe));  // N, the centre kick, the centred draw
-  chain.n = static_cast<long long>(probe.chain.N);
 }
 
 }  // namespace granular::tool

@@ -3,14 +3,18 @@
 // stderr and an exit code (2 bad input, 1 I/O, 3 numerical failure, 130 interrupted: the
 // message says how to resume); --help and --version exit 0. The body only runs after every
 // option parsed. Library errors name parameters in the library's vocabulary (`time_step`); here
-// they are told in the flag the user typed (`--dt`).
+// they are told in the flag the user typed (`--dt`). Flags may be declared as table rows (Flag).
 #include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <functional>
+#include <iterator>
 #include <map>
+#include <optional>
 #include <string>
+#include <string_view>
+#include <variant>
 #include <vector>
 
 #include <CLI/CLI.hpp>
@@ -32,15 +36,10 @@ enum ExitCode { ok = 0, io_failure = 1, bad_input = 2, numerical_failure = 3, in
 /// The command that continues an interrupted run: argv as typed, shell-quoted, with --resume
 /// (added if absent) and without --fresh.
 inline std::string resume_command(int argc, char** argv) {
-  std::string command;
-  bool resume = false;
-  for (int i = 0; i < argc; ++i) {
-    const std::string word = argv[i];
-    if (word == "--fresh") continue;
-    resume = resume || word == "--resume";
-    command += (command.empty() ? "" : " ") + shell_quote(word);
-  }
-  return resume ? command : command + " --resume";
+  std::vector<std::string> words;
+  std::copy_if(argv, argv + argc, std::back_inserter(words), [](std::string_view w) { return w != "--fresh"; });
+  if (std::find(words.begin(), words.end(), "--resume") == words.end()) words.push_back("--resume");
+  return shell_command(words);
 }
 
 inline void describe_common(CLI::App& app) {
@@ -81,6 +80,29 @@ CLI::Option* add_integer(CLI::App& app, const std::string& name, Integer& value,
     return {};
   };
   return add_option(app, name, value, description)->transform(CLI::Validator(digits, "", "integer notation"));
+}
+
+/// A flag as a row of a table: its name, the option field it sets, its help.
+template <class Options>
+struct Flag {
+  std::string name;
+  std::variant<double Options::*, long long Options::*, long Options::*, std::string Options::*,
+               std::optional<double> Options::*>
+      field;
+  std::string help;
+  bool shows_default = true;  ///< --help shows the default value
+};
+
+/// Registers every row of `flags` on `app`, bound to its field of `o`.
+template <class Options>
+void add_flags(CLI::App& app, Options& o, const std::vector<Flag<Options>>& flags) {
+  for (const Flag<Options>& f : flags)
+    std::visit(
+        [&](auto field) {
+          CLI::Option* option = app.add_option(f.name, o.*field, f.help);
+          if (f.shows_default) option->capture_default_str();
+        },
+        f.field);
 }
 
 /// Library parameter names that are not simply the flag without its dashes.
@@ -138,11 +160,7 @@ inline int run(CLI::App& app, int argc, char** argv, const std::function<void()>
     }
   try {
     app.parse(argc, argv);
-  } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::CallForAllHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::CallForVersion& e) {
+  } catch (const CLI::Success& e) {  // --help, --help-all, --version
     return app.exit(e);
   } catch (const CLI::ExtrasError& e) {
     std::string hint;

@@ -73,30 +73,25 @@ std::vector<TransportCase> exponent_cases(const ExponentTableConfig& config) {
   return cases;
 }
 
-std::vector<ExponentCell> run_exponent_table(const ExponentTableConfig& config, const ExponentRunOptions& options) {
+std::size_t total_realizations(const std::vector<TransportCase>& cases) {
+  std::size_t total = 0;
+  for (const auto& c : cases) total += c.realizations;
+  return total;
+}
+
+std::vector<ExponentCell> run_exponent_table(const ExponentTableConfig& config, const RunOptions& options) {
   const auto cases = exponent_cases(config);
   for (const auto& c : cases) validate(c);  // every case checked before the first one runs
   const std::vector<std::string> names = chain_names(config);
-  std::size_t total = 0;
-  for (const auto& c : cases) total += c.realizations;
-  ProgressMeter own(total, "exponents", options.meter ? 0 : options.progress);
   std::vector<ExponentCell> cells;
-  const std::vector<std::string> logs = case_checkpoints(options.checkpoint_prefix, cases.size());
+  const std::vector<std::string> logs = case_checkpoints(options.checkpoint, cases.size());
   for (std::size_t i = 0; i < cases.size(); ++i) {
-    StudyRunOptions run;
-    run.threads = options.threads;
-    run.progress = options.meter ? options.meter : &own;
-    run.cancelled = options.cancelled;
-    run.skip_failed = options.skip_failed;
-    run.accept_other_version = options.accept_other_version;
-    if (!options.checkpoint_prefix.empty()) {
-      run.checkpoint = logs[i];
-      // A case not started before the interruption has no log yet: it simply starts.
-      run.resume = options.resume && CheckpointLog::exists(run.checkpoint);
-    }
+    RunOptions run = options;
+    run.checkpoint = options.checkpoint.empty() ? "" : logs[i];
+    // A case not started before the interruption has no log yet: it simply starts.
+    run.resume = options.resume && !run.checkpoint.empty() && CheckpointLog::exists(run.checkpoint);
     cells.push_back({cases[i], run_transport_study(cases[i], run), names[i % names.size()]});
   }
-  own.finish();
   return cells;
 }
 

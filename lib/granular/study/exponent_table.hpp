@@ -3,12 +3,12 @@
 // for every chain kind × precompression × kick, each an ensemble (transport_study.hpp).
 // Homogeneous chains are deterministic, so they run one realization whatever R is. Chains beyond
 // the paper's kinds (k bead types, polydisperse radii, a quasiperiodic chain) join the study by name.
-#include <functional>
 #include <optional>
 #include <ostream>
 #include <string>
 #include <vector>
 
+#include "granular/ensemble/run_options.hpp"
 #include "granular/model/quasiperiodic.hpp"
 #include "granular/study/transport_study.hpp"
 
@@ -52,18 +52,6 @@ std::string chain_name(const ExponentCell& cell);
 /// of a bad distribution.
 void validate(const ExponentTableConfig& config);
 
-struct ExponentRunOptions {
-  int threads = 0;
-  std::string checkpoint_prefix;  ///< case i logs to <prefix>.<i>; empty: no checkpoints
-  bool resume = false;
-  bool accept_other_version = false;  ///< see RunOptions::accept_other_version
-  int progress = -1;                  ///< ProgressMeter's enabled flag
-  ProgressMeter* meter =
-      nullptr;  ///< optional: advance this meter (total: every case's realizations) instead of one of its own
-  std::function<bool()> cancelled{};  ///< see RunOptions::cancelled
-  bool skip_failed = false;           ///< see RunOptions::skip_failed
-};
-
 /// The checkpoint logs of a study's first `cases` cases: case i logs to `prefix`.<i>.
 std::vector<std::string> case_checkpoints(const std::string& prefix, std::size_t cases);
 
@@ -71,9 +59,14 @@ std::vector<std::string> case_checkpoints(const std::string& prefix, std::size_t
 /// automatic_length each sized (N, the centre kick, the centred draw) by automatic_chain_length.
 std::vector<TransportCase> exponent_cases(const ExponentTableConfig& config);
 
+/// Every case's realizations: the total of the progress meter run_exponent_table advances.
+std::size_t total_realizations(const std::vector<TransportCase>& cases);
+
 /// Runs every case; under mpirun only rank 0 gets filled summaries. Memory: one case's
-/// records at a time (transport_study.hpp), then its summary.
-std::vector<ExponentCell> run_exponent_table(const ExponentTableConfig& config, const ExponentRunOptions& options);
+/// records at a time (transport_study.hpp), then its summary. `options.checkpoint` is the prefix
+/// of the cases' logs (case i logs to <prefix>.<i>; empty: no checkpoints), `options.progress`
+/// (optional) counts every case's realizations (total_realizations).
+std::vector<ExponentCell> run_exponent_table(const ExponentTableConfig& config, const RunOptions& options);
 
 /// One table cell: "1.763 ± 0.012 (± 0.020 real.)", the shown value ± its sub-window spread and
 /// (when an ensemble gave one) its realization error; a trailing * marks a starred cell (not a
