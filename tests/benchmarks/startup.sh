@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# What a run pays before it computes (issue: "a tool pays only for what it uses"): for each tool,
+# the best of REPEATS wall times of `TOOL --version` and the shared libraries it loads (ldd); for
+# Python, `import numpy` against `import numpy, granular` (the module's own cost), best of REPEATS.
+# Usage: tests/benchmarks/startup.sh [BUILD_DIR] [REPEATS]. Check `uptime` first: re-run idle.
+set -euo pipefail
+
+root=$(cd "$(dirname "$0")/../.." && pwd)
+build=$(cd "${1:-$root/build}" && pwd)
+repeats=${2:-20}
+echo "startup: $(date -u +%FT%TZ), $(nproc) cores, load $(cut -d' ' -f1-3 /proc/loadavg)"
+
+best_ms() {  # best wall time [ms] of REPEATS runs of a command
+  local best="" start end
+  for ((r = 0; r < repeats; r++)); do
+    start=$(date +%s%N)
+    "$@" >/dev/null 2>&1
+    end=$(date +%s%N)
+    best=$(awk -v t="$(((end - start) / 1000))" -v b="$best" 'BEGIN {print (b == "" || t / 1000 < b) ? t / 1000 : b}')
+  done
+  echo "$best"
+}
+
+printf "%-14s %10s %10s %s\n" tool "ms" libraries "PETSc/SLEPc/HDF5/MPI loaded"
+for tool in restitution correlations spectrum ipr-map localization spreading exponents butterfly breathers; do
+  libs=$(ldd "$build/$tool" | wc -l)
+  heavy=$(ldd "$build/$tool" | grep -oE 'lib(petsc|slepc|hdf5|mpi)[^ ]*' | sed 's/\.so.*//' | sort -u | tr '\n' ' ')
+  printf "%-14s %10.1f %10d %s\n" "$tool" "$(best_ms "$build/$tool" --version)" "$libs" "${heavy:-none}"
+done
+numpy=$(best_ms /usr/bin/python3 -c "import numpy")
+both=$(PYTHONPATH=$build/python best_ms /usr/bin/python3 -c "import numpy, granular")
+printf "python: import numpy %.1f ms, import numpy, granular %.1f ms (granular adds %.1f ms)\n" "$numpy" "$both" \
+  "$(awk -v a="$both" -v b="$numpy" 'BEGIN {print a - b}')"
