@@ -59,19 +59,19 @@ int main(int argc, char** argv) {
     const SpectrumRequest request{tool::parse_selection(selection_options), config, method};
     const ModeSelection& selection = request.selection;
     validate(request.config, selection);
-    DynamicalMatrix d;
-    nlohmann::json chain_description;
-    Material material;
-    {  // the chain is only needed for the matrix; free it before a large solve
-      const SelectedChain selected = tool::build_chain(chain_options);
-      chain_description = selected.description;
-      material = selected.recipe.material;
-      const double top = highest_frequency_bound_khz(selected.recipe);
+    const ChainRecipe recipe = tool::chain_recipe(chain_options);
+    validate(recipe);  // the matrix is stored: at most 1e8 beads
+    // Read a piece at a time: a drawn chain's matrix is built without the chain's arrays beside it.
+    StreamedChain chain =
+        stream_chain(recipe, tool::chain_realization(chain_options), tool::radius_options(chain_options));
+    tool::warn(chain.warnings);
+    if (selection.kind != ModeSelection::Kind::all) {
       const bool near = selection.kind == ModeSelection::Kind::nearest;
-      if (selection.kind != ModeSelection::Kind::all)
-        tool::warn({frequency_warning(near ? "--near" : "--window", near ? selection.near_khz : selection.lo_khz, top)});
-      d = dynamical_matrix(selected.chain);
+      tool::warn({frequency_warning(near ? "--near" : "--window", near ? selection.near_khz : selection.lo_khz,
+                                    chain.highest_frequency_khz)});
     }
+    const DynamicalMatrix d = dynamical_matrix(*chain.beads);
+    chain.beads.reset();  // what a stored chain's source holds, freed before a large solve
     validate(selection, d.size());
     // Refused before the output is claimed and before anything of size N² exists.
     if (const std::string problem = full_spectrum_problem(d.size(), request.config, selection); !problem.empty())
@@ -102,7 +102,7 @@ int main(int argc, char** argv) {
     if (!quiet && result.size() == 0) std::fprintf(stderr, "spectrum: note: no modes in the window\n");
     AtomicFile csv(csv_path);
     write_spectrum_csv(csv.stream(), result, clusters);
-    meta.merge(describe_spectrum(result, request, chain_description, material));
+    meta.merge(describe_spectrum(result, request, chain.description, recipe.material));
     meta["output"] = csv_path;
     std::vector<PendingOutput*> outputs{&csv};
     std::unique_ptr<Hdf5File> vectors;

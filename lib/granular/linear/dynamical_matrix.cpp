@@ -1,7 +1,9 @@
 #include "granular/linear/dynamical_matrix.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <vector>
 
 #include "granular/error.hpp"
 #include "granular/linear/mode_ipr.hpp"
@@ -22,6 +24,31 @@ DynamicalMatrix dynamical_matrix(const Chain& chain) {
   for (std::size_t i = 0; i + 1 < n; ++i)
     d.off_diagonal[i] = -b[i + 1] * std::sqrt(chain.inverse_mass[i] * chain.inverse_mass[i + 1]);
   d.inverse_sqrt_mass = inverse_sqrt_mass(chain.inverse_mass);
+  return d;
+}
+
+DynamicalMatrix dynamical_matrix(const BeadSource& beads) {
+  const std::size_t n = beads.size(), piece = 65536;
+  DynamicalMatrix d;
+  d.diagonal.resize(n);
+  d.off_diagonal.resize(n - 1);
+  d.inverse_sqrt_mass.resize(n);
+  std::vector<double> mass(piece), b(piece + 1), onsite(piece);
+  double previous_inverse_mass = 0;
+  for (std::size_t first = 0; first < n; first += piece) {
+    const std::size_t count = std::min(piece, n - first);
+    beads.read(first, count, mass.data(), b.data());
+    if (beads.grounded()) beads.read_onsite(first, count, onsite.data());
+    for (std::size_t j = 0; j < count; ++j) {  // the operations of dynamical_matrix(Chain), in its order
+      const std::size_t i = first + j;
+      const double inverse_mass = 1.0 / mass[j];
+      d.diagonal[i] = (b[j] + b[j + 1]) * inverse_mass;
+      if (beads.grounded()) d.diagonal[i] += onsite[j] * inverse_mass;
+      if (i > 0) d.off_diagonal[i - 1] = -b[j] * std::sqrt(previous_inverse_mass * inverse_mass);
+      d.inverse_sqrt_mass[i] = std::sqrt(inverse_mass);
+      previous_inverse_mass = inverse_mass;
+    }
+  }
   return d;
 }
 

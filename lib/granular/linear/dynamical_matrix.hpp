@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "granular/linear/sym_tridiagonal.hpp"
+#include "granular/model/bead_source.hpp"
 #include "granular/model/chain.hpp"
 
 namespace granular {
@@ -17,6 +18,11 @@ struct DynamicalMatrix : SymTridiagonal {
 /// D(i,i) = (B_i + B_{i+1} + k_i)/m_i (k_i the on-site spring, if any), D(i,i+1) = -B_{i+1}/sqrt(m_i m_{i+1}) [1/s²].
 /// Throws InvalidInput when F0 = 0 (the sonic vacuum has no linear limit).
 DynamicalMatrix dynamical_matrix(const Chain& chain);
+
+/// The same matrix, bit for bit, read a piece at a time from a bead source (model/bead_source.hpp):
+/// a drawn chain's matrix is built without storing the chain (2 N doubles and the N of
+/// inverse_sqrt_mass, not the chain's arrays beside them).
+DynamicalMatrix dynamical_matrix(const BeadSource& beads);
 
 /// Frequency in kHz of an eigenvalue ω² [1/s²] (negative round-off clamps to 0).
 double frequency_khz(double omega_squared);
