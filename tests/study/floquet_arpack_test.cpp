@@ -67,6 +67,7 @@ void expect_arpack_matches_dense(const GapBreather& b, bool stable) {
   EXPECT_EQ(dense.method, "dense");
   EXPECT_EQ(arpack.method, "arpack");
   EXPECT_EQ(dense.multipliers.size(), 2 * b.chain.size());
+  EXPECT_TRUE(arpack.complete);
   ASSERT_GE(arpack.multipliers.size(), 16u);
   EXPECT_EQ(dense.stable, stable);
   EXPECT_EQ(arpack.stable, dense.stable);

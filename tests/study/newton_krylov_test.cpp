@@ -1,6 +1,7 @@
 // Newton–Krylov shooting (dynamics/periodic_orbit.hpp, ShootingConfig::newton = krylov) against
 // dense Newton on the same problem: the same orbit to the tolerance, superlinear convergence, and
-// the preconditioner's effect on the GMRES iterations.
+// the preconditioner's effect on the GMRES iterations; and a breather of N = 1001 beads (above the
+// dense limit) with its ARPACK multipliers.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -11,6 +12,7 @@
 
 #include "granular/detail/euclidean_norm.hpp"
 #include "granular/dynamics/detail/shooting_krylov.hpp"
+#include "granular/dynamics/floquet.hpp"
 #include "granular/dynamics/periodic_orbit.hpp"
 #include "granular/error.hpp"
 #include "granular/linear/band_edges.hpp"
@@ -131,6 +133,53 @@ TEST(NewtonKrylov, AutomaticChoiceAndBadInput) {
   EXPECT_EQ(parse_newton_method("krylov"), NewtonMethod::krylov);
   EXPECT_EQ(to_string(NewtonMethod::automatic), "auto");
   EXPECT_THROW(parse_newton_method("gmres"), InvalidInput);
+}
+
+// N = 1001, above the dense limit: the most unstable closed-contact heavy-centred gap breather of
+// the 101-bead chain, put in the middle of the 1001-bead chain of the same pattern (zeros around
+// it), is Newton's seed at its frequency; Newton–Krylov and ARPACK are chosen automatically, and
+// ARPACK's largest multiplier is dgeev's on the whole 2002 × 2002 monodromy of that orbit.
+TEST(Long_NewtonKrylov, GapBreatherOf1001Beads) {
+  auto small = diatomic_config(101, 1);
+  small.max_points = 60;
+  const auto branch = continue_breather(small);
+  const BreatherPoint* worst = nullptr;
+  for (const auto& q : branch.points)
+    if (q.max_open_fraction == 0 && (!worst || q.floquet.max_modulus > worst->floquet.max_modulus)) worst = &q;
+  ASSERT_NE(worst, nullptr);
+  ASSERT_GT(worst->floquet.max_modulus, 1.1);
+  auto c = diatomic_config(1001, 1);
+  c.mode = 0;
+  c.seed_profile.assign(1001, 0.0);
+  std::copy(worst->x0.begin(), worst->x0.end(), c.seed_profile.begin() + 450);
+  c.start_khz = worst->freq_khz;
+  c.shooting.steps_per_period = branch.steps_per_period;
+  c.max_points = 1;
+  const auto large = continue_breather(c);
+  const auto& p = large.points.front();
+  std::printf("N = 1001 at %.6f kHz: Newton residuals", p.freq_khz);
+  for (double r : p.residuals) std::printf(" %.2e", r);
+  std::printf("; GMRES iterations");
+  for (int k : p.krylov_iterations) std::printf(" %d", k);
+  std::printf("; max|mu| %.10f (N = 101 dense: %.10f; %s, %ld products, %d restarts)\n", p.floquet.max_modulus,
+              worst->floquet.max_modulus, p.floquet.method.c_str(), p.floquet.operator_applications, p.floquet.restarts);
+  EXPECT_LE(p.residual, 1e-10);
+  EXPECT_EQ(p.newton, "krylov");
+  EXPECT_EQ(p.floquet.method, "arpack");
+  EXPECT_FALSE(p.floquet.stable);
+  EXPECT_EQ(p.floquet.instability, "real");
+  // The independent check: dgeev on the 2002 × 2002 monodromy of the same orbit. (The short
+  // chain's multiplier differs by ~1 %: its walls are 50 beads from the centre.)
+  const Chain chain = c.chain.chain(0);
+  const ForceLaw law = make_force_law(ForceLawKind::hertz, chain);
+  const auto orbit = find_periodic_orbit(law, chain, p.omega, p.x0,
+                                         {.steps_per_period = branch.steps_per_period, .newton = NewtonMethod::krylov});
+  EXPECT_EQ(orbit.iterations, 0);
+  const FloquetSpectrum dense = floquet_stability(law, chain, orbit, c.stability_tolerance);
+  std::printf("N = 1001 dense: max|mu| %.12f, ARPACK %.12f (complete %d)\n", dense.max_modulus, p.floquet.max_modulus,
+              p.floquet.complete);
+  EXPECT_NEAR(p.floquet.max_modulus, dense.max_modulus, 1e-8);
+  EXPECT_EQ(dense.instability, "real");
 }
 
 }  // namespace

@@ -46,7 +46,9 @@ struct FloquetConfig {
   /// ARPACK: Krylov basis size (ncv); 0: max(2 multipliers + 1, 40), at most 2N.
   int subspace = 0;
   double arpack_tolerance = 1e-12;  ///< ARPACK: relative residual of the Ritz pairs
-  int max_restarts = 3000;          ///< ARPACK: implicit restarts before NumericalError
+  /// ARPACK: implicit restarts; when they run out, the multipliers converged so far are kept
+  /// (FloquetSpectrum::complete = false; none converged: NumericalError).
+  int max_restarts = 300;
   /// ARPACK: the multipliers within this distance of +1 (two at most) are taken for the phase/family
   /// pair and left out of the verdict (the dense method leaves out the two nearest +1, wherever they
   /// are: there all 2N are known, here the pair need not be among the k).
@@ -60,6 +62,10 @@ struct FloquetSpectrum {
   std::string method = "dense";    ///< "dense" or "arpack": which computed them
   long operator_applications = 0;  ///< tangent integrations of one period (2N for dense)
   int restarts = 0;                ///< ARPACK's implicit restarts (0 for dense)
+  /// false when ARPACK ran out of restarts with fewer than k multipliers converged: the verdict
+  /// is then on those only. Stable orbits are the hard case (every |μ| = 1: no modulus gap), e.g.
+  /// a stable gap breather of 101 beads needs ~150 restarts of a 40-vector basis.
+  bool complete = true;
   /// max |μ| over all but the two multipliers nearest +1 (the phase/family pair, a Jordan block
   /// that a residual r of the orbit splits by ~√r: not an instability)
   double max_modulus = 0;
@@ -91,7 +97,7 @@ std::vector<double> apply_monodromy(const ForceLaw& law, const Chain& chain, con
 
 /// The k = config.multipliers multipliers of largest modulus by ARPACK (dnaupd/dneupd, mode 1) on
 /// apply_monodromy, and the verdict on them. Throws InvalidInput (multipliers, subspace,
-/// arpack_tolerance, max_restarts) or NumericalError (no convergence within max_restarts).
+/// arpack_tolerance, max_restarts) or NumericalError (no multiplier converged within max_restarts).
 FloquetSpectrum largest_floquet_multipliers(const ForceLaw& law, const Chain& chain, const PeriodicOrbit& orbit,
                                             const FloquetConfig& config);
 
