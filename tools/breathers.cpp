@@ -26,7 +26,8 @@ int main(int argc, char** argv) {
   tool::ChainOptions chain_options;
   tool::add_chain_options(app, chain_options);
   BreatherBranchConfig config;
-  std::string law = "hertz", scheme = "saba2c", output = "breathers", continuation = "natural", seed_file;
+  std::string law = "hertz", scheme = "saba2c", output = "breathers", continuation = "natural", seed_file,
+              newton = "auto", floquet = "auto";
   bool quiet = false, through_opening = false;
   tool::add_integer(app, "--mode", config.mode, "seed: linear mode number 1..N (0: by --near-khz or --start-khz)");
   app.add_option("--near-khz", config.near_khz, "seed: the linear mode nearest this frequency [kHz]");
@@ -50,6 +51,12 @@ int main(int argc, char** argv) {
                     "scheme steps per period, even (0: omega_max tau <= 0.05, at least 128)");
   tool::add_option(app, "--tolerance", config.shooting.tolerance,
                    "Newton stops at relative residual |du/dt(T/2)| / (omega_b |x0|) <= this");
+  tool::add_option(
+      app, "--newton", newton,
+      "Newton's linear solve: dense (N x N Jacobian) | krylov (matrix-free GMRES) | auto (dense to N = 1000)");
+  tool::add_option(app, "--floquet", floquet,
+                   "multipliers: dense (all 2N) | arpack (the --multipliers largest |mu|) | auto (dense to N = 1000)");
+  tool::add_integer(app, "--multipliers", config.floquet_multipliers, "ARPACK: how many multipliers of largest |mu|");
   tool::add_option(app, "--stability-tolerance", config.stability_tolerance, "stable when max |multiplier| <= 1 + this");
   app.add_flag("--through-opening", through_opening, "continue past points where a contact opens");
   tool::add_output_option(app, output);
@@ -68,6 +75,8 @@ int main(int argc, char** argv) {
         config.shooting.scheme = parse_scheme(scheme, "--scheme");
         config.stop_at_opening = !through_opening;
         config.continuation = parse_continuation(continuation);
+        config.shooting.newton = parse_newton_method(newton);
+        config.floquet_method = parse_floquet_method(floquet);
         if (!seed_file.empty()) config.seed_profile = read_displacements_file(seed_file, "seed_profile");
         validate(config);
         tool::warn(radius_warnings(config.chain, tool::radius_options(chain_options)));
@@ -90,5 +99,5 @@ int main(int argc, char** argv) {
         meta["profiles"] = h5;
         meta.write(paths.json, {&csv, profiles.get()});
       },
-      {{"seed_profile", "--seed-file"}});
+      {{"seed_profile", "--seed-file"}, {"floquet_multipliers", "--multipliers"}, {"floquet_method", "--floquet"}});
 }

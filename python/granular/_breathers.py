@@ -16,16 +16,20 @@ class Breathers:
     max_multiplier: max |mu| without the +1 pair, stable (bool), newton_iterations, residual: the final relative
     residual |du/dt(T/2)| / (omega |x0|), max_open_fraction; profiles: points x N displacements x0 [m] at the
     turning point; open_fraction: points x (N+1) fraction of the period each bond is open; multipliers: points x 2N
-    complex Floquet multipliers; linear_khz: every linear mode; seed_mode, seed_khz; stop_reason; metadata: the
-    breathers tool's JSON (parameters, Newton histories, symplectic checks)."""
+    complex Floquet multipliers (with ARPACK points x k, the largest, NaN-padded to the most of a point);
+    linear_khz: every linear mode; seed_mode, seed_khz; stop_reason; metadata: the breathers tool's JSON
+    (parameters, Newton histories and GMRES iterations, which methods ran, symplectic checks)."""
 
     def __init__(self, values):
         points = values.pop("points")  # one dict per point, stacked here into arrays
         self.__dict__.update(values)
         n, rows = len(self.linear_khz), len(points)
+        width = max((len(p["multipliers"]) for p in points), default=2 * n)
+        for p in points:
+            p["multipliers"] = list(p["multipliers"]) + [complex(math.nan, math.nan)] * (width - len(p["multipliers"]))
         columns = [(name, float, None) for name in _NUMBERS] + [
             ("centre", np.int64, None), ("newton_iterations", np.int64, None), ("stable", bool, None),
-            ("profiles", float, n), ("open_fraction", float, n + 1), ("multipliers", complex, 2 * n)]
+            ("profiles", float, n), ("open_fraction", float, n + 1), ("multipliers", complex, width)]
         for name, dtype, width in columns:
             column = np.array([p[name] for p in points], dtype=dtype)
             setattr(self, name, column if width is None else column.reshape(rows, width))
@@ -43,7 +47,8 @@ def _nan(value):
 
 def breathers(chain, *, mode=0, near_khz=None, start_khz=None, target_khz=None, step_khz=0.0, max_points=100,
               law="hertz", scheme="saba2c", steps_per_period=0, tolerance=1e-10, stability_tolerance=1e-6,
-              through_opening=False, continuation="natural", seed_profile=None):
+              through_opening=False, continuation="natural", seed_profile=None, newton="auto", floquet="auto",
+              floquet_multipliers=16):
     """A branch of breathers of `chain` (a granular.Chain with F0 > 0), as the breathers tool computes it.
 
     Seed: linear mode number `mode` (1..N), or the mode nearest `near_khz`, or the mode nearest `start_khz` (which
@@ -56,6 +61,9 @@ def breathers(chain, *, mode=0, near_khz=None, start_khz=None, target_khz=None, 
     (unless through_opening) the first open contact.
     law: 'hertz' | 'fpu'; scheme: the splitting scheme of shooting and monodromy; steps_per_period: 0 chooses;
     tolerance: Newton's relative residual; stability_tolerance: stable when max |mu| <= 1 + it.
+    newton: 'dense' (the N x N Jacobian) | 'krylov' (matrix-free preconditioned GMRES) | 'auto' (dense up to 1000
+    beads); floquet: 'dense' (all 2N multipliers) | 'arpack' (the floquet_multipliers of largest modulus) | 'auto'
+    (dense up to 1000 beads). The metadata records which ran.
     Returns a granular.Breathers. Releases the GIL."""
     c = _core.BreatherBranchConfig()
     c.mode = int(mode)
@@ -71,6 +79,9 @@ def breathers(chain, *, mode=0, near_khz=None, start_khz=None, target_khz=None, 
     c.shooting.steps_per_period = _core._size(steps_per_period, "steps_per_period", 0, 100000000)
     c.shooting.tolerance = _core._finite(tolerance, "tolerance")
     c.stability_tolerance = _core._finite(stability_tolerance, "stability_tolerance")
+    c.shooting.newton = newton
+    c.floquet_method = floquet
+    c.floquet_multipliers = _core._size(floquet_multipliers, "floquet_multipliers", 1, 1000000)
     c.stop_at_opening = not through_opening
     c.continuation = continuation
     if seed_profile is not None:

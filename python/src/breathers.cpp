@@ -44,12 +44,16 @@ void bind_breathers(py::module_& m) {
                &B::mode, &B::near_khz, &B::start_khz, &B::target_khz, &B::step_khz, &B::max_points, &B::stop_at_opening,
                &B::stability_tolerance, &B::shooting, &B::seed_profile)
       .def_property("continuation", word_getter(&B::continuation), word_setter(&B::continuation, parse_continuation))
+      .def_property("floquet_method", word_getter(&B::floquet_method),
+                    word_setter(&B::floquet_method, parse_floquet_method))
+      .def_readwrite("floquet_multipliers", &B::floquet_multipliers)
       .def_property("law", word_getter(&B::law), word_setter(&B::law, parse_force_law));  // not linear: _breathers.py
   using S = ShootingConfig;
   config_class(m, "ShootingConfig", "steps_per_period tolerance", &S::steps_per_period, &S::tolerance)
       .def_property(
           "scheme", [](const S& s) { return s.scheme.name; },
-          [](S& s, const std::string& word) { s.scheme = parse_scheme(word); });
+          [](S& s, const std::string& word) { s.scheme = parse_scheme(word); })
+      .def_property("newton", word_getter(&S::newton), word_setter(&S::newton, parse_newton_method));
   m.def("_breathers", &breathers);
 }
 

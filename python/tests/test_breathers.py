@@ -51,3 +51,23 @@ def test_breathers_from_a_profile_and_by_arclength():
         gr.breathers(chain, near_khz=edge, continuation="pseudo")
     with pytest.raises(ValueError, match="seed_profile"):
         gr.breathers(chain, seed_profile=natural.profiles[-1][:-1], start_khz=natural.freq_khz[-1])
+
+
+def test_breathers_by_newton_krylov():
+    types = [2 if i % 2 == 0 else 1 for i in range(21)]
+    chain = gr.from_types(types, xi=0.5)
+    edge = gr.band_edges(xi=0.5).fb2
+    dense = gr.breathers(chain, near_khz=edge, max_points=2)
+    krylov = gr.breathers(chain, near_khz=edge, max_points=2, newton="krylov", floquet="dense")
+    assert dense.metadata["shooting"]["newton"] == "dense" and dense.metadata["floquet"]["method"] == "dense"
+    assert krylov.metadata["shooting"]["newton"] == "krylov"
+    assert all(len(p["krylov_iterations"]) > 0 for p in krylov.metadata["points"])
+    assert np.allclose(krylov.freq_khz, dense.freq_khz, rtol=1e-12, atol=0)
+    assert (krylov.residual <= 1e-10).all()
+    assert np.allclose(krylov.max_multiplier, dense.max_multiplier, rtol=0, atol=1e-8)
+    with pytest.raises(ValueError, match="floquet"):
+        gr.breathers(chain, near_khz=edge, floquet="lapack")
+    with pytest.raises(ValueError, match="newton"):
+        gr.breathers(chain, near_khz=edge, newton="gmres")
+    with pytest.raises(ValueError, match="floquet_multipliers"):
+        gr.breathers(chain, near_khz=edge, floquet="arpack", floquet_multipliers=40)

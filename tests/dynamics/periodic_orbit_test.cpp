@@ -86,7 +86,10 @@ TEST(PeriodicOrbit, RefusesWhatItCannotDo) {
   const double omega = 2 * std::numbers::pi * 6e3;
   EXPECT_THROW(find_periodic_orbit(law, chain, omega, std::vector<double>(9, 0.0)), InvalidInput);
   EXPECT_THROW(find_periodic_orbit(law, chain, -1.0, profile(chain, 1e-8)), InvalidInput);
-  EXPECT_THROW(find_periodic_orbit(law, chain, omega, profile(chain, 1e-8), {.max_dense_beads = 8}), InvalidInput);
+  // Dense Newton beyond the dense limit (automatic would use Newton-Krylov there).
+  EXPECT_THROW(find_periodic_orbit(law, chain, omega, profile(chain, 1e-8),
+                                   {.max_dense_beads = 8, .newton = NewtonMethod::dense}),
+               InvalidInput);
   // One Newton step from an arbitrary profile does not reach 1e-10: a NumericalError, not garbage.
   EXPECT_THROW(find_periodic_orbit(law, chain, omega, profile(chain, 0.3 * chain.overlap[0]), {.max_iterations = 1}),
                NumericalError);

@@ -444,6 +444,8 @@ TEST(BreatherBranch, BadInputIsRefusedBeforeAnyWork) {
   c.start_khz = 1.1 * edges.fb3 / 1e3;  // above every band: allowed, seeded from the top mode
   EXPECT_NO_THROW(validate(c));
   c.shooting.max_dense_beads = 40;
+  EXPECT_NO_THROW(validate(c));  // beyond the dense limit: Newton-Krylov
+  c.shooting.newton = NewtonMethod::dense;
   try {
     validate(c);
     ADD_FAILURE() << "no exception";

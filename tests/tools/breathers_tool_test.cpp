@@ -112,7 +112,11 @@ TEST(BreathersTool, BadInputExitsWithOneLineAndWritesNothing) {
   };
   const Case cases[] = {
       {"--config " + config + " --xi 0.5 --start-khz " + std::to_string(0.3 * optical_edge_khz()), "--start-khz", 2},
-      {"--N 2000 --mode 3", "--N", 2},
+      {"--N 2000 --mode 3 --newton dense", "--N", 2},
+      {"--N 2000 --mode 3 --continuation arclength", "--N", 2},
+      {"--config " + config + " --xi 0.5 --mode 3 --newton gmres", "--newton", 2},
+      {"--config " + config + " --xi 0.5 --mode 3 --floquet lapack", "--floquet", 2},
+      {"--config " + config + " --xi 0.5 --mode 3 --floquet arpack --multipliers 40", "--multipliers", 2},
       {"--config " + config + " --xi 0.5 --mode 0", "--mode", 2},
       {"--config " + config + " --xi 0.5 --law linear --mode 3", "--law", 2},
       {"--config " + config + " --xi 0.5 --mode 3 --continuation pseudo", "--continuation", 2},

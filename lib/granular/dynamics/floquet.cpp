@@ -5,11 +5,44 @@
 #include <limits>
 #include <string>
 
+#include "granular/detail/enum_names.hpp"
 #include "granular/dynamics/detail/dense_lapack.hpp"
 #include "granular/dynamics/tangent_map.hpp"
 #include "granular/error.hpp"
 
 namespace granular {
+namespace {
+
+constexpr auto floquet_method_names =
+    detail::enum_names<FloquetMethod>("floquet_method", {{FloquetMethod::automatic, "auto"},
+                                                         {FloquetMethod::dense, "dense"},
+                                                         {FloquetMethod::arpack, "arpack"}});
+
+}  // namespace
+
+FloquetMethod parse_floquet_method(const std::string& name) { return floquet_method_names.parse(name); }
+std::string to_string(FloquetMethod method) { return std::string(floquet_method_names.name_of(method)); }
+
+std::vector<double> apply_monodromy(const ForceLaw& law, const Chain& chain, const PeriodicOrbit& orbit,
+                                    const std::vector<double>& w) {
+  const std::size_t n = chain.size();
+  if (w.size() != 2 * n) throw InvalidInput("deviation", ": must have 2N entries (du, dv/omega_b)");
+  const double omega = orbit.omega;
+  std::vector<State> column(1, State(n));
+  for (std::size_t i = 0; i < n; ++i) {
+    column[0].u[i] = w[i];
+    column[0].v[i] = omega * w[n + i];
+  }
+  const auto images = propagate_deviations(law, chain, orbit.scheme, orbit.time_step, orbit.steps_per_period,
+                                           turning_state(orbit), column);
+  std::vector<double> out(2 * n);
+  const State& d = images.deviations[0];
+  for (std::size_t i = 0; i < n; ++i) {
+    out[i] = d.u[i];
+    out[n + i] = d.v[i] / omega;
+  }
+  return out;
+}
 
 std::vector<double> monodromy_matrix(const ForceLaw& law, const Chain& chain, const PeriodicOrbit& orbit) {
   const std::size_t n = chain.size(), m = 2 * n;
@@ -87,7 +120,17 @@ FloquetSpectrum floquet_spectrum(std::vector<double> monodromy, std::size_t bead
 }
 
 FloquetSpectrum floquet_stability(const ForceLaw& law, const Chain& chain, const PeriodicOrbit& orbit, double tolerance) {
-  return floquet_spectrum(monodromy_matrix(law, chain, orbit), chain.size(), orbit.period, tolerance);
+  auto s = floquet_spectrum(monodromy_matrix(law, chain, orbit), chain.size(), orbit.period, tolerance);
+  s.operator_applications = static_cast<long>(2 * chain.size());
+  return s;
+}
+
+FloquetSpectrum floquet_stability(const ForceLaw& law, const Chain& chain, const PeriodicOrbit& orbit,
+                                  const FloquetConfig& config) {
+  const bool dense = config.method == FloquetMethod::dense ||
+                     (config.method == FloquetMethod::automatic && chain.size() <= config.max_dense_beads);
+  return dense ? floquet_stability(law, chain, orbit, config.tolerance)
+               : largest_floquet_multipliers(law, chain, orbit, config);
 }
 
 }  // namespace granular

@@ -10,6 +10,13 @@
 //
 // Coordinates (δu, δv/ω_b), both in metres: the multipliers do not depend on the scaling, the
 // conditioning of dgeev does.
+//
+// Two methods. Dense: the 2N × 2N matrix (2N tangent integrations) and LAPACK dgeev, all 2N
+// multipliers. ARPACK (large N): the monodromy only as an operator, v ↦ M v by one tangent
+// integration of a period, and the implicitly restarted Arnoldi method (dnaupd/dneupd) for the k
+// multipliers of largest modulus, which decide stability. Of the checks, the conjugate pairs still
+// apply to those k; the reciprocal pairs and the product do not (the 1/μ are the smallest, not
+// computed) and are NaN.
 #include <complex>
 #include <cstddef>
 #include <string>
@@ -24,8 +31,41 @@ namespace granular {
 /// integrations of one period.
 std::vector<double> monodromy_matrix(const ForceLaw& law, const Chain& chain, const PeriodicOrbit& orbit);
 
+/// dense: the whole matrix and dgeev; arpack: the largest-modulus multipliers from the operator;
+/// automatic: dense up to FloquetConfig::max_dense_beads, ARPACK beyond.
+enum class FloquetMethod { automatic, dense, arpack };
+FloquetMethod parse_floquet_method(const std::string& name);  ///< "auto" | "dense" | "arpack"
+std::string to_string(FloquetMethod method);
+
+struct FloquetConfig {
+  double tolerance = 1e-6;  ///< stable when every |μ| ≤ 1 + this (the +1 pair aside)
+  FloquetMethod method = FloquetMethod::automatic;
+  /// automatic: dense up to this N (2N tangent integrations and a 2N × 2N dgeev), ARPACK beyond.
+  std::size_t max_dense_beads = 1000;
+  int multipliers = 16;  ///< ARPACK: how many of the largest |μ| (1 … 2N − 3)
+  /// ARPACK: Krylov basis size (ncv); 0: max(2 multipliers + 1, 40), at most 2N.
+  int subspace = 0;
+  double arpack_tolerance = 1e-12;  ///< ARPACK: relative residual of the Ritz pairs
+  /// ARPACK: implicit restarts; when they run out, the multipliers converged so far are kept
+  /// (FloquetSpectrum::complete = false; none converged: NumericalError).
+  int max_restarts = 300;
+  /// ARPACK: the multipliers within this distance of +1 (two at most) are taken for the phase/family
+  /// pair and left out of the verdict (the dense method leaves out the two nearest +1, wherever they
+  /// are: there all 2N are known, here the pair need not be among the k).
+  double unit_pair_window = 1e-4;
+};
+
 struct FloquetSpectrum {
-  std::vector<std::complex<double>> multipliers;  ///< the 2N eigenvalues of the monodromy matrix, by |μ| descending
+  /// The eigenvalues of the monodromy matrix by |μ| descending: all 2N (dense) or the k of largest
+  /// modulus (ARPACK; k + 1 when a complex pair straddles the k-th)
+  std::vector<std::complex<double>> multipliers;
+  std::string method = "dense";    ///< "dense" or "arpack": which computed them
+  long operator_applications = 0;  ///< tangent integrations of one period (2N for dense)
+  int restarts = 0;                ///< ARPACK's implicit restarts (0 for dense)
+  /// false when ARPACK ran out of restarts with fewer than k multipliers converged: the verdict
+  /// is then on those only. Stable orbits are the hard case (every |μ| = 1: no modulus gap), e.g.
+  /// a stable gap breather of 101 beads needs ~150 restarts of a 40-vector basis.
+  bool complete = true;
   /// max |μ| over all but the two multipliers nearest +1 (the phase/family pair, a Jordan block
   /// that a residual r of the orbit splits by ~√r: not an instability)
   double max_modulus = 0;
@@ -37,7 +77,9 @@ struct FloquetSpectrum {
   double growth_rate = 0;  ///< ln(max_modulus)/T [1/s]: how fast the worst perturbation grows
   /// Symplectic checks: max over μ of min_ν |ν − 1/μ| (reciprocal pairs) and of min_ν |ν − μ̄|
   /// (conjugate pairs), relative to max(1, |μ|); |Π μ − 1|; and the distance of the two multipliers
-  /// nearest +1 from it (a Jordan block there: it splits by ~√ε, not ε).
+  /// nearest +1 from it (a Jordan block there: it splits by ~√ε, not ε). ARPACK: reciprocal_error
+  /// and product_error are NaN (not computable from the largest |μ|), unit_pair_distance the
+  /// distance of the second of the multipliers within unit_pair_window of +1 (NaN if fewer than two).
   double reciprocal_error = 0;
   double conjugate_error = 0;
   double product_error = 0;
@@ -49,8 +91,22 @@ struct FloquetSpectrum {
 FloquetSpectrum floquet_spectrum(std::vector<double> monodromy, std::size_t beads, double period,
                                  double tolerance = 1e-6);
 
-/// monodromy_matrix then floquet_spectrum.
+/// M w for one vector w (2N, coordinates (δu, δv/ω_b)): one tangent integration of the period.
+std::vector<double> apply_monodromy(const ForceLaw& law, const Chain& chain, const PeriodicOrbit& orbit,
+                                    const std::vector<double>& w);
+
+/// The k = config.multipliers multipliers of largest modulus by ARPACK (dnaupd/dneupd, mode 1) on
+/// apply_monodromy, and the verdict on them. Throws InvalidInput (multipliers, subspace,
+/// arpack_tolerance, max_restarts) or NumericalError (no multiplier converged within max_restarts).
+FloquetSpectrum largest_floquet_multipliers(const ForceLaw& law, const Chain& chain, const PeriodicOrbit& orbit,
+                                            const FloquetConfig& config);
+
+/// monodromy_matrix then floquet_spectrum (dense).
 FloquetSpectrum floquet_stability(const ForceLaw& law, const Chain& chain, const PeriodicOrbit& orbit,
                                   double tolerance = 1e-6);
+
+/// Dense or ARPACK by config.method (automatic: by N against config.max_dense_beads).
+FloquetSpectrum floquet_stability(const ForceLaw& law, const Chain& chain, const PeriodicOrbit& orbit,
+                                  const FloquetConfig& config);
 
 }  // namespace granular

@@ -7,8 +7,10 @@
 #include <string>
 #include <utility>
 
+#include "granular/detail/enum_names.hpp"
 #include "granular/detail/euclidean_norm.hpp"
 #include "granular/dynamics/detail/dense_lapack.hpp"
+#include "granular/dynamics/detail/shooting_krylov.hpp"
 #include "granular/dynamics/tangent_map.hpp"
 #include "granular/error.hpp"
 #include "granular/number_format.hpp"
@@ -29,9 +31,22 @@ void check_dense(std::size_t n, const ShootingConfig& config) {
                                 std::to_string(config.max_dense_beads) + ")");
 }
 
+constexpr auto newton_method_names = detail::enum_names<NewtonMethod>("newton", {{NewtonMethod::automatic, "auto"},
+                                                                                 {NewtonMethod::dense, "dense"},
+                                                                                 {NewtonMethod::krylov, "krylov"}});
+
 std::string khz(double omega) { return format_number(omega / (2 * std::numbers::pi) / 1e3); }
 
 }  // namespace
+
+NewtonMethod parse_newton_method(const std::string& name) { return newton_method_names.parse(name); }
+std::string to_string(NewtonMethod method) { return std::string(newton_method_names.name_of(method)); }
+
+bool uses_newton_krylov(std::size_t beads, const ShootingConfig& config) {
+  if (config.newton == NewtonMethod::krylov) return true;
+  if (config.newton == NewtonMethod::dense) check_dense(beads, config);
+  return beads > config.max_dense_beads;
+}
 
 std::size_t shooting_steps(const Chain& chain, double omega) {
   check_frequency(omega);
@@ -158,9 +173,37 @@ PeriodicOrbit find_periodic_orbit(const ForceLaw& law, const Chain& chain, doubl
                                   const std::vector<double>& guess, const ShootingConfig& config) {
   check_frequency(omega);
   const std::size_t n = chain.size();
-  check_dense(n, config);
+  const bool krylov = uses_newton_krylov(n, config);
+  if (config.max_krylov < 1) throw InvalidInput("max_krylov", ": must be >= 1");
   if (guess.size() != n) throw InvalidInput("guess", ": must have one displacement per bead");
   const std::size_t steps = config.steps_per_period > 0 ? config.steps_per_period : shooting_steps(chain, omega);
+  if (krylov) {
+    const detail::ShootingKrylov solver(law, chain, config.scheme, steps, omega, config.precondition);
+    std::vector<int> iterations;
+    std::vector<double> reached;
+    // Inexact Newton: GMRES to a relative residual shrinking with the shooting residual r.
+    const auto newton_step = [&](const ShootingPoint& z) {
+      const auto velocity = half_period_map(law, chain, config.scheme, steps, omega, z.x, false).velocity;
+      const double r = relative_residual(velocity, omega, z.x);
+      const auto c = solver.solve(z.x, velocity, std::min(1e-3, std::max(1e-12, 0.1 * r)), config.max_krylov);
+      iterations.push_back(c.iterations);
+      reached.push_back(c.residual);
+      if (!(c.residual <= 0.5))
+        throw NumericalError("shooting: GMRES reached only relative residual " + format_number(c.residual) + " in " +
+                             std::to_string(c.iterations) + " iterations at " + khz(omega) + " kHz");
+      return ShootingPoint{c.step, 0};
+    };
+    const auto misfit = [&](const ShootingPoint& z) {
+      return ShootingMisfit{
+          relative_residual(half_period_map(law, chain, config.scheme, steps, omega, z.x, false).velocity, omega, z.x),
+          0};
+    };
+    auto orbit = damped_newton({guess, omega}, {"Newton-Krylov", "at"}, config, steps, newton_step, misfit);
+    orbit.newton = "krylov";
+    orbit.krylov_iterations = std::move(iterations);
+    orbit.krylov_residuals = std::move(reached);
+    return orbit;
+  }
   const auto map = [&](const std::vector<double>& x, bool jac) {
     return half_period_map(law, chain, config.scheme, steps, omega, x, jac);
   };
@@ -188,7 +231,7 @@ PeriodicOrbit find_periodic_orbit_on_arc(const ForceLaw& law, const Chain& chain
                                          const ShootingConfig& config) {
   check_frequency(p.omega);
   const std::size_t n = chain.size();
-  check_dense(n, config);
+  check_dense(n, config);  // the bordered system is solved densely only
   if (p.x.size() != n || p.tangent_x.size() != n)
     throw InvalidInput("guess", ": the prediction and its tangent must have one displacement per bead");
   if (config.steps_per_period == 0)

@@ -12,7 +12,9 @@
 //
 // The Jacobian J = ∂u̇(T/2)/∂x0 is the lower-left block of the half-period tangent map: the
 // deviation vectors (δu, δv) = (e_j, 0) carried along by the same scheme (tangent_map.hpp), one per
-// bead, so the Jacobian is the exact derivative of the discrete map that is shot.
+// bead, so the Jacobian is the exact derivative of the discrete map that is shot. For large N
+// (Newton–Krylov) the matrix is never formed: GMRES needs only products J v, each one tangent
+// integration of T/2 from (v, 0), preconditioned by the linearized chain's J (shooting_krylov.cpp).
 //
 //   auto law = granular::make_force_law(granular::ForceLawKind::hertz, chain);
 //   auto orbit = granular::find_periodic_orbit(law, chain, omega_b, seed_x0);
@@ -27,6 +29,13 @@
 
 namespace granular {
 
+/// How Newton's correction is solved: dense — the N × N Jacobian (N tangent integrations) and
+/// LAPACK; krylov — matrix-free GMRES on products J v (a few tangent integrations per step when
+/// preconditioned); automatic — dense up to ShootingConfig::max_dense_beads, krylov beyond.
+enum class NewtonMethod { automatic, dense, krylov };
+NewtonMethod parse_newton_method(const std::string& name);  ///< "auto" | "dense" | "krylov"
+std::string to_string(NewtonMethod method);
+
 struct ShootingConfig {
   SplittingScheme scheme = saba2c();
   /// Steps of the scheme per period T (even: T/2 is a whole number of steps). 0: choose from the
@@ -35,9 +44,21 @@ struct ShootingConfig {
   double tolerance = 1e-10;  ///< converged when the relative residual ‖u̇(T/2)‖/(ω_b ‖x0‖) ≤ this
   int max_iterations = 25;   ///< Newton iterations before NumericalError
   /// The dense Jacobian costs N tangent integrations and an N × N solve per iteration; beyond this
-  /// N it is refused (InvalidInput naming N) rather than left to run for hours.
+  /// N automatic uses Newton–Krylov, and dense (and the arclength corrector, dense only) is refused
+  /// (InvalidInput naming N) rather than left to run for hours.
   std::size_t max_dense_beads = 1000;
+  NewtonMethod newton = NewtonMethod::automatic;
+  /// Krylov: GMRES iterations (no restart) per Newton step; a step whose GMRES residual stays above
+  /// 1/2 of the right-hand side throws NumericalError.
+  int max_krylov = 300;
+  /// Krylov: right-precondition GMRES by the linearized chain's half-period Jacobian (needs F0 > 0;
+  /// costs the N × N linear eigenvectors). Without it GMRES needs ~N iterations per step.
+  bool precondition = true;
 };
+
+/// Whether find_periodic_orbit on N beads uses Newton–Krylov under `config` (throws InvalidInput
+/// naming N when dense is asked for beyond max_dense_beads).
+bool uses_newton_krylov(std::size_t beads, const ShootingConfig& config);
 
 /// A default step count per period: the fastest linear mode ω_max (Gershgorin bound of the
 /// linearized chain) at ω_max τ ≤ 0.05, at least 128, even.
@@ -61,13 +82,18 @@ struct PeriodicOrbit {
   std::size_t steps_per_period = 0;  ///< of the scheme
   double time_step = 0;              ///< τ = T/steps [s]
   SplittingScheme scheme;
-  std::vector<double> x0;         ///< displacements at the turning point t = 0 [m]
-  std::vector<double> residuals;  ///< relative residual before each Newton step and at the end
-  int iterations = 0;             ///< Newton steps taken
+  std::vector<double> x0;                ///< displacements at the turning point t = 0 [m]
+  std::vector<double> residuals;         ///< relative residual before each Newton step and at the end
+  int iterations = 0;                    ///< Newton steps taken
+  std::string newton = "dense";          ///< "dense" or "krylov": how the corrections were solved
+  std::vector<int> krylov_iterations;    ///< krylov: GMRES iterations of each Newton step
+  std::vector<double> krylov_residuals;  ///< krylov: GMRES relative residual reached at each step
   double residual() const { return residuals.empty() ? 0.0 : residuals.back(); }
 };
 
-/// Newton's method from `guess` (N displacements [m]) at ω_b = `omega` [rad/s], each step damped
+/// Newton's method from `guess` (N displacements [m]) at ω_b = `omega` [rad/s] (dense or
+/// Newton–Krylov: ShootingConfig::newton; Krylov solves each step to a relative residual
+/// min(1e-3, max(1e-12, 0.1 r)) at relative shooting residual r: superlinear), each step damped
 /// (halved up to 10 times) until the residual decreases. Throws InvalidInput (N, omega, guess) or
 /// NumericalError when it does not converge within max_iterations, or falls to the rest state
 /// (‖x0‖ below 1e-6 of the guess's: the trivial orbit, which is every frequency's).

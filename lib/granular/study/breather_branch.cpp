@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <ostream>
 #include <string>
@@ -43,7 +44,8 @@ double mode_residual(const ForceLaw& law, const Chain& chain, const ShootingConf
   return s / a;
 }
 
-BreatherPoint make_point(const ForceLaw& law, const Chain& chain, const PeriodicOrbit& orbit, double tolerance) {
+BreatherPoint make_point(const ForceLaw& law, const Chain& chain, const PeriodicOrbit& orbit,
+                         const BreatherBranchConfig& c) {
   BreatherPoint p;
   p.omega = orbit.omega;
   p.freq_khz = to_khz(orbit.omega);
@@ -53,7 +55,13 @@ BreatherPoint make_point(const ForceLaw& law, const Chain& chain, const Periodic
   p.iterations = orbit.iterations;
   p.residual = orbit.residual();
   p.residuals = orbit.residuals;
-  p.floquet = floquet_stability(law, chain, orbit, tolerance);
+  p.newton = orbit.newton;
+  p.krylov_iterations = orbit.krylov_iterations;
+  p.floquet = floquet_stability(law, chain, orbit,
+                                FloquetConfig{.tolerance = c.stability_tolerance,
+                                              .method = c.floquet_method,
+                                              .max_dense_beads = c.shooting.max_dense_beads,
+                                              .multipliers = c.floquet_multipliers});
   p.open_fraction = open_fractions(law, chain, orbit);
   p.max_open_fraction = *std::max_element(p.open_fraction.begin(), p.open_fraction.end());
   p.x0 = orbit.x0;
@@ -90,9 +98,18 @@ void validate(const BreatherBranchConfig& c) {
   if (!(c.step_khz >= 0) || !std::isfinite(c.step_khz)) throw InvalidInput("step_khz", ": must be finite and >= 0");
   if (!(c.start_offset > 0 && c.start_offset < 0.5)) throw InvalidInput("start_offset", ": must be in (0, 0.5)");
   if (c.max_points < 1) throw InvalidInput("max_points", ": must be >= 1");
-  if (static_cast<std::size_t>(n) > c.shooting.max_dense_beads)
-    throw InvalidInput("N", " " + std::to_string(n) + ": more beads than the dense shooting Jacobian allows (" +
-                                std::to_string(c.shooting.max_dense_beads) + "; Newton-Krylov is not implemented)");
+  const auto beads = static_cast<std::size_t>(n);
+  uses_newton_krylov(beads, c.shooting);  // refuses dense Newton beyond the dense limit
+  if (c.continuation == Continuation::arclength && beads > c.shooting.max_dense_beads)
+    throw InvalidInput("N", " " + std::to_string(n) +
+                                ": arclength continuation solves its bordered system densely, "
+                                "up to " +
+                                std::to_string(c.shooting.max_dense_beads) + " beads");
+  const bool arpack = c.floquet_method == FloquetMethod::arpack ||
+                      (c.floquet_method == FloquetMethod::automatic && beads > c.shooting.max_dense_beads);
+  if (arpack && (c.floquet_multipliers < 1 || c.floquet_multipliers > 2 * n - 3))
+    throw InvalidInput("floquet_multipliers", " " + std::to_string(c.floquet_multipliers) + ": must be 1 ... 2N - 3 (" +
+                                                  std::to_string(2 * n - 3) + ")");
 }
 
 std::vector<double> open_fractions(const ForceLaw& law, const Chain& chain, const PeriodicOrbit& orbit) {
@@ -207,7 +224,7 @@ BreatherBranch continue_breather(const BreatherBranchConfig& c,
   }
   branch.steps_per_period = steps;
   PeriodicOrbit orbit = find_periodic_orbit(law, chain, omega, x, shooting);
-  branch.points.push_back(make_point(law, chain, orbit, c.stability_tolerance));
+  branch.points.push_back(make_point(law, chain, orbit, c));
   if (progress) progress(branch.points.back());
 
   // Continuation with a secant predictor: natural-parameter (the next ω_b fixed) or, once two
@@ -290,7 +307,7 @@ BreatherBranch continue_breather(const BreatherBranchConfig& c,
     previous = last.x0;
     previous_khz = last.freq_khz;
     previous_omega = last.omega;
-    branch.points.push_back(make_point(law, chain, orbit, c.stability_tolerance));
+    branch.points.push_back(make_point(law, chain, orbit, c));
     if (progress) progress(branch.points.back());
     if (orbit.iterations <= 3) {
       step = std::copysign(std::min(std::abs(step) * 1.5, max_step), step);
@@ -312,6 +329,8 @@ void write_breather_csv(std::ostream& out, const BreatherBranch& branch) {
 
 std::unique_ptr<Hdf5File> write_breather_hdf5(const std::string& path, const BreatherBranch& b) {
   const std::size_t rows = b.points.size(), n = rows > 0 ? b.points.front().x0.size() : 0;
+  std::size_t width = 0;  // 2N (dense), or the most multipliers ARPACK gave a point
+  for (const auto& p : b.points) width = std::max(width, p.floquet.multipliers.size());
   std::vector<double> freq, omega, energy, x0, re, im, open;
   for (const auto& p : b.points) {
     freq.push_back(p.freq_khz);
@@ -319,6 +338,8 @@ std::unique_ptr<Hdf5File> write_breather_hdf5(const std::string& path, const Bre
     energy.push_back(p.energy);
     x0.insert(x0.end(), p.x0.begin(), p.x0.end());
     for (const auto& mu : p.floquet.multipliers) re.push_back(mu.real()), im.push_back(mu.imag());
+    re.resize(re.size() + width - p.floquet.multipliers.size(), std::numeric_limits<double>::quiet_NaN());
+    im.resize(re.size(), std::numeric_limits<double>::quiet_NaN());
     open.insert(open.end(), p.open_fraction.begin(), p.open_fraction.end());
   }
   auto out = std::make_unique<Hdf5File>(path);
@@ -327,14 +348,16 @@ std::unique_ptr<Hdf5File> write_breather_hdf5(const std::string& path, const Bre
   file.write("omega_rad_s", omega);
   file.write("energy_J", energy);
   file.write("x0", x0.data(), rows, n);
-  file.write("multipliers_real", re.data(), rows, 2 * n);
-  file.write("multipliers_imag", im.data(), rows, 2 * n);
+  file.write("multipliers_real", re.data(), rows, width);
+  file.write("multipliers_imag", im.data(), rows, width);
   file.write("open_fraction", open.data(), rows, n + 1);
   file.write("linear_khz", b.linear_khz);
-  file.attribute("layout",
-                 "row j = point j of the branch (as in the CSV); x0: displacements [m] at the turning point "
-                 "(velocities 0); multipliers: the 2N Floquet multipliers, by modulus descending; open_fraction: "
-                 "per bond 0..N (walls included), the fraction of the period it is open");
+  file.attribute(
+      "layout",
+      "row j = point j of the branch (as in the CSV); x0: displacements [m] at the turning point "
+      "(velocities 0); multipliers: the Floquet multipliers by modulus descending, all 2N (dense) or the largest "
+      "(ARPACK, NaN-padded); open_fraction: "
+      "per bond 0..N (walls included), the fraction of the period it is open");
   file.attribute("stop_reason", b.stop_reason);
   return out;
 }
@@ -360,12 +383,22 @@ nlohmann::json describe_breather_branch(const BreatherBranchConfig& c, const Bre
   j["shooting"] = {{"scheme", c.shooting.scheme.name},
                    {"steps_per_period", b.steps_per_period},
                    {"tolerance", c.shooting.tolerance},
+                   {"newton", b.points.empty() ? std::string() : b.points.front().newton},
+                   {"newton_requested", to_string(c.shooting.newton)},
+                   {"max_dense_beads", c.shooting.max_dense_beads},
                    {"residual", "||du/dt(T/2)|| / (omega_b ||x0||), half-period shooting from rest"}};
   j["stability_tolerance"] = c.stability_tolerance;
+  j["floquet"] = {{"method", b.points.empty() ? std::string() : b.points.front().floquet.method},
+                  {"method_requested", to_string(c.floquet_method)},
+                  {"multipliers_requested", c.floquet_multipliers}};
   nlohmann::json points = nlohmann::json::array();
   for (const auto& p : b.points)
     points.push_back({{"freq_khz", p.freq_khz},
                       {"newton_residuals", p.residuals},
+                      {"krylov_iterations", p.krylov_iterations},
+                      {"floquet_operator_applications", p.floquet.operator_applications},
+                      {"arpack_restarts", p.floquet.restarts},
+                      {"floquet_complete", p.floquet.complete},
                       {"instability", p.floquet.instability},
                       {"growth_rate_per_s", p.floquet.growth_rate},
                       {"reciprocal_error", p.floquet.reciprocal_error},

@@ -58,23 +58,30 @@ struct BreatherBranchConfig {
   std::size_t max_points = 100;  ///< points on the branch
   bool stop_at_opening = true;   ///< stop at the first point with an open contact
   Continuation continuation = Continuation::natural;
-  ShootingConfig shooting{};
+  ShootingConfig shooting{};          ///< incl. newton: dense | krylov | auto (by N)
   double stability_tolerance = 1e-6;  ///< stable when max |μ| ≤ 1 + this
+  /// Floquet multipliers: dense (all 2N), arpack (the floquet_multipliers of largest modulus) or
+  /// auto (dense up to shooting.max_dense_beads, ARPACK beyond; floquet.hpp).
+  FloquetMethod floquet_method = FloquetMethod::automatic;
+  int floquet_multipliers = 16;
 };
 
 /// Throws InvalidInput naming the field (mode, near_khz, start_khz, target_khz, step_khz,
-/// max_points, N, F0, seed_profile) before any work.
+/// max_points, N, F0, seed_profile, floquet_multipliers) before any work. N: dense Newton or
+/// arclength continuation (whose bordered system is dense) beyond shooting.max_dense_beads.
 void validate(const BreatherBranchConfig& config);
 
 struct BreatherPoint {
-  double omega = 0;               ///< ω_b [rad/s]
-  double freq_khz = 0;            ///< ω_b/2π [kHz]
-  double energy = 0;              ///< H above the static state [J]
-  double amplitude = 0;           ///< max |x0| [m]
-  std::size_t centre = 0;         ///< bead of the largest |x0| (0-based)
-  int iterations = 0;             ///< Newton steps
-  double residual = 0;            ///< final relative residual
-  std::vector<double> residuals;  ///< Newton history
+  double omega = 0;                    ///< ω_b [rad/s]
+  double freq_khz = 0;                 ///< ω_b/2π [kHz]
+  double energy = 0;                   ///< H above the static state [J]
+  double amplitude = 0;                ///< max |x0| [m]
+  std::size_t centre = 0;              ///< bead of the largest |x0| (0-based)
+  int iterations = 0;                  ///< Newton steps
+  double residual = 0;                 ///< final relative residual
+  std::vector<double> residuals;       ///< Newton history
+  std::string newton;                  ///< "dense" or "krylov"
+  std::vector<int> krylov_iterations;  ///< krylov: GMRES iterations per Newton step
   FloquetSpectrum floquet;
   std::vector<double> open_fraction;  ///< per bond (N+1): fraction of the period with overlap < 0
   double max_open_fraction = 0;
@@ -109,9 +116,9 @@ void write_breather_csv(std::ostream& out, const BreatherBranch& branch);
 
 /// HDF5 of the branch (one row per point): freq_khz, omega_rad_s, energy_J; x0 (points × N, the
 /// turning-point profiles [m]); multipliers_real and multipliers_imag (points × 2N, by |μ|
-/// descending); open_fraction (points × (N+1), per bond); linear_khz (N). Written under its
-/// temporary name and returned uncommitted, for RunMetadata::write to put in place after the
-/// JSON; throws IoError.
+/// descending; ARPACK: points × the most multipliers of a point, NaN-padded); open_fraction (points × (N+1), per bond);
+/// linear_khz (N). Written under its temporary name and returned uncommitted, for RunMetadata::write to put in place
+/// after the JSON; throws IoError.
 std::unique_ptr<Hdf5File> write_breather_hdf5(const std::string& path, const BreatherBranch& branch);
 
 /// The JSON entries of a branch run: parameters (chain, seed, continuation, shooting) and results

@@ -1,0 +1,186 @@
+// Newton–Krylov shooting (dynamics/periodic_orbit.hpp, ShootingConfig::newton = krylov) against
+// dense Newton on the same problem: the same orbit to the tolerance, superlinear convergence, and
+// the preconditioner's effect on the GMRES iterations; and a breather of N = 1001 beads (above the
+// dense limit) with its ARPACK multipliers.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <numeric>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "granular/detail/euclidean_norm.hpp"
+#include "granular/dynamics/detail/shooting_krylov.hpp"
+#include "granular/dynamics/floquet.hpp"
+#include "granular/dynamics/periodic_orbit.hpp"
+#include "granular/error.hpp"
+#include "granular/linear/band_edges.hpp"
+#include "granular/linear/dynamical_matrix.hpp"
+#include "granular/linear/spectrum.hpp"
+#include "granular/study/breather_branch.hpp"
+
+namespace granular {
+namespace {
+
+using detail::euclidean_norm;
+
+// `n` beads alternating from `centre_type` (the centre bead is of that type), ξ = 0.5, seeded from
+// the optical band's lowest mode: the gap breathers of the 41-bead tests in a longer chain.
+BreatherBranchConfig diatomic_config(std::size_t n, int centre_type) {
+  const BandEdges edges = band_edges(steel, paper_r1, 0.5, 10);
+  BreatherBranchConfig c;
+  Configuration types(n);
+  const std::size_t centre = n / 2;
+  for (std::size_t i = 0; i < n; ++i)
+    types[i] = static_cast<std::uint8_t>((i + centre) % 2 == 0 ? centre_type : 3 - centre_type);
+  c.chain.given_types = types;
+  c.chain.xi = 0.5;
+  const Spectrum s = spectrum(dynamical_matrix(c.chain.chain(0)));
+  long k = 0;
+  while (s.freq_khz[static_cast<std::size_t>(k)] < (edges.fb1 + edges.fb2) / 2e3) ++k;
+  c.mode = k + 1;
+  return c;
+}
+
+void print_history(const char* what, const PeriodicOrbit& o) {
+  std::printf("%s: residuals", what);
+  for (double r : o.residuals) std::printf(" %.2e", r);
+  if (!o.krylov_iterations.empty()) {
+    std::printf("; GMRES iterations");
+    for (int k : o.krylov_iterations) std::printf(" %d", k);
+  }
+  std::printf("\n");
+}
+
+// From a 1 % distortion of a light-centred gap breather of 201 beads (6 points into the gap: the
+// contacts closed, the profile well nonlinear), Newton–Krylov lands on the orbit dense Newton
+// finds, converging superlinearly in few GMRES iterations per step.
+TEST(NewtonKrylov, SameOrbitAsDenseNewtonAt201Beads) {
+  auto c = diatomic_config(201, 2);
+  c.max_points = 6;
+  const auto branch = continue_breather(c);
+  ASSERT_EQ(branch.points.size(), 6u) << branch.stop_reason;
+  const auto& p = branch.points.back();
+  const Chain chain = c.chain.chain(0);
+  const ForceLaw law = make_force_law(ForceLawKind::hertz, chain);
+  auto guess = p.x0;
+  for (std::size_t i = 0; i < guess.size(); ++i) guess[i] *= 1 + 0.01 * std::cos(0.9 * static_cast<double>(i));
+  // To 1e-13 (near the rounding floor): J is ill-conditioned here (2 ω_b lies in the optical
+  // band), so two solutions at 1e-10 differ by ~1e-8 along its near-null directions.
+  ShootingConfig dense_config{.steps_per_period = branch.steps_per_period,
+                              .tolerance = 1e-13,
+                              .newton = NewtonMethod::dense};
+  ShootingConfig krylov_config = dense_config;
+  krylov_config.newton = NewtonMethod::krylov;
+  const auto dense = find_periodic_orbit(law, chain, p.omega, guess, dense_config);
+  const auto krylov = find_periodic_orbit(law, chain, p.omega, guess, krylov_config);
+  print_history("dense Newton", dense);
+  print_history("Newton-Krylov", krylov);
+  EXPECT_EQ(dense.newton, "dense");
+  EXPECT_EQ(krylov.newton, "krylov");
+  EXPECT_LE(krylov.residual(), 1e-13);
+  std::vector<double> d(dense.x0.size());
+  for (std::size_t i = 0; i < d.size(); ++i) d[i] = krylov.x0[i] - dense.x0[i];
+  const double difference = euclidean_norm(d) / euclidean_norm(dense.x0);
+  std::printf("|x0 krylov - x0 dense| / |x0| = %.2e\n", difference);
+  EXPECT_LT(difference, 1e-8);
+  // Superlinear: each ratio of successive residuals smaller than the one before (above the floor).
+  const auto& r = krylov.residuals;
+  ASSERT_GE(r.size(), 3u);
+  for (std::size_t k = 0; k + 2 < r.size(); ++k)
+    if (r[k + 2] > 1e-13) {
+      EXPECT_LT(r[k + 2] / r[k + 1], 0.5 * r[k + 1] / r[k]);
+    }
+  ASSERT_EQ(krylov.krylov_iterations.size(), static_cast<std::size_t>(krylov.iterations));
+  EXPECT_LT(*std::max_element(krylov.krylov_iterations.begin(), krylov.krylov_iterations.end()), 50);
+}
+
+// The first Newton correction of that problem by GMRES to 1e-6, with and without the
+// preconditioner: without it the eigenvalues of J spread over the band and GMRES needs far more
+// iterations (each a tangent integration of T/2).
+TEST(NewtonKrylov, PreconditionerCutsTheGmresIterations) {
+  auto c = diatomic_config(201, 2);
+  c.max_points = 6;
+  const auto branch = continue_breather(c);
+  ASSERT_EQ(branch.points.size(), 6u) << branch.stop_reason;
+  const auto& p = branch.points.back();
+  const Chain chain = c.chain.chain(0);
+  const ForceLaw law = make_force_law(ForceLawKind::hertz, chain);
+  auto guess = p.x0;
+  for (std::size_t i = 0; i < guess.size(); ++i) guess[i] *= 1 + 0.01 * std::cos(0.9 * static_cast<double>(i));
+  const auto velocity = half_period_map(law, chain, saba2c(), branch.steps_per_period, p.omega, guess, false).velocity;
+  const detail::ShootingKrylov with(law, chain, saba2c(), branch.steps_per_period, p.omega, true);
+  const detail::ShootingKrylov without(law, chain, saba2c(), branch.steps_per_period, p.omega, false);
+  const auto a = with.solve(guess, velocity, 1e-6, 400);
+  const auto b = without.solve(guess, velocity, 1e-6, 400);
+  std::printf("GMRES to 1e-6 at N = 201: %d iterations preconditioned (residual %.1e), %d without (residual %.1e)\n",
+              a.iterations, a.residual, b.iterations, b.residual);
+  EXPECT_LE(a.residual, 1e-6);
+  EXPECT_LT(5 * a.iterations, b.iterations);
+}
+
+TEST(NewtonKrylov, AutomaticChoiceAndBadInput) {
+  EXPECT_FALSE(uses_newton_krylov(1000, {}));
+  EXPECT_TRUE(uses_newton_krylov(1001, {}));
+  EXPECT_TRUE(uses_newton_krylov(10, {.newton = NewtonMethod::krylov}));
+  try {
+    uses_newton_krylov(1001, {.newton = NewtonMethod::dense});
+    ADD_FAILURE() << "no exception";
+  } catch (const InvalidInput& e) {
+    EXPECT_EQ(e.parameter(), "N");
+  }
+  EXPECT_EQ(parse_newton_method("krylov"), NewtonMethod::krylov);
+  EXPECT_EQ(to_string(NewtonMethod::automatic), "auto");
+  EXPECT_THROW(parse_newton_method("gmres"), InvalidInput);
+}
+
+// N = 1001, above the dense limit: the most unstable closed-contact heavy-centred gap breather of
+// the 101-bead chain, put in the middle of the 1001-bead chain of the same pattern (zeros around
+// it), is Newton's seed at its frequency; Newton–Krylov and ARPACK are chosen automatically, and
+// ARPACK's largest multiplier is dgeev's on the whole 2002 × 2002 monodromy of that orbit.
+TEST(Long_NewtonKrylov, GapBreatherOf1001Beads) {
+  auto small = diatomic_config(101, 1);
+  small.max_points = 60;
+  const auto branch = continue_breather(small);
+  const BreatherPoint* worst = nullptr;
+  for (const auto& q : branch.points)
+    if (q.max_open_fraction == 0 && (!worst || q.floquet.max_modulus > worst->floquet.max_modulus)) worst = &q;
+  ASSERT_NE(worst, nullptr);
+  ASSERT_GT(worst->floquet.max_modulus, 1.1);
+  auto c = diatomic_config(1001, 1);
+  c.mode = 0;
+  c.seed_profile.assign(1001, 0.0);
+  std::copy(worst->x0.begin(), worst->x0.end(), c.seed_profile.begin() + 450);
+  c.start_khz = worst->freq_khz;
+  c.shooting.steps_per_period = branch.steps_per_period;
+  c.max_points = 1;
+  const auto large = continue_breather(c);
+  const auto& p = large.points.front();
+  std::printf("N = 1001 at %.6f kHz: Newton residuals", p.freq_khz);
+  for (double r : p.residuals) std::printf(" %.2e", r);
+  std::printf("; GMRES iterations");
+  for (int k : p.krylov_iterations) std::printf(" %d", k);
+  std::printf("; max|mu| %.10f (N = 101 dense: %.10f; %s, %ld products, %d restarts)\n", p.floquet.max_modulus,
+              worst->floquet.max_modulus, p.floquet.method.c_str(), p.floquet.operator_applications, p.floquet.restarts);
+  EXPECT_LE(p.residual, 1e-10);
+  EXPECT_EQ(p.newton, "krylov");
+  EXPECT_EQ(p.floquet.method, "arpack");
+  EXPECT_FALSE(p.floquet.stable);
+  EXPECT_EQ(p.floquet.instability, "real");
+  // The independent check: dgeev on the 2002 × 2002 monodromy of the same orbit. (The short
+  // chain's multiplier differs by ~1 %: its walls are 50 beads from the centre.)
+  const Chain chain = c.chain.chain(0);
+  const ForceLaw law = make_force_law(ForceLawKind::hertz, chain);
+  const auto orbit = find_periodic_orbit(law, chain, p.omega, p.x0,
+                                         {.steps_per_period = branch.steps_per_period, .newton = NewtonMethod::krylov});
+  EXPECT_EQ(orbit.iterations, 0);
+  const FloquetSpectrum dense = floquet_stability(law, chain, orbit, c.stability_tolerance);
+  std::printf("N = 1001 dense: max|mu| %.12f, ARPACK %.12f (complete %d)\n", dense.max_modulus, p.floquet.max_modulus,
+              p.floquet.complete);
+  EXPECT_NEAR(p.floquet.max_modulus, dense.max_modulus, 1e-8);
+  EXPECT_EQ(dense.instability, "real");
+}
+
+}  // namespace
+}  // namespace granular
