@@ -53,36 +53,50 @@ void print_history(const char* what, const PeriodicOrbit& o) {
   std::printf("\n");
 }
 
+/// The sixth point of the light-centred gap-breather branch of 201 beads (6 points into the gap:
+/// the contacts closed, the profile well nonlinear), its profile distorted by 1 %.
+struct DistortedBreather {
+  BreatherBranch branch;
+  Chain chain;
+  std::vector<double> guess;
+};
+
+const DistortedBreather& distorted_breather() {
+  static const DistortedBreather d = [] {
+    auto c = diatomic_config(201, 2);
+    c.max_points = 6;
+    DistortedBreather d{continue_breather(c), c.chain.chain(0), {}};
+    if (d.branch.points.size() == 6) d.guess = d.branch.points.back().x0;  // else empty: the tests say why
+    for (std::size_t i = 0; i < d.guess.size(); ++i) d.guess[i] *= 1 + 0.01 * std::cos(0.9 * static_cast<double>(i));
+    return d;
+  }();
+  return d;
+}
+
 // From a 1 % distortion of a light-centred gap breather of 201 beads (6 points into the gap: the
 // contacts closed, the profile well nonlinear), Newton–Krylov lands on the orbit dense Newton
 // finds, converging superlinearly in few GMRES iterations per step.
 TEST(NewtonKrylov, SameOrbitAsDenseNewtonAt201Beads) {
-  auto c = diatomic_config(201, 2);
-  c.max_points = 6;
-  const auto branch = continue_breather(c);
-  ASSERT_EQ(branch.points.size(), 6u) << branch.stop_reason;
-  const auto& p = branch.points.back();
-  const Chain chain = c.chain.chain(0);
-  const ForceLaw law = make_force_law(ForceLawKind::hertz, chain);
-  auto guess = p.x0;
-  for (std::size_t i = 0; i < guess.size(); ++i) guess[i] *= 1 + 0.01 * std::cos(0.9 * static_cast<double>(i));
+  const DistortedBreather& d = distorted_breather();
+  ASSERT_FALSE(d.guess.empty()) << d.branch.stop_reason;
+  const ForceLaw law = make_force_law(ForceLawKind::hertz, d.chain);
   // To 1e-13 (near the rounding floor): J is ill-conditioned here (2 ω_b lies in the optical
   // band), so two solutions at 1e-10 differ by ~1e-8 along its near-null directions.
-  ShootingConfig dense_config{.steps_per_period = branch.steps_per_period,
+  ShootingConfig dense_config{.steps_per_period = d.branch.steps_per_period,
                               .tolerance = 1e-13,
                               .newton = NewtonMethod::dense};
   ShootingConfig krylov_config = dense_config;
   krylov_config.newton = NewtonMethod::krylov;
-  const auto dense = find_periodic_orbit(law, chain, p.omega, guess, dense_config);
-  const auto krylov = find_periodic_orbit(law, chain, p.omega, guess, krylov_config);
+  const auto dense = find_periodic_orbit(law, d.chain, d.branch.points.back().omega, d.guess, dense_config);
+  const auto krylov = find_periodic_orbit(law, d.chain, d.branch.points.back().omega, d.guess, krylov_config);
   print_history("dense Newton", dense);
   print_history("Newton-Krylov", krylov);
   EXPECT_EQ(dense.newton, "dense");
   EXPECT_EQ(krylov.newton, "krylov");
   EXPECT_LE(krylov.residual(), 1e-13);
-  std::vector<double> d(dense.x0.size());
-  for (std::size_t i = 0; i < d.size(); ++i) d[i] = krylov.x0[i] - dense.x0[i];
-  const double difference = euclidean_norm(d) / euclidean_norm(dense.x0);
+  std::vector<double> gap(dense.x0.size());
+  for (std::size_t i = 0; i < gap.size(); ++i) gap[i] = krylov.x0[i] - dense.x0[i];
+  const double difference = euclidean_norm(gap) / euclidean_norm(dense.x0);
   std::printf("|x0 krylov - x0 dense| / |x0| = %.2e\n", difference);
   EXPECT_LT(difference, 1e-8);
   // Superlinear: each ratio of successive residuals smaller than the one before (above the floor).
@@ -100,20 +114,18 @@ TEST(NewtonKrylov, SameOrbitAsDenseNewtonAt201Beads) {
 // preconditioner: without it the eigenvalues of J spread over the band and GMRES needs far more
 // iterations (each a tangent integration of T/2).
 TEST(NewtonKrylov, PreconditionerCutsTheGmresIterations) {
-  auto c = diatomic_config(201, 2);
-  c.max_points = 6;
-  const auto branch = continue_breather(c);
-  ASSERT_EQ(branch.points.size(), 6u) << branch.stop_reason;
-  const auto& p = branch.points.back();
-  const Chain chain = c.chain.chain(0);
-  const ForceLaw law = make_force_law(ForceLawKind::hertz, chain);
-  auto guess = p.x0;
-  for (std::size_t i = 0; i < guess.size(); ++i) guess[i] *= 1 + 0.01 * std::cos(0.9 * static_cast<double>(i));
-  const auto velocity = half_period_map(law, chain, saba2c(), branch.steps_per_period, p.omega, guess, false).velocity;
-  const detail::ShootingKrylov with(law, chain, saba2c(), branch.steps_per_period, p.omega, true);
-  const detail::ShootingKrylov without(law, chain, saba2c(), branch.steps_per_period, p.omega, false);
-  const auto a = with.solve(guess, velocity, 1e-6, 400);
-  const auto b = without.solve(guess, velocity, 1e-6, 400);
+  const DistortedBreather& d = distorted_breather();
+  ASSERT_FALSE(d.guess.empty()) << d.branch.stop_reason;
+  const ForceLaw law = make_force_law(ForceLawKind::hertz, d.chain);
+  const auto velocity =
+      half_period_map(law, d.chain, saba2c(), d.branch.steps_per_period, d.branch.points.back().omega, d.guess, false)
+          .velocity;
+  const detail::ShootingKrylov with(law, d.chain, saba2c(), d.branch.steps_per_period, d.branch.points.back().omega,
+                                    true);
+  const detail::ShootingKrylov without(law, d.chain, saba2c(), d.branch.steps_per_period, d.branch.points.back().omega,
+                                       false);
+  const auto a = with.solve(d.guess, velocity, 1e-6, 400);
+  const auto b = without.solve(d.guess, velocity, 1e-6, 400);
   std::printf("GMRES to 1e-6 at N = 201: %d iterations preconditioned (residual %.1e), %d without (residual %.1e)\n",
               a.iterations, a.residual, b.iterations, b.residual);
   EXPECT_LE(a.residual, 1e-6);
