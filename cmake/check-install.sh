@@ -44,6 +44,25 @@ if command -v man >/dev/null && command -v help2man >/dev/null; then
 fi
 # The installed tools find the installed library.
 "$prefix/bin/spectrum" --version >/dev/null || fail "installed bin/spectrum does not run"
+# The components load from beside the installed library, when a run needs them.
+[ -e "$libdir/libgranular_hdf5.so" ] || fail "missing libgranular_hdf5.so beside libgranular"
+"$prefix/bin/spectrum" --N 30 --quiet --near 15 --count 3 --vectors "$work/v.h5" --output "$work/v" \
+  || fail "installed spectrum --vectors (the HDF5 component) failed"
+components=hdf5
+if [ -e "$libdir/libgranular_slepc.so" ]; then
+  "$prefix/bin/spectrum" --N 30 --quiet --near 15 --count 3 --method slepc --output "$work/s" \
+    || fail "installed spectrum --method slepc (the SLEPc component) failed"
+  components="hdf5 slepc"
+fi
+# find_package(granular COMPONENTS ...) finds the installed ones and refuses an unknown one.
+mkdir -p "$work/components"
+printf 'cmake_minimum_required(VERSION 3.22)\nproject(c LANGUAGES CXX)\nfind_package(granular REQUIRED COMPONENTS %s)\n' \
+  "$components" >"$work/components/CMakeLists.txt"
+"$cmake" -S "$work/components" -B "$work/components/build" -DCMAKE_PREFIX_PATH="$prefix" >"$work/components.log" 2>&1 \
+  || { cat "$work/components.log"; fail "find_package(granular COMPONENTS $components) failed"; }
+sed -i "s/COMPONENTS .*)/COMPONENTS nosuch)/" "$work/components/CMakeLists.txt"
+"$cmake" -S "$work/components" -B "$work/components/build2" -DCMAKE_PREFIX_PATH="$prefix" >"$work/components.log" 2>&1 \
+  && fail "find_package(granular COMPONENTS nosuch) succeeded"
 
 # The Python package where docs/python.md says: lib/python3.X/dist-packages of the prefix, and it
 # imports from outside the source and build trees.

@@ -1,6 +1,7 @@
 # What `cmake --install` puts where (included from the top-level CMakeLists.txt):
 #   include/granular/…           the public headers (every lib/granular/**/*.hpp outside detail/)
-#   lib/libgranular.so            and the CMake package lib/cmake/granular/, lib/pkgconfig/granular.pc
+#   lib/libgranular.so            with its components lib/libgranular_{slepc,hdf5}.so (loaded when
+#                                 a run needs them), and the CMake package lib/cmake/granular/, lib/pkgconfig/granular.pc
 #   bin/                          the tools
 #   share/granular/plot/          the figure scripts
 #   share/man/man1/               a man page per tool, from its --help (man_pages.cmake)
@@ -21,6 +22,10 @@ install(TARGETS granular EXPORT granularTargets
         RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR}
         INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 install(TARGETS ${GRANULAR_TOOL_TARGETS} RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+# Not exported: no program links a component; libgranular finds them beside itself.
+if(GRANULAR_COMPONENT_TARGETS)
+  install(TARGETS ${GRANULAR_COMPONENT_TARGETS} LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
+endif()
 file(GLOB GRANULAR_PLOT_SCRIPTS CONFIGURE_DEPENDS ${CMAKE_SOURCE_DIR}/tools/plot/*.py)
 install(PROGRAMS ${GRANULAR_PLOT_SCRIPTS} DESTINATION ${CMAKE_INSTALL_DATADIR}/granular/plot)
 install(FILES ${CMAKE_SOURCE_DIR}/docs/physics.md ${CMAKE_SOURCE_DIR}/README.md ${CMAKE_SOURCE_DIR}/LICENSE

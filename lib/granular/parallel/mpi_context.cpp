@@ -1,14 +1,12 @@
 #include "granular/parallel/mpi_context.hpp"
 
-#ifdef GRANULAR_HAVE_MPI
-#define OMPI_SKIP_MPICXX 1  // the C API only: no MPI C++ bindings to link
-#define MPICH_SKIP_MPICXX 1
-#include <mpi.h>
-#endif
+#include <dlfcn.h>
 
 #include <cstdlib>
 
+#include "granular/detail/component.hpp"
 #include "granular/error.hpp"
+#include "granular/parallel/detail/mpi_component.hpp"
 
 namespace granular {
 
@@ -26,14 +24,36 @@ bool launched_by_mpi() {
     if (std::getenv(v)) return true;
   return false;
 }
+
+/// Whether MPI is in the process already (a program or Python module that uses MPI itself may
+/// have initialized it): only then can it be initialized without this library having loaded it.
+bool mpi_loaded() {
+#if GRANULAR_COMPONENTS_BUILT_IN
+  return true;  // linked in
+#else
+  return dlsym(RTLD_DEFAULT, "MPI_Initialized") != nullptr;
+#endif
+}
+
+/// The MPI component, loaded on first use.
+const detail::MpiComponent& mpi_calls() {
+#if GRANULAR_COMPONENTS_BUILT_IN
+  static const detail::MpiComponent* const component = granular_mpi_component();
+#else
+  using Entry = const detail::MpiComponent* (*)();
+  static const detail::MpiComponent* const component =
+      reinterpret_cast<Entry>(detail::component_entry("mpi", "granular_mpi_component", "MPI"))();
+#endif
+  return *component;
+}
 }  // namespace
 #endif
 
 MpiContext::MpiContext() {
 #ifdef GRANULAR_HAVE_MPI
-  int initialized = 0;
-  MPI_Initialized(&initialized);
-  if (initialized || launched_by_mpi()) start();
+  // Loading MPI only to learn that it is not initialized would cost every plain run its start-up.
+  const bool launched = launched_by_mpi();
+  if (launched || (mpi_loaded() && mpi_calls().initialized())) start();
 #endif
 }
 
@@ -43,24 +63,19 @@ void MpiContext::require() {
 
 void MpiContext::start() {
 #ifdef GRANULAR_HAVE_MPI
-  int initialized = 0;
-  MPI_Initialized(&initialized);
-  if (!initialized) {
-    int provided = 0;
-    MPI_Init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &provided);
+  const detail::MpiComponent& mpi = mpi_calls();
+  if (!mpi.initialized()) {
+    mpi.init();
     initialized_here_ = true;
   }
-  MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
-  MPI_Comm_size(MPI_COMM_WORLD, &size_);
+  mpi.world(&rank_, &size_);
   active_ = true;
 #endif
 }
 
 MpiContext::~MpiContext() {
 #ifdef GRANULAR_HAVE_MPI
-  int finalized = 0;
-  MPI_Finalized(&finalized);
-  if (initialized_here_ && !finalized) MPI_Finalize();
+  if (initialized_here_ && !mpi_calls().finalized()) mpi_calls().finalize();
 #endif
 }
 
@@ -79,20 +94,8 @@ std::vector<std::vector<double>> MpiContext::gather_rows(std::size_t total, cons
     send.push_back(static_cast<double>(rows[i].size()));
     send.insert(send.end(), rows[i].begin(), rows[i].end());
   }
-  int count = static_cast<int>(send.size());
-  std::vector<int> counts(size_), offsets(size_);
-  MPI_Gather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, MPI_COMM_WORLD);
   std::vector<double> received;
-  if (rank_ == 0) {
-    int total_count = 0;
-    for (int r = 0; r < size_; ++r) {
-      offsets[r] = total_count;
-      total_count += counts[r];
-    }
-    received.resize(static_cast<std::size_t>(total_count));
-  }
-  MPI_Gatherv(send.data(), count, MPI_DOUBLE, received.data(), counts.data(), offsets.data(), MPI_DOUBLE, 0,
-              MPI_COMM_WORLD);
+  mpi_calls().gather(send, received);
   if (rank_ != 0) return {};
   for (std::size_t p = 0; p < received.size();) {
     const auto index = static_cast<std::size_t>(received[p]);
@@ -109,11 +112,7 @@ std::vector<std::vector<double>> MpiContext::gather_rows(std::size_t total, cons
 
 bool MpiContext::all(bool flag) const {
 #ifdef GRANULAR_HAVE_MPI
-  if (size_ > 1) {
-    int local = flag ? 1 : 0, global = 0;
-    MPI_Allreduce(&local, &global, 1, MPI_INT, MPI_LAND, MPI_COMM_WORLD);
-    return global != 0;
-  }
+  if (size_ > 1) return mpi_calls().all(flag);
 #endif
   return flag;
 }

@@ -12,10 +12,11 @@ namespace granular {
 class MpiContext {
  public:
   /// The world; starts MPI if the build has it and mpirun launched this process (a plain process
-  /// stays a single rank without paying for MPI_Init).
+  /// stays a single rank without loading MPI: libgranular calls it through its MPI component).
   static MpiContext& instance();
   /// Starts MPI even outside mpirun (a singleton world of one rank), for libraries that need an
-  /// initialized MPI (PETSc/SLEPc). Idempotent; a no-op without MPI in the build.
+  /// initialized MPI (PETSc/SLEPc). Idempotent; a no-op without MPI in the build. Throws IoError
+  /// when the MPI component (libgranular_mpi.so) does not load.
   void require();
   /// Whether MPI is initialized (by this class) and not yet finalized.
   bool active() const { return active_; }

@@ -41,16 +41,12 @@ inline void require_nearest_count(const char* solver, std::size_t n, long count)
 ShiftInvertResult arpack_nearest(const SymTridiagonal& t, double sigma, const ShiftInvertConfig& config);
 
 /// SLEPc shift-invert, collective over MPI_COMM_WORLD: every rank passes the same matrix, owns
-/// a block of its rows, and receives the full result. Initializes SLEPc (and MPI) on first use.
-/// Throws InvalidInput when this build has no SLEPc.
+/// a block of its rows, and receives the full result. Initializes SLEPc (and MPI) on first use
+/// and finalizes it at exit. Loads the SLEPc component (slepc_component.hpp) on first use: throws
+/// IoError when it is missing, InvalidInput when this build has no SLEPc.
 ShiftInvertResult slepc_nearest(const SymTridiagonal& t, double sigma, const ShiftInvertConfig& config);
 
-/// True when the library was built with SLEPc.
+/// True when the library was built with SLEPc (its component may still be missing at run time).
 bool have_slepc();
-/// Starts SLEPc/PETSc now (passing the command line, e.g. -eps_view) instead of on first use;
-/// MPI itself is started by MpiContext (parallel/mpi_context.hpp). finalize_slepc() ends SLEPc
-/// (also registered with atexit). Both are no-ops without SLEPc.
-void initialize_slepc(int* argc, char*** argv);
-void finalize_slepc();
 
 }  // namespace granular

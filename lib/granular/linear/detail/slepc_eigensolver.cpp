@@ -1,5 +1,7 @@
 // SLEPc shift-invert: Krylov–Schur on (T − σI)⁻¹ with the LU (MUMPS, partial pivoting, works
 // for one rank or many) of a PETSc MPIAIJ matrix whose rows are spread over MPI_COMM_WORLD.
+// The SLEPc component (libgranular_slepc.so; slepc_component.hpp): the only file that uses
+// PETSc/SLEPc, compiled only when the build has SLEPc.
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
@@ -8,20 +10,24 @@
 
 #include "granular/error.hpp"
 #include "granular/linear/detail/shift_invert_eigensolvers.hpp"
+#include "granular/linear/detail/slepc_component.hpp"
 #include "granular/parallel/mpi_context.hpp"
 
-#if GRANULAR_HAVE_SLEPC
 #include <mpi.h>
 #include <slepceps.h>
-#endif
 
 namespace granular {
-
-#if GRANULAR_HAVE_SLEPC
 
 namespace {
 
 bool started_by_us = false;
+
+void finalize_slepc() {
+  PetscBool up = PETSC_FALSE, done = PETSC_FALSE;
+  SlepcInitialized(&up);
+  PetscFinalized(&done);
+  if (started_by_us && up && !done) SlepcFinalize();
+}
 
 void check(PetscErrorCode code, const char* what) {
   if (code != 0)
@@ -31,7 +37,11 @@ void check(PetscErrorCode code, const char* what) {
 void ensure_started() {
   PetscBool up = PETSC_FALSE;
   SlepcInitialized(&up);
-  if (!up) initialize_slepc(nullptr, nullptr);
+  if (up) return;
+  MpiContext::instance().require();  // MPI has one owner; PETSc then leaves MPI_Finalize to it
+  check(SlepcInitialize(nullptr, nullptr, nullptr, nullptr), "SlepcInitialize");
+  started_by_us = true;
+  std::atexit(finalize_slepc);
 }
 
 /// Destroys PETSc objects on every exit path.
@@ -45,26 +55,8 @@ struct Owned {
 
 }  // namespace
 
-bool have_slepc() { return true; }
-
-void initialize_slepc(int* argc, char*** argv) {
-  PetscBool up = PETSC_FALSE;
-  SlepcInitialized(&up);
-  if (up) return;
-  MpiContext::instance().require();  // MPI has one owner; PETSc then leaves MPI_Finalize to it
-  check(SlepcInitialize(argc, argv, nullptr, nullptr), "SlepcInitialize");
-  started_by_us = true;
-  std::atexit(finalize_slepc);
-}
-
-void finalize_slepc() {
-  PetscBool up = PETSC_FALSE, done = PETSC_FALSE;
-  SlepcInitialized(&up);
-  PetscFinalized(&done);
-  if (started_by_us && up && !done) SlepcFinalize();
-}
-
-ShiftInvertResult slepc_nearest(const SymTridiagonal& t, double sigma, const ShiftInvertConfig& config) {
+/// slepc_nearest() (shift_invert_eigensolvers.hpp), inside the component.
+ShiftInvertResult slepc_shift_invert(const SymTridiagonal& t, double sigma, const ShiftInvertConfig& config) {
   const PetscInt n = static_cast<PetscInt>(t.size());
   const PetscInt nev = config.count;
   require_nearest_count("SLEPc", t.size(), nev);
@@ -165,15 +157,9 @@ ShiftInvertResult slepc_nearest(const SymTridiagonal& t, double sigma, const Shi
   return out;
 }
 
-#else  // no SLEPc in this build
-
-bool have_slepc() { return false; }
-void initialize_slepc(int*, char***) {}
-void finalize_slepc() {}
-ShiftInvertResult slepc_nearest(const SymTridiagonal&, double, const ShiftInvertConfig&) {
-  throw InvalidInput("method", " slepc: this build has no SLEPc (configure with -DGRANULAR_WITH_SLEPC=ON)");
-}
-
-#endif
-
 }  // namespace granular
+
+const granular::detail::SlepcComponent* granular_slepc_component() {
+  static const granular::detail::SlepcComponent component{&granular::slepc_shift_invert};
+  return &component;
+}
