@@ -24,7 +24,7 @@ best_ms() {  # best wall time [ms] of REPEATS runs of a command
 printf "%-14s %10s %10s %s\n" tool "ms" libraries "PETSc/SLEPc/HDF5/MPI loaded"
 for tool in restitution correlations spectrum ipr-map localization spreading exponents butterfly breathers; do
   libs=$(ldd "$build/$tool" | wc -l)
-  heavy=$(ldd "$build/$tool" | grep -oE 'lib(petsc|slepc|hdf5|mpi)[^ ]*' | sed 's/\.so.*//' | sort -u | tr '\n' ' ')
+  heavy=$(ldd "$build/$tool" | { grep -oE 'lib(petsc|slepc|hdf5|mpi)[^ ]*' || true; } | sed 's/\.so.*//' | sort -u | tr '\n' ' ')
   printf "%-14s %10.1f %10d %s\n" "$tool" "$(best_ms "$build/$tool" --version)" "$libs" "${heavy:-none}"
 done
 numpy=$(best_ms /usr/bin/python3 -c "import numpy")
