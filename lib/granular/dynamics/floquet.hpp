@@ -14,9 +14,9 @@
 // Two methods. Dense: the 2N × 2N matrix (2N tangent integrations) and LAPACK dgeev, all 2N
 // multipliers. ARPACK (large N): the monodromy only as an operator, v ↦ M v by one tangent
 // integration of a period, and the implicitly restarted Arnoldi method (dnaupd/dneupd) for the k
-// multipliers of largest modulus, which decide stability. Of the checks, the conjugate pairs still
-// apply to those k; the reciprocal pairs and the product do not (the 1/μ are the smallest, not
-// computed) and are NaN.
+// multipliers of largest modulus, which decide stability (k + 1 when the cut splits a conjugate
+// pair: the partner is restored). Of the checks, the conjugate pairs still apply to those k; the
+// reciprocal pairs and the product do not (the 1/μ are the smallest, not computed) and are NaN.
 #include <complex>
 #include <cstddef>
 #include <string>

@@ -110,6 +110,17 @@ FloquetSpectrum largest_floquet_multipliers(const ForceLaw& law, const Chain& ch
                          " multipliers");
   for (int i = 0; i < converged; ++i)
     s.multipliers.emplace_back(dr[static_cast<std::size_t>(i)], di[static_cast<std::size_t>(i)]);
+  // The Ritz values of real Arnoldi come in exact conjugate pairs, but the count kept can split one
+  // (on a stable orbit every |μ| = 1, so which pair is last is arbitrary, and differs between BLAS
+  // builds): a multiplier whose partner was cut gets it back, conj(μ), an eigenvalue as surely as μ.
+  const std::size_t returned = s.multipliers.size();
+  for (std::size_t i = 0; i < returned; ++i) {
+    const std::complex<double> mu = s.multipliers[i];
+    bool paired = mu.imag() == 0;
+    for (std::size_t j = 0; j < returned && !paired; ++j)
+      paired = j != i && std::abs(s.multipliers[j] - std::conj(mu)) <= 1e-8 * std::abs(mu);
+    if (!paired) s.multipliers.push_back(std::conj(mu));
+  }
   std::sort(s.multipliers.begin(), s.multipliers.end(), [](auto a, auto b) { return std::abs(a) > std::abs(b); });
 
   // The phase/family pair: up to two multipliers within the window of +1, left out of the verdict.
