@@ -7,9 +7,12 @@
 //
 // BM_ModeIpr/<solver>: the solvers behind `ipr-map --solver` (LAPACK drivers with eigenvectors,
 // then Σv⁴/(Σv²)²; the fast twisted-factorization solver), one chain per call.
-// BM_ModeIprBatch/<solver>_batch4: four chains per solve_batch call, as ipr-map calls it. BM_EigenvaluesOnly/dsterf: the
-// O(N²) eigenvalue floor the fast solver sits on. BM_BuildChain: making the chain and its
-// dynamical matrix, the per-realization cost outside any solver.
+// BM_ModeIprBatch/<solver>_batch4: four chains per solve_batch call, as ipr-map calls it.
+// BM_EigenvaluesOnly/dsterf and /dqds: the O(N²) eigenvalue floor under any solver that needs every
+// mode (LAPACK's root-free QL, and dqds — dlasq2 on T's L D Lᵀ —, the fastest eigenvalue-only
+// algorithm LAPACK has). BM_BuildChain: making the chain and its dynamical matrix, the
+// per-realization cost outside any solver. The `_N1000` rows are the same at N = 1000 (ipr-map
+// --N 1000), one realization per cell: how far a 1000-bead map is from its floor.
 #include <benchmark/benchmark.h>
 
 #include <string>
@@ -27,8 +30,7 @@ namespace {
 
 using namespace granular;
 
-constexpr std::size_t beads = 100;
-constexpr std::size_t realizations_per_cell = 4;
+extern "C" void dlasq2_(const int* n, double* z, int* info);
 
 struct Job {
   std::vector<SymTridiagonal> matrices;
@@ -36,27 +38,34 @@ struct Job {
   std::vector<std::vector<double>> radii;
 };
 
-const Job& default_job() {
-  static const Job job = [] {
-    Job j;
-    for (double q : {0.2, 0.5, 0.8})
-      for (int step = 0; step <= 90; ++step) {
-        const double xi = 0.1 + 0.01 * step;
-        for (std::size_t r = 0; r < realizations_per_cell; ++r) {
-          const auto types = realization_configuration(Disorder::anderson, q, beads, 1, r);
-          j.radii.push_back(radii_of(types, 4.76e-3, xi));
-          const Chain chain = make_chain(j.radii.back(), 10.0);
-          j.matrices.push_back(dynamical_matrix(chain));
-          j.inverse_sqrt_masses.push_back(inverse_sqrt_mass(chain.inverse_mass));
-        }
+Job make_job(std::size_t beads, std::size_t realizations_per_cell) {
+  Job j;
+  for (double q : {0.2, 0.5, 0.8})
+    for (int step = 0; step <= 90; ++step) {
+      const double xi = 0.1 + 0.01 * step;
+      for (std::size_t r = 0; r < realizations_per_cell; ++r) {
+        const auto types = realization_configuration(Disorder::anderson, q, beads, 1, r);
+        j.radii.push_back(radii_of(types, 4.76e-3, xi));
+        const Chain chain = make_chain(j.radii.back(), 10.0);
+        j.matrices.push_back(dynamical_matrix(chain));
+        j.inverse_sqrt_masses.push_back(inverse_sqrt_mass(chain.inverse_mass));
       }
-    return j;
-  }();
-  return job;
+    }
+  return j;
+}
+
+/// The default job's chains (N = 100, 4 realizations per cell) or its N = 1000 version (1 per cell).
+const Job& job_of(std::size_t beads) {
+  if (beads == 100) {
+    static const Job small = make_job(100, 4);
+    return small;
+  }
+  static const Job large = make_job(1000, 1);
+  return large;
 }
 
 void BM_ModeIpr(benchmark::State& state, std::string method) {
-  const Job& job = default_job();
+  const Job& job = job_of(static_cast<std::size_t>(state.range(0)));
   auto solver = make_mode_ipr_solver(method);
   std::vector<double> omega2, ipr;
   std::size_t i = 0;
@@ -77,7 +86,7 @@ void BM_ModeIpr(benchmark::State& state, std::string method) {
 // Four chains per solve_batch call, as ipr-map calls it (the fast solver interleaves their QL
 // sweeps); time per chain = time per iteration / 4.
 void BM_ModeIprBatch(benchmark::State& state, std::string method) {
-  const Job& job = default_job();
+  const Job& job = job_of(100);
   auto solver = make_mode_ipr_solver(method);
   constexpr std::size_t batch = 4;
   std::vector<double> omega2[batch], ipr[batch];
@@ -96,9 +105,12 @@ void BM_ModeIprBatch(benchmark::State& state, std::string method) {
                                                       benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }
 
-void BM_EigenvaluesOnly(benchmark::State& state) {
-  const Job& job = default_job();
-  std::vector<double> d(beads), e(beads);
+// dsterf on T / max|T_ij|, or dqds: dlasq2 on the qd array (q_i = D_i, e_i = l_i² D_i) of T = L D Lᵀ
+// (T is positive definite for F0 > 0), the representation dstemr starts from.
+void BM_EigenvaluesOnly(benchmark::State& state, bool dqds) {
+  const std::size_t beads = static_cast<std::size_t>(state.range(0));
+  const Job& job = job_of(beads);
+  std::vector<double> d(beads), e(beads), z(4 * beads);
   const int n = static_cast<int>(beads);
   std::size_t i = 0;
   for (auto _ : state) {
@@ -107,15 +119,29 @@ void BM_EigenvaluesOnly(benchmark::State& state) {
     for (std::size_t k = 0; k < beads; ++k) d[k] = t.diagonal[k] * inv;
     for (std::size_t k = 0; k + 1 < beads; ++k) e[k] = t.off_diagonal[k] * inv;
     int info = 0;
-    dsterf_(&n, d.data(), e.data(), &info);
-    benchmark::DoNotOptimize(d.data());
+    if (dqds) {
+      double pivot = d[0];
+      for (std::size_t k = 0; k + 1 < beads; ++k) {
+        const double l = e[k] / pivot;
+        z[2 * k] = pivot;
+        z[2 * k + 1] = l * l * pivot;
+        pivot = d[k + 1] - l * e[k];
+      }
+      z[2 * beads - 2] = pivot;
+      dlasq2_(&n, z.data(), &info);
+      benchmark::DoNotOptimize(z.data());
+    } else {
+      dsterf_(&n, d.data(), e.data(), &info);
+      benchmark::DoNotOptimize(d.data());
+    }
+    if (info != 0) state.SkipWithError("eigenvalues failed");
     if (++i == job.matrices.size()) i = 0;
   }
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()));
 }
 
 void BM_BuildChain(benchmark::State& state) {
-  const Job& job = default_job();
+  const Job& job = job_of(100);
   std::size_t i = 0;
   for (auto _ : state) {
     const Chain chain = make_chain(job.radii[i], 10.0);
@@ -130,14 +156,20 @@ void BM_BuildChain(benchmark::State& state) {
 
 }  // namespace
 
-BENCHMARK_CAPTURE(BM_ModeIpr, lapack_stevr, std::string("lapack-stevr"))->Unit(benchmark::kMicrosecond);
-BENCHMARK_CAPTURE(BM_ModeIpr, lapack_stemr, std::string("lapack-stemr"))->Unit(benchmark::kMicrosecond);
-BENCHMARK_CAPTURE(BM_ModeIpr, lapack_stevd, std::string("lapack-stevd"))->Unit(benchmark::kMicrosecond);
-BENCHMARK_CAPTURE(BM_ModeIpr, lapack_steqr, std::string("lapack-steqr"))->Unit(benchmark::kMicrosecond);
-BENCHMARK_CAPTURE(BM_ModeIpr, fast, std::string("fast"))->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_ModeIpr, lapack_stevr, std::string("lapack-stevr"))->Arg(100)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_ModeIpr, lapack_stemr, std::string("lapack-stemr"))->Arg(100)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_ModeIpr, lapack_stevd, std::string("lapack-stevd"))->Arg(100)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_ModeIpr, lapack_steqr, std::string("lapack-steqr"))->Arg(100)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_ModeIpr, fast, std::string("fast"))->Arg(100)->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_ModeIprBatch, lapack_stevd_batch4, std::string("lapack-stevd"))->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_ModeIprBatch, fast_batch4, std::string("fast"))->Unit(benchmark::kMicrosecond);
-BENCHMARK(BM_EigenvaluesOnly)->Name("BM_EigenvaluesOnly/dsterf")->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_EigenvaluesOnly, dsterf, false)->Arg(100)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_EigenvaluesOnly, dqds, true)->Arg(100)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_BuildChain)->Unit(benchmark::kMicrosecond);
+// N = 1000 (the 30 s map of 27,300 chains on 2 cores needs ≤ 2.2 ms of CPU per chain).
+BENCHMARK_CAPTURE(BM_ModeIpr, lapack_stevd_N1000, std::string("lapack-stevd"))->Arg(1000)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_ModeIpr, fast_N1000, std::string("fast"))->Arg(1000)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_EigenvaluesOnly, dsterf_N1000, false)->Arg(1000)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_EigenvaluesOnly, dqds_N1000, true)->Arg(1000)->Unit(benchmark::kMillisecond);
 
 BENCHMARK_MAIN();

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # What a run pays before it computes (issue: "a tool pays only for what it uses"): for each tool,
 # the best of REPEATS wall times of `TOOL --version` and the shared libraries it loads (ldd); for
-# Python, `import numpy` against `import numpy, granular` (the module's own cost), best of REPEATS.
+# Python, `import numpy` against `import numpy, granular` (the module's own cost), best of REPEATS,
+# and `import granular` timed inside a process that has imported NumPy.
 # Usage: tests/benchmarks/startup.sh [BUILD_DIR] [REPEATS]. Check `uptime` first: re-run idle.
 set -euo pipefail
 
@@ -31,3 +32,13 @@ numpy=$(best_ms /usr/bin/python3 -c "import numpy")
 both=$(PYTHONPATH=$build/python best_ms /usr/bin/python3 -c "import numpy, granular")
 printf "python: import numpy %.1f ms, import numpy, granular %.1f ms (granular adds %.1f ms)\n" "$numpy" "$both" \
   "$(awk -v a="$both" -v b="$numpy" 'BEGIN {print a - b}')"
+# The difference of two process times is within their spread (a few ms); the import alone, timed
+# inside a process that has NumPy loaded already, is not.
+inside=$(PYTHONPATH=$build/python /usr/bin/python3 - "$repeats" <<'PY'
+import subprocess, sys
+code = "import time, numpy; t = time.perf_counter(); import granular; print(time.perf_counter() - t)"
+print(1e3 * min(float(subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                                     check=True).stdout) for _ in range(int(sys.argv[1]))))
+PY
+)
+printf "python: import granular after numpy, timed inside the process: %.1f ms\n" "$inside"

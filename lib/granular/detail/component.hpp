@@ -13,3 +13,15 @@ namespace granular::detail {
 void* component_entry(const char* name, const char* entry, const char* needed_for);
 
 }  // namespace granular::detail
+
+/// The function table `const Table*` of the component NAME (a bare word: slepc, hdf5, mpi), made
+/// by its C-linkage entry granular_NAME_component(): called directly when the components are built
+/// in, else looked up with component_entry. A macro because the shared build must not name the
+/// entry (libgranular does not define it). Keep the result in a function-local static.
+#if GRANULAR_COMPONENTS_BUILT_IN
+#define GRANULAR_COMPONENT_TABLE(Table, NAME, needed_for) granular_##NAME##_component()
+#else
+#define GRANULAR_COMPONENT_TABLE(Table, NAME, needed_for) \
+  reinterpret_cast<const Table* (*)()>(                   \
+      ::granular::detail::component_entry(#NAME, "granular_" #NAME "_component", needed_for))()
+#endif

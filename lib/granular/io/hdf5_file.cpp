@@ -10,13 +10,7 @@ namespace granular {
 namespace detail {
 
 const Hdf5Component& hdf5_component() {
-#if GRANULAR_COMPONENTS_BUILT_IN
-  static const Hdf5Component* const component = granular_hdf5_component();
-#else
-  using Entry = const Hdf5Component* (*)();
-  static const Hdf5Component* const component =
-      reinterpret_cast<Entry>(component_entry("hdf5", "granular_hdf5_component", "writing HDF5"))();
-#endif
+  static const Hdf5Component* const component = GRANULAR_COMPONENT_TABLE(Hdf5Component, hdf5, "writing HDF5");
   return *component;
 }
 

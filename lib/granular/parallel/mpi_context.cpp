@@ -37,13 +37,7 @@ bool mpi_loaded() {
 
 /// The MPI component, loaded on first use.
 const detail::MpiComponent& mpi_calls() {
-#if GRANULAR_COMPONENTS_BUILT_IN
-  static const detail::MpiComponent* const component = granular_mpi_component();
-#else
-  using Entry = const detail::MpiComponent* (*)();
-  static const detail::MpiComponent* const component =
-      reinterpret_cast<Entry>(detail::component_entry("mpi", "granular_mpi_component", "MPI"))();
-#endif
+  static const detail::MpiComponent* const component = GRANULAR_COMPONENT_TABLE(detail::MpiComponent, mpi, "MPI");
   return *component;
 }
 }  // namespace

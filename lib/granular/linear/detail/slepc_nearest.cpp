@@ -12,13 +12,8 @@ namespace granular {
 bool have_slepc() { return true; }
 
 ShiftInvertResult slepc_nearest(const SymTridiagonal& t, double sigma, const ShiftInvertConfig& config) {
-#if GRANULAR_COMPONENTS_BUILT_IN
-  static const detail::SlepcComponent* const component = granular_slepc_component();
-#else
-  using Entry = const detail::SlepcComponent* (*)();
   static const detail::SlepcComponent* const component =
-      reinterpret_cast<Entry>(detail::component_entry("slepc", "granular_slepc_component", "the SLEPc method"))();
-#endif
+      GRANULAR_COMPONENT_TABLE(detail::SlepcComponent, slepc, "the SLEPc method");
   return component->nearest(t, sigma, config);
 }
 
