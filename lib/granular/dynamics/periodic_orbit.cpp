@@ -50,12 +50,13 @@ bool uses_newton_krylov(std::size_t beads, const ShootingConfig& config) {
 
 std::size_t shooting_steps(const Chain& chain, double omega) {
   check_frequency(omega);
-  // Gershgorin on M^{-1} K: every eigenvalue ω² ≤ max_i 2 (B_i + B_{i+1}) / m_i.
+  // Gershgorin on M^{-1} K: every eigenvalue ω² ≤ max_i (2 (B_i + B_{i+1}) + k_i) / m_i, with
+  // the on-site springs k_i (none: 0; at F0 = 0 they are all the linear stiffness there is).
   double omega_max = omega;
-  if (chain.precompression > 0) {
-    const auto b = linear_stiffness(chain);
-    for (std::size_t i = 0; i < chain.size(); ++i)
-      omega_max = std::max(omega_max, std::sqrt(2 * (b[i] + b[i + 1]) * chain.inverse_mass[i]));
+  const auto b = chain.precompression > 0 ? linear_stiffness(chain) : std::vector<double>(chain.bonds(), 0.0);
+  for (std::size_t i = 0; i < chain.size(); ++i) {
+    const double k = chain.onsite.empty() ? 0.0 : chain.onsite[i];
+    omega_max = std::max(omega_max, std::sqrt((2 * (b[i] + b[i + 1]) + k) * chain.inverse_mass[i]));
   }
   const double steps = std::ceil(2 * std::numbers::pi * omega_max / (omega * 0.05));
   auto n = static_cast<std::size_t>(std::max(128.0, std::min(steps, 1e7)));

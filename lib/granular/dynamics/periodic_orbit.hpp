@@ -61,7 +61,7 @@ struct ShootingConfig {
 bool uses_newton_krylov(std::size_t beads, const ShootingConfig& config);
 
 /// A default step count per period: the fastest linear mode ω_max (Gershgorin bound of the
-/// linearized chain) at ω_max τ ≤ 0.05, at least 128, even.
+/// linearized chain, on-site springs included) at ω_max τ ≤ 0.05, at least 128, even.
 std::size_t shooting_steps(const Chain& chain, double omega);
 
 /// u̇(T/2) from (x0, 0) and, if `jacobian`, J = ∂u̇(T/2)/∂x0 (N × N, column-major).
