@@ -187,7 +187,7 @@ TEST(NewtonKrylov, BorderedArclengthCorrectorMatchesTheDenseOne) {
 // into the gap, localized, contacts closed) in the middle of a 1001-bead chain of the same pattern
 // (zeros around it), Newton–Krylov at its frequency and 1e-3 below, then three matrix-free
 // arclength steps from the secant: every point periodic to 1e-10, further down into the gap
-// (label long: ~30 s on the loaded 2-core VM, most of it the 101-bead branch).
+// (label long: 28 s on the loaded 2-core VM, its 101-bead branch included).
 TEST(Long_NewtonKrylov, ArclengthAbove1000BeadsIsMatrixFree) {
   auto small = diatomic_config(101, 2);
   small.target_khz = 33.1;

@@ -114,7 +114,7 @@ struct BreatherBranch {
 /// solving (k_n − m_n ω_b²) a_n = c [A_n φ(a_{n−1} − a_n) − A_{n+1} φ(a_n − a_{n+1})], φ(d) = |d|^{1/2} d,
 /// c = (2/π) ∫_0^{π/2} cos^{5/2} θ dθ (the first Fourier coefficient of a one-sided Hertz contact,
 /// which pushes only while compressed), walls at rest. Leading order in the amplitude: the
-/// neighbours move against the centre (−0.70, 0.22, −0.03 of it in a uniform chain) and
+/// neighbours move against the centre (−0.705, 0.237, −0.033 of it in a uniform chain) and
 /// ω_b² − k/m ∝ a^{1/2}. Solved by Newton (tridiagonal) from that uniform shape. Throws InvalidInput
 /// (no on-site springs, F0 > 0, site, omega not above bead site's on-site frequency) or NumericalError.
 std::vector<double> onsite_breather_seed(const Chain& chain, double omega, std::size_t site);
