@@ -18,7 +18,9 @@ int main(int argc, char** argv) {
       "Breathers of one precompressed chain: periodic orbits by half-period shooting (Newton, Jacobian from\n"
       "the tangent map), continued in frequency from a linear mode (--mode K, or --near-khz F, or the mode\n"
       "nearest --start-khz outside the bands, or a state from --seed-file at --start-khz), with Floquet\n"
-      "multipliers. Writes PREFIX.csv (columns omega_rad_s,freq_khz,energy_J,amplitude_m,centre,max_multiplier,\n"
+      "multipliers. At --F0 0 only on on-site springs (--quasi s1 --k0-n-per-m K [N/m]): seeded from one\n"
+      "bead (--site) above its on-site frequency. Writes PREFIX.csv (columns "
+      "omega_rad_s,freq_khz,energy_J,amplitude_m,centre,max_multiplier,\n"
       "stable,newton_iterations,residual,max_open_fraction), PREFIX.h5 (profiles x0, multipliers, open fractions\n"
       "per point) and PREFIX.json (parameters, Newton histories, multiplier checks).",
       "breathers"};
@@ -35,6 +37,8 @@ int main(int argc, char** argv) {
       "--start-khz", config.start_khz,
       "first breather frequency [kHz] (default: the seed's, shifted by --start-offset towards --target-khz)");
   tool::add_option(app, "--start-offset", config.start_offset, "relative shift of the first frequency from the seed");
+  tool::add_integer(app, "--site", config.site,
+                    "F0 = 0 (on-site springs: --quasi s1 --k0-n-per-m K): seed bead 1..N (0: the middle one)");
   app.add_option("--target-khz", config.target_khz, "stop at this frequency [kHz] (default: no target, go down)");
   app.add_option("--seed-file", seed_file,
                  "seed: a state at rest, one displacement [m] per bead and line ('#' comments), Newton's first guess "

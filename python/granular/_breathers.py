@@ -17,7 +17,9 @@ class Breathers:
     residual |du/dt(T/2)| / (omega |x0|), max_open_fraction; profiles: points x N displacements x0 [m] at the
     turning point; open_fraction: points x (N+1) fraction of the period each bond is open; multipliers: points x 2N
     complex Floquet multipliers (with ARPACK points x k, the largest, NaN-padded to the most of a point);
-    linear_khz: every linear mode; seed_mode, seed_khz; stop_reason; metadata: the breathers tool's JSON
+    linear_khz: every linear mode [kHz] (at F0 = 0: the beads' on-site frequencies); seed_mode (0: a profile or a
+    site), seed_site (F0 = 0: the bead 1..N of the on-site seed, else 0), seed_khz [kHz]; stop_reason; metadata: the
+    breathers tool's JSON
     (parameters, Newton histories and GMRES iterations, which methods ran, symplectic checks)."""
 
     def __init__(self, values):
@@ -38,7 +40,8 @@ class Breathers:
         return len(self.freq_khz)
 
     def __repr__(self):
-        return f"<granular.Breathers: {len(self)} points from mode {self.seed_mode}; stopped: {self.stop_reason}>"
+        seed = f"site {self.seed_site}" if self.seed_site else f"mode {self.seed_mode}"
+        return f"<granular.Breathers: {len(self)} points from {seed}; stopped: {self.stop_reason}>"
 
 
 def _nan(value):
@@ -48,8 +51,9 @@ def _nan(value):
 def breathers(chain, *, mode=0, near_khz=None, start_khz=None, target_khz=None, step_khz=0.0, max_points=100,
               law="hertz", scheme="saba2c", steps_per_period=0, tolerance=1e-10, stability_tolerance=1e-6,
               through_opening=False, continuation="natural", seed_profile=None, newton="auto", floquet="auto",
-              floquet_multipliers=16):
-    """A branch of breathers of `chain` (a granular.Chain with F0 > 0), as the breathers tool computes it.
+              floquet_multipliers=16, site=0, start_offset=1e-3):
+    """A branch of breathers of `chain` (a granular.Chain with F0 > 0, or at F0 = 0 a chain on on-site springs:
+    granular.quasiperiodic('s1', F0=0, k0_n_per_m=...)), as the breathers tool computes it.
 
     Seed: linear mode number `mode` (1..N), or the mode nearest `near_khz`, or the mode nearest `start_khz` (which
     must then lie outside the linear bands), or `seed_profile`: N displacements [m] of a state at rest, Newton's
@@ -64,6 +68,13 @@ def breathers(chain, *, mode=0, near_khz=None, start_khz=None, target_khz=None, 
     newton: 'dense' (the N x N Jacobian) | 'krylov' (matrix-free preconditioned GMRES) | 'auto' (dense up to 1000
     beads); floquet: 'dense' (all 2N multipliers) | 'arpack' (the floquet_multipliers of largest modulus) | 'auto'
     (dense up to 1000 beads). The metadata records which ran.
+    start_offset: the first frequency's relative distance from the seed's (from a mode: below it, at most a quarter
+    of the way to the next mode; from a site: above it).
+    F0 = 0 (beads on on-site springs, touching without precompression, a Newton's cradle; James, Kevrekidis & Cuevas,
+    Physica D 251 (2013) 39): no linear mode seeds (mode and near_khz refused); the seed is bead `site` (1..N, 0: the
+    middle one) oscillating on its spring, dressed by harmonic balance, start_offset above its on-site frequency
+    (these breathers harden: the branch goes up in frequency), or seed_profile at start_khz. Every contact opens
+    there, so through_opening does not matter. A chain at F0 = 0 without on-site springs raises ValueError naming F0.
     Returns a granular.Breathers. Releases the GIL."""
     c = _core.BreatherBranchConfig()
     c.mode = int(mode)
@@ -83,6 +94,8 @@ def breathers(chain, *, mode=0, near_khz=None, start_khz=None, target_khz=None, 
     c.floquet_method = floquet
     c.floquet_multipliers = _core._size(floquet_multipliers, "floquet_multipliers", 1, 1000000)
     c.stop_at_opening = not through_opening
+    c.site = int(site)
+    c.start_offset = _core._finite(start_offset, "start_offset")
     c.continuation = continuation
     if seed_profile is not None:
         c.seed_profile = [float(x) for x in seed_profile]

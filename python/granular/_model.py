@@ -154,30 +154,32 @@ def from_radii(radii, F0=10.0, material=steel, walls="flat"):
     return _core._chain(recipe, 0)
 
 
-def _quasi(kind, modulation, ratio, phase, angle, k0):
+def _quasi(kind, modulation, ratio, phase, angle, k0, k0_n_per_m=0.0):
     """A _core.Quasiperiodic of granular.quasiperiodic's keywords."""
     q = _core.Quasiperiodic()
     q.kind = kind
     q.modulation = modulation
     if ratio is not None:  # None: the default (the golden mean)
         q.ratio = ratio if isinstance(ratio, str) else repr(float(ratio))
-    q.phase, q.angle, q.k0 = phase, angle, k0
+    q.phase, q.angle, q.k0, q.k0_n_per_m = phase, angle, k0, k0_n_per_m
     return q
 
 
 def quasiperiodic(kind="s2", N=100, modulation=0.0, ratio="golden", phase=None, angle=45.0, k0=4.0, seed=1,
-                  realization=0, F0=10.0, R1=paper_r1, material=steel):
+                  realization=0, F0=10.0, R1=paper_r1, material=steel, k0_n_per_m=0.0):
     """A quasiperiodic chain (docs/physics.md, "Quasiperiodic chains"), modulated by 1 + modulation*cos(2 pi ratio n
     + phase): kind = 's1' (on-site springs k0*K each, K the bond stiffness), 's2' (masses of spheres of radius R1) or
     'cylinders' (crossing angles angle*(...) [degrees] of cylinders of radius R1, length 2 R1); the tools' --quasi.
     |modulation| < 1; ratio > 0: 'golden', 'p/q' or a number; phase [rad], or None to draw it uniformly in [0, 2 pi)
-    from (seed, realization). F0 [N], R1 [m]. Raises ValueError naming the keyword when a value is out of range."""
+    from (seed, realization). F0 [N], R1 [m]. k0_n_per_m: 's1' only, the mean on-site stiffness in N/m instead of
+    k0*K (0: use k0); the only way to an 's1' chain at F0 = 0 (beads on springs, touching: a Newton's cradle, whose
+    breathers granular.breathers computes). Raises ValueError naming the keyword when a value is out of range."""
     recipe = _core.ChainRecipe()
     recipe.R1 = R1
     recipe.N = _core._size(N, "N", 2, _MAX)
     recipe.F0, recipe.material = F0, material
     recipe.seed = _core._size(seed, "seed")
-    recipe.quasi = _quasi(kind, modulation, ratio, phase, angle, k0)
+    recipe.quasi = _quasi(kind, modulation, ratio, phase, angle, k0, k0_n_per_m)
     return _core._chain(recipe, _core._size(realization, "realization"))
 
 

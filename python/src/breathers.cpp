@@ -30,8 +30,9 @@ py::dict breathers(const PyChain& c, BreatherBranchConfig config) {
                "newton_iterations stable profiles open_fraction multipliers",
                p.omega, p.freq_khz, p.energy, p.amplitude, p.floquet.max_modulus, p.residual, p.max_open_fraction,
                p.centre + 1, p.iterations, p.floquet.stable, p.x0, p.open_fraction, p.floquet.multipliers));
-  return fields("points linear_khz seed_mode seed_khz stop_reason metadata", points, std::move(branch.linear_khz),
-                branch.seed_mode, branch.seed_khz, branch.stop_reason, meta);
+  return fields("points linear_khz seed_mode seed_site seed_khz stop_reason metadata", points,
+                std::move(branch.linear_khz), branch.seed_mode, branch.seed_site, branch.seed_khz, branch.stop_reason,
+                meta);
 }
 
 }  // namespace
@@ -40,9 +41,9 @@ void bind_breathers(py::module_& m) {
   using B = BreatherBranchConfig;  // granular.breathers's keywords, its chain set from the granular.Chain
   config_class(m, "BreatherBranchConfig",
                "mode near_khz start_khz target_khz step_khz max_points stop_at_opening stability_tolerance shooting "
-               "seed_profile",
+               "seed_profile site start_offset",
                &B::mode, &B::near_khz, &B::start_khz, &B::target_khz, &B::step_khz, &B::max_points, &B::stop_at_opening,
-               &B::stability_tolerance, &B::shooting, &B::seed_profile)
+               &B::stability_tolerance, &B::shooting, &B::seed_profile, &B::site, &B::start_offset)
       .def_property("continuation", word_getter(&B::continuation), word_setter(&B::continuation, parse_continuation))
       .def_property("floquet_method", word_getter(&B::floquet_method),
                     word_setter(&B::floquet_method, parse_floquet_method))

@@ -35,7 +35,8 @@ void bind_model(py::module_& m) {
   m.attr("steel") = steel;
 
   using Q = Quasiperiodic;  // granular.quasiperiodic's keywords (the tools' --quasi)
-  config_class(m, "Quasiperiodic", "modulation phase angle k0", &Q::modulation, &Q::phase, &Q::angle, &Q::k0)
+  config_class(m, "Quasiperiodic", "modulation phase angle k0 k0_n_per_m", &Q::modulation, &Q::phase, &Q::angle, &Q::k0,
+               &Q::k0_n_per_m)
       .def_property("kind", word_getter(&Q::kind), word_setter(&Q::kind, parse_quasi_kind))
       .def_property(
           "ratio", [](const Q& q) { return q.ratio; }, word_setter(&Q::ratio, parse_ratio));

@@ -71,3 +71,18 @@ def test_breathers_by_newton_krylov():
         gr.breathers(chain, near_khz=edge, newton="gmres")
     with pytest.raises(ValueError, match="floquet_multipliers"):
         gr.breathers(chain, near_khz=edge, floquet="arpack", floquet_multipliers=40)
+
+
+def test_breathers_at_zero_precompression_on_onsite_springs():
+    # A Newton's cradle on springs: beads touching at F0 = 0, each on a spring of 1e7 N/m (8.36 kHz).
+    chain = gr.quasiperiodic("s1", N=21, modulation=0.0, phase=0.0, F0=0.0, k0_n_per_m=1e7)
+    b = gr.breathers(chain, max_points=3, start_offset=1e-2)
+    assert b.seed_site == 11 and b.seed_mode == 0
+    assert b.metadata["seed"]["site"] == 11
+    assert (np.diff(np.concatenate(([b.seed_khz], b.freq_khz))) > 0).all()  # above the on-site frequency, going up
+    assert (b.residual <= 1e-10).all() and (b.centre == 11).all()
+    assert np.allclose(np.prod(b.multipliers, axis=1), 1, atol=1e-8)
+    with pytest.raises(ValueError, match="F0"):  # no springs: no breathers at F0 = 0
+        gr.breathers(gr.quasiperiodic("s2", N=21, F0=0.0), site=11)
+    with pytest.raises(ValueError, match="mode"):
+        gr.breathers(chain, mode=3)

@@ -132,6 +132,93 @@ TEST(NewtonKrylov, PreconditionerCutsTheGmresIterations) {
   EXPECT_LT(5 * a.iterations, b.iterations);
 }
 
+// The pseudo-arclength prediction continue_breather makes from two points: one secant length on
+// along the unit secant, in units of the last point's ‖x0‖ and ω_b.
+ArcPrediction secant_prediction(const std::vector<double>& x_prev, double w_prev, const std::vector<double>& x_last,
+                                double w_last) {
+  ArcPrediction p;
+  p.x_scale = euclidean_norm(x_last);
+  p.omega_scale = w_last;
+  p.tangent_x.resize(x_last.size());
+  for (std::size_t i = 0; i < x_last.size(); ++i) p.tangent_x[i] = (x_last[i] - x_prev[i]) / p.x_scale;
+  p.tangent_omega = (w_last - w_prev) / w_last;
+  const double length = std::hypot(euclidean_norm(p.tangent_x), p.tangent_omega);
+  for (double& t : p.tangent_x) t /= length;
+  p.tangent_omega /= length;
+  p.x.resize(x_last.size());
+  for (std::size_t i = 0; i < x_last.size(); ++i) p.x[i] = x_last[i] + length * p.tangent_x[i] * p.x_scale;
+  p.omega = w_last * (1 + length * p.tangent_omega);
+  return p;
+}
+
+// The matrix-free bordered corrector against the dense one: from the same predictions along the
+// 201-bead branch (each from two consecutive points), both land on the same point of the branch.
+TEST(NewtonKrylov, BorderedArclengthCorrectorMatchesTheDenseOne) {
+  const DistortedBreather& d = distorted_breather();
+  ASSERT_FALSE(d.guess.empty()) << d.branch.stop_reason;
+  const ForceLaw law = make_force_law(ForceLawKind::hertz, d.chain);
+  ShootingConfig dense_config{.steps_per_period = d.branch.steps_per_period,
+                              .tolerance = 1e-13,
+                              .newton = NewtonMethod::dense};
+  ShootingConfig krylov_config = dense_config;
+  krylov_config.newton = NewtonMethod::krylov;
+  const auto& points = d.branch.points;
+  for (std::size_t i = 2; i < points.size(); ++i) {
+    const auto p = secant_prediction(points[i - 2].x0, points[i - 2].omega, points[i - 1].x0, points[i - 1].omega);
+    const auto dense = find_periodic_orbit_on_arc(law, d.chain, p, dense_config);
+    const auto krylov = find_periodic_orbit_on_arc(law, d.chain, p, krylov_config);
+    EXPECT_EQ(dense.newton, "dense");
+    EXPECT_EQ(krylov.newton, "krylov");
+    EXPECT_LE(krylov.residual(), 1e-13);
+    std::vector<double> gap(dense.x0.size());
+    for (std::size_t j = 0; j < gap.size(); ++j) gap[j] = krylov.x0[j] - dense.x0[j];
+    const double difference = euclidean_norm(gap) / euclidean_norm(dense.x0);
+    std::printf("arc point %zu: %.9f kHz, omega differs by %.1e, x0 by %.1e; ", i,
+                dense.omega / 2e3 / 3.141592653589793, krylov.omega / dense.omega - 1, difference);
+    print_history("Newton-Krylov", krylov);
+    EXPECT_NEAR(krylov.omega / dense.omega, 1.0, 1e-12);
+    EXPECT_LT(difference, 1e-8);
+    ASSERT_EQ(krylov.krylov_iterations.size(), static_cast<std::size_t>(krylov.iterations));
+    EXPECT_LT(*std::max_element(krylov.krylov_iterations.begin(), krylov.krylov_iterations.end()), 50);
+  }
+}
+
+// Above the dense limit (N = 1001): the light-centred gap breather of 101 beads at 33.1 kHz (0.7 kHz
+// into the gap, localized, contacts closed) in the middle of a 1001-bead chain of the same pattern
+// (zeros around it), Newton–Krylov at its frequency and 1e-3 below, then three matrix-free
+// arclength steps from the secant: every point periodic to 1e-10, further down into the gap
+// (label long: 28 s on the loaded 2-core VM, its 101-bead branch included).
+TEST(Long_NewtonKrylov, ArclengthAbove1000BeadsIsMatrixFree) {
+  auto small = diatomic_config(101, 2);
+  small.target_khz = 33.1;
+  small.max_points = 40;
+  const auto branch = continue_breather(small);
+  ASSERT_EQ(branch.points.back().freq_khz, 33.1) << branch.stop_reason;
+  const auto c = diatomic_config(1001, 2);
+  const Chain chain = c.chain.chain(0);
+  const ForceLaw law = make_force_law(ForceLawKind::hertz, chain);
+  std::vector<double> seed(1001, 0.0);
+  std::copy(branch.points.back().x0.begin(), branch.points.back().x0.end(), seed.begin() + 450);
+  const ShootingConfig config{.steps_per_period = branch.steps_per_period};  // automatic: Krylov above 1000
+  const ShootingConfig dense{.steps_per_period = branch.steps_per_period, .newton = NewtonMethod::dense};
+  const auto nowhere = secant_prediction(seed, 1.001, seed, 1.0);
+  EXPECT_THROW(find_periodic_orbit_on_arc(law, chain, nowhere, dense), InvalidInput);  // dense refused above 1000
+  const double w = branch.points.back().omega;
+  auto previous = find_periodic_orbit(law, chain, w, seed, config);
+  auto last = find_periodic_orbit(law, chain, w * (1 - 1e-3), previous.x0, config);
+  for (int k = 0; k < 3; ++k) {
+    const auto p = secant_prediction(previous.x0, previous.omega, last.x0, last.omega);
+    auto next = find_periodic_orbit_on_arc(law, chain, p, config);
+    std::printf("N = 1001 arc step %d: %.9f kHz; ", k, next.omega / 2e3 / 3.141592653589793);
+    print_history("Newton-Krylov", next);
+    EXPECT_EQ(next.newton, "krylov");
+    EXPECT_LE(next.residual(), 1e-10);
+    EXPECT_LT(next.omega, last.omega);
+    previous = std::move(last);
+    last = std::move(next);
+  }
+}
+
 TEST(NewtonKrylov, AutomaticChoiceAndBadInput) {
   EXPECT_FALSE(uses_newton_krylov(1000, {}));
   EXPECT_TRUE(uses_newton_krylov(1001, {}));

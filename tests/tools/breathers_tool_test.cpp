@@ -103,6 +103,28 @@ TEST(BreathersTool, ArclengthBranchProfilesSeedTheNextRun) {
   std::filesystem::remove_all(dir);
 }
 
+// F0 = 0 on on-site springs (a Newton's cradle held by springs of 1e7 N/m): the branch starts
+// above the on-site frequency and goes up (hardening); every point converged.
+TEST(BreathersTool, OnsiteSpringChainAtZeroPrecompression) {
+  const std::string dir = scratch_folder("breathers-cradle");
+  const auto r = run_tool("breathers",
+                          "--quasi s1 --modulation 0 --phase 0 --k0-n-per-m 1e7 --F0 0 --N 21 "
+                          "--start-offset 1e-2 --max-points 3 --quiet --output " +
+                              dir + "/c");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto meta = nlohmann::json::parse(read_file(dir + "/c.json"));
+  EXPECT_EQ(meta["seed"]["site"], 11);
+  const double onsite = meta["seed"]["onsite_khz"].get<double>();
+  ASSERT_EQ(meta["points"].size(), 3u);
+  double previous = onsite;
+  for (const auto& p : meta["points"]) {
+    EXPECT_GT(p["freq_khz"].get<double>(), previous);
+    EXPECT_LE(p["newton_residuals"].back().get<double>(), 1e-10);
+    previous = p["freq_khz"].get<double>();
+  }
+  std::filesystem::remove_all(dir);
+}
+
 TEST(BreathersTool, BadInputExitsWithOneLineAndWritesNothing) {
   const std::string dir = scratch_folder("breathers-bad");
   const std::string config = diatomic_file(dir, 21);
@@ -113,13 +135,20 @@ TEST(BreathersTool, BadInputExitsWithOneLineAndWritesNothing) {
   const Case cases[] = {
       {"--config " + config + " --xi 0.5 --start-khz " + std::to_string(0.3 * optical_edge_khz()), "--start-khz", 2},
       {"--N 2000 --mode 3 --newton dense", "--N", 2},
-      {"--N 2000 --mode 3 --continuation arclength", "--N", 2},
+      {"--N 2000 --mode 3 --continuation arclength --newton dense", "--N", 2},
       {"--config " + config + " --xi 0.5 --mode 3 --newton gmres", "--newton", 2},
       {"--config " + config + " --xi 0.5 --mode 3 --floquet lapack", "--floquet", 2},
       {"--config " + config + " --xi 0.5 --mode 3 --floquet arpack --multipliers 40", "--multipliers", 2},
       {"--config " + config + " --xi 0.5 --mode 0", "--mode", 2},
       {"--config " + config + " --xi 0.5 --law linear --mode 3", "--law", 2},
       {"--config " + config + " --xi 0.5 --mode 3 --continuation pseudo", "--continuation", 2},
+      // F0 = 0: refused without on-site springs; with them, no mode seeds and the start above the spring's.
+      {"--config " + config + " --xi 0.5 --F0 0 --mode 3", "--F0", 2},
+      {"--quasi s1 --F0 0 --N 21", "--F0", 2},  // S1's k0 in units of K, which is 0 at F0 = 0
+      {"--quasi s1 --k0-n-per-m 1e7 --F0 0 --N 21 --mode 3", "--mode", 2},
+      {"--quasi s1 --k0-n-per-m 1e7 --F0 0 --N 21 --site 22", "--site", 2},
+      {"--quasi s1 --k0-n-per-m 1e7 --F0 0 --N 21 --start-khz 1", "--start-khz", 2},
+      {"--config " + config + " --xi 0.5 --mode 3 --site 2", "--site", 2},
       {"--config " + config + " --xi 0.5 --seed-file " + dir + "/missing.txt --start-khz 30", "--seed-file", 2},
       {"--config " + config + " --xi 0.5 --seed-file " + config + " --start-khz 30 --mode 3", "--seed-file", 2},
       // Newton cannot reach a residual below rounding: a numerical failure.

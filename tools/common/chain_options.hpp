@@ -26,7 +26,7 @@ struct ChainOptions {
   long long n = 100, seed = 1, realization = 0;
   std::string config, radii, types, type_masses, polydisperse, walls = "flat";
   std::string quasi, ratio = "golden";  ///< --quasi KIND, --ratio β
-  double modulation = 0, angle = 45, k0 = 4;
+  double modulation = 0, angle = 45, k0 = 4, k0_n_per_m = 0;
   std::optional<double> phase;
   bool auto_n = false;  ///< --N auto (long_time_options.hpp): N from T, the chain drawn from its centre
 };
@@ -71,7 +71,9 @@ inline CLI::Option* add_quasiperiodic_options(CLI::App& app, ChainOptions& o) {
        {"--phase", &O::phase,
         "--quasi: the phase [rad] (default: drawn uniformly in [0, 2 pi) per --seed and --realization)", false},
        {"--angle", &O::angle, "--quasi cylinders: mean crossing angle alpha0 [degrees] in (0, 180)"},
-       {"--k0", &O::k0, "--quasi s1: mean on-site stiffness in units of the bond stiffness K"}});
+       {"--k0", &O::k0, "--quasi s1: mean on-site stiffness in units of the bond stiffness K"},
+       {"--k0-n-per-m", &O::k0_n_per_m,
+        "--quasi s1: mean on-site stiffness [N/m] instead of --k0 (0: use --k0); allows --F0 0"}});
   return app.get_option("--quasi");
 }
 
@@ -83,7 +85,8 @@ inline std::optional<Quasiperiodic> quasiperiodic(const ChainOptions& o) {
                        .ratio = parse_ratio(o.ratio),
                        .phase = o.phase,
                        .angle = o.angle,
-                       .k0 = o.k0};
+                       .k0 = o.k0,
+                       .k0_n_per_m = o.k0_n_per_m};
 }
 
 inline void add_chain_options(CLI::App& app, ChainOptions& o) {

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <optional>
 #include <string>
 #include <utility>
 
@@ -50,12 +51,13 @@ bool uses_newton_krylov(std::size_t beads, const ShootingConfig& config) {
 
 std::size_t shooting_steps(const Chain& chain, double omega) {
   check_frequency(omega);
-  // Gershgorin on M^{-1} K: every eigenvalue ω² ≤ max_i 2 (B_i + B_{i+1}) / m_i.
+  // Gershgorin on M^{-1} K: every eigenvalue ω² ≤ max_i (2 (B_i + B_{i+1}) + k_i) / m_i, with
+  // the on-site springs k_i (none: 0; at F0 = 0 they are all the linear stiffness there is).
   double omega_max = omega;
-  if (chain.precompression > 0) {
-    const auto b = linear_stiffness(chain);
-    for (std::size_t i = 0; i < chain.size(); ++i)
-      omega_max = std::max(omega_max, std::sqrt(2 * (b[i] + b[i + 1]) * chain.inverse_mass[i]));
+  const auto b = chain.precompression > 0 ? linear_stiffness(chain) : std::vector<double>(chain.bonds(), 0.0);
+  for (std::size_t i = 0; i < chain.size(); ++i) {
+    const double k = chain.onsite.empty() ? 0.0 : chain.onsite[i];
+    omega_max = std::max(omega_max, std::sqrt((2 * (b[i] + b[i + 1]) + k) * chain.inverse_mass[i]));
   }
   const double steps = std::ceil(2 * std::numbers::pi * omega_max / (omega * 0.05));
   auto n = static_cast<std::size_t>(std::max(128.0, std::min(steps, 1e7)));
@@ -231,7 +233,8 @@ PeriodicOrbit find_periodic_orbit_on_arc(const ForceLaw& law, const Chain& chain
                                          const ShootingConfig& config) {
   check_frequency(p.omega);
   const std::size_t n = chain.size();
-  check_dense(n, config);  // the bordered system is solved densely only
+  const bool krylov = uses_newton_krylov(n, config);  // refuses dense beyond the dense limit
+  if (config.max_krylov < 1) throw InvalidInput("max_krylov", ": must be >= 1");
   if (p.x.size() != n || p.tangent_x.size() != n)
     throw InvalidInput("guess", ": the prediction and its tangent must have one displacement per bead");
   if (config.steps_per_period == 0)
@@ -250,10 +253,46 @@ PeriodicOrbit find_periodic_orbit_on_arc(const ForceLaw& law, const Chain& chain
   const std::size_t m = n + 1;
   const int mm = static_cast<int>(m);
   std::vector<int> pivots(m);
-  std::vector<double> a(m * m), step(m);
+  std::vector<double> a(krylov ? 0 : m * m), step(m);
+  std::optional<detail::ShootingKrylov> solver;
+  if (krylov) solver.emplace(law, chain, config.scheme, config.steps_per_period, p.omega, config.precondition);
+  std::vector<int> gmres_iterations;
+  std::vector<double> gmres_reached;
+  // Matrix-free: GMRES on the same bordered system, the shooting rows' J v by tangent
+  // integrations at the iterate's ω_b, to a relative residual shrinking with the misfit (inexact
+  // Newton, as find_periodic_orbit's Krylov steps).
+  const auto krylov_step = [&](const ShootingPoint& z) {
+    solver->set_frequency(z.omega);
+    const auto current = map(z.x, z.omega, false);
+    const double h = 1e-6 * z.omega;
+    const auto up = map(z.x, z.omega + h, false), down = map(z.x, z.omega - h, false);
+    const double row = 1 / (z.omega * xs);
+    detail::BorderedSystem system{.jacobian_scale = xs * row,
+                                  .column = std::vector<double>(n),
+                                  .tangent_x = p.tangent_x,
+                                  .tangent_omega = p.tangent_omega,
+                                  .rhs = std::vector<double>(m)};
+    for (std::size_t i = 0; i < n; ++i) {
+      system.column[i] = (up.velocity[i] - down.velocity[i]) / (2 * h) * ws * row;
+      system.rhs[i] = -current.velocity[i] * row;
+    }
+    system.rhs[n] = -along(z);
+    const double r = std::hypot(relative_residual(current.velocity, z.omega, z.x), along(z));
+    const auto c = solver->solve_bordered(z.x, system, std::min(1e-3, std::max(1e-12, 0.1 * r)), config.max_krylov);
+    gmres_iterations.push_back(c.iterations);
+    gmres_reached.push_back(c.residual);
+    if (!(c.residual <= 0.5))
+      throw NumericalError("shooting: GMRES on the bordered arclength system reached only relative residual " +
+                           format_number(c.residual) + " in " + std::to_string(c.iterations) + " iterations near " +
+                           khz(z.omega) + " kHz");
+    ShootingPoint out{std::vector<double>(n), c.step[n] * ws};
+    for (std::size_t i = 0; i < n; ++i) out.x[i] = c.step[i] * xs;
+    return out;
+  };
   // Newton on the bordered system in scaled unknowns (δx/xs, δω/ωs), the shooting rows divided
   // by ω xs; ∂u̇/∂ω by central differences.
   const auto newton_step = [&](const ShootingPoint& z) {
+    if (krylov) return krylov_step(z);
     const auto current = map(z.x, z.omega, true);
     const double h = 1e-6 * z.omega;
     const auto up = map(z.x, z.omega + h, false), down = map(z.x, z.omega - h, false);
@@ -278,8 +317,14 @@ PeriodicOrbit find_periodic_orbit_on_arc(const ForceLaw& law, const Chain& chain
     if (!(z.omega > 0)) return ShootingMisfit{inf, inf};
     return ShootingMisfit{relative_residual(map(z.x, z.omega, false).velocity, z.omega, z.x), along(z)};
   };
-  return damped_newton({p.x, p.omega}, {"arclength Newton", "near"}, config, config.steps_per_period, newton_step,
-                       misfit);
+  auto orbit = damped_newton({p.x, p.omega}, {krylov ? "arclength Newton-Krylov" : "arclength Newton", "near"}, config,
+                             config.steps_per_period, newton_step, misfit);
+  if (krylov) {
+    orbit.newton = "krylov";
+    orbit.krylov_iterations = std::move(gmres_iterations);
+    orbit.krylov_residuals = std::move(gmres_reached);
+  }
+  return orbit;
 }
 
 State turning_state(const PeriodicOrbit& orbit) {

@@ -44,8 +44,8 @@ struct ShootingConfig {
   double tolerance = 1e-10;  ///< converged when the relative residual ‖u̇(T/2)‖/(ω_b ‖x0‖) ≤ this
   int max_iterations = 25;   ///< Newton iterations before NumericalError
   /// The dense Jacobian costs N tangent integrations and an N × N solve per iteration; beyond this
-  /// N automatic uses Newton–Krylov, and dense (and the arclength corrector, dense only) is refused
-  /// (InvalidInput naming N) rather than left to run for hours.
+  /// N automatic uses Newton–Krylov (also for the arclength corrector's bordered system), and dense
+  /// is refused (InvalidInput naming N) rather than left to run for hours.
   std::size_t max_dense_beads = 1000;
   NewtonMethod newton = NewtonMethod::automatic;
   /// Krylov: GMRES iterations (no restart) per Newton step; a step whose GMRES residual stays above
@@ -61,7 +61,7 @@ struct ShootingConfig {
 bool uses_newton_krylov(std::size_t beads, const ShootingConfig& config);
 
 /// A default step count per period: the fastest linear mode ω_max (Gershgorin bound of the
-/// linearized chain) at ω_max τ ≤ 0.05, at least 128, even.
+/// linearized chain, on-site springs included) at ω_max τ ≤ 0.05, at least 128, even.
 std::size_t shooting_steps(const Chain& chain, double omega);
 
 /// u̇(T/2) from (x0, 0) and, if `jacobian`, J = ∂u̇(T/2)/∂x0 (N × N, column-major).
@@ -120,6 +120,9 @@ struct ArcPrediction {
 /// which must be set (a step count that changed with ω_b would make the map jump). Converged when
 /// the relative residual and the arclength condition are both ≤ config.tolerance; the same damping
 /// and failures (NumericalError) as find_periodic_orbit; the residuals recorded are the shooting ones.
+/// The bordered (N + 1) system is solved as config.newton says (uses_newton_krylov): densely by
+/// LAPACK, or matrix-free by GMRES on the same system (its shooting rows' J v one tangent
+/// integration each, right-preconditioned by the linearized chain's J as in find_periodic_orbit).
 PeriodicOrbit find_periodic_orbit_on_arc(const ForceLaw& law, const Chain& chain, const ArcPrediction& prediction,
                                          const ShootingConfig& config);
 

@@ -86,16 +86,23 @@ namespace granular::detail {
 
 ShootingKrylov::ShootingKrylov(const ForceLaw& law, const Chain& chain, const SplittingScheme& scheme,
                                std::size_t steps_per_period, double omega, bool precondition)
-    : law_(law), chain_(chain), scheme_(scheme), steps_(steps_per_period),
-      tau_(2 * std::numbers::pi / omega / static_cast<double>(steps_per_period)) {
-  if (!precondition) return;
-  const DynamicalMatrix d = dynamical_matrix(chain);
-  Spectrum modes = spectrum(d, all_modes(), {.vectors = true});
-  modes_ = std::move(modes.vectors);
-  inverse_sqrt_mass_ = d.inverse_sqrt_mass;
-  inverse_gain_.resize(modes.omega2.size());
+    : law_(law), chain_(chain), scheme_(scheme), steps_(steps_per_period) {
+  if (precondition) {
+    const DynamicalMatrix d = dynamical_matrix(chain);
+    Spectrum modes = spectrum(d, all_modes(), {.vectors = true});
+    modes_ = std::move(modes.vectors);
+    inverse_sqrt_mass_ = d.inverse_sqrt_mass;
+    mode_omega_.resize(modes.omega2.size());
+    for (std::size_t k = 0; k < mode_omega_.size(); ++k) mode_omega_[k] = std::sqrt(std::max(modes.omega2[k], 0.0));
+  }
+  set_frequency(omega);
+}
+
+void ShootingKrylov::set_frequency(double omega) {
+  tau_ = 2 * std::numbers::pi / omega / static_cast<double>(steps_);
+  inverse_gain_.resize(mode_omega_.size());
   for (std::size_t k = 0; k < inverse_gain_.size(); ++k) {
-    const double w = std::sqrt(std::max(modes.omega2[k], 0.0));
+    const double w = mode_omega_[k];
     // A mode at a multiple of ω_b makes J_lin singular; a floor keeps J_lin⁻¹ finite there (J is
     // near-singular in that direction too, so the preconditioned operator stays near 1 there).
     double s = std::sin(std::numbers::pi * w / omega);
@@ -143,6 +150,44 @@ KrylovCorrection ShootingKrylov::solve(const std::vector<double>& x, const std::
   const Eigen::VectorXd y = gmres.solve(rhs);
   KrylovCorrection out;
   out.step = precondition(to_std(y));
+  out.iterations = static_cast<int>(gmres.iterations());
+  out.residual = gmres.error();
+  return out;
+}
+
+KrylovCorrection ShootingKrylov::solve_bordered(const std::vector<double>& x, const BorderedSystem& system,
+                                                double tolerance, int max_iterations) const {
+  const std::size_t n = x.size();
+  const auto m = static_cast<Eigen::Index>(n + 1);
+  if (system.column.size() != n || system.tangent_x.size() != n || system.rhs.size() != n + 1)
+    throw InvalidInput("guess", ": the bordered system must have N + 1 rows");
+  // P⁻¹ on the first N unknowns: the preconditioned shooting rows s J P⁻¹ ≈ 1.
+  const auto inner = [&](const Eigen::VectorXd& y) {
+    auto v = precondition(std::vector<double>(y.data(), y.data() + n));
+    for (double& a : v) a /= system.jacobian_scale;
+    return v;
+  };
+  const ShootingKrylovOperator a(m, [&](const Eigen::VectorXd& y) {
+    const auto v = inner(y);
+    const auto jv = jacobian_times(x, v);
+    Eigen::VectorXd out(m);
+    double last = system.tangent_omega * y[m - 1];
+    for (std::size_t i = 0; i < n; ++i) {
+      out[static_cast<Eigen::Index>(i)] = system.jacobian_scale * jv[i] + system.column[i] * y[m - 1];
+      last += system.tangent_x[i] * v[i];
+    }
+    out[m - 1] = last;
+    return out;
+  });
+  Eigen::GMRES<ShootingKrylovOperator, Eigen::IdentityPreconditioner> gmres;
+  gmres.set_restart(max_iterations);
+  gmres.setMaxIterations(max_iterations);
+  gmres.setTolerance(tolerance);
+  gmres.compute(a);
+  const Eigen::VectorXd y = gmres.solve(Eigen::Map<const Eigen::VectorXd>(system.rhs.data(), m));
+  KrylovCorrection out;
+  out.step = inner(y);
+  out.step.push_back(y[m - 1]);
   out.iterations = static_cast<int>(gmres.iterations());
   out.residual = gmres.error();
   return out;

@@ -11,7 +11,9 @@
 namespace granular {
 
 DynamicalMatrix dynamical_matrix(const Chain& chain) {
-  if (!(chain.precompression > 0))
+  // At F0 = 0 the bonds have no linear stiffness: beads on on-site springs still have a linear
+  // spectrum (each bead's own ω_n² = k_n/m_n), the bare sonic vacuum has none.
+  if (!(chain.precompression > 0) && chain.onsite.empty())
     throw InvalidInput("precompression", " 0: the sonic vacuum has no linear spectrum (needs F0 > 0)");
   const std::size_t n = chain.size();
   const auto b = linear_stiffness(chain);

@@ -16,7 +16,8 @@ struct DynamicalMatrix : SymTridiagonal {
 };
 
 /// D(i,i) = (B_i + B_{i+1} + k_i)/m_i (k_i the on-site spring, if any), D(i,i+1) = -B_{i+1}/sqrt(m_i m_{i+1}) [1/s²].
-/// Throws InvalidInput when F0 = 0 (the sonic vacuum has no linear limit).
+/// Throws InvalidInput when F0 = 0 without on-site springs (the sonic vacuum has no linear limit); at F0 = 0 with
+/// them, D is diagonal: each bead's own k_i/m_i.
 DynamicalMatrix dynamical_matrix(const Chain& chain);
 
 /// The same matrix, bit for bit, read a piece at a time from a bead source (model/bead_source.hpp):

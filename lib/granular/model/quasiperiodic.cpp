@@ -28,6 +28,11 @@ double sphere_bond_stiffness(const Material& m, double R, double F0) {
   return linear_stiffness(hertz_coefficient(m, R, m, R), F0);
 }
 
+/// S1's mean on-site stiffness k0 [N/m]: the absolute one if given, else k0 × K.
+double mean_onsite_stiffness(const Quasiperiodic& q, const Material& m, double R, double F0) {
+  return q.k0_n_per_m > 0 ? q.k0_n_per_m : q.k0 * sphere_bond_stiffness(m, R, F0);
+}
+
 }  // namespace
 
 std::string to_string(Quasiperiodic::Kind kind) {
@@ -81,8 +86,11 @@ void validate(const Quasiperiodic& q, double F0) {
                                              ": masses m (1 + modulation cos) must stay > 0, so |modulation| < 1");
       break;
     case Quasiperiodic::Kind::s1:
-      if (!(F0 > 0))
-        throw InvalidInput("F0", " " + format_number(F0) + ": S1's k0 is in units of K, which needs F0 > 0");
+      if (!std::isfinite(q.k0_n_per_m) || q.k0_n_per_m < 0)
+        throw InvalidInput("k0_n_per_m", " " + format_number(q.k0_n_per_m) + ": must be finite and >= 0 [N/m]");
+      if (!(F0 > 0) && q.k0_n_per_m == 0)
+        throw InvalidInput("F0", " " + format_number(F0) +
+                                     ": S1's k0 is in units of K, which needs F0 > 0 (or give k0 in N/m)");
       if (!std::isfinite(q.k0) || !(q.k0 > 0)) throw InvalidInput("k0", " " + format_number(q.k0) + ": must be > 0");
       if (!(std::fabs(q.modulation) < 1))
         throw InvalidInput("modulation", " " + format_number(q.modulation) +
@@ -110,7 +118,7 @@ Chain quasiperiodic_chain(const Quasiperiodic& q, std::size_t N, double R, doubl
         c.inverse_mass[i] = 1 / c.mass[i];
       }
     } else {
-      const double k0 = q.k0 * sphere_bond_stiffness(material, R, F0);
+      const double k0 = mean_onsite_stiffness(q, material, R, F0);
       c.onsite.resize(N);
       for (std::size_t i = 0; i < N; ++i) c.onsite[i] = k0 * modulation_factor(q, phase, i + 1);
     }
@@ -178,7 +186,7 @@ double quasiperiodic_omega_bound(const Quasiperiodic& q, double R, double F0, co
   const double wall = linear_stiffness(hertz_coefficient(material, R, material, flat_wall), F0);
   const double m = sphere_mass(material, R);
   if (q.kind == Quasiperiodic::Kind::s2) return std::sqrt(4 * wall / (m * lightest));
-  return std::sqrt((4 * wall + q.k0 * sphere_bond_stiffness(material, R, F0) * heaviest) / m);
+  return std::sqrt((4 * wall + mean_onsite_stiffness(q, material, R, F0) * heaviest) / m);
 }
 
 nlohmann::json describe(const Quasiperiodic& q) {
@@ -192,7 +200,10 @@ nlohmann::json describe(const Quasiperiodic& q) {
     j["angle_deg"] = q.angle;
     j["cylinder_length_over_radius"] = cylinder_length_over_radius;
   }
-  if (q.kind == Quasiperiodic::Kind::s1) j["k0_over_K"] = q.k0;
+  if (q.kind == Quasiperiodic::Kind::s1) {
+    if (q.k0_n_per_m > 0) j["k0_N_per_m"] = q.k0_n_per_m;
+    else j["k0_over_K"] = q.k0;
+  }
   return j;
 }
 
@@ -205,6 +216,7 @@ Quasiperiodic parse_quasiperiodic(const nlohmann::json& j) {
     if (j.contains("phase_rad")) q.phase = j.at("phase_rad").get<double>();
     if (j.contains("angle_deg")) q.angle = j.at("angle_deg").get<double>();
     if (j.contains("k0_over_K")) q.k0 = j.at("k0_over_K").get<double>();
+    if (j.contains("k0_N_per_m")) q.k0_n_per_m = j.at("k0_N_per_m").get<double>();
   } catch (const nlohmann::json::exception& e) {
     throw InvalidInput("quasiperiodic", std::string(": ") + e.what());
   }

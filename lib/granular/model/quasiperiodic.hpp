@@ -41,6 +41,9 @@ struct Quasiperiodic {
   std::optional<double> phase{};  ///< φ [rad]; none: drawn per realization
   double angle = 45;              ///< C: α0 [degrees] in (0, 180); α_k must stay in (0, 180)
   double k0 = 4;                  ///< S1: k0 in units of the bond stiffness K (the transition at λ k0 = 2K)
+  /// S1: k0 [N/m] in absolute units instead (0: use k0 × K). The only way to give S1 at F0 = 0,
+  /// where K = 0: beads on springs touching without precompression (a Newton's cradle).
+  double k0_n_per_m = 0;
 };
 
 /// The cylinders' length: twice their radius (L = 2R, mass ρ π R² L).
@@ -61,8 +64,8 @@ inline double modulation_factor(const Quasiperiodic& q, double phase, std::size_
   return 1 + q.modulation * std::cos(2 * std::numbers::pi * q.ratio * static_cast<double>(n) + phase);
 }
 
-/// Throws InvalidInput naming the field (ratio, modulation, phase, angle, k0; F0 for S1, which
-/// needs F0 > 0 to define K) when a mass, stiffness or angle could leave its range at any phase.
+/// Throws InvalidInput naming the field (ratio, modulation, phase, angle, k0, k0_n_per_m; F0 for S1 without k0_n_per_m,
+/// which needs F0 > 0 to define K) when a mass, stiffness or angle could leave its range at any phase.
 void validate(const Quasiperiodic& q, double F0);
 
 /// Realization of phase φ: N beads of radius R [m] (spheres, or cylinders of length 2R) of one
@@ -80,7 +83,7 @@ std::vector<Chain> quasiperiodic_local_chains(const Quasiperiodic& q, double R, 
 /// bond, the largest on-site spring and the lightest bead.
 double quasiperiodic_omega_bound(const Quasiperiodic& q, double R, double F0, const Material& material);
 
-/// kind, modulation, ratio, and phase (given) or phase_rule, angle_deg (C), k0_over_K (S1).
+/// kind, modulation, ratio, and phase (given) or phase_rule, angle_deg (C), k0_over_K or k0_N_per_m (S1).
 nlohmann::json describe(const Quasiperiodic& q);
 /// The inverse of describe; throws InvalidInput naming the key.
 Quasiperiodic parse_quasiperiodic(const nlohmann::json& j);

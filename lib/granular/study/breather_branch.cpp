@@ -1,6 +1,7 @@
 #include "granular/study/breather_branch.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -11,6 +12,7 @@
 
 #include "granular/detail/enum_names.hpp"
 #include "granular/detail/euclidean_norm.hpp"
+#include "granular/dynamics/detail/dense_lapack.hpp"
 #include "granular/dynamics/observables.hpp"
 #include "granular/dynamics/propagator.hpp"
 #include "granular/error.hpp"
@@ -75,10 +77,24 @@ std::string to_string(Continuation continuation) { return std::string(continuati
 
 void validate(const BreatherBranchConfig& c) {
   validate(c.chain);
-  if (!(c.chain.F0 > 0)) throw InvalidInput("F0", ": breathers are seeded from linear modes, which need F0 > 0");
+  const bool vacuum = !(c.chain.F0 > 0);
+  const bool springs = c.chain.quasi && c.chain.quasi->kind == Quasiperiodic::Kind::s1;
+  if (vacuum && !springs)
+    throw InvalidInput("F0",
+                       " 0: the uncompressed Hertz chain has no breathers (James, Kevrekidis & Cuevas 2013); "
+                       "give F0 > 0, or beads on on-site springs (quasi s1 with k0_n_per_m)");
+  if (vacuum && c.law != ForceLawKind::hertz)
+    throw InvalidInput("law", " " + to_string(c.law) + ": at F0 = 0 only hertz (the expansions need F0 > 0)");
   const auto n = static_cast<long>(c.chain.size());
   if (c.mode < 0 || c.mode > n)
     throw InvalidInput("mode", " " + std::to_string(c.mode) + ": must be 1 … N (" + std::to_string(n) + ")");
+  if (c.site < 0 || c.site > n)
+    throw InvalidInput("site", " " + std::to_string(c.site) + ": must be 1 … N (" + std::to_string(n) + ")");
+  if (!vacuum && c.site != 0)
+    throw InvalidInput("site", ": the on-site seed is for F0 = 0; at F0 > 0 seed from a mode (mode, near_khz)");
+  if (vacuum && (c.mode != 0 || !std::isnan(c.near_khz)))
+    throw InvalidInput(c.mode != 0 ? "mode" : "near_khz",
+                       ": at F0 = 0 every linear mode is one bead's on-site oscillation; choose the bead (site)");
   for (const auto& [name, v] :
        {std::pair{"near_khz", c.near_khz}, {"start_khz", c.start_khz}, {"target_khz", c.target_khz}})
     if (!std::isnan(v) && !(v > 0 && std::isfinite(v))) throw InvalidInput(name, ": must be finite and > 0 [kHz]");
@@ -93,23 +109,93 @@ void validate(const BreatherBranchConfig& c) {
     if (c.mode != 0 || !std::isnan(c.near_khz))
       throw InvalidInput("seed_profile", ": give either a seed profile or a seed mode (mode, near_khz), not both");
   }
-  if (c.mode == 0 && std::isnan(c.near_khz) && std::isnan(c.start_khz))
+  if (!vacuum && c.mode == 0 && std::isnan(c.near_khz) && std::isnan(c.start_khz))
     throw InvalidInput("mode", ": no seed: give a mode number, a frequency to seed from (near_khz) or start_khz");
+  if (!c.seed_profile.empty() && c.site != 0)
+    throw InvalidInput("seed_profile", ": give either a seed profile or a seed site, not both");
   if (!(c.step_khz >= 0) || !std::isfinite(c.step_khz)) throw InvalidInput("step_khz", ": must be finite and >= 0");
   if (!(c.start_offset > 0 && c.start_offset < 0.5)) throw InvalidInput("start_offset", ": must be in (0, 0.5)");
   if (c.max_points < 1) throw InvalidInput("max_points", ": must be >= 1");
   const auto beads = static_cast<std::size_t>(n);
-  uses_newton_krylov(beads, c.shooting);  // refuses dense Newton beyond the dense limit
-  if (c.continuation == Continuation::arclength && beads > c.shooting.max_dense_beads)
-    throw InvalidInput("N", " " + std::to_string(n) +
-                                ": arclength continuation solves its bordered system densely, "
-                                "up to " +
-                                std::to_string(c.shooting.max_dense_beads) + " beads");
+  uses_newton_krylov(beads, c.shooting);  // refuses dense Newton beyond the dense limit (arclength too)
   const bool arpack = c.floquet_method == FloquetMethod::arpack ||
                       (c.floquet_method == FloquetMethod::automatic && beads > c.shooting.max_dense_beads);
   if (arpack && (c.floquet_multipliers < 1 || c.floquet_multipliers > 2 * n - 3))
     throw InvalidInput("floquet_multipliers", " " + std::to_string(c.floquet_multipliers) + ": must be 1 ... 2N - 3 (" +
                                                   std::to_string(2 * n - 3) + ")");
+}
+
+std::vector<double> onsite_breather_seed(const Chain& chain, double omega, std::size_t site) {
+  const std::size_t n = chain.size();
+  if (chain.onsite.empty() || chain.precompression > 0)
+    throw InvalidInput("F0", ": the on-site seed is for beads on on-site springs at F0 = 0");
+  if (site >= n)
+    throw InvalidInput("site", " " + std::to_string(site + 1) + ": must be 1 … N (" + std::to_string(n) + ")");
+  const double w2 = omega * omega;
+  const double detuning = chain.mass[site] * w2 - chain.onsite[site];  // [N/m]
+  if (!(detuning > 0) || !std::isfinite(detuning))
+    throw InvalidInput("start_khz",
+                       " " + format_number(to_khz(omega)) + ": a breather on bead " + std::to_string(site + 1) +
+                           " lies above its on-site frequency " +
+                           format_number(to_khz(std::sqrt(chain.onsite[site] * chain.inverse_mass[site]))) + " kHz");
+  // c = (2/π) ∫_0^{π/2} cos^{5/2}θ dθ, the integral (√π/2) Γ(7/4)/Γ(9/4).
+  const double c = std::tgamma(1.75) / std::tgamma(2.25) / std::sqrt(std::numbers::pi);
+  const auto phi = [](double d) { return std::sqrt(std::abs(d)) * d; };
+  const auto slope = [](double d) { return 1.5 * std::sqrt(std::abs(d)); };
+  // The uniform chain's profile and its Λ = 2 (1 − s_1)^{3/2} (ω_b² − k/m = Λ c A a^{1/2} / m), to a
+  // few % (tests/study/breather_cradle_test.cpp solves it: Λ = 4.4537): Newton's first guess.
+  constexpr std::array<double, 6> shape{1, -0.705, 0.237, -0.033, 0.0014, -1.2e-5};
+  constexpr double lambda = 4.45;
+  const double root = detuning / (c * lambda * 0.5 * (chain.contact[site] + chain.contact[site + 1]));
+  std::vector<double> a(n, 0.0), g(n), trial(n), dl(n), d(n), du(n);
+  for (std::size_t j = 0; j < shape.size(); ++j) {
+    if (site + j < n) a[site + j] = root * root * shape[j];
+    if (j <= site) a[site - j] = root * root * shape[j];
+  }
+  // G_i = (k_i − m_i ω²) a_i − c [A_i φ(a_{i−1} − a_i) − A_{i+1} φ(a_i − a_{i+1})], walls at rest.
+  const auto misfit = [&](const std::vector<double>& x, std::vector<double>& out) {
+    double worst = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      const double left = i > 0 ? x[i - 1] : 0.0, right = i + 1 < n ? x[i + 1] : 0.0;
+      out[i] = (chain.onsite[i] - chain.mass[i] * w2) * x[i] -
+               c * (chain.contact[i] * phi(left - x[i]) - chain.contact[i + 1] * phi(x[i] - right));
+      worst = std::max(worst, std::abs(out[i]));
+    }
+    return worst;
+  };
+  const int nn = static_cast<int>(n), one = 1;
+  double now = misfit(a, g);
+  // Converged to 1e-12 of the on-site force's scale m ω² a (G is a difference of such terms).
+  for (int iteration = 0; now > 1e-12 * chain.mass[site] * w2 * std::abs(a[site]); ++iteration) {
+    if (iteration >= 60)
+      throw NumericalError("breathers: the harmonic-balance seed on bead " + std::to_string(site + 1) +
+                           " did not converge at " + format_number(to_khz(omega)) + " kHz");
+    for (std::size_t i = 0; i < n; ++i) {
+      const double left = i > 0 ? a[i - 1] : 0.0, right = i + 1 < n ? a[i + 1] : 0.0;
+      d[i] = chain.onsite[i] - chain.mass[i] * w2 +
+             c * (chain.contact[i] * slope(left - a[i]) + chain.contact[i + 1] * slope(a[i] - right));
+      if (i + 1 < n) dl[i] = du[i] = -c * chain.contact[i + 1] * slope(a[i] - right);
+      g[i] = -g[i];
+    }
+    int info = 0;
+    dgtsv_(&nn, &one, dl.data(), d.data(), du.data(), g.data(), &nn, &info);
+    if (info != 0)
+      throw NumericalError("breathers: the harmonic-balance seed's Jacobian is singular at " +
+                           format_number(to_khz(omega)) + " kHz");
+    bool accepted = false;
+    std::vector<double> next(n);
+    for (double step = 1; step > 1e-3 && !accepted; step /= 2) {
+      for (std::size_t i = 0; i < n; ++i) trial[i] = a[i] + step * g[i];
+      const double tried = misfit(trial, next);
+      if (tried < now) accepted = true, now = tried;
+    }
+    if (!accepted)
+      throw NumericalError("breathers: the harmonic-balance seed on bead " + std::to_string(site + 1) + " stalled at " +
+                           format_number(to_khz(omega)) + " kHz");
+    std::swap(a, trial);
+    std::swap(g, next);
+  }
+  return a;
 }
 
 std::vector<double> open_fractions(const ForceLaw& law, const Chain& chain, const PeriodicOrbit& orbit) {
@@ -146,11 +232,13 @@ BreatherBranch continue_breather(const BreatherBranchConfig& c,
   const ForceLaw law = make_force_law(c.law, chain);
   const std::size_t n = chain.size();
   BreatherBranch branch;
+  // At F0 = 0 (validate: only on on-site springs) D is diagonal, its "modes" single beads.
+  const bool vacuum = !(chain.precompression > 0);
   const DynamicalMatrix d = dynamical_matrix(chain);
-  const Spectrum modes = spectrum(d, all_modes(), {.vectors = true});
+  const Spectrum modes = spectrum(d, all_modes(), {.vectors = !vacuum});
   branch.linear_khz = modes.freq_khz;
 
-  double down = 1, start_khz = c.start_khz, omega = 0;
+  double down = vacuum ? -1.0 : 1.0, start_khz = c.start_khz, omega = 0;
   std::vector<double> x(n);
   std::size_t steps = 0;
   ShootingConfig shooting = c.shooting;
@@ -163,6 +251,19 @@ BreatherBranch continue_breather(const BreatherBranchConfig& c,
     omega = to_omega(start_khz);
     steps = c.shooting.steps_per_period > 0 ? c.shooting.steps_per_period : shooting_steps(chain, omega);
     shooting.steps_per_period = steps;
+  } else if (vacuum) {
+    // F0 = 0 on on-site springs: the anti-continuum seed, one bead's on-site oscillation, dressed
+    // by harmonic balance at the first frequency (start_offset above it: these breathers harden).
+    const std::size_t j = c.site > 0 ? static_cast<std::size_t>(c.site - 1) : (n - 1) / 2;
+    branch.seed_site = static_cast<long>(j + 1);
+    branch.seed_khz = to_khz(std::sqrt(chain.onsite[j] * chain.inverse_mass[j]));
+    start_khz = std::isnan(c.start_khz) ? branch.seed_khz * (1 + c.start_offset) : c.start_khz;
+    down = !std::isnan(c.target_khz) && c.target_khz < start_khz ? 1.0 : -1.0;
+    omega = to_omega(start_khz);
+    steps = c.shooting.steps_per_period > 0 ? c.shooting.steps_per_period : shooting_steps(chain, omega);
+    shooting.steps_per_period = steps;
+    x = onsite_breather_seed(chain, omega, j);
+    for (double v : x) branch.seed_amplitude = std::max(branch.seed_amplitude, std::abs(v));
   } else {
     // The seed mode.
     std::size_t j = 0;
@@ -245,7 +346,7 @@ BreatherBranch continue_breather(const BreatherBranchConfig& c,
   double previous_khz = 0, previous_omega = 0;
   while (true) {
     const BreatherPoint& last = branch.points.back();
-    if (c.stop_at_opening && last.max_open_fraction > 0) {
+    if (c.stop_at_opening && !vacuum && last.max_open_fraction > 0) {
       branch.stop_reason = "a contact opened (max open fraction " + format_number(last.max_open_fraction) + ")";
       break;
     }
@@ -369,6 +470,11 @@ nlohmann::json describe_breather_branch(const BreatherBranchConfig& c, const Bre
   j["seed"] = {{"mode", b.seed_mode}, {"linear_khz", b.seed_khz}, {"amplitude_m", b.seed_amplitude}};
   if (b.seed_mode == 0)
     j["seed"] = {{"profile", "given"}, {"start_khz", b.seed_khz}, {"amplitude_m", b.seed_amplitude}};
+  if (b.seed_site > 0)
+    j["seed"] = {{"site", b.seed_site},
+                 {"onsite_khz", b.seed_khz},
+                 {"profile", "harmonic balance at the first frequency (F0 = 0, on-site springs)"},
+                 {"amplitude_m", b.seed_amplitude}};
   j["continuation"] = {{"method",
                         c.continuation == Continuation::natural
                             ? "natural-parameter in frequency, secant predictor, step halving/growth"
@@ -378,7 +484,7 @@ nlohmann::json describe_breather_branch(const BreatherBranchConfig& c, const Bre
                        {"start_khz", b.points.empty() ? 0.0 : b.points.front().freq_khz},
                        {"target_khz", std::isnan(c.target_khz) ? nlohmann::json() : nlohmann::json(c.target_khz)},
                        {"max_points", c.max_points},
-                       {"stop_at_opening", c.stop_at_opening},
+                       {"stop_at_opening", c.stop_at_opening && c.chain.F0 > 0},
                        {"stop_reason", b.stop_reason}};
   j["shooting"] = {{"scheme", c.shooting.scheme.name},
                    {"steps_per_period", b.steps_per_period},

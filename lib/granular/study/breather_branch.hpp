@@ -38,7 +38,9 @@ Continuation parse_continuation(const std::string& name);  ///< "natural" | "arc
 std::string to_string(Continuation continuation);
 
 struct BreatherBranchConfig {
-  ChainRecipe chain{};            ///< F0 > 0: the seed is a linear mode
+  /// F0 > 0: the seed is a linear mode. F0 = 0 only with on-site springs (quasi S1 with k0_n_per_m):
+  /// the seed is then one bead's on-site oscillation (`site`) or a seed profile.
+  ChainRecipe chain{};
   std::uint64_t realization = 0;  ///< of a drawn chain
   ForceLawKind law = ForceLawKind::hertz;
   long mode = 0;  ///< seed: linear mode number 1…N; 0: the mode nearest near_khz
@@ -49,6 +51,12 @@ struct BreatherBranchConfig {
   /// near_khz the seed is the mode nearest start_khz, which must then lie outside the linear bands.
   double start_khz = std::numeric_limits<double>::quiet_NaN();
   double start_offset = 1e-3;
+  /// F0 = 0 (beads on on-site springs, touching without precompression): the bead 1…N the
+  /// anti-continuum seed is centred on (0: the middle bead, (N + 1)/2). The first point lies
+  /// start_offset above that bead's on-site frequency (breathers there harden: James, Kevrekidis &
+  /// Cuevas, Physica D 251 (2013) 39) and is seeded from the harmonic-balance profile at it
+  /// (onsite_breather_seed). Unused (must be 0) at F0 > 0.
+  long site = 0;
   /// Seed from a state instead of a mode: N displacements [m] of a state at rest, Newton's first
   /// guess at start_khz (then required; mode and near_khz unset). Empty: seed from a mode.
   std::vector<double> seed_profile{};
@@ -56,7 +64,8 @@ struct BreatherBranchConfig {
   double step_khz =
       0;  ///< first step [kHz] (sign ignored), growing to 8×; 0: the start's distance from the seed, growing to 2 % of it
   std::size_t max_points = 100;  ///< points on the branch
-  bool stop_at_opening = true;   ///< stop at the first point with an open contact
+  bool stop_at_opening =
+      true;  ///< stop at the first point with an open contact (F0 > 0; at F0 = 0 every contact opens)
   Continuation continuation = Continuation::natural;
   ShootingConfig shooting{};          ///< incl. newton: dense | krylov | auto (by N)
   double stability_tolerance = 1e-6;  ///< stable when max |μ| ≤ 1 + this
@@ -67,8 +76,9 @@ struct BreatherBranchConfig {
 };
 
 /// Throws InvalidInput naming the field (mode, near_khz, start_khz, target_khz, step_khz,
-/// max_points, N, F0, seed_profile, floquet_multipliers) before any work. N: dense Newton or
-/// arclength continuation (whose bordered system is dense) beyond shooting.max_dense_beads.
+/// max_points, N, F0, site, law, seed_profile, floquet_multipliers) before any work. N: dense Newton
+/// (also for the arclength corrector) beyond shooting.max_dense_beads. F0: 0
+/// without on-site springs (the uncompressed Hertz chain has no breathers: James et al. 2013).
 void validate(const BreatherBranchConfig& config);
 
 struct BreatherPoint {
@@ -89,14 +99,25 @@ struct BreatherPoint {
 };
 
 struct BreatherBranch {
-  long seed_mode = 0;                ///< 1…N; 0: seeded from a profile
-  double seed_khz = 0;               ///< its linear frequency [kHz] (a profile's: start_khz)
+  long seed_mode = 0;                ///< 1…N; 0: seeded from a profile or (F0 = 0) a site
+  long seed_site = 0;                ///< F0 = 0: the bead 1…N the seed is centred on; 0 otherwise
+  double seed_khz = 0;               ///< its linear frequency [kHz] (a profile's: start_khz; a site's: its on-site one)
   double seed_amplitude = 0;         ///< amplitude [m] of the first point's seed
   std::size_t steps_per_period = 0;  ///< of the first point
   std::vector<double> linear_khz;    ///< every linear mode [kHz], ascending
   std::vector<BreatherPoint> points;
   std::string stop_reason;  ///< why the branch ended
 };
+
+/// The harmonic-balance breather of a chain at F0 = 0 on on-site springs k_n, centred on bead
+/// `site` (0-based) at ω_b = `omega` [rad/s]: the fundamental amplitudes a_n [m] (u_n ≈ a_n cos ω_b t)
+/// solving (k_n − m_n ω_b²) a_n = c [A_n φ(a_{n−1} − a_n) − A_{n+1} φ(a_n − a_{n+1})], φ(d) = |d|^{1/2} d,
+/// c = (2/π) ∫_0^{π/2} cos^{5/2} θ dθ (the first Fourier coefficient of a one-sided Hertz contact,
+/// which pushes only while compressed), walls at rest. Leading order in the amplitude: the
+/// neighbours move against the centre (−0.705, 0.237, −0.033 of it in a uniform chain) and
+/// ω_b² − k/m ∝ a^{1/2}. Solved by Newton (tridiagonal) from that uniform shape. Throws InvalidInput
+/// (no on-site springs, F0 > 0, site, omega not above bead site's on-site frequency) or NumericalError.
+std::vector<double> onsite_breather_seed(const Chain& chain, double omega, std::size_t site);
 
 /// The per-bond fraction of one period of `orbit` during which the bond's overlap Δ_k + x_k < 0.
 std::vector<double> open_fractions(const ForceLaw& law, const Chain& chain, const PeriodicOrbit& orbit);

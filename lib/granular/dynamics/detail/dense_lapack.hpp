@@ -1,11 +1,13 @@
 #pragma once
 // Fortran LAPACK entry points for dense matrices (gfortran calling convention: trailing hidden
 // string lengths): Newton's linear solves (periodic_orbit.cpp) and the monodromy matrix's
-// eigenvalues (floquet.cpp).
+// eigenvalues (floquet.cpp); the tridiagonal solve of the harmonic-balance seed at F0 = 0
+// (breather_branch.cpp).
 #include <cstddef>
 
 extern "C" {
 void dgesv_(const int* n, const int* nrhs, double* a, const int* lda, int* ipiv, double* b, const int* ldb, int* info);
+void dgtsv_(const int* n, const int* nrhs, double* dl, double* d, double* du, double* b, const int* ldb, int* info);
 void dgeev_(const char* jobvl, const char* jobvr, const int* n, double* a, const int* lda, double* wr, double* wi,
             double* vl, const int* ldvl, double* vr, const int* ldvr, double* work, const int* lwork, int* info,
             std::size_t, std::size_t);
