@@ -28,8 +28,7 @@ namespace {
 /// `choices` and `beyond` applied to `c` as the tools do; integrator 'auto' stands for SABA2C until
 /// the step is settled. Returns whether it was 'auto'.
 bool apply_choices(TransportChoices choices, const BeyondChoices& beyond, TransportCase& c) {
-  const bool automatic = choices.integrator == "auto";
-  if (automatic) choices.integrator = "saba2c";
+  const bool automatic = take_automatic_integrator(choices);
   granular::apply(choices, c);
   granular::apply(beyond, c.dynamics);
   return automatic;
@@ -47,9 +46,8 @@ py::dict spreading(const PyChain& chain, TransportCase c, const TransportChoices
   c.chain = chain.recipe;
   const bool automatic = apply_choices(choices, beyond, c);
   SpreadingRunConfig& d = c.dynamics;
-  c.fit = c.fit_end <= d.integration.duration * (1 + 1e-12);  // a window beyond T: no exponents
-  if ((c.mode.mode != 0 || c.mode.near_khz >= 0 || c.mode.energy != 0) && c.kick != Kick::mode)
-    bad_value("mode", ": mode, mode_khz and energy only with ic='mode'");
+  fit_within_duration(c);  // a window beyond T: no exponents
+  if (chosen(c.mode) && c.kick != Kick::mode) bad_value("mode", ": mode, mode_khz and energy only with ic='mode'");
   // τ by the stability rule on the chain's recipe: every realization of a random chain (as the
   // tool's --disorder), this very chain for a given one (as the tool's --config/--radii); a dt past
   // it named before anything judged on its grid.
@@ -73,7 +71,7 @@ py::dict spreading(const PyChain& chain, TransportCase c, const TransportChoices
   meta.update(fitted);
   meta["time_step_rule"] = step_rule;
   meta["run"] = describe_run(r, chain.description.value("realization", nlohmann::json(0)));
-  if (d.spectrum) meta["spectrum"] = {{"of", to_string(d.spectrum->source)}, {"samples", d.spectrum->samples}};
+  if (d.spectrum) meta["spectrum"] = describe_spectral_density(*d.spectrum);
 
   std::vector<std::string> said = notes(c);
   for (const auto& w : warnings(r, d)) said.push_back(w);

@@ -70,7 +70,7 @@ inline KickedCase kicked_case(KickedCaseOptions& o, bool ensemble) {
     c.kick = parse_kick(o.ic);
     apply(o.mode, c);
     apply(o.dynamics, c);
-    c.fit = c.fit_end <= c.dynamics.integration.duration * (1 + 1e-12);  // a window beyond T: no exponents, a note
+    fit_within_duration(c);  // a window beyond T: no exponents, a note
     nlohmann::json rule;
     if (o.chain.auto_n) {
       validate(c.chain);                       // a drawn two-type chain
