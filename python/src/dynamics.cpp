@@ -13,7 +13,6 @@
 #include "bindings.hpp"
 #include "granular/ensemble/checkpoint_log.hpp"
 #include "granular/model/quasiperiodic.hpp"
-#include "granular/parallel/mpi_context.hpp"
 #include "granular/study/case_settling.hpp"
 #include "granular/study/exponent_files.hpp"
 #include "granular/study/exponent_table.hpp"
@@ -84,7 +83,7 @@ py::dict spreading(const PyChain& chain, TransportCase c, const TransportChoices
 py::dict transport(TransportCase c, const TransportChoices& choices, const BeyondChoices& beyond, bool dt_given,
                    const PyRun& options) {
   const bool automatic = apply_choices(choices, beyond, c);
-  c.fit = c.fit_end <= c.dynamics.integration.duration * (1 + 1e-12);
+  fit_within_duration(c);
   std::string t_warning;
   const nlohmann::json step_rule = validate_and_settle(c, automatic, dt_given, "T", t_warning);
   if (!t_warning.empty()) warn({t_warning});  // after the errors
@@ -107,12 +106,7 @@ py::dict transport(TransportCase c, const TransportChoices& choices, const Beyon
   if (!resumed.is_null()) meta["resumed_checkpoint"] = resumed;
   const nlohmann::json fitted = describe_exponents(s.exponents, c.centre);
   meta.update(fitted);
-  meta["ensemble"] = {{"realizations", s.realizations},
-                      {"threads", thread_request},
-                      {"mpi_ranks", MpiContext::instance().size()},
-                      {"max_energy_error", s.max_energy_error},
-                      {"reached_walls", s.reached_walls},
-                      {"failed_excluded", s.excluded}};
+  meta["ensemble"] = describe_ensemble(s, thread_request);
   meta["time_step_rule"] = step_rule;
 
   std::vector<std::string> said = notes(c);
@@ -157,11 +151,7 @@ py::dict exponent_table(const std::vector<std::string>& chains, const std::vecto
   if (chains.empty()) chain_list = "none";
   for (const auto& name : ic) kick_list += (kick_list.empty() ? "" : ",") + name;
   nlohmann::json meta;
-  meta["parameters"] = {{"chains", chain_list},
-                        {"F0", config.precompressions},
-                        {"ic", kick_list},
-                        {"threads", thread_request},
-                        {"mpi_ranks", MpiContext::instance().size()}};
+  meta["parameters"] = describe_table_parameters(chain_list, config, kick_list, thread_request);
   meta["cases"] = described;
   meta["time_step_rule"] = step_rule;
   py::dict out;
