@@ -32,10 +32,6 @@ struct ModeKick {
 /// selector and one size are given and make sense for an N-bead chain.
 void validate(const ModeKick& kick, std::size_t beads);
 
-/// Whether any of the mode's own fields (mode, near_khz, energy) is set: what only a mode kick
-/// may use (a front end refuses them with another kick).
-inline bool chosen(const ModeKick& kick) { return kick.mode != 0 || kick.near_khz >= 0 || kick.energy != 0; }
-
 struct ModeKickResult {
   State initial;               ///< u = a · v / max|v| with v = M^{-1/2} w, v = 0
   std::size_t mode = 0;        ///< its number 1…N
