@@ -71,7 +71,7 @@ int main(int argc, char** argv) {
       [&] {
         tool::Metadata meta("breathers", argc, argv);
         config.chain = tool::chain_recipe(chain_options);
-        config.realization = tool::chain_realization(chain_options);
+        config.realization = chain_realization(chain_options);
         config.law = parse_force_law(law);
         if (config.law == ForceLawKind::linear)
           throw InvalidInput("--law",

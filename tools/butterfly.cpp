@@ -59,7 +59,7 @@ int main(int argc, char** argv) {
     const bool dynamics = tool::from_dynamics(app, d, {"--largest-box", "--smallest-box", "--box-sizes"});
     config.ratios = parse_number_list(ratios, "--ratios", 0.005);
     config.chain = tool::chain_recipe(o);
-    config.realization = tool::chain_realization(o);
+    config.realization = chain_realization(o);
     DynamicalButterflyConfig& from_run = d.config;
     from_run.chain = config.chain, from_run.ratios = config.ratios, from_run.realization = config.realization;
     dynamics ? validate(from_run) : validate(config);

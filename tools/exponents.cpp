@@ -97,11 +97,7 @@ int main(int argc, char** argv) {
     const auto files = write_exponent_files(paths, cells, rows);
     for (const auto& c : cells)
       tool::report_excluded(c.definition, c.summary, meta, run_options, "exponents", output, argv[0]);
-    meta["parameters"] = {{"chains", choices.chains},
-                          {"F0", config.precompressions},
-                          {"ic", choices.kicks},
-                          {"threads", run_options.threads},
-                          {"mpi_ranks", mpi.size()}};
+    meta["parameters"] = describe_table_parameters(choices.chains, config, choices.kicks, run_options.threads);
     meta["cases"] = describe_cells(cells);
     meta["time_step_rule"] = step_rule;
     if (!resumed.is_null()) meta["resumed_checkpoint"] = resumed;

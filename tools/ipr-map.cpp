@@ -76,8 +76,8 @@ int main(int argc, char** argv) {
     }
     beads.disorder = disorder;
     config.chain.walls = parse_wall_shape(beads.walls);
-    config.chain.quasi = tool::quasiperiodic(beads);
-    if ((config.chain.distribution = tool::bead_distribution(beads)) || config.chain.quasi)
+    config.chain.quasi = quasiperiodic(beads);
+    if ((config.chain.distribution = bead_distribution(beads)) || config.chain.quasi)
       config.q_values = config.xi_values = {std::numeric_limits<double>::quiet_NaN()};  // one cell
     validate(config);
     tool::warn(radius_warnings(config.chain, tool::radius_options(beads)));

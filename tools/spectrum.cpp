@@ -62,8 +62,7 @@ int main(int argc, char** argv) {
     const ChainRecipe recipe = tool::chain_recipe(chain_options);
     validate(recipe);  // the matrix is stored: at most 1e8 beads
     // Read a piece at a time: a drawn chain's matrix is built without the chain's arrays beside it.
-    StreamedChain chain =
-        stream_chain(recipe, tool::chain_realization(chain_options), tool::radius_options(chain_options));
+    StreamedChain chain = stream_chain(recipe, chain_realization(chain_options), tool::radius_options(chain_options));
     tool::warn(chain.warnings);
     if (selection.kind != ModeSelection::Kind::all) {
       const bool near = selection.kind == ModeSelection::Kind::nearest;

@@ -76,22 +76,16 @@ int main(int argc, char** argv) {
                        std::fprintf(stderr, "spreading: %s\n", note.c_str());
                      auto files = write_spreading_files(paths, r, means, d);
                      if (!more.spectrum.empty())
-                       meta["spectrum"] = {{"file", more.spectrum},
-                                           {"of", to_string(d.spectrum->source)},
-                                           {"samples", more.spectrum_samples}};
+                       (meta["spectrum"] = describe_spectral_density(*d.spectrum))["file"] = more.spectrum;
                      meta["parameters"] = describe_parameters(c, selected.description, kicked, ensemble);
                      meta["seed"] = c.chain.seed;
                      if (!resumed.is_null()) meta["resumed_checkpoint"] = resumed;
                      meta["time_step_rule"] = step_rule;
                      meta.merge(describe_exponents(exponents, c.centre));
-                     if (summary)
-                       meta["ensemble"] = {{"realizations", summary->realizations},
-                                           {"threads", run.threads},
-                                           {"failed_excluded",
-                                            tool::report_excluded(c, *summary, meta, run, "spreading", output, argv[0])},
-                                           {"mpi_ranks", MpiContext::instance().size()},
-                                           {"max_energy_error", summary->max_energy_error},
-                                           {"reached_walls", summary->reached_walls}};
+                     if (summary) {
+                       tool::report_excluded(c, *summary, meta, run, "spreading", output, argv[0]);
+                       meta["ensemble"] = describe_ensemble(*summary, run.threads);
+                     }
                      if (!summary || single) meta["run"] = describe_run(r, options.chain.realization);
                      meta["output"] = paths.csv;
                      meta.write(paths.json);  // the JSON first, then the rest: never an output without its metadata

@@ -47,6 +47,8 @@
 #include "granular/analysis/summary_statistics.hpp"
 
 #include "granular/study/butterfly.hpp"
+#include "granular/study/case_file.hpp"
+#include "granular/study/chain_choices.hpp"
 #include "granular/study/correlation_study.hpp"
 #include "granular/study/dynamical_butterfly.hpp"
 #include "granular/study/exponent_files.hpp"

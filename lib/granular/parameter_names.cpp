@@ -1,8 +1,16 @@
 #include "granular/parameter_names.hpp"
 
 #include <cctype>
+#include <map>
 
 namespace granular {
+
+std::string front_end_word(const std::string& parameter) {
+  static const std::map<std::string, std::string> words{
+      {"precompression", "F0"}, {"n", "N"}, {"r1", "R1"}, {"time_step", "dt"}, {"duration", "T"}, {"near_khz", "near"}};
+  const auto it = words.find(parameter);
+  return it == words.end() ? parameter : it->second;
+}
 
 std::string rename_parameters(const std::string& message, const std::function<std::string(const std::string&)>& name_of) {
   std::string out, word;

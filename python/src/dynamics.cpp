@@ -13,7 +13,6 @@
 #include "bindings.hpp"
 #include "granular/ensemble/checkpoint_log.hpp"
 #include "granular/model/quasiperiodic.hpp"
-#include "granular/parallel/mpi_context.hpp"
 #include "granular/study/case_settling.hpp"
 #include "granular/study/exponent_files.hpp"
 #include "granular/study/exponent_table.hpp"
@@ -28,8 +27,7 @@ namespace {
 /// `choices` and `beyond` applied to `c` as the tools do; integrator 'auto' stands for SABA2C until
 /// the step is settled. Returns whether it was 'auto'.
 bool apply_choices(TransportChoices choices, const BeyondChoices& beyond, TransportCase& c) {
-  const bool automatic = choices.integrator == "auto";
-  if (automatic) choices.integrator = "saba2c";
+  const bool automatic = take_automatic_integrator(choices);
   granular::apply(choices, c);
   granular::apply(beyond, c.dynamics);
   return automatic;
@@ -47,9 +45,8 @@ py::dict spreading(const PyChain& chain, TransportCase c, const TransportChoices
   c.chain = chain.recipe;
   const bool automatic = apply_choices(choices, beyond, c);
   SpreadingRunConfig& d = c.dynamics;
-  c.fit = c.fit_end <= d.integration.duration * (1 + 1e-12);  // a window beyond T: no exponents
-  if ((c.mode.mode != 0 || c.mode.near_khz >= 0 || c.mode.energy != 0) && c.kick != Kick::mode)
-    bad_value("mode", ": mode, mode_khz and energy only with ic='mode'");
+  fit_within_duration(c);  // a window beyond T: no exponents
+  if (chosen(c.mode) && c.kick != Kick::mode) bad_value("mode", ": mode, mode_khz and energy only with ic='mode'");
   // τ by the stability rule on the chain's recipe: every realization of a random chain (as the
   // tool's --disorder), this very chain for a given one (as the tool's --config/--radii); a dt past
   // it named before anything judged on its grid.
@@ -73,7 +70,7 @@ py::dict spreading(const PyChain& chain, TransportCase c, const TransportChoices
   meta.update(fitted);
   meta["time_step_rule"] = step_rule;
   meta["run"] = describe_run(r, chain.description.value("realization", nlohmann::json(0)));
-  if (d.spectrum) meta["spectrum"] = {{"of", to_string(d.spectrum->source)}, {"samples", d.spectrum->samples}};
+  if (d.spectrum) meta["spectrum"] = describe_spectral_density(*d.spectrum);
 
   std::vector<std::string> said = notes(c);
   for (const auto& w : warnings(r, d)) said.push_back(w);
@@ -86,7 +83,7 @@ py::dict spreading(const PyChain& chain, TransportCase c, const TransportChoices
 py::dict transport(TransportCase c, const TransportChoices& choices, const BeyondChoices& beyond, bool dt_given,
                    const PyRun& options) {
   const bool automatic = apply_choices(choices, beyond, c);
-  c.fit = c.fit_end <= c.dynamics.integration.duration * (1 + 1e-12);
+  fit_within_duration(c);
   std::string t_warning;
   const nlohmann::json step_rule = validate_and_settle(c, automatic, dt_given, "T", t_warning);
   if (!t_warning.empty()) warn({t_warning});  // after the errors
@@ -109,12 +106,7 @@ py::dict transport(TransportCase c, const TransportChoices& choices, const Beyon
   if (!resumed.is_null()) meta["resumed_checkpoint"] = resumed;
   const nlohmann::json fitted = describe_exponents(s.exponents, c.centre);
   meta.update(fitted);
-  meta["ensemble"] = {{"realizations", s.realizations},
-                      {"threads", thread_request},
-                      {"mpi_ranks", MpiContext::instance().size()},
-                      {"max_energy_error", s.max_energy_error},
-                      {"reached_walls", s.reached_walls},
-                      {"failed_excluded", s.excluded}};
+  meta["ensemble"] = describe_ensemble(s, thread_request);
   meta["time_step_rule"] = step_rule;
 
   std::vector<std::string> said = notes(c);
@@ -159,11 +151,7 @@ py::dict exponent_table(const std::vector<std::string>& chains, const std::vecto
   if (chains.empty()) chain_list = "none";
   for (const auto& name : ic) kick_list += (kick_list.empty() ? "" : ",") + name;
   nlohmann::json meta;
-  meta["parameters"] = {{"chains", chain_list},
-                        {"F0", config.precompressions},
-                        {"ic", kick_list},
-                        {"threads", thread_request},
-                        {"mpi_ranks", MpiContext::instance().size()}};
+  meta["parameters"] = describe_table_parameters(chain_list, config, kick_list, thread_request);
   meta["cases"] = described;
   meta["time_step_rule"] = step_rule;
   py::dict out;

@@ -17,6 +17,7 @@
 #include "granular/io/range_syntax.hpp"
 #include "granular/number_format.hpp"
 #include "granular/parallel/mpi_context.hpp"
+#include "granular/parameter_names.hpp"
 
 namespace granular::python {
 
@@ -24,10 +25,12 @@ namespace {
 /// The Python keyword a library parameter name stands for (`precompression` → `F0`, `time_step`
 /// → `dt`, a legacy flag `--force-law` → `force_law`); keywords are the tools' option names.
 std::string keyword_of(const std::string& parameter) {
-  // Library names that are not the keyword itself (the keywords are the tools' option names).
-  static const std::map<std::string, std::string> synonyms{
-      {"precompression", "F0"}, {"n", "N"},          {"r1", "R1"},      {"near_khz", "near"},  {"lo_khz", "window"},
-      {"hi_khz", "window"},     {"time_step", "dt"}, {"duration", "T"}, {"selection", "near"}, {"lyapunov", "mle"}};
+  // Library names that are not the keyword itself (the keywords are the tools' option names):
+  // Python's own, beyond the words every front end uses (front_end_word).
+  static const std::map<std::string, std::string> synonyms{{"lo_khz", "window"},
+                                                           {"hi_khz", "window"},
+                                                           {"selection", "near"},
+                                                           {"lyapunov", "mle"}};
   std::string name = parameter;
   if (name.starts_with("--")) {  // a legacy message naming a flag: --force-law → force_law
     name = name.substr(2);
@@ -36,7 +39,7 @@ std::string keyword_of(const std::string& parameter) {
     return name;
   }
   if (auto it = synonyms.find(name); it != synonyms.end()) return it->second;
-  return name;
+  return front_end_word(name);
 }
 
 /// Messages written in flag vocabulary ("--T 0.5: …", "… beyond --T 0.01") told in keywords.

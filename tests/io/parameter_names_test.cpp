@@ -16,5 +16,16 @@ TEST(ParameterNames, RenamesOnlyWordsWithAnUnderscore) {
             "K--ick_size: upper-case words are not names");
 }
 
+TEST(ParameterNames, FrontEndsSayThePhysicsSymbols) {
+  EXPECT_EQ(front_end_word("precompression"), "F0");
+  EXPECT_EQ(front_end_word("n"), "N");
+  EXPECT_EQ(front_end_word("r1"), "R1");
+  EXPECT_EQ(front_end_word("time_step"), "dt");
+  EXPECT_EQ(front_end_word("duration"), "T");
+  EXPECT_EQ(front_end_word("near_khz"), "near");
+  EXPECT_EQ(front_end_word("max_energy_error"), "max_energy_error");  // its own word
+  EXPECT_EQ(front_end_word(""), "");
+}
+
 }  // namespace
 }  // namespace granular

@@ -69,6 +69,28 @@ TEST(SpreadingFiles, ExponentEntriesAreNullWhenNoneWereFitted) {
   EXPECT_FALSE(none.contains("exponents"));
 }
 
+TEST(SpreadingFiles, EnsembleAndSpectralDensityEntries) {
+  TransportSummary s;
+  s.realizations = 9, s.max_energy_error = 2.5e-7, s.reached_walls = 1, s.excluded = {3};
+  const nlohmann::json ensemble = describe_ensemble(s, 4);
+  EXPECT_EQ(ensemble, (nlohmann::json{{"realizations", 9},
+                                      {"threads", 4},
+                                      {"mpi_ranks", 1},
+                                      {"max_energy_error", 2.5e-7},
+                                      {"reached_walls", 1},
+                                      {"failed_excluded", nlohmann::json::array({3})}}));
+  const SpectralDensityObserver::Settings g{.samples = 300, .source = SpectrumSource::velocity};
+  EXPECT_EQ(describe_spectral_density(g), (nlohmann::json{{"of", "velocity"}, {"samples", 300}}));
+}
+
+TEST(ExponentFiles, TableParametersAsListed) {
+  ExponentTableConfig config;
+  config.precompressions = {10, 0.1};
+  EXPECT_EQ(describe_table_parameters("none", config, "displacement,mode", 2),
+            (nlohmann::json{
+                {"chains", "none"}, {"F0", {10, 0.1}}, {"ic", "displacement,mode"}, {"threads", 2}, {"mpi_ranks", 1}}));
+}
+
 TEST(ExponentFiles, PathsAndCases) {
   const ExponentPaths plain = exponent_paths("ex", false), paper = exponent_paths("ex", true);
   EXPECT_EQ(plain.all(), (std::vector<std::string>{"ex.csv", "ex-curves.csv", "ex-profiles.csv", "ex.json"}));

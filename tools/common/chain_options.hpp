@@ -2,34 +2,19 @@
 // The options that pick one chain (a ChainRecipe and its realization), shared by every
 // single-chain tool: a random two-type draw, a types or radii file, k types, polydisperse radii or
 // a quasiperiodic chain; stored, or streamed for tools that walk it once (localization).
-#include <cstdio>
-#include <memory>
-#include <optional>
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
-#include <nlohmann/json.hpp>
 
-#include "granular/io/bead_distribution_syntax.hpp"
-#include "granular/model/bead_distribution.hpp"
-#include "granular/model/chain_recipe.hpp"
-#include "granular/model/configuration_file.hpp"
-#include "granular/model/named_chains.hpp"
 #include "granular/model/selected_chain.hpp"
+#include "granular/study/chain_choices.hpp"
 #include "tool_main.hpp"
 
 namespace granular::tool {
 
-struct ChainOptions {
-  std::string disorder = "A";
-  double xi = 0.5, q = 0.5, f0 = 10, r1 = paper_r1;
-  long long n = 100, seed = 1, realization = 0;
-  std::string config, radii, types, type_masses, polydisperse, walls = "flat";
-  std::string quasi, ratio = "golden";  ///< --quasi KIND, --ratio β
-  double modulation = 0, angle = 45, k0 = 4, k0_n_per_m = 0;
-  std::optional<double> phase;
-  bool auto_n = false;  ///< --N auto (long_time_options.hpp): N from T, the chain drawn from its centre
-};
+/// The chain's options bind straight into the library's choices (study/chain_choices.hpp).
+using ChainOptions = ChainChoices;
 
 /// --types, --type-masses, --polydisperse (mutually exclusive); returns them for more exclusions.
 /// `rule_flag`: the tool's flag that says how types are drawn.
@@ -77,18 +62,6 @@ inline CLI::Option* add_quasiperiodic_options(CLI::App& app, ChainOptions& o) {
   return app.get_option("--quasi");
 }
 
-/// The quasiperiodic chain the options pick, if --quasi is given.
-inline std::optional<Quasiperiodic> quasiperiodic(const ChainOptions& o) {
-  if (o.quasi.empty()) return std::nullopt;
-  return Quasiperiodic{.kind = parse_quasi_kind(o.quasi),
-                       .modulation = o.modulation,
-                       .ratio = parse_ratio(o.ratio),
-                       .phase = o.phase,
-                       .angle = o.angle,
-                       .k0 = o.k0,
-                       .k0_n_per_m = o.k0_n_per_m};
-}
-
 inline void add_chain_options(CLI::App& app, ChainOptions& o) {
   add_option(app, "--disorder", o.disorder, "h | A | RDM1 | RDM2 (homogeneous, Anderson, random dimer 1/2)");
   add_option(app, "--xi", o.xi, "size ratio R2/R1 in (0,1]");
@@ -111,41 +84,11 @@ inline void add_chain_options(CLI::App& app, ChainOptions& o) {
   for (auto* b : {config, radii}) quasi->excludes(b), b->excludes(quasi);
 }
 
-/// The distribution of --types / --type-masses / --polydisperse, if one is given (rule: --disorder).
-inline std::optional<BeadDistribution> bead_distribution(const ChainOptions& o) {
-  if (!o.types.empty()) return parse_bead_types(o.types, false, parse_disorder(o.disorder), "--types");
-  if (!o.type_masses.empty()) return parse_bead_types(o.type_masses, true, parse_disorder(o.disorder), "--type-masses");
-  if (!o.polydisperse.empty()) return parse_polydisperse(o.polydisperse, "--polydisperse");
-  return std::nullopt;
-}
-
-/// Reads a radii file, printing a warning for each implausible radius (file and line named).
-inline std::vector<double> read_radii_warning(const std::string& path) {
-  std::vector<std::string> warnings;
-  std::vector<double> radii = read_radii_file(path, &warnings);
-  warn(warnings);
-  return radii;
-}
-
-/// The recipe the options pick, files read (not yet validated: a streamed chain has its own
-/// limits). Seed and realization are checked here, as flags.
+/// The recipe the options pick (granular::chain_recipe), a radii file's warnings printed.
 inline ChainRecipe chain_recipe(const ChainOptions& o) {
-  if (o.seed < 0) throw InvalidInput("seed", " " + std::to_string(o.seed) + ": must be >= 0");
-  if (o.realization < 0) throw InvalidInput("realization", " " + std::to_string(o.realization) + ": must be >= 0");
-  if (o.n < 2) throw InvalidInput("N", " " + std::to_string(o.n) + ": a chain needs at least 2 beads");
-  ChainRecipe r{.disorder = parse_disorder(o.disorder),
-                .q = o.q,
-                .xi = o.xi,
-                .R1 = o.r1,
-                .centred = o.auto_n,
-                .N = static_cast<std::size_t>(o.n),
-                .F0 = o.f0,
-                .seed = static_cast<std::uint64_t>(o.seed)};
-  r.walls = parse_wall_shape(o.walls);
-  r.distribution = bead_distribution(o);
-  if (!o.config.empty()) r.given_types = read_configuration_file(r.source = o.config);
-  if (!o.radii.empty()) r.given_radii = read_radii_warning(r.source = o.radii);
-  r.quasi = quasiperiodic(o);
+  std::vector<std::string> warnings;
+  ChainRecipe r = granular::chain_recipe(o, warnings);
+  warn(warnings);
   return r;
 }
 
@@ -156,16 +99,6 @@ inline RadiusNames radius_options(const ChainOptions& o) {
                                    : !o.type_masses.empty() ? "--type-masses"
                                                             : "--polydisperse";
   return {"--R1", distribution, "--radii"};
-}
-
-/// The realization the options pick (0-based).
-inline std::uint64_t chain_realization(const ChainOptions& o) { return static_cast<std::uint64_t>(o.realization); }
-
-/// The chain the options pick, built and described.
-inline SelectedChain build_chain(const ChainOptions& o) {
-  SelectedChain s = granular::select_chain(chain_recipe(o), chain_realization(o), radius_options(o));
-  warn(s.warnings);
-  return s;
 }
 
 /// The chain the options pick, streamed (granular::stream_chain), its warnings printed.

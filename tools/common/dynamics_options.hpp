@@ -103,7 +103,7 @@ inline void add_dynamics_options(CLI::App& app, DynamicsOptions& o) {
 /// words are read. Needs c.n (for --site).
 inline void apply(const DynamicsOptions& o, TransportCase& c) {
   TransportChoices choices = o;
-  if (choices.integrator == "auto") choices.integrator = "saba2c";  // settled with the step (settle_time_step)
+  take_automatic_integrator(choices);  // settled with the step (validate_and_settle)
   if (o.beta_text != "match") choices.beta = parse_number_list(o.beta_text, "--beta", 0, 1).at(0);
   else choices.beta.reset();
   if (o.active_window_text != "on" && o.active_window_text != "off")
@@ -141,8 +141,7 @@ inline void add_mode_kick_options(CLI::App& app, ModeKick& o) {
 
 /// Into `c`, whose mode kicks (if `kicks` holds one) use it: only a mode kick may use these options.
 inline void apply(const ModeKick& o, const std::vector<Kick>& kicks, TransportCase& c) {
-  const bool given = o.mode != 0 || o.near_khz >= 0 || o.energy != 0;
-  if (given && std::find(kicks.begin(), kicks.end(), Kick::mode) == kicks.end())
+  if (chosen(o) && std::find(kicks.begin(), kicks.end(), Kick::mode) == kicks.end())
     throw InvalidInput("--mode/--mode-khz/--energy: only with --ic mode");
   c.mode = o;
 }

@@ -2,7 +2,6 @@
 // The kicked-chain case as `spreading` reads it: from its flags — the chain (chain_options.hpp,
 // --N auto), the kick (--ic, the mode options), the dynamics and the tangent map — or whole from a
 // case file (--case: a case description, as a replay file or a run's JSON holds it).
-#include <fstream>
 #include <set>
 #include <string>
 
@@ -11,6 +10,7 @@
 
 #include "chain_options.hpp"
 #include "dynamics_options.hpp"
+#include "granular/study/case_file.hpp"
 #include "long_time_options.hpp"
 #include "tool_main.hpp"
 
@@ -45,20 +45,6 @@ inline void add_kicked_case_options(CLI::App& app, KickedCaseOptions& o) {
     if (!still.contains(options[i]->get_name())) options[i]->excludes(file);
 }
 
-/// The case a JSON file describes: a description (describe(), study/transport_study.hpp) or a
-/// run's JSON with one under "parameters". Throws InvalidInput naming --case.
-inline TransportCase read_case_file(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InvalidInput("--case", " '" + path + "': cannot be read");
-  const nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
-  if (!j.is_object()) throw InvalidInput("--case", " '" + path + "': not a JSON object");
-  try {
-    return parse_case(j.contains("parameters") ? j.at("parameters") : j);
-  } catch (const InvalidInput& e) {
-    throw InvalidInput("--case", " '" + path + "': " + e.what());
-  }
-}
-
 struct KickedCase {
   TransportCase c;
   SelectedChain selected;  ///< the chain of --realization (the one a single run integrates)
@@ -84,7 +70,7 @@ inline KickedCase kicked_case(KickedCaseOptions& o, bool ensemble) {
     c.kick = parse_kick(o.ic);
     apply(o.mode, c);
     apply(o.dynamics, c);
-    c.fit = c.fit_end <= c.dynamics.integration.duration * (1 + 1e-12);  // a window beyond T: no exponents, a note
+    fit_within_duration(c);  // a window beyond T: no exponents, a note
     nlohmann::json rule;
     if (o.chain.auto_n) {
       validate(c.chain);                       // a drawn two-type chain

@@ -18,9 +18,9 @@
 #include "granular/ensemble/checkpoint_log.hpp"
 #include "granular/ensemble/interrupt.hpp"
 #include "granular/ensemble/run_options.hpp"
-#include "granular/io/atomic_file.hpp"
 #include "granular/io/shell_quote.hpp"
 #include "granular/parallel/mpi_context.hpp"
+#include "granular/study/case_file.hpp"
 #include "granular/study/exponent_table.hpp"
 #include "granular/study/resumed_checkpoint.hpp"
 #include "granular/study/transport_study.hpp"
@@ -75,26 +75,18 @@ inline nlohmann::json resumed_code(const LongRunOptions& o, const std::vector<st
   return o.other_version ? resumed_checkpoint(checkpoints) : nullptr;
 }
 
-/// Writes case `c` run alone (one realization, no profile) to PREFIX.replay-<r>-<hash of the case>.json
-/// (cases of one study differ in the hash) and returns the `spreading` command that computes its
-/// realization `r`; `argv0` (how this tool was called) says where `spreading` is. When the file
-/// cannot be written, a sentence saying why.
+/// The `spreading` command that computes realization `r` of case `c` alone, from its replay file
+/// (study/case_file.hpp) beside the outputs on `prefix`; `argv0` (how this tool was called) says
+/// where `spreading` is. When the file cannot be written, a sentence saying why.
 inline std::string replay_text(const TransportCase& c, std::uint64_t r, const std::string& prefix,
                                const std::string& argv0) {
-  TransportCase alone = c;
-  alone.realizations = 1, alone.profile_realizations = 0;
-  const std::string described = describe(alone).dump(2) + "\n";
-  char hash[9];
-  std::snprintf(hash, sizeof hash, "%08llx",
-                static_cast<unsigned long long>(std::hash<std::string>{}(described)&0xffffffffULL));
-  const std::string file = prefix + ".replay-" + std::to_string(r) + "-" + hash + ".json";
+  std::string file;
   try {
-    write_file_atomically(file, described);
+    file = write_replay_case(c, r, prefix);
   } catch (const std::exception& e) {
     return std::string("(the case could not be written: ") + e.what() + ")";
   }
-  const auto slash = argv0.rfind('/');
-  const std::string folder = slash == std::string::npos ? "" : argv0.substr(0, slash + 1);
+  const std::string folder = argv0.substr(0, argv0.rfind('/') + 1);  // "" without a slash
   return shell_quote(folder + "spreading") + " --case " + shell_quote(file) + " --realization " + std::to_string(r) +
          " --output replay-" + std::to_string(r);
 }

@@ -105,20 +105,6 @@ void add_flags(CLI::App& app, Options& o, const std::vector<Flag<Options>>& flag
         f.field);
 }
 
-/// Library parameter names that are not simply the flag without its dashes.
-inline const std::map<std::string, std::string>& flag_synonyms() {
-  static const std::map<std::string, std::string> names{
-      {"precompression", "--F0"},
-      {"n", "--N"},
-      {"r1", "--R1"},
-      {"near_khz", "--near"},
-      {"time_step", "--dt"},
-      {"duration", "--T"},
-      {"realizations", "--realizations"},
-  };
-  return names;
-}
-
 /// The flag of `app` that a library parameter stands for ("" when none: the message is kept).
 inline std::string flag_for(const CLI::App& app, const std::string& parameter,
                             const std::map<std::string, std::string>& overrides) {
@@ -127,8 +113,7 @@ inline std::string flag_for(const CLI::App& app, const std::string& parameter,
   std::string flag = "--" + parameter;
   std::replace(flag.begin() + 2, flag.end(), '_', '-');
   if (app.get_option_no_throw(flag)) return flag;
-  if (auto it = flag_synonyms().find(parameter); it != flag_synonyms().end() && app.get_option_no_throw(it->second))
-    return it->second;
+  if (const std::string word = "--" + front_end_word(parameter); app.get_option_no_throw(word)) return word;  // --F0
   return "";
 }
 

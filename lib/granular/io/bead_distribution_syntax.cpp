@@ -16,7 +16,7 @@ BeadDistribution validated(BeadDistribution d, const std::string& name, const st
   try {
     validate(d);
   } catch (const InvalidInput& e) {
-    throw InvalidInput(name + " '" + text + "': " + e.what());
+    throw InvalidInput(name, " '" + text + "': " + e.what());
   }
   if (d.kind != BeadDistribution::Kind::types) d.radii.clear();
   return d;
@@ -29,10 +29,10 @@ BeadDistribution parse_bead_types(const std::string& text, bool by_mass, Disorde
   for (const std::string& item : parse_word_list(text, name)) {
     const auto colon = item.find(':');
     if (colon == std::string::npos)
-      throw InvalidInput(name + " '" + item + "': expected " + (by_mass ? "MASS" : "RADIUS") + ":PROBABILITY");
+      throw InvalidInput(name, " '" + item + "': expected " + (by_mass ? "MASS" : "RADIUS") + ":PROBABILITY");
     const double value = parse_number_list(item.substr(0, colon), name, 0, 1).at(0);
     if (!(value > 0) || !std::isfinite(value))
-      throw InvalidInput(name + " '" + item + "': " + (by_mass ? "mass" : "radius") + " must be finite and > 0");
+      throw InvalidInput(name, " '" + item + "': " + (by_mass ? "mass" : "radius") + " must be finite and > 0");
     d.radii.push_back(by_mass ? sphere_radius(steel, value) : value);
     d.probabilities.push_back(parse_number_list(item.substr(colon + 1), name, 0, 1).at(0));
   }
@@ -59,7 +59,7 @@ BeadDistribution parse_polydisperse(const std::string& text, const std::string& 
     d.mean = number(1), d.sd = number(2), d.minimum = number(3);
     d.radii = {d.mean, d.minimum};
   } else {
-    throw InvalidInput(name + " '" + text + "': expected uniform:LO:HI or normal:MEAN:SD:MIN (metres)");
+    throw InvalidInput(name, " '" + text + "': expected uniform:LO:HI or normal:MEAN:SD:MIN (metres)");
   }
   return validated(d, name, text);
 }

@@ -13,8 +13,8 @@ namespace granular {
 
 /// k types "R1:P1,R2:P2,…" drawn by `rule` (anderson: each bead, rdm1: each dimer, rdm2: two
 /// types as spins); with `by_mass` each R is the mass [kg] of a steel sphere instead of its
-/// radius. Validated; InvalidInput messages start with `name` and the text (`name` is what the
-/// user calls it, e.g. an option).
+/// radius. Validated; InvalidInput names `name` as its parameter (what the user calls it: a
+/// library name such as `types`, which a front end tells in its words), followed by the text.
 BeadDistribution parse_bead_types(const std::string& text, bool by_mass, Disorder rule, const std::string& name);
 
 /// Polydisperse radii "uniform:LO:HI" or "normal:MEAN:SD:MIN" [m]. Validated, messages as above.

@@ -2,6 +2,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "granular/parallel/mpi_context.hpp"
+
 namespace granular {
 
 std::vector<std::string> ExponentPaths::all() const {
@@ -30,6 +32,15 @@ std::vector<std::unique_ptr<AtomicFile>> write_exponent_files(const ExponentPath
   write_profiles_csv(open(paths.profiles), cells);
   if (!paths.paper.empty()) write_comparison_csv(open(paths.paper), comparison);
   return files;
+}
+
+nlohmann::json describe_table_parameters(const std::string& chains, const ExponentTableConfig& config,
+                                         const std::string& kicks, int threads) {
+  return {{"chains", chains},
+          {"F0", config.precompressions},
+          {"ic", kicks},
+          {"threads", threads},
+          {"mpi_ranks", MpiContext::instance().size()}};
 }
 
 nlohmann::json describe_cells(const std::vector<ExponentCell>& cells) {

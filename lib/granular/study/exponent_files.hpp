@@ -36,4 +36,10 @@ std::vector<std::unique_ptr<AtomicFile>> write_exponent_files(const ExponentPath
 /// `exponents` (gamma_site, gamma_centroid, eta: to_json of each report) and `mle` (X1 at T).
 nlohmann::json describe_cells(const std::vector<ExponentCell>& cells);
 
+/// The "parameters" entry of the JSON beside the cases: the chain kinds and the kicks as the user
+/// listed them (`chains`, `kicks`: comma lists; "none" for no kind), the precompressions F0 [N] of
+/// `config`, the threads as requested (0: every core) and the MPI ranks.
+nlohmann::json describe_table_parameters(const std::string& chains, const ExponentTableConfig& config,
+                                         const std::string& kicks, int threads);
+
 }  // namespace granular

@@ -4,6 +4,7 @@
 #include "granular/io/csv_writer.hpp"
 #include "granular/io/hdf5_file.hpp"
 #include "granular/number_format.hpp"
+#include "granular/parallel/mpi_context.hpp"
 
 namespace granular {
 
@@ -145,6 +146,16 @@ std::vector<std::string> spreading_notes(const TransportCase& c, const Spreading
   for (const auto& w : warnings(run, c.dynamics)) all.push_back(w);
   for (const auto& note : notes(c)) all.push_back(note);
   return all;
+}
+
+nlohmann::json describe_ensemble(const TransportSummary& summary, int threads) {
+  return {{"realizations", summary.realizations},       {"threads", threads},
+          {"mpi_ranks", MpiContext::instance().size()}, {"max_energy_error", summary.max_energy_error},
+          {"reached_walls", summary.reached_walls},     {"failed_excluded", summary.excluded}};
+}
+
+nlohmann::json describe_spectral_density(const SpectralDensityObserver::Settings& settings) {
+  return {{"of", to_string(settings.source)}, {"samples", settings.samples}};
 }
 
 nlohmann::json describe_parameters(const TransportCase& c, const nlohmann::json& chain, const KickedChain& kicked,

@@ -81,6 +81,14 @@ std::vector<std::string> spreading_notes(const TransportCase& c, const Spreading
 nlohmann::json describe_parameters(const TransportCase& c, const nlohmann::json& chain, const KickedChain& kicked,
                                    bool ensemble);
 
+/// The "ensemble" entry of the JSON: realizations averaged, threads as requested (0: every
+/// core), MPI ranks, the worst relative energy error, how many realizations reached the walls,
+/// and the failed realizations left out (failed_excluded).
+nlohmann::json describe_ensemble(const TransportSummary& summary, int threads);
+
+/// The "spectrum" entry of the JSON for g(ν): of (displacement | velocity) and samples.
+nlohmann::json describe_spectral_density(const SpectralDensityObserver::Settings& settings);
+
 /// The exponents' entries of the JSON (gamma, gamma_err, gamma_real_err, eta, eta_err,
 /// eta_real_err, power_law, exponents): to_json(exponents, shown), each null when none were fitted.
 nlohmann::json describe_exponents(const std::optional<TransportExponents>& exponents, SpreadCentre shown);

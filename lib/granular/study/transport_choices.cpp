@@ -17,6 +17,14 @@ double finite_non_negative(double value, const char* name) {
 
 }  // namespace
 
+bool take_automatic_integrator(TransportChoices& choices) {
+  if (choices.integrator != "auto") return false;
+  choices.integrator = "saba2c";
+  return true;
+}
+
+void fit_within_duration(TransportCase& c) { c.fit = c.fit_end <= c.dynamics.integration.duration * (1 + 1e-12); }
+
 void apply(const TransportChoices& o, TransportCase& c) {
   c.alpha = o.alpha;
   c.match_beta = !o.beta;

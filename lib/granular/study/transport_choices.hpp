@@ -38,6 +38,19 @@ struct TransportChoices {
 /// InvalidInput naming the choice.
 void apply(const TransportChoices& choices, TransportCase& c);
 
+/// Whether `choices` asks for integrator "auto": the scheme is then chosen with the step
+/// (validate_and_settle, case_settling.hpp), and until then the case stands for SABA2C (set here).
+bool take_automatic_integrator(TransportChoices& choices);
+
+/// Whether any of a mode kick's own fields (mode, near_khz, energy) is set: what only a mode kick
+/// may use (a front end refuses them with another kick).
+inline bool chosen(const ModeKick& kick) { return kick.mode != 0 || kick.near_khz >= 0 || kick.energy != 0; }
+
+/// Sets c.fit: whether the fit window ends by T (1e-12 relative slack). A single run or an
+/// ensemble whose window ends past T gives no exponents, only a note (the exponent table refuses
+/// such a window instead: validate).
+void fit_within_duration(TransportCase& c);
+
 /// The choices beyond the paper (docs/physics.md, "Nonlinear dynamics"): dissipation and the
 /// tangent map, each named as the parameter a front end reads it from (a tool's flag or a Python
 /// keyword of that name).

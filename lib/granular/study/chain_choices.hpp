@@ -1,0 +1,60 @@
+#pragma once
+// One chain as a front end takes it in words and numbers — the tools' chain options — turned
+// into a ChainRecipe by one rule: a random two-type draw (disorder, q, ξ, R1), a types or radii
+// file, k types or polydisperse radii in their text forms (io/bead_distribution_syntax.hpp), or a
+// quasiperiodic chain. Errors name the choice in the library's vocabulary (`seed`, `types`,
+// `type_masses`, `polydisperse`, `quasi`, `ratio`); each front end tells it in its own words.
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "granular/model/bead_distribution.hpp"
+#include "granular/model/chain_recipe.hpp"
+#include "granular/model/named_chains.hpp"
+#include "granular/model/quasiperiodic.hpp"
+
+namespace granular {
+
+struct ChainChoices {
+  std::string disorder = "A";    ///< h | A | RDM1 | RDM2 (also the rule of k types)
+  double xi = 0.5;               ///< size ratio R2/R1 in (0, 1]
+  double q = 0.5;                ///< probability of a type-1 bead (A), dimer 11 (RDM1) or 12 (RDM2)
+  double f0 = 10;                ///< static precompression F0 [N]
+  double r1 = paper_r1;          ///< type-1 radius R1 [m]
+  long long n = 100;             ///< beads N (≥ 2)
+  long long seed = 1;            ///< random seed (≥ 0)
+  long long realization = 0;     ///< which realization of the seed (0-based, ≥ 0)
+  std::string config;            ///< file of bead types 1 and 2 ("" = none)
+  std::string radii;             ///< file of radii [m] ("" = none)
+  std::string types;             ///< k types "R1:P1,R2:P2,…" (radius [m]: probability), "" = none
+  std::string type_masses;       ///< k types "M1:P1,…" (mass [kg] of a steel sphere: probability), "" = none
+  std::string polydisperse;      ///< "uniform:LO:HI" or "normal:MEAN:SD:MIN" [m], "" = none
+  std::string walls = "flat";    ///< flat | sphere
+  std::string quasi;             ///< s1 | s2 | cylinders: a quasiperiodic chain ("" = none)
+  std::string ratio = "golden";  ///< its incommensurate ratio β > 0: golden, p/q or a number
+  double modulation = 0;         ///< its relative modulation λ, |λ| < 1
+  double angle = 45;             ///< cylinders: mean crossing angle α0 [degrees]
+  double k0 = 4;                 ///< s1: mean on-site stiffness [bond stiffness K]
+  double k0_n_per_m = 0;         ///< s1: mean on-site stiffness [N/m] instead of k0 (0: use k0)
+  std::optional<double> phase;   ///< its phase [rad]; none: drawn per seed and realization
+  bool auto_n = false;           ///< N sized later for long times, the chain drawn from its centre
+};
+
+/// The quasiperiodic chain of the choices, if `quasi` is given. Throws InvalidInput naming
+/// `quasi` or `ratio`.
+std::optional<Quasiperiodic> quasiperiodic(const ChainChoices& o);
+
+/// The distribution of `types`, `type_masses` or `polydisperse` (the first given; rule:
+/// `disorder`), if one is. Throws InvalidInput naming the choice.
+std::optional<BeadDistribution> bead_distribution(const ChainChoices& o);
+
+/// The recipe of the choices, files read (not yet validated: a streamed chain has its own limits;
+/// `seed`, `realization` and `n` are checked here). Each implausible radius of a radii file is
+/// a line of `warnings` (file and line named).
+ChainRecipe chain_recipe(const ChainChoices& o, std::vector<std::string>& warnings);
+
+/// The realization the choices pick (0-based).
+inline std::uint64_t chain_realization(const ChainChoices& o) { return static_cast<std::uint64_t>(o.realization); }
+
+}  // namespace granular
