@@ -15,4 +15,8 @@ else:
     rows = [f"{i.get('internal_api')} {i.get('version') or ''} {i.get('architecture') or ''} "
             f"({i.get('num_threads')} threads, {i.get('filepath')})"
             for i in threadpool_info() if i.get("user_api") == "blas"]
-    print("; ".join(" ".join(r.split()) for r in rows) or "none found")
+    if not rows:  # threadpoolctl knows optimized BLAS only: name the library the process mapped
+        with open("/proc/self/maps") as maps:
+            rows = sorted({line.split()[-1] for line in maps if "libblas" in line or "liblapack" in line})
+        rows = [f"not an optimized BLAS (threadpoolctl found none); mapped: {', '.join(rows) or 'unknown'}"]
+    print("; ".join(" ".join(r.split()) for r in rows))

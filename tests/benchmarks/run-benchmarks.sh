@@ -95,8 +95,9 @@ for label, path in zip(sys.argv[1::2], sys.argv[2::2]):
     runs = [[float(x) for x in line.split()] for line in open(path) if line.strip()]
     wall = statistics.median(r[0] for r in runs)
     cpu = statistics.median(r[1] + r[2] for r in runs)
-    first = first or wall
-    print(f"| {label} | {wall:.2f} | {wall / first:.2f}x | {cpu:.2f} | {max(r[3] for r in runs) / 1024:.1f} | "
+    first = wall if first is None else first
+    ratio = f"{wall / first:.2f}x" if first > 0 else "-"  # /usr/bin/time rounds a --quick run to 0.00 s
+    print(f"| {label} | {wall:.2f} | {ratio} | {cpu:.2f} | {max(r[3] for r in runs) / 1024:.1f} | "
           f"{' '.join(f'{r[0]:.2f}' for r in runs)} |")
 EOF
 }
