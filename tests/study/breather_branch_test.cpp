@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 #include <hdf5.h>
 
+#include "breather_fixtures.hpp"
 #include "granular/detail/euclidean_norm.hpp"
 #include "granular/dynamics/periodic_orbit.hpp"
 #include "granular/dynamics/propagator.hpp"
@@ -260,29 +261,12 @@ TEST(Long_BreatherBranch, ArclengthContinuationPassesTheFoldWhereNaturalStops) {
   }
 }
 
-// ‖(u − x0, u̇/ω_b)‖/‖x0‖ after `periods` periods of direct integration (SABA2C, `steps` per
-// period) from the breather's turning state (x0, 0).
-double state_error_after(const Chain& chain, const BreatherPoint& p, std::size_t steps, std::size_t periods) {
-  const ForceLaw law = make_force_law(ForceLawKind::hertz, chain);
-  State start(chain.size());
-  start.u = p.x0;
-  const double tau = 2 * std::numbers::pi / p.omega / static_cast<double>(steps);
-  auto prop = make_splitting_propagator(law, chain, saba2c(), tau, start, {.enabled = false});
-  prop->advance(periods * steps);
-  double err = 0, norm = 0;
-  for (std::size_t i = 0; i < chain.size(); ++i) {
-    err += std::pow(prop->displacement()[i] - p.x0[i], 2) + std::pow(prop->velocity()[i] / p.omega, 2);
-    norm += p.x0[i] * p.x0[i];
-  }
-  return std::sqrt(err / norm);
-}
-
 TEST(BreatherBranch, StableBreatherStaysPeriodicUnderDirectIntegration) {
   auto c = impurity_config();
   c.start_offset = 2e-2;
   const auto p = continue_breather(c).points.front();
   ASSERT_TRUE(p.floquet.stable);
-  const double err = state_error_after(c.chain.chain(0), p, 1024, 1000);
+  const double err = fixtures::state_error_after(c.chain.chain(0), p, 1024, 1000);
   EXPECT_LT(err, 1e-6);
   std::printf("after 1000 periods: relative state error %.2e\n", err);
 }
@@ -307,7 +291,7 @@ TEST(BreatherBranch, DisorderedChainBreathersFromAnImpurityModeStayPeriodic) {
     EXPECT_EQ(p.max_open_fraction, 0.0);
     if (!p.floquet.stable) continue;
     ++stable;
-    const double err = state_error_after(chain, p, branch.steps_per_period, 1000);
+    const double err = fixtures::state_error_after(chain, p, branch.steps_per_period, 1000);
     std::printf("%.3f kHz, energy %.3g J: relative state error after 1000 periods %.2e\n", p.freq_khz, p.energy, err);
     EXPECT_LT(err, 1e-6) << p.freq_khz << " kHz";
   }

@@ -14,6 +14,7 @@
 
 #include <gtest/gtest.h>
 
+#include "breather_fixtures.hpp"
 #include "granular/dynamics/propagator.hpp"
 #include "granular/error.hpp"
 #include "granular/study/breather_branch.hpp"
@@ -34,22 +35,6 @@ BreatherBranchConfig cradle_config(double offset) {
   c.max_points = 1;
   c.shooting.steps_per_period = 1024;
   return c;
-}
-
-// ‖(u − x0, u̇/ω_b)‖/‖x0‖ after `periods` periods of direct integration (SABA2C, `steps` per period).
-double cradle_state_error_after(const Chain& chain, const BreatherPoint& p, std::size_t steps, std::size_t periods) {
-  const ForceLaw law = make_force_law(ForceLawKind::hertz, chain);
-  State start(chain.size());
-  start.u = p.x0;
-  const double tau = 2 * std::numbers::pi / p.omega / static_cast<double>(steps);
-  auto prop = make_splitting_propagator(law, chain, saba2c(), tau, start, {.enabled = false});
-  prop->advance(periods * steps);
-  double err = 0, norm = 0;
-  for (std::size_t i = 0; i < chain.size(); ++i) {
-    err += std::pow(prop->displacement()[i] - p.x0[i], 2) + std::pow(prop->velocity()[i] / p.omega, 2);
-    norm += p.x0[i] * p.x0[i];
-  }
-  return std::sqrt(err / norm);
 }
 
 // The small-amplitude limit. With u_n ≈ a_n cos ω t, harmonic balance at the fundamental (a
@@ -193,11 +178,11 @@ TEST(BreatherCradle, BreatherIsPeriodicAndHardens) {
                 p.amplitude, p.floquet.max_modulus, p.floquet.unit_pair_distance, p.residual, p.max_open_fraction);
   }
   const auto& p = branch.points.front();
-  const double one = cradle_state_error_after(chain, p, 1024, 1);
+  const double one = fixtures::state_error_after(chain, p, 1024, 1);
   EXPECT_LT(one, 1e-10);
   std::printf("after 1 period: relative state error %.2e\n", one);
   if (p.floquet.stable) {
-    const double many = cradle_state_error_after(chain, p, 1024, 1000);
+    const double many = fixtures::state_error_after(chain, p, 1024, 1000);
     std::printf("after 1000 periods: relative state error %.2e\n", many);
     EXPECT_LT(many, 1e-6);
   }

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <numeric>
+#include <utility>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -73,6 +74,16 @@ const DistortedBreather& distorted_breather() {
   return d;
 }
 
+// Dense and matrix-free Newton at the branch's step count, both to 1e-13 (near the rounding
+// floor): J is ill-conditioned here (2 ω_b lies in the optical band), so two solutions at 1e-10
+// differ by ~1e-8 along its near-null directions.
+std::pair<ShootingConfig, ShootingConfig> dense_and_krylov(const DistortedBreather& d) {
+  ShootingConfig dense{.steps_per_period = d.branch.steps_per_period, .tolerance = 1e-13, .newton = NewtonMethod::dense};
+  ShootingConfig krylov = dense;
+  krylov.newton = NewtonMethod::krylov;
+  return {dense, krylov};
+}
+
 // From a 1 % distortion of a light-centred gap breather of 201 beads (6 points into the gap: the
 // contacts closed, the profile well nonlinear), Newton–Krylov lands on the orbit dense Newton
 // finds, converging superlinearly in few GMRES iterations per step.
@@ -80,13 +91,7 @@ TEST(NewtonKrylov, SameOrbitAsDenseNewtonAt201Beads) {
   const DistortedBreather& d = distorted_breather();
   ASSERT_FALSE(d.guess.empty()) << d.branch.stop_reason;
   const ForceLaw law = make_force_law(ForceLawKind::hertz, d.chain);
-  // To 1e-13 (near the rounding floor): J is ill-conditioned here (2 ω_b lies in the optical
-  // band), so two solutions at 1e-10 differ by ~1e-8 along its near-null directions.
-  ShootingConfig dense_config{.steps_per_period = d.branch.steps_per_period,
-                              .tolerance = 1e-13,
-                              .newton = NewtonMethod::dense};
-  ShootingConfig krylov_config = dense_config;
-  krylov_config.newton = NewtonMethod::krylov;
+  const auto [dense_config, krylov_config] = dense_and_krylov(d);
   const auto dense = find_periodic_orbit(law, d.chain, d.branch.points.back().omega, d.guess, dense_config);
   const auto krylov = find_periodic_orbit(law, d.chain, d.branch.points.back().omega, d.guess, krylov_config);
   print_history("dense Newton", dense);
@@ -157,11 +162,7 @@ TEST(NewtonKrylov, BorderedArclengthCorrectorMatchesTheDenseOne) {
   const DistortedBreather& d = distorted_breather();
   ASSERT_FALSE(d.guess.empty()) << d.branch.stop_reason;
   const ForceLaw law = make_force_law(ForceLawKind::hertz, d.chain);
-  ShootingConfig dense_config{.steps_per_period = d.branch.steps_per_period,
-                              .tolerance = 1e-13,
-                              .newton = NewtonMethod::dense};
-  ShootingConfig krylov_config = dense_config;
-  krylov_config.newton = NewtonMethod::krylov;
+  const auto [dense_config, krylov_config] = dense_and_krylov(d);
   const auto& points = d.branch.points;
   for (std::size_t i = 2; i < points.size(); ++i) {
     const auto p = secant_prediction(points[i - 2].x0, points[i - 2].omega, points[i - 1].x0, points[i - 1].omega);
