@@ -130,6 +130,20 @@ TEST(FloquetArpack, AutomaticChoiceAndBadInput) {
   } catch (const InvalidInput& e) {
     EXPECT_EQ(e.parameter(), "subspace");
   }
+  // A stable orbit where ARPACK gets one restart and converges nothing: automatic falls back to
+  // the dense multipliers (up to max_fallback_beads), an explicit arpack request does not.
+  const FloquetConfig starved{.max_dense_beads = 100, .max_restarts = 1};
+  const FloquetSpectrum fallback = floquet_stability(b.law, b.chain, b.orbit, starved);
+  EXPECT_EQ(fallback.method, "dense (ARPACK converged none)");
+  ASSERT_EQ(fallback.multipliers.size(), small.multipliers.size());
+  for (std::size_t i = 0; i < small.multipliers.size(); ++i) EXPECT_EQ(fallback.multipliers[i], small.multipliers[i]);
+  EXPECT_EQ(fallback.stable, small.stable);
+  FloquetConfig starved_arpack = starved;
+  starved_arpack.method = FloquetMethod::arpack;
+  EXPECT_THROW(floquet_stability(b.law, b.chain, b.orbit, starved_arpack), NumericalError);
+  FloquetConfig starved_large = starved;
+  starved_large.max_fallback_beads = 100;
+  EXPECT_THROW(floquet_stability(b.law, b.chain, b.orbit, starved_large), NumericalError);
   EXPECT_EQ(parse_floquet_method("arpack"), FloquetMethod::arpack);
   EXPECT_EQ(to_string(FloquetMethod::automatic), "auto");
   EXPECT_THROW(parse_floquet_method("lapack"), InvalidInput);

@@ -127,10 +127,20 @@ FloquetSpectrum floquet_stability(const ForceLaw& law, const Chain& chain, const
 
 FloquetSpectrum floquet_stability(const ForceLaw& law, const Chain& chain, const PeriodicOrbit& orbit,
                                   const FloquetConfig& config) {
-  const bool dense = config.method == FloquetMethod::dense ||
-                     (config.method == FloquetMethod::automatic && chain.size() <= config.max_dense_beads);
-  return dense ? floquet_stability(law, chain, orbit, config.tolerance)
-               : largest_floquet_multipliers(law, chain, orbit, config);
+  const bool automatic = config.method == FloquetMethod::automatic;
+  if (config.method == FloquetMethod::dense || (automatic && chain.size() <= config.max_dense_beads))
+    return floquet_stability(law, chain, orbit, config.tolerance);
+  if (!automatic || chain.size() > config.max_fallback_beads)
+    return largest_floquet_multipliers(law, chain, orbit, config);
+  try {
+    return largest_floquet_multipliers(law, chain, orbit, config);
+  } catch (const NumericalError&) {
+    // On a stable orbit every |μ| = 1: no modulus gap, and ARPACK may converge none. Automatic
+    // then pays for the dense method where it is affordable, and says so.
+    FloquetSpectrum s = floquet_stability(law, chain, orbit, config.tolerance);
+    s.method = "dense (ARPACK converged none)";
+    return s;
+  }
 }
 
 }  // namespace granular

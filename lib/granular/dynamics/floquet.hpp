@@ -42,6 +42,10 @@ struct FloquetConfig {
   FloquetMethod method = FloquetMethod::automatic;
   /// automatic: dense up to this N (2N tangent integrations and a 2N × 2N dgeev), ARPACK beyond.
   std::size_t max_dense_beads = 1000;
+  /// automatic: when ARPACK converges no multiplier (stable orbits, where every |μ| = 1), the dense
+  /// method after all, up to this N (its 2N × 2N dgeev: ~4 s per point at N = 1001); beyond, the
+  /// NumericalError stands.
+  std::size_t max_fallback_beads = 3000;
   int multipliers = 16;  ///< ARPACK: how many of the largest |μ| (1 … 2N − 3)
   /// ARPACK: Krylov basis size (ncv); 0: max(2 multipliers + 1, 40), at most 2N.
   int subspace = 0;
@@ -59,7 +63,8 @@ struct FloquetSpectrum {
   /// The eigenvalues of the monodromy matrix by |μ| descending: all 2N (dense) or the k of largest
   /// modulus (ARPACK; k + 1 when a complex pair straddles the k-th)
   std::vector<std::complex<double>> multipliers;
-  std::string method = "dense";    ///< "dense" or "arpack": which computed them
+  /// "dense", "arpack", or "dense (ARPACK converged none)" (automatic's fallback): which computed them
+  std::string method = "dense";
   long operator_applications = 0;  ///< tangent integrations of one period (2N for dense)
   int restarts = 0;                ///< ARPACK's implicit restarts (0 for dense)
   /// false when ARPACK ran out of restarts with fewer than k multipliers converged: the verdict
@@ -105,7 +110,8 @@ FloquetSpectrum largest_floquet_multipliers(const ForceLaw& law, const Chain& ch
 FloquetSpectrum floquet_stability(const ForceLaw& law, const Chain& chain, const PeriodicOrbit& orbit,
                                   double tolerance = 1e-6);
 
-/// Dense or ARPACK by config.method (automatic: by N against config.max_dense_beads).
+/// Dense or ARPACK by config.method (automatic: by N against config.max_dense_beads, and dense again
+/// up to config.max_fallback_beads when ARPACK converges no multiplier).
 FloquetSpectrum floquet_stability(const ForceLaw& law, const Chain& chain, const PeriodicOrbit& orbit,
                                   const FloquetConfig& config);
 
