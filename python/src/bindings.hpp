@@ -10,6 +10,7 @@
 #include <string>
 #include <type_traits>
 #include <utility>
+#include <variant>
 #include <vector>
 
 #include <pybind11/numpy.h>
@@ -23,6 +24,7 @@
 #include "granular/model/disorder.hpp"
 #include "granular/model/quasiperiodic.hpp"
 #include "granular/model/selected_chain.hpp"
+#include "granular/parameter_table.hpp"
 
 namespace granular::python {
 
@@ -37,6 +39,26 @@ py::class_<C> config_class(py::module_& m, const char* name, const char* names, 
   std::istringstream words(names);
   std::string field;
   ((words >> field, c.def_readwrite(field.c_str(), members)), ...);
+  return c;
+}
+
+/// A config struct whose parameters the library describes in a table (parameter_table.hpp): an
+/// attribute per parameter that sets a field, named as the library names it, and `_parameters`:
+/// (name, keyword, help) of every row, other parameters in the help told as keywords.
+template <class C>
+py::class_<C> table_class(py::module_& m, const char* name, const ParameterTable<C>& table) {
+  py::class_<C> c(m, name);
+  c.def(py::init<>());
+  py::list described;
+  for (const Parameter<C>& p : table) {
+    std::visit(
+        [&]<class Field>(Field field) {
+          if constexpr (!std::is_same_v<Field, std::monostate>) c.def_readwrite(p.name.c_str(), field);
+        },
+        p.field);
+    described.append(py::make_tuple(p.name, word_of(p), tell_parameters(p.help, front_end_word)));
+  }
+  c.attr("_parameters") = described;
   return c;
 }
 

@@ -173,20 +173,11 @@ py::dict exponent_table(const std::vector<std::string>& chains, const std::vecto
 }  // namespace
 
 void bind_dynamics(py::module_& m) {
-  using T = TransportChoices;
-  config_class(m, "TransportChoices",
-               "alpha beta site centre duration time_step integrator force_law samples sampling fit_begin fit_end "
-               "fit_step t_star kappa bootstrap active_window window_threshold reference_max_step max_energy_error "
-               "energy_guard",
-               &T::alpha, &T::beta, &T::site, &T::centre, &T::duration, &T::time_step, &T::integrator, &T::force_law,
-               &T::samples, &T::sampling, &T::fit_begin, &T::fit_end, &T::fit_step, &T::t_star, &T::kappa, &T::bootstrap,
-               &T::active_window, &T::window_threshold, &T::reference_max_step, &T::max_energy_error, &T::energy_guard);
+  table_class(m, "TransportChoices", transport_parameters());
   m.attr("paper_beta") = paper_beta;
   m.attr("_paper_table") = GRANULAR_SOURCE_DIR "/data/paper_table1_gamma.csv";  // compare_paper=True
-  using B = BeyondChoices;
-  config_class(m, "BeyondChoices", "damping_time kk_gamma mle renormalize deviation_samples", &B::damping_time,
-               &B::kk_gamma, &B::mle, &B::renormalize, &B::deviation_samples);
-  config_class(m, "ModeKick", "mode near_khz energy", &ModeKick::mode, &ModeKick::near_khz, &ModeKick::energy);
+  table_class(m, "BeyondChoices", beyond_parameters());
+  table_class(m, "ModeKick", mode_kick_parameters());
   using D = SpreadingRunConfig;  // granular.spreading's observers (observers.cpp's settings); none: None
   config_class(m, "SpreadingRunConfig", "forces energy_map spectrum", &D::forces, &D::energy_map, &D::spectrum);
   using R = ChainRecipe;

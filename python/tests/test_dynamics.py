@@ -1,7 +1,9 @@
 """granular.spreading, granular.transport and granular.exponent_table: identical numbers to the
 spreading and exponents tools on the same chains and seeds, and the conservation law the
 integrator must keep."""
+import inspect
 import json
+import re
 
 import numpy as np
 import pytest
@@ -260,3 +262,27 @@ def test_exponent_table_with_mle_equals_the_exponents_tool(tools):
     case = table.metadata["cases"][0]
     assert case["mle"] == meta["cases"][0]["mle"] and case["mle"]["X1_at_T_per_s"] == table.column("mle")[0]
     assert without_process_keys(table.metadata) == without_process_keys(meta)
+
+
+def _keywords(table, skip=()):
+    """The keywords of a library parameter table (granular._core.X._parameters) that a function takes."""
+    return [word for name, word, _ in table._parameters if name not in skip]
+
+
+@pytest.mark.parametrize("function, tables", [
+    (gr.spreading, [(gr._core.TransportChoices, ("fit_begin", "fit_end")), (gr._core.BeyondChoices, ()),
+                    (gr._core.ModeKick, ())]),
+    (gr.transport, [(gr._core.TransportChoices, ("fit_begin", "fit_end")),
+                    (gr._core.BeyondChoices, ("deviation_samples",))]),
+    (gr.exponent_table, [(gr._core.TransportChoices, ("fit_begin", "fit_end")),
+                         (gr._core.BeyondChoices, ("deviation_samples",))]),
+])
+def test_every_parameter_of_the_library_tables_is_a_documented_keyword(function, tables):
+    """The library describes each choice once (parameter_table.hpp); the tools make their flags of it.
+    A parameter added there must reach Python too: as a keyword, documented in the docstring."""
+    taken = inspect.signature(function).parameters
+    for table, skip in tables:
+        for word in _keywords(table, skip):
+            assert word in taken, f"{function.__name__} takes no keyword {word}"
+            assert re.search(rf"(?<![\w-]){word}(?![\w-])", function.__doc__), \
+                f"{function.__name__}'s docstring does not explain {word}"

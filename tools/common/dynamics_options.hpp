@@ -32,14 +32,15 @@ struct BeyondOptions : BeyondChoices {
   std::string deviation;  ///< CSV of the deviation-vector distribution; empty = none
 };
 
-/// --mle (with `help`: what the tool writes) and --renormalize.
-inline void add_mle_options(CLI::App& app, BeyondOptions& o, const std::string& help) {
-  app.add_flag("--mle", o.mle, help);
-  add_option(app, "--renormalize", o.renormalize, "steps between renormalizations of the deviation vector");
+/// --mle (its help ending in `output`: what the tool writes of it) and --renormalize.
+inline void add_mle_options(CLI::App& app, BeyondOptions& o, const std::string& output) {
+  auto options = add_parameters<BeyondChoices>(app, o, beyond_parameters(),
+                                               {.except = {"damping_time", "kk_gamma", "deviation_samples"}});
+  options["mle"]->description(options["mle"]->get_description() + ": " + output);
 }
 
 inline void add_lyapunov_options(CLI::App& app, BeyondOptions& o) {
-  add_mle_options(app, o, "maximal Lyapunov exponent by the tangent map: column mle = X1(t) [1/s] (ensemble: its mean)");
+  add_mle_options(app, o, "column mle = X1(t) [1/s] (ensemble: its mean)");
   app.add_option("--deviation", o.deviation, "CSV t,site,share: the deviation vector along the chain (with --mle)");
   add_option(app, "--deviation-samples", o.deviation_samples, "uniform times of --deviation");
 }
@@ -61,42 +62,14 @@ struct DynamicsOptions : TransportChoices, BeyondOptions {
   std::string beta_text = "8e-3", fit_text = "4e-3:1e-2", active_window_text = "on";
 };
 
-/// The kick's flags, and the run's: where the kick lands, the scheme, the samples, the fit and the guards.
+/// The kick's flags, and the run's: where the kick lands, the scheme, the samples, the fit, the
+/// guards and damping (the library's table: transport_parameters, beyond_parameters).
 inline void add_dynamics_options(CLI::App& app, DynamicsOptions& o) {
-  using O = DynamicsOptions;
-  add_flags<O>(
-      app, o,
-      {{"--alpha", &DynamicsOptions::alpha, "displacement kick [m] (also what --beta match matches)"},
-       {"--beta", &DynamicsOptions::beta_text,
-        "velocity kick [m/s] (the paper's 8e-3 for every F0), or 'match': the energy of --alpha on each chain"},
-       {"--site", &O::site, "kicked bead n0, 1..N (0 = the centre, (N+1)/2)"},
-       {"--centre", &O::centre,
-        "m2 about the kicked 'site' (the paper's n_c) or the energy 'centroid'; both are written"},
-       {"--T", &O::duration, "duration [s], a whole number of --dt"},
-       {"--dt", &O::time_step,
-        "time step tau [s]; must meet tau <= h*/omega_max (docs/physics.md, 'Time step'): a larger one is "
-        "refused, naming the largest stable tau; by default 1e-6, or 1e-6/k (smallest integer k) where 1e-6 "
-        "is past a sixth of that limit"},
-       {"--integrator", &O::integrator,
-        "saba2c | saba2 | aba864 | srkn14a | reference (Odeint RKF78) | auto: the cheapest scheme and step "
-        "keeping the energy error at SABA2C's at 1e-6 s: SRKN14a at 5e-6 s where no contact can open, else "
-        "SABA2C (docs/physics.md, 'Chain length for long times'); no --dt with it"},
-       {"--force-law", &O::force_law, "hertz | fpu | linear"},
-       {"--samples", &O::samples, "log-spaced sample times (tau..T) outside the fit window"},
-       {"--sampling", &O::sampling, "log (tau..T) | uniform (0..T) for those samples"},
-       {"--fit", &O::fit_text, "fit window start:stop [s] of gamma (m2 ~ t^gamma) and eta (P^-1 ~ t^-eta)"},
-       {"--fit-step", &O::fit_step, "spacing of the samples inside the fit window [s], a multiple of --dt"},
-       {"--t-star", &O::t_star, "t*: from here on, |L_d - gamma| >= --kappa means 'not a power law' [s]"},
-       {"--kappa", &O::kappa, "largest |L_d - gamma| of a power law after --t-star"},
-       {"--bootstrap", &O::bootstrap, "resamples of the realization bootstrap of gamma and eta"},
-       {"--active-window", &O::active_window_text, "on | off: integrate only where the wave has arrived"},
-       {"--window-threshold", &O::window_threshold, "relative kinetic energy that grows the window"},
-       {"--reference-max-step", &O::reference_max_step, "largest step of --integrator reference [s], 0 = none"},
-       {"--max-energy-error", &O::max_energy_error, "guard: relative energy error that stops (or is reported), 0 = off"},
-       {"--energy-guard", &O::energy_guard, "stop | warn: what passing --max-energy-error does"},
-       {"--damping-time", &O::damping_time, "on-site viscous damping time tau_d [s] of -(m/tau_d) du/dt; 0 = none"},
-       {"--kk-gamma", &O::kk_gamma,
-        "Kuwabara-Kono contact damping gamma_KK [s]: bond force A[d]^{3/2} + gamma A [d]^{1/2} dd/dt; 0 = none"}});
+  add_parameters<TransportChoices>(
+      app, o, transport_parameters(),
+      {.except = {"fit_begin", "fit_end"},
+       .text = {{"beta", &o.beta_text}, {"fit", &o.fit_text}, {"active_window", &o.active_window_text}}});
+  add_parameters<BeyondChoices>(app, o, beyond_parameters(), {.except = {"mle", "renormalize", "deviation_samples"}});
 }
 
 /// Fills `c` from the options: granular::apply(TransportChoices) once the three command-line
@@ -130,14 +103,7 @@ nlohmann::json validate_and_settle(Cases& cases, const DynamicsOptions& o, bool 
 }
 
 /// The flags of a mode kick, straight into the library's ModeKick.
-inline void add_mode_kick_options(CLI::App& app, ModeKick& o) {
-  add_flags<ModeKick>(
-      app, o,
-      {{"--mode", &ModeKick::mode, "--ic mode: the linear mode number K, 1..N by increasing frequency", false},
-       {"--mode-khz", &ModeKick::near_khz, "--ic mode: the linear mode nearest this frequency [kHz]", false},
-       {"--energy", &ModeKick::energy,
-        "--ic mode: total energy of the initial state [J] (without it --alpha is the largest |u_n|)", false}});
-}
+inline void add_mode_kick_options(CLI::App& app, ModeKick& o) { add_parameters(app, o, mode_kick_parameters()); }
 
 /// Into `c`, whose mode kicks (if `kicks` holds one) use it: only a mode kick may use these options.
 inline void apply(const ModeKick& o, const std::vector<Kick>& kicks, TransportCase& c) {

@@ -42,8 +42,8 @@ inline void add_exponent_choices(CLI::App& app, ExponentChoices& o, BeyondOption
                  "R realizations (R phases for --quasi without --phase)");
   add_mode_kick_options(app, o.mode);
   add_mle_options(app, beyond,
-                  "maximal Lyapunov exponent by the tangent map: X1 at T [1/s], its ensemble mean (columns mle, "
-                  "mle_real_err: its standard error, mle_sd: spread over realizations) and <X1(t)> in the curves");
+                  "X1 at T, its ensemble mean (columns mle, mle_real_err: its standard error, mle_sd: spread over "
+                  "realizations) and <X1(t)> in the curves");
 }
 
 /// The chains and kicks of the study into `config` (config.base then holds the mode kick).

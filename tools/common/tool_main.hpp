@@ -3,7 +3,8 @@
 // stderr and an exit code (2 bad input, 1 I/O, 3 numerical failure, 130 interrupted: the
 // message says how to resume); --help and --version exit 0. The body only runs after every
 // option parsed. Library errors name parameters in the library's vocabulary (`time_step`); here
-// they are told in the flag the user typed (`--dt`). Flags may be declared as table rows (Flag).
+// they are told in the flag the user typed (`--dt`). A library table of parameters becomes
+// options by add_parameters.
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -12,8 +13,10 @@
 #include <iterator>
 #include <map>
 #include <optional>
+#include <set>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <variant>
 #include <vector>
 
@@ -28,6 +31,7 @@
 #include "granular/io/shell_quote.hpp"
 #include "granular/number_format.hpp"
 #include "granular/parameter_names.hpp"
+#include "granular/parameter_table.hpp"
 
 namespace granular::tool {
 
@@ -82,27 +86,67 @@ CLI::Option* add_integer(CLI::App& app, const std::string& name, Integer& value,
   return add_option(app, name, value, description)->transform(CLI::Validator(digits, "", "integer notation"));
 }
 
-/// A flag as a row of a table: its name, the option field it sets, its help.
-template <class Options>
-struct Flag {
-  std::string name;
-  std::variant<double Options::*, long long Options::*, long Options::*, std::string Options::*,
-               std::optional<double> Options::*>
-      field;
-  std::string help;
-  bool shows_default = true;  ///< --help shows the default value
+/// The option that stands for a library parameter by the usual rule: "--" and its front-end
+/// word, '_' as '-' (`time_step` → --dt, `fit_step` → --fit-step).
+inline std::string option_name(const std::string& word) {
+  std::string flag = "--" + word;
+  std::replace(flag.begin() + 2, flag.end(), '_', '-');
+  return flag;
+}
+
+/// The flags that stand for a parameter where the usual rule does not give them (a table row's
+/// own word: `near_khz` → --mode-khz), as add_parameters registered them.
+inline std::map<std::string, std::string>& registered_flags() {
+  static std::map<std::string, std::string> flags;
+  return flags;
+}
+
+/// What a tool takes of a parameter table: `only` these (none: all) but `except` (parameters it
+/// does not take);
+/// `text` binds a parameter the tool reads in a form of its own (--fit start:stop) to its text;
+/// `flags` names the flag for a parameter where the usual rule is wrong.
+struct Shown {
+  std::set<std::string> only{}, except{};
+  std::map<std::string, std::string*> text{};
+  std::map<std::string, std::string> flags{};
 };
 
-/// Registers every row of `flags` on `app`, bound to its field of `o`.
-template <class Options>
-void add_flags(CLI::App& app, Options& o, const std::vector<Flag<Options>>& flags) {
-  for (const Flag<Options>& f : flags)
-    std::visit(
-        [&](auto field) {
-          CLI::Option* option = app.add_option(f.name, o.*field, f.help);
-          if (f.shows_default) option->capture_default_str();
+/// A table row's --help line: its help, each parameter it names told as this tool's flag.
+template <class Choices>
+std::string help_of(const ParameterTable<Choices>& table, const std::string& name, const Shown& shown = {}) {
+  return tell_parameters(parameter(table, name).help, [&](const std::string& p) {
+    const auto it = shown.flags.find(p);
+    return it != shown.flags.end() ? it->second : option_name(front_end_word(p));
+  });
+}
+
+/// Registers an option for every row of `table` (parameter_table.hpp) that is shown, bound to its
+/// field of `o` (or its text: Shown::text): a flag for a bool, an integer that takes scientific
+/// notation for a long long, a number or word otherwise. Returns the options by parameter name.
+template <class Choices>
+std::map<std::string, CLI::Option*> add_parameters(CLI::App& app, Choices& o, const ParameterTable<Choices>& table,
+                                                   const Shown& shown = {}) {
+  std::map<std::string, CLI::Option*> options;
+  for (const Parameter<Choices>& p : table) {
+    const auto text = shown.text.find(p.name);
+    const bool own = text != shown.text.end();
+    if ((!shown.only.empty() && !shown.only.contains(p.name)) || shown.except.contains(p.name)) continue;
+    if (p.field.index() == 0 && !own) continue;
+    const std::string flag = option_name(word_of(p)), help = help_of(table, p.name, shown);
+    if (flag != option_name(front_end_word(p.name))) registered_flags()[p.name] = flag;
+    CLI::Option* option = std::visit(
+        [&]<class Field>(Field field) -> CLI::Option* {
+          if (own) return app.add_option(flag, *text->second, help);
+          if constexpr (std::is_same_v<Field, std::monostate>) return nullptr;
+          else if constexpr (std::is_same_v<Field, bool Choices::*>) return app.add_flag(flag, o.*field, help);
+          else if constexpr (std::is_same_v<Field, long long Choices::*>) return add_integer(app, flag, o.*field, help);
+          else return app.add_option(flag, o.*field, help);
         },
-        f.field);
+        p.field);
+    if (p.shows_default && (own || !std::holds_alternative<bool Choices::*>(p.field))) option->capture_default_str();
+    options[p.name] = option;
+  }
+  return options;
 }
 
 /// The flag of `app` that a library parameter stands for ("" when none: the message is kept).
@@ -110,8 +154,8 @@ inline std::string flag_for(const CLI::App& app, const std::string& parameter,
                             const std::map<std::string, std::string>& overrides) {
   if (parameter.empty() || parameter.starts_with("--")) return parameter;
   if (auto it = overrides.find(parameter); it != overrides.end()) return it->second;
-  std::string flag = "--" + parameter;
-  std::replace(flag.begin() + 2, flag.end(), '_', '-');
+  if (auto it = registered_flags().find(parameter); it != registered_flags().end()) return it->second;
+  const std::string flag = option_name(parameter);
   if (app.get_option_no_throw(flag)) return flag;
   if (const std::string word = "--" + front_end_word(parameter); app.get_option_no_throw(word)) return word;  // --F0
   return "";

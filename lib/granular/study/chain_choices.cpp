@@ -6,6 +6,45 @@
 
 namespace granular {
 
+const ParameterTable<ChainChoices>& chain_parameters() {
+  using O = ChainChoices;
+  static const ParameterTable<O> table{
+      {"disorder", &O::disorder, "h | A | RDM1 | RDM2 (homogeneous, Anderson, random dimer 1/2)"},
+      {"xi", &O::xi, "size ratio R2/R1 in (0,1]"},
+      {"q", &O::q, "probability of a type-1 bead (A), dimer 11 (RDM1) or dimer 12 (RDM2), in [0,1]"},
+      {"N", &O::n, "beads in the chain (>= 2)"},
+      {"F0", &O::f0, "static precompression [N]"},
+      {"R1", &O::r1, "radius of type-1 beads [m] (steel beads and steel walls)"},
+      {"walls", &O::walls,
+       "flat (the paper's) | sphere: fixed spheres of the end beads' radius and material, the textbook fixed-end "
+       "lattice"},
+      {"seed", &O::seed, "random seed"},
+      {"realization", &O::realization, "which realization of the seed (0-based)"},
+      {"config", &O::config, "file with one bead type (1 or 2) per line, '#' comments; overrides `disorder`/`q`/`N`",
+       false},
+      {"radii", &O::radii, "file with one radius [m] per line, '#' comments; overrides `disorder`/`q`/`N`/`xi`", false},
+      {"types", &O::types,
+       "k bead types 'R1:P1,R2:P2,...' (radius [m]: probability) drawn by `disorder` A (each bead), RDM1 (each "
+       "dimer) or RDM2 (two types); overrides `q`/`xi`/`R1`",
+       false},
+      {"type_masses", &O::type_masses, "as `types` with masses [kg] of steel spheres: 'M1:P1,M2:P2,...'", false},
+      {"polydisperse", &O::polydisperse,
+       "radii drawn per bead and realization: uniform:LO:HI or normal:MEAN:SD:MIN (truncated below at MIN) [m]", false},
+      {"quasi", &O::quasi,
+       "quasiperiodic chain: s1 (on-site springs), s2 (masses) or cylinders (crossing angles), modulated by 1 + "
+       "modulation cos(2 pi ratio n + phase); R1 is the beads' radius",
+       false},
+      {"modulation", &O::modulation, "`quasi`: relative modulation strength lambda, |lambda| < 1"},
+      {"ratio", &O::ratio, "`quasi`: the incommensurate ratio beta > 0: golden, p/q or a number"},
+      {"phase", &O::phase,
+       "`quasi`: the phase [rad] (default: drawn uniformly in [0, 2 pi) per `seed` and `realization`)", false},
+      {"angle", &O::angle, "`quasi` cylinders: mean crossing angle alpha0 [degrees] in (0, 180)"},
+      {"k0", &O::k0, "`quasi` s1: mean on-site stiffness in units of the bond stiffness K"},
+      {"k0_n_per_m", &O::k0_n_per_m,
+       "`quasi` s1: mean on-site stiffness [N/m] instead of `k0` (0: use `k0`); allows `F0` 0"}};
+  return table;
+}
+
 std::optional<Quasiperiodic> quasiperiodic(const ChainChoices& o) {
   if (o.quasi.empty()) return std::nullopt;
   return Quasiperiodic{.kind = parse_quasi_kind(o.quasi),

@@ -13,6 +13,7 @@
 #include "granular/model/chain_recipe.hpp"
 #include "granular/model/named_chains.hpp"
 #include "granular/model/quasiperiodic.hpp"
+#include "granular/parameter_table.hpp"
 
 namespace granular {
 
@@ -40,6 +41,11 @@ struct ChainChoices {
   std::optional<double> phase;   ///< its phase [rad]; none: drawn per seed and realization
   bool auto_n = false;           ///< N sized later for long times, the chain drawn from its centre
 };
+
+/// Each choice's meaning and units (parameter_table.hpp), in the order front ends show them: the
+/// random two-type draw, the files, the bead distributions, the quasiperiodic chain. Not `auto_n`
+/// (a front end's own word for N).
+const ParameterTable<ChainChoices>& chain_parameters();
 
 /// The quasiperiodic chain of the choices, if `quasi` is given. Throws InvalidInput naming
 /// `quasi` or `ratio`.

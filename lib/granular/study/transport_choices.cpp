@@ -17,6 +17,68 @@ double finite_non_negative(double value, const char* name) {
 
 }  // namespace
 
+const ParameterTable<TransportChoices>& transport_parameters() {
+  using O = TransportChoices;
+  static const ParameterTable<O> table{
+      {"alpha", &O::alpha, "displacement kick [m] (also what a matched `beta` matches)"},
+      {"beta", &O::beta,
+       "velocity kick [m/s] (the paper's 8e-3 for every F0), or 'match': the energy of `alpha` on each chain"},
+      {"site", &O::site, "kicked bead n0, 1..N (0 = the centre, (N+1)/2)"},
+      {"centre", &O::centre,
+       "m2 about the kicked 'site' (the paper's n_c) or the energy 'centroid'; both are written, this one gives "
+       "gamma"},
+      {"duration", &O::duration, "duration T [s], a whole number of `time_step`"},
+      {"time_step", &O::time_step,
+       "time step tau [s]; must meet tau <= h*/omega_max (docs/physics.md, 'Time step'): a larger one is refused, "
+       "naming the largest stable tau; by default 1e-6, or 1e-6/k (smallest integer k) where 1e-6 is past a sixth "
+       "of that limit; the rule and its numbers are in the JSON (time_step_rule)"},
+      {"integrator", &O::integrator,
+       "saba2c | saba2 | aba864 | srkn14a | reference (Odeint RKF78) | auto: the cheapest scheme and step keeping "
+       "the energy error at SABA2C's at 1e-6 s: SRKN14a at 5e-6 s where no contact can open, else SABA2C "
+       "(docs/physics.md, 'Chain length for long times'); no `time_step` with it"},
+      {"force_law", &O::force_law, "hertz | fpu | linear"},
+      {"samples", &O::samples, "log-spaced sample times (tau..T) outside the fit window"},
+      {"sampling", &O::sampling, "log (tau..T) | uniform (0..T) for those samples"},
+      {"fit", {}, "fit window start:stop [s] of gamma (m2 ~ t^gamma) and eta (P^-1 ~ t^-eta)"},
+      {"fit_begin", &O::fit_begin, "start of the fit window [s]"},
+      {"fit_end", &O::fit_end, "end of the fit window [s]"},
+      {"fit_step", &O::fit_step, "spacing of the samples inside the fit window [s], a multiple of `time_step`"},
+      {"t_star", &O::t_star, "t*: from here on, |L_d - gamma| >= `kappa` means 'not a power law' [s]"},
+      {"kappa", &O::kappa, "largest |L_d - gamma| of a power law after `t_star`"},
+      {"bootstrap", &O::bootstrap, "resamples of the realization bootstrap of gamma and eta"},
+      {"active_window", &O::active_window,
+       "on | off: integrate only where the wave has arrived (results equal the whole chain's)"},
+      {"window_threshold", &O::window_threshold, "relative kinetic energy that grows the window"},
+      {"reference_max_step", &O::reference_max_step, "largest step of the reference integrator [s], 0 = none"},
+      {"max_energy_error", &O::max_energy_error, "guard: relative energy error that stops (or is reported), 0 = off"},
+      {"energy_guard", &O::energy_guard, "stop | warn: what passing `max_energy_error` does"}};
+  return table;
+}
+
+const ParameterTable<BeyondChoices>& beyond_parameters() {
+  using O = BeyondChoices;
+  static const ParameterTable<O> table{
+      {"damping_time", &O::damping_time, "on-site viscous damping time tau_d [s] of -(m/tau_d) du/dt; 0 = none"},
+      {"kk_gamma", &O::kk_gamma,
+       "Kuwabara-Kono contact damping gamma_KK [s]: bond force A[d]^{3/2} + gamma A [d]^{1/2} dd/dt; 0 = none"},
+      {"mle", &O::mle,
+       "maximal Lyapunov exponent X1(t) [1/s] by the tangent map of the same scheme (conservative runs: not with "
+       "damping or the reference integrator)"},
+      {"renormalize", &O::renormalize, "steps between renormalizations of the deviation vector"},
+      {"deviation_samples", &O::deviation_samples,
+       "uniform times (0..T) of the deviation vector's distribution along the chain (with `mle`)"}};
+  return table;
+}
+
+const ParameterTable<ModeKick>& mode_kick_parameters() {
+  static const ParameterTable<ModeKick> table{
+      {"mode", &ModeKick::mode, "a mode kick: the linear mode number K, 1..N by increasing frequency", false},
+      {"near_khz", &ModeKick::near_khz, "a mode kick: the linear mode nearest this frequency [kHz]", false, "mode_khz"},
+      {"energy", &ModeKick::energy,
+       "a mode kick: total energy of the initial state [J] (without it `alpha` is the largest |u_n|)", false}};
+  return table;
+}
+
 bool take_automatic_integrator(TransportChoices& choices) {
   if (choices.integrator != "auto") return false;
   choices.integrator = "saba2c";

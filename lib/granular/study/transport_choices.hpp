@@ -8,6 +8,7 @@
 #include <optional>
 #include <string>
 
+#include "granular/parameter_table.hpp"
 #include "granular/study/transport_study.hpp"
 
 namespace granular {
@@ -32,6 +33,10 @@ struct TransportChoices {
   double max_energy_error = 1e-3;       ///< finite, ≥ 0; 0 = unwatched
   std::string energy_guard = "stop";    ///< stop | warn
 };
+
+/// Each choice's meaning and units (parameter_table.hpp): what front ends make their options,
+/// attributes and help of. `fit` is the window [fit_begin, fit_end] in a front end's own form.
+const ParameterTable<TransportChoices>& transport_parameters();
 
 /// Fills `c` from the choices: everything but the chain (disorder, q, ξ, N, F0, R1, seed,
 /// realizations) and the kick kind. Needs c.chain (its size, for `site`). Leaves c.fit true. Throws
@@ -60,6 +65,12 @@ struct BeyondChoices {
   long long renormalize = 10;             ///< steps between renormalizations (≥ 1)
   long long deviation_samples = 0;  ///< times of the deviation vector's distribution (0 = none, else ≥ 2; needs mle)
 };
+
+/// Each choice's meaning and units, as transport_parameters.
+const ParameterTable<BeyondChoices>& beyond_parameters();
+
+/// The fields of a mode kick a front end sets (not `amplitude`: a run's `alpha` gives it).
+const ParameterTable<ModeKick>& mode_kick_parameters();
 
 /// Sets d.integration.damping, d.integration.lyapunov and d.deviation_samples. Throws InvalidInput naming the choice
 /// (`damping_time`, `kk_gamma`, `renormalize`, `deviation_samples`).

@@ -1,0 +1,17 @@
+#include "granular/parameter_table.hpp"
+
+namespace granular {
+
+std::string tell_parameters(const std::string& help, const std::function<std::string(const std::string&)>& told) {
+  std::string out;
+  std::size_t at = 0;
+  for (std::size_t open; (open = help.find('`', at)) != std::string::npos;) {
+    const std::size_t close = help.find('`', open + 1);
+    if (close == std::string::npos) break;  // an unpaired backtick is text
+    out += help.substr(at, open - at) + told(help.substr(open + 1, close - open - 1));
+    at = close + 1;
+  }
+  return out + help.substr(at);
+}
+
+}  // namespace granular
