@@ -107,5 +107,5 @@ int main(int argc, char** argv) {
     meta.write(paths.json, files);  // the JSON first, then the CSVs: never a CSV without its metadata
     for (const auto& log : case_checkpoints(output + ".checkpoint", cells.size())) CheckpointLog::remove_all(log);
   };
-  return tool::run(app, argc, argv, body, {{"disorder", "--chains"}, {"lyapunov", "--mle"}, {"near_khz", "--mode-khz"}});
+  return tool::run(app, argc, argv, body, {{"disorder", "--chains"}, {"lyapunov", "--mle"}});
 }

@@ -92,8 +92,5 @@ int main(int argc, char** argv) {
                      files.commit();
                      if (ensemble) CheckpointLog::remove_all(paths.checkpoint);
                    },
-                   {{"spectrum_source", "--spectrum-of"},
-                    {"lyapunov", "--mle"},
-                    {"near_khz", "--mode-khz"},
-                    {"amplitude", "--alpha"}});
+                   {{"spectrum_source", "--spectrum-of"}, {"lyapunov", "--mle"}, {"amplitude", "--alpha"}});
 }

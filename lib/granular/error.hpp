@@ -19,7 +19,9 @@ struct Error {
 
 /// A parameter or input file is invalid. The message names the parameter in the library's
 /// vocabulary (`time_step`, `N`, `q`), its value and the rule; front ends translate the name into
-/// their own (`--dt`, the keyword `dt=`), which is why it is also kept apart.
+/// their own (`--dt`, the keyword `dt=`), which is why it is also kept apart. Other parameters the
+/// rule names are written in backticks ("only with `mle`"), which front ends tell in their words
+/// too (parameter_table.hpp: tell_parameters).
 struct InvalidInput : std::invalid_argument, Error {
   /// `parameter` is the name, `problem` the rest, starting with its own separator (" 0: must be
   /// > 0", ": no values"); what() is their concatenation.

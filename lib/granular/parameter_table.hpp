@@ -23,9 +23,8 @@ struct Parameter {
   using Field = std::variant<std::monostate, double Choices::*, long long Choices::*, long Choices::*,
                              std::string Choices::*, bool Choices::*, std::optional<double> Choices::*>;
 
-  Parameter(std::string name, Field field, std::string help, bool shows_default = true, std::string word = {})
-      : name(std::move(name)), field(field), help(std::move(help)), shows_default(shows_default),
-        word(std::move(word)) {}
+  Parameter(std::string name, Field field, std::string help, bool shows_default = true)
+      : name(std::move(name)), field(field), help(std::move(help)), shows_default(shows_default) {}
 
   std::string name;  ///< the library's name, the one its messages use (`time_step`)
   Field field;
@@ -33,7 +32,6 @@ struct Parameter {
   /// end's word for it (--dt, dt).
   std::string help;
   bool shows_default = true;  ///< whether the default says something (not a "none" sentinel)
-  std::string word;           ///< the front ends' word where it is not front_end_word(name)
 };
 
 template <class Choices>
@@ -42,7 +40,7 @@ using ParameterTable = std::vector<Parameter<Choices>>;
 /// The word front ends use for `p` (a tool's option is "--" and it, '_' as '-'; a Python keyword is it).
 template <class Choices>
 std::string word_of(const Parameter<Choices>& p) {
-  return p.word.empty() ? front_end_word(p.name) : p.word;
+  return front_end_word(p.name);
 }
 
 /// The row of `table` named `name`. Throws std::out_of_range when there is none (a programming error).

@@ -151,7 +151,7 @@ def spreading(chain, *, ic="displacement", alpha=1e-7, beta=_core.paper_beta, si
     observe.spectrum = spectrum if spectral_density else None
     case = _core.TransportCase()  # one realization: the chain's
     case.dynamics, case.realizations, case.profile_realizations = observe, 1, 0
-    case.mode.mode, case.mode.near_khz, case.mode.energy = mode, mode_khz, energy
+    case.mode.mode, case.mode.mode_khz, case.mode.energy = mode, mode_khz, energy
     case.kick = ic
     raw = _core._spreading(chain, case, choices, beyond, dt is not None, _run(progress=progress))
     return _spreading_run(raw, chain.N, observe, deviation_samples)

@@ -45,8 +45,8 @@ py::dict spreading(const PyChain& chain, TransportCase c, const TransportChoices
   c.chain = chain.recipe;
   const bool automatic = apply_choices(choices, beyond, c);
   SpreadingRunConfig& d = c.dynamics;
-  fit_within_duration(c);  // a window beyond T: no exponents
-  if (chosen(c.mode) && c.kick != Kick::mode) bad_value("mode", ": mode, mode_khz and energy only with ic='mode'");
+  fit_within_duration(c);                          // a window beyond T: no exponents
+  granular::apply(ModeKick(c.mode), {c.kick}, c);  // only a mode kick takes mode, mode_khz, energy
   // τ by the stability rule on the chain's recipe: every realization of a random chain (as the
   // tool's --disorder), this very chain for a given one (as the tool's --config/--radii); a dt past
   // it named before anything judged on its grid.

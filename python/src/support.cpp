@@ -18,6 +18,7 @@
 #include "granular/number_format.hpp"
 #include "granular/parallel/mpi_context.hpp"
 #include "granular/parameter_names.hpp"
+#include "granular/parameter_table.hpp"
 
 namespace granular::python {
 
@@ -84,8 +85,9 @@ void bind_errors(py::module_& m) {
     try {
       if (p) std::rethrow_exception(p);
     } catch (const InvalidInput& e) {
-      const std::string message =
-          e.parameter().empty() ? keywords_in(e.what()) : keyword_of(e.parameter()) + keywords_in(e.problem());
+      const std::string message =  // other parameters named in `backticks` told as keywords too
+          e.parameter().empty() ? keywords_in(tell_parameters(e.what(), keyword_of))
+                                : keyword_of(e.parameter()) + keywords_in(tell_parameters(e.problem(), keyword_of));
       PyErr_SetString(PyExc_ValueError, message.c_str());
     } catch (const IoError& e) {
       PyErr_SetString(PyExc_OSError, e.what());

@@ -105,14 +105,4 @@ nlohmann::json validate_and_settle(Cases& cases, const DynamicsOptions& o, bool 
 /// The flags of a mode kick, straight into the library's ModeKick.
 inline void add_mode_kick_options(CLI::App& app, ModeKick& o) { add_parameters(app, o, mode_kick_parameters()); }
 
-/// Into `c`, whose mode kicks (if `kicks` holds one) use it: only a mode kick may use these options.
-inline void apply(const ModeKick& o, const std::vector<Kick>& kicks, TransportCase& c) {
-  if (chosen(o) && std::find(kicks.begin(), kicks.end(), Kick::mode) == kicks.end())
-    throw InvalidInput("--mode/--mode-khz/--energy: only with --ic mode");
-  c.mode = o;
-}
-
-/// Into `c` (after the kick kind is set).
-inline void apply(const ModeKick& o, TransportCase& c) { apply(o, {c.kick}, c); }
-
 }  // namespace granular::tool

@@ -68,7 +68,7 @@ inline KickedCase kicked_case(KickedCaseOptions& o, bool ensemble) {
     if (o.chain.auto_n) require_centre_kick(o.dynamics.site);
     c.chain = chain_recipe(o.chain);  // with --N auto, N 3 until sized below
     c.kick = parse_kick(o.ic);
-    apply(o.mode, c);
+    apply(o.mode, {c.kick}, c);
     apply(o.dynamics, c);
     fit_within_duration(c);  // a window beyond T: no exponents, a note
     nlohmann::json rule;

@@ -94,13 +94,6 @@ inline std::string option_name(const std::string& word) {
   return flag;
 }
 
-/// The flags that stand for a parameter where the usual rule does not give them (a table row's
-/// own word: `near_khz` → --mode-khz), as add_parameters registered them.
-inline std::map<std::string, std::string>& registered_flags() {
-  static std::map<std::string, std::string> flags;
-  return flags;
-}
-
 /// What a tool takes of a parameter table: `only` these (none: all) but `except` (parameters it
 /// does not take);
 /// `text` binds a parameter the tool reads in a form of its own (--fit start:stop) to its text;
@@ -133,7 +126,6 @@ std::map<std::string, CLI::Option*> add_parameters(CLI::App& app, Choices& o, co
     if ((!shown.only.empty() && !shown.only.contains(p.name)) || shown.except.contains(p.name)) continue;
     if (p.field.index() == 0 && !own) continue;
     const std::string flag = option_name(word_of(p)), help = help_of(table, p.name, shown);
-    if (flag != option_name(front_end_word(p.name))) registered_flags()[p.name] = flag;
     CLI::Option* option = std::visit(
         [&]<class Field>(Field field) -> CLI::Option* {
           if (own) return app.add_option(flag, *text->second, help);
@@ -154,7 +146,6 @@ inline std::string flag_for(const CLI::App& app, const std::string& parameter,
                             const std::map<std::string, std::string>& overrides) {
   if (parameter.empty() || parameter.starts_with("--")) return parameter;
   if (auto it = overrides.find(parameter); it != overrides.end()) return it->second;
-  if (auto it = registered_flags().find(parameter); it != registered_flags().end()) return it->second;
   const std::string flag = option_name(parameter);
   if (app.get_option_no_throw(flag)) return flag;
   if (const std::string word = "--" + front_end_word(parameter); app.get_option_no_throw(word)) return word;  // --F0
@@ -210,7 +201,12 @@ inline int run(CLI::App& app, int argc, char** argv, const std::function<void()>
     return ok;
   } catch (const InvalidInput& e) {
     const std::string flag = flag_for(app, e.parameter(), overrides);
-    const std::string message = flag.empty() ? std::string(e.what()) : flag + e.problem();
+    const auto told = [&](const std::string& p) {  // parameters the message names in `backticks`
+      const std::string named = flag_for(app, p, overrides);
+      return named.empty() ? p : named;
+    };
+    const std::string message =
+        flag.empty() ? tell_parameters(e.what(), told) : flag + tell_parameters(e.problem(), told);
     std::fprintf(stderr, "%s: error: %s\n", name.c_str(), message.c_str());
     return bad_input;
   } catch (const IoError& e) {

@@ -28,7 +28,7 @@ struct ModeKick {
   double amplitude = 0;  ///< largest |u_n| [m] when energy is 0
 };
 
-/// Throws InvalidInput (naming `mode`, `near_khz`, `energy` or `amplitude`) unless exactly one
+/// Throws InvalidInput (naming `mode`, `mode_khz` (near_khz), `energy` or `amplitude`) unless exactly one
 /// selector and one size are given and make sense for an N-bead chain.
 void validate(const ModeKick& kick, std::size_t beads);
 

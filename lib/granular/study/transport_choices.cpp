@@ -1,5 +1,6 @@
 #include "granular/study/transport_choices.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "granular/dynamics/integrator.hpp"
@@ -73,10 +74,16 @@ const ParameterTable<BeyondChoices>& beyond_parameters() {
 const ParameterTable<ModeKick>& mode_kick_parameters() {
   static const ParameterTable<ModeKick> table{
       {"mode", &ModeKick::mode, "a mode kick: the linear mode number K, 1..N by increasing frequency", false},
-      {"near_khz", &ModeKick::near_khz, "a mode kick: the linear mode nearest this frequency [kHz]", false, "mode_khz"},
+      {"mode_khz", &ModeKick::near_khz, "a mode kick: the linear mode nearest this frequency [kHz]", false},
       {"energy", &ModeKick::energy,
        "a mode kick: total energy of the initial state [J] (without it `alpha` is the largest |u_n|)", false}};
   return table;
+}
+
+void apply(const ModeKick& kick, const std::vector<Kick>& kicks, TransportCase& c) {
+  if (chosen(kick) && std::find(kicks.begin(), kicks.end(), Kick::mode) == kicks.end())
+    throw InvalidInput("`mode`/`mode_khz`/`energy`: only with `ic` mode");
+  c.mode = kick;
 }
 
 bool take_automatic_integrator(TransportChoices& choices) {

@@ -48,8 +48,12 @@ void apply(const TransportChoices& choices, TransportCase& c);
 bool take_automatic_integrator(TransportChoices& choices);
 
 /// Whether any of a mode kick's own fields (mode, near_khz, energy) is set: what only a mode kick
-/// may use (a front end refuses them with another kick).
+/// may use.
 inline bool chosen(const ModeKick& kick) { return kick.mode != 0 || kick.near_khz >= 0 || kick.energy != 0; }
+
+/// Sets c.mode to `kick`. Only a mode kick may use its fields: throws InvalidInput naming them
+/// unless `kicks` (the kicks the case runs: an exponent table runs several) holds Kick::mode.
+void apply(const ModeKick& kick, const std::vector<Kick>& kicks, TransportCase& c);
 
 /// Sets c.fit: whether the fit window ends by T (1e-12 relative slack). A single run or an
 /// ensemble whose window ends past T gives no exponents, only a note (the exponent table refuses
