@@ -1,9 +1,9 @@
 #pragma once
 // The chains and kicks of the exponent table as front ends take them in words — the `exponents`
-// tool's --chains, --ic, its chain of --types / --type-masses / --polydisperse / --quasi named by
-// --chain-name, the keywords of granular.exponent_table — turned into an ExponentTableConfig by
-// one rule. Errors name the choice (`chains`, `ic`, `types_rule`, `chain_name`, or the bead
-// chain's own field); each front end tells it in its own words.
+// tool's chain kinds, kicks and its one chain of k bead types, polydisperse radii or a
+// quasiperiodic chain under a name of its own, the keywords of granular.exponent_table — turned
+// into an ExponentTableConfig by one rule. Errors name the choice (`chains`, `ic`, `types_rule`,
+// `chain_name`, or the bead chain's own field); each front end tells it in its own words.
 #include <string>
 #include <vector>
 

@@ -1,9 +1,9 @@
 #pragma once
 // The outputs of one spreading run beyond its curves, as front ends take them — the `spreading`
-// tool's --forces-at, --energy-map, --spectrum and their sampling, the keywords of
-// granular.spreading — turned into the observers of a TransportCase by one rule. Errors name the
-// choice (`forces_at`, `map_samples`, `spectrum_of`); each front end tells it in its own words.
-// Which files they go to is the tool's (study/spreading_files.hpp).
+// tool's options of its force series, energy map and spectrum with their sampling, the keywords
+// of granular.spreading — turned into the observers of a TransportCase by one rule. Errors name
+// the choice (`forces_at`, `map_samples`, `spectrum_of`); each front end tells it in its own
+// words. Which files they go to is the tool's (study/spreading_files.hpp).
 #include <string>
 #include <vector>
 
