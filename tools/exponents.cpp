@@ -30,7 +30,7 @@ int main(int argc, char** argv) {
       "exponents"};
   tool::describe_common(app);
   tool::DynamicsOptions dynamics;
-  tool::ExponentChoices choices;
+  tool::ExponentOptions choices;
   std::string f0_text = "10,0.5,0.1,0.01,0", output = "exponents", profile_f0 = "10,0.1,0";
   std::string paper_table = std::string(GRANULAR_SOURCE_DIR) + "/data/paper_table1_gamma.csv";
   long long n = 2501, realizations = 500, seed = 1, profile_realizations = 100;
@@ -97,7 +97,7 @@ int main(int argc, char** argv) {
     const auto files = write_exponent_files(paths, cells, rows);
     for (const auto& c : cells)
       tool::report_excluded(c.definition, c.summary, meta, run_options, "exponents", output, argv[0]);
-    meta["parameters"] = describe_table_parameters(choices.chains, config, choices.kicks, run_options.threads);
+    meta["parameters"] = describe_table_parameters(choices.chains_text, config, choices.kicks_text, run_options.threads);
     meta["cases"] = describe_cells(cells);
     meta["time_step_rule"] = step_rule;
     if (!resumed.is_null()) meta["resumed_checkpoint"] = resumed;

@@ -50,8 +50,8 @@ int main(int argc, char** argv) {
                      tool::apply(more, c);
                      const nlohmann::json step_rule = tool::validate_and_settle(c, dynamics, tool::step_given(app));
                      SpreadingPaths paths = spreading_paths(output, ensemble, more.profile, !d.forces.sites.empty());
-                     paths.final_state = more.final_state, paths.energy_map = more.energy_map,
-                     paths.spectrum = more.spectrum;
+                     paths.final_state = more.final_state, paths.energy_map = more.energy_map_file,
+                     paths.spectrum = more.spectrum_file;
                      paths.deviation = dynamics.deviation;
                      const auto claim = tool::claim_output(output, meta.command(),
                                                            ensemble ? std::optional(run.checkpoints()) : std::nullopt);
@@ -75,8 +75,8 @@ int main(int argc, char** argv) {
                      for (const auto& note : run.quiet ? std::vector<std::string>{} : spreading_notes(c, r, means))
                        std::fprintf(stderr, "spreading: %s\n", note.c_str());
                      auto files = write_spreading_files(paths, r, means, d);
-                     if (!more.spectrum.empty())
-                       (meta["spectrum"] = describe_spectral_density(*d.spectrum))["file"] = more.spectrum;
+                     if (!more.spectrum_file.empty())
+                       (meta["spectrum"] = describe_spectral_density(*d.spectrum))["file"] = more.spectrum_file;
                      meta["parameters"] = describe_parameters(c, selected.description, kicked, ensemble);
                      meta["seed"] = c.chain.seed;
                      if (!resumed.is_null()) meta["resumed_checkpoint"] = resumed;

@@ -126,35 +126,22 @@ def spreading(chain, *, ic="displacement", alpha=1e-7, beta=_core.paper_beta, si
                        t_star, kappa, bootstrap, active_window, window_threshold, reference_max_step,
                        max_energy_error, energy_guard)
     beyond = _beyond(damping_time, kk_gamma, mle, renormalize, deviation_samples)
-    observe = _core.SpreadingRunConfig()  # the optional observers (None: not run)
-    forces = _core.ForcesSettings()
+    outputs = _core.SpreadingOutputChoices()  # the optional observers, checked by the tools' rule in C++
     if forces_at is not None:
-        sites = []
-        for s in double_vector(forces_at, "forces_at"):
-            if s != math.floor(s) or s < 1 or s > chain.N:
-                raise ValueError(f"forces_at {_core._format_number(s)}: outside the chain of {chain.N} beads (1..N)")
-            sites.append(int(s) - 1)
-        forces.sites = sites
-    forces.samples = _core._size(force_samples, "force_samples", 1, _MAX)
-    observe.forces = forces
-    energy_map_settings = _core.EnergyMapSettings()
-    if energy_map:
-        energy_map_settings.samples = _core._size(map_samples, "map_samples", 2, _MAX)
-    energy_map_settings.stride = _core._size(map_stride, "map_stride", 1, _MAX)
-    observe.energy_map = energy_map_settings if energy_map else None
-    spectrum = _core.SpectralDensitySettings()
-    if spectral_density:
-        spectrum.samples = _core._size(spectrum_samples, "spectrum_samples", 2, _MAX)
-    if spectrum_of not in ("displacement", "velocity"):
-        raise ValueError(f"spectrum_of '{spectrum_of}': displacement or velocity")
-    spectrum.of = spectrum_of
-    observe.spectrum = spectrum if spectral_density else None
+        beads = double_vector(forces_at, "forces_at")
+        for s in beads:
+            if s != math.floor(s) or abs(s) > 2**62:
+                raise ValueError(f"forces_at {_core._format_number(s)}: not a bead number (beads count from 1)")
+        outputs.forces_at = [int(s) for s in beads]
+    outputs.force_samples, outputs.energy_map, outputs.map_samples = force_samples, bool(energy_map), map_samples
+    outputs.map_stride, outputs.spectral_density = map_stride, bool(spectral_density)
+    outputs.spectrum_samples, outputs.spectrum_of = spectrum_samples, spectrum_of
     case = _core.TransportCase()  # one realization: the chain's
-    case.dynamics, case.realizations, case.profile_realizations = observe, 1, 0
+    case.realizations, case.profile_realizations = 1, 0
     case.mode.mode, case.mode.mode_khz, case.mode.energy = mode, mode_khz, energy
     case.kick = ic
-    raw = _core._spreading(chain, case, choices, beyond, dt is not None, _run(progress=progress))
-    return _spreading_run(raw, chain.N, observe, deviation_samples)
+    raw = _core._spreading(chain, case, outputs, choices, beyond, dt is not None, _run(progress=progress))
+    return _spreading_run(raw, chain.N, outputs, deviation_samples)
 
 
 def _array_or_none(x):
@@ -166,7 +153,7 @@ def _series(t, site, name, values, shape):
     return {"t": t, "site": np.asarray(site, dtype=np.int64), name: np.asarray(values, dtype=float).reshape(shape)}
 
 
-def _spreading_run(raw, N, observe, deviation_samples):
+def _spreading_run(raw, N, outputs, deviation_samples):
     """The granular.SpreadingRun of _core._spreading's result (run: a _core._SpreadingResult)."""
     r = raw["run"]
     out = dict(raw["exponents"])
@@ -181,18 +168,18 @@ def _spreading_run(raw, N, observe, deviation_samples):
     if deviation_samples > 0:
         t = r.deviation_t
         out["deviation"] = _series(t, np.arange(1, N + 1), "share", r.deviation, (len(t), N))
-    sites = observe.forces.sites
+    sites = outputs.forces_at
     out["forces"] = None
     if sites:
         t = r.force_t
-        out["forces"] = _series(t, [s + 1 for s in sites], "force", r.forces, (len(sites), len(t)))
+        out["forces"] = _series(t, sites, "force", r.forces, (len(sites), len(t)))
     out["energy_map"] = None
-    if observe.energy_map is not None:
+    if outputs.energy_map:
         t, columns = r.map_t, r.map_columns
-        out["energy_map"] = _series(t, np.arange(columns) * observe.energy_map.stride + 1, "energy", r.map_energy,
+        out["energy_map"] = _series(t, np.arange(columns) * outputs.map_stride + 1, "energy", r.map_energy,
                                     (len(t), columns))
     out["spectral_density"] = None
-    if observe.spectrum is not None:
+    if outputs.spectral_density:
         out["spectral_density"] = {"freq_khz": r.spectrum_khz, "g": r.spectrum}
     for name in ("wall_energy", "reached_walls", "steps", "seconds"):
         out[name] = getattr(r, name)
@@ -209,7 +196,8 @@ spreading.__doc__ = (
     "[kHz], total energy `energy` [J] or, without it, largest |u_n| = alpha)\n" + _DYNAMICS_DOC + _BEYOND_DOC +
     "    deviation_samples: with mle, where the deviation vector sits along the chain (the tool's --deviation) at "
     "this many uniform times 0..T (0 = none, else >= 2)\n"
-    "    forces_at: beads (from 1) whose force [N] is recorded at force_samples uniform times\n"
+    "    forces_at: beads (from 1) whose force [N] is recorded at force_samples uniform times (each count of "
+    "samples >= 2 and map_stride >= 1, checked even when its output is not asked, as the tool's)\n"
     "    energy_map: record E_n(t) at map_samples uniform times, map_stride beads per column\n"
     "    spectral_density: g(nu) of u_n(t) (spectrum_of='displacement', the paper's) or of v_n(t) ('velocity') "
     "sampled at spectrum_samples uniform times\n"
@@ -294,14 +282,16 @@ def exponent_table(*, chains=["h", "A", "RDM1", "RDM2"], F0=[10.0, 0.5, 0.1, 0.0
                    compare_paper=False, threads=0, checkpoint=None, resume=False, resume_other_version=False,
                    progress=False, damping_time=0.0, kk_gamma=0.0, mle=False, renormalize=10, walls="flat",
                    quasi=None, modulation=0.0, ratio="golden", phase=None, angle=45.0, k0=4.0, chain_name=None):
+    words = _core.ExponentChoices()  # made the table's chains and kicks by the tool's rule, in C++
+    words.chains = [] if chains is None or chains == "none" else chains
+    words.ic = ic
+    if quasi is not None:  # granular.quasiperiodic's keywords, as the tool's --quasi takes them
+        own = words.beads
+        own.quasi, own.modulation, own.phase, own.angle, own.k0 = quasi, modulation, phase, angle, k0
+        if ratio is not None:  # None: the default (the golden mean)
+            own.ratio = ratio if isinstance(ratio, str) else repr(float(ratio))
+    words.chain_name = "" if chain_name is None else str(chain_name)
     table = _core.ExponentTableConfig()
-    if quasi is not None:
-        chain = _core.BeadChain()
-        chain.quasi = _quasi(quasi, modulation, ratio, phase, angle, k0)
-        chain.name = f"quasi-{chain.quasi.kind}" if chain_name is None else str(chain_name)
-        table.bead_chains = [chain]
-    if chains is None or chains == "none":
-        chains = []
     table.precompressions = number_list(F0, "F0", 0)
     table.profile_precompressions = [] if profile_F0 is None else number_list(profile_F0, "profile_F0", 0)
     table.profile_realizations = _core._size(profile_realizations, "profile_realizations")
@@ -318,7 +308,7 @@ def exponent_table(*, chains=["h", "A", "RDM1", "RDM2"], F0=[10.0, 0.5, 0.1, 0.0
     run = _run(threads, checkpoint, resume, resume_other_version, progress)
     # compare_paper: the path of a table in the paper's format, or True for the paper's own ("": no comparison)
     paper = compare_paper if isinstance(compare_paper, str) else _core._paper_table if compare_paper else ""
-    return ExponentTable(_core._exponent_table(chains, ic, table, choices, beyond, dt is not None, paper, run))
+    return ExponentTable(_core._exponent_table(words, table, choices, beyond, dt is not None, paper, run))
 
 
 exponent_table.__doc__ = (
@@ -330,7 +320,7 @@ exponent_table.__doc__ = (
     "the chains\n"
     "    quasi: None, or one more chain after the kinds, quasiperiodic (the tool's --quasi): 's1', 's2' or "
     "'cylinders', with modulation, ratio, phase (None: drawn per seed and realization, R phases), angle and k0 as "
-    "granular.quasiperiodic's; chain_name: its name in the table (default 'quasi-KIND')\n" +
+    "granular.quasiperiodic's; chain_name: its name in the table (default 'quasi-KIND'; only with quasi)\n" +
     _DYNAMICS_DOC + _BEYOND_DOC +
     "    profile_F0, profile_realizations: F0s whose E_n(T) is averaged, over how many realizations (None: none)\n"
     "    compare_paper: True (or the path of a table in its format) to compare gamma with the paper's Table I "

@@ -1,10 +1,10 @@
 // The nonlinear dynamics under granular.spreading, granular.transport and granular.exponent_table,
 // whose keywords, defaults and docstrings live in granular/_dynamics.py. Here: the library's
-// structs (TransportCase with its ModeKick and the optional observers of its SpreadingRunConfig,
-// TransportChoices, BeyondChoices, ChainRecipe, ExponentTableConfig) bound with their C++
-// defaults, and one call per job that takes them, completes the case by the tools' rule
-// (study/transport_choices.hpp), runs it and returns the library's result (granular/_dynamics.py
-// shapes it) or the tool's CSV text, with the library's own JSON.
+// structs (TransportCase with its ModeKick, SpreadingOutputChoices, TransportChoices, BeyondChoices,
+// ChainRecipe, ExponentChoices, ExponentTableConfig) bound with their C++ defaults, and one call per
+// job that takes them, completes the case by the tools' rules (study/transport_choices.hpp,
+// spreading_output_choices.hpp, exponent_choices.hpp), runs it and returns the library's result
+// (granular/_dynamics.py shapes it) or the tool's CSV text, with the library's own JSON.
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <sstream>
@@ -14,11 +14,13 @@
 #include "granular/ensemble/checkpoint_log.hpp"
 #include "granular/model/quasiperiodic.hpp"
 #include "granular/study/case_settling.hpp"
+#include "granular/study/exponent_choices.hpp"
 #include "granular/study/exponent_files.hpp"
 #include "granular/study/exponent_table.hpp"
 #include "granular/study/paper_comparison.hpp"
 #include "granular/study/resumed_checkpoint.hpp"
 #include "granular/study/spreading_files.hpp"
+#include "granular/study/spreading_output_choices.hpp"
 #include "granular/study/transport_choices.hpp"
 
 namespace granular::python {
@@ -39,11 +41,13 @@ py::object csv_text(const std::function<void(std::ostream&)>& write) {
   return py::str(out.str());
 }
 
-/// `c`: the case as granular/_dynamics.py fills it (kick, mode, optional observers), one realization of `chain`.
-py::dict spreading(const PyChain& chain, TransportCase c, const TransportChoices& choices, const BeyondChoices& beyond,
-                   bool dt_given, const PyRun& options) {
+/// `c`: the case as granular/_dynamics.py fills it (kick, mode), one realization of `chain`, with the
+/// observers of `outputs`.
+py::dict spreading(const PyChain& chain, TransportCase c, const SpreadingOutputChoices& outputs,
+                   const TransportChoices& choices, const BeyondChoices& beyond, bool dt_given, const PyRun& options) {
   c.chain = chain.recipe;
   const bool automatic = apply_choices(choices, beyond, c);
+  granular::apply(outputs, c);
   SpreadingRunConfig& d = c.dynamics;
   fit_within_duration(c);                          // a window beyond T: no exponents
   granular::apply(ModeKick(c.mode), {c.kick}, c);  // only a mode kick takes mode, mode_khz, energy
@@ -116,15 +120,10 @@ py::dict transport(TransportCase c, const TransportChoices& choices, const Beyon
                 metadata("transport", meta));
 }
 
-py::dict exponent_table(const std::vector<std::string>& chains, const std::vector<std::string>& ic,
-                        ExponentTableConfig config, const TransportChoices& choices, const BeyondChoices& beyond,
-                        bool dt_given, const std::string& paper_path, const PyRun& options) {
-  config.chains.clear();
-  for (const auto& name : chains) config.chains.push_back(disorder_of(name, "chains"));
-  if (config.chains.empty() && config.bead_chains.empty()) bad_value("chains", ": none given (nor quasi)");
-  config.kicks.clear();
-  for (const auto& name : ic) config.kicks.push_back(parse_kick(name));
-  if (config.kicks.empty()) bad_value("ic", ": none given");
+/// `words`: the chains and kicks as granular/_dynamics.py fills them (the tool's rule makes config's of them).
+py::dict exponent_table(const ExponentChoices& words, ExponentTableConfig config, const TransportChoices& choices,
+                        const BeyondChoices& beyond, bool dt_given, const std::string& paper_path, const PyRun& options) {
+  granular::apply(words, config);
   TransportCase& base = config.base;
   const bool automatic = apply_choices(choices, beyond, base);
   auto cases = exponent_cases(config);
@@ -146,12 +145,8 @@ py::dict exponent_table(const std::vector<std::string>& chains, const std::vecto
     for (const std::string& log : case_checkpoints(prefix, cells.size())) CheckpointLog::remove_all(log);
 
   const nlohmann::json described = describe_cells(cells);
-  std::string chain_list, kick_list;
-  for (const auto& name : chains) chain_list += (chain_list.empty() ? "" : ",") + name;
-  if (chains.empty()) chain_list = "none";
-  for (const auto& name : ic) kick_list += (kick_list.empty() ? "" : ",") + name;
   nlohmann::json meta;
-  meta["parameters"] = describe_table_parameters(chain_list, config, kick_list, thread_request);
+  meta["parameters"] = describe_table_parameters(chain_list(words), config, kick_list(words), thread_request);
   meta["cases"] = described;
   meta["time_step_rule"] = step_rule;
   py::dict out;
@@ -178,8 +173,12 @@ void bind_dynamics(py::module_& m) {
   m.attr("_paper_table") = GRANULAR_SOURCE_DIR "/data/paper_table1_gamma.csv";  // compare_paper=True
   table_class(m, "BeyondChoices", beyond_parameters());
   table_class(m, "ModeKick", mode_kick_parameters());
-  using D = SpreadingRunConfig;  // granular.spreading's observers (observers.cpp's settings); none: None
-  config_class(m, "SpreadingRunConfig", "forces energy_map spectrum", &D::forces, &D::energy_map, &D::spectrum);
+  using O = SpreadingOutputChoices;  // granular.spreading's optional observers, made by the tool's rule
+  config_class(m, "SpreadingOutputChoices",
+               "forces_at force_samples energy_map map_samples map_stride spectral_density spectrum_samples "
+               "spectrum_of",
+               &O::forces_at, &O::force_samples, &O::energy_map, &O::map_samples, &O::map_stride, &O::spectral_density,
+               &O::spectrum_samples, &O::spectrum_of);
   using R = ChainRecipe;
   config_class(m, "ChainRecipe", "q xi R1 N F0 material seed quasi given_radii given_types", &R::q, &R::xi, &R::R1,
                &R::N, &R::F0, &R::material, &R::seed, &R::quasi, &R::given_radii, &R::given_types)
@@ -190,12 +189,14 @@ void bind_dynamics(py::module_& m) {
           [](R& r, const std::string& word) { r.walls = parse_wall_shape(word); })
       .def("_validate_quasi", [](const R& r) { validate(*r.quasi, r.F0); });
   using E = ExponentTableConfig;
-  config_class(m, "ExponentTableConfig", "precompressions profile_precompressions profile_realizations base bead_chains",
-               &E::precompressions, &E::profile_precompressions, &E::profile_realizations, &E::base, &E::bead_chains);
-  config_class(m, "BeadChain", "name quasi", &BeadChain::name, &BeadChain::quasi);  // a quasiperiodic chain only
+  config_class(m, "ExponentTableConfig", "precompressions profile_precompressions profile_realizations base",
+               &E::precompressions, &E::profile_precompressions, &E::profile_realizations, &E::base);
+  using W = ExponentChoices;  // the chains and kicks in words; beads: only its quasiperiodic chain's
+  config_class(m, "ExponentChoices", "chains ic beads chain_name", &W::chains, &W::ic, &W::beads, &W::chain_name);
+  table_class(m, "ChainChoices", chain_parameters());
   using C = TransportCase;  // what the keywords give beyond the choices; the exponent table's cases share it
-  config_class(m, "TransportCase", "chain realizations profile_realizations mode dynamics", &C::chain, &C::realizations,
-               &C::profile_realizations, &C::mode, &C::dynamics)
+  config_class(m, "TransportCase", "chain realizations profile_realizations mode", &C::chain, &C::realizations,
+               &C::profile_realizations, &C::mode)
       .def_property("kick", word_getter(&C::kick), word_setter(&C::kick, parse_kick));
   config_class(m, "RunOptions", "threads checkpoint resume resume_other_version progress", &PyRun::threads,
                &PyRun::checkpoint, &PyRun::resume, &PyRun::resume_other_version, &PyRun::progress);

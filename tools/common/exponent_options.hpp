@@ -3,6 +3,7 @@
 // and a chain of the user's own from --types / --type-masses / --polydisperse, named by
 // --chain-name, or a quasiperiodic chain from --quasi over phases), which kicks (--ic, and the mode of --ic mode:
 // --mode / --mode-khz / --energy), and the maximal Lyapunov exponent (--mle). The same option words as `spreading`.
+// The rule that makes a table of them, shared with Python: study/exponent_choices.hpp.
 #include <string>
 
 #include <CLI/CLI.hpp>
@@ -10,30 +11,32 @@
 #include "chain_options.hpp"
 #include "dynamics_options.hpp"
 #include "granular/io/range_syntax.hpp"
-#include "granular/study/exponent_table.hpp"
+#include "granular/study/exponent_choices.hpp"
 #include "tool_main.hpp"
 
 namespace granular::tool {
 
-struct ExponentChoices {
-  std::string chains = "h,A,RDM1,RDM2", kicks = "displacement,velocity";
-  /// Only its --types / --type-masses / --polydisperse, and `disorder`: --types-rule (empty: not given).
-  ChainOptions beads = [] {
-    ChainOptions o;
-    o.disorder.clear();
-    return o;
-  }();
-  std::string chain_name;  ///< the user's chain in the outputs; empty: "types" or "polydisperse"
+/// The library's choices, bound straight to the flags, but the lists of --chains and --ic, read as
+/// text, and the mode of a mode kick.
+struct ExponentOptions : ExponentChoices {
+  std::string chains_text = "h,A,RDM1,RDM2", kicks_text = "displacement,velocity";
   ModeKick mode;
+  /// The library's choices, the lists parsed.
+  ExponentChoices choices() const {
+    ExponentChoices c = *this;
+    c.chains = parse_word_list(chains_text, "chains");
+    c.ic = parse_word_list(kicks_text, "ic");
+    return c;
+  }
 };
 
-inline void add_exponent_choices(CLI::App& app, ExponentChoices& o, BeyondOptions& beyond) {
-  add_option(app, "--chains", o.chains,
+inline void add_exponent_choices(CLI::App& app, ExponentOptions& o, BeyondOptions& beyond) {
+  add_option(app, "--chains", o.chains_text,
              "chain kinds: comma list of h, A, RDM1, RDM2, or 'none' (only the chain of --types/--polydisperse)");
-  add_option(app, "--ic", o.kicks, "kicks: comma list of displacement, velocity, mode (--mode or --mode-khz)");
+  add_option(app, "--ic", o.kicks_text, "kicks: comma list of displacement, velocity, mode (--mode or --mode-khz)");
   auto* quasi = add_quasiperiodic_options(app, o.beads);
   for (auto* a : add_bead_distribution_options(app, o.beads, "--types-rule")) a->excludes(quasi), quasi->excludes(a);
-  app.add_option("--types-rule", o.beads.disorder,
+  app.add_option("--types-rule", o.types_rule,
                  "how --types/--type-masses are drawn: A (each bead, the default), RDM1 (each dimer), RDM2 (two "
                  "types: dimers 12 or 21)");
   app.add_option("--chain-name", o.chain_name,
@@ -47,33 +50,9 @@ inline void add_exponent_choices(CLI::App& app, ExponentChoices& o, BeyondOption
 }
 
 /// The chains and kicks of the study into `config` (config.base then holds the mode kick).
-inline void apply(const ExponentChoices& o, ExponentTableConfig& config) {
-  config.chains.clear();
-  if (o.chains != "none")
-    for (const auto& name : parse_word_list(o.chains, "--chains")) config.chains.push_back(parse_disorder(name));
-  config.kicks.clear();
-  for (const auto& name : parse_word_list(o.kicks, "--ic")) config.kicks.push_back(parse_kick(name));
-  config.bead_chains.clear();
-  ChainOptions drawn = o.beads;
-  if (!drawn.disorder.empty() && drawn.types.empty() && drawn.type_masses.empty())
-    throw InvalidInput("--types-rule '" + drawn.disorder + "': only with --types or --type-masses");
-  if (drawn.disorder.empty()) drawn.disorder = "A";
-  try {
-    parse_disorder(drawn.disorder);
-  } catch (const InvalidInput&) {  // told here: the tool tells the library's `disorder` as --chains
-    throw InvalidInput("--types-rule '" + drawn.disorder + "': expected A, RDM1 or RDM2");
-  }
-  if (const auto q = quasiperiodic(drawn)) {
-    config.bead_chains.push_back({o.chain_name.empty() ? "quasi-" + to_string(q->kind) : o.chain_name, {}, *q});
-  } else if (const auto beads = bead_distribution(drawn)) {
-    const bool types = beads->kind == BeadDistribution::Kind::types;
-    config.bead_chains.push_back({o.chain_name.empty() ? (types ? "types" : "polydisperse") : o.chain_name, *beads});
-  } else if (!o.chain_name.empty()) {
-    throw InvalidInput("--chain-name '" + o.chain_name +
-                       "': only with --types, --type-masses, --polydisperse or --quasi");
-  }
+inline void apply(const ExponentOptions& o, ExponentTableConfig& config) {
+  granular::apply(o.choices(), config);
   apply(o.mode, config.kicks, config.base);
-  validate(config);
 }
 
 }  // namespace granular::tool

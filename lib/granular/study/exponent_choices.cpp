@@ -1,0 +1,73 @@
+#include "granular/study/exponent_choices.hpp"
+
+#include <optional>
+#include <utility>
+
+#include "granular/error.hpp"
+#include "granular/model/disorder.hpp"
+
+namespace granular {
+namespace {
+
+/// The chain kinds `chains` names: none for "none" alone.
+bool no_chain_kinds(const std::vector<std::string>& chains) { return chains.size() == 1 && chains[0] == "none"; }
+
+/// `words` joined by commas.
+std::string comma_joined(const std::vector<std::string>& words) {
+  std::string out;
+  for (const std::string& w : words) out += (out.empty() ? "" : ",") + w;
+  return out;
+}
+
+/// The chain beyond the kinds that `o` asks for, if any, under its name.
+std::optional<BeadChain> chain_of_ones_own(const ExponentChoices& o) {
+  ChainChoices drawn = o.beads;
+  const bool typed = !drawn.types.empty() || !drawn.type_masses.empty();
+  if (!o.types_rule.empty() && !typed)
+    throw InvalidInput("types_rule", " '" + o.types_rule + "': only with `types` or `type_masses`");
+  if (!drawn.quasi.empty() && (typed || !drawn.polydisperse.empty()))
+    throw InvalidInput("quasi", " '" + drawn.quasi + "': not with k bead types or polydisperse radii");
+  drawn.disorder = o.types_rule.empty() ? "A" : o.types_rule;
+  try {
+    parse_disorder(drawn.disorder);
+  } catch (const InvalidInput&) {  // the parser names `disorder`, which means the chain kinds here
+    throw InvalidInput("types_rule", " '" + drawn.disorder + "': expected A, RDM1 or RDM2");
+  }
+  const std::string& name = o.chain_name;
+  if (const auto q = quasiperiodic(drawn))
+    return BeadChain{name.empty() ? "quasi-" + to_string(q->kind) : name, {}, *q};
+  if (const auto beads = bead_distribution(drawn)) {
+    const bool types = beads->kind == BeadDistribution::Kind::types;
+    return BeadChain{name.empty() ? (types ? "types" : "polydisperse") : name, *beads};
+  }
+  if (!name.empty())
+    throw InvalidInput("chain_name", " '" + name + "': only with `types`, `type_masses`, `polydisperse` or `quasi`");
+  return std::nullopt;
+}
+
+}  // namespace
+
+void apply(const ExponentChoices& o, ExponentTableConfig& config) {
+  config.chains.clear();
+  for (const std::string& name : no_chain_kinds(o.chains) ? std::vector<std::string>{} : o.chains) {
+    try {
+      config.chains.push_back(parse_disorder(name));
+    } catch (const InvalidInput& e) {  // the parser names a single chain's `disorder`
+      throw InvalidInput("chains", e.problem());
+    }
+  }
+  config.kicks.clear();
+  for (const std::string& name : o.ic) config.kicks.push_back(parse_kick(name));
+  if (config.kicks.empty()) throw InvalidInput("ic", ": none given");
+  config.bead_chains.clear();
+  if (auto chain = chain_of_ones_own(o)) config.bead_chains.push_back(std::move(*chain));
+  validate(config);
+}
+
+std::string chain_list(const ExponentChoices& o) {
+  return o.chains.empty() || no_chain_kinds(o.chains) ? "none" : comma_joined(o.chains);
+}
+
+std::string kick_list(const ExponentChoices& o) { return comma_joined(o.ic); }
+
+}  // namespace granular

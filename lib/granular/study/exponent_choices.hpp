@@ -1,0 +1,36 @@
+#pragma once
+// The chains and kicks of the exponent table as front ends take them in words — the `exponents`
+// tool's chain kinds, kicks and its one chain of k bead types, polydisperse radii or a
+// quasiperiodic chain under a name of its own, the keywords of granular.exponent_table — turned
+// into an ExponentTableConfig by one rule. Errors name the choice (`chains`, `ic`, `types_rule`,
+// `chain_name`, or the bead chain's own field); each front end tells it in its own words.
+#include <string>
+#include <vector>
+
+#include "granular/study/chain_choices.hpp"
+#include "granular/study/exponent_table.hpp"
+
+namespace granular {
+
+struct ExponentChoices {
+  /// Chain kinds h, A, RDM1, RDM2 (any case); "none" alone, or none: only the chain of `beads`.
+  std::vector<std::string> chains{"h", "A", "RDM1", "RDM2"};
+  std::vector<std::string> ic{"displacement", "velocity"};  ///< the kicks: displacement, velocity, mode
+  /// One more chain, after the kinds: its types, type_masses, polydisperse, or quasi and that
+  /// chain's parameters (the rest, `disorder` included, is not read).
+  ChainChoices beads{};
+  std::string types_rule{};  ///< how types / type_masses are drawn: A, RDM1 or RDM2; empty: A
+  std::string chain_name{};  ///< that chain's name in the outputs; empty: types, polydisperse or quasi-KIND
+};
+
+/// Sets config.chains, config.kicks and config.bead_chains from the choices and validates them
+/// (validate(const ExponentTableConfig&)). Throws InvalidInput naming the choice.
+void apply(const ExponentChoices& choices, ExponentTableConfig& config);
+
+/// The chain kinds as the outputs' parameters list them: "h,A", or "none".
+std::string chain_list(const ExponentChoices& choices);
+
+/// The kicks as the outputs' parameters list them: "displacement,velocity".
+std::string kick_list(const ExponentChoices& choices);
+
+}  // namespace granular
