@@ -88,7 +88,8 @@ int main(int argc, char** argv) {
     // Read before the run, which rewrites them.
     const nlohmann::json resumed =
         tool::resumed_code(run_options, case_checkpoints(output + ".checkpoint", cases.size()));
-    const auto cells = tool::run_table(config, cases, run_options, output, argc, argv);
+    const auto cells = tool::run_study(total_realizations(cases), run_options, output, "exponents", argc, argv,
+                                       [&](const RunOptions& o) { return run_exponent_table(config, o); });
     if (!mpi.root()) return;
 
     std::printf("%s", markdown_tables(cells, config).c_str());

@@ -62,7 +62,8 @@ int main(int argc, char** argv) {
                      const nlohmann::json resumed = ensemble ? tool::resumed_code(run, {paths.checkpoint}) : nullptr;
                      std::optional<TransportSummary> summary;
                      if (ensemble) {
-                       summary = tool::run_ensemble(c, run, output, "spreading", argc, argv);
+                       summary = tool::run_study(c.realizations, run, output, "spreading", argc, argv,
+                                                 [&](const RunOptions& o) { return run_transport_study(c, o); });
                        if (!MpiContext::instance().root()) return;
                      }
                      const KickedChain kicked = kick(c, selected.chain);

@@ -105,11 +105,11 @@ def _set_quasi(recipe, quasi, modulation, ratio, phase, angle, k0):
         recipe._validate_quasi()
 
 
-def _run(threads=0, checkpoint=None, resume=False, resume_other_version=False, progress=False):
+def _run(threads=0, checkpoint=None, resume=False, resume_other_version=False, progress=False, fresh=False):
     r = _core.RunOptions()
     r.threads = threads
     r.checkpoint = "" if checkpoint is None else str(checkpoint)
-    r.resume, r.resume_other_version, r.progress = resume, resume_other_version, progress
+    r.resume, r.resume_other_version, r.progress, r.fresh = resume, resume_other_version, progress, fresh
     return r
 
 
@@ -215,7 +215,7 @@ def transport(*, disorder="A", N=2501, q=0.5, xi=0.5, F0=10.0, R1=_core.paper_r1
               integrator="saba2c", force_law="hertz", samples=100, sampling="log", fit=(4e-3, 1e-2), fit_step=1e-5,
               t_star=4e-3, kappa=0.1, bootstrap=1000, active_window=True, window_threshold=1e-30,
               reference_max_step=0.01e-6, max_energy_error=1e-3, energy_guard="stop", profile=False, threads=0,
-              checkpoint=None, resume=False, resume_other_version=False, progress=False, damping_time=0.0,
+              checkpoint=None, resume=False, resume_other_version=False, fresh=False, progress=False, damping_time=0.0,
               kk_gamma=0.0, mle=False, renormalize=10, walls="flat", quasi=None, modulation=0.0, ratio="golden",
               phase=None, angle=45.0, k0=4.0):
     recipe = _core.ChainRecipe()
@@ -228,7 +228,7 @@ def transport(*, disorder="A", N=2501, q=0.5, xi=0.5, F0=10.0, R1=_core.paper_r1
                        t_star, kappa, bootstrap, active_window, window_threshold, reference_max_step,
                        max_energy_error, energy_guard)
     beyond = _beyond(damping_time, kk_gamma, mle, renormalize)
-    run = _run(threads, checkpoint, resume, resume_other_version, progress)
+    run = _run(threads, checkpoint, resume, resume_other_version, progress, fresh)
     case = _core.TransportCase()
     case.chain = recipe
     case.kick = ic
@@ -264,7 +264,8 @@ transport.__doc__ = (
     "    threads: worker threads (0: every core); results do not depend on it\n"
     "    checkpoint: a file logging each finished realization (removed once the run completes); resume=True "
     "continues an interrupted run from it and gives exactly the uninterrupted result; a checkpoint another "
-    "granular version made is refused unless resume_other_version=True (both are named in metadata)\n"
+    "granular version made is refused unless resume_other_version=True (both are named in metadata); a run "
+    "neither resuming nor fresh=True (discard it) refuses to start over a checkpoint an interrupted run left\n"
     "    progress: draw a progress bar\n"
     "Returns a granular.Transport: t [s], m2, m2_centroid, ipr, energy_error with their standard errors (_se), "
     "profile, gamma, eta (with realization errors gamma_real_err, eta_real_err from the bootstrap) and every report "
@@ -279,7 +280,7 @@ def exponent_table(*, chains=["h", "A", "RDM1", "RDM2"], F0=[10.0, 0.5, 0.1, 0.0
                    force_law="hertz", samples=100, sampling="log", fit=(4e-3, 1e-2), fit_step=1e-5, t_star=4e-3,
                    kappa=0.1, bootstrap=1000, active_window=True, window_threshold=1e-30, reference_max_step=0.01e-6,
                    max_energy_error=1e-3, energy_guard="stop", profile_F0=[10.0, 0.1, 0.0], profile_realizations=100,
-                   compare_paper=False, threads=0, checkpoint=None, resume=False, resume_other_version=False,
+                   compare_paper=False, threads=0, checkpoint=None, resume=False, resume_other_version=False, fresh=False,
                    progress=False, damping_time=0.0, kk_gamma=0.0, mle=False, renormalize=10, walls="flat",
                    quasi=None, modulation=0.0, ratio="golden", phase=None, angle=45.0, k0=4.0, chain_name=None):
     words = _core.ExponentChoices()  # made the table's chains and kicks by the tool's rule, in C++
@@ -305,7 +306,7 @@ def exponent_table(*, chains=["h", "A", "RDM1", "RDM2"], F0=[10.0, 0.5, 0.1, 0.0
                        t_star, kappa, bootstrap, active_window, window_threshold, reference_max_step,
                        max_energy_error, energy_guard)
     beyond = _beyond(damping_time, kk_gamma, mle, renormalize)
-    run = _run(threads, checkpoint, resume, resume_other_version, progress)
+    run = _run(threads, checkpoint, resume, resume_other_version, progress, fresh)
     # compare_paper: the path of a table in the paper's format, or True for the paper's own ("": no comparison)
     paper = compare_paper if isinstance(compare_paper, str) else _core._paper_table if compare_paper else ""
     return ExponentTable(_core._exponent_table(words, table, choices, beyond, dt is not None, paper, run))
@@ -327,7 +328,8 @@ exponent_table.__doc__ = (
     "(z-scores with both error sources)\n"
     "    threads (0: every core); checkpoint: a prefix, case i logs to <prefix>.<i> (removed once done); "
     "resume=True continues an interrupted table (resume_other_version=True: also one another granular version "
-    "made); progress: a progress bar\n"
+    "made; fresh=True: discard it and start again, which a run not resuming otherwise refuses); progress: a "
+    "progress bar\n"
     "Returns a granular.ExponentTable: table (the tool's CSV columns as arrays; with mle also mle, mle_real_err, "
     "mle_sd: the mean X1(T) [1/s], its standard error over realizations, their standard deviation), curves (with "
     "mle also mle, mle_se: <X1(t)> [1/s] and its standard error), profiles, markdown, paper (the comparison, with "

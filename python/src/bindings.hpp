@@ -185,7 +185,7 @@ Disorder disorder_of(const std::string& name, const char* keyword = "disorder");
 struct PyRun {
   long long threads = 0;
   std::string checkpoint;  ///< "" = none
-  bool resume = false, resume_other_version = false, progress = false;
+  bool resume = false, resume_other_version = false, fresh = false, progress = false;
   int thread_request() const { return static_cast<int>(checked_size(threads, "threads", 0, 4096)); }
 };
 /// Runs `work` with the GIL released on a thread of its own through granular._progress.run_long,

@@ -198,8 +198,8 @@ void bind_dynamics(py::module_& m) {
   config_class(m, "TransportCase", "chain realizations profile_realizations mode", &C::chain, &C::realizations,
                &C::profile_realizations, &C::mode)
       .def_property("kick", word_getter(&C::kick), word_setter(&C::kick, parse_kick));
-  config_class(m, "RunOptions", "threads checkpoint resume resume_other_version progress", &PyRun::threads,
-               &PyRun::checkpoint, &PyRun::resume, &PyRun::resume_other_version, &PyRun::progress);
+  config_class(m, "RunOptions", "threads checkpoint resume resume_other_version fresh progress", &PyRun::threads,
+               &PyRun::checkpoint, &PyRun::resume, &PyRun::resume_other_version, &PyRun::fresh, &PyRun::progress);
   // What granular/_dynamics.py makes a SpreadingRun and a Transport of (copies of the arrays).
   using Run = SpreadingResult;
   readonly(py::class_<Run>(m, "_SpreadingResult"),

@@ -157,7 +157,8 @@ void run_long(const std::string& label, std::size_t total, const PyRun& options,
                        .resume = options.resume || options.resume_other_version,
                        .progress = meter.get(),
                        .cancelled = [cancel] { return cancel->load(std::memory_order_relaxed); },
-                       .accept_other_version = options.resume_other_version};
+                       .accept_other_version = options.resume_other_version,
+                       .fresh = options.fresh};
   const py::cpp_function call([&, shared] {
     if (std::lock_guard lock(shared->mutex); !shared->open) return;  // too late: run_long has returned
     else shared->running = true;

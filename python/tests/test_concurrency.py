@@ -136,3 +136,20 @@ def test_a_checkpoint_of_another_version_is_refused(tmp_path):
     # Accepted, the version no longer stops it: the parameters (here: other ones) decide.
     with pytest.raises(ValueError, match="different parameters"):
         gr.transport(**params, resume_other_version=True)
+
+
+def test_a_run_never_writes_over_the_checkpoint_of_an_interrupted_run(tmp_path):
+    """The finished realizations of an interrupted run are kept unless the call says to discard them
+    (fresh=True) or resumes from them, as the spreading tool's --resume/--fresh."""
+    checkpoint = str(tmp_path / "run.checkpoint")
+    params = dict(disorder="A", N=31, realizations=3, T=1e-4, fit=(5e-5, 1e-4), threads=1, checkpoint=checkpoint)
+    with open(checkpoint, "w") as f:  # what an interrupted run leaves (a header, then its records)
+        f.write('granular-checkpoint 1 {"N":31}\n')
+    with pytest.raises(ValueError, match=r"checkpoint '.*run\.checkpoint': holds the finished realizations of an "
+                       r"interrupted run; continue it with resume, or discard them with fresh"):
+        gr.transport(**params)
+    with open(checkpoint) as f:
+        assert f.read() == 'granular-checkpoint 1 {"N":31}\n'  # untouched
+    fresh = gr.transport(**params, fresh=True)
+    assert fresh.realizations == 3 and not os.path.exists(checkpoint)
+    assert np.array_equal(fresh.m2, gr.transport(**{**params, "checkpoint": None}).m2)

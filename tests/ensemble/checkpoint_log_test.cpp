@@ -290,7 +290,17 @@ TEST(EnsembleRunner, CancelledRunKeepsFinishedRealizationsAndResumesToTheFreshRe
   EXPECT_EQ(kept, static_cast<std::size_t>(started.load()));
 
   options.cancelled = nullptr;
+  // Not resuming: refused, naming the checkpoint, and the finished realizations stay; unless fresh.
+  try {
+    run_ensemble(options, work);
+    ADD_FAILURE() << "a run not resuming wrote over an interrupted run's checkpoint";
+  } catch (const InvalidInput& e) {
+    EXPECT_EQ(e.parameter(), "checkpoint");
+  }
+  EXPECT_EQ(CheckpointLog::load(path, "{}").size(), kept);
   options.resume = true;
+  EXPECT_EQ(run_ensemble(options, work), fresh);
+  options.resume = false, options.fresh = true;
   EXPECT_EQ(run_ensemble(options, work), fresh);
   CheckpointLog::remove_all(path);
 }

@@ -49,20 +49,6 @@ inline void add_long_run_options(CLI::App& app, LongRunOptions& o) {
   app.add_flag("--quiet", o.quiet, "no warnings, progress or final line on stderr");
 }
 
-/// The library's run options for a checkpointed run: Ctrl-C stops it cleanly from here on.
-inline RunOptions run_options(const LongRunOptions& o, const std::string& checkpoint, ProgressMeter* progress,
-                              const std::string& tool) {
-  RunOptions run;
-  run.threads = o.threads;
-  run.checkpoint = checkpoint;
-  run.resume = o.resuming();
-  run.accept_other_version = o.other_version;
-  run.progress = progress;
-  run.cancelled = stop_on_interrupt(tool);
-  run.skip_failed = o.skip_failed;
-  return run;
-}
-
 /// With --resume-other-version: the code versions of the result (study/resumed_checkpoint.hpp)
 /// for the JSON; null otherwise. A plain --resume of a checkpoint another version made is refused
 /// here, in this tool's words.
@@ -108,26 +94,23 @@ auto replaying_failures(const Study& study, const std::string& prefix, int argc,
   }
 }
 
-/// Runs the ensemble of `c` (under mpirun rank 0 alone gets the summary) with a progress line,
-/// Ctrl-C as a clean stop, and failures told with their replay command; outputs on `prefix`.
-inline TransportSummary run_ensemble(const TransportCase& c, const LongRunOptions& o, const std::string& prefix,
-                                     const char* tool, int argc, char** argv) {
-  ProgressMeter progress(c.realizations, tool, o.quiet || !MpiContext::instance().root() ? 0 : -1);
-  const RunOptions options = run_options(o, prefix + ".checkpoint", &progress, tool);
-  TransportSummary summary = replaying_failures([&] { return run_transport_study(c, options); }, prefix, argc, argv);
+/// Runs `study` (a call of run_transport_study or run_exponent_table with the RunOptions it is
+/// given) over `total` realizations: a progress line (under mpirun on rank 0 alone), Ctrl-C as a
+/// clean stop, failures told with their replay command, checkpoints PREFIX.checkpoint[.<case>].
+template <class Study>
+auto run_study(std::size_t total, const LongRunOptions& o, const std::string& prefix, const char* tool, int argc,
+               char** argv, const Study& study) {
+  ProgressMeter progress(total, tool, o.quiet || !MpiContext::instance().root() ? 0 : -1);
+  const RunOptions options{.threads = o.threads,
+                           .checkpoint = prefix + ".checkpoint",
+                           .resume = o.resuming(),
+                           .progress = &progress,
+                           .cancelled = stop_on_interrupt(tool),
+                           .skip_failed = o.skip_failed,
+                           .accept_other_version = o.other_version};
+  auto result = replaying_failures([&] { return study(options); }, prefix, argc, argv);
   progress.finish();
-  return summary;
-}
-
-/// Runs the study of `config` (its `cases`, exponent_cases) as run_ensemble runs one case; the
-/// cases' checkpoints are PREFIX.checkpoint.<i>.
-inline std::vector<ExponentCell> run_table(const ExponentTableConfig& config, const std::vector<TransportCase>& cases,
-                                           const LongRunOptions& o, const std::string& prefix, int argc, char** argv) {
-  ProgressMeter progress(total_realizations(cases), "exponents", o.quiet || !MpiContext::instance().root() ? 0 : -1);
-  const RunOptions options = run_options(o, prefix + ".checkpoint", &progress, "exponents");
-  auto cells = replaying_failures([&] { return run_exponent_table(config, options); }, prefix, argc, argv);
-  progress.finish();
-  return cells;
+  return result;
 }
 
 /// Says which realizations of `c` were left out (--skip-failed): a line on stderr for each, with

@@ -20,6 +20,7 @@ struct EnsembleOptions {
   std::string parameters =
       "{}";             ///< one-line JSON describing the run (the realization count included); a resume must match it
   bool resume = false;  ///< continue from `checkpoint` instead of starting afresh
+  bool fresh = false;   ///< start afresh over it (else a run not resuming refuses: RunOptions::fresh)
   ProgressMeter* progress = nullptr;  ///< optional; advanced once per realization computed or loaded
   std::function<bool()> cancelled{};  ///< optional; true before a realization starts: throw Cancelled (run_options.hpp)
   bool accept_other_version = false;  ///< resume a checkpoint another toolkit version made (else refused)

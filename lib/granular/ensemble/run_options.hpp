@@ -9,9 +9,9 @@
 namespace granular {
 
 struct RunOptions {
-  int threads = 0;                    ///< worker threads in this process; 0 = every core. Results do not depend on it.
-  std::string checkpoint{};           ///< file (or prefix) logging finished realizations; empty = none
-  bool resume = false;                ///< continue from `checkpoint` instead of starting afresh
+  int threads = 0;           ///< worker threads in this process; 0 = every core. Results do not depend on it.
+  std::string checkpoint{};  ///< file (or prefix) logging finished realizations; empty = none
+  bool resume = false;       ///< continue from `checkpoint` instead of starting afresh
   ProgressMeter* progress = nullptr;  ///< optional; advanced once per realization done
   /// Optional; polled (from any worker thread) before each realization, or each cell of the IPR
   /// map: true stops the run with granular::Cancelled once the work in flight is finished and
@@ -21,6 +21,9 @@ struct RunOptions {
   /// (NumericalError) is left out of the averages and reported, instead of stopping the run.
   bool skip_failed = false;
   bool accept_other_version = false;  ///< resume a checkpoint another toolkit version made (else refused)
+  /// Start afresh over the checkpoint an interrupted run left: without it (or `resume`) a run
+  /// refuses to write over finished realizations (granular::InvalidInput naming `checkpoint`).
+  bool fresh = false;
 };
 
 }  // namespace granular
