@@ -9,9 +9,9 @@
 namespace granular {
 
 struct RunOptions {
-  int threads = 0;           ///< worker threads in this process; 0 = every core. Results do not depend on it.
-  std::string checkpoint{};  ///< file (or prefix) logging finished realizations; empty = none
-  bool resume = false;       ///< continue from `checkpoint` instead of starting afresh
+  int threads = 0;                    ///< worker threads in this process; 0 = every core. Results do not depend on it.
+  std::string checkpoint{};           ///< file (or prefix) logging finished realizations; empty = none
+  bool resume = false;                ///< continue from `checkpoint` instead of starting afresh
   ProgressMeter* progress = nullptr;  ///< optional; advanced once per realization done
   /// Optional; polled (from any worker thread) before each realization, or each cell of the IPR
   /// map: true stops the run with granular::Cancelled once the work in flight is finished and
