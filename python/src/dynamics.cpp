@@ -26,15 +26,6 @@
 namespace granular::python {
 namespace {
 
-/// `choices` and `beyond` applied to `c` as the tools do; integrator 'auto' stands for SABA2C until
-/// the step is settled. Returns whether it was 'auto'.
-bool apply_choices(TransportChoices choices, const BeyondChoices& beyond, TransportCase& c) {
-  const bool automatic = take_automatic_integrator(choices);
-  granular::apply(choices, c);
-  granular::apply(beyond, c.dynamics);
-  return automatic;
-}
-
 py::object csv_text(const std::function<void(std::ostream&)>& write) {
   std::ostringstream out;
   write(out);
@@ -46,7 +37,7 @@ py::object csv_text(const std::function<void(std::ostream&)>& write) {
 py::dict spreading(const PyChain& chain, TransportCase c, const SpreadingOutputChoices& outputs,
                    const TransportChoices& choices, const BeyondChoices& beyond, bool dt_given, const PyRun& options) {
   c.chain = chain.recipe;
-  const bool automatic = apply_choices(choices, beyond, c);
+  const bool automatic = granular::apply(choices, beyond, c);
   granular::apply(outputs, c);
   SpreadingRunConfig& d = c.dynamics;
   fit_within_duration(c);                          // a window beyond T: no exponents
@@ -86,7 +77,7 @@ py::dict spreading(const PyChain& chain, TransportCase c, const SpreadingOutputC
 /// `c`: the case as granular/_dynamics.py fills it (chain, kick, realizations, profiled ones).
 py::dict transport(TransportCase c, const TransportChoices& choices, const BeyondChoices& beyond, bool dt_given,
                    const PyRun& options) {
-  const bool automatic = apply_choices(choices, beyond, c);
+  const bool automatic = granular::apply(choices, beyond, c);
   fit_within_duration(c);
   std::string t_warning;
   const nlohmann::json step_rule = validate_and_settle(c, automatic, dt_given, "T", t_warning);
@@ -125,7 +116,7 @@ py::dict exponent_table(const ExponentChoices& words, ExponentTableConfig config
                         const BeyondChoices& beyond, bool dt_given, const std::string& paper_path, const PyRun& options) {
   granular::apply(words, config);
   TransportCase& base = config.base;
-  const bool automatic = apply_choices(choices, beyond, base);
+  const bool automatic = granular::apply(choices, beyond, base);
   auto cases = exponent_cases(config);
   std::string t_warning;  // one is enough: the cases share T
   const nlohmann::json step_rule = validate_and_settle(cases, automatic, dt_given, "T", t_warning);

@@ -45,14 +45,14 @@ inline void add_lyapunov_options(CLI::App& app, BeyondOptions& o) {
   add_option(app, "--deviation-samples", o.deviation_samples, "uniform times of --deviation");
 }
 
-/// granular::apply(BeyondChoices) (transport_choices.hpp), once --deviation is read.
-inline void apply(const BeyondOptions& o, SpreadingRunConfig& d) {
+/// The library's choices (transport_choices.hpp), once --deviation is read.
+inline BeyondChoices beyond_choices(const BeyondOptions& o) {
   if (!o.deviation.empty() && !o.mle) throw InvalidInput("--deviation: needs --mle");
   if (o.deviation_samples < 2)
     throw InvalidInput("--deviation-samples " + std::to_string(o.deviation_samples) + ": at least 2");
   BeyondChoices choices = o;
   if (o.deviation.empty()) choices.deviation_samples = 0;
-  granular::apply(choices, d);
+  return choices;
 }
 
 /// The options bind straight into the library's choices, except the three whose words only a
@@ -76,7 +76,6 @@ inline void add_dynamics_options(CLI::App& app, DynamicsOptions& o) {
 /// words are read. Needs c.n (for --site).
 inline void apply(const DynamicsOptions& o, TransportCase& c) {
   TransportChoices choices = o;
-  take_automatic_integrator(choices);  // settled with the step (validate_and_settle)
   if (o.beta_text != "match") choices.beta = parse_number_list(o.beta_text, "--beta", 0, 1).at(0);
   else choices.beta.reset();
   if (o.active_window_text != "on" && o.active_window_text != "off")
@@ -85,8 +84,7 @@ inline void apply(const DynamicsOptions& o, TransportCase& c) {
   const Interval fit = parse_interval(o.fit_text, "--fit");
   choices.fit_begin = fit.start;
   choices.fit_end = fit.stop;
-  granular::apply(choices, c);
-  apply(static_cast<const BeyondOptions&>(o), c.dynamics);
+  granular::apply(choices, beyond_choices(o), c);  // integrator auto: settled with the step (validate_and_settle)
 }
 
 /// granular::validate_and_settle (case_settling.hpp): the cases validated with the errors in the

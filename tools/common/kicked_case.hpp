@@ -61,7 +61,7 @@ inline KickedCase kicked_case(KickedCaseOptions& o, bool ensemble) {
     BeyondOptions beyond;  // the tangent map as the file says, the deviation file as the flags say
     static_cast<BeyondChoices&>(beyond) = beyond_choices_of(c.dynamics);
     beyond.deviation = o.dynamics.deviation, beyond.deviation_samples = o.dynamics.deviation_samples;
-    apply(beyond, c.dynamics);
+    granular::apply(beyond_choices(beyond), c.dynamics);
     k.selected = granular::select_chain(c.chain, chain_realization(o.chain), {"R1_m", "beads", "radii_file"});
     warn(k.selected.warnings);
   } else {

@@ -86,6 +86,13 @@ void apply(const ModeKick& kick, const std::vector<Kick>& kicks, TransportCase& 
   c.mode = kick;
 }
 
+bool apply(TransportChoices choices, const BeyondChoices& beyond, TransportCase& c) {
+  const bool automatic = take_automatic_integrator(choices);
+  apply(choices, c);
+  apply(beyond, c.dynamics);
+  return automatic;
+}
+
 bool take_automatic_integrator(TransportChoices& choices) {
   if (choices.integrator != "auto") return false;
   choices.integrator = "saba2c";

@@ -80,6 +80,10 @@ const ParameterTable<ModeKick>& mode_kick_parameters();
 /// (`damping_time`, `kk_gamma`, `renormalize`, `deviation_samples`).
 void apply(const BeyondChoices& choices, SpreadingRunConfig& d);
 
+/// apply(choices, c) and apply(beyond, c.dynamics), with integrator "auto" standing for SABA2C
+/// until the step is settled (take_automatic_integrator). Returns whether it was "auto".
+bool apply(TransportChoices choices, const BeyondChoices& beyond, TransportCase& c);
+
 /// The choices that give `d`'s damping and tangent map (the inverse of apply).
 BeyondChoices beyond_choices_of(const SpreadingRunConfig& d);
 
