@@ -20,8 +20,9 @@ template <class Choices>
 struct Parameter {
   /// The member the parameter sets; none (monostate) when front ends read it in forms of their
   /// own (a fit window "start:stop" on the command line, a pair in Python) and set fields of it.
-  using Field = std::variant<std::monostate, double Choices::*, long long Choices::*, long Choices::*,
-                             std::string Choices::*, bool Choices::*, std::optional<double> Choices::*>;
+  using Field =
+      std::variant<std::monostate, double Choices::*, long long Choices::*, long Choices::*, unsigned long Choices::*,
+                   std::string Choices::*, bool Choices::*, std::optional<double> Choices::*>;
 
   Parameter(std::string name, Field field, std::string help, bool shows_default = true)
       : name(std::move(name)), field(field), help(std::move(help)), shows_default(shows_default) {}

@@ -144,12 +144,11 @@ void bind_studies(py::module_& m) {
   m.def("_localization", &localization);
   m.def("_correlations", &correlations);
   m.def("_butterfly", &butterfly);
-  using D = DynamicalButterflyConfig;
-  config_class(m, "DynamicalButterflyConfig",
-               "chain ratios realization amplitude velocity_seed spectrum_samples "
-               "max_energy_error",
-               &D::chain, &D::ratios, &D::realization, &D::amplitude, &D::velocity_seed, &D::spectrum_samples,
-               &D::max_energy_error);
+  using D = DynamicalButterflyConfig;  // the table's parameters; the chain, ratios, realization: granular/_studies.py
+  table_class(m, "DynamicalButterflyConfig", dynamical_butterfly_parameters())
+      .def_readwrite("chain", &D::chain)
+      .def_readwrite("ratios", &D::ratios)
+      .def_readwrite("realization", &D::realization);
   m.def("_dynamical_butterfly", &dynamical_butterfly);
 }
 

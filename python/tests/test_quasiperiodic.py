@@ -1,7 +1,9 @@
 """granular.quasiperiodic: the same chain as the tools' --quasi (spectrum compared exactly with the
 spectrum tool's CSV), the modulation formula of docs/physics.md, "Quasiperiodic chains", and bad
 keywords named in the ValueError."""
+import inspect
 import math
+import re
 
 import numpy as np
 import pytest
@@ -150,6 +152,20 @@ def test_dynamical_butterfly_peaks_are_the_eigenfrequencies():
     resolution = 1 / T / 1e3
     assert np.max(np.min(np.abs(peaks[:, None] - modes[None, :]), axis=1)) <= resolution
     assert np.max(np.min(np.abs(modes[:, None] - peaks[None, :]), axis=1)) <= resolution
+
+
+def test_every_parameter_of_the_dynamical_butterfly_table_is_a_documented_keyword():
+    """The library describes the run's numbers once (dynamical_butterfly_parameters); the butterfly tool makes its
+    --from dynamics flags of it. A parameter added there must reach granular.dynamical_butterfly too: as a keyword
+    with the library's default, documented in the docstring."""
+    taken = inspect.signature(gr.dynamical_butterfly).parameters
+    defaults = gr._core.DynamicalButterflyConfig()
+    assert len(defaults._parameters) >= 4
+    for name, word, _ in defaults._parameters:
+        assert word in taken, f"dynamical_butterfly takes no keyword {word}"
+        assert taken[word].default == getattr(defaults, name), f"{word}: not the library's default"
+        assert re.search(rf"(?<![\w-]){word}(?![\w-])", gr.dynamical_butterfly.__doc__), \
+            f"dynamical_butterfly's docstring does not explain {word}"
 
 
 @pytest.mark.parametrize(

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "granular/study/chain_choices.hpp"
+#include "granular/study/dynamical_butterfly.hpp"
 #include "granular/study/transport_choices.hpp"
 
 namespace granular {
@@ -51,11 +52,13 @@ TEST(ParameterTables, NameEachParameterOnceAndReferOnlyToParametersTheyDescribe)
   collect_names(transport_parameters(), names);
   collect_names(beyond_parameters(), names);
   collect_names(mode_kick_parameters(), names);
+  collect_names(dynamical_butterfly_parameters(), names);
   EXPECT_GE(names.size(), 45U);
   expect_references_known(chain_parameters(), names);
   expect_references_known(transport_parameters(), names);
   expect_references_known(beyond_parameters(), names);
   expect_references_known(mode_kick_parameters(), names);
+  expect_references_known(dynamical_butterfly_parameters(), names);
 }
 
 }  // namespace

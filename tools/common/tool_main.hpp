@@ -115,7 +115,7 @@ std::string help_of(const ParameterTable<Choices>& table, const std::string& nam
 
 /// Registers an option for every row of `table` (parameter_table.hpp) that is shown, bound to its
 /// field of `o` (or its text: Shown::text): a flag for a bool, an integer that takes scientific
-/// notation for a long long, a number or word otherwise. Returns the options by parameter name.
+/// notation for a long long or unsigned long, a number or word otherwise. Returns them by parameter name.
 template <class Choices>
 std::map<std::string, CLI::Option*> add_parameters(CLI::App& app, Choices& o, const ParameterTable<Choices>& table,
                                                    const Shown& shown = {}) {
@@ -131,7 +131,9 @@ std::map<std::string, CLI::Option*> add_parameters(CLI::App& app, Choices& o, co
           if (own) return app.add_option(flag, *text->second, help);
           if constexpr (std::is_same_v<Field, std::monostate>) return nullptr;
           else if constexpr (std::is_same_v<Field, bool Choices::*>) return app.add_flag(flag, o.*field, help);
-          else if constexpr (std::is_same_v<Field, long long Choices::*>) return add_integer(app, flag, o.*field, help);
+          else if constexpr (std::is_same_v<Field, long long Choices::*> ||
+                             std::is_same_v<Field, unsigned long Choices::*>)
+            return add_integer(app, flag, o.*field, help);
           else return app.add_option(flag, o.*field, help);
         },
         p.field);

@@ -58,6 +58,16 @@ double opening_energy(const Chain& chain) {
 
 }  // namespace
 
+const ParameterTable<DynamicalButterflyConfig>& dynamical_butterfly_parameters() {
+  using O = DynamicalButterflyConfig;
+  static const ParameterTable<O> table{
+      {"amplitude", &O::amplitude, "initial velocities uniform in [-a, a] [m/s], small enough to stay linear"},
+      {"velocity_seed", &O::velocity_seed, "seed of the initial velocities"},
+      {"spectrum_samples", &O::spectrum_samples, "uniform samples of [0, T] transformed (Nyquist about samples/(2T))"},
+      {"max_energy_error", &O::max_energy_error, "relative energy error that stops a run, 0 = off"}};
+  return table;
+}
+
 State random_velocities(std::size_t beads, double amplitude, std::uint64_t velocity_seed) {
   State s(beads);
   RandomStream stream(velocity_seed, 0);

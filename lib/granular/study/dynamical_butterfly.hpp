@@ -31,6 +31,7 @@
 #include "granular/dynamics/state.hpp"
 #include "granular/ensemble/run_options.hpp"
 #include "granular/model/chain_recipe.hpp"
+#include "granular/parameter_table.hpp"
 
 namespace granular {
 
@@ -49,6 +50,11 @@ struct DynamicalButterflyConfig {
   SpectrumSource source = SpectrumSource::velocity;
   double max_energy_error = 1e-3;  ///< guard on the relative energy error; 0 = unwatched
 };
+
+/// The meaning and units of the run's own numbers (parameter_table.hpp): amplitude, velocity_seed,
+/// spectrum_samples, max_energy_error. Not the chain, ratios and realization (the chain's words
+/// are a front end's), nor the integration's fields (members of `integration`, not of the config).
+const ParameterTable<DynamicalButterflyConfig>& dynamical_butterfly_parameters();
 
 /// Throws InvalidInput naming the field: quasi, ratios, F0, amplitude (zero, not finite, or an
 /// energy that could open a contact of some β's chain), time_step (past the scheme's stability
