@@ -93,25 +93,15 @@ class Spectrum:
 
 
 def _selection(near, count, window, got=True):
-    """The _core.ModeSelection of the keywords near, count / window (every mode without them); `got`: say how many
-    values a window of the wrong length had."""
+    """The _core.ModeSelection of the keywords near, count / window (every mode without them), by the library's
+    rule (choose_modes) once the window is two numbers; `got`: say how many values a window of the wrong length had."""
     if window is not None:
-        if near is not None or count is not None:
-            raise ValueError("window: cannot be combined with near/count")
-        w = double_vector(window, "window", False)
-        if len(w) != 2:
-            raise ValueError("window: expected (lo, hi) in kHz" + (f", got {len(w)} values" if got else ""))
-        return _core._window(w[0], w[1])
-    if near is None and count is None:
-        return _core.ModeSelection()
-    if count is None:
-        raise ValueError("near: needs count (how many modes)")
-    if near is None:
-        raise ValueError("count: needs near (the target frequency in kHz)")
-    k = operator.index(count)
-    if k < 1:
-        raise ValueError(f"count {k}: must be >= 1")
-    return _core._nearest(float(near), min(k, 1 << 40))
+        window = double_vector(window, "window", False)
+        if len(window) != 2:
+            raise ValueError("window: expected (lo, hi) in kHz" + (f", got {len(window)} values" if got else ""))
+    if count is not None:  # within the library's 64-bit count (no chain has 2^40 modes)
+        count = max(min(operator.index(count), 1 << 40), -(1 << 63))
+    return _core._choose_modes(None if near is None else float(near), count, window)
 
 
 def _system(system):

@@ -71,8 +71,7 @@ void bind_linear(py::module_& m) {
 
   // What granular/_linear.py fills from the keywords: the selection and the solver's config.
   py::class_<ModeSelection>(m, "ModeSelection").def(py::init<>());
-  m.def("_nearest", &nearest);
-  m.def("_window", &granular::window);
+  m.def("_choose_modes", &choose_modes);  // near, count, window (lo, hi): the tools' rule
   using C = SpectrumConfig;
   config_class(m, "SpectrumConfig", "vectors tolerance subspace lanes", &C::vectors, &C::tolerance, &C::subspace,
                &C::lanes)

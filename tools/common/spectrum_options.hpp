@@ -3,6 +3,7 @@
 #include <cmath>
 #include <optional>
 #include <string>
+#include <utility>
 
 #include <CLI/CLI.hpp>
 
@@ -25,24 +26,19 @@ inline void add_selection_options(CLI::App& app, SelectionOptions& o, const std:
   app.add_option("--window", o.window, what + "every mode in F1:F2 [kHz], both ends included");
 }
 
-/// Exactly one of (--near with --count) or --window "F1:F2"; every mode when none is given.
+/// Exactly one of (--near with --count) or --window "F1:F2"; every mode when none is given: the
+/// library's rule (choose_modes) once --window's text is read as two frequencies.
 inline ModeSelection parse_selection(const SelectionOptions& o) {
-  if (!o.given()) return all_modes();
+  std::optional<std::pair<double, double>> khz;
   if (o.window) {
-    if (o.near || o.count) throw InvalidInput("--window", " cannot be combined with --near/--count");
     const std::string& w = *o.window;
-    const auto colon = w.find(':');
-    auto khz = [&](const std::string& text) {
-      if (const auto v = parse_finite_number(text)) return *v;
-      throw InvalidInput("--window", " '" + w + "': expected F1:F2, two frequencies in kHz");
-    };
-    if (colon == std::string::npos || w.find(':', colon + 1) != std::string::npos)
-      throw InvalidInput("--window", " '" + w + "': expected F1:F2, two frequencies in kHz");
-    return window(khz(w.substr(0, colon)), khz(w.substr(colon + 1)));
+    const auto colon = w.find(':');  // a second colon leaves no number after the first
+    const auto lo = parse_finite_number(w.substr(0, colon)), hi = parse_finite_number(w.substr(colon + 1));
+    if (colon == std::string::npos || !lo || !hi)
+      throw InvalidInput("window", " '" + w + "': expected F1:F2, two frequencies in kHz");
+    khz = {*lo, *hi};
   }
-  if (o.near && !o.count) throw InvalidInput("--near", " needs --count K (how many modes)");
-  if (o.count && !o.near) throw InvalidInput("--count", " needs --near KHZ (the target frequency)");
-  return nearest(*o.near, *o.count);
+  return choose_modes(o.near, o.count, khz);
 }
 
 }  // namespace granular::tool

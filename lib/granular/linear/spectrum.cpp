@@ -31,6 +31,19 @@ std::string_view to_string(SpectrumMethod method) { return method_names.name_of(
 
 SpectrumMethod parse_spectrum_method(std::string_view name) { return method_names.parse(name); }
 
+ModeSelection choose_modes(std::optional<double> near, std::optional<long> count,
+                           std::optional<std::pair<double, double>> window_khz) {
+  if (window_khz) {
+    if (near || count) throw InvalidInput("window", " cannot be combined with `near`/`count`");
+    return window(window_khz->first, window_khz->second);
+  }
+  if (!near && !count) return all_modes();
+  if (!count) throw InvalidInput("near", " needs `count` (how many modes)");
+  if (!near) throw InvalidInput("count", " needs `near` (the target frequency in kHz)");
+  if (*count < 1) throw InvalidInput("count", " " + std::to_string(*count) + ": must be >= 1");
+  return nearest(*near, *count);
+}
+
 void validate(const ModeSelection& s, std::size_t n) {
   switch (s.kind) {
     case ModeSelection::Kind::all: return;

@@ -23,9 +23,11 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "granular/linear/dynamical_matrix.hpp"
@@ -48,6 +50,14 @@ inline ModeSelection nearest(double khz, long count) { return {ModeSelection::Ki
 inline ModeSelection window(double lo_khz, double hi_khz) {
   return {ModeSelection::Kind::window, 0, 0, lo_khz, hi_khz};
 }
+
+/// The modes a front end's choices select, the one rule of the tools and Python: the `count` modes
+/// nearest `near` [kHz] (both given), every mode in the `window` (lo, hi) [kHz], or every mode when
+/// none is given. Throws InvalidInput naming `near`, `count` or `window` when the window comes with
+/// `near`/`count`, one of `near` and `count` comes without the other, or count < 1; the chain's own
+/// limits are validate's.
+ModeSelection choose_modes(std::optional<double> near, std::optional<long> count,
+                           std::optional<std::pair<double, double>> window);
 
 /// Throws InvalidInput (naming near_khz, count or window) unless the selection makes sense for an
 /// N-bead chain: count ≤ 0 or > N is an error; near_khz above the spectrum is not (it selects the
