@@ -93,5 +93,5 @@ int main(int argc, char** argv) {
                      files.commit();
                      if (ensemble) CheckpointLog::remove_all(paths.checkpoint);
                    },
-                   {{"spectrum_source", "--spectrum-of"}, {"lyapunov", "--mle"}, {"amplitude", "--alpha"}});
+                   {{"lyapunov", "--mle"}, {"amplitude", "--alpha"}});
 }

@@ -84,6 +84,13 @@ std::pair<ShootingConfig, ShootingConfig> dense_and_krylov(const DistortedBreath
   return {dense, krylov};
 }
 
+/// |x0 of `krylov` − x0 of `dense`| / |x0 of `dense`|: how far the two solutions' turning states lie apart.
+double x0_relative_gap(const PeriodicOrbit& krylov, const PeriodicOrbit& dense) {
+  std::vector<double> gap(dense.x0.size());
+  for (std::size_t i = 0; i < gap.size(); ++i) gap[i] = krylov.x0[i] - dense.x0[i];
+  return euclidean_norm(gap) / euclidean_norm(dense.x0);
+}
+
 // From a 1 % distortion of a light-centred gap breather of 201 beads (6 points into the gap: the
 // contacts closed, the profile well nonlinear), Newton–Krylov lands on the orbit dense Newton
 // finds, converging superlinearly in few GMRES iterations per step.
@@ -99,9 +106,7 @@ TEST(NewtonKrylov, SameOrbitAsDenseNewtonAt201Beads) {
   EXPECT_EQ(dense.newton, "dense");
   EXPECT_EQ(krylov.newton, "krylov");
   EXPECT_LE(krylov.residual(), 1e-13);
-  std::vector<double> gap(dense.x0.size());
-  for (std::size_t i = 0; i < gap.size(); ++i) gap[i] = krylov.x0[i] - dense.x0[i];
-  const double difference = euclidean_norm(gap) / euclidean_norm(dense.x0);
+  const double difference = x0_relative_gap(krylov, dense);
   std::printf("|x0 krylov - x0 dense| / |x0| = %.2e\n", difference);
   EXPECT_LT(difference, 1e-8);
   // Superlinear: each ratio of successive residuals smaller than the one before (above the floor).
@@ -171,9 +176,7 @@ TEST(NewtonKrylov, BorderedArclengthCorrectorMatchesTheDenseOne) {
     EXPECT_EQ(dense.newton, "dense");
     EXPECT_EQ(krylov.newton, "krylov");
     EXPECT_LE(krylov.residual(), 1e-13);
-    std::vector<double> gap(dense.x0.size());
-    for (std::size_t j = 0; j < gap.size(); ++j) gap[j] = krylov.x0[j] - dense.x0[j];
-    const double difference = euclidean_norm(gap) / euclidean_norm(dense.x0);
+    const double difference = x0_relative_gap(krylov, dense);
     std::printf("arc point %zu: %.9f kHz, omega differs by %.1e, x0 by %.1e; ", i,
                 dense.omega / 2e3 / 3.141592653589793, krylov.omega / dense.omega - 1, difference);
     print_history("Newton-Krylov", krylov);

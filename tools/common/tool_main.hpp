@@ -150,7 +150,8 @@ inline std::string flag_for(const CLI::App& app, const std::string& parameter,
   if (auto it = overrides.find(parameter); it != overrides.end()) return it->second;
   const std::string flag = option_name(parameter);
   if (app.get_option_no_throw(flag)) return flag;
-  if (const std::string word = "--" + front_end_word(parameter); app.get_option_no_throw(word)) return word;  // --F0
+  if (const std::string word = option_name(front_end_word(parameter)); app.get_option_no_throw(word))
+    return word;  // --F0
   return "";
 }
 
