@@ -98,7 +98,7 @@ int main(int argc, char** argv) {
     const auto files = write_exponent_files(paths, cells, rows);
     for (const auto& c : cells)
       tool::report_excluded(c.definition, c.summary, meta, run_options, "exponents", output, argv[0]);
-    meta["parameters"] = describe_table_parameters(choices.chains_text, config, choices.kicks_text, run_options.threads);
+    meta["parameters"] = describe_table_parameters(chain_list(choices), config, kick_list(choices), run_options.threads);
     meta["cases"] = describe_cells(cells);
     meta["time_step_rule"] = step_rule;
     if (!resumed.is_null()) meta["resumed_checkpoint"] = resumed;

@@ -50,8 +50,8 @@ int main(int argc, char** argv) {
   app.add_option("--bin-khz", config.bin_khz,
                  "average in frequency bins of this width [kHz] instead of by mode number: "
                  "columns disorder,q,xi,freq_lo_khz,freq_hi_khz,modes,ipr (empty bins: modes 0, ipr nan)");
-  auto* quasi = tool::add_quasiperiodic_options(app, beads);  // one cell: realizations are phases
-  for (auto* b : tool::add_bead_distribution_options(app, beads)) b->excludes(quasi), quasi->excludes(b);
+  tool::add_quasiperiodic_options(app, beads);  // one cell: realizations are phases
+  tool::add_bead_distribution_options(app, beads);
   app.add_flag("--quiet", quiet, "no progress line on stderr");
 
   return tool::run(app, argc, argv, [&] {

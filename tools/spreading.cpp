@@ -42,7 +42,7 @@ int main(int argc, char** argv) {
                      const bool ensemble = options.realizations > 1 || run.resuming();
                      if (run.threads < 0)
                        throw InvalidInput("--threads " + std::to_string(run.threads) + ": must be >= 0");
-                     tool::KickedCase k = tool::kicked_case(options, ensemble);
+                     KickedCase k = tool::kicked_case(options, ensemble);
                      const SelectedChain& selected = k.selected;
                      TransportCase& c = k.c;
                      c.profile_realizations = more.profile ? c.realizations : 0;

@@ -16,16 +16,29 @@
 
 namespace granular {
 
+/// How a command line writes a parameter that is not one number or word (a fit window
+/// "start:stop", a velocity or 'match', a comma list): `read` sets the choices from such a text
+/// (throwing InvalidInput that names the parameter), `write` says the choices' value in it.
+template <class Choices>
+struct TextForm {
+  void (*read)(Choices&, const std::string&) = nullptr;
+  std::string (*write)(const Choices&) = nullptr;
+};
+
 template <class Choices>
 struct Parameter {
   /// The member the parameter sets; none (monostate) when front ends read it in forms of their
-  /// own (a fit window "start:stop" on the command line, a pair in Python) and set fields of it.
+  /// own (a fit window: `text` on the command line, a pair in Python) and set fields of it.
   using Field =
       std::variant<std::monostate, double Choices::*, long long Choices::*, long Choices::*, unsigned long Choices::*,
                    std::string Choices::*, bool Choices::*, std::optional<double> Choices::*>;
 
   Parameter(std::string name, Field field, std::string help, bool shows_default = true)
       : name(std::move(name)), field(field), help(std::move(help)), shows_default(shows_default) {}
+  Parameter(std::string name, Field field, TextForm<Choices> text, std::string help, bool shows_default = true)
+      : Parameter(std::move(name), field, std::move(help), shows_default) {
+    this->text = text;
+  }
 
   std::string name;  ///< the library's name, the one its messages use (`time_step`)
   Field field;
@@ -33,6 +46,9 @@ struct Parameter {
   /// end's word for it (--dt, dt).
   std::string help;
   bool shows_default = true;  ///< whether the default says something (not a "none" sentinel)
+  /// A command line's text form, if the parameter has one; front ends that take values rather
+  /// than text (Python) set `field`.
+  std::optional<TextForm<Choices>> text{};
 };
 
 template <class Choices>

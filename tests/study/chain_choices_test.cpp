@@ -86,6 +86,22 @@ TEST(ChainChoices, ErrorsNameTheChoice) {
   EXPECT_EQ(with([](ChainChoices& o) { o.walls = "round"; }), "walls");
 }
 
+TEST(ChainChoices, AChainComesFromOneSourceTheSecondIsNamed) {
+  ChainChoices o;
+  o.types = "4e-3:0.5,3e-3:0.5";
+  EXPECT_EQ(chain_choices_parameter(o), "(accepted)");
+  o.polydisperse = "uniform:3e-3:4e-3";
+  EXPECT_EQ(chain_choices_parameter(o), "polydisperse");
+  o.polydisperse.clear(), o.quasi = "s2";
+  EXPECT_EQ(chain_choices_parameter(o), "quasi");
+  EXPECT_THROW(bead_distribution(o), InvalidInput) << "the rule holds for a caller that reads the parts alone";
+  EXPECT_THROW(quasiperiodic(o), InvalidInput);
+  o.types.clear(), o.radii = "no-such-file";  // refused before the file is read
+  EXPECT_EQ(chain_choices_parameter(o), "quasi");
+  o.quasi.clear(), o.config = "no-such-file";
+  EXPECT_EQ(chain_choices_parameter(o), "radii");
+}
+
 TEST(ChainChoices, ReadARadiiFileWithItsWarnings) {
   const std::string path = testing::scratch_path("chain_choices", "radii.txt");
   std::ofstream(path) << "# radii [m]\n4e-3\n4.76\n3e-3\n";

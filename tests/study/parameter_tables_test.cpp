@@ -9,8 +9,10 @@
 #include <set>
 #include <string>
 
+#include "granular/error.hpp"
 #include "granular/study/chain_choices.hpp"
 #include "granular/study/dynamical_butterfly.hpp"
+#include "granular/study/exponent_choices.hpp"
 #include "granular/study/transport_choices.hpp"
 
 namespace granular {
@@ -53,12 +55,50 @@ TEST(ParameterTables, NameEachParameterOnceAndReferOnlyToParametersTheyDescribe)
   collect_names(beyond_parameters(), names);
   collect_names(mode_kick_parameters(), names);
   collect_names(dynamical_butterfly_parameters(), names);
+  collect_names(exponent_parameters(), names);
   EXPECT_GE(names.size(), 45U);
   expect_references_known(chain_parameters(), names);
   expect_references_known(transport_parameters(), names);
   expect_references_known(beyond_parameters(), names);
   expect_references_known(mode_kick_parameters(), names);
   expect_references_known(dynamical_butterfly_parameters(), names);
+  expect_references_known(exponent_parameters(), names);
+}
+
+/// Every text form of `table` reads back what it writes of the defaults, and a value it cannot
+/// read is refused naming its parameter; returns how many there are.
+template <class Choices>
+int expect_text_forms_read_what_they_write(const ParameterTable<Choices>& table, const std::string& unreadable) {
+  int forms = 0;
+  for (const auto& p : table) {
+    if (!p.text) continue;
+    ++forms;
+    Choices defaults, read;
+    const std::string text = p.text->write(defaults);
+    p.text->read(read, text);
+    EXPECT_EQ(p.text->write(read), text) << p.name;
+    try {
+      p.text->read(read, unreadable);
+      ADD_FAILURE() << p.name << " read '" << unreadable << "'";
+    } catch (const InvalidInput& e) {
+      EXPECT_EQ(e.parameter(), p.name) << e.what();
+    }
+  }
+  return forms;
+}
+
+TEST(ParameterTables, TextFormsReadWhatTheyWriteAndNameTheirParameter) {
+  EXPECT_EQ(expect_text_forms_read_what_they_write(transport_parameters(), "1:x"), 3);  // beta, fit, active_window
+  EXPECT_EQ(expect_text_forms_read_what_they_write(exponent_parameters(), "h,,A"), 2);  // chains, ic
+  TransportChoices o;
+  parameter(transport_parameters(), "beta").text->read(o, "match");
+  EXPECT_FALSE(o.beta) << "'match': the energy of alpha";
+  parameter(transport_parameters(), "fit").text->read(o, "2e-3:5e-3");
+  EXPECT_EQ(o.fit_begin, 2e-3);
+  EXPECT_EQ(o.fit_end, 5e-3);
+  parameter(transport_parameters(), "active_window").text->read(o, "off");
+  EXPECT_FALSE(o.active_window);
+  EXPECT_EQ(parameter(transport_parameters(), "active_window").text->write(o), "off");
 }
 
 }  // namespace

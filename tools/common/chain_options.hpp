@@ -1,8 +1,8 @@
 #pragma once
 // The options that pick one chain (a ChainRecipe and its realization), shared by every
 // single-chain tool: a random two-type draw, a types or radii file, k types, polydisperse radii or
-// a quasiperiodic chain; stored, or streamed for tools that walk it once (localization).
-#include <map>
+// a quasiperiodic chain (one of them: the library refuses two); stored, or streamed for tools
+// that walk it once (localization).
 #include <set>
 #include <string>
 #include <vector>
@@ -18,22 +18,10 @@ namespace granular::tool {
 /// The chain's options bind straight into the library's choices (study/chain_choices.hpp).
 using ChainOptions = ChainChoices;
 
-/// Options that exclude each other.
-inline void exclusive(const std::vector<CLI::Option*>& these, const std::vector<CLI::Option*>& those) {
-  for (auto* a : these)
-    for (auto* b : those)
-      if (a != b) a->excludes(b), b->excludes(a);
-}
-
-/// --types, --type-masses, --polydisperse (mutually exclusive); returns them for more exclusions.
-/// `rule_flag`: the tool's flag that says how types are drawn.
-inline std::vector<CLI::Option*> add_bead_distribution_options(CLI::App& app, ChainOptions& o,
-                                                               const std::string& rule_flag = "--disorder") {
-  auto added = add_parameters(app, o, chain_parameters(),
-                              {.only = {"types", "type_masses", "polydisperse"}, .flags = {{"disorder", rule_flag}}});
-  const std::vector<CLI::Option*> all{added["types"], added["type_masses"], added["polydisperse"]};
-  exclusive(all, all);
-  return all;
+/// --types, --type-masses, --polydisperse. `rule_flag`: the tool's flag that says how types are drawn.
+inline void add_bead_distribution_options(CLI::App& app, ChainOptions& o, const std::string& rule_flag = "--disorder") {
+  add_parameters(app, o, chain_parameters(),
+                 {.only = {"types", "type_masses", "polydisperse"}, .flags = {{"disorder", rule_flag}}});
 }
 
 /// --walls flat | sphere (model/chain_recipe.hpp: WallShape).
@@ -41,22 +29,18 @@ inline void add_walls_option(CLI::App& app, std::string& walls) {
   add_option(app, "--walls", walls, help_of(chain_parameters(), "walls"));
 }
 
-/// --quasi and its parameters (model/quasiperiodic.hpp); returns --quasi for exclusions.
-inline CLI::Option* add_quasiperiodic_options(CLI::App& app, ChainOptions& o) {
-  const std::set<std::string> quasi{"quasi", "modulation", "ratio", "phase", "angle", "k0", "k0_n_per_m"};
-  return add_parameters(app, o, chain_parameters(), {.only = quasi})["quasi"];
+/// --quasi and its parameters (model/quasiperiodic.hpp).
+inline void add_quasiperiodic_options(CLI::App& app, ChainOptions& o) {
+  add_parameters(app, o, chain_parameters(),
+                 {.only = {"quasi", "modulation", "ratio", "phase", "angle", "k0", "k0_n_per_m"}});
 }
 
 /// Every chain option: the two-type draw, the files, the bead distributions, the quasiperiodic chain.
 inline void add_chain_options(CLI::App& app, ChainOptions& o) {
   add_parameters(app, o, chain_parameters(),
-                 {.only = {"disorder", "xi", "q", "N", "F0", "R1", "walls", "seed", "realization"}});
-  auto files = add_parameters(app, o, chain_parameters(), {.only = {"config", "radii"}});
-  const std::vector<CLI::Option*> config_radii{files["config"], files["radii"]},
-      quasi{add_quasiperiodic_options(app, o)};
-  exclusive(config_radii, config_radii);
-  const auto beads = add_bead_distribution_options(app, o);
-  exclusive(beads, config_radii), exclusive(beads, quasi), exclusive(quasi, config_radii);
+                 {.only = {"disorder", "xi", "q", "N", "F0", "R1", "walls", "seed", "realization", "config", "radii"}});
+  add_quasiperiodic_options(app, o);
+  add_bead_distribution_options(app, o);
 }
 
 /// The recipe the options pick (granular::chain_recipe), a radii file's warnings printed.

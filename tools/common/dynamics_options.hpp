@@ -2,7 +2,7 @@
 // The options of a kicked-chain run, shared by `spreading` and `exponents` so that the same case
 // gives the same numbers from both: one default for every physical choice (the paper's: α = 1e-7 m,
 // β = 8e-3 m/s, the kick at the centre bead, m̃2 about the excited site, fits on 4–10 ms sampled
-// every 10 µs, t* = 4 ms, κ = 0.1), one --fit and one --beta parser. The library's messages name
+// every 10 µs, t* = 4 ms, κ = 0.1). The library's messages name
 // parameters (`fit_step`, `t_star`); tool::run tells them as these flags (`--fit-step`, `--t-star`).
 // Beyond the paper (docs/physics.md, "Nonlinear dynamics"): dissipation (--damping-time, --kk-gamma)
 // and the maximal Lyapunov exponent by the tangent map (`spreading --mle`, `exponents --mle`).
@@ -16,7 +16,6 @@
 
 #include "chain_options.hpp"
 #include "granular/error.hpp"
-#include "granular/io/range_syntax.hpp"
 #include "granular/study/case_settling.hpp"
 #include "granular/study/spreading_run.hpp"
 #include "granular/study/time_step_rule.hpp"
@@ -55,37 +54,20 @@ inline BeyondChoices beyond_choices(const BeyondOptions& o) {
   return choices;
 }
 
-/// The options bind straight into the library's choices, except the three whose words only a
-/// command line has: --beta (a number or 'match'), --fit (start:stop), --active-window (on|off);
-/// and damping (here) and the tangent map (spreading adds its flags).
-struct DynamicsOptions : TransportChoices, BeyondOptions {
-  std::string beta_text = "8e-3", fit_text = "4e-3:1e-2", active_window_text = "on";
-};
+/// The options bind straight into the library's choices (--beta, --fit, --active-window by the
+/// text forms of transport_parameters); damping here, the tangent map as each tool adds it.
+struct DynamicsOptions : TransportChoices, BeyondOptions {};
 
 /// The kick's flags, and the run's: where the kick lands, the scheme, the samples, the fit, the
 /// guards and damping (the library's table: transport_parameters, beyond_parameters).
 inline void add_dynamics_options(CLI::App& app, DynamicsOptions& o) {
-  add_parameters<TransportChoices>(
-      app, o, transport_parameters(),
-      {.except = {"fit_begin", "fit_end"},
-       .text = {{"beta", &o.beta_text}, {"fit", &o.fit_text}, {"active_window", &o.active_window_text}}});
+  add_parameters<TransportChoices>(app, o, transport_parameters(), {.except = {"fit_begin", "fit_end"}});
   add_parameters<BeyondChoices>(app, o, beyond_parameters(), {.except = {"mle", "renormalize", "deviation_samples"}});
 }
 
-/// Fills `c` from the options: granular::apply(TransportChoices) once the three command-line
-/// words are read. Needs c.n (for --site).
-inline void apply(const DynamicsOptions& o, TransportCase& c) {
-  TransportChoices choices = o;
-  if (o.beta_text != "match") choices.beta = parse_number_list(o.beta_text, "--beta", 0, 1).at(0);
-  else choices.beta.reset();
-  if (o.active_window_text != "on" && o.active_window_text != "off")
-    throw InvalidInput("--active-window '" + o.active_window_text + "': on or off");
-  choices.active_window = o.active_window_text == "on";
-  const Interval fit = parse_interval(o.fit_text, "--fit");
-  choices.fit_begin = fit.start;
-  choices.fit_end = fit.stop;
-  granular::apply(choices, beyond_choices(o), c);  // integrator auto: settled with the step (validate_and_settle)
-}
+/// Fills `c` from the options (granular::apply; integrator auto: settled with the step by
+/// validate_and_settle). Needs c.n (for --site).
+inline void apply(const DynamicsOptions& o, TransportCase& c) { granular::apply(o, beyond_choices(o), c); }
 
 /// granular::validate_and_settle (case_settling.hpp): the cases validated with the errors in the
 /// order a user can act on them (a --dt past the stability limit before a --fit-step judged on

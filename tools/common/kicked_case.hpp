@@ -10,7 +10,7 @@
 
 #include "chain_options.hpp"
 #include "dynamics_options.hpp"
-#include "granular/study/case_file.hpp"
+#include "granular/study/kicked_case.hpp"
 #include "long_time_options.hpp"
 #include "tool_main.hpp"
 
@@ -45,45 +45,26 @@ inline void add_kicked_case_options(CLI::App& app, KickedCaseOptions& o) {
     if (!still.contains(options[i]->get_name())) options[i]->excludes(file);
 }
 
-struct KickedCase {
-  TransportCase c;
-  SelectedChain selected;  ///< the chain of --realization (the one a single run integrates)
-};
-
-/// The case the options give, before validation (outputs may still add observers to it):
-/// `ensemble` when it averages realizations (an ensemble draws random chains, not a file's).
-inline KickedCase kicked_case(KickedCaseOptions& o, bool ensemble) {
-  if (o.realizations < 1) throw InvalidInput("--realizations " + std::to_string(o.realizations) + ": must be >= 1");
-  KickedCase k;  // (not an aggregate initializer: GCC 12 destroys its members twice when one throws)
-  TransportCase& c = k.c;
-  if (!o.case_file.empty()) {
-    c = read_case_file(o.case_file);
-    BeyondOptions beyond;  // the tangent map as the file says, the deviation file as the flags say
-    static_cast<BeyondChoices&>(beyond) = beyond_choices_of(c.dynamics);
-    beyond.deviation = o.dynamics.deviation, beyond.deviation_samples = o.dynamics.deviation_samples;
-    granular::apply(beyond_choices(beyond), c.dynamics);
-    k.selected = granular::select_chain(c.chain, chain_realization(o.chain), {"R1_m", "beads", "radii_file"});
-    warn(k.selected.warnings);
-  } else {
-    if (o.chain.auto_n) require_centre_kick(o.dynamics.site);
-    c.chain = chain_recipe(o.chain);  // with --N auto, N 3 until sized below
-    c.kick = parse_kick(o.ic);
-    apply(o.mode, {c.kick}, c);
-    apply(o.dynamics, c);
-    fit_within_duration(c);  // a window beyond T: no exponents, a note
-    nlohmann::json rule;
-    if (o.chain.auto_n) {
-      validate(c.chain);                       // a drawn two-type chain
-      rule = to_json(size_for_long_times(c));  // N, the centre kick, the centred draw
-    }
-    k.selected = granular::select_chain(c.chain, chain_realization(o.chain), radius_options(o.chain));
-    warn(k.selected.warnings);
-    if (o.chain.auto_n) k.selected.description["N_rule"] = rule;
+/// The case the options give, before validation (outputs may still add observers to it): the
+/// library's kicked_case (study/kicked_case.hpp), its warnings printed. `ensemble` when it
+/// averages realizations.
+inline KickedCase kicked_case(const KickedCaseOptions& o, bool ensemble) {
+  KickedCase k;
+  if (o.case_file.empty()) {
+    k = granular::kicked_case({.chain = o.chain,
+                               .ic = o.ic,
+                               .mode = o.mode,
+                               .run = o.dynamics,
+                               .beyond = beyond_choices(o.dynamics),
+                               .realizations = o.realizations},
+                              ensemble, radius_options(o.chain));
+  } else {  // the tangent map as the file says (the library checks it for --deviation)
+    BeyondOptions deviation = o.dynamics;
+    deviation.mle = true;
+    k = granular::kicked_case(o.case_file, o.chain.realization, o.realizations,
+                              beyond_choices(deviation).deviation_samples, ensemble);
   }
-  if (ensemble && (c.chain.given_types || c.chain.given_radii))
-    throw InvalidInput("--realizations/--resume: an ensemble draws random chains; --config/--radii give one chain");
-  c.realizations = static_cast<std::size_t>(o.realizations);
-  c.profile_realizations = 0;  // E_n(T) only when an output asks for it
+  warn(k.warnings);
   return k;
 }
 

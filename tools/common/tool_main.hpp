@@ -95,12 +95,9 @@ inline std::string option_name(const std::string& word) {
 }
 
 /// What a tool takes of a parameter table: `only` these (none: all) but `except` (parameters it
-/// does not take);
-/// `text` binds a parameter the tool reads in a form of its own (--fit start:stop) to its text;
-/// `flags` names the flag for a parameter where the usual rule is wrong.
+/// does not take); `flags` names the flag for a parameter where the usual rule is wrong.
 struct Shown {
   std::set<std::string> only{}, except{};
-  std::map<std::string, std::string*> text{};
   std::map<std::string, std::string> flags{};
 };
 
@@ -114,21 +111,22 @@ std::string help_of(const ParameterTable<Choices>& table, const std::string& nam
 }
 
 /// Registers an option for every row of `table` (parameter_table.hpp) that is shown, bound to its
-/// field of `o` (or its text: Shown::text): a flag for a bool, an integer that takes scientific
-/// notation for a long long or unsigned long, a number or word otherwise. Returns them by parameter name.
+/// field of `o`, or read by its text form (Parameter::text) as the command line is parsed: a flag
+/// for a bool, an integer that takes scientific notation for a long long or unsigned long, a
+/// number or word otherwise. Returns them by parameter name.
 template <class Choices>
 std::map<std::string, CLI::Option*> add_parameters(CLI::App& app, Choices& o, const ParameterTable<Choices>& table,
                                                    const Shown& shown = {}) {
   std::map<std::string, CLI::Option*> options;
   for (const Parameter<Choices>& p : table) {
-    const auto text = shown.text.find(p.name);
-    const bool own = text != shown.text.end();
     if ((!shown.only.empty() && !shown.only.contains(p.name)) || shown.except.contains(p.name)) continue;
-    if (p.field.index() == 0 && !own) continue;
+    if (p.field.index() == 0 && !p.text) continue;
     const std::string flag = option_name(word_of(p)), help = help_of(table, p.name, shown);
     CLI::Option* option = std::visit(
         [&]<class Field>(Field field) -> CLI::Option* {
-          if (own) return app.add_option(flag, *text->second, help);
+          if (p.text)
+            return app.add_option_function<std::string>(
+                flag, [&o, read = p.text->read](const std::string& text) { read(o, text); }, help);
           if constexpr (std::is_same_v<Field, std::monostate>) return nullptr;
           else if constexpr (std::is_same_v<Field, bool Choices::*>) return app.add_flag(flag, o.*field, help);
           else if constexpr (std::is_same_v<Field, long long Choices::*> ||
@@ -137,7 +135,8 @@ std::map<std::string, CLI::Option*> add_parameters(CLI::App& app, Choices& o, co
           else return app.add_option(flag, o.*field, help);
         },
         p.field);
-    if (p.shows_default && (own || !std::holds_alternative<bool Choices::*>(p.field))) option->capture_default_str();
+    if (p.shows_default && p.text) option->default_str(p.text->write(o));
+    else if (p.shows_default && !std::holds_alternative<bool Choices::*>(p.field)) option->capture_default_str();
     options[p.name] = option;
   }
   return options;
@@ -181,8 +180,10 @@ inline int run(CLI::App& app, int argc, char** argv, const std::function<void()>
       std::fprintf(stderr, "%s: error: %s: empty value\n", name.c_str(), i > 1 ? argv[i - 1] : "argument");
       return bad_input;
     }
-  try {
+  try {  // a text form (Parameter::text) may refuse its value while the command line is parsed
     app.parse(argc, argv);
+    body();
+    return ok;
   } catch (const CLI::Success& e) {  // --help, --help-all, --version
     return app.exit(e);
   } catch (const CLI::ExtrasError& e) {
@@ -198,10 +199,6 @@ inline int run(CLI::App& app, int argc, char** argv, const std::function<void()>
   } catch (const CLI::ParseError& e) {
     std::fprintf(stderr, "%s: error: %s (see %s --help)\n", name.c_str(), e.what(), name.c_str());
     return bad_input;
-  }
-  try {
-    body();
-    return ok;
   } catch (const InvalidInput& e) {
     const std::string flag = flag_for(app, e.parameter(), overrides);
     const auto told = [&](const std::string& p) {  // parameters the message names in `backticks`

@@ -1,5 +1,7 @@
 #include "granular/study/chain_choices.hpp"
 
+#include <utility>
+
 #include "granular/error.hpp"
 #include "granular/io/bead_distribution_syntax.hpp"
 #include "granular/model/configuration_file.hpp"
@@ -45,7 +47,27 @@ const ParameterTable<ChainChoices>& chain_parameters() {
   return table;
 }
 
+namespace {
+
+/// A chain comes from one source: refuses a second one given (the two named).
+void require_one_source(const ChainChoices& o) {
+  const std::pair<const char*, const std::string*> sources[]{{"config", &o.config},
+                                                             {"radii", &o.radii},
+                                                             {"types", &o.types},
+                                                             {"type_masses", &o.type_masses},
+                                                             {"polydisperse", &o.polydisperse},
+                                                             {"quasi", &o.quasi}};
+  const char* first = nullptr;
+  for (const auto& [name, value] : sources)
+    if (value->empty()) continue;
+    else if (!first) first = name;
+    else throw InvalidInput(name, std::string(": not with `") + first + "` (a chain comes from one of them)");
+}
+
+}  // namespace
+
 std::optional<Quasiperiodic> quasiperiodic(const ChainChoices& o) {
+  require_one_source(o);
   if (o.quasi.empty()) return std::nullopt;
   return Quasiperiodic{.kind = parse_quasi_kind(o.quasi),
                        .modulation = o.modulation,
@@ -57,6 +79,7 @@ std::optional<Quasiperiodic> quasiperiodic(const ChainChoices& o) {
 }
 
 std::optional<BeadDistribution> bead_distribution(const ChainChoices& o) {
+  require_one_source(o);
   if (!o.types.empty()) return parse_bead_types(o.types, false, parse_disorder(o.disorder), "types");
   if (!o.type_masses.empty()) return parse_bead_types(o.type_masses, true, parse_disorder(o.disorder), "type_masses");
   if (!o.polydisperse.empty()) return parse_polydisperse(o.polydisperse, "polydisperse");

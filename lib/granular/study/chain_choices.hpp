@@ -18,28 +18,28 @@
 namespace granular {
 
 struct ChainChoices {
-  std::string disorder = "A";    ///< h | A | RDM1 | RDM2 (also the rule of k types)
-  double xi = 0.5;               ///< size ratio R2/R1 in (0, 1]
-  double q = 0.5;                ///< probability of a type-1 bead (A), dimer 11 (RDM1) or 12 (RDM2)
-  double f0 = 10;                ///< static precompression F0 [N]
-  double r1 = paper_r1;          ///< type-1 radius R1 [m]
-  long long n = 100;             ///< beads N (≥ 2)
-  long long seed = 1;            ///< random seed (≥ 0)
-  long long realization = 0;     ///< which realization of the seed (0-based, ≥ 0)
-  std::string config;            ///< file of bead types 1 and 2 ("" = none)
-  std::string radii;             ///< file of radii [m] ("" = none)
-  std::string types;             ///< k types "R1:P1,R2:P2,…" (radius [m]: probability), "" = none
-  std::string type_masses;       ///< k types "M1:P1,…" (mass [kg] of a steel sphere: probability), "" = none
-  std::string polydisperse;      ///< "uniform:LO:HI" or "normal:MEAN:SD:MIN" [m], "" = none
-  std::string walls = "flat";    ///< flat | sphere
-  std::string quasi;             ///< s1 | s2 | cylinders: a quasiperiodic chain ("" = none)
-  std::string ratio = "golden";  ///< its incommensurate ratio β > 0: golden, p/q or a number
-  double modulation = 0;         ///< its relative modulation λ, |λ| < 1
-  double angle = 45;             ///< cylinders: mean crossing angle α0 [degrees]
-  double k0 = 4;                 ///< s1: mean on-site stiffness [bond stiffness K]
-  double k0_n_per_m = 0;         ///< s1: mean on-site stiffness [N/m] instead of k0 (0: use k0)
-  std::optional<double> phase;   ///< its phase [rad]; none: drawn per seed and realization
-  bool auto_n = false;           ///< N sized later for long times, the chain drawn from its centre
+  std::string disorder = "A";     ///< h | A | RDM1 | RDM2 (also the rule of k types)
+  double xi = 0.5;                ///< size ratio R2/R1 in (0, 1]
+  double q = 0.5;                 ///< probability of a type-1 bead (A), dimer 11 (RDM1) or 12 (RDM2)
+  double f0 = 10;                 ///< static precompression F0 [N]
+  double r1 = paper_r1;           ///< type-1 radius R1 [m]
+  long long n = 100;              ///< beads N (≥ 2)
+  long long seed = 1;             ///< random seed (≥ 0)
+  long long realization = 0;      ///< which realization of the seed (0-based, ≥ 0)
+  std::string config{};           ///< file of bead types 1 and 2 ("" = none)
+  std::string radii{};            ///< file of radii [m] ("" = none)
+  std::string types{};            ///< k types "R1:P1,R2:P2,…" (radius [m]: probability), "" = none
+  std::string type_masses{};      ///< k types "M1:P1,…" (mass [kg] of a steel sphere: probability), "" = none
+  std::string polydisperse{};     ///< "uniform:LO:HI" or "normal:MEAN:SD:MIN" [m], "" = none
+  std::string walls = "flat";     ///< flat | sphere
+  std::string quasi{};            ///< s1 | s2 | cylinders: a quasiperiodic chain ("" = none)
+  std::string ratio = "golden";   ///< its incommensurate ratio β > 0: golden, p/q or a number
+  double modulation = 0;          ///< its relative modulation λ, |λ| < 1
+  double angle = 45;              ///< cylinders: mean crossing angle α0 [degrees]
+  double k0 = 4;                  ///< s1: mean on-site stiffness [bond stiffness K]
+  double k0_n_per_m = 0;          ///< s1: mean on-site stiffness [N/m] instead of k0 (0: use k0)
+  std::optional<double> phase{};  ///< its phase [rad]; none: drawn per seed and realization
+  bool auto_n = false;            ///< N sized later for long times, the chain drawn from its centre
 };
 
 /// Each choice's meaning and units (parameter_table.hpp), in the order front ends show them: the
@@ -48,7 +48,8 @@ struct ChainChoices {
 const ParameterTable<ChainChoices>& chain_parameters();
 
 /// The quasiperiodic chain of the choices, if `quasi` is given. Throws InvalidInput naming
-/// `quasi` or `ratio`.
+/// `quasi` or `ratio`, or naming the second of `config`, `radii`, `types`, `type_masses`,
+/// `polydisperse` and `quasi` given (a chain comes from one of them; bead_distribution too).
 std::optional<Quasiperiodic> quasiperiodic(const ChainChoices& o);
 
 /// The distribution of `types`, `type_masses` or `polydisperse` (the first given; rule:

@@ -4,6 +4,7 @@
 #include <utility>
 
 #include "granular/error.hpp"
+#include "granular/io/range_syntax.hpp"
 #include "granular/model/disorder.hpp"
 
 namespace granular {
@@ -25,8 +26,6 @@ std::optional<BeadChain> chain_of_ones_own(const ExponentChoices& o) {
   const bool typed = !drawn.types.empty() || !drawn.type_masses.empty();
   if (!o.types_rule.empty() && !typed)
     throw InvalidInput("types_rule", " '" + o.types_rule + "': only with `types` or `type_masses`");
-  if (!drawn.quasi.empty() && (typed || !drawn.polydisperse.empty()))
-    throw InvalidInput("quasi", " '" + drawn.quasi + "': not with k bead types or polydisperse radii");
   drawn.disorder = o.types_rule.empty() ? "A" : o.types_rule;
   try {
     parse_disorder(drawn.disorder);
@@ -45,7 +44,32 @@ std::optional<BeadChain> chain_of_ones_own(const ExponentChoices& o) {
   return std::nullopt;
 }
 
+void read_chains(ExponentChoices& o, const std::string& text) { o.chains = parse_word_list(text, "chains"); }
+std::string write_chains(const ExponentChoices& o) { return chain_list(o); }
+void read_kicks(ExponentChoices& o, const std::string& text) { o.ic = parse_word_list(text, "ic"); }
+std::string write_kicks(const ExponentChoices& o) { return kick_list(o); }
+
 }  // namespace
+
+const ParameterTable<ExponentChoices>& exponent_parameters() {
+  using O = ExponentChoices;
+  static const ParameterTable<O> table{
+      {"chains",
+       {},
+       {read_chains, write_chains},
+       "chain kinds: comma list of h, A, RDM1, RDM2, or 'none' (only the chain of `types`/`polydisperse`)"},
+      {"ic", {}, {read_kicks, write_kicks}, "kicks: comma list of displacement, velocity, mode (`mode` or `mode_khz`)"},
+      {"types_rule", &O::types_rule,
+       "how `types`/`type_masses` are drawn: A (each bead, the default), RDM1 (each dimer), RDM2 (two types: dimers "
+       "12 or 21)",
+       false},
+      {"chain_name", &O::chain_name,
+       "the name of the chain of `types`/`type_masses`/`polydisperse`/`quasi` in the outputs (its 'disorder' "
+       "column; default: types, polydisperse or quasi-KIND); it runs after the `chains` kinds, R realizations (R "
+       "phases for `quasi` without `phase`)",
+       false}};
+  return table;
+}
 
 void apply(const ExponentChoices& o, ExponentTableConfig& config) {
   config.chains.clear();

@@ -23,6 +23,10 @@ struct ExponentChoices {
   std::string chain_name{};  ///< that chain's name in the outputs; empty: types, polydisperse or quasi-KIND
 };
 
+/// Each choice's meaning (parameter_table.hpp); `chains` and `ic` are lists, set by front ends in
+/// forms of their own (comma lists on the command line). Not `beads`: chain_parameters().
+const ParameterTable<ExponentChoices>& exponent_parameters();
+
 /// Sets config.chains, config.kicks and config.bead_chains from the choices and validates them
 /// (validate(const ExponentTableConfig&)). Throws InvalidInput naming the choice.
 void apply(const ExponentChoices& choices, ExponentTableConfig& config);

@@ -5,6 +5,7 @@
 
 #include "granular/dynamics/integrator.hpp"
 #include "granular/error.hpp"
+#include "granular/io/range_syntax.hpp"
 #include "granular/number_format.hpp"
 
 namespace granular {
@@ -16,13 +17,32 @@ double finite_non_negative(double value, const char* name) {
   return value;
 }
 
+// The command line's text forms: a velocity or 'match', a window start:stop, on|off.
+void read_beta(TransportChoices& o, const std::string& text) {
+  if (text == "match") o.beta.reset();
+  else o.beta = parse_number_list(text, "beta", 0, 1).at(0);
+}
+std::string write_beta(const TransportChoices& o) { return o.beta ? format_number(*o.beta) : "match"; }
+void read_fit(TransportChoices& o, const std::string& text) {
+  const Interval fit = parse_interval(text, "fit");
+  o.fit_begin = fit.start, o.fit_end = fit.stop;
+}
+std::string write_fit(const TransportChoices& o) { return format_number(o.fit_begin) + ":" + format_number(o.fit_end); }
+void read_on_off(TransportChoices& o, const std::string& text) {
+  if (text != "on" && text != "off") throw InvalidInput("active_window", " '" + text + "': on or off");
+  o.active_window = text == "on";
+}
+std::string write_on_off(const TransportChoices& o) { return o.active_window ? "on" : "off"; }
+
 }  // namespace
 
 const ParameterTable<TransportChoices>& transport_parameters() {
   using O = TransportChoices;
   static const ParameterTable<O> table{
       {"alpha", &O::alpha, "displacement kick [m] (also what a matched `beta` matches)"},
-      {"beta", &O::beta,
+      {"beta",
+       &O::beta,
+       {read_beta, write_beta},
        "velocity kick [m/s] (the paper's 8e-3 for every F0), or 'match': the energy of `alpha` on each chain"},
       {"site", &O::site, "kicked bead n0, 1..N (0 = the centre, (N+1)/2)"},
       {"centre", &O::centre,
@@ -40,14 +60,16 @@ const ParameterTable<TransportChoices>& transport_parameters() {
       {"force_law", &O::force_law, "hertz | fpu | linear"},
       {"samples", &O::samples, "log-spaced sample times (tau..T) outside the fit window"},
       {"sampling", &O::sampling, "log (tau..T) | uniform (0..T) for those samples"},
-      {"fit", {}, "fit window start:stop [s] of gamma (m2 ~ t^gamma) and eta (P^-1 ~ t^-eta)"},
+      {"fit", {}, {read_fit, write_fit}, "fit window start:stop [s] of gamma (m2 ~ t^gamma) and eta (P^-1 ~ t^-eta)"},
       {"fit_begin", &O::fit_begin, "start of the fit window [s]"},
       {"fit_end", &O::fit_end, "end of the fit window [s]"},
       {"fit_step", &O::fit_step, "spacing of the samples inside the fit window [s], a multiple of `time_step`"},
       {"t_star", &O::t_star, "t*: from here on, |L_d - gamma| >= `kappa` means 'not a power law' [s]"},
       {"kappa", &O::kappa, "largest |L_d - gamma| of a power law after `t_star`"},
       {"bootstrap", &O::bootstrap, "resamples of the realization bootstrap of gamma and eta"},
-      {"active_window", &O::active_window,
+      {"active_window",
+       &O::active_window,
+       {read_on_off, write_on_off},
        "on | off: integrate only where the wave has arrived (results equal the whole chain's)"},
       {"window_threshold", &O::window_threshold, "relative kinetic energy that grows the window"},
       {"reference_max_step", &O::reference_max_step, "largest step of the reference integrator [s], 0 = none"},
