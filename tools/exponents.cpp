@@ -14,6 +14,7 @@
 #include "granular/ensemble/checkpoint_log.hpp"
 #include "granular/io/atomic_file.hpp"
 #include "granular/parallel/mpi_context.hpp"
+#include "granular/study/chain_length_rule.hpp"
 #include "granular/study/exponent_files.hpp"
 
 int main(int argc, char** argv) {
@@ -78,7 +79,7 @@ int main(int argc, char** argv) {
     tool::apply(dynamics, base);
     config.automatic_length = auto_n;
     std::vector<TransportCase> cases = exponent_cases(config);
-    const nlohmann::json length_rules = tool::length_rules(cases, auto_n, dynamics.site);
+    const nlohmann::json rules = length_rules(cases, auto_n, dynamics.site);
     const nlohmann::json step_rule = tool::validate_and_settle(cases, dynamics, app.count("--dt") > 0);
     base.dynamics = cases.front().dynamics;  // τ and scheme as settled
     const auto paper = compare ? read_paper_table(paper_table) : std::vector<PaperCell>{};
@@ -102,7 +103,7 @@ int main(int argc, char** argv) {
     meta["cases"] = describe_cells(cells);
     meta["time_step_rule"] = step_rule;
     if (!resumed.is_null()) meta["resumed_checkpoint"] = resumed;
-    if (auto_n) meta["chain_length_rule"] = length_rules;
+    if (auto_n) meta["chain_length_rule"] = rules;
     if (compare) meta["paper_table"] = paper_table;
     meta["output"] = paths.csv;
     meta.write(paths.json, files);  // the JSON first, then the CSVs: never a CSV without its metadata

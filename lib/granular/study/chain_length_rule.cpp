@@ -51,6 +51,18 @@ std::string duration_warning(const TransportCase& c, double omega_max, const std
          "-bead chain many times by T; T is in seconds (milliseconds typed as seconds?)";
 }
 
+void require_centre_kick(long long site) {
+  if (site != 0) throw InvalidInput("site", " " + std::to_string(site) + ": `N` auto kicks the centre bead (`site` 0)");
+}
+
+nlohmann::json length_rules(const std::vector<TransportCase>& cases, bool automatic, long long site) {
+  if (!automatic) return nullptr;
+  require_centre_kick(site);
+  nlohmann::json rules = nlohmann::json::array();
+  for (const TransportCase& c : cases) rules.push_back(to_json(automatic_chain_length(c)));
+  return rules;
+}
+
 nlohmann::json to_json(const ChainLength& length) {
   return {{"rule",
            "N = 2*ceil(safety*v*T) + 1 + 2*pad, the kick at the centre bead; v = omega_max/2 [beads/s] bounds "

@@ -13,6 +13,7 @@
 // active window follows energy down to 1e-30 H0, which the test measures at ≤ 0.7 v).
 #include <cstddef>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json_fwd.hpp>
 
@@ -36,6 +37,14 @@ ChainLength automatic_chain_length(const TransportCase& c);
 /// ((N − 1)/2, 0-based), the chain drawn outward from it (centred_configuration.hpp), so that a
 /// longer N only adds beads the wave never reaches. Returns the rule that gave N.
 ChainLength size_for_long_times(TransportCase& c);
+
+/// Sizing for long times kicks the centre bead: throws InvalidInput naming `site` unless `site`
+/// (1..N, 0 = the centre) is 0.
+void require_centre_kick(long long site);
+
+/// The rules that sized `cases` (exponent_cases with automatic_length), one per case, for the
+/// JSON; null unless `automatic`. `site`: the kicked bead asked for (require_centre_kick).
+nlohmann::json length_rules(const std::vector<TransportCase>& cases, bool automatic, long long site);
 
 /// A warning when waves from the kick could travel ten times the distance from the kicked bead
 /// to the nearer wall of the case's chain by T (v T > 10 × that distance, v = omega_max/2 as

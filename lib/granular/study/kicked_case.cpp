@@ -21,8 +21,7 @@ void set_realizations(KickedCase& k, long long realizations, bool ensemble) {
 }  // namespace
 
 KickedCase kicked_case(const KickedCaseChoices& o, bool ensemble, const RadiusNames& names) {
-  if (o.chain.auto_n && o.run.site != 0)
-    throw InvalidInput("site", " " + std::to_string(o.run.site) + ": `N` auto kicks the centre bead (`site` 0)");
+  if (o.chain.auto_n) require_centre_kick(o.run.site);
   KickedCase k;  // (not an aggregate initializer: GCC 12 destroys its members twice when one throws)
   TransportCase& c = k.c;
   c.chain = chain_recipe(o.chain, k.warnings);  // with auto_n, N 3 until sized below
