@@ -105,6 +105,16 @@ def _set_quasi(recipe, quasi, modulation, ratio, phase, angle, k0):
         recipe._validate_quasi()
 
 
+def _distribution(text, keyword):
+    """A bead distribution in the tools' text ('R1:P1,R2:P2', 'uniform:LO:HI'), or "" for None."""
+    if text is None:
+        return ""
+    if not isinstance(text, str):
+        raise TypeError(f"{keyword}: expected a string such as the tool's --{keyword.replace('_', '-')}, got "
+                        f"{type(text).__name__}")
+    return text
+
+
 def _run(threads=0, checkpoint=None, resume=False, resume_other_version=False, progress=False, fresh=False):
     r = _core.RunOptions()
     r.threads = threads
@@ -282,12 +292,16 @@ def exponent_table(*, chains=["h", "A", "RDM1", "RDM2"], F0=[10.0, 0.5, 0.1, 0.0
                    max_energy_error=1e-3, energy_guard="stop", profile_F0=[10.0, 0.1, 0.0], profile_realizations=100,
                    compare_paper=False, threads=0, checkpoint=None, resume=False, resume_other_version=False, fresh=False,
                    progress=False, damping_time=0.0, kk_gamma=0.0, mle=False, renormalize=10, walls="flat",
-                   quasi=None, modulation=0.0, ratio="golden", phase=None, angle=45.0, k0=4.0, chain_name=None):
+                   quasi=None, modulation=0.0, ratio="golden", phase=None, angle=45.0, k0=4.0, chain_name=None,
+                   types=None, type_masses=None, polydisperse=None, types_rule=None):
     words = _core.ExponentChoices()  # made the table's chains and kicks by the tool's rule, in C++
     words.chains = [] if chains is None or chains == "none" else chains
     words.ic = ic
+    own = words.beads  # the chain of one's own: k types, polydisperse radii, or quasiperiodic
+    own.types, own.type_masses = _distribution(types, "types"), _distribution(type_masses, "type_masses")
+    own.polydisperse = _distribution(polydisperse, "polydisperse")
+    words.types_rule = "" if types_rule is None else str(types_rule)
     if quasi is not None:  # granular.quasiperiodic's keywords, as the tool's --quasi takes them
-        own = words.beads
         own.quasi, own.modulation, own.phase, own.angle, own.k0 = quasi, modulation, phase, angle, k0
         if ratio is not None:  # None: the default (the golden mean)
             own.ratio = ratio if isinstance(ratio, str) else repr(float(ratio))
@@ -321,7 +335,13 @@ exponent_table.__doc__ = (
     "the chains\n"
     "    quasi: None, or one more chain after the kinds, quasiperiodic (the tool's --quasi): 's1', 's2' or "
     "'cylinders', with modulation, ratio, phase (None: drawn per seed and realization, R phases), angle and k0 as "
-    "granular.quasiperiodic's; chain_name: its name in the table (default 'quasi-KIND'; only with quasi)\n" +
+    "granular.quasiperiodic's\n"
+    "    types, type_masses, polydisperse: None, or one more chain after the kinds, of k bead types "
+    "'R1:P1,R2:P2,...' (radius [m]: probability), of k masses 'M1:P1,...' [kg] of steel spheres, or of radii drawn "
+    "per bead 'uniform:LO:HI' or 'normal:MEAN:SD:MIN' [m] (the tool's --types, --type-masses, --polydisperse; one of "
+    "them or quasi); types_rule: how types are drawn, 'A' (each bead, the default), 'RDM1' (each dimer) or 'RDM2' "
+    "(two types: dimers 12 or 21)\n"
+    "    chain_name: the name of that chain in the table (default 'types', 'polydisperse' or 'quasi-KIND')\n" +
     _DYNAMICS_DOC + _BEYOND_DOC +
     "    profile_F0, profile_realizations: F0s whose E_n(T) is averaged, over how many realizations (None: none)\n"
     "    compare_paper: True (or the path of a table in its format) to compare gamma with the paper's Table I "

@@ -182,8 +182,11 @@ void bind_dynamics(py::module_& m) {
   using E = ExponentTableConfig;
   config_class(m, "ExponentTableConfig", "precompressions profile_precompressions profile_realizations base",
                &E::precompressions, &E::profile_precompressions, &E::profile_realizations, &E::base);
-  using W = ExponentChoices;  // the chains and kicks in words; beads: only its quasiperiodic chain's
-  config_class(m, "ExponentChoices", "chains ic beads chain_name", &W::chains, &W::ic, &W::beads, &W::chain_name);
+  using W = ExponentChoices;  // the chains and kicks in words; beads: the chain of one's own
+  table_class(m, "ExponentChoices", exponent_parameters())
+      .def_readwrite("chains", &W::chains)
+      .def_readwrite("ic", &W::ic)
+      .def_readwrite("beads", &W::beads);
   table_class(m, "ChainChoices", chain_parameters());
   using C = TransportCase;  // what the keywords give beyond the choices; the exponent table's cases share it
   config_class(m, "TransportCase", "chain realizations profile_realizations mode", &C::chain, &C::realizations,

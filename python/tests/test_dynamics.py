@@ -264,6 +264,26 @@ def test_exponent_table_with_mle_equals_the_exponents_tool(tools):
     assert without_process_keys(table.metadata) == without_process_keys(meta)
 
 
+def test_exponent_table_of_k_bead_types_equals_the_exponents_tool(tools):
+    """exponent_table(types=..., types_rule=..., chain_name=...) is exponents --types ... --types-rule ...: the chain
+    of one's own after the kinds, drawn by the same rule, under the same name."""
+    types = "4.76e-3:0.4,4e-3:0.3,3e-3:0.3"
+    flags = ["--chains", "h", "--F0", "1", "--ic", "velocity", "--N", "101", "--realizations", "3", "--samples", "30",
+             "--profile-F0", "none", "--bootstrap", "50", "--types", types, "--types-rule", "RDM1", "--chain-name",
+             "three", *SHORT_FLAGS, "--quiet"]
+    csv, meta = tools.run("exponents", *flags, output="exp")
+    table = gr.exponent_table(chains=["h"], F0=[1], ic=["velocity"], N=101, realizations=3, samples=30,
+                              profile_F0=None, bootstrap=50, types=types, types_rule="RDM1", chain_name="three",
+                              **SHORT)
+    assert list(table.column("disorder")) == ["h", "three"]
+    assert_columns_identical(table, csv)
+    assert without_process_keys(table.metadata) == without_process_keys(meta)
+    with pytest.raises(ValueError, match="types_rule 'RDM1': only with types or type_masses"):
+        gr.exponent_table(chains=["h"], types_rule="RDM1", **SHORT)
+    with pytest.raises(ValueError, match="quasi: not with `?types"):
+        gr.exponent_table(chains=["h"], types=types, quasi="s2", **SHORT)
+
+
 def _keywords(table, skip=()):
     """The keywords of a library parameter table (granular._core.X._parameters) that a function takes."""
     return [word for name, word, _ in table._parameters if name not in skip]
@@ -275,7 +295,7 @@ def _keywords(table, skip=()):
     (gr.transport, [(gr._core.TransportChoices, ("fit_begin", "fit_end")),
                     (gr._core.BeyondChoices, ("deviation_samples",))]),
     (gr.exponent_table, [(gr._core.TransportChoices, ("fit_begin", "fit_end")),
-                         (gr._core.BeyondChoices, ("deviation_samples",))]),
+                         (gr._core.BeyondChoices, ("deviation_samples",)), (gr._core.ExponentChoices, ())]),
 ])
 def test_every_parameter_of_the_library_tables_is_a_documented_keyword(function, tables):
     """The library describes each choice once (parameter_table.hpp); the tools make their flags of it.
