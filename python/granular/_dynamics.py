@@ -115,6 +115,28 @@ def _distribution(text, keyword):
     return text
 
 
+def _chain_choices(c, types=None, type_masses=None, polydisperse=None, **fields):
+    """Fills `c` (a _core.ChainChoices) with chain keywords: N and seed checked as sizes, the bead distributions in
+    the tools' texts (None: none), the other fields as given."""
+    if "N" in fields:
+        fields["N"] = _core._size(fields["N"], "N", 2, _MAX)
+    if "seed" in fields:
+        fields["seed"] = _core._size(fields["seed"], "seed")
+    for keyword, value in fields.items():
+        setattr(c, keyword, value)
+    c.types, c.type_masses = _distribution(types, "types"), _distribution(type_masses, "type_masses")
+    c.polydisperse = _distribution(polydisperse, "polydisperse")
+
+
+def _quasi_choices(c, quasi, modulation, ratio, phase, angle, k0):
+    """Makes `c` (a _core.ChainChoices) the quasiperiodic chain `quasi` of granular.quasiperiodic's keywords, as the
+    tools' --quasi takes them; None: none."""
+    if quasi is not None:
+        c.quasi, c.modulation, c.phase, c.angle, c.k0 = quasi, modulation, phase, angle, k0
+        if ratio is not None:  # None: the default (the golden mean)
+            c.ratio = ratio if isinstance(ratio, str) else repr(float(ratio))
+
+
 def _run(threads=0, checkpoint=None, resume=False, resume_other_version=False, progress=False, fresh=False):
     r = _core.RunOptions()
     r.threads = threads
@@ -227,24 +249,18 @@ def transport(*, disorder="A", N=2501, q=0.5, xi=0.5, F0=10.0, R1=_core.paper_r1
               reference_max_step=0.01e-6, max_energy_error=1e-3, energy_guard="stop", profile=False, threads=0,
               checkpoint=None, resume=False, resume_other_version=False, fresh=False, progress=False, damping_time=0.0,
               kk_gamma=0.0, mle=False, renormalize=10, walls="flat", quasi=None, modulation=0.0, ratio="golden",
-              phase=None, angle=45.0, k0=4.0):
-    recipe = _core.ChainRecipe()
-    recipe.disorder = disorder
-    recipe.q, recipe.xi, recipe.F0, recipe.R1, recipe.walls = q, xi, F0, R1, walls
-    recipe.N = _core._size(N, "N", 2, _MAX)
-    recipe.seed = _core._size(seed, "seed")
-    _set_quasi(recipe, quasi, modulation, ratio, phase, angle, k0)
-    choices = _choices(alpha, beta, site, centre, T, dt, integrator, force_law, samples, sampling, fit, fit_step,
-                       t_star, kappa, bootstrap, active_window, window_threshold, reference_max_step,
-                       max_energy_error, energy_guard)
-    beyond = _beyond(damping_time, kk_gamma, mle, renormalize)
+              phase=None, angle=45.0, k0=4.0, types=None, type_masses=None, polydisperse=None):
+    k = _core.KickedCaseChoices()  # made a case by the spreading tool's rule, in C++
+    _chain_choices(k.chain, disorder=disorder, N=N, q=q, xi=xi, F0=F0, R1=R1, seed=seed, walls=walls, types=types,
+                   type_masses=type_masses, polydisperse=polydisperse)
+    _quasi_choices(k.chain, quasi, modulation, ratio, phase, angle, k0)
+    k.ic, k.realizations = ic, _core._size(realizations, "realizations", 1)
+    k.run = _choices(alpha, beta, site, centre, T, dt, integrator, force_law, samples, sampling, fit, fit_step, t_star,
+                     kappa, bootstrap, active_window, window_threshold, reference_max_step, max_energy_error,
+                     energy_guard)
+    k.beyond = _beyond(damping_time, kk_gamma, mle, renormalize)
     run = _run(threads, checkpoint, resume, resume_other_version, progress, fresh)
-    case = _core.TransportCase()
-    case.chain = recipe
-    case.kick = ic
-    case.realizations = _core._size(realizations, "realizations", 1)
-    case.profile_realizations = case.realizations if profile else 0
-    return _transport(_core._transport(case, choices, beyond, dt is not None, run), profile)
+    return _transport(_core._transport(k, profile, dt is not None, run), profile)
 
 
 def _transport(raw, profile):
@@ -269,6 +285,10 @@ transport.__doc__ = (
     "An ensemble of spreading runs: realizations 0..R-1 of seed `seed` of a disordered chain, each "
     "kicked and integrated to T, averaged and fitted (the spreading tool's --realizations R).\n\n"
     "    disorder, N, q, xi, F0 [N], R1 [m], seed, walls: the chains, as granular.random_chain's\n"
+    "    types, type_masses, polydisperse: None, or chains of k bead types 'R1:P1,R2:P2,...' (radius [m]: "
+    "probability, drawn by disorder 'A' (each bead), 'RDM1' (each dimer) or 'RDM2' (two types)), of k masses "
+    "'M1:P1,...' [kg] of steel spheres, or of radii drawn per bead 'uniform:LO:HI' or 'normal:MEAN:SD:MIN' [m] "
+    "instead of the two-type draw (the tools' --types, --type-masses, --polydisperse; one of them or quasi)\n"
     "    realizations: R; ic: 'displacement' | 'velocity'\n" + _QUASI_DOC + _DYNAMICS_DOC + _BEYOND_DOC +
     "    profile: also average the site energies E_n(T)\n"
     "    threads: worker threads (0: every core); results do not depend on it\n"
@@ -297,14 +317,10 @@ def exponent_table(*, chains=["h", "A", "RDM1", "RDM2"], F0=[10.0, 0.5, 0.1, 0.0
     words = _core.ExponentChoices()  # made the table's chains and kicks by the tool's rule, in C++
     words.chains = [] if chains is None or chains == "none" else chains
     words.ic = ic
-    own = words.beads  # the chain of one's own: k types, polydisperse radii, or quasiperiodic
-    own.types, own.type_masses = _distribution(types, "types"), _distribution(type_masses, "type_masses")
-    own.polydisperse = _distribution(polydisperse, "polydisperse")
+    # the chain of one's own: k types, polydisperse radii, or quasiperiodic
+    _chain_choices(words.beads, types=types, type_masses=type_masses, polydisperse=polydisperse)
+    _quasi_choices(words.beads, quasi, modulation, ratio, phase, angle, k0)
     words.types_rule = "" if types_rule is None else str(types_rule)
-    if quasi is not None:  # granular.quasiperiodic's keywords, as the tool's --quasi takes them
-        own.quasi, own.modulation, own.phase, own.angle, own.k0 = quasi, modulation, phase, angle, k0
-        if ratio is not None:  # None: the default (the golden mean)
-            own.ratio = ratio if isinstance(ratio, str) else repr(float(ratio))
     words.chain_name = "" if chain_name is None else str(chain_name)
     table = _core.ExponentTableConfig()
     table.precompressions = number_list(F0, "F0", 0)

@@ -17,6 +17,7 @@
 #include "granular/study/exponent_choices.hpp"
 #include "granular/study/exponent_files.hpp"
 #include "granular/study/exponent_table.hpp"
+#include "granular/study/kicked_case.hpp"
 #include "granular/study/paper_comparison.hpp"
 #include "granular/study/resumed_checkpoint.hpp"
 #include "granular/study/spreading_files.hpp"
@@ -74,20 +75,22 @@ py::dict spreading(const PyChain& chain, TransportCase c, const SpreadingOutputC
                 metadata("spreading", meta));
 }
 
-/// `c`: the case as granular/_dynamics.py fills it (chain, kick, realizations, profiled ones).
-py::dict transport(TransportCase c, const TransportChoices& choices, const BeyondChoices& beyond, bool dt_given,
-                   const PyRun& options) {
-  const bool automatic = granular::apply(choices, beyond, c);
-  fit_within_duration(c);
+/// `choices`: the case as granular/_dynamics.py fills them, made a case by the tool's rule (kicked_case);
+/// `profile`: average E_n(T) over every realization.
+py::dict transport(const KickedCaseChoices& choices, bool profile, bool dt_given, const PyRun& options) {
+  KickedCase k = kicked_case(choices, true, radius_names(choices.chain, front_end_word));
+  warn(k.warnings);  // implausible radii, before the run as the tool says them
+  TransportCase& c = k.c;
+  if (profile) c.profile_realizations = c.realizations;
   std::string t_warning;
-  const nlohmann::json step_rule = validate_and_settle(c, automatic, dt_given, "T", t_warning);
+  const nlohmann::json step_rule = validate_and_settle(c, choices.run.integrator == "auto", dt_given, "T", t_warning);
   if (!t_warning.empty()) warn({t_warning});  // after the errors
   const int thread_request = options.thread_request();
   const std::string& log = options.checkpoint;
   if ((options.resume || options.resume_other_version) && log.empty())
     bad_value("resume", ": needs checkpoint= (the file of the interrupted run)");
   // The chain of realization 0, as the tool describes it (and the β it kicks it with).
-  const KickedChain first = kick(c, c.chain.chain(0));
+  const KickedChain first = kick(c, k.selected.chain);
 
   // Read before the run, which rewrites the checkpoint under this code's name.
   const nlohmann::json resumed = options.resume_other_version ? resumed_checkpoint({log}) : nlohmann::json();
@@ -96,7 +99,7 @@ py::dict transport(TransportCase c, const TransportChoices& choices, const Beyon
   if (!log.empty()) CheckpointLog::remove_all(log);  // finished: the result is in memory, as the tool's in files
 
   nlohmann::json meta;
-  meta["parameters"] = describe_parameters(c, describe(c.chain, 0), first, true);
+  meta["parameters"] = describe_parameters(c, k.selected.description, first, true);
   meta["seed"] = c.chain.seed;
   if (!resumed.is_null()) meta["resumed_checkpoint"] = resumed;
   const nlohmann::json fitted = describe_exponents(s.exponents, c.centre);
@@ -188,6 +191,9 @@ void bind_dynamics(py::module_& m) {
       .def_readwrite("ic", &W::ic)
       .def_readwrite("beads", &W::beads);
   table_class(m, "ChainChoices", chain_parameters());
+  using K = KickedCaseChoices;  // granular.transport's case, made by the spreading tool's rule
+  config_class(m, "KickedCaseChoices", "chain ic mode run beyond realizations", &K::chain, &K::ic, &K::mode, &K::run,
+               &K::beyond, &K::realizations);
   using C = TransportCase;  // what the keywords give beyond the choices; the exponent table's cases share it
   config_class(m, "TransportCase", "chain realizations profile_realizations mode", &C::chain, &C::realizations,
                &C::profile_realizations, &C::mode)

@@ -96,6 +96,22 @@ def test_ensemble_equals_the_spreading_tool(tools):
     assert t.gamma_real_err == meta["gamma_real_err"] > 0  # the realization bootstrap
 
 
+@pytest.mark.parametrize("keyword, text", [("types", "4.76e-3:0.5,2.38e-3:0.5"),
+                                           ("polydisperse", "uniform:3e-3:4.76e-3")])
+def test_ensemble_of_a_bead_distribution_equals_the_spreading_tool(tools, keyword, text):
+    """transport(types=...) / transport(polydisperse=...) is spreading --types/--polydisperse --realizations: the
+    case made by the same library rule (kicked_case), the same chains drawn."""
+    flag = "--" + keyword
+    csv, meta = tools.run("spreading", "--disorder", "RDM1", "--N", "121", "--realizations", "3", flag, text,
+                          *SHORT_FLAGS, output="dist")
+    t = gr.transport(disorder="RDM1", N=121, realizations=3, **{keyword: text}, **SHORT)
+    for key in ("t", "m2", "ipr", "energy_error"):
+        assert_identical(t[key], csv[key])
+    assert without_process_keys(t.metadata) == without_process_keys(meta)
+    with pytest.raises(ValueError, match=r"polydisperse: not with types"):
+        gr.transport(types="4.76e-3:1", polydisperse="uniform:3e-3:4e-3", **SHORT)
+
+
 def test_ensemble_mean_is_the_mean_of_the_single_runs():
     t = gr.transport(disorder="RDM1", N=121, realizations=3, seed=2, **SHORT)
     runs = [gr.spreading(gr.rdm1(N=121, seed=2, realization=r), **SHORT) for r in range(3)]

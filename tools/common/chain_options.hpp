@@ -51,13 +51,9 @@ inline ChainRecipe chain_recipe(const ChainOptions& o) {
   return r;
 }
 
-/// The options named in the warnings about implausible radii (model/plausibility.hpp): those that
-/// set R1, the bead distribution and the radii file.
+/// The options named in the warnings about implausible radii (granular::radius_names).
 inline RadiusNames radius_options(const ChainOptions& o) {
-  const std::string distribution = !o.types.empty()         ? "--types"
-                                   : !o.type_masses.empty() ? "--type-masses"
-                                                            : "--polydisperse";
-  return {"--R1", distribution, "--radii"};
+  return radius_names(o, [](const std::string& p) { return option_name(front_end_word(p)); });
 }
 
 /// The chain the options pick, streamed (granular::stream_chain), its warnings printed.

@@ -86,6 +86,11 @@ std::optional<BeadDistribution> bead_distribution(const ChainChoices& o) {
   return std::nullopt;
 }
 
+RadiusNames radius_names(const ChainChoices& o, const std::function<std::string(const std::string&)>& told) {
+  const char* distribution = !o.types.empty() ? "types" : !o.type_masses.empty() ? "type_masses" : "polydisperse";
+  return {told("R1"), told(distribution), told("radii")};
+}
+
 ChainRecipe chain_recipe(const ChainChoices& o, std::vector<std::string>& warnings) {
   if (o.seed < 0) throw InvalidInput("seed", " " + std::to_string(o.seed) + ": must be >= 0");
   if (o.realization < 0) throw InvalidInput("realization", " " + std::to_string(o.realization) + ": must be >= 0");

@@ -5,6 +5,7 @@
 // quasiperiodic chain. Errors name the choice in the library's vocabulary (`seed`, `types`,
 // `type_masses`, `polydisperse`, `quasi`, `ratio`); each front end tells it in its own words.
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -12,6 +13,7 @@
 #include "granular/model/bead_distribution.hpp"
 #include "granular/model/chain_recipe.hpp"
 #include "granular/model/named_chains.hpp"
+#include "granular/model/plausibility.hpp"
 #include "granular/model/quasiperiodic.hpp"
 #include "granular/parameter_table.hpp"
 
@@ -60,6 +62,11 @@ std::optional<BeadDistribution> bead_distribution(const ChainChoices& o);
 /// `seed`, `realization` and `n` are checked here). Each implausible radius of a radii file is
 /// a line of `warnings` (file and line named).
 ChainRecipe chain_recipe(const ChainChoices& o, std::vector<std::string>& warnings);
+
+/// How a front end's user names the choices that set radii, for the warnings about implausible
+/// ones (model/plausibility.hpp): `R1`, the bead distribution given (`types`, `type_masses` or
+/// `polydisperse`) and `radii`, each told by `told` (a tool: its flag; Python: its keyword).
+RadiusNames radius_names(const ChainChoices& o, const std::function<std::string(const std::string&)>& told);
 
 /// The realization the choices pick (0-based).
 inline std::uint64_t chain_realization(const ChainChoices& o) { return static_cast<std::uint64_t>(o.realization); }
