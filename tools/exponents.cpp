@@ -34,20 +34,15 @@ int main(int argc, char** argv) {
   tool::ExponentOptions choices;
   std::string f0_text = "10,0.5,0.1,0.01,0", output = "exponents", profile_f0 = "10,0.1,0";
   std::string paper_table = std::string(GRANULAR_SOURCE_DIR) + "/data/paper_table1_gamma.csv";
-  long long n = 2501, realizations = 500, seed = 1, profile_realizations = 100;
-  double xi = 0.5, q = 0.5;
-  std::string walls = "flat";
+  long long realizations = 500, profile_realizations = 100;
   tool::LongRunOptions run_options;
   bool compare = false, auto_n = false;
   tool::add_option(app, "--F0", f0_text, "precompressions [N], comma list (0 = sonic vacuum)");
   tool::add_exponent_choices(app, choices, dynamics);
-  tool::add_option(app, "--N", n, "beads per chain");
-  tool::add_option(app, "--xi", xi, "size ratio R2/R1 in (0,1]");
-  tool::add_option(app, "--q", q, "disorder probability in [0,1]");
-  tool::add_walls_option(app, walls);
+  tool::add_parameters(app, choices.beads, chain_parameters(), {.only = {"N", "xi", "q", "walls"}});
   tool::add_dynamics_options(app, dynamics);
   tool::add_option(app, "--realizations", realizations, "realizations per disordered case (h always runs 1)");
-  tool::add_option(app, "--seed", seed, "random seed");
+  tool::add_parameters(app, choices.beads, chain_parameters(), {.only = {"seed"}});
   tool::add_option(app, "--profile-F0", profile_f0, "F0s whose energy profile E_n(T) is averaged (list; 'none')");
   tool::add_option(app, "--profile-realizations", profile_realizations, "realizations averaged in those profiles");
   app.add_flag("--compare-paper", compare,
@@ -67,14 +62,9 @@ int main(int argc, char** argv) {
         profile_f0 == "none" ? std::vector<double>{} : parse_number_list(profile_f0, "--profile-F0");
     if (profile_realizations < 0) throw InvalidInput("--profile-realizations: must be >= 0");
     config.profile_realizations = static_cast<std::size_t>(profile_realizations);
-    if (n < 2) throw InvalidInput("--N " + std::to_string(n) + ": a chain needs at least 2 beads");
-    if (n > 100000000) throw InvalidInput("--N " + std::to_string(n) + ": more than 1e8 beads");
     if (realizations < 1) throw InvalidInput("--realizations " + std::to_string(realizations) + ": must be >= 1");
-    if (seed < 0) throw InvalidInput("--seed: must be >= 0");
     if (run_options.threads < 0) throw InvalidInput("--threads: must be >= 0");
     TransportCase& base = config.base;
-    base.chain.N = static_cast<std::size_t>(n), base.chain.seed = static_cast<std::uint64_t>(seed);
-    base.chain.xi = xi, base.chain.q = q, base.chain.walls = parse_wall_shape(walls);
     base.realizations = static_cast<std::size_t>(realizations);
     tool::apply(dynamics, base);
     config.automatic_length = auto_n;

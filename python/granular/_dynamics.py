@@ -317,8 +317,9 @@ def exponent_table(*, chains=["h", "A", "RDM1", "RDM2"], F0=[10.0, 0.5, 0.1, 0.0
     words = _core.ExponentChoices()  # made the table's chains and kicks by the tool's rule, in C++
     words.chains = [] if chains is None or chains == "none" else chains
     words.ic = ic
-    # the chain of one's own: k types, polydisperse radii, or quasiperiodic
-    _chain_choices(words.beads, types=types, type_masses=type_masses, polydisperse=polydisperse)
+    # every kind's chains, and the chain of one's own: k types, polydisperse radii, or quasiperiodic
+    _chain_choices(words.beads, N=N, xi=xi, q=q, seed=seed, walls=walls, types=types, type_masses=type_masses,
+                   polydisperse=polydisperse)
     _quasi_choices(words.beads, quasi, modulation, ratio, phase, angle, k0)
     words.types_rule = "" if types_rule is None else str(types_rule)
     words.chain_name = "" if chain_name is None else str(chain_name)
@@ -326,11 +327,6 @@ def exponent_table(*, chains=["h", "A", "RDM1", "RDM2"], F0=[10.0, 0.5, 0.1, 0.0
     table.precompressions = number_list(F0, "F0", 0)
     table.profile_precompressions = [] if profile_F0 is None else number_list(profile_F0, "profile_F0", 0)
     table.profile_realizations = _core._size(profile_realizations, "profile_realizations")
-    recipe = _core.ChainRecipe()
-    recipe.N = _core._size(N, "N", 2, _MAX)
-    recipe.xi, recipe.q, recipe.walls = xi, q, walls
-    recipe.seed = _core._size(seed, "seed")
-    table.base.chain = recipe
     table.base.realizations = _core._size(realizations, "realizations", 1)
     choices = _choices(alpha, beta, site, centre, T, dt, integrator, force_law, samples, sampling, fit, fit_step,
                        t_star, kappa, bootstrap, active_window, window_threshold, reference_max_step,

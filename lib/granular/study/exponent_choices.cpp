@@ -85,6 +85,11 @@ void apply(const ExponentChoices& o, ExponentTableConfig& config) {
   if (config.kicks.empty()) throw InvalidInput("ic", ": none given");
   config.bead_chains.clear();
   if (auto chain = chain_of_ones_own(o)) config.bead_chains.push_back(std::move(*chain));
+  ChainChoices kinds = o.beads;  // the kinds' chains, by the one chain rule: without the chain of one's own
+  kinds.types.clear(), kinds.type_masses.clear(), kinds.polydisperse.clear(), kinds.quasi.clear();
+  kinds.config.clear(), kinds.radii.clear();
+  std::vector<std::string> no_file_read;
+  config.base.chain = chain_recipe(kinds, no_file_read);
   validate(config);
 }
 

@@ -16,9 +16,10 @@ struct ExponentChoices {
   /// Chain kinds h, A, RDM1, RDM2 (any case); "none" alone, or none: only the chain of `beads`.
   std::vector<std::string> chains{"h", "A", "RDM1", "RDM2"};
   std::vector<std::string> ic{"displacement", "velocity"};  ///< the kicks: displacement, velocity, mode
-  /// One more chain, after the kinds: its types, type_masses, polydisperse, or quasi and that
-  /// chain's parameters (the rest, `disorder` included, is not read).
-  ChainChoices beads{};
+  /// The chains: N, xi, q, R1, seed and walls of every kind, and one more chain after the kinds:
+  /// its types, type_masses, polydisperse, or quasi and that chain's parameters (not read:
+  /// `disorder`, F0, the realization and the files).
+  ChainChoices beads{.n = 2501};
   std::string types_rule{};  ///< how types / type_masses are drawn: A, RDM1 or RDM2; empty: A
   std::string chain_name{};  ///< that chain's name in the outputs; empty: types, polydisperse or quasi-KIND
 };
@@ -27,7 +28,8 @@ struct ExponentChoices {
 /// forms of their own (comma lists on the command line). Not `beads`: chain_parameters().
 const ParameterTable<ExponentChoices>& exponent_parameters();
 
-/// Sets config.chains, config.kicks and config.bead_chains from the choices and validates them
+/// Sets config.chains, config.kicks, config.bead_chains and config.base.chain (but its F0, set per
+/// case) from the choices and validates them
 /// (validate(const ExponentTableConfig&)). Throws InvalidInput naming the choice.
 void apply(const ExponentChoices& choices, ExponentTableConfig& config);
 
