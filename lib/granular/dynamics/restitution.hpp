@@ -11,12 +11,13 @@
 #include <string>
 
 #include "granular/model/material.hpp"
+#include "granular/model/named_chains.hpp"
 
 namespace granular {
 
 struct CollisionConfig {
   Material material = steel;
-  double radius = 4.76e-3;            ///< R of both beads [m]
+  double radius = paper_r1;           ///< R of both beads [m] (the paper's type-1 beads)
   double impact_speed = 0.01;         ///< v > 0 [m/s]
   double kk_gamma = 0;                ///< γ_KK ≥ 0 [s]
   double steps_per_collision = 4000;  ///< τ = (Hertz contact time at v) / this
