@@ -8,11 +8,14 @@
 
 #include <set>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "granular/error.hpp"
 #include "granular/study/chain_choices.hpp"
 #include "granular/study/dynamical_butterfly.hpp"
 #include "granular/study/exponent_choices.hpp"
+#include "granular/study/spreading_output_choices.hpp"
 #include "granular/study/transport_choices.hpp"
 
 namespace granular {
@@ -56,6 +59,7 @@ TEST(ParameterTables, NameEachParameterOnceAndReferOnlyToParametersTheyDescribe)
   collect_names(mode_kick_parameters(), names);
   collect_names(dynamical_butterfly_parameters(), names);
   collect_names(exponent_parameters(), names);
+  collect_names(spreading_output_parameters(), names);
   EXPECT_GE(names.size(), 45U);
   expect_references_known(chain_parameters(), names);
   expect_references_known(transport_parameters(), names);
@@ -63,6 +67,7 @@ TEST(ParameterTables, NameEachParameterOnceAndReferOnlyToParametersTheyDescribe)
   expect_references_known(mode_kick_parameters(), names);
   expect_references_known(dynamical_butterfly_parameters(), names);
   expect_references_known(exponent_parameters(), names);
+  expect_references_known(spreading_output_parameters(), names);
 }
 
 /// Every text form of `table` reads back what it writes of the defaults, and a value it cannot
@@ -90,6 +95,7 @@ int expect_text_forms_read_what_they_write(const ParameterTable<Choices>& table,
 TEST(ParameterTables, TextFormsReadWhatTheyWriteAndNameTheirParameter) {
   EXPECT_EQ(expect_text_forms_read_what_they_write(transport_parameters(), "1:x"), 3);  // beta, fit, active_window
   EXPECT_EQ(expect_text_forms_read_what_they_write(exponent_parameters(), "h,,A"), 2);  // chains, ic
+  EXPECT_EQ(expect_text_forms_read_what_they_write(spreading_output_parameters(), "1:x"), 1);  // forces_at
   TransportChoices o;
   parameter(transport_parameters(), "beta").text->read(o, "match");
   EXPECT_FALSE(o.beta) << "'match': the energy of alpha";
@@ -99,6 +105,16 @@ TEST(ParameterTables, TextFormsReadWhatTheyWriteAndNameTheirParameter) {
   parameter(transport_parameters(), "active_window").text->read(o, "off");
   EXPECT_FALSE(o.active_window);
   EXPECT_EQ(parameter(transport_parameters(), "active_window").text->write(o), "off");
+}
+
+TEST(ParameterTables, TheListOfBeadsReadsAndWritesItsValues) {
+  const auto& forces_at = *parameter(spreading_output_parameters(), "forces_at").text;
+  SpreadingOutputChoices outputs;
+  forces_at.read(outputs, "601,631,661");
+  EXPECT_EQ(outputs.forces_at, (std::vector<long>{601, 631, 661}));
+  EXPECT_EQ(forces_at.write(outputs), "601,631,661");
+  forces_at.read(outputs, "");
+  EXPECT_TRUE(outputs.forces_at.empty()) << "an empty list: no force series";
 }
 
 }  // namespace
