@@ -25,7 +25,7 @@ int main(int argc, char** argv) {
   IprMapConfig config;
   tool::ChainOptions beads;  // --walls, --types/--type-masses/--polydisperse (with --disorder as their rule)
   RunOptions run;
-  tool::SelectionOptions selection;
+  ModeSelectionChoices selection;
   bool quiet = false;
   tool::add_option(app, "--disorder", disorder, "h | A | RDM1 | RDM2 (homogeneous, Anderson, random dimer 1/2)");
   tool::add_option(app, "--xi", xi_text, "size ratios R2/R1 in (0,1]: start:stop[:step] (step 0.01) or a,b,c");
@@ -66,8 +66,8 @@ int main(int argc, char** argv) {
       throw InvalidInput("--solver", " '" + solver + "': expected fast, lapack or lapack-<stevr|stemr|stevd|steqr>");
     config.spectrum.method = solver == "fast" ? SpectrumMethod::fast : SpectrumMethod::lapack;
     if (solver.starts_with("lapack-")) config.spectrum.driver = parse_lapack_driver(solver.substr(7));
-    config.selection = tool::parse_selection(selection);
-    if (selection.given()) {
+    config.selection = choose_modes(selection);
+    if (config.selection.kind != ModeSelection::Kind::all) {  // --near/--count or --window
       config.spectrum.method = parse_spectrum_method(method);
       if (config.spectrum.method == SpectrumMethod::fast)
         throw InvalidInput("--method", " fast: computes every mode; use lapack, bisect or arpack with --near/--window");

@@ -29,8 +29,8 @@ int main(int argc, char** argv) {
   tool::describe_common(app);
   tool::ChainOptions chain_options;
   tool::add_chain_options(app, chain_options);
-  tool::SelectionOptions selection_options;
-  tool::add_selection_options(app, selection_options, "");
+  ModeSelectionChoices selection_choices;
+  tool::add_selection_options(app, selection_choices, "");
   std::string method = "lapack", output = "spectrum", vectors_file, dump_matrix;
   SpectrumConfig config;
   bool quiet = false, clusters = false;
@@ -56,7 +56,7 @@ int main(int argc, char** argv) {
     tool::Metadata meta("spectrum", argc, argv);
     config.method = parse_spectrum_method(method);
     config.vectors = !vectors_file.empty();
-    const SpectrumRequest request{tool::parse_selection(selection_options), config, method};
+    const SpectrumRequest request{choose_modes(selection_choices), config, method};
     const ModeSelection& selection = request.selection;
     validate(request.config, selection);
     const ChainRecipe recipe = tool::chain_recipe(chain_options);

@@ -31,7 +31,8 @@ struct Parameter {
   /// own (a fit window: `text` on the command line, a pair in Python) and set fields of it.
   using Field =
       std::variant<std::monostate, double Choices::*, long long Choices::*, long Choices::*, unsigned long Choices::*,
-                   std::string Choices::*, bool Choices::*, std::optional<double> Choices::*>;
+                   std::string Choices::*, bool Choices::*, std::optional<double> Choices::*,
+                   std::optional<long> Choices::*, std::vector<long> Choices::*>;
 
   Parameter(std::string name, Field field, std::string help, bool shows_default = true)
       : name(std::move(name)), field(field), help(std::move(help)), shows_default(shows_default) {}

@@ -101,7 +101,9 @@ def _selection(near, count, window, got=True):
             raise ValueError("window: expected (lo, hi) in kHz" + (f", got {len(window)} values" if got else ""))
     if count is not None:  # within the library's 64-bit count (no chain has 2^40 modes)
         count = max(min(operator.index(count), 1 << 40), -(1 << 63))
-    return _core._choose_modes(None if near is None else float(near), count, window)
+    choices = _core.ModeSelectionChoices()  # the library's (mode_selection_parameters)
+    choices.near, choices.count, choices.window = None if near is None else float(near), count, window
+    return _core._choose_modes(choices)
 
 
 def _system(system):

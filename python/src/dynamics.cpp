@@ -167,12 +167,8 @@ void bind_dynamics(py::module_& m) {
   m.attr("_paper_table") = GRANULAR_SOURCE_DIR "/data/paper_table1_gamma.csv";  // compare_paper=True
   table_class(m, "BeyondChoices", beyond_parameters());
   table_class(m, "ModeKick", mode_kick_parameters());
-  using O = SpreadingOutputChoices;  // granular.spreading's optional observers, made by the tool's rule
-  config_class(m, "SpreadingOutputChoices",
-               "forces_at force_samples energy_map map_samples map_stride spectral_density spectrum_samples "
-               "spectrum_of",
-               &O::forces_at, &O::force_samples, &O::energy_map, &O::map_samples, &O::map_stride, &O::spectral_density,
-               &O::spectrum_samples, &O::spectrum_of);
+  // granular.spreading's optional observers, made by the tool's rule
+  table_class(m, "SpreadingOutputChoices", spreading_output_parameters());
   using R = ChainRecipe;
   config_class(m, "ChainRecipe", "q xi R1 N F0 material seed quasi given_radii given_types", &R::q, &R::xi, &R::R1,
                &R::N, &R::F0, &R::material, &R::seed, &R::quasi, &R::given_radii, &R::given_types)

@@ -12,6 +12,7 @@
 #include "granular/error.hpp"
 #include "granular/linear/band_edges.hpp"
 #include "granular/linear/dynamical_matrix.hpp"
+#include "granular/linear/mode_selection_choices.hpp"
 #include "granular/linear/spectrum.hpp"
 #include "granular/linear/sym_tridiagonal.hpp"
 #include "granular/model/named_chains.hpp"
@@ -71,7 +72,9 @@ void bind_linear(py::module_& m) {
 
   // What granular/_linear.py fills from the keywords: the selection and the solver's config.
   py::class_<ModeSelection>(m, "ModeSelection").def(py::init<>());
-  m.def("_choose_modes", &choose_modes);  // near, count, window (lo, hi): the tools' rule
+  table_class(m, "ModeSelectionChoices", mode_selection_parameters())  // near, count; window (lo, hi): no field
+      .def_readwrite("window", &ModeSelectionChoices::window);
+  m.def("_choose_modes", py::overload_cast<const ModeSelectionChoices&>(&choose_modes));  // the tools' rule
   using C = SpectrumConfig;
   config_class(m, "SpectrumConfig", "vectors tolerance subspace lanes", &C::vectors, &C::tolerance, &C::subspace,
                &C::lanes)

@@ -307,7 +307,7 @@ def _keywords(table, skip=()):
 
 @pytest.mark.parametrize("function, tables", [
     (gr.spreading, [(gr._core.TransportChoices, ("fit_begin", "fit_end")), (gr._core.BeyondChoices, ()),
-                    (gr._core.ModeKick, ())]),
+                    (gr._core.ModeKick, ()), (gr._core.SpreadingOutputChoices, ())]),
     (gr.transport, [(gr._core.TransportChoices, ("fit_begin", "fit_end")),
                     (gr._core.BeyondChoices, ("deviation_samples",))]),
     (gr.exponent_table, [(gr._core.TransportChoices, ("fit_begin", "fit_end")),

@@ -1,6 +1,9 @@
 """granular.spectrum, SpectrumSolver, DynamicalMatrix and band_edges: the same numbers as the
 spectrum tool on the same chain (parsed from its CSV, compared exactly), and the physics checks
 an independent method gives (dense eigen-solver, the band edges of ordered chains)."""
+import inspect
+import re
+
 import numpy as np
 import pytest
 
@@ -88,6 +91,18 @@ def test_spectrum_solver_gives_what_spectrum_gives():
         b = gr.spectrum(c, near=20.0, count=5, method="bisect")
         assert_identical(a.freq_khz, b.freq_khz)
         assert_identical(a.ipr, b.ipr)
+
+
+@pytest.mark.parametrize("function", [gr.spectrum, gr.SpectrumSolver.solve, gr.ipr_map])
+def test_every_mode_selection_parameter_is_a_documented_keyword(function):
+    """The library describes the choice of modes once (mode_selection_parameters); the spectrum and ipr-map tools
+    make their flags of it, and each of its parameters is a keyword here, explained in the docstring."""
+    taken = inspect.signature(function).parameters
+    assert len(gr._core.ModeSelectionChoices._parameters) == 3
+    for _, word, _ in gr._core.ModeSelectionChoices._parameters:
+        assert word in taken, f"{function.__name__} takes no keyword {word}"
+        assert re.search(rf"(?<![\w-]){word}(?![\w-])", function.__doc__), \
+            f"{function.__name__}'s docstring does not explain {word}"
 
 
 def test_a_matrix_of_ones_own_from_any_array_like():

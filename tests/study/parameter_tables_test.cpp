@@ -8,11 +8,15 @@
 
 #include <set>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "granular/error.hpp"
+#include "granular/linear/mode_selection_choices.hpp"
 #include "granular/study/chain_choices.hpp"
 #include "granular/study/dynamical_butterfly.hpp"
 #include "granular/study/exponent_choices.hpp"
+#include "granular/study/spreading_output_choices.hpp"
 #include "granular/study/transport_choices.hpp"
 
 namespace granular {
@@ -56,6 +60,8 @@ TEST(ParameterTables, NameEachParameterOnceAndReferOnlyToParametersTheyDescribe)
   collect_names(mode_kick_parameters(), names);
   collect_names(dynamical_butterfly_parameters(), names);
   collect_names(exponent_parameters(), names);
+  collect_names(spreading_output_parameters(), names);
+  collect_names(mode_selection_parameters(), names);
   EXPECT_GE(names.size(), 45U);
   expect_references_known(chain_parameters(), names);
   expect_references_known(transport_parameters(), names);
@@ -63,6 +69,8 @@ TEST(ParameterTables, NameEachParameterOnceAndReferOnlyToParametersTheyDescribe)
   expect_references_known(mode_kick_parameters(), names);
   expect_references_known(dynamical_butterfly_parameters(), names);
   expect_references_known(exponent_parameters(), names);
+  expect_references_known(spreading_output_parameters(), names);
+  expect_references_known(mode_selection_parameters(), names);
 }
 
 /// Every text form of `table` reads back what it writes of the defaults, and a value it cannot
@@ -90,6 +98,8 @@ int expect_text_forms_read_what_they_write(const ParameterTable<Choices>& table,
 TEST(ParameterTables, TextFormsReadWhatTheyWriteAndNameTheirParameter) {
   EXPECT_EQ(expect_text_forms_read_what_they_write(transport_parameters(), "1:x"), 3);  // beta, fit, active_window
   EXPECT_EQ(expect_text_forms_read_what_they_write(exponent_parameters(), "h,,A"), 2);  // chains, ic
+  EXPECT_EQ(expect_text_forms_read_what_they_write(spreading_output_parameters(), "1:x"), 1);  // forces_at
+  EXPECT_EQ(expect_text_forms_read_what_they_write(mode_selection_parameters(), "1:x"), 1);    // window
   TransportChoices o;
   parameter(transport_parameters(), "beta").text->read(o, "match");
   EXPECT_FALSE(o.beta) << "'match': the energy of alpha";
@@ -99,6 +109,35 @@ TEST(ParameterTables, TextFormsReadWhatTheyWriteAndNameTheirParameter) {
   parameter(transport_parameters(), "active_window").text->read(o, "off");
   EXPECT_FALSE(o.active_window);
   EXPECT_EQ(parameter(transport_parameters(), "active_window").text->write(o), "off");
+}
+
+TEST(ParameterTables, TheListOfBeadsAndTheWindowReadAndWriteTheirValues) {
+  const auto& forces_at = *parameter(spreading_output_parameters(), "forces_at").text;
+  SpreadingOutputChoices outputs;
+  forces_at.read(outputs, "601,631,661");
+  EXPECT_EQ(outputs.forces_at, (std::vector<long>{601, 631, 661}));
+  EXPECT_EQ(forces_at.write(outputs), "601,631,661");
+  forces_at.read(outputs, "");
+  EXPECT_TRUE(outputs.forces_at.empty()) << "an empty list: no force series";
+
+  const auto& window = *parameter(mode_selection_parameters(), "window").text;
+  ModeSelectionChoices modes;
+  window.read(modes, "10:12.5");
+  ASSERT_TRUE(modes.window);
+  EXPECT_EQ(*modes.window, (std::pair{10.0, 12.5}));
+  EXPECT_EQ(window.write(modes), "10:12.5");
+  EXPECT_EQ(choose_modes(modes).kind, ModeSelection::Kind::window);
+  for (const char* bad : {"12", "1:2:3", "a:2", "1:", ":2", "1:2x", "1:nan"}) {
+    try {
+      window.read(modes, bad);
+      ADD_FAILURE() << "read '" << bad << "'";
+    } catch (const InvalidInput& e) {
+      EXPECT_EQ(std::string(e.what()), "window '" + std::string(bad) + "': expected F1:F2, two frequencies in kHz");
+    }
+  }
+  window.read(modes, "");
+  EXPECT_FALSE(modes.window) << "an empty window: none";
+  EXPECT_EQ(choose_modes(ModeSelectionChoices{.near = 15.0, .count = 20}).count, 20);
 }
 
 }  // namespace

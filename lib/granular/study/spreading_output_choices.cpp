@@ -3,6 +3,7 @@
 #include <utility>
 
 #include "granular/error.hpp"
+#include "granular/io/range_syntax.hpp"
 
 namespace granular {
 namespace {
@@ -15,7 +16,40 @@ std::size_t output_count(long long value, const char* name, long long lo) {
   return static_cast<std::size_t>(value);
 }
 
+// The command line's text form of `forces_at`: a comma list of beads; an empty text is none.
+void read_beads(SpreadingOutputChoices& o, const std::string& text) {
+  o.forces_at = text.empty() ? std::vector<long>{} : parse_integer_list(text, "forces_at");
+}
+std::string write_beads(const SpreadingOutputChoices& o) {
+  std::string out;
+  for (long s : o.forces_at) {
+    if (!out.empty()) out += ',';
+    out += std::to_string(s);
+  }
+  return out;
+}
+
 }  // namespace
+
+const ParameterTable<SpreadingOutputChoices>& spreading_output_parameters() {
+  using O = SpreadingOutputChoices;
+  static const ParameterTable<O> table{
+      {"forces_at",
+       &O::forces_at,
+       {read_beads, write_beads},
+       "beads 1..N (e.g. 601,631,661) whose force [N] is recorded at `force_samples` uniform times",
+       false},
+      {"force_samples", &O::force_samples, "uniform times 0..T of the force series (>= 2)"},
+      {"energy_map", &O::energy_map, "record the energy map E_n(t): `map_samples` times, `map_stride` beads a column"},
+      {"map_samples", &O::map_samples, "uniform times 0..T of the `energy_map` (>= 2)"},
+      {"map_stride", &O::map_stride, "beads summed into one column of the `energy_map` (>= 1)"},
+      {"spectral_density", &O::spectral_density,
+       "compute the spectral density g(nu) of the series of `spectrum_of`, sampled at `spectrum_samples` times"},
+      {"spectrum_samples", &O::spectrum_samples, "uniform samples 0..T of the series for the `spectral_density` (>= 2)"},
+      {"spectrum_of", &O::spectrum_of,
+       "displacement (the paper's g) | velocity (a permanent step in u adds a flat floor, not a 1/nu^2 tail)"}};
+  return table;
+}
 
 void apply(const SpreadingOutputChoices& o, TransportCase& c) {
   const std::size_t beads = c.chain.size();

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "granular/parameter_table.hpp"
 #include "granular/study/transport_study.hpp"
 
 namespace granular {
@@ -21,6 +22,11 @@ struct SpreadingOutputChoices {
   long long spectrum_samples = 2000;         ///< uniform samples 0 … T of the series it transforms (≥ 2)
   std::string spectrum_of = "displacement";  ///< displacement (the paper's g) | velocity
 };
+
+/// Each choice's meaning (parameter_table.hpp); `forces_at` has a text form, a comma list of beads
+/// (empty: none). `energy_map` and `spectral_density` ask for an output; a tool that names the
+/// output's file instead (spreading's --energy-map FILE, --spectrum FILE) sets them itself.
+const ParameterTable<SpreadingOutputChoices>& spreading_output_parameters();
 
 /// Checks the choices and sets the observers they ask of c.dynamics (forces, energy_map,
 /// spectrum); needs c.chain (its size, for `forces_at`). Every count is checked whether or not its
