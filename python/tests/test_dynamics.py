@@ -309,7 +309,9 @@ def _keywords(table, skip=()):
     (gr.spreading, [(gr._core.TransportChoices, ("fit_begin", "fit_end")), (gr._core.BeyondChoices, ()),
                     (gr._core.ModeKick, ()), (gr._core.SpreadingOutputChoices, ())]),
     (gr.transport, [(gr._core.TransportChoices, ("fit_begin", "fit_end")),
-                    (gr._core.BeyondChoices, ("deviation_samples",))]),
+                    (gr._core.BeyondChoices, ("deviation_samples",)),
+                    # an ensemble draws its chains: no files, no one realization; s1's N/m stiffness: none
+                    (gr._core.ChainChoices, ("config", "radii", "realization", "k0_n_per_m"))]),
     (gr.exponent_table, [(gr._core.TransportChoices, ("fit_begin", "fit_end")),
                          (gr._core.BeyondChoices, ("deviation_samples",)), (gr._core.ExponentChoices, ())]),
 ])
