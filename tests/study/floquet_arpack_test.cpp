@@ -114,8 +114,19 @@ TEST(FloquetArpack, AutomaticChoiceAndBadInput) {
   const auto b = gap_breather(2, false);
   const FloquetSpectrum small = floquet_stability(b.law, b.chain, b.orbit, FloquetConfig{.max_dense_beads = 101});
   EXPECT_EQ(small.method, "dense");
-  const FloquetSpectrum large = floquet_stability(b.law, b.chain, b.orbit, FloquetConfig{.max_dense_beads = 100});
+  // Beyond the dense limit and the fallback's: ARPACK alone.
+  const FloquetSpectrum large =
+      floquet_stability(b.law, b.chain, b.orbit, FloquetConfig{.max_dense_beads = 100, .max_fallback_beads = 100});
   EXPECT_EQ(large.method, "arpack");
+  EXPECT_TRUE(large.complete);
+  // Within the fallback's limit ARPACK gets the dense method's cost (2N = 202 applications), which
+  // this stable orbit (every |mu| = 1) does not converge in (it takes ~3400): the dense multipliers
+  // follow, the whole within about twice the dense cost (with 300 restarts: ~7000 applications).
+  const FloquetSpectrum budget = floquet_stability(b.law, b.chain, b.orbit, FloquetConfig{.max_dense_beads = 100});
+  EXPECT_EQ(budget.method.substr(0, 7), "dense (") << budget.method;
+  EXPECT_EQ(budget.multipliers, small.multipliers);
+  EXPECT_GT(budget.operator_applications, small.operator_applications) << "ARPACK was tried first";
+  EXPECT_LE(budget.operator_applications, 2 * small.operator_applications + 40);
   for (int k : {0, 200, 202}) {
     try {
       floquet_stability(b.law, b.chain, b.orbit, FloquetConfig{.method = FloquetMethod::arpack, .multipliers = k});

@@ -42,9 +42,10 @@ struct FloquetConfig {
   FloquetMethod method = FloquetMethod::automatic;
   /// automatic: dense up to this N (2N tangent integrations and a 2N × 2N dgeev), ARPACK beyond.
   std::size_t max_dense_beads = 1000;
-  /// automatic: when ARPACK converges no multiplier (stable orbits, where every |μ| = 1), the dense
-  /// method after all, up to this N (its 2N × 2N dgeev: ~4 s per point at N = 1001); beyond, the
-  /// NumericalError stands.
+  /// automatic, up to this N: ARPACK within the dense method's cost (about 2N applications of M,
+  /// its restarts capped to fit), then, unless every multiplier converged (stable orbits, where
+  /// every |μ| = 1, seldom do), the dense method after all (its 2N × 2N dgeev: ~4 s per point at
+  /// N = 1001). Beyond this N, ARPACK alone with max_restarts.
   std::size_t max_fallback_beads = 3000;
   int multipliers = 16;  ///< ARPACK: how many of the largest |μ| (1 … 2N − 3)
   /// ARPACK: Krylov basis size (ncv); 0: max(2 multipliers + 1, 40), at most 2N.
@@ -65,8 +66,9 @@ struct FloquetSpectrum {
   std::vector<std::complex<double>> multipliers;
   /// "dense", "arpack", or "dense (ARPACK converged none)" (automatic's fallback): which computed them
   std::string method = "dense";
-  long operator_applications = 0;  ///< tangent integrations of one period (2N for dense)
-  int restarts = 0;                ///< ARPACK's implicit restarts (0 for dense)
+  /// tangent integrations of one period (2N for dense; automatic's fallback adds ARPACK's attempt)
+  long operator_applications = 0;
+  int restarts = 0;  ///< ARPACK's implicit restarts (0 for dense; automatic's fallback: its attempt's)
   /// false when ARPACK ran out of restarts with fewer than k multipliers converged: the verdict
   /// is then on those only. Stable orbits are the hard case (every |μ| = 1: no modulus gap), e.g.
   /// a stable gap breather of 101 beads needs ~150 restarts of a 40-vector basis.
@@ -106,12 +108,21 @@ std::vector<double> apply_monodromy(const ForceLaw& law, const Chain& chain, con
 FloquetSpectrum largest_floquet_multipliers(const ForceLaw& law, const Chain& chain, const PeriodicOrbit& orbit,
                                             const FloquetConfig& config);
 
+/// As largest_floquet_multipliers, but when no multiplier converged within max_restarts the
+/// spectrum is empty (complete = false, with the operator applications spent) instead of an error.
+FloquetSpectrum try_largest_floquet_multipliers(const ForceLaw& law, const Chain& chain, const PeriodicOrbit& orbit,
+                                                const FloquetConfig& config);
+
+/// ARPACK's Krylov basis size (ncv) for `config` on a chain of `beads`: FloquetConfig::subspace.
+int floquet_subspace(const FloquetConfig& config, std::size_t beads);
+
 /// monodromy_matrix then floquet_spectrum (dense).
 FloquetSpectrum floquet_stability(const ForceLaw& law, const Chain& chain, const PeriodicOrbit& orbit,
                                   double tolerance = 1e-6);
 
-/// Dense or ARPACK by config.method (automatic: by N against config.max_dense_beads, and dense again
-/// up to config.max_fallback_beads when ARPACK converges no multiplier).
+/// Dense or ARPACK by config.method (automatic: by N against config.max_dense_beads; up to
+/// config.max_fallback_beads ARPACK gets the dense method's cost, about 2N applications, and the
+/// dense method follows when it has not converged every multiplier within it).
 FloquetSpectrum floquet_stability(const ForceLaw& law, const Chain& chain, const PeriodicOrbit& orbit,
                                   const FloquetConfig& config);
 

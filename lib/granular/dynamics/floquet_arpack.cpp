@@ -58,12 +58,26 @@ void check_floquet_arpack_config(const FloquetConfig& c, std::size_t beads) {
 
 }  // namespace
 
+int floquet_subspace(const FloquetConfig& config, std::size_t beads) {
+  const int n = static_cast<int>(2 * beads);
+  return config.subspace > 0 ? config.subspace : std::min(n, std::max(2 * config.multipliers + 1, 40));
+}
+
 FloquetSpectrum largest_floquet_multipliers(const ForceLaw& law, const Chain& chain, const PeriodicOrbit& orbit,
                                             const FloquetConfig& config) {
+  FloquetSpectrum s = try_largest_floquet_multipliers(law, chain, orbit, config);
+  if (s.multipliers.empty())
+    throw NumericalError("floquet: ARPACK converged no multiplier in " + std::to_string(config.max_restarts) +
+                         " restarts");
+  return s;
+}
+
+FloquetSpectrum try_largest_floquet_multipliers(const ForceLaw& law, const Chain& chain, const PeriodicOrbit& orbit,
+                                                const FloquetConfig& config) {
   check_floquet_arpack_config(config, chain.size());
   const int n = static_cast<int>(2 * chain.size());
   const int nev = config.multipliers;
-  const int ncv = config.subspace > 0 ? config.subspace : std::min(n, std::max(2 * nev + 1, 40));
+  const int ncv = floquet_subspace(config, chain.size());
   const int ldv = n, lworkl = 3 * ncv * ncv + 6 * ncv;
   std::vector<double> resid(static_cast<std::size_t>(n)), v(static_cast<std::size_t>(n) * ncv),
       workd(3 * static_cast<std::size_t>(n)), workl(static_cast<std::size_t>(lworkl)), w(static_cast<std::size_t>(n));
@@ -88,12 +102,10 @@ FloquetSpectrum largest_floquet_multipliers(const ForceLaw& law, const Chain& ch
   }
   // info = 1: the restarts ran out. On a stable orbit every |μ| = 1 and Arnoldi has no modulus gap
   // to converge on; the multipliers that did converge are kept (complete = false, docs/breathers.md).
-  if (info == 1 && iparam[4] < 1)
-    throw NumericalError("floquet: ARPACK converged no multiplier in " + std::to_string(config.max_restarts) +
-                         " restarts");
   if (info != 0 && info != 1) throw NumericalError("floquet: ARPACK dnaupd failed (info " + std::to_string(info) + ")");
   s.complete = info == 0;
   s.restarts = iparam[2];
+  if (info == 1 && iparam[4] < 1) return s;  // none converged
 
   const int rvec = 0;
   std::vector<int> select(static_cast<std::size_t>(ncv));

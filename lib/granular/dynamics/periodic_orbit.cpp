@@ -106,10 +106,12 @@ struct ShootingPoint {
 };
 
 // How far a point is from an orbit: the relative residual of u̇(T/2) and, on an arc, the
-// arclength condition (0 at fixed frequency).
+// arclength condition (0 at fixed frequency); with u̇(T/2) itself, which a matrix-free Newton step
+// at that point needs again (a half-period integration spared per step).
 struct ShootingMisfit {
   double residual = 0;
   double arc = 0;
+  std::vector<double> velocity{};
   [[nodiscard]] double merit() const { return std::hypot(residual, arc); }
   [[nodiscard]] bool within(double tolerance) const { return residual <= tolerance && std::abs(arc) <= tolerance; }
 };
@@ -120,8 +122,8 @@ struct NewtonWords {
   std::string where;
 };
 
-// The damped Newton iteration both problems share: newton_step(z) linearizes at z and returns the
-// full correction, misfit(z) measures a trial; a step is halved (up to 10 times) until the merit
+// The damped Newton iteration both problems share: newton_step(z, misfit at z) linearizes at z and
+// returns the full correction, misfit(z) measures a trial; a step is halved (up to 10 times) until the merit
 // falls, and an iterate that shrinks to the rest state is refused (zero is always an orbit).
 template <class NewtonStep, class Misfit>
 PeriodicOrbit damped_newton(ShootingPoint z, const NewtonWords& words, const ShootingConfig& config,
@@ -140,7 +142,7 @@ PeriodicOrbit damped_newton(ShootingPoint z, const NewtonWords& words, const Sho
     if (orbit.iterations >= config.max_iterations)
       throw NumericalError("shooting: " + words.method + " did not converge in " + std::to_string(config.max_iterations) +
                            " iterations" + at() + " (relative residual " + format_number(now.residual) + ")");
-    const ShootingPoint step = newton_step(z);
+    const ShootingPoint step = newton_step(z, now);
     bool accepted = false;
     double lambda = 1;
     for (int halving = 0; halving <= 10 && !accepted; ++halving, lambda /= 2) {
@@ -184,10 +186,9 @@ PeriodicOrbit find_periodic_orbit(const ForceLaw& law, const Chain& chain, doubl
     std::vector<int> iterations;
     std::vector<double> reached;
     // Inexact Newton: GMRES to a relative residual shrinking with the shooting residual r.
-    const auto newton_step = [&](const ShootingPoint& z) {
-      const auto velocity = half_period_map(law, chain, config.scheme, steps, omega, z.x, false).velocity;
-      const double r = relative_residual(velocity, omega, z.x);
-      const auto c = solver.solve(z.x, velocity, std::min(1e-3, std::max(1e-12, 0.1 * r)), config.max_krylov);
+    const auto newton_step = [&](const ShootingPoint& z, const ShootingMisfit& at) {
+      const double r = at.residual;
+      const auto c = solver.solve(z.x, at.velocity, std::min(1e-3, std::max(1e-12, 0.1 * r)), config.max_krylov);
       iterations.push_back(c.iterations);
       reached.push_back(c.residual);
       if (!(c.residual <= 0.5))
@@ -196,9 +197,9 @@ PeriodicOrbit find_periodic_orbit(const ForceLaw& law, const Chain& chain, doubl
       return ShootingPoint{c.step, 0};
     };
     const auto misfit = [&](const ShootingPoint& z) {
-      return ShootingMisfit{
-          relative_residual(half_period_map(law, chain, config.scheme, steps, omega, z.x, false).velocity, omega, z.x),
-          0};
+      auto velocity = half_period_map(law, chain, config.scheme, steps, omega, z.x, false).velocity;
+      const double r = relative_residual(velocity, omega, z.x);
+      return ShootingMisfit{r, 0, std::move(velocity)};
     };
     auto orbit = damped_newton({guess, omega}, {"Newton-Krylov", "at"}, config, steps, newton_step, misfit);
     orbit.newton = "krylov";
@@ -212,7 +213,7 @@ PeriodicOrbit find_periodic_orbit(const ForceLaw& law, const Chain& chain, doubl
   const int nn = static_cast<int>(n);
   std::vector<int> pivots(n);
   // Newton on u̇(T/2; x) = 0 at fixed ω: J δx = −u̇.
-  const auto newton_step = [&](const ShootingPoint& z) {
+  const auto newton_step = [&](const ShootingPoint& z, const ShootingMisfit&) {
     auto current = map(z.x, true);
     ShootingPoint step{std::move(current.velocity), 0};
     for (double& s : step.x) s = -s;
@@ -261,9 +262,9 @@ PeriodicOrbit find_periodic_orbit_on_arc(const ForceLaw& law, const Chain& chain
   // Matrix-free: GMRES on the same bordered system, the shooting rows' J v by tangent
   // integrations at the iterate's ω_b, to a relative residual shrinking with the misfit (inexact
   // Newton, as find_periodic_orbit's Krylov steps).
-  const auto krylov_step = [&](const ShootingPoint& z) {
+  const auto krylov_step = [&](const ShootingPoint& z, const ShootingMisfit& at) {
     solver->set_frequency(z.omega);
-    const auto current = map(z.x, z.omega, false);
+    const std::vector<double>& current = at.velocity;
     const double h = 1e-6 * z.omega;
     const auto up = map(z.x, z.omega + h, false), down = map(z.x, z.omega - h, false);
     const double row = 1 / (z.omega * xs);
@@ -274,10 +275,10 @@ PeriodicOrbit find_periodic_orbit_on_arc(const ForceLaw& law, const Chain& chain
                                   .rhs = std::vector<double>(m)};
     for (std::size_t i = 0; i < n; ++i) {
       system.column[i] = (up.velocity[i] - down.velocity[i]) / (2 * h) * ws * row;
-      system.rhs[i] = -current.velocity[i] * row;
+      system.rhs[i] = -current[i] * row;
     }
-    system.rhs[n] = -along(z);
-    const double r = std::hypot(relative_residual(current.velocity, z.omega, z.x), along(z));
+    system.rhs[n] = -at.arc;
+    const double r = at.merit();
     const auto c = solver->solve_bordered(z.x, system, std::min(1e-3, std::max(1e-12, 0.1 * r)), config.max_krylov);
     gmres_iterations.push_back(c.iterations);
     gmres_reached.push_back(c.residual);
@@ -291,8 +292,8 @@ PeriodicOrbit find_periodic_orbit_on_arc(const ForceLaw& law, const Chain& chain
   };
   // Newton on the bordered system in scaled unknowns (δx/xs, δω/ωs), the shooting rows divided
   // by ω xs; ∂u̇/∂ω by central differences.
-  const auto newton_step = [&](const ShootingPoint& z) {
-    if (krylov) return krylov_step(z);
+  const auto newton_step = [&](const ShootingPoint& z, const ShootingMisfit& at) {
+    if (krylov) return krylov_step(z, at);
     const auto current = map(z.x, z.omega, true);
     const double h = 1e-6 * z.omega;
     const auto up = map(z.x, z.omega + h, false), down = map(z.x, z.omega - h, false);
@@ -315,7 +316,9 @@ PeriodicOrbit find_periodic_orbit_on_arc(const ForceLaw& law, const Chain& chain
   };
   const auto misfit = [&](const ShootingPoint& z) {
     if (!(z.omega > 0)) return ShootingMisfit{inf, inf};
-    return ShootingMisfit{relative_residual(map(z.x, z.omega, false).velocity, z.omega, z.x), along(z)};
+    auto velocity = map(z.x, z.omega, false).velocity;
+    const double r = relative_residual(velocity, z.omega, z.x);
+    return ShootingMisfit{r, along(z), std::move(velocity)};
   };
   auto orbit = damped_newton({p.x, p.omega}, {krylov ? "arclength Newton-Krylov" : "arclength Newton", "near"}, config,
                              config.steps_per_period, newton_step, misfit);
