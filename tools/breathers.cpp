@@ -60,7 +60,7 @@ int main(int argc, char** argv) {
       "Newton's linear solve: dense (N x N Jacobian) | krylov (matrix-free GMRES) | auto (dense to N = 1000)");
   tool::add_option(app, "--floquet", floquet,
                    "multipliers: dense (all 2N) | arpack (the --multipliers largest |mu|) | auto (dense to N = 1000, "
-                   "then ARPACK; dense again up to N = 3000 where ARPACK converges none)");
+                   "then ARPACK; up to N = 3000 within the dense cost, then dense unless all converged)");
   tool::add_integer(app, "--multipliers", config.floquet_multipliers, "ARPACK: how many multipliers of largest |mu|");
   tool::add_option(app, "--stability-tolerance", config.stability_tolerance, "stable when max |multiplier| <= 1 + this");
   app.add_flag("--through-opening", through_opening, "continue past points where a contact opens");

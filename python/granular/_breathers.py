@@ -67,8 +67,8 @@ def breathers(chain, *, mode=0, near_khz=None, start_khz=None, target_khz=None, 
     tolerance: Newton's relative residual; stability_tolerance: stable when max |mu| <= 1 + it.
     newton: 'dense' (the N x N Jacobian) | 'krylov' (matrix-free preconditioned GMRES) | 'auto' (dense up to 1000
     beads); floquet: 'dense' (all 2N multipliers) | 'arpack' (the floquet_multipliers of largest modulus) | 'auto'
-    (dense up to 1000 beads, then ARPACK; dense again up to 3000 beads where ARPACK converges none). The metadata
-    records which ran.
+    (dense up to 1000 beads, then ARPACK; up to 3000 beads ARPACK within the dense method's cost, then dense unless
+    every multiplier converged). The metadata records which ran.
     start_offset: the first frequency's relative distance from the seed's (from a mode: below it, at most a quarter
     of the way to the next mode; from a site: above it).
     F0 = 0 (beads on on-site springs, touching without precompression, a Newton's cradle; James, Kevrekidis & Cuevas,

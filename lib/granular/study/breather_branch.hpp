@@ -70,7 +70,8 @@ struct BreatherBranchConfig {
   ShootingConfig shooting{};          ///< incl. newton: dense | krylov | auto (by N)
   double stability_tolerance = 1e-6;  ///< stable when max |μ| ≤ 1 + this
   /// Floquet multipliers: dense (all 2N), arpack (the floquet_multipliers of largest modulus) or
-  /// auto (dense up to shooting.max_dense_beads, ARPACK beyond; floquet.hpp).
+  /// auto (dense up to shooting.max_dense_beads, ARPACK beyond, within the dense method's cost
+  /// where the dense fallback is affordable; floquet.hpp).
   FloquetMethod floquet_method = FloquetMethod::automatic;
   int floquet_multipliers = 16;
 };
