@@ -51,11 +51,13 @@ inline void add_kicked_case_options(CLI::App& app, KickedCaseOptions& o) {
 inline KickedCase kicked_case(const KickedCaseOptions& o, bool ensemble) {
   KickedCase k;
   if (o.case_file.empty()) {
+    // Read before the aggregate, which must not throw: GCC 12 destroys its members twice when one does.
+    const BeyondChoices beyond = beyond_choices(o.dynamics);
     k = granular::kicked_case({.chain = o.chain,
                                .ic = o.ic,
                                .mode = o.mode,
                                .run = o.dynamics,
-                               .beyond = beyond_choices(o.dynamics),
+                               .beyond = beyond,
                                .realizations = o.realizations},
                               ensemble, radius_options(o.chain));
   } else {  // the tangent map as the file says (the library checks it for --deviation)

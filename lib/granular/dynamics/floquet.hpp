@@ -64,7 +64,8 @@ struct FloquetSpectrum {
   /// The eigenvalues of the monodromy matrix by |μ| descending: all 2N (dense) or the k of largest
   /// modulus (ARPACK; k + 1 when a complex pair straddles the k-th)
   std::vector<std::complex<double>> multipliers;
-  /// "dense", "arpack", or "dense (ARPACK converged none)" (automatic's fallback): which computed them
+  /// "dense", "arpack", or automatic's fallback: "dense (ARPACK converged none)" or "dense (ARPACK
+  /// incomplete within the dense method's cost)". Which computed them.
   std::string method = "dense";
   /// tangent integrations of one period (2N for dense; automatic's fallback adds ARPACK's attempt)
   long operator_applications = 0;
