@@ -8,7 +8,6 @@
 #include "common/dynamics_options.hpp"
 #include "common/exponent_options.hpp"
 #include "common/long_run_options.hpp"
-#include "common/long_time_options.hpp"
 #include "common/outputs.hpp"
 #include "common/tool_main.hpp"
 #include "granular/ensemble/checkpoint_log.hpp"
@@ -36,10 +35,10 @@ int main(int argc, char** argv) {
   std::string paper_table = std::string(GRANULAR_SOURCE_DIR) + "/data/paper_table1_gamma.csv";
   long long realizations = 500, profile_realizations = 100;
   tool::LongRunOptions run_options;
-  bool compare = false, auto_n = false;
+  bool compare = false;
   tool::add_option(app, "--F0", f0_text, "precompressions [N], comma list (0 = sonic vacuum)");
   tool::add_exponent_choices(app, choices, dynamics);
-  tool::add_parameters(app, choices.beads, chain_parameters(), {.only = {"N", "xi", "q", "walls"}});
+  tool::add_parameters(app, choices.beads, long_run_chain_parameters(), {.only = {"N", "xi", "q", "walls"}});
   tool::add_dynamics_options(app, dynamics);
   tool::add_option(app, "--realizations", realizations, "realizations per disordered case (h always runs 1)");
   tool::add_parameters(app, choices.beads, chain_parameters(), {.only = {"seed"}});
@@ -50,7 +49,6 @@ int main(int argc, char** argv) {
   tool::add_option(app, "--paper-table", paper_table, "the paper's Table I (CSV ic,F0_N,disorder,gamma,err,star)");
   tool::add_output_option(app, output, ", PREFIX-curves.csv, PREFIX-profiles.csv");
   tool::add_long_run_options(app, run_options);
-  tool::add_auto_length(app, auto_n);
 
   const auto body = [&] {
     tool::Metadata meta("exponents", argc, argv);
@@ -67,7 +65,7 @@ int main(int argc, char** argv) {
     TransportCase& base = config.base;
     base.realizations = static_cast<std::size_t>(realizations);
     tool::apply(dynamics, base);
-    config.automatic_length = auto_n;
+    const bool auto_n = config.automatic_length = choices.beads.auto_n;
     std::vector<TransportCase> cases = exponent_cases(config);
     const nlohmann::json rules = length_rules(cases, auto_n, dynamics.site);
     const nlohmann::json step_rule = tool::validate_and_settle(cases, dynamics, app.count("--dt") > 0);

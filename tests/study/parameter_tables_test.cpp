@@ -14,6 +14,7 @@
 #include "granular/error.hpp"
 #include "granular/linear/mode_selection_choices.hpp"
 #include "granular/study/chain_choices.hpp"
+#include "granular/study/chain_length_rule.hpp"
 #include "granular/study/dynamical_butterfly.hpp"
 #include "granular/study/exponent_choices.hpp"
 #include "granular/study/spreading_output_choices.hpp"
@@ -100,6 +101,7 @@ TEST(ParameterTables, TextFormsReadWhatTheyWriteAndNameTheirParameter) {
   EXPECT_EQ(expect_text_forms_read_what_they_write(exponent_parameters(), "h,,A"), 2);  // chains, ic
   EXPECT_EQ(expect_text_forms_read_what_they_write(spreading_output_parameters(), "1:x"), 1);  // forces_at
   EXPECT_EQ(expect_text_forms_read_what_they_write(mode_selection_parameters(), "1:x"), 1);    // window
+  EXPECT_EQ(expect_text_forms_read_what_they_write(long_run_chain_parameters(), "1:x"), 1);    // N
   TransportChoices o;
   parameter(transport_parameters(), "beta").text->read(o, "match");
   EXPECT_FALSE(o.beta) << "'match': the energy of alpha";
@@ -109,6 +111,26 @@ TEST(ParameterTables, TextFormsReadWhatTheyWriteAndNameTheirParameter) {
   parameter(transport_parameters(), "active_window").text->read(o, "off");
   EXPECT_FALSE(o.active_window);
   EXPECT_EQ(parameter(transport_parameters(), "active_window").text->write(o), "off");
+}
+
+TEST(ParameterTables, TheLongRunChainLengthIsANumberOrAuto) {
+  const auto& n = *parameter(long_run_chain_parameters(), "N").text;
+  ChainChoices o;
+  n.read(o, "auto");
+  EXPECT_TRUE(o.auto_n);
+  EXPECT_EQ(n.write(o), "auto");
+  n.read(o, "2.5e3");
+  EXPECT_FALSE(o.auto_n) << "a number after 'auto' is the number";
+  EXPECT_EQ(o.n, 2500);
+  for (const char* bad : {"1e3.5", "12x", "Auto", "2.5"}) {
+    try {
+      n.read(o, bad);
+      ADD_FAILURE() << "read '" << bad << "'";
+    } catch (const InvalidInput& e) {
+      EXPECT_EQ(std::string(e.what()), "N " + std::string(bad) + ": an integer or 'auto'");
+    }
+  }
+  EXPECT_EQ(parameter(chain_parameters(), "N").text, std::nullopt) << "only long runs size N themselves";
 }
 
 TEST(ParameterTables, TheListOfBeadsAndTheWindowReadAndWriteTheirValues) {

@@ -35,9 +35,11 @@ inline void add_quasiperiodic_options(CLI::App& app, ChainOptions& o) {
                  {.only = {"quasi", "modulation", "ratio", "phase", "angle", "k0", "k0_n_per_m"}});
 }
 
-/// Every chain option: the two-type draw, the files, the bead distributions, the quasiperiodic chain.
-inline void add_chain_options(CLI::App& app, ChainOptions& o) {
-  add_parameters(app, o, chain_parameters(),
+/// Every chain option: the two-type draw, the files, the bead distributions, the quasiperiodic chain
+/// (`table`: chain_parameters, or long_run_chain_parameters where --N takes 'auto').
+inline void add_chain_options(CLI::App& app, ChainOptions& o,
+                              const ParameterTable<ChainChoices>& table = chain_parameters()) {
+  add_parameters(app, o, table,
                  {.only = {"disorder", "xi", "q", "N", "F0", "R1", "walls", "seed", "realization", "config", "radii"}});
   add_quasiperiodic_options(app, o);
   add_bead_distribution_options(app, o);

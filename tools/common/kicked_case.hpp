@@ -1,7 +1,7 @@
 #pragma once
 // The kicked-chain case as `spreading` reads it: from its flags — the chain (chain_options.hpp,
-// --N auto), the kick (--ic, the mode options), the dynamics and the tangent map — or whole from a
-// case file (--case: a case description, as a replay file or a run's JSON holds it).
+// --N auto: study/chain_length_rule.hpp), the kick (--ic, the mode options), the dynamics and the tangent map — or
+// whole from a case file (--case: a case description, as a replay file or a run's JSON holds it).
 #include <set>
 #include <string>
 
@@ -10,8 +10,8 @@
 
 #include "chain_options.hpp"
 #include "dynamics_options.hpp"
+#include "granular/study/chain_length_rule.hpp"
 #include "granular/study/kicked_case.hpp"
-#include "long_time_options.hpp"
 #include "tool_main.hpp"
 
 namespace granular::tool {
@@ -28,8 +28,7 @@ struct KickedCaseOptions {
 
 inline void add_kicked_case_options(CLI::App& app, KickedCaseOptions& o) {
   const std::size_t before = app.get_options().size();
-  add_chain_options(app, o.chain);
-  add_auto_length(app, o.chain.auto_n);
+  add_chain_options(app, o.chain, long_run_chain_parameters());
   add_option(app, "--ic", o.ic, "initial condition: displacement | velocity | mode (a linear mode: --mode, --mode-khz)");
   add_dynamics_options(app, o.dynamics);
   add_mode_kick_options(app, o.mode);

@@ -2,10 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <exception>
 #include <nlohmann/json.hpp>
+#include <string>
 
 #include "granular/dynamics/scheme.hpp"
 #include "granular/error.hpp"
+#include "granular/io/range_syntax.hpp"
 #include "granular/number_format.hpp"
 #include "granular/study/time_step_rule.hpp"
 
@@ -61,6 +64,37 @@ nlohmann::json length_rules(const std::vector<TransportCase>& cases, bool automa
   nlohmann::json rules = nlohmann::json::array();
   for (const TransportCase& c : cases) rules.push_back(to_json(automatic_chain_length(c)));
   return rules;
+}
+
+const ParameterTable<ChainChoices>& long_run_chain_parameters() {
+  static const ParameterTable<ChainChoices> table = [] {
+    ParameterTable<ChainChoices> t = chain_parameters();
+    const auto read = [](ChainChoices& o, const std::string& text) {
+      o.auto_n = text == "auto";
+      if (o.auto_n) o.n = 3;  // until sized
+      else {
+        std::size_t used = 0;
+        std::string digits;
+        try {  // 1e4 reads as 10000, as every integer option does
+          digits = integer_digits(text, "N");
+          o.n = std::stoll(digits, &used);
+        } catch (const std::exception&) {
+          used = 0;
+        }
+        if (digits.empty() || used != digits.size()) throw InvalidInput("N", " " + text + ": an integer or 'auto'");
+      }
+    };
+    const auto write = [](const ChainChoices& o) { return o.auto_n ? std::string("auto") : std::to_string(o.n); };
+    for (Parameter<ChainChoices>& p : t)
+      if (p.name == "N") {
+        p.text = TextForm<ChainChoices>{read, write};
+        p.help +=
+            "; 'auto': sized from `duration` so that no wave reaches a wall (docs/physics.md, 'Chain length "
+            "for long times'), the kick at the centre of a chain drawn outward from it; rule and N in the JSON";
+      }
+    return t;
+  }();
+  return table;
 }
 
 nlohmann::json to_json(const ChainLength& length) {

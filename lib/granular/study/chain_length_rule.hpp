@@ -17,6 +17,8 @@
 
 #include <nlohmann/json_fwd.hpp>
 
+#include "granular/parameter_table.hpp"
+#include "granular/study/chain_choices.hpp"
 #include "granular/study/transport_study.hpp"
 
 namespace granular {
@@ -52,6 +54,10 @@ nlohmann::json length_rules(const std::vector<TransportCase>& cases, bool automa
 /// once when its step is settled): a duration typed in milliseconds as seconds, most likely.
 /// `option` names T as the user typed it ("--T", "T"); "" when T is plausible.
 std::string duration_warning(const TransportCase& c, double omega_max, const std::string& option);
+
+/// chain_parameters() whose `N` also reads 'auto' (ChainChoices::auto_n, N 3 until the front end
+/// sizes it by this rule), for the front ends of long kicked runs.
+const ParameterTable<ChainChoices>& long_run_chain_parameters();
 
 /// The rule and its numbers, for the JSON.
 nlohmann::json to_json(const ChainLength& length);
