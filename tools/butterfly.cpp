@@ -15,6 +15,7 @@
 #include "granular/io/range_syntax.hpp"
 #include "granular/study/butterfly.hpp"
 #include "granular/study/dynamical_butterfly.hpp"
+#include "granular/study/long_run_choices.hpp"
 
 int main(int argc, char** argv) {
   using namespace granular;
@@ -32,7 +33,7 @@ int main(int argc, char** argv) {
   o.quasi = "s1";
   std::string ratios = "0.005:0.995:0.005", output = "butterfly";
   ButterflyConfig config;
-  RunOptions run;
+  LongRunChoices threads;  // of the long-run choices, --threads alone
   bool quiet = false;
   tool::DynamicalButterflyOptions d;
   tool::add_quasiperiodic_options(app, o);
@@ -48,14 +49,14 @@ int main(int argc, char** argv) {
   tool::add_option(app, "--smallest-box", config.smallest_box_spacings,
                    "smallest box of the fit, in mean level spacings (extent / N)");
   tool::add_integer(app, "--box-sizes", config.box_sizes, "box sizes fitted, evenly spaced in log");
-  tool::add_integer(app, "--threads", run.threads, "worker threads (0 = all cores); results do not depend on it");
+  tool::add_parameters(app, threads, long_run_parameters(), {.only = {"threads"}});
   tool::add_dynamical_butterfly_options(app, d);
   tool::add_output_option(app, output);
   app.add_flag("--quiet", quiet, "no progress line on stderr");
 
   return tool::run(app, argc, argv, [&] {
     tool::Metadata meta("butterfly", argc, argv);
-    if (run.threads < 0) throw InvalidInput("threads", " " + std::to_string(run.threads) + ": must be >= 0");
+    RunOptions run = run_options(threads, "");
     const bool dynamics = tool::from_dynamics(app, d, {"--largest-box", "--smallest-box", "--box-sizes"});
     config.ratios = parse_number_list(ratios, "--ratios", 0.005);
     config.chain = tool::chain_recipe(o);

@@ -61,7 +61,7 @@ int main(int argc, char** argv) {
     if (profile_realizations < 0) throw InvalidInput("--profile-realizations: must be >= 0");
     config.profile_realizations = static_cast<std::size_t>(profile_realizations);
     if (realizations < 1) throw InvalidInput("--realizations " + std::to_string(realizations) + ": must be >= 1");
-    if (run_options.threads < 0) throw InvalidInput("--threads: must be >= 0");
+    validate(run_options);
     TransportCase& base = config.base;
     base.realizations = static_cast<std::size_t>(realizations);
     tool::apply(dynamics, base);
@@ -72,11 +72,10 @@ int main(int argc, char** argv) {
     base.dynamics = cases.front().dynamics;  // τ and scheme as settled
     const auto paper = compare ? read_paper_table(paper_table) : std::vector<PaperCell>{};
     const ExponentPaths paths = exponent_paths(output, compare);
-    const auto claim = tool::claim_output(output, meta.command(), run_options.checkpoints());
+    const auto claim = tool::claim_output(output, meta.command(), run_options);
     for (const auto& p : paths.all()) check_writable(p);
     // Read before the run, which rewrites them.
-    const nlohmann::json resumed =
-        tool::resumed_code(run_options, case_checkpoints(output + ".checkpoint", cases.size()));
+    const nlohmann::json resumed = resumed_code(run_options, case_checkpoints(output + ".checkpoint", cases.size()));
     const auto cells = tool::run_study(total_realizations(cases), run_options, output, "exponents", argc, argv,
                                        [&](const RunOptions& o) { return run_exponent_table(config, o); });
     if (!mpi.root()) return;
@@ -87,7 +86,8 @@ int main(int argc, char** argv) {
     const auto files = write_exponent_files(paths, cells, rows);
     for (const auto& c : cells)
       tool::report_excluded(c.definition, c.summary, meta, run_options, "exponents", output, argv[0]);
-    meta["parameters"] = describe_table_parameters(chain_list(choices), config, kick_list(choices), run_options.threads);
+    meta["parameters"] = describe_table_parameters(chain_list(choices), config, kick_list(choices),
+                                                   static_cast<int>(run_options.threads));
     meta["cases"] = describe_cells(cells);
     meta["time_step_rule"] = step_rule;
     if (!resumed.is_null()) meta["resumed_checkpoint"] = resumed;

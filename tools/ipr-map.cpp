@@ -12,6 +12,7 @@
 #include "granular/io/atomic_file.hpp"
 #include "granular/io/range_syntax.hpp"
 #include "granular/study/ipr_map_files.hpp"
+#include "granular/study/long_run_choices.hpp"
 
 int main(int argc, char** argv) {
   using namespace granular;
@@ -24,7 +25,7 @@ int main(int argc, char** argv) {
   std::string method = "lapack";
   IprMapConfig config;
   tool::ChainOptions beads;  // --walls, --types/--type-masses/--polydisperse (with --disorder as their rule)
-  RunOptions run;
+  LongRunChoices threads;    // of the long-run choices, --threads alone
   ModeSelectionChoices selection;
   bool quiet = false;
   tool::add_option(app, "--disorder", disorder, "h | A | RDM1 | RDM2 (homogeneous, Anderson, random dimer 1/2)");
@@ -37,7 +38,7 @@ int main(int argc, char** argv) {
   tool::add_walls_option(app, beads.walls);
   tool::add_integer(app, "--realizations", config.realizations, "chains averaged per (q, xi)");
   tool::add_integer(app, "--seed", config.chain.seed, "random seed; realization r of seed s is always the same chain");
-  tool::add_integer(app, "--threads", run.threads, "worker threads (0 = all cores); results do not depend on it");
+  tool::add_parameters(app, threads, long_run_parameters(), {.only = {"threads"}});
   tool::add_option(
       app, "--solver", solver,
       "mode solver: fast (eigenvalues + one twisted factorization per mode, no eigenvector matrix; IPRs as "
@@ -61,7 +62,7 @@ int main(int argc, char** argv) {
     config.q_values = parse_number_list(q_text, "--q", 0.1);
     if (config.chain.N > 100000000)
       throw InvalidInput("N", " " + std::to_string(config.chain.N) + ": more than 1e8 beads");
-    if (run.threads < 0) throw InvalidInput("threads", " " + std::to_string(run.threads) + ": must be >= 0");
+    RunOptions run = run_options(threads, "");
     if (solver != "fast" && solver != "lapack" && !solver.starts_with("lapack-"))
       throw InvalidInput("--solver", " '" + solver + "': expected fast, lapack or lapack-<stevr|stemr|stevd|steqr>");
     config.spectrum.method = solver == "fast" ? SpectrumMethod::fast : SpectrumMethod::lapack;

@@ -12,6 +12,7 @@
 #include "granular/io/atomic_file.hpp"
 #include "granular/io/range_syntax.hpp"
 #include "granular/study/localization_files.hpp"
+#include "granular/study/long_run_choices.hpp"
 
 int main(int argc, char** argv) {
   using namespace granular;
@@ -28,14 +29,13 @@ int main(int argc, char** argv) {
   tool::add_chain_options(app, chain_options);
   std::string frequencies = "0:50:0.01", output = "localization";
   long long segments = 32;
-  RunOptions run;
+  LongRunChoices threads;  // of the long-run choices, --threads alone
   bool quiet = false;
   tool::add_option(app, "--f", frequencies,
                    "frequencies [kHz]: start:stop[:step] (step 0.01, stop included) or a,b,c; increasing");
   tool::add_integer(app, "--segments", segments,
                     "chain pieces whose exponents give lyapunov_err (2 ... 1e6, at most N)");
-  tool::add_integer(app, "--threads", run.threads,
-                    "worker threads over blocks of frequencies (0 = all cores); output does not depend on it");
+  tool::add_parameters(app, threads, long_run_parameters(), {.only = {"threads"}});
   tool::add_output_option(app, output);
   app.add_flag("--quiet", quiet, "no progress line and no final report on stderr");
 
@@ -55,7 +55,7 @@ int main(int argc, char** argv) {
         }
         if (segments < 2 || segments > 1000000)
           throw InvalidInput("segments", " " + std::to_string(segments) + ": must be in [2, 1e6]");
-        if (run.threads < 0) throw InvalidInput("threads", " " + std::to_string(run.threads) + ": must be >= 0");
+        RunOptions run = run_options(threads, "");
         config.segments = static_cast<std::size_t>(segments);
         const StreamedChain chain = tool::stream_chain(chain_options);
         for (double f : config.frequency_khz)  // the first one above the chain's frequencies

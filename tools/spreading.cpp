@@ -40,8 +40,7 @@ int main(int argc, char** argv) {
                    [&] {
                      tool::Metadata meta("spreading", argc, argv);
                      const bool ensemble = options.realizations > 1 || run.resuming();
-                     if (run.threads < 0)
-                       throw InvalidInput("--threads " + std::to_string(run.threads) + ": must be >= 0");
+                     validate(run);
                      KickedCase k = tool::kicked_case(options, ensemble);
                      const SelectedChain& selected = k.selected;
                      TransportCase& c = k.c;
@@ -54,12 +53,12 @@ int main(int argc, char** argv) {
                      paths.spectrum = more.spectrum_file;
                      paths.deviation = dynamics.deviation;
                      const auto claim = tool::claim_output(output, meta.command(),
-                                                           ensemble ? std::optional(run.checkpoints()) : std::nullopt);
+                                                           ensemble ? std::optional<LongRunChoices>(run) : std::nullopt);
                      check_outputs(paths.all(), "--output/--final-state/--energy-map/--spectrum");
                      const bool single = more.single() || !dynamics.deviation.empty();  // a run of its own
 
                      // Read before the run: resuming rewrites the checkpoint under this code's name.
-                     const nlohmann::json resumed = ensemble ? tool::resumed_code(run, {paths.checkpoint}) : nullptr;
+                     const nlohmann::json resumed = ensemble ? resumed_code(run, {paths.checkpoint}) : nullptr;
                      std::optional<TransportSummary> summary;
                      if (ensemble) {
                        summary = tool::run_study(c.realizations, run, output, "spreading", argc, argv,
@@ -85,7 +84,7 @@ int main(int argc, char** argv) {
                      meta.merge(describe_exponents(exponents, c.centre));
                      if (summary) {
                        tool::report_excluded(c, *summary, meta, run, "spreading", output, argv[0]);
-                       meta["ensemble"] = describe_ensemble(*summary, run.threads);
+                       meta["ensemble"] = describe_ensemble(*summary, static_cast<int>(run.threads));
                      }
                      if (!summary || single) meta["run"] = describe_run(r, options.chain.realization);
                      meta["output"] = paths.csv;

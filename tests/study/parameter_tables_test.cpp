@@ -17,6 +17,7 @@
 #include "granular/study/chain_length_rule.hpp"
 #include "granular/study/dynamical_butterfly.hpp"
 #include "granular/study/exponent_choices.hpp"
+#include "granular/study/long_run_choices.hpp"
 #include "granular/study/spreading_output_choices.hpp"
 #include "granular/study/transport_choices.hpp"
 
@@ -63,6 +64,7 @@ TEST(ParameterTables, NameEachParameterOnceAndReferOnlyToParametersTheyDescribe)
   collect_names(exponent_parameters(), names);
   collect_names(spreading_output_parameters(), names);
   collect_names(mode_selection_parameters(), names);
+  collect_names(long_run_parameters(), names);
   EXPECT_GE(names.size(), 45U);
   expect_references_known(chain_parameters(), names);
   expect_references_known(transport_parameters(), names);
@@ -72,6 +74,7 @@ TEST(ParameterTables, NameEachParameterOnceAndReferOnlyToParametersTheyDescribe)
   expect_references_known(exponent_parameters(), names);
   expect_references_known(spreading_output_parameters(), names);
   expect_references_known(mode_selection_parameters(), names);
+  expect_references_known(long_run_parameters(), names);
 }
 
 /// Every text form of `table` reads back what it writes of the defaults, and a value it cannot

@@ -22,6 +22,7 @@
 #include "granular/parallel/mpi_context.hpp"
 #include "granular/study/case_file.hpp"
 #include "granular/study/exponent_table.hpp"
+#include "granular/study/long_run_choices.hpp"
 #include "granular/study/resumed_checkpoint.hpp"
 #include "granular/study/transport_study.hpp"
 #include "outputs.hpp"
@@ -29,36 +30,15 @@
 
 namespace granular::tool {
 
-struct LongRunOptions {
-  int threads = 0;
-  bool resume = false, fresh = false, skip_failed = false, quiet = false, other_version = false;
-  bool resuming() const { return resume || other_version; }
-  CheckpointPolicy checkpoints() const { return {resuming(), fresh}; }
+/// The library's choices (study/long_run_choices.hpp), bound straight to the flags, and --quiet.
+struct LongRunOptions : LongRunChoices {
+  bool quiet = false;
 };
 
 inline void add_long_run_options(CLI::App& app, LongRunOptions& o) {
-  add_option(app, "--threads", o.threads, "threads per process (0 = all cores); results do not depend on it");
-  app.add_flag("--resume", o.resume,
-               "continue an interrupted run (same parameters) from its checkpoint PREFIX.checkpoint*");
-  app.add_flag("--resume-other-version", o.other_version,
-               "as --resume, and accept a checkpoint made by another granular version (both are named in the JSON)");
-  app.add_flag("--fresh", o.fresh, "discard the checkpoint of an interrupted run on PREFIX and start again");
-  app.add_flag("--skip-failed", o.skip_failed,
-               "leave a realization that fails numerically out of the means (counted in the JSON and the last "
-               "line) instead of stopping at it");
+  auto options = add_parameters<LongRunChoices>(app, o, long_run_parameters());
+  options["resume"]->description(options["resume"]->get_description() + " PREFIX.checkpoint*");
   app.add_flag("--quiet", o.quiet, "no warnings, progress or final line on stderr");
-}
-
-/// With --resume-other-version: the code versions of the result (study/resumed_checkpoint.hpp)
-/// for the JSON; null otherwise. A plain --resume of a checkpoint another version made is refused
-/// here, in this tool's words.
-inline nlohmann::json resumed_code(const LongRunOptions& o, const std::vector<std::string>& checkpoints) {
-  if (o.resume && !o.other_version)
-    for (const std::string& c : checkpoints)
-      if (const std::string other = CheckpointLog::other_version(c); !other.empty())
-        throw InvalidInput("resume", ": " + other + "; resume it with that version, or accept the mix with " +
-                                         "--resume-other-version");
-  return o.other_version ? resumed_checkpoint(checkpoints) : nullptr;
 }
 
 /// The `spreading` command that computes realization `r` of case `c` alone, from its replay file
@@ -101,13 +81,9 @@ template <class Study>
 auto run_study(std::size_t total, const LongRunOptions& o, const std::string& prefix, const char* tool, int argc,
                char** argv, const Study& study) {
   ProgressMeter progress(total, tool, o.quiet || !MpiContext::instance().root() ? 0 : -1);
-  const RunOptions options{.threads = o.threads,
-                           .checkpoint = prefix + ".checkpoint",
-                           .resume = o.resuming(),
-                           .progress = &progress,
-                           .cancelled = stop_on_interrupt(tool),
-                           .skip_failed = o.skip_failed,
-                           .accept_other_version = o.other_version};
+  RunOptions options = run_options(o, prefix + ".checkpoint");
+  options.progress = &progress;
+  options.cancelled = stop_on_interrupt(tool);
   auto result = replaying_failures([&] { return study(options); }, prefix, argc, argv);
   progress.finish();
   return result;

@@ -20,6 +20,7 @@
 #include "granular/io/output_paths.hpp"
 #include "granular/io/run_metadata.hpp"
 #include "granular/io/shell_quote.hpp"
+#include "granular/study/long_run_choices.hpp"
 
 namespace granular::tool {
 
@@ -34,11 +35,6 @@ inline CLI::Option* add_output_option(CLI::App& app, std::string& output, const 
       ->capture_default_str();
 }
 
-struct CheckpointPolicy {
-  bool resume = false;  ///< continue from the checkpoint
-  bool fresh = false;   ///< discard it and start again
-};
-
 /// The checkpoint logs of a run on `prefix`: PREFIX.checkpoint and PREFIX.checkpoint.<case>.
 inline std::vector<std::string> checkpoint_files(const std::string& prefix, bool temporaries = false) {
   return CheckpointLog::files(prefix + ".checkpoint", {.cases = true, .temporaries = temporaries});
@@ -47,12 +43,12 @@ inline std::vector<std::string> checkpoint_files(const std::string& prefix, bool
 /// Claims `prefix`; with `checkpoints`, a run neither resuming nor fresh is refused when a
 /// checkpoint is there, and a fresh one removes it.
 inline OutputClaim claim_output(const std::string& prefix, const std::string& command,
-                                std::optional<CheckpointPolicy> checkpoints = std::nullopt) {
+                                std::optional<LongRunChoices> checkpoints = std::nullopt) {
   return OutputClaim(prefix, command, [&] {
     if (!checkpoints) return;
-    const CheckpointPolicy& p = *checkpoints;
-    if (p.resume && p.fresh) throw InvalidInput("fresh", ": not with --resume (continue, or start again: one of them)");
-    const auto files = p.resume ? std::vector<std::string>{} : checkpoint_files(prefix);
+    const LongRunChoices& p = *checkpoints;
+    validate(p);
+    const auto files = p.resuming() ? std::vector<std::string>{} : checkpoint_files(prefix);
     if (files.empty()) return;
     if (!p.fresh)
       throw InvalidInput("output", " '" + prefix + "': " + files.front() +

@@ -1,0 +1,49 @@
+#include "granular/study/long_run_choices.hpp"
+
+#include "granular/ensemble/checkpoint_log.hpp"
+#include "granular/error.hpp"
+#include "granular/study/resumed_checkpoint.hpp"
+
+namespace granular {
+
+const ParameterTable<LongRunChoices>& long_run_parameters() {
+  using O = LongRunChoices;
+  static const ParameterTable<O> table{
+      {"threads", &O::threads, "threads per process (0 = all cores); results do not depend on it"},
+      {"resume", &O::resume, "continue an interrupted run (same parameters) from its checkpoint"},
+      {"resume_other_version", &O::resume_other_version,
+       "as `resume`, and accept a checkpoint made by another granular version (both are named in the metadata)"},
+      {"fresh", &O::fresh, "discard the checkpoint of an interrupted run and start again"},
+      {"skip_failed", &O::skip_failed,
+       "leave a realization that fails numerically out of the means (counted in the metadata) instead of stopping "
+       "at it"}};
+  return table;
+}
+
+void validate(const LongRunChoices& o) {
+  if (o.threads < 0 || o.threads > 4096)
+    throw InvalidInput("threads", " " + std::to_string(o.threads) + ": 0 (every core) to 4096");
+  if (o.resuming() && o.fresh)
+    throw InvalidInput("fresh", ": not with `resume` (continue, or start again: one of them)");
+}
+
+RunOptions run_options(const LongRunChoices& o, const std::string& checkpoint) {
+  validate(o);
+  return {.threads = static_cast<int>(o.threads),
+          .checkpoint = checkpoint,
+          .resume = o.resuming(),
+          .skip_failed = o.skip_failed,
+          .accept_other_version = o.resume_other_version,
+          .fresh = o.fresh};
+}
+
+nlohmann::json resumed_code(const LongRunChoices& o, const std::vector<std::string>& checkpoints) {
+  if (o.resume && !o.resume_other_version)
+    for (const std::string& c : checkpoints)
+      if (const std::string other = CheckpointLog::other_version(c); !other.empty())
+        throw InvalidInput("resume", ": " + other + "; resume it with that version, or accept the mix with " +
+                                         "`resume_other_version`");
+  return o.resume_other_version ? resumed_checkpoint(checkpoints) : nullptr;
+}
+
+}  // namespace granular

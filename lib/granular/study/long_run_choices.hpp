@@ -1,0 +1,41 @@
+#pragma once
+// How a front end asks a long, checkpointed run to go — threads, continuing or discarding an
+// interrupted run's checkpoint, leaving failed realizations out — as opposed to what it computes.
+// Errors name the choice in the library's words (`threads`, `resume`); each front end tells it in
+// its own.
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "granular/ensemble/run_options.hpp"
+#include "granular/parameter_table.hpp"
+
+namespace granular {
+
+struct LongRunChoices {
+  long long threads = 0;              ///< worker threads per process, 0 = every core (at most 4096)
+  bool resume = false;                ///< continue an interrupted run from its checkpoint
+  bool resume_other_version = false;  ///< as resume, accepting a checkpoint another version made
+  bool fresh = false;                 ///< discard an interrupted run's checkpoint and start again
+  bool skip_failed = false;           ///< leave a realization that fails numerically out of the means
+  bool resuming() const { return resume || resume_other_version; }
+};
+
+/// Each choice's meaning (parameter_table.hpp).
+const ParameterTable<LongRunChoices>& long_run_parameters();
+
+/// Throws InvalidInput naming `threads` (below 0 or above 4096) or `fresh` (with `resume`).
+void validate(const LongRunChoices& o);
+
+/// The library's RunOptions of the choices, logging finished realizations to `checkpoint` (a file
+/// or a study's prefix; "" = none). Validates them.
+RunOptions run_options(const LongRunChoices& o, const std::string& checkpoint);
+
+/// With resume_other_version, which code made the realizations the run resumes
+/// (resumed_checkpoint.hpp), for the JSON; null otherwise. A plain `resume` of a checkpoint another
+/// version made is refused (InvalidInput naming `resume`). Call before the run, which rewrites the
+/// checkpoints under this code's name.
+nlohmann::json resumed_code(const LongRunChoices& o, const std::vector<std::string>& checkpoints);
+
+}  // namespace granular
