@@ -29,7 +29,8 @@ int main(int argc, char** argv) {
       "from --types/--type-masses/--polydisperse named --chain-name, --ic mode (--mode/--mode-khz), --mle (X1 at T).",
       "exponents"};
   tool::describe_common(app);
-  tool::DynamicsOptions dynamics;
+  TransportChoices dynamics;
+  BeyondChoices beyond;
   tool::ExponentOptions choices;
   std::string f0_text = "10,0.5,0.1,0.01,0", output = "exponents", profile_f0 = "10,0.1,0";
   std::string paper_table = std::string(GRANULAR_SOURCE_DIR) + "/data/paper_table1_gamma.csv";
@@ -37,9 +38,9 @@ int main(int argc, char** argv) {
   tool::LongRunOptions run_options;
   bool compare = false;
   tool::add_option(app, "--F0", f0_text, "precompressions [N], comma list (0 = sonic vacuum)");
-  tool::add_exponent_choices(app, choices, dynamics);
+  tool::add_exponent_choices(app, choices, beyond);
   tool::add_parameters(app, choices.beads, long_run_chain_parameters(), {.only = {"N", "xi", "q", "walls"}});
-  tool::add_dynamics_options(app, dynamics);
+  tool::add_dynamics_options(app, dynamics, beyond);
   tool::add_option(app, "--realizations", realizations, "realizations per disordered case (h always runs 1)");
   tool::add_parameters(app, choices.beads, chain_parameters(), {.only = {"seed"}});
   tool::add_option(app, "--profile-F0", profile_f0, "F0s whose energy profile E_n(T) is averaged (list; 'none')");
@@ -64,7 +65,7 @@ int main(int argc, char** argv) {
     validate(run_options);
     TransportCase& base = config.base;
     base.realizations = static_cast<std::size_t>(realizations);
-    tool::apply(dynamics, base);
+    granular::apply(dynamics, beyond, base);
     const bool auto_n = config.automatic_length = choices.beads.auto_n;
     std::vector<TransportCase> cases = exponent_cases(config);
     const nlohmann::json rules = length_rules(cases, auto_n, dynamics.site);

@@ -27,7 +27,6 @@ int main(int argc, char** argv) {
       "spreading"};
   tool::describe_common(app);
   tool::KickedCaseOptions options;
-  const tool::DynamicsOptions& dynamics = options.dynamics;
   std::string output = "spreading";
   tool::LongRunOptions run;
   tool::SpreadingOutputs more;
@@ -47,15 +46,15 @@ int main(int argc, char** argv) {
                      c.profile_realizations = more.profile ? c.realizations : 0;
                      const SpreadingRunConfig& d = c.dynamics;
                      tool::apply(more, c);
-                     const nlohmann::json step_rule = tool::validate_and_settle(c, dynamics, tool::step_given(app));
+                     const nlohmann::json step_rule = tool::validate_and_settle(c, options.run, tool::step_given(app));
                      SpreadingPaths paths = spreading_paths(output, ensemble, more.profile, !d.forces.sites.empty());
                      paths.final_state = more.final_state, paths.energy_map = more.energy_map_file,
                      paths.spectrum = more.spectrum_file;
-                     paths.deviation = dynamics.deviation;
+                     paths.deviation = options.deviation;
                      const auto claim = tool::claim_output(output, meta.command(),
                                                            ensemble ? std::optional<LongRunChoices>(run) : std::nullopt);
                      check_outputs(paths.all(), "--output/--final-state/--energy-map/--spectrum");
-                     const bool single = more.single() || !dynamics.deviation.empty();  // a run of its own
+                     const bool single = more.single() || !options.deviation.empty();  // a run of its own
 
                      // Read before the run: resuming rewrites the checkpoint under this code's name.
                      const nlohmann::json resumed = ensemble ? resumed_code(run, {paths.checkpoint}) : nullptr;

@@ -21,7 +21,7 @@ struct ExponentOptions : ExponentChoices {
   ModeKick mode;
 };
 
-inline void add_exponent_choices(CLI::App& app, ExponentOptions& o, BeyondOptions& beyond) {
+inline void add_exponent_choices(CLI::App& app, ExponentOptions& o, BeyondChoices& beyond) {
   add_parameters<ExponentChoices>(app, o, exponent_parameters(), {.except = {"chain_name"}});
   add_quasiperiodic_options(app, o.beads);
   add_bead_distribution_options(app, o.beads, "--types-rule");

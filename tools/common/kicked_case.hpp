@@ -16,13 +16,11 @@
 
 namespace granular::tool {
 
-struct KickedCaseOptions {
-  KickedCaseOptions() { chain.n = 2501; }
-  ChainOptions chain;
-  DynamicsOptions dynamics;
-  ModeKick mode;
-  std::string ic = "displacement";
-  long long realizations = 1;
+/// The library's choices, bound straight to the flags, with what only the command line has: the
+/// file of the deviation vector (--deviation FILE turns on its samples) and the case file.
+struct KickedCaseOptions : KickedCaseChoices {
+  KickedCaseOptions() { beyond.deviation_samples = 20; }
+  std::string deviation;  ///< CSV of the deviation vector's distribution; empty = none
   std::string case_file;  ///< --case: the chain, kick and dynamics from a file instead of the flags
 };
 
@@ -30,9 +28,12 @@ inline void add_kicked_case_options(CLI::App& app, KickedCaseOptions& o) {
   const std::size_t before = app.get_options().size();
   add_chain_options(app, o.chain, long_run_chain_parameters());
   add_option(app, "--ic", o.ic, "initial condition: displacement | velocity | mode (a linear mode: --mode, --mode-khz)");
-  add_dynamics_options(app, o.dynamics);
+  add_dynamics_options(app, o.run, o.beyond);
   add_mode_kick_options(app, o.mode);
-  add_lyapunov_options(app, o.dynamics);
+  add_mle_options(app, o.beyond, "column mle = X1(t) [1/s] (ensemble: its mean)");
+  app.add_option("--deviation", o.deviation, "CSV t,site,share: the deviation vector along the chain (with --mle)");
+  add_parameters(app, o.beyond, beyond_parameters(), {.only = {"deviation_samples"}})["deviation_samples"]->description(
+      "uniform times of --deviation");
   add_option(app, "--realizations", o.realizations, "realizations to average (ensemble means and exponents)");
   auto* file = app.add_option("--case", o.case_file,
                               "JSON of a case: a replay file a failed ensemble wrote, or a spreading run's PREFIX.json "
@@ -48,23 +49,11 @@ inline void add_kicked_case_options(CLI::App& app, KickedCaseOptions& o) {
 /// library's kicked_case (study/kicked_case.hpp), its warnings printed. `ensemble` when it
 /// averages realizations.
 inline KickedCase kicked_case(const KickedCaseOptions& o, bool ensemble) {
-  KickedCase k;
-  if (o.case_file.empty()) {
-    // Read before the aggregate, which must not throw: GCC 12 destroys its members twice when one does.
-    const BeyondChoices beyond = beyond_choices(o.dynamics);
-    k = granular::kicked_case({.chain = o.chain,
-                               .ic = o.ic,
-                               .mode = o.mode,
-                               .run = o.dynamics,
-                               .beyond = beyond,
-                               .realizations = o.realizations},
-                              ensemble, radius_options(o.chain));
-  } else {  // the tangent map as the file says (the library checks it for --deviation)
-    BeyondOptions deviation = o.dynamics;
-    deviation.mle = true;
-    k = granular::kicked_case(o.case_file, o.chain.realization, o.realizations,
-                              beyond_choices(deviation).deviation_samples, ensemble);
-  }
+  KickedCaseChoices choices = o;
+  if (o.deviation.empty()) choices.beyond.deviation_samples = 0;
+  KickedCase k = o.case_file.empty() ? granular::kicked_case(choices, ensemble, radius_options(o.chain))
+                                     : granular::kicked_case(o.case_file, o.chain.realization, o.realizations,
+                                                             choices.beyond.deviation_samples, ensemble);
   warn(k.warnings);
   return k;
 }

@@ -175,7 +175,7 @@ void apply(const BeyondChoices& o, SpreadingRunConfig& d) {
   d.integration.lyapunov.enabled = o.mle;
   if (o.renormalize < 1) throw InvalidInput("renormalize", " " + std::to_string(o.renormalize) + ": at least 1");
   d.integration.lyapunov.renormalize_every = static_cast<std::size_t>(o.renormalize);
-  if (o.deviation_samples != 0 && !o.mle) throw InvalidInput("deviation_samples", ": needs mle (the tangent map)");
+  if (o.deviation_samples != 0 && !o.mle) throw InvalidInput("deviation_samples", ": needs `mle` (the tangent map)");
   if (o.deviation_samples < 0 || o.deviation_samples == 1)
     throw InvalidInput("deviation_samples", " " + std::to_string(o.deviation_samples) + ": 0 (none) or at least 2");
   d.deviation_samples = static_cast<std::size_t>(o.deviation_samples);
