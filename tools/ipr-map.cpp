@@ -35,7 +35,7 @@ int main(int argc, char** argv) {
   tool::add_option(app, "--F0", config.chain.F0, "static precompression [N], > 0");
   tool::add_option(app, "--R1", config.chain.R1,
                    "radius of type-1 beads [m]; type 2 has xi*R1 (steel beads, steel walls)");
-  tool::add_walls_option(app, beads.walls);
+  tool::add_parameters(app, beads, chain_parameters(), {.only = {"walls"}});
   tool::add_integer(app, "--realizations", config.realizations, "chains averaged per (q, xi)");
   tool::add_integer(app, "--seed", config.chain.seed, "random seed; realization r of seed s is always the same chain");
   tool::add_parameters(app, threads, long_run_parameters(), {.only = {"threads"}});

@@ -11,6 +11,7 @@
 #include "granular/ensemble/parallel_realizations.hpp"
 #include "granular/io/atomic_file.hpp"
 #include "granular/io/range_syntax.hpp"
+#include "granular/number_format.hpp"
 #include "granular/study/localization_files.hpp"
 #include "granular/study/long_run_choices.hpp"
 

@@ -3,7 +3,6 @@
 // single-chain tool: a random two-type draw, a types or radii file, k types, polydisperse radii or
 // a quasiperiodic chain (one of them: the library refuses two); stored, or streamed for tools
 // that walk it once (localization).
-#include <set>
 #include <string>
 #include <vector>
 
@@ -22,11 +21,6 @@ using ChainOptions = ChainChoices;
 inline void add_bead_distribution_options(CLI::App& app, ChainOptions& o, const std::string& rule_flag = "--disorder") {
   add_parameters(app, o, chain_parameters(),
                  {.only = {"types", "type_masses", "polydisperse"}, .flags = {{"disorder", rule_flag}}});
-}
-
-/// --walls flat | sphere (model/chain_recipe.hpp: WallShape).
-inline void add_walls_option(CLI::App& app, std::string& walls) {
-  add_option(app, "--walls", walls, help_of(chain_parameters(), "walls"));
 }
 
 /// --quasi and its parameters (model/quasiperiodic.hpp).

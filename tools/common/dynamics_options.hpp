@@ -45,7 +45,4 @@ nlohmann::json validate_and_settle(Cases& cases, const TransportChoices& o, bool
   return rule;
 }
 
-/// The flags of a mode kick, straight into the library's ModeKick.
-inline void add_mode_kick_options(CLI::App& app, ModeKick& o) { add_parameters(app, o, mode_kick_parameters()); }
-
 }  // namespace granular::tool

@@ -26,7 +26,7 @@ inline void add_exponent_choices(CLI::App& app, ExponentOptions& o, BeyondChoice
   add_quasiperiodic_options(app, o.beads);
   add_bead_distribution_options(app, o.beads, "--types-rule");
   add_parameters<ExponentChoices>(app, o, exponent_parameters(), {.only = {"chain_name"}});
-  add_mode_kick_options(app, o.mode);
+  add_parameters(app, o.mode, mode_kick_parameters());
   add_mle_options(app, beyond,
                   "X1 at T, its ensemble mean (columns mle, mle_real_err: its standard error, mle_sd: spread over "
                   "realizations) and <X1(t)> in the curves");

@@ -6,7 +6,6 @@
 #include <string>
 
 #include <CLI/CLI.hpp>
-#include <nlohmann/json.hpp>
 
 #include "chain_options.hpp"
 #include "dynamics_options.hpp"
@@ -29,7 +28,7 @@ inline void add_kicked_case_options(CLI::App& app, KickedCaseOptions& o) {
   add_chain_options(app, o.chain, long_run_chain_parameters());
   add_option(app, "--ic", o.ic, "initial condition: displacement | velocity | mode (a linear mode: --mode, --mode-khz)");
   add_dynamics_options(app, o.run, o.beyond);
-  add_mode_kick_options(app, o.mode);
+  add_parameters(app, o.mode, mode_kick_parameters());
   add_mle_options(app, o.beyond, "column mle = X1(t) [1/s] (ensemble: its mean)");
   app.add_option("--deviation", o.deviation, "CSV t,site,share: the deviation vector along the chain (with --mle)");
   add_parameters(app, o.beyond, beyond_parameters(), {.only = {"deviation_samples"}})["deviation_samples"]->description(
@@ -57,8 +56,5 @@ inline KickedCase kicked_case(const KickedCaseOptions& o, bool ensemble) {
   warn(k.warnings);
   return k;
 }
-
-/// Whether the case's time step is given (--dt, or a case file's): else the rule picks it.
-inline bool step_given(const CLI::App& app) { return app.count("--dt") > 0 || app.count("--case") > 0; }
 
 }  // namespace granular::tool

@@ -4,26 +4,21 @@
 // realization does (stop with the command that replays it alone, or --skip-failed: leave it out,
 // say so everywhere; a failed realization's case is written to a file that `spreading --case`
 // replays, so every field travels), and Ctrl-C as a clean stop that prints the command resuming the run.
-#include <algorithm>
 #include <cstdint>
 #include <cstdio>
 #include <exception>
-#include <functional>
 #include <string>
 #include <vector>
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
-#include "granular/ensemble/checkpoint_log.hpp"
 #include "granular/ensemble/interrupt.hpp"
 #include "granular/ensemble/run_options.hpp"
 #include "granular/io/shell_quote.hpp"
 #include "granular/parallel/mpi_context.hpp"
 #include "granular/study/case_file.hpp"
-#include "granular/study/exponent_table.hpp"
 #include "granular/study/long_run_choices.hpp"
-#include "granular/study/resumed_checkpoint.hpp"
 #include "granular/study/transport_study.hpp"
 #include "outputs.hpp"
 #include "tool_main.hpp"

@@ -6,13 +6,10 @@
 // they are told in the flag the user typed (`--dt`). A library table of parameters becomes
 // options by add_parameters.
 #include <algorithm>
-#include <cctype>
-#include <cmath>
 #include <cstdio>
 #include <functional>
 #include <iterator>
 #include <map>
-#include <optional>
 #include <set>
 #include <string>
 #include <string_view>
@@ -29,7 +26,6 @@
 #include "granular/io/output_claim.hpp"
 #include "granular/io/range_syntax.hpp"
 #include "granular/io/shell_quote.hpp"
-#include "granular/number_format.hpp"
 #include "granular/parameter_names.hpp"
 #include "granular/parameter_table.hpp"
 
