@@ -31,7 +31,7 @@ int main(int argc, char** argv) {
   tool::describe_common(app);
   TransportChoices dynamics;
   BeyondChoices beyond;
-  tool::ExponentOptions choices;
+  ExponentChoices choices;
   std::string f0_text = "10,0.5,0.1,0.01,0", output = "exponents", profile_f0 = "10,0.1,0";
   std::string paper_table = std::string(GRANULAR_SOURCE_DIR) + "/data/paper_table1_gamma.csv";
   long long realizations = 500, profile_realizations = 100;
@@ -55,7 +55,7 @@ int main(int argc, char** argv) {
     tool::Metadata meta("exponents", argc, argv);
     const MpiContext& mpi = MpiContext::instance();
     ExponentTableConfig config;
-    tool::apply(choices, config);
+    granular::apply(choices, config);
     config.precompressions = parse_number_list(f0_text, "--F0");
     config.profile_precompressions =
         profile_f0 == "none" ? std::vector<double>{} : parse_number_list(profile_f0, "--profile-F0");

@@ -34,6 +34,12 @@ with it; the choice in metadata['time_step_rule']['integrator_choice']); force_l
 reported ('warn'); 0 = unwatched
 """
 
+_MODE_DOC = """\
+    mode, mode_khz, energy: with ic 'mode', the linear mode kicked (u = M^-1/2 w from rest, each chain's own): \
+number `mode` 1..N by increasing frequency or the one nearest `mode_khz` [kHz], of total energy `energy` [J] or, \
+without it, largest |u_n| = alpha
+"""
+
 _BEYOND_DOC = """\
     damping_time: on-site viscous damping time tau_d [s], force -(m/tau_d) du/dt on each bead; 0 = none
     kk_gamma: Kuwabara-Kono contact damping gamma_KK [s], bond force A[d]^{3/2} + gamma_KK A [d]^{1/2} dd/dt \
@@ -249,12 +255,14 @@ def transport(*, disorder="A", N=2501, q=0.5, xi=0.5, F0=10.0, R1=_core.paper_r1
               reference_max_step=0.01e-6, max_energy_error=1e-3, energy_guard="stop", profile=False, threads=0,
               checkpoint=None, resume=False, resume_other_version=False, fresh=False, progress=False, damping_time=0.0,
               kk_gamma=0.0, mle=False, renormalize=10, walls="flat", quasi=None, modulation=0.0, ratio="golden",
-              phase=None, angle=45.0, k0=4.0, types=None, type_masses=None, polydisperse=None):
+              phase=None, angle=45.0, k0=4.0, types=None, type_masses=None, polydisperse=None, mode=0, mode_khz=-1.0,
+              energy=0.0):
     k = _core.KickedCaseChoices()  # made a case by the spreading tool's rule, in C++
     _chain_choices(k.chain, disorder=disorder, N=N, q=q, xi=xi, F0=F0, R1=R1, seed=seed, walls=walls, types=types,
                    type_masses=type_masses, polydisperse=polydisperse)
     _quasi_choices(k.chain, quasi, modulation, ratio, phase, angle, k0)
     k.ic, k.realizations = ic, _core._size(realizations, "realizations", 1)
+    k.mode.mode, k.mode.mode_khz, k.mode.energy = mode, mode_khz, energy
     k.run = _choices(alpha, beta, site, centre, T, dt, integrator, force_law, samples, sampling, fit, fit_step, t_star,
                      kappa, bootstrap, active_window, window_threshold, reference_max_step, max_energy_error,
                      energy_guard)
@@ -289,7 +297,8 @@ transport.__doc__ = (
     "probability, drawn by disorder 'A' (each bead), 'RDM1' (each dimer) or 'RDM2' (two types)), of k masses "
     "'M1:P1,...' [kg] of steel spheres, or of radii drawn per bead 'uniform:LO:HI' or 'normal:MEAN:SD:MIN' [m] "
     "instead of the two-type draw (the tools' --types, --type-masses, --polydisperse; one of them or quasi)\n"
-    "    realizations: R; ic: 'displacement' | 'velocity'\n" + _QUASI_DOC + _DYNAMICS_DOC + _BEYOND_DOC +
+    "    realizations: R; ic: 'displacement' | 'velocity' | 'mode'\n" + _MODE_DOC + _QUASI_DOC + _DYNAMICS_DOC +
+    _BEYOND_DOC +
     "    profile: also average the site energies E_n(T)\n"
     "    threads: worker threads (0: every core); results do not depend on it\n"
     "    checkpoint: a file logging each finished realization (removed once the run completes); resume=True "
@@ -313,10 +322,11 @@ def exponent_table(*, chains=["h", "A", "RDM1", "RDM2"], F0=[10.0, 0.5, 0.1, 0.0
                    compare_paper=False, threads=0, checkpoint=None, resume=False, resume_other_version=False, fresh=False,
                    progress=False, damping_time=0.0, kk_gamma=0.0, mle=False, renormalize=10, walls="flat",
                    quasi=None, modulation=0.0, ratio="golden", phase=None, angle=45.0, k0=4.0, chain_name=None,
-                   types=None, type_masses=None, polydisperse=None, types_rule=None):
+                   types=None, type_masses=None, polydisperse=None, types_rule=None, mode=0, mode_khz=-1.0, energy=0.0):
     words = _core.ExponentChoices()  # made the table's chains and kicks by the tool's rule, in C++
     words.chains = [] if chains is None or chains == "none" else chains
     words.ic = ic
+    words.mode.mode, words.mode.mode_khz, words.mode.energy = mode, mode_khz, energy
     # every kind's chains, and the chain of one's own: k types, polydisperse radii, or quasiperiodic
     _chain_choices(words.beads, N=N, xi=xi, q=q, seed=seed, walls=walls, types=types, type_masses=type_masses,
                    polydisperse=polydisperse)
@@ -343,7 +353,8 @@ exponent_table.__doc__ = (
     "for every chain kind x F0 x kick, each an ensemble of `realizations` (h runs one: it is "
     "deterministic).\n\n"
     "    chains: kinds among 'h', 'A', 'RDM1', 'RDM2' ('none' or []: only the quasiperiodic chain); F0: "
-    "precompressions [N] (0: sonic vacuum); ic: kicks\n    N, xi, q, realizations, seed, walls ('flat' | 'sphere'): "
+    "precompressions [N] (0: sonic vacuum); ic: kicks among 'displacement', 'velocity', 'mode'\n" + _MODE_DOC +
+    "    N, xi, q, realizations, seed, walls ('flat' | 'sphere'): "
     "the chains\n"
     "    quasi: None, or one more chain after the kinds, quasiperiodic (the tool's --quasi): 's1', 's2' or "
     "'cylinders', with modulation, ratio, phase (None: drawn per seed and realization, R phases), angle and k0 as "

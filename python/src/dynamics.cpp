@@ -167,8 +167,7 @@ void bind_dynamics(py::module_& m) {
   m.attr("_paper_table") = GRANULAR_SOURCE_DIR "/data/paper_table1_gamma.csv";  // compare_paper=True
   table_class(m, "BeyondChoices", beyond_parameters());
   table_class(m, "ModeKick", mode_kick_parameters());
-  // granular.spreading's optional observers, made by the tool's rule
-  table_class(m, "SpreadingOutputChoices", spreading_output_parameters());
+  table_class(m, "SpreadingOutputChoices", spreading_output_parameters());  // granular.spreading's observers
   using R = ChainRecipe;
   config_class(m, "ChainRecipe", "q xi R1 N F0 material seed quasi given_radii given_types", &R::q, &R::xi, &R::R1,
                &R::N, &R::F0, &R::material, &R::seed, &R::quasi, &R::given_radii, &R::given_types)
@@ -185,7 +184,8 @@ void bind_dynamics(py::module_& m) {
   table_class(m, "ExponentChoices", exponent_parameters())
       .def_readwrite("chains", &W::chains)
       .def_readwrite("ic", &W::ic)
-      .def_readwrite("beads", &W::beads);
+      .def_readwrite("beads", &W::beads)
+      .def_readwrite("mode", &W::mode);
   table_class(m, "ChainChoices", chain_parameters());
   using K = KickedCaseChoices;  // granular.transport's case, made by the spreading tool's rule
   config_class(m, "KickedCaseChoices", "chain ic mode run beyond realizations", &K::chain, &K::ic, &K::mode, &K::run,

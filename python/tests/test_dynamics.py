@@ -112,6 +112,28 @@ def test_ensemble_of_a_bead_distribution_equals_the_spreading_tool(tools, keywor
         gr.transport(types="4.76e-3:1", polydisperse="uniform:3e-3:4e-3", **SHORT)
 
 
+def test_mode_kicks_of_an_ensemble_and_of_the_table_equal_the_tools(tools):
+    """transport(ic='mode', mode=...) is spreading --ic mode --mode ... --realizations, and exponent_table's mode kick
+    is exponents --ic mode --mode ...: each realization kicked with its own chain's mode, by the library's rule."""
+    csv, meta = tools.run("spreading", "--disorder", "RDM1", "--N", "121", "--realizations", "3", "--ic", "mode",
+                          "--mode", "7", "--energy", "1e-9", *SHORT_FLAGS, output="mode")
+    with pytest.warns(RuntimeWarning, match="reached the walls"):  # a mode spans the chain, walls included
+        t = gr.transport(disorder="RDM1", N=121, realizations=3, ic="mode", mode=7, energy=1e-9, **SHORT)
+    for key in ("t", "m2", "ipr", "energy_error"):
+        assert_identical(t[key], csv[key])
+    assert without_process_keys(t.metadata) == without_process_keys(meta)
+    flags = ["--chains", "A", "--F0", "1", "--ic", "mode", "--mode-khz", "12", "--N", "101", "--realizations", "2",
+             "--samples", "30", "--profile-F0", "none", "--bootstrap", "50", *SHORT_FLAGS, "--quiet"]
+    csv, meta = tools.run("exponents", *flags, output="exp")
+    table = gr.exponent_table(chains=["A"], F0=[1], ic=["mode"], mode_khz=12, N=101, realizations=2, samples=30,
+                              profile_F0=None, bootstrap=50, **SHORT)
+    assert list(table.column("ic")) == ["mode"]
+    assert_columns_identical(table, csv)
+    assert without_process_keys(table.metadata) == without_process_keys(meta)
+    with pytest.raises(ValueError, match="only with `?ic`? mode"):
+        gr.exponent_table(chains=["h"], mode=3, **SHORT)
+
+
 def test_ensemble_mean_is_the_mean_of_the_single_runs():
     t = gr.transport(disorder="RDM1", N=121, realizations=3, seed=2, **SHORT)
     runs = [gr.spreading(gr.rdm1(N=121, seed=2, realization=r), **SHORT) for r in range(3)]
@@ -311,9 +333,10 @@ def _keywords(table, skip=()):
     (gr.transport, [(gr._core.TransportChoices, ("fit_begin", "fit_end")),
                     (gr._core.BeyondChoices, ("deviation_samples",)),
                     # an ensemble draws its chains: no files, no one realization; s1's N/m stiffness: none
-                    (gr._core.ChainChoices, ("config", "radii", "realization", "k0_n_per_m"))]),
+                    (gr._core.ChainChoices, ("config", "radii", "realization", "k0_n_per_m")), (gr._core.ModeKick, ())]),
     (gr.exponent_table, [(gr._core.TransportChoices, ("fit_begin", "fit_end")),
-                         (gr._core.BeyondChoices, ("deviation_samples",)), (gr._core.ExponentChoices, ())]),
+                         (gr._core.BeyondChoices, ("deviation_samples",)), (gr._core.ExponentChoices, ()),
+                         (gr._core.ModeKick, ())]),
 ])
 def test_every_parameter_of_the_library_tables_is_a_documented_keyword(function, tables):
     """The library describes each choice once (parameter_table.hpp); the tools make their flags of it.

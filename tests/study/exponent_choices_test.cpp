@@ -104,5 +104,16 @@ TEST(ExponentChoices, AChainKindIsToldAsTheChainsChoice) {
   }
 }
 
+TEST(ExponentChoices, TheModeOfAModeKickReachesEveryCaseOnlyWithThatKick) {
+  ExponentTableConfig config;
+  apply(ExponentChoices{.chains = {"A"}, .ic = {"mode"}, .mode = {.mode = 7, .energy = 1e-9}}, config);
+  EXPECT_EQ(config.kicks, std::vector<Kick>{Kick::mode});
+  EXPECT_EQ(config.base.mode.mode, 7);
+  EXPECT_EQ(config.base.mode.energy, 1e-9);
+  for (const TransportCase& c : exponent_cases(config)) EXPECT_EQ(c.mode.mode, 7) << "every case kicks mode 7";
+  EXPECT_THROW(apply(ExponentChoices{.ic = {"displacement"}, .mode = {.mode = 7}}, config), InvalidInput)
+      << "a mode without ic mode";
+}
+
 }  // namespace
 }  // namespace granular

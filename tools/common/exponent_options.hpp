@@ -15,27 +15,16 @@
 
 namespace granular::tool {
 
-/// The library's choices, bound straight to the flags (--chains and --ic by their text forms:
-/// comma lists), and the mode of a mode kick.
-struct ExponentOptions : ExponentChoices {
-  ModeKick mode;
-};
-
-inline void add_exponent_choices(CLI::App& app, ExponentOptions& o, BeyondChoices& beyond) {
-  add_parameters<ExponentChoices>(app, o, exponent_parameters(), {.except = {"chain_name"}});
+/// The library's choices, bound straight to the flags (--chains and --ic by their text forms: comma lists).
+inline void add_exponent_choices(CLI::App& app, ExponentChoices& o, BeyondChoices& beyond) {
+  add_parameters(app, o, exponent_parameters(), {.except = {"chain_name"}});
   add_quasiperiodic_options(app, o.beads);
   add_bead_distribution_options(app, o.beads, "--types-rule");
-  add_parameters<ExponentChoices>(app, o, exponent_parameters(), {.only = {"chain_name"}});
+  add_parameters(app, o, exponent_parameters(), {.only = {"chain_name"}});
   add_parameters(app, o.mode, mode_kick_parameters());
   add_mle_options(app, beyond,
                   "X1 at T, its ensemble mean (columns mle, mle_real_err: its standard error, mle_sd: spread over "
                   "realizations) and <X1(t)> in the curves");
-}
-
-/// The chains and kicks of the study into `config` (config.base then holds the mode kick).
-inline void apply(const ExponentOptions& o, ExponentTableConfig& config) {
-  granular::apply(o, config);
-  apply(o.mode, config.kicks, config.base);
 }
 
 }  // namespace granular::tool

@@ -90,6 +90,7 @@ void apply(const ExponentChoices& o, ExponentTableConfig& config) {
   kinds.config.clear(), kinds.radii.clear();
   std::vector<std::string> no_file_read;
   config.base.chain = chain_recipe(kinds, no_file_read);
+  apply(o.mode, config.kicks, config.base);
   validate(config);
 }
 

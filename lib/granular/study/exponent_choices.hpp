@@ -9,6 +9,7 @@
 
 #include "granular/study/chain_choices.hpp"
 #include "granular/study/exponent_table.hpp"
+#include "granular/study/transport_choices.hpp"
 
 namespace granular {
 
@@ -22,14 +23,15 @@ struct ExponentChoices {
   ChainChoices beads{.n = 2501};
   std::string types_rule{};  ///< how types / type_masses are drawn: A, RDM1 or RDM2; empty: A
   std::string chain_name{};  ///< that chain's name in the outputs; empty: types, polydisperse or quasi-KIND
+  ModeKick mode{};           ///< the mode of `ic` mode
 };
 
 /// Each choice's meaning (parameter_table.hpp); `chains` and `ic` are lists, set by front ends in
 /// forms of their own (comma lists on the command line). Not `beads`: chain_parameters().
 const ParameterTable<ExponentChoices>& exponent_parameters();
 
-/// Sets config.chains, config.kicks, config.bead_chains and config.base.chain (but its F0, set per
-/// case) from the choices and validates them
+/// Sets config.chains, config.kicks, config.bead_chains, config.base.chain (but its F0, set per
+/// case) and config.base.mode from the choices and validates them
 /// (validate(const ExponentTableConfig&)). Throws InvalidInput naming the choice.
 void apply(const ExponentChoices& choices, ExponentTableConfig& config);
 
