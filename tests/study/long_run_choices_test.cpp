@@ -4,7 +4,12 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
+
 #include "granular/error.hpp"
+
+#include <unistd.h>
 
 namespace granular {
 namespace {
@@ -38,6 +43,25 @@ TEST(LongRunChoices, RefuseWhatCannotRunNamingTheChoice) {
   EXPECT_EQ(refused_parameter({.resume_other_version = true, .fresh = true}), "fresh");
   EXPECT_THROW(run_options({.threads = -2}, ""), InvalidInput);
   EXPECT_TRUE(resumed_code({.resume = true}, {"no/such/checkpoint"}).is_null()) << "nothing resumed: no entry";
+}
+
+TEST(LongRunChoices, AnInterruptedRunsCheckpointIsContinuedOrDiscardedNeverOverwritten) {
+  const auto dir = std::filesystem::temp_directory_path() / ("long-run-choices-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const std::string base = (dir / "run.checkpoint").string();
+  EXPECT_NO_THROW(settle_checkpoints({}, base)) << "no checkpoint: nothing to settle";
+  std::ofstream(base + ".2") << "finished work";  // a study's case log
+  try {
+    settle_checkpoints({}, base);
+    ADD_FAILURE() << "a run neither resuming nor fresh took over an interrupted run's checkpoint";
+  } catch (const InvalidInput& e) {
+    EXPECT_EQ(e.parameter(), "checkpoint");
+  }
+  EXPECT_NO_THROW(settle_checkpoints({.resume = true}, base));
+  EXPECT_TRUE(std::filesystem::exists(base + ".2")) << "resuming keeps it";
+  settle_checkpoints({.fresh = true}, base);
+  EXPECT_FALSE(std::filesystem::exists(base + ".2")) << "fresh discards it";
+  std::filesystem::remove_all(dir);
 }
 
 }  // namespace

@@ -11,7 +11,6 @@
 #include <vector>
 
 #include <CLI/CLI.hpp>
-#include <nlohmann/json.hpp>
 
 #include "granular/ensemble/interrupt.hpp"
 #include "granular/ensemble/run_options.hpp"
@@ -52,14 +51,22 @@ inline std::string replay_text(const TransportCase& c, std::uint64_t r, const st
          " --output replay-" + std::to_string(r);
 }
 
-/// Runs `study` (a call of run_transport_study or run_exponent_table); a realization failing in
-/// it becomes a message that says how to replay it alone and how to go on without it (the
-/// realizations finished before it are in the checkpoint).
-/// The replay's case file goes beside the outputs on `prefix`.
+/// Runs `study` (a call of run_transport_study or run_exponent_table with the RunOptions it is
+/// given) over `total` realizations: a progress line (under mpirun on rank 0 alone), Ctrl-C as a
+/// clean stop, checkpoints PREFIX.checkpoint[.<case>]. A realization failing in it becomes a
+/// message that says how to replay it alone (its case file beside the outputs on `prefix`) and how
+/// to go on without it (the realizations finished before it are in the checkpoint).
 template <class Study>
-auto replaying_failures(const Study& study, const std::string& prefix, int argc, char** argv) -> decltype(study()) {
+auto run_study(std::size_t total, const LongRunOptions& o, const std::string& prefix, const char* tool, int argc,
+               char** argv, const Study& study) {
+  ProgressMeter progress(total, tool, o.quiet || !MpiContext::instance().root() ? 0 : -1);
+  RunOptions options = run_options(o, prefix + ".checkpoint");
+  options.progress = &progress;
+  options.cancelled = stop_on_interrupt(tool);
   try {
-    return study();
+    auto result = study(options);
+    progress.finish();
+    return result;
   } catch (const RealizationFailed& e) {
     std::string go_on = resume_command(argc, argv);
     if (go_on.find(" --skip-failed") == std::string::npos) go_on += " --skip-failed";
@@ -69,33 +76,16 @@ auto replaying_failures(const Study& study, const std::string& prefix, int argc,
   }
 }
 
-/// Runs `study` (a call of run_transport_study or run_exponent_table with the RunOptions it is
-/// given) over `total` realizations: a progress line (under mpirun on rank 0 alone), Ctrl-C as a
-/// clean stop, failures told with their replay command, checkpoints PREFIX.checkpoint[.<case>].
-template <class Study>
-auto run_study(std::size_t total, const LongRunOptions& o, const std::string& prefix, const char* tool, int argc,
-               char** argv, const Study& study) {
-  ProgressMeter progress(total, tool, o.quiet || !MpiContext::instance().root() ? 0 : -1);
-  RunOptions options = run_options(o, prefix + ".checkpoint");
-  options.progress = &progress;
-  options.cancelled = stop_on_interrupt(tool);
-  auto result = replaying_failures([&] { return study(options); }, prefix, argc, argv);
-  progress.finish();
-  return result;
-}
-
 /// Says which realizations of `c` were left out (--skip-failed): a line on stderr for each, with
-/// its replay command (unless quiet), and a note on the final line. Returns them for the JSON.
-inline nlohmann::json report_excluded(const TransportCase& c, const TransportSummary& s, Metadata& meta,
-                                      const LongRunOptions& o, const char* tool, const std::string& prefix,
-                                      const std::string& argv0) {
+/// its replay command (unless quiet), and a note on the final line.
+inline void report_excluded(const TransportCase& c, const TransportSummary& s, Metadata& meta, const LongRunOptions& o,
+                            const char* tool, const std::string& prefix, const std::string& argv0) {
   for (std::uint64_t r : o.quiet ? std::vector<std::uint64_t>{} : s.excluded)
     std::fprintf(stderr, "%s: realization %llu failed and is left out (--skip-failed); replay: %s\n", tool,
                  static_cast<unsigned long long>(r), replay_text(c, r, prefix, argv0).c_str());
   if (!s.excluded.empty())
     meta.note(std::to_string(s.excluded.size()) + " failed realization(s) of " + std::to_string(c.realizations) +
               " left out");
-  return s.excluded;
 }
 
 }  // namespace granular::tool

@@ -6,7 +6,6 @@
 // an output another run owns; and the JSON beside every CSV (io/run_metadata.hpp), made from the
 // tool's argv: the command line as typed, shell-quoted; --quiet silences the final line.
 #include <algorithm>
-#include <filesystem>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -14,7 +13,6 @@
 
 #include <CLI/CLI.hpp>
 
-#include "granular/ensemble/checkpoint_log.hpp"
 #include "granular/error.hpp"
 #include "granular/io/output_claim.hpp"
 #include "granular/io/output_paths.hpp"
@@ -35,26 +33,12 @@ inline CLI::Option* add_output_option(CLI::App& app, std::string& output, const 
       ->capture_default_str();
 }
 
-/// The checkpoint logs of a run on `prefix`: PREFIX.checkpoint and PREFIX.checkpoint.<case>.
-inline std::vector<std::string> checkpoint_files(const std::string& prefix, bool temporaries = false) {
-  return CheckpointLog::files(prefix + ".checkpoint", {.cases = true, .temporaries = temporaries});
-}
-
-/// Claims `prefix`; with `checkpoints`, a run neither resuming nor fresh is refused when a
-/// checkpoint is there, and a fresh one removes it.
+/// Claims `prefix`; with `checkpoints`, the checkpoint PREFIX.checkpoint[.<case>] an interrupted
+/// run left is settled as the choices say (settle_checkpoints: refused, or with --fresh removed).
 inline OutputClaim claim_output(const std::string& prefix, const std::string& command,
                                 std::optional<LongRunChoices> checkpoints = std::nullopt) {
   return OutputClaim(prefix, command, [&] {
-    if (!checkpoints) return;
-    const LongRunChoices& p = *checkpoints;
-    validate(p);
-    const auto files = p.resuming() ? std::vector<std::string>{} : checkpoint_files(prefix);
-    if (files.empty()) return;
-    if (!p.fresh)
-      throw InvalidInput("output", " '" + prefix + "': " + files.front() +
-                                       " holds the finished realizations of an interrupted run; continue it with "
-                                       "--resume, or discard it with --fresh");
-    for (const auto& f : checkpoint_files(prefix, true)) std::filesystem::remove(f);
+    if (checkpoints) settle_checkpoints(*checkpoints, prefix + ".checkpoint");
   });
 }
 

@@ -97,19 +97,11 @@ struct Shown {
   std::map<std::string, std::string> flags{};
 };
 
-/// A table row's --help line: its help, each parameter it names told as this tool's flag.
-template <class Choices>
-std::string help_of(const ParameterTable<Choices>& table, const std::string& name, const Shown& shown = {}) {
-  return tell_parameters(parameter(table, name).help, [&](const std::string& p) {
-    const auto it = shown.flags.find(p);
-    return it != shown.flags.end() ? it->second : option_name(front_end_word(p));
-  });
-}
-
 /// Registers an option for every row of `table` (parameter_table.hpp) that is shown, bound to its
 /// field of `o`, or read by its text form (Parameter::text) as the command line is parsed: a flag
 /// for a bool, an integer that takes scientific notation for a long long or unsigned long, a
-/// number or word otherwise. Returns them by parameter name.
+/// number or word otherwise; its --help line is the row's help, each parameter it names told as
+/// this tool's flag. Returns them by parameter name.
 template <class Choices>
 std::map<std::string, CLI::Option*> add_parameters(CLI::App& app, Choices& o, const ParameterTable<Choices>& table,
                                                    const Shown& shown = {}) {
@@ -117,7 +109,11 @@ std::map<std::string, CLI::Option*> add_parameters(CLI::App& app, Choices& o, co
   for (const Parameter<Choices>& p : table) {
     if ((!shown.only.empty() && !shown.only.contains(p.name)) || shown.except.contains(p.name)) continue;
     if (p.field.index() == 0 && !p.text) continue;
-    const std::string flag = option_name(word_of(p)), help = help_of(table, p.name, shown);
+    const std::string flag = option_name(word_of(p)),
+                      help = tell_parameters(p.help, [&](const std::string&named) {
+                        const auto it = shown.flags.find(named);
+                        return it != shown.flags.end() ? it->second : option_name(front_end_word(named));
+                      });
     CLI::Option* option = std::visit(
         [&]<class Field>(Field field) -> CLI::Option* {
           if (p.text)

@@ -32,6 +32,12 @@ void validate(const LongRunChoices& o);
 /// or a study's prefix; "" = none). Validates them.
 RunOptions run_options(const LongRunChoices& o, const std::string& checkpoint);
 
+/// Before a run that logs its finished realizations to `checkpoint` (and, a study of several cases,
+/// to checkpoint.<case>): unless it resumes, the logs an interrupted run left there are refused
+/// (InvalidInput naming `checkpoint`: finished work is never lost to a run not told to discard it),
+/// or with `fresh` removed. Validates the choices.
+void settle_checkpoints(const LongRunChoices& o, const std::string& checkpoint);
+
 /// With resume_other_version, which code made the realizations the run resumes
 /// (resumed_checkpoint.hpp), for the JSON; null otherwise. A plain `resume` of a checkpoint another
 /// version made is refused (InvalidInput naming `resume`). Call before the run, which rewrites the
