@@ -4,12 +4,11 @@
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
 #include <filesystem>
 #include <fstream>
 
 #include "granular/error.hpp"
-
-#include <unistd.h>
 
 namespace granular {
 namespace {
