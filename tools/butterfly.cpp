@@ -39,11 +39,7 @@ int main(int argc, char** argv) {
   tool::add_quasiperiodic_options(app, o);
   app.remove_option(app.get_option("--ratio"));  // the ratios come from --ratios
   tool::add_option(app, "--ratios", ratios, "ratios beta > 0: start:stop[:step] (step 0.005) or a,b,c");
-  tool::add_integer(app, "--N", o.n, "beads per chain (>= 2); every mode of each is computed");
-  tool::add_option(app, "--F0", o.f0, "static precompression [N], > 0");
-  tool::add_option(app, "--R1", o.r1, "radius of the beads (spheres) or cylinders [m]");
-  tool::add_integer(app, "--seed", o.seed, "random seed of the phase");
-  tool::add_integer(app, "--realization", o.realization, "which phase of the seed (0-based); --phase fixes it");
+  tool::add_parameters(app, o, chain_parameters(), {.only = {"N", "F0", "R1", "seed", "realization"}});
   tool::add_option(app, "--largest-box", config.largest_box,
                    "largest box of the dimension fit, as a fraction of the spectrum's extent");
   tool::add_option(app, "--smallest-box", config.smallest_box_spacings,
