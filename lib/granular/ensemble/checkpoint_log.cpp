@@ -318,6 +318,16 @@ std::string CheckpointLog::this_code() { return code_named(nlohmann::json::parse
 
 bool CheckpointLog::exists(const std::string& base) { return !family(base).empty(); }
 
+void CheckpointLog::settle(const std::string& base, bool discard, bool cases) {
+  const std::vector<std::string> logs = files(base, {.cases = cases});
+  if (logs.empty()) return;
+  if (!discard)
+    throw InvalidInput("checkpoint", " '" + logs.front() +
+                                         "': holds the finished realizations of an interrupted run; continue it with "
+                                         "`resume`, or discard them with `fresh`");
+  for (const std::string& f : files(base, {.cases = cases, .temporaries = true})) std::filesystem::remove(f);
+}
+
 std::vector<std::string> CheckpointLog::files(const std::string& base, Members which) {
   namespace fs = std::filesystem;
   const fs::path folder = fs::path(base).parent_path();

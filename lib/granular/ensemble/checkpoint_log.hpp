@@ -60,6 +60,13 @@ class CheckpointLog {
   /// The existing files of `base` that `which` takes, sorted (named as `base` is: in its folder).
   static std::vector<std::string> files(const std::string& base, Members which);
 
+  /// Before a run that does not resume but logs to `base` (with `cases`, also to its case logs):
+  /// finished work is never lost to a run not told to discard it. Throws InvalidInput naming
+  /// `checkpoint` when an interrupted run's log is there (the message says: continue it with
+  /// `resume`, or discard its realizations with `fresh`); with `discard`, removes every file of it
+  /// instead, temporaries included.
+  static void settle(const std::string& base, bool discard, bool cases);
+
   /// This code, named as code_of names a log's maker ("0.1.0 (commit 0123456789ab)").
   static std::string this_code();
 

@@ -16,11 +16,7 @@ std::vector<std::vector<double>> run_ensemble(const EnsembleOptions& o,
   // run size is refused there and every record is < o.realizations.
   if (o.resume) finished = CheckpointLog::load(o.checkpoint, o.parameters, o.accept_other_version);
   // Finished realizations are never lost to a run that was not told to discard them.
-  if (!o.resume && !o.fresh && !o.checkpoint.empty())
-    if (const auto logs = CheckpointLog::files(o.checkpoint, {}); !logs.empty())
-      throw InvalidInput("checkpoint", " '" + logs.front() +
-                                           "': holds the finished realizations of an interrupted run; continue it "
-                                           "with `resume`, or discard them with `fresh`");
+  if (!o.resume && !o.fresh && !o.checkpoint.empty()) CheckpointLog::settle(o.checkpoint, false, false);
   // Every rank has read the logs before any rank rewrites its own.
   mpi.all(true);
   std::unique_ptr<CheckpointLog> log;

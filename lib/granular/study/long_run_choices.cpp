@@ -1,7 +1,5 @@
 #include "granular/study/long_run_choices.hpp"
 
-#include <filesystem>
-
 #include "granular/ensemble/checkpoint_log.hpp"
 #include "granular/error.hpp"
 #include "granular/study/resumed_checkpoint.hpp"
@@ -41,14 +39,7 @@ RunOptions run_options(const LongRunChoices& o, const std::string& checkpoint) {
 
 void settle_checkpoints(const LongRunChoices& o, const std::string& checkpoint) {
   validate(o);
-  const auto logs = o.resuming() ? std::vector<std::string>{} : CheckpointLog::files(checkpoint, {.cases = true});
-  if (logs.empty()) return;
-  if (!o.fresh)
-    throw InvalidInput("checkpoint", " '" + logs.front() +
-                                         "': holds the finished realizations of an interrupted run; continue it with "
-                                         "`resume`, or discard it with `fresh`");
-  for (const auto& f : CheckpointLog::files(checkpoint, {.cases = true, .temporaries = true}))
-    std::filesystem::remove(f);
+  if (!o.resuming()) CheckpointLog::settle(checkpoint, o.fresh, true);
 }
 
 nlohmann::json resumed_code(const LongRunChoices& o, const std::vector<std::string>& checkpoints) {
