@@ -149,10 +149,10 @@ PeriodicOrbit damped_newton(ShootingPoint z, const NewtonWords& words, const Sho
       trial.x.resize(z.x.size());
       for (std::size_t i = 0; i < z.x.size(); ++i) trial.x[i] = z.x[i] + lambda * step.x[i];
       trial.omega = z.omega + lambda * step.omega;
-      const ShootingMisfit tried = misfit(trial);
+      ShootingMisfit tried = misfit(trial);
       if (tried.merit() < now.merit()) {
         accepted = true;
-        now = tried;
+        now = std::move(tried);  // with the velocity it integrated
       }
     }
     if (!accepted)

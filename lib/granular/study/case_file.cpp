@@ -2,12 +2,12 @@
 
 #include <cstdio>
 #include <fstream>
-#include <functional>
 
 #include <nlohmann/json.hpp>
 
 #include "granular/error.hpp"
 #include "granular/io/atomic_file.hpp"
+#include "granular/io/text_hash.hpp"
 
 namespace granular {
 
@@ -16,8 +16,7 @@ std::string write_replay_case(const TransportCase& c, std::uint64_t r, const std
   alone.realizations = 1, alone.profile_realizations = 0;
   const std::string described = describe(alone).dump(2) + "\n";
   char hash[9];
-  std::snprintf(hash, sizeof hash, "%08llx",
-                static_cast<unsigned long long>(std::hash<std::string>{}(described)&0xffffffffULL));
+  std::snprintf(hash, sizeof hash, "%08llx", static_cast<unsigned long long>(text_hash(described) & 0xffffffffULL));
   const std::string file = prefix + ".replay-" + std::to_string(r) + "-" + hash + ".json";
   write_file_atomically(file, described);
   return file;
