@@ -143,11 +143,14 @@ def _quasi_choices(c, quasi, modulation, ratio, phase, angle, k0):
             c.ratio = ratio if isinstance(ratio, str) else repr(float(ratio))
 
 
-def _run(threads=0, checkpoint=None, resume=False, resume_other_version=False, progress=False, fresh=False):
+def _run(threads=0, checkpoint=None, resume=False, resume_other_version=False, progress=False, fresh=False,
+         skip_failed=False):
+    """The library's long-run choices (its table: _core.LongRunChoices), and where the run checkpoints."""
     r = _core.RunOptions()
     r.threads = threads
     r.checkpoint = "" if checkpoint is None else str(checkpoint)
     r.resume, r.resume_other_version, r.progress, r.fresh = resume, resume_other_version, progress, fresh
+    r.skip_failed = skip_failed
     return r
 
 
@@ -253,7 +256,8 @@ def transport(*, disorder="A", N=2501, q=0.5, xi=0.5, F0=10.0, R1=_core.paper_r1
               integrator="saba2c", force_law="hertz", samples=100, sampling="log", fit=(4e-3, 1e-2), fit_step=1e-5,
               t_star=4e-3, kappa=0.1, bootstrap=1000, active_window=True, window_threshold=1e-30,
               reference_max_step=0.01e-6, max_energy_error=1e-3, energy_guard="stop", profile=False, threads=0,
-              checkpoint=None, resume=False, resume_other_version=False, fresh=False, progress=False, damping_time=0.0,
+              checkpoint=None, resume=False, resume_other_version=False, fresh=False, skip_failed=False, progress=False,
+              damping_time=0.0,
               kk_gamma=0.0, mle=False, renormalize=10, walls="flat", quasi=None, modulation=0.0, ratio="golden",
               phase=None, angle=45.0, k0=4.0, types=None, type_masses=None, polydisperse=None, mode=0, mode_khz=-1.0,
               energy=0.0):
@@ -267,7 +271,7 @@ def transport(*, disorder="A", N=2501, q=0.5, xi=0.5, F0=10.0, R1=_core.paper_r1
                      kappa, bootstrap, active_window, window_threshold, reference_max_step, max_energy_error,
                      energy_guard)
     k.beyond = _beyond(damping_time, kk_gamma, mle, renormalize)
-    run = _run(threads, checkpoint, resume, resume_other_version, progress, fresh)
+    run = _run(threads, checkpoint, resume, resume_other_version, progress, fresh, skip_failed)
     return _transport(_core._transport(k, profile, dt is not None, run), profile)
 
 
@@ -305,6 +309,8 @@ transport.__doc__ = (
     "continues an interrupted run from it and gives exactly the uninterrupted result; a checkpoint another "
     "granular version made is refused unless resume_other_version=True (both are named in metadata); a run "
     "neither resuming nor fresh=True (discard it) refuses to start over a checkpoint an interrupted run left\n"
+    "    skip_failed: leave a realization that fails numerically out of the means (a warning and "
+    "metadata['ensemble']['failed_excluded'] say which) instead of raising granular.NumericalError\n"
     "    progress: draw a progress bar\n"
     "Returns a granular.Transport: t [s], m2, m2_centroid, ipr, energy_error with their standard errors (_se), "
     "profile, gamma, eta (with realization errors gamma_real_err, eta_real_err from the bootstrap) and every report "
@@ -320,7 +326,7 @@ def exponent_table(*, chains=["h", "A", "RDM1", "RDM2"], F0=[10.0, 0.5, 0.1, 0.0
                    kappa=0.1, bootstrap=1000, active_window=True, window_threshold=1e-30, reference_max_step=0.01e-6,
                    max_energy_error=1e-3, energy_guard="stop", profile_F0=[10.0, 0.1, 0.0], profile_realizations=100,
                    compare_paper=False, threads=0, checkpoint=None, resume=False, resume_other_version=False, fresh=False,
-                   progress=False, damping_time=0.0, kk_gamma=0.0, mle=False, renormalize=10, walls="flat",
+                   skip_failed=False, progress=False, damping_time=0.0, kk_gamma=0.0, mle=False, renormalize=10, walls="flat",
                    quasi=None, modulation=0.0, ratio="golden", phase=None, angle=45.0, k0=4.0, chain_name=None,
                    types=None, type_masses=None, polydisperse=None, types_rule=None, mode=0, mode_khz=-1.0, energy=0.0):
     words = _core.ExponentChoices()  # made the table's chains and kicks by the tool's rule, in C++
@@ -342,7 +348,7 @@ def exponent_table(*, chains=["h", "A", "RDM1", "RDM2"], F0=[10.0, 0.5, 0.1, 0.0
                        t_star, kappa, bootstrap, active_window, window_threshold, reference_max_step,
                        max_energy_error, energy_guard)
     beyond = _beyond(damping_time, kk_gamma, mle, renormalize)
-    run = _run(threads, checkpoint, resume, resume_other_version, progress, fresh)
+    run = _run(threads, checkpoint, resume, resume_other_version, progress, fresh, skip_failed)
     # compare_paper: the path of a table in the paper's format, or True for the paper's own ("": no comparison)
     paper = compare_paper if isinstance(compare_paper, str) else _core._paper_table if compare_paper else ""
     return ExponentTable(_core._exponent_table(words, table, choices, beyond, dt is not None, paper, run))
@@ -371,8 +377,9 @@ exponent_table.__doc__ = (
     "(z-scores with both error sources)\n"
     "    threads (0: every core); checkpoint: a prefix, case i logs to <prefix>.<i> (removed once done); "
     "resume=True continues an interrupted table (resume_other_version=True: also one another granular version "
-    "made; fresh=True: discard it and start again, which a run not resuming otherwise refuses); progress: a "
-    "progress bar\n"
+    "made; fresh=True: discard it and start again, which a run not resuming otherwise refuses); skip_failed: "
+    "leave a realization that fails numerically out of its cell's means (a warning and the case's "
+    "failed_excluded in metadata say which) instead of raising granular.NumericalError; progress: a progress bar\n"
     "Returns a granular.ExponentTable: table (the tool's CSV columns as arrays; with mle also mle, mle_real_err, "
     "mle_sd: the mean X1(T) [1/s], its standard error over realizations, their standard deviation), curves (with "
     "mle also mle, mle_se: <X1(t)> [1/s] and its standard error), profiles, markdown, paper (the comparison, with "

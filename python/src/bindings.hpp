@@ -18,13 +18,13 @@
 #include <pybind11/stl.h>
 #include <nlohmann/json.hpp>
 
-#include "granular/ensemble/run_options.hpp"
 #include "granular/model/chain.hpp"
 #include "granular/model/chain_recipe.hpp"
 #include "granular/model/disorder.hpp"
 #include "granular/model/quasiperiodic.hpp"
 #include "granular/model/selected_chain.hpp"
 #include "granular/parameter_table.hpp"
+#include "granular/study/long_run_choices.hpp"
 
 namespace granular::python {
 
@@ -181,12 +181,12 @@ py::object metadata(const std::string& function, const nlohmann::json& described
 Disorder disorder_of(const std::string& name, const char* keyword = "disorder");
 
 // --- long runs ------------------------------------------------------------------------------------
-/// How a long call runs, as the keyword functions in granular/*.py fill it (granular._core.RunOptions).
-struct PyRun {
-  long long threads = 0;
-  std::string checkpoint;  ///< "" = none
-  bool resume = false, resume_other_version = false, fresh = false, progress = false;
-  int thread_request() const { return static_cast<int>(checked_size(threads, "threads", 0, 4096)); }
+/// How a long call runs, as the keyword functions in granular/*.py fill it (granular._core.RunOptions):
+/// the library's long-run choices, the checkpoint file or prefix ("" = none) and the progress bar.
+struct PyRun : LongRunChoices {
+  std::string checkpoint;
+  bool progress = false;
+  int thread_request() const { return (validate(*this), static_cast<int>(threads)); }
 };
 /// Runs `work` with the GIL released on a thread of its own through granular._progress.run_long,
 /// which polls for Ctrl-C, draws the progress bar when options.progress, and on KeyboardInterrupt

@@ -19,7 +19,6 @@
 #include "granular/study/exponent_table.hpp"
 #include "granular/study/kicked_case.hpp"
 #include "granular/study/paper_comparison.hpp"
-#include "granular/study/resumed_checkpoint.hpp"
 #include "granular/study/spreading_files.hpp"
 #include "granular/study/spreading_output_choices.hpp"
 #include "granular/study/transport_choices.hpp"
@@ -87,13 +86,11 @@ py::dict transport(const KickedCaseChoices& choices, bool profile, bool dt_given
   if (!t_warning.empty()) warn({t_warning});  // after the errors
   const int thread_request = options.thread_request();
   const std::string& log = options.checkpoint;
-  if ((options.resume || options.resume_other_version) && log.empty())
-    bad_value("resume", ": needs checkpoint= (the file of the interrupted run)");
   // The chain of realization 0, as the tool describes it (and the β it kicks it with).
   const KickedChain first = kick(c, k.selected.chain);
 
   // Read before the run, which rewrites the checkpoint under this code's name.
-  const nlohmann::json resumed = options.resume_other_version ? resumed_checkpoint({log}) : nlohmann::json();
+  const nlohmann::json resumed = resumed_code(options, {log});
   TransportSummary s;
   run_long("transport", c.realizations, options, [&](const RunOptions& run) { s = run_transport_study(c, run); });
   if (!log.empty()) CheckpointLog::remove_all(log);  // finished: the result is in memory, as the tool's in files
@@ -109,6 +106,7 @@ py::dict transport(const KickedCaseChoices& choices, bool profile, bool dt_given
 
   std::vector<std::string> said = notes(c);
   for (const auto& w : warnings(s, c.dynamics)) said.push_back(w);
+  said.push_back(excluded_note(c, s));  // "" (no warning) unless skip_failed left realizations out
   // granular/_dynamics.py makes the granular.Transport of the bound summary.
   return fields("summary exponents warnings metadata", std::move(s), to_python(fitted), warn(said),
                 metadata("transport", meta));
@@ -127,22 +125,23 @@ py::dict exponent_table(const ExponentChoices& words, ExponentTableConfig config
   base.dynamics = cases.front().dynamics;     // τ and scheme as settled
   const int thread_request = options.thread_request();
   const std::string& prefix = options.checkpoint;
-  if ((options.resume || options.resume_other_version) && prefix.empty())
-    bad_value("resume", ": needs checkpoint= (the prefix of the interrupted run)");
   const bool compare = !paper_path.empty();  // "": no comparison with the paper's Table I
   const std::vector<PaperCell> paper = compare ? read_paper_table(paper_path) : std::vector<PaperCell>{};
 
+  const nlohmann::json resumed = resumed_code(options, case_checkpoints(prefix, cases.size()));  // before the run
   std::vector<ExponentCell> cells;
   run_long("exponent_table", total_realizations(cases), options,
            [&](const RunOptions& o) { cells = run_exponent_table(config, o); });
   if (!prefix.empty())
     for (const std::string& log : case_checkpoints(prefix, cells.size())) CheckpointLog::remove_all(log);
 
+  for (const ExponentCell& c : cells) warn({excluded_note(c.definition, c.summary)});  // "" when none
   const nlohmann::json described = describe_cells(cells);
   nlohmann::json meta;
   meta["parameters"] = describe_table_parameters(chain_list(words), config, kick_list(words), thread_request);
   meta["cases"] = described;
   meta["time_step_rule"] = step_rule;
+  if (!resumed.is_null()) meta["resumed_checkpoint"] = resumed;
   py::dict out;
   // The tool's three CSV files, written by the library's own writers (granular._results reads them).
   out["table_csv"] = csv_text([&](std::ostream& o) { write_exponents_csv(o, cells); });
@@ -194,8 +193,11 @@ void bind_dynamics(py::module_& m) {
   config_class(m, "TransportCase", "chain realizations profile_realizations mode", &C::chain, &C::realizations,
                &C::profile_realizations, &C::mode)
       .def_property("kick", word_getter(&C::kick), word_setter(&C::kick, parse_kick));
-  config_class(m, "RunOptions", "threads checkpoint resume resume_other_version fresh progress", &PyRun::threads,
-               &PyRun::checkpoint, &PyRun::resume, &PyRun::resume_other_version, &PyRun::fresh, &PyRun::progress);
+  table_class(m, "LongRunChoices", long_run_parameters());
+  py::class_<PyRun, LongRunChoices>(m, "RunOptions")
+      .def(py::init<>())
+      .def_readwrite("checkpoint", &PyRun::checkpoint)
+      .def_readwrite("progress", &PyRun::progress);
   // What granular/_dynamics.py makes a SpreadingRun and a Transport of (copies of the arrays).
   using Run = SpreadingResult;
   readonly(py::class_<Run>(m, "_SpreadingResult"),

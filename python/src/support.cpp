@@ -152,13 +152,9 @@ void run_long(const std::string& label, std::size_t total, const PyRun& options,
   auto shared = std::make_shared<Shared>();
   auto meter = std::make_shared<ProgressMeter>(total, label, 0);  // silent: the bar is drawn from Python
   auto cancel = std::make_shared<std::atomic<bool>>(false);
-  const RunOptions run{.threads = options.thread_request(),
-                       .checkpoint = options.checkpoint,
-                       .resume = options.resume || options.resume_other_version,
-                       .progress = meter.get(),
-                       .cancelled = [cancel] { return cancel->load(std::memory_order_relaxed); },
-                       .accept_other_version = options.resume_other_version,
-                       .fresh = options.fresh};
+  RunOptions run = run_options(options, options.checkpoint);
+  run.progress = meter.get();
+  run.cancelled = [cancel] { return cancel->load(std::memory_order_relaxed); };
   const py::cpp_function call([&, shared] {
     if (std::lock_guard lock(shared->mutex); !shared->open) return;  // too late: run_long has returned
     else shared->running = true;

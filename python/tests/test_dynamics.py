@@ -134,6 +134,32 @@ def test_mode_kicks_of_an_ensemble_and_of_the_table_equal_the_tools(tools):
         gr.exponent_table(chains=["h"], mode=3, **SHORT)
 
 
+def test_skip_failed_leaves_out_the_failing_realization_as_the_tools_do(tools):
+    """transport(skip_failed=True) is spreading --skip-failed: the realization whose energy error passes the guard
+    is left out of the means, named in the metadata and warned about; without it the call raises. The guard sits
+    between the worst realization's error and the next one's (each run alone, the guard only watching)."""
+    case = dict(xi=0.5, q=0.5, N=101, F0=0.01, ic="velocity", seed=3, T=1e-3, dt=2e-6, fit=(4e-4, 1e-3), samples=30,
+                bootstrap=50)
+    chains = [gr.anderson(N=101, xi=0.5, q=0.5, F0=0.01, seed=3, realization=r) for r in range(6)]
+    worst = [gr.spreading(c, ic="velocity", T=1e-3, dt=2e-6, fit=(4e-4, 1e-3), samples=30, bootstrap=50,
+                          energy_guard="warn").max_energy_error for c in chains]
+    second, first = sorted(worst)[-2:]
+    assert first > 1.2 * second, "no realization stands out; change the case"
+    guard, failing = float(f"{np.sqrt(first * second):.6g}"), int(np.argmax(worst))
+    with pytest.raises(gr.NumericalError, match=f"realization {failing} of seed 3"):
+        gr.transport(realizations=6, max_energy_error=guard, **case)
+    csv, meta = tools.run("spreading", "--disorder", "A", "--xi", "0.5", "--q", "0.5", "--N", "101", "--F0", "0.01",
+                          "--ic", "velocity", "--seed", "3", "--T", "1e-3", "--dt", "2e-6", "--fit", "4e-4:1e-3",
+                          "--samples", "30", "--bootstrap", "50", "--realizations", "6", "--max-energy-error",
+                          repr(guard), "--skip-failed", "--quiet", output="skip")
+    with pytest.warns(RuntimeWarning, match=r"1 failed realization\(s\) of 6 left out"):
+        t = gr.transport(realizations=6, max_energy_error=guard, skip_failed=True, **case)
+    assert t.metadata["ensemble"]["failed_excluded"] == [failing] == meta["ensemble"]["failed_excluded"]
+    assert t.realizations == 5
+    for key in ("t", "m2", "ipr", "energy_error"):
+        assert_identical(t[key], csv[key])
+
+
 def test_ensemble_mean_is_the_mean_of_the_single_runs():
     t = gr.transport(disorder="RDM1", N=121, realizations=3, seed=2, **SHORT)
     runs = [gr.spreading(gr.rdm1(N=121, seed=2, realization=r), **SHORT) for r in range(3)]
@@ -333,10 +359,11 @@ def _keywords(table, skip=()):
     (gr.transport, [(gr._core.TransportChoices, ("fit_begin", "fit_end")),
                     (gr._core.BeyondChoices, ("deviation_samples",)),
                     # an ensemble draws its chains: no files, no one realization; s1's N/m stiffness: none
-                    (gr._core.ChainChoices, ("config", "radii", "realization", "k0_n_per_m")), (gr._core.ModeKick, ())]),
+                    (gr._core.ChainChoices, ("config", "radii", "realization", "k0_n_per_m")), (gr._core.ModeKick, ()),
+                    (gr._core.LongRunChoices, ())]),
     (gr.exponent_table, [(gr._core.TransportChoices, ("fit_begin", "fit_end")),
                          (gr._core.BeyondChoices, ("deviation_samples",)), (gr._core.ExponentChoices, ()),
-                         (gr._core.ModeKick, ())]),
+                         (gr._core.ModeKick, ()), (gr._core.LongRunChoices, ())]),
 ])
 def test_every_parameter_of_the_library_tables_is_a_documented_keyword(function, tables):
     """The library describes each choice once (parameter_table.hpp); the tools make their flags of it.

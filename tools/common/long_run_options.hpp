@@ -83,9 +83,7 @@ inline void report_excluded(const TransportCase& c, const TransportSummary& s, M
   for (std::uint64_t r : o.quiet ? std::vector<std::uint64_t>{} : s.excluded)
     std::fprintf(stderr, "%s: realization %llu failed and is left out (--skip-failed); replay: %s\n", tool,
                  static_cast<unsigned long long>(r), replay_text(c, r, prefix, argv0).c_str());
-  if (!s.excluded.empty())
-    meta.note(std::to_string(s.excluded.size()) + " failed realization(s) of " + std::to_string(c.realizations) +
-              " left out");
+  if (!s.excluded.empty()) meta.note(excluded_note(c, s));
 }
 
 }  // namespace granular::tool

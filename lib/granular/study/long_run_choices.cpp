@@ -29,6 +29,8 @@ void validate(const LongRunChoices& o) {
 
 RunOptions run_options(const LongRunChoices& o, const std::string& checkpoint) {
   validate(o);
+  if (o.resuming() && checkpoint.empty())
+    throw InvalidInput("resume", ": needs `checkpoint` (the file or prefix of the interrupted run)");
   return {.threads = static_cast<int>(o.threads),
           .checkpoint = checkpoint,
           .resume = o.resuming(),

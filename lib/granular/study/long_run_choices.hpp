@@ -29,7 +29,7 @@ const ParameterTable<LongRunChoices>& long_run_parameters();
 void validate(const LongRunChoices& o);
 
 /// The library's RunOptions of the choices, logging finished realizations to `checkpoint` (a file
-/// or a study's prefix; "" = none). Validates them.
+/// or a study's prefix; "" = none). Validates them; resuming needs a checkpoint (InvalidInput naming `resume`).
 RunOptions run_options(const LongRunChoices& o, const std::string& checkpoint);
 
 /// Before a run that logs its finished realizations to `checkpoint` (and, a study of several cases,

@@ -285,6 +285,11 @@ std::vector<std::string> warnings(const TransportSummary& s, const SpreadingRunC
   return w;
 }
 
+std::string excluded_note(const TransportCase& c, const TransportSummary& s) {
+  if (s.excluded.empty()) return "";
+  return std::to_string(s.excluded.size()) + " failed realization(s) of " + std::to_string(c.realizations) + " left out";
+}
+
 namespace {
 
 // What one realization leaves behind, by name. Its row in the ensemble's results and checkpoints

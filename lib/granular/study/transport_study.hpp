@@ -145,5 +145,8 @@ std::vector<std::string> warnings(const SpreadingResult& run, const SpreadingRun
 std::vector<std::string> warnings(const TransportSummary& summary, const SpreadingRunConfig& config);
 /// Notes on the case itself, before any run: a fit window beyond T (no exponents fitted).
 std::vector<std::string> notes(const TransportCase& c);
+/// What a user must be told of the realizations of `c` left out (RunOptions::skip_failed): "N failed
+/// realization(s) of R left out"; "" when none was.
+std::string excluded_note(const TransportCase& c, const TransportSummary& summary);
 
 }  // namespace granular
