@@ -257,10 +257,9 @@ def transport(*, disorder="A", N=2501, q=0.5, xi=0.5, F0=10.0, R1=_core.paper_r1
               t_star=4e-3, kappa=0.1, bootstrap=1000, active_window=True, window_threshold=1e-30,
               reference_max_step=0.01e-6, max_energy_error=1e-3, energy_guard="stop", profile=False, threads=0,
               checkpoint=None, resume=False, resume_other_version=False, fresh=False, skip_failed=False, progress=False,
-              damping_time=0.0,
-              kk_gamma=0.0, mle=False, renormalize=10, walls="flat", quasi=None, modulation=0.0, ratio="golden",
-              phase=None, angle=45.0, k0=4.0, types=None, type_masses=None, polydisperse=None, mode=0, mode_khz=-1.0,
-              energy=0.0):
+              damping_time=0.0, kk_gamma=0.0, mle=False, renormalize=10, walls="flat", quasi=None, modulation=0.0,
+              ratio="golden", phase=None, angle=45.0, k0=4.0, types=None, type_masses=None, polydisperse=None, mode=0,
+              mode_khz=-1.0, energy=0.0):
     k = _core.KickedCaseChoices()  # made a case by the spreading tool's rule, in C++
     _chain_choices(k.chain, disorder=disorder, N=N, q=q, xi=xi, F0=F0, R1=R1, seed=seed, walls=walls, types=types,
                    type_masses=type_masses, polydisperse=polydisperse)
@@ -326,9 +325,10 @@ def exponent_table(*, chains=["h", "A", "RDM1", "RDM2"], F0=[10.0, 0.5, 0.1, 0.0
                    kappa=0.1, bootstrap=1000, active_window=True, window_threshold=1e-30, reference_max_step=0.01e-6,
                    max_energy_error=1e-3, energy_guard="stop", profile_F0=[10.0, 0.1, 0.0], profile_realizations=100,
                    compare_paper=False, threads=0, checkpoint=None, resume=False, resume_other_version=False, fresh=False,
-                   skip_failed=False, progress=False, damping_time=0.0, kk_gamma=0.0, mle=False, renormalize=10, walls="flat",
-                   quasi=None, modulation=0.0, ratio="golden", phase=None, angle=45.0, k0=4.0, chain_name=None,
-                   types=None, type_masses=None, polydisperse=None, types_rule=None, mode=0, mode_khz=-1.0, energy=0.0):
+                   skip_failed=False, progress=False, damping_time=0.0, kk_gamma=0.0, mle=False, renormalize=10,
+                   walls="flat", quasi=None, modulation=0.0, ratio="golden", phase=None, angle=45.0, k0=4.0,
+                   chain_name=None, types=None, type_masses=None, polydisperse=None, types_rule=None, mode=0,
+                   mode_khz=-1.0, energy=0.0):
     words = _core.ExponentChoices()  # made the table's chains and kicks by the tool's rule, in C++
     words.chains = [] if chains is None or chains == "none" else chains
     words.ic = ic

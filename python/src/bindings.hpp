@@ -181,12 +181,14 @@ py::object metadata(const std::string& function, const nlohmann::json& described
 Disorder disorder_of(const std::string& name, const char* keyword = "disorder");
 
 // --- long runs ------------------------------------------------------------------------------------
-/// How a long call runs, as the keyword functions in granular/*.py fill it (granular._core.RunOptions):
-/// the library's long-run choices, the checkpoint file or prefix ("" = none) and the progress bar.
+/// How a long call runs (granular._core.RunOptions): the long-run choices, checkpoint ("" = none), progress bar.
 struct PyRun : LongRunChoices {
   std::string checkpoint;
   bool progress = false;
-  int thread_request() const { return (validate(*this), static_cast<int>(threads)); }
+  int thread_request() const {  // validated with the other choices
+    validate(*this);
+    return static_cast<int>(threads);
+  }
 };
 /// Runs `work` with the GIL released on a thread of its own through granular._progress.run_long,
 /// which polls for Ctrl-C, draws the progress bar when options.progress, and on KeyboardInterrupt

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <exception>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -71,18 +70,18 @@ const ParameterTable<ChainChoices>& long_run_chain_parameters() {
     ParameterTable<ChainChoices> t = chain_parameters();
     const auto read = [](ChainChoices& o, const std::string& text) {
       o.auto_n = text == "auto";
-      if (o.auto_n) o.n = 3;  // until sized
-      else {
-        std::size_t used = 0;
-        std::string digits;
-        try {  // 1e4 reads as 10000, as every integer option does
-          digits = integer_digits(text, "N");
-          o.n = std::stoll(digits, &used);
-        } catch (const std::exception&) {
-          used = 0;
-        }
-        if (digits.empty() || used != digits.size()) throw InvalidInput("N", " " + text + ": an integer or 'auto'");
+      if (o.auto_n) {
+        o.n = 3;  // until sized
+        return;
       }
+      try {  // one integer; 1e4 reads as 10000, as every integer option does
+        if (const auto n = parse_integer_list(integer_digits(text, "N"), "N"); n.size() == 1) {
+          o.n = n.front();
+          return;
+        }
+      } catch (const InvalidInput&) {
+      }
+      throw InvalidInput("N", " " + text + ": an integer or 'auto'");
     };
     const auto write = [](const ChainChoices& o) { return o.auto_n ? std::string("auto") : std::to_string(o.n); };
     for (Parameter<ChainChoices>& p : t)
