@@ -117,7 +117,10 @@ py::object to_python(const nlohmann::json& value) {
 }
 
 py::object metadata(const std::string& function, const nlohmann::json& described) {
-  nlohmann::json meta = {{"function", "granular." + function}, {"version", code_version()}, {"blas", blas_library()}};
+  nlohmann::json meta = {{"function", "granular." + function},
+                         {"version", code_version()},
+                         {"commit", code_commit()},
+                         {"blas", blas_library()}};
   meta.update(described);
   return to_python(meta);
 }

@@ -142,6 +142,48 @@ TEST(CheckpointLog, EveryVersionThatContributedIsListedAfterTwoAcceptedResumes) 
   CheckpointLog::remove_all(path);
 }
 
+// The log at `path` as if this version built from commit `commit` had written it (instead of
+// commit `was`, this code's by default).
+void checkpoint_log_rewritten_by_commit(const std::string& path, const std::string& commit,
+                                        const std::string& was = code_commit()) {
+  std::ifstream in(path, std::ios::binary);
+  std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  const std::string ours = "\"granular_commit\":\"" + was + "\"";
+  const std::size_t at = text.find(ours);
+  ASSERT_NE(at, std::string::npos) << text;
+  text.replace(at, ours.size(), "\"granular_commit\":\"" + commit + "\"");
+  std::ofstream(path, std::ios::binary) << text;
+}
+
+// The version string alone changes only with releases: a log another commit of the same version
+// made is another code's, refused naming both commits unless accepted. A log whose commit is
+// "unknown" (built outside git) cannot be told apart and is taken as this code's.
+TEST(CheckpointLog, ALogOfAnotherCommitOfTheSameVersionIsRefusedNamingBoth) {
+  if (std::string(code_commit()) == "unknown") GTEST_SKIP() << "built outside git: no commit to compare";
+  const std::string path = temp_path("other-commit"), parameters = R"({"N":10,"seed":1})";
+  {
+    CheckpointLog log(path, parameters);
+    log.append(0, {1.0});
+  }
+  checkpoint_log_rewritten_by_commit(path, "0123456789ab");
+  try {
+    CheckpointLog::load(path, parameters);
+    ADD_FAILURE() << "a log of another commit was resumed";
+  } catch (const InvalidInput& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("(commit 0123456789ab)"), std::string::npos) << what;
+    EXPECT_NE(what.find(std::string("(commit ") + code_commit() + ")"), std::string::npos) << what;
+    EXPECT_NE(what.find("resume_other_version"), std::string::npos) << what;
+  }
+  EXPECT_NE(CheckpointLog::other_version(path), "");
+  EXPECT_EQ(CheckpointLog::load(path, parameters, true).size(), 1u);  // accepted when told
+
+  checkpoint_log_rewritten_by_commit(path, "unknown", "0123456789ab");
+  EXPECT_EQ(CheckpointLog::other_version(path), "");
+  EXPECT_EQ(CheckpointLog::load(path, parameters).size(), 1u);
+  CheckpointLog::remove_all(path);
+}
+
 // A resume by the same code keeps the header as it was: no list of one.
 TEST(CheckpointLog, ASameVersionResumeListsNoContributors) {
   const std::string path = temp_path("same-code"), parameters = R"({"N":10,"seed":1})";

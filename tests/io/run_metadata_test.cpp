@@ -32,6 +32,7 @@ TEST(RunMetadata, WritesTheRunThenCommitsItsOutputs) {
   const nlohmann::json json = nlohmann::json::parse(in);
   EXPECT_EQ(json.at("tool"), "spectrum");
   EXPECT_EQ(json.at("version"), code_version());
+  EXPECT_EQ(json.at("commit"), code_commit());
   // The BLAS is traced to a file that exists (whichever library the alternatives picked).
   const std::string blas = json.at("blas");
   const auto file = blas.find(": /");

@@ -90,6 +90,17 @@ std::string with_code(const std::string& parameters, const std::vector<std::stri
   return out;
 }
 
+/// Whether another code made a log with this header: another version, or the same version built
+/// from another commit when both commits are known ("unknown" outside git cannot tell them apart).
+/// The version alone is not enough: it changes with releases, the code with every commit.
+bool made_by_other_code(const nlohmann::json& header) {
+  if (!header.contains(version_key) || header[version_key] != code_version()) return true;
+  const std::string ours = code_commit();
+  if (ours == "unknown" || !header.contains(commit_key) || !header[commit_key].is_string()) return false;
+  const std::string theirs = header[commit_key].get<std::string>();
+  return theirs != "unknown" && theirs != ours;
+}
+
 /// "0.1.0 (commit 0123456789ab)"; "an unrecorded version" for a header written before versions were.
 std::string code_named(const nlohmann::json& header) {
   if (!header.contains(version_key)) return "a granular version that did not record itself";
@@ -265,10 +276,11 @@ CheckpointRecords CheckpointLog::load(const std::string& base, const std::string
       std::string theirs = header;
       try {
         nlohmann::json recorded = nlohmann::json::parse(header);
-        if (recorded.is_object() && (!recorded.contains(version_key) || recorded[version_key] != code_version())) {
+        if (recorded.is_object() && made_by_other_code(recorded)) {
           if (!accept_other_version)
-            throw InvalidInput("resume", ": " + other_version_text(path, recorded) +
-                                             "; resume it with that version, or accept the mix (resume_other_version)");
+            throw InvalidInput("resume",
+                               ": " + other_version_text(path, recorded) +
+                                   "; resume it with the code that made it, or accept the mix (resume_other_version)");
         }
         if (recorded.is_object()) {
           recorded.erase(version_key);
@@ -278,7 +290,7 @@ CheckpointRecords CheckpointLog::load(const std::string& base, const std::string
         }
       } catch (const nlohmann::json::exception&) {
       }
-      // Same version (another commit, or accepted): the parameters decide.
+      // Same code (or another, accepted): the parameters decide.
       if (theirs != parameters && !same_json(theirs, parameters))
         throw InvalidInput("resume", ": checkpoint '" + path + "' was made with different parameters: " +
                                          first_difference(theirs, parameters));
@@ -290,8 +302,7 @@ CheckpointRecords CheckpointLog::load(const std::string& base, const std::string
 
 std::string CheckpointLog::other_version(const std::string& base) {
   for (const std::string& path : family(base))
-    if (const auto header = header_of(path);
-        header && header->is_object() && (!header->contains(version_key) || (*header)[version_key] != code_version()))
+    if (const auto header = header_of(path); header && header->is_object() && made_by_other_code(*header))
       return other_version_text(path, *header);
   return "";
 }

@@ -33,12 +33,13 @@ class CheckpointLog {
   /// Reads the finished realizations of a run: the log at `base` and those of other MPI ranks
   /// (`base.rank<k>`). Throws InvalidInput when there is none (naming `resume`), when a file is
   /// not a checkpoint, or when it was made with other parameters (naming the first that differs).
-  /// A log made by another version of the toolkit (the header records code_version() and
-  /// code_commit()) is refused naming both versions, unless `accept_other_version`.
+  /// A log made by another code — another version, or the same version built from another commit
+  /// when both commits are known (the header records code_version() and code_commit()) — is
+  /// refused naming both, unless `accept_other_version`.
   static CheckpointRecords load(const std::string& base, const std::string& parameters,
                                 bool accept_other_version = false);
 
-  /// "" when every log of `base` was made by this version; else a sentence naming both versions
+  /// "" when every log of `base` was made by this code (as load judges it); else a sentence naming both
   /// ("checkpoint 'P' was made by granular 0.0.9 (commit …), this is granular 0.1.0 (commit …)").
   static std::string other_version(const std::string& base);
 

@@ -23,7 +23,7 @@ struct EnsembleOptions {
   bool fresh = false;   ///< start afresh over it (else a run not resuming refuses: RunOptions::fresh)
   ProgressMeter* progress = nullptr;  ///< optional; advanced once per realization computed or loaded
   std::function<bool()> cancelled{};  ///< optional; true before a realization starts: throw Cancelled (run_options.hpp)
-  bool accept_other_version = false;  ///< resume a checkpoint another toolkit version made (else refused)
+  bool accept_other_version = false;  ///< resume a checkpoint another toolkit version or commit made (else refused)
 };
 
 /// `work(r, thread)` computes realization r. Under mpirun the realizations still to do are dealt

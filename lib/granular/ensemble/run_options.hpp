@@ -20,7 +20,7 @@ struct RunOptions {
   /// Studies that average realizations (transport_study.hpp): a realization that fails
   /// (NumericalError) is left out of the averages and reported, instead of stopping the run.
   bool skip_failed = false;
-  bool accept_other_version = false;  ///< resume a checkpoint another toolkit version made (else refused)
+  bool accept_other_version = false;  ///< resume a checkpoint another toolkit version or commit made (else refused)
   /// Start afresh over the checkpoint an interrupted run left: without it (or `resume`) a run
   /// refuses to write over finished realizations (granular::InvalidInput naming `checkpoint`).
   bool fresh = false;

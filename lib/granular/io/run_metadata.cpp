@@ -12,6 +12,7 @@ RunMetadata::RunMetadata(const std::string& program, const std::string& command,
     : start_(std::chrono::steady_clock::now()), quiet_(quiet) {
   json_["tool"] = program;
   json_["version"] = code_version();
+  json_["commit"] = code_commit();  // the version changes with releases, the code with every commit
   json_["blas"] = blas_library();
   json_["command"] = command;
   const std::time_t now = std::time(nullptr);

@@ -12,7 +12,8 @@ const ParameterTable<LongRunChoices>& long_run_parameters() {
       {"threads", &O::threads, "threads per process (0 = all cores); results do not depend on it"},
       {"resume", &O::resume, "continue an interrupted run (same parameters) from its checkpoint"},
       {"resume_other_version", &O::resume_other_version,
-       "as `resume`, and accept a checkpoint made by another granular version (both are named in the metadata)"},
+       "as `resume`, and accept a checkpoint made by another granular version or commit (both are named in the "
+       "metadata)"},
       {"fresh", &O::fresh, "discard the checkpoint of an interrupted run and start again"},
       {"skip_failed", &O::skip_failed,
        "leave a realization that fails numerically out of the means (counted in the metadata) instead of stopping "
@@ -48,7 +49,7 @@ nlohmann::json resumed_code(const LongRunChoices& o, const std::vector<std::stri
   if (o.resume && !o.resume_other_version)
     for (const std::string& c : checkpoints)
       if (const std::string other = CheckpointLog::other_version(c); !other.empty())
-        throw InvalidInput("resume", ": " + other + "; resume it with that version, or accept the mix with " +
+        throw InvalidInput("resume", ": " + other + "; resume it with the code that made it, or accept the mix with " +
                                          "`resume_other_version`");
   return o.resume_other_version ? resumed_checkpoint(checkpoints) : nullptr;
 }

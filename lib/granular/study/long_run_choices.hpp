@@ -16,7 +16,7 @@ namespace granular {
 struct LongRunChoices {
   long long threads = 0;              ///< worker threads per process, 0 = every core (at most 4096)
   bool resume = false;                ///< continue an interrupted run from its checkpoint
-  bool resume_other_version = false;  ///< as resume, accepting a checkpoint another version made
+  bool resume_other_version = false;  ///< as resume, accepting a checkpoint another version or commit made
   bool fresh = false;                 ///< discard an interrupted run's checkpoint and start again
   bool skip_failed = false;           ///< leave a realization that fails numerically out of the means
   bool resuming() const { return resume || resume_other_version; }
