@@ -69,7 +69,7 @@ int main(int argc, char** argv) {
     const bool auto_n = config.automatic_length = choices.beads.auto_n;
     std::vector<TransportCase> cases = exponent_cases(config);
     const nlohmann::json rules = length_rules(cases, auto_n, dynamics.site);
-    const nlohmann::json step_rule = tool::validate_and_settle(cases, dynamics, app.count("--dt") > 0);
+    const nlohmann::json step_rule = tool::validate_and_settle(cases);
     base.dynamics = cases.front().dynamics;  // τ and scheme as settled
     const auto paper = compare ? read_paper_table(paper_table) : std::vector<PaperCell>{};
     const ExponentPaths paths = exponent_paths(output, compare);

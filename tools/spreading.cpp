@@ -46,8 +46,7 @@ int main(int argc, char** argv) {
                      c.profile_realizations = more.profile ? c.realizations : 0;
                      const SpreadingRunConfig& d = c.dynamics;
                      tool::apply(more, c);
-                     const bool dt_given = app.count("--dt") + app.count("--case") > 0;  // else the rule's
-                     const nlohmann::json step_rule = tool::validate_and_settle(c, options.run, dt_given);
+                     const nlohmann::json step_rule = tool::validate_and_settle(c);
                      SpreadingPaths paths = spreading_paths(output, ensemble, more.profile, !d.forces.sites.empty());
                      paths.final_state = more.final_state, paths.energy_map = more.energy_map_file,
                      paths.spectrum = more.spectrum_file;

@@ -68,7 +68,7 @@ def _choices(alpha, beta, site, centre, T, dt, integrator, force_law, samples, s
     c.site = 0 if site is None else site
     c.centre = centre
     c.duration = T
-    c.time_step = 1e-6 if dt is None else _core._finite(dt, "dt")
+    c.time_step = None if dt is None else _core._finite(dt, "dt")
     c.integrator = integrator
     c.force_law = force_law
     c.samples = _core._size(samples, "samples", 2, _MAX)
@@ -181,7 +181,7 @@ def spreading(chain, *, ic="displacement", alpha=1e-7, beta=_core.paper_beta, si
     case.realizations, case.profile_realizations = 1, 0
     case.mode.mode, case.mode.mode_khz, case.mode.energy = mode, mode_khz, energy
     case.kick = ic
-    raw = _core._spreading(chain, case, outputs, choices, beyond, dt is not None, _run(progress=progress))
+    raw = _core._spreading(chain, case, outputs, choices, beyond, _run(progress=progress))
     return _spreading_run(raw, chain.N, outputs, deviation_samples)
 
 
@@ -271,7 +271,7 @@ def transport(*, disorder="A", N=2501, q=0.5, xi=0.5, F0=10.0, R1=_core.paper_r1
                      energy_guard)
     k.beyond = _beyond(damping_time, kk_gamma, mle, renormalize)
     run = _run(threads, checkpoint, resume, resume_other_version, progress, fresh, skip_failed)
-    return _transport(_core._transport(k, profile, dt is not None, run), profile)
+    return _transport(_core._transport(k, profile, run), profile)
 
 
 def _transport(raw, profile):
@@ -351,7 +351,7 @@ def exponent_table(*, chains=["h", "A", "RDM1", "RDM2"], F0=[10.0, 0.5, 0.1, 0.0
     run = _run(threads, checkpoint, resume, resume_other_version, progress, fresh, skip_failed)
     # compare_paper: the path of a table in the paper's format, or True for the paper's own ("": no comparison)
     paper = compare_paper if isinstance(compare_paper, str) else _core._paper_table if compare_paper else ""
-    return ExponentTable(_core._exponent_table(words, table, choices, beyond, dt is not None, paper, run))
+    return ExponentTable(_core._exponent_table(words, table, choices, beyond, paper, run))
 
 
 exponent_table.__doc__ = (
@@ -377,7 +377,7 @@ exponent_table.__doc__ = (
     "(z-scores with both error sources)\n"
     "    threads (0: every core); checkpoint: a prefix, case i logs to <prefix>.<i> (removed once done); "
     "resume=True continues an interrupted table (resume_other_version=True: also one another granular version "
-    "made; fresh=True: discard it and start again, which a run not resuming otherwise refuses); skip_failed: "
+    "or commit made; fresh=True: discard it and start again, which a run not resuming otherwise refuses); skip_failed: "
     "leave a realization that fails numerically out of its cell's means (a warning and the case's "
     "failed_excluded in metadata say which) instead of raising granular.NumericalError; progress: a progress bar\n"
     "Returns a granular.ExponentTable: table (the tool's CSV columns as arrays; with mle also mle, mle_real_err, "

@@ -35,9 +35,9 @@ py::object csv_text(const std::function<void(std::ostream&)>& write) {
 /// `c`: the case as granular/_dynamics.py fills it (kick, mode), one realization of `chain`, with the
 /// observers of `outputs`.
 py::dict spreading(const PyChain& chain, TransportCase c, const SpreadingOutputChoices& outputs,
-                   const TransportChoices& choices, const BeyondChoices& beyond, bool dt_given, const PyRun& options) {
+                   const TransportChoices& choices, const BeyondChoices& beyond, const PyRun& options) {
   c.chain = chain.recipe;
-  const bool automatic = granular::apply(choices, beyond, c);
+  granular::apply(choices, beyond, c);
   granular::apply(outputs, c);
   SpreadingRunConfig& d = c.dynamics;
   fit_within_duration(c);                          // a window beyond T: no exponents
@@ -46,7 +46,7 @@ py::dict spreading(const PyChain& chain, TransportCase c, const SpreadingOutputC
   // tool's --disorder), this very chain for a given one (as the tool's --config/--radii); a dt past
   // it named before anything judged on its grid.
   std::string t_warning;
-  const nlohmann::json step_rule = validate_and_settle(c, automatic, dt_given, "T", t_warning);
+  const nlohmann::json step_rule = validate_and_settle(c, "T", t_warning);
   if (!t_warning.empty()) warn({t_warning});  // after the errors
   const KickedChain kicked = kick(c, chain.chain);
 
@@ -76,13 +76,13 @@ py::dict spreading(const PyChain& chain, TransportCase c, const SpreadingOutputC
 
 /// `choices`: the case as granular/_dynamics.py fills them, made a case by the tool's rule (kicked_case);
 /// `profile`: average E_n(T) over every realization.
-py::dict transport(const KickedCaseChoices& choices, bool profile, bool dt_given, const PyRun& options) {
+py::dict transport(const KickedCaseChoices& choices, bool profile, const PyRun& options) {
   KickedCase k = kicked_case(choices, true, radius_names(choices.chain, front_end_word));
   warn(k.warnings);  // implausible radii, before the run as the tool says them
   TransportCase& c = k.c;
   if (profile) c.profile_realizations = c.realizations;
   std::string t_warning;
-  const nlohmann::json step_rule = validate_and_settle(c, choices.run.integrator == "auto", dt_given, "T", t_warning);
+  const nlohmann::json step_rule = validate_and_settle(c, "T", t_warning);
   if (!t_warning.empty()) warn({t_warning});  // after the errors
   const int thread_request = options.thread_request();
   const std::string& log = options.checkpoint;
@@ -114,13 +114,13 @@ py::dict transport(const KickedCaseChoices& choices, bool profile, bool dt_given
 
 /// `words`: the chains and kicks as granular/_dynamics.py fills them (the tool's rule makes config's of them).
 py::dict exponent_table(const ExponentChoices& words, ExponentTableConfig config, const TransportChoices& choices,
-                        const BeyondChoices& beyond, bool dt_given, const std::string& paper_path, const PyRun& options) {
+                        const BeyondChoices& beyond, const std::string& paper_path, const PyRun& options) {
   granular::apply(words, config);
   TransportCase& base = config.base;
-  const bool automatic = granular::apply(choices, beyond, base);
+  granular::apply(choices, beyond, base);
   auto cases = exponent_cases(config);
   std::string t_warning;  // one is enough: the cases share T
-  const nlohmann::json step_rule = validate_and_settle(cases, automatic, dt_given, "T", t_warning);
+  const nlohmann::json step_rule = validate_and_settle(cases, "T", t_warning);
   if (!t_warning.empty()) warn({t_warning});  // after the errors
   base.dynamics = cases.front().dynamics;     // τ and scheme as settled
   const int thread_request = options.thread_request();

@@ -62,6 +62,12 @@ double alpha_between(const std::vector<double>& big) {
   return 0;
 }
 
+// The case asking for the automatic scheme (the integrator "auto"), settled.
+nlohmann::json settle_automatically(TransportCase& c) {
+  c.automatic_integrator = true;
+  return settle_scheme_and_step(c);
+}
+
 TEST(CaseRules, AutoDecidesOnTheKTypesDrawn) {
   const std::vector<double> radii{4.76e-3, 3 * 4.76e-3};
   const double alpha = alpha_between(radii);
@@ -71,10 +77,10 @@ TEST(CaseRules, AutoDecidesOnTheKTypesDrawn) {
   TransportCase types = paper_case(alpha);
   types.chain.distribution = BeadDistribution{.radii = radii, .probabilities = {0.5, 0.5}};
   EXPECT_FALSE(bonds_stay_closed(types));
-  const nlohmann::json rule = settle_scheme_and_step(types, true, false);
+  const nlohmann::json rule = settle_automatically(types);
   EXPECT_FALSE(rule["integrator_choice"]["bonds_stay_closed"].get<bool>()) << rule.dump();
   EXPECT_EQ(types.dynamics.integration.integrator.name(), "saba2c");
-  EXPECT_TRUE(settle_scheme_and_step(paper, true, false)["integrator_choice"]["bonds_stay_closed"].get<bool>());
+  EXPECT_TRUE(settle_automatically(paper)["integrator_choice"]["bonds_stay_closed"].get<bool>());
 }
 
 TEST(CaseRules, AutoDecidesOnARadiiFilesChain) {
@@ -93,7 +99,7 @@ TEST(CaseRules, AutoDecidesOnARadiiFilesChain) {
     opening = std::min(opening, std::get<HertzLaw>(law).potential(k, -chain.overlap[k]));
   ASSERT_GE(energy, opening) << "the kick on the big beads can open a contact";
   EXPECT_FALSE(bonds_stay_closed(file));
-  settle_scheme_and_step(file, true, false);
+  settle_automatically(file);
   EXPECT_EQ(file.dynamics.integration.integrator.name(), "saba2c");
 }
 
@@ -106,9 +112,9 @@ TEST(CaseRules, AutoTakesTheRealModeOfAModeKick) {
   c.site = 1250;
   const Energies e = by_hand({4.76e-3, 2.38e-3}, 10, 1e-7);
   EXPECT_EQ(bonds_stay_closed(c), 1e-9 < e.opening);
-  EXPECT_NO_THROW(settle_scheme_and_step(c, true, false));
+  TransportCase given = c;  // before settling, which fixes c's step
+  EXPECT_NO_THROW(settle_automatically(c));
   // On a given chain, with the amplitude α: the mode's own energy.
-  TransportCase given = c;
   given.chain.given_radii = paper_case(1e-7).chain.radii(0);
   given.mode = {.mode = 2221};
   given.alpha = 1e-8;
@@ -117,19 +123,19 @@ TEST(CaseRules, AutoTakesTheRealModeOfAModeKick) {
   const std::vector<Chain> chains = rule_chains(given);
   ASSERT_EQ(chains.size(), 1u);
   EXPECT_DOUBLE_EQ(kick_energy_bound(given, chains, true), energy);
-  EXPECT_NO_THROW(settle_scheme_and_step(given, true, false));
+  EXPECT_NO_THROW(settle_automatically(given));
 }
 
 // Damping is composed with any scheme by a 2nd-order splitting: auto keeps SABA2C at its rule
 // step, and says so.
 TEST(CaseRules, AutoKeepsSaba2cWhenDamped) {
   TransportCase plain = paper_case(1e-7);
-  settle_scheme_and_step(plain, true, false);
+  settle_automatically(plain);
   ASSERT_EQ(plain.dynamics.integration.integrator.name(), "srkn14a");
   for (const Damping damping : {Damping{.time = 1e-3}, Damping{.kk_gamma = 1e-6}}) {
     TransportCase damped = paper_case(1e-7);
     damped.dynamics.integration.damping = damping;
-    const nlohmann::json rule = settle_scheme_and_step(damped, true, false);
+    const nlohmann::json rule = settle_automatically(damped);
     EXPECT_EQ(damped.dynamics.integration.integrator.name(), "saba2c");
     EXPECT_EQ(damped.dynamics.integration.time_step, 1e-6);
     EXPECT_TRUE(rule["integrator_choice"]["damped"].get<bool>());

@@ -32,24 +32,25 @@ std::string case_settling_named(F&& call) {
 }
 
 TEST(CaseSettling, ATimeStepPastStabilityIsNamedBeforeTheFitStepOnItsGrid) {
-  TransportCase c;                          // the paper's A chain, 2,501 beads, fits sampled every 10 µs
-  c.dynamics.integration.time_step = 1e-4;  // 10× the fit step, and ~10× the stability limit (~9.8 µs)
+  TransportCase c;  // the paper's A chain, 2,501 beads, fits sampled every 10 µs
+  c.time_step = c.dynamics.integration.time_step =
+      1e-4;  // given, 10× the fit step, and ~10× the stability limit (~9.8 µs)
   ASSERT_GT(c.dynamics.integration.time_step, time_step_limit(c).max_time_step);
   EXPECT_EQ(case_settling_named([&] { validate(c); }), "fit_step");  // the order this replaces
   EXPECT_EQ(case_settling_named([&] { validate_before_time_step(c); }), "");
   std::string warning;
-  EXPECT_EQ(case_settling_named([&] { validate_and_settle(c, false, true, "--T", warning); }), "time_step");
+  EXPECT_EQ(case_settling_named([&] { validate_and_settle(c, "--T", warning); }), "time_step");
 }
 
 TEST(CaseSettling, AStableTimeStepStillHasItsGridChecked) {
   TransportCase c;
-  c.dynamics.integration.time_step = 2e-6;  // stable; T = 5000 steps, but the fit step 5 µs is 2.5 steps
+  c.time_step = 2e-6;  // given, stable; T = 5000 steps, but the fit step 5 µs is 2.5 steps
   c.fit_step = 5e-6;
   std::string warning;
-  EXPECT_EQ(case_settling_named([&] { validate_and_settle(c, false, true, "--T", warning); }), "fit_step");
+  EXPECT_EQ(case_settling_named([&] { validate_and_settle(c, "--T", warning); }), "fit_step");
   c.fit_step = 1e-5;  // 5 steps
   std::vector<TransportCase> cases{c};
-  EXPECT_NO_THROW(validate_and_settle(cases, false, true, "--T", warning));
+  EXPECT_NO_THROW(validate_and_settle(cases, "--T", warning));
   EXPECT_EQ(warning, "");  // 10 ms on 2,501 beads: waves reach no wall
 }
 
@@ -60,7 +61,7 @@ TEST(CaseSettling, TheDurationWarningUsesTheRulesOmegaMax) {
   c.fit = false;
   c.dynamics.integration.duration = 1;  // 1 s typed for 1 ms: waves cross 101 beads thousands of times
   std::string warning;
-  const nlohmann::json rule = validate_and_settle(c, false, false, "--T", warning);
+  const nlohmann::json rule = validate_and_settle(c, "--T", warning);
   const double omega_max = time_step_limit(c).omega_max;  // anew, as the warning once did
   EXPECT_DOUBLE_EQ(rule.at("omega_max_rad_s").get<double>(), omega_max);
   EXPECT_EQ(warning, duration_warning(c, omega_max, "--T"));

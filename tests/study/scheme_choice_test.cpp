@@ -65,31 +65,34 @@ TEST(SchemeChoice, TheBenchmarkChainKeepsFiveMicroseconds) {
 // 5 µs on the precompressed benchmark chain, SABA2C at its stability-rule step in the sonic
 // vacuum, one scheme for every case of a study (the dearest case decides), a given τ refused.
 TEST(SchemeChoice, SettlesOneSchemeAndStepForAStudy) {
-  TransportCase closed;  // A, F0 = 10 N, displacement kick of 0.1 µm
+  TransportCase closed;  // A, F0 = 10 N, displacement kick of 0.1 µm, integrator auto
+  closed.automatic_integrator = true;
   TransportCase open = closed;
   open.chain.F0 = 0;
   std::vector<TransportCase> one{closed};
-  const nlohmann::json rule = settle_scheme_and_step(one, true, false);
+  const nlohmann::json rule = settle_scheme_and_step(one);
   EXPECT_EQ(one.front().dynamics.integration.integrator.name(), "srkn14a");
   EXPECT_EQ(one.front().dynamics.integration.time_step, 5e-6);
   EXPECT_EQ(rule["integrator_choice"]["integrator"], "srkn14a");
   EXPECT_EQ(rule["time_step_given"], false);
   std::vector<TransportCase> both{closed, open};
-  settle_scheme_and_step(both, true, false);
+  settle_scheme_and_step(both);
   for (const TransportCase& c : both) {
     EXPECT_EQ(c.dynamics.integration.integrator.name(), "saba2c");
     EXPECT_EQ(c.dynamics.integration.time_step, 1e-6);
   }
   std::vector<TransportCase> given{closed};
+  given.front().time_step = 1e-6;
   try {
-    settle_scheme_and_step(given, true, true);
+    settle_scheme_and_step(given);
     ADD_FAILURE() << "a given time step with the automatic choice must be refused";
   } catch (const InvalidInput& e) {
     EXPECT_EQ(e.parameter(), "dt");
   }
   // Not automatic: the time-step rule alone, the scheme untouched.
   std::vector<TransportCase> plain{closed};
-  const nlohmann::json same = settle_scheme_and_step(plain, false, false);
+  plain.front().automatic_integrator = false;
+  const nlohmann::json same = settle_scheme_and_step(plain);
   EXPECT_EQ(plain.front().dynamics.integration.integrator.name(), "saba2c");
   EXPECT_FALSE(same.contains("integrator_choice"));
 }

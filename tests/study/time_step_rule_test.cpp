@@ -173,7 +173,7 @@ TEST(TimeStepRule, ModeKicksAreBoundedBeforeTheChainIsDrawn) {
   const ModeKickResult real = mode_kick(chain, ForceLawKind::hertz, {.mode = 200, .amplitude = 1e-7});
   const double bound_at_real = highest_frequency_bound(make_force_law(ForceLawKind::hertz, chain), chain, real.energy);
   EXPECT_GE(from_alpha.omega_max, bound_at_real);
-  EXPECT_NO_THROW(settle_time_step(c, false));
+  EXPECT_NO_THROW(settle_time_step(c));
 }
 
 }  // namespace

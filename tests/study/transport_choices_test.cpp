@@ -10,17 +10,33 @@ namespace {
 
 TEST(TransportChoices, AutoStandsForSaba2cUntilSettled) {
   TransportChoices choices;
-  EXPECT_FALSE(take_automatic_integrator(choices));
-  EXPECT_EQ(choices.integrator, "saba2c");
-  choices.integrator = "srkn14a";
-  EXPECT_FALSE(take_automatic_integrator(choices));
-  EXPECT_EQ(choices.integrator, "srkn14a");
-  choices.integrator = "auto";
-  EXPECT_TRUE(take_automatic_integrator(choices));
-  EXPECT_EQ(choices.integrator, "saba2c");
   TransportCase c;
-  apply(choices, c);  // what the case stands for is a scheme apply() knows
+  apply(choices, c);
+  EXPECT_FALSE(c.automatic_integrator);
   EXPECT_EQ(c.dynamics.integration.integrator.name(), "saba2c");
+  choices.integrator = "srkn14a";
+  apply(choices, c);
+  EXPECT_FALSE(c.automatic_integrator);
+  EXPECT_EQ(c.dynamics.integration.integrator.name(), "srkn14a");
+  choices.integrator = "auto";
+  apply(choices, c);
+  EXPECT_TRUE(c.automatic_integrator);  // settled with the step (scheme_choice.hpp)
+  EXPECT_EQ(c.dynamics.integration.integrator.name(), "saba2c");
+}
+
+// What settling resolves travels in the case, not beside it: a time step given or not.
+TEST(TransportChoices, AGivenTimeStepIsTheCasesOwnAndNoneLeavesThePreferredOne) {
+  TransportChoices choices;
+  TransportCase c;
+  const double preferred = c.dynamics.integration.time_step;
+  apply(choices, c);
+  EXPECT_FALSE(c.time_step.has_value());
+  EXPECT_EQ(c.dynamics.integration.time_step, preferred);
+  choices.time_step = 2.5e-7;
+  apply(choices, c);
+  ASSERT_TRUE(c.time_step.has_value());
+  EXPECT_EQ(*c.time_step, 2.5e-7);
+  EXPECT_EQ(c.dynamics.integration.time_step, 2.5e-7);
 }
 
 TEST(TransportChoices, AFitWindowPastTheDurationFitsNothing) {

@@ -38,9 +38,9 @@ inline void add_dynamics_options(CLI::App& app, TransportChoices& run, BeyondCho
 /// contact can open and it is cheaper, else SABA2C); then the --T warning, after the errors.
 /// `cases`: one TransportCase or a std::vector of them.
 template <class Cases>
-nlohmann::json validate_and_settle(Cases& cases, const TransportChoices& o, bool dt_given) {
+nlohmann::json validate_and_settle(Cases& cases) {
   std::string warning;
-  nlohmann::json rule = granular::validate_and_settle(cases, o.integrator == "auto", dt_given, "--T", warning);
+  nlohmann::json rule = granular::validate_and_settle(cases, "--T", warning);
   warn({warning});
   return rule;
 }

@@ -7,10 +7,10 @@
 
 namespace granular {
 
-nlohmann::json validate_and_settle(std::vector<TransportCase>& cases, bool automatic, bool time_step_given,
-                                   const std::string& duration_option, std::string& warning, const Chain* chain) {
+nlohmann::json validate_and_settle(std::vector<TransportCase>& cases, const std::string& duration_option,
+                                   std::string& warning, const Chain* chain) {
   for (const TransportCase& c : cases) validate_before_time_step(c);
-  nlohmann::json rule = settle_scheme_and_step(cases, automatic, time_step_given, chain);
+  nlohmann::json rule = settle_scheme_and_step(cases, chain);
   for (const TransportCase& c : cases) validate(c);  // on the settled τ's grid
   // The rule's ω_max: the largest of the cases (a bound for each), as settle_time_step found it.
   const double omega_max = rule.at("omega_max_rad_s").get<double>();
@@ -20,10 +20,10 @@ nlohmann::json validate_and_settle(std::vector<TransportCase>& cases, bool autom
   return rule;
 }
 
-nlohmann::json validate_and_settle(TransportCase& c, bool automatic, bool time_step_given,
-                                   const std::string& duration_option, std::string& warning, const Chain* chain) {
+nlohmann::json validate_and_settle(TransportCase& c, const std::string& duration_option, std::string& warning,
+                                   const Chain* chain) {
   std::vector<TransportCase> one{c};
-  nlohmann::json rule = validate_and_settle(one, automatic, time_step_given, duration_option, warning, chain);
+  nlohmann::json rule = validate_and_settle(one, duration_option, warning, chain);
   c = one.front();
   return rule;
 }

@@ -16,17 +16,16 @@
 
 namespace granular {
 
-/// validate_before_time_step on every case, settle_scheme_and_step (scheme_choice.hpp), validate
-/// on every case, then duration_warning with the largest ω_max of the cases (they share T: one
-/// warning, of the first case that draws it). `automatic`, `time_step_given` and `chain` as
-/// settle_scheme_and_step; `duration_option` names T in the warning ("--T", "T"), which goes to
-/// `warning` ("" when T is plausible). Returns settle_scheme_and_step's rule, for the JSON.
-nlohmann::json validate_and_settle(std::vector<TransportCase>& cases, bool automatic, bool time_step_given,
-                                   const std::string& duration_option, std::string& warning,
-                                   const Chain* chain = nullptr);
+/// validate_before_time_step on every case, settle_scheme_and_step (scheme_choice.hpp: what the
+/// cases leave to settle, their time step and an automatic scheme, is resolved), validate on every
+/// case, then duration_warning with the largest ω_max of the cases (they share T: one warning, of
+/// the first case that draws it). `chain` as settle_scheme_and_step; `duration_option` names T in
+/// the warning ("--T", "T"), which goes to `warning` ("" when T is plausible). Returns
+/// settle_scheme_and_step's rule, for the JSON.
+nlohmann::json validate_and_settle(std::vector<TransportCase>& cases, const std::string& duration_option,
+                                   std::string& warning, const Chain* chain = nullptr);
 /// The same for one case.
-nlohmann::json validate_and_settle(TransportCase& c, bool automatic, bool time_step_given,
-                                   const std::string& duration_option, std::string& warning,
+nlohmann::json validate_and_settle(TransportCase& c, const std::string& duration_option, std::string& warning,
                                    const Chain* chain = nullptr);
 
 }  // namespace granular

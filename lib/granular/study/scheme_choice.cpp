@@ -55,14 +55,13 @@ nlohmann::json to_json(const SchemeChoice& choice) {
           {"damped", choice.damped}};
 }
 
-nlohmann::json settle_scheme_and_step(std::vector<TransportCase>& cases, bool automatic, bool time_step_given,
-                                      const Chain* chain) {
-  if (!automatic || cases.empty()) return settle_time_step(cases, time_step_given, chain);
-  if (time_step_given)
+nlohmann::json settle_scheme_and_step(std::vector<TransportCase>& cases, const Chain* chain) {
+  if (cases.empty() || !cases.front().automatic_integrator) return settle_time_step(cases, chain);
+  if (cases.front().time_step)
     throw InvalidInput("dt", ": integrator auto chooses the time step too; leave it out or name a scheme");
   std::vector<TransportCase> trial = cases;  // SABA2C at its default step
   for (TransportCase& c : trial) c.dynamics.integration.integrator = saba2c();
-  settle_time_step(trial, false, chain);
+  settle_time_step(trial, chain);
   double omega_max = 0;
   bool closed = true, damped = false;
   for (const TransportCase& c : trial) {
@@ -74,17 +73,18 @@ nlohmann::json settle_scheme_and_step(std::vector<TransportCase>& cases, bool au
       choose_scheme(trial.front().dynamics.integration.time_step, srkn14a_default_step(omega_max), closed, damped);
   for (TransportCase& c : cases) {
     c.dynamics.integration.integrator = parse_integrator(choice.integrator);
-    c.dynamics.integration.time_step = choice.time_step;
+    c.time_step = choice.time_step;
+    c.automatic_integrator = false;  // settled
   }
-  nlohmann::json rule = settle_time_step(cases, true, chain);  // the chosen τ, checked against stability
+  nlohmann::json rule = settle_time_step(cases, chain);  // the chosen τ, checked against stability
   rule["time_step_given"] = false;
   rule["integrator_choice"] = to_json(choice);
   return rule;
 }
 
-nlohmann::json settle_scheme_and_step(TransportCase& c, bool automatic, bool time_step_given, const Chain* chain) {
+nlohmann::json settle_scheme_and_step(TransportCase& c, const Chain* chain) {
   std::vector<TransportCase> one{c};
-  nlohmann::json rule = settle_scheme_and_step(one, automatic, time_step_given, chain);
+  nlohmann::json rule = settle_scheme_and_step(one, chain);
   c = one.front();
   return rule;
 }

@@ -59,17 +59,16 @@ SchemeChoice choose_scheme(double saba2c_step, double srkn14a_step, bool closed,
 /// The choice and why, for the JSON.
 nlohmann::json to_json(const SchemeChoice& choice);
 
-/// The time step of a study's cases (settle_time_step, time_step_rule.hpp), and with `automatic`
-/// (the integrator word "auto") the scheme first: SABA2C's default step by the stability rule,
-/// then choose_scheme over every case (one scheme and step for all), then the stability check of
-/// what was chosen. The returned rule is settle_time_step's, with "integrator_choice" when
-/// automatic. An automatic choice with `time_step_given` is an InvalidInput naming "dt": the
-/// choice sets the step. `chain`: as settle_time_step (this very chain rather than every
-/// realization of the cases' distribution).
-nlohmann::json settle_scheme_and_step(std::vector<TransportCase>& cases, bool automatic, bool time_step_given,
-                                      const Chain* chain = nullptr);
+/// The time step of a study's cases (settle_time_step, time_step_rule.hpp), and when they ask for
+/// an automatic scheme (TransportCase::automatic_integrator, the integrator word "auto") the scheme
+/// first: SABA2C's default step by the stability rule, then choose_scheme over every case (one
+/// scheme and step for all), then the stability check of what was chosen. The returned rule is
+/// settle_time_step's, with "integrator_choice" when automatic. An automatic choice with a given
+/// time step is an InvalidInput naming "dt": the choice sets the step. The cases leave settled.
+/// `chain`: as settle_time_step (this very chain rather than every realization of the cases'
+/// distribution).
+nlohmann::json settle_scheme_and_step(std::vector<TransportCase>& cases, const Chain* chain = nullptr);
 /// The same for one case.
-nlohmann::json settle_scheme_and_step(TransportCase& c, bool automatic, bool time_step_given,
-                                      const Chain* chain = nullptr);
+nlohmann::json settle_scheme_and_step(TransportCase& c, const Chain* chain = nullptr);
 
 }  // namespace granular

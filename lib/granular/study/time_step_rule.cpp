@@ -269,27 +269,32 @@ nlohmann::json to_json(const TimeStepLimit& limit) {
           {"max_time_step_s", bounded ? nlohmann::json(limit.max_time_step) : nlohmann::json(nullptr)}};
 }
 
-nlohmann::json settle_time_step(std::vector<TransportCase>& cases, bool dt_given, const Chain* chain) {
+nlohmann::json settle_time_step(std::vector<TransportCase>& cases, const Chain* chain) {
   TimeStepLimit tightest;
-  for (const TransportCase& c : cases) {
+  for (TransportCase& c : cases) {
     const TimeStepLimit limit = time_step_limit(c, chain);
     if (limit.max_time_step < tightest.max_time_step) tightest = limit;
     tightest.omega_max = std::max(tightest.omega_max, limit.omega_max);  // the same scheme: the tightest has it
-    if (dt_given) check_time_step(c, limit);
+    if (c.time_step) {
+      c.dynamics.integration.time_step = *c.time_step;
+      check_time_step(c, limit);
+    }
   }
-  const double tau =
-      dt_given || cases.empty() ? 0 : default_time_step(tightest, cases.front().dynamics.integration.time_step);
-  for (TransportCase& c : cases)
-    if (!dt_given) c.dynamics.integration.time_step = tau;
+  const bool given = !cases.empty() && cases.front().time_step.has_value();
+  const double tau = cases.empty() ? 0 : default_time_step(tightest, cases.front().dynamics.integration.time_step);
+  for (TransportCase& c : cases) {
+    if (!c.time_step) c.dynamics.integration.time_step = tau;
+    c.time_step = c.dynamics.integration.time_step;  // settled
+  }
   nlohmann::json rule = to_json(tightest);
   if (!cases.empty()) rule["time_step_s"] = cases.front().dynamics.integration.time_step;
-  rule["time_step_given"] = dt_given;
+  rule["time_step_given"] = given;
   return rule;
 }
 
-nlohmann::json settle_time_step(TransportCase& c, bool dt_given, const Chain* chain) {
+nlohmann::json settle_time_step(TransportCase& c, const Chain* chain) {
   std::vector<TransportCase> one{c};
-  const nlohmann::json rule = settle_time_step(one, dt_given, chain);
+  const nlohmann::json rule = settle_time_step(one, chain);
   c = one.front();
   return rule;
 }

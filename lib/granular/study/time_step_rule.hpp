@@ -71,14 +71,15 @@ void check_time_step(const TransportCase& c, const TimeStepLimit& limit);
 /// The rule and its numbers, for the JSON.
 nlohmann::json to_json(const TimeStepLimit& limit);
 
-/// Settles the time step of `cases` (validated) by the rule: a τ given by the user
-/// (`time_step_given`) past the limit of any case is refused (InvalidInput naming `time_step`
-/// and the largest stable τ); otherwise each case's τ (the paper's 1 µs) becomes
-/// default_time_step() of the tightest limit. One τ for all of them. `chain`: the chain of a
-/// single case from a file (else every realization counts). Returns the rule and its numbers
-/// for the JSON ("time_step_rule"), as the tools and Python write it.
-nlohmann::json settle_time_step(std::vector<TransportCase>& cases, bool time_step_given, const Chain* chain = nullptr);
+/// Settles the time step of `cases` (validated) by the rule: a τ the user gave (the case's
+/// `time_step`) past the limit of any case is refused (InvalidInput naming `time_step` and the
+/// largest stable τ); a case without one gets default_time_step() of the tightest limit, from its
+/// preferred dynamics.integration.time_step (the paper's 1 µs): one τ for all of them. Each case
+/// leaves settled, its τ given. `chain`: the chain of a single case from a file (else every
+/// realization counts). Returns the rule and its numbers for the JSON ("time_step_rule"), as the
+/// tools and Python write it.
+nlohmann::json settle_time_step(std::vector<TransportCase>& cases, const Chain* chain = nullptr);
 /// The same for one case.
-nlohmann::json settle_time_step(TransportCase& c, bool time_step_given, const Chain* chain = nullptr);
+nlohmann::json settle_time_step(TransportCase& c, const Chain* chain = nullptr);
 
 }  // namespace granular

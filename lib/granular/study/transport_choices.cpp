@@ -52,7 +52,8 @@ const ParameterTable<TransportChoices>& transport_parameters() {
       {"time_step", &O::time_step,
        "time step tau [s]; must meet tau <= h*/omega_max (docs/physics.md, 'Time step'): a larger one is refused, "
        "naming the largest stable tau; by default 1e-6, or 1e-6/k (smallest integer k) where 1e-6 is past a sixth "
-       "of that limit; the rule and its numbers are in the JSON (time_step_rule)"},
+       "of that limit; the rule and its numbers are in the JSON (time_step_rule)",
+       false},
       {"integrator", &O::integrator,
        "saba2c | saba2 | aba864 | srkn14a | reference (Odeint RKF78) | auto: the cheapest scheme and step keeping "
        "the energy error at SABA2C's at 1e-6 s: SRKN14a at 5e-6 s where no contact can open, else SABA2C "
@@ -108,17 +109,9 @@ void apply(const ModeKick& kick, const std::vector<Kick>& kicks, TransportCase& 
   c.mode = kick;
 }
 
-bool apply(TransportChoices choices, const BeyondChoices& beyond, TransportCase& c) {
-  const bool automatic = take_automatic_integrator(choices);
+void apply(const TransportChoices& choices, const BeyondChoices& beyond, TransportCase& c) {
   apply(choices, c);
   apply(beyond, c.dynamics);
-  return automatic;
-}
-
-bool take_automatic_integrator(TransportChoices& choices) {
-  if (choices.integrator != "auto") return false;
-  choices.integrator = "saba2c";
-  return true;
 }
 
 void fit_within_duration(TransportCase& c) { c.fit = c.fit_end <= c.dynamics.integration.duration * (1 + 1e-12); }
@@ -135,8 +128,10 @@ void apply(const TransportChoices& o, TransportCase& c) {
   c.centre = parse_spread_centre(o.centre);
   SpreadingRunConfig& d = c.dynamics;
   d.integration.duration = o.duration;
-  d.integration.time_step = o.time_step;
-  d.integration.integrator = parse_integrator(o.integrator);
+  c.time_step = o.time_step;
+  if (o.time_step) d.integration.time_step = *o.time_step;  // else the preferred τ the rule starts from
+  c.automatic_integrator = o.integrator == "auto";
+  d.integration.integrator = c.automatic_integrator ? Integrator() : parse_integrator(o.integrator);  // SABA2C
   d.integration.force_law = parse_force_law(o.force_law);
   if (o.samples < 2) throw InvalidInput("samples", " " + std::to_string(o.samples) + ": at least 2");
   d.spread.samples = static_cast<std::size_t>(o.samples);

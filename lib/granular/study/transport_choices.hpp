@@ -14,19 +14,20 @@
 namespace granular {
 
 struct TransportChoices {
-  double alpha = 1e-7;                       ///< displacement kick [m] (also what a matched β matches)
-  std::optional<double> beta = paper_beta;   ///< velocity kick [m/s]; none: β matching α's energy on each chain
-  long long site = 0;                        ///< kicked bead 1…N (counting from 1); 0: the centre (N+1)/2
-  std::string centre = "site";               ///< site | centroid: the m̃2 the tables show
-  double duration = 1e-2, time_step = 1e-6;  ///< T, τ [s]
-  std::string integrator = "saba2c";         ///< saba2c | saba2 | aba864 | srkn14a | reference
-  std::string force_law = "hertz";           ///< hertz | fpu | linear
-  long long samples = 100;                   ///< sample times outside the fit window (≥ 2)
-  std::string sampling = "log";              ///< log | uniform
-  double fit_begin = 4e-3, fit_end = 1e-2;   ///< fit window [s], 0 < begin < end
-  double fit_step = 1e-5;                    ///< sample spacing inside it [s]
-  double t_star = 4e-3, kappa = 0.1;         ///< the power-law criterion
-  long long bootstrap = 1000;                ///< resamples of the realization bootstrap (≥ 2)
+  double alpha = 1e-7;                      ///< displacement kick [m] (also what a matched β matches)
+  std::optional<double> beta = paper_beta;  ///< velocity kick [m/s]; none: β matching α's energy on each chain
+  long long site = 0;                       ///< kicked bead 1…N (counting from 1); 0: the centre (N+1)/2
+  std::string centre = "site";              ///< site | centroid: the m̃2 the tables show
+  double duration = 1e-2;                   ///< T [s]
+  std::optional<double> time_step;          ///< τ [s]; none: the stability rule's (TransportCase::time_step)
+  std::string integrator = "saba2c";        ///< saba2c | saba2 | aba864 | srkn14a | reference | auto
+  std::string force_law = "hertz";          ///< hertz | fpu | linear
+  long long samples = 100;                  ///< sample times outside the fit window (≥ 2)
+  std::string sampling = "log";             ///< log | uniform
+  double fit_begin = 4e-3, fit_end = 1e-2;  ///< fit window [s], 0 < begin < end
+  double fit_step = 1e-5;                   ///< sample spacing inside it [s]
+  double t_star = 4e-3, kappa = 0.1;        ///< the power-law criterion
+  long long bootstrap = 1000;               ///< resamples of the realization bootstrap (≥ 2)
   bool active_window = true;
   double window_threshold = 1e-30;      ///< finite, ≥ 0
   double reference_max_step = 0.01e-6;  ///< [s], finite, ≥ 0; 0 = none
@@ -39,13 +40,11 @@ struct TransportChoices {
 const ParameterTable<TransportChoices>& transport_parameters();
 
 /// Fills `c` from the choices: everything but the chain (disorder, q, ξ, N, F0, R1, seed,
-/// realizations) and the kick kind. Needs c.chain (its size, for `site`). Leaves c.fit true. Throws
-/// InvalidInput naming the choice.
+/// realizations) and the kick kind. Needs c.chain (its size, for `site`). Leaves c.fit true. What
+/// settling resolves goes into the case: c.time_step (none unless `time_step` is given) and
+/// c.automatic_integrator (integrator "auto", the case standing for SABA2C until settled).
+/// Throws InvalidInput naming the choice.
 void apply(const TransportChoices& choices, TransportCase& c);
-
-/// Whether `choices` asks for integrator "auto": the scheme is then chosen with the step
-/// (validate_and_settle, case_settling.hpp), and until then the case stands for SABA2C (set here).
-bool take_automatic_integrator(TransportChoices& choices);
 
 /// Whether any of a mode kick's own fields (mode, near_khz, energy) is set: what only a mode kick
 /// may use.
@@ -80,9 +79,8 @@ const ParameterTable<ModeKick>& mode_kick_parameters();
 /// (`damping_time`, `kk_gamma`, `renormalize`, `deviation_samples`).
 void apply(const BeyondChoices& choices, SpreadingRunConfig& d);
 
-/// apply(choices, c) and apply(beyond, c.dynamics), with integrator "auto" standing for SABA2C
-/// until the step is settled (take_automatic_integrator). Returns whether it was "auto".
-bool apply(TransportChoices choices, const BeyondChoices& beyond, TransportCase& c);
+/// apply(choices, c) and apply(beyond, c.dynamics).
+void apply(const TransportChoices& choices, const BeyondChoices& beyond, TransportCase& c);
 
 /// The choices that give `d`'s damping and tangent map (the inverse of apply).
 BeyondChoices beyond_choices_of(const SpreadingRunConfig& d);

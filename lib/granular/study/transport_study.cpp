@@ -176,6 +176,7 @@ TransportCase parse_case(const nlohmann::json& j) {
     SpreadingRunConfig& d = c.dynamics;
     d.integration.duration = j.at("T_s").get<double>();
     d.integration.time_step = j.at("dt_s").get<double>();
+    c.time_step = d.integration.time_step;  // a described case was settled: its τ is given
     d.integration.integrator = parse_integrator(j.at("integrator").get<std::string>());
     if (j.contains("reference_max_step_s"))
       d.integration.integrator.tolerance.max_step = j.at("reference_max_step_s").get<double>();

@@ -51,6 +51,13 @@ struct TransportCase {
   std::size_t site = 1250;                   ///< 0-based kicked bead n0 (1251 counting from 1)
   SpreadCentre centre = SpreadCentre::site;  ///< which m̃2 the tables show (both are computed)
   SpreadingRunConfig dynamics;               ///< T, τ, integrator, force law, samples, guards, observers
+  /// What settling the case (case_settling.hpp) resolves: the time step τ [s] the user gave (none:
+  /// the stability rule's default, from the preferred dynamics.integration.time_step, the paper's
+  /// 1 µs) and whether the scheme is chosen with it (the integrator "auto": until settled the case
+  /// stands for SABA2C). A settled case, and one read back by parse_case, has τ given and no
+  /// automatic scheme.
+  std::optional<double> time_step;
+  bool automatic_integrator = false;
   std::size_t realizations = 500;
   std::size_t profile_realizations =
       std::numeric_limits<std::size_t>::max();  ///< E_n(T) averaged over the first this many (0: none)
