@@ -25,11 +25,10 @@ int main(int argc, char** argv) {
       "parameter, and that rule as resolved_rule).",
       "localization"};
   tool::describe_common(app);
-  tool::ChainOptions chain_options;
-  chain_options.n = 1000000;
+  tool::ChainOptions chain_options = localization_chain();
   tool::add_chain_options(app, chain_options);
-  std::string frequencies = "0:50:0.01", output = "localization";
-  long long segments = 32;
+  std::string frequencies = localization_frequencies, output = "localization";
+  long long segments = static_cast<long long>(LocalizationScanConfig{}.segments);
   LongRunChoices threads;  // of the long-run choices, --threads alone
   bool quiet = false;
   tool::add_option(app, "--f", frequencies,

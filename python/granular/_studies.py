@@ -11,6 +11,7 @@ from ._arguments import number_list
 from ._dynamics import _run, _set_quasi
 from ._linear import _selection
 from ._model import _quasi
+from ._schema import TableKeywords, split_keywords, with_keywords
 
 _MAX = 100000000
 
@@ -257,37 +258,31 @@ class Localization:
         self.resolved = self.resolved.astype(bool)
 
 
-def localization(chain=None, *, disorder="A", N=1000000, q=0.5, xi=0.5, seed=1, realization=0, F0=10.0,
-                 R1=_core.paper_r1, f="0:50:0.01", segments=32, threads=0, progress=False, walls="flat", quasi=None,
-                 modulation=0.0, ratio="golden", phase=None, angle=45.0, k0=4.0):
+_LOCALIZATION_CHAIN = TableKeywords(_core._localization_chain())
+
+
+def localization(chain=None, *, f=_core._localization_frequencies, segments=_core.LocalizationScanConfig().segments,
+                 threads=0, progress=False, **chain_keywords):
     """Localization length and density of states of one long chain by transfer matrices (docs/physics.md, 'Infinite
     chains'): the localization tool.
 
-    chain: a granular.Chain; or None and a random realization (disorder, N, q, xi, seed, realization, F0 [N],
-        R1 [m], walls 'flat' | 'sphere') drawn a piece at a time (flat walls), so N = 1e8 needs no more memory than
-        N = 100
+    chain: a granular.Chain; or None and the chain the chain keywords below pick, as the tool's chain options
+        do (a random two-type draw, a types or radii file, k types, polydisperse radii or a quasiperiodic
+        chain); a random two-type draw between flat walls is drawn a piece at a time, so N = 1e8 needs no
+        more memory than N = 100 (the others are stored: N <= 1e8)
     f: frequencies [kHz], increasing: a sequence or the tools' range string ('0:50:0.01')
     segments: chain pieces whose exponents give lyapunov_err (2 ... 1e6)
     threads: workers over blocks of frequencies (0: every core); results do not depend on it
-    quasi, modulation, ratio, phase, angle, k0: with chain None, a quasiperiodic chain instead of a random one
-        (the tools' --quasi, as granular.quasiperiodic's keywords; stored, so N <= 1e8)
     Returns a granular.Localization (freq_khz, lyapunov [1/bead], lyapunov_err, loc_length [beads], modes_below,
     idos, dos, metadata). Releases the GIL; Ctrl-C stops it."""
-    recipe = _core.ChainRecipe()
-    r = 0
     if chain is not None and not isinstance(chain, _core.Chain):
         raise TypeError("chain: expected a granular.Chain or None")
+    if chain is not None and chain_keywords:
+        raise ValueError(f"{next(iter(chain_keywords))}: not with a given chain (it is the chain's own)")
     if chain is not None and not chain.F0 > 0:
         raise ValueError("F0 0: the sonic vacuum has no linear limit (needs F0 > 0)")
-    if chain is None:
-        n = float(N)
-        if not (n >= 2) or not (n <= 1e12) or n != math.floor(n):
-            raise ValueError(f"N {_core._format_number(n)}: must be a whole number of beads in [2, 1e12]")
-        recipe.disorder = disorder
-        recipe.N, recipe.q, recipe.xi, recipe.F0, recipe.R1, recipe.walls = int(n), q, xi, F0, R1, walls
-        recipe.seed = _core._size(seed, "seed")
-        _set_quasi(recipe, quasi, modulation, ratio, phase, angle, k0)
-        r = _core._size(realization, "realization")
+    (given,) = split_keywords(chain_keywords, [_LOCALIZATION_CHAIN], "localization")
+    choices = _LOCALIZATION_CHAIN.make(given)
     frequencies = number_list(f, "f", 0.01)
     for k, v in enumerate(frequencies):
         if v < 0:
@@ -297,7 +292,11 @@ def localization(chain=None, *, disorder="A", N=1000000, q=0.5, xi=0.5, seed=1, 
     config = _core.LocalizationScanConfig()
     config.frequency_khz = frequencies
     config.segments = _core._size(segments, "segments", 2, 1000000)
-    return Localization(_core._localization(chain, recipe, r, config, f, _run(threads, progress=progress)))
+    return Localization(_core._localization(chain, choices, config, f, _run(threads, progress=progress)))
+
+
+with_keywords(localization, [_LOCALIZATION_CHAIN], "Chain keywords (with chain None; the localization tool's "
+              "chain options, made from the library's table)")
 
 
 class Correlations:

@@ -41,10 +41,10 @@ py::dict ipr_map(const IprMapConfig& c, const std::string& solver, const std::st
                 c.q_values, c.xi_values, c.selection.kind != ModeSelection::Kind::all, out_cells, meta);
 }
 
-/// `chain` (checked in granular/_studies.py), or (None) realization `realization` of `recipe`
-/// streamed a piece at a time.
-py::dict localization(const PyChain* chain, const ChainRecipe& recipe, std::uint64_t realization,
-                      const LocalizationScanConfig& config, const py::object& f, const PyRun& options) {
+/// `chain` (checked in granular/_studies.py), or (None) the chain of `choices` streamed a piece at
+/// a time, by the localization tool's rule (stream_chain of ChainChoices).
+py::dict localization(const PyChain* chain, const ChainChoices& choices, const LocalizationScanConfig& config,
+                      const py::object& f, const PyRun& options) {
   const int thread_request = options.thread_request();
   // The beads as the localization tool reads them: a random realization drawn a piece at a time
   // (memory independent of N); a given chain walked as it is.
@@ -54,7 +54,7 @@ py::dict localization(const PyChain* chain, const ChainRecipe& recipe, std::uint
     s.description = chain->description;
     s.highest_frequency_khz = highest_frequency_bound_khz(chain->recipe);
   } else {
-    s = stream_chain(recipe, realization, {"R1", "beads", "radii"});
+    s = stream_chain(choices, front_end_word);
     warn(s.warnings);
   }
   const std::unique_ptr<BeadSource>& beads = s.beads;
@@ -142,6 +142,8 @@ void bind_studies(py::module_& m) {
                &B::ratios, &B::realization, &B::largest_box, &B::smallest_box_spacings, &B::box_sizes);
   m.def("_ipr_map", &ipr_map);
   m.def("_localization", &localization);
+  m.def("_localization_chain", &localization_chain);  // the chain keywords' defaults
+  m.attr("_localization_frequencies") = localization_frequencies;
   m.def("_correlations", &correlations);
   m.def("_butterfly", &butterfly);
   using D = DynamicalButterflyConfig;  // the table's parameters; the chain, ratios, realization: granular/_studies.py

@@ -161,3 +161,54 @@ def test_correlations_and_localization_metadata_are_the_tools_json(tools):
                         output="loc")
     scan = gr.localization(N=1000, f="1:3", segments=4, threads=1)
     assert without_process_keys(scan.metadata) == without_process_keys(meta)
+
+
+# One table, every front end: the localization tool's chain options and granular.localization's chain keywords
+# are both made of the library's ChainChoices table, so every chain kind the tool takes, Python takes, with
+# the same defaults (the library's localization_chain) and the same numbers.
+def test_localization_signature_is_made_from_the_chain_table():
+    import inspect
+    signature = inspect.signature(gr.localization)
+    defaults = gr._core._localization_chain()
+    rows = [(name, keyword) for name, keyword, _ in type(defaults)._parameters]
+    assert rows, "the chain table reached Python empty"
+    for name, keyword in rows:
+        assert keyword in signature.parameters, keyword
+        parameter = signature.parameters[keyword]
+        assert parameter.kind == inspect.Parameter.KEYWORD_ONLY
+        value = getattr(defaults, name)
+        assert parameter.default == (None if value == "" else value), keyword
+        assert f"\n    {keyword}: " in gr.localization.__doc__, keyword
+    assert signature.parameters["N"].default == 1000000  # the job's own default, made in C++
+    with pytest.raises(TypeError, match="'Nbeads'"):
+        gr.localization(Nbeads=10)
+    with pytest.raises(ValueError, match="^N: not with a given chain"):
+        gr.localization(gr.anderson(N=10), N=20)
+
+
+@pytest.mark.parametrize("chain_flags, keywords", [
+    (["--types", "4.76e-3:0.5,2.38e-3:0.3,3.5e-3:0.2", "--N", "3000"],
+     dict(types="4.76e-3:0.5,2.38e-3:0.3,3.5e-3:0.2", N=3000)),
+    (["--polydisperse", "uniform:2.4e-3:4.8e-3", "--N", "3000", "--seed", "4"],
+     dict(polydisperse="uniform:2.4e-3:4.8e-3", N=3000, seed=4)),
+    (["--type-masses", "4.5e-4:0.5,5.6e-5:0.5", "--N", "3000", "--disorder", "RDM2"],
+     dict(type_masses="4.5e-4:0.5,5.6e-5:0.5", N=3000, disorder="RDM2")),
+    (["--walls", "sphere", "--N", "3000", "--xi", "0.7"], dict(walls="sphere", N=3000, xi=0.7)),
+])
+def test_localization_takes_every_chain_kind_of_the_tool(tools, chain_flags, keywords):
+    csv, meta = tools.run("localization", *chain_flags, "--f", "1:30:1", "--segments", "4", "--quiet", output="kind")
+    scan = gr.localization(f="1:30:1", segments=4, **keywords)
+    for key in ("lyapunov", "lyapunov_err", "idos", "dos"):
+        assert_identical(getattr(scan, key), csv[key])
+    assert scan.metadata["chain"] == meta["chain"]
+    assert scan.metadata["parameters"] == meta["parameters"]
+
+
+def test_localization_takes_a_radii_file_as_the_tool(tools, tmp_path):
+    radii = tmp_path / "chain.radii"
+    radii.write_text("".join(f"{r}\n" for r in [4.76e-3, 2.38e-3, 3.0e-3] * 40))
+    csv, meta = tools.run("localization", "--radii", radii, "--f", "1:30:1", "--segments", "2", "--quiet",
+                          output="radii")
+    scan = gr.localization(radii=str(radii), f="1:30:1", segments=2)
+    assert_identical(scan.lyapunov, csv["lyapunov"])
+    assert scan.metadata["chain"] == meta["chain"]

@@ -54,7 +54,7 @@ inline RadiusNames radius_options(const ChainOptions& o) {
 
 /// The chain the options pick, streamed (granular::stream_chain), its warnings printed.
 inline StreamedChain stream_chain(const ChainOptions& o) {
-  StreamedChain s = granular::stream_chain(chain_recipe(o), chain_realization(o), radius_options(o));
+  StreamedChain s = granular::stream_chain(o, [](const std::string& p) { return option_name(front_end_word(p)); });
   warn(s.warnings);
   return s;
 }

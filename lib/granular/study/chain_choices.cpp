@@ -92,6 +92,14 @@ RadiusNames radius_names(const ChainChoices& o, const std::function<std::string(
   return {told("R1"), told(distribution), told("radii")};
 }
 
+StreamedChain stream_chain(const ChainChoices& o, const std::function<std::string(const std::string&)>& told) {
+  std::vector<std::string> file_warnings;
+  const ChainRecipe recipe = chain_recipe(o, file_warnings);
+  StreamedChain s = stream_chain(recipe, chain_realization(o), radius_names(o, told));
+  s.warnings.insert(s.warnings.begin(), file_warnings.begin(), file_warnings.end());
+  return s;
+}
+
 ChainRecipe chain_recipe(const ChainChoices& o, std::vector<std::string>& warnings) {
   if (o.seed < 0) throw InvalidInput("seed", " " + std::to_string(o.seed) + ": must be >= 0");
   if (o.realization < 0) throw InvalidInput("realization", " " + std::to_string(o.realization) + ": must be >= 0");

@@ -15,6 +15,7 @@
 #include "granular/model/named_chains.hpp"
 #include "granular/model/plausibility.hpp"
 #include "granular/model/quasiperiodic.hpp"
+#include "granular/model/selected_chain.hpp"
 #include "granular/parameter_table.hpp"
 
 namespace granular {
@@ -70,5 +71,11 @@ RadiusNames radius_names(const ChainChoices& o, const std::function<std::string(
 
 /// The realization the choices pick (0-based).
 inline std::uint64_t chain_realization(const ChainChoices& o) { return static_cast<std::uint64_t>(o.realization); }
+
+/// The chain the choices pick, walked once rather than stored where it can be (stream_chain,
+/// model/selected_chain.hpp): a tool's chain options and a Python call's chain keywords make it
+/// by this one rule. Warnings (a radii file's implausible radii) name the choices as `told`
+/// tells them (a tool: its flag; Python: its keyword). Throws InvalidInput naming the choice.
+StreamedChain stream_chain(const ChainChoices& o, const std::function<std::string(const std::string&)>& told);
 
 }  // namespace granular

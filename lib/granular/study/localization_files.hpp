@@ -6,9 +6,18 @@
 #include <nlohmann/json_fwd.hpp>
 
 #include "granular/model/material.hpp"
+#include "granular/study/chain_choices.hpp"
 #include "granular/study/localization_scan.hpp"
 
 namespace granular {
+
+/// The chain a localization scan takes unless told otherwise (the `localization` tool's chain
+/// options and granular.localization's keywords): the paper's Anderson chain of 10⁶ beads, drawn a
+/// piece at a time, so memory does not grow with N.
+inline ChainChoices localization_chain() { return {.n = 1000000}; }
+/// The frequencies it scans unless told otherwise [kHz]: 0 to 50 every 0.01 (the range syntax of
+/// io/range_syntax.hpp), past the paper's chains' highest frequency.
+inline constexpr const char* localization_frequencies = "0:50:0.01";
 
 /// freq_khz,lyapunov,lyapunov_err,loc_length,idos,dos,resolved.
 void write_localization_csv(std::ostream& out, const LocalizationScan& scan);
