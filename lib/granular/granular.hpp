@@ -28,6 +28,7 @@
 #include "granular/dynamics/force_law.hpp"
 #include "granular/dynamics/initial_conditions.hpp"
 #include "granular/dynamics/integrator.hpp"
+#include "granular/dynamics/lyapunov_spectrum.hpp"
 #include "granular/dynamics/observables.hpp"
 #include "granular/dynamics/observer.hpp"
 #include "granular/dynamics/observers.hpp"

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <string>
 #include <variant>
@@ -30,19 +31,23 @@ using detail::block;
 
 // Kick v += h F/m, δv += h δF/m (δF_k = K_k δx_k), then the drift u += d v, δu += d δv. On-site
 // springs (`grounded`, ks the k_n per bead) add −k u to F and −k δu to δF, as the stepper's kernels.
-template <bool grounded, class View>
+// With `store`, each bond's K_k (at the positions before the drift) goes to `stiff_out`, for the
+// further deviation vectors (deviation_kick_and_drift).
+template <bool grounded, bool store, class View>
 void kick_and_drift(const View law, const double* __restrict ks, double* __restrict u, double* __restrict du,
                     double* __restrict f, double* __restrict kx, double* __restrict v, double* __restrict dv,
-                    const double* __restrict im, std::size_t n, double h, double d) {
+                    const double* __restrict im, std::size_t n, double h, double d, double* __restrict stiff_out) {
   double stiff = 0;
   law.force_stiffness(0, u[0] - u[1], f[0], stiff);
   kx[0] = stiff * (du[0] - du[1]);
+  if constexpr (store) stiff_out[0] = stiff;
   for (std::size_t b0 = 1; b0 <= n; b0 += block) {
     const std::size_t b1 = std::min(n + 1, b0 + block);
     for (std::size_t k = b0; k < b1; ++k) {
       double s;
       law.force_stiffness(k, u[k] - u[k + 1], f[k], s);
       kx[k] = s * (du[k] - du[k + 1]);
+      if constexpr (store) stiff_out[k] = s;
     }
     for (std::size_t k = b0; k < b1; ++k) {
       double force = f[k - 1] - f[k], dforce = kx[k - 1] - kx[k];
@@ -58,14 +63,17 @@ void kick_and_drift(const View law, const double* __restrict ks, double* __restr
   }
 }
 
-// Bond k of a corrector: force, stiffness, δF_k = K_k δx_k and δK_k = f_k'' δx_k.
-template <class View>
+// Bond k of a corrector: force, stiffness, δF_k = K_k δx_k and δK_k = f_k'' δx_k (with `store`,
+// f_k'' itself to curv[k], for the further deviation vectors).
+template <bool store, class View>
 inline void corrector_bond(const View law, const double* __restrict u, const double* __restrict du, double* f,
-                           double* stiff, double* kx, double* cx, std::size_t k) {
+                           double* stiff, double* kx, double* cx, double* curv, std::size_t k) {
   const double x = u[k] - u[k + 1], dx = du[k] - du[k + 1];
   law.force_stiffness(k, x, f[k], stiff[k]);
   kx[k] = stiff[k] * dx;
-  cx[k] = curvature(law, k, x, stiff[k]) * dx;
+  const double c = curvature(law, k, x, stiff[k]);
+  cx[k] = c * dx;
+  if constexpr (store) curv[k] = c;
 }
 
 // Bead i of a corrector, once a and da of beads i − 1 … i + 1 (padded i … i + 2) are known.
@@ -91,13 +99,15 @@ inline void corrector_bead(const double* __restrict ks, double* __restrict u, do
 // derivative δG_i (δa_i = im_i (δF_i − δF_{i+1})), then the drift, blocked as
 // detail::correct_and_drift; a and da are padded like u, 0 at the walls. On-site springs add
 // −k_i a_i to G_i and −k_i δa_i to δG_i (k_i is constant: no curvature term).
-template <bool grounded, class View>
+// With `store`, stiff, f_k'' (curv) and a are left for the further deviation vectors
+// (deviation_correct_and_drift), all at the positions before the drift.
+template <bool grounded, bool store, class View>
 void correct_and_drift(const View law, const double* __restrict ks, double* __restrict u, double* __restrict du,
                        double* __restrict f, double* __restrict stiff, double* __restrict kx, double* __restrict cx,
                        double* __restrict a, double* __restrict da, double* __restrict v, double* __restrict dv,
-                       const double* __restrict im, std::size_t n, double c, double d) {
-  corrector_bond(law, u, du, f, stiff, kx, cx, 0);
-  corrector_bond(law, u, du, f, stiff, kx, cx, 1);
+                       const double* __restrict im, std::size_t n, double c, double d, double* __restrict curv) {
+  corrector_bond<store>(law, u, du, f, stiff, kx, cx, curv, 0);
+  corrector_bond<store>(law, u, du, f, stiff, kx, cx, curv, 1);
   double first = f[0] - f[1], dfirst = kx[0] - kx[1];
   if constexpr (grounded) {
     first -= ks[0] * u[1];
@@ -117,7 +127,9 @@ void correct_and_drift(const View law, const double* __restrict ks, double* __re
       f[k] = force;
       stiff[k] = s;
       kx[k] = s * dx;
-      cx[k] = curvature(law, k, x, s) * dx;
+      const double cv = curvature(law, k, x, s);
+      cx[k] = cv * dx;
+      if constexpr (store) curv[k] = cv;
     }
     for (std::size_t k = b0; k < b1; ++k) {
       double force = f[k - 1] - f[k], dforce = kx[k - 1] - kx[k];
@@ -142,12 +154,56 @@ void drift(double* __restrict u, double* __restrict du, const double* __restrict
   }
 }
 
+// A further deviation vector through the kick and drift whose K_k the orbit's pass stored: the
+// same expressions as kick_and_drift's δ part, every K_k δx_k taken before the drift moves δu.
+template <bool grounded>
+void deviation_kick_and_drift(const double* __restrict stiff, const double* __restrict ks, double* __restrict du,
+                              double* __restrict kx, double* __restrict dv, const double* __restrict im, std::size_t n,
+                              double h, double d) {
+  for (std::size_t k = 0; k <= n; ++k) kx[k] = stiff[k] * (du[k] - du[k + 1]);
+  for (std::size_t k = 1; k <= n; ++k) {
+    double dforce = kx[k - 1] - kx[k];
+    if constexpr (grounded) dforce -= ks[k - 1] * du[k];
+    dv[k - 1] += h * im[k - 1] * dforce;
+    du[k] += d * dv[k - 1];
+  }
+}
+
+// A further deviation vector through the corrector and drift, from the orbit pass's K_k, f_k''
+// and accelerations a: correct_and_drift's δ part (da padded like du, 0 at the walls).
+template <bool grounded>
+void deviation_correct_and_drift(const double* __restrict stiff, const double* __restrict curv,
+                                 const double* __restrict a, const double* __restrict ks, double* __restrict du,
+                                 double* __restrict kx, double* __restrict cx, double* __restrict da,
+                                 double* __restrict dv, const double* __restrict im, std::size_t n, double c, double d) {
+  for (std::size_t k = 0; k <= n; ++k) {
+    const double dx = du[k] - du[k + 1];
+    kx[k] = stiff[k] * dx;
+    cx[k] = curv[k] * dx;
+  }
+  for (std::size_t k = 1; k <= n; ++k) {
+    double dforce = kx[k - 1] - kx[k];
+    if constexpr (grounded) dforce -= ks[k - 1] * du[k];
+    da[k] = im[k - 1] * dforce;
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    double dg = cx[i] * (a[i] - a[i + 1]) + stiff[i] * (da[i] - da[i + 1]) - cx[i + 1] * (a[i + 1] - a[i + 2]) -
+                stiff[i + 1] * (da[i + 1] - da[i + 2]);
+    if constexpr (grounded) dg -= ks[i] * da[i + 1];
+    dv[i] += c * im[i] * dg;
+    du[i + 1] += d * dv[i];
+  }
+}
+
 template <BondForceLaw Law>
 class SplittingTangentPropagator final : public TangentPropagator {
  public:
   SplittingTangentPropagator(const Law& law, const Chain& chain, const SplittingScheme& scheme, double tau,
-                             const State& initial, const State& deviation, const LyapunovConfig& config)
-      : law_(law), scheme_(scheme), tau_(tau), n_(chain.size()), config_(config) {
+                             const State& initial, const std::vector<State>& deviations, const LyapunovConfig& config,
+                             std::function<void(TangentPropagator&)> orthonormalize)
+      : law_(law), scheme_(scheme), tau_(tau), n_(chain.size()), extra_(deviations.size() - 1), config_(config),
+        orthonormalize_(std::move(orthonormalize)) {
+    const State& deviation = deviations.front();
     up_.assign(n_ + 2, 0.0);
     dup_.assign(n_ + 2, 0.0);
     std::copy(initial.u.begin(), initial.u.end(), up_.begin() + 1);
@@ -158,6 +214,13 @@ class SplittingTangentPropagator final : public TangentPropagator {
     for (auto* a : {&f_, &stiff_, &kx_, &cx_}) a->assign(n_ + 1, 0.0);
     ap_.assign(n_ + 2, 0.0);
     dap_.assign(n_ + 2, 0.0);
+    if (extra_ > 0) {
+      for (auto* a : {&kick_stiff_, &curv_, &xkx_, &xcx_}) a->assign(n_ + 1, 0.0);
+      xda_.assign(n_ + 2, 0.0);
+      xdu_.assign(extra_ * (n_ + 2), 0.0);
+      xdv_.assign(extra_ * n_, 0.0);
+      for (std::size_t j = 1; j <= extra_; ++j) set_deviation(j, deviations[j].u, deviations[j].v);
+    }
     initial_log_norm_ = std::log(norm());
     if (!std::isfinite(initial_log_norm_))
       throw InvalidInput("deviation", ": the initial deviation vector must be finite and non-zero");
@@ -165,12 +228,14 @@ class SplittingTangentPropagator final : public TangentPropagator {
 
   void advance(std::size_t steps) override {
     if (steps == 0) return;
-    if (law_.grounded()) run<true>(steps);
-    else run<false>(steps);
+    if (law_.grounded()) extra_ > 0 ? run<true, true>(steps) : run<true, false>(steps);
+    else extra_ > 0 ? run<false, true>(steps) : run<false, false>(steps);
   }
 
-  // advance() with the on-site springs compiled in or out.
-  template <bool grounded>
+  // advance() with the on-site springs compiled in or out, and with (`several`) or without further
+  // deviation vectors: the orbit and vector 0 go through the fused kernels, which then leave K_k,
+  // f_k'' and a for the others. The orbit's arithmetic is the same either way.
+  template <bool grounded, bool several>
   void run(std::size_t steps) {
     const auto view = law_.view();
     const double* ks = view.onsite;
@@ -184,20 +249,31 @@ class SplittingTangentPropagator final : public TangentPropagator {
     // there is no corrector, and the correctors of two steps merge (2 g τ³). A renormalization
     // inside a merged boundary scales w a fraction of a step early; the map is linear, so the sum
     // of the logarithms telescopes to the same X1.
-    if (g != 0) correct<grounded>(view, g, a[0] * tau);
-    else drift(up_.data(), dup_.data(), v_.data(), dv_.data(), n_, a[0] * tau);
+    if (g != 0) correct<grounded, several>(view, g, a[0] * tau);
+    else {
+      drift(up_.data(), dup_.data(), v_.data(), dv_.data(), n_, a[0] * tau);
+      for (std::size_t e = 0; e < extra_; ++e)
+        for (std::size_t i = 0; i < n_; ++i) xdu(e)[i + 1] += a[0] * tau * xdv(e)[i];
+    }
     for (std::size_t step = 0; step < steps; ++step) {
       const bool more = step + 1 < steps;
       for (std::size_t j = 0; j <= last; ++j) {
         double after = a[j + 1] * tau;
         if (j == last && g == 0 && more) after += a[0] * tau;
-        kick_and_drift<grounded>(view, ks, up_.data(), dup_.data(), f_.data(), kx_.data(), v_.data(), dv_.data(),
-                                 im_.data(), n_, b[j] * tau, after);
+        kick_and_drift<grounded, several>(view, ks, up_.data(), dup_.data(), f_.data(), kx_.data(), v_.data(),
+                                          dv_.data(), im_.data(), n_, b[j] * tau, after, kick_stiff_.data());
+        if constexpr (several)
+          for (std::size_t e = 0; e < extra_; ++e)
+            deviation_kick_and_drift<grounded>(kick_stiff_.data(), ks, xdu(e), xkx_.data(), xdv(e), im_.data(), n_,
+                                               b[j] * tau, after);
         bond_updates_ += n_ + 1;
       }
-      if (g != 0) correct<grounded>(view, more ? 2 * g : g, more ? a[0] * tau : 0.0);
+      if (g != 0) correct<grounded, several>(view, more ? 2 * g : g, more ? a[0] * tau : 0.0);
       ++steps_;
-      if (config_.renormalize_every > 0 && steps_ % config_.renormalize_every == 0) renormalize();
+      if (config_.renormalize_every > 0 && steps_ % config_.renormalize_every == 0) {
+        if (extra_ > 0) orthonormalize_(*this);  // the owner's, between steps as renormalize()
+        else renormalize();
+      }
     }
   }
 
@@ -205,6 +281,21 @@ class SplittingTangentPropagator final : public TangentPropagator {
   std::span<const double> velocity() const override { return {v_.data(), n_}; }
   std::span<const double> deviation_displacement() const override { return {dup_.data() + 1, n_}; }
   std::span<const double> deviation_velocity() const override { return {dv_.data(), n_}; }
+  std::size_t deviation_count() const override { return extra_ + 1; }
+  std::span<const double> deviation_displacement(std::size_t j) const override {
+    return j == 0 ? deviation_displacement() : std::span<const double>{xdu_.data() + (j - 1) * (n_ + 2) + 1, n_};
+  }
+  std::span<const double> deviation_velocity(std::size_t j) const override {
+    return j == 0 ? deviation_velocity() : std::span<const double>{xdv_.data() + (j - 1) * n_, n_};
+  }
+  void set_deviation(std::size_t j, std::span<const double> du, std::span<const double> dv) override {
+    if (j > extra_ || du.size() != n_ || dv.size() != n_)
+      throw InvalidInput("deviation", ": no vector " + std::to_string(j) + " of " + std::to_string(n_) + " beads");
+    double* u = j == 0 ? dup_.data() : xdu(j - 1);
+    double* v = j == 0 ? dv_.data() : xdv(j - 1);
+    std::copy(du.begin(), du.end(), u + 1);
+    std::copy(dv.begin(), dv.end(), v);
+  }
   double time_step() const override { return tau_; }
   std::uint64_t steps_done() const override { return steps_; }
   std::uint64_t bond_updates() const override { return bond_updates_; }
@@ -212,12 +303,21 @@ class SplittingTangentPropagator final : public TangentPropagator {
   double time_unit() const override { return config_.time_unit; }
 
  private:
-  template <bool grounded, class View>
+  template <bool grounded, bool several, class View>
   void correct(const View view, double c, double d) {
-    correct_and_drift<grounded>(view, view.onsite, up_.data(), dup_.data(), f_.data(), stiff_.data(), kx_.data(),
-                                cx_.data(), ap_.data(), dap_.data(), v_.data(), dv_.data(), im_.data(), n_, c, d);
+    correct_and_drift<grounded, several>(view, view.onsite, up_.data(), dup_.data(), f_.data(), stiff_.data(),
+                                         kx_.data(), cx_.data(), ap_.data(), dap_.data(), v_.data(), dv_.data(),
+                                         im_.data(), n_, c, d, curv_.data());
+    if constexpr (several)
+      for (std::size_t e = 0; e < extra_; ++e)
+        deviation_correct_and_drift<grounded>(stiff_.data(), curv_.data(), ap_.data(), view.onsite, xdu(e), xkx_.data(),
+                                              xcx_.data(), xda_.data(), xdv(e), im_.data(), n_, c, d);
     bond_updates_ += n_ + 1;
   }
+
+  // Further vector e (vector e + 1): δu padded like u, δv.
+  double* xdu(std::size_t e) { return xdu_.data() + e * (n_ + 2); }
+  double* xdv(std::size_t e) { return xdv_.data() + e * n_; }
 
   double norm() const {
     const double t = config_.time_unit;
@@ -240,9 +340,11 @@ class SplittingTangentPropagator final : public TangentPropagator {
   Law law_;
   SplittingScheme scheme_;
   double tau_;
-  std::size_t n_;
+  std::size_t n_, extra_;  ///< beads; deviation vectors beyond the first
   LyapunovConfig config_;
   std::vector<double> up_, dup_, v_, dv_, im_, f_, stiff_, kx_, cx_, ap_, dap_;
+  std::vector<double> kick_stiff_, curv_, xkx_, xcx_, xda_, xdu_, xdv_;  // the further vectors' (several)
+  std::function<void(TangentPropagator&)> orthonormalize_;               // several vectors' renormalization
   std::uint64_t steps_ = 0, bond_updates_ = 0;
   double logs_ = 0, initial_log_norm_ = 0;
 };
@@ -296,16 +398,29 @@ std::unique_ptr<TangentPropagator> make_tangent_propagator(const ForceLaw& law, 
                                                            const SplittingScheme& scheme, double time_step,
                                                            const State& initial, const State& deviation,
                                                            const LyapunovConfig& config) {
+  return make_tangent_propagator(law, chain, scheme, time_step, initial, std::vector<State>{deviation}, config);
+}
+
+std::unique_ptr<TangentPropagator> make_tangent_propagator(const ForceLaw& law, const Chain& chain,
+                                                           const SplittingScheme& scheme, double time_step,
+                                                           const State& initial, const std::vector<State>& deviations,
+                                                           const LyapunovConfig& config,
+                                                           std::function<void(TangentPropagator&)> orthonormalize) {
   validate_propagation(chain, time_step, initial);
-  if (deviation.u.size() != chain.size() || deviation.v.size() != chain.size())
-    throw InvalidInput("deviation", ": must have one entry per bead");
+  if (deviations.empty() || deviations.size() > 2 * chain.size())
+    throw InvalidInput("deviation", ": between 1 and 2N = " + std::to_string(2 * chain.size()) + " vectors");
+  for (const State& deviation : deviations)
+    if (deviation.u.size() != chain.size() || deviation.v.size() != chain.size())
+      throw InvalidInput("deviation", ": must have one entry per bead");
   if (!(config.time_unit > 0) || !std::isfinite(config.time_unit))
     throw InvalidInput("time_unit", ": must be finite and > 0");
+  if (deviations.size() > 1 && config.renormalize_every > 0 && !orthonormalize)
+    throw InvalidInput("renormalize", ": several deviation vectors are re-orthonormalized together, by their owner");
   return std::visit(
       [&](const auto& l) -> std::unique_ptr<TangentPropagator> {
         using Law = std::decay_t<decltype(l)>;
-        return std::make_unique<SplittingTangentPropagator<Law>>(l, chain, scheme, time_step, initial, deviation,
-                                                                 config);
+        return std::make_unique<SplittingTangentPropagator<Law>>(l, chain, scheme, time_step, initial, deviations,
+                                                                 config, orthonormalize);
       },
       law);
 }

@@ -14,6 +14,7 @@
 // w is scaled back to norm 1 and ln‖w‖ added to the running sum S; X1(t) = S(t)/t.
 // Regular (e.g. linear) motion gives X1 ∝ ln t / t, chaos a positive limit.
 #include <cstddef>
+#include <functional>
 #include <memory>
 #include <span>
 #include <vector>
@@ -34,6 +35,13 @@ class TangentPropagator : public Propagator {
  public:
   virtual std::span<const double> deviation_displacement() const = 0;  ///< δu (current, scaled)
   virtual std::span<const double> deviation_velocity() const = 0;      ///< δv
+  /// How many deviation vectors the map carries along the one orbit (1 unless made with several).
+  virtual std::size_t deviation_count() const = 0;
+  /// δu and δv of vector j < deviation_count() (j = 0: the vector above).
+  virtual std::span<const double> deviation_displacement(std::size_t j) const = 0;
+  virtual std::span<const double> deviation_velocity(std::size_t j) const = 0;
+  /// Replaces vector j (N values each): what a re-orthonormalization writes back.
+  virtual void set_deviation(std::size_t j, std::span<const double> du, std::span<const double> dv) = 0;
   /// ln(‖w(t)‖/‖w(0)‖) including every renormalization so far.
   virtual double log_stretch() const = 0;
   /// X1(t) = log_stretch / t [1/s]; 0 at t = 0.
@@ -49,6 +57,20 @@ std::unique_ptr<TangentPropagator> make_tangent_propagator(const ForceLaw& law, 
                                                            const SplittingScheme& scheme, double time_step,
                                                            const State& initial, const State& deviation,
                                                            const LyapunovConfig& config = {.enabled = true});
+
+/// The same map carrying k = deviations.size() vectors (1 ≤ k ≤ 2N) along one orbit, for Lyapunov
+/// spectra (lyapunov_spectrum.hpp): the orbit and vector 0 exactly as above (so the orbit is the
+/// plain run's bit for bit), each further vector by the same expressions from the bond stiffnesses,
+/// curvatures and accelerations the orbit's pass leaves (no further force evaluations). Several
+/// vectors are not renormalized one by one: every config.renormalize_every steps (0: never) the
+/// map calls `orthonormalize` on itself between two steps, without breaking the merged drifts of
+/// a stretch of steps (so the orbit stays the plain run's, whatever the interval), and the owner
+/// re-orthonormalizes the vectors together (set_deviation).
+std::unique_ptr<TangentPropagator> make_tangent_propagator(const ForceLaw& law, const Chain& chain,
+                                                           const SplittingScheme& scheme, double time_step,
+                                                           const State& initial, const std::vector<State>& deviations,
+                                                           const LyapunovConfig& config,
+                                                           std::function<void(TangentPropagator&)> orthonormalize = {});
 
 /// The orbit from `initial` after `steps` steps of τ and the images of the deviation vectors
 /// `deviations` under the tangent map of those steps (raw: no renormalization), for Jacobians and

@@ -12,3 +12,11 @@ void dgeev_(const char* jobvl, const char* jobvr, const int* n, double* a, const
             double* vl, const int* ldvl, double* vr, const int* ldvr, double* work, const int* lwork, int* info,
             std::size_t, std::size_t);
 }
+
+// Householder QR and its Q: the re-orthonormalization of deviation vectors (lyapunov_spectrum.cpp).
+extern "C" {
+void dgeqrf_(const int* m, const int* n, double* a, const int* lda, double* tau, double* work, const int* lwork,
+             int* info);
+void dorgqr_(const int* m, const int* n, const int* k, double* a, const int* lda, const double* tau, double* work,
+             const int* lwork, int* info);
+}

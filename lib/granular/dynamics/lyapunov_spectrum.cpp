@@ -1,0 +1,132 @@
+#include "granular/dynamics/lyapunov_spectrum.hpp"
+
+#include <cmath>
+#include <string>
+
+#include "granular/dynamics/detail/dense_lapack.hpp"
+#include "granular/error.hpp"
+
+namespace granular {
+namespace {
+
+// The deviation vectors as the columns of a 2N × k matrix (column-major) in the norm's coordinates
+// (δu, t_unit δv), and back.
+std::vector<double> as_matrix(const TangentPropagator& p, std::size_t n, std::size_t k, double t) {
+  std::vector<double> a(2 * n * k);
+  for (std::size_t j = 0; j < k; ++j) {
+    const auto du = p.deviation_displacement(j), dv = p.deviation_velocity(j);
+    for (std::size_t i = 0; i < n; ++i) {
+      a[j * 2 * n + i] = du[i];
+      a[j * 2 * n + n + i] = t * dv[i];
+    }
+  }
+  return a;
+}
+
+void from_matrix(TangentPropagator& p, const std::vector<double>& a, std::size_t n, std::size_t k, double t) {
+  std::vector<double> du(n), dv(n);
+  for (std::size_t j = 0; j < k; ++j) {
+    for (std::size_t i = 0; i < n; ++i) {
+      du[i] = a[j * 2 * n + i];
+      dv[i] = a[j * 2 * n + n + i] / t;
+    }
+    p.set_deviation(j, du, dv);
+  }
+}
+
+// A = QR in place (A becomes Q); returns the diagonal of R. Throws NumericalError if LAPACK fails.
+std::vector<double> householder_qr(std::vector<double>& a, int m, int k) {
+  std::vector<double> tau(static_cast<std::size_t>(k));
+  int info = 0, lwork = -1;
+  double query = 0;
+  dgeqrf_(&m, &k, a.data(), &m, tau.data(), &query, &lwork, &info);
+  dorgqr_(&m, &k, &k, a.data(), &m, tau.data(), &query, &lwork, &info);  // its own query may ask more
+  lwork = std::max(static_cast<int>(query), k);
+  std::vector<double> work(static_cast<std::size_t>(std::max(lwork, 64 * k)));
+  lwork = static_cast<int>(work.size());
+  dgeqrf_(&m, &k, a.data(), &m, tau.data(), work.data(), &lwork, &info);
+  if (info != 0) throw NumericalError("Lyapunov spectrum: dgeqrf failed (info " + std::to_string(info) + ")");
+  std::vector<double> r(static_cast<std::size_t>(k));
+  for (int j = 0; j < k; ++j) r[static_cast<std::size_t>(j)] = a[static_cast<std::size_t>(j) * m + j];
+  dorgqr_(&m, &k, &k, a.data(), &m, tau.data(), work.data(), &lwork, &info);
+  if (info != 0) throw NumericalError("Lyapunov spectrum: dorgqr failed (info " + std::to_string(info) + ")");
+  return r;
+}
+
+// k starting vectors from `seed` (splitmix64, uniform in (−1, 1)): generic directions, the same on
+// every machine; orthonormalized by the caller.
+std::vector<State> random_vectors(std::size_t n, std::size_t k, std::uint64_t seed, double t) {
+  std::uint64_t x = seed;
+  const auto next = [&x] {
+    std::uint64_t z = (x += 0x9E3779B97F4A7C15ULL);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
+    z ^= z >> 31;
+    return 2 * (static_cast<double>(z >> 11) * 0x1.0p-53) - 1;
+  };
+  std::vector<State> w(k, State(n));
+  for (State& s : w) {
+    for (double& u : s.u) u = next();
+    for (double& v : s.v) v = next() / t;
+  }
+  return w;
+}
+
+}  // namespace
+
+LyapunovSpectrum::LyapunovSpectrum(const ForceLaw& law, const Chain& chain, const SplittingScheme& scheme,
+                                   double time_step, const State& initial, const LyapunovSpectrumConfig& config)
+    : config_(config), beads_(chain.size()), sums_(config.vectors, 0.0) {
+  if (config.vectors < 1 || config.vectors > 2 * beads_)
+    throw InvalidInput("vectors",
+                       " " + std::to_string(config.vectors) + ": between 1 and 2N = " + std::to_string(2 * beads_));
+  if (config.orthonormalize_every < 1) throw InvalidInput("orthonormalize_every", ": at least 1 step");
+  tangent_ = make_tangent_propagator(
+      law, chain, scheme, time_step, initial, random_vectors(beads_, config.vectors, config.seed, config.time_unit),
+      {.enabled = true, .renormalize_every = config.orthonormalize_every, .time_unit = config.time_unit},
+      [this](TangentPropagator&) { orthonormalize(); });
+  std::vector<double> a = as_matrix(*tangent_, beads_, config.vectors, config.time_unit);
+  householder_qr(a, static_cast<int>(2 * beads_), static_cast<int>(config.vectors));  // R not counted: t = 0
+  from_matrix(*tangent_, a, beads_, config.vectors, config.time_unit);
+}
+
+void LyapunovSpectrum::advance(std::size_t steps) {
+  tangent_->advance(steps);  // the map calls orthonormalize() every orthonormalize_every steps
+  if (tangent_->steps_done() != orthonormalized_at_) orthonormalize();
+}
+
+void LyapunovSpectrum::orthonormalize() {
+  const std::size_t k = config_.vectors;
+  std::vector<double> a = as_matrix(*tangent_, beads_, k, config_.time_unit);
+  const std::vector<double> r = householder_qr(a, static_cast<int>(2 * beads_), static_cast<int>(k));
+  for (std::size_t j = 0; j < k; ++j) {
+    if (!(std::abs(r[j]) > 0) || !std::isfinite(r[j]))
+      throw NumericalError("Lyapunov spectrum: deviation vector " + std::to_string(j + 1) + " became " +
+                           (std::isfinite(r[j]) ? "dependent on the others" : "non-finite"));
+    sums_[j] += std::log(std::abs(r[j]));
+  }
+  from_matrix(*tangent_, a, beads_, k, config_.time_unit);
+  orthonormalized_at_ = tangent_->steps_done();
+}
+
+std::vector<double> LyapunovSpectrum::exponents() const {
+  std::vector<double> out(sums_.size(), 0.0);
+  const double t = time();
+  if (t > 0)
+    for (std::size_t j = 0; j < out.size(); ++j) out[j] = sums_[j] / t;
+  return out;
+}
+
+std::vector<State> LyapunovSpectrum::vectors() const {
+  std::vector<State> out;
+  for (std::size_t j = 0; j < config_.vectors; ++j) {
+    const auto du = tangent_->deviation_displacement(j), dv = tangent_->deviation_velocity(j);
+    State s(beads_);
+    std::copy(du.begin(), du.end(), s.u.begin());
+    std::copy(dv.begin(), dv.end(), s.v.begin());
+    out.push_back(std::move(s));
+  }
+  return out;
+}
+
+}  // namespace granular
