@@ -33,6 +33,15 @@ def test_breathers_rejects_bad_input():
         gr.breathers("not a chain", mode=3)
 
 
+@pytest.mark.parametrize("name", ["tolerance", "stability_tolerance"])
+@pytest.mark.parametrize("bad", [0.0, -1e-10, float("nan"), float("inf")])
+def test_breathers_refuses_tolerances_that_are_not_positive(name, bad):
+    # Refused by the library, as the tool's --tolerance and --stability-tolerance are (once zero or
+    # below ran Newton to its limit, or called every orbit unstable).
+    with pytest.raises(ValueError, match=name):
+        gr.breathers(gr.diatomic(N=21, xi=0.5), mode=3, max_points=1, **{name: bad})
+
+
 def test_breathers_from_a_profile_and_by_arclength():
     types = [2 if i % 2 == 0 else 1 for i in range(21)]
     chain = gr.from_types(types, xi=0.5)

@@ -414,6 +414,52 @@ TEST(BreatherBranch, Hdf5FileHoldsTheProfilesAndMultipliers) {
   }
 }
 
+// A target ends the branch at exactly the frequency asked for. These six come back from
+// kHz → rad/s → kHz a rounding off (33.2 as 33.20000000000001, 32.5 as 32.49999999999999):
+// compared after that round trip, the branch once ran past them to max_points or computed the
+// target twice and divided its secant by zero. The light impurity's mode is put 0.4 % above each
+// target by F0 (every frequency of a Hertz chain goes as F0^{1/6}), a few steps down to it.
+TEST(BreatherBranch, BranchEndsExactlyAtTargetsThatDoNotRoundTrip) {
+  const auto base = impurity_config();
+  const double top = spectrum(dynamical_matrix(base.chain.chain(0))).freq_khz.back();
+  for (double target : {12.3, 15.0, 25.0, 32.5, 32.8, 33.2}) {
+    ASSERT_NE(2 * std::numbers::pi * target * 1e3 / (2 * std::numbers::pi) / 1e3, target);  // the case at issue
+    auto c = base;
+    c.chain.F0 = base.chain.F0 * std::pow(1.004 * target / top, 6);
+    c.target_khz = target;
+    c.max_points = 20;
+    const auto branch = continue_breather(c);
+    ASSERT_EQ(branch.stop_reason, "target frequency reached") << target << " kHz";
+    EXPECT_LT(branch.points.size(), c.max_points);
+    EXPECT_EQ(branch.points.back().freq_khz, target);
+    EXPECT_NEAR(branch.points.back().omega, 2 * std::numbers::pi * target * 1e3, 1e-12 * target * 1e4);
+    for (std::size_t k = 1; k < branch.points.size(); ++k)
+      EXPECT_LT(branch.points[k].freq_khz, branch.points[k - 1].freq_khz) << target << " kHz, point " << k;
+  }
+}
+
+// Tolerances of zero, below zero or NaN are refused by the library (so alike by the tool and Python).
+TEST(BreatherBranch, ToleranceAndStabilityToleranceMustBePositive) {
+  for (double bad : {0.0, -1e-10, std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {
+    auto c = impurity_config();
+    c.shooting.tolerance = bad;
+    try {
+      validate(c);
+      ADD_FAILURE() << "tolerance " << bad << " accepted";
+    } catch (const InvalidInput& e) {
+      EXPECT_EQ(e.parameter(), "tolerance");
+    }
+    c = impurity_config();
+    c.stability_tolerance = bad;
+    try {
+      validate(c);
+      ADD_FAILURE() << "stability_tolerance " << bad << " accepted";
+    } catch (const InvalidInput& e) {
+      EXPECT_EQ(e.parameter(), "stability_tolerance");
+    }
+  }
+}
+
 TEST(BreatherBranch, BadInputIsRefusedBeforeAnyWork) {
   const BandEdges edges = band_edges(steel, r1, 0.5, 10);
   BreatherBranchConfig c;

@@ -188,6 +188,27 @@ TEST(BreatherCradle, BreatherIsPeriodicAndHardens) {
   }
 }
 
+// Going up (these breathers harden) to 8.0 kHz, which comes back from kHz → rad/s → kHz as
+// 7.999999999999999: the branch ends at exactly 8.0 after a few steps, each point above the last
+// (it once computed the target twice and divided its secant by zero). The on-site frequency is
+// put 0.4 % below the target by k0 (f ∝ k0^{1/2}).
+TEST(BreatherCradle, BranchEndsExactlyAtTargetGoingUp) {
+  const double target = 8.0;
+  auto c = cradle_config(1e-3);
+  const Chain chain = c.chain.chain(0);
+  const double onsite_khz =
+      std::sqrt(chain.onsite[cradle_centre] * chain.inverse_mass[cradle_centre]) / (2e3 * std::numbers::pi);
+  c.chain.quasi->k0_n_per_m = cradle_spring * std::pow(target / 1.004 / onsite_khz, 2);
+  c.target_khz = target;
+  c.max_points = 20;
+  const auto branch = continue_breather(c);
+  ASSERT_EQ(branch.stop_reason, "target frequency reached");
+  EXPECT_LT(branch.points.size(), c.max_points);
+  EXPECT_EQ(branch.points.back().freq_khz, target);
+  for (std::size_t k = 1; k < branch.points.size(); ++k)
+    EXPECT_GT(branch.points[k].freq_khz, branch.points[k - 1].freq_khz) << "point " << k;
+}
+
 TEST(BreatherCradle, ZeroPrecompressionNeedsOnsiteSprings) {
   const auto parameter_of = [](const BreatherBranchConfig& c) {
     try {

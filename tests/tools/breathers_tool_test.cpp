@@ -149,6 +149,13 @@ TEST(BreathersTool, BadInputExitsWithOneLineAndWritesNothing) {
       {"--quasi s1 --k0-n-per-m 1e7 --F0 0 --N 21 --site 22", "--site", 2},
       {"--quasi s1 --k0-n-per-m 1e7 --F0 0 --N 21 --start-khz 1", "--start-khz", 2},
       {"--config " + config + " --xi 0.5 --mode 3 --site 2", "--site", 2},
+      // Tolerances: finite and > 0 (zero once ran Newton to its iteration limit, or called every orbit unstable).
+      {"--config " + config + " --xi 0.5 --mode 3 --tolerance 0", "--tolerance", 2},
+      {"--config " + config + " --xi 0.5 --mode 3 --tolerance -1e-10", "--tolerance", 2},
+      {"--config " + config + " --xi 0.5 --mode 3 --tolerance nan", "--tolerance", 2},
+      {"--config " + config + " --xi 0.5 --mode 3 --stability-tolerance 0", "--stability-tolerance", 2},
+      {"--config " + config + " --xi 0.5 --mode 3 --stability-tolerance -1e-6", "--stability-tolerance", 2},
+      {"--config " + config + " --xi 0.5 --mode 3 --stability-tolerance inf", "--stability-tolerance", 2},
       {"--config " + config + " --xi 0.5 --seed-file " + dir + "/missing.txt --start-khz 30", "--seed-file", 2},
       {"--config " + config + " --xi 0.5 --seed-file " + config + " --start-khz 30 --mode 3", "--seed-file", 2},
       // Newton cannot reach a residual below rounding: a numerical failure.

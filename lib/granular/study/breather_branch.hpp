@@ -77,7 +77,8 @@ struct BreatherBranchConfig {
 };
 
 /// Throws InvalidInput naming the field (mode, near_khz, start_khz, target_khz, step_khz,
-/// max_points, N, F0, site, law, seed_profile, floquet_multipliers) before any work. N: dense Newton
+/// max_points, N, F0, site, law, seed_profile, floquet_multipliers, tolerance (shooting's),
+/// stability_tolerance: both finite and > 0) before any work. N: dense Newton
 /// (also for the arclength corrector) beyond shooting.max_dense_beads. F0: 0
 /// without on-site springs (the uncompressed Hertz chain has no breathers: James et al. 2013).
 void validate(const BreatherBranchConfig& config);
