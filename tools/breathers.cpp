@@ -9,6 +9,7 @@
 #include "common/outputs.hpp"
 #include "common/tool_main.hpp"
 #include "granular/io/atomic_file.hpp"
+#include "granular/io/hdf5_file.hpp"
 #include "granular/model/configuration_file.hpp"
 #include "granular/study/breather_branch.hpp"
 
@@ -84,6 +85,7 @@ int main(int argc, char** argv) {
         config.floquet_method = parse_floquet_method(floquet);
         if (!seed_file.empty()) config.seed_profile = read_displacements_file(seed_file, "seed_profile");
         validate(config);
+        load_hdf5_writer();  // the profiles' file: a missing component fails here, not after the branch
         tool::warn(radius_warnings(config.chain, tool::radius_options(chain_options)));
         const auto claim = tool::claim_output(output, meta.command());
         const TableOutputs paths = table_outputs(output);
