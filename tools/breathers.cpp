@@ -22,7 +22,8 @@ int main(int argc, char** argv) {
       "multipliers. At --F0 0 only on on-site springs (--quasi s1 --k0-n-per-m K [N/m]): seeded from one\n"
       "bead (--site) above its on-site frequency. Writes PREFIX.csv (columns "
       "omega_rad_s,freq_khz,energy_J,amplitude_m,centre,max_multiplier,\n"
-      "stable,newton_iterations,residual,max_open_fraction), PREFIX.h5 (profiles x0, multipliers, open fractions\n"
+      "stable,complete,newton_iterations,residual,max_open_fraction), PREFIX.h5 (profiles x0, multipliers, open "
+      "fractions\n"
       "per point) and PREFIX.json (parameters, Newton histories, multiplier checks).",
       "breathers"};
   tool::describe_common(app);

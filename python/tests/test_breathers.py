@@ -20,6 +20,9 @@ def test_breathers_equals_the_tool(tools, tmp_path):
                         ("residual", "residual")):
         assert_identical(getattr(b, key), csv[column])
     assert b.metadata["continuation"]["stop_reason"] == meta["continuation"]["stop_reason"]
+    # The verdict and its completeness, as in the CSV (dense at 21 beads: every multiplier).
+    assert (b.stable == (csv["stable"] == 1)).all() and (b.complete == (csv["complete"] == 1)).all()
+    assert b.complete.all()
     assert b.profiles.shape == (3, 21) and b.open_fraction.shape == (3, 22) and b.multipliers.shape == (3, 42)
     # Symplectic: the product of the multipliers is 1.
     assert np.allclose(np.prod(b.multipliers, axis=1), 1, atol=1e-8)

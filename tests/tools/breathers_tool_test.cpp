@@ -37,18 +37,19 @@ TEST(BreathersTool, ShortDiatomicBranchWritesCsvAndJson) {
   std::string line;
   std::getline(csv, line);
   EXPECT_EQ(line,
-            "omega_rad_s,freq_khz,energy_J,amplitude_m,centre,max_multiplier,stable,newton_iterations,residual,"
-            "max_open_fraction");
+            "omega_rad_s,freq_khz,energy_J,amplitude_m,centre,max_multiplier,stable,complete,newton_iterations,"
+            "residual,max_open_fraction");
   int rows = 0;
   double previous = 1e300;
   while (std::getline(csv, line)) {
     std::vector<double> v;
     std::stringstream fields(line);
     for (std::string f; std::getline(fields, f, ',');) v.push_back(std::stod(f));
-    ASSERT_EQ(v.size(), 10u);
+    ASSERT_EQ(v.size(), 11u);
     EXPECT_LT(v[1], previous);  // down from the optical edge
     EXPECT_NEAR(v[0], 2 * 3.141592653589793 * v[1] * 1e3, 1e-9 * v[0]);
-    EXPECT_LE(v[8], 1e-10);
+    EXPECT_EQ(v[7], 1);                         // 21 beads: the dense method, every multiplier
+    EXPECT_EQ(v[6], v[5] <= 1 + 1e-6 ? 1 : 0);  // the verdict is the column's max|mu| against the tolerance
     previous = v[1];
     ++rows;
   }

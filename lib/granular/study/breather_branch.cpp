@@ -456,13 +456,13 @@ BreatherBranch continue_breather(const BreatherBranchConfig& c,
 }
 
 void write_breather_csv(std::ostream& out, const BreatherBranch& branch) {
-  out << "omega_rad_s,freq_khz,energy_J,amplitude_m,centre,max_multiplier,stable,newton_iterations,residual,"
+  out << "omega_rad_s,freq_khz,energy_J,amplitude_m,centre,max_multiplier,stable,complete,newton_iterations,residual,"
          "max_open_fraction\n";
   for (const auto& p : branch.points)
     out << format_number(p.omega) << ',' << format_number(p.freq_khz) << ',' << format_number(p.energy) << ','
         << format_number(p.amplitude) << ',' << p.centre + 1 << ',' << format_number(p.floquet.max_modulus) << ','
-        << (p.floquet.stable ? 1 : 0) << ',' << p.iterations << ',' << format_number(p.residual) << ','
-        << format_number(p.max_open_fraction) << '\n';
+        << (p.floquet.stable ? 1 : 0) << ',' << (p.floquet.complete ? 1 : 0) << ',' << p.iterations << ','
+        << format_number(p.residual) << ',' << format_number(p.max_open_fraction) << '\n';
 }
 
 std::unique_ptr<Hdf5File> write_breather_hdf5(const std::string& path, const BreatherBranch& b) {
@@ -545,8 +545,10 @@ nlohmann::json describe_breather_branch(const BreatherBranchConfig& c, const Bre
                       {"instability", p.floquet.instability},
                       {"growth_rate_per_s", p.floquet.growth_rate},
                       {"reciprocal_error", p.floquet.reciprocal_error},
-                      {"conjugate_error", p.floquet.conjugate_error},
-                      {"product_error", p.floquet.product_error}});
+                      {"product_error", p.floquet.product_error},
+                      {"unit_pair_distance", p.floquet.unit_pair_distance},
+                      {"ritz_residual", p.floquet.ritz_residual},
+                      {"ritz_estimates", p.floquet.ritz_estimates}});
   j["points"] = points;
   return j;
 }
