@@ -440,6 +440,29 @@ TEST(BreatherBranch, BranchEndsExactlyAtTargetsThatDoNotRoundTrip) {
   }
 }
 
+// The same by pseudo-arclength, whose steps land where the corrector puts ω_b: the branch still ends
+// at exactly the target (a corrected point past it is replaced by the natural step onto it), every
+// point between the start and the target. The mode 1.5 % above the target: several arc steps.
+TEST(BreatherBranch, ArclengthBranchEndsExactlyAtItsTarget) {
+  const auto base = impurity_config();
+  const double top = spectrum(dynamical_matrix(base.chain.chain(0))).freq_khz.back();
+  for (double target : {32.5, 33.2}) {
+    auto c = base;
+    c.chain.F0 = base.chain.F0 * std::pow(1.015 * target / top, 6);
+    c.target_khz = target;
+    c.max_points = 30;
+    c.continuation = Continuation::arclength;
+    const auto branch = continue_breather(c);
+    ASSERT_EQ(branch.stop_reason, "target frequency reached") << target << " kHz";
+    EXPECT_GE(branch.points.size(), 4u);  // arclength steps were taken
+    EXPECT_EQ(branch.points.back().freq_khz, target);
+    for (std::size_t k = 1; k < branch.points.size(); ++k) {
+      EXPECT_LT(branch.points[k].freq_khz, branch.points[k - 1].freq_khz) << target << " kHz, point " << k;
+      EXPECT_GE(branch.points[k].freq_khz, target) << target << " kHz, point " << k;
+    }
+  }
+}
+
 // Tolerances of zero, below zero or NaN are refused by the library (so alike by the tool and Python).
 TEST(BreatherBranch, ToleranceAndStabilityToleranceMustBePositive) {
   for (double bad : {0.0, -1e-10, std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {
