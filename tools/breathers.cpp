@@ -9,6 +9,7 @@
 #include "common/outputs.hpp"
 #include "common/tool_main.hpp"
 #include "granular/io/atomic_file.hpp"
+#include "granular/io/hdf5_file.hpp"
 #include "granular/model/configuration_file.hpp"
 #include "granular/study/breather_branch.hpp"
 
@@ -21,7 +22,8 @@ int main(int argc, char** argv) {
       "multipliers. At --F0 0 only on on-site springs (--quasi s1 --k0-n-per-m K [N/m]): seeded from one\n"
       "bead (--site) above its on-site frequency. Writes PREFIX.csv (columns "
       "omega_rad_s,freq_khz,energy_J,amplitude_m,centre,max_multiplier,\n"
-      "stable,newton_iterations,residual,max_open_fraction), PREFIX.h5 (profiles x0, multipliers, open fractions\n"
+      "stable,complete,newton_iterations,residual,max_open_fraction), PREFIX.h5 (profiles x0, multipliers, open "
+      "fractions\n"
       "per point) and PREFIX.json (parameters, Newton histories, multiplier checks).",
       "breathers"};
   tool::describe_common(app);
@@ -84,6 +86,7 @@ int main(int argc, char** argv) {
         config.floquet_method = parse_floquet_method(floquet);
         if (!seed_file.empty()) config.seed_profile = read_displacements_file(seed_file, "seed_profile");
         validate(config);
+        load_hdf5_writer();  // the profiles' file: a missing component fails here, not after the branch
         tool::warn(radius_warnings(config.chain, tool::radius_options(chain_options)));
         const auto claim = tool::claim_output(output, meta.command());
         const TableOutputs paths = table_outputs(output);

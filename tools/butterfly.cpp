@@ -41,7 +41,8 @@ int main(int argc, char** argv) {
   tool::add_option(app, "--ratios", ratios, "ratios beta > 0: start:stop[:step] (step 0.005) or a,b,c");
   tool::add_parameters(app, o, chain_parameters(), {.only = {"N", "F0", "R1", "seed", "realization"}});
   tool::add_option(app, "--largest-box", config.largest_box,
-                   "largest box of the dimension fit, as a fraction of the spectrum's extent");
+                   "largest box of the dimension fit, as a fraction of the spectrum's extent (0: 5 %, or 8 smallest "
+                   "boxes if more)");
   tool::add_option(app, "--smallest-box", config.smallest_box_spacings,
                    "smallest box of the fit, in mean level spacings (extent / N)");
   tool::add_integer(app, "--box-sizes", config.box_sizes, "box sizes fitted, evenly spaced in log");

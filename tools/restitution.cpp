@@ -27,7 +27,9 @@ int main(int argc, char** argv) {
   std::string speeds = "0.01", gammas = "1e-6", output = "restitution", integrator = "saba2c";
   CollisionConfig config;
   tool::add_option(app, "--impact-speed", speeds, "impact speeds v [m/s]: start:stop[:step] or a comma list");
-  tool::add_option(app, "--kk-gamma", gammas, "Kuwabara-Kono gamma [s]: start:stop[:step] or a comma list");
+  tool::add_option(app, "--kk-gamma", gammas,
+                   "Kuwabara-Kono gamma [s]: start:stop[:step] or a comma list (the damped contact can pull while it "
+                   "unloads)");
   tool::add_option(app, "--R1", config.radius, "bead radius [m] (steel beads)");
   tool::add_option(app, "--steps-per-collision", config.steps_per_collision, "time step = Hertz contact time / this");
   tool::add_option(app, "--integrator", integrator, "saba2c | saba2 | aba864 | srkn14a");

@@ -14,6 +14,7 @@
 #include "common/spectrum_options.hpp"
 #include "common/tool_main.hpp"
 #include "granular/io/atomic_file.hpp"
+#include "granular/io/hdf5_file.hpp"
 #include "granular/parallel/mpi_context.hpp"
 #include "granular/study/solve_estimate.hpp"
 #include "granular/study/spectrum_file.hpp"
@@ -59,6 +60,7 @@ int main(int argc, char** argv) {
     const SpectrumRequest request{choose_modes(selection_choices), config, method};
     const ModeSelection& selection = request.selection;
     validate(request.config, selection);
+    if (config.vectors) load_hdf5_writer();  // before the solve, not after it
     const ChainRecipe recipe = tool::chain_recipe(chain_options);
     validate(recipe);  // the matrix is stored: at most 1e8 beads
     // Read a piece at a time: a drawn chain's matrix is built without the chain's arrays beside it.

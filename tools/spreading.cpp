@@ -12,6 +12,7 @@
 #include "common/spreading_outputs.hpp"
 #include "common/tool_main.hpp"
 #include "granular/ensemble/checkpoint_log.hpp"
+#include "granular/io/hdf5_file.hpp"
 #include "granular/parallel/mpi_context.hpp"
 #include "granular/study/spreading_files.hpp"
 
@@ -46,6 +47,7 @@ int main(int argc, char** argv) {
                      c.profile_realizations = more.profile ? c.realizations : 0;
                      const SpreadingRunConfig& d = c.dynamics;
                      tool::apply(more, c);
+                     if (!more.energy_map_file.empty()) load_hdf5_writer();  // before the run, not after it
                      const nlohmann::json step_rule = tool::validate_and_settle(c);
                      SpreadingPaths paths = spreading_paths(output, ensemble, more.profile, !d.forces.sites.empty());
                      paths.final_state = more.final_state, paths.energy_map = more.energy_map_file,

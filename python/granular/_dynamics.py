@@ -43,8 +43,8 @@ without it, largest |u_n| = alpha
 _BEYOND_DOC = """\
     damping_time: on-site viscous damping time tau_d [s], force -(m/tau_d) du/dt on each bead; 0 = none
     kk_gamma: Kuwabara-Kono contact damping gamma_KK [s], bond force A[d]^{3/2} + gamma_KK A [d]^{1/2} dd/dt \
-while in contact; 0 = none. With either, energy_error is |H + dissipated - H0|/H0 and the whole chain is \
-integrated
+while in contact, not clipped at zero (a damped contact can pull while it unloads); 0 = none. With either, \
+energy_error is |H + dissipated - H0|/H0 and the whole chain is integrated
     mle: also the maximal Lyapunov exponent X1(t) [1/s] by the tangent map of the same scheme (conservative \
 runs only: not with damping or integrator='reference'); renormalize: steps between renormalizations of the \
 deviation vector (>= 1)

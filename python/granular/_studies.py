@@ -160,12 +160,13 @@ class Butterfly:
 
 
 def butterfly(kind="s1", *, ratios="0.005:0.995:0.005", N=100, modulation=0.0, phase=None, angle=45.0, k0=4.0,
-              seed=1, realization=0, F0=10.0, R1=_core.paper_r1, largest_box=0.5, smallest_box=4.0, box_sizes=12,
+              seed=1, realization=0, F0=10.0, R1=_core.paper_r1, largest_box=0.0, smallest_box=4.0, box_sizes=12,
               threads=0, progress=False):
     """The Hofstadter butterfly of a quasiperiodic chain (docs/physics.md, "Quasiperiodic chains"): every mode's
     frequency [kHz] and displacement IPR for each incommensurate ratio of `ratios` (a sequence, a number or the
     tools' range string), one chain (one phase) per ratio, and the box-counting dimension of each spectrum fitted
-    on boxes from largest_box x its extent down to smallest_box mean level spacings (box_sizes sizes). kind,
+    on boxes from largest_box x its extent (0: 5 %, or 8 smallest boxes if more) down to smallest_box mean level
+    spacings (box_sizes sizes). kind,
     modulation, phase, angle, k0, seed, realization, N, F0, R1: as granular.quasiperiodic. The same numbers as
     the butterfly tool for the same options. Returns a granular.Butterfly."""
     c = _core.ButterflyConfig()

@@ -20,6 +20,9 @@ def test_breathers_equals_the_tool(tools, tmp_path):
                         ("residual", "residual")):
         assert_identical(getattr(b, key), csv[column])
     assert b.metadata["continuation"]["stop_reason"] == meta["continuation"]["stop_reason"]
+    # The verdict and its completeness, as in the CSV (dense at 21 beads: every multiplier).
+    assert (b.stable == (csv["stable"] == 1)).all() and (b.complete == (csv["complete"] == 1)).all()
+    assert b.complete.all()
     assert b.profiles.shape == (3, 21) and b.open_fraction.shape == (3, 22) and b.multipliers.shape == (3, 42)
     # Symplectic: the product of the multipliers is 1.
     assert np.allclose(np.prod(b.multipliers, axis=1), 1, atol=1e-8)
@@ -31,6 +34,15 @@ def test_breathers_rejects_bad_input():
         gr.breathers(gr.diatomic(N=21))
     with pytest.raises(TypeError):
         gr.breathers("not a chain", mode=3)
+
+
+@pytest.mark.parametrize("name", ["tolerance", "stability_tolerance"])
+@pytest.mark.parametrize("bad", [0.0, -1e-10, float("nan"), float("inf")])
+def test_breathers_refuses_tolerances_that_are_not_positive(name, bad):
+    # Refused by the library, as the tool's --tolerance and --stability-tolerance are (once zero or
+    # below ran Newton to its limit, or called every orbit unstable).
+    with pytest.raises(ValueError, match=name):
+        gr.breathers(gr.diatomic(N=21, xi=0.5), mode=3, max_points=1, **{name: bad})
 
 
 def test_breathers_from_a_profile_and_by_arclength():

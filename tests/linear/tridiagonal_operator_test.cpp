@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "granular/error.hpp"
+#include "granular/linear/detail/lapack.hpp"
 #include "granular/linear/detail/lapack_eigensolver.hpp"
 #include "granular/linear/detail/sturm_bisection.hpp"
 #include "granular/linear/dynamical_matrix.hpp"
@@ -27,6 +28,37 @@ double dot(const Eigen::MatrixXd& a, Eigen::Index i, const Eigen::MatrixXd& b, E
 SymTridiagonal anderson_matrix(std::size_t n, std::uint64_t seed = 3) {
   const auto types = realization_configuration(Disorder::anderson, 0.5, n, seed, 0);
   return dynamical_matrix(make_chain(radii_of(types, 4.76e-3, 0.5), 10.0));
+}
+
+// LAPACK sizes are ints: one past 2^31 − 1 is refused, and so is a negative one, which is what a
+// workspace query returns when LAPACK's own int arithmetic wrapped (dstevd's n² + 4n + 1 at
+// n = 46341 comes back as −2147293650), instead of becoming a one-entry workspace.
+TEST(LapackEigensolver, SizesPastAnIntAndWrappedSizesAreRefused) {
+  EXPECT_EQ(detail::lapack_int(2147483647, "a workspace"), 2147483647);
+  EXPECT_THROW(detail::lapack_int(2147483648, "a workspace"), InvalidInput);
+  const std::int64_t n = 46341, wrapped = static_cast<std::int32_t>(static_cast<std::uint32_t>(n * n + 4 * n + 1));
+  ASSERT_LT(wrapped, 0);
+  try {
+    detail::lapack_int(wrapped, "dstevd's workspace");
+    ADD_FAILURE() << "a wrapped size accepted";
+  } catch (const InvalidInput& e) {
+    EXPECT_EQ(e.parameter(), "N");
+  }
+  EXPECT_FALSE(detail::stevd_workspace_overflows(46338));
+  EXPECT_TRUE(detail::stevd_workspace_overflows(46339));  // the message once said N <= 46340
+}
+
+// Every mode with eigenvectors above N = 46338 is refused for its 32-bit sizes whichever driver is
+// preferred: a failing driver falls back to dstevd (it once was refused only with stevd preferred,
+// and otherwise only for memory, on machines that have less).
+TEST(LapackEigensolver, VectorsPastTheStevdLimitAreRefusedForEveryDriver) {
+  for (LapackDriver driver : {LapackDriver::stevr, LapackDriver::stemr, LapackDriver::steqr, LapackDriver::stevd}) {
+    const SpectrumConfig config{.driver = driver, .vectors = true};
+    const std::string problem = full_spectrum_problem(46339, config, all_modes());
+    EXPECT_NE(problem.find("32-bit"), std::string::npos) << to_string(driver) << ": " << problem;
+  }
+  EXPECT_EQ(full_spectrum_problem(46339, SpectrumConfig{.driver = LapackDriver::stevr}, all_modes()).find("32-bit"),
+            std::string::npos);  // values only: dstevr's 20 N workspace fits
 }
 
 TEST(TridiagonalOperator, CountBelowMatchesFullSpectrumMidGaps) {

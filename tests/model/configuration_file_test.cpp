@@ -1,8 +1,14 @@
 #include "granular/model/configuration_file.hpp"
 
+#include <fstream>
+#include <string>
+
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include "granular/error.hpp"
+#include "granular/model/chain_recipe.hpp"
+#include "scratch.hpp"
 
 namespace granular {
 namespace {
@@ -51,6 +57,35 @@ TEST(ConfigurationFile, ExampleFilesLoad) {
   EXPECT_EQ(read_configuration_file(std::string(GRANULAR_DATA_DIR) + "/examples/diatomic-10.types").size(), 10u);
   EXPECT_EQ(read_radii_file(std::string(GRANULAR_DATA_DIR) + "/examples/single-impurity-11.radii").size(), 11u);
   EXPECT_THROW(read_radii_file("/nonexistent/file"), InvalidInput);
+}
+
+// A case names a types or radii file by its path and the hash of the values read from it: replay
+// and resume of a case whose file was edited since are refused naming the file and its path (the
+// path alone once read an edited file as the same chain); comments and spacing do not count.
+TEST(ConfigurationFile, AnEditedFileIsRefusedWhereACaseNamesIt) {
+  const auto write = [](const std::string& path, const std::string& text) { std::ofstream(path) << text; };
+  for (const bool radii : {false, true}) {
+    const std::string name = radii ? "radii_file" : "config_file";
+    const std::string path = testing::scratch_path("bead-file-hash", radii ? "chain.radii" : "chain.types");
+    write(path, radii ? "0.00476\n0.00238\n0.00476\n" : "1\n2\n1\n");
+    ChainRecipe r;
+    r.source = path;
+    if (radii) r.given_radii = read_radii_file(path);
+    else r.given_types = read_configuration_file(path);
+    nlohmann::json fields;
+    describe_fields(r, fields);
+    ASSERT_TRUE(fields.contains(name + "_hash")) << fields.dump();
+    write(path, std::string("# the same values\n") + (radii ? "0.00476\n 0.00238\n0.00476\n" : "1\n 2\n1\n"));
+    EXPECT_NO_THROW(parse_recipe_fields(fields)) << name;
+    write(path, radii ? "0.00476\n0.00476\n0.00476\n" : "1\n1\n1\n");
+    try {
+      parse_recipe_fields(fields);
+      ADD_FAILURE() << name << ": an edited file was accepted";
+    } catch (const InvalidInput& e) {
+      EXPECT_EQ(e.parameter(), name);
+      EXPECT_NE(std::string(e.what()).find(path), std::string::npos) << e.what();
+    }
+  }
 }
 
 }  // namespace

@@ -50,6 +50,21 @@ TEST(SpreadingTool, DampingAndMleColumns) {
   std::filesystem::remove_all(dir);
 }
 
+// The Kuwabara-Kono force is not clipped at zero (docs/physics.md): every --kk-gamma help says that
+// its contacts can pull, unlike the elastic contact's.
+TEST(BeyondTools, KuwabaraKonoHelpSaysItsContactsCanPull) {
+  const std::string out = std::filesystem::temp_directory_path() / ("granular-help-" + std::to_string(::getpid()));
+  for (const char* tool : {"spreading", "restitution"}) {
+    ASSERT_EQ(std::system(("'" + tool_path(tool) + "' --help >" + out).c_str()), 0) << tool;
+    const std::string help = read_file(out);
+    const auto at = help.find("--kk-gamma");
+    ASSERT_NE(at, std::string::npos) << tool;
+    const std::string entry = help.substr(at, help.find("\n  -", at + 1) - at);
+    EXPECT_NE(entry.find("can pull"), std::string::npos) << tool << ": " << entry;
+  }
+  std::filesystem::remove(out);
+}
+
 TEST(BeyondTools, BadInputExitsTwoNamingTheFlagWithNoOutput) {
   const std::string dir = scratch_folder("beyond-bad");
   const std::pair<const char*, const char*> cases[] = {

@@ -37,18 +37,19 @@ TEST(BreathersTool, ShortDiatomicBranchWritesCsvAndJson) {
   std::string line;
   std::getline(csv, line);
   EXPECT_EQ(line,
-            "omega_rad_s,freq_khz,energy_J,amplitude_m,centre,max_multiplier,stable,newton_iterations,residual,"
-            "max_open_fraction");
+            "omega_rad_s,freq_khz,energy_J,amplitude_m,centre,max_multiplier,stable,complete,newton_iterations,"
+            "residual,max_open_fraction");
   int rows = 0;
   double previous = 1e300;
   while (std::getline(csv, line)) {
     std::vector<double> v;
     std::stringstream fields(line);
     for (std::string f; std::getline(fields, f, ',');) v.push_back(std::stod(f));
-    ASSERT_EQ(v.size(), 10u);
+    ASSERT_EQ(v.size(), 11u);
     EXPECT_LT(v[1], previous);  // down from the optical edge
     EXPECT_NEAR(v[0], 2 * 3.141592653589793 * v[1] * 1e3, 1e-9 * v[0]);
-    EXPECT_LE(v[8], 1e-10);
+    EXPECT_EQ(v[7], 1);                         // 21 beads: the dense method, every multiplier
+    EXPECT_EQ(v[6], v[5] <= 1 + 1e-6 ? 1 : 0);  // the verdict is the column's max|mu| against the tolerance
     previous = v[1];
     ++rows;
   }
@@ -149,6 +150,13 @@ TEST(BreathersTool, BadInputExitsWithOneLineAndWritesNothing) {
       {"--quasi s1 --k0-n-per-m 1e7 --F0 0 --N 21 --site 22", "--site", 2},
       {"--quasi s1 --k0-n-per-m 1e7 --F0 0 --N 21 --start-khz 1", "--start-khz", 2},
       {"--config " + config + " --xi 0.5 --mode 3 --site 2", "--site", 2},
+      // Tolerances: finite and > 0 (zero once ran Newton to its iteration limit, or called every orbit unstable).
+      {"--config " + config + " --xi 0.5 --mode 3 --tolerance 0", "--tolerance", 2},
+      {"--config " + config + " --xi 0.5 --mode 3 --tolerance -1e-10", "--tolerance", 2},
+      {"--config " + config + " --xi 0.5 --mode 3 --tolerance nan", "--tolerance", 2},
+      {"--config " + config + " --xi 0.5 --mode 3 --stability-tolerance 0", "--stability-tolerance", 2},
+      {"--config " + config + " --xi 0.5 --mode 3 --stability-tolerance -1e-6", "--stability-tolerance", 2},
+      {"--config " + config + " --xi 0.5 --mode 3 --stability-tolerance inf", "--stability-tolerance", 2},
       {"--config " + config + " --xi 0.5 --seed-file " + dir + "/missing.txt --start-khz 30", "--seed-file", 2},
       {"--config " + config + " --xi 0.5 --seed-file " + config + " --start-khz 30 --mode 3", "--seed-file", 2},
       // Newton cannot reach a residual below rounding: a numerical failure.

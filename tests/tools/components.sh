@@ -53,6 +53,22 @@ expect_missing libgranular_hdf5.so "$work/miss" "$spectrum" --N 50 --quiet --nea
   --vectors "$work/miss.h5" --output "$work/miss"
 expect_missing libgranular_hdf5.so "$work/missmap" "$spreading" "${run[@]}" --energy-map "$work/missmap.h5" \
   --map-samples 5 --output "$work/missmap"
+# breathers always writes its profiles (.h5): without the component it fails before its first
+# point, which would print a progress line (not --quiet here).
+expect_missing libgranular_hdf5.so "$work/missbr" "$build/breathers" --quasi s1 --modulation 0 --phase 0 \
+  --k0-n-per-m 1e7 --F0 0 --N 21 --max-points 2 --output "$work/missbr"
+err=$(GRANULAR_COMPONENT_DIR=$work/nowhere "$build/breathers" --quasi s1 --modulation 0 --phase 0 --k0-n-per-m 1e7 \
+  --F0 0 --N 21 --max-points 2 --output "$work/missbr" 2>&1 >/dev/null)
+[[ $err != *kHz* ]] || fail "breathers without libgranular_hdf5.so computed points first: $err"
+# GRANULAR_COMPONENT_DIR must be absolute: a relative path to the right folder is refused (it would
+# load code from wherever the run starts), exit 1 naming the variable, nothing written.
+relative=$(realpath --relative-to="$work" "$build")
+err=$(cd "$work" && GRANULAR_COMPONENT_DIR=$relative "$spectrum" --N 50 --quiet --near 15 --count 3 \
+  --vectors "$work/rel.h5" --output "$work/rel" 2>&1 >/dev/null)
+code=$?
+[[ $code -eq 1 && $err == *GRANULAR_COMPONENT_DIR*absolute* ]] ||
+  fail "a relative GRANULAR_COMPONENT_DIR=$relative -> exit $code: $err"
+[[ -z $(compgen -G "$work/rel*") ]] || fail "a relative GRANULAR_COMPONENT_DIR left $(compgen -G "$work/rel*")"
 if [[ -e $build/libgranular_slepc.so ]]; then
   expect_missing libgranular_slepc.so "$work/nos" "$spectrum" --N 50 --quiet --near 15 --count 3 --method slepc \
     --output "$work/nos"

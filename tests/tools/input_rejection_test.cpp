@@ -200,7 +200,7 @@ TEST(InputRejectionMatrix, Size) {
   EXPECT_GT(matrix().size(), 300u);
 }
 
-// The default full spectrum above N = 46340: dstevd's workspace passes LAPACK's 32-bit sizes (and
+// The default full spectrum above N = 46338: dstevd's workspace passes LAPACK's 32-bit sizes (and
 // 40 GB in all at 5e4). Refused before anything of size N² is allocated (under a 2 GB address-space
 // limit the refusal still comes out, not a bad_alloc), with the methods that fit named; no output.
 TEST(InputRejection, FullSpectrumThatCannotFitIsRefusedNamingTheMethodsThatFit) {

@@ -15,11 +15,20 @@ namespace {
 
 /// The folder of the file this function was loaded from: libgranular.so, wherever it is (build
 /// tree, install prefix, Python package), so the components are found beside it without a path
-/// compiled in.
-std::string folder_of_libgranular() {
-  if (const char* dir = std::getenv("GRANULAR_COMPONENT_DIR"); dir != nullptr && *dir != '\0') return dir;
+/// compiled in. $GRANULAR_COMPONENT_DIR overrides it: read with secure_getenv (ignored in a setuid
+/// program) and absolute only, since a relative folder (or the "." once used when dladdr failed)
+/// loads code from wherever the run happens to start.
+std::string folder_of_libgranular(const char* needed_for) {
+  if (const char* dir = secure_getenv("GRANULAR_COMPONENT_DIR"); dir != nullptr && *dir != '\0') {
+    if (!std::filesystem::path(dir).is_absolute())
+      throw IoError(std::string(needed_for) + ": GRANULAR_COMPONENT_DIR=" + dir +
+                    " must be an absolute path (a relative one depends on the folder the run starts in)");
+    return dir;
+  }
   Dl_info info{};
-  if (dladdr(reinterpret_cast<void*>(&folder_of_libgranular), &info) == 0 || info.dli_fname == nullptr) return ".";
+  if (dladdr(reinterpret_cast<void*>(&folder_of_libgranular), &info) == 0 || info.dli_fname == nullptr)
+    throw IoError(std::string(needed_for) +
+                  ": the folder of libgranular is unknown (dladdr failed); set GRANULAR_COMPONENT_DIR to it");
   return std::filesystem::path(info.dli_fname).parent_path().string();
 }
 
@@ -29,7 +38,7 @@ void* component_entry(const char* name, const char* entry, const char* needed_fo
   static std::mutex loading;
   const std::lock_guard<std::mutex> lock(loading);  // dlerror() is per thread, dlopen is not free
   const std::string file = "libgranular_" + std::string(name) + ".so";
-  const std::string folder = folder_of_libgranular();
+  const std::string folder = folder_of_libgranular(needed_for);
   const std::string path = folder + "/" + file;
   // RTLD_GLOBAL: MPI and PETSc load plugins of their own that expect their symbols in the
   // global scope (as when a program links them). Never closed: atexit handlers live there.

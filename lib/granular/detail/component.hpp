@@ -7,7 +7,7 @@ namespace granular::detail {
 
 /// The address of the C-linkage function `entry` of the component `name` ("slepc", "hdf5"),
 /// loading libgranular_<name>.so on first use from the folder that holds libgranular (or from
-/// $GRANULAR_COMPONENT_DIR when set). `needed_for` names what needs it, for the message
+/// $GRANULAR_COMPONENT_DIR when set, which must be absolute). `needed_for` names what needs it, for the message
 /// ("the SLEPc method"). Thread-safe; the component stays loaded. Throws IoError when the file
 /// is missing or does not load.
 void* component_entry(const char* name, const char* entry, const char* needed_for);

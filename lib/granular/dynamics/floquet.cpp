@@ -7,6 +7,7 @@
 
 #include "granular/detail/enum_names.hpp"
 #include "granular/dynamics/detail/dense_lapack.hpp"
+#include "granular/dynamics/detail/floquet_verdict.hpp"
 #include "granular/dynamics/tangent_map.hpp"
 #include "granular/error.hpp"
 
@@ -19,6 +20,37 @@ constexpr auto floquet_method_names =
                                                          {FloquetMethod::arpack, "arpack"}});
 
 }  // namespace
+
+std::vector<std::size_t> unit_pair(const std::vector<std::complex<double>>& multipliers, double window) {
+  std::vector<std::size_t> near_one;
+  for (std::size_t i = 0; i < multipliers.size(); ++i)
+    if (std::abs(multipliers[i] - 1.0) <= window) near_one.push_back(i);
+  std::stable_sort(near_one.begin(), near_one.end(), [&](std::size_t a, std::size_t b) {
+    return std::abs(multipliers[a] - 1.0) < std::abs(multipliers[b] - 1.0);
+  });
+  if (near_one.size() > 2) near_one.resize(2);
+  return near_one;
+}
+
+void detail::decide_floquet_verdict(FloquetSpectrum& s, double tolerance, double unit_pair_window, double period) {
+  const auto pair = unit_pair(s.multipliers, unit_pair_window);
+  std::complex<double> worst = 0;
+  for (std::size_t i = 0; i < s.multipliers.size(); ++i)
+    if (std::find(pair.begin(), pair.end(), i) == pair.end() && std::abs(s.multipliers[i]) > std::abs(worst))
+      worst = s.multipliers[i];
+  s.tolerance = tolerance;
+  s.max_modulus = std::abs(worst);
+  const bool grows = s.max_modulus > 1 + tolerance;
+  // A multiplier that converged and grows is an instability whatever else did not converge; no
+  // growth among some of the largest says nothing about the others.
+  s.stable = s.complete && !grows;
+  s.growth_rate = std::log(s.max_modulus) / period;
+  s.instability = grows        ? (std::abs(worst.imag()) <= tolerance * std::abs(worst) ? "real" : "oscillatory")
+                  : s.complete ? "none"
+                               : "unknown";
+  s.unit_pair_distance =
+      pair.size() == 2 ? std::abs(s.multipliers[pair[1]] - 1.0) : std::numeric_limits<double>::quiet_NaN();
+}
 
 FloquetMethod parse_floquet_method(const std::string& name) { return floquet_method_names.parse(name); }
 std::string to_string(FloquetMethod method) { return std::string(floquet_method_names.name_of(method)); }
@@ -65,7 +97,8 @@ std::vector<double> monodromy_matrix(const ForceLaw& law, const Chain& chain, co
   return out;
 }
 
-FloquetSpectrum floquet_spectrum(std::vector<double> monodromy, std::size_t beads, double period, double tolerance) {
+FloquetSpectrum floquet_spectrum(std::vector<double> monodromy, std::size_t beads, double period, double tolerance,
+                                 double unit_pair_window) {
   const int m = static_cast<int>(2 * beads);
   if (monodromy.size() != 4 * beads * beads) throw InvalidInput("monodromy", ": must be 2N x 2N");
   std::vector<double> wr(m), wi(m);
@@ -81,46 +114,26 @@ FloquetSpectrum floquet_spectrum(std::vector<double> monodromy, std::size_t bead
   if (info != 0) throw NumericalError("floquet: dgeev failed (info " + std::to_string(info) + ")");
 
   FloquetSpectrum s;
-  s.tolerance = tolerance;
   for (int i = 0; i < m; ++i) s.multipliers.emplace_back(wr[i], wi[i]);
   std::sort(s.multipliers.begin(), s.multipliers.end(), [](auto a, auto b) { return std::abs(a) > std::abs(b); });
-  // The two multipliers nearest +1 are the symmetry pair (phase, family): a Jordan block that
-  // an orbit periodic to a residual r splits by ~√r, either onto the circle or off it along the
-  // real axis. They say nothing about stability and are left out of its verdict.
-  std::vector<std::size_t> order(s.multipliers.size());
-  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-    return std::abs(s.multipliers[a] - 1.0) < std::abs(s.multipliers[b] - 1.0);
-  });
-  std::complex<double> worst = 1;
-  for (std::size_t k = std::min<std::size_t>(2, order.size()); k < order.size(); ++k)
-    if (std::abs(s.multipliers[order[k]]) > std::abs(worst)) worst = s.multipliers[order[k]];
-  s.max_modulus = std::abs(worst);
-  s.stable = s.max_modulus <= 1 + tolerance;
-  s.growth_rate = std::log(s.max_modulus) / period;
-  if (!s.stable) s.instability = std::abs(worst.imag()) <= tolerance * std::abs(worst) ? "real" : "oscillatory";
+  detail::decide_floquet_verdict(s, tolerance, unit_pair_window, period);
+  // dgeev returns conjugate pairs exactly (a real matrix): only the reciprocal pairs and the
+  // product test the symplectic structure.
   std::complex<double> product = 1;
-  std::vector<double> to_one;
   for (const auto mu : s.multipliers) {
-    double reciprocal = std::numeric_limits<double>::infinity(), conjugate = reciprocal;
-    for (const auto nu : s.multipliers) {
-      reciprocal = std::min(reciprocal, std::abs(nu - 1.0 / mu));
-      conjugate = std::min(conjugate, std::abs(nu - std::conj(mu)));
-    }
-    const double scale = std::max(1.0, std::abs(mu));
-    s.reciprocal_error = std::max(s.reciprocal_error, reciprocal / scale);
-    s.conjugate_error = std::max(s.conjugate_error, conjugate / scale);
+    double reciprocal = std::numeric_limits<double>::infinity();
+    for (const auto nu : s.multipliers) reciprocal = std::min(reciprocal, std::abs(nu - 1.0 / mu));
+    s.reciprocal_error = std::max(s.reciprocal_error, reciprocal / std::max(1.0, std::abs(mu)));
     product *= mu;
-    to_one.push_back(std::abs(mu - 1.0));
   }
   s.product_error = std::abs(product - 1.0);
-  std::sort(to_one.begin(), to_one.end());
-  s.unit_pair_distance = to_one.size() >= 2 ? to_one[1] : 0;
   return s;
 }
 
-FloquetSpectrum floquet_stability(const ForceLaw& law, const Chain& chain, const PeriodicOrbit& orbit, double tolerance) {
-  auto s = floquet_spectrum(monodromy_matrix(law, chain, orbit), chain.size(), orbit.period, tolerance);
+FloquetSpectrum floquet_stability(const ForceLaw& law, const Chain& chain, const PeriodicOrbit& orbit, double tolerance,
+                                  double unit_pair_window) {
+  auto s =
+      floquet_spectrum(monodromy_matrix(law, chain, orbit), chain.size(), orbit.period, tolerance, unit_pair_window);
   s.operator_applications = static_cast<long>(2 * chain.size());
   return s;
 }
@@ -129,7 +142,7 @@ FloquetSpectrum floquet_stability(const ForceLaw& law, const Chain& chain, const
                                   const FloquetConfig& config) {
   const bool automatic = config.method == FloquetMethod::automatic;
   if (config.method == FloquetMethod::dense || (automatic && chain.size() <= config.max_dense_beads))
-    return floquet_stability(law, chain, orbit, config.tolerance);
+    return floquet_stability(law, chain, orbit, config.tolerance, config.unit_pair_window);
   if (!automatic || chain.size() > config.max_fallback_beads)
     return largest_floquet_multipliers(law, chain, orbit, config);
   // Where the dense method is affordable, ARPACK gets its cost: about 2N applications of M, the
@@ -143,7 +156,7 @@ FloquetSpectrum floquet_stability(const ForceLaw& law, const Chain& chain, const
   budget.max_restarts = static_cast<int>(std::clamp<long>((dense_cost - ncv) / shifts, 1, config.max_restarts));
   const FloquetSpectrum arnoldi = try_largest_floquet_multipliers(law, chain, orbit, budget);
   if (arnoldi.complete) return arnoldi;
-  FloquetSpectrum s = floquet_stability(law, chain, orbit, config.tolerance);
+  FloquetSpectrum s = floquet_stability(law, chain, orbit, config.tolerance, config.unit_pair_window);
   s.method = arnoldi.multipliers.empty() ? "dense (ARPACK converged none)"
                                          : "dense (ARPACK incomplete within the dense method's cost)";
   s.operator_applications += arnoldi.operator_applications;

@@ -3,10 +3,14 @@
 // of one full period T of the same scheme that found the orbit (periodic_orbit.hpp), and its
 // eigenvalues, the Floquet multipliers μ. A perturbation grows like |μ|^{t/T}: the orbit is
 // linearly stable when every |μ| ≤ 1 + tolerance (the +1 pair aside). The map is symplectic, so the multipliers come
-// in reciprocal pairs (μ, 1/μ) and complex-conjugate pairs (μ, μ̄), their product is 1, and
-// the time shift along the orbit and the change along the family give a pair at +1. Those are
-// what the *_error fields measure: a multiplier off the unit circle in a symplectic spectrum means
-// instability, never decay.
+// in reciprocal pairs (μ, 1/μ) with product 1, and the time shift along the orbit and the change
+// along the family give a pair at +1: what reciprocal_error and product_error measure. A
+// multiplier off the unit circle in a symplectic spectrum means instability, never decay.
+//
+// The +1 pair, one rule for both methods: of the multipliers within unit_pair_window of +1, the
+// two nearest (fewer when fewer lie there) are the phase/family pair, a Jordan block that an orbit
+// periodic to a residual r splits by ~√r; they are left out of the verdict. Every other multiplier
+// counts, however near +1 (unit_pair).
 //
 // Coordinates (δu, δv/ω_b), both in metres: the multipliers do not depend on the scaling, the
 // conditioning of dgeev does.
@@ -15,10 +19,15 @@
 // multipliers. ARPACK (large N): the monodromy only as an operator, v ↦ M v by one tangent
 // integration of a period, and the implicitly restarted Arnoldi method (dnaupd/dneupd) for the k
 // multipliers of largest modulus, which decide stability (k + 1 when the cut splits a conjugate
-// pair: the partner is restored). Of the checks, the conjugate pairs still apply to those k; the
-// reciprocal pairs and the product do not (the 1/μ are the smallest, not computed) and are NaN.
+// pair: the partner is restored). The reciprocal pairs and the product do not apply to those k
+// (the 1/μ are the smallest, not computed) and are NaN; instead each multiplier carries dnaupd's
+// Ritz estimate and the residual ‖M z − μ z‖/(|μ| ‖z‖) of its Ritz vector z, measured by one more
+// application of M, which must be at most ritz_residual_limit or the set counts as incomplete.
+// An incomplete set is never called stable: its verdict is unstable (a converged multiplier grows)
+// or unknown.
 #include <complex>
 #include <cstddef>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -54,10 +63,17 @@ struct FloquetConfig {
   /// ARPACK: implicit restarts; when they run out, the multipliers converged so far are kept
   /// (FloquetSpectrum::complete = false; none converged: NumericalError).
   int max_restarts = 300;
-  /// ARPACK: the multipliers within this distance of +1 (two at most) are taken for the phase/family
-  /// pair and left out of the verdict (the dense method leaves out the two nearest +1, wherever they
-  /// are: there all 2N are known, here the pair need not be among the k).
-  double unit_pair_window = 1e-4;
+  /// Both methods: of the multipliers within this distance of +1, the two nearest are the
+  /// phase/family pair, left out of the verdict (unit_pair). The pair splits by ~√r (r the
+  /// orbit's residual: ≤ 1e-5 at the default shooting tolerance) and, where a contact opens (the
+  /// Hertz force is only C¹ there), further: 2.8e-3 on the 41-bead light-centred gap branch's
+  /// first point with an open contact. A multiplier beyond the window counts, and so does a third
+  /// within it. ARPACK's k largest need not hold the pair: then up to two of its multipliers
+  /// within the window are left out, which hides an instability weaker than 1 + window.
+  double unit_pair_window = 1e-2;
+  /// ARPACK: the largest measured Ritz residual ‖M z − μ z‖/(|μ| ‖z‖) of a trusted multiplier;
+  /// beyond it the set is incomplete.
+  double ritz_residual_limit = 1e-6;
 };
 
 struct FloquetSpectrum {
@@ -70,34 +86,45 @@ struct FloquetSpectrum {
   /// tangent integrations of one period (2N for dense; automatic's fallback adds ARPACK's attempt)
   long operator_applications = 0;
   int restarts = 0;  ///< ARPACK's implicit restarts (0 for dense; automatic's fallback: its attempt's)
-  /// false when ARPACK ran out of restarts with fewer than k multipliers converged: the verdict
-  /// is then on those only. Stable orbits are the hard case (every |μ| = 1: no modulus gap), e.g.
-  /// a stable gap breather of 101 beads needs ~150 restarts of a 40-vector basis.
+  /// false when ARPACK ran out of restarts with fewer than k multipliers converged, or a Ritz
+  /// residual exceeded ritz_residual_limit: the multipliers are then a part of the largest only.
+  /// Stable orbits are the hard case (every |μ| = 1: no modulus gap), e.g. a stable gap breather
+  /// of 101 beads needs ~150 restarts of a 40-vector basis.
   bool complete = true;
-  /// max |μ| over all but the two multipliers nearest +1 (the phase/family pair, a Jordan block
-  /// that a residual r of the orbit splits by ~√r: not an instability)
+  /// max |μ| over all but the phase/family pair (unit_pair: a Jordan block that a residual r of
+  /// the orbit splits by ~√r, not an instability)
   double max_modulus = 0;
-  bool stable = false;   ///< max_modulus ≤ 1 + tolerance
+  /// complete and max_modulus ≤ 1 + tolerance: an incomplete set is never called stable
+  bool stable = false;
   double tolerance = 0;  ///< of `stable`
-  /// "none", "real" (a real multiplier > 1: exponential instability) or "oscillatory" (a complex
-  /// quartet off the circle).
+  /// "none", "real" (a real multiplier > 1: exponential instability), "oscillatory" (a complex
+  /// quartet off the circle) or "unknown" (an incomplete set with no multiplier above 1 + tolerance).
   std::string instability = "none";
   double growth_rate = 0;  ///< ln(max_modulus)/T [1/s]: how fast the worst perturbation grows
-  /// Symplectic checks: max over μ of min_ν |ν − 1/μ| (reciprocal pairs) and of min_ν |ν − μ̄|
-  /// (conjugate pairs), relative to max(1, |μ|); |Π μ − 1|; and the distance of the two multipliers
-  /// nearest +1 from it (a Jordan block there: it splits by ~√ε, not ε). ARPACK: reciprocal_error
-  /// and product_error are NaN (not computable from the largest |μ|), unit_pair_distance the
-  /// distance of the second of the multipliers within unit_pair_window of +1 (NaN if fewer than two).
+  /// Symplectic checks (dense): max over μ of min_ν |ν − 1/μ| (reciprocal pairs) relative to
+  /// max(1, |μ|), and |Π μ − 1|; NaN for ARPACK (not computable from the largest |μ|).
   double reciprocal_error = 0;
-  double conjugate_error = 0;
   double product_error = 0;
+  /// The distance from +1 of the second multiplier of the phase/family pair (NaN when fewer than
+  /// two lie within unit_pair_window).
   double unit_pair_distance = 0;
+  /// ARPACK, per multiplier (empty for dense): dnaupd's Ritz estimate of its residual, relative to
+  /// |μ|, and the residual ‖M z − μ z‖/(|μ| ‖z‖) of its Ritz vector z measured by applying M again
+  /// (a restored conjugate partner shares its partner's: M is real).
+  std::vector<double> ritz_estimates;
+  std::vector<double> ritz_residuals;
+  double ritz_residual = std::numeric_limits<double>::quiet_NaN();  ///< the largest of ritz_residuals (NaN: dense)
 };
+
+/// The phase/family pair among `multipliers`: the indices of the two nearest +1 among those within
+/// `window` of it (fewer when fewer lie there), nearest first. Both methods leave them out of the
+/// verdict.
+std::vector<std::size_t> unit_pair(const std::vector<std::complex<double>>& multipliers, double window);
 
 /// The multipliers of a monodromy matrix of `beads` beads (2N × 2N, consumed), the orbit's period
 /// T [s] for the growth rate. Throws NumericalError if dgeev fails.
 FloquetSpectrum floquet_spectrum(std::vector<double> monodromy, std::size_t beads, double period,
-                                 double tolerance = 1e-6);
+                                 double tolerance = 1e-6, double unit_pair_window = 1e-2);
 
 /// M w for one vector w (2N, coordinates (δu, δv/ω_b)): one tangent integration of the period.
 std::vector<double> apply_monodromy(const ForceLaw& law, const Chain& chain, const PeriodicOrbit& orbit,
@@ -119,7 +146,7 @@ int floquet_subspace(const FloquetConfig& config, std::size_t beads);
 
 /// monodromy_matrix then floquet_spectrum (dense).
 FloquetSpectrum floquet_stability(const ForceLaw& law, const Chain& chain, const PeriodicOrbit& orbit,
-                                  double tolerance = 1e-6);
+                                  double tolerance = 1e-6, double unit_pair_window = 1e-2);
 
 /// Dense or ARPACK by config.method (automatic: by N against config.max_dense_beads; up to
 /// config.max_fallback_beads ARPACK gets the dense method's cost, about 2N applications, and the

@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include "granular/detail/euclidean_norm.hpp"
+#include "granular/dynamics/detail/floquet_verdict.hpp"
 #include "granular/dynamics/floquet.hpp"
 #include "granular/error.hpp"
 
@@ -54,6 +56,8 @@ void check_floquet_arpack_config(const FloquetConfig& c, std::size_t beads) {
   if (!(c.tolerance >= 0) || !std::isfinite(c.tolerance)) throw InvalidInput("tolerance", ": must be finite and >= 0");
   if (!(c.unit_pair_window >= 0) || !std::isfinite(c.unit_pair_window))
     throw InvalidInput("unit_pair_window", ": must be finite and >= 0");
+  if (!(c.ritz_residual_limit > 0) || !std::isfinite(c.ritz_residual_limit))
+    throw InvalidInput("ritz_residual_limit", ": must be finite and > 0");
 }
 
 }  // namespace
@@ -105,9 +109,17 @@ FloquetSpectrum try_largest_floquet_multipliers(const ForceLaw& law, const Chain
   if (info != 0 && info != 1) throw NumericalError("floquet: ARPACK dnaupd failed (info " + std::to_string(info) + ")");
   s.complete = info == 0;
   s.restarts = iparam[2];
-  if (info == 1 && iparam[4] < 1) return s;  // none converged
+  if (info == 1 && iparam[4] < 1) {  // none converged
+    s.instability = "unknown";
+    return s;
+  }
+  // dnaupd's Ritz values of its last Hessenberg matrix and their error estimates |β e_k^T y|
+  // (ARPACK's own convergence test), read before dneupd reuses the workspace.
+  const auto at = [&](int pointer) { return workl.begin() + (pointer - 1); };
+  const std::vector<double> ritz_re(at(ipntr[5]), at(ipntr[5]) + ncv), ritz_im(at(ipntr[6]), at(ipntr[6]) + ncv),
+      bounds(at(ipntr[7]), at(ipntr[7]) + ncv);
 
-  const int rvec = 0;
+  const int rvec = 1;  // the Ritz vectors, for the measured residuals
   std::vector<int> select(static_cast<std::size_t>(ncv));
   std::vector<double> dr(static_cast<std::size_t>(nev) + 1), di(dr.size()), workev(3 * static_cast<std::size_t>(ncv)),
       z(static_cast<std::size_t>(n) * (static_cast<std::size_t>(nev) + 1));
@@ -120,47 +132,76 @@ FloquetSpectrum try_largest_floquet_multipliers(const ForceLaw& law, const Chain
   if (s.complete && converged < nev)
     throw NumericalError("floquet: ARPACK converged " + std::to_string(converged) + " of " + std::to_string(nev) +
                          " multipliers");
-  for (int i = 0; i < converged; ++i)
-    s.multipliers.emplace_back(dr[static_cast<std::size_t>(i)], di[static_cast<std::size_t>(i)]);
+  // Each multiplier's residual, measured: M applied to its Ritz vector z (a complex pair's
+  // columns j, j + 1 hold Re z and Im z of the one with Im μ > 0; z has nev + 1 columns so that
+  // a pair cut at the k-th keeps its imaginary part), ‖M z − μ z‖/(|μ| ‖z‖). A check that fails
+  // when the Arnoldi factorization has lost accuracy, which ARPACK's estimate cannot see.
+  std::vector<double> measured(static_cast<std::size_t>(converged), std::numeric_limits<double>::quiet_NaN());
+  const auto column = [&](int j) {
+    const double* c = &z[static_cast<std::size_t>(j) * static_cast<std::size_t>(n)];
+    return std::vector<double>(c, c + n);
+  };
+  for (int i = 0; i < converged; ++i) {
+    const double a = dr[static_cast<std::size_t>(i)], b = di[static_cast<std::size_t>(i)];
+    const double modulus = std::hypot(a, b);
+    if (b == 0) {
+      const auto x = column(i), mx = apply_monodromy(law, chain, orbit, x);
+      ++s.operator_applications;
+      double r = 0;
+      for (int k = 0; k < n; ++k) r += std::pow(mx[k] - a * x[k], 2);
+      measured[static_cast<std::size_t>(i)] = std::sqrt(r) / (modulus * detail::euclidean_norm(x));
+    } else if (b > 0 && i + 1 <= nev) {
+      const auto x = column(i), y = column(i + 1);
+      const auto mx = apply_monodromy(law, chain, orbit, x), my = apply_monodromy(law, chain, orbit, y);
+      s.operator_applications += 2;
+      double r = 0;
+      for (int k = 0; k < n; ++k)
+        r += std::pow(mx[k] - (a * x[k] - b * y[k]), 2) + std::pow(my[k] - (a * y[k] + b * x[k]), 2);
+      const double norm = std::hypot(detail::euclidean_norm(x), detail::euclidean_norm(y));
+      measured[static_cast<std::size_t>(i)] = std::sqrt(r) / (modulus * norm);
+      if (i + 1 < converged) measured[static_cast<std::size_t>(i) + 1] = measured[static_cast<std::size_t>(i)];
+    }
+  }
+  // The estimate of the Ritz value of dnaupd's nearest each multiplier.
+  const auto estimate = [&](std::complex<double> mu) {
+    std::size_t best = 0;
+    for (std::size_t j = 1; j < bounds.size(); ++j)
+      if (std::abs(std::complex(ritz_re[j], ritz_im[j]) - mu) < std::abs(std::complex(ritz_re[best], ritz_im[best]) - mu))
+        best = j;
+    return bounds[best] / std::abs(mu);
+  };
+  std::vector<std::pair<std::complex<double>, std::pair<double, double>>> found;  // μ, (estimate, measured)
+  for (int i = 0; i < converged; ++i) {
+    const std::complex<double> mu(dr[static_cast<std::size_t>(i)], di[static_cast<std::size_t>(i)]);
+    found.push_back({mu, {estimate(mu), measured[static_cast<std::size_t>(i)]}});
+  }
   // The Ritz values of real Arnoldi come in exact conjugate pairs, but the count kept can split one
   // (on a stable orbit every |μ| = 1, so which pair is last is arbitrary, and differs between BLAS
   // builds): a multiplier whose partner was cut gets it back, conj(μ), an eigenvalue as surely as μ.
-  const std::size_t returned = s.multipliers.size();
+  const std::size_t returned = found.size();
   for (std::size_t i = 0; i < returned; ++i) {
-    const std::complex<double> mu = s.multipliers[i];
+    const std::complex<double> mu = found[i].first;
     bool paired = mu.imag() == 0;
     for (std::size_t j = 0; j < returned && !paired; ++j)
-      paired = j != i && std::abs(s.multipliers[j] - std::conj(mu)) <= 1e-8 * std::abs(mu);
-    if (!paired) s.multipliers.push_back(std::conj(mu));
+      paired = j != i && std::abs(found[j].first - std::conj(mu)) <= 1e-8 * std::abs(mu);
+    if (!paired) found.push_back({std::conj(mu), found[i].second});
   }
-  std::sort(s.multipliers.begin(), s.multipliers.end(), [](auto a, auto b) { return std::abs(a) > std::abs(b); });
-
-  // The phase/family pair: up to two multipliers within the window of +1, left out of the verdict.
-  std::vector<std::size_t> near_one;
-  for (std::size_t i = 0; i < s.multipliers.size(); ++i)
-    if (std::abs(s.multipliers[i] - 1.0) <= config.unit_pair_window) near_one.push_back(i);
-  std::sort(near_one.begin(), near_one.end(), [&](std::size_t a, std::size_t b) {
-    return std::abs(s.multipliers[a] - 1.0) < std::abs(s.multipliers[b] - 1.0);
-  });
-  if (near_one.size() > 2) near_one.resize(2);
-  std::complex<double> worst = 0;
-  for (std::size_t i = 0; i < s.multipliers.size(); ++i)
-    if (std::find(near_one.begin(), near_one.end(), i) == near_one.end() && std::abs(s.multipliers[i]) > std::abs(worst))
-      worst = s.multipliers[i];
-  s.tolerance = config.tolerance;
-  s.max_modulus = std::abs(worst);
-  s.stable = s.max_modulus <= 1 + config.tolerance;
-  s.growth_rate = std::log(s.max_modulus) / orbit.period;
-  if (!s.stable) s.instability = std::abs(worst.imag()) <= config.tolerance * std::abs(worst) ? "real" : "oscillatory";
-  for (const auto mu : s.multipliers) {
-    double conjugate = std::numeric_limits<double>::infinity();
-    for (const auto nu : s.multipliers) conjugate = std::min(conjugate, std::abs(nu - std::conj(mu)));
-    s.conjugate_error = std::max(s.conjugate_error, conjugate / std::max(1.0, std::abs(mu)));
+  std::stable_sort(found.begin(), found.end(),
+                   [](const auto& a, const auto& b) { return std::abs(a.first) > std::abs(b.first); });
+  s.multipliers.clear();
+  s.ritz_residual = 0;
+  bool trusted = true;  // every residual measured (not NaN) and within the limit
+  for (const auto& [mu, checks] : found) {
+    s.multipliers.push_back(mu);
+    s.ritz_estimates.push_back(checks.first);
+    s.ritz_residuals.push_back(checks.second);
+    s.ritz_residual = std::max(s.ritz_residual, checks.second);
+    trusted = trusted && checks.second <= config.ritz_residual_limit;
   }
+  if (!trusted) s.complete = false;
+  detail::decide_floquet_verdict(s, config.tolerance, config.unit_pair_window, orbit.period);
   s.reciprocal_error = std::numeric_limits<double>::quiet_NaN();
   s.product_error = std::numeric_limits<double>::quiet_NaN();
-  s.unit_pair_distance =
-      near_one.size() == 2 ? std::abs(s.multipliers[near_one[1]] - 1.0) : std::numeric_limits<double>::quiet_NaN();
   return s;
 }
 

@@ -16,6 +16,8 @@ const Hdf5Component& hdf5_component() {
 
 }  // namespace detail
 
+void load_hdf5_writer() { static_cast<void>(detail::hdf5_component()); }
+
 Hdf5File::Hdf5File(std::string path) : path_(std::move(path)) {
   // Before the temporary file: a missing component leaves nothing behind.
   const detail::Hdf5Component& hdf5 = detail::hdf5_component();

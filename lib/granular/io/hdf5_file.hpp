@@ -38,6 +38,11 @@ class Hdf5File : public PendingOutput {
   long long file_ = -1;                               // hid_t
 };
 
+/// Loads the HDF5 writer's component now; throws IoError when it is missing or does not load. A
+/// run that will write HDF5 calls it while checking its options, so that a missing component
+/// fails before the work rather than after it (the component loads once; later calls are free).
+void load_hdf5_writer();
+
 /// A named array for write_hdf5_atomically: 1-D or 2-D (row-major) doubles.
 struct Hdf5Array {
   std::string name;                ///< dataset name at the file's root

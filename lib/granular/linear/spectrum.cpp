@@ -10,6 +10,7 @@
 
 #include "granular/detail/enum_names.hpp"
 #include "granular/error.hpp"
+#include "granular/linear/detail/lapack.hpp"
 #include "granular/linear/detail/lapack_eigensolver.hpp"
 #include "granular/linear/detail/mode_ipr_solver.hpp"
 #include "granular/linear/detail/mode_vector.hpp"
@@ -187,9 +188,13 @@ std::string full_spectrum_problem(std::size_t beads, const SpectrumConfig& confi
   if (bytes == 0) return {};
   const std::uint64_t n = beads;
   std::string why;
-  if (config.driver == LapackDriver::stevd &&
-      n * n + 4 * n + 1 > static_cast<std::uint64_t>(std::numeric_limits<int>::max()))
-    why = "dstevd's workspace of N^2 + 4N + 1 doubles exceeds LAPACK's 32-bit sizes (N <= 46340)";
+  // Whatever driver is preferred, a failing one falls back to dstevd (lapack_eigensolver.hpp),
+  // whose workspace must then fit: the limit is every vector-computing run's.
+  if ((config.vectors || config.driver == LapackDriver::stevd) &&
+      detail::stevd_workspace_overflows(static_cast<std::int64_t>(n)))
+    why =
+        "dstevd's workspace of N^2 + 4N + 1 doubles (every driver's fallback) exceeds LAPACK's 32-bit sizes "
+        "(N <= 46338)";
   const long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGE_SIZE);
   const double physical = pages > 0 && page > 0 ? static_cast<double>(pages) * static_cast<double>(page) : 0;
   if (why.empty() && physical > 0 && static_cast<double>(bytes) > physical)

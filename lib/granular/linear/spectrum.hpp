@@ -99,7 +99,7 @@ void validate(const SpectrumConfig& config, const ModeSelection& selection);
 /// returned; 0 for any other method or selection (they need O(N) per mode).
 std::uint64_t full_spectrum_bytes(std::size_t beads, const SpectrumConfig& config, const ModeSelection& selection);
 /// Why every mode by method lapack cannot run for N beads on this machine ("" when it can): dstevd's
-/// workspace past LAPACK's 32-bit sizes (N > 46340), or full_spectrum_bytes above the physical
+/// workspace past LAPACK's 32-bit sizes (N > 46338), or full_spectrum_bytes above the physical
 /// memory. Checked before anything is allocated, so a refusal costs nothing.
 std::string full_spectrum_problem(std::size_t beads, const SpectrumConfig& config, const ModeSelection& selection);
 

@@ -1,15 +1,44 @@
 #include "granular/model/chain_recipe.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <nlohmann/json.hpp>
 
 #include "granular/error.hpp"
+#include "granular/io/text_hash.hpp"
 #include "granular/model/centred_configuration.hpp"
 #include "granular/model/configuration_file.hpp"
 #include "granular/number_format.hpp"
 
 namespace granular {
 namespace {
+
+// What identifies a types or radii file in a case: the values read from it (types as integers,
+// radii to 17 digits, one a line; comments and spacing do not count), hashed (FNV-1a 64, hex).
+// Its path alone would let a replay or resume read an edited file as the same chain.
+std::string bead_file_hash(const ChainRecipe& c) {
+  std::string text;
+  char number[32];
+  if (c.given_types)
+    for (auto t : *c.given_types) text += std::to_string(static_cast<int>(t)) + '\n';
+  if (c.given_radii)
+    for (double r : *c.given_radii) {
+      std::snprintf(number, sizeof number, "%.17g\n", r);
+      text += number;
+    }
+  std::snprintf(number, sizeof number, "%016llx", static_cast<unsigned long long>(text_hash(text)));
+  return number;
+}
+
+// Refuses a file whose content no longer hashes to what the case recorded (older cases: no hash).
+void check_bead_file(const ChainRecipe& c, const nlohmann::json& f, const std::string& name) {
+  const std::string key = name + "_hash";
+  if (!f.contains(key)) return;
+  const auto recorded = f.at(key).get<std::string>(), now = bead_file_hash(c);
+  if (recorded != now)
+    throw InvalidInput(name, " " + c.source + ": changed since the run was recorded (content hash " + recorded +
+                                 ", now " + now + "); restore it, or start a new run");
+}
 
 ChainParameters parameters(const ChainRecipe& c, std::uint64_t r) {
   return {
@@ -203,8 +232,8 @@ void describe_fields(const ChainRecipe& c, nlohmann::json& f) {
   if (c.distribution) f["beads"] = describe(*c.distribution);
   if (c.quasi) f["quasiperiodic"] = describe(*c.quasi);
   if (c.centred) f["chain_draw"] = "outward from the centre bead";
-  if (c.given_types && !c.source.empty()) f["config_file"] = c.source;
-  if (c.given_radii && !c.source.empty()) f["radii_file"] = c.source;
+  if (c.given_types && !c.source.empty()) f["config_file"] = c.source, f["config_file_hash"] = bead_file_hash(c);
+  if (c.given_radii && !c.source.empty()) f["radii_file"] = c.source, f["radii_file_hash"] = bead_file_hash(c);
 }
 
 ChainRecipe parse_recipe_fields(const nlohmann::json& f) {
@@ -229,10 +258,12 @@ ChainRecipe parse_recipe_fields(const nlohmann::json& f) {
     if (f.contains("config_file")) {
       c.source = f.at("config_file").get<std::string>();
       c.given_types = read_configuration_file(c.source);
+      check_bead_file(c, f, "config_file");
     }
     if (f.contains("radii_file")) {
       c.source = f.at("radii_file").get<std::string>();
       c.given_radii = read_radii_file(c.source);
+      check_bead_file(c, f, "radii_file");
     }
   } catch (const nlohmann::json::exception& e) {
     throw InvalidInput("chain", std::string(": ") + e.what());

@@ -101,9 +101,12 @@ nlohmann::json describe(const ChainRecipe& recipe, std::optional<std::uint64_t> 
 
 /// The recipe as a kicked-chain case spells it among its other fields (study/transport_study):
 /// disorder, q, xi, N, F0_N, R1_m, seed, material, walls, and beads / chain_draw / config_file /
-/// radii_file when they apply.
+/// radii_file when they apply, a file with the hash of the values read from it (config_file_hash,
+/// radii_file_hash: FNV-1a 64, hex).
 void describe_fields(const ChainRecipe& recipe, nlohmann::json& fields);
-/// The inverse of describe_fields (files are read again). Throws InvalidInput naming the key.
+/// The inverse of describe_fields (files are read again). Throws InvalidInput naming the key; a
+/// file whose values no longer match its recorded hash is refused naming config_file or
+/// radii_file and its path (replay and resume after an edit).
 ChainRecipe parse_recipe_fields(const nlohmann::json& fields);
 
 }  // namespace granular

@@ -46,11 +46,13 @@ double mode_residual(const ForceLaw& law, const Chain& chain, const ShootingConf
   return s / a;
 }
 
+// `khz`: the target when the point was asked for it, reported as given (ω_b = 2π·khz rounds, and
+// back to kHz it need not be khz again: 8.0 returns as 7.999999999999999); NaN: ω_b/2π.
 BreatherPoint make_point(const ForceLaw& law, const Chain& chain, const PeriodicOrbit& orbit,
-                         const BreatherBranchConfig& c) {
+                         const BreatherBranchConfig& c, double khz = std::numeric_limits<double>::quiet_NaN()) {
   BreatherPoint p;
   p.omega = orbit.omega;
-  p.freq_khz = to_khz(orbit.omega);
+  p.freq_khz = std::isnan(khz) ? to_khz(orbit.omega) : khz;
   p.energy = total_energy(law, chain, turning_state(orbit));
   for (std::size_t i = 0; i < orbit.x0.size(); ++i)
     if (std::abs(orbit.x0[i]) > p.amplitude) p.amplitude = std::abs(orbit.x0[i]), p.centre = i;
@@ -116,6 +118,12 @@ void validate(const BreatherBranchConfig& c) {
   if (!(c.step_khz >= 0) || !std::isfinite(c.step_khz)) throw InvalidInput("step_khz", ": must be finite and >= 0");
   if (!(c.start_offset > 0 && c.start_offset < 0.5)) throw InvalidInput("start_offset", ": must be in (0, 0.5)");
   if (c.max_points < 1) throw InvalidInput("max_points", ": must be >= 1");
+  // Zero would ask Newton for an exact orbit (it never stops) and call every orbit with a rounded
+  // |μ| = 1 + 1e-16 unstable; NaN would make every comparison false.
+  if (!(c.shooting.tolerance > 0) || !std::isfinite(c.shooting.tolerance))
+    throw InvalidInput("tolerance", " " + format_number(c.shooting.tolerance) + ": must be finite and > 0");
+  if (!(c.stability_tolerance > 0) || !std::isfinite(c.stability_tolerance))
+    throw InvalidInput("stability_tolerance", " " + format_number(c.stability_tolerance) + ": must be finite and > 0");
   const auto beads = static_cast<std::size_t>(n);
   uses_newton_krylov(beads, c.shooting);  // refuses dense Newton beyond the dense limit (arclength too)
   const bool arpack = c.floquet_method == FloquetMethod::arpack ||
@@ -325,7 +333,8 @@ BreatherBranch continue_breather(const BreatherBranchConfig& c,
   }
   branch.steps_per_period = steps;
   PeriodicOrbit orbit = find_periodic_orbit(law, chain, omega, x, shooting);
-  branch.points.push_back(make_point(law, chain, orbit, c));
+  branch.points.push_back(make_point(law, chain, orbit, c,
+                                     start_khz == c.target_khz ? start_khz : std::numeric_limits<double>::quiet_NaN()));
   if (progress) progress(branch.points.back());
 
   // Continuation with a secant predictor: natural-parameter (the next ω_b fixed) or, once two
@@ -344,13 +353,24 @@ BreatherBranch continue_breather(const BreatherBranchConfig& c,
   follow.max_iterations = std::min(shooting.max_iterations, 10);
   std::vector<double> previous;
   double previous_khz = 0, previous_omega = 0;
+  // Reached by a step asked for the target itself, not by comparing frequencies (see make_point).
+  bool at_target = start_khz == target;
+  // A linear frequency between the last point and f: the breather meets a band (or a mode).
+  const auto crosses_linear = [&](double f) {
+    const double from = branch.points.back().freq_khz;
+    return std::any_of(branch.linear_khz.begin(), branch.linear_khz.end(),
+                       [&](double mode) { return (mode - f) * (mode - from) < 0; });
+  };
+  const auto passes_target = [&](double f) {
+    return !std::isnan(target) && (f - target) * (branch.points.back().freq_khz - target) <= 0;
+  };
   while (true) {
     const BreatherPoint& last = branch.points.back();
     if (c.stop_at_opening && !vacuum && last.max_open_fraction > 0) {
       branch.stop_reason = "a contact opened (max open fraction " + format_number(last.max_open_fraction) + ")";
       break;
     }
-    if (!std::isnan(target) && last.freq_khz == target) {
+    if (at_target) {
       branch.stop_reason = "target frequency reached";
       break;
     }
@@ -359,7 +379,7 @@ BreatherBranch continue_breather(const BreatherBranchConfig& c,
       break;
     }
     ArcPrediction arc_guess;
-    const bool on_arc = c.continuation == Continuation::arclength && !previous.empty();
+    bool on_arc = c.continuation == Continuation::arclength && !previous.empty();
     double next = last.freq_khz + step;
     if (on_arc) {
       arc_guess.x_scale = detail::euclidean_norm(last.x0);
@@ -368,34 +388,45 @@ BreatherBranch continue_breather(const BreatherBranchConfig& c,
       for (std::size_t i = 0; i < n; ++i) arc_guess.tangent_x[i] = (last.x0[i] - previous[i]) / arc_guess.x_scale;
       arc_guess.tangent_omega = (last.omega - previous_omega) / last.omega;
       const double length = std::hypot(detail::euclidean_norm(arc_guess.tangent_x), arc_guess.tangent_omega);
-      for (double& t : arc_guess.tangent_x) t /= length;
-      arc_guess.tangent_omega /= length;
-      if (arc == 0) arc = length, min_arc = 1e-4 * length;
-      arc_guess.x.resize(n);
-      for (std::size_t i = 0; i < n; ++i)
-        arc_guess.x[i] = last.x0[i] + arc * arc_guess.tangent_x[i] * arc_guess.x_scale;
-      arc_guess.omega = last.omega * (1 + arc * arc_guess.tangent_omega);
-      next = to_khz(arc_guess.omega);
+      on_arc = length > 0 && std::isfinite(length);  // two equal points give no tangent: a natural step
+      if (on_arc) {
+        for (double& t : arc_guess.tangent_x) t /= length;
+        arc_guess.tangent_omega /= length;
+        if (arc == 0) arc = length, min_arc = 1e-4 * length;
+        arc_guess.x.resize(n);
+        for (std::size_t i = 0; i < n; ++i)
+          arc_guess.x[i] = last.x0[i] + arc * arc_guess.tangent_x[i] * arc_guess.x_scale;
+        arc_guess.omega = last.omega * (1 + arc * arc_guess.tangent_omega);
+        next = to_khz(arc_guess.omega);
+      }
     }
-    const bool to_target = !std::isnan(target) && (next - target) * (last.freq_khz - target) <= 0;
+    bool to_target = passes_target(next);
     if (to_target) next = target;
-    // A linear frequency between this point and the next: the breather meets a band (or a mode).
-    bool crosses = false;
-    for (double f : branch.linear_khz)
-      if ((f - next) * (f - last.freq_khz) < 0) crosses = true;
-    if (crosses) {
+    if (crosses_linear(next)) {
       branch.stop_reason = "reached a linear mode frequency near " + format_number(next) + " kHz (band edge)";
       break;
     }
+    // The natural step to `f` from the secant through the last two points (none while they
+    // share a frequency: the extrapolation would divide by zero).
+    const auto natural_step = [&](double f) {
+      std::vector<double> guess = last.x0;
+      const double span = last.freq_khz - previous_khz;
+      if (!previous.empty() && span != 0)
+        for (std::size_t i = 0; i < n; ++i) guess[i] += (f - last.freq_khz) / span * (last.x0[i] - previous[i]);
+      return find_periodic_orbit(law, chain, to_omega(f), guess, follow);
+    };
     try {
       if (on_arc && !to_target) {
         orbit = find_periodic_orbit_on_arc(law, chain, arc_guess, follow);
+        // The corrector moves ω_b off the prediction checked above: check where it landed.
+        next = to_khz(orbit.omega);
+        if (passes_target(next)) {
+          to_target = true;
+          next = target;
+          orbit = natural_step(next);
+        }
       } else {
-        std::vector<double> guess = last.x0;
-        if (!previous.empty())
-          for (std::size_t i = 0; i < n; ++i)
-            guess[i] += (next - last.freq_khz) / (last.freq_khz - previous_khz) * (last.x0[i] - previous[i]);
-        orbit = find_periodic_orbit(law, chain, to_omega(next), guess, follow);
+        orbit = natural_step(next);
       }
     } catch (const NumericalError& e) {
       const bool smallest = on_arc ? (arc /= 2) < min_arc : std::abs(step /= 2) < min_step;
@@ -405,10 +436,16 @@ BreatherBranch continue_breather(const BreatherBranchConfig& c,
       }
       continue;
     }
+    if (crosses_linear(next)) {
+      branch.stop_reason = "reached a linear mode frequency near " + format_number(next) + " kHz (band edge)";
+      break;
+    }
     previous = last.x0;
     previous_khz = last.freq_khz;
     previous_omega = last.omega;
-    branch.points.push_back(make_point(law, chain, orbit, c));
+    branch.points.push_back(
+        make_point(law, chain, orbit, c, to_target ? target : std::numeric_limits<double>::quiet_NaN()));
+    at_target = to_target;
     if (progress) progress(branch.points.back());
     if (orbit.iterations <= 3) {
       step = std::copysign(std::min(std::abs(step) * 1.5, max_step), step);
@@ -419,13 +456,13 @@ BreatherBranch continue_breather(const BreatherBranchConfig& c,
 }
 
 void write_breather_csv(std::ostream& out, const BreatherBranch& branch) {
-  out << "omega_rad_s,freq_khz,energy_J,amplitude_m,centre,max_multiplier,stable,newton_iterations,residual,"
+  out << "omega_rad_s,freq_khz,energy_J,amplitude_m,centre,max_multiplier,stable,complete,newton_iterations,residual,"
          "max_open_fraction\n";
   for (const auto& p : branch.points)
     out << format_number(p.omega) << ',' << format_number(p.freq_khz) << ',' << format_number(p.energy) << ','
         << format_number(p.amplitude) << ',' << p.centre + 1 << ',' << format_number(p.floquet.max_modulus) << ','
-        << (p.floquet.stable ? 1 : 0) << ',' << p.iterations << ',' << format_number(p.residual) << ','
-        << format_number(p.max_open_fraction) << '\n';
+        << (p.floquet.stable ? 1 : 0) << ',' << (p.floquet.complete ? 1 : 0) << ',' << p.iterations << ','
+        << format_number(p.residual) << ',' << format_number(p.max_open_fraction) << '\n';
 }
 
 std::unique_ptr<Hdf5File> write_breather_hdf5(const std::string& path, const BreatherBranch& b) {
@@ -508,8 +545,10 @@ nlohmann::json describe_breather_branch(const BreatherBranchConfig& c, const Bre
                       {"instability", p.floquet.instability},
                       {"growth_rate_per_s", p.floquet.growth_rate},
                       {"reciprocal_error", p.floquet.reciprocal_error},
-                      {"conjugate_error", p.floquet.conjugate_error},
-                      {"product_error", p.floquet.product_error}});
+                      {"product_error", p.floquet.product_error},
+                      {"unit_pair_distance", p.floquet.unit_pair_distance},
+                      {"ritz_residual", p.floquet.ritz_residual},
+                      {"ritz_estimates", p.floquet.ritz_estimates}});
   j["points"] = points;
   return j;
 }

@@ -77,7 +77,8 @@ struct BreatherBranchConfig {
 };
 
 /// Throws InvalidInput naming the field (mode, near_khz, start_khz, target_khz, step_khz,
-/// max_points, N, F0, site, law, seed_profile, floquet_multipliers) before any work. N: dense Newton
+/// max_points, N, F0, site, law, seed_profile, floquet_multipliers, tolerance (shooting's),
+/// stability_tolerance: both finite and > 0) before any work. N: dense Newton
 /// (also for the arclength corrector) beyond shooting.max_dense_beads. F0: 0
 /// without on-site springs (the uncompressed Hertz chain has no breathers: James et al. 2013).
 void validate(const BreatherBranchConfig& config);
@@ -132,8 +133,10 @@ bool inside_linear_band(const std::vector<double>& linear_khz, double khz);
 BreatherBranch continue_breather(const BreatherBranchConfig& config,
                                  const std::function<void(const BreatherPoint&)>& progress = {});
 
-/// CSV: omega_rad_s,freq_khz,energy_J,amplitude_m,centre,max_multiplier,stable,newton_iterations,
-/// residual,max_open_fraction (one row per point).
+/// CSV: omega_rad_s,freq_khz,energy_J,amplitude_m,centre,max_multiplier,stable,complete,
+/// newton_iterations,residual,max_open_fraction (one row per point). stable is 1 only from a
+/// complete set of multipliers (FloquetSpectrum::stable); complete 0: ARPACK's verdict on part of
+/// the largest multipliers (unstable, or unknown).
 void write_breather_csv(std::ostream& out, const BreatherBranch& branch);
 
 /// HDF5 of the branch (one row per point): freq_khz, omega_rad_s, energy_J; x0 (points × N, the

@@ -1,5 +1,6 @@
 #include "granular/study/butterfly.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <nlohmann/json.hpp>
 
@@ -30,14 +31,26 @@ void validate_ratios(const ChainRecipe& chain, const std::vector<double>& ratios
 void validate(const ButterflyConfig& c) {
   validate_ratios(c.chain, c.ratios);
   if (!(c.chain.F0 > 0)) throw InvalidInput("F0", " " + format_number(c.chain.F0) + ": the spectrum needs F0 > 0");
-  if (!(c.largest_box > 0 && c.largest_box <= 1))
-    throw InvalidInput("largest_box", " " + format_number(c.largest_box) + ": a fraction of the extent in (0, 1]");
+  if (!(c.largest_box >= 0 && c.largest_box <= 1))
+    throw InvalidInput("largest_box",
+                       " " + format_number(c.largest_box) + ": a fraction of the extent in (0, 1], or 0 (automatic)");
   const double smallest = c.smallest_box_spacings / static_cast<double>(c.chain.N);
-  if (!(smallest > 0) || !(smallest < c.largest_box))
+  const double largest = largest_box_fraction(c, c.chain.N);
+  if (!(smallest > 0) || !(smallest < largest))
     throw InvalidInput("smallest_box", " " + format_number(c.smallest_box_spacings) +
                                            ": must be > 0 and below the largest box (in spacings: " +
-                                           format_number(c.largest_box * static_cast<double>(c.chain.N)) + ")");
+                                           format_number(largest * static_cast<double>(c.chain.N)) + ")");
   if (c.box_sizes < 2) throw InvalidInput("box_sizes", " " + std::to_string(c.box_sizes) + ": at least 2");
+}
+
+double largest_box_fraction(const ButterflyConfig& c, std::size_t modes) {
+  if (c.largest_box > 0) return c.largest_box;
+  return std::min(1.0, std::max(0.05, 8 * c.smallest_box_spacings / static_cast<double>(modes)));
+}
+
+std::vector<double> butterfly_box_sizes(const ButterflyConfig& c, double extent, std::size_t modes) {
+  return geometric_box_sizes(largest_box_fraction(c, modes) * extent,
+                             c.smallest_box_spacings * extent / static_cast<double>(modes), c.box_sizes);
 }
 
 std::vector<ButterflyColumn> compute_butterfly(const ButterflyConfig& c, const RunOptions& run) {
@@ -54,10 +67,7 @@ std::vector<ButterflyColumn> compute_butterfly(const ButterflyConfig& c, const R
         col.freq_khz = s.freq_khz;
         col.ipr = s.ipr;
         const double extent = s.freq_khz.back() - s.freq_khz.front();
-        const double n = static_cast<double>(s.size());
-        col.dimension =
-            box_counting_dimension(s.freq_khz, geometric_box_sizes(c.largest_box * extent,
-                                                                   c.smallest_box_spacings * extent / n, c.box_sizes));
+        col.dimension = box_counting_dimension(s.freq_khz, butterfly_box_sizes(c, extent, s.size()));
       },
       run.progress);
   return columns;
@@ -76,7 +86,7 @@ nlohmann::json describe_butterfly(const ButterflyConfig& c, const std::vector<Bu
   meta["ratios"] = c.ratios;
   meta["realization"] = c.realization;
   meta["solver"] = "fast";
-  nlohmann::json box = {{"largest_box_of_extent", c.largest_box},
+  nlohmann::json box = {{"largest_box_of_extent", largest_box_fraction(c, c.chain.N)},
                         {"smallest_box_spacings", c.smallest_box_spacings},
                         {"box_sizes", c.box_sizes},
                         {"fit", "least squares of ln N(eps) on ln(1/eps); error = standard error of the slope"}};

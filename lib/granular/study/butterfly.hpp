@@ -22,13 +22,23 @@
 namespace granular {
 
 struct ButterflyConfig {
-  ChainRecipe chain;                 ///< a quasiperiodic recipe (chain.quasi set); its ratio is replaced by each β
-  std::vector<double> ratios;        ///< β values, each finite and > 0
-  std::uint64_t realization = 0;     ///< which phase of chain.seed (or the given phase)
-  double largest_box = 0.5;          ///< box sizes, as fractions of each spectrum's extent f_max − f_min
+  ChainRecipe chain;              ///< a quasiperiodic recipe (chain.quasi set); its ratio is replaced by each β
+  std::vector<double> ratios;     ///< β values, each finite and > 0
+  std::uint64_t realization = 0;  ///< which phase of chain.seed (or the given phase)
+  /// The largest box, as a fraction of each spectrum's extent f_max − f_min; 0: automatic, 5 % of
+  /// it or 8 smallest boxes if more (few beads). Boxes near the extent count the ends of the set
+  /// (N(ε) = ⌊L/ε⌋ + 1 for evenly spaced points): from half the extent an interval came out 0.949.
+  double largest_box = 0;
   double smallest_box_spacings = 4;  ///< the smallest box, in mean level spacings (extent / N)
   std::size_t box_sizes = 12;        ///< sizes, evenly spaced in ln ε
 };
+
+/// The largest box of `config` as a fraction of the extent, for a spectrum of `modes` levels
+/// (resolving largest_box = 0).
+double largest_box_fraction(const ButterflyConfig& config, std::size_t modes);
+
+/// The box sizes [units of `extent`] of the dimension fit of a spectrum of `modes` levels spanning `extent`.
+std::vector<double> butterfly_box_sizes(const ButterflyConfig& config, double extent, std::size_t modes);
 
 /// Throws InvalidInput naming the field (quasi, ratios, box fields, and the chain's own).
 void validate(const ButterflyConfig& config);

@@ -84,7 +84,8 @@ const ParameterTable<BeyondChoices>& beyond_parameters() {
   static const ParameterTable<O> table{
       {"damping_time", &O::damping_time, "on-site viscous damping time tau_d [s] of -(m/tau_d) du/dt; 0 = none"},
       {"kk_gamma", &O::kk_gamma,
-       "Kuwabara-Kono contact damping gamma_KK [s]: bond force A[d]^{3/2} + gamma A [d]^{1/2} dd/dt; 0 = none"},
+       "Kuwabara-Kono contact damping gamma_KK [s]: bond force A[d]^{3/2} + gamma A [d]^{1/2} dd/dt, not clipped at "
+       "zero (a damped contact can pull while it unloads); 0 = none"},
       {"mle", &O::mle,
        "maximal Lyapunov exponent X1(t) [1/s] by the tangent map of the same scheme (conservative runs: not with "
        "damping or the reference integrator)"},

@@ -2,6 +2,32 @@
 // Fortran LAPACK entry points used by the linear module (reference LAPACK or any BLAS/LAPACK
 // with the gfortran calling convention: trailing hidden string lengths).
 #include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <string>
+
+#include "granular/error.hpp"
+
+namespace granular::detail {
+
+/// A LAPACK size computed in 64 bits, or read back from a workspace query, as the LP64
+/// interface's int. Refused (InvalidInput naming N) when larger than an int, and when negative:
+/// that is a size LAPACK computed in its own 32-bit arithmetic and wrapped (dstevd's n² + 4n + 1
+/// above n = 46338), which once became a one-entry workspace.
+inline int lapack_int(std::int64_t size, const char* what) {
+  if (size > std::numeric_limits<int>::max())
+    throw InvalidInput("N", ": " + std::string(what) + " needs " + std::to_string(size) +
+                                " entries, more than LAPACK's 32-bit sizes allow");
+  if (size < 0)
+    throw InvalidInput("N", ": " + std::string(what) + " came back as " + std::to_string(size) +
+                                " entries, a size wrapped past LAPACK's 32-bit limit");
+  return static_cast<int>(size);
+}
+
+/// dstevd's workspace with eigenvectors, n² + 4n + 1 doubles, past an int: from n = 46339 on.
+inline bool stevd_workspace_overflows(std::int64_t n) { return n * n + 4 * n + 1 > std::numeric_limits<int>::max(); }
+
+}  // namespace granular::detail
 
 extern "C" {
 void dstevr_(const char* jobz, const char* range, const int* n, double* d, double* e, const double* vl,

@@ -22,18 +22,7 @@ std::string_view to_string(LapackDriver driver) { return driver_names.name_of(dr
 
 LapackDriver parse_lapack_driver(std::string_view name) { return driver_names.parse(name); }
 
-namespace {
-
-/// A LAPACK size computed in 64 bits; the LP64 interface takes int, so a larger one is an error
-/// instead of a wrapped, negative size.
-int lapack_int(std::int64_t size, const char* what) {
-  if (size > std::numeric_limits<int>::max())
-    throw InvalidInput("N", ": " + std::string(what) + " needs " + std::to_string(size) +
-                                " entries, more than LAPACK's 32-bit sizes allow");
-  return static_cast<int>(size);
-}
-
-}  // namespace
+using detail::lapack_int;
 
 void LapackEigensolver::solve(const SymTridiagonal& t, bool want_vectors, EigenDecomposition& out) {
   const int n = lapack_int(static_cast<std::int64_t>(t.size()), "the matrix");
@@ -98,7 +87,12 @@ int LapackEigensolver::run(LapackDriver driver, bool want_vectors, int n, EigenD
     }
     case LapackDriver::stevd: {
       // Ask dstevd for its workspace (lwork = -1) instead of spelling out 1 + 4n + n², which
-      // overflows an int above n = 46340; an answer past the LP64 limit is refused, not wrapped.
+      // overflows an int above n = 46338; an answer past the LP64 limit is refused, not wrapped.
+      // A fallback reaches it from any preferred driver: past the limit it fails as a driver does.
+      if (want_vectors && detail::stevd_workspace_overflows(n)) {
+        info = -1003;
+        break;
+      }
       int lwork = -1, liwork = -1;
       work_.resize(std::max<std::size_t>(work_.size(), 1));
       iwork_.resize(std::max<std::size_t>(iwork_.size(), 1));
