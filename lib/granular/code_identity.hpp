@@ -3,7 +3,7 @@
 // toolkit is noticed instead of mixing realizations of two codes.
 namespace granular {
 
-/// The toolkit's version ("0.1.0").
+/// The toolkit's version ("0.2.0"): semantic versioning, each version's changes in CHANGELOG.md.
 const char* code_version();
 /// The git commit the library was configured from (12 hex digits), "unknown" outside a git
 /// checkout. Read when CMake configures; a commit made since reconfigures the build.
