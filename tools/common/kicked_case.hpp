@@ -10,6 +10,7 @@
 #include "chain_options.hpp"
 #include "dynamics_options.hpp"
 #include "granular/study/chain_length_rule.hpp"
+#include "granular/study/frequency_slips.hpp"
 #include "granular/study/kicked_case.hpp"
 #include "tool_main.hpp"
 
@@ -54,6 +55,7 @@ inline KickedCase kicked_case(const KickedCaseOptions& o, bool ensemble) {
                                      : granular::kicked_case(o.case_file, o.chain.realization, o.realizations,
                                                              choices.beyond.deviation_samples, ensemble);
   warn(k.warnings);
+  warn(frequency_slips(k.c.mode, k.c.chain, [](const std::string& p) { return option_name(front_end_word(p)); }));
   return k;
 }
 
