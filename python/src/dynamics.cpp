@@ -190,6 +190,9 @@ void bind_dynamics(py::module_& m) {
       .def_readwrite("beads", &W::beads)
       .def_readwrite("mode", &W::mode);
   table_class(m, "ChainChoices", chain_parameters());
+  // The quasiperiodic chain of the choices (None without `quasi`) by the tools' rule: a keyword
+  // that takes no effect on it (angle with s1) is refused.
+  m.def("_quasiperiodic", [](const ChainChoices& c) { return quasiperiodic(c); });
   using K = KickedCaseChoices;  // granular.transport's case, made by the spreading tool's rule
   config_class(m, "KickedCaseChoices", "chain ic mode run beyond realizations", &K::chain, &K::ic, &K::mode, &K::run,
                &K::beyond, &K::realizations);

@@ -50,6 +50,8 @@ inline void add_kicked_case_options(CLI::App& app, KickedCaseOptions& o) {
 /// averages realizations.
 inline KickedCase kicked_case(const KickedCaseOptions& o, bool ensemble) {
   KickedCaseChoices choices = o;
+  if (o.deviation.empty() && o.beyond.deviation_samples != KickedCaseOptions{}.beyond.deviation_samples)
+    throw InvalidInput("--deviation-samples", ": takes effect only with --deviation FILE (and --mle)");
   if (o.deviation.empty()) choices.beyond.deviation_samples = 0;
   KickedCase k = o.case_file.empty() ? granular::kicked_case(choices, ensemble, radius_options(o.chain))
                                      : granular::kicked_case(o.case_file, o.chain.realization, o.realizations,
