@@ -13,6 +13,7 @@
 #include "granular/io/atomic_file.hpp"
 #include "granular/io/range_syntax.hpp"
 #include "granular/study/frequency_slips.hpp"
+#include "granular/study/ipr_map_estimate.hpp"
 #include "granular/study/ipr_map_files.hpp"
 #include "granular/study/long_run_choices.hpp"
 
@@ -88,6 +89,10 @@ int main(int argc, char** argv) {
     const auto claim = tool::claim_output(output, meta.command());
     const TableOutputs paths = table_outputs(output);
 
+    if (!quiet)  // a long map says so before it starts (its progress line counts chains)
+      if (const IprMapEstimate e = estimate_ipr_map(config, resolve_threads(run.threads));
+          e.seconds > announced_solve_seconds)
+        std::fprintf(stderr, "ipr-map: %s\n", describe(e).c_str());
     ProgressMeter progress(config.q_values.size() * config.xi_values.size() * config.realizations, "ipr-map",
                            quiet ? 0 : -1);
     run.progress = &progress;
