@@ -20,6 +20,7 @@
 #include "granular/linear/dynamical_matrix.hpp"
 #include "granular/linear/spectrum.hpp"
 #include "granular/number_format.hpp"
+#include "granular/study/breather_crossing.hpp"
 
 namespace granular {
 namespace {
@@ -379,12 +380,19 @@ BreatherBranch continue_breather(const BreatherBranchConfig& c,
     }
     const bool to_target = !std::isnan(target) && (next - target) * (last.freq_khz - target) <= 0;
     if (to_target) next = target;
-    // A linear frequency between this point and the next: the breather meets a band (or a mode).
-    bool crosses = false;
-    for (double f : branch.linear_khz)
-      if ((f - next) * (f - last.freq_khz) < 0) crosses = true;
-    if (crosses) {
-      branch.stop_reason = "reached a linear mode frequency near " + format_number(next) + " kHz (band edge)";
+    // A linear mode between this point and the next that shares the breather's beads: a resonance
+    // (a band, or a mode under it). Modes localized elsewhere are passed (study/breather_crossing.hpp).
+    // At F0 = 0 the modes are single beads (no vectors): every on-site frequency stops it.
+    if (vacuum) {
+      bool crosses = false;
+      for (double f : branch.linear_khz)
+        if ((f - next) * (f - last.freq_khz) < 0) crosses = true;
+      if (crosses) {
+        branch.stop_reason = "reached an on-site frequency near " + format_number(next) + " kHz";
+        break;
+      }
+    } else if (const auto crossing = blocking_crossing(modes, d, last.x0, last.freq_khz, next)) {
+      branch.stop_reason = describe(*crossing);
       break;
     }
     try {
