@@ -307,3 +307,17 @@ def test_breather_figure_draws_the_branch_from_the_result_and_the_tools_files(to
     assert (tools.folder / "br.png").stat().st_size > 10000
     bad = cli("-m", "granular.plot", "breathers", "br.csv", "--point", "7", cwd=tools.folder)
     assert bad.returncode == 2 and "Traceback" not in bad.stderr
+
+
+def test_quasiperiodic_figures_name_their_chain():
+    """A quasiperiodic chain's figure says its kind and every parameter that sets it (it said only N and F0)."""
+    fly = gp.butterfly(gr.butterfly("s1", modulation=0.5, ratios="0.2,0.4", N=40, phase=0.4))
+    title = fly._suptitle.get_text()
+    for part in ("S1 quasiperiodic", r"$\lambda$ = 0.5", r"$\varphi$ = 0.4", r"$\kappa$ = 4", "N = 40"):
+        assert part in title, (part, title)
+    chain = gr.quasiperiodic("cylinders", N=30, modulation=0.3, ratio="2/7", angle=60)
+    spectrum = gp.spectrum(gr.spectrum(chain))
+    title = spectrum._suptitle.get_text()
+    for part in ("cylinders quasiperiodic", r"$\lambda$ = 0.3", r"$\beta$ = 0.285714", r"$\alpha_0$ = 60°",
+                 r"$\varphi$ drawn per realization"):
+        assert part in title, (part, title)
