@@ -296,6 +296,9 @@ def test_breather_figure_draws_the_branch_from_the_result_and_the_tools_files(to
         drawn = np.sort(np.concatenate([stable.get_xdata(), unstable.get_xdata()]))
         assert np.array_equal(drawn, np.sort(b.freq_khz))
         assert np.array_equal(stable.get_xdata(), b.freq_khz[b.stable])
+        assert np.allclose(stable.get_ydata(), b.energy[b.stable] * 1e6, rtol=1e-12, atol=0)  # in µJ
+        assert branch.get_ylabel() == r"energy above the static state [$\mu$J]"
+        assert "gap (no linear mode)" in [t.get_text() for t in branch.get_legend().get_texts()]  # from the edge
         profiles = fig.axes[2:]  # of the first, middle and last points
         assert len(profiles) == 3
         for ax, j in zip(profiles, (0, 1, 2)):

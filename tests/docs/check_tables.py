@@ -8,7 +8,8 @@ import re
 import sys
 
 source = pathlib.Path(sys.argv[1])
-pages = [source / "README.md", *sorted((source / "docs").glob("*.md")), *sorted((source / "docs" / "site").glob("*.md"))]
+pages = [source / "README.md", *sorted((source / "docs").glob("*.md")),
+         *sorted((source / "docs" / "site").glob("*.md"))]
 DELIMITER = re.compile(r"^\|?(\s*:?-{3,}:?\s*\|)+\s*:?-{3,}:?\s*\|?\s*$|^\|(\s*:?-{3,}:?\s*\|)+$")
 
 
@@ -36,8 +37,8 @@ for page in pages:
         row = i - 1
         while row < len(lines) and lines[row].strip().startswith("|"):
             if row != i and cells(lines[row]) != width:
-                problems.append(f"{page.relative_to(source)}:{row + 1}: {cells(lines[row])} cells, the table has {width} "
-                                f"(escape a | inside a cell as \\|)")
+                problems.append(f"{page.relative_to(source)}:{row + 1}: {cells(lines[row])} cells, the table has "
+                                f"{width} (escape a | inside a cell as \\|)")
             row = row + 1 if row != i - 1 else i + 1
 print(f"check_tables: {len(pages)} pages")
 if problems:
