@@ -277,6 +277,10 @@ def test_localization_figure_marks_unresolved_lengths(tools):
     assert any(label.startswith("not resolved") for label in labels)
     measured = fig.axes[0].lines[0].get_ydata()
     assert np.isnan(measured[rows["resolved"] == 0]).all()
+    # Its N is the transfer matrices' walk, not a chain's; its legend keeps off the curve.
+    title = fig._suptitle.get_text()
+    assert "transfer matrices over 2,000 beads" in title and "N = 2000" not in title, title
+    assert fig.axes[0].get_legend()._loc == 0  # matplotlib's "best"
 
 
 def test_breather_figure_draws_the_branch_from_the_result_and_the_tools_files(tools):
