@@ -108,6 +108,8 @@ def test_ctrl_c_during_an_ensemble_leaves_a_resumable_checkpoint(tmp_path):
     assert 3 <= kept < 1500, kept
     resumed = gr.transport(**params, checkpoint=checkpoint, resume=True)
     fresh = gr.transport(**params)
+    assert resumed.metadata["resumed_checkpoint"] == {"files": [checkpoint]}  # resumed, and from which file
+    assert "resumed_checkpoint" not in fresh.metadata
     for key in ("m2", "ipr", "energy_error", "m2_se"):
         assert_identical(resumed[key], fresh[key])
     for key in ("gamma", "gamma_err", "gamma_real_err", "eta", "exponents"):
