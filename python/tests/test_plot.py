@@ -81,9 +81,13 @@ def test_dynamics_figures_from_results(run):
     with pytest.raises(ValueError, match="select no part"):
         gp.energy_map(run, site_window=(5000, 6000))
     check_axes(gp.forces(run))
-    check_axes(gp.spreading([run, gr.spreading(gr.homogeneous(N=301), T=2e-3, fit=(5e-4, 2e-3))]))
+    pair = gp.spreading([run, gr.spreading(gr.homogeneous(N=301), T=2e-3, fit=(5e-4, 2e-3))])
+    check_axes(pair)
+    assert pair._suptitle.get_text().startswith("energy spreading: N = 301"), pair._suptitle  # it had no title
     ensemble = gr.transport(N=201, realizations=2, T=1e-3, fit=(2e-4, 1e-3))
-    check_axes(gp.spreading(ensemble))
+    one = gp.spreading(ensemble)
+    check_axes(one)
+    assert one._suptitle.get_text().startswith("energy spreading: Anderson (A), N = 201"), one._suptitle
     table = gr.exponent_table(chains=["h", "A"], F0=[10, 0], ic=["velocity"], N=151, realizations=2, T=1e-3,
                               fit=(2e-4, 1e-3), samples=60, profile_F0=[10], profile_realizations=2)
     check_axes(gp.exponents(table, "velocity"))
