@@ -17,6 +17,9 @@ if(BUILD_TESTING)
                    ${CMAKE_SOURCE_DIR}/tools/build-docs.sh ${CMAKE_BINARY_DIR}
                    ${CMAKE_SOURCE_DIR}/tests/docs/check_site.py)
   set_tests_properties(docs_site PROPERTIES LABELS docs TIMEOUT 600 DEPENDS python_pip_install_tutorial COST 85)
+  # Every Markdown table renders as a table: as many cells per row as its delimiter row.
+  add_test(NAME docs_tables COMMAND /usr/bin/python3 ${CMAKE_SOURCE_DIR}/tests/docs/check_tables.py ${CMAKE_SOURCE_DIR})
+  set_tests_properties(docs_tables PROPERTIES LABELS docs)
   # Every shell and Python block of the README and the docs pages, run as a reader would.
   add_test(NAME docs_examples
            COMMAND /usr/bin/python3 ${CMAKE_SOURCE_DIR}/tests/docs/run_examples.py ${CMAKE_SOURCE_DIR}

@@ -12,6 +12,7 @@
 #include "granular/io/hdf5_file.hpp"
 #include "granular/model/configuration_file.hpp"
 #include "granular/study/breather_branch.hpp"
+#include "granular/study/frequency_slips.hpp"
 
 int main(int argc, char** argv) {
   using namespace granular;
@@ -87,6 +88,7 @@ int main(int argc, char** argv) {
         if (!seed_file.empty()) config.seed_profile = read_displacements_file(seed_file, "seed_profile");
         validate(config);
         load_hdf5_writer();  // the profiles' file: a missing component fails here, not after the branch
+        tool::warn(frequency_slips(config, [](const std::string& p) { return tool::option_name(p); }));  // Hz as kHz
         tool::warn(radius_warnings(config.chain, tool::radius_options(chain_options)));
         const auto claim = tool::claim_output(output, meta.command());
         const TableOutputs paths = table_outputs(output);

@@ -8,6 +8,7 @@ src=$(cd "$(dirname "$0")/.." && pwd)
 build=$(cd "${1:-$src/build}" && pwd)
 site=$build/docs-site
 pages=$site/src
+/usr/bin/python3 "$src/tests/docs/check_tables.py" "$src"  # a broken table fails the build (MyST would show pipes)
 rm -rf "$pages" "$site/html" "$site/doxygen"
 mkdir -p "$pages/examples" "$site/doxygen"
 cp -r "$src/docs/site/." "$pages/"

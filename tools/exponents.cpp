@@ -15,6 +15,7 @@
 #include "granular/parallel/mpi_context.hpp"
 #include "granular/study/chain_length_rule.hpp"
 #include "granular/study/exponent_files.hpp"
+#include "granular/study/frequency_slips.hpp"
 
 int main(int argc, char** argv) {
   using namespace granular;
@@ -70,6 +71,7 @@ int main(int argc, char** argv) {
     std::vector<TransportCase> cases = exponent_cases(config);
     const nlohmann::json rules = length_rules(cases, auto_n, dynamics.site);
     const nlohmann::json step_rule = tool::validate_and_settle(cases);
+    tool::warn(frequency_slips(cases, [](const std::string& p) { return tool::option_name(front_end_word(p)); }));
     base.dynamics = cases.front().dynamics;  // τ and scheme as settled
     const auto paper = compare ? read_paper_table(paper_table) : std::vector<PaperCell>{};
     const ExponentPaths paths = exponent_paths(output, compare);

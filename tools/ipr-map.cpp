@@ -1,5 +1,6 @@
 // ipr-map: mean frequency and inverse participation ratio of every mode of disordered
 // chains, over a grid of size ratios ξ and probabilities q (the paper's IPR-map figure).
+#include <cstdio>
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -11,6 +12,8 @@
 #include "granular/ensemble/parallel_realizations.hpp"
 #include "granular/io/atomic_file.hpp"
 #include "granular/io/range_syntax.hpp"
+#include "granular/study/frequency_slips.hpp"
+#include "granular/study/ipr_map_estimate.hpp"
 #include "granular/study/ipr_map_files.hpp"
 #include "granular/study/long_run_choices.hpp"
 
@@ -82,9 +85,14 @@ int main(int argc, char** argv) {
       config.q_values = config.xi_values = {std::numeric_limits<double>::quiet_NaN()};  // one cell
     validate(config);
     tool::warn(radius_warnings(config.chain, tool::radius_options(beads)));
+    tool::warn(frequency_slips(config, [](const std::string& p) { return tool::option_name(p); }));  // Hz as kHz
     const auto claim = tool::claim_output(output, meta.command());
     const TableOutputs paths = table_outputs(output);
 
+    if (!quiet)  // a long map says so before it starts (its progress line counts chains)
+      if (const IprMapEstimate e = estimate_ipr_map(config, resolve_threads(run.threads));
+          e.seconds > announced_solve_seconds)
+        std::fprintf(stderr, "ipr-map: %s\n", describe(e).c_str());
     ProgressMeter progress(config.q_values.size() * config.xi_values.size() * config.realizations, "ipr-map",
                            quiet ? 0 : -1);
     run.progress = &progress;

@@ -93,5 +93,5 @@ int main(int argc, char** argv) {
                      files.commit();
                      if (ensemble) CheckpointLog::remove_all(paths.checkpoint);
                    },
-                   {{"lyapunov", "--mle"}, {"amplitude", "--alpha"}});
+                   {{"lyapunov", "--mle"}, {"amplitude", "--alpha"}, {"spectral_density", "--spectrum"}});
 }

@@ -1,6 +1,17 @@
 #include "granular/parameter_table.hpp"
 
+#include "granular/error.hpp"
+
 namespace granular {
+
+void detail::refuse_unmet(const std::string& name, const Needs& needs, const std::string& state) {
+  std::string problem = ": takes effect only with `" + needs.choice + "`";
+  if (!needs.values.empty()) problem += " " + needs.values.front();
+  problem += state.empty()    ? ", which is not given"
+             : state == "off" ? ", which is off"
+                              : ", not `" + needs.choice + "` " + state;
+  throw InvalidInput(name, problem);
+}
 
 std::string tell_parameters(const std::string& help, const std::function<std::string(const std::string&)>& told) {
   std::string out;

@@ -3,11 +3,15 @@
 // field it sets and what it means, with units. Every front end is made of that table — a tool
 // its options and their --help lines, Python its attributes — so a parameter added to the table
 // reaches all of them, in each front end's words (parameter_names.hpp).
+#include <algorithm>
+#include <cctype>
 #include <functional>
+#include <iterator>
 #include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <utility>
 #include <variant>
 #include <vector>
@@ -23,6 +27,14 @@ template <class Choices>
 struct TextForm {
   void (*read)(Choices&, const std::string&) = nullptr;
   std::string (*write)(const Choices&) = nullptr;
+};
+
+/// What a parameter takes effect with: another choice of its table on (a word given, a flag set, a
+/// number not 0, an optional set) and, if `values` are listed, one of them (case-insensitive; the
+/// first is the one messages name). A parameter given without it is refused, not ignored.
+struct Needs {
+  std::string choice;
+  std::vector<std::string> values{};
 };
 
 template <class Choices>
@@ -50,6 +62,14 @@ struct Parameter {
   /// A command line's text form, if the parameter has one; front ends that take values rather
   /// than text (Python) set `field`.
   std::optional<TextForm<Choices>> text{};
+  /// The choice the parameter takes effect with (`angle`: `quasi` cylinders); none: always.
+  std::optional<Needs> needs{};
+
+  /// This row, taking effect only with `choice` (set to one of `values`, if any).
+  Parameter needing(std::string choice, std::vector<std::string> values = {}) && {
+    needs = Needs{std::move(choice), std::move(values)};
+    return std::move(*this);
+  }
 };
 
 template <class Choices>
@@ -67,6 +87,66 @@ const Parameter<Choices>& parameter(const ParameterTable<Choices>& table, std::s
   for (const Parameter<Choices>& p : table)
     if (p.name == name) return p;
   throw std::out_of_range("no parameter " + std::string(name));
+}
+
+namespace detail {
+template <class T>
+bool same_value(const T& a, const T& b) {
+  if constexpr (std::is_floating_point_v<T>) return a == b || (a != a && b != b);  // NaN defaults
+  else return a == b;
+}
+template <class T>
+bool is_on(const T& v) {
+  if constexpr (std::is_same_v<T, std::string>) return !v.empty();
+  else if constexpr (requires { v.has_value(); }) return v.has_value();
+  else if constexpr (requires { v.empty(); }) return !v.empty();
+  else return v != T{};
+}
+/// The refusal of a parameter given without what it `needs`: `state` is the needed choice's
+/// word when it is on (a word not among the values); when it is off, "" for a choice not given (a
+/// word, an optional) and "off" for a flag or number (0).
+[[noreturn]] void refuse_unmet(const std::string& name, const Needs& needs, const std::string& state);
+}  // namespace detail
+
+/// Whether `o` sets `p` to other than its default in `defaults` (a text form compared as written).
+template <class Choices>
+bool given(const Choices& o, const Parameter<Choices>& p, const Choices& defaults) {
+  if (p.text && p.text->write) return p.text->write(o) != p.text->write(defaults);
+  return std::visit(
+      [&]<class Field>(Field field) {
+        if constexpr (std::is_same_v<Field, std::monostate>) return false;
+        else return !detail::same_value(o.*field, defaults.*field);
+      },
+      p.field);
+}
+
+/// Refuses every parameter of `table` that `o` gives (not its default in `defaults`) without the
+/// choice it needs (Parameter::needs): throws InvalidInput naming it and that choice, so an option
+/// never is silently ignored ("`angle`: takes effect only with `quasi` cylinders, not `quasi` s1").
+template <class Choices>
+void refuse_unmet_needs(const Choices& o, const ParameterTable<Choices>& table, const Choices& defaults = Choices{}) {
+  for (const Parameter<Choices>& p : table) {
+    if (!p.needs || !given(o, p, defaults)) continue;
+    const Parameter<Choices>& needed = parameter(table, p.needs->choice);
+    std::string word;   // the needed choice's word, lowercase
+    bool flag = false;  // a flag or number: off rather than not given
+    const bool on = std::visit(
+        [&]<class Field>(Field field) {
+          if constexpr (std::is_same_v<Field, std::monostate>) return false;
+          else {
+            using T = std::remove_cvref_t<decltype(o.*field)>;
+            if constexpr (std::is_same_v<T, std::string>)
+              std::transform((o.*field).begin(), (o.*field).end(), std::back_inserter(word),
+                             [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+            flag = std::is_arithmetic_v<T>;
+            return detail::is_on(o.*field);
+          }
+        },
+        needed.field);
+    const auto& values = p.needs->values;
+    if (on && (values.empty() || std::find(values.begin(), values.end(), word) != values.end())) continue;
+    detail::refuse_unmet(p.name, *p.needs, on ? word : flag ? "off" : "");
+  }
 }
 
 /// `help` with every parameter in backticks replaced by `told(parameter)`.

@@ -105,9 +105,10 @@ granular.quasiperiodic's; disorder, q and xi are then not used
 
 
 def _set_quasi(recipe, quasi, modulation, ratio, phase, angle, k0):
-    """Makes `recipe` (a _core.ChainRecipe, F0 already set) the quasiperiodic chain `quasi`, if not None."""
-    if quasi is not None:
-        recipe.quasi = _quasi(quasi, modulation, ratio, phase, angle, k0)
+    """Makes `recipe` (a _core.ChainRecipe, F0 already set) the quasiperiodic chain `quasi`, if not None (its
+    keywords without it are refused, not ignored)."""
+    recipe.quasi = _quasi(quasi, modulation, ratio, phase, angle, k0)
+    if recipe.quasi is not None:
         recipe._validate_quasi()
 
 
@@ -136,11 +137,10 @@ def _chain_choices(c, types=None, type_masses=None, polydisperse=None, **fields)
 
 def _quasi_choices(c, quasi, modulation, ratio, phase, angle, k0):
     """Makes `c` (a _core.ChainChoices) the quasiperiodic chain `quasi` of granular.quasiperiodic's keywords, as the
-    tools' --quasi takes them; None: none."""
-    if quasi is not None:
-        c.quasi, c.modulation, c.phase, c.angle, c.k0 = quasi, modulation, phase, angle, k0
-        if ratio is not None:  # None: the default (the golden mean)
-            c.ratio = ratio if isinstance(ratio, str) else repr(float(ratio))
+    tools' --quasi takes them; None: none (its keywords are then refused by the tools' rule, not ignored)."""
+    c.quasi, c.modulation, c.phase, c.angle, c.k0 = "" if quasi is None else quasi, modulation, phase, angle, k0
+    if ratio is not None:  # None: the default (the golden mean)
+        c.ratio = ratio if isinstance(ratio, str) else repr(float(ratio))
 
 
 def _run(threads=0, checkpoint=None, resume=False, resume_other_version=False, progress=False, fresh=False,

@@ -2,6 +2,7 @@
 chain: keywords (the tools' option names and units: N, q, xi, seed, realization, F0 [N], R1 [m]), defaults and
 docstrings. The values are checked and the chains built by granular._core, with the library's rules."""
 import math
+import re
 
 import numpy as np
 
@@ -154,15 +155,24 @@ def from_radii(radii, F0=10.0, material=steel, walls="flat"):
     return _core._chain(recipe, 0)
 
 
-def _quasi(kind, modulation, ratio, phase, angle, k0, k0_n_per_m=0.0):
-    """A _core.Quasiperiodic of granular.quasiperiodic's keywords."""
-    q = _core.Quasiperiodic()
-    q.kind = kind
-    q.modulation = modulation
+def _quasi(kind, modulation, ratio, phase, angle, k0, k0_n_per_m=0.0, keyword="quasi"):
+    """A _core.Quasiperiodic of granular.quasiperiodic's keywords, or None for kind None, by the tools' rule for
+    --quasi: a keyword that takes no effect on this kind (angle with 's1', modulation without a kind) is refused,
+    naming the keyword `keyword` for the kind."""
+    c = _core.ChainChoices()
+    c.quasi = "" if kind is None else kind
+    c.modulation = modulation
     if ratio is not None:  # None: the default (the golden mean)
-        q.ratio = ratio if isinstance(ratio, str) else repr(float(ratio))
-    q.phase, q.angle, q.k0, q.k0_n_per_m = phase, angle, k0, k0_n_per_m
-    return q
+        c.ratio = ratio if isinstance(ratio, str) else repr(float(ratio))
+    c.phase, c.angle, c.k0, c.k0_n_per_m = phase, angle, k0, k0_n_per_m
+    try:
+        if kind is not None and not kind:
+            _core.Quasiperiodic().kind = kind  # the kind's own refusal
+        return _core._quasiperiodic(c)
+    except ValueError as e:
+        if keyword == "quasi":
+            raise
+        raise ValueError(re.sub(r"\bquasi\b", keyword, str(e))) from None
 
 
 def quasiperiodic(kind="s2", N=100, modulation=0.0, ratio="golden", phase=None, angle=45.0, k0=4.0, seed=1,
@@ -179,7 +189,7 @@ def quasiperiodic(kind="s2", N=100, modulation=0.0, ratio="golden", phase=None, 
     recipe.N = _core._size(N, "N", 2, _MAX)
     recipe.F0, recipe.material = F0, material
     recipe.seed = _core._size(seed, "seed")
-    recipe.quasi = _quasi(kind, modulation, ratio, phase, angle, k0, k0_n_per_m)
+    recipe.quasi = _quasi(kind, modulation, ratio, phase, angle, k0, k0_n_per_m, keyword="kind")
     return _core._chain(recipe, _core._size(realization, "realization"))
 
 

@@ -5,11 +5,12 @@ import threading
 import time
 
 
-def run_long(work, done, cancel, label, total, progress):
+def run_long(work, done, cancel, label, total, progress, interrupted="interrupted (Ctrl-C)"):
     """Runs work() (a _core call that releases the GIL) on a thread of its own while this (calling) thread waits in
     50 ms steps, so Ctrl-C reaches it, and draws a ProgressBar of done() out of `total` when `progress`. On
     KeyboardInterrupt it calls cancel(), waits for work() to stop (the library finishes and checkpoints the
-    realizations in flight) and raises the KeyboardInterrupt; an exception of work() is raised here. (The C++
+    realizations in flight) and raises a KeyboardInterrupt saying `interrupted` (the call that continues the run); an
+    exception of work() is raised here. (The C++
     caller waits for work() too, whatever happens here: Python 3.11's Thread.join can return early when
     interrupted.)"""
     bar = ProgressBar(total, label) if progress else None
@@ -28,7 +29,7 @@ def run_long(work, done, cancel, label, total, progress):
             worker.join(0.05)
             if bar is not None:
                 bar.update(done())
-    except BaseException:
+    except BaseException as error:
         cancel()  # whatever happened here, the worker is told to stop and waited for
         worker.join()
         if bar is not None:
@@ -36,6 +37,8 @@ def run_long(work, done, cancel, label, total, progress):
                 bar.close(False)
             except Exception:  # noqa: S110 (the first exception is the one to report)
                 pass
+        if isinstance(error, KeyboardInterrupt) and not error.args:  # Ctrl-C's own says nothing
+            raise KeyboardInterrupt(interrupted) from None
         raise
     if bar is not None:
         bar.update(done())

@@ -175,7 +175,7 @@ def butterfly(kind="s1", *, ratios="0.005:0.995:0.005", N=100, modulation=0.0, p
     recipe.N = _core._size(N, "N", 2, _MAX)
     recipe.F0, recipe.R1 = F0, R1
     recipe.seed = _core._size(seed, "seed")
-    recipe.quasi = _quasi(kind, modulation, None, phase, angle, k0)  # each ratio of `ratios` in turn
+    recipe.quasi = _quasi(kind, modulation, None, phase, angle, k0, keyword="kind")  # each ratio of `ratios` in turn
     c.chain = recipe
     c.realization = _core._size(realization, "realization")
     c.largest_box, c.smallest_box_spacings = largest_box, smallest_box
@@ -228,7 +228,7 @@ def dynamical_butterfly(kind="s1", *, ratios="0.005:0.995:0.005", N=100, modulat
     recipe.N = _core._size(N, "N", 2, _MAX)
     recipe.F0, recipe.R1 = _core._finite(F0, "F0"), _core._finite(R1, "R1")
     recipe.seed = _core._size(seed, "seed")
-    recipe.quasi = _quasi(kind, modulation, None, phase, angle, k0)  # each ratio of `ratios` in turn
+    recipe.quasi = _quasi(kind, modulation, None, phase, angle, k0, keyword="kind")  # each ratio of `ratios` in turn
     c.chain = recipe
     c.realization = _core._size(realization, "realization")
     c.amplitude = _core._finite(amplitude, "amplitude")

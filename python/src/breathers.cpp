@@ -9,6 +9,7 @@
 #include "bindings.hpp"
 #include "granular/dynamics/scheme.hpp"
 #include "granular/study/breather_branch.hpp"
+#include "granular/study/frequency_slips.hpp"
 
 namespace granular::python {
 namespace {
@@ -17,6 +18,7 @@ py::dict breathers(const PyChain& c, BreatherBranchConfig config) {
   config.chain = c.recipe;
   config.realization = c.realization;
   validate(config);
+  warn(frequency_slips(config, [](const std::string& p) { return p; }));  // Hz typed as kHz: near_khz, as the tool
   BreatherBranch branch;
   {
     py::gil_scoped_release release;

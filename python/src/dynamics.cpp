@@ -17,6 +17,7 @@
 #include "granular/study/exponent_choices.hpp"
 #include "granular/study/exponent_files.hpp"
 #include "granular/study/exponent_table.hpp"
+#include "granular/study/frequency_slips.hpp"
 #include "granular/study/kicked_case.hpp"
 #include "granular/study/paper_comparison.hpp"
 #include "granular/study/spreading_files.hpp"
@@ -40,8 +41,9 @@ py::dict spreading(const PyChain& chain, TransportCase c, const SpreadingOutputC
   granular::apply(choices, beyond, c);
   granular::apply(outputs, c);
   SpreadingRunConfig& d = c.dynamics;
-  fit_within_duration(c);                          // a window beyond T: no exponents
-  granular::apply(ModeKick(c.mode), {c.kick}, c);  // only a mode kick takes mode, mode_khz, energy
+  fit_within_duration(c);                                  // a window beyond T: no exponents
+  granular::apply(ModeKick(c.mode), {c.kick}, c);          // only a mode kick takes mode, mode_khz, energy
+  warn(frequency_slips(c.mode, c.chain, front_end_word));  // mode_khz: Hz typed as kHz
   // τ by the stability rule on the chain's recipe: every realization of a random chain (as the
   // tool's --disorder), this very chain for a given one (as the tool's --config/--radii); a dt past
   // it named before anything judged on its grid.
@@ -79,6 +81,7 @@ py::dict spreading(const PyChain& chain, TransportCase c, const SpreadingOutputC
 py::dict transport(const KickedCaseChoices& choices, bool profile, const PyRun& options) {
   KickedCase k = kicked_case(choices, true, radius_names(choices.chain, front_end_word));
   warn(k.warnings);  // implausible radii, before the run as the tool says them
+  warn(frequency_slips(k.c.mode, k.c.chain, front_end_word));  // mode_khz: Hz typed as kHz
   TransportCase& c = k.c;
   if (profile) c.profile_realizations = c.realizations;
   std::string t_warning;
@@ -121,8 +124,9 @@ py::dict exponent_table(const ExponentChoices& words, ExponentTableConfig config
   auto cases = exponent_cases(config);
   std::string t_warning;  // one is enough: the cases share T
   const nlohmann::json step_rule = validate_and_settle(cases, "T", t_warning);
-  if (!t_warning.empty()) warn({t_warning});  // after the errors
-  base.dynamics = cases.front().dynamics;     // τ and scheme as settled
+  if (!t_warning.empty()) warn({t_warning});     // after the errors
+  warn(frequency_slips(cases, front_end_word));  // mode_khz: Hz typed as kHz, as the tool warns
+  base.dynamics = cases.front().dynamics;        // τ and scheme as settled
   const int thread_request = options.thread_request();
   const std::string& prefix = options.checkpoint;
   const bool compare = !paper_path.empty();  // "": no comparison with the paper's Table I
@@ -186,6 +190,9 @@ void bind_dynamics(py::module_& m) {
       .def_readwrite("beads", &W::beads)
       .def_readwrite("mode", &W::mode);
   table_class(m, "ChainChoices", chain_parameters());
+  // The quasiperiodic chain of the choices (None without `quasi`) by the tools' rule: a keyword
+  // that takes no effect on it (angle with s1) is refused.
+  m.def("_quasiperiodic", [](const ChainChoices& c) { return quasiperiodic(c); });
   using K = KickedCaseChoices;  // granular.transport's case, made by the spreading tool's rule
   config_class(m, "KickedCaseChoices", "chain ic mode run beyond realizations", &K::chain, &K::ic, &K::mode, &K::run,
                &K::beyond, &K::realizations);

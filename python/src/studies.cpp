@@ -16,6 +16,7 @@
 #include "granular/study/butterfly.hpp"
 #include "granular/study/correlation_files.hpp"
 #include "granular/study/dynamical_butterfly.hpp"
+#include "granular/study/frequency_slips.hpp"
 #include "granular/study/ipr_map_files.hpp"
 #include "granular/study/localization_files.hpp"
 
@@ -25,6 +26,7 @@ namespace {
 py::dict ipr_map(const IprMapConfig& c, const std::string& solver, const std::string& method, const PyRun& options) {
   const int thread_request = options.thread_request();
   validate(c);
+  warn(frequency_slips(c, front_end_word));  // near, window: Hz typed as kHz, as the tool warns
 
   std::vector<IprMapCell> cells;
   run_long("ipr_map", c.q_values.size() * c.xi_values.size() * c.realizations, options,

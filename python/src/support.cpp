@@ -183,10 +183,24 @@ void run_long(const std::string& label, std::size_t total, const PyRun& options,
     call();
     return;
   }
+  // What a Ctrl-C says: the call that continues the run, as the tools print the command that does.
+  const std::string function = "granular." + label;
+  const bool resumable = label == "transport" || label == "exponent_table";  // the calls that take checkpoint=
+  const std::string interrupted =
+      !options.checkpoint.empty()
+          ? "interrupted (Ctrl-C) after the work in flight; the finished realizations are kept in '" +
+                options.checkpoint + "'. To continue: call " + function +
+                "(...) again with the same arguments and resume=True"
+          : "interrupted (Ctrl-C) after the work in flight; nothing was kept" +
+                std::string(resumable ? " (no checkpoint=): call " + function +
+                                            "(..., checkpoint='run.checkpoint') to keep the finished realizations "
+                                            "of a run, and again with resume=True to continue it"
+                                      : "; call " + function + "(...) again to run it");
   // granular._progress.run_long: a worker thread, the progress bar and Ctrl-C.
   py::module_::import("granular._progress")
       .attr("run_long")(call, py::cpp_function([meter] { return meter->done(); }),
-                        py::cpp_function([cancel] { cancel->store(true); }), label, total, options.progress);
+                        py::cpp_function([cancel] { cancel->store(true); }), label, total, options.progress,
+                        interrupted);
 }
 
 /// Each warning of the library as a Python RuntimeWarning (the tools print them on stderr).

@@ -52,9 +52,9 @@ def test_two_calls_on_two_threads_compute_at_once(monkeypatch):
     progress = {}  # thread name -> (done(), total) of the call on that thread
     original = gr._progress.run_long
 
-    def recording(work, done, cancel, label, total, bar):
+    def recording(work, done, cancel, label, total, bar, *interrupted):
         progress[threading.current_thread().name] = (done, total)
-        return original(work, done, cancel, label, total, bar)
+        return original(work, done, cancel, label, total, bar, *interrupted)
 
     monkeypatch.setattr(gr._progress, "run_long", recording)
     work = dict(xi="0.1:0.6", q=0.5, N=100, realizations=60, threads=1)  # 3,060 chains each
@@ -97,14 +97,19 @@ def test_ctrl_c_during_an_ensemble_leaves_a_resumable_checkpoint(tmp_path):
     # long enough (~1 s on two idle cores) that the interrupt lands well before the end
     params = dict(disorder="RDM1", N=401, realizations=1500, T=2e-3, fit=(5e-4, 2e-3), threads=2, seed=4)
     watcher = interrupt_when(lambda: records(checkpoint) >= 3, _thread.interrupt_main)
-    with pytest.raises(KeyboardInterrupt):
+    with pytest.raises(KeyboardInterrupt) as stopped:
         gr.transport(**params, checkpoint=checkpoint, progress=True)
         time.sleep(5)  # finished before the interrupt arrived: let it land here, the test then fails below
     watcher.join()
+    # It says how to continue, as the tools print the command (an empty message before).
+    assert f"kept in '{checkpoint}'" in str(stopped.value)
+    assert "call granular.transport(...) again with the same arguments and resume=True" in str(stopped.value)
     kept = records(checkpoint)
     assert 3 <= kept < 1500, kept
     resumed = gr.transport(**params, checkpoint=checkpoint, resume=True)
     fresh = gr.transport(**params)
+    assert resumed.metadata["resumed_checkpoint"] == {"files": [checkpoint]}  # resumed, and from which file
+    assert "resumed_checkpoint" not in fresh.metadata
     for key in ("m2", "ipr", "energy_error", "m2_se"):
         assert_identical(resumed[key], fresh[key])
     for key in ("gamma", "gamma_err", "gamma_real_err", "eta", "exponents"):
@@ -115,7 +120,7 @@ def test_ctrl_c_during_an_ensemble_leaves_a_resumable_checkpoint(tmp_path):
 def test_ctrl_c_stops_an_ipr_map_and_the_module_keeps_working():
     started = time.monotonic()
     watcher = interrupt_when(lambda: time.monotonic() - started > 0.3, lambda: os.kill(os.getpid(), signal.SIGINT))
-    with pytest.raises(KeyboardInterrupt):
+    with pytest.raises(KeyboardInterrupt, match=r"nothing was kept; call granular\.ipr_map\(\.\.\.\) again"):
         gr.ipr_map(xi="0.1:1", q="0.2,0.5,0.8", N=100, realizations=100, threads=2)
         time.sleep(5)
     watcher.join()

@@ -81,9 +81,13 @@ def test_dynamics_figures_from_results(run):
     with pytest.raises(ValueError, match="select no part"):
         gp.energy_map(run, site_window=(5000, 6000))
     check_axes(gp.forces(run))
-    check_axes(gp.spreading([run, gr.spreading(gr.homogeneous(N=301), T=2e-3, fit=(5e-4, 2e-3))]))
+    pair = gp.spreading([run, gr.spreading(gr.homogeneous(N=301), T=2e-3, fit=(5e-4, 2e-3))])
+    check_axes(pair)
+    assert pair._suptitle.get_text().startswith("energy spreading: N = 301"), pair._suptitle  # it had no title
     ensemble = gr.transport(N=201, realizations=2, T=1e-3, fit=(2e-4, 1e-3))
-    check_axes(gp.spreading(ensemble))
+    one = gp.spreading(ensemble)
+    check_axes(one)
+    assert one._suptitle.get_text().startswith("energy spreading: Anderson (A), N = 201"), one._suptitle
     table = gr.exponent_table(chains=["h", "A"], F0=[10, 0], ic=["velocity"], N=151, realizations=2, T=1e-3,
                               fit=(2e-4, 1e-3), samples=60, profile_F0=[10], profile_realizations=2)
     check_axes(gp.exponents(table, "velocity"))
@@ -277,6 +281,10 @@ def test_localization_figure_marks_unresolved_lengths(tools):
     assert any(label.startswith("not resolved") for label in labels)
     measured = fig.axes[0].lines[0].get_ydata()
     assert np.isnan(measured[rows["resolved"] == 0]).all()
+    # Its N is the transfer matrices' walk, not a chain's; its legend keeps off the curve.
+    title = fig._suptitle.get_text()
+    assert "transfer matrices over 2,000 beads" in title and "N = 2000" not in title, title
+    assert fig.axes[0].get_legend()._loc == 0  # matplotlib's "best"
 
 
 def test_breather_figure_draws_the_branch_from_the_result_and_the_tools_files(tools):
@@ -296,6 +304,9 @@ def test_breather_figure_draws_the_branch_from_the_result_and_the_tools_files(to
         drawn = np.sort(np.concatenate([stable.get_xdata(), unstable.get_xdata()]))
         assert np.array_equal(drawn, np.sort(b.freq_khz))
         assert np.array_equal(stable.get_xdata(), b.freq_khz[b.stable])
+        assert np.allclose(stable.get_ydata(), b.energy[b.stable] * 1e6, rtol=1e-12, atol=0)  # in µJ
+        assert branch.get_ylabel() == r"energy above the static state [$\mu$J]"
+        assert "gap (no linear mode)" in [t.get_text() for t in branch.get_legend().get_texts()]  # from the edge
         profiles = fig.axes[2:]  # of the first, middle and last points
         assert len(profiles) == 3
         for ax, j in zip(profiles, (0, 1, 2)):
@@ -307,3 +318,17 @@ def test_breather_figure_draws_the_branch_from_the_result_and_the_tools_files(to
     assert (tools.folder / "br.png").stat().st_size > 10000
     bad = cli("-m", "granular.plot", "breathers", "br.csv", "--point", "7", cwd=tools.folder)
     assert bad.returncode == 2 and "Traceback" not in bad.stderr
+
+
+def test_quasiperiodic_figures_name_their_chain():
+    """A quasiperiodic chain's figure says its kind and every parameter that sets it (it said only N and F0)."""
+    fly = gp.butterfly(gr.butterfly("s1", modulation=0.5, ratios="0.2,0.4", N=40, phase=0.4))
+    title = fly._suptitle.get_text()
+    for part in ("S1 quasiperiodic", r"$\lambda$ = 0.5", r"$\varphi$ = 0.4", r"$\kappa$ = 4", "N = 40"):
+        assert part in title, (part, title)
+    chain = gr.quasiperiodic("cylinders", N=30, modulation=0.3, ratio="2/7", angle=60)
+    spectrum = gp.spectrum(gr.spectrum(chain))
+    title = spectrum._suptitle.get_text()
+    for part in ("cylinders quasiperiodic", r"$\lambda$ = 0.3", r"$\beta$ = 0.285714", r"$\alpha_0$ = 60°",
+                 r"$\varphi$ drawn per realization"):
+        assert part in title, (part, title)

@@ -36,10 +36,49 @@ def test_s2_masses_follow_the_cosine():
 @pytest.mark.parametrize(
     "keywords, name",
     [({"modulation": 1.0}, "modulation"), ({"ratio": 0}, "ratio"), ({"ratio": "abc"}, "ratio"),
-     ({"kind": "s3"}, "quasi"), ({"kind": "cylinders", "angle": 200}, "angle")])
+     ({"kind": "s3"}, "^kind"), ({"kind": "cylinders", "angle": 200}, "angle")])
 def test_bad_keywords_are_named(keywords, name):
     with pytest.raises(ValueError, match=name):
         gr.quasiperiodic(**keywords)
+
+
+def test_kind_names_are_case_insensitive():
+    for typed, kind in (("S1", "s1"), ("S2", "s2"), ("Cylinders", "cylinders")):
+        chain = gr.quasiperiodic(typed, N=30, modulation=0.5, phase=0.4)
+        assert_identical(gr.spectrum(chain).freq_khz, gr.spectrum(gr.quasiperiodic(kind, N=30, modulation=0.5,
+                                                                                    phase=0.4)).freq_khz)
+        assert chain.metadata["quasiperiodic"]["kind"] == kind
+    assert gr.localization(quasi="S1", modulation=0.3, N=100, f=1).N == 100
+
+
+CHAIN = gr.anderson(N=31)
+SHORT = dict(N=31, realizations=1, T=1e-4, fit=(5e-5, 1e-4))
+
+
+@pytest.mark.parametrize("call, keywords, message", [
+    (gr.quasiperiodic, dict(kind="s1", angle=30), r"^angle: takes effect only with kind cylinders, not kind s1$"),
+    (gr.quasiperiodic, dict(kind="s2", k0=8), r"^k0: takes effect only with kind s1, not kind s2$"),
+    (gr.quasiperiodic, dict(kind="c", k0_n_per_m=1e6), r"^k0_n_per_m: takes effect only with kind s1, not kind c$"),
+    (gr.butterfly, dict(kind="s2", angle=30, ratios="0.2"), r"^angle: takes effect only with kind cylinders"),
+    (gr.localization, dict(N=100, f=1, modulation=0.5), r"^modulation: takes effect only with quasi, which is not"),
+    (gr.localization, dict(N=100, f=1, phase=0.4), r"^phase: takes effect only with quasi, which is not given$"),
+    (gr.ipr_map, dict(N=40, quasi="s2", angle=30), r"^angle: takes effect only with quasi cylinders, not quasi s2$"),
+    (gr.ipr_map, dict(N=40, ratio="2/7"), r"^ratio: takes effect only with quasi, which is not given$"),
+    (gr.transport, dict(SHORT, k0=8), r"^k0: takes effect only with quasi s1, which is not given$"),
+    (gr.exponent_table, dict(chains="none", quasi="s2", k0=8, **SHORT), r"^k0: takes effect only with quasi s1"),
+    (gr.spreading, dict(chain=CHAIN, map_stride=2), r"^map_stride: takes effect only with energy_map, which is off$"),
+    (gr.spreading, dict(chain=CHAIN, spectrum_of="velocity"), r"^spectrum_of: takes effect only with spectral_density"),
+    (gr.spreading, dict(chain=CHAIN, force_samples=50), r"^force_samples: takes effect only with forces_at"),
+    (gr.spreading, dict(chain=CHAIN, energy_guard="warn", max_energy_error=0), r"^energy_guard: takes effect only"),
+    (gr.spreading, dict(chain=CHAIN, active_window=False, window_threshold=1e-20), r"^window_threshold: takes effect"),
+    (gr.spreading, dict(chain=CHAIN, reference_max_step=2e-8), r"^reference_max_step: takes effect only with "
+                                                                r"integrator reference, not integrator saba2c$"),
+    (gr.spreading, dict(chain=CHAIN, renormalize=5), r"^renormalize: takes effect only with mle, which is off$"),
+])
+def test_a_keyword_that_would_take_no_effect_is_refused(call, keywords, message):
+    """As the tools refuse such an option (tests/tools/dependent_options_test.cpp): never silently ignored."""
+    with pytest.raises(ValueError, match=message):
+        call(**keywords)
 
 
 def test_butterfly_equals_the_tool_and_draws(tools):

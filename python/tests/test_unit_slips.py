@@ -34,6 +34,27 @@ def test_hertz_typed_as_kilohertz_is_named():
     no_warning(gr.localization, N=1000, f=15)
 
 
+@pytest.mark.parametrize("call, keywords, named", [
+    (gr.breathers, dict(near_khz=33810), "near_khz 33810"),
+    (gr.breathers, dict(start_khz=20000), "start_khz 20000"),
+    (gr.breathers, dict(mode=30, target_khz=20000), "target_khz 20000"),
+    (gr.spreading, dict(ic="mode", mode_khz=15000, energy=1e-9), "mode_khz 15000"),
+    (gr.exponent_table, dict(chains="none", quasi="s2", N=51, T=1e-4, fit=(2e-5, 1e-4), t_star=2e-5, realizations=1,
+                             ic=["mode"], mode_khz=15000, energy=1e-9, F0=[10], profile_F0=[]), "mode_khz 15000"),
+    (gr.ipr_map, dict(near=15000, count=3), "near 15000"),
+    (gr.ipr_map, dict(window=(15000, 16000)), "window 15000"),
+])
+def test_every_frequency_keyword_is_checked_for_hertz_typed_as_kilohertz(call, keywords, named):
+    # As an error, the warning stops the call before its run (a breather branch seeded from the top mode).
+    args = () if call in (gr.ipr_map, gr.exponent_table) else (gr.anderson(N=30),)
+    if call is gr.ipr_map:
+        keywords = dict(keywords, N=30, xi=0.5, q=0.5, realizations=2)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        with pytest.raises(RuntimeWarning, match=rf"^{named}: above every frequency of this chain"):
+            call(*args, **keywords)
+
+
 def test_seconds_typed_as_milliseconds_is_named_before_the_run():
     # As an error, the warning stops the call before it integrates 10 s of the paper's chain.
     with warnings.catch_warnings():

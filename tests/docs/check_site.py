@@ -1,6 +1,7 @@
 """The documentation site as a reader meets it: every internal link and anchor of every page
 resolves, and headless Chromium loads the index, a tool page, the C++ reference of
-granular::spectrum and the rendered tutorial, each showing what it should (screenshots kept).
+granular::spectrum and the rendered tutorial, each showing what it should (screenshots kept), and
+the breathers page with its tables rendered as tables.
 
 usage: check_site.py HTML_DIR ARTIFACT_DIR
 """
@@ -73,7 +74,14 @@ else:
                               text=True, timeout=120)
         if shot.returncode != 0 or not (artifacts / (name + ".png")).exists():
             failures.append(f"chromium: no screenshot of {page}")
-    print(f"check_site: chromium loaded {len(checks)} pages; screenshots in {artifacts}")
+    # The tables of a page render as tables, not as pipe text (an unescaped | in a cell broke both of
+    # "A measured branch"): the breathers page writes three.
+    dom = subprocess.run(common + ["--dump-dom", (site / "breathers.html").as_uri()], capture_output=True, text=True,
+                         timeout=120)
+    tables = dom.stdout.count("<table")
+    if tables < 3 or "| f [kHz] |" in dom.stdout:
+        failures.append(f"chromium: breathers.html renders {tables} of its 3 tables (or one as pipe text)")
+    print(f"check_site: chromium loaded {len(checks) + 1} pages; screenshots in {artifacts}")
 
 if failures:
     print("\n".join(failures[:50]), file=sys.stderr)

@@ -51,7 +51,8 @@ def blocks(page):
 
 def shell_block(body):
     lines = [line for line in body.splitlines() if line.strip()]
-    runnable = any(re.match(r"\s*(\./build/|\$B/|/usr/bin/python3 tools/plot|mpirun|B=)", line) for line in lines)
+    runnable = any(re.match(r"\s*(\./build/|\$B/|/usr/bin/python3 tools/plot|PYTHONPATH=build/|mpirun|B=)", line)
+                   for line in lines)
     return runnable and not any(word in body for word in SKIP)
 
 
@@ -96,8 +97,11 @@ def check(path, kind):
 
 
 work.mkdir(parents=True, exist_ok=True)
-env = dict(os.environ, PYTHONPATH=str(build / "python"), MPLBACKEND="Agg", OMPI_ALLOW_RUN_AS_ROOT="1",
-           OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1", OMP_NUM_THREADS="2")
+# Shell blocks run as pasted into a clean shell: no PYTHONPATH unless the block sets it (a command
+# that needs granular's build tree must say so). Python blocks are a session that has granular.
+shell_env = {k: v for k, v in os.environ.items() if k != "PYTHONPATH"}
+shell_env.update(MPLBACKEND="Agg", OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1", OMP_NUM_THREADS="2")
+env = dict(shell_env, PYTHONPATH=str(build / "python"))
 # A page's Python blocks continue each other (as in a session), after the imports they assume.
 PRELUDE = "import numpy as np\nimport granular as gr\nimport granular\n"
 failures, count, started = [], 0, time.monotonic()
@@ -116,7 +120,8 @@ for page in PAGES:
             continue
         count += 1
         t0 = time.monotonic()
-        done = subprocess.run(command, cwd=work, env=env, capture_output=True, text=True, timeout=600)
+        done = subprocess.run(command, cwd=work, env=env if language == "python" else shell_env, capture_output=True,
+                              text=True, timeout=600)
         print(f"{page}: {label} ... exit {done.returncode} in {time.monotonic() - t0:.1f} s", flush=True)
         if done.returncode != 0:
             failures.append(f"{page}: {label}: exit {done.returncode}\n{done.stderr[-1500:]}")

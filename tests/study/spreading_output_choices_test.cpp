@@ -67,7 +67,8 @@ TEST(SpreadingOutputChoices, ABadChoiceIsRefusedByName) {
   EXPECT_EQ(outputs_refused({.force_samples = 1}), "force_samples");
   EXPECT_EQ(outputs_refused({.map_samples = 1}), "map_samples");  // refused whether or not a map is asked
   EXPECT_EQ(outputs_refused({.energy_map = true, .map_samples = 1}), "map_samples");
-  EXPECT_EQ(outputs_refused({.map_samples = 2}), "");
+  EXPECT_EQ(outputs_refused({.energy_map = true, .map_samples = 2}), "");
+  EXPECT_EQ(outputs_refused({.map_samples = 2}), "map_samples");  // takes effect only with a map: not ignored
   EXPECT_EQ(outputs_refused({.map_samples = 100000001}), "map_samples");
   EXPECT_EQ(outputs_refused({.map_stride = 0}), "map_stride");
   EXPECT_EQ(outputs_refused({.spectrum_samples = -3}), "spectrum_samples");

@@ -2,6 +2,7 @@
 #include <signal.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <fstream>
 #include <sstream>
@@ -114,6 +115,10 @@ TEST(ExponentsTool, KilledRunResumesToTheSameBytes) {
   const ToolResult resumed = run_tool("exponents", args + " --resume --output " + prefix);
   ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
   EXPECT_EQ(outputs(prefix), outputs(dir + "/whole"));
+  // Its JSON says it was resumed, and from which checkpoints (the cases that had one); the whole run's says nothing.
+  const nlohmann::json files = nlohmann::json::parse(read_file(prefix + ".json"))["resumed_checkpoint"]["files"];
+  EXPECT_NE(std::find(files.begin(), files.end(), prefix + ".checkpoint.1"), files.end()) << files;
+  EXPECT_FALSE(nlohmann::json::parse(read_file(dir + "/whole.json")).contains("resumed_checkpoint"));
 
   // A resume with other parameters is refused, naming the parameter.
   ASSERT_EQ(run_tool("exponents", job + " --realizations 40 --output " + dir + "/other").exit_code, 0);

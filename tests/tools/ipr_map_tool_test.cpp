@@ -1,6 +1,10 @@
 // ipr-map end to end: determinism across thread counts and seeds.
 #include <unistd.h>
 
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -88,6 +92,32 @@ TEST(IprMapTool, PartialSelectionMatchesSpectrumPerRealization) {
   EXPECT_EQ(run_tool("ipr-map", "--N 50 --near 15 --count 3 --method slepc --output " + dir + "/x.csv").exit_code, 2);
   EXPECT_EQ(run_tool("ipr-map", "--N 50 --method bisect --output " + dir + "/x.csv").exit_code, 2);
   std::filesystem::remove_all(dir);
+}
+
+// Every mode of a long chain in O(N) memory: the fast solver once held an N x N block per thread
+// (512 MB here, 80 GB at N = 1e5: std::bad_alloc); only a degenerate cluster's vectors now.
+TEST(IprMapTool, EveryModeOfALongChainNeedsMemoryOfOrderN) {
+  const std::string dir = scratch_folder("ipr-memory");
+  const std::string command = "cd '" + dir + "' && /usr/bin/time -f %M -o rss.txt '" + tool_path("ipr-map") +
+                              "' --N 8000 --xi 0.5 --q 0.5 --realizations 1 --threads 1 --quiet 2>/dev/null";
+  ASSERT_EQ(std::system(command.c_str()), 0);
+  const long kilobytes = std::stol(read_file(dir + "/rss.txt"));
+  EXPECT_LT(kilobytes, 100 * 1024) << "peak memory " << kilobytes << " kB; N x N doubles are 500,000 kB";
+}
+
+// Eigenvectors of every mode (--solver lapack) do need N x N per thread: refused up front, naming
+// the memory and what fits, as the spectrum tool does.
+TEST(IprMapTool, EveryModeWithEigenvectorsBeyondMemoryIsRefusedSayingWhatFits) {
+  const std::string dir = scratch_folder("ipr-too-large");
+  const ToolResult r = run_tool_in(dir, "ipr-map", "--N 100000 --solver lapack --xi 0.5 --q 0.5 --output big");
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_EQ(r.err.rfind("ipr-map: error: --N 100000: every mode with eigenvectors (method lapack) needs 160 GB", 0), 0u)
+      << r.err;
+  EXPECT_NE(r.err.find("what fits: the fast solver (every IPR in O(N) memory) or selected modes (--near and "
+                       "--count, or --window)"),
+            std::string::npos)
+      << r.err;
+  EXPECT_TRUE(std::filesystem::is_empty(dir));
 }
 
 }  // namespace

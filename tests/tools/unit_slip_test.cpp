@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <tuple>
 
 #include "tool_runner.hpp"
 
@@ -52,6 +53,34 @@ TEST(UnitSlip, HertzTypedAsKilohertzIsWarned) {
   EXPECT_EQ(f.err.rfind("warning: --f 15000: above every frequency of this chain", 0), 0u) << f.err;
   EXPECT_EQ(lines(f.err), 1) << f.err;
   const ToolResult khz = run_tool_in(dir, "spectrum", "--N 100 --near 15 --count 3 --quiet --output khz");
+  EXPECT_EQ(khz.err, "");
+}
+
+// Every other frequency option of every tool, by the same rule (study/frequency_slips.hpp): one
+// warning line naming the option before the run goes on or stops for its own reason.
+TEST(UnitSlip, HertzTypedAsKilohertzIsWarnedForEveryFrequencyOption) {
+  const std::string dir = scratch_folder("unit-slip-every-frequency");
+  const std::string breathers = "--N 21 --max-points 1 --quiet ";
+  for (const auto& [tool, args, named] :
+       {std::tuple<std::string, std::string, std::string>{"breathers", breathers + "--near-khz 33810",
+                                                          "--near-khz 33810"},
+        {"breathers", breathers + "--start-khz 20000", "--start-khz 20000"},
+        {"breathers", breathers + "--mode 21 --target-khz 20000", "--target-khz 20000"},
+        {"ipr-map", "--N 10 --xi 0.5 --q 0.5 --realizations 2 --near 15000 --count 2 --quiet", "--near 15000"},
+        {"ipr-map", "--N 10 --xi 0.5 --q 0.5 --realizations 2 --window 15000:16000 --quiet", "--window 15000"},
+        {"spreading", "--N 51 --T 1e-4 --fit 2e-5:1e-4 --samples 20 --ic mode --mode-khz 15000 --energy 1e-9 --quiet",
+         "--mode-khz 15000"},
+        {"exponents",
+         "--chains none --quasi s2 --N 51 --T 1e-4 --fit 2e-5:1e-4 --t-star 2e-5 --realizations 1 "
+         "--F0 10 --profile-F0 none --bootstrap 2 --ic mode --mode-khz 15000 --energy 1e-9",
+         "--mode-khz 15000"}}) {
+    const ToolResult slip = run_tool_in(dir, tool, args + " --output slip");
+    EXPECT_EQ(slip.err.rfind("warning: " + named + ": above every frequency of this chain", 0), 0u)
+        << tool << " " << args << ": " << slip.err;
+    EXPECT_EQ(count(slip.err, "warning"), 1) << tool << " " << args << ": " << slip.err;
+  }
+  const ToolResult khz = run_tool_in(dir, "breathers", breathers + "--near-khz 42 --output khz");
+  EXPECT_EQ(khz.exit_code, 0) << khz.err;
   EXPECT_EQ(khz.err, "");
 }
 

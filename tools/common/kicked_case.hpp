@@ -10,6 +10,7 @@
 #include "chain_options.hpp"
 #include "dynamics_options.hpp"
 #include "granular/study/chain_length_rule.hpp"
+#include "granular/study/frequency_slips.hpp"
 #include "granular/study/kicked_case.hpp"
 #include "tool_main.hpp"
 
@@ -49,11 +50,14 @@ inline void add_kicked_case_options(CLI::App& app, KickedCaseOptions& o) {
 /// averages realizations.
 inline KickedCase kicked_case(const KickedCaseOptions& o, bool ensemble) {
   KickedCaseChoices choices = o;
+  if (o.deviation.empty() && o.beyond.deviation_samples != KickedCaseOptions{}.beyond.deviation_samples)
+    throw InvalidInput("--deviation-samples", ": takes effect only with --deviation FILE (and --mle)");
   if (o.deviation.empty()) choices.beyond.deviation_samples = 0;
   KickedCase k = o.case_file.empty() ? granular::kicked_case(choices, ensemble, radius_options(o.chain))
                                      : granular::kicked_case(o.case_file, o.chain.realization, o.realizations,
                                                              choices.beyond.deviation_samples, ensemble);
   warn(k.warnings);
+  warn(frequency_slips(k.c.mode, k.c.chain, [](const std::string& p) { return option_name(front_end_word(p)); }));
   return k;
 }
 

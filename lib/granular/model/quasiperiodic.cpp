@@ -1,5 +1,6 @@
 #include "granular/model/quasiperiodic.hpp"
 
+#include <cctype>
 #include <cmath>
 #include <cstdlib>
 #include <nlohmann/json.hpp>
@@ -44,11 +45,13 @@ std::string to_string(Quasiperiodic::Kind kind) {
   return "?";
 }
 
-Quasiperiodic::Kind parse_quasi_kind(const std::string& word) {
+Quasiperiodic::Kind parse_quasi_kind(const std::string& typed) {
+  std::string word;  // kinds are names, whatever their case ("S1"), as disorders are
+  for (const unsigned char c : typed) word += static_cast<char>(std::tolower(c));
   if (word == "s1") return Quasiperiodic::Kind::s1;
   if (word == "s2") return Quasiperiodic::Kind::s2;
   if (word == "cylinders" || word == "c") return Quasiperiodic::Kind::cylinders;
-  throw InvalidInput("quasi", " '" + word + "': expected s1 (on-site springs), s2 (masses) or cylinders (angles)");
+  throw InvalidInput("quasi", " '" + typed + "': expected s1 (on-site springs), s2 (masses) or cylinders (angles)");
 }
 
 double parse_ratio(const std::string& text) {

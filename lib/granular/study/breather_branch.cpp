@@ -20,6 +20,7 @@
 #include "granular/linear/dynamical_matrix.hpp"
 #include "granular/linear/spectrum.hpp"
 #include "granular/number_format.hpp"
+#include "granular/study/breather_crossing.hpp"
 
 namespace granular {
 namespace {
@@ -355,11 +356,19 @@ BreatherBranch continue_breather(const BreatherBranchConfig& c,
   double previous_khz = 0, previous_omega = 0;
   // Reached by a step asked for the target itself, not by comparing frequencies (see make_point).
   bool at_target = start_khz == target;
-  // A linear frequency between the last point and f: the breather meets a band (or a mode).
-  const auto crosses_linear = [&](double f) {
-    const double from = branch.points.back().freq_khz;
-    return std::any_of(branch.linear_khz.begin(), branch.linear_khz.end(),
-                       [&](double mode) { return (mode - f) * (mode - from) < 0; });
+  // Why the branch stops between the last point and f, if it does: a linear mode there that shares
+  // the breather's beads, a resonance (a band, or a mode under it; modes localized elsewhere are
+  // passed, study/breather_crossing.hpp). At F0 = 0 the modes are single beads (no vectors): every
+  // on-site frequency stops it. Checked before a step and again where the arclength corrector landed.
+  const auto crossing_stop = [&](double f) -> std::string {
+    const BreatherPoint& from = branch.points.back();
+    if (vacuum) {
+      const bool crosses = std::any_of(branch.linear_khz.begin(), branch.linear_khz.end(),
+                                       [&](double mode) { return (mode - f) * (mode - from.freq_khz) < 0; });
+      return crosses ? "reached an on-site frequency near " + format_number(f) + " kHz" : "";
+    }
+    const auto crossing = blocking_crossing(modes, d, from.x0, from.freq_khz, f);
+    return crossing ? describe(*crossing) : "";
   };
   const auto passes_target = [&](double f) {
     return !std::isnan(target) && (f - target) * (branch.points.back().freq_khz - target) <= 0;
@@ -402,8 +411,8 @@ BreatherBranch continue_breather(const BreatherBranchConfig& c,
     }
     bool to_target = passes_target(next);
     if (to_target) next = target;
-    if (crosses_linear(next)) {
-      branch.stop_reason = "reached a linear mode frequency near " + format_number(next) + " kHz (band edge)";
+    if (const std::string stop = crossing_stop(next); !stop.empty()) {
+      branch.stop_reason = stop;
       break;
     }
     // The natural step to `f` from the secant through the last two points (none while they
@@ -436,8 +445,8 @@ BreatherBranch continue_breather(const BreatherBranchConfig& c,
       }
       continue;
     }
-    if (crosses_linear(next)) {
-      branch.stop_reason = "reached a linear mode frequency near " + format_number(next) + " kHz (band edge)";
+    if (const std::string stop = crossing_stop(next); !stop.empty()) {  // where the corrector landed
+      branch.stop_reason = stop;
       break;
     }
     previous = last.x0;

@@ -10,6 +10,7 @@ namespace granular {
 
 const ParameterTable<ChainChoices>& chain_parameters() {
   using O = ChainChoices;
+  using P = Parameter<O>;
   static const ParameterTable<O> table{
       {"disorder", &O::disorder, "h | A | RDM1 | RDM2 (homogeneous, Anderson, random dimer 1/2)"},
       {"xi", &O::xi, "size ratio R2/R1 in (0,1]"},
@@ -37,14 +38,18 @@ const ParameterTable<ChainChoices>& chain_parameters() {
        "quasiperiodic chain: s1 (on-site springs), s2 (masses) or cylinders (crossing angles), modulated by 1 + "
        "modulation cos(2 pi ratio n + phase); R1 is the beads' radius",
        false},
-      {"modulation", &O::modulation, "`quasi`: relative modulation strength lambda, |lambda| < 1"},
-      {"ratio", &O::ratio, "`quasi`: the incommensurate ratio beta > 0: golden, p/q or a number"},
-      {"phase", &O::phase,
-       "`quasi`: the phase [rad] (default: drawn uniformly in [0, 2 pi) per `seed` and `realization`)", false},
-      {"angle", &O::angle, "`quasi` cylinders: mean crossing angle alpha0 [degrees] in (0, 180)"},
-      {"k0", &O::k0, "`quasi` s1: mean on-site stiffness in units of the bond stiffness K"},
-      {"k0_n_per_m", &O::k0_n_per_m,
-       "`quasi` s1: mean on-site stiffness [N/m] instead of `k0` (0: use `k0`); allows `F0` 0"}};
+      P{"modulation", &O::modulation, "`quasi`: relative modulation strength lambda, |lambda| < 1"}.needing("quasi"),
+      P{"ratio", &O::ratio, "`quasi`: the incommensurate ratio beta > 0: golden, p/q or a number"}.needing("quasi"),
+      P{"phase", &O::phase,
+        "`quasi`: the phase [rad] (default: drawn uniformly in [0, 2 pi) per `seed` and `realization`)", false}
+          .needing("quasi"),
+      P{"angle", &O::angle, "`quasi` cylinders: mean crossing angle alpha0 [degrees] in (0, 180)"}.needing("quasi",
+                                                                                                           {"cylinders",
+                                                                                                            "c"}),
+      P{"k0", &O::k0, "`quasi` s1: mean on-site stiffness in units of the bond stiffness K"}.needing("quasi", {"s1"}),
+      P{"k0_n_per_m", &O::k0_n_per_m,
+        "`quasi` s1: mean on-site stiffness [N/m] instead of `k0` (0: use `k0`); allows `F0` 0"}
+          .needing("quasi", {"s1"})};
   return table;
 }
 
@@ -69,6 +74,7 @@ void require_one_source(const ChainChoices& o) {
 
 std::optional<Quasiperiodic> quasiperiodic(const ChainChoices& o) {
   require_one_source(o);
+  refuse_unmet_needs(o, chain_parameters());  // `angle` with `quasi` s1 is refused, not ignored
   if (o.quasi.empty()) return std::nullopt;
   return Quasiperiodic{.kind = parse_quasi_kind(o.quasi),
                        .modulation = o.modulation,

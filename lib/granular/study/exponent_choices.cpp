@@ -88,6 +88,9 @@ void apply(const ExponentChoices& o, ExponentTableConfig& config) {
   ChainChoices kinds = o.beads;  // the kinds' chains, by the one chain rule: without the chain of one's own
   kinds.types.clear(), kinds.type_masses.clear(), kinds.polydisperse.clear(), kinds.quasi.clear();
   kinds.config.clear(), kinds.radii.clear();
+  const ChainChoices plain;  // nor its quasiperiodic parameters (its own chain has taken them)
+  kinds.modulation = plain.modulation, kinds.ratio = plain.ratio, kinds.phase = plain.phase;
+  kinds.angle = plain.angle, kinds.k0 = plain.k0, kinds.k0_n_per_m = plain.k0_n_per_m;
   std::vector<std::string> no_file_read;
   config.base.chain = chain_recipe(kinds, no_file_read);
   apply(o.mode, config.kicks, config.base);

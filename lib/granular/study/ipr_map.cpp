@@ -30,6 +30,12 @@ void validate(const IprMapConfig& c) {
   validate(chain);
   validate(c.selection, chain.N);
   validate(c.spectrum, c.selection);
+  // Every mode with eigenvectors (solver lapack) holds N × N doubles per thread: refused before any is allocated.
+  if (const std::string problem = full_spectrum_problem(chain.N, c.spectrum, c.selection); !problem.empty())
+    throw InvalidInput("N", " " + std::to_string(chain.N) + ": " + problem +
+                                " (each thread solves one chain); what fits: the fast solver (every IPR in O(N) "
+                                "memory) or selected "
+                                "modes (`near` and `count`, or `window`)");
   if (!std::isfinite(c.bin_khz) || c.bin_khz < 0)
     throw InvalidInput("bin_khz",
                        " " + format_number(c.bin_khz) + ": must be finite and >= 0 (0 = average by mode number)");

@@ -1,5 +1,7 @@
 #include "granular/study/long_run_choices.hpp"
 
+#include <filesystem>
+
 #include "granular/ensemble/checkpoint_log.hpp"
 #include "granular/error.hpp"
 #include "granular/study/resumed_checkpoint.hpp"
@@ -51,7 +53,15 @@ nlohmann::json resumed_code(const LongRunChoices& o, const std::vector<std::stri
       if (const std::string other = CheckpointLog::other_version(c); !other.empty())
         throw InvalidInput("resume", ": " + other + "; resume it with the code that made it, or accept the mix with " +
                                          "`resume_other_version`");
-  return o.resume_other_version ? resumed_checkpoint(checkpoints) : nullptr;
+  if (!o.resuming()) return nullptr;
+  std::vector<std::string> kept;  // the checkpoints the run continues (a study's cases: one each)
+  for (const std::string& c : checkpoints)
+    if (std::filesystem::exists(c)) kept.push_back(c);
+  if (kept.empty()) return nullptr;  // nothing to resume: the run starts afresh
+  nlohmann::json j = o.resume_other_version ? resumed_checkpoint(checkpoints) : nlohmann::json::object();
+  if (j.is_null()) j = nlohmann::json::object();
+  j["files"] = kept;  // that it was resumed, and from which checkpoint
+  return j;
 }
 
 }  // namespace granular

@@ -38,10 +38,11 @@ RunOptions run_options(const LongRunChoices& o, const std::string& checkpoint);
 /// or with `fresh` removed. Validates the choices.
 void settle_checkpoints(const LongRunChoices& o, const std::string& checkpoint);
 
-/// With resume_other_version, which code made the realizations the run resumes
-/// (resumed_checkpoint.hpp), for the JSON; null otherwise. A plain `resume` of a checkpoint another
-/// version made is refused (InvalidInput naming `resume`). Call before the run, which rewrites the
-/// checkpoints under this code's name.
+/// For the JSON of a run that resumes (`resume` or `resume_other_version`) from checkpoints that
+/// exist: "files", those checkpoints, and with resume_other_version which code made their
+/// realizations (resumed_checkpoint.hpp); null for a run that resumes nothing. A plain `resume` of
+/// a checkpoint another version made is refused (InvalidInput naming `resume`). Call before the
+/// run, which rewrites the checkpoints under this code's name.
 nlohmann::json resumed_code(const LongRunChoices& o, const std::vector<std::string>& checkpoints);
 
 }  // namespace granular

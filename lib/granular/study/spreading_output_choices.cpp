@@ -33,25 +33,29 @@ std::string write_beads(const SpreadingOutputChoices& o) {
 
 const ParameterTable<SpreadingOutputChoices>& spreading_output_parameters() {
   using O = SpreadingOutputChoices;
+  using P = Parameter<O>;
   static const ParameterTable<O> table{
       {"forces_at",
        &O::forces_at,
        {read_beads, write_beads},
        "beads 1..N (e.g. 601,631,661) whose force [N] is recorded at `force_samples` uniform times",
        false},
-      {"force_samples", &O::force_samples, "uniform times 0..T of the force series (>= 2)"},
+      P{"force_samples", &O::force_samples, "uniform times 0..T of the force series (>= 2)"}.needing("forces_at"),
       {"energy_map", &O::energy_map, "record the energy map E_n(t): `map_samples` times, `map_stride` beads a column"},
-      {"map_samples", &O::map_samples, "uniform times 0..T of the `energy_map` (>= 2)"},
-      {"map_stride", &O::map_stride, "beads summed into one column of the `energy_map` (>= 1)"},
+      P{"map_samples", &O::map_samples, "uniform times 0..T of the `energy_map` (>= 2)"}.needing("energy_map"),
+      P{"map_stride", &O::map_stride, "beads summed into one column of the `energy_map` (>= 1)"}.needing("energy_map"),
       {"spectral_density", &O::spectral_density,
        "compute the spectral density g(nu) of the series of `spectrum_of`, sampled at `spectrum_samples` times"},
-      {"spectrum_samples", &O::spectrum_samples, "uniform samples 0..T of the series for the `spectral_density` (>= 2)"},
-      {"spectrum_of", &O::spectrum_of,
-       "displacement (the paper's g) | velocity (a permanent step in u adds a flat floor, not a 1/nu^2 tail)"}};
+      P{"spectrum_samples", &O::spectrum_samples, "uniform samples 0..T of the series for the `spectral_density` (>= 2)"}
+          .needing("spectral_density"),
+      P{"spectrum_of", &O::spectrum_of,
+        "displacement (the paper's g) | velocity (a permanent step in u adds a flat floor, not a 1/nu^2 tail)"}
+          .needing("spectral_density")};
   return table;
 }
 
 void apply(const SpreadingOutputChoices& o, TransportCase& c) {
+  refuse_unmet_needs(o, spreading_output_parameters());  // `map_stride` without `energy_map` is refused
   const std::size_t beads = c.chain.size();
   SpreadingRunConfig& d = c.dynamics;
   d.forces.sites.clear();

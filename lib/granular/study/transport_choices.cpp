@@ -38,6 +38,7 @@ std::string write_on_off(const TransportChoices& o) { return o.active_window ? "
 
 const ParameterTable<TransportChoices>& transport_parameters() {
   using O = TransportChoices;
+  using P = Parameter<O>;
   static const ParameterTable<O> table{
       {"alpha", &O::alpha, "displacement kick [m] (also what a matched `beta` matches)"},
       {"beta",
@@ -72,15 +73,19 @@ const ParameterTable<TransportChoices>& transport_parameters() {
        &O::active_window,
        {read_on_off, write_on_off},
        "on | off: integrate only where the wave has arrived (results equal the whole chain's)"},
-      {"window_threshold", &O::window_threshold, "relative kinetic energy that grows the window"},
-      {"reference_max_step", &O::reference_max_step, "largest step of the reference integrator [s], 0 = none"},
+      P{"window_threshold", &O::window_threshold, "relative kinetic energy that grows the window"}.needing(
+          "active_window"),
+      P{"reference_max_step", &O::reference_max_step, "largest step of the reference integrator [s], 0 = none"}.needing(
+          "integrator", {"reference"}),
       {"max_energy_error", &O::max_energy_error, "guard: relative energy error that stops (or is reported), 0 = off"},
-      {"energy_guard", &O::energy_guard, "stop | warn: what passing `max_energy_error` does"}};
+      P{"energy_guard", &O::energy_guard, "stop | warn: what passing `max_energy_error` does"}.needing(
+          "max_energy_error")};
   return table;
 }
 
 const ParameterTable<BeyondChoices>& beyond_parameters() {
   using O = BeyondChoices;
+  using P = Parameter<O>;
   static const ParameterTable<O> table{
       {"damping_time", &O::damping_time, "on-site viscous damping time tau_d [s] of -(m/tau_d) du/dt; 0 = none"},
       {"kk_gamma", &O::kk_gamma,
@@ -89,9 +94,10 @@ const ParameterTable<BeyondChoices>& beyond_parameters() {
       {"mle", &O::mle,
        "maximal Lyapunov exponent X1(t) [1/s] by the tangent map of the same scheme (conservative runs: not with "
        "damping or the reference integrator)"},
-      {"renormalize", &O::renormalize, "steps between renormalizations of the deviation vector"},
-      {"deviation_samples", &O::deviation_samples,
-       "uniform times (0..T) of the deviation vector's distribution along the chain (with `mle`)"}};
+      P{"renormalize", &O::renormalize, "steps between renormalizations of the deviation vector"}.needing("mle"),
+      P{"deviation_samples", &O::deviation_samples,
+        "uniform times (0..T) of the deviation vector's distribution along the chain (with `mle`)"}
+          .needing("mle")};
   return table;
 }
 
@@ -118,6 +124,7 @@ void apply(const TransportChoices& choices, const BeyondChoices& beyond, Transpo
 void fit_within_duration(TransportCase& c) { c.fit = c.fit_end <= c.dynamics.integration.duration * (1 + 1e-12); }
 
 void apply(const TransportChoices& o, TransportCase& c) {
+  refuse_unmet_needs(o, transport_parameters());  // `energy_guard` with no guard is refused, not ignored
   c.alpha = o.alpha;
   c.match_beta = !o.beta;
   if (o.beta) c.beta = *o.beta;
@@ -166,12 +173,12 @@ BeyondChoices beyond_choices_of(const SpreadingRunConfig& d) {
 }
 
 void apply(const BeyondChoices& o, SpreadingRunConfig& d) {
+  refuse_unmet_needs(o, beyond_parameters());  // `renormalize`, `deviation_samples`: the tangent map's
   d.integration.damping = {o.damping_time, o.kk_gamma};
   validate(d.integration.damping);
   d.integration.lyapunov.enabled = o.mle;
   if (o.renormalize < 1) throw InvalidInput("renormalize", " " + std::to_string(o.renormalize) + ": at least 1");
   d.integration.lyapunov.renormalize_every = static_cast<std::size_t>(o.renormalize);
-  if (o.deviation_samples != 0 && !o.mle) throw InvalidInput("deviation_samples", ": needs `mle` (the tangent map)");
   if (o.deviation_samples < 0 || o.deviation_samples == 1)
     throw InvalidInput("deviation_samples", " " + std::to_string(o.deviation_samples) + ": 0 (none) or at least 2");
   d.deviation_samples = static_cast<std::size_t>(o.deviation_samples);

@@ -93,10 +93,35 @@ def mark_edges(ax, edges, orientation="horizontal", names=None, labels=True):
                             fontsize=10, ha="center", va="bottom", color="0.25", annotation_clip=False)
 
 
+def quasi_title(quasi, ratio=True):
+    """'S1 quasiperiodic: λ = 0.5, β = 0.618034, φ = 0.4, κ = 4' from a chain description's "quasiperiodic" entry
+    (every parameter that sets the chain; `ratio` False for a figure over β, the butterfly)."""
+    parts = [f"$\\lambda$ = {quasi['modulation']:g}"] if "modulation" in quasi else []
+    if ratio and "ratio" in quasi:
+        parts.append(f"$\\beta$ = {quasi['ratio']:.6g}")
+    parts.append(f"$\\varphi$ = {quasi['phase_rad']:g}" if "phase_rad" in quasi else r"$\varphi$ drawn per realization")
+    if "k0_over_K" in quasi:
+        parts.append(f"$\\kappa$ = {quasi['k0_over_K']:g}")
+    if "k0_N_per_m" in quasi:
+        parts.append(f"$k_0$ = {quasi['k0_N_per_m']:g} N/m")
+    if "angle_deg" in quasi:
+        parts.append(f"$\\alpha_0$ = {quasi['angle_deg']:g}°")
+    kind = str(quasi.get("kind", "?"))
+    return f"{kind.upper() if kind in ('s1', 's2') else kind} quasiperiodic: " + ", ".join(parts)
+
+
 def chain_title(chain):
-    """'A, N = 100, ξ = 0.5, q = 0.5, F0 = 10 N, seed 1 (realization 0)' from a chain description."""
+    """'A, N = 100, ξ = 0.5, q = 0.5, F0 = 10 N, seed 1 (realization 0)' from a chain description (a quasiperiodic
+    chain: its kind and parameters, quasi_title)."""
     if not chain:
         return ""
+    if "quasiperiodic" in chain:
+        parts = [quasi_title(chain["quasiperiodic"])]
+        if "N" in chain:
+            parts.append(f"N = {chain['N']}")
+        if "F0_N" in chain:
+            parts.append(f"$F_0$ = {chain['F0_N']:g} N")
+        return ", ".join(parts)
     parts = []
     kind = chain.get("disorder")
     if kind:

@@ -30,11 +30,26 @@ def _branch_data(source):
             multipliers.reshape(len(profiles), -1), linear, meta)
 
 
+def _gaps(linear):
+    """The gaps of the linear frequencies [kHz] (ascending), as the library tells them (inside_linear_band): a
+    spacing more than 3 times both neighbouring spacings; and the range above the highest mode."""
+    f = np.asarray(linear, float)
+    out = []
+    for k in range(1, len(f)):
+        before = f[k - 1] - f[k - 2] if k >= 2 else 0.0
+        after = f[k + 1] - f[k] if k + 1 < len(f) else 0.0
+        if f[k] - f[k - 1] > 3 * max(before, after):
+            out.append((f[k - 1], f[k]))
+    if len(f):
+        out.append((f[-1], np.inf))
+    return out
+
+
 def breather_branch(source, point=-1):
-    """Top left: energy above the static state [J] against the breather frequency, filled where the orbit is stable
+    """Top left: energy above the static state [µJ] against the breather frequency, filled where the orbit is stable
     (every Floquet multiplier on the unit circle), open where not, with the chain's linear mode frequencies as thin
-    lines. Below it: the turning-point profiles x0 of the first, middle and last points. Right: the Floquet
-    multipliers of point `point` (default: the last) in the complex plane with the unit circle.
+    lines and the band gaps shaded. Below it: the turning-point profiles x0 of the first, middle and last points.
+    Right: the Floquet multipliers of point `point` (default: the last) in the complex plane with the unit circle.
     Axes, in order: branch, multipliers, then the profiles.
     source: a granular.Breathers or the breathers tool's CSV (PREFIX.json and PREFIX.h5 beside it)."""
     freq, energy, stable, profiles, multipliers, linear, meta = _branch_data(source)
@@ -45,18 +60,24 @@ def breather_branch(source, point=-1):
         fig = figure(12, 6.4)
         grid = fig.add_gridspec(2, 4, height_ratios=[2, 1], width_ratios=[1, 1, 1, 1.5])
         left, right = fig.add_subplot(grid[0, :3]), fig.add_subplot(grid[:, 3])
-        left.plot(freq, energy, "-", color="0.6", lw=0.8, zorder=1)
-        left.plot(freq[stable], energy[stable], "o", ms=4, color="C0", label="stable", zorder=2)
-        left.plot(freq[~stable], energy[~stable], "o", ms=4, mfc="none", color="C3", label="unstable", zorder=2)
+        micro = energy * 1e6  # µJ: a J axis of 1e-5-sized values wore an offset label
+        left.plot(freq, micro, "-", color="0.6", lw=0.8, zorder=1)
+        left.plot(freq[stable], micro[stable], "o", ms=4, color="C0", label="stable", zorder=2)
+        left.plot(freq[~stable], micro[~stable], "o", ms=4, mfc="none", color="C3", label="unstable", zorder=2)
         lo, hi = np.min(freq), np.max(freq)
         pad = max(0.15 * (hi - lo), 0.02 * max(abs(hi), 1e-9))
         left.set_xlim(lo - pad, hi + pad)
         for f in linear[(linear >= lo - pad) & (linear <= hi + pad)]:
             left.axvline(f, color="0.75", lw=0.6, zorder=0)
         left.plot([], [], color="0.75", lw=0.6, label="linear modes")
+        for a, b in _gaps(linear):  # the band gaps (and above the spectrum) the branch lies in, shaded
+            if b > lo - pad and a < hi + pad:
+                left.axvspan(max(a, lo - pad), min(b, hi + pad), color="C2", alpha=0.08, lw=0, zorder=0)
+        if any(b > lo - pad and a < hi + pad for a, b in _gaps(linear)):
+            left.fill_between([], [], color="C2", alpha=0.15, label="gap (no linear mode)")
         left.set_yscale("log" if np.all(energy > 0) and np.max(energy) > 20 * np.min(energy) else "linear")
         left.set_xlabel("breather frequency f$_b$ [kHz]")
-        left.set_ylabel("energy above the static state [J]")
+        left.set_ylabel(r"energy above the static state [$\mu$J]")
         left.legend(loc="best", fontsize=9)
         for k, j in enumerate(dict.fromkeys([0, len(freq) // 2, len(freq) - 1])):
             profile = fig.add_subplot(grid[1, k])

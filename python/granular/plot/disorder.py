@@ -4,7 +4,7 @@ matrices (beside the IPR of finite chains)."""
 import numpy as np
 
 from . import _io
-from ._style import chain_title, figure, log_ticks, mark_edges, style
+from ._style import chain_title, figure, log_ticks, mark_edges, style, wrapped_suptitle
 
 
 def correlations(sources, labels=None):
@@ -84,12 +84,16 @@ def localization(source, spectra=(), finite_N=None):
         right.set_ylabel(r"mode IPR $P^{-1}$")
         right.set_title(f"modes of {len(modes)} finite chain(s)" + (f" of {finite_N} beads" if finite_N else "")
                         if modes else "no finite chains given", fontsize=11)
-        left.legend(loc="upper right", fontsize=9)
+        left.legend(loc="best", fontsize=9)  # off the curve: where it sits depends on the chain
         edges = meta.get("band_edges_khz", {})
         left.set_xlim(f.min(), f.max())
         mark_edges(left, edges, orientation="vertical")
         mark_edges(right, edges, orientation="vertical", labels=False)
-        title = chain_title(meta.get("chain", {}))
+        chain = dict(meta.get("chain", {}))
+        length = chain.pop("N", None)  # not a finite chain's: the transfer-matrix walk's
+        title = chain_title(chain)
+        if title and length:
+            title += rf", $\ell$ from transfer matrices over {length:,} beads"
         if title:
-            fig.suptitle(title, fontsize=11)
+            wrapped_suptitle(fig, title)
     return fig

@@ -8,7 +8,8 @@ import matplotlib
 import numpy as np
 
 from . import _io
-from ._style import chain_title, figure, guides, inset_log_derivative, log_thinned, log_ticks, mark_edges, style
+from ._style import (chain_title, figure, guides, inset_log_derivative, log_thinned, log_ticks, mark_edges, style,
+                     wrapped_suptitle)
 
 
 def _chain_edges(meta):
@@ -181,6 +182,12 @@ def spreading(sources, labels=None):
         bx.set_ylabel(r"participation $P^{-1}$")
         inset_log_derivative(ax, m2_curves, [0.09, 0.6, 0.36, 0.33], fit, ylim=(-0.5, 2.5))
         bx.legend(loc="lower left")
+        # What the curves share (one run: its whole chain; several: what the legend does not tell).
+        first = data[0][3].get("parameters", {}).get("chain", {})
+        shared = {k: v for k, v in first.items()
+                  if len(data) == 1 or k not in ("disorder", "q", "seed", "realization", "quasiperiodic")}
+        title = chain_title(shared)
+        wrapped_suptitle(fig, "energy spreading" + (f": {title}" if title else ""))
     return fig
 
 

@@ -3,7 +3,7 @@ import numpy as np
 from matplotlib.colors import LogNorm
 
 from . import _io
-from ._style import figure, style
+from ._style import figure, quasi_title, style, wrapped_suptitle
 
 
 def _butterfly_data(source):
@@ -41,9 +41,8 @@ def butterfly(source):
             right.set_xlabel(r"$\beta$")
             right.set_ylabel("box-counting dimension of the spectrum")
             right.set_ylim(0, 1.05)
-        title = (f"{quasi.get('kind', '?')} chain, N = {n}, modulation {quasi.get('modulation', '?')}, "
-                 f"F0 = {chain.get('F0_N', '?')} N")
-        fig.suptitle(title, fontsize=11)
+        title = f"{quasi_title(quasi, ratio=False)}, N = {n}, $F_0$ = {chain.get('F0_N', '?')} N"
+        wrapped_suptitle(fig, title)
     return fig
 
 
@@ -126,8 +125,8 @@ def dynamical_butterfly(source, eigen=None, ratio=None, floor=1e-6, fmax_khz=Non
         right.set_ylabel("power")
         right.set_title(rf"$\beta$ = {ratios[pick]:.4g}")
         resolution = spectrum.get("resolution_khz")
-        title = (f"{quasi.get('kind', '?')} chain, N = {chain.get('N', '?')}, modulation "
-                 f"{quasi.get('modulation', '?')}, F0 = {chain.get('F0_N', '?')} N: spectrum of the dynamics"
+        title = (f"{quasi_title(quasi, ratio=False)}, N = {chain.get('N', '?')}, $F_0$ = {chain.get('F0_N', '?')} N: "
+                 "spectrum of the dynamics"
                  + (f" (resolution {resolution:.3g} kHz)" if resolution else ""))
-        fig.suptitle(title, fontsize=11)
+        wrapped_suptitle(fig, title)
     return fig

@@ -116,8 +116,7 @@ void TwistedModeIpr::reserve(std::size_t n) {
   stein_w_.resize(n);
   lane_work_.reserve(n);
   isolated_.resize(n);
-  stein_z_.resize(n * n);
-  stein_work_.resize(5 * n);
+  stein_work_.resize(5 * n);  // stein_z_ grows to the largest cluster's vectors (N × N is 80 GB at N = 1e5)
   stein_iblock_.resize(n);
   stein_isplit_.resize(n);
   stein_iwork_.resize(3 * n);
@@ -295,6 +294,7 @@ bool TwistedModeIpr::cluster(const Slot& slot, std::size_t first, std::size_t co
     stein_iblock_[j] = 1;
   }
   stein_isplit_[0] = ni;
+  if (stein_z_.size() < n * count) stein_z_.resize(n * count);  // the cluster's vectors only
   int info = 0;
   dstein_(&ni, slot.d.data(), slot.e.data(), &m, stein_w_.data(), stein_iblock_.data(), stein_isplit_.data(),
           stein_z_.data(), &ni, stein_work_.data(), stein_iwork_.data(), stein_ifail_.data(), &info);

@@ -1,0 +1,84 @@
+// A breather branch stops at a linear mode it crosses only when the mode shares the breather's
+// beads (study/breather_crossing.hpp): in a quasiperiodic S1 chain at lambda = 0.8, whose top modes
+// are localized tens of beads apart, the branch from the top mode passes the others; its stop reason
+// names the mode and its overlap, and says "band edge" only for a band's edge entered from a gap.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "granular/linear/dynamical_matrix.hpp"
+#include "granular/linear/spectrum.hpp"
+#include "granular/model/quasiperiodic.hpp"
+#include "granular/study/breather_branch.hpp"
+#include "granular/study/breather_crossing.hpp"
+
+namespace granular {
+namespace {
+
+TEST(BreatherCrossing, ModesLocalizedElsewhereArePassedAndTheStopNamesTheOverlappingOne) {
+  BreatherBranchConfig c;
+  c.chain.N = 60;
+  c.chain.quasi = Quasiperiodic{.kind = Quasiperiodic::Kind::s1, .modulation = 0.8, .phase = 0.4};
+  c.mode = 60;
+  c.max_points = 12;
+  const BreatherBranch branch = continue_breather(c);
+  const DynamicalMatrix d = dynamical_matrix(c.chain.chain(0));
+  const Spectrum modes = spectrum(d, all_modes(), {.vectors = true});
+  ASSERT_GE(branch.points.size(), 2u) << branch.stop_reason;
+  std::size_t passed = 0;
+  for (std::size_t p = 0; p + 1 < branch.points.size(); ++p)
+    for (std::size_t j = 0; j < modes.size(); ++j) {
+      const double f = modes.freq_khz[j], a = branch.points[p].freq_khz, b = branch.points[p + 1].freq_khz;
+      if ((f - a) * (f - b) >= 0) continue;
+      ++passed;  // between two points: a mode with no share of the breather
+      EXPECT_LT(mode_overlap(modes, d, j, branch.points[p].x0), crossing_overlap) << "mode " << j + 1;
+    }
+  EXPECT_GE(passed, 3u) << branch.stop_reason;  // the old rule stopped at the first (mode 59)
+  // It stops at mode 55, whose overlap with the last point is the first past 1 %; not a band edge.
+  const double overlap = mode_overlap(modes, d, 54, branch.points.back().x0);
+  EXPECT_GE(overlap, crossing_overlap);
+  EXPECT_EQ(branch.stop_reason, describe(ModeCrossing{.mode = 55, .freq_khz = modes.freq_khz[54], .overlap = overlap}));
+  EXPECT_EQ(branch.stop_reason.find("band edge"), std::string::npos) << branch.stop_reason;
+}
+
+TEST(BreatherCrossing, OverlapIsOneUnderTheModeAndSmallFarFromIt) {
+  // A 60-bead S1 chain's top mode against a profile on its own peak bead and one 30 beads away.
+  ChainRecipe r;
+  r.N = 60;
+  r.quasi = Quasiperiodic{.kind = Quasiperiodic::Kind::s1, .modulation = 0.8, .phase = 0.4};
+  const DynamicalMatrix d = dynamical_matrix(r.chain(0));
+  const Spectrum modes = spectrum(d, all_modes(), {.vectors = true});
+  std::size_t peak = 0;
+  for (std::size_t n = 0; n < 60; ++n)
+    if (std::abs(modes.vector(59)[n] * d.inverse_sqrt_mass[n]) >
+        std::abs(modes.vector(59)[peak] * d.inverse_sqrt_mass[peak]))
+      peak = n;
+  std::vector<double> x(60, 0.0);
+  x[peak] = 1e-9;
+  EXPECT_DOUBLE_EQ(mode_overlap(modes, d, 59, x), 1.0);
+  x[peak] = 0;
+  x[(peak + 30) % 60] = 1e-9;
+  EXPECT_LT(mode_overlap(modes, d, 59, x), 1e-3);
+}
+
+// The breathers tool's diatomic gap breather followed by arclength through the fold back up to the
+// optical band: the first mode met from the gap is the band's edge.
+TEST(BreatherCrossing, TheEdgeOfABandEnteredFromTheGapIsCalledABandEdge) {
+  BreatherBranchConfig c;
+  c.chain.given_types = Configuration(41);
+  for (std::size_t i = 0; i < 41; ++i) (*c.chain.given_types)[i] = static_cast<std::uint8_t>(i % 2 == 0 ? 1 : 2);
+  c.chain.xi = 0.5;
+  c.mode = 22;  // the optical band's lowest mode
+  c.continuation = Continuation::arclength;
+  c.stop_at_opening = false;
+  c.max_points = 200;
+  const BreatherBranch branch = continue_breather(c);
+  EXPECT_TRUE(branch.stop_reason.starts_with("reached linear mode 22 at ")) << branch.stop_reason;
+  EXPECT_TRUE(branch.stop_reason.ends_with("; band edge)")) << branch.stop_reason;
+}
+
+}  // namespace
+}  // namespace granular
