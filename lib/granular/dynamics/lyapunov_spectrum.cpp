@@ -1,5 +1,6 @@
 #include "granular/dynamics/lyapunov_spectrum.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -10,9 +11,8 @@ namespace granular {
 namespace {
 
 // The deviation vectors as the columns of a 2N × k matrix (column-major) in the norm's coordinates
-// (δu, t_unit δv), and back.
-std::vector<double> as_matrix(const TangentPropagator& p, std::size_t n, std::size_t k, double t) {
-  std::vector<double> a(2 * n * k);
+// (δu, t_unit δv), and back (du, dv: scratch of N).
+void as_matrix(const TangentPropagator& p, std::size_t n, std::size_t k, double t, std::vector<double>& a) {
   for (std::size_t j = 0; j < k; ++j) {
     const auto du = p.deviation_displacement(j), dv = p.deviation_velocity(j);
     for (std::size_t i = 0; i < n; ++i) {
@@ -20,11 +20,10 @@ std::vector<double> as_matrix(const TangentPropagator& p, std::size_t n, std::si
       a[j * 2 * n + n + i] = t * dv[i];
     }
   }
-  return a;
 }
 
-void from_matrix(TangentPropagator& p, const std::vector<double>& a, std::size_t n, std::size_t k, double t) {
-  std::vector<double> du(n), dv(n);
+void from_matrix(TangentPropagator& p, const std::vector<double>& a, std::size_t n, std::size_t k, double t,
+                 std::vector<double>& du, std::vector<double>& dv) {
   for (std::size_t j = 0; j < k; ++j) {
     for (std::size_t i = 0; i < n; ++i) {
       du[i] = a[j * 2 * n + i];
@@ -32,25 +31,6 @@ void from_matrix(TangentPropagator& p, const std::vector<double>& a, std::size_t
     }
     p.set_deviation(j, du, dv);
   }
-}
-
-// A = QR in place (A becomes Q); returns the diagonal of R. Throws NumericalError if LAPACK fails.
-std::vector<double> householder_qr(std::vector<double>& a, int m, int k) {
-  std::vector<double> tau(static_cast<std::size_t>(k));
-  int info = 0, lwork = -1;
-  double query = 0;
-  dgeqrf_(&m, &k, a.data(), &m, tau.data(), &query, &lwork, &info);
-  dorgqr_(&m, &k, &k, a.data(), &m, tau.data(), &query, &lwork, &info);  // its own query may ask more
-  lwork = std::max(static_cast<int>(query), k);
-  std::vector<double> work(static_cast<std::size_t>(std::max(lwork, 64 * k)));
-  lwork = static_cast<int>(work.size());
-  dgeqrf_(&m, &k, a.data(), &m, tau.data(), work.data(), &lwork, &info);
-  if (info != 0) throw NumericalError("Lyapunov spectrum: dgeqrf failed (info " + std::to_string(info) + ")");
-  std::vector<double> r(static_cast<std::size_t>(k));
-  for (int j = 0; j < k; ++j) r[static_cast<std::size_t>(j)] = a[static_cast<std::size_t>(j) * m + j];
-  dorgqr_(&m, &k, &k, a.data(), &m, tau.data(), work.data(), &lwork, &info);
-  if (info != 0) throw NumericalError("Lyapunov spectrum: dorgqr failed (info " + std::to_string(info) + ")");
-  return r;
 }
 
 // k starting vectors from `seed` (splitmix64, uniform in (−1, 1)): generic directions, the same on
@@ -85,9 +65,20 @@ LyapunovSpectrum::LyapunovSpectrum(const ForceLaw& law, const Chain& chain, cons
       law, chain, scheme, time_step, initial, random_vectors(beads_, config.vectors, config.seed, config.time_unit),
       {.enabled = true, .renormalize_every = config.orthonormalize_every, .time_unit = config.time_unit},
       [this](TangentPropagator&) { orthonormalize(); });
-  std::vector<double> a = as_matrix(*tangent_, beads_, config.vectors, config.time_unit);
-  householder_qr(a, static_cast<int>(2 * beads_), static_cast<int>(config.vectors));  // R not counted: t = 0
-  from_matrix(*tangent_, a, beads_, config.vectors, config.time_unit);
+  // The QR's buffers, and LAPACK's workspace asked for once (the larger of dgeqrf's and dorgqr's).
+  matrix_.resize(2 * beads_ * config.vectors);
+  tau_.resize(config.vectors);
+  diagonal_.resize(config.vectors);
+  du_.resize(beads_);
+  dv_.resize(beads_);
+  const int m = static_cast<int>(2 * beads_), k = static_cast<int>(config.vectors), query = -1;
+  int info = 0;
+  double qr = 0, q = 0;
+  dgeqrf_(&m, &k, matrix_.data(), &m, tau_.data(), &qr, &query, &info);
+  dorgqr_(&m, &k, &k, matrix_.data(), &m, tau_.data(), &q, &query, &info);
+  work_.resize(static_cast<std::size_t>(std::max({qr, q, static_cast<double>(k)})));
+  factorize();  // the random vectors made orthonormal; R not counted: t = 0
+  from_matrix(*tangent_, matrix_, beads_, config.vectors, config.time_unit, du_, dv_);
 }
 
 void LyapunovSpectrum::advance(std::size_t steps) {
@@ -95,17 +86,28 @@ void LyapunovSpectrum::advance(std::size_t steps) {
   if (tangent_->steps_done() != orthonormalized_at_) orthonormalize();
 }
 
+void LyapunovSpectrum::factorize() {
+  as_matrix(*tangent_, beads_, config_.vectors, config_.time_unit, matrix_);
+  const int m = static_cast<int>(2 * beads_), k = static_cast<int>(config_.vectors),
+            lwork = static_cast<int>(work_.size());
+  int info = 0;
+  dgeqrf_(&m, &k, matrix_.data(), &m, tau_.data(), work_.data(), &lwork, &info);
+  if (info != 0) throw NumericalError("Lyapunov spectrum: dgeqrf failed (info " + std::to_string(info) + ")");
+  for (std::size_t j = 0; j < config_.vectors; ++j) diagonal_[j] = matrix_[j * 2 * beads_ + j];
+  dorgqr_(&m, &k, &k, matrix_.data(), &m, tau_.data(), work_.data(), &lwork, &info);
+  if (info != 0) throw NumericalError("Lyapunov spectrum: dorgqr failed (info " + std::to_string(info) + ")");
+}
+
 void LyapunovSpectrum::orthonormalize() {
-  const std::size_t k = config_.vectors;
-  std::vector<double> a = as_matrix(*tangent_, beads_, k, config_.time_unit);
-  const std::vector<double> r = householder_qr(a, static_cast<int>(2 * beads_), static_cast<int>(k));
-  for (std::size_t j = 0; j < k; ++j) {
-    if (!(std::abs(r[j]) > 0) || !std::isfinite(r[j]))
+  factorize();
+  for (std::size_t j = 0; j < config_.vectors; ++j) {
+    const double r = diagonal_[j];
+    if (!(std::abs(r) > 0) || !std::isfinite(r))
       throw NumericalError("Lyapunov spectrum: deviation vector " + std::to_string(j + 1) + " became " +
-                           (std::isfinite(r[j]) ? "dependent on the others" : "non-finite"));
-    sums_[j] += std::log(std::abs(r[j]));
+                           (std::isfinite(r) ? "dependent on the others" : "non-finite"));
+    sums_[j] += std::log(std::abs(r));
   }
-  from_matrix(*tangent_, a, beads_, k, config_.time_unit);
+  from_matrix(*tangent_, matrix_, beads_, config_.vectors, config_.time_unit, du_, dv_);
   orthonormalized_at_ = tangent_->steps_done();
 }
 

@@ -50,12 +50,14 @@ class LyapunovSpectrum {
 
  private:
   void orthonormalize();
+  void factorize();  ///< the vectors' matrix becomes Q, diagonal_ the diagonal of R
 
   std::unique_ptr<TangentPropagator> tangent_;
   LyapunovSpectrumConfig config_;
   std::size_t beads_;
-  std::vector<double> sums_;              ///< S_j
-  std::uint64_t orthonormalized_at_ = 0;  ///< the step of the last QR
+  std::vector<double> sums_;                                      ///< S_j
+  std::uint64_t orthonormalized_at_ = 0;                          ///< the step of the last QR
+  std::vector<double> matrix_, tau_, work_, diagonal_, du_, dv_;  ///< the QR's buffers, LAPACK's workspace
 };
 
 }  // namespace granular

@@ -215,7 +215,7 @@ class SplittingTangentPropagator final : public TangentPropagator {
     ap_.assign(n_ + 2, 0.0);
     dap_.assign(n_ + 2, 0.0);
     if (extra_ > 0) {
-      for (auto* a : {&kick_stiff_, &curv_, &xkx_, &xcx_}) a->assign(n_ + 1, 0.0);
+      for (auto* a : {&curv_, &xkx_, &xcx_}) a->assign(n_ + 1, 0.0);
       xda_.assign(n_ + 2, 0.0);
       xdu_.assign(extra_ * (n_ + 2), 0.0);
       xdv_.assign(extra_ * n_, 0.0);
@@ -261,10 +261,10 @@ class SplittingTangentPropagator final : public TangentPropagator {
         double after = a[j + 1] * tau;
         if (j == last && g == 0 && more) after += a[0] * tau;
         kick_and_drift<grounded, several>(view, ks, up_.data(), dup_.data(), f_.data(), kx_.data(), v_.data(),
-                                          dv_.data(), im_.data(), n_, b[j] * tau, after, kick_stiff_.data());
+                                          dv_.data(), im_.data(), n_, b[j] * tau, after, stiff_.data());
         if constexpr (several)
           for (std::size_t e = 0; e < extra_; ++e)
-            deviation_kick_and_drift<grounded>(kick_stiff_.data(), ks, xdu(e), xkx_.data(), xdv(e), im_.data(), n_,
+            deviation_kick_and_drift<grounded>(stiff_.data(), ks, xdu(e), xkx_.data(), xdv(e), im_.data(), n_,
                                                b[j] * tau, after);
         bond_updates_ += n_ + 1;
       }
@@ -343,8 +343,10 @@ class SplittingTangentPropagator final : public TangentPropagator {
   std::size_t n_, extra_;  ///< beads; deviation vectors beyond the first
   LyapunovConfig config_;
   std::vector<double> up_, dup_, v_, dv_, im_, f_, stiff_, kx_, cx_, ap_, dap_;
-  std::vector<double> kick_stiff_, curv_, xkx_, xcx_, xda_, xdu_, xdv_;  // the further vectors' (several)
-  std::function<void(TangentPropagator&)> orthonormalize_;               // several vectors' renormalization
+  // The further vectors' (several); a kick leaves its K_k in stiff_, which only the corrector
+  // otherwise uses (and fills anew).
+  std::vector<double> curv_, xkx_, xcx_, xda_, xdu_, xdv_;
+  std::function<void(TangentPropagator&)> orthonormalize_;  // several vectors' renormalization
   std::uint64_t steps_ = 0, bond_updates_ = 0;
   double logs_ = 0, initial_log_norm_ = 0;
 };
