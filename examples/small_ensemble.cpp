@@ -9,7 +9,7 @@
 int main() {
   granular::TransportCase c;
   c.chain = {.disorder = granular::Disorder::anderson, .N = 501};
-  c.site = 250;
+  c.site = 0;  // the centre bead (counting from 1; 0: the centre)
   c.realizations = 4;
   c.dynamics.integration.duration = 2e-3;
   c.fit_begin = 1e-3;

@@ -30,8 +30,7 @@ int main(int argc, char** argv) {
       "from --types/--type-masses/--polydisperse named --chain-name, --ic mode (--mode/--mode-khz), --mle (X1 at T).",
       "exponents"};
   tool::describe_common(app);
-  TransportChoices dynamics;
-  BeyondChoices beyond;
+  ExponentTableConfig config;  // the dynamics flags set its base case
   ExponentChoices choices;
   std::string f0_text = "10,0.5,0.1,0.01,0", output = "exponents", profile_f0 = "10,0.1,0";
   std::string paper_table = std::string(GRANULAR_SOURCE_DIR) + "/data/paper_table1_gamma.csv";
@@ -39,9 +38,9 @@ int main(int argc, char** argv) {
   tool::LongRunOptions run_options;
   bool compare = false;
   tool::add_option(app, "--F0", f0_text, "precompressions [N], comma list (0 = sonic vacuum)");
-  tool::add_exponent_choices(app, choices, beyond);
+  tool::add_exponent_choices(app, choices, config.base);
   tool::add_parameters(app, choices.beads, long_run_chain_parameters(), {.only = {"N", "xi", "q", "walls"}});
-  tool::add_dynamics_options(app, dynamics, beyond);
+  tool::add_dynamics_options(app, config.base);
   tool::add_option(app, "--realizations", realizations, "realizations per disordered case (h always runs 1)");
   tool::add_parameters(app, choices.beads, chain_parameters(), {.only = {"seed"}});
   tool::add_option(app, "--profile-F0", profile_f0, "F0s whose energy profile E_n(T) is averaged (list; 'none')");
@@ -55,7 +54,6 @@ int main(int argc, char** argv) {
   const auto body = [&] {
     tool::Metadata meta("exponents", argc, argv);
     const MpiContext& mpi = MpiContext::instance();
-    ExponentTableConfig config;
     granular::apply(choices, config);
     config.precompressions = parse_number_list(f0_text, "--F0");
     config.profile_precompressions =
@@ -66,10 +64,9 @@ int main(int argc, char** argv) {
     validate(run_options);
     TransportCase& base = config.base;
     base.realizations = static_cast<std::size_t>(realizations);
-    granular::apply(dynamics, beyond, base);
     const bool auto_n = config.automatic_length = choices.beads.auto_n;
     std::vector<TransportCase> cases = exponent_cases(config);
-    const nlohmann::json rules = length_rules(cases, auto_n, dynamics.site);
+    const nlohmann::json rules = length_rules(cases, auto_n, static_cast<long long>(base.site));
     const nlohmann::json step_rule = tool::validate_and_settle(cases);
     tool::warn(frequency_slips(cases, [](const std::string& p) { return tool::option_name(front_end_word(p)); }));
     base.dynamics = cases.front().dynamics;  // τ and scheme as settled

@@ -65,5 +65,5 @@
 #include "granular/study/spreading_output_choices.hpp"
 #include "granular/study/spreading_run.hpp"
 #include "granular/study/time_step_rule.hpp"
-#include "granular/study/transport_choices.hpp"
+#include "granular/study/transport_parameters.hpp"
 #include "granular/study/transport_study.hpp"

@@ -37,14 +37,26 @@ struct Needs {
   std::vector<std::string> values{};
 };
 
+/// Where a parameter's value lives in `Choices`: a member (`&TransportCase::alpha`) or a path into
+/// a nested member (path(&TransportCase::dynamics, &SpreadingRunConfig::integration,
+/// &IntegrationConfig::duration)), so that a table can describe the typed case itself.
+template <class Choices, class T>
+using Ref = std::function<T&(Choices&)>;
+
+/// The reference to the member reached from a `Root` by `members` in turn (c.*m1.*m2…).
+template <class Root, class... Members>
+auto path(Members... members) {
+  return [members...](Root & c) -> auto& { return (c.*....*members); };
+}
+
 template <class Choices>
 struct Parameter {
-  /// The member the parameter sets; none (monostate) when front ends read it in forms of their
+  /// The value the parameter sets; none (monostate) when front ends read it in forms of their
   /// own (a fit window: `text` on the command line, a pair in Python) and set fields of it.
   using Field =
-      std::variant<std::monostate, double Choices::*, long long Choices::*, long Choices::*, unsigned long Choices::*,
-                   std::string Choices::*, bool Choices::*, std::optional<double> Choices::*,
-                   std::optional<long> Choices::*, std::vector<long> Choices::*>;
+      std::variant<std::monostate, Ref<Choices, double>, Ref<Choices, long long>, Ref<Choices, long>,
+                   Ref<Choices, unsigned long>, Ref<Choices, std::string>, Ref<Choices, bool>,
+                   Ref<Choices, std::optional<double>>, Ref<Choices, std::optional<long>>, Ref<Choices, std::vector<long>>>;
 
   Parameter(std::string name, Field field, std::string help, bool shows_default = true)
       : name(std::move(name)), field(field), help(std::move(help)), shows_default(shows_default) {}
@@ -64,6 +76,16 @@ struct Parameter {
   std::optional<TextForm<Choices>> text{};
   /// The choice the parameter takes effect with (`angle`: `quasi` cylinders); none: always.
   std::optional<Needs> needs{};
+
+  /// Whether the text form is also Python's attribute (a word standing for a typed value: an
+  /// enum, `integrator`); other text forms are the command line's only.
+  bool python_text = false;
+
+  /// This row, its text form also Python's attribute (a word).
+  Parameter as_word() && {
+    python_text = true;
+    return std::move(*this);
+  }
 
   /// This row, taking effect only with `choice` (set to one of `values`, if any).
   Parameter needing(std::string choice, std::vector<std::string> values = {}) && {
@@ -90,6 +112,12 @@ const Parameter<Choices>& parameter(const ParameterTable<Choices>& table, std::s
 }
 
 namespace detail {
+inline std::string lowercase(const std::string& text) {
+  std::string out;
+  std::transform(text.begin(), text.end(), std::back_inserter(out),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return out;
+}
 template <class T>
 bool same_value(const T& a, const T& b) {
   if constexpr (std::is_floating_point_v<T>) return a == b || (a != a && b != b);  // NaN defaults
@@ -113,9 +141,9 @@ template <class Choices>
 bool given(const Choices& o, const Parameter<Choices>& p, const Choices& defaults) {
   if (p.text && p.text->write) return p.text->write(o) != p.text->write(defaults);
   return std::visit(
-      [&]<class Field>(Field field) {
+      [&]<class Field>(const Field& field) {
         if constexpr (std::is_same_v<Field, std::monostate>) return false;
-        else return !detail::same_value(o.*field, defaults.*field);
+        else return !detail::same_value(field(const_cast<Choices&>(o)), field(const_cast<Choices&>(defaults)));
       },
       p.field);
 }
@@ -131,15 +159,16 @@ void refuse_unmet_needs(const Choices& o, const ParameterTable<Choices>& table, 
     std::string word;   // the needed choice's word, lowercase
     bool flag = false;  // a flag or number: off rather than not given
     const bool on = std::visit(
-        [&]<class Field>(Field field) {
-          if constexpr (std::is_same_v<Field, std::monostate>) return false;
-          else {
-            using T = std::remove_cvref_t<decltype(o.*field)>;
-            if constexpr (std::is_same_v<T, std::string>)
-              std::transform((o.*field).begin(), (o.*field).end(), std::back_inserter(word),
-                             [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+        [&]<class Field>(const Field& field) {
+          if constexpr (std::is_same_v<Field, std::monostate>) {
+            if (needed.text) word = detail::lowercase(needed.text->write(o));  // a word form (`integrator`)
+            return !word.empty();
+          } else {
+            const auto& value = field(const_cast<Choices&>(o));
+            using T = std::remove_cvref_t<decltype(value)>;
+            if constexpr (std::is_same_v<T, std::string>) word = detail::lowercase(value);
             flag = std::is_arithmetic_v<T>;
-            return detail::is_on(o.*field);
+            return detail::is_on(value);
           }
         },
         needed.field);

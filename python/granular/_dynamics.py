@@ -1,7 +1,7 @@
 """granular.spreading, granular.transport and granular.exponent_table: their keywords, defaults and
-docstrings. Each fills the library's structs (granular._core.TransportCase, TransportChoices,
-BeyondChoices, ...; C++ defaults) and makes one call to granular._core, which completes the case by
-the rule the tools use (study/transport_choices.hpp), runs it and returns the library's result and
+docstrings. Each fills the library's structs (granular._core.TransportCase, whose attributes are the rows of
+transport_parameters(), ...; C++ defaults) and makes one call to granular._core, which completes the case by
+the rule the tools use (study/transport_parameters.hpp), runs it and returns the library's result and
 metadata; the result dicts (SpreadingRun, Transport) are shaped here."""
 import math
 
@@ -53,19 +53,19 @@ deviation vector (>= 1)
 _MAX = 100000000
 
 
-def _choices(alpha, beta, site, centre, T, dt, integrator, force_law, samples, sampling, fit, fit_step, t_star,
-             kappa, bootstrap, active_window, window_threshold, reference_max_step, max_energy_error, energy_guard):
-    """The TransportChoices of the dynamics keywords, once those only Python has are read (beta a number
-    or 'match', site None, dt None, fit a pair); integrator 'auto' is settled in C++ with the step."""
-    c = _core.TransportChoices()
-    c.alpha = alpha
+def _fill_case(c, alpha, beta, site, centre, T, dt, integrator, force_law, samples, sampling, fit, fit_step, t_star,
+               kappa, bootstrap, active_window, window_threshold, reference_max_step, max_energy_error, energy_guard):
+    """Sets the dynamics keywords on `c` (a _core.TransportCase, whose attributes are the rows of the library's
+    transport_parameters()), once those only Python has are read (beta a number or 'match', site None, dt None, fit
+    a pair); integrator 'auto' is settled in C++ with the step. Returns `c`."""
     if isinstance(beta, str):
         if beta != "match":
             raise ValueError(f"beta '{beta}': a number [m/s] or 'match'")
         c.beta = None
     else:
         c.beta = _core._finite(beta, "beta")
-    c.site = 0 if site is None else site
+    c.alpha = alpha
+    c.site = 0 if site is None else _core._size(site, "site")
     c.centre = centre
     c.duration = T
     c.time_step = None if dt is None else _core._finite(dt, "dt")
@@ -89,11 +89,11 @@ def _choices(alpha, beta, site, centre, T, dt, integrator, force_law, samples, s
     return c
 
 
-def _beyond(damping_time, kk_gamma, mle, renormalize, deviation_samples=0):
-    b = _core.BeyondChoices()
-    b.damping_time, b.kk_gamma, b.mle = damping_time, kk_gamma, mle
-    b.renormalize, b.deviation_samples = renormalize, deviation_samples
-    return b
+def _fill_beyond(c, damping_time, kk_gamma, mle, renormalize, deviation_samples=0):
+    """Sets dissipation and the tangent map on `c` (a _core.TransportCase)."""
+    c.damping_time, c.kk_gamma, c.mle = damping_time, kk_gamma, mle
+    c.renormalize = _core._size(renormalize, "renormalize")
+    c.deviation_samples = _core._size(deviation_samples, "deviation_samples")
 
 
 _QUASI_DOC = """\
@@ -163,10 +163,10 @@ def spreading(chain, *, ic="displacement", alpha=1e-7, beta=_core.paper_beta, si
               damping_time=0.0, kk_gamma=0.0, mle=False, renormalize=10, deviation_samples=0):
     if not isinstance(chain, _core.Chain):
         raise TypeError(f"spreading: chain must be a granular.Chain, got {type(chain).__name__}")
-    choices = _choices(alpha, beta, site, centre, T, dt, integrator, force_law, samples, sampling, fit, fit_step,
-                       t_star, kappa, bootstrap, active_window, window_threshold, reference_max_step,
-                       max_energy_error, energy_guard)
-    beyond = _beyond(damping_time, kk_gamma, mle, renormalize, deviation_samples)
+    case = _fill_case(_core.TransportCase(), alpha, beta, site, centre, T, dt, integrator, force_law, samples,
+                      sampling, fit, fit_step, t_star, kappa, bootstrap, active_window, window_threshold,
+                      reference_max_step, max_energy_error, energy_guard)
+    _fill_beyond(case, damping_time, kk_gamma, mle, renormalize, deviation_samples)
     outputs = _core.SpreadingOutputChoices()  # the optional observers, checked by the tools' rule in C++
     if forces_at is not None:
         beads = double_vector(forces_at, "forces_at")
@@ -177,11 +177,11 @@ def spreading(chain, *, ic="displacement", alpha=1e-7, beta=_core.paper_beta, si
     outputs.force_samples, outputs.energy_map, outputs.map_samples = force_samples, bool(energy_map), map_samples
     outputs.map_stride, outputs.spectral_density = map_stride, bool(spectral_density)
     outputs.spectrum_samples, outputs.spectrum_of = spectrum_samples, spectrum_of
-    case = _core.TransportCase()  # one realization: the chain's
+    # one realization: the chain's
     case.realizations, case.profile_realizations = 1, 0
     case.mode.mode, case.mode.mode_khz, case.mode.energy = mode, mode_khz, energy
     case.kick = ic
-    raw = _core._spreading(chain, case, outputs, choices, beyond, _run(progress=progress))
+    raw = _core._spreading(chain, case, outputs, _run(progress=progress))
     return _spreading_run(raw, chain.N, outputs, deviation_samples)
 
 
@@ -266,10 +266,10 @@ def transport(*, disorder="A", N=2501, q=0.5, xi=0.5, F0=10.0, R1=_core.paper_r1
     _quasi_choices(k.chain, quasi, modulation, ratio, phase, angle, k0)
     k.ic, k.realizations = ic, _core._size(realizations, "realizations", 1)
     k.mode.mode, k.mode.mode_khz, k.mode.energy = mode, mode_khz, energy
-    k.run = _choices(alpha, beta, site, centre, T, dt, integrator, force_law, samples, sampling, fit, fit_step, t_star,
-                     kappa, bootstrap, active_window, window_threshold, reference_max_step, max_energy_error,
-                     energy_guard)
-    k.beyond = _beyond(damping_time, kk_gamma, mle, renormalize)
+    k.run = _fill_case(_core.TransportCase(), alpha, beta, site, centre, T, dt, integrator, force_law, samples,
+                       sampling, fit, fit_step, t_star, kappa, bootstrap, active_window, window_threshold,
+                       reference_max_step, max_energy_error, energy_guard)
+    _fill_beyond(k.run, damping_time, kk_gamma, mle, renormalize)
     run = _run(threads, checkpoint, resume, resume_other_version, progress, fresh, skip_failed)
     return _transport(_core._transport(k, profile, run), profile)
 
@@ -344,14 +344,14 @@ def exponent_table(*, chains=["h", "A", "RDM1", "RDM2"], F0=[10.0, 0.5, 0.1, 0.0
     table.profile_precompressions = [] if profile_F0 is None else number_list(profile_F0, "profile_F0", 0)
     table.profile_realizations = _core._size(profile_realizations, "profile_realizations")
     table.base.realizations = _core._size(realizations, "realizations", 1)
-    choices = _choices(alpha, beta, site, centre, T, dt, integrator, force_law, samples, sampling, fit, fit_step,
-                       t_star, kappa, bootstrap, active_window, window_threshold, reference_max_step,
-                       max_energy_error, energy_guard)
-    beyond = _beyond(damping_time, kk_gamma, mle, renormalize)
+    _fill_case(table.base, alpha, beta, site, centre, T, dt, integrator, force_law, samples, sampling, fit, fit_step,
+               t_star, kappa, bootstrap, active_window, window_threshold, reference_max_step, max_energy_error,
+               energy_guard)
+    _fill_beyond(table.base, damping_time, kk_gamma, mle, renormalize)
     run = _run(threads, checkpoint, resume, resume_other_version, progress, fresh, skip_failed)
     # compare_paper: the path of a table in the paper's format, or True for the paper's own ("": no comparison)
     paper = compare_paper if isinstance(compare_paper, str) else _core._paper_table if compare_paper else ""
-    return ExponentTable(_core._exponent_table(words, table, choices, beyond, paper, run))
+    return ExponentTable(_core._exponent_table(words, table, paper, run))
 
 
 exponent_table.__doc__ = (

@@ -52,8 +52,16 @@ py::class_<C> table_class(py::module_& m, const char* name, const ParameterTable
   py::list described;
   for (const Parameter<C>& p : table) {
     std::visit(
-        [&]<class Field>(Field field) {
-          if constexpr (!std::is_same_v<Field, std::monostate>) c.def_readwrite(p.name.c_str(), field);
+        [&]<class Field>(const Field& field) {
+          if constexpr (!std::is_same_v<Field, std::monostate>) {
+            using T = std::remove_cvref_t<decltype(field(std::declval<C&>()))>;
+            c.def_property(
+                p.name.c_str(), [field](C& o) { return field(o); }, [field](C& o, const T& v) { field(o) = v; });
+          } else if (p.text && p.python_text) {  // a word form over a typed field (an enum): a str attribute
+            c.def_property(
+                p.name.c_str(), [write = p.text->write](const C& o) { return write(o); },
+                [read = p.text->read](C& o, const std::string& v) { read(o, v); });
+          }
         },
         p.field);
     described.append(py::make_tuple(p.name, word_of(p), tell_parameters(p.help, front_end_word)));

@@ -1,8 +1,8 @@
 // The nonlinear dynamics under granular.spreading, granular.transport and granular.exponent_table,
 // whose keywords, defaults and docstrings live in granular/_dynamics.py. Here: the library's
-// structs (TransportCase with its ModeKick, SpreadingOutputChoices, TransportChoices, BeyondChoices,
-// ChainRecipe, ExponentChoices, ExponentTableConfig) bound with their C++ defaults, and one call per
-// job that takes them, completes the case by the tools' rules (study/transport_choices.hpp,
+// structs (TransportCase with its ModeKick, its parameters' attributes made from transport_parameters(),
+// SpreadingOutputChoices, ChainRecipe, ExponentChoices, ExponentTableConfig) bound with their C++ defaults,
+// and one call per job that takes them, completes the case by the tools' rules (study/transport_parameters.hpp,
 // spreading_output_choices.hpp, exponent_choices.hpp), runs it and returns the library's result
 // (granular/_dynamics.py shapes it) or the tool's CSV text, with the library's own JSON.
 #include <nlohmann/json.hpp>
@@ -22,7 +22,7 @@
 #include "granular/study/paper_comparison.hpp"
 #include "granular/study/spreading_files.hpp"
 #include "granular/study/spreading_output_choices.hpp"
-#include "granular/study/transport_choices.hpp"
+#include "granular/study/transport_parameters.hpp"
 
 namespace granular::python {
 namespace {
@@ -33,12 +33,10 @@ py::object csv_text(const std::function<void(std::ostream&)>& write) {
   return py::str(out.str());
 }
 
-/// `c`: the case as granular/_dynamics.py fills it (kick, mode), one realization of `chain`, with the
-/// observers of `outputs`.
-py::dict spreading(const PyChain& chain, TransportCase c, const SpreadingOutputChoices& outputs,
-                   const TransportChoices& choices, const BeyondChoices& beyond, const PyRun& options) {
+/// `c`: the case as granular/_dynamics.py fills it (its parameters, kick, mode), one realization of
+/// `chain`, with the observers of `outputs`.
+py::dict spreading(const PyChain& chain, TransportCase c, const SpreadingOutputChoices& outputs, const PyRun& options) {
   c.chain = chain.recipe;
-  granular::apply(choices, beyond, c);
   granular::apply(outputs, c);
   SpreadingRunConfig& d = c.dynamics;
   fit_within_duration(c);                                  // a window beyond T: no exponents
@@ -115,12 +113,12 @@ py::dict transport(const KickedCaseChoices& choices, bool profile, const PyRun& 
                 metadata("transport", meta));
 }
 
-/// `words`: the chains and kicks as granular/_dynamics.py fills them (the tool's rule makes config's of them).
-py::dict exponent_table(const ExponentChoices& words, ExponentTableConfig config, const TransportChoices& choices,
-                        const BeyondChoices& beyond, const std::string& paper_path, const PyRun& options) {
+/// `words`: the chains and kicks as granular/_dynamics.py fills them (the tool's rule makes config's of
+/// them); config.base: the dynamics keywords.
+py::dict exponent_table(const ExponentChoices& words, ExponentTableConfig config, const std::string& paper_path,
+                        const PyRun& options) {
   granular::apply(words, config);
   TransportCase& base = config.base;
-  granular::apply(choices, beyond, base);
   auto cases = exponent_cases(config);
   std::string t_warning;  // one is enough: the cases share T
   const nlohmann::json step_rule = validate_and_settle(cases, "T", t_warning);
@@ -165,10 +163,8 @@ py::dict exponent_table(const ExponentChoices& words, ExponentTableConfig config
 }  // namespace
 
 void bind_dynamics(py::module_& m) {
-  table_class(m, "TransportChoices", transport_parameters());
   m.attr("paper_beta") = paper_beta;
   m.attr("_paper_table") = GRANULAR_SOURCE_DIR "/data/paper_table1_gamma.csv";  // compare_paper=True
-  table_class(m, "BeyondChoices", beyond_parameters());
   table_class(m, "ModeKick", mode_kick_parameters());
   table_class(m, "SpreadingOutputChoices", spreading_output_parameters());  // granular.spreading's observers
   using R = ChainRecipe;
@@ -180,6 +176,13 @@ void bind_dynamics(py::module_& m) {
           "walls", [](const R& r) { return r.walls == WallShape::flat ? "flat" : "sphere"; },
           [](R& r, const std::string& word) { r.walls = parse_wall_shape(word); })
       .def("_validate_quasi", [](const R& r) { validate(*r.quasi, r.F0); });
+  using C = TransportCase;  // an attribute per parameter row, and what the keywords give beyond them
+  table_class(m, "TransportCase", transport_parameters())
+      .def_readwrite("chain", &C::chain)
+      .def_readwrite("realizations", &C::realizations)
+      .def_readwrite("profile_realizations", &C::profile_realizations)
+      .def_readwrite("mode", &C::mode)
+      .def_property("kick", word_getter(&C::kick), word_setter(&C::kick, parse_kick));
   using E = ExponentTableConfig;
   config_class(m, "ExponentTableConfig", "precompressions profile_precompressions profile_realizations base",
                &E::precompressions, &E::profile_precompressions, &E::profile_realizations, &E::base);
@@ -194,12 +197,8 @@ void bind_dynamics(py::module_& m) {
   // that takes no effect on it (angle with s1) is refused.
   m.def("_quasiperiodic", [](const ChainChoices& c) { return quasiperiodic(c); });
   using K = KickedCaseChoices;  // granular.transport's case, made by the spreading tool's rule
-  config_class(m, "KickedCaseChoices", "chain ic mode run beyond realizations", &K::chain, &K::ic, &K::mode, &K::run,
-               &K::beyond, &K::realizations);
-  using C = TransportCase;  // what the keywords give beyond the choices; the exponent table's cases share it
-  config_class(m, "TransportCase", "chain realizations profile_realizations mode", &C::chain, &C::realizations,
-               &C::profile_realizations, &C::mode)
-      .def_property("kick", word_getter(&C::kick), word_setter(&C::kick, parse_kick));
+  config_class(m, "KickedCaseChoices", "chain ic mode run realizations", &K::chain, &K::ic, &K::mode, &K::run,
+               &K::realizations);
   table_class(m, "LongRunChoices", long_run_parameters());
   py::class_<PyRun, LongRunChoices>(m, "RunOptions")
       .def(py::init<>())

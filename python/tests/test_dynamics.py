@@ -354,15 +354,14 @@ def _keywords(table, skip=()):
 
 
 @pytest.mark.parametrize("function, tables", [
-    (gr.spreading, [(gr._core.TransportChoices, ("fit_begin", "fit_end")), (gr._core.BeyondChoices, ()),
+    (gr.spreading, [(gr._core.TransportCase, ("fit_begin", "fit_end")),
                     (gr._core.ModeKick, ()), (gr._core.SpreadingOutputChoices, ())]),
-    (gr.transport, [(gr._core.TransportChoices, ("fit_begin", "fit_end")),
-                    (gr._core.BeyondChoices, ("deviation_samples",)),
+    (gr.transport, [(gr._core.TransportCase, ("fit_begin", "fit_end", "deviation_samples")),
                     # an ensemble draws its chains: no files, no one realization; s1's N/m stiffness: none
                     (gr._core.ChainChoices, ("config", "radii", "realization", "k0_n_per_m")), (gr._core.ModeKick, ()),
                     (gr._core.LongRunChoices, ())]),
-    (gr.exponent_table, [(gr._core.TransportChoices, ("fit_begin", "fit_end")),
-                         (gr._core.BeyondChoices, ("deviation_samples",)), (gr._core.ExponentChoices, ()),
+    (gr.exponent_table, [(gr._core.TransportCase, ("fit_begin", "fit_end", "deviation_samples")),
+                         (gr._core.ExponentChoices, ()),
                          (gr._core.ModeKick, ()), (gr._core.LongRunChoices, ())]),
 ])
 def test_every_parameter_of_the_library_tables_is_a_documented_keyword(function, tables):

@@ -18,7 +18,7 @@ TransportCase lyapunov_case() {
   TransportCase c;
   c.chain.disorder = Disorder::anderson;
   c.chain.N = 201;
-  c.site = 100;
+  c.site = 101;
   c.chain.F0 = 0.1;
   c.realizations = 4;
   c.profile_realizations = 2;

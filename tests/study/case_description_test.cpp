@@ -20,7 +20,7 @@ namespace {
 TransportCase base() {
   TransportCase c;
   c.chain = {.disorder = Disorder::rdm2, .q = 0.3, .xi = 0.6, .R1 = 5e-3, .N = 301, .F0 = 0.5, .seed = 9};
-  c.site = 120;
+  c.site = 121;
   c.realizations = 7;
   c.profile_realizations = 3;
   c.dynamics.integration.duration = 2e-3;
@@ -55,16 +55,16 @@ std::vector<std::pair<std::string, TransportCase>> families(const std::string& d
   add("types file", [&](TransportCase& c) {
     c.chain.source = dir + "/chain.types";
     c.chain.given_types = Configuration{1, 2, 2, 1, 1, 2};
-    c.site = 2;
+    c.site = 3;
   });
   add("radii file", [&](TransportCase& c) {
     c.chain.source = dir + "/chain.radii";
     c.chain.given_radii = std::vector<double>{4.76e-3, 3.1e-3, 0.0047};
-    c.site = 1;
+    c.site = 2;
   });
   add("centred", [](TransportCase& c) {
     c.chain.centred = true;
-    c.site = 150;
+    c.site = 151;
   });
   add("mode", [](TransportCase& c) {
     c.kick = Kick::mode;
@@ -81,7 +81,7 @@ std::vector<std::pair<std::string, TransportCase>> families(const std::string& d
   });
   add("match", [](TransportCase& c) {
     c.kick = Kick::velocity;
-    c.match_beta = true;
+    c.beta.reset();  // match
   });
   add("damped", [](TransportCase& c) { c.dynamics.integration.damping = {.time = 1e-3, .kk_gamma = 2e-6}; });
   add("mle", [](TransportCase& c) {
@@ -94,12 +94,13 @@ std::vector<std::pair<std::string, TransportCase>> families(const std::string& d
     c.dynamics.integration.integrator.tolerance.max_step = 2e-8;
   });
   add("no fit", [](TransportCase& c) { c.fit = false; });
+  add("window threshold", [](TransportCase& c) { c.dynamics.integration.window.threshold = 1e-20; });
   add("observed otherwise", [](TransportCase& c) {
     c.centre = SpreadCentre::centroid;
     c.dynamics.integration.force_law = ForceLawKind::fpu;
     c.dynamics.spread.samples = 33;
     c.dynamics.spread.sampling = Sampling::uniform;
-    c.dynamics.integration.window = {.enabled = false, .threshold = 1e-20};
+    c.dynamics.integration.window.enabled = false;  // (a threshold without it is refused: validate)
     c.dynamics.spread.max_energy_error = 1e-6;
     c.dynamics.spread.stop_on_energy_error = false;
     c.criterion = {.kappa = 0.2, .t_start = 1.5e-3};

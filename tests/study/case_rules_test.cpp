@@ -90,7 +90,7 @@ TEST(CaseRules, AutoDecidesOnARadiiFilesChain) {
   TransportCase file = paper_case(alpha);  // a given chain: big beads at the wall, kicked there
   file.chain.given_radii = std::vector<double>(101, 4.76e-3);
   for (std::size_t i = 0; i < 11; ++i) (*file.chain.given_radii)[i] = 3 * 4.76e-3;
-  file.site = 0;
+  file.site = 1;
   const Chain chain = file.chain.chain(0);
   const ForceLaw law = make_force_law(ForceLawKind::hertz, chain);
   const double energy = total_energy(law, chain, displacement_kick(chain, 0, alpha));
@@ -109,7 +109,7 @@ TEST(CaseRules, AutoTakesTheRealModeOfAModeKick) {
   TransportCase c = paper_case(1e-7);
   c.kick = Kick::mode;
   c.mode = {.mode = 2221, .energy = 1e-9};
-  c.site = 1250;
+  c.site = 1251;
   const Energies e = by_hand({4.76e-3, 2.38e-3}, 10, 1e-7);
   EXPECT_EQ(bonds_stay_closed(c), 1e-9 < e.opening);
   TransportCase given = c;  // before settling, which fixes c's step

@@ -57,7 +57,7 @@ TEST(CaseSettling, AStableTimeStepStillHasItsGridChecked) {
 TEST(CaseSettling, TheDurationWarningUsesTheRulesOmegaMax) {
   TransportCase c;
   c.chain.N = 101;
-  c.site = 50;
+  c.site = 51;
   c.fit = false;
   c.dynamics.integration.duration = 1;  // 1 s typed for 1 ms: waves cross 101 beads thousands of times
   std::string warning;

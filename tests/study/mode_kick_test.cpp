@@ -150,7 +150,7 @@ TEST(ModeKick, BadKicksNameTheirParameter) {
 TEST(ModeKick, TransportCaseRunsAModeKick) {
   TransportCase c;
   c.chain.N = 100;
-  c.site = 50;
+  c.site = 51;
   c.kick = Kick::mode;
   c.mode = {.near_khz = 30, .energy = 1e-7};
   c.dynamics.integration.duration = 1e-4;

@@ -19,7 +19,7 @@
 #include "granular/study/exponent_choices.hpp"
 #include "granular/study/long_run_choices.hpp"
 #include "granular/study/spreading_output_choices.hpp"
-#include "granular/study/transport_choices.hpp"
+#include "granular/study/transport_parameters.hpp"
 
 namespace granular {
 namespace {
@@ -58,7 +58,6 @@ TEST(ParameterTables, NameEachParameterOnceAndReferOnlyToParametersTheyDescribe)
   std::set<std::string> names;
   collect_names(chain_parameters(), names);
   collect_names(transport_parameters(), names);
-  collect_names(beyond_parameters(), names);
   collect_names(mode_kick_parameters(), names);
   collect_names(dynamical_butterfly_parameters(), names);
   collect_names(exponent_parameters(), names);
@@ -68,7 +67,6 @@ TEST(ParameterTables, NameEachParameterOnceAndReferOnlyToParametersTheyDescribe)
   EXPECT_GE(names.size(), 45U);
   expect_references_known(chain_parameters(), names);
   expect_references_known(transport_parameters(), names);
-  expect_references_known(beyond_parameters(), names);
   expect_references_known(mode_kick_parameters(), names);
   expect_references_known(dynamical_butterfly_parameters(), names);
   expect_references_known(exponent_parameters(), names);
@@ -100,19 +98,20 @@ int expect_text_forms_read_what_they_write(const ParameterTable<Choices>& table,
 }
 
 TEST(ParameterTables, TextFormsReadWhatTheyWriteAndNameTheirParameter) {
-  EXPECT_EQ(expect_text_forms_read_what_they_write(transport_parameters(), "1:x"), 3);  // beta, fit, active_window
-  EXPECT_EQ(expect_text_forms_read_what_they_write(exponent_parameters(), "h,,A"), 2);  // chains, ic
+  // beta, fit, active_window and the words centre, integrator, force_law, sampling, energy_guard
+  EXPECT_EQ(expect_text_forms_read_what_they_write(transport_parameters(), "1:x"), 8);
+  EXPECT_EQ(expect_text_forms_read_what_they_write(exponent_parameters(), "h,,A"), 2);         // chains, ic
   EXPECT_EQ(expect_text_forms_read_what_they_write(spreading_output_parameters(), "1:x"), 1);  // forces_at
   EXPECT_EQ(expect_text_forms_read_what_they_write(mode_selection_parameters(), "1:x"), 1);    // window
   EXPECT_EQ(expect_text_forms_read_what_they_write(long_run_chain_parameters(), "1:x"), 1);    // N
-  TransportChoices o;
+  TransportCase o;
   parameter(transport_parameters(), "beta").text->read(o, "match");
   EXPECT_FALSE(o.beta) << "'match': the energy of alpha";
   parameter(transport_parameters(), "fit").text->read(o, "2e-3:5e-3");
   EXPECT_EQ(o.fit_begin, 2e-3);
   EXPECT_EQ(o.fit_end, 5e-3);
   parameter(transport_parameters(), "active_window").text->read(o, "off");
-  EXPECT_FALSE(o.active_window);
+  EXPECT_FALSE(o.dynamics.integration.window.enabled);
   EXPECT_EQ(parameter(transport_parameters(), "active_window").text->write(o), "off");
 }
 

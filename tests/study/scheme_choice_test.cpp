@@ -19,7 +19,7 @@ TransportCase homogeneous(double f0, double alpha) {
   c.chain.F0 = f0;
   c.alpha = alpha;
   c.chain.N = 3;
-  c.site = 1;
+  c.site = 2;
   return c;
 }
 

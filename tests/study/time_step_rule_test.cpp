@@ -154,7 +154,7 @@ TEST(TimeStepRule, BeadDistributionsBoundTheirOwnRadii) {
 TEST(TimeStepRule, ModeKicksAreBoundedBeforeTheChainIsDrawn) {
   TransportCase c;
   c.chain.N = 401;
-  c.site = 200;
+  c.site = 201;
   c.kick = Kick::mode;
   c.mode = {.mode = 200, .energy = 1e-7};
   validate(c);

@@ -28,7 +28,7 @@ TEST(SpreadingFiles, PathsUnderThePrefixAndTheUsersOwn) {
 TEST(SpreadingFiles, WritesTheRunsFilesUncommittedUntilTold) {
   TransportCase c;
   c.chain.N = 21;
-  c.site = 10;
+  c.site = 11;
   c.dynamics.integration.duration = 2e-5;
   c.dynamics.spread.samples = 5;
   c.fit = false;

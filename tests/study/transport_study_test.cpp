@@ -14,7 +14,7 @@ namespace {
 TransportCase short_case(std::size_t N, std::size_t realizations, double T, std::size_t samples, double fit_begin) {
   TransportCase c;
   c.chain.N = N;
-  c.site = N / 2;
+  c.site = N / 2 + 1;
   c.realizations = realizations;
   c.dynamics.integration.duration = T;
   c.dynamics.spread.samples = samples;
@@ -54,7 +54,7 @@ TEST(TransportStudy, HomogeneousPrecompressedEnsembleIsBallistic) {
   TransportCase c;
   c.chain.disorder = Disorder::homogeneous;
   c.chain.N = 1401;
-  c.site = 700;
+  c.site = 701;
   c.realizations = 2;
   c.dynamics.spread.samples = 100;
   const TransportSummary s = run_transport_study(c, {0, "", false, nullptr});
@@ -69,7 +69,7 @@ TEST(TransportStudy, HomogeneousPrecompressedEnsembleIsBallistic) {
 
 TEST(TransportStudy, RejectsImpossibleCasesBeforeRunning) {
   TransportCase c = small_case(Disorder::rdm1, 10);
-  c.site = 301;
+  c.site = 302;
   EXPECT_THROW(run_transport_study(c, {}), InvalidInput);
   c = small_case(Disorder::rdm1, 10);
   c.fit_end = 2e-3;  // beyond T

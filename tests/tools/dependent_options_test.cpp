@@ -13,7 +13,7 @@
 #include "granular/parameter_names.hpp"
 #include "granular/study/chain_choices.hpp"
 #include "granular/study/spreading_output_choices.hpp"
-#include "granular/study/transport_choices.hpp"
+#include "granular/study/transport_parameters.hpp"
 #include "tool_runner.hpp"
 
 namespace granular::testing {
@@ -110,10 +110,8 @@ TEST(DependentOptions, RunOptionsAreRefusedWithoutTheChoiceTheyNeed) {
   check_table(transport_parameters(),
               {{"window_threshold", {"1e-20", "--active-window off", ""}},
                {"reference_max_step", {"2e-8", "", "--integrator reference"}},
-               {"energy_guard", {"warn", "--max-energy-error 0", ""}}},
-              {{"spreading", "exponents"}}, kick_run, kick_args);
-  check_table(beyond_parameters(),
-              {{"renormalize", {"5", "", "--mle"}},
+               {"energy_guard", {"warn", "--max-energy-error 0", ""}},
+               {"renormalize", {"5", "", "--mle"}},
                {"deviation_samples", {"3", "--deviation dev.csv", "--mle --deviation dev.csv"}}},
               {{"spreading", "exponents"}}, kick_run, kick_args);
   check_table(spreading_output_parameters(),

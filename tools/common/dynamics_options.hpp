@@ -12,24 +12,24 @@
 #include <nlohmann/json.hpp>
 
 #include "granular/study/case_settling.hpp"
-#include "granular/study/transport_choices.hpp"
+#include "granular/study/transport_parameters.hpp"
 #include "granular/study/transport_study.hpp"
 #include "tool_main.hpp"
 
 namespace granular::tool {
 
 /// --mle (its help ending in `output`: what the tool writes of it) and --renormalize.
-inline void add_mle_options(CLI::App& app, BeyondChoices& o, const std::string& output) {
-  auto options = add_parameters(app, o, beyond_parameters(), {.only = {"mle", "renormalize"}});
+inline void add_mle_options(CLI::App& app, TransportCase& o, const std::string& output) {
+  auto options = add_parameters(app, o, transport_parameters(), {.only = {"mle", "renormalize"}});
   options["mle"]->description(options["mle"]->get_description() + ": " + output);
 }
 
-/// The kick's flags, and the run's: where the kick lands, the scheme, the samples, the fit (--beta,
-/// --fit, --active-window by the text forms of transport_parameters), the guards and damping; the
-/// tangent map as each tool adds it.
-inline void add_dynamics_options(CLI::App& app, TransportChoices& run, BeyondChoices& beyond) {
-  add_parameters(app, run, transport_parameters(), {.except = {"fit_begin", "fit_end"}});
-  add_parameters(app, beyond, beyond_parameters(), {.only = {"damping_time", "kk_gamma"}});
+/// The kick's flags, and the run's, bound to the case: where the kick lands, the scheme, the
+/// samples, the fit (--beta, --fit, --active-window and the enums by the text forms of
+/// transport_parameters), the guards and damping; the tangent map as each tool adds it.
+inline void add_dynamics_options(CLI::App& app, TransportCase& run) {
+  add_parameters(app, run, transport_parameters(),
+                 {.except = {"fit_begin", "fit_end", "mle", "renormalize", "deviation_samples"}});
 }
 
 /// granular::validate_and_settle (case_settling.hpp): the cases validated with the errors in the

@@ -16,13 +16,13 @@
 namespace granular::tool {
 
 /// The library's choices, bound straight to the flags (--chains and --ic by their text forms: comma lists).
-inline void add_exponent_choices(CLI::App& app, ExponentChoices& o, BeyondChoices& beyond) {
+inline void add_exponent_choices(CLI::App& app, ExponentChoices& o, TransportCase& run) {
   add_parameters(app, o, exponent_parameters(), {.except = {"chain_name"}});
   add_quasiperiodic_options(app, o.beads);
   add_bead_distribution_options(app, o.beads, "--types-rule");
   add_parameters(app, o, exponent_parameters(), {.only = {"chain_name"}});
   add_parameters(app, o.mode, mode_kick_parameters());
-  add_mle_options(app, beyond,
+  add_mle_options(app, run,
                   "X1 at T, its ensemble mean (columns mle, mle_real_err: its standard error, mle_sd: spread over "
                   "realizations) and <X1(t)> in the curves");
 }

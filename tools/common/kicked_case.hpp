@@ -19,7 +19,7 @@ namespace granular::tool {
 /// The library's choices, bound straight to the flags, with what only the command line has: the
 /// file of the deviation vector (--deviation FILE turns on its samples) and the case file.
 struct KickedCaseOptions : KickedCaseChoices {
-  KickedCaseOptions() { beyond.deviation_samples = 20; }
+  KickedCaseOptions() { run.dynamics.deviation_samples = 20; }
   std::string deviation;  ///< CSV of the deviation vector's distribution; empty = none
   std::string case_file;  ///< --case: the chain, kick and dynamics from a file instead of the flags
 };
@@ -28,11 +28,11 @@ inline void add_kicked_case_options(CLI::App& app, KickedCaseOptions& o) {
   const std::size_t before = app.get_options().size();
   add_chain_options(app, o.chain, long_run_chain_parameters());
   add_option(app, "--ic", o.ic, "initial condition: displacement | velocity | mode (a linear mode: --mode, --mode-khz)");
-  add_dynamics_options(app, o.run, o.beyond);
+  add_dynamics_options(app, o.run);
   add_parameters(app, o.mode, mode_kick_parameters());
-  add_mle_options(app, o.beyond, "column mle = X1(t) [1/s] (ensemble: its mean)");
+  add_mle_options(app, o.run, "column mle = X1(t) [1/s] (ensemble: its mean)");
   app.add_option("--deviation", o.deviation, "CSV t,site,share: the deviation vector along the chain (with --mle)");
-  add_parameters(app, o.beyond, beyond_parameters(), {.only = {"deviation_samples"}})["deviation_samples"]->description(
+  add_parameters(app, o.run, transport_parameters(), {.only = {"deviation_samples"}})["deviation_samples"]->description(
       "uniform times of --deviation");
   add_option(app, "--realizations", o.realizations, "realizations to average (ensemble means and exponents)");
   auto* file = app.add_option("--case", o.case_file,
@@ -50,12 +50,13 @@ inline void add_kicked_case_options(CLI::App& app, KickedCaseOptions& o) {
 /// averages realizations.
 inline KickedCase kicked_case(const KickedCaseOptions& o, bool ensemble) {
   KickedCaseChoices choices = o;
-  if (o.deviation.empty() && o.beyond.deviation_samples != KickedCaseOptions{}.beyond.deviation_samples)
+  if (o.deviation.empty() && o.run.dynamics.deviation_samples != KickedCaseOptions{}.run.dynamics.deviation_samples)
     throw InvalidInput("--deviation-samples", ": takes effect only with --deviation FILE (and --mle)");
-  if (o.deviation.empty()) choices.beyond.deviation_samples = 0;
-  KickedCase k = o.case_file.empty() ? granular::kicked_case(choices, ensemble, radius_options(o.chain))
-                                     : granular::kicked_case(o.case_file, o.chain.realization, o.realizations,
-                                                             choices.beyond.deviation_samples, ensemble);
+  if (o.deviation.empty()) choices.run.dynamics.deviation_samples = 0;
+  KickedCase k = o.case_file.empty()
+                     ? granular::kicked_case(choices, ensemble, radius_options(o.chain))
+                     : granular::kicked_case(o.case_file, o.chain.realization, o.realizations,
+                                             static_cast<long long>(choices.run.dynamics.deviation_samples), ensemble);
   warn(k.warnings);
   warn(frequency_slips(k.c.mode, k.c.chain, [](const std::string& p) { return option_name(front_end_word(p)); }));
   return k;

@@ -115,20 +115,20 @@ std::map<std::string, CLI::Option*> add_parameters(CLI::App& app, Choices& o, co
                         return it != shown.flags.end() ? it->second : option_name(front_end_word(named));
                       });
     CLI::Option* option = std::visit(
-        [&]<class Field>(Field field) -> CLI::Option* {
+        [&]<class Field>(const Field& field) -> CLI::Option* {
           if (p.text)
             return app.add_option_function<std::string>(
                 flag, [&o, read = p.text->read](const std::string& text) { read(o, text); }, help);
           if constexpr (std::is_same_v<Field, std::monostate>) return nullptr;
-          else if constexpr (std::is_same_v<Field, bool Choices::*>) return app.add_flag(flag, o.*field, help);
-          else if constexpr (std::is_same_v<Field, long long Choices::*> ||
-                             std::is_same_v<Field, unsigned long Choices::*>)
-            return add_integer(app, flag, o.*field, help);
-          else return app.add_option(flag, o.*field, help);
+          else if constexpr (std::is_same_v<Field, Ref<Choices, bool>>) return app.add_flag(flag, field(o), help);
+          else if constexpr (std::is_same_v<Field, Ref<Choices, long long>> ||
+                             std::is_same_v<Field, Ref<Choices, unsigned long>>)
+            return add_integer(app, flag, field(o), help);
+          else return app.add_option(flag, field(o), help);
         },
         p.field);
     if (p.shows_default && p.text) option->default_str(p.text->write(o));
-    else if (p.shows_default && !std::holds_alternative<bool Choices::*>(p.field)) option->capture_default_str();
+    else if (p.shows_default && !std::holds_alternative<Ref<Choices, bool>>(p.field)) option->capture_default_str();
     options[p.name] = option;
   }
   return options;

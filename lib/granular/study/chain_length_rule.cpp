@@ -20,7 +20,7 @@ ChainLength automatic_chain_length(const TransportCase& c) {
   probe.dynamics.integration.integrator = saba2c();
   probe.chain.N = 3;
   probe.chain.centred = false;
-  probe.site = 1;
+  probe.site = 0;  // the centre
   ChainLength length;
   length.omega_max = time_step_limit(probe).omega_max;
   length.max_group_velocity = length.omega_max / 2;
@@ -36,15 +36,16 @@ ChainLength automatic_chain_length(const TransportCase& c) {
 ChainLength size_for_long_times(TransportCase& c) {
   const ChainLength length = automatic_chain_length(c);
   c.chain.N = length.n;
-  c.site = (c.chain.N - 1) / 2;
+  c.site = 0;  // the centre
   c.chain.centred = true;
   return length;
 }
 
 std::string duration_warning(const TransportCase& c, double omega_max, const std::string& option) {
   const std::size_t n = c.chain.size();
-  if (c.site >= n) return "";  // validate() names it
-  const double wall = static_cast<double>(std::min(c.site + 1, n - c.site));
+  if (c.site > n) return "";  // validate() names it
+  const std::size_t site = kicked_bead(c);
+  const double wall = static_cast<double>(std::min(site + 1, n - site));
   const double speed = omega_max / 2;
   if (!(speed * c.dynamics.integration.duration > 10 * wall)) return "";
   return option + " " + format_number(c.dynamics.integration.duration) +

@@ -9,7 +9,7 @@
 
 #include "granular/study/chain_choices.hpp"
 #include "granular/study/exponent_table.hpp"
-#include "granular/study/transport_choices.hpp"
+#include "granular/study/transport_parameters.hpp"
 
 namespace granular {
 

@@ -24,10 +24,10 @@ KickedCase kicked_case(const KickedCaseChoices& o, bool ensemble, const RadiusNa
   if (o.chain.auto_n) require_centre_kick(o.run.site);
   KickedCase k;  // (not an aggregate initializer: GCC 12 destroys its members twice when one throws)
   TransportCase& c = k.c;
+  c = o.run;
   c.chain = chain_recipe(o.chain, k.warnings);  // with auto_n, N 3 until sized below
   c.kick = parse_kick(o.ic);
   apply(o.mode, {c.kick}, c);
-  apply(o.run, o.beyond, c);
   fit_within_duration(c);  // a window beyond T: no exponents, a note
   nlohmann::json rule;
   if (o.chain.auto_n) {
@@ -45,9 +45,9 @@ KickedCase kicked_case(const std::string& path, long long realization, long long
   if (realization < 0) throw InvalidInput("realization", " " + std::to_string(realization) + ": must be >= 0");
   KickedCase k;
   k.c = read_case_file(path);
-  BeyondChoices beyond = beyond_choices_of(k.c.dynamics);  // the tangent map as the file says
-  beyond.deviation_samples = deviation_samples;
-  apply(beyond, k.c.dynamics);
+  if (deviation_samples < 0)
+    throw InvalidInput("deviation_samples", " " + std::to_string(deviation_samples) + ": 0 (none) or at least 2");
+  k.c.dynamics.deviation_samples = static_cast<std::size_t>(deviation_samples);  // the tangent map as the file says
   k.selected = select_chain(k.c.chain, static_cast<std::uint64_t>(realization), {"R1_m", "beads", "radii_file"});
   set_realizations(k, realizations, ensemble);
   return k;

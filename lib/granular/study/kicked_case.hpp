@@ -11,7 +11,8 @@
 
 #include "granular/model/selected_chain.hpp"
 #include "granular/study/chain_choices.hpp"
-#include "granular/study/transport_choices.hpp"
+#include "granular/study/transport_parameters.hpp"
+#include "granular/study/transport_study.hpp"
 
 namespace granular {
 
@@ -19,9 +20,10 @@ struct KickedCaseChoices {
   ChainChoices chain{.n = 2501};    ///< the chains (realization: the one a single run integrates)
   std::string ic = "displacement";  ///< the kick: displacement | velocity | mode
   ModeKick mode{};                  ///< a mode kick's mode
-  TransportChoices run{};           ///< where the kick lands, the scheme, samples, fit, guards
-  BeyondChoices beyond{};           ///< damping and the tangent map
-  long long realizations = 1;       ///< realizations averaged (≥ 1)
+  /// The run as transport_parameters() sets it: where the kick lands, the scheme, samples, fit,
+  /// guards, damping and the tangent map (its chain, kick, mode and realizations come from here).
+  TransportCase run{};
+  long long realizations = 1;  ///< realizations averaged (≥ 1)
 };
 
 struct KickedCase {

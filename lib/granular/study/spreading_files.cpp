@@ -162,7 +162,7 @@ nlohmann::json describe_parameters(const TransportCase& c, const nlohmann::json&
                                    bool ensemble) {
   nlohmann::json parameters = describe(c);
   parameters["chain"] = chain;
-  if (c.kick == Kick::velocity && (!ensemble || !c.match_beta)) parameters["beta_m_s"] = kicked.beta;  // the β used
+  if (c.kick == Kick::velocity && (!ensemble || c.beta)) parameters["beta_m_s"] = kicked.beta;  // the β used
   if (c.kick == Kick::mode) parameters["mode_used"] = to_json(kicked.mode);
   return parameters;
 }

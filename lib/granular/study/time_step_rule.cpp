@@ -216,8 +216,8 @@ double kick_energy_bound(const TransportCase& c, const std::vector<Chain>& chain
   for (const Chain& ch : chains) {
     const ForceLaw law = make_force_law(c.dynamics.integration.force_law, ch);
     for (std::size_t site = 0; site < ch.size(); ++site) {
-      if (whole_chain && site != c.site) continue;
-      probe.site = site;
+      if (whole_chain && site != kicked_bead(c)) continue;
+      probe.site = site + 1;  // counting from 1
       if (!unknown_mode) energy = std::max(energy, total_energy(law, ch, kick(probe, ch).initial));
       else
         for (double sign : {1.0, -1.0})

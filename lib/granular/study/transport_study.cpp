@@ -16,6 +16,7 @@
 #include "granular/model/chain.hpp"
 #include "granular/number_format.hpp"
 #include "granular/parallel/mpi_context.hpp"
+#include "granular/study/transport_parameters.hpp"
 
 namespace granular {
 
@@ -36,19 +37,50 @@ ModeKick mode_of(const TransportCase& c) {
 }
 }  // namespace
 
+std::size_t kicked_bead(const TransportCase& c) { return c.site == 0 ? (c.chain.size() - 1) / 2 : c.site - 1; }
+
+namespace {
+double finite_non_negative(double value, const char* name) {
+  if (!(value >= 0) || !std::isfinite(value))
+    throw InvalidInput(name, " " + format_number(value) + ": must be finite and >= 0");
+  return value;
+}
+/// The checks of the choices a front end sets straight in the case (transport_parameters()).
+void validate_choices(const TransportCase& c) {
+  refuse_unmet_needs(c, transport_parameters());  // `energy_guard` with no guard is refused, not ignored
+  const std::size_t n = c.chain.size();
+  if (c.site > n)
+    throw InvalidInput("site", " " + std::to_string(c.site) + ": outside the chain of " + std::to_string(n) +
+                                   " beads (1..N, 0 = centre)");
+  const SpreadingRunConfig& d = c.dynamics;
+  if (d.spread.samples < 2) throw InvalidInput("samples", " " + std::to_string(d.spread.samples) + ": at least 2");
+  finite_non_negative(d.integration.window.threshold, "window_threshold");
+  finite_non_negative(d.integration.integrator.tolerance.max_step, "reference_max_step");
+  finite_non_negative(d.spread.max_energy_error, "max_energy_error");
+  if (!(c.fit_begin > 0) || !(c.fit_end > c.fit_begin) || !std::isfinite(c.fit_end))
+    throw InvalidInput("fit", " " + format_number(c.fit_begin) + ":" + format_number(c.fit_end) +
+                                  ": expected start:stop with 0 < start < stop [s]");
+  if (c.bootstrap.resamples < 2)
+    throw InvalidInput("bootstrap", " " + std::to_string(c.bootstrap.resamples) + ": at least 2 resamples");
+  validate(d.integration.damping);
+  if (d.integration.lyapunov.renormalize_every < 1)
+    throw InvalidInput("renormalize", " " + std::to_string(d.integration.lyapunov.renormalize_every) + ": at least 1");
+  if (d.deviation_samples == 1) throw InvalidInput("deviation_samples", " 1: 0 (none) or at least 2");
+}
+}  // namespace
+
 void validate_before_time_step(const TransportCase& c) {
   validate(c.chain);
+  validate_choices(c);
   const std::size_t n = c.chain.size();
-  if (c.chain.centred && c.site != (n - 1) / 2)
-    throw InvalidInput("site", " " + std::to_string(c.site + 1) + ": a chain drawn from its centre is kicked there (" +
+  const std::size_t site = kicked_bead(c);
+  if (c.chain.centred && site != (n - 1) / 2)
+    throw InvalidInput("site", " " + std::to_string(site + 1) + ": a chain drawn from its centre is kicked there (" +
                                    std::to_string((n + 1) / 2) + ")");
-  if (c.site >= n)
-    throw InvalidInput("site",
-                       " " + std::to_string(c.site + 1) + ": outside the chain of " + std::to_string(n) + " beads");
   if (c.realizations < 1) throw InvalidInput("realizations", ": must be >= 1");
-  validate_step_and_duration(integration_config(c.dynamics));  // T and τ first: a fit window is judged against them
-  if (c.fit && (!(c.fit_begin > 0) || !(c.fit_end > c.fit_begin) || !std::isfinite(c.fit_end)))
-    throw InvalidInput("fit", ": need 0 < start < stop");
+  IntegrationConfig integration = integration_config(c.dynamics);
+  if (c.time_step) integration.time_step = *c.time_step;  // the τ given, judged before the rule settles it
+  validate_step_and_duration(integration);                // T and τ first: a fit window is judged against them
   if (c.fit && c.fit_end > c.dynamics.integration.duration * (1 + 1e-12))
     throw InvalidInput("fit", " " + format_number(c.fit_begin) + ":" + format_number(c.fit_end) +
                                   ": reaches beyond the duration T = " + format_number(c.dynamics.integration.duration));
@@ -62,11 +94,11 @@ void validate_before_time_step(const TransportCase& c) {
     throw InvalidInput("precompression", " " + format_number(c.chain.F0) +
                                              ": a mode kick needs F0 > 0 (the sonic vacuum has no "
                                              "linear modes)");
-  const bool uses_alpha = c.kick == Kick::displacement || c.match_beta || (c.kick == Kick::mode && c.mode.energy == 0);
+  const bool uses_alpha = c.kick == Kick::displacement || !c.beta || (c.kick == Kick::mode && c.mode.energy == 0);
   if (uses_alpha && (!std::isfinite(c.alpha) || c.alpha == 0))
     throw InvalidInput("alpha", " " + format_number(c.alpha) + ": must be finite and non-zero [m]");
-  if (c.kick == Kick::velocity && !c.match_beta && (!std::isfinite(c.beta) || c.beta == 0))
-    throw InvalidInput("beta", " " + format_number(c.beta) + ": must be finite and non-zero [m/s], or 'match'");
+  if (c.kick == Kick::velocity && c.beta && (!std::isfinite(*c.beta) || *c.beta == 0))
+    throw InvalidInput("beta", " " + format_number(*c.beta) + ": must be finite and non-zero [m/s], or 'match'");
   if (c.fit && !(std::isfinite(c.fit_step) && c.fit_step > 0))
     throw InvalidInput("fit_step", " " + format_number(c.fit_step) + " s: must be finite and > 0");
 }
@@ -91,36 +123,36 @@ void validate(const TransportCase& c) {
 
 SpreadingRunConfig spreading_config(const TransportCase& c) {
   SpreadingRunConfig config = c.dynamics;
-  config.spread.site = c.site;
+  config.spread.site = kicked_bead(c);
   config.spread.dense = c.fit ? DenseGrid{c.fit_begin, c.fit_end, c.fit_step} : DenseGrid{};
   return config;
 }
 
 KickedChain kick(const TransportCase& c, const Chain& chain) {
-  if (c.kick == Kick::displacement) return {displacement_kick(chain, c.site, c.alpha), 0.0, {}};
+  const std::size_t site = kicked_bead(c);
+  if (c.kick == Kick::displacement) return {displacement_kick(chain, site, c.alpha), 0.0, {}};
   if (c.kick == Kick::mode) {
     ModeKickResult mode = mode_kick(chain, c.dynamics.integration.force_law, mode_of(c));
     State initial = mode.initial;
     return {std::move(initial), 0.0, std::move(mode)};
   }
   const double beta =
-      c.match_beta ? matched_velocity(make_force_law(c.dynamics.integration.force_law, chain), chain, c.site, c.alpha)
-                   : c.beta;
-  return {velocity_kick(chain, c.site, beta), beta, {}};
+      c.beta ? *c.beta : matched_velocity(make_force_law(c.dynamics.integration.force_law, chain), chain, site, c.alpha);
+  return {velocity_kick(chain, site, beta), beta, {}};
 }
 
 static nlohmann::json describe_conservative(const TransportCase& c) {
   const SpreadingRunConfig& d = c.dynamics;
-  const bool uses_alpha = c.kick == Kick::displacement || c.match_beta || (c.kick == Kick::mode && c.mode.energy == 0);
+  const bool uses_alpha = c.kick == Kick::displacement || !c.beta || (c.kick == Kick::mode && c.mode.energy == 0);
   nlohmann::json beta = nullptr;  // the values used: α only where the kick uses it, β only for a velocity kick
-  if (c.kick == Kick::velocity) beta = c.match_beta ? nlohmann::json("match") : nlohmann::json(c.beta);
+  if (c.kick == Kick::velocity) beta = c.beta ? nlohmann::json(*c.beta) : nlohmann::json("match");
   nlohmann::json described = {{"ic", to_string(c.kick)},
                               {"alpha_m", uses_alpha ? nlohmann::json(c.alpha) : nullptr},
                               {"beta_m_s", beta},
-                              {"site", c.site + 1},
+                              {"site", kicked_bead(c) + 1},
                               {"m2_centre", to_string(c.centre)},
                               {"T_s", d.integration.duration},
-                              {"dt_s", d.integration.time_step},
+                              {"dt_s", c.time_step.value_or(d.integration.time_step)},  // settled: the same
                               {"integrator", d.integration.integrator.name()},
                               {"force_law", to_string(d.integration.force_law)},
                               {"samples", d.spread.samples},
@@ -168,10 +200,10 @@ TransportCase parse_case(const nlohmann::json& j) {
     c.kick = parse_kick(j.at("ic").get<std::string>());
     if (!j.at("alpha_m").is_null()) c.alpha = j.at("alpha_m").get<double>();
     const auto& beta = j.at("beta_m_s");
-    c.match_beta = beta.is_string();
     if (beta.is_string() && beta.get<std::string>() != "match") throw InvalidInput("beta_m_s", ": a number or 'match'");
+    if (beta.is_string()) c.beta.reset();
     if (beta.is_number()) c.beta = beta.get<double>();
-    c.site = j.at("site").get<std::size_t>() - 1;
+    c.site = j.at("site").get<std::size_t>();
     c.centre = parse_spread_centre(j.at("m2_centre").get<std::string>());
     SpreadingRunConfig& d = c.dynamics;
     d.integration.duration = j.at("T_s").get<double>();

@@ -44,11 +44,12 @@ struct TransportCase {
   /// Which chain realization r is (N = 2501 beads, F0 = 10 N, the paper's two types by default).
   ChainRecipe chain{.N = 2501};
   Kick kick = Kick::displacement;
-  double alpha = 1e-7;                       ///< displacement kick [m]
-  double beta = paper_beta;                  ///< velocity kick [m/s]
-  bool match_beta = false;                   ///< velocity kick carrying the energy of α on each chain instead
-  ModeKick mode;                             ///< mode kick: which mode and its energy (or amplitude: α)
-  std::size_t site = 1250;                   ///< 0-based kicked bead n0 (1251 counting from 1)
+  double alpha = 1e-7;  ///< displacement kick [m] (also what a matched β matches)
+  /// Velocity kick [m/s]; none: the velocity carrying the energy of α on each chain ("match").
+  std::optional<double> beta = paper_beta;
+  ModeKick mode;  ///< mode kick: which mode and its energy (or amplitude: α)
+  /// The kicked bead n0 counting from 1 (1 … N); 0: the centre, (N+1)/2. kicked_bead() is its index.
+  std::size_t site = 0;
   SpreadCentre centre = SpreadCentre::site;  ///< which m̃2 the tables show (both are computed)
   SpreadingRunConfig dynamics;               ///< T, τ, integrator, force law, samples, guards, observers
   /// What settling the case (case_settling.hpp) resolves: the time step τ [s] the user gave (none:
@@ -67,6 +68,9 @@ struct TransportCase {
   PowerLawCriterion criterion;                  ///< κ and t* of the power-law check
   BootstrapConfig bootstrap;                    ///< realization errors (threads: those of the run)
 };
+
+/// The 0-based index of the bead c.site names in c.chain (the centre (N−1)/2 for site 0).
+std::size_t kicked_bead(const TransportCase& c);
 
 /// Throws InvalidInput (naming the option) on an impossible case, before any work.
 void validate(const TransportCase& c);
@@ -89,7 +93,7 @@ SpreadingRunConfig spreading_config(const TransportCase& c);
 
 struct KickedChain {
   State initial;
-  double beta = 0;      ///< the velocity kick used [m/s] (the matched one when match_beta); 0 for a displacement
+  double beta = 0;      ///< the velocity kick used [m/s] (the matched one when β is none); 0 for a displacement
   ModeKickResult mode;  ///< mode kick: the mode used (number, frequency, IPR, amplitude, energy); else empty
 };
 /// The kick of `c` applied to `chain` at c.site (a mode kick: the mode c.mode of `chain`, with the
