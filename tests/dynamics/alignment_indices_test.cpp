@@ -244,26 +244,26 @@ double alignment_slope(const std::vector<double>& x, const std::vector<double>& 
 
 // On a chaotic orbit GALI_k ∝ exp(−Σ_{j=2..k} (λ1 − λj) t) and SALI ∝ exp(−(λ1 − λ2) t) (Skokos,
 // Bountis & Antonopoulos, Physica D 231, 30 (2007)), on 4 beads at 0.01 N kicked at 0.05 m/s
-// (contacts open; λ1, λ2, λ3 > 0 and the zero pair is λ4, λ5. On 3 beads λ3 is one of the zeros,
-// whose directions grow as powers of t, and GALI_3 decayed 6–11 % more slowly than predicted,
-// window by window too; on 4 beads the third vector does not see them). The decay is
-// measured in windows along one orbit: each starts fresh orthonormal vectors (seed = window) at the
-// orbit's state and fits ln GALI against t, sampled every 20 µs, from where it is below 1e-2 down to
-// 1e-12 (GALI_2, SALI; the rounding floor is ~1e-16) or 1e-20 (GALI_3: its R_33 is then ~1e-14,
-// still above the floor); the window rates are averaged weighted by their fitted spans.
+// (contacts open; λ1, λ2, λ3 > 0, the zero pair is λ4, λ5). The decay is measured in windows along
+// one orbit: each starts fresh orthonormal vectors (seed = window) at the orbit's state and fits
+// ln GALI against t, sampled every 20 µs, from where it is below 1e-2 down to 1e-12 (GALI_2, SALI)
+// or 1e-14 (GALI_3, whose R_33 is then still ~1e-10). Lower is the rounding floor: rounding in the
+// map keeps feeding every vector components of ~1e-16 relative that decay only as fast as the
+// alignment itself, so R_jj stall near 1e-14 (GALI_3 fitted down to 1e-20, R_33 ~1e-14, decayed
+// ~10 % too slowly). The window rates are averaged weighted by their fitted spans.
 // Two references: the exponents of LyapunovSpectrum over the same stretch of orbit (its error: how
 // much they still move between T/2 and T); and, window by window, the sums S_j = λ_j(t) t of a
 // LyapunovSpectrum started with the same vectors at the same state (the same orbit bit for bit),
-// whose Σ_j (S_j − S_1) GALI must follow exactly once the vectors point along the most unstable
-// direction. The windows decay a few % more slowly than the long-run exponents predict (measured:
-// GALI_2 1203/s against 1278/s, GALI_3 3812/s against 4074/s): the finite-time exponents right after
-// a fresh start are smaller; window by window GALI follows its own S_j within 3 %.
+// whose Σ_j (S_j − S_1) GALI must follow once the vectors point along the most unstable direction:
+// measured within 1.5 % for other seeds and kicks (0.049–0.06 m/s). The windows decay more slowly
+// than the long-run exponents predict, by up to 21 % in those variants (here 6 % and 15 %): the
+// finite-time exponents right after a fresh start are smaller, so that comparison allows 25 %.
 TEST(AlignmentIndices, OnAChaoticOrbitGaliAndSaliDecayAtTheRatesOfTheLyapunovSpectrum) {
   const Chain chain = fixtures::anderson(4, 0.01);
   const ForceLaw law = make_force_law(ForceLawKind::hertz, chain);
   const double tau = 1e-7;
   const std::size_t every = 200;  // 20 µs
-  const double floor[3] = {1e-12, 1e-12, 1e-20};
+  const double floor[3] = {1e-12, 1e-12, 1e-14};
   // SALI, GALI_2, GALI_3: Σ (fitted rate × fitted span), the same of the windows' own S_j, Σ spans
   std::vector<double> rates(3, 0.0), local(3, 0.0), spans(3, 0.0);
   double covered = 0;
@@ -319,9 +319,9 @@ TEST(AlignmentIndices, OnAChaoticOrbitGaliAndSaliDecayAtTheRatesOfTheLyapunovSpe
       "  GALI_3 %.0f ((lambda1 - lambda2) + (lambda1 - lambda3) = %.0f; %.0f)\n",
       rates[0], rates[1], gap2, local[1], rates[2], gap3, local[2]);
   EXPECT_GT(gap2, 5 * error);  // a clear gap to measure
-  EXPECT_NEAR(rates[0], gap2, 0.15 * gap2);
-  EXPECT_NEAR(rates[1], gap2, 0.15 * gap2);
-  EXPECT_NEAR(rates[2], gap3, 0.15 * gap3);
+  EXPECT_NEAR(rates[0], gap2, 0.25 * gap2);
+  EXPECT_NEAR(rates[1], gap2, 0.25 * gap2);
+  EXPECT_NEAR(rates[2], gap3, 0.25 * gap3);
   for (std::size_t i = 0; i < 3; ++i) EXPECT_NEAR(rates[i], local[i], 0.05 * local[i]) << "index " << i;
 }
 

@@ -19,6 +19,10 @@
 // its shear (frequencies that depend on the actions) stretches them along it linearly in time. A
 // harmonic (linear) chain has no shear: every GALI_k stays bounded.
 //
+// Rounding floor: rounding in the map keeps feeding every vector components of ~1e-16 relative, so
+// on a chaotic orbit GALI_2 and SALI stall near 1e-15 (each R_jj near 1e-14) and stay there; a
+// threshold belongs well above that (1e-8, the default, is customary).
+//
 // Coordinates and norm as the Lyapunov exponents': w = (δu, t_unit δv), t_unit = 1 µs. The values
 // of the indices depend on that metric, their rates of decay do not. Both are dimensionless.
 //
