@@ -146,6 +146,33 @@ TEST(AlignmentIndices, RefusesImpossibleVectors) {
   EXPECT_THROW(AlignmentIndices(law, chain, saba2c(), 1e-6, start, {.threshold = 0}), InvalidInput);
 }
 
+// Given starting vectors: their lengths do not matter, nearly parallel ones start below the
+// threshold (recorded at t = 0), and a zero one is refused.
+TEST(AlignmentIndices, StartsFromGivenVectors) {
+  const Chain chain = fixtures::anderson(3, 1);
+  const ForceLaw law = make_force_law(ForceLawKind::hertz, chain);
+  const State start = velocity_kick(chain, 1, 0.01);
+  const State w = alignment_pattern(3, 7);
+  State near = w, longer = alignment_pattern(3, 8);
+  near.u[0] += 1e-10;
+  for (double& x : longer.u) x *= 1e4;
+  for (double& x : longer.v) x *= 1e4;
+  const AlignmentIndices a(law, chain, saba2c(), 1e-6, start, {w, near, longer}, {.threshold = 1e-8});
+  const std::vector<double> g = a.gali();
+  ASSERT_EQ(g.size(), 2u);
+  EXPECT_NEAR(g[0], generalized_alignment_index({w, near}), 1e-15);
+  EXPECT_LT(g[0], 1e-9);
+  EXPECT_EQ(a.gali_below()[0], 0.0);
+  EXPECT_EQ(a.sali_below(), 0.0);
+  for (const State& v : a.vectors()) {
+    double norm = 0;
+    for (std::size_t i = 0; i < 3; ++i) norm += v.u[i] * v.u[i] + alignment_unit * alignment_unit * v.v[i] * v.v[i];
+    EXPECT_NEAR(norm, 1.0, 1e-15);
+  }
+  EXPECT_THROW(AlignmentIndices(law, chain, saba2c(), 1e-6, start, {w, State(3)}, {}), InvalidInput);
+  EXPECT_THROW(AlignmentIndices(law, chain, saba2c(), 1e-6, start, {w}, {}), InvalidInput);
+}
+
 // A strongly nonlinear chain: 3 beads at 0.01 N, the middle one kicked at 0.05 m/s, so that the
 // contacts open and close; λ1 ≈ 5000/s, λ2 ≈ 2600/s, λ3 → 0 (N = 3: 2N = 6 exponents ±λ1, ±λ2,
 // and the pair of zeros).

@@ -145,6 +145,11 @@ AlignmentIndices::AlignmentIndices(const ForceLaw& law, const Chain& chain, cons
   config_.vectors = start_vectors.size();
   check_alignment_vectors(start_vectors);
   if (start_vectors.front().u.size() != beads_) throw InvalidInput("vectors", ": must have one entry per bead");
+  for (std::size_t j = 0; j < start_vectors.size(); ++j) {
+    const double norm = alignment_norm(start_vectors[j].u, start_vectors[j].v, config.time_unit);
+    if (!(norm > 0) || !std::isfinite(norm))
+      throw InvalidInput("vectors", " " + std::to_string(j + 1) + ": must be finite and non-zero");
+  }
   start(law, chain, scheme, time_step, initial, start_vectors);
 }
 

@@ -20,8 +20,9 @@
 // harmonic (linear) chain has no shear: every GALI_k stays bounded.
 //
 // Rounding floor: rounding in the map keeps feeding every vector components of ~1e-16 relative, so
-// on a chaotic orbit GALI_2 and SALI stall near 1e-15 (each R_jj near 1e-14) and stay there; a
-// threshold belongs well above that (1e-8, the default, is customary).
+// on a chaotic orbit GALI_2 and SALI stall at 1e-15 … 1e-14 (measured) and stay there, and an R_jj
+// near 1e-14 is no longer the dynamics'; a threshold belongs well above that (the default 1e-8 is
+// customary).
 //
 // Coordinates and norm as the Lyapunov exponents': w = (δu, t_unit δv), t_unit = 1 µs. The values
 // of the indices depend on that metric, their rates of decay do not. Both are dimensionless.
@@ -65,9 +66,9 @@ struct AlignmentConfig {
 class AlignmentIndices {
  public:
   /// Starts the orbit at `initial` (a plain run's first state) and k random orthonormal vectors,
-  /// the very ones LyapunovSpectrum starts from with the same seed (so its exponents describe the
-  /// same vectors). Throws InvalidInput naming `vectors`, `renormalize_every`, `threshold`,
-  /// `time_unit` or the propagation's parameters.
+  /// those LyapunovSpectrum starts from with the same seed (to rounding: scaled to length 1 once
+  /// more), so that its exponents describe the same vectors. Throws InvalidInput naming `vectors`, `renormalize_every`,
+  /// `threshold`, `time_unit` or the propagation's parameters.
   AlignmentIndices(const ForceLaw& law, const Chain& chain, const SplittingScheme& scheme, double time_step,
                    const State& initial, const AlignmentConfig& config);
   /// The same from given starting vectors (config.vectors and config.seed are ignored; 2 ≤ k ≤ 2N
