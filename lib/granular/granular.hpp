@@ -25,6 +25,7 @@
 #include "granular/linear/transfer_matrix.hpp"
 #include "granular/linear/tridiagonal_operator.hpp"
 
+#include "granular/dynamics/alignment_indices.hpp"
 #include "granular/dynamics/force_law.hpp"
 #include "granular/dynamics/initial_conditions.hpp"
 #include "granular/dynamics/integrator.hpp"

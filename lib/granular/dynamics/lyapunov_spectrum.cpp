@@ -5,6 +5,7 @@
 #include <string>
 
 #include "granular/dynamics/detail/dense_lapack.hpp"
+#include "granular/dynamics/detail/random_deviations.hpp"
 #include "granular/error.hpp"
 
 namespace granular {
@@ -33,9 +34,9 @@ void from_matrix(TangentPropagator& p, const std::vector<double>& a, std::size_t
   }
 }
 
-// k starting vectors from `seed` (splitmix64, uniform in (−1, 1)): generic directions, the same on
-// every machine; orthonormalized by the caller.
-std::vector<State> random_vectors(std::size_t n, std::size_t k, std::uint64_t seed, double t) {
+}  // namespace
+
+std::vector<State> detail::random_deviation_vectors(std::size_t n, std::size_t k, std::uint64_t seed, double t) {
   std::uint64_t x = seed;
   const auto next = [&x] {
     std::uint64_t z = (x += 0x9E3779B97F4A7C15ULL);
@@ -52,8 +53,6 @@ std::vector<State> random_vectors(std::size_t n, std::size_t k, std::uint64_t se
   return w;
 }
 
-}  // namespace
-
 LyapunovSpectrum::LyapunovSpectrum(const ForceLaw& law, const Chain& chain, const SplittingScheme& scheme,
                                    double time_step, const State& initial, const LyapunovSpectrumConfig& config)
     : config_(config), beads_(chain.size()), sums_(config.vectors, 0.0) {
@@ -62,7 +61,8 @@ LyapunovSpectrum::LyapunovSpectrum(const ForceLaw& law, const Chain& chain, cons
                        " " + std::to_string(config.vectors) + ": between 1 and 2N = " + std::to_string(2 * beads_));
   if (config.orthonormalize_every < 1) throw InvalidInput("orthonormalize_every", ": at least 1 step");
   tangent_ = make_tangent_propagator(
-      law, chain, scheme, time_step, initial, random_vectors(beads_, config.vectors, config.seed, config.time_unit),
+      law, chain, scheme, time_step, initial,
+      detail::random_deviation_vectors(beads_, config.vectors, config.seed, config.time_unit),
       {.enabled = true, .renormalize_every = config.orthonormalize_every, .time_unit = config.time_unit},
       [this](TangentPropagator&) { orthonormalize(); });
   // The QR's buffers, and LAPACK's workspace asked for once (the larger of dgeqrf's and dorgqr's).
