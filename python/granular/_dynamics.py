@@ -11,27 +11,23 @@ from . import _core
 from ._arguments import double_vector, number_list
 from ._model import _quasi
 from ._results import ExponentTable, SpreadingRun, Transport
+from ._schema import TableKeywords, split_keywords, with_keywords
+
+# The run's keywords are the rows of the library's table over the case (transport_parameters(): alpha, centre, T,
+# integrator, samples, fit_step, window_threshold, damping, mle, ...), each with the case's own C++ default and the
+# table's help; those below are the ones Python takes in forms of its own.
+_CASE = _core.TransportCase()
+_OWN = ("beta", "site", "time_step", "fit", "fit_begin", "fit_end")
+_RUN = TableKeywords(_CASE, skip=_OWN + ("deviation_samples",))  # an ensemble: no deviation vector's file
+_ONE_RUN = TableKeywords(_CASE, skip=_OWN)  # granular.spreading: with deviation_samples
 
 _DYNAMICS_DOC = """\
-    alpha: displacement kick [m]; beta: velocity kick [m/s] (the paper's 8e-3 for every F0) or 'match' (the \
-energy of alpha on each chain)
+    beta: velocity kick [m/s] (the paper's 8e-3 for every F0) or 'match' (the energy of alpha on each chain)
     site: kicked bead n0, counting from 1 as the tools do (None or 0: the centre, (N+1)/2)
-    centre: m2 about the kicked 'site' (the paper's n_c) or the energy 'centroid'; both are computed, this one \
-gives gamma
-    T: duration [s], a whole number of dt; dt: time step tau [s]; None: 1 us, or 1 us/k where the stability \
-rule tau <= h*/omega_max needs it (a dt past that limit is a ValueError naming the largest stable one; the \
-rule and its numbers are in metadata['time_step_rule'])
-    integrator: 'saba2c' | 'saba2' | 'aba864' | 'srkn14a' | 'reference' | 'auto' (the cheapest scheme and step \
-keeping the energy error at SABA2C's at 1 us: SRKN14a at 5 us where no contact can open, else SABA2C; no dt \
-with it; the choice in metadata['time_step_rule']['integrator_choice']); force_law: 'hertz' | 'fpu' | 'linear'
-    samples, sampling: sample times outside the fit window ('log': tau..T, 'uniform': 0..T)
+    dt: time step tau [s]; None: 1 us, or 1 us/k where the stability rule tau <= h*/omega_max needs it (a dt past \
+that limit is a ValueError naming the largest stable one; the rule and its numbers are in \
+metadata['time_step_rule'])
     fit: (start, stop) [s] of gamma (m2 ~ t^gamma) and eta (P^-1 ~ t^-eta), sampled every fit_step [s] inside
-    t_star, kappa: 'not a power law' when |L_d - gamma| >= kappa after t_star [s] (then the mean L_d is shown)
-    bootstrap: resamples of the realization bootstrap of gamma and eta (ensembles)
-    active_window, window_threshold: integrate only where the wave has arrived (results equal the full chain's)
-    reference_max_step: largest step of the reference integrator [s] (0: none)
-    max_energy_error, energy_guard: relative energy error that stops the run ('stop': NumericalError) or is only \
-reported ('warn'); 0 = unwatched
 """
 
 _MODE_DOC = """\
@@ -40,60 +36,27 @@ number `mode` 1..N by increasing frequency or the one nearest `mode_khz` [kHz], 
 without it, largest |u_n| = alpha
 """
 
-_BEYOND_DOC = """\
-    damping_time: on-site viscous damping time tau_d [s], force -(m/tau_d) du/dt on each bead; 0 = none
-    kk_gamma: Kuwabara-Kono contact damping gamma_KK [s], bond force A[d]^{3/2} + gamma_KK A [d]^{1/2} dd/dt \
-while in contact, not clipped at zero (a damped contact can pull while it unloads); 0 = none. With either, \
-energy_error is |H + dissipated - H0|/H0 and the whole chain is integrated
-    mle: also the maximal Lyapunov exponent X1(t) [1/s] by the tangent map of the same scheme (conservative \
-runs only: not with damping or integrator='reference'); renormalize: steps between renormalizations of the \
-deviation vector (>= 1)
-"""
-
 _MAX = 100000000
 
 
-def _fill_case(c, alpha, beta, site, centre, T, dt, integrator, force_law, samples, sampling, fit, fit_step, t_star,
-               kappa, bootstrap, active_window, window_threshold, reference_max_step, max_energy_error, energy_guard):
-    """Sets the dynamics keywords on `c` (a _core.TransportCase, whose attributes are the rows of the library's
-    transport_parameters()), once those only Python has are read (beta a number or 'match', site None, dt None, fit
-    a pair); integrator 'auto' is settled in C++ with the step. Returns `c`."""
+def _case(table, run, beta, site, dt, fit, c=None):
+    """`c` (a new _core.TransportCase if None) with the run keywords `run` (a dict) set by `table` (a
+    TableKeywords of the library's transport_parameters()) and those Python takes in forms of its own: beta a
+    number or 'match', site None, dt None, fit a pair. integrator 'auto' is settled in C++ with the step."""
+    c = table.set(_core.TransportCase() if c is None else c, run)
     if isinstance(beta, str):
         if beta != "match":
             raise ValueError(f"beta '{beta}': a number [m/s] or 'match'")
         c.beta = None
     else:
         c.beta = _core._finite(beta, "beta")
-    c.alpha = alpha
     c.site = 0 if site is None else _core._size(site, "site")
-    c.centre = centre
-    c.duration = T
     c.time_step = None if dt is None else _core._finite(dt, "dt")
-    c.integrator = integrator
-    c.force_law = force_law
-    c.samples = _core._size(samples, "samples", 2, _MAX)
-    c.sampling = sampling
-    c.active_window = active_window
-    c.window_threshold = window_threshold
-    c.reference_max_step = reference_max_step
-    c.max_energy_error = max_energy_error
-    c.energy_guard = energy_guard
     window = double_vector(fit, "fit")
     if len(window) != 2:
         raise ValueError("fit: expected (start, stop) [s] with 0 < start < stop")
     c.fit_begin, c.fit_end = window
-    c.fit_step = fit_step
-    c.t_star = t_star
-    c.kappa = kappa
-    c.bootstrap = _core._size(bootstrap, "bootstrap", 2, _MAX)
     return c
-
-
-def _fill_beyond(c, damping_time, kk_gamma, mle, renormalize, deviation_samples=0):
-    """Sets dissipation and the tangent map on `c` (a _core.TransportCase)."""
-    c.damping_time, c.kk_gamma, c.mle = damping_time, kk_gamma, mle
-    c.renormalize = _core._size(renormalize, "renormalize")
-    c.deviation_samples = _core._size(deviation_samples, "deviation_samples")
 
 
 _QUASI_DOC = """\
@@ -154,19 +117,14 @@ def _run(threads=0, checkpoint=None, resume=False, resume_other_version=False, p
     return r
 
 
-def spreading(chain, *, ic="displacement", alpha=1e-7, beta=_core.paper_beta, site=None, centre="site", T=1e-2,
-              dt=None, integrator="saba2c", force_law="hertz", samples=100, sampling="log", fit=(4e-3, 1e-2),
-              fit_step=1e-5, t_star=4e-3, kappa=0.1, bootstrap=1000, active_window=True, window_threshold=1e-30,
-              reference_max_step=0.01e-6, max_energy_error=1e-3, energy_guard="stop", forces_at=None,
-              force_samples=1000, energy_map=False, map_samples=500, map_stride=1, spectral_density=False,
-              spectrum_samples=2000, spectrum_of="displacement", progress=False, mode=0, mode_khz=-1.0, energy=0.0,
-              damping_time=0.0, kk_gamma=0.0, mle=False, renormalize=10, deviation_samples=0):
+def spreading(chain, *, ic="displacement", beta=_CASE.beta, site=None, dt=None, fit=(_CASE.fit_begin, _CASE.fit_end),
+              forces_at=None, force_samples=1000, energy_map=False, map_samples=500, map_stride=1,
+              spectral_density=False, spectrum_samples=2000, spectrum_of="displacement", progress=False, mode=0,
+              mode_khz=-1.0, energy=0.0, **run):
     if not isinstance(chain, _core.Chain):
         raise TypeError(f"spreading: chain must be a granular.Chain, got {type(chain).__name__}")
-    case = _fill_case(_core.TransportCase(), alpha, beta, site, centre, T, dt, integrator, force_law, samples,
-                      sampling, fit, fit_step, t_star, kappa, bootstrap, active_window, window_threshold,
-                      reference_max_step, max_energy_error, energy_guard)
-    _fill_beyond(case, damping_time, kk_gamma, mle, renormalize, deviation_samples)
+    (run,) = split_keywords(run, [_ONE_RUN], "spreading")
+    case = _case(_ONE_RUN, run, beta, site, dt, fit)
     outputs = _core.SpreadingOutputChoices()  # the optional observers, checked by the tools' rule in C++
     if forces_at is not None:
         beads = double_vector(forces_at, "forces_at")
@@ -182,7 +140,7 @@ def spreading(chain, *, ic="displacement", alpha=1e-7, beta=_core.paper_beta, si
     case.mode.mode, case.mode.mode_khz, case.mode.energy = mode, mode_khz, energy
     case.kick = ic
     raw = _core._spreading(chain, case, outputs, _run(progress=progress))
-    return _spreading_run(raw, chain.N, outputs, deviation_samples)
+    return _spreading_run(raw, chain.N, outputs, case.deviation_samples)
 
 
 def _array_or_none(x):
@@ -234,9 +192,7 @@ spreading.__doc__ = (
     "tool for one realization.\n\n    chain: a granular.Chain (F0 = 0 is the sonic vacuum)\n"
     "    ic: 'displacement' (u = alpha at the site) | 'velocity' (v = beta at the site) | 'mode' (a "
     "linear mode of the chain, u = M^-1/2 w from rest: number `mode` 1..N or the one nearest `mode_khz` "
-    "[kHz], total energy `energy` [J] or, without it, largest |u_n| = alpha)\n" + _DYNAMICS_DOC + _BEYOND_DOC +
-    "    deviation_samples: with mle, where the deviation vector sits along the chain (the tool's --deviation) at "
-    "this many uniform times 0..T (0 = none, else >= 2)\n"
+    "[kHz], total energy `energy` [J] or, without it, largest |u_n| = alpha)\n" + _DYNAMICS_DOC +
     "    forces_at: beads (from 1) whose force [N] is recorded at force_samples uniform times (each count of "
     "samples >= 2 and map_stride >= 1, checked even when its output is not asked, as the tool's)\n"
     "    energy_map: record E_n(t) at map_samples uniform times, map_stride beads per column\n"
@@ -252,24 +208,19 @@ spreading.__doc__ = (
 
 
 def transport(*, disorder="A", N=2501, q=0.5, xi=0.5, F0=10.0, R1=_core.paper_r1, seed=1, realizations=100,
-              ic="displacement", alpha=1e-7, beta=_core.paper_beta, site=None, centre="site", T=1e-2, dt=None,
-              integrator="saba2c", force_law="hertz", samples=100, sampling="log", fit=(4e-3, 1e-2), fit_step=1e-5,
-              t_star=4e-3, kappa=0.1, bootstrap=1000, active_window=True, window_threshold=1e-30,
-              reference_max_step=0.01e-6, max_energy_error=1e-3, energy_guard="stop", profile=False, threads=0,
-              checkpoint=None, resume=False, resume_other_version=False, fresh=False, skip_failed=False, progress=False,
-              damping_time=0.0, kk_gamma=0.0, mle=False, renormalize=10, walls="flat", quasi=None, modulation=0.0,
-              ratio="golden", phase=None, angle=45.0, k0=4.0, types=None, type_masses=None, polydisperse=None, mode=0,
-              mode_khz=-1.0, energy=0.0):
+              ic="displacement", beta=_CASE.beta, site=None, dt=None, fit=(_CASE.fit_begin, _CASE.fit_end),
+              profile=False, threads=0, checkpoint=None, resume=False, resume_other_version=False, fresh=False,
+              skip_failed=False, progress=False, walls="flat", quasi=None, modulation=0.0, ratio="golden", phase=None,
+              angle=45.0, k0=4.0, types=None, type_masses=None, polydisperse=None, mode=0, mode_khz=-1.0, energy=0.0,
+              **run):
+    (given,) = split_keywords(run, [_RUN], "transport")
     k = _core.KickedCaseChoices()  # made a case by the spreading tool's rule, in C++
     _chain_choices(k.chain, disorder=disorder, N=N, q=q, xi=xi, F0=F0, R1=R1, seed=seed, walls=walls, types=types,
                    type_masses=type_masses, polydisperse=polydisperse)
     _quasi_choices(k.chain, quasi, modulation, ratio, phase, angle, k0)
     k.ic, k.realizations = ic, _core._size(realizations, "realizations", 1)
     k.mode.mode, k.mode.mode_khz, k.mode.energy = mode, mode_khz, energy
-    k.run = _fill_case(_core.TransportCase(), alpha, beta, site, centre, T, dt, integrator, force_law, samples,
-                       sampling, fit, fit_step, t_star, kappa, bootstrap, active_window, window_threshold,
-                       reference_max_step, max_energy_error, energy_guard)
-    _fill_beyond(k.run, damping_time, kk_gamma, mle, renormalize)
+    k.run = _case(_RUN, given, beta, site, dt, fit)
     run = _run(threads, checkpoint, resume, resume_other_version, progress, fresh, skip_failed)
     return _transport(_core._transport(k, profile, run), profile)
 
@@ -301,7 +252,6 @@ transport.__doc__ = (
     "'M1:P1,...' [kg] of steel spheres, or of radii drawn per bead 'uniform:LO:HI' or 'normal:MEAN:SD:MIN' [m] "
     "instead of the two-type draw (the tools' --types, --type-masses, --polydisperse; one of them or quasi)\n"
     "    realizations: R; ic: 'displacement' | 'velocity' | 'mode'\n" + _MODE_DOC + _QUASI_DOC + _DYNAMICS_DOC +
-    _BEYOND_DOC +
     "    profile: also average the site energies E_n(T)\n"
     "    threads: worker threads (0: every core); results do not depend on it\n"
     "    checkpoint: a file logging each finished realization (removed once the run completes); resume=True "
@@ -319,16 +269,14 @@ transport.__doc__ = (
 
 
 def exponent_table(*, chains=["h", "A", "RDM1", "RDM2"], F0=[10.0, 0.5, 0.1, 0.01, 0.0],  # noqa: B006 (read only)
-                   ic=["displacement", "velocity"], N=2501, xi=0.5, q=0.5, realizations=500, seed=1, alpha=1e-7,
-                   beta=_core.paper_beta, site=None, centre="site", T=1e-2, dt=None, integrator="saba2c",
-                   force_law="hertz", samples=100, sampling="log", fit=(4e-3, 1e-2), fit_step=1e-5, t_star=4e-3,
-                   kappa=0.1, bootstrap=1000, active_window=True, window_threshold=1e-30, reference_max_step=0.01e-6,
-                   max_energy_error=1e-3, energy_guard="stop", profile_F0=[10.0, 0.1, 0.0], profile_realizations=100,
-                   compare_paper=False, threads=0, checkpoint=None, resume=False, resume_other_version=False, fresh=False,
-                   skip_failed=False, progress=False, damping_time=0.0, kk_gamma=0.0, mle=False, renormalize=10,
-                   walls="flat", quasi=None, modulation=0.0, ratio="golden", phase=None, angle=45.0, k0=4.0,
-                   chain_name=None, types=None, type_masses=None, polydisperse=None, types_rule=None, mode=0,
-                   mode_khz=-1.0, energy=0.0):
+                   ic=["displacement", "velocity"], N=2501, xi=0.5, q=0.5, realizations=500, seed=1,
+                   beta=_CASE.beta, site=None, dt=None, fit=(_CASE.fit_begin, _CASE.fit_end),
+                   profile_F0=[10.0, 0.1, 0.0], profile_realizations=100, compare_paper=False, threads=0,
+                   checkpoint=None, resume=False, resume_other_version=False, fresh=False, skip_failed=False,
+                   progress=False, walls="flat", quasi=None, modulation=0.0, ratio="golden", phase=None, angle=45.0,
+                   k0=4.0, chain_name=None, types=None, type_masses=None, polydisperse=None, types_rule=None, mode=0,
+                   mode_khz=-1.0, energy=0.0, **run):
+    (given,) = split_keywords(run, [_RUN], "exponent_table")
     words = _core.ExponentChoices()  # made the table's chains and kicks by the tool's rule, in C++
     words.chains = [] if chains is None or chains == "none" else chains
     words.ic = ic
@@ -344,10 +292,7 @@ def exponent_table(*, chains=["h", "A", "RDM1", "RDM2"], F0=[10.0, 0.5, 0.1, 0.0
     table.profile_precompressions = [] if profile_F0 is None else number_list(profile_F0, "profile_F0", 0)
     table.profile_realizations = _core._size(profile_realizations, "profile_realizations")
     table.base.realizations = _core._size(realizations, "realizations", 1)
-    _fill_case(table.base, alpha, beta, site, centre, T, dt, integrator, force_law, samples, sampling, fit, fit_step,
-               t_star, kappa, bootstrap, active_window, window_threshold, reference_max_step, max_energy_error,
-               energy_guard)
-    _fill_beyond(table.base, damping_time, kk_gamma, mle, renormalize)
+    _case(_RUN, given, beta, site, dt, fit, table.base)
     run = _run(threads, checkpoint, resume, resume_other_version, progress, fresh, skip_failed)
     # compare_paper: the path of a table in the paper's format, or True for the paper's own ("": no comparison)
     paper = compare_paper if isinstance(compare_paper, str) else _core._paper_table if compare_paper else ""
@@ -371,7 +316,7 @@ exponent_table.__doc__ = (
     "them or quasi); types_rule: how types are drawn, 'A' (each bead, the default), 'RDM1' (each dimer) or 'RDM2' "
     "(two types: dimers 12 or 21)\n"
     "    chain_name: the name of that chain in the table (default 'types', 'polydisperse' or 'quasi-KIND')\n" +
-    _DYNAMICS_DOC + _BEYOND_DOC +
+    _DYNAMICS_DOC +
     "    profile_F0, profile_realizations: F0s whose E_n(T) is averaged, over how many realizations (None: none)\n"
     "    compare_paper: True (or the path of a table in its format) to compare gamma with the paper's Table I "
     "(z-scores with both error sources)\n"
@@ -385,3 +330,9 @@ exponent_table.__doc__ = (
     "mle also mle, mle_se: <X1(t)> [1/s] and its standard error), profiles, markdown, paper (the comparison, with "
     "compare_paper), metadata (with mle, X1(T) under each case's 'mle'). Releases the GIL; Ctrl-C stops it "
     "resumably (KeyboardInterrupt).")
+
+
+_RUN_HEADING = "Run keywords (the library's transport_parameters(), with the case's C++ defaults)"
+with_keywords(spreading, [_ONE_RUN], _RUN_HEADING)
+with_keywords(transport, [_RUN], _RUN_HEADING)
+with_keywords(exponent_table, [_RUN], _RUN_HEADING)

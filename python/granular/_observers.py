@@ -1,6 +1,7 @@
 """The dynamics as the library has it: an initial state, granular.spread() -- which owns time and the integrator
 -- and observers that measure the run. The classes are granular._core's; their docstrings and the keywords of
 spread() and the kicks are here. Beads are 0-based, as in granular.Chain's arrays."""
+import inspect
 import operator
 
 from . import _core
@@ -30,9 +31,16 @@ def _site(site, keyword):
     return site
 
 
+# The library's defaults, written once in C++: the observer's settings, and a run's (its fit grid's step, the
+# active window's threshold and the reference integrator's largest step: TransportCase's, IntegrationConfig's).
+_SETTINGS = _core.EnergySpreadSettings()
+_RUN = _core.TransportCase()
+
+
 class EnergySpread(_core.EnergySpread):
-    def __init__(self, *, samples=100, sampling="log", site=None, fit=None, fit_step=1e-5, max_energy_error=1e-3,
-                 energy_guard="stop", wall_warning=1e-10):
+    def __init__(self, *, samples=_SETTINGS.samples, sampling="log", site=None, fit=None, fit_step=_RUN.fit_step,
+                 max_energy_error=_SETTINGS.max_energy_error, energy_guard="stop",
+                 wall_warning=_SETTINGS.wall_warning):
         s = _core.EnergySpreadSettings()
         s.samples = _core._size(samples, "samples", 2)
         s.sampling = sampling
@@ -88,8 +96,7 @@ _document(Observer, "Derive from it to measure a run: schedule(plan) returns the
 _document(EnergySpread, "m2 about the kicked bead (the paper's) and about the energy centroid [beads^2], P^-1 and the "
           "relative energy error at log-spaced (or uniform) times, with a dense grid `fit` = (start, stop) [s] every "
           "fit_step; the energy guard stops the run (energy_guard='stop') or records it ('warn').\n\n"
-          "EnergySpread(*, samples=100, sampling='log', site=None, fit=None, fit_step=1e-05, max_energy_error=0.001, "
-          "energy_guard='stop', wall_warning=1e-10)")
+          f"EnergySpread{str(inspect.signature(EnergySpread.__init__)).replace('self, ', '')}")
 _document(Forces, "The force [N] on beads `at` (0-based) at `samples` uniform times 0..T.\n\n"
           "Forces(at, *, samples=1000)", force="[site][sample] [N]")
 _document(EnergyMap, "E_n(t) [J] at `samples` uniform times, `stride` beads summed per column.\n\n"
@@ -110,7 +117,8 @@ def velocity_kick(chain, site, beta=8e-3):
 
 
 def spread(chain, initial, observers=[], *, T=1e-2, dt=1e-6, integrator="saba2c",  # noqa: B006 (read only)
-           force_law="hertz", active_window=True, window_threshold=1e-30, reference_max_step=0.01e-6):
+           force_law="hertz", active_window=True, window_threshold=_RUN.window_threshold,
+           reference_max_step=_RUN.reference_max_step):
     """Integrates `chain` from `initial` (a granular.State, e.g. granular.velocity_kick(chain, site, 8e-3)) to T [s]
     with steps dt [s], calling each observer at the steps it scheduled; the observers keep what they measured.
         integrator: 'saba2c' | 'saba2' | 'aba864' | 'srkn14a' | 'reference'; force_law: 'hertz' | 'fpu' | 'linear'

@@ -16,10 +16,10 @@ class TableKeywords:
     """The keywords of a _core table class (its `_parameters`: name, keyword, help), defaults taken from
     `defaults`, an instance of that class (the job's own defaults, made in C++)."""
 
-    def __init__(self, defaults, only=None):
+    def __init__(self, defaults, only=None, skip=()):
         self._cls = type(defaults)
         rows = [row for row in self._cls._parameters if hasattr(defaults, row[0])]  # rows with a field
-        self._rows = [row for row in rows if only is None or row[0] in only]
+        self._rows = [row for row in rows if (only is None or row[0] in only) and row[0] not in skip]
         self._defaults = defaults
         self.names = [keyword for _, keyword, _ in self._rows]
 
@@ -44,6 +44,10 @@ class TableKeywords:
         out = self._cls()
         for name, keyword, _ in self._rows:
             setattr(out, name, getattr(self._defaults, name))
+        return self.set(out, given)
+
+    def set(self, out, given):
+        """`out` (an instance of the table class) with the rows of `given` (keyword: value) set, as make()."""
         for name, keyword, _ in self._rows:
             if keyword not in given:
                 continue

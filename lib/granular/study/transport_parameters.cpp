@@ -104,7 +104,7 @@ const ParameterTable<TransportCase>& transport_parameters() {
       {"active_window",
        path<C>(&C::dynamics, integration, &IntegrationConfig::window, &ActiveWindow::enabled),
        {read_on_off, write_on_off},
-       "on | off: integrate only where the wave has arrived (results equal the whole chain's)"},
+       "integrate only where the wave has arrived, on or off (results equal the whole chain's)"},
       P{"window_threshold", path<C>(&C::dynamics, integration, &IntegrationConfig::window, &ActiveWindow::threshold),
         "relative kinetic energy that grows the window"}
           .needing("active_window"),
