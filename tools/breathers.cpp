@@ -23,9 +23,9 @@ int main(int argc, char** argv) {
       "multipliers. At --F0 0 only on on-site springs (--quasi s1 --k0-n-per-m K [N/m]): seeded from one\n"
       "bead (--site) above its on-site frequency. Writes PREFIX.csv (columns "
       "omega_rad_s,freq_khz,energy_J,amplitude_m,centre,max_multiplier,\n"
-      "stable,complete,newton_iterations,residual,max_open_fraction), PREFIX.h5 (profiles x0, multipliers, open "
-      "fractions\n"
-      "per point) and PREFIX.json (parameters, Newton histories, multiplier checks).",
+      "stable,complete,verdict_trusted,newton_iterations,residual,max_open_fraction; verdict_trusted 0 at --F0 0,\n"
+      "where the Floquet verdict does not converge with the steps per period), PREFIX.h5 (profiles x0,\n"
+      "multipliers, open fractions per point) and PREFIX.json (parameters, Newton histories, multiplier checks).",
       "breathers"};
   tool::describe_common(app);
   tool::ChainOptions chain_options;
@@ -101,6 +101,8 @@ int main(int argc, char** argv) {
         });
         if (!quiet)
           std::fprintf(stderr, "breathers: %zu points; stopped: %s\n", branch.points.size(), branch.stop_reason.c_str());
+        if (!quiet && !branch.verdict_untrusted_reason.empty())
+          std::fprintf(stderr, "breathers: Floquet verdicts untrusted: %s\n", branch.verdict_untrusted_reason.c_str());
         AtomicFile csv(paths.csv);
         write_breather_csv(csv.stream(), branch);
         meta.merge(describe_breather_branch(config, branch));

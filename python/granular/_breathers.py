@@ -15,7 +15,9 @@ class Breathers:
     omega [rad/s], freq_khz, energy [J] above the static state, amplitude: max |x0| [m], centre: bead of it (1..N),
     max_multiplier: max |mu| without the +1 pair; stable (bool: never True from an incomplete set); complete (bool:
     False when ARPACK converged only some of the largest multipliers, whose max_multiplier is then a lower bound and
-    whose verdict is unstable or unknown); newton_iterations, residual: the final relative
+    whose verdict is unstable or unknown); verdict_trusted (bool: False where stable and max_multiplier are the
+    discretized map's rather than the orbit's, at F0 = 0, where they do not converge with steps_per_period;
+    verdict_untrusted_reason says why, '' when every verdict is trusted); newton_iterations, residual: the final relative
     residual |du/dt(T/2)| / (omega |x0|), max_open_fraction; profiles: points x N displacements x0 [m] at the
     turning point; open_fraction: points x (N+1) fraction of the period each bond is open; multipliers: points x 2N
     complex Floquet multipliers (with ARPACK points x k, the largest, NaN-padded to the most of a point);
@@ -33,6 +35,7 @@ class Breathers:
             p["multipliers"] = list(p["multipliers"]) + [complex(math.nan, math.nan)] * (width - len(p["multipliers"]))
         columns = [(name, float, None) for name in _NUMBERS] + [
             ("centre", np.int64, None), ("newton_iterations", np.int64, None), ("stable", bool, None), ("complete", bool, None),
+            ("verdict_trusted", bool, None),
             ("profiles", float, n), ("open_fraction", float, n + 1), ("multipliers", complex, width)]
         for name, dtype, width in columns:
             column = np.array([p[name] for p in points], dtype=dtype)

@@ -29,13 +29,13 @@ py::dict breathers(const PyChain& c, BreatherBranchConfig config) {
   for (const BreatherPoint& p : branch.points)
     points.append(
         fields("omega freq_khz energy amplitude max_multiplier residual max_open_fraction centre "
-               "newton_iterations stable complete profiles open_fraction multipliers",
+               "newton_iterations stable complete verdict_trusted profiles open_fraction multipliers",
                p.omega, p.freq_khz, p.energy, p.amplitude, p.floquet.max_modulus, p.residual, p.max_open_fraction,
-               p.centre + 1, p.iterations, p.floquet.stable, p.floquet.complete, p.x0, p.open_fraction,
-               p.floquet.multipliers));
-  return fields("points linear_khz seed_mode seed_site seed_khz stop_reason metadata", points,
+               p.centre + 1, p.iterations, p.floquet.stable, p.floquet.complete, p.verdict_trusted, p.x0,
+               p.open_fraction, p.floquet.multipliers));
+  return fields("points linear_khz seed_mode seed_site seed_khz stop_reason verdict_untrusted_reason metadata", points,
                 std::move(branch.linear_khz), branch.seed_mode, branch.seed_site, branch.seed_khz, branch.stop_reason,
-                meta);
+                branch.verdict_untrusted_reason, meta);
 }
 
 }  // namespace

@@ -23,6 +23,8 @@ def test_breathers_equals_the_tool(tools, tmp_path):
     # The verdict and its completeness, as in the CSV (dense at 21 beads: every multiplier).
     assert (b.stable == (csv["stable"] == 1)).all() and (b.complete == (csv["complete"] == 1)).all()
     assert b.complete.all()
+    assert (b.verdict_trusted == (csv["verdict_trusted"] == 1)).all() and b.verdict_trusted.all()
+    assert b.verdict_untrusted_reason == "" and b.metadata["floquet"]["verdict_untrusted_reason"] is None
     assert b.profiles.shape == (3, 21) and b.open_fraction.shape == (3, 22) and b.multipliers.shape == (3, 42)
     # Symplectic: the product of the multipliers is 1.
     assert np.allclose(np.prod(b.multipliers, axis=1), 1, atol=1e-8)
@@ -94,6 +96,10 @@ def test_breathers_at_zero_precompression_on_onsite_springs():
     assert (np.diff(np.concatenate(([b.seed_khz], b.freq_khz))) > 0).all()  # above the on-site frequency, going up
     assert (b.residual <= 1e-10).all() and (b.centre == 11).all()
     assert np.allclose(np.prod(b.multipliers, axis=1), 1, atol=1e-8)
+    # The Floquet verdicts at F0 = 0 are the discretized map's, not the orbit's (issue 42, item 5).
+    assert b.verdict_trusted.dtype == bool and not b.verdict_trusted.any()
+    assert "F0 = 0" in b.verdict_untrusted_reason
+    assert b.metadata["floquet"]["verdict_untrusted_reason"] == b.verdict_untrusted_reason
     with pytest.raises(ValueError, match="F0"):  # no springs: no breathers at F0 = 0
         gr.breathers(gr.quasiperiodic("s2", N=21, F0=0.0), site=11)
     with pytest.raises(ValueError, match="mode"):

@@ -36,10 +36,19 @@ def test_s2_masses_follow_the_cosine():
 @pytest.mark.parametrize(
     "keywords, name",
     [({"modulation": 1.0}, "modulation"), ({"ratio": 0}, "ratio"), ({"ratio": "abc"}, "ratio"),
-     ({"kind": "s3"}, "^kind"), ({"kind": "cylinders", "angle": 200}, "angle")])
+     ({"kind": "s3"}, "^kind"), ({"kind": "cylinders", "angle": 200}, "angle"),
+     # Axes so near parallel that the contact ellipse is a line, not a Hertz point contact.
+     ({"kind": "cylinders", "modulation": 0.99}, "^modulation 0.99: at 0.45 degrees"),
+     ({"kind": "cylinders", "angle": 0.5}, "^angle 0.5: at 0.5 degrees")])
 def test_bad_keywords_are_named(keywords, name):
     with pytest.raises(ValueError, match=name):
         gr.quasiperiodic(**keywords)
+
+
+def test_cylinders_near_parallel_are_warned():
+    # The contact ellipse above 0.1 R at the angle nearest parallel (4.5 degrees): a RuntimeWarning naming the keyword.
+    with pytest.warns(RuntimeWarning, match=r"^modulation 0.9: at 4.5 degrees the cylinders' contact ellipse"):
+        gr.quasiperiodic("cylinders", N=20, modulation=0.9)
 
 
 def test_kind_names_are_case_insensitive():

@@ -184,6 +184,22 @@ TEST(Observers, BadSettingsStopTheRunBeforeAnyStep) {
   EXPECT_THROW(granular::spread(chain, initial, {.duration = 1.5e-6}, recorder), InvalidInput);
 }
 
+// The energy map takes its whole memory when it is scheduled, before the first step: rows ×
+// columns doubles (and the rows' times), so that a map that cannot be had fails then, not at its
+// last sample hours in.
+TEST(Observers, TheEnergyMapReservesItsMemoryBeforeTheRun) {
+  EnergyMapObserver map({.samples = 1000, .stride = 3});
+  const RunPlan plan{.beads = 1001, .total_steps = 5000, .time_step = 1e-7, .duration = 5e-4};
+  const auto steps = map.schedule(plan);
+  ASSERT_EQ(steps.size(), 1000u);
+  EXPECT_EQ(map.columns, 334u);
+  EXPECT_GE(map.energy.capacity(), 1000u * 334u);
+  EXPECT_GE(map.t.capacity(), 1000u);
+  EXPECT_EQ(map.settings().map_bytes(plan), 1000.0 * 334 * 8);
+  // Fewer steps than samples: one row per step.
+  EXPECT_EQ(map.settings().map_times({.beads = 1001, .total_steps = 99, .time_step = 1e-7, .duration = 9.9e-6}), 100);
+}
+
 TEST(Observers, TheEnergyGuardStopsOrRecords) {
   // τ = 10 µs is far too coarse for a 1e-6 m kick: the energy error passes 1e-6 early.
   const Chain chain = fixtures::anderson(101, 10.0);

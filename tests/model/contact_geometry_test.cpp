@@ -94,6 +94,28 @@ TEST(ContactGeometry, CoefficientGrowsAsTheAxesTurnParallel) {
     EXPECT_NEAR(hertz_coefficient(steel, steel, crossed_cylinders(1.0, degrees(a))) / estar, c, 1e-8) << a;
 }
 
+// The ellipse's major semi-axis: the circle's √(δ R) of a sphere on a flat at 90°; at any angle
+// the one Johnson's load relation gives from the coefficient, a = 3 K(e) C √δ / (2π E*) (from
+// P = (2/3)π a b p0 and δ = p0 b K(e)/E*, eqs. 4.36–4.40), where the function reads A instead;
+// growing without bound as the axes turn parallel.
+TEST(ContactGeometry, SemiMajorAxisIsJohnsons) {
+  const double delta = 1e-6;
+  EXPECT_NEAR(contact_semi_major_axis(crossed_cylinders(R, pi / 2), delta), std::sqrt(delta * R), 1e-12 * R);
+  const double effective = 1 / (2 * (1 - steel.poisson * steel.poisson) / steel.young);
+  double previous = 0;
+  for (double angle : {80.0, 45.0, 20.0, 5.0, 1.0, 0.45}) {
+    const ContactGeometry g = crossed_cylinders(R, degrees(angle));
+    const double e = contact_eccentricity(g), k = std::comp_ellint_1(e);
+    const double from_load = 3 * k * hertz_coefficient(steel, steel, g) * std::sqrt(delta) / (2 * pi * effective);
+    const double a = contact_semi_major_axis(g, delta);
+    EXPECT_NEAR(a / from_load, 1, 1e-12) << angle;
+    EXPECT_GT(a, previous) << angle;
+    previous = a;
+  }
+  EXPECT_EQ(contact_semi_major_axis(crossed_cylinders(R, pi / 4), 0), 0);
+  EXPECT_THROW(contact_semi_major_axis(crossed_cylinders(R, pi / 4), -1e-9), InvalidInput);
+}
+
 TEST(ContactGeometry, RejectsParallelAxesAndBadRadii) {
   EXPECT_THROW(crossed_cylinders(R, 0), InvalidInput);
   EXPECT_THROW(crossed_cylinders(R, pi), InvalidInput);

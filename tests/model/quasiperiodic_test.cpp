@@ -3,7 +3,9 @@
 #include "granular/model/quasiperiodic.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <nlohmann/json.hpp>
+#include <string>
 
 #include <gtest/gtest.h>
 
@@ -109,6 +111,58 @@ TEST(Quasiperiodic, BadInputNamesTheField) {
   EXPECT_THROW(parse_quasi_kind("s3"), InvalidInput);
   EXPECT_DOUBLE_EQ(parse_ratio("2/5"), 0.4);
   EXPECT_DOUBLE_EQ(parse_ratio("golden"), (std::sqrt(5.0) - 1) / 2);
+}
+
+// The cylinder chain's contact ellipse (issue 42, item 7): its semi-axis at the static overlap
+// against R, at the angle of any phase nearest parallel; warned above 0.1 R, refused from 0.5 R
+// (docs/physics.md). The paper's beads at F0 = 10 N: 0.028 R at 45°, about 0.1 R at 10°, 0.5 R
+// near 1°, R near 0.45° (α0 = 45°, λ = 0.99).
+TEST(Quasiperiodic, CylinderContactEllipseStaysSmallAgainstTheCylinders) {
+  const auto extent = [](double angle, double lambda, double F0 = 10) {
+    const Quasiperiodic q{.kind = Quasiperiodic::Kind::cylinders, .modulation = lambda, .angle = angle};
+    return cylinder_contact_extent(q, paper_r1, F0, steel);
+  };
+  const auto field = [](ChainRecipe r) {
+    try {
+      validate(r);
+    } catch (const InvalidInput& e) {
+      return e.parameter();
+    }
+    return std::string("none");
+  };
+  const CylinderContactExtent at45 = extent(45, 0);
+  EXPECT_NEAR(at45.semi_axis_over_radius, 0.028, 0.002);
+  EXPECT_EQ(at45.angle_deg, 45);
+  // The end of the range nearest parallel counts, at either end (135° is 45° from parallel).
+  EXPECT_NEAR(extent(45, 0.5).angle_deg, 22.5, 1e-12);
+  EXPECT_NEAR(extent(80, 0.6).angle_deg, 32, 1e-12);
+  EXPECT_NEAR(extent(100, 0.75).angle_deg, 175, 1e-12);
+  EXPECT_NEAR(extent(45, 0.99).semi_axis_over_radius, 0.96, 0.03);
+  EXPECT_GT(extent(45, 0.5, 100).semi_axis_over_radius, extent(45, 0.5, 10).semi_axis_over_radius);
+  EXPECT_EQ(extent(45, 0.5, 0).semi_axis_over_radius, 0);  // no overlap, no ellipse
+  std::printf("a/R at F0 = 10 N: 45 deg %.4f, 10 deg %.4f, 1 deg %.4f, 0.45 deg %.4f\n", at45.semi_axis_over_radius,
+              extent(10, 0).semi_axis_over_radius, extent(1, 0).semi_axis_over_radius,
+              extent(0.45, 0).semi_axis_over_radius);
+
+  auto r = recipe(Quasiperiodic::Kind::cylinders, 0.5);
+  EXPECT_EQ(check_cylinder_contacts(*r.quasi, paper_r1, r.F0, steel), "");  // 22.5°: 0.05 R
+  r.quasi->modulation = 0.9;                                                // 4.5°: warned, naming the modulation
+  EXPECT_EQ(field(r), "none");
+  const std::string warning = check_cylinder_contacts(*r.quasi, paper_r1, r.F0, steel, "--angle", "--modulation");
+  EXPECT_EQ(warning.rfind("--modulation 0.9: at 4.5 degrees", 0), 0u) << warning;
+  r.quasi->modulation = 0.99;  // 0.45°: refused, naming the modulation
+  EXPECT_EQ(field(r), "modulation");
+  EXPECT_THROW(r.chain(0), InvalidInput);
+  r.quasi->modulation = 0;
+  r.quasi->angle = 0.5;  // the angle alone
+  EXPECT_EQ(field(r), "angle");
+  r.quasi->angle = 179.5;  // as near parallel the other way
+  EXPECT_EQ(field(r), "angle");
+  r.quasi->angle = 5;  // warned, naming the angle
+  EXPECT_EQ(field(r), "none");
+  EXPECT_EQ(check_cylinder_contacts(*r.quasi, paper_r1, r.F0, steel).rfind("angle 5: at 5 degrees", 0), 0u);
+  // Quasiperiodic chains of spheres have no such limit.
+  EXPECT_EQ(check_cylinder_contacts({.kind = Quasiperiodic::Kind::s2, .modulation = 0.99}, paper_r1, 10, steel), "");
 }
 
 TEST(Quasiperiodic, DescriptionRoundTrips) {

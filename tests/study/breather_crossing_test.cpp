@@ -4,8 +4,10 @@
 // names the mode and its overlap, and says "band edge" only for a band's edge entered from a gap.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -78,6 +80,39 @@ TEST(BreatherCrossing, TheEdgeOfABandEnteredFromTheGapIsCalledABandEdge) {
   const BreatherBranch branch = continue_breather(c);
   EXPECT_TRUE(branch.stop_reason.starts_with("reached linear mode 22 at ")) << branch.stop_reason;
   EXPECT_TRUE(branch.stop_reason.ends_with("; band edge)")) << branch.stop_reason;
+}
+
+// The stop at a linear mode is checked where the arclength corrector put ω_b, not only where the
+// step predicted it (issue 42, item 7; the target's half is ArclengthBranchEndsExactlyAtItsTarget).
+// A 21-bead chain with a slightly small middle bead (0.95 R1): its impurity mode (18.240 kHz)
+// seeds a softening branch down to the top of the band (mode 20, 17.915 kHz). The branch is
+// concave in (x0, ω_b), so the corrector lands below the secant's prediction; with these first
+// steps (found by a scan) a prediction lands short of mode 20 and its corrected point past it.
+// Without the second check the branch then ran on 0.042 kHz below mode 20 until a contact opened.
+TEST(BreatherCrossing, ArclengthStopsAtAModeWhereTheCorrectorLands) {
+  std::vector<double> radii(21, 4.76e-3);
+  radii[10] = 0.95 * 4.76e-3;
+  BreatherBranchConfig c;
+  c.chain.given_radii = radii;
+  c.chain.F0 = 10;
+  c.mode = 21;
+  c.continuation = Continuation::arclength;
+  c.max_points = 40;
+  auto probe = c;
+  probe.max_points = 1;
+  const std::vector<double> linear = continue_breather(probe).linear_khz;
+  const double top = linear[20], edge = linear[19];
+  for (double fraction : {0.0487, 0.3368}) {  // of the distance from mode 21 down to mode 20
+    auto run = c;
+    run.step_khz = fraction * (top - edge);
+    const BreatherBranch b = continue_breather(run);
+    double lowest = top;
+    for (const auto& p : b.points) lowest = std::min(lowest, p.freq_khz);
+    std::printf("first step %.4f kHz: %zu points, the lowest %.3e kHz above mode 20; %s\n", run.step_khz,
+                b.points.size(), lowest - edge, b.stop_reason.c_str());
+    EXPECT_TRUE(b.stop_reason.starts_with("reached linear mode 20 at ")) << b.stop_reason;
+    for (const auto& p : b.points) EXPECT_GT(p.freq_khz, edge) << fraction;
+  }
 }
 
 }  // namespace

@@ -78,6 +78,9 @@ const BadInput cases[] = {
     {"spectrum", "--quasi s1 --k0 0", "--k0"},
     {"spectrum", "--quasi cylinders --angle 200", "--angle"},
     {"spectrum", "--quasi cylinders --angle 150 --modulation 0.5", "--modulation"},
+    // Axes so near parallel that the contact ellipse is a line (docs/physics.md, "C — cylinders").
+    {"spectrum", "--quasi cylinders --modulation 0.99", "--modulation"},
+    {"butterfly", "--quasi cylinders --angle 0.5 --modulation 0 --ratios 0.5", "--angle"},
     {"spectrum", "--quasi s2 --config x.txt", "--config"},
     {"localization", "--quasi s2 --modulation -1.5 --f 10", "--modulation"},
     {"localization", "--quasi s1 --k0 -1 --f 10", "--k0"},

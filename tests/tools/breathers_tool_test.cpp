@@ -6,6 +6,8 @@
 #include <fstream>
 #include <iomanip>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 #include <hdf5.h>
@@ -37,19 +39,20 @@ TEST(BreathersTool, ShortDiatomicBranchWritesCsvAndJson) {
   std::string line;
   std::getline(csv, line);
   EXPECT_EQ(line,
-            "omega_rad_s,freq_khz,energy_J,amplitude_m,centre,max_multiplier,stable,complete,newton_iterations,"
-            "residual,max_open_fraction");
+            "omega_rad_s,freq_khz,energy_J,amplitude_m,centre,max_multiplier,stable,complete,verdict_trusted,"
+            "newton_iterations,residual,max_open_fraction");
   int rows = 0;
   double previous = 1e300;
   while (std::getline(csv, line)) {
     std::vector<double> v;
     std::stringstream fields(line);
     for (std::string f; std::getline(fields, f, ',');) v.push_back(std::stod(f));
-    ASSERT_EQ(v.size(), 11u);
+    ASSERT_EQ(v.size(), 12u);
     EXPECT_LT(v[1], previous);  // down from the optical edge
     EXPECT_NEAR(v[0], 2 * 3.141592653589793 * v[1] * 1e3, 1e-9 * v[0]);
     EXPECT_EQ(v[7], 1);                         // 21 beads: the dense method, every multiplier
     EXPECT_EQ(v[6], v[5] <= 1 + 1e-6 ? 1 : 0);  // the verdict is the column's max|mu| against the tolerance
+    EXPECT_EQ(v[8], 1);                         // F0 > 0: a verdict of the orbit
     previous = v[1];
     ++rows;
   }
@@ -57,6 +60,7 @@ TEST(BreathersTool, ShortDiatomicBranchWritesCsvAndJson) {
   const auto meta = nlohmann::json::parse(read_file(dir + "/b.json"));
   EXPECT_EQ(meta["points"].size(), 4u);
   EXPECT_FALSE(meta["continuation"]["stop_reason"].get<std::string>().empty());
+  EXPECT_TRUE(meta["floquet"]["verdict_untrusted_reason"].is_null());  // F0 > 0: every verdict trusted
   EXPECT_EQ(meta["output"], dir + "/b.csv");
   std::filesystem::remove_all(dir);
 }
@@ -117,8 +121,23 @@ TEST(BreathersTool, OnsiteSpringChainAtZeroPrecompression) {
   EXPECT_EQ(meta["seed"]["site"], 11);
   const double onsite = meta["seed"]["onsite_khz"].get<double>();
   ASSERT_EQ(meta["points"].size(), 3u);
+  // The Floquet verdicts at F0 = 0 are the discretized map's (issue 42, item 5): untrusted, saying why.
+  EXPECT_NE(meta["floquet"]["verdict_untrusted_reason"].get<std::string>().find("F0 = 0"), std::string::npos);
+  std::ifstream csv(dir + "/c.csv");
+  std::string line;
+  std::getline(csv, line);
+  EXPECT_NE(line.find(",stable,complete,verdict_trusted,newton_iterations,"), std::string::npos) << line;
+  for (int row = 0; row < 3; ++row) {
+    ASSERT_TRUE(std::getline(csv, line));
+    std::vector<std::string> v;
+    std::stringstream fields(line);
+    for (std::string f; std::getline(fields, f, ',');) v.push_back(f);
+    ASSERT_EQ(v.size(), 12u);
+    EXPECT_EQ(v[8], "0") << line;
+  }
   double previous = onsite;
   for (const auto& p : meta["points"]) {
+    EXPECT_FALSE(p["verdict_trusted"].get<bool>());
     EXPECT_GT(p["freq_khz"].get<double>(), previous);
     EXPECT_LE(p["newton_residuals"].back().get<double>(), 1e-10);
     previous = p["freq_khz"].get<double>();

@@ -170,6 +170,27 @@ TEST(SpreadingTool, AnEnergyMapThatCannotFitIsRefusedUpFront) {
   fs::remove_all(dir);
 }
 
+// The guard reads the memory this process may use, not the host's RAM: under `ulimit -v` 4 GiB a
+// 3.2 GB map (400000 rows x 1001 beads), well within half of any host the tests run on, is refused
+// up front naming the limit (issue 42, item 7; it once ran on to fail when the map filled up).
+TEST(SpreadingTool, AnEnergyMapBeyondTheAddressSpaceLimitIsRefused) {
+  const fs::path dir = fresh_dir("limited-map");
+  const std::string err = (dir / "err").string();
+  const std::string command = "cd '" + dir.string() + "' && ulimit -v 4194304 && '" +
+                              granular::testing::tool_path("spreading") +
+                              "' --N 1001 --T 0.4 --energy-map map.h5 --map-samples 400000 --output out --quiet "
+                              "2>'" +
+                              err + "'";
+  const int status = std::system(command.c_str());
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 2);
+  const std::string text = first_line(err);
+  EXPECT_NE(text.find("error: --map-samples 400000: the energy map needs 3.2e+09 bytes"), std::string::npos) << text;
+  EXPECT_NE(text.find("4.29e+09 bytes this process may use (RLIMIT_AS (ulimit -v))"), std::string::npos) << text;
+  for (const char* f : {"out.csv", "out.json", "map.h5"}) EXPECT_FALSE(fs::exists(dir / f)) << f;
+  fs::remove_all(dir);
+}
+
 }  // namespace
 
 namespace granular::testing {

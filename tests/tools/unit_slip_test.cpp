@@ -95,5 +95,28 @@ TEST(UnitSlip, SecondsTypedAsMillisecondsIsWarnedBeforeTheRun) {
   EXPECT_EQ(count(paper.err, "warning"), 0) << paper.err;
 }
 
+// Not a slip but the model's edge, warned the same way (issue 42, item 7): cylinders whose axes
+// come near parallel, where the contact ellipse grows towards the cylinders' size (docs/physics.md,
+// "C — cylinders"): one warning line naming --modulation or --angle above 0.1 R, exit 2 from 0.5 R.
+TEST(UnitSlip, CylindersNearParallelAreWarnedThenRefused) {
+  const std::string dir = scratch_folder("cylinder-ellipse");
+  const ToolResult warned = run_tool_in(dir, "spectrum", "--quasi cylinders --modulation 0.9 --N 20 --quiet");
+  EXPECT_EQ(warned.exit_code, 0) << warned.err;
+  EXPECT_EQ(warned.err.rfind("warning: --modulation 0.9: at 4.5 degrees the cylinders' contact ellipse", 0), 0u)
+      << warned.err;
+  EXPECT_EQ(lines(warned.err), 1) << warned.err;
+  const ToolResult angle = run_tool_in(dir, "spectrum", "--quasi cylinders --angle 5 --N 20 --quiet --output a");
+  EXPECT_EQ(angle.exit_code, 0) << angle.err;
+  EXPECT_EQ(angle.err.rfind("warning: --angle 5: at 5 degrees", 0), 0u) << angle.err;
+  const ToolResult fine = run_tool_in(dir, "spectrum", "--quasi cylinders --modulation 0.5 --N 20 --quiet --output f");
+  EXPECT_EQ(fine.err, "");
+  const ToolResult refused =
+      run_tool_in(dir, "spectrum", "--quasi cylinders --modulation 0.99 --N 20 --quiet --output r");
+  EXPECT_EQ(refused.exit_code, 2) << refused.err;
+  EXPECT_NE(refused.err.find("--modulation 0.99: at 0.45 degrees"), std::string::npos) << refused.err;
+  EXPECT_NE(refused.err.find("beyond the point-contact (Hertz) law"), std::string::npos) << refused.err;
+  EXPECT_EQ(lines(refused.err), 1) << refused.err;
+}
+
 }  // namespace
 }  // namespace granular::testing

@@ -1,13 +1,13 @@
 #include "granular/dynamics/observers.hpp"
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <new>
 #include <string>
 
 #include "granular/detail/enum_names.hpp"
+#include "granular/detail/memory_limit.hpp"
 #include "granular/dynamics/initial_conditions.hpp"
 #include "granular/dynamics/observables.hpp"
 #include "granular/dynamics/spectral_density.hpp"
@@ -154,20 +154,31 @@ void EnergyMapObserver::Settings::validate(const RunPlan& plan) const {
   if (samples < 2) throw InvalidInput("map_samples", ": at least 2");
   if (stride < 1) throw InvalidInput("map_stride", ": at least 1");
   // The whole map is kept until the run ends: refuse one that cannot fit now, not hours in with
-  // bad_alloc. Half the physical memory leaves room for the run itself and the output's copy.
-  const double times = std::min(static_cast<double>(samples), static_cast<double>(plan.total_steps) + 1);
-  const double columns = std::ceil(static_cast<double>(plan.beads) / static_cast<double>(stride));
-  const double bytes = times * columns * sizeof(double);
-  const long pages = ::sysconf(_SC_PHYS_PAGES), page = ::sysconf(_SC_PAGESIZE);
-  const double memory = pages > 0 && page > 0 ? static_cast<double>(pages) * static_cast<double>(page) : 0;
-  if (memory > 0 && bytes > memory / 2) {
-    char text[200];
+  // bad_alloc. Half the memory this process may use (the least of RAM, its cgroup's limit and
+  // ulimit -v) leaves room for the run itself and the output's copy.
+  const double bytes = map_bytes(plan);
+  const detail::MemoryLimit memory = detail::memory_limit();
+  if (memory.bytes > 0 && bytes > memory.bytes / 2) {
+    char text[300];
     std::snprintf(text, sizeof text,
-                  " %zu: the energy map needs %.3g bytes (%.0f times x %.0f columns x 8), more than half of this "
-                  "machine's %.3g bytes; take fewer samples, or sum more beads per column (the stride)",
-                  samples, bytes, times, columns, memory);
+                  " %zu: the energy map needs %.3g bytes (%.0f times x %.0f columns x 8), more than half of the "
+                  "%.3g bytes this process may use (%s); take fewer samples, or sum more beads per column "
+                  "(the stride)",
+                  samples, bytes, map_times(plan), map_columns(plan), memory.bytes, memory.source.c_str());
     throw InvalidInput("map_samples", text);
   }
+}
+
+double EnergyMapObserver::Settings::map_times(const RunPlan& plan) const {
+  return std::min(static_cast<double>(samples), static_cast<double>(plan.total_steps) + 1);
+}
+
+double EnergyMapObserver::Settings::map_columns(const RunPlan& plan) const {
+  return std::ceil(static_cast<double>(plan.beads) / static_cast<double>(stride));
+}
+
+double EnergyMapObserver::Settings::map_bytes(const RunPlan& plan) const {
+  return map_times(plan) * map_columns(plan) * sizeof(double);
 }
 
 std::vector<std::uint64_t> EnergyMapObserver::schedule(const RunPlan& plan) {
@@ -175,7 +186,19 @@ std::vector<std::uint64_t> EnergyMapObserver::schedule(const RunPlan& plan) {
   t.clear();
   energy.clear();
   columns = (plan.beads + settings_.stride - 1) / settings_.stride;
-  return sample_steps(plan.total_steps, settings_.samples, Sampling::uniform);
+  auto steps = sample_steps(plan.total_steps, settings_.samples, Sampling::uniform);
+  // The whole map's memory now, before the run: a limit the guard above could not see (another
+  // process's use, overcommit off) fails here, not at the last sample.
+  try {
+    t.reserve(steps.size());
+    energy.reserve(steps.size() * columns);
+  } catch (const std::bad_alloc&) {
+    char text[200];
+    std::snprintf(text, sizeof text, " %zu: the energy map's %.3g bytes could not be allocated", settings_.samples,
+                  settings_.map_bytes(plan));
+    throw InvalidInput("map_samples", text);
+  }
+  return steps;
 }
 
 void EnergyMapObserver::observe(const Snapshot& now) {

@@ -89,11 +89,18 @@ class EnergyMapObserver final : public Observer {
   struct Settings {
     std::size_t samples = 500;  ///< uniform times 0 … T (≥ 2)
     std::size_t stride = 1;     ///< beads per column (≥ 1)
-    /// Throws InvalidInput naming `map_samples` or `map_stride`.
+    /// Throws InvalidInput naming `map_samples` or `map_stride`; `map_samples` also when the map
+    /// needs more than half the memory this process may use (the least of RAM, its cgroup's limit
+    /// and ulimit -v: detail/memory_limit.hpp), before the run rather than hours into it.
     void validate(const RunPlan& plan) const;
+    double map_times(const RunPlan& plan) const;    ///< rows: min(samples, steps + 1)
+    double map_columns(const RunPlan& plan) const;  ///< ⌈beads / stride⌉
+    double map_bytes(const RunPlan& plan) const;    ///< the whole map: rows × columns × 8 [bytes]
   };
   EnergyMapObserver() = default;
   explicit EnergyMapObserver(const Settings& settings) : settings_(settings) {}
+  /// Validates, then reserves the whole map (t and energy) before the run: InvalidInput naming
+  /// `map_samples` when it cannot be allocated.
   std::vector<std::uint64_t> schedule(const RunPlan& plan) override;
   void observe(const Snapshot& now) override;
   const Settings& settings() const { return settings_; }

@@ -1,14 +1,13 @@
 #include "granular/linear/spectrum.hpp"
 
-#include <unistd.h>
 #include <algorithm>
-
 #include <cmath>
 #include <cstdint>
 #include <limits>
 #include <string>
 
 #include "granular/detail/enum_names.hpp"
+#include "granular/detail/memory_limit.hpp"
 #include "granular/error.hpp"
 #include "granular/linear/detail/lapack.hpp"
 #include "granular/linear/detail/lapack_eigensolver.hpp"
@@ -195,10 +194,11 @@ std::string full_spectrum_problem(std::size_t beads, const SpectrumConfig& confi
     why =
         "dstevd's workspace of N^2 + 4N + 1 doubles (every driver's fallback) exceeds LAPACK's 32-bit sizes "
         "(N <= 46338)";
-  const long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGE_SIZE);
-  const double physical = pages > 0 && page > 0 ? static_cast<double>(pages) * static_cast<double>(page) : 0;
-  if (why.empty() && physical > 0 && static_cast<double>(bytes) > physical)
-    why = "more than this machine's " + format_number(std::round(physical / 1e8) / 10) + " GB of memory";
+  // The least of RAM, the cgroup's limit and ulimit -v: what this process may have.
+  const detail::MemoryLimit memory = detail::memory_limit();
+  if (why.empty() && memory.bytes > 0 && static_cast<double>(bytes) > memory.bytes)
+    why = "more than the " + format_number(std::round(memory.bytes / 1e8) / 10) +
+          " GB of memory this process may use (" + memory.source + ")";
   if (why.empty()) return {};
   return "every mode with eigenvectors (method lapack) needs " +
          format_number(std::round(static_cast<double>(bytes) / 1e8) / 10) + " GB: " + why;

@@ -166,6 +166,7 @@ void validate(const ChainRecipe& c, std::size_t max_beads) {
     if (!std::isfinite(c.R1) || c.R1 <= 0)
       throw InvalidInput("R1", " " + format_number(c.R1) + ": must be finite and > 0");
     validate(*c.quasi, c.F0);
+    check_cylinder_contacts(*c.quasi, c.R1, c.F0, c.material);  // refuses a line contact; warnings: plausibility
     return;
   }
   if (c.distribution) {

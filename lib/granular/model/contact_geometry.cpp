@@ -64,6 +64,13 @@ double contact_eccentricity(const ContactGeometry& g) {
   return std::sqrt(-std::expm1(-0.5 * (lo + hi)));
 }
 
+double contact_semi_major_axis(const ContactGeometry& g, double overlap) {
+  if (!(overlap >= 0) || !std::isfinite(overlap))
+    throw InvalidInput("overlap", " " + format_number(overlap) + ": must be finite and >= 0");
+  const Differences d = differences(contact_eccentricity(g));
+  return std::sqrt(overlap * d.k_minus_e / (d.k * g.A));
+}
+
 double hertz_coefficient(const Material& a, const Material& b, const ContactGeometry& g) {
   const double e = contact_eccentricity(g);
   const Differences d = differences(e);

@@ -24,6 +24,14 @@ ContactGeometry crossed_cylinders(double radius, double angle);
 /// B/A = [E(e)/(1 − e²) − K(e)] / [K(e) − E(e)] (Johnson eq. 4.39), found by bisection.
 double contact_eccentricity(const ContactGeometry& g);
 
+/// The major semi-axis a [m] of the contact ellipse at overlap δ [m] (Johnson eqs. 4.36–4.40):
+/// a = √(δ (K − E)/(K e² A)); for spheres (A = B = 1/(2R*)) the circle's √(δ R*). It lies along
+/// the direction of the smaller curvature A, which for cylinders turning parallel is along their
+/// axes: the size to hold against the bodies' for the point-contact law to apply
+/// (quasiperiodic.hpp, cylinder_ellipse_limit). Throws InvalidInput as contact_eccentricity, and
+/// ("overlap") unless δ ≥ 0 finite.
+double contact_semi_major_axis(const ContactGeometry& g, double overlap);
+
 /// C [N/m^{3/2}] with P = C δ^{3/2}: C = (2π E*/(3K)) sqrt((K − E)/(K e² A)), where
 /// 1/E* = (1−ν_a²)/E_a + (1−ν_b²)/E_b. Reduces to (4/3) E* sqrt(R) for A = B = 1/(2R).
 /// Throws InvalidInput ("radius") unless 0 < A ≤ B finite.

@@ -3,9 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <string>
+#include <utility>
 
 #include "granular/model/configuration_file.hpp"
 #include "granular/model/contact_law.hpp"
+#include "granular/model/quasiperiodic.hpp"
 #include "granular/number_format.hpp"
 
 namespace granular {
@@ -35,6 +38,11 @@ std::vector<std::string> radius_warnings(const ChainRecipe& recipe, const Radius
   if (!plausible_radius(recipe.R1)) out.push_back(implausible_radius_warning(names.r1, recipe.R1));
   else if (!plausible_radius(recipe.xi * recipe.R1))
     out.push_back(implausible_radius_warning(names.r1 + " times xi", recipe.xi * recipe.R1));
+  if (recipe.quasi)
+    if (std::string w = check_cylinder_contacts(*recipe.quasi, recipe.R1, recipe.F0, recipe.material, names.angle,
+                                                names.modulation);
+        !w.empty())
+      out.push_back(std::move(w));
   return out;
 }
 

@@ -13,13 +13,17 @@ namespace granular {
 /// How the caller's user names the recipe's radii: "--R1"/"--types" for the tools, "R1"/"beads"
 /// for Python.
 struct RadiusNames {
-  std::string r1;            ///< R1 (and ξ R1) of a two-type draw or a types file
-  std::string distribution;  ///< the radii of a k-type or polydisperse distribution
-  std::string radii;         ///< a given list of radii (not from a file: files warn per line)
+  std::string r1;                         ///< R1 (and ξ R1) of a two-type draw or a types file
+  std::string distribution;               ///< the radii of a k-type or polydisperse distribution
+  std::string radii;                      ///< a given list of radii (not from a file: files warn per line)
+  std::string angle = "angle";            ///< the cylinder chain's α0
+  std::string modulation = "modulation";  ///< a quasiperiodic chain's λ
 };
 
 /// One warning per recipe radius outside [plausible_radius_min, plausible_radius_max]
-/// (bead_distribution.hpp); a given list names its first offender and how many there are.
+/// (bead_distribution.hpp); a given list names its first offender and how many there are. For
+/// the cylinder chain also the contact ellipse beyond cylinder_ellipse_warning R
+/// (check_cylinder_contacts, quasiperiodic.hpp), which throws InvalidInput where it is refused.
 std::vector<std::string> radius_warnings(const ChainRecipe& recipe, const RadiusNames& names);
 
 /// An upper bound [kHz] on every linear frequency of every realization of the recipe:

@@ -110,9 +110,47 @@ void validate(const Quasiperiodic& q, double F0) {
   }
 }
 
+CylinderContactExtent cylinder_contact_extent(const Quasiperiodic& q, double R, double F0, const Material& material) {
+  CylinderContactExtent out;
+  if (q.kind != Quasiperiodic::Kind::cylinders || !(F0 > 0)) return out;
+  for (const double angle : {q.angle * (1 - std::fabs(q.modulation)), q.angle * (1 + std::fabs(q.modulation))}) {
+    const ContactGeometry g = crossed_cylinders(R, angle * degree);
+    const double a = contact_semi_major_axis(g, static_overlap(hertz_coefficient(material, material, g), F0)) / R;
+    if (a > out.semi_axis_over_radius) out = {a, angle};
+  }
+  return out;
+}
+
+std::string check_cylinder_contacts(const Quasiperiodic& q, double R, double F0, const Material& material,
+                                    const std::string& angle_name, const std::string& modulation_name) {
+  const CylinderContactExtent extent = cylinder_contact_extent(q, R, F0, material);
+  if (!(extent.semi_axis_over_radius > cylinder_ellipse_warning)) return "";
+  // α0 is to blame when it alone goes that far, else the modulation.
+  Quasiperiodic unmodulated = q;
+  unmodulated.modulation = 0;
+  const double alone = cylinder_contact_extent(unmodulated, R, F0, material).semi_axis_over_radius;
+  const auto what = [&](bool angle) {
+    return " " + format_number(angle ? q.angle : q.modulation) + ": at " +
+           format_number(std::round(extent.angle_deg * 1000) / 1000) +
+           " degrees the cylinders' contact ellipse (static, F0 = " + format_number(F0) + " N) has a semi-axis of " +
+           format_number(std::round(extent.semi_axis_over_radius * 1000) / 1000) + " R";
+  };
+  if (extent.semi_axis_over_radius >= cylinder_ellipse_limit) {
+    const bool angle = alone >= cylinder_ellipse_limit;
+    throw InvalidInput(angle ? "angle" : "modulation",
+                       what(angle) + ", at least " + format_number(cylinder_ellipse_limit) +
+                           " R: a line contact, beyond the point-contact (Hertz) law; keep the angles farther from "
+                           "parallel (docs/physics.md)");
+  }
+  const bool angle = alone > cylinder_ellipse_warning;
+  return (angle ? angle_name : modulation_name) + what(angle) + ", above " + format_number(cylinder_ellipse_warning) +
+         " R: the point-contact (Hertz) law assumes it much smaller than R";
+}
+
 Chain quasiperiodic_chain(const Quasiperiodic& q, std::size_t N, double R, double F0, const Material& material,
                           double phase) {
   validate(q, F0);
+  check_cylinder_contacts(q, R, F0, material);
   if (q.kind != Quasiperiodic::Kind::cylinders) {
     Chain c = make_chain(std::vector<double>(N, R), F0, material);
     if (q.kind == Quasiperiodic::Kind::s2) {

@@ -49,6 +49,31 @@ struct Quasiperiodic {
 /// The cylinders' length: twice their radius (L = 2R, mass ρ π R² L).
 inline constexpr double cylinder_length_over_radius = 2;
 
+/// C: the point-contact (Hertz) law describes two crossed cylinders while their contact ellipse is
+/// small against them, its major semi-axis a ≪ R (the ellipse lies along the axes as they turn
+/// parallel, and the cylinders' half-length is R). At the static overlap under F0, at the angle of
+/// any phase where a is largest: a > cylinder_ellipse_warning R earns a warning (a ≪ R no longer
+/// holds: 10 degrees at the paper's beads and F0 = 10 N), a ≥ cylinder_ellipse_limit R is refused
+/// (the ellipse spans half the cylinders' length: a line contact, not a point; 1 degree there).
+/// docs/physics.md, "C — cylinders at quasiperiodic crossing angles".
+inline constexpr double cylinder_ellipse_warning = 0.1, cylinder_ellipse_limit = 0.5;
+
+/// C: the largest a/R of a bond at its static overlap under F0 over the angles α0 (1 ± |λ|) any
+/// phase gives (a grows as the axes turn parallel, so the largest is at one end), and that angle
+/// [degrees]. {0, 0} for S1, S2 or F0 = 0.
+struct CylinderContactExtent {
+  double semi_axis_over_radius = 0;
+  double angle_deg = 0;
+};
+CylinderContactExtent cylinder_contact_extent(const Quasiperiodic& q, double R, double F0, const Material& material);
+
+/// C: throws InvalidInput naming `angle` (α0 alone already too near parallel) or `modulation`
+/// where the extent reaches cylinder_ellipse_limit; "" or the warning's text (naming `angle` or
+/// `modulation` as the caller's user calls them) beyond cylinder_ellipse_warning.
+std::string check_cylinder_contacts(const Quasiperiodic& q, double R, double F0, const Material& material,
+                                    const std::string& angle_name = "angle",
+                                    const std::string& modulation_name = "modulation");
+
 /// "s1", "s2", "cylinders".
 std::string to_string(Quasiperiodic::Kind kind);
 /// Throws InvalidInput ("quasi") naming the accepted words.

@@ -95,6 +95,13 @@ struct BreatherPoint {
   std::string newton;                  ///< "dense" or "krylov"
   std::vector<int> krylov_iterations;  ///< krylov: GMRES iterations per Newton step
   FloquetSpectrum floquet;
+  /// false where floquet's verdict (stable, instability) belongs to the discretized map rather than
+  /// to the orbit: at F0 = 0, where every contact opens each period, a perturbation does grow by
+  /// the computed max |μ| under the map of that step count, but the verdict does not converge with
+  /// the step count (docs/breathers.md, "Zero precompression": 1.0074 at 128 steps per period,
+  /// stable at 256, 2048 and 8192, up to 1 + 8e-4 in between, for SABA2C and ABA864 alike).
+  /// BreatherBranch::verdict_untrusted_reason says why.
+  bool verdict_trusted = true;
   std::vector<double> open_fraction;  ///< per bond (N+1): fraction of the period with overlap < 0
   double max_open_fraction = 0;
   std::vector<double> x0;  ///< the profile at the turning point [m]
@@ -109,6 +116,9 @@ struct BreatherBranch {
   std::vector<double> linear_khz;    ///< every linear mode [kHz], ascending
   std::vector<BreatherPoint> points;
   std::string stop_reason;  ///< why the branch ended
+  /// Why the points' Floquet verdicts are untrusted (BreatherPoint::verdict_trusted); empty when
+  /// they are trusted.
+  std::string verdict_untrusted_reason;
 };
 
 /// The harmonic-balance breather of a chain at F0 = 0 on on-site springs k_n, centred on bead
@@ -134,9 +144,10 @@ BreatherBranch continue_breather(const BreatherBranchConfig& config,
                                  const std::function<void(const BreatherPoint&)>& progress = {});
 
 /// CSV: omega_rad_s,freq_khz,energy_J,amplitude_m,centre,max_multiplier,stable,complete,
-/// newton_iterations,residual,max_open_fraction (one row per point). stable is 1 only from a
-/// complete set of multipliers (FloquetSpectrum::stable); complete 0: ARPACK's verdict on part of
-/// the largest multipliers (unstable, or unknown).
+/// verdict_trusted,newton_iterations,residual,max_open_fraction (one row per point). stable is 1
+/// only from a complete set of multipliers (FloquetSpectrum::stable); complete 0: ARPACK's verdict
+/// on part of the largest multipliers (unstable, or unknown); verdict_trusted 0: stable and
+/// max_multiplier are the discretized map's, not the orbit's (BreatherPoint::verdict_trusted; F0 = 0).
 void write_breather_csv(std::ostream& out, const BreatherBranch& branch);
 
 /// HDF5 of the branch (one row per point): freq_khz, omega_rad_s, energy_J; x0 (points × N, the

@@ -95,7 +95,7 @@ std::optional<BeadDistribution> bead_distribution(const ChainChoices& o) {
 
 RadiusNames radius_names(const ChainChoices& o, const std::function<std::string(const std::string&)>& told) {
   const char* distribution = !o.types.empty() ? "types" : !o.type_masses.empty() ? "type_masses" : "polydisperse";
-  return {told("R1"), told(distribution), told("radii")};
+  return {told("R1"), told(distribution), told("radii"), told("angle"), told("modulation")};
 }
 
 StreamedChain stream_chain(const ChainChoices& o, const std::function<std::string(const std::string&)>& told) {
