@@ -65,6 +65,9 @@ const BadInput cases[] = {
     {"localization", "--radii /nonexistent/radii.txt", "--radii"},
     {"localization", "--walls sphere --N 1e9", "--N"},
     {"spreading", "--walls none", "--walls"},
+    {"spreading", "--site -1", "--site -1: must be >= 0"},  // not wrapped to 2^64 - 1 in an unsigned field
+    {"spreading", "--samples -5", "--samples -5: must be >= 0"},
+    {"exponents", "--renormalize -2 --mle", "--renormalize -2: must be >= 0"},
     {"exponents", "--walls none", "--walls"},
     // A --dt past the stability limit is named as such, not as the --fit-step (1e-5 s) judged on it.
     {"spreading", "--dt 1e-4", "--dt 1e-04 s: past the stability limit"},

@@ -68,11 +68,16 @@ CLI::Option* add_option(CLI::App& app, const std::string& name, T& value, const 
   return app.add_option(name, value, description)->capture_default_str();
 }
 
-/// An integer option that also takes scientific notation (--N 1e7), rejecting non-integers.
+/// An integer option that also takes scientific notation (--N 1e7), rejecting non-integers (and
+/// negatives for an unsigned one).
 template <class Integer>
 CLI::Option* add_integer(CLI::App& app, const std::string& name, Integer& value, const std::string& description) {
   const auto digits = [name](std::string& text) -> std::string {
     try {
+      // CLI11 would wrap a negative into an unsigned field (-1 as 2^64 - 1): refused, naming the option.
+      if (std::is_unsigned_v<Integer> && text.find_first_not_of(" \t") != std::string::npos &&
+          text[text.find_first_not_of(" \t")] == '-')
+        throw InvalidInput(name, " " + text + ": must be >= 0");
       text = integer_digits(text, name);
     } catch (const InvalidInput& e) {
       return e.what();
