@@ -101,6 +101,9 @@ const ParameterTable<TransportCase>& transport_parameters() {
        "largest |L_d - gamma| of a power law after `t_star`"},
       {"bootstrap", path<C>(&C::bootstrap, &BootstrapConfig::resamples),
        "resamples of the realization bootstrap of gamma and eta"},
+      {"bootstrap_seed", path<C>(&C::bootstrap, &BootstrapConfig::seed),
+       "key of the bootstrap's resampling draw (apart from the chains' seed): another key redraws the resamples, "
+       "so the realization errors' own scatter can be seen"},
       {"active_window",
        path<C>(&C::dynamics, integration, &IntegrationConfig::window, &ActiveWindow::enabled),
        {read_on_off, write_on_off},
