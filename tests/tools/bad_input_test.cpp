@@ -67,6 +67,7 @@ const BadInput cases[] = {
     {"spreading", "--walls none", "--walls"},
     {"spreading", "--site -1", "--site -1: must be >= 0"},  // not wrapped to 2^64 - 1 in an unsigned field
     {"spreading", "--samples -5", "--samples -5: must be >= 0"},
+    {"spreading", "--bootstrap-seed -1", "--bootstrap-seed -1: must be >= 0"},
     {"exponents", "--renormalize -2 --mle", "--renormalize -2: must be >= 0"},
     {"exponents", "--walls none", "--walls"},
     // A --dt past the stability limit is named as such, not as the --fit-step (1e-5 s) judged on it.
