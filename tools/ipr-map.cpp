@@ -25,7 +25,7 @@ int main(int argc, char** argv) {
       "ipr-map"};
   tool::describe_common(app);
   std::string disorder = "A", xi_text = "0.1:1", q_text = "0.2,0.5,0.8", output = "ipr-map", solver = "fast";
-  std::string method = "lapack";
+  std::string method = "lapack";  // with --near/--count or --window
   IprMapConfig config;
   tool::ChainOptions beads;  // --walls, --types/--type-masses/--polydisperse (with --disorder as their rule)
   LongRunChoices threads;    // of the long-run choices, --threads alone
@@ -66,23 +66,10 @@ int main(int argc, char** argv) {
     if (config.chain.N > 100000000)
       throw InvalidInput("N", " " + std::to_string(config.chain.N) + ": more than 1e8 beads");
     RunOptions run = run_options(threads, "");
-    if (solver != "fast" && solver != "lapack" && !solver.starts_with("lapack-"))
-      throw InvalidInput("--solver", " '" + solver + "': expected fast, lapack or lapack-<stevr|stemr|stevd|steqr>");
-    config.spectrum.method = solver == "fast" ? SpectrumMethod::fast : SpectrumMethod::lapack;
-    if (solver.starts_with("lapack-")) config.spectrum.driver = parse_lapack_driver(solver.substr(7));
     config.selection = choose_modes(selection);
-    if (config.selection.kind != ModeSelection::Kind::all) {  // --near/--count or --window
-      config.spectrum.method = parse_spectrum_method(method);
-      if (config.spectrum.method == SpectrumMethod::fast)
-        throw InvalidInput("--method", " fast: computes every mode; use lapack, bisect or arpack with --near/--window");
-    } else if (app.count("--method") > 0) {
-      throw InvalidInput("--method", ": only with --near/--count or --window (the full map uses --solver)");
-    }
+    set_solver(config, solver, app.count("--method") > 0 ? std::optional<std::string>(method) : std::nullopt);
     beads.disorder = disorder;
-    config.chain.walls = parse_wall_shape(beads.walls);
-    config.chain.quasi = quasiperiodic(beads);
-    if ((config.chain.distribution = bead_distribution(beads)) || config.chain.quasi)
-      config.q_values = config.xi_values = {std::numeric_limits<double>::quiet_NaN()};  // one cell
+    set_chain_kind(config, beads);  // --quasi or a bead distribution: one cell
     validate(config);
     tool::warn(radius_warnings(config.chain, tool::radius_options(beads)));
     tool::warn(frequency_slips(config, [](const std::string& p) { return tool::option_name(p); }));  // Hz as kHz

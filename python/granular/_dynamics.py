@@ -67,14 +67,6 @@ granular.quasiperiodic's; disorder, q and xi are then not used
 """
 
 
-def _set_quasi(recipe, quasi, modulation, ratio, phase, angle, k0):
-    """Makes `recipe` (a _core.ChainRecipe, F0 already set) the quasiperiodic chain `quasi`, if not None (its
-    keywords without it are refused, not ignored)."""
-    recipe.quasi = _quasi(quasi, modulation, ratio, phase, angle, k0)
-    if recipe.quasi is not None:
-        recipe._validate_quasi()
-
-
 def _distribution(text, keyword):
     """A bead distribution in the tools' text ('R1:P1,R2:P2', 'uniform:LO:HI'), or "" for None."""
     if text is None:

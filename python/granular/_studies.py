@@ -8,7 +8,7 @@ import numpy as np
 
 from . import _core
 from ._arguments import number_list
-from ._dynamics import _run, _set_quasi
+from ._dynamics import _chain_choices, _quasi_choices, _run
 from ._linear import _selection
 from ._model import _quasi
 from ._schema import TableKeywords, split_keywords, with_keywords
@@ -82,7 +82,8 @@ class IprMap:
 
 def ipr_map(*, disorder="A", xi="0.1:1", q="0.2,0.5,0.8", N=100, F0=10.0, R1=_core.paper_r1, realizations=100, seed=1,
             solver="fast", near=None, count=None, window=None, method=None, bin_khz=0.0, threads=0, progress=False,
-            walls="flat", quasi=None, modulation=0.0, ratio="golden", phase=None, angle=45.0, k0=4.0):
+            walls="flat", quasi=None, modulation=0.0, ratio="golden", phase=None, angle=45.0, k0=4.0, types=None,
+            type_masses=None, polydisperse=None):
     """Mean frequency [kHz] and displacement IPR of every mode of disordered chains over realizations, on a (q, xi)
     grid: the paper's IPR map, as the ipr-map tool computes it (same numbers for the same keywords).
 
@@ -102,6 +103,10 @@ def ipr_map(*, disorder="A", xi="0.1:1", q="0.2,0.5,0.8", N=100, F0=10.0, R1=_co
     progress: draw a progress bar on stderr
     quasi, modulation, ratio, phase, angle, k0: a quasiperiodic chain instead (the tools' --quasi, as
         granular.quasiperiodic's keywords): one cell, q = xi = NaN; phase None averages over phases
+    types, type_masses, polydisperse: None, or chains of k bead types 'R1:P1,R2:P2,...' (radius [m]: probability),
+        of k masses 'M1:P1,...' [kg] of steel spheres, or of radii drawn per bead 'uniform:LO:HI' or
+        'normal:MEAN:SD:MIN' [m] instead (the tool's --types, --type-masses, --polydisperse; disorder is then
+        their rule): one cell, q = xi = NaN, realizations are draws
     Returns a granular.IprMap. Releases the GIL; Ctrl-C stops it (KeyboardInterrupt) after the cell in flight."""
     c = _core.IprMapConfig()
     recipe = _core.ChainRecipe()
@@ -109,33 +114,20 @@ def ipr_map(*, disorder="A", xi="0.1:1", q="0.2,0.5,0.8", N=100, F0=10.0, R1=_co
     c.xi_values = number_list(xi, "xi", 0.01)
     c.q_values = number_list(q, "q", 0.1)
     recipe.N = _core._size(N, "N", 2, _MAX)
-    recipe.F0, recipe.R1, recipe.walls = F0, R1, walls
+    recipe.F0, recipe.R1 = F0, R1
     c.realizations = _core._size(realizations, "realizations", 1)
     recipe.seed = _core._size(seed, "seed")
-    _set_quasi(recipe, quasi, modulation, ratio, phase, angle, k0)
-    if quasi is not None:  # one cell, as the ipr-map tool: realizations are phases
-        c.q_values = c.xi_values = [math.nan]
     c.chain = recipe
     c.bin_khz = bin_khz
     _core._size(threads, "threads", 0, 4096)
-    solver_error = f"solver '{solver}': expected fast, lapack or lapack-<stevr|stemr|stevd|steqr>"
-    if solver != "fast" and solver != "lapack" and not solver.startswith("lapack-"):
-        raise ValueError(solver_error)
-    c.spectrum.method = "fast" if solver == "fast" else "lapack"
-    if solver.startswith("lapack-"):
-        try:
-            c.spectrum.driver = solver[7:]
-        except ValueError:
-            raise ValueError(solver_error) from None
-    method_name = "lapack" if method is None else method
+    # the chain's kind (walls, a quasiperiodic chain or k types: one cell) and the solver by the tool's rule, in C++
+    beads = _core.ChainChoices()
+    _chain_choices(beads, disorder=disorder, walls=walls, types=types, type_masses=type_masses,
+                   polydisperse=polydisperse)
+    _quasi_choices(beads, quasi, modulation, ratio, phase, angle, k0)
     if near is not None or count is not None or window is not None:
         c.selection = _selection(near, count, window, got=False)
-        c.spectrum.method = method_name
-        if c.spectrum.method == "fast":
-            raise ValueError("method fast: computes every mode; use lapack, bisect or arpack with near/window")
-    elif method is not None:
-        raise ValueError("method: only with near/count or window (the full map uses solver=)")
-    return IprMap(_core._ipr_map(c, solver, method_name, _run(threads, progress=progress)))
+    return IprMap(_core._ipr_map(c, beads, solver, method, _run(threads, progress=progress)))
 
 
 class Butterfly:

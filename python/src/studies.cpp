@@ -23,9 +23,15 @@
 namespace granular::python {
 namespace {
 
-py::dict ipr_map(const IprMapConfig& c, const std::string& solver, const std::string& method, const PyRun& options) {
+/// `c` as granular/_studies.py fills it (the grid, the two-type draw, the selection); `beads`: the chain's
+/// kind (walls, a quasiperiodic chain or k types) and `solver`/`method`, by the ipr-map tool's rules.
+py::dict ipr_map(IprMapConfig c, const ChainChoices& beads, const std::string& solver,
+                 const std::optional<std::string>& method, const PyRun& options) {
   const int thread_request = options.thread_request();
+  set_solver(c, solver, method);
+  set_chain_kind(c, beads);
   validate(c);
+  warn(radius_warnings(c.chain, radius_names(beads, front_end_word)));  // implausible radii, as the tool warns
   warn(frequency_slips(c, front_end_word));  // near, window: Hz typed as kHz, as the tool warns
 
   std::vector<IprMapCell> cells;
@@ -33,7 +39,8 @@ py::dict ipr_map(const IprMapConfig& c, const std::string& solver, const std::st
            [&](const RunOptions& run) { cells = compute_ipr_map(c, run); });
 
   const py::object meta =
-      metadata("ipr_map", describe_ipr_map(c, cells, {solver, method, resolve_threads(thread_request)}));
+      metadata("ipr_map",
+               describe_ipr_map(c, cells, {solver, method.value_or("lapack"), resolve_threads(thread_request)}));
   py::list out_cells;
   for (auto& cell : cells)
     out_cells.append(fields("q xi freq_khz ipr mode realization bin_modes bin_ipr", cell.q, cell.xi,

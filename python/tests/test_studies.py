@@ -29,6 +29,36 @@ def test_ipr_map_lapack_solver_equals_the_tool(tools):
     assert grid.metadata["parameters"] == meta["parameters"]
 
 
+@pytest.mark.parametrize("keywords, flags", [
+    ({"types": "4.76e-3:0.6,3e-3:0.4"}, ["--types", "4.76e-3:0.6,3e-3:0.4"]),
+    ({"type_masses": "4e-3:0.5,1e-3:0.5", "disorder": "RDM1"}, ["--type-masses", "4e-3:0.5,1e-3:0.5", "--disorder",
+                                                                  "RDM1"]),
+    ({"polydisperse": "uniform:4e-3:5e-3", "walls": "sphere"}, ["--polydisperse", "uniform:4e-3:5e-3", "--walls",
+                                                                "sphere"]),
+])
+def test_ipr_map_takes_every_chain_kind_of_its_tool(tools, keywords, flags):
+    """k bead types, k masses and polydisperse radii (one cell, q = xi = NaN, realizations are draws), as the
+    ipr-map tool's --types, --type-masses and --polydisperse: the same numbers and parameters."""
+    csv, meta = tools.run("ipr-map", "--N", "30", "--realizations", "4", "--seed", "3", *flags, "--quiet")
+    grid = gr.ipr_map(N=30, realizations=4, seed=3, **keywords)
+    rows = grid.rows()
+    for key in ("mode", "freq_khz", "ipr"):
+        assert_identical(rows[key], csv[key])
+    assert np.isnan(grid.q).all() and np.isnan(grid.xi).all()
+    assert grid.metadata["parameters"] == meta["parameters"]
+    with pytest.raises(ValueError, match="polydisperse"):  # one kind of chain at a time, named
+        gr.ipr_map(N=30, types="4.76e-3:0.6,3e-3:0.4", polydisperse="uniform:4e-3:5e-3")
+
+
+def test_ipr_map_solver_rules_are_the_tools():
+    with pytest.raises(ValueError, match="solver 'lapack-magic': expected fast, lapack or lapack-"):
+        gr.ipr_map(N=20, realizations=2, solver="lapack-magic")
+    with pytest.raises(ValueError, match="method: only with near/count or window"):
+        gr.ipr_map(N=20, realizations=2, method="bisect")
+    with pytest.raises(ValueError, match="method fast: computes every mode"):
+        gr.ipr_map(N=20, realizations=2, near=5, count=2, method="fast")
+
+
 def test_partial_ipr_map_equals_the_tool(tools):
     csv, meta = tools.run("ipr-map", "--disorder", "A", "--xi", "0.5", "--q", "0.5", "--N", "300",
                           "--realizations", "3", "--near", "15", "--count", "4", "--method", "bisect", "--quiet")

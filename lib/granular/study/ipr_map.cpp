@@ -14,6 +14,32 @@
 
 namespace granular {
 
+void set_chain_kind(IprMapConfig& c, const ChainChoices& beads) {
+  c.chain.walls = parse_wall_shape(beads.walls);
+  c.chain.quasi = quasiperiodic(beads);
+  if ((c.chain.distribution = bead_distribution(beads)) || c.chain.quasi)
+    c.q_values = c.xi_values = {std::numeric_limits<double>::quiet_NaN()};  // one cell
+}
+
+void set_solver(IprMapConfig& c, const std::string& solver, const std::optional<std::string>& method) {
+  const std::string expected = "': expected fast, lapack or lapack-<stevr|stemr|stevd|steqr>";
+  if (solver != "fast" && solver != "lapack" && !solver.starts_with("lapack-"))
+    throw InvalidInput("solver", " '" + solver + expected);
+  c.spectrum.method = solver == "fast" ? SpectrumMethod::fast : SpectrumMethod::lapack;
+  if (solver.starts_with("lapack-")) try {
+      c.spectrum.driver = parse_lapack_driver(solver.substr(7));
+    } catch (const InvalidInput&) {
+      throw InvalidInput("solver", " '" + solver + expected);
+    }
+  if (c.selection.kind != ModeSelection::Kind::all) {  // near/count or window
+    c.spectrum.method = parse_spectrum_method(method.value_or("lapack"));
+    if (c.spectrum.method == SpectrumMethod::fast)
+      throw InvalidInput("method", " fast: computes every mode; use lapack, bisect or arpack with `near`/`window`");
+  } else if (method) {
+    throw InvalidInput("method", ": only with `near`/`count` or `window` (the full map uses `solver`)");
+  }
+}
+
 void validate(const IprMapConfig& c) {
   const ChainRecipe& chain = c.chain;
   if (chain.N < 2) throw InvalidInput("N", " " + std::to_string(chain.N) + ": a chain needs at least 2 beads");

@@ -5,11 +5,13 @@
 // share their configurations (common random numbers).
 #include <cstdint>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "granular/ensemble/run_options.hpp"
 #include "granular/linear/spectrum.hpp"
 #include "granular/model/chain_recipe.hpp"
+#include "granular/study/chain_choices.hpp"
 
 namespace granular {
 
@@ -57,6 +59,20 @@ struct IprMapCell {
 
 /// Throws InvalidInput (naming the field) on a bad config, before any work starts.
 void validate(const IprMapConfig& config);
+
+/// The map's chain from a front end's chain choices (the ipr-map tool's chain options,
+/// granular.ipr_map's chain keywords), by one rule: the walls, and a quasiperiodic chain or a bead
+/// distribution (`types`, `type_masses`, `polydisperse`; `disorder` their rule) instead of the
+/// two-type draw, each a map of one cell (q = ξ = NaN) whose realizations are phases or draws. The
+/// two-type draw's own numbers (disorder, N, F0, R1, seed) are the caller's to set in c.chain.
+/// Throws InvalidInput naming the choice.
+void set_chain_kind(IprMapConfig& c, const ChainChoices& beads);
+
+/// The map's solver: `solver` fast | lapack | lapack-<stevr|stemr|stevd|steqr> for every mode; for
+/// a partial selection (c.selection set first: near/count or window) `method` lapack | bisect |
+/// arpack (none: lapack), which only a selection takes. Throws InvalidInput naming `solver` or
+/// `method`.
+void set_solver(IprMapConfig& c, const std::string& solver, const std::optional<std::string>& method);
 
 /// One cell per (q, ξ), q-major. Bit-identical for any thread count. Uses run.threads and
 /// run.progress (advanced once per chain solved); no checkpoints (the default map takes seconds).
