@@ -5,7 +5,8 @@ header and rows, its JSON beside it, a PNG that is a PNG).
 usage: run_examples.py SOURCE_DIR BUILD_DIR WORK_DIR
 
 What is not run, and why, is listed block by block in SKIP (a listed block that no page has any
-more fails the test, so the list cannot outlive its blocks); what runs smaller than printed (the
+more fails the test, so the list cannot outlive its blocks); a shell block neither run nor listed
+(no line that starts like a command a reader pastes) fails it too; what runs smaller than printed (the
 paper's whole study), in SMALLER — each says so on stdout. Paths: ./build/ and $B are the build tree,
 tools/ and data/ the source tree, and figures a page writes into docs/figures go to the scratch folder.
 
@@ -36,7 +37,11 @@ IS_THE_TEST_COMMAND = "the test command, which runs this test (CI runs it)"
 SKIP = {("README.md", "bash tools/install-deps.sh && cmake -S . -B build"): BUILDS_THE_TREE,
         ("README.md", "bash tools/install-deps.sh && bash tests/run-all.sh"): IS_THE_TEST_COMMAND,
         ("docs/site/install.md", "bash tools/install-deps.sh\ncmake -S . -B build"): BUILDS_THE_TREE,
-        ("docs/site/install.md", "bash tools/install-deps.sh && bash tests/run-all.sh"): IS_THE_TEST_COMMAND}
+        ("docs/site/install.md", "bash tools/install-deps.sh && bash tests/run-all.sh"): IS_THE_TEST_COMMAND,
+        # shell blocks that are not commands to paste (first line "": every such block of the page)
+        ("docs/benchmark-report.md", ""): "the benchmark script's report: every block of it is its output",
+        ("docs/python.md", "python3 -m granular.plot ipr-map ipr-map.csv"):
+            "the synopsis of granular.plot's command line, over files the page does not make"}
 # The paper's whole study (15,010 runs, minutes) at the same settings but a smaller N, T and ensemble.
 # Likewise the longest of the rest (tens of seconds each as printed), so that the test takes a minute.
 SMALLER = [(r"exponents --compare-paper(?!\S)",
@@ -58,8 +63,9 @@ SMALLER = [(r"exponents --compare-paper(?!\S)",
 
 def blocks(page):
     text = (source / page).read_text()
-    for match in re.finditer(r"^```([a-z]*)\n(.*?)^```", text, re.M | re.S):
-        yield match.group(1), match.group(2)
+    # an opening fence with any info string ({toctree} included), closed by a bare fence
+    for match in re.finditer(r"^```([^`\n]*)\n(.*?)^```[ \t]*$", text, re.M | re.S):
+        yield match.group(1).strip(), match.group(2)
 
 
 def shell_block(body):
@@ -162,7 +168,13 @@ for page in PAGES:
         elif language in ("", "sh", "bash", "shell") and skipped(page, body):
             print(f"{page}: {body.splitlines()[0][:90]} ... not run: {skipped(page, body)}")
             continue
-        elif language in ("", "sh", "bash", "shell") and shell_block(body):
+        elif language in ("", "sh", "bash", "shell") and not shell_block(body):
+            # a shell block that would not run: every block is a command to paste, or listed in SKIP
+            failures.append(f"{page}: the block starting {body.splitlines()[0][:90]!r} is not run (no ./build/, "
+                            "$B/, /usr/bin/python3 tools/plot, PYTHONPATH=build/, env/bin/ …): make it a command "
+                            "as a reader pastes it, or list it in SKIP with the reason")
+            continue
+        elif language in ("", "sh", "bash", "shell"):
             run_in, run_env = (pip_clone(), pip_env) if pip_block(body) else (work, shell_env)
             body = localize(body)
             command = ["bash", "-euo", "pipefail", "-c", body]
