@@ -20,6 +20,10 @@ if(BUILD_TESTING)
   # Every Markdown table renders as a table: as many cells per row as its delimiter row.
   add_test(NAME docs_tables COMMAND /usr/bin/python3 ${CMAKE_SOURCE_DIR}/tests/docs/check_tables.py ${CMAKE_SOURCE_DIR})
   set_tests_properties(docs_tables PROPERTIES LABELS docs)
+  # A page that names another page's file in prose links it (on the site a bare name is dead text).
+  add_test(NAME docs_page_links
+           COMMAND /usr/bin/python3 ${CMAKE_SOURCE_DIR}/tests/docs/check_page_links.py ${CMAKE_SOURCE_DIR})
+  set_tests_properties(docs_page_links PROPERTIES LABELS docs)
   # Every shell and Python block of the README and the docs pages, run as a reader would.
   add_test(NAME docs_examples
            COMMAND /usr/bin/python3 ${CMAKE_SOURCE_DIR}/tests/docs/run_examples.py ${CMAKE_SOURCE_DIR}

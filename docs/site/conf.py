@@ -32,6 +32,9 @@ nbsphinx_execute = "never"
 html_theme = "sphinx_rtd_theme" if __import__("importlib").util.find_spec("sphinx_rtd_theme") else "alabaster"
 html_title = "granular — disordered granular chains"
 html_show_sourcelink = False
+# The tools' --help blocks wrap instead of scrolling sideways (generate.py puts them in .tool-help).
+html_static_path = ["_static"]
+html_css_files = ["granular.css"]
 
 
 def _plain_docstring(app, what, name, obj, options, lines):

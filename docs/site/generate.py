@@ -28,8 +28,11 @@ for tool, summary in TOOLS.items():
     if not os.path.exists(exe):
         sys.exit(f"generate.py: {exe} is not built")
     helptext = subprocess.run([exe, "--help"], capture_output=True, text=True, check=True).stdout
+    # In a container of class tool-help, whose code wraps (_static/granular.css): --help lines are
+    # wider than the page's text column, and a reader should not scroll sideways through them.
     with open(os.path.join(pages, "tools", f"{tool}.md"), "w") as f:
-        f.write(f"# {tool}\n\n{summary[0].upper() + summary[1:]}.\n\n```text\n$ {tool} --help\n{helptext}```\n")
+        f.write(f"# {tool}\n\n{summary[0].upper() + summary[1:]}.\n\n"
+                f"````{{container}} tool-help\n```text\n$ {tool} --help\n{helptext}```\n````\n")
     index.append(f"| [{tool}]({tool}.md) | {summary} |")
     toc.append(tool)
 index += ["", "```{toctree}", ":hidden:", "", *toc, "```", ""]

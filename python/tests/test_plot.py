@@ -46,6 +46,11 @@ def test_linear_figures_from_results():
     check_axes(gp.spectrum(gr.spectrum(c, near=15, count=6, method="bisect")))
     check_axes(gp.ipr_map(gr.ipr_map(xi="0.3:0.6:0.1", q=(0.2, 0.8), N=30, realizations=3)))
     check_axes(gp.ipr_map(gr.ipr_map(xi="0.3:0.6:0.1", q=0.5, N=30, realizations=3), log_color=True))
+    # each panel names its chain and what it shows, with the scale of a quantity that has no unit
+    titles = [ax.get_title() for ax in gp.ipr_map(gr.ipr_map(xi="0.3:0.6:0.1", q=(0.2, 0.8), N=30,
+                                                              realizations=3)).axes if ax.get_title()]
+    assert titles == [f"Anderson (A), q = {q}\n" r"mean IPR $\langle P^{-1}\rangle$ (no unit: 1/N to 1)"
+                      for q in (0.2, 0.8)], titles
     check_axes(gp.correlations([gr.correlations(disorder="RDM2", q=0.8), gr.correlations(q=0.5)]))
     check_axes(gp.partial_spectrum_ipr([gr.spectrum(gr.anderson(N=n), near=15, count=5, method="bisect")
                                         for n in (100, 1000)]))

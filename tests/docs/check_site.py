@@ -1,12 +1,14 @@
 """The documentation site as a reader meets it: every internal link and anchor of every page
 resolves, and headless Chromium loads the index, a tool page, the C++ reference of
-granular::spectrum and the rendered tutorial, each showing what it should (screenshots kept), and
-the breathers page with its tables rendered as tables.
+granular::spectrum and the rendered tutorial, each showing what it should (screenshots kept), the
+breathers page with its tables rendered as tables, and every tool page at a 1024-px-wide window with
+no --help block (nor the page) needing a sideways scroll.
 
 usage: check_site.py HTML_DIR ARTIFACT_DIR
 """
 import html.parser
 import pathlib
+import re
 import shutil
 import subprocess
 import sys
@@ -81,7 +83,31 @@ else:
     tables = dom.stdout.count("<table")
     if tables < 3 or "| f [kHz] |" in dom.stdout:
         failures.append(f"chromium: breathers.html renders {tables} of its 3 tables (or one as pipe text)")
-    print(f"check_site: chromium loaded {len(checks) + 1} pages; screenshots in {artifacts}")
+    # The tool pages need no sideways scroll at a 1024-px-wide window: their --help blocks wrap. A copy
+    # of each page beside it (its styles load) reports, once laid out, the blocks wider than their box.
+    measure = """<script>window.addEventListener("load", () => {
+      const blocks = [...document.querySelectorAll(".tool-help pre")];
+      const wide = blocks.filter(b => b.scrollWidth > b.clientWidth || b.parentElement.scrollWidth > b.parentElement.clientWidth);
+      const page = document.documentElement.scrollWidth > document.documentElement.clientWidth;
+      document.body.setAttribute("data-width-check", `${blocks.length} ${wide.length} ${page ? 1 : 0}`);
+    });</script>"""
+    narrow = [arg if not arg.startswith("--window-size") else "--window-size=1024,800" for arg in common]
+    tool_pages = sorted(p for p in (site / "tools").glob("*.html") if p.name != "index.html")
+    for tool_page in tool_pages:
+        probe = tool_page.with_name("width-check-" + tool_page.name)
+        probe.write_text(tool_page.read_text().replace("</body>", measure + "</body>"))
+        try:
+            dom = subprocess.run(narrow + ["--dump-dom", probe.as_uri()], capture_output=True, text=True, timeout=120)
+        finally:
+            probe.unlink()
+        found = re.search(r'data-width-check="(\d+) (\d+) (\d)"', dom.stdout)
+        if not found or found.group(1) == "0":
+            failures.append(f"chromium: {tool_page.name}: no --help block measured (exit {dom.returncode})")
+        elif found.group(2) != "0" or found.group(3) != "0":
+            failures.append(f"chromium: tools/{tool_page.name} needs a sideways scroll at 1024 px: "
+                            f"{found.group(2)} of {found.group(1)} --help blocks wider than their box"
+                            + (", the page wider than the window" if found.group(3) == "1" else ""))
+    print(f"check_site: chromium loaded {len(checks) + 1 + len(tool_pages)} pages; screenshots in {artifacts}")
 
 if failures:
     print("\n".join(failures[:50]), file=sys.stderr)

@@ -4,15 +4,25 @@ header and rows, its JSON beside it, a PNG that is a PNG).
 
 usage: run_examples.py SOURCE_DIR BUILD_DIR WORK_DIR
 
-What is not run, and why, is listed in SKIP; what runs smaller than printed (the paper's whole
-study), in SMALLER — each says so on stdout. Paths: ./build/ and $B are the build tree, tools/ and
-data/ the source tree, and figures a page writes into docs/figures go to the scratch folder.
+What is not run, and why, is listed block by block in SKIP (a listed block that no page has any
+more fails the test, so the list cannot outlive its blocks); a shell block neither run nor listed
+(no line that starts like a command a reader pastes) fails it too; what runs smaller than printed (the
+paper's whole study), in SMALLER — each says so on stdout. Paths: ./build/ and $B are the build tree,
+tools/ and data/ the source tree, and figures a page writes into docs/figures go to the scratch folder.
+
+The pip blocks (`python3 -m venv … env && env/bin/pip install --no-build-isolation .`, then
+`env/bin/python …`) run as printed in a copy of the repository's package files, offline
+(PIP_NO_INDEX=1: every dependency is a Debian package the venv sees) and with HOME in the scratch
+folder (`ipykernel install --user`); pip packages this build's extension
+(GRANULAR_PREBUILT_EXTENSION) instead of having CMake build one for minutes — the test
+python_pip_install_build (ctest -L manual) runs that build.
 """
 import json
 import os
 import pathlib
 import re
 import shlex
+import shutil
 import subprocess
 import sys
 import time
@@ -20,10 +30,18 @@ import time
 source, build, work = (pathlib.Path(p).resolve() for p in sys.argv[1:4])
 PAGES = ["README.md", *sorted(str(p.relative_to(source)) for p in (source / "docs").glob("*.md")),
          *sorted(str(p.relative_to(source)) for p in (source / "docs" / "site").glob("*.md"))]
-# Blocks that set up or test the toolkit itself: covered by CI running them (install-deps, the test
-# command), by python_pip_install_tutorial (pip), or not meant to be run as written (performance scripts).
-SKIP = ("install-deps.sh", "pip install", "tests/run-all.sh", "run-benchmarks.sh", "python_vs_cpp.sh", "cmake ",
-        "jupyter", "ipykernel", "valgrind", "perf ", "/usr/bin/time", "mpirun -np 4", "git ")
+# The blocks not run, each by its page and first line, with the reason: they build or test the
+# very tree this test runs from, which CI does by running them (.ci/run: the test command).
+BUILDS_THE_TREE = "configures and builds ./build, the tree this test runs in (CI builds it so)"
+IS_THE_TEST_COMMAND = "the test command, which runs this test (CI runs it)"
+SKIP = {("README.md", "bash tools/install-deps.sh && cmake -S . -B build"): BUILDS_THE_TREE,
+        ("README.md", "bash tools/install-deps.sh && bash tests/run-all.sh"): IS_THE_TEST_COMMAND,
+        ("docs/site/install.md", "bash tools/install-deps.sh\ncmake -S . -B build"): BUILDS_THE_TREE,
+        ("docs/site/install.md", "bash tools/install-deps.sh && bash tests/run-all.sh"): IS_THE_TEST_COMMAND,
+        # shell blocks that are not commands to paste (first line "": every such block of the page)
+        ("docs/benchmark-report.md", ""): "the benchmark script's report: every block of it is its output",
+        ("docs/python.md", "python3 -m granular.plot ipr-map ipr-map.csv"):
+            "the synopsis of granular.plot's command line, over files the page does not make"}
 # The paper's whole study (15,010 runs, minutes) at the same settings but a smaller N, T and ensemble.
 # Likewise the longest of the rest (tens of seconds each as printed), so that the test takes a minute.
 SMALLER = [(r"exponents --compare-paper(?!\S)",
@@ -45,15 +63,43 @@ SMALLER = [(r"exponents --compare-paper(?!\S)",
 
 def blocks(page):
     text = (source / page).read_text()
-    for match in re.finditer(r"^```([a-z]*)\n(.*?)^```", text, re.M | re.S):
-        yield match.group(1), match.group(2)
+    # an opening fence with any info string ({toctree} included), closed by a bare fence
+    for match in re.finditer(r"^```([^`\n]*)\n(.*?)^```[ \t]*$", text, re.M | re.S):
+        yield match.group(1).strip(), match.group(2)
 
 
 def shell_block(body):
     lines = [line for line in body.splitlines() if line.strip()]
-    runnable = any(re.match(r"\s*(\./build/|\$B/|/usr/bin/python3 tools/plot|PYTHONPATH=build/|mpirun|B=)", line)
-                   for line in lines)
-    return runnable and not any(word in body for word in SKIP)
+    return any(re.match(r"\s*(\./build/|\$B/|/usr/bin/python3 (tools/plot|-m venv)|PYTHONPATH=build/|mpirun|B=|env/bin/)",
+                        line) for line in lines)
+
+
+def skipped(page, body):
+    for (skip_page, start), reason in SKIP.items():
+        if page == skip_page and body.startswith(start):
+            unused_skips.discard((skip_page, start))
+            return reason
+    return None
+
+
+def pip_block(body):
+    """A block of the pip route: it makes or uses the venv `env` of the repository's folder."""
+    return re.search(r"-m venv\b|(?<![\w/])env/bin/", body) is not None
+
+
+def pip_clone():
+    """The folder a reader runs the pip blocks in: a copy of what `pip install .` reads (once)."""
+    clone = work / "pip-clone"
+    if not (clone / "pyproject.toml").exists():
+        for name in ("pyproject.toml", "setup.py", "CMakeLists.txt", "README.md", "LICENSE", "python"):
+            path = source / name
+            if path.is_dir():
+                shutil.copytree(path, clone / name, ignore=shutil.ignore_patterns("__pycache__", "*.egg-info"))
+            else:
+                clone.mkdir(parents=True, exist_ok=True)
+                shutil.copy2(path, clone / name)
+        print("  pip blocks: run in a copy of the package files, offline, packaging this build's extension")
+    return clone
 
 
 def localize(body):
@@ -97,11 +143,18 @@ def check(path, kind):
 
 
 work.mkdir(parents=True, exist_ok=True)
+shutil.rmtree(work / "pip-clone", ignore_errors=True)  # this run's sources, not a previous run's copy
 # Shell blocks run as pasted into a clean shell: no PYTHONPATH unless the block sets it (a command
 # that needs granular's build tree must say so). Python blocks are a session that has granular.
 shell_env = {k: v for k, v in os.environ.items() if k != "PYTHONPATH"}
 shell_env.update(MPLBACKEND="Agg", OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1", OMP_NUM_THREADS="2")
 env = dict(shell_env, PYTHONPATH=str(build / "python"))
+extension = sorted((build / "python" / "granular").glob("_core*.so"))
+if not extension:
+    sys.exit(f"run_examples: no granular/_core*.so under {build / 'python'}: build granular_python first")
+pip_env = dict(shell_env, PIP_NO_INDEX="1", PIP_DISABLE_PIP_VERSION_CHECK="1", HOME=str(work / "home"),
+               GRANULAR_PREBUILT_EXTENSION=str(extension[0]))
+unused_skips = set(SKIP)
 # A page's Python blocks continue each other (as in a session), after the imports they assume.
 PRELUDE = "import numpy as np\nimport granular as gr\nimport granular\n"
 failures, count, started = [], 0, time.monotonic()
@@ -111,8 +164,18 @@ for page in PAGES:
         if language == "python":
             python_so_far += body
             command = ["/usr/bin/python3", "-c", python_so_far]
-            label = "python block"
-        elif language in ("", "sh", "bash", "shell") and shell_block(body):
+            label, run_in, run_env = "python block", work, env
+        elif language in ("", "sh", "bash", "shell") and skipped(page, body):
+            print(f"{page}: {body.splitlines()[0][:90]} ... not run: {skipped(page, body)}")
+            continue
+        elif language in ("", "sh", "bash", "shell") and not shell_block(body):
+            # a shell block that would not run: every block is a command to paste, or listed in SKIP
+            failures.append(f"{page}: the block starting {body.splitlines()[0][:90]!r} is not run (no ./build/, "
+                            "$B/, /usr/bin/python3 tools/plot, PYTHONPATH=build/, env/bin/ …): make it a command "
+                            "as a reader pastes it, or list it in SKIP with the reason")
+            continue
+        elif language in ("", "sh", "bash", "shell"):
+            run_in, run_env = (pip_clone(), pip_env) if pip_block(body) else (work, shell_env)
             body = localize(body)
             command = ["bash", "-euo", "pipefail", "-c", body]
             label = body.strip().splitlines()[0][:90]
@@ -120,8 +183,7 @@ for page in PAGES:
             continue
         count += 1
         t0 = time.monotonic()
-        done = subprocess.run(command, cwd=work, env=env if language == "python" else shell_env, capture_output=True,
-                              text=True, timeout=600)
+        done = subprocess.run(command, cwd=run_in, env=run_env, capture_output=True, text=True, timeout=600)
         print(f"{page}: {label} ... exit {done.returncode} in {time.monotonic() - t0:.1f} s", flush=True)
         if done.returncode != 0:
             failures.append(f"{page}: {label}: exit {done.returncode}\n{done.stderr[-1500:]}")
@@ -130,7 +192,9 @@ for page in PAGES:
             problem = check(path, kind)
             if problem:
                 failures.append(f"{page}: {label}: {problem}")
-print(f"run_examples: {count} blocks in {time.monotonic() - started:.0f} s")
+print(f"run_examples: {count} blocks in {time.monotonic() - started:.0f} s, {len(SKIP)} listed blocks not run")
+for page, start in sorted(unused_skips):
+    failures.append(f"SKIP lists a block of {page} starting {start!r} that the page no longer has: remove it")
 if failures:
     print("\n".join(failures), file=sys.stderr)
     sys.exit(f"run_examples: {len(failures)} failure(s)")

@@ -9,6 +9,10 @@ from . import _io
 from ._style import EDGE_LABELS, chain_title, figure, log_ticks, mark_edges, style
 
 
+# The disorders' names in panel titles (q: the probability of each's first choice, docs/physics.md).
+KIND_NAMES = {"A": "Anderson (A)", "RDM1": "random dimer RDM1", "RDM2": "random dimer RDM2", "h": "homogeneous"}
+
+
 def _ipr_map_data(source):
     if _io.is_path(source):
         rows = _io.read_csv(source)
@@ -70,7 +74,10 @@ def ipr_map(source, band_edges=True, log_color=False):
                 crossing = [np.searchsorted(np.nan_to_num(cell_freq[j], nan=np.inf), edge[j]) + 0.5
                             for j in range(len(xis))]
                 ax.plot(xis, crossing, ls=ls, color="white", lw=1.3, label=f"mean f = {EDGE_LABELS[name]}")
-            ax.set_title(f"{disorder}, q = {q:g}")
+            # what the panel shows, and its scale: the IPR has no unit (1/N for a mode spread over
+            # the chain, 1 for a mode on one bead)
+            ax.set_title(f"{KIND_NAMES.get(disorder, disorder)}, q = {q:g}\n"
+                         r"mean IPR $\langle P^{-1}\rangle$ (no unit: 1/N to 1)", fontsize=10)
             ax.set_xlabel(r"size ratio $\xi = R_2/R_1$")
             ax.set_xlim(x_edges[0], x_edges[-1])
         axes[0].set_ylabel("mode number (by increasing frequency)")
@@ -78,7 +85,7 @@ def ipr_map(source, band_edges=True, log_color=False):
             axes[0].legend(loc="upper left", fontsize=9, labelcolor="white")
         fig.colorbar(image, ax=list(axes), label=r"mean IPR $\langle P^{-1}\rangle$", pad=0.02)
         if meta:
-            fig.suptitle(f"N = {meta.get('N')}, $F_0$ = {meta.get('F0_N'):g} N, {meta.get('realizations')} "
+            fig.suptitle(f"N = {meta.get('N')} beads, $F_0$ = {meta.get('F0_N'):g} N, {meta.get('realizations')} "
                          f"realizations (seed {meta.get('seed')})", fontsize=11)
     return fig
 
