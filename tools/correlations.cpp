@@ -41,7 +41,7 @@ int main(int argc, char** argv) {
     tool::Metadata meta("correlations", argc, argv);
     config.chain.disorder = parse_disorder(disorder);
     beads.disorder = disorder;  // the rule of --types
-    config.chain.distribution = bead_distribution(beads);
+    set_chain_kind(config, beads);
     // The default must fit short chains (N = 2 has only d = 0, 1); a value typed is checked as typed.
     if (max_distance->count() == 0 && config.chain.N >= 2 && config.max_distance > config.chain.N - 1)
       config.max_distance = config.chain.N - 1;

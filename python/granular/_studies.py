@@ -307,11 +307,15 @@ class Correlations:
 
 
 def correlations(*, disorder="A", q=0.5, N=100, realizations=100, seed=1, max_distance=10, threads=0,
-                 progress=False):
+                 progress=False, types=None, type_masses=None, polydisperse=None):
     """Ensemble mean and spread of the Pearson coefficient rho(d) of bead types (type 1 -> 0, type 2 -> 1) with
     their cyclic shift by d, beside the infinite-chain formula: the correlations tool.
 
     disorder: 'A' | 'RDM1' | 'RDM2'; q in [0, 1]; N beads; realizations, seed; max_distance < N
+    types, type_masses, polydisperse: None, or chains of k bead types 'R1:P1,R2:P2,...' (radius [m]: probability),
+        of k masses 'M1:P1,...' [kg], or of radii drawn per bead 'uniform:LO:HI' or 'normal:MEAN:SD:MIN' [m]
+        instead (the tool's --types, --type-masses, --polydisperse; disorder is their rule): rho(d) of the bead
+        masses
     threads: worker threads (0: every core); progress: draw a progress bar
     Returns a granular.Correlations (distance, rho_mean, rho_std, rho_theory, used, metadata)."""
     c = _core.CorrelationConfig()
@@ -323,4 +327,6 @@ def correlations(*, disorder="A", q=0.5, N=100, realizations=100, seed=1, max_di
     recipe.seed = _core._size(seed, "seed")
     c.chain = recipe
     c.max_distance = _core._size(max_distance, "max_distance")
-    return Correlations(_core._correlations(c, _run(threads, progress=progress)))
+    beads = _core.ChainChoices()
+    _chain_choices(beads, disorder=disorder, types=types, type_masses=type_masses, polydisperse=polydisperse)
+    return Correlations(_core._correlations(c, beads, _run(threads, progress=progress)))

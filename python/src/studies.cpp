@@ -91,8 +91,11 @@ py::dict localization(const PyChain* chain, const ChainChoices& choices, const L
                 std::move(scan.idos), std::move(scan.dos), scan.beads, meta);
 }
 
-py::dict correlations(const CorrelationConfig& c, const PyRun& options) {
+/// `c` as granular/_studies.py fills it; `beads`: k types or polydisperse radii instead of the two types,
+/// by the correlations tool's rule.
+py::dict correlations(CorrelationConfig c, const ChainChoices& beads, const PyRun& options) {
   options.thread_request();
+  set_chain_kind(c, beads);
   validate(c);
   CorrelationResult result;
   run_long("correlations", c.realizations, options, [&](const RunOptions& run) { result = correlation_study(c, run); });

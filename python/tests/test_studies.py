@@ -242,3 +242,19 @@ def test_localization_takes_a_radii_file_as_the_tool(tools, tmp_path):
     scan = gr.localization(radii=str(radii), f="1:30:1", segments=2)
     assert_identical(scan.lyapunov, csv["lyapunov"])
     assert scan.metadata["chain"] == meta["chain"]
+
+
+@pytest.mark.parametrize("keywords, flags", [
+    ({"types": "4.76e-3:0.5,3e-3:0.3,2e-3:0.2"}, ["--types", "4.76e-3:0.5,3e-3:0.3,2e-3:0.2"]),
+    ({"polydisperse": "normal:4.5e-3:3e-4:3e-3", "disorder": "RDM2"},
+     ["--polydisperse", "normal:4.5e-3:3e-4:3e-3", "--disorder", "RDM2"]),
+])
+def test_correlations_take_every_chain_kind_of_their_tool(tools, keywords, flags):
+    """k types and polydisperse radii (rho(d) of the bead masses), as the correlations tool's --types and
+    --polydisperse: the same numbers and parameters."""
+    csv, meta = tools.run("correlations", "--N", "60", "--realizations", "5", "--seed", "2", "--max-distance", "6",
+                          *flags, "--quiet")
+    result = gr.correlations(N=60, realizations=5, seed=2, max_distance=6, **keywords)
+    for key in ("rho_mean", "rho_std"):
+        assert_identical(getattr(result, key), csv[key])
+    assert result.metadata["parameters"] == meta["parameters"]

@@ -11,6 +11,10 @@
 
 namespace granular {
 
+void set_chain_kind(CorrelationConfig& c, const ChainChoices& beads) {
+  c.chain.distribution = bead_distribution(beads);
+}
+
 void validate(const CorrelationConfig& c) {
   const ChainRecipe& chain = c.chain;
   if (!chain.drawn()) throw InvalidInput("chain", ": an ensemble draws its chains; not a given chain");

@@ -11,6 +11,7 @@
 
 #include "granular/ensemble/run_options.hpp"
 #include "granular/model/chain_recipe.hpp"
+#include "granular/study/chain_choices.hpp"
 
 namespace granular {
 
@@ -31,6 +32,12 @@ struct CorrelationResult {
 
 /// Throws InvalidInput (naming the field) on a bad config.
 void validate(const CorrelationConfig& config);
+
+/// The chains' kind from a front end's chain choices (the correlations tool's options,
+/// granular.correlations' keywords), by one rule: a bead distribution (`types`, `type_masses`,
+/// `polydisperse`; `disorder` their rule) instead of the two types. Throws InvalidInput naming the
+/// choice.
+void set_chain_kind(CorrelationConfig& c, const ChainChoices& beads);
 
 /// Bit-identical for any thread count (run.threads; run.progress advanced per realization).
 /// Throws InvalidInput when every realization has one bead type only.
