@@ -14,6 +14,7 @@
 
 #include "granular/dynamics/damping.hpp"
 #include "granular/dynamics/initial_conditions.hpp"
+#include "granular/dynamics/lyapunov_spectrum.hpp"
 #include "granular/dynamics/observables.hpp"
 #include "granular/dynamics/propagator.hpp"
 #include "granular/dynamics/tangent_map.hpp"
@@ -149,6 +150,43 @@ void BM_CostRatioToSaba2c(benchmark::State& state) {
   state.counters["saba2c_us_per_step"] = 1e6 * base_time / steps;
 }
 BENCHMARK(BM_CostRatioToSaba2c)->DenseRange(0, 3)->ArgName("variant")->Unit(benchmark::kMillisecond)->MinTime(1.0);
+
+// The Lyapunov spectrum's cost per vector (issue 44's budget: k vectors at most (1 + 0.7 k) × a
+// plain step, plus the QR): k deviation vectors on the tangent map, re-orthonormalized by QR every
+// 10 steps, against plain SABA2C steps interleaved as above (CPU time of this thread). `ratio` is
+// the spectrum's step over a plain step; `budget` is 1 + 0.7 k.
+void BM_LyapunovSpectrumCostRatio(benchmark::State& state) {
+  const auto k = static_cast<std::size_t>(state.range(0));
+  auto base = make_splitting_propagator(paper_law(), paper_chain(), saba2c(), tau, paper_kick(), {false});
+  LyapunovSpectrum spectrum(paper_law(), paper_chain(), saba2c(), tau, paper_kick(),
+                            {.vectors = k, .orthonormalize_every = 10});
+  base->advance(1000);
+  spectrum.advance(1000);
+  double base_time = 0, spectrum_time = 0;
+  for (auto _ : state) {
+    const double t0 = thread_seconds();
+    base->advance(100);
+    const double t1 = thread_seconds();
+    spectrum.advance(100);
+    const double t2 = thread_seconds();
+    base_time += t1 - t0;
+    spectrum_time += t2 - t1;
+  }
+  const double steps = 100.0 * static_cast<double>(state.iterations());
+  state.counters["ratio"] = spectrum_time / base_time;
+  state.counters["budget"] = 1 + 0.7 * static_cast<double>(k);
+  state.counters["us_per_step"] = 1e6 * spectrum_time / steps;
+  state.counters["saba2c_us_per_step"] = 1e6 * base_time / steps;
+}
+BENCHMARK(BM_LyapunovSpectrumCostRatio)
+    ->Arg(1)
+    ->Arg(2)
+    ->Arg(4)
+    ->Arg(8)
+    ->Arg(16)
+    ->ArgName("vectors")
+    ->Unit(benchmark::kMillisecond)
+    ->MinTime(1.0);
 
 // One realization: 10 000 steps of SABA2C, with or without the active window; the energy error
 // is the max over 100 uniform samples (which also cost 100 extra corrector kicks).
