@@ -204,17 +204,7 @@ void AlignmentIndices::renormalize() {
   renormalized_at_ = tangent_->steps_done();
 }
 
-std::vector<State> AlignmentIndices::vectors() const {
-  std::vector<State> out;
-  for (std::size_t j = 0; j < config_.vectors; ++j) {
-    const auto du = tangent_->deviation_displacement(j), dv = tangent_->deviation_velocity(j);
-    State s(beads_);
-    std::copy(du.begin(), du.end(), s.u.begin());
-    std::copy(dv.begin(), dv.end(), s.v.begin());
-    out.push_back(std::move(s));
-  }
-  return out;
-}
+std::vector<State> AlignmentIndices::vectors() const { return tangent_->deviations(); }
 
 AlignmentSeries alignment_series(const ForceLaw& law, const Chain& chain, const SplittingScheme& scheme,
                                  double time_step, const State& initial, const AlignmentConfig& config,

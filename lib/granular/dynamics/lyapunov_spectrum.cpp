@@ -119,16 +119,6 @@ std::vector<double> LyapunovSpectrum::exponents() const {
   return out;
 }
 
-std::vector<State> LyapunovSpectrum::vectors() const {
-  std::vector<State> out;
-  for (std::size_t j = 0; j < config_.vectors; ++j) {
-    const auto du = tangent_->deviation_displacement(j), dv = tangent_->deviation_velocity(j);
-    State s(beads_);
-    std::copy(du.begin(), du.end(), s.u.begin());
-    std::copy(dv.begin(), dv.end(), s.v.begin());
-    out.push_back(std::move(s));
-  }
-  return out;
-}
+std::vector<State> LyapunovSpectrum::vectors() const { return tangent_->deviations(); }
 
 }  // namespace granular

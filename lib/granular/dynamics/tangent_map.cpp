@@ -367,6 +367,20 @@ std::vector<double> TangentPropagator::deviation_distribution() const {
   return w;
 }
 
+State TangentPropagator::deviation(std::size_t j) const {
+  const auto du = deviation_displacement(j), dv = deviation_velocity(j);
+  State s(du.size());
+  std::copy(du.begin(), du.end(), s.u.begin());
+  std::copy(dv.begin(), dv.end(), s.v.begin());
+  return s;
+}
+
+std::vector<State> TangentPropagator::deviations() const {
+  std::vector<State> out;
+  for (std::size_t j = 0; j < deviation_count(); ++j) out.push_back(deviation(j));
+  return out;
+}
+
 TangentImages propagate_deviations(const ForceLaw& law, const Chain& chain, const SplittingScheme& scheme,
                                    double time_step, std::size_t steps, const State& initial,
                                    const std::vector<State>& deviations) {
@@ -376,11 +390,7 @@ TangentImages propagate_deviations(const ForceLaw& law, const Chain& chain, cons
     auto p =
         make_tangent_propagator(law, chain, scheme, time_step, initial, w, {.enabled = true, .renormalize_every = 0});
     p->advance(steps);
-    const auto du = p->deviation_displacement(), dv = p->deviation_velocity();
-    State image(chain.size());
-    std::copy(du.begin(), du.end(), image.u.begin());
-    std::copy(dv.begin(), dv.end(), image.v.begin());
-    out.deviations.push_back(std::move(image));
+    out.deviations.push_back(p->deviation(0));
     if (out.deviations.size() == 1) out.orbit = p->state();
   }
   if (deviations.empty()) {

@@ -40,6 +40,10 @@ class TangentPropagator : public Propagator {
   /// δu and δv of vector j < deviation_count() (j = 0: the vector above).
   virtual std::span<const double> deviation_displacement(std::size_t j) const = 0;
   virtual std::span<const double> deviation_velocity(std::size_t j) const = 0;
+  /// Vector j < deviation_count() as a State (a copy: δu in u, δv in v).
+  State deviation(std::size_t j) const;
+  /// Every vector, deviation(0) … deviation(deviation_count() − 1).
+  std::vector<State> deviations() const;
   /// Replaces vector j (N values each): what a re-orthonormalization writes back.
   virtual void set_deviation(std::size_t j, std::span<const double> du, std::span<const double> dv) = 0;
   /// ln(‖w(t)‖/‖w(0)‖) including every renormalization so far.

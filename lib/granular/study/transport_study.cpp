@@ -88,7 +88,6 @@ void validate_before_time_step(const TransportCase& c) {
     throw InvalidInput("kappa", " " + format_number(c.criterion.kappa) + ": must be finite and > 0");
   if (!(c.criterion.t_start >= 0) || !std::isfinite(c.criterion.t_start))
     throw InvalidInput("t_star", " " + format_number(c.criterion.t_start) + " s: must be finite and >= 0");
-  if (c.fit && c.bootstrap.resamples < 2) throw InvalidInput("bootstrap", ": need at least 2 resamples");
   if (c.kick == Kick::mode) validate(mode_of(c), n);
   if (c.kick == Kick::mode && !(c.chain.F0 > 0))  // found before any run, not in realization 0
     throw InvalidInput("precompression", " " + format_number(c.chain.F0) +
