@@ -34,7 +34,7 @@ int main(int argc, char** argv) {
   tool::add_kicked_case_options(app, options);
   tool::add_long_run_options(app, run);
   tool::add_output_option(app, output);
-  tool::add_spreading_outputs(app, more);
+  tool::add_spreading_outputs(app, more, options.run);
 
   return tool::run(app, argc, argv,
                    [&] {
@@ -46,7 +46,7 @@ int main(int argc, char** argv) {
                      TransportCase& c = k.c;
                      c.profile_realizations = more.profile ? c.realizations : 0;
                      const SpreadingRunConfig& d = c.dynamics;
-                     tool::apply(more, c);
+                     tool::ask_outputs(more, options.run, c);
                      if (!more.energy_map_file.empty()) load_hdf5_writer();  // before the run, not after it
                      const nlohmann::json step_rule = tool::validate_and_settle(c);
                      SpreadingPaths paths = spreading_paths(output, ensemble, more.profile, !d.forces.sites.empty());
@@ -56,7 +56,8 @@ int main(int argc, char** argv) {
                      const auto claim = tool::claim_output(output, meta.command(),
                                                            ensemble ? std::optional<LongRunChoices>(run) : std::nullopt);
                      check_outputs(paths.all(), "--output/--final-state/--energy-map/--spectrum");
-                     const bool single = more.single() || !options.deviation.empty();  // a run of its own
+                     const bool single =
+                         tool::single_outputs(more, c) || !options.deviation.empty();  // a run of its own
 
                      // Read before the run: resuming rewrites the checkpoint under this code's name.
                      const nlohmann::json resumed = ensemble ? resumed_code(run, {paths.checkpoint}) : nullptr;

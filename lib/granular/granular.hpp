@@ -63,7 +63,7 @@
 #include "granular/study/resumed_checkpoint.hpp"
 #include "granular/study/spectrum_file.hpp"
 #include "granular/study/spreading_files.hpp"
-#include "granular/study/spreading_output_choices.hpp"
+#include "granular/study/spreading_outputs.hpp"
 #include "granular/study/spreading_run.hpp"
 #include "granular/study/time_step_rule.hpp"
 #include "granular/study/transport_parameters.hpp"

@@ -18,8 +18,10 @@ from ._schema import TableKeywords, split_keywords, with_keywords
 # table's help; those below are the ones Python takes in forms of its own.
 _CASE = _core.TransportCase()
 _OWN = ("beta", "site", "time_step", "fit", "fit_begin", "fit_end")
-_RUN = TableKeywords(_CASE, skip=_OWN + ("deviation_samples",))  # an ensemble: no deviation vector's file
-_ONE_RUN = TableKeywords(_CASE, skip=_OWN)  # granular.spreading: with deviation_samples
+_OUTPUT_ROWS = tuple(_core._spreading_output_parameters)  # one run's force series, energy map and g(nu)
+_RUN = TableKeywords(_CASE, skip=_OWN + _OUTPUT_ROWS + ("deviation_samples",))  # an ensemble: no deviation vector
+_ONE_RUN = TableKeywords(_CASE, skip=_OWN + _OUTPUT_ROWS)  # granular.spreading: with deviation_samples
+_OUTPUTS = TableKeywords(_CASE, only=_OUTPUT_ROWS, skip=("forces_at",))  # forces_at: a list of beads here
 
 _DYNAMICS_DOC = """\
     beta: velocity kick [m/s] (the paper's 8e-3 for every F0) or 'match' (the energy of alpha on each chain)
@@ -110,29 +112,26 @@ def _run(threads=0, checkpoint=None, resume=False, resume_other_version=False, p
 
 
 def spreading(chain, *, ic="displacement", beta=_CASE.beta, site=None, dt=None, fit=(_CASE.fit_begin, _CASE.fit_end),
-              forces_at=None, force_samples=1000, energy_map=False, map_samples=500, map_stride=1,
-              spectral_density=False, spectrum_samples=2000, spectrum_of="displacement", progress=False, mode=0,
-              mode_khz=-1.0, energy=0.0, **run):
+              forces_at=None, progress=False, mode=0, mode_khz=-1.0, energy=0.0, **run):
     if not isinstance(chain, _core.Chain):
         raise TypeError(f"spreading: chain must be a granular.Chain, got {type(chain).__name__}")
-    (run,) = split_keywords(run, [_ONE_RUN], "spreading")
+    run, outputs = split_keywords(run, [_ONE_RUN, _OUTPUTS], "spreading")
     case = _case(_ONE_RUN, run, beta, site, dt, fit)
-    outputs = _core.SpreadingOutputChoices()  # the optional observers, checked by the tools' rule in C++
+    _OUTPUTS.set(case, outputs)  # the optional observers: rows of the case, checked with it in C++
+    beads = []
     if forces_at is not None:
         beads = double_vector(forces_at, "forces_at")
         for s in beads:
             if s != math.floor(s) or abs(s) > 2**62:
                 raise ValueError(f"forces_at {_core._format_number(s)}: not a bead number (beads count from 1)")
-        outputs.forces_at = [int(s) for s in beads]
-    outputs.force_samples, outputs.energy_map, outputs.map_samples = force_samples, bool(energy_map), map_samples
-    outputs.map_stride, outputs.spectral_density = map_stride, bool(spectral_density)
-    outputs.spectrum_samples, outputs.spectrum_of = spectrum_samples, spectrum_of
+        beads = [int(s) for s in beads]
+        case.forces_at = ",".join(str(s) for s in beads)  # the row's text form: beads counting from 1
     # one realization: the chain's
     case.realizations, case.profile_realizations = 1, 0
     case.mode.mode, case.mode.mode_khz, case.mode.energy = mode, mode_khz, energy
     case.kick = ic
-    raw = _core._spreading(chain, case, outputs, _run(progress=progress))
-    return _spreading_run(raw, chain.N, outputs, case.deviation_samples)
+    raw = _core._spreading(chain, case, _run(progress=progress))
+    return _spreading_run(raw, chain.N, case, beads)
 
 
 def _array_or_none(x):
@@ -144,8 +143,9 @@ def _series(t, site, name, values, shape):
     return {"t": t, "site": np.asarray(site, dtype=np.int64), name: np.asarray(values, dtype=float).reshape(shape)}
 
 
-def _spreading_run(raw, N, outputs, deviation_samples):
-    """The granular.SpreadingRun of _core._spreading's result (run: a _core._SpreadingResult)."""
+def _spreading_run(raw, N, case, sites):
+    """The granular.SpreadingRun of _core._spreading's result (run: a _core._SpreadingResult) of `case`, its forces
+    recorded at beads `sites` (counting from 1)."""
     r = raw["run"]
     out = dict(raw["exponents"])
     out["warnings"] = raw["warnings"]
@@ -156,21 +156,20 @@ def _spreading_run(raw, N, outputs, deviation_samples):
     # Beyond the paper: the columns `dissipated` and `mle` of the tool's CSV, and its --deviation file.
     out["dissipated"], out["mle"] = _array_or_none(r.dissipated), _array_or_none(r.mle)
     out["deviation"] = None
-    if deviation_samples > 0:
+    if case.deviation_samples > 0:
         t = r.deviation_t
         out["deviation"] = _series(t, np.arange(1, N + 1), "share", r.deviation, (len(t), N))
-    sites = outputs.forces_at
     out["forces"] = None
     if sites:
         t = r.force_t
         out["forces"] = _series(t, sites, "force", r.forces, (len(sites), len(t)))
     out["energy_map"] = None
-    if outputs.energy_map:
+    if case.energy_map:
         t, columns = r.map_t, r.map_columns
-        out["energy_map"] = _series(t, np.arange(columns) * outputs.map_stride + 1, "energy", r.map_energy,
+        out["energy_map"] = _series(t, np.arange(columns) * case.map_stride + 1, "energy", r.map_energy,
                                     (len(t), columns))
     out["spectral_density"] = None
-    if outputs.spectral_density:
+    if case.spectral_density:
         out["spectral_density"] = {"freq_khz": r.spectrum_khz, "g": r.spectrum}
     for name in ("wall_energy", "reached_walls", "steps", "seconds"):
         out[name] = getattr(r, name)
@@ -185,11 +184,9 @@ spreading.__doc__ = (
     "    ic: 'displacement' (u = alpha at the site) | 'velocity' (v = beta at the site) | 'mode' (a "
     "linear mode of the chain, u = M^-1/2 w from rest: number `mode` 1..N or the one nearest `mode_khz` "
     "[kHz], total energy `energy` [J] or, without it, largest |u_n| = alpha)\n" + _DYNAMICS_DOC +
-    "    forces_at: beads (from 1) whose force [N] is recorded at force_samples uniform times (each count of "
-    "samples >= 2 and map_stride >= 1, checked even when its output is not asked, as the tool's)\n"
-    "    energy_map: record E_n(t) at map_samples uniform times, map_stride beads per column\n"
-    "    spectral_density: g(nu) of u_n(t) (spectrum_of='displacement', the paper's) or of v_n(t) ('velocity') "
-    "sampled at spectrum_samples uniform times\n"
+    "    forces_at: None, or beads (a list, counting from 1) whose force [N] is recorded at force_samples uniform "
+    "times; the outputs' other keywords below (each count of samples >= 2 and map_stride >= 1, checked even when "
+    "its output is not asked, as the tool's)\n"
     "Returns a granular.SpreadingRun: t [s], m2 and m2_centroid (second moments about the kicked bead and about "
     "the energy centroid [beads^2]), ipr (P^-1 of the energy), energy_error, gamma, eta (the shown values, as the "
     "tool's JSON) with every report under 'exponents', final_state (u [m], v [m/s], energy [J], force [N] per "
@@ -326,5 +323,7 @@ exponent_table.__doc__ = (
 
 _RUN_HEADING = "Run keywords (the library's transport_parameters(), with the case's C++ defaults)"
 with_keywords(spreading, [_ONE_RUN], _RUN_HEADING)
+with_keywords(spreading, [_OUTPUTS], "Output keywords (the library's spreading_output_parameters(), with the "
+              "observers' C++ defaults)")
 with_keywords(transport, [_RUN], _RUN_HEADING)
 with_keywords(exponent_table, [_RUN], _RUN_HEADING)

@@ -1,9 +1,9 @@
 // The nonlinear dynamics under granular.spreading, granular.transport and granular.exponent_table,
 // whose keywords, defaults and docstrings live in granular/_dynamics.py. Here: the library's
-// structs (TransportCase with its ModeKick, its parameters' attributes made from transport_parameters(),
-// SpreadingOutputChoices, ChainRecipe, ExponentChoices, ExponentTableConfig) bound with their C++ defaults,
-// and one call per job that takes them, completes the case by the tools' rules (study/transport_parameters.hpp,
-// spreading_output_choices.hpp, exponent_choices.hpp), runs it and returns the library's result
+// structs (TransportCase with its ModeKick, its parameters' attributes made from transport_parameters() and
+// spreading_output_parameters(), ChainRecipe, ExponentChoices, ExponentTableConfig) bound with their C++
+// defaults, and one call per job that takes them, completes the case by the tools' rules
+// (study/transport_parameters.hpp, exponent_choices.hpp), runs it and returns the library's result
 // (granular/_dynamics.py shapes it) or the tool's CSV text, with the library's own JSON.
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -21,7 +21,7 @@
 #include "granular/study/kicked_case.hpp"
 #include "granular/study/paper_comparison.hpp"
 #include "granular/study/spreading_files.hpp"
-#include "granular/study/spreading_output_choices.hpp"
+#include "granular/study/spreading_outputs.hpp"
 #include "granular/study/transport_parameters.hpp"
 
 namespace granular::python {
@@ -33,11 +33,10 @@ py::object csv_text(const std::function<void(std::ostream&)>& write) {
   return py::str(out.str());
 }
 
-/// `c`: the case as granular/_dynamics.py fills it (its parameters, kick, mode), one realization of
-/// `chain`, with the observers of `outputs`.
-py::dict spreading(const PyChain& chain, TransportCase c, const SpreadingOutputChoices& outputs, const PyRun& options) {
+/// `c`: the case as granular/_dynamics.py fills it (its parameters, outputs, kick, mode), one
+/// realization of `chain`.
+py::dict spreading(const PyChain& chain, TransportCase c, const PyRun& options) {
   c.chain = chain.recipe;
-  granular::apply(outputs, c);
   SpreadingRunConfig& d = c.dynamics;
   fit_within_duration(c);                                  // a window beyond T: no exponents
   granular::apply(ModeKick(c.mode), {c.kick}, c);          // only a mode kick takes mode, mode_khz, energy
@@ -166,7 +165,6 @@ void bind_dynamics(py::module_& m) {
   m.attr("paper_beta") = paper_beta;
   m.attr("_paper_table") = GRANULAR_SOURCE_DIR "/data/paper_table1_gamma.csv";  // compare_paper=True
   table_class(m, "ModeKick", mode_kick_parameters());
-  table_class(m, "SpreadingOutputChoices", spreading_output_parameters());  // granular.spreading's observers
   using R = ChainRecipe;
   config_class(m, "ChainRecipe", "q xi R1 N F0 material seed quasi given_radii given_types", &R::q, &R::xi, &R::R1,
                &R::N, &R::F0, &R::material, &R::seed, &R::quasi, &R::given_radii, &R::given_types)
@@ -176,8 +174,17 @@ void bind_dynamics(py::module_& m) {
           "walls", [](const R& r) { return r.walls == WallShape::flat ? "flat" : "sphere"; },
           [](R& r, const std::string& word) { r.walls = parse_wall_shape(word); })
       .def("_validate_quasi", [](const R& r) { validate(*r.quasi, r.F0); });
-  using C = TransportCase;  // an attribute per parameter row, and what the keywords give beyond them
-  table_class(m, "TransportCase", transport_parameters())
+  using C = TransportCase;                    // an attribute per parameter row, and what the keywords give beyond them
+  static const ParameterTable<C> rows = [] {  // the run's, then granular.spreading's outputs
+    ParameterTable<C> all = transport_parameters();
+    const ParameterTable<C>& outputs = spreading_output_parameters();
+    all.insert(all.end(), outputs.begin(), outputs.end());
+    return all;
+  }();
+  py::list outputs;
+  for (const Parameter<C>& p : spreading_output_parameters()) outputs.append(p.name);
+  m.attr("_spreading_output_parameters") = outputs;
+  table_class(m, "TransportCase", rows)
       .def_readwrite("chain", &C::chain)
       .def_readwrite("realizations", &C::realizations)
       .def_readwrite("profile_realizations", &C::profile_realizations)

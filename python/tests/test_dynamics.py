@@ -354,13 +354,14 @@ def _keywords(table, skip=()):
 
 
 @pytest.mark.parametrize("function, tables", [
-    (gr.spreading, [(gr._core.TransportCase, ("fit_begin", "fit_end")),
-                    (gr._core.ModeKick, ()), (gr._core.SpreadingOutputChoices, ())]),
-    (gr.transport, [(gr._core.TransportCase, ("fit_begin", "fit_end", "deviation_samples")),
+    (gr.spreading, [(gr._core.TransportCase, ("fit_begin", "fit_end")), (gr._core.ModeKick, ())]),
+    (gr.transport, [(gr._core.TransportCase, ("fit_begin", "fit_end", "deviation_samples",
+                                              *gr._core._spreading_output_parameters)),
                     # an ensemble draws its chains: no files, no one realization; s1's N/m stiffness: none
                     (gr._core.ChainChoices, ("config", "radii", "realization", "k0_n_per_m")), (gr._core.ModeKick, ()),
                     (gr._core.LongRunChoices, ())]),
-    (gr.exponent_table, [(gr._core.TransportCase, ("fit_begin", "fit_end", "deviation_samples")),
+    (gr.exponent_table, [(gr._core.TransportCase, ("fit_begin", "fit_end", "deviation_samples",
+                                                   *gr._core._spreading_output_parameters)),
                          (gr._core.ExponentChoices, ()),
                          (gr._core.ModeKick, ()), (gr._core.LongRunChoices, ())]),
 ])
@@ -377,22 +378,26 @@ def test_every_parameter_of_the_library_tables_is_a_documented_keyword(function,
 
 @pytest.mark.parametrize("function", [gr.spreading, gr.transport, gr.exponent_table])
 def test_the_run_keywords_and_their_defaults_are_the_library_table(function):
-    """Every row of the library's table over the case (transport_parameters()) is a keyword of each kicked-run
-    function, with the case's own C++ default: a row added in lib/ reaches Python with no line written here."""
+    """Every row of the library's tables over the case (transport_parameters(), and for granular.spreading
+    spreading_output_parameters()) is a keyword of each kicked-run function, with the case's own C++ default: a row
+    added in lib/ reaches Python with no line written here."""
     case = gr._core.TransportCase()
     taken = inspect.signature(function).parameters
-    python_forms = {"site": None, "fit_begin": None, "fit_end": None}  # site None: the centre; fit: a pair
+    # site None: the centre; fit: a pair; forces_at None or a list of beads
+    python_forms = {"site": None, "fit_begin": None, "fit_end": None, "forces_at": None}
+    one_run = ("deviation_samples", *gr._core._spreading_output_parameters)
     for name, word, _ in gr._core.TransportCase._parameters:
         if not hasattr(case, name) or name in python_forms:
             continue
-        if name == "deviation_samples" and function is not gr.spreading:
-            assert word not in taken, "an ensemble writes no deviation vector's file"
+        if name in one_run and function is not gr.spreading:
+            assert word not in taken, "an ensemble writes no deviation vector's file nor one run's outputs"
             continue
         assert word in taken, f"{function.__name__} takes no keyword {word}"
         assert taken[word].kind == inspect.Parameter.KEYWORD_ONLY
         assert taken[word].default == getattr(case, name), f"{function.__name__}({word}=...) default"
     assert taken["site"].default is None
     assert taken["fit"].default == (case.fit_begin, case.fit_end)
+    assert function is not gr.spreading or taken["forces_at"].default is None
 
 
 def test_an_unknown_run_keyword_is_a_type_error_naming_it():

@@ -18,7 +18,7 @@
 #include "granular/study/dynamical_butterfly.hpp"
 #include "granular/study/exponent_choices.hpp"
 #include "granular/study/long_run_choices.hpp"
-#include "granular/study/spreading_output_choices.hpp"
+#include "granular/study/spreading_outputs.hpp"
 #include "granular/study/transport_parameters.hpp"
 
 namespace granular {
@@ -101,7 +101,7 @@ TEST(ParameterTables, TextFormsReadWhatTheyWriteAndNameTheirParameter) {
   // beta, fit, active_window and the words centre, integrator, force_law, sampling, energy_guard
   EXPECT_EQ(expect_text_forms_read_what_they_write(transport_parameters(), "1:x"), 8);
   EXPECT_EQ(expect_text_forms_read_what_they_write(exponent_parameters(), "h,,A"), 2);         // chains, ic
-  EXPECT_EQ(expect_text_forms_read_what_they_write(spreading_output_parameters(), "1:x"), 1);  // forces_at
+  EXPECT_EQ(expect_text_forms_read_what_they_write(spreading_output_parameters(), "1:x"), 2);  // forces_at, spectrum_of
   EXPECT_EQ(expect_text_forms_read_what_they_write(mode_selection_parameters(), "1:x"), 1);    // window
   EXPECT_EQ(expect_text_forms_read_what_they_write(long_run_chain_parameters(), "1:x"), 1);    // N
   TransportCase o;
@@ -137,12 +137,13 @@ TEST(ParameterTables, TheLongRunChainLengthIsANumberOrAuto) {
 
 TEST(ParameterTables, TheListOfBeadsAndTheWindowReadAndWriteTheirValues) {
   const auto& forces_at = *parameter(spreading_output_parameters(), "forces_at").text;
-  SpreadingOutputChoices outputs;
+  TransportCase outputs;
   forces_at.read(outputs, "601,631,661");
-  EXPECT_EQ(outputs.forces_at, (std::vector<long>{601, 631, 661}));
+  EXPECT_EQ(outputs.dynamics.forces.sites, (std::vector<std::size_t>{600, 630, 660})) << "the observer's: 0-based";
   EXPECT_EQ(forces_at.write(outputs), "601,631,661");
   forces_at.read(outputs, "");
-  EXPECT_TRUE(outputs.forces_at.empty()) << "an empty list: no force series";
+  EXPECT_TRUE(outputs.dynamics.forces.sites.empty()) << "an empty list: no force series";
+  EXPECT_THROW(forces_at.read(outputs, "3,0"), InvalidInput) << "beads count from 1";
 
   const auto& window = *parameter(mode_selection_parameters(), "window").text;
   ModeSelectionChoices modes;

@@ -128,6 +128,7 @@ TEST(TransportParameters, TheChoicesAreCheckedByValidateNamingThem) {
   EXPECT_EQ(refused([](TransportCase&) {}), "(accepted)");
   EXPECT_EQ(refused([](TransportCase& c) { c.site = 102; }), "site");
   EXPECT_EQ(refused([](TransportCase& c) { c.dynamics.spread.samples = 1; }), "samples");
+  EXPECT_EQ(refused([](TransportCase& c) { c.dynamics.forces.samples = 1; }), "force_samples");  // an output row
   EXPECT_EQ(refused([](TransportCase& c) { c.dynamics.integration.window.threshold = -1; }), "window_threshold");
   EXPECT_EQ(refused([](TransportCase& c) { c.dynamics.spread.max_energy_error = 1.0 / 0.0; }), "max_energy_error");
   EXPECT_EQ(refused([](TransportCase& c) { c.fit_begin = 0; }), "fit");

@@ -12,7 +12,7 @@
 
 #include "granular/parameter_names.hpp"
 #include "granular/study/chain_choices.hpp"
-#include "granular/study/spreading_output_choices.hpp"
+#include "granular/study/spreading_outputs.hpp"
 #include "granular/study/transport_parameters.hpp"
 #include "tool_runner.hpp"
 

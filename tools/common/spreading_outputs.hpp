@@ -1,33 +1,29 @@
 #pragma once
 // The options of `spreading`'s outputs beyond PREFIX.csv: the final state, the profile, force
 // series, the energy map (HDF5) and the spectral density g(ν), with their sampling (the files
-// themselves: study/spreading_files.hpp; the choices, their meaning and the rule that makes
-// observers of them, shared with Python: study/spreading_output_choices.hpp).
+// themselves: study/spreading_files.hpp; the sampling's rows over the case, shared with Python:
+// study/spreading_outputs.hpp).
 #include <set>
 #include <string>
 
 #include <CLI/CLI.hpp>
 
-#include "granular/study/spreading_output_choices.hpp"
+#include "granular/study/spreading_outputs.hpp"
 #include "tool_main.hpp"
 
 namespace granular::tool {
 
-/// The library's choices, bound straight to the flags (--forces-at by its text form), with what
-/// only the command line has: the files, whose names ask for the energy map and g(ν).
-struct SpreadingOutputs : SpreadingOutputChoices {
+/// What only the command line has: the files, whose names ask for the energy map and g(ν).
+struct SpreadingOutputs {
   std::string final_state, energy_map_file, spectrum_file;
   bool profile = false;
-  /// Outputs that describe one realization (--realization), computed even beside an ensemble.
-  bool single() const {
-    return !final_state.empty() || !forces_at.empty() || !energy_map_file.empty() || !spectrum_file.empty();
-  }
 };
 
-inline void add_spreading_outputs(CLI::App& app, SpreadingOutputs& o) {
+/// The output rows bound straight to `run` (--forces-at by its text form), and the files.
+inline void add_spreading_outputs(CLI::App& app, SpreadingOutputs& o, TransportCase& run) {
   const auto add = [&](std::set<std::string> only) {
-    return add_parameters<SpreadingOutputChoices>(app, o, spreading_output_parameters(),
-                                                  {.only = only, .flags = {{"spectral_density", "--spectrum"}}});
+    return add_parameters<TransportCase>(app, run, spreading_output_parameters(),
+                                         {.only = only, .flags = {{"spectral_density", "--spectrum"}}});
   };
   app.add_option("--final-state", o.final_state, "CSV of site,u,v,energy at T");
   app.add_flag("--profile", o.profile,
@@ -40,11 +36,21 @@ inline void add_spreading_outputs(CLI::App& app, SpreadingOutputs& o) {
   add({"spectrum_samples", "spectrum_of"});
 }
 
-/// Sets what the options ask of c's dynamics (needs c.chain): the files ask for their outputs.
-inline void apply(SpreadingOutputs o, TransportCase& c) {
-  o.energy_map = !o.energy_map_file.empty();
-  o.spectral_density = !o.spectrum_file.empty();
-  granular::apply(static_cast<const SpreadingOutputChoices&>(o), c);
+/// The outputs the flags bound to `flags` ask of c's run (the same case, or one a --case file gave,
+/// which holds no outputs), the files switching theirs on.
+inline void ask_outputs(const SpreadingOutputs& o, const TransportCase& flags, TransportCase& c) {
+  c.dynamics.forces = flags.dynamics.forces;
+  c.dynamics.energy_map = flags.dynamics.energy_map;
+  c.dynamics.spectrum = flags.dynamics.spectrum;
+  c.dynamics.energy_map.on = !o.energy_map_file.empty();
+  c.dynamics.spectrum.on = !o.spectrum_file.empty();
+}
+
+/// Whether `c` asks for outputs that describe one realization (--realization), computed even
+/// beside an ensemble.
+inline bool single_outputs(const SpreadingOutputs& o, const TransportCase& c) {
+  return !o.final_state.empty() || !c.dynamics.forces.sites.empty() || !o.energy_map_file.empty() ||
+         !o.spectrum_file.empty();
 }
 
 }  // namespace granular::tool

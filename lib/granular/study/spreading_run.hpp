@@ -18,6 +18,7 @@
 #include "granular/dynamics/observers.hpp"
 #include "granular/dynamics/spread.hpp"
 #include "granular/dynamics/state.hpp"
+#include "granular/optional_settings.hpp"
 
 namespace granular {
 
@@ -28,9 +29,9 @@ struct SpreadingRunConfig {
   IntegrationConfig integration{};
   /// m̃2, P⁻¹ and the energy error: sample times, dense grid, excited bead n0 (default the centre), guards.
   EnergySpreadObserver::Settings spread{};
-  ForceObserver::Settings forces{};                             ///< bead forces; no sites: none recorded
-  std::optional<EnergyMapObserver::Settings> energy_map{};      ///< E_n(t) map; absent: none
-  std::optional<SpectralDensityObserver::Settings> spectrum{};  ///< g(ν); absent: none
+  ForceObserver::Settings forces{};                                ///< bead forces; no sites: none recorded
+  OptionalSettings<EnergyMapObserver::Settings> energy_map{};      ///< E_n(t) map; off: none
+  OptionalSettings<SpectralDensityObserver::Settings> spectrum{};  ///< g(ν); off: none
   std::size_t deviation_samples = 0;  ///< uniform times of the deviation vector (integration.lyapunov on); 0 = none
 };
 

@@ -16,6 +16,7 @@
 #include "granular/model/chain.hpp"
 #include "granular/number_format.hpp"
 #include "granular/parallel/mpi_context.hpp"
+#include "granular/study/spreading_outputs.hpp"
 #include "granular/study/transport_parameters.hpp"
 
 namespace granular {
@@ -48,6 +49,7 @@ double finite_non_negative(double value, const char* name) {
 /// The checks of the choices a front end sets straight in the case (transport_parameters()).
 void validate_choices(const TransportCase& c) {
   refuse_unmet_needs(c, transport_parameters());  // `energy_guard` with no guard is refused, not ignored
+  validate_outputs(c);
   const std::size_t n = c.chain.size();
   if (c.site > n)
     throw InvalidInput("site", " " + std::to_string(c.site) + ": outside the chain of " + std::to_string(n) +
