@@ -11,11 +11,11 @@
 #include "common/outputs.hpp"
 #include "common/tool_main.hpp"
 #include "granular/ensemble/parallel_realizations.hpp"
+#include "granular/ensemble/run_options.hpp"
 #include "granular/io/atomic_file.hpp"
 #include "granular/io/range_syntax.hpp"
 #include "granular/study/butterfly.hpp"
 #include "granular/study/dynamical_butterfly.hpp"
-#include "granular/study/long_run_choices.hpp"
 
 int main(int argc, char** argv) {
   using namespace granular;
@@ -33,7 +33,7 @@ int main(int argc, char** argv) {
   o.quasi = "s1";
   std::string ratios = "0.005:0.995:0.005", output = "butterfly";
   ButterflyConfig config;
-  LongRunChoices threads;  // of the long-run choices, --threads alone
+  RunOptions run;  // of how a long run goes, --threads alone
   bool quiet = false;
   tool::DynamicalButterflyOptions d;
   tool::add_quasiperiodic_options(app, o);
@@ -46,14 +46,14 @@ int main(int argc, char** argv) {
   tool::add_option(app, "--smallest-box", config.smallest_box_spacings,
                    "smallest box of the fit, in mean level spacings (extent / N)");
   tool::add_integer(app, "--box-sizes", config.box_sizes, "box sizes fitted, evenly spaced in log");
-  tool::add_parameters(app, threads, long_run_parameters(), {.only = {"threads"}});
+  tool::add_parameters(app, run, long_run_parameters(), {.only = {"threads"}});
   tool::add_dynamical_butterfly_options(app, d);
   tool::add_output_option(app, output);
   app.add_flag("--quiet", quiet, "no progress line on stderr");
 
   return tool::run(app, argc, argv, [&] {
     tool::Metadata meta("butterfly", argc, argv);
-    RunOptions run = run_options(threads, "");
+    validate(run);
     const bool dynamics = tool::from_dynamics(app, d, {"--largest-box", "--smallest-box", "--box-sizes"});
     config.ratios = parse_number_list(ratios, "--ratios", 0.005);
     config.chain = tool::chain_recipe(o);

@@ -7,9 +7,9 @@
 #include "common/chain_options.hpp"
 #include "common/outputs.hpp"
 #include "common/tool_main.hpp"
+#include "granular/ensemble/run_options.hpp"
 #include "granular/io/atomic_file.hpp"
 #include "granular/study/correlation_files.hpp"
-#include "granular/study/long_run_choices.hpp"
 
 int main(int argc, char** argv) {
   using namespace granular;
@@ -22,7 +22,7 @@ int main(int argc, char** argv) {
   tool::describe_common(app);
   std::string disorder = "A", output = "correlations";
   CorrelationConfig config;
-  LongRunChoices threads;  // of the long-run choices, --threads alone
+  RunOptions run;  // of how a long run goes, --threads alone
   bool quiet = false;
   tool::ChainOptions beads;  // only its --types/--type-masses/--polydisperse
   tool::add_option(app, "--disorder", disorder, "A | RDM1 | RDM2 (h has no correlation: one type only)");
@@ -33,7 +33,7 @@ int main(int argc, char** argv) {
   tool::add_integer(app, "--seed", config.chain.seed, "random seed");
   CLI::Option* max_distance =
       tool::add_integer(app, "--max-distance", config.max_distance, "largest shift d (< N; default capped at N-1)");
-  tool::add_parameters(app, threads, long_run_parameters(), {.only = {"threads"}});
+  tool::add_parameters(app, run, long_run_parameters(), {.only = {"threads"}});
   tool::add_output_option(app, output);
   app.add_flag("--quiet", quiet, "no final report on stderr");
 
@@ -45,7 +45,7 @@ int main(int argc, char** argv) {
     // The default must fit short chains (N = 2 has only d = 0, 1); a value typed is checked as typed.
     if (max_distance->count() == 0 && config.chain.N >= 2 && config.max_distance > config.chain.N - 1)
       config.max_distance = config.chain.N - 1;
-    RunOptions run = run_options(threads, "");
+    validate(run);
     validate(config);
     const auto claim = tool::claim_output(output, meta.command());
     const TableOutputs paths = table_outputs(output);

@@ -61,6 +61,7 @@ int main(int argc, char** argv) {
     if (profile_realizations < 0) throw InvalidInput("--profile-realizations: must be >= 0");
     config.profile_realizations = static_cast<std::size_t>(profile_realizations);
     if (realizations < 1) throw InvalidInput("--realizations " + std::to_string(realizations) + ": must be >= 1");
+    run_options.checkpoint = output + ".checkpoint";  // where an interrupted table resumes from
     validate(run_options);
     TransportCase& base = config.base;
     base.realizations = static_cast<std::size_t>(realizations);

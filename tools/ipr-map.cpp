@@ -10,12 +10,12 @@
 #include "common/spectrum_options.hpp"
 #include "common/tool_main.hpp"
 #include "granular/ensemble/parallel_realizations.hpp"
+#include "granular/ensemble/run_options.hpp"
 #include "granular/io/atomic_file.hpp"
 #include "granular/io/range_syntax.hpp"
 #include "granular/study/frequency_slips.hpp"
 #include "granular/study/ipr_map_estimate.hpp"
 #include "granular/study/ipr_map_files.hpp"
-#include "granular/study/long_run_choices.hpp"
 
 int main(int argc, char** argv) {
   using namespace granular;
@@ -28,7 +28,7 @@ int main(int argc, char** argv) {
   std::string method = "lapack";  // with --near/--count or --window
   IprMapConfig config;
   tool::ChainOptions beads;  // --walls, --types/--type-masses/--polydisperse (with --disorder as their rule)
-  LongRunChoices threads;    // of the long-run choices, --threads alone
+  RunOptions run;            // of how a long run goes, --threads alone
   ModeSelectionChoices selection;
   bool quiet = false;
   tool::add_option(app, "--disorder", disorder, "h | A | RDM1 | RDM2 (homogeneous, Anderson, random dimer 1/2)");
@@ -41,7 +41,7 @@ int main(int argc, char** argv) {
   tool::add_parameters(app, beads, chain_parameters(), {.only = {"walls"}});
   tool::add_integer(app, "--realizations", config.realizations, "chains averaged per (q, xi)");
   tool::add_integer(app, "--seed", config.chain.seed, "random seed; realization r of seed s is always the same chain");
-  tool::add_parameters(app, threads, long_run_parameters(), {.only = {"threads"}});
+  tool::add_parameters(app, run, long_run_parameters(), {.only = {"threads"}});
   tool::add_option(
       app, "--solver", solver,
       "mode solver: fast (eigenvalues + one twisted factorization per mode, no eigenvector matrix; IPRs as "
@@ -65,7 +65,7 @@ int main(int argc, char** argv) {
     config.q_values = parse_number_list(q_text, "--q", 0.1);
     if (config.chain.N > 100000000)
       throw InvalidInput("N", " " + std::to_string(config.chain.N) + ": more than 1e8 beads");
-    RunOptions run = run_options(threads, "");
+    validate(run);
     config.selection = choose_modes(selection);
     set_solver(config, solver, app.count("--method") > 0 ? std::optional<std::string>(method) : std::nullopt);
     beads.disorder = disorder;

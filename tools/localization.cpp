@@ -9,11 +9,11 @@
 #include "common/outputs.hpp"
 #include "common/tool_main.hpp"
 #include "granular/ensemble/parallel_realizations.hpp"
+#include "granular/ensemble/run_options.hpp"
 #include "granular/io/atomic_file.hpp"
 #include "granular/io/range_syntax.hpp"
 #include "granular/number_format.hpp"
 #include "granular/study/localization_files.hpp"
-#include "granular/study/long_run_choices.hpp"
 
 int main(int argc, char** argv) {
   using namespace granular;
@@ -29,13 +29,13 @@ int main(int argc, char** argv) {
   tool::add_chain_options(app, chain_options);
   std::string frequencies = localization_frequencies, output = "localization";
   long long segments = static_cast<long long>(LocalizationScanConfig{}.segments);
-  LongRunChoices threads;  // of the long-run choices, --threads alone
+  RunOptions run;  // of how a long run goes, --threads alone
   bool quiet = false;
   tool::add_option(app, "--f", frequencies,
                    "frequencies [kHz]: start:stop[:step] (step 0.01, stop included) or a,b,c; increasing");
   tool::add_integer(app, "--segments", segments,
                     "chain pieces whose exponents give lyapunov_err (2 ... 1e6, at most N)");
-  tool::add_parameters(app, threads, long_run_parameters(), {.only = {"threads"}});
+  tool::add_parameters(app, run, long_run_parameters(), {.only = {"threads"}});
   tool::add_output_option(app, output);
   app.add_flag("--quiet", quiet, "no progress line and no final report on stderr");
 
@@ -55,7 +55,7 @@ int main(int argc, char** argv) {
         }
         if (segments < 2 || segments > 1000000)
           throw InvalidInput("segments", " " + std::to_string(segments) + ": must be in [2, 1e6]");
-        RunOptions run = run_options(threads, "");
+        validate(run);
         config.segments = static_cast<std::size_t>(segments);
         const StreamedChain chain = tool::stream_chain(chain_options);
         for (double f : config.frequency_khz)  // the first one above the chain's frequencies

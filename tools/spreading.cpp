@@ -40,6 +40,7 @@ int main(int argc, char** argv) {
                    [&] {
                      tool::Metadata meta("spreading", argc, argv);
                      const bool ensemble = options.realizations > 1 || run.resuming();
+                     run.checkpoint = output + ".checkpoint";  // where an interrupted ensemble resumes from
                      validate(run);
                      KickedCase k = tool::kicked_case(options, ensemble);
                      const SelectedChain& selected = k.selected;
@@ -54,7 +55,7 @@ int main(int argc, char** argv) {
                      paths.spectrum = more.spectrum_file;
                      paths.deviation = options.deviation;
                      const auto claim = tool::claim_output(output, meta.command(),
-                                                           ensemble ? std::optional<LongRunChoices>(run) : std::nullopt);
+                                                           ensemble ? std::optional<RunOptions>(run) : std::nullopt);
                      check_outputs(paths.all(), "--output/--final-state/--energy-map/--spectrum");
                      const bool single =
                          tool::single_outputs(more, c) || !options.deviation.empty();  // a run of its own

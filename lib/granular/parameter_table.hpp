@@ -54,7 +54,7 @@ struct Parameter {
   /// The value the parameter sets; none (monostate) when front ends read it in forms of their
   /// own (a fit window: `text` on the command line, a pair in Python) and set fields of it.
   using Field =
-      std::variant<std::monostate, Ref<Choices, double>, Ref<Choices, long long>, Ref<Choices, long>,
+      std::variant<std::monostate, Ref<Choices, double>, Ref<Choices, int>, Ref<Choices, long long>, Ref<Choices, long>,
                    Ref<Choices, unsigned long>, Ref<Choices, std::string>, Ref<Choices, bool>,
                    Ref<Choices, std::optional<double>>, Ref<Choices, std::optional<long>>, Ref<Choices, std::vector<long>>>;
 

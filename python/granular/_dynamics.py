@@ -102,7 +102,7 @@ def _quasi_choices(c, quasi, modulation, ratio, phase, angle, k0):
 
 def _run(threads=0, checkpoint=None, resume=False, resume_other_version=False, progress=False, fresh=False,
          skip_failed=False):
-    """The library's long-run choices (its table: _core.LongRunChoices), and where the run checkpoints."""
+    """The library's run options (their table: _core._RunOptions), where the run checkpoints and its progress bar."""
     r = _core.RunOptions()
     r.threads = threads
     r.checkpoint = "" if checkpoint is None else str(checkpoint)

@@ -24,7 +24,7 @@
 #include "granular/model/quasiperiodic.hpp"
 #include "granular/model/selected_chain.hpp"
 #include "granular/parameter_table.hpp"
-#include "granular/study/long_run_choices.hpp"
+#include "granular/study/resumed_checkpoint.hpp"
 
 namespace granular::python {
 
@@ -189,17 +189,17 @@ py::object metadata(const std::string& function, const nlohmann::json& described
 Disorder disorder_of(const std::string& name, const char* keyword = "disorder");
 
 // --- long runs ------------------------------------------------------------------------------------
-/// How a long call runs (granular._core.RunOptions): the long-run choices, checkpoint ("" = none), progress bar.
-struct PyRun : LongRunChoices {
-  std::string checkpoint;
-  bool progress = false;
-  int thread_request() const {  // validated with the other choices
+/// How a long call runs (granular._core.RunOptions): the library's run options (their rows, and the
+/// checkpoint, "" = none) and whether a progress bar is drawn.
+struct PyRun : RunOptions {
+  bool progress_bar = false;
+  int thread_request() const {  // validated with the other options
     validate(*this);
-    return static_cast<int>(threads);
+    return threads;
   }
 };
 /// Runs `work` with the GIL released on a thread of its own through granular._progress.run_long,
-/// which polls for Ctrl-C, draws the progress bar when options.progress, and on KeyboardInterrupt
+/// which polls for Ctrl-C, draws the progress bar when options.progress_bar, and on KeyboardInterrupt
 /// sets the cancellation flag and waits for `work` to stop. `work` gets the library's RunOptions of
 /// `options`, with that flag (RunOptions::cancelled) and a silent meter of `total` steps
 /// (RunOptions::progress). `work` must not touch Python objects. Library exceptions propagate (as

@@ -206,11 +206,11 @@ void bind_dynamics(py::module_& m) {
   using K = KickedCaseChoices;  // granular.transport's case, made by the spreading tool's rule
   config_class(m, "KickedCaseChoices", "chain ic mode run realizations", &K::chain, &K::ic, &K::mode, &K::run,
                &K::realizations);
-  table_class(m, "LongRunChoices", long_run_parameters());
-  py::class_<PyRun, LongRunChoices>(m, "RunOptions")
+  table_class(m, "_RunOptions", long_run_parameters());  // the library's rows
+  py::class_<PyRun, RunOptions>(m, "RunOptions")
       .def(py::init<>())
       .def_readwrite("checkpoint", &PyRun::checkpoint)
-      .def_readwrite("progress", &PyRun::progress);
+      .def_readwrite("progress", &PyRun::progress_bar);
   // What granular/_dynamics.py makes a SpreadingRun and a Transport of (copies of the arrays).
   using Run = SpreadingResult;
   readonly(py::class_<Run>(m, "_SpreadingResult"),

@@ -155,7 +155,8 @@ void run_long(const std::string& label, std::size_t total, const PyRun& options,
   auto shared = std::make_shared<Shared>();
   auto meter = std::make_shared<ProgressMeter>(total, label, 0);  // silent: the bar is drawn from Python
   auto cancel = std::make_shared<std::atomic<bool>>(false);
-  RunOptions run = run_options(options, options.checkpoint);
+  validate(options);
+  RunOptions run = options;
   run.progress = meter.get();
   run.cancelled = [cancel] { return cancel->load(std::memory_order_relaxed); };
   const py::cpp_function call([&, shared] {
@@ -199,7 +200,7 @@ void run_long(const std::string& label, std::size_t total, const PyRun& options,
   // granular._progress.run_long: a worker thread, the progress bar and Ctrl-C.
   py::module_::import("granular._progress")
       .attr("run_long")(call, py::cpp_function([meter] { return meter->done(); }),
-                        py::cpp_function([cancel] { cancel->store(true); }), label, total, options.progress,
+                        py::cpp_function([cancel] { cancel->store(true); }), label, total, options.progress_bar,
                         interrupted);
 }
 

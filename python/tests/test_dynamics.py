@@ -359,11 +359,11 @@ def _keywords(table, skip=()):
                                               *gr._core._spreading_output_parameters)),
                     # an ensemble draws its chains: no files, no one realization; s1's N/m stiffness: none
                     (gr._core.ChainChoices, ("config", "radii", "realization", "k0_n_per_m")), (gr._core.ModeKick, ()),
-                    (gr._core.LongRunChoices, ())]),
+                    (gr._core._RunOptions, ())]),
     (gr.exponent_table, [(gr._core.TransportCase, ("fit_begin", "fit_end", "deviation_samples",
                                                    *gr._core._spreading_output_parameters)),
                          (gr._core.ExponentChoices, ()),
-                         (gr._core.ModeKick, ()), (gr._core.LongRunChoices, ())]),
+                         (gr._core.ModeKick, ()), (gr._core._RunOptions, ())]),
 ])
 def test_every_parameter_of_the_library_tables_is_a_documented_keyword(function, tables):
     """The library describes each choice once (parameter_table.hpp); the tools make their flags of it.

@@ -17,7 +17,7 @@
 #include "granular/study/chain_length_rule.hpp"
 #include "granular/study/dynamical_butterfly.hpp"
 #include "granular/study/exponent_choices.hpp"
-#include "granular/study/long_run_choices.hpp"
+#include "granular/ensemble/run_options.hpp"
 #include "granular/study/spreading_outputs.hpp"
 #include "granular/study/transport_parameters.hpp"
 

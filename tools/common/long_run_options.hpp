@@ -17,20 +17,20 @@
 #include "granular/io/shell_quote.hpp"
 #include "granular/parallel/mpi_context.hpp"
 #include "granular/study/case_file.hpp"
-#include "granular/study/long_run_choices.hpp"
+#include "granular/study/resumed_checkpoint.hpp"
 #include "granular/study/transport_study.hpp"
 #include "outputs.hpp"
 #include "tool_main.hpp"
 
 namespace granular::tool {
 
-/// The library's choices (study/long_run_choices.hpp), bound straight to the flags, and --quiet.
-struct LongRunOptions : LongRunChoices {
+/// The library's run options (ensemble/run_options.hpp), bound straight to the flags, and --quiet.
+struct LongRunOptions : RunOptions {
   bool quiet = false;
 };
 
 inline void add_long_run_options(CLI::App& app, LongRunOptions& o) {
-  auto options = add_parameters<LongRunChoices>(app, o, long_run_parameters());
+  auto options = add_parameters<RunOptions>(app, o, long_run_parameters());
   options["resume"]->description(options["resume"]->get_description() + " PREFIX.checkpoint*");
   app.add_flag("--quiet", o.quiet, "no warnings, progress or final line on stderr");
 }
@@ -60,7 +60,9 @@ template <class Study>
 auto run_study(std::size_t total, const LongRunOptions& o, const std::string& prefix, const char* tool, int argc,
                char** argv, const Study& study) {
   ProgressMeter progress(total, tool, o.quiet || !MpiContext::instance().root() ? 0 : -1);
-  RunOptions options = run_options(o, prefix + ".checkpoint");
+  RunOptions options = o;
+  options.checkpoint = prefix + ".checkpoint";
+  validate(options);
   options.progress = &progress;
   options.cancelled = stop_on_interrupt(tool);
   try {

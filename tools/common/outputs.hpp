@@ -18,7 +18,7 @@
 #include "granular/io/output_paths.hpp"
 #include "granular/io/run_metadata.hpp"
 #include "granular/io/shell_quote.hpp"
-#include "granular/study/long_run_choices.hpp"
+#include "granular/study/resumed_checkpoint.hpp"
 
 namespace granular::tool {
 
@@ -36,7 +36,7 @@ inline CLI::Option* add_output_option(CLI::App& app, std::string& output, const 
 /// Claims `prefix`; with `checkpoints`, the checkpoint PREFIX.checkpoint[.<case>] an interrupted
 /// run left is settled as the choices say (settle_checkpoints: refused, or with --fresh removed).
 inline OutputClaim claim_output(const std::string& prefix, const std::string& command,
-                                std::optional<LongRunChoices> checkpoints = std::nullopt) {
+                                std::optional<RunOptions> checkpoints = std::nullopt) {
   return OutputClaim(prefix, command, [&] {
     if (checkpoints) settle_checkpoints(*checkpoints, prefix + ".checkpoint");
   });

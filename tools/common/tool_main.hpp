@@ -126,7 +126,7 @@ std::map<std::string, CLI::Option*> add_parameters(CLI::App& app, Choices& o, co
                 flag, [&o, read = p.text->read](const std::string& text) { read(o, text); }, help);
           if constexpr (std::is_same_v<Field, std::monostate>) return nullptr;
           else if constexpr (std::is_same_v<Field, Ref<Choices, bool>>) return app.add_flag(flag, field(o), help);
-          else if constexpr (std::is_same_v<Field, Ref<Choices, long long>> ||
+          else if constexpr (std::is_same_v<Field, Ref<Choices, int>> || std::is_same_v<Field, Ref<Choices, long long>> ||
                              std::is_same_v<Field, Ref<Choices, unsigned long>>)
             return add_integer(app, flag, field(o), help);
           else return app.add_option(flag, field(o), help);

@@ -89,7 +89,7 @@ std::vector<ExponentCell> run_exponent_table(const ExponentTableConfig& config, 
     RunOptions run = options;
     run.checkpoint = options.checkpoint.empty() ? "" : logs[i];
     // A case not started before the interruption has no log yet: it simply starts.
-    run.resume = options.resume && !run.checkpoint.empty() && CheckpointLog::exists(run.checkpoint);
+    run.resume = options.resuming() && !run.checkpoint.empty() && CheckpointLog::exists(run.checkpoint);
     cells.push_back({cases[i], run_transport_study(cases[i], run), names[i % names.size()]});
   }
   return cells;

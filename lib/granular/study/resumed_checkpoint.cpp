@@ -1,8 +1,10 @@
 #include "granular/study/resumed_checkpoint.hpp"
 
 #include <algorithm>
+#include <filesystem>
 
 #include "granular/ensemble/checkpoint_log.hpp"
+#include "granular/error.hpp"
 
 namespace granular {
 
@@ -18,6 +20,28 @@ nlohmann::json resumed_checkpoint(const std::vector<std::string>& checkpoints) {
       return {{"made_by", made_by}, {"resumed_by", CheckpointLog::this_code()}, {"versions", versions}};
     }
   return nullptr;
+}
+
+void settle_checkpoints(const RunOptions& o, const std::string& checkpoint) {
+  validate(o);
+  if (!o.resuming()) CheckpointLog::settle(checkpoint, o.fresh, true);
+}
+
+nlohmann::json resumed_code(const RunOptions& o, const std::vector<std::string>& checkpoints) {
+  if (o.resume && !o.accept_other_version)
+    for (const std::string& c : checkpoints)
+      if (const std::string other = CheckpointLog::other_version(c); !other.empty())
+        throw InvalidInput("resume", ": " + other + "; resume it with the code that made it, or accept the mix with " +
+                                         "`resume_other_version`");
+  if (!o.resuming()) return nullptr;
+  std::vector<std::string> kept;  // the checkpoints the run continues (a study's cases: one each)
+  for (const std::string& c : checkpoints)
+    if (std::filesystem::exists(c)) kept.push_back(c);
+  if (kept.empty()) return nullptr;  // nothing to resume: the run starts afresh
+  nlohmann::json j = o.accept_other_version ? resumed_checkpoint(checkpoints) : nlohmann::json::object();
+  if (j.is_null()) j = nlohmann::json::object();
+  j["files"] = kept;  // that it was resumed, and from which checkpoint
+  return j;
 }
 
 }  // namespace granular

@@ -463,7 +463,7 @@ TransportSummary run_transport_study(const TransportCase& c, const StudyRunOptio
   ensemble.realizations = c.realizations;
   ensemble.threads = options.threads;
   ensemble.checkpoint = options.checkpoint;
-  ensemble.resume = options.resume;
+  ensemble.resume = options.resuming();
   ensemble.fresh = options.fresh;
   ensemble.accept_other_version = options.accept_other_version;
   ensemble.parameters = describe(c).dump();
