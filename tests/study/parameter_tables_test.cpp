@@ -11,13 +11,13 @@
 #include <utility>
 #include <vector>
 
+#include "granular/ensemble/run_options.hpp"
 #include "granular/error.hpp"
 #include "granular/linear/mode_selection_choices.hpp"
 #include "granular/study/chain_choices.hpp"
 #include "granular/study/chain_length_rule.hpp"
 #include "granular/study/dynamical_butterfly.hpp"
 #include "granular/study/exponent_choices.hpp"
-#include "granular/ensemble/run_options.hpp"
 #include "granular/study/spreading_outputs.hpp"
 #include "granular/study/transport_parameters.hpp"
 
