@@ -2,8 +2,8 @@
 // Covariant Lyapunov vectors (CLVs) by Ginelli's forward–backward method (Ginelli, Poggi, Turchi,
 // Chaté, Livi & Politi, PRL 99, 130601 (2007)). The Gram–Schmidt vectors of the Lyapunov spectrum
 // (lyapunov_spectrum.hpp) depend on the metric and are not carried into each other by the
-// dynamics; the CLVs are. CLV_i grows at the rate λ_i forward and backward in time, and the
-// tangent map carries CLV_i(t) onto the direction of CLV_i(t + Δ).
+// dynamics; the CLVs are. The tangent map carries CLV_i(t) onto the direction of CLV_i(t + Δ), and
+// CLV_i grows at the rate λ_i forward in time and shrinks at that rate backward.
 //
 // Forward phase: k vectors and a Householder QR every `orthonormalize_every` steps, M Q_r = Q_{r+1} R_r,
 // first over `forward_transient` steps (the Q settle onto the Gram–Schmidt vectors), then over the
