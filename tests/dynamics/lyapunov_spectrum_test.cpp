@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdio>
 #include <numeric>
+#include <span>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -240,6 +241,35 @@ TEST(LyapunovSpectrum, TheFullSpectrumEqualsAnIndependentRkf78IntegrationOfTheVa
   std::printf("\n  largest difference %.1f /s (lambda_1 %.0f /s)\n", worst, ours.front());
   EXPECT_GT(ours.front(), 1000.0);
   EXPECT_LT(worst, 0.01 * ours.front());
+}
+
+// Recording the R's (for covariant vectors) changes no arithmetic, and the R's are the run's: the
+// sums of ln|R_jj| are the exponents' running sums.
+TEST(LyapunovSpectrum, RecordingTheFactorsChangesNothing) {
+  const SmallChain s;
+  const std::size_t k = 4;
+  LyapunovSpectrum plain(s.law, s.chain, saba2c(), s.tau, s.start, {.vectors = k, .orthonormalize_every = 7});
+  LyapunovSpectrum recorded(s.law, s.chain, saba2c(), s.tau, s.start, {.vectors = k, .orthonormalize_every = 7});
+  std::vector<double> sums(k, 0.0);
+  std::size_t count = 0;
+  recorded.record_factors([&](std::span<const double> r) {
+    ASSERT_EQ(r.size(), k * k);
+    for (std::size_t j = 0; j < k; ++j) {
+      sums[j] += std::log(std::abs(r[j * k + j]));
+      for (std::size_t i = j + 1; i < k; ++i) EXPECT_EQ(r[j * k + i], 0.0);  // upper triangular
+    }
+    ++count;
+  });
+  plain.advance(1000);
+  recorded.advance(1000);
+  EXPECT_EQ(count, 143u);  // every 7 steps, and once more at the end
+  EXPECT_EQ(relative_difference(plain.state().u, recorded.state().u), 0.0);
+  const std::vector<State> a = plain.vectors(), b = recorded.vectors();
+  for (std::size_t j = 0; j < k; ++j) {
+    EXPECT_EQ(relative_difference(a[j].u, b[j].u), 0.0);
+    EXPECT_EQ(plain.exponents()[j], recorded.exponents()[j]);
+    EXPECT_NEAR(sums[j], recorded.exponents()[j] * recorded.time(), 1e-12 * std::abs(sums[j]) + 1e-15);
+  }
 }
 
 TEST(LyapunovSpectrum, RefusesImpossibleCounts) {

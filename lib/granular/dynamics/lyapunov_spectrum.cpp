@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
 
 #include "granular/dynamics/detail/dense_lapack.hpp"
 #include "granular/dynamics/detail/random_deviations.hpp"
@@ -94,6 +95,11 @@ void LyapunovSpectrum::factorize() {
   dgeqrf_(&m, &k, matrix_.data(), &m, tau_.data(), work_.data(), &lwork, &info);
   if (info != 0) throw NumericalError("Lyapunov spectrum: dgeqrf failed (info " + std::to_string(info) + ")");
   for (std::size_t j = 0; j < config_.vectors; ++j) diagonal_[j] = matrix_[j * 2 * beads_ + j];
+  if (record_) {
+    const std::size_t k = config_.vectors;
+    for (std::size_t j = 0; j < k; ++j)
+      for (std::size_t i = 0; i < k; ++i) factor_[j * k + i] = i <= j ? matrix_[j * 2 * beads_ + i] : 0.0;
+  }
   dorgqr_(&m, &k, &k, matrix_.data(), &m, tau_.data(), work_.data(), &lwork, &info);
   if (info != 0) throw NumericalError("Lyapunov spectrum: dorgqr failed (info " + std::to_string(info) + ")");
 }
@@ -109,6 +115,12 @@ void LyapunovSpectrum::orthonormalize() {
   }
   from_matrix(*tangent_, matrix_, beads_, config_.vectors, config_.time_unit, du_, dv_);
   orthonormalized_at_ = tangent_->steps_done();
+  if (record_) record_(factor_);
+}
+
+void LyapunovSpectrum::record_factors(std::function<void(std::span<const double> r)> record) {
+  record_ = std::move(record);
+  factor_.assign(record_ ? config_.vectors * config_.vectors : 0, 0.0);
 }
 
 std::vector<double> LyapunovSpectrum::exponents() const {

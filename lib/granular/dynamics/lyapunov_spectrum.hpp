@@ -11,7 +11,9 @@
 // exponents do not depend on it; the orthonormality does).
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <memory>
+#include <span>
 #include <vector>
 
 #include "granular/dynamics/tangent_map.hpp"
@@ -48,6 +50,12 @@ class LyapunovSpectrum {
   State state() const { return tangent_->state(); }
   double time() const { return tangent_->time(); }
 
+  /// From now on, `record` sees the R of every re-orthonormalization (k × k, column-major, zeros
+  /// below the diagonal; V = Q R with V the vectors before it), as covariant Lyapunov vectors need
+  /// (covariant_vectors.hpp). Empty: none. It changes no arithmetic: the orbit and the vectors are
+  /// the same with or without it.
+  void record_factors(std::function<void(std::span<const double> r)> record);
+
  private:
   void orthonormalize();
   void factorize();  ///< the vectors' matrix becomes Q, diagonal_ the diagonal of R
@@ -58,6 +66,8 @@ class LyapunovSpectrum {
   std::vector<double> sums_;                                      ///< S_j
   std::uint64_t orthonormalized_at_ = 0;                          ///< the step of the last QR
   std::vector<double> matrix_, tau_, work_, diagonal_, du_, dv_;  ///< the QR's buffers, LAPACK's workspace
+  std::function<void(std::span<const double>)> record_;           ///< record_factors'
+  std::vector<double> factor_;                                    ///< the last R, for record_
 };
 
 }  // namespace granular
