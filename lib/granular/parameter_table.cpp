@@ -13,6 +13,10 @@ void detail::refuse_unmet(const std::string& name, const Needs& needs, const std
   throw InvalidInput(name, problem);
 }
 
+std::string deprecation_note(const std::string& former, const std::string& now) {
+  return former + " is deprecated: use " + now + " (the old spelling goes in the next minor version)";
+}
+
 std::string tell_parameters(const std::string& help, const std::function<std::string(const std::string&)>& told) {
   std::string out;
   std::size_t at = 0;

@@ -81,6 +81,16 @@ struct Parameter {
   /// enum, `integrator`); other text forms are the command line's only.
   bool python_text = false;
 
+  /// Words front ends took for this parameter before it was renamed (`mode_khz`: the tools'
+  /// --mode-khz, Python's mode_khz=), still taken for one minor version with a deprecation note.
+  std::vector<std::string> former_words{};
+
+  /// This row, also taken under its former front-end `word` (deprecated).
+  Parameter formerly(std::string word) && {
+    former_words.push_back(std::move(word));
+    return std::move(*this);
+  }
+
   /// This row, its text form also Python's attribute (a word).
   Parameter as_word() && {
     python_text = true;
@@ -177,6 +187,11 @@ void refuse_unmet_needs(const Choices& o, const ParameterTable<Choices>& table, 
     detail::refuse_unmet(p.name, *p.needs, on ? word : flag ? "off" : "");
   }
 }
+
+/// The note a front end gives when a parameter is set under its former word: "--mode-khz is
+/// deprecated: use --near (the old spelling goes in the next minor version)", each word as the
+/// front end tells it.
+std::string deprecation_note(const std::string& former, const std::string& now);
 
 /// `help` with every parameter in backticks replaced by `told(parameter)`.
 std::string tell_parameters(const std::string& help, const std::function<std::string(const std::string&)>& told);

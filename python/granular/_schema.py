@@ -5,6 +5,7 @@ without a line written here."""
 import inspect
 import math
 import numbers
+import warnings
 
 
 def _python_default(value):
@@ -22,6 +23,8 @@ class TableKeywords:
         self._rows = [row for row in rows if (only is None or row[0] in only) and row[0] not in skip]
         self._defaults = defaults
         self.names = [keyword for _, keyword, _ in self._rows]
+        # former keywords of these rows (renamed; taken for one more minor version with a FutureWarning)
+        self.formerly = {old: new for old, new in getattr(self._cls, "_formerly", {}).items() if new in self.names}
 
     def parameters(self):
         """inspect.Parameter (keyword-only) per row, in the table's order."""
@@ -81,8 +84,17 @@ def with_keywords(function, tables, doc_heading):
 
 def split_keywords(keywords, tables, function):
     """`keywords` (a dict) split by table; a keyword that no table takes is a TypeError naming it, as Python
-    says of any unknown keyword."""
+    says of any unknown keyword. A former keyword of a row is taken as the row's (a FutureWarning says so)."""
     known = {name for table in tables for name in table.names}
+    formerly = {old: new for table in tables for old, new in table.formerly.items()}
+    keywords = dict(keywords)
+    for old in [k for k in keywords if k in formerly and k not in known]:
+        new = formerly[old]
+        if new in keywords:
+            raise TypeError(f"{function}() got both '{old}' and '{new}' (the same keyword, renamed)")
+        warnings.warn(f"{function}: keyword '{old}' is deprecated: use '{new}' (the old spelling goes in the next "
+                      "minor version)", FutureWarning, stacklevel=3)
+        keywords[new] = keywords.pop(old)
     for keyword in keywords:
         if keyword not in known:
             raise TypeError(f"{function}() got an unexpected keyword argument '{keyword}'")

@@ -50,7 +50,9 @@ py::class_<C> table_class(py::module_& m, const char* name, const ParameterTable
   py::class_<C> c(m, name);
   c.def(py::init<>());
   py::list described;
+  py::dict formerly;  // a former keyword: the one it now is (deprecated)
   for (const Parameter<C>& p : table) {
+    for (const std::string& word : p.former_words) formerly[py::str(word)] = word_of(p);
     std::visit(
         [&]<class Field>(const Field& field) {
           if constexpr (!std::is_same_v<Field, std::monostate>) {
@@ -67,6 +69,7 @@ py::class_<C> table_class(py::module_& m, const char* name, const ParameterTable
     described.append(py::make_tuple(p.name, word_of(p), tell_parameters(p.help, front_end_word)));
   }
   c.attr("_parameters") = described;
+  c.attr("_formerly") = formerly;
   return c;
 }
 

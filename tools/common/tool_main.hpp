@@ -119,19 +119,36 @@ std::map<std::string, CLI::Option*> add_parameters(CLI::App& app, Choices& o, co
                         const auto it = shown.flags.find(named);
                         return it != shown.flags.end() ? it->second : option_name(front_end_word(named));
                       });
-    CLI::Option* option = std::visit(
-        [&]<class Field>(const Field& field) -> CLI::Option* {
-          if (p.text)
-            return app.add_option_function<std::string>(
-                flag, [&o, read = p.text->read](const std::string& text) { read(o, text); }, help);
-          if constexpr (std::is_same_v<Field, std::monostate>) return nullptr;
-          else if constexpr (std::is_same_v<Field, Ref<Choices, bool>>) return app.add_flag(flag, field(o), help);
-          else if constexpr (std::is_same_v<Field, Ref<Choices, int>> || std::is_same_v<Field, Ref<Choices, long long>> ||
-                             std::is_same_v<Field, Ref<Choices, unsigned long>>)
-            return add_integer(app, flag, field(o), help);
-          else return app.add_option(flag, field(o), help);
-        },
-        p.field);
+    // The option under `name`: a flag, an integer, a number or word, or read by the text form.
+    const auto add_as = [&](const std::string& name, const std::string& description) {
+      return std::visit(
+          [&]<class Field>(const Field& field) -> CLI::Option* {
+            if (p.text)
+              return app.add_option_function<std::string>(
+                  name, [&o, read = p.text->read](const std::string& text) { read(o, text); }, description);
+            if constexpr (std::is_same_v<Field, std::monostate>) return nullptr;
+            else if constexpr (std::is_same_v<Field, Ref<Choices, bool>>)
+              return app.add_flag(name, field(o), description);
+            else if constexpr (std::is_same_v<Field, Ref<Choices, int>> ||
+                               std::is_same_v<Field, Ref<Choices, long long>> ||
+                               std::is_same_v<Field, Ref<Choices, unsigned long>>)
+              return add_integer(app, name, field(o), description);
+            else return app.add_option(name, field(o), description);
+          },
+          p.field);
+    };
+    CLI::Option* option = add_as(flag, help);
+    for (const std::string& word : p.former_words) {  // taken, out of --help, with a note when used
+      const std::string note = deprecation_note(option_name(word), flag);
+      add_as(option_name(word), "")
+          ->group("")
+          ->check(CLI::Validator(
+              [note](const std::string&) {
+                warn({note});
+                return std::string();
+              },
+              ""));
+    }
     if (p.shows_default && p.text) option->default_str(p.text->write(o));
     else if (p.shows_default && !std::holds_alternative<Ref<Choices, bool>>(p.field)) option->capture_default_str();
     options[p.name] = option;
