@@ -27,7 +27,7 @@ int main(int argc, char** argv) {
       "PREFIX.json; with --compare-paper, PREFIX-paper.csv and the side-by-side table. Interrupted runs\n"
       "continue with --resume (finished realizations are kept in PREFIX.checkpoint.*). Beyond the paper: one more "
       "chain\n"
-      "from --types/--type-masses/--polydisperse named --chain-name, --ic mode (--mode/--mode-khz), --mle (X1 at T).",
+      "from --types/--type-masses/--polydisperse named --chain-name, --ic mode (--mode/--near), --mle (X1 at T).",
       "exponents"};
   tool::describe_common(app);
   ExponentTableConfig config;  // the dynamics flags set its base case

@@ -22,6 +22,7 @@ _OUTPUT_ROWS = tuple(_core._spreading_output_parameters)  # one run's force seri
 _RUN = TableKeywords(_CASE, skip=_OWN + _OUTPUT_ROWS + ("deviation_samples",))  # an ensemble: no deviation vector
 _ONE_RUN = TableKeywords(_CASE, skip=_OWN + _OUTPUT_ROWS)  # granular.spreading: with deviation_samples
 _OUTPUTS = TableKeywords(_CASE, only=_OUTPUT_ROWS, skip=("forces_at",))  # forces_at: a list of beads here
+_MODE = TableKeywords(_core.ModeKick())  # a mode kick's mode, near, energy (mode_khz: near's former keyword)
 
 _DYNAMICS_DOC = """\
     beta: velocity kick [m/s] (the paper's 8e-3 for every F0) or 'match' (the energy of alpha on each chain)
@@ -33,9 +34,9 @@ metadata['time_step_rule'])
 """
 
 _MODE_DOC = """\
-    mode, mode_khz, energy: with ic 'mode', the linear mode kicked (u = M^-1/2 w from rest, each chain's own): \
-number `mode` 1..N by increasing frequency or the one nearest `mode_khz` [kHz], of total energy `energy` [J] or, \
-without it, largest |u_n| = alpha
+    mode, near, energy: with ic 'mode', the linear mode kicked (u = M^-1/2 w from rest, each chain's own): \
+number `mode` 1..N by increasing frequency or the one nearest `near` [kHz], of total energy `energy` [J] or, \
+without it, largest |u_n| = alpha (mode_khz: near's former keyword, deprecated)
 """
 
 _MAX = 100000000
@@ -112,10 +113,10 @@ def _run(threads=0, checkpoint=None, resume=False, resume_other_version=False, p
 
 
 def spreading(chain, *, ic="displacement", beta=_CASE.beta, site=None, dt=None, fit=(_CASE.fit_begin, _CASE.fit_end),
-              forces_at=None, progress=False, mode=0, mode_khz=-1.0, energy=0.0, **run):
+              forces_at=None, progress=False, **run):
     if not isinstance(chain, _core.Chain):
         raise TypeError(f"spreading: chain must be a granular.Chain, got {type(chain).__name__}")
-    run, outputs = split_keywords(run, [_ONE_RUN, _OUTPUTS], "spreading")
+    run, outputs, modes = split_keywords(run, [_ONE_RUN, _OUTPUTS, _MODE], "spreading")
     case = _case(_ONE_RUN, run, beta, site, dt, fit)
     _OUTPUTS.set(case, outputs)  # the optional observers: rows of the case, checked with it in C++
     beads = []
@@ -128,7 +129,7 @@ def spreading(chain, *, ic="displacement", beta=_CASE.beta, site=None, dt=None, 
         case.forces_at = ",".join(str(s) for s in beads)  # the row's text form: beads counting from 1
     # one realization: the chain's
     case.realizations, case.profile_realizations = 1, 0
-    case.mode.mode, case.mode.mode_khz, case.mode.energy = mode, mode_khz, energy
+    _MODE.set(case.mode, modes)
     case.kick = ic
     raw = _core._spreading(chain, case, _run(progress=progress))
     return _spreading_run(raw, chain.N, case, beads)
@@ -182,7 +183,7 @@ spreading.__doc__ = (
     "Energy spreading after a single-site kick in one chain (docs/physics.md, 'Nonlinear dynamics'), integrated to T: the spreading "
     "tool for one realization.\n\n    chain: a granular.Chain (F0 = 0 is the sonic vacuum)\n"
     "    ic: 'displacement' (u = alpha at the site) | 'velocity' (v = beta at the site) | 'mode' (a "
-    "linear mode of the chain, u = M^-1/2 w from rest: number `mode` 1..N or the one nearest `mode_khz` "
+    "linear mode of the chain, u = M^-1/2 w from rest: number `mode` 1..N or the one nearest `near` "
     "[kHz], total energy `energy` [J] or, without it, largest |u_n| = alpha)\n" + _DYNAMICS_DOC +
     "    forces_at: None, or beads (a list, counting from 1) whose force [N] is recorded at force_samples uniform "
     "times; the outputs' other keywords below (each count of samples >= 2 and map_stride >= 1, checked even when "
@@ -200,15 +201,14 @@ def transport(*, disorder="A", N=2501, q=0.5, xi=0.5, F0=10.0, R1=_core.paper_r1
               ic="displacement", beta=_CASE.beta, site=None, dt=None, fit=(_CASE.fit_begin, _CASE.fit_end),
               profile=False, threads=0, checkpoint=None, resume=False, resume_other_version=False, fresh=False,
               skip_failed=False, progress=False, walls="flat", quasi=None, modulation=0.0, ratio="golden", phase=None,
-              angle=45.0, k0=4.0, types=None, type_masses=None, polydisperse=None, mode=0, mode_khz=-1.0, energy=0.0,
-              **run):
-    (given,) = split_keywords(run, [_RUN], "transport")
+              angle=45.0, k0=4.0, types=None, type_masses=None, polydisperse=None, **run):
+    given, modes = split_keywords(run, [_RUN, _MODE], "transport")
     k = _core.KickedCaseChoices()  # made a case by the spreading tool's rule, in C++
     _chain_choices(k.chain, disorder=disorder, N=N, q=q, xi=xi, F0=F0, R1=R1, seed=seed, walls=walls, types=types,
                    type_masses=type_masses, polydisperse=polydisperse)
     _quasi_choices(k.chain, quasi, modulation, ratio, phase, angle, k0)
     k.ic, k.realizations = ic, _core._size(realizations, "realizations", 1)
-    k.mode.mode, k.mode.mode_khz, k.mode.energy = mode, mode_khz, energy
+    _MODE.set(k.mode, modes)
     k.run = _case(_RUN, given, beta, site, dt, fit)
     run = _run(threads, checkpoint, resume, resume_other_version, progress, fresh, skip_failed)
     return _transport(_core._transport(k, profile, run), profile)
@@ -263,13 +263,12 @@ def exponent_table(*, chains=["h", "A", "RDM1", "RDM2"], F0=[10.0, 0.5, 0.1, 0.0
                    profile_F0=[10.0, 0.1, 0.0], profile_realizations=100, compare_paper=False, threads=0,
                    checkpoint=None, resume=False, resume_other_version=False, fresh=False, skip_failed=False,
                    progress=False, walls="flat", quasi=None, modulation=0.0, ratio="golden", phase=None, angle=45.0,
-                   k0=4.0, chain_name=None, types=None, type_masses=None, polydisperse=None, types_rule=None, mode=0,
-                   mode_khz=-1.0, energy=0.0, **run):
-    (given,) = split_keywords(run, [_RUN], "exponent_table")
+                   k0=4.0, chain_name=None, types=None, type_masses=None, polydisperse=None, types_rule=None, **run):
+    given, modes = split_keywords(run, [_RUN, _MODE], "exponent_table")
     words = _core.ExponentChoices()  # made the table's chains and kicks by the tool's rule, in C++
     words.chains = [] if chains is None or chains == "none" else chains
     words.ic = ic
-    words.mode.mode, words.mode.mode_khz, words.mode.energy = mode, mode_khz, energy
+    _MODE.set(words.mode, modes)
     # every kind's chains, and the chain of one's own: k types, polydisperse radii, or quasiperiodic
     _chain_choices(words.beads, N=N, xi=xi, q=q, seed=seed, walls=walls, types=types, type_masses=type_masses,
                    polydisperse=polydisperse)
@@ -322,6 +321,9 @@ exponent_table.__doc__ = (
 
 
 _RUN_HEADING = "Run keywords (the library's transport_parameters(), with the case's C++ defaults)"
+_MODE_HEADING = "Mode kick keywords (the library's mode_kick_parameters(), with ModeKick's C++ defaults)"
+for _job in (spreading, transport, exponent_table):
+    with_keywords(_job, [_MODE], _MODE_HEADING)
 with_keywords(spreading, [_ONE_RUN], _RUN_HEADING)
 with_keywords(spreading, [_OUTPUTS], "Output keywords (the library's spreading_output_parameters(), with the "
               "observers' C++ defaults)")

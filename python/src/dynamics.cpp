@@ -39,8 +39,8 @@ py::dict spreading(const PyChain& chain, TransportCase c, const PyRun& options) 
   c.chain = chain.recipe;
   SpreadingRunConfig& d = c.dynamics;
   fit_within_duration(c);                                  // a window beyond T: no exponents
-  granular::apply(ModeKick(c.mode), {c.kick}, c);          // only a mode kick takes mode, mode_khz, energy
-  warn(frequency_slips(c.mode, c.chain, front_end_word));  // mode_khz: Hz typed as kHz
+  granular::apply(ModeKick(c.mode), {c.kick}, c);          // only a mode kick takes mode, near_khz, energy
+  warn(frequency_slips(c.mode, c.chain, front_end_word));  // near_khz: Hz typed as kHz
   // τ by the stability rule on the chain's recipe: every realization of a random chain (as the
   // tool's --disorder), this very chain for a given one (as the tool's --config/--radii); a dt past
   // it named before anything judged on its grid.
@@ -78,7 +78,7 @@ py::dict spreading(const PyChain& chain, TransportCase c, const PyRun& options) 
 py::dict transport(const KickedCaseChoices& choices, bool profile, const PyRun& options) {
   KickedCase k = kicked_case(choices, true, radius_names(choices.chain, front_end_word));
   warn(k.warnings);  // implausible radii, before the run as the tool says them
-  warn(frequency_slips(k.c.mode, k.c.chain, front_end_word));  // mode_khz: Hz typed as kHz
+  warn(frequency_slips(k.c.mode, k.c.chain, front_end_word));  // near_khz: Hz typed as kHz
   TransportCase& c = k.c;
   if (profile) c.profile_realizations = c.realizations;
   std::string t_warning;
@@ -122,7 +122,7 @@ py::dict exponent_table(const ExponentChoices& words, ExponentTableConfig config
   std::string t_warning;  // one is enough: the cases share T
   const nlohmann::json step_rule = validate_and_settle(cases, "T", t_warning);
   if (!t_warning.empty()) warn({t_warning});     // after the errors
-  warn(frequency_slips(cases, front_end_word));  // mode_khz: Hz typed as kHz, as the tool warns
+  warn(frequency_slips(cases, front_end_word));  // near_khz: Hz typed as kHz, as the tool warns
   base.dynamics = cases.front().dynamics;        // τ and scheme as settled
   const int thread_request = options.thread_request();
   const std::string& prefix = options.checkpoint;

@@ -122,10 +122,10 @@ def test_mode_kicks_of_an_ensemble_and_of_the_table_equal_the_tools(tools):
     for key in ("t", "m2", "ipr", "energy_error"):
         assert_identical(t[key], csv[key])
     assert without_process_keys(t.metadata) == without_process_keys(meta)
-    flags = ["--chains", "A", "--F0", "1", "--ic", "mode", "--mode-khz", "12", "--N", "101", "--realizations", "2",
+    flags = ["--chains", "A", "--F0", "1", "--ic", "mode", "--near", "12", "--N", "101", "--realizations", "2",
              "--samples", "30", "--profile-F0", "none", "--bootstrap", "50", *SHORT_FLAGS, "--quiet"]
     csv, meta = tools.run("exponents", *flags, output="exp")
-    table = gr.exponent_table(chains=["A"], F0=[1], ic=["mode"], mode_khz=12, N=101, realizations=2, samples=30,
+    table = gr.exponent_table(chains=["A"], F0=[1], ic=["mode"], near=12, N=101, realizations=2, samples=30,
                               profile_F0=None, bootstrap=50, **SHORT)
     assert list(table.column("ic")) == ["mode"]
     assert_columns_identical(table, csv)
@@ -204,10 +204,10 @@ def test_exponent_table_equals_the_exponents_tool(tools):
 
 
 def test_a_mode_kick_equals_the_spreading_tool_and_keeps_its_mode_under_the_linear_law(tools):
-    args = ["--disorder", "A", "--N", "101", "--seed", "2", "--ic", "mode", "--mode-khz", "30", "--energy", "1e-7",
+    args = ["--disorder", "A", "--N", "101", "--seed", "2", "--ic", "mode", "--near", "30", "--energy", "1e-7",
             "--force-law", "linear", *SHORT_FLAGS]
     csv, meta = tools.run("spreading", *args, output="mode")
-    run = gr.spreading(gr.anderson(N=101, seed=2), ic="mode", mode_khz=30, energy=1e-7, force_law="linear", **SHORT)
+    run = gr.spreading(gr.anderson(N=101, seed=2), ic="mode", near=30, energy=1e-7, force_law="linear", **SHORT)
     for key in ("t", "m2", "ipr", "m2_centroid"):
         assert_identical(run[key], csv[key])
     used = run.metadata["parameters"]["mode_used"]
@@ -403,3 +403,18 @@ def test_the_run_keywords_and_their_defaults_are_the_library_table(function):
 def test_an_unknown_run_keyword_is_a_type_error_naming_it():
     with pytest.raises(TypeError, match="unexpected keyword argument 'fit_stp'"):
         gr.transport(fit_stp=1e-5)
+
+
+def test_a_renamed_keyword_still_works_once_with_a_future_warning():
+    """mode_khz (a mode kick's nearest frequency) is now near, as granular.spectrum's: the former keyword gives the
+    same run and a FutureWarning naming the new one; both together are a TypeError."""
+    chain = gr.anderson(N=51, seed=2)
+    short = dict(T=1e-4, fit=(2e-5, 1e-4), samples=20)
+    now = gr.spreading(chain, ic="mode", near=20, energy=1e-9, **short)
+    with pytest.warns(FutureWarning, match="'mode_khz' is deprecated: use 'near'"):
+        before = gr.spreading(chain, ic="mode", mode_khz=20, energy=1e-9, **short)
+    np.testing.assert_array_equal(now["m2"], before["m2"])
+    assert now["metadata"]["parameters"] == before["metadata"]["parameters"]
+    with pytest.raises(TypeError, match="both 'mode_khz' and 'near'"):
+        gr.spreading(chain, ic="mode", near=20, mode_khz=20, energy=1e-9, **short)
+    assert "mode_khz" not in inspect.signature(gr.spreading).parameters

@@ -38,9 +38,9 @@ def test_hertz_typed_as_kilohertz_is_named():
     (gr.breathers, dict(near_khz=33810), "near_khz 33810"),
     (gr.breathers, dict(start_khz=20000), "start_khz 20000"),
     (gr.breathers, dict(mode=30, target_khz=20000), "target_khz 20000"),
-    (gr.spreading, dict(ic="mode", mode_khz=15000, energy=1e-9), "mode_khz 15000"),
+    (gr.spreading, dict(ic="mode", near=15000, energy=1e-9), "near 15000"),
     (gr.exponent_table, dict(chains="none", quasi="s2", N=51, T=1e-4, fit=(2e-5, 1e-4), t_star=2e-5, realizations=1,
-                             ic=["mode"], mode_khz=15000, energy=1e-9, F0=[10], profile_F0=[]), "mode_khz 15000"),
+                             ic=["mode"], near=15000, energy=1e-9, F0=[10], profile_F0=[]), "near 15000"),
     (gr.ipr_map, dict(near=15000, count=3), "near 15000"),
     (gr.ipr_map, dict(window=(15000, 16000)), "window 15000"),
 ])

@@ -29,7 +29,8 @@ TEST(ParameterTables, TellTheParametersInBackticksInAFrontEndsWords) {
   EXPECT_EQ(tell_parameters("a multiple of `time_step`, at most `duration`", flag), "a multiple of --dt, at most --T");
   EXPECT_EQ(tell_parameters("no parameter", flag), "no parameter");
   EXPECT_EQ(tell_parameters("an unpaired ` stays", flag), "an unpaired ` stays");
-  EXPECT_EQ(word_of(parameter(mode_kick_parameters(), "mode_khz")), "mode_khz");
+  EXPECT_EQ(word_of(parameter(mode_kick_parameters(), "near_khz")), "near");
+  EXPECT_EQ(parameter(mode_kick_parameters(), "near_khz").former_words, std::vector<std::string>{"mode_khz"});
   EXPECT_EQ(word_of(parameter(transport_parameters(), "time_step")), "dt");
   EXPECT_THROW(parameter(transport_parameters(), "no_such_parameter"), std::out_of_range);
 }

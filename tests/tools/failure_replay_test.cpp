@@ -191,7 +191,7 @@ INSTANTIATE_TEST_SUITE_P(
                       Family{"normal", "--polydisperse normal:4e-3:5e-4:3e-3", R"("beads":"normal()"},
                       Family{"mle", "--mle --renormalize 5", R"("renormalize_every":5)"},
                       Family{"mode", "--ic mode --mode 20 --energy 1e-9", R"("mode_kick":{"energy_J":1e-09,"mode":20)"},
-                      Family{"mode-khz", "--ic mode --mode-khz 12", R"("near_khz":12.0)"},
+                      Family{"near", "--ic mode --near 12", R"("near_khz":12.0)"},
                       Family{"match", "--ic velocity --beta match", R"("beta_m_s":"match")"},
                       Family{"aba864", "--integrator aba864", R"("integrator":"aba864")"},
                       Family{"srkn14a", "--integrator srkn14a --dt 2e-6", R"("integrator":"srkn14a")"},

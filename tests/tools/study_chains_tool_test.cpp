@@ -113,7 +113,7 @@ TEST(ExponentsChains, MleIsTheMeanOfSpreadingRuns) {
 // exponents --ic mode runs the ensemble spreading --ic mode runs, with the same mode options.
 TEST(ExponentsChains, ModeKickIsSpreadingsModeKick) {
   const std::string dir = scratch_folder("exp-mode");
-  const std::string mode = " --ic mode --mode-khz 20 --energy 1e-7 --realizations 3";
+  const std::string mode = " --ic mode --near 20 --energy 1e-7 --realizations 3";
   ASSERT_EQ(run_tool("exponents", study + " --chains A" + mode + " --output " + dir + "/e").exit_code, 0);
   ASSERT_EQ(run_tool("spreading", dynamics + " --disorder A" + mode + " --output " + dir + "/s").exit_code, 0);
   const Table e = read_table(dir + "/e-curves.csv"), s = read_table(dir + "/s.csv");

@@ -68,12 +68,12 @@ TEST(UnitSlip, HertzTypedAsKilohertzIsWarnedForEveryFrequencyOption) {
         {"breathers", breathers + "--mode 21 --target-khz 20000", "--target-khz 20000"},
         {"ipr-map", "--N 10 --xi 0.5 --q 0.5 --realizations 2 --near 15000 --count 2 --quiet", "--near 15000"},
         {"ipr-map", "--N 10 --xi 0.5 --q 0.5 --realizations 2 --window 15000:16000 --quiet", "--window 15000"},
-        {"spreading", "--N 51 --T 1e-4 --fit 2e-5:1e-4 --samples 20 --ic mode --mode-khz 15000 --energy 1e-9 --quiet",
-         "--mode-khz 15000"},
+        {"spreading", "--N 51 --T 1e-4 --fit 2e-5:1e-4 --samples 20 --ic mode --near 15000 --energy 1e-9 --quiet",
+         "--near 15000"},
         {"exponents",
          "--chains none --quasi s2 --N 51 --T 1e-4 --fit 2e-5:1e-4 --t-star 2e-5 --realizations 1 "
-         "--F0 10 --profile-F0 none --bootstrap 2 --ic mode --mode-khz 15000 --energy 1e-9",
-         "--mode-khz 15000"}}) {
+         "--F0 10 --profile-F0 none --bootstrap 2 --ic mode --near 15000 --energy 1e-9",
+         "--near 15000"}}) {
     const ToolResult slip = run_tool_in(dir, tool, args + " --output slip");
     EXPECT_EQ(slip.err.rfind("warning: " + named + ": above every frequency of this chain", 0), 0u)
         << tool << " " << args << ": " << slip.err;

@@ -2,7 +2,7 @@
 // The options `exponents` has beyond the paper's study: which chains (--chains,
 // and a chain of the user's own from --types / --type-masses / --polydisperse, named by
 // --chain-name, or a quasiperiodic chain from --quasi over phases), which kicks (--ic, and the mode of --ic mode:
-// --mode / --mode-khz / --energy), and the maximal Lyapunov exponent (--mle). The same option words as `spreading`.
+// --mode / --near / --energy), and the maximal Lyapunov exponent (--mle). The same option words as `spreading`.
 // The rule that makes a table of them, shared with Python: study/exponent_choices.hpp.
 #include <string>
 

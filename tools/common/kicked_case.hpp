@@ -27,7 +27,7 @@ struct KickedCaseOptions : KickedCaseChoices {
 inline void add_kicked_case_options(CLI::App& app, KickedCaseOptions& o) {
   const std::size_t before = app.get_options().size();
   add_chain_options(app, o.chain, long_run_chain_parameters());
-  add_option(app, "--ic", o.ic, "initial condition: displacement | velocity | mode (a linear mode: --mode, --mode-khz)");
+  add_option(app, "--ic", o.ic, "initial condition: displacement | velocity | mode (a linear mode: --mode, --near)");
   add_dynamics_options(app, o.run);
   add_parameters(app, o.mode, mode_kick_parameters());
   add_mle_options(app, o.run, "column mle = X1(t) [1/s] (ensemble: its mean)");

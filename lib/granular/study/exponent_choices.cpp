@@ -58,7 +58,7 @@ const ParameterTable<ExponentChoices>& exponent_parameters() {
        {},
        {read_chains, write_chains},
        "chain kinds: comma list of h, A, RDM1, RDM2, or 'none' (only the chain of `types`/`polydisperse`)"},
-      {"ic", {}, {read_kicks, write_kicks}, "kicks: comma list of displacement, velocity, mode (`mode` or `mode_khz`)"},
+      {"ic", {}, {read_kicks, write_kicks}, "kicks: comma list of displacement, velocity, mode (`mode` or `near_khz`)"},
       {"types_rule", &O::types_rule,
        "how `types`/`type_masses` are drawn: A (each bead, the default), RDM1 (each dimer), RDM2 (two types: dimers "
        "12 or 21)",

@@ -18,8 +18,8 @@ std::vector<std::string> frequency_slips(const BreatherBranchConfig& c, const To
 }
 
 std::vector<std::string> frequency_slips(const ModeKick& kick, const ChainRecipe& chain, const Told& told) {
-  if (!(kick.near_khz >= 0)) return {};  // no frequency: the chain's bound is not needed (nor its radii valid yet)
-  std::string w = frequency_warning(told("mode_khz"), kick.near_khz, highest_frequency_bound_khz(chain));
+  if (!kick.near_khz) return {};  // no frequency: the chain's bound is not needed (nor its radii valid yet)
+  std::string w = frequency_warning(told("near_khz"), *kick.near_khz, highest_frequency_bound_khz(chain));
   return w.empty() ? std::vector<std::string>{} : std::vector<std::string>{std::move(w)};
 }
 

@@ -22,10 +22,10 @@ using Told = std::function<std::string(const std::string&)>;
 /// `start_khz`, `target_khz` (none at F0 = 0, where no bound is known).
 std::vector<std::string> frequency_slips(const BreatherBranchConfig& c, const Told& told);
 
-/// A mode kick's `mode_khz` above every frequency of `chain`.
+/// A mode kick's `near_khz` above every frequency of `chain`.
 std::vector<std::string> frequency_slips(const ModeKick& kick, const ChainRecipe& chain, const Told& told);
 
-/// The first of `cases` (an exponent table's chains) whose mode kick's `mode_khz` is above every
+/// The first of `cases` (an exponent table's chains) whose mode kick's `near_khz` is above every
 /// frequency of its chain: one warning for the table.
 std::vector<std::string> frequency_slips(const std::vector<TransportCase>& cases, const Told& told);
 

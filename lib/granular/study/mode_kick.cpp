@@ -14,13 +14,13 @@
 namespace granular {
 
 void validate(const ModeKick& kick, std::size_t beads) {
-  const bool by_number = kick.mode != 0, by_frequency = kick.near_khz >= 0;
+  const bool by_number = kick.mode != 0, by_frequency = kick.near_khz.has_value();
   if (by_number == by_frequency)
-    throw InvalidInput("mode", ": give either a mode number or a frequency (`mode_khz`), not both or neither");
+    throw InvalidInput("mode", ": give either a mode number or a frequency (`near_khz`), not both or neither");
   if (by_number && (kick.mode < 1 || static_cast<std::size_t>(kick.mode) > beads))
     throw InvalidInput("mode", " " + std::to_string(kick.mode) + ": outside 1.." + std::to_string(beads));
-  if (by_frequency && !std::isfinite(kick.near_khz))
-    throw InvalidInput("mode_khz", " " + format_number(kick.near_khz) + ": must be finite [kHz]");
+  if (by_frequency && !(std::isfinite(*kick.near_khz) && *kick.near_khz >= 0))
+    throw InvalidInput("near_khz", " " + format_number(*kick.near_khz) + ": must be finite and >= 0 [kHz]");
   if (!std::isfinite(kick.energy) || kick.energy < 0)
     throw InvalidInput("energy", " " + format_number(kick.energy) + ": must be finite and >= 0 [J] (0: use amplitude)");
   if (kick.energy == 0 && !(std::isfinite(kick.amplitude) && kick.amplitude > 0))
@@ -44,7 +44,7 @@ ModeKickResult mode_kick(const Chain& chain, ForceLawKind law_kind, const ModeKi
     if (j == found.size())
       throw NumericalError("mode " + std::to_string(k) + ": not among the modes nearest its own frequency");
   } else {
-    found = spectrum(d, nearest(kick.near_khz, 1), with_vector);
+    found = spectrum(d, nearest(*kick.near_khz, 1), with_vector);
   }
   ModeKickResult r;
   r.mode = found.mode[j];

@@ -8,6 +8,7 @@
 //   auto k   = granular::mode_kick(chain, granular::ForceLawKind::hertz, {.near_khz = 30, .energy = 1e-7});
 //   auto r   = granular::run_spreading(chain, k.initial, config);  // spreading_run.hpp
 #include <cstddef>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -22,13 +23,13 @@ namespace granular {
 /// Which mode, and how large. Exactly one of `mode` and `near_khz` chooses; `energy`, when > 0,
 /// sets the size, otherwise `amplitude` does.
 struct ModeKick {
-  long mode = 0;         ///< mode number 1…N by increasing frequency; 0: use near_khz
-  double near_khz = -1;  ///< the mode nearest this frequency [kHz] (ties: the lower); < 0: use mode
-  double energy = 0;     ///< total energy H [J] under the run's force law; 0: use amplitude
-  double amplitude = 0;  ///< largest |u_n| [m] when energy is 0
+  long mode = 0;                     ///< mode number 1…N by increasing frequency; 0: use near_khz
+  std::optional<double> near_khz{};  ///< the mode nearest this frequency [kHz] (ties: the lower); none: use mode
+  double energy = 0;                 ///< total energy H [J] under the run's force law; 0: use amplitude
+  double amplitude = 0;              ///< largest |u_n| [m] when energy is 0
 };
 
-/// Throws InvalidInput (naming `mode`, `mode_khz` (near_khz), `energy` or `amplitude`) unless exactly one
+/// Throws InvalidInput (naming `mode`, `near_khz`, `energy` or `amplitude`) unless exactly one
 /// selector and one size are given and make sense for an N-bead chain.
 void validate(const ModeKick& kick, std::size_t beads);
 

@@ -141,7 +141,9 @@ const ParameterTable<TransportCase>& transport_parameters() {
 const ParameterTable<ModeKick>& mode_kick_parameters() {
   static const ParameterTable<ModeKick> table{
       {"mode", &ModeKick::mode, "a mode kick: the linear mode number K, 1..N by increasing frequency", false},
-      {"mode_khz", &ModeKick::near_khz, "a mode kick: the linear mode nearest this frequency [kHz]", false},
+      Parameter<ModeKick>{"near_khz", &ModeKick::near_khz, "a mode kick: the linear mode nearest this frequency [kHz]",
+                          false}
+          .formerly("mode_khz"),
       {"energy", &ModeKick::energy,
        "a mode kick: total energy of the initial state [J] (without it `alpha` is the largest |u_n|)", false}};
   return table;
@@ -149,7 +151,7 @@ const ParameterTable<ModeKick>& mode_kick_parameters() {
 
 void apply(const ModeKick& kick, const std::vector<Kick>& kicks, TransportCase& c) {
   if (chosen(kick) && std::find(kicks.begin(), kicks.end(), Kick::mode) == kicks.end())
-    throw InvalidInput("`mode`/`mode_khz`/`energy`: only with `ic` mode");
+    throw InvalidInput("`mode`/`near_khz`/`energy`: only with `ic` mode");
   c.mode = kick;
 }
 

@@ -24,7 +24,7 @@ const ParameterTable<ModeKick>& mode_kick_parameters();
 
 /// Whether any of a mode kick's own fields (mode, near_khz, energy) is set: what only a mode kick
 /// may use.
-inline bool chosen(const ModeKick& kick) { return kick.mode != 0 || kick.near_khz >= 0 || kick.energy != 0; }
+inline bool chosen(const ModeKick& kick) { return kick.mode != 0 || kick.near_khz || kick.energy != 0; }
 
 /// Sets c.mode to `kick`. Only a mode kick may use its fields: throws InvalidInput naming them
 /// unless `kicks` (the kicks the case runs: an exponent table runs several) holds Kick::mode.

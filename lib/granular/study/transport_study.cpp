@@ -173,8 +173,7 @@ static nlohmann::json describe_conservative(const TransportCase& c) {
   describe_fields(c.chain, described);
   if (c.kick == Kick::mode)  // only then: every other case keeps its identity (and its checkpoints)
     described["mode_kick"] = {{"mode", c.mode.mode == 0 ? nlohmann::json(nullptr) : nlohmann::json(c.mode.mode)},
-                              {"near_khz",
-                               c.mode.near_khz < 0 ? nlohmann::json(nullptr) : nlohmann::json(c.mode.near_khz)},
+                              {"near_khz", c.mode.near_khz ? nlohmann::json(*c.mode.near_khz) : nlohmann::json(nullptr)},
                               {"energy_J", c.mode.energy == 0 ? nlohmann::json(nullptr) : nlohmann::json(c.mode.energy)}};
   return described;
 }
