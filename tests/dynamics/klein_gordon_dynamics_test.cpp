@@ -301,6 +301,30 @@ TEST(KleinGordonDynamics, DampedAndReferenceSteppersAgreeWithTheConservativeOne)
   EXPECT_LT(damped_error, 1e-10);
   EXPECT_LT(reference_error, 1e-8);
   EXPECT_GT(without, 1e-2);
+  // Contact damping needs contacts: refused, naming its parameter.
+  try {
+    make_damped_propagator(law, chain, saba2c(), tau, s0, {.kk_gamma = 1e-3});
+    ADD_FAILURE() << "contact damping accepted on linear springs";
+  } catch (const InvalidInput& e) {
+    EXPECT_EQ(e.parameter(), "kk_gamma");
+  }
+}
+
+// The active window (the stepper integrates only where the energy has arrived) relies on quiescent
+// sites staying exactly at rest: the on-site force −ε̃ u − u³ and the bond force vanish at u = 0.
+// One site in a chain of 400, t = 200: the window ends far inside and changes nothing.
+TEST(KleinGordonDynamics, ActiveWindowChangesNothing) {
+  const Chain chain = kg_chain(400);
+  const ForceLaw law = kg_law(chain);
+  const State s0 = site_energy_kick(chain, 199, 0.4);
+  auto window = fixtures::run(make_splitting_propagator(law, chain, saba2c(), 0.1, s0), 2000);
+  auto whole = fixtures::run(make_splitting_propagator(law, chain, saba2c(), 0.1, s0, {.enabled = false}), 2000);
+  std::printf("  window [%zu, %zu) of %zu; difference %.2e\n", window->window_begin(), window->window_end(),
+              chain.size(), relative_difference(window->displacement(), whole->displacement()));
+  EXPECT_GT(window->window_begin(), 0u);
+  EXPECT_LT(window->window_end(), chain.size());
+  EXPECT_LT(relative_difference(window->displacement(), whole->displacement()), 1e-12);
+  EXPECT_LT(relative_difference(window->velocity(), whole->velocity()), 1e-12);
 }
 
 }  // namespace

@@ -340,6 +340,8 @@ std::unique_ptr<Propagator> make_damped_propagator(const ForceLaw& law, const Ch
                                                    const State& initial, const Damping& damping) {
   validate_propagation(chain, time_step, initial);
   validate(damping);
+  if (damping.kk_gamma > 0 && !chain.spring.empty())
+    throw InvalidInput("kk_gamma", ": contact damping needs contacts; the chain's bonds are linear springs");
   if (!damping.any()) return make_splitting_propagator(law, chain, scheme, time_step, initial, ActiveWindow{false});
   return std::visit(
       [&](const auto& l) -> std::unique_ptr<Propagator> {
