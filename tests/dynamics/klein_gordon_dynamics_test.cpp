@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <numbers>
+#include <variant>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -89,6 +90,25 @@ TEST(KleinGordonDynamics, InitialConditionsCarryTheirEnergy) {
       EXPECT_EQ(e.parameter(), "force_law");
     }
   }
+}
+
+// The stiffness bound the time-step rule uses: the on-site stiffness ε̃ + 3u² where the on-site energy
+// ε̃ u²/2 + u⁴/4 reaches E, and no more (the rule's Gershgorin bound then covers every state of
+// energy E); linear springs give k whatever E.
+TEST(KleinGordonDynamics, OnsiteStiffnessBoundIsReachedAtTheEnergy) {
+  const Chain chain = kg_chain(8);
+  const ForceLaw law = kg_law(chain);
+  const auto& l = std::get<PolynomialLaw>(law);
+  for (std::size_t n = 0; n < chain.size(); ++n)
+    for (double e : {1e-6, 0.4, 10.0}) {
+      const double bound = l.onsite_stiffness_bound(n, e), k = chain.onsite[n];
+      const double u2 = (bound - k) / 3;  // the displacement² where the bound is reached
+      EXPECT_NEAR(l.onsite_potential(n, std::sqrt(u2)), e, 1e-14 * std::max(e, 1.0)) << n << " " << e;
+      EXPECT_GT(bound, k);
+    }
+  Chain linear = chain;
+  linear.onsite_quartic.clear();
+  EXPECT_EQ(std::get<PolynomialLaw>(kg_law(linear)).onsite_stiffness_bound(3, 10.0), chain.onsite[3]);
 }
 
 // W = 4, one site excited with E = 0.4 (Skokos et al. 2009's single-site case), t = 100: halving τ
