@@ -13,6 +13,7 @@
 #include "granular/model/contact_law.hpp"
 #include "granular/model/correlation.hpp"
 #include "granular/model/disorder.hpp"
+#include "granular/model/klein_gordon.hpp"
 #include "granular/model/material.hpp"
 #include "granular/model/named_chains.hpp"
 #include "granular/model/selected_chain.hpp"

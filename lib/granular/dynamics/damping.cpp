@@ -149,10 +149,15 @@ void boundary_bonds([[maybe_unused]] const View law, const double* __restrict u,
 }
 
 // a_p = F/m of bead p − 1 (padded: a[0] = a[n+1] = 0 stay untouched, the walls). On-site springs
-// (`ks`, null when the chain has none) add −k u to F, as in detail::correct_and_drift.
+// (`ks`, null when the chain has none; `qs`, their quartic part, null when linear) add −k u − q u³
+// to F, as in detail::correct_and_drift.
 void accelerations(const double* __restrict f, double* __restrict a, const double* __restrict im,
-                   const double* __restrict ks, const double* __restrict u, std::size_t lo, std::size_t hi) {
-  if (ks)
+                   const double* __restrict ks, const double* __restrict qs, const double* __restrict u, std::size_t lo,
+                   std::size_t hi) {
+  if (qs)
+    for (std::size_t p = lo; p < hi; ++p)
+      a[p] = im[p - 1] * (f[p - 1] - f[p] - onsite_restoring<true>(ks, qs, p - 1, u[p]));
+  else if (ks)
     for (std::size_t p = lo; p < hi; ++p) a[p] = im[p - 1] * (f[p - 1] - f[p] - ks[p - 1] * u[p]);
   else
     for (std::size_t p = lo; p < hi; ++p) a[p] = im[p - 1] * (f[p - 1] - f[p]);
@@ -160,11 +165,17 @@ void accelerations(const double* __restrict f, double* __restrict a, const doubl
 
 // The corrector's velocity change c (1/m) [K_{p−1} (a_{p−1} − a_p) − K_p (a_p − a_{p+1})] of bead
 // p − 1 (docs/physics.md, "Nonlinear dynamics"; the expression of detail::correct_and_drift), with
-// − k a_p from on-site springs (their −k on the Hessian's diagonal).
+// − k a_p from on-site springs (their −k on the Hessian's diagonal; − (k + 3 q u²) a_p with a
+// quartic part, at the positions u the bonds saw).
 void corrector_change(const double* __restrict stiff, const double* __restrict a, double* __restrict dv,
-                      const double* __restrict im, const double* __restrict ks, std::size_t lo, std::size_t hi,
-                      double c) {
-  if (ks)
+                      const double* __restrict im, const double* __restrict ks, const double* __restrict qs,
+                      const double* __restrict u, std::size_t lo, std::size_t hi, double c) {
+  if (qs)
+    for (std::size_t p = lo; p < hi; ++p)
+      dv[p] = c * im[p - 1] *
+              (stiff[p - 1] * (a[p - 1] - a[p]) - stiff[p] * (a[p] - a[p + 1]) -
+               onsite_hessian<true>(ks, qs, p - 1, u[p]) * a[p]);
+  else if (ks)
     for (std::size_t p = lo; p < hi; ++p)
       dv[p] = c * im[p - 1] * (stiff[p - 1] * (a[p - 1] - a[p]) - stiff[p] * (a[p] - a[p + 1]) - ks[p - 1] * a[p]);
   else
@@ -283,9 +294,9 @@ class DampedPropagator final : public Propagator {
       }
       if (g != 0) {
         const auto [b0, e0] = range(0, 1);
-        accelerations(f_.data(), ap_.data(), im_.data(), view.onsite, u, b0, e0);
+        accelerations(f_.data(), ap_.data(), im_.data(), view.onsite, view.onsite_quartic, u, b0, e0);
         const auto [b1, e1] = range(1, 1);
-        corrector_change(stiff_.data(), ap_.data(), dv, im_.data(), view.onsite, b1, e1, g);
+        corrector_change(stiff_.data(), ap_.data(), dv, im_.data(), view.onsite, view.onsite_quartic, u, b1, e1, g);
         if (end) add(v, dv, b1, e1);
       }
       {
@@ -329,6 +340,8 @@ std::unique_ptr<Propagator> make_damped_propagator(const ForceLaw& law, const Ch
                                                    const State& initial, const Damping& damping) {
   validate_propagation(chain, time_step, initial);
   validate(damping);
+  if (damping.kk_gamma > 0 && !chain.spring.empty())
+    throw InvalidInput("kk_gamma", ": contact damping needs contacts; the chain's bonds are linear springs");
   if (!damping.any()) return make_splitting_propagator(law, chain, scheme, time_step, initial, ActiveWindow{false});
   return std::visit(
       [&](const auto& l) -> std::unique_ptr<Propagator> {

@@ -93,7 +93,8 @@ class DampingFlow {
 /// (same positions; E_{τ/2} E_{τ/2} as two exact pair steps) run as one blocked pass with the
 /// SABA2C correctors on either side and the next drift; the kicks are the conservative stepper's
 /// blocked kernels. With no damping at all (Damping::any() false) it is the
-/// conservative stepper on the whole chain.
+/// conservative stepper on the whole chain. Throws InvalidInput naming kk_gamma for contact
+/// damping on a chain without contacts (linear spring bonds, Chain::spring).
 std::unique_ptr<Propagator> make_damped_propagator(const ForceLaw& law, const Chain& chain,
                                                    const SplittingScheme& scheme, double time_step,
                                                    const State& initial, const Damping& damping);

@@ -36,24 +36,55 @@ enum class ForceLawKind {
 ForceLawKind parse_force_law(std::string_view name);
 std::string to_string(ForceLawKind kind);
 
-/// The linear springs holding bead n to the ground (Chain::onsite, the quasiperiodic chain S1):
-/// force −k_n u_n [N] on bead n, energy ½ k_n u_n² [J]. Every law carries them, so that each
-/// integrator adds them where it adds the bond forces, once; kernels read them from the view's
-/// `onsite` pointer, null when the chain has none (then they run the bond-only loops unchanged).
+/// The springs holding bead n to the ground (Chain::onsite, the quasiperiodic chain S1; with
+/// Chain::onsite_quartic, the Klein–Gordon chain): force −k_n u_n − q_n u_n³ [N] on bead n, energy
+/// ½ k_n u_n² + ¼ q_n u_n⁴ [J]. Every law carries them, so that each integrator adds them where it
+/// adds the bond forces, once; kernels read them from the view's `onsite` (k_n) and
+/// `onsite_quartic` (q_n) pointers, null when the chain has none (then they run the loops without
+/// them unchanged) through the inline onsite_* functions below, their one home.
 class OnsiteSprings {
  public:
-  explicit OnsiteSprings(const Chain& chain) : k_(chain.onsite) {}
+  explicit OnsiteSprings(const Chain& chain);
   bool grounded() const { return !k_.empty(); }
+  /// Whether the springs have a quartic part (then grounded() too).
+  bool quartic() const { return !q_.empty(); }
   /// k_n [N/m] per bead, or null.
   const double* onsite_data() const { return k_.empty() ? nullptr : k_.data(); }
-  /// ½ k_n u² [J] of bead n at displacement u [m]; 0 without springs.
-  double onsite_potential(std::size_t n, double u) const { return k_.empty() ? 0.0 : 0.5 * k_[n] * u * u; }
-  /// k_n [N/m]; 0 without springs.
+  /// q_n [N/m³] per bead, or null.
+  const double* onsite_quartic_data() const { return q_.empty() ? nullptr : q_.data(); }
+  /// ½ k_n u² + ¼ q_n u⁴ [J] of bead n at displacement u [m]; 0 without springs.
+  double onsite_potential(std::size_t n, double u) const {
+    if (k_.empty()) return 0.0;
+    return q_.empty() ? 0.5 * k_[n] * u * u : u * u * (0.5 * k_[n] + 0.25 * q_[n] * u * u);
+  }
+  /// k_n [N/m], the stiffness at rest; 0 without springs.
   double onsite_stiffness(std::size_t n) const { return k_.empty() ? 0.0 : k_[n]; }
+  /// The largest stiffness k_n + 3 q_n u² [N/m] of bead n's spring at any u whose spring energy is
+  /// ≤ `energy` [J]: at ½ k u² + ¼ q u⁴ = E, q u² = √(k² + 4 q E) − k. k_n for linear springs.
+  double onsite_stiffness_bound(std::size_t n, double energy) const {
+    if (q_.empty() || !(q_[n] > 0)) return onsite_stiffness(n);
+    return 3 * std::sqrt(k_[n] * k_[n] + 4 * q_[n] * energy) - 2 * k_[n];
+  }
 
  private:
-  std::vector<double> k_;
+  std::vector<double> k_, q_;
 };
+
+/// The restoring force k_n u + q_n u³ [N] of bead n's on-site spring (the force is its negative),
+/// its stiffness k_n + 3 q_n u² [N/m] and curvature 6 q_n u [N/m²], for kernels compiled with
+/// (`quartic`) or without the quartic part; without it they read k alone (q may be null) and are
+/// the expressions the linear springs always had.
+template <bool quartic>
+inline double onsite_restoring(const double* k, const double* q, std::size_t n, double u) {
+  if constexpr (quartic) return (k[n] + q[n] * u * u) * u;
+  else return k[n] * u;
+}
+template <bool quartic>
+inline double onsite_hessian(const double* k, const double* q, std::size_t n, double u) {
+  if constexpr (quartic) return k[n] + 3 * q[n] * u * u;
+  else return k[n];
+}
+inline double onsite_curvature(const double* q, std::size_t n, double u) { return 6 * q[n] * u; }
 
 class HertzLaw : public OnsiteSprings {
  public:
@@ -63,7 +94,8 @@ class HertzLaw : public OnsiteSprings {
     const double* __restrict contact;
     const double* __restrict overlap;
     const double* __restrict rest;
-    const double* onsite;  ///< k_n [N/m] per bead, null when the chain has no on-site springs
+    const double* onsite;          ///< k_n [N/m] per bead, null when the chain has no on-site springs
+    const double* onsite_quartic;  ///< q_n [N/m³] per bead, null when the springs are linear
     double force(std::size_t k, double x) const {
       const double d = std::max(overlap[k] + x, 0.0);  // [δ]_+ branch-free (maxsd)
       return contact[k] * d * std::sqrt(d) - rest[k];
@@ -75,7 +107,7 @@ class HertzLaw : public OnsiteSprings {
       stiff = 1.5 * contact[k] * s;
     }
   };
-  View view() const { return {contact_.data(), overlap_.data(), rest_.data(), onsite_data()}; }
+  View view() const { return {contact_.data(), overlap_.data(), rest_.data(), onsite_data(), onsite_quartic_data()}; }
 
   double force(std::size_t k, double x) const { return view().force(k, x); }
   double stiffness(std::size_t k, double x) const {
@@ -89,7 +121,8 @@ class HertzLaw : public OnsiteSprings {
   std::vector<double> contact_, overlap_, rest_, rest_potential_;
 };
 
-/// Polynomial bond force f(x) = c1 x + c2 x² + c3 x³ (c2 = c3 = 0: linear). Needs F0 > 0.
+/// Polynomial bond force f(x) = c1 x + c2 x² + c3 x³ (c2 = c3 = 0: linear). Needs F0 > 0, except
+/// linear (degree 1) on a chain whose bonds are linear springs (Chain::spring): c1 = B_k then.
 class PolynomialLaw : public OnsiteSprings {
  public:
   PolynomialLaw(const Chain& chain, int degree);
@@ -98,14 +131,15 @@ class PolynomialLaw : public OnsiteSprings {
     const double* __restrict c1;
     const double* __restrict c2;
     const double* __restrict c3;
-    const double* onsite;  ///< k_n [N/m] per bead, null when the chain has no on-site springs
+    const double* onsite;          ///< k_n [N/m] per bead, null when the chain has no on-site springs
+    const double* onsite_quartic;  ///< q_n [N/m³] per bead, null when the springs are linear
     double force(std::size_t k, double x) const { return x * (c1[k] + x * (c2[k] + x * c3[k])); }
     void force_stiffness(std::size_t k, double x, double& f, double& stiff) const {
       f = force(k, x);
       stiff = c1[k] + x * (2 * c2[k] + x * 3 * c3[k]);
     }
   };
-  View view() const { return {c1_.data(), c2_.data(), c3_.data(), onsite_data()}; }
+  View view() const { return {c1_.data(), c2_.data(), c3_.data(), onsite_data(), onsite_quartic_data()}; }
 
   double force(std::size_t k, double x) const { return view().force(k, x); }
   double stiffness(std::size_t k, double x) const { return c1_[k] + x * (2 * c2_[k] + x * 3 * c3_[k]); }
@@ -128,6 +162,7 @@ concept BondForceLaw = requires(const L& law, std::size_t k, double x, double& o
   { law.bonds() } -> std::same_as<std::size_t>;
   { law.onsite_potential(k, x) } -> std::same_as<double>;
   { law.view().onsite } -> std::convertible_to<const double*>;
+  { law.view().onsite_quartic } -> std::convertible_to<const double*>;
   law.view().force_stiffness(k, x, out, out);
 };
 
@@ -139,7 +174,7 @@ inline bool grounded(const ForceLaw& law) {
 }
 
 /// The law of `kind` on this chain's bonds, with its on-site springs. Throws InvalidInput for
-/// fpu/linear at F0 = 0.
+/// fpu/linear at F0 = 0, and for hertz/fpu on a chain whose bonds are linear springs.
 ForceLaw make_force_law(ForceLawKind kind, const Chain& chain);
 
 }  // namespace granular

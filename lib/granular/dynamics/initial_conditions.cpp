@@ -2,12 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <string>
 #include <vector>
 
 #include "granular/dynamics/observables.hpp"
 #include "granular/error.hpp"
+#include "granular/model/random_stream.hpp"
 #include "granular/number_format.hpp"
 
 namespace granular {
@@ -117,6 +119,36 @@ State velocity_kick(const Chain& chain, std::size_t site, double beta) {
     throw InvalidInput("beta", " " + format_number(beta) + ": must be finite and non-zero [m/s]");
   State s(chain.size());
   s.v[site] = beta;
+  return s;
+}
+
+State site_energy_kick(const Chain& chain, std::size_t site, double energy) {
+  check_site(chain, site);
+  if (!std::isfinite(energy) || !(energy > 0))
+    throw InvalidInput("energy", " " + format_number(energy) + ": must be finite and > 0 [J]");
+  State s(chain.size());
+  s.v[site] = std::sqrt(2 * energy * chain.inverse_mass[site]);
+  return s;
+}
+
+State block_energy_kick(const Chain& chain, std::size_t first, std::size_t length, double energy_density,
+                        std::uint64_t seed, std::uint64_t realization) {
+  check_site(chain, first);
+  if (length == 0 || length > chain.size() - first)
+    throw InvalidInput("length", " " + std::to_string(length) + ": the block of beads " + std::to_string(first + 1) +
+                                     " … must hold at least one bead and end inside the chain of " +
+                                     std::to_string(chain.size()));
+  if (!std::isfinite(energy_density) || !(energy_density > 0))
+    throw InvalidInput("energy_density", " " + format_number(energy_density) + ": must be finite and > 0 [J]");
+  // A counter range of its own, far beyond any chain's draws from the same (seed, realization).
+  constexpr std::uint64_t sign_block = std::uint64_t{1} << 60;  // uniform 2⁶² is the first of block 2⁶⁰
+  const RandomStream stream(seed, realization);
+  State s(chain.size());
+  for (std::size_t j = 0; j < length; ++j) {
+    const double uniform = stream.uniform_block(sign_block + j / 4)[j % 4];
+    const double speed = std::sqrt(2 * energy_density * chain.inverse_mass[first + j]);
+    s.v[first + j] = uniform < 0.5 ? -speed : speed;
+  }
   return s;
 }
 

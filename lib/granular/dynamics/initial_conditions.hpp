@@ -2,6 +2,7 @@
 // Single-site kicks (docs/physics.md, "Nonlinear dynamics"): a displacement α or a velocity β at bead `site` (0-based),
 // the rest of the chain at rest in its precompressed equilibrium.
 #include <cstddef>
+#include <cstdint>
 #include <span>
 
 #include "granular/dynamics/force_law.hpp"
@@ -35,6 +36,20 @@ State shaped_displacement(const Chain& chain, std::span<const double> shape, dou
 /// naming `energy` when it is ≤ 0, not finite, or not reached before the beads would overlap.
 double shaped_amplitude_for_energy(const ForceLaw& law, const Chain& chain, std::span<const double> shape,
                                    double energy);
+
+/// u = 0, v_n = √(2E/m_n) at `site`: an energy E [J] all kinetic on one bead. The disordered
+/// Klein–Gordon chain's single-site excitation (p_l = √(2E), unit masses). Throws InvalidInput on
+/// a bad site or E ≤ 0 / not finite.
+State site_energy_kick(const Chain& chain, std::size_t site, double energy);
+
+/// u = 0, v_n = ±√(2h/m_n) on the `length` beads first … first + length − 1: each with energy
+/// density h [J per bead] all kinetic, signs at random (the Klein–Gordon chain's block excitation,
+/// p_l = ±√(2h)). Bead j's sign is from uniform j of the Philox stream of (seed, realization)
+/// counted from 2⁶² (random_stream.hpp): a pure function of (seed, realization), independent of
+/// the chain that stream's first uniforms draw. Throws InvalidInput naming `site`, `length` or
+/// `energy_density`.
+State block_energy_kick(const Chain& chain, std::size_t first, std::size_t length, double energy_density,
+                        std::uint64_t seed, std::uint64_t realization = 0);
 
 /// Centre bead (0-based) of an N-bead chain: (N−1)/2, i.e. bead 1251 of 2501 counting from 1.
 inline std::size_t centre_site(std::size_t n) { return (n - 1) / 2; }

@@ -54,7 +54,8 @@ std::size_t shooting_steps(const Chain& chain, double omega) {
   // Gershgorin on M^{-1} K: every eigenvalue ω² ≤ max_i (2 (B_i + B_{i+1}) + k_i) / m_i, with
   // the on-site springs k_i (none: 0; at F0 = 0 they are all the linear stiffness there is).
   double omega_max = omega;
-  const auto b = chain.precompression > 0 ? linear_stiffness(chain) : std::vector<double>(chain.bonds(), 0.0);
+  const auto b = chain.precompression > 0 || !chain.spring.empty() ? linear_stiffness(chain)
+                                                                   : std::vector<double>(chain.bonds(), 0.0);
   for (std::size_t i = 0; i < chain.size(); ++i) {
     const double k = chain.onsite.empty() ? 0.0 : chain.onsite[i];
     omega_max = std::max(omega_max, std::sqrt((2 * (b[i] + b[i + 1]) + k) * chain.inverse_mass[i]));

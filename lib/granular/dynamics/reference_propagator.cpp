@@ -41,7 +41,10 @@ struct ScaledChain {
     f[n] = l.force(n, length * q[n - 1]);
     const double scale = time_unit / length;
     for (std::size_t i = 0; i < n; ++i) dw[i] = scale * im[i] * (f[i] - f[i + 1]);
-    if (l.onsite)  // the on-site springs' −k u
+    if (l.onsite_quartic)  // the on-site springs' −k u − q u³
+      for (std::size_t i = 0; i < n; ++i)
+        dw[i] -= scale * im[i] * onsite_restoring<true>(l.onsite, l.onsite_quartic, i, length * q[i]);
+    else if (l.onsite)  // the on-site springs' −k u
       for (std::size_t i = 0; i < n; ++i) dw[i] -= scale * im[i] * l.onsite[i] * length * q[i];
     *bond_updates += n + 1;
   }

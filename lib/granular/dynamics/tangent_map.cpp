@@ -30,13 +30,15 @@ inline double curvature(const PolynomialLaw::View& l, std::size_t k, double x, d
 using detail::block;
 
 // Kick v += h F/m, δv += h δF/m (δF_k = K_k δx_k), then the drift u += d v, δu += d δv. On-site
-// springs (`grounded`, ks the k_n per bead) add −k u to F and −k δu to δF, as the stepper's kernels.
-// With `store`, each bond's K_k (at the positions before the drift) goes to `stiff_out`, for the
-// further deviation vectors (deviation_kick_and_drift).
-template <bool grounded, bool store, class View>
-void kick_and_drift(const View law, const double* __restrict ks, double* __restrict u, double* __restrict du,
-                    double* __restrict f, double* __restrict kx, double* __restrict v, double* __restrict dv,
-                    const double* __restrict im, std::size_t n, double h, double d, double* __restrict stiff_out) {
+// springs (`grounded`, ks the k_n per bead, qs the q_n when `quartic`) add −k u − q u³ to F and
+// −(k + 3 q u²) δu to δF, as the stepper's kernels. With `store`, each bond's K_k (at the positions
+// before the drift) goes to `stiff_out` and, when quartic, each bead's k + 3 q u² to `onsite_out`,
+// for the further deviation vectors (deviation_kick_and_drift).
+template <bool grounded, bool quartic, bool store, class View>
+void kick_and_drift(const View law, const double* __restrict ks, const double* __restrict qs, double* __restrict u,
+                    double* __restrict du, double* __restrict f, double* __restrict kx, double* __restrict v,
+                    double* __restrict dv, const double* __restrict im, std::size_t n, double h, double d,
+                    double* __restrict stiff_out, double* __restrict onsite_out) {
   double stiff = 0;
   law.force_stiffness(0, u[0] - u[1], f[0], stiff);
   kx[0] = stiff * (du[0] - du[1]);
@@ -55,8 +57,10 @@ void kick_and_drift(const View law, const double* __restrict ks, double* __restr
     for (std::size_t k = b0; k < b1; ++k) {
       double force = f[k - 1] - f[k], dforce = kx[k - 1] - kx[k];
       if constexpr (grounded) {
-        force -= ks[k - 1] * u[k];
-        dforce -= ks[k - 1] * du[k];
+        force -= onsite_restoring<quartic>(ks, qs, k - 1, u[k]);
+        const double s = onsite_hessian<quartic>(ks, qs, k - 1, u[k]);
+        dforce -= s * du[k];
+        if constexpr (quartic && store) onsite_out[k - 1] = s;
       }
       v[k - 1] += h * im[k - 1] * force;
       u[k] += d * v[k - 1];
@@ -79,18 +83,21 @@ inline void corrector_bond(const View law, const double* __restrict u, const dou
   if constexpr (store) curv[k] = c;
 }
 
-// Bead i of a corrector, once a and da of beads i − 1 … i + 1 (padded i … i + 2) are known.
-template <bool grounded>
-inline void corrector_bead(const double* __restrict ks, double* __restrict u, double* __restrict du,
-                           const double* __restrict stiff, const double* __restrict cx, const double* __restrict a,
-                           const double* __restrict da, double* __restrict v, double* __restrict dv,
-                           const double* __restrict im, std::size_t i, double c, double d) {
+// Bead i of a corrector, once a and da of beads i − 1 … i + 1 (padded i … i + 2) are known. On-site
+// springs: ks holds each bead's Hessian entry (k_n, or k_n + 3 q_n u_n² from the bead pass when
+// `quartic`, whose curvature 6 q_n u_n is in oc).
+template <bool grounded, bool quartic>
+inline void corrector_bead(const double* __restrict ks, const double* __restrict oc, double* __restrict u,
+                           double* __restrict du, const double* __restrict stiff, const double* __restrict cx,
+                           const double* __restrict a, const double* __restrict da, double* __restrict v,
+                           double* __restrict dv, const double* __restrict im, std::size_t i, double c, double d) {
   double g = stiff[i] * (a[i] - a[i + 1]) - stiff[i + 1] * (a[i + 1] - a[i + 2]);
   double dg = cx[i] * (a[i] - a[i + 1]) + stiff[i] * (da[i] - da[i + 1]) - cx[i + 1] * (a[i + 1] - a[i + 2]) -
               stiff[i + 1] * (da[i + 1] - da[i + 2]);
   if constexpr (grounded) {
     g -= ks[i] * a[i + 1];
     dg -= ks[i] * da[i + 1];
+    if constexpr (quartic) dg -= oc[i] * du[i + 1] * a[i + 1];
   }
   v[i] += c * im[i] * g;
   dv[i] += c * im[i] * dg;
@@ -101,20 +108,30 @@ inline void corrector_bead(const double* __restrict ks, double* __restrict u, do
 // The corrector v_i += c im_i G_i, G_i = K_i (a_{i−1} − a_i) − K_{i+1} (a_i − a_{i+1}), and its
 // derivative δG_i (δa_i = im_i (δF_i − δF_{i+1})), then the drift, blocked as
 // detail::correct_and_drift; a and da are padded like u, 0 at the walls. On-site springs add
-// −k_i a_i to G_i and −k_i δa_i to δG_i (k_i is constant: no curvature term).
-// With `store`, stiff, f_k'' (curv) and a are left for the further deviation vectors
+// −h_i a_i to G_i and −h_i δa_i to δG_i, with h_i = k_i (linear springs: no curvature term) or,
+// when `quartic`, h_i = k_i + 3 q_i u_i², which adds −6 q_i u_i δu_i a_i to δG_i; the bead pass
+// leaves h_i in oh and 6 q_i u_i in oc.
+// With `store`, stiff, f_k'' (curv), a (and oh, oc) are left for the further deviation vectors
 // (deviation_correct_and_drift), all at the positions before the drift.
-template <bool grounded, bool store, class View>
-void correct_and_drift(const View law, const double* __restrict ks, double* __restrict u, double* __restrict du,
-                       double* __restrict f, double* __restrict stiff, double* __restrict kx, double* __restrict cx,
-                       double* __restrict a, double* __restrict da, double* __restrict v, double* __restrict dv,
-                       const double* __restrict im, std::size_t n, double c, double d, double* __restrict curv) {
+template <bool grounded, bool quartic, bool store, class View>
+void correct_and_drift(const View law, const double* __restrict ks, const double* __restrict qs, double* __restrict u,
+                       double* __restrict du, double* __restrict f, double* __restrict stiff, double* __restrict kx,
+                       double* __restrict cx, double* __restrict a, double* __restrict da, double* __restrict v,
+                       double* __restrict dv, const double* __restrict im, std::size_t n, double c, double d,
+                       double* __restrict curv, double* __restrict oh, double* __restrict oc) {
+  // The Hessian entries the beads read: the springs' own k_n, or the bead pass's.
+  const double* hs = quartic ? oh : ks;
   corrector_bond<store>(law, u, du, f, stiff, kx, cx, curv, 0);
   corrector_bond<store>(law, u, du, f, stiff, kx, cx, curv, 1);
   double first = f[0] - f[1], dfirst = kx[0] - kx[1];
   if constexpr (grounded) {
-    first -= ks[0] * u[1];
-    dfirst -= ks[0] * du[1];
+    first -= onsite_restoring<quartic>(ks, qs, 0, u[1]);
+    const double h = onsite_hessian<quartic>(ks, qs, 0, u[1]);
+    dfirst -= h * du[1];
+    if constexpr (quartic) {
+      oh[0] = h;
+      oc[0] = onsite_curvature(qs, 0, u[1]);
+    }
   }
   a[1] = im[0] * first;
   da[1] = im[0] * dfirst;
@@ -137,16 +154,22 @@ void correct_and_drift(const View law, const double* __restrict ks, double* __re
     for (std::size_t k = b0; k < b1; ++k) {
       double force = f[k - 1] - f[k], dforce = kx[k - 1] - kx[k];
       if constexpr (grounded) {
-        force -= ks[k - 1] * u[k];
-        dforce -= ks[k - 1] * du[k];
+        force -= onsite_restoring<quartic>(ks, qs, k - 1, u[k]);
+        const double h = onsite_hessian<quartic>(ks, qs, k - 1, u[k]);
+        dforce -= h * du[k];
+        if constexpr (quartic) {
+          oh[k - 1] = h;
+          oc[k - 1] = onsite_curvature(qs, k - 1, u[k]);
+        }
       }
       a[k] = im[k - 1] * force;
       da[k] = im[k - 1] * dforce;
     }
 #pragma GCC ivdep
-    for (std::size_t k = b0; k < b1; ++k) corrector_bead<grounded>(ks, u, du, stiff, cx, a, da, v, dv, im, k - 2, c, d);
+    for (std::size_t k = b0; k < b1; ++k)
+      corrector_bead<grounded, quartic>(hs, oc, u, du, stiff, cx, a, da, v, dv, im, k - 2, c, d);
   }
-  corrector_bead<grounded>(ks, u, du, stiff, cx, a, da, v, dv, im, n - 1, c, d);  // a, da[n+1] (the wall) are 0
+  corrector_bead<grounded, quartic>(hs, oc, u, du, stiff, cx, a, da, v, dv, im, n - 1, c, d);  // a, da[n+1] are 0
 }
 
 void drift(double* __restrict u, double* __restrict du, const double* __restrict v, const double* __restrict dv,
@@ -158,7 +181,8 @@ void drift(double* __restrict u, double* __restrict du, const double* __restrict
 }
 
 // A further deviation vector through the kick and drift whose K_k the orbit's pass stored: the
-// same expressions as kick_and_drift's δ part, every K_k δx_k taken before the drift moves δu.
+// same expressions as kick_and_drift's δ part, every K_k δx_k taken before the drift moves δu. ks
+// holds the beads' on-site Hessian entries (k_n, or those the orbit's pass stored when quartic).
 template <bool grounded>
 void deviation_kick_and_drift(const double* __restrict stiff, const double* __restrict ks, double* __restrict du,
                               double* __restrict kx, double* __restrict dv, const double* __restrict im, std::size_t n,
@@ -173,12 +197,14 @@ void deviation_kick_and_drift(const double* __restrict stiff, const double* __re
 }
 
 // A further deviation vector through the corrector and drift, from the orbit pass's K_k, f_k''
-// and accelerations a: correct_and_drift's δ part (da padded like du, 0 at the walls).
-template <bool grounded>
+// and accelerations a: correct_and_drift's δ part (da padded like du, 0 at the walls). ks as in
+// deviation_kick_and_drift; when quartic, oc holds the orbit pass's on-site curvatures 6 q_n u_n.
+template <bool grounded, bool quartic>
 void deviation_correct_and_drift(const double* __restrict stiff, const double* __restrict curv,
-                                 const double* __restrict a, const double* __restrict ks, double* __restrict du,
-                                 double* __restrict kx, double* __restrict cx, double* __restrict da,
-                                 double* __restrict dv, const double* __restrict im, std::size_t n, double c, double d) {
+                                 const double* __restrict a, const double* __restrict ks, const double* __restrict oc,
+                                 double* __restrict du, double* __restrict kx, double* __restrict cx,
+                                 double* __restrict da, double* __restrict dv, const double* __restrict im,
+                                 std::size_t n, double c, double d) {
   for (std::size_t k = 0; k <= n; ++k) {
     const double dx = du[k] - du[k + 1];
     kx[k] = stiff[k] * dx;
@@ -193,6 +219,7 @@ void deviation_correct_and_drift(const double* __restrict stiff, const double* _
     double dg = cx[i] * (a[i] - a[i + 1]) + stiff[i] * (da[i] - da[i + 1]) - cx[i + 1] * (a[i + 1] - a[i + 2]) -
                 stiff[i + 1] * (da[i + 1] - da[i + 2]);
     if constexpr (grounded) dg -= ks[i] * da[i + 1];
+    if constexpr (quartic) dg -= oc[i] * du[i + 1] * a[i + 1];
     dv[i] += c * im[i] * dg;
     du[i + 1] += d * dv[i];
   }
@@ -217,6 +244,10 @@ class SplittingTangentPropagator final : public TangentPropagator {
     for (auto* a : {&f_, &stiff_, &kx_, &cx_}) a->assign(n_ + 1, 0.0);
     ap_.assign(n_ + 2, 0.0);
     dap_.assign(n_ + 2, 0.0);
+    if (law_.quartic()) {
+      onsite_hessian_.assign(n_, 0.0);
+      onsite_curvature_.assign(n_, 0.0);
+    }
     if (extra_ > 0) {
       for (auto* a : {&curv_, &xkx_, &xcx_}) a->assign(n_ + 1, 0.0);
       xda_.assign(n_ + 2, 0.0);
@@ -231,17 +262,22 @@ class SplittingTangentPropagator final : public TangentPropagator {
 
   void advance(std::size_t steps) override {
     if (steps == 0) return;
-    if (law_.grounded()) extra_ > 0 ? run<true, true>(steps) : run<true, false>(steps);
-    else extra_ > 0 ? run<false, true>(steps) : run<false, false>(steps);
+    if (law_.quartic()) extra_ > 0 ? run<true, true, true>(steps) : run<true, true, false>(steps);
+    else if (law_.grounded()) extra_ > 0 ? run<true, false, true>(steps) : run<true, false, false>(steps);
+    else extra_ > 0 ? run<false, false, true>(steps) : run<false, false, false>(steps);
   }
 
-  // advance() with the on-site springs compiled in or out, and with (`several`) or without further
-  // deviation vectors: the orbit and vector 0 go through the fused kernels, which then leave K_k,
-  // f_k'' and a for the others. The orbit's arithmetic is the same either way.
-  template <bool grounded, bool several>
+  // advance() with the on-site springs (linear or with a quartic part) compiled in or out, and with
+  // (`several`) or without further deviation vectors: the orbit and vector 0 go through the fused
+  // kernels, which then leave K_k, f_k'', a (and the on-site Hessian entries) for the others. The
+  // orbit's arithmetic is the same either way.
+  template <bool grounded, bool quartic, bool several>
   void run(std::size_t steps) {
     const auto view = law_.view();
     const double* ks = view.onsite;
+    const double* qs = view.onsite_quartic;
+    // The Hessian entries further vectors read: k_n, or k_n + 3 q_n u_n² as the orbit's pass left them.
+    const double* hs = quartic ? onsite_hessian_.data() : ks;
     const double tau = tau_;
     const double g = scheme_.corrector * tau * tau * tau;
     const auto& a = scheme_.drift;
@@ -252,7 +288,7 @@ class SplittingTangentPropagator final : public TangentPropagator {
     // there is no corrector, and the correctors of two steps merge (2 g τ³). A renormalization
     // inside a merged boundary scales w a fraction of a step early; the map is linear, so the sum
     // of the logarithms telescopes to the same X1.
-    if (g != 0) correct<grounded, several>(view, g, a[0] * tau);
+    if (g != 0) correct<grounded, quartic, several>(view, g, a[0] * tau);
     else {
       drift(up_.data(), dup_.data(), v_.data(), dv_.data(), n_, a[0] * tau);
       for (std::size_t e = 0; e < extra_; ++e)
@@ -263,15 +299,16 @@ class SplittingTangentPropagator final : public TangentPropagator {
       for (std::size_t j = 0; j <= last; ++j) {
         double after = a[j + 1] * tau;
         if (j == last && g == 0 && more) after += a[0] * tau;
-        kick_and_drift<grounded, several>(view, ks, up_.data(), dup_.data(), f_.data(), kx_.data(), v_.data(),
-                                          dv_.data(), im_.data(), n_, b[j] * tau, after, stiff_.data());
+        kick_and_drift<grounded, quartic, several>(view, ks, qs, up_.data(), dup_.data(), f_.data(), kx_.data(),
+                                                   v_.data(), dv_.data(), im_.data(), n_, b[j] * tau, after,
+                                                   stiff_.data(), onsite_hessian_.data());
         if constexpr (several)
           for (std::size_t e = 0; e < extra_; ++e)
-            deviation_kick_and_drift<grounded>(stiff_.data(), ks, xdu(e), xkx_.data(), xdv(e), im_.data(), n_,
+            deviation_kick_and_drift<grounded>(stiff_.data(), hs, xdu(e), xkx_.data(), xdv(e), im_.data(), n_,
                                                b[j] * tau, after);
         bond_updates_ += n_ + 1;
       }
-      if (g != 0) correct<grounded, several>(view, more ? 2 * g : g, more ? a[0] * tau : 0.0);
+      if (g != 0) correct<grounded, quartic, several>(view, more ? 2 * g : g, more ? a[0] * tau : 0.0);
       ++steps_;
       if (config_.renormalize_every > 0 && steps_ % config_.renormalize_every == 0) {
         if (extra_ > 0) orthonormalize_(*this);  // the owner's, between steps as renormalize()
@@ -306,15 +343,19 @@ class SplittingTangentPropagator final : public TangentPropagator {
   double time_unit() const override { return config_.time_unit; }
 
  private:
-  template <bool grounded, bool several, class View>
+  template <bool grounded, bool quartic, bool several, class View>
   void correct(const View view, double c, double d) {
-    correct_and_drift<grounded, several>(view, view.onsite, up_.data(), dup_.data(), f_.data(), stiff_.data(),
-                                         kx_.data(), cx_.data(), ap_.data(), dap_.data(), v_.data(), dv_.data(),
-                                         im_.data(), n_, c, d, curv_.data());
+    double* oh = onsite_hessian_.data();
+    double* oc = onsite_curvature_.data();
+    correct_and_drift<grounded, quartic, several>(view, view.onsite, view.onsite_quartic, up_.data(), dup_.data(),
+                                                  f_.data(), stiff_.data(), kx_.data(), cx_.data(), ap_.data(),
+                                                  dap_.data(), v_.data(), dv_.data(), im_.data(), n_, c, d,
+                                                  curv_.data(), oh, oc);
     if constexpr (several)
       for (std::size_t e = 0; e < extra_; ++e)
-        deviation_correct_and_drift<grounded>(stiff_.data(), curv_.data(), ap_.data(), view.onsite, xdu(e), xkx_.data(),
-                                              xcx_.data(), xda_.data(), xdv(e), im_.data(), n_, c, d);
+        deviation_correct_and_drift<grounded, quartic>(stiff_.data(), curv_.data(), ap_.data(),
+                                                       quartic ? oh : view.onsite, oc, xdu(e), xkx_.data(), xcx_.data(),
+                                                       xda_.data(), xdv(e), im_.data(), n_, c, d);
     bond_updates_ += n_ + 1;
   }
 
@@ -349,6 +390,9 @@ class SplittingTangentPropagator final : public TangentPropagator {
   // The further vectors' (several); a kick leaves its K_k in stiff_, which only the corrector
   // otherwise uses (and fills anew).
   std::vector<double> curv_, xkx_, xcx_, xda_, xdu_, xdv_;
+  // Quartic on-site springs: each bead's Hessian entry k + 3 q u² and curvature 6 q u, at the
+  // positions before a drift (empty otherwise).
+  std::vector<double> onsite_hessian_, onsite_curvature_;
   std::function<void(TangentPropagator&)> orthonormalize_;  // several vectors' renormalization
   std::uint64_t steps_ = 0, bond_updates_ = 0;
   double logs_ = 0, initial_log_norm_ = 0;

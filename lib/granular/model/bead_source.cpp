@@ -122,7 +122,7 @@ class TypedBeads final : public BeadSource {
 class ChainBeads final : public BeadSource {
  public:
   explicit ChainBeads(const Chain& chain) : mass_(chain.mass), onsite_(chain.onsite) {
-    require_linear_limit(chain.precompression);
+    if (chain.spring.empty()) require_linear_limit(chain.precompression);
     stiffness_ = linear_stiffness(chain);
   }
   std::size_t size() const override { return mass_.size(); }

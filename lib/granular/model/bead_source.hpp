@@ -52,7 +52,7 @@ std::unique_ptr<BeadSource> typed_beads(Configuration types, const ChainParamete
 
 /// Any chain (radii file, several materials, other walls, on-site springs): masses, B_k =
 /// linear_stiffness of its contact coefficients and the on-site k_n, copied (memory 2N or 3N
-/// doubles). Throws InvalidInput if F0 = 0.
+/// doubles). Throws InvalidInput if F0 = 0, unless the bonds are linear springs (Chain::spring).
 std::unique_ptr<BeadSource> chain_beads(const Chain& chain);
 
 }  // namespace granular

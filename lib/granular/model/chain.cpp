@@ -51,6 +51,7 @@ Chain make_chain(const ChainSpec& spec) {
 }
 
 std::vector<double> linear_stiffness(const Chain& chain) {
+  if (!chain.spring.empty()) return chain.spring;
   std::vector<double> b(chain.bonds());
   for (std::size_t k = 0; k < b.size(); ++k) b[k] = linear_stiffness(chain.contact[k], chain.precompression);
   return b;

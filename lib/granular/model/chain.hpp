@@ -39,6 +39,13 @@ struct Chain {
   /// k_n [N/m] of a linear spring holding bead n to the ground (the quasiperiodic chain S1,
   /// docs/physics.md, "Quasiperiodic chains"); empty when the beads have none (every other chain).
   std::vector<double> onsite;
+  /// q_n [N/m³] of a quartic part of those springs: force −k_n u − q_n u³, energy ½ k_n u² + ¼ q_n u⁴
+  /// (the disordered Klein–Gordon chain, model/klein_gordon.hpp); empty when they are linear.
+  std::vector<double> onsite_quartic;
+  /// Linear bond springs B_k [N/m] given directly, N+1 bonds, in place of Hertz contacts (the
+  /// Klein–Gordon chain's 1/W; there contact, overlap and F0 are 0); empty for every granular chain,
+  /// whose B_k come from A_k and F0.
+  std::vector<double> spring;
 
   std::size_t size() const { return radius.size(); }
   std::size_t bonds() const { return contact.size(); }
@@ -47,7 +54,8 @@ struct Chain {
 /// Builds masses, contact coefficients and static overlaps; throws InvalidInput on bad specs.
 Chain make_chain(const ChainSpec& spec);
 
-/// B_k = (3/2) A_k^{2/3} F0^{1/3} of every bond (N+1 values) [N/m]: the linearized chain.
+/// B_k = (3/2) A_k^{2/3} F0^{1/3} of every bond (N+1 values) [N/m]: the linearized chain; the
+/// springs themselves when the chain has linear springs for bonds (Chain::spring).
 std::vector<double> linear_stiffness(const Chain& chain);
 
 /// Convenience: beads of one material with the given radii, flat walls of the same material.

@@ -180,8 +180,8 @@ double highest_frequency_bound(const ForceLaw& law, const Chain& chain, double e
         // Gershgorin on M^{-1/2} K M^{-1/2}: row i holds bonds i (left) and i+1 (right).
         const std::size_t n = chain.size();
         SymTridiagonal t;
-        for (std::size_t i = 0; i < n; ++i)  // with the on-site spring, linear whatever the energy
-          t.diagonal.push_back((stiffness[i] + stiffness[i + 1] + l.onsite_stiffness(i)) / chain.mass[i]);
+        for (std::size_t i = 0; i < n; ++i)  // with the on-site spring, stiffest at this energy
+          t.diagonal.push_back((stiffness[i] + stiffness[i + 1] + l.onsite_stiffness_bound(i, energy)) / chain.mass[i]);
         for (std::size_t i = 0; i + 1 < n; ++i)
           t.off_diagonal.push_back(stiffness[i + 1] / std::sqrt(chain.mass[i] * chain.mass[i + 1]));
         return std::sqrt(std::max(0.0, gershgorin_bounds(t, RowSum::left_to_right).second));
