@@ -6,8 +6,14 @@
 namespace granular {
 
 std::string front_end_word(const std::string& parameter) {
-  static const std::map<std::string, std::string> words{
-      {"precompression", "F0"}, {"n", "N"}, {"r1", "R1"}, {"time_step", "dt"}, {"duration", "T"}, {"near_khz", "near"}};
+  static const std::map<std::string, std::string> words{{"precompression", "F0"},
+                                                        {"n", "N"},
+                                                        {"r1", "R1"},
+                                                        {"time_step", "dt"},
+                                                        {"duration", "T"},
+                                                        {"near_khz", "near"},
+                                                        {"floquet_method", "floquet"},
+                                                        {"floquet_multipliers", "multipliers"}};
   const auto it = words.find(parameter);
   return it == words.end() ? parameter : it->second;
 }

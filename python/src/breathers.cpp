@@ -9,6 +9,7 @@
 #include "bindings.hpp"
 #include "granular/dynamics/scheme.hpp"
 #include "granular/study/breather_branch.hpp"
+#include "granular/study/breather_parameters.hpp"
 #include "granular/study/frequency_slips.hpp"
 
 namespace granular::python {
@@ -18,7 +19,7 @@ py::dict breathers(const PyChain& c, BreatherBranchConfig config) {
   config.chain = c.recipe;
   config.realization = c.realization;
   validate(config);
-  warn(frequency_slips(config, [](const std::string& p) { return p; }));  // Hz typed as kHz: near_khz, as the tool
+  warn(frequency_slips(config, front_end_word));  // Hz typed as kHz: near, as the tool
   BreatherBranch branch;
   {
     py::gil_scoped_release release;
@@ -41,23 +42,9 @@ py::dict breathers(const PyChain& c, BreatherBranchConfig config) {
 }  // namespace
 
 void bind_breathers(py::module_& m) {
-  using B = BreatherBranchConfig;  // granular.breathers's keywords, its chain set from the granular.Chain
-  config_class(m, "BreatherBranchConfig",
-               "mode near_khz start_khz target_khz step_khz max_points stop_at_opening stability_tolerance shooting "
-               "seed_profile site start_offset",
-               &B::mode, &B::near_khz, &B::start_khz, &B::target_khz, &B::step_khz, &B::max_points, &B::stop_at_opening,
-               &B::stability_tolerance, &B::shooting, &B::seed_profile, &B::site, &B::start_offset)
-      .def_property("continuation", word_getter(&B::continuation), word_setter(&B::continuation, parse_continuation))
-      .def_property("floquet_method", word_getter(&B::floquet_method),
-                    word_setter(&B::floquet_method, parse_floquet_method))
-      .def_readwrite("floquet_multipliers", &B::floquet_multipliers)
-      .def_property("law", word_getter(&B::law), word_setter(&B::law, parse_force_law));  // not linear: _breathers.py
-  using S = ShootingConfig;
-  config_class(m, "ShootingConfig", "steps_per_period tolerance", &S::steps_per_period, &S::tolerance)
-      .def_property(
-          "scheme", [](const S& s) { return s.scheme.name; },
-          [](S& s, const std::string& word) { s.scheme = parse_scheme(word); })
-      .def_property("newton", word_getter(&S::newton), word_setter(&S::newton, parse_newton_method));
+  // granular.breathers's keywords: the rows of breather_parameters(); its chain set from the granular.Chain
+  table_class(m, "BreatherBranchConfig", breather_parameters())
+      .def_readwrite("seed_profile", &BreatherBranchConfig::seed_profile);
   m.def("_breathers", &breathers);
 }
 

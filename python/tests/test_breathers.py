@@ -1,5 +1,8 @@
 """granular.breathers: the same branch as the breathers tool on the same chain (to the last digit), and its
 result's shapes and symplectic multipliers."""
+import inspect
+import math
+
 import numpy as np
 import pytest
 
@@ -12,9 +15,9 @@ def test_breathers_equals_the_tool(tools, tmp_path):
     config = tmp_path / "diatomic.txt"
     config.write_text("\n".join(map(str, types)) + "\n")
     edge = gr.band_edges(xi=0.5).fb2  # kHz: the optical band's lower edge
-    csv, meta = tools.run("breathers", "--config", str(config), "--xi", "0.5", "--near-khz", repr(edge),
+    csv, meta = tools.run("breathers", "--config", str(config), "--xi", "0.5", "--near", repr(edge),
                           "--max-points", "3", "--quiet")
-    b = gr.breathers(gr.from_types(types, xi=0.5), near_khz=edge, max_points=3)
+    b = gr.breathers(gr.from_types(types, xi=0.5), near=edge, max_points=3)
     assert len(b) == 3
     for key, column in (("freq_khz", "freq_khz"), ("energy", "energy_J"), ("max_multiplier", "max_multiplier"),
                         ("residual", "residual")):
@@ -51,9 +54,9 @@ def test_breathers_from_a_profile_and_by_arclength():
     types = [2 if i % 2 == 0 else 1 for i in range(21)]
     chain = gr.from_types(types, xi=0.5)
     edge = gr.band_edges(xi=0.5).fb2
-    natural = gr.breathers(chain, near_khz=edge, max_points=4)
+    natural = gr.breathers(chain, near=edge, max_points=4)
     # Pseudo-arclength takes over from the third point: the same branch, on other frequencies.
-    arc = gr.breathers(chain, near_khz=edge, max_points=4, continuation="arclength")
+    arc = gr.breathers(chain, near=edge, max_points=4, continuation="arclength")
     assert arc.metadata["continuation"]["method"].startswith("pseudo-arclength")
     assert_identical(arc.freq_khz[:2], natural.freq_khz[:2])
     assert (np.diff(arc.freq_khz) < 0).all() and (arc.residual <= 1e-10).all()
@@ -62,7 +65,7 @@ def test_breathers_from_a_profile_and_by_arclength():
     assert again.seed_mode == 0
     assert np.allclose(again.profiles[0], natural.profiles[-1], rtol=0, atol=1e-6 * np.abs(natural.profiles[-1]).max())
     with pytest.raises(ValueError, match="continuation"):
-        gr.breathers(chain, near_khz=edge, continuation="pseudo")
+        gr.breathers(chain, near=edge, continuation="pseudo")
     with pytest.raises(ValueError, match="seed_profile"):
         gr.breathers(chain, seed_profile=natural.profiles[-1][:-1], start_khz=natural.freq_khz[-1])
 
@@ -71,8 +74,8 @@ def test_breathers_by_newton_krylov():
     types = [2 if i % 2 == 0 else 1 for i in range(21)]
     chain = gr.from_types(types, xi=0.5)
     edge = gr.band_edges(xi=0.5).fb2
-    dense = gr.breathers(chain, near_khz=edge, max_points=2)
-    krylov = gr.breathers(chain, near_khz=edge, max_points=2, newton="krylov", floquet="dense")
+    dense = gr.breathers(chain, near=edge, max_points=2)
+    krylov = gr.breathers(chain, near=edge, max_points=2, newton="krylov", floquet="dense")
     assert dense.metadata["shooting"]["newton"] == "dense" and dense.metadata["floquet"]["method"] == "dense"
     assert krylov.metadata["shooting"]["newton"] == "krylov"
     assert all(len(p["krylov_iterations"]) > 0 for p in krylov.metadata["points"])
@@ -80,11 +83,11 @@ def test_breathers_by_newton_krylov():
     assert (krylov.residual <= 1e-10).all()
     assert np.allclose(krylov.max_multiplier, dense.max_multiplier, rtol=0, atol=1e-8)
     with pytest.raises(ValueError, match="floquet"):
-        gr.breathers(chain, near_khz=edge, floquet="lapack")
+        gr.breathers(chain, near=edge, floquet="lapack")
     with pytest.raises(ValueError, match="newton"):
-        gr.breathers(chain, near_khz=edge, newton="gmres")
-    with pytest.raises(ValueError, match="floquet_multipliers"):
-        gr.breathers(chain, near_khz=edge, floquet="arpack", floquet_multipliers=40)
+        gr.breathers(chain, near=edge, newton="gmres")
+    with pytest.raises(ValueError, match="multipliers"):
+        gr.breathers(chain, near=edge, floquet="arpack", multipliers=40)
 
 
 def test_breathers_at_zero_precompression_on_onsite_springs():
@@ -104,3 +107,20 @@ def test_breathers_at_zero_precompression_on_onsite_springs():
         gr.breathers(gr.quasiperiodic("s2", N=21, F0=0.0), site=11)
     with pytest.raises(ValueError, match="mode"):
         gr.breathers(chain, mode=3)
+
+
+def test_the_branch_keywords_are_the_library_table_and_near_khz_is_near():
+    """granular.breathers' keywords are breather_parameters()' rows with their C++ defaults (a frequency that may be
+    none: None); near_khz, the former keyword of near, still works with a FutureWarning."""
+    taken = inspect.signature(gr.breathers).parameters
+    config = gr._core.BreatherBranchConfig()
+    for name, word, _ in gr._core.BreatherBranchConfig._parameters:
+        assert word in taken, word
+        default = getattr(config, name)
+        assert taken[word].default == (None if isinstance(default, float) and math.isnan(default) else default), word
+    assert taken["near"].default is None and "near_khz" not in taken
+    chain = gr.from_types([1, 1, 2, 1, 1, 2, 1, 1, 2, 1, 1, 2, 1, 1, 2, 1, 1, 2, 1, 1, 2], xi=0.5)
+    now = gr.breathers(chain, near=42, max_points=1)
+    with pytest.warns(FutureWarning, match="'near_khz' is deprecated: use 'near'"):
+        before = gr.breathers(chain, near_khz=42, max_points=1)
+    assert list(now.freq_khz) == list(before.freq_khz)

@@ -298,9 +298,9 @@ def test_breather_figure_draws_the_branch_from_the_result_and_the_tools_files(to
     config = tools.folder / "diatomic.txt"
     config.write_text("\n".join(map(str, types)) + "\n")
     edge = gr.band_edges(xi=0.5).fb2
-    tools.run("breathers", "--config", config, "--xi", "0.5", "--near-khz", repr(edge), "--max-points", "3",
+    tools.run("breathers", "--config", config, "--xi", "0.5", "--near", repr(edge), "--max-points", "3",
               "--quiet", output="br")
-    b = gr.breathers(gr.from_types(types, xi=0.5), near_khz=edge, max_points=3)
+    b = gr.breathers(gr.from_types(types, xi=0.5), near=edge, max_points=3)
     for source in (b, tools.folder / "br.csv"):
         fig = gp.breather_branch(source, point=1)
         check_axes(fig)

@@ -35,7 +35,7 @@ def test_hertz_typed_as_kilohertz_is_named():
 
 
 @pytest.mark.parametrize("call, keywords, named", [
-    (gr.breathers, dict(near_khz=33810), "near_khz 33810"),
+    (gr.breathers, dict(near=33810), "near 33810"),
     (gr.breathers, dict(start_khz=20000), "start_khz 20000"),
     (gr.breathers, dict(mode=30, target_khz=20000), "target_khz 20000"),
     (gr.spreading, dict(ic="mode", near=15000, energy=1e-9), "near 15000"),

@@ -226,7 +226,7 @@ TEST(BreatherBranch, DiatomicGapBreathersBifurcateFromTheOpticalEdgeIntoTheGap) 
 TEST(Long_BreatherBranch, ArclengthContinuationPassesTheFoldWhereNaturalStops) {
   const BandEdges edges = band_edges(steel, r1, 0.5, 10);
   BreatherBranchConfig c = diatomic_gap_config(2, edges);
-  c.stop_at_opening = false;
+  c.through_opening = true;
   c.max_points = 200;
   const BreatherBranch natural = continue_breather(c);
   ASSERT_TRUE(natural.stop_reason.starts_with("Newton failed")) << natural.stop_reason;

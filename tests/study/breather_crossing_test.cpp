@@ -75,7 +75,7 @@ TEST(BreatherCrossing, TheEdgeOfABandEnteredFromTheGapIsCalledABandEdge) {
   c.chain.xi = 0.5;
   c.mode = 22;  // the optical band's lowest mode
   c.continuation = Continuation::arclength;
-  c.stop_at_opening = false;
+  c.through_opening = true;
   c.max_points = 200;
   const BreatherBranch branch = continue_breather(c);
   EXPECT_TRUE(branch.stop_reason.starts_with("reached linear mode 22 at ")) << branch.stop_reason;

@@ -31,7 +31,7 @@ double optical_edge_khz() { return band_edges(steel, paper_r1, 0.5, 10).fb2 / 1e
 
 TEST(BreathersTool, ShortDiatomicBranchWritesCsvAndJson) {
   const std::string dir = scratch_folder("breathers-run");
-  const std::string args = "--config " + diatomic_file(dir, 21) + " --xi 0.5 --near-khz " +
+  const std::string args = "--config " + diatomic_file(dir, 21) + " --xi 0.5 --near " +
                            std::to_string(optical_edge_khz()) + " --max-points 4 --quiet --output " + dir + "/b";
   const auto r = run_tool("breathers", args);
   ASSERT_EQ(r.exit_code, 0) << r.err;
@@ -71,7 +71,7 @@ TEST(BreathersTool, ArclengthBranchProfilesSeedTheNextRun) {
   const std::string dir = scratch_folder("breathers-arc");
   const std::string chain = "--config " + diatomic_file(dir, 21) + " --xi 0.5 --quiet";
   auto r = run_tool_in(dir, "breathers",
-                       chain + " --near-khz " + std::to_string(optical_edge_khz()) +
+                       chain + " --near " + std::to_string(optical_edge_khz()) +
                            " --max-points 4 --continuation arclength --output arc");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto meta = nlohmann::json::parse(read_file(dir + "/arc.json"));
@@ -179,7 +179,7 @@ TEST(BreathersTool, BadInputExitsWithOneLineAndWritesNothing) {
       {"--config " + config + " --xi 0.5 --seed-file " + dir + "/missing.txt --start-khz 30", "--seed-file", 2},
       {"--config " + config + " --xi 0.5 --seed-file " + config + " --start-khz 30 --mode 3", "--seed-file", 2},
       // Newton cannot reach a residual below rounding: a numerical failure.
-      {"--config " + config + " --xi 0.5 --near-khz " + std::to_string(optical_edge_khz()) + " --tolerance 1e-30",
+      {"--config " + config + " --xi 0.5 --near " + std::to_string(optical_edge_khz()) + " --tolerance 1e-30",
        "Newton", 3},
   };
   for (const auto& c : cases) {

@@ -48,11 +48,26 @@ TEST(RenamedOptions, TheFormerSpellingRunsTheSameCaseWithANote) {
   EXPECT_EQ(parameters("now")["mode_kick"]["near_khz"], 20.0);
 }
 
+// breathers' seed frequency was --near-khz: now --near as well.
+TEST(RenamedOptions, TheBreathersSeedFrequencyIsNearToo) {
+  const std::string dir = scratch_folder("renamed-near-khz");
+  const std::string branch = "--N 21 --max-points 1 --quiet ";
+  const auto now = run_tool_in(dir, "breathers", branch + "--near 42 --output now");
+  ASSERT_EQ(now.exit_code, 0) << now.err;
+  EXPECT_EQ(now.err, "");
+  const auto before = run_tool_in(dir, "breathers", branch + "--near-khz 42 --output before");
+  ASSERT_EQ(before.exit_code, 0) << before.err;
+  EXPECT_EQ(before.err,
+            "warning: --near-khz is deprecated: use --near (the old spelling goes in the next minor version)\n");
+  EXPECT_EQ(read_file(dir + "/now.csv"), read_file(dir + "/before.csv"));
+}
+
 TEST(RenamedOptions, OnlyTheNewSpellingIsInTheHelp) {
-  for (const char* tool : {"spreading", "exponents"}) {
+  for (const char* tool : {"spreading", "exponents", "breathers"}) {
     const std::string help = standard_output(tool, "--help");
     EXPECT_NE(help.find("--near FLOAT"), std::string::npos) << tool;
     EXPECT_EQ(help.find("--mode-khz"), std::string::npos) << tool;
+    EXPECT_EQ(help.find("--near-khz"), std::string::npos) << tool;
   }
 }
 

@@ -62,8 +62,8 @@ TEST(UnitSlip, HertzTypedAsKilohertzIsWarnedForEveryFrequencyOption) {
   const std::string dir = scratch_folder("unit-slip-every-frequency");
   const std::string breathers = "--N 21 --max-points 1 --quiet ";
   for (const auto& [tool, args, named] :
-       {std::tuple<std::string, std::string, std::string>{"breathers", breathers + "--near-khz 33810",
-                                                          "--near-khz 33810"},
+       {std::tuple<std::string, std::string, std::string>{"breathers", breathers + "--near 33810",
+                                                          "--near 33810"},
         {"breathers", breathers + "--start-khz 20000", "--start-khz 20000"},
         {"breathers", breathers + "--mode 21 --target-khz 20000", "--target-khz 20000"},
         {"ipr-map", "--N 10 --xi 0.5 --q 0.5 --realizations 2 --near 15000 --count 2 --quiet", "--near 15000"},
@@ -79,7 +79,7 @@ TEST(UnitSlip, HertzTypedAsKilohertzIsWarnedForEveryFrequencyOption) {
         << tool << " " << args << ": " << slip.err;
     EXPECT_EQ(count(slip.err, "warning"), 1) << tool << " " << args << ": " << slip.err;
   }
-  const ToolResult khz = run_tool_in(dir, "breathers", breathers + "--near-khz 42 --output khz");
+  const ToolResult khz = run_tool_in(dir, "breathers", breathers + "--near 42 --output khz");
   EXPECT_EQ(khz.exit_code, 0) << khz.err;
   EXPECT_EQ(khz.err, "");
 }

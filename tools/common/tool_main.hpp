@@ -161,10 +161,9 @@ inline std::string flag_for(const CLI::App& app, const std::string& parameter,
                             const std::map<std::string, std::string>& overrides) {
   if (parameter.empty() || parameter.starts_with("--")) return parameter;
   if (auto it = overrides.find(parameter); it != overrides.end()) return it->second;
-  const std::string flag = option_name(parameter);
-  if (app.get_option_no_throw(flag)) return flag;
-  if (const std::string word = option_name(front_end_word(parameter)); app.get_option_no_throw(word))
-    return word;  // --F0
+  // The front end's word first (--F0, --near): a former spelling may still be a hidden option.
+  if (const std::string word = option_name(front_end_word(parameter)); app.get_option_no_throw(word)) return word;
+  if (const std::string flag = option_name(parameter); app.get_option_no_throw(flag)) return flag;
   return "";
 }
 

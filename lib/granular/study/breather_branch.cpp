@@ -382,7 +382,7 @@ BreatherBranch continue_breather(const BreatherBranchConfig& c,
   };
   while (true) {
     const BreatherPoint& last = branch.points.back();
-    if (c.stop_at_opening && !vacuum && last.max_open_fraction > 0) {
+    if (!c.through_opening && !vacuum && last.max_open_fraction > 0) {
       branch.stop_reason = "a contact opened (max open fraction " + format_number(last.max_open_fraction) + ")";
       break;
     }
@@ -537,7 +537,7 @@ nlohmann::json describe_breather_branch(const BreatherBranchConfig& c, const Bre
                        {"start_khz", b.points.empty() ? 0.0 : b.points.front().freq_khz},
                        {"target_khz", std::isnan(c.target_khz) ? nlohmann::json() : nlohmann::json(c.target_khz)},
                        {"max_points", c.max_points},
-                       {"stop_at_opening", c.stop_at_opening && c.chain.F0 > 0},
+                       {"stop_at_opening", !c.through_opening && c.chain.F0 > 0},
                        {"stop_reason", b.stop_reason}};
   j["shooting"] = {{"scheme", c.shooting.scheme.name},
                    {"steps_per_period", b.steps_per_period},

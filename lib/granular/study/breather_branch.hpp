@@ -64,8 +64,9 @@ struct BreatherBranchConfig {
   double step_khz =
       0;  ///< first step [kHz] (sign ignored), growing to 8×; 0: the start's distance from the seed, growing to 2 % of it
   std::size_t max_points = 100;  ///< points on the branch
-  bool stop_at_opening =
-      true;  ///< stop at the first point with an open contact (F0 > 0; at F0 = 0 every contact opens)
+  /// Continue past points with an open contact (F0 > 0); without it the branch stops at the first
+  /// (at F0 = 0 every contact opens: not read).
+  bool through_opening = false;
   Continuation continuation = Continuation::natural;
   ShootingConfig shooting{};          ///< incl. newton: dense | krylov | auto (by N)
   double stability_tolerance = 1e-6;  ///< stable when max |μ| ≤ 1 + this
