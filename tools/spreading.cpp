@@ -50,7 +50,8 @@ int main(int argc, char** argv) {
                      tool::ask_outputs(more, options.run, c);
                      if (!more.energy_map_file.empty()) load_hdf5_writer();  // before the run, not after it
                      const nlohmann::json step_rule = tool::validate_and_settle(c);
-                     SpreadingPaths paths = spreading_paths(output, ensemble, more.profile, !d.forces.sites.empty());
+                     SpreadingPaths paths = spreading_paths(output, ensemble, more.profile, !d.forces.sites.empty(),
+                                                            d.lyapunov_vectors > 0);
                      paths.final_state = more.final_state, paths.energy_map = more.energy_map_file,
                      paths.spectrum = more.spectrum_file;
                      paths.deviation = options.deviation;
@@ -80,6 +81,7 @@ int main(int argc, char** argv) {
                      auto files = write_spreading_files(paths, r, means, d);
                      if (!more.spectrum_file.empty())
                        (meta["spectrum"] = describe_spectral_density(*d.spectrum))["file"] = more.spectrum_file;
+                     if (!paths.lyapunov.empty()) meta["lyapunov_spectrum"] = describe_lyapunov(r, paths.lyapunov);
                      meta["parameters"] = describe_parameters(c, selected.description, kicked, ensemble);
                      meta["seed"] = c.chain.seed;
                      if (!resumed.is_null()) meta["resumed_checkpoint"] = resumed;

@@ -19,8 +19,10 @@ from ._schema import TableKeywords, split_keywords, with_keywords
 _CASE = _core.TransportCase()
 _OWN = ("beta", "site", "time_step", "fit", "fit_begin", "fit_end")
 _OUTPUT_ROWS = tuple(_core._spreading_output_parameters)  # one run's force series, energy map and g(nu)
-_RUN = TableKeywords(_CASE, skip=_OWN + _OUTPUT_ROWS + ("deviation_samples",))  # an ensemble: no deviation vector
-_ONE_RUN = TableKeywords(_CASE, skip=_OWN + _OUTPUT_ROWS)  # granular.spreading: with deviation_samples
+# One realization's tangent-space outputs: an ensemble writes no deviation vector and averages no spectrum.
+_ONE_RUN_ROWS = ("deviation_samples", "lyapunov_vectors")
+_RUN = TableKeywords(_CASE, skip=_OWN + _OUTPUT_ROWS + _ONE_RUN_ROWS)
+_ONE_RUN = TableKeywords(_CASE, skip=_OWN + _OUTPUT_ROWS)  # granular.spreading: with both
 _OUTPUTS = TableKeywords(_CASE, only=_OUTPUT_ROWS, skip=("forces_at",))  # forces_at: a list of beads here
 _MODE = TableKeywords(_core.ModeKick())  # a mode kick's mode, near, energy (mode_khz: near's former keyword)
 
@@ -160,6 +162,13 @@ def _spreading_run(raw, N, case, sites):
     if case.deviation_samples > 0:
         t = r.deviation_t
         out["deviation"] = _series(t, np.arange(1, N + 1), "share", r.deviation, (len(t), N))
+    out["lyapunov"] = None
+    if case.lyapunov_vectors > 0:
+        s, k = r.lyapunov, case.lyapunov_vectors
+        t = np.asarray(s.time, dtype=float)
+        out["lyapunov"] = {"t": t, "exponents": np.asarray(s.exponents, dtype=float).reshape(len(t), k),
+                           "gali": np.asarray(s.gali, dtype=float).reshape(len(t), k - 1),
+                           "sali": np.asarray(s.sali, dtype=float) if k >= 2 else None}
     out["forces"] = None
     if sites:
         t = r.force_t
@@ -194,7 +203,9 @@ spreading.__doc__ = (
     "bead), forces, energy_map, spectral_density, dissipated (energy removed by the damping by t [J], at t; None "
     "without damping), mle (X1(t) [1/s] at t; None without mle), deviation (t [s], site (from 1), share (times x "
     "beads: the share of |w|^2 = |du|^2 + (t_unit dv)^2, t_unit = 1 us, on each bead, rows summing to 1; "
-    "share.ravel() is the tool's --deviation column) or None), warnings, metadata. Releases the GIL.")
+    "share.ravel() is the tool's --deviation column) or None), lyapunov (with lyapunov_vectors=k: t [s], exponents "
+    "(times x k: lambda_1..lambda_k(t) [1/s]), gali (times x (k-1): GALI_2..GALI_k), sali (None for k = 1), the "
+    "tool's PREFIX-lyapunov.csv; else None), warnings, metadata. Releases the GIL.")
 
 
 def transport(*, disorder="A", N=2501, q=0.5, xi=0.5, F0=10.0, R1=_core.paper_r1, seed=1, realizations=100,

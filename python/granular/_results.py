@@ -85,7 +85,9 @@ class SpreadingRun(Result):
     spectral_density: dict freq_khz, g (normalized to max 1) or None; dissipated: energy removed by
     the damping by t [J] (damping_time/kk_gamma; else None); mle: X1(t) [1/s] by the tangent map
     (mle=True; else None); deviation: dict t [s], site (from 1), share (times x beads, the share of
-    the deviation vector's norm^2 on each bead; deviation_samples) or None; warnings; reached_walls,
+    the deviation vector's norm^2 on each bead; deviation_samples) or None; lyapunov: dict t [s],
+    exponents (times x k, lambda_1..lambda_k [1/s]), gali (times x (k-1), GALI_2..GALI_k), sali (None
+    for k = 1) of a Lyapunov spectrum on the same orbit (lyapunov_vectors=k) or None; warnings; reached_walls,
     wall_energy, steps, seconds; metadata (the spreading tool's JSON).
     """
 

@@ -65,6 +65,7 @@ py::dict spreading(const PyChain& chain, TransportCase c, const PyRun& options) 
   meta["time_step_rule"] = step_rule;
   meta["run"] = describe_run(r, chain.description.value("realization", nlohmann::json(0)));
   if (d.spectrum) meta["spectrum"] = describe_spectral_density(*d.spectrum);
+  if (d.lyapunov_vectors > 0) meta["lyapunov_spectrum"] = describe_lyapunov(r, "");
 
   std::vector<std::string> said = notes(c);
   for (const auto& w : warnings(r, d)) said.push_back(w);
@@ -212,16 +213,19 @@ void bind_dynamics(py::module_& m) {
       .def_readwrite("checkpoint", &PyRun::checkpoint)
       .def_readwrite("progress", &PyRun::progress_bar);
   // What granular/_dynamics.py makes a SpreadingRun and a Transport of (copies of the arrays).
+  readonly(py::class_<LyapunovSeries>(m, "_LyapunovSeries"), "time exponents gali sali", &LyapunovSeries::time,
+           &LyapunovSeries::exponents, &LyapunovSeries::gali, &LyapunovSeries::sali);
   using Run = SpreadingResult;
   readonly(py::class_<Run>(m, "_SpreadingResult"),
-           "t m2 m2_centroid ipr energy_error dissipated mle deviation_t deviation initial_energy max_energy_error "
+           "t m2 m2_centroid ipr energy_error dissipated mle deviation_t deviation lyapunov initial_energy "
+           "max_energy_error "
            "final_state final_energy final_force force_t forces map_t map_energy map_columns spectrum_khz spectrum "
            "wall_energy reached_walls energy_guard_time steps seconds",
            &Run::t, &Run::m2, &Run::m2_centroid, &Run::ipr, &Run::energy_error, &Run::dissipated, &Run::mle,
-           &Run::deviation_t, &Run::deviation, &Run::initial_energy, &Run::max_energy_error, &Run::final_state,
-           &Run::final_energy, &Run::final_force, &Run::force_t, &Run::forces, &Run::map_t, &Run::map_energy,
-           &Run::map_columns, &Run::spectrum_khz, &Run::spectrum, &Run::wall_energy, &Run::reached_walls,
-           &Run::energy_guard_time, &Run::steps, &Run::seconds);
+           &Run::deviation_t, &Run::deviation, &Run::lyapunov, &Run::initial_energy, &Run::max_energy_error,
+           &Run::final_state, &Run::final_energy, &Run::final_force, &Run::force_t, &Run::forces, &Run::map_t,
+           &Run::map_energy, &Run::map_columns, &Run::spectrum_khz, &Run::spectrum, &Run::wall_energy,
+           &Run::reached_walls, &Run::energy_guard_time, &Run::steps, &Run::seconds);
   readonly(py::class_<SeriesSummary>(m, "_SeriesSummary"), "mean standard_error", &SeriesSummary::mean,
            &SeriesSummary::standard_error);
   using Sum = TransportSummary;

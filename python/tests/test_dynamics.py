@@ -290,6 +290,56 @@ def test_mle_and_deviation_vector_equal_the_spreading_tool(tools):
     assert without_process_keys(run.metadata) == without_process_keys(meta)
 
 
+def test_lyapunov_spectrum_equals_the_spreading_tool(tools):
+    """lyapunov_vectors=k (with mle=True) is --lyapunov-vectors k: PREFIX-lyapunov.csv holds t, lambda_1..lambda_k,
+    gali_2..gali_k and sali at the run's sample times; the run's own curves are those of a run without it."""
+    flags = ["--disorder", "A", "--N", "21", "--F0", "0.01", "--ic", "velocity", "--beta", "0.05", "--seed", "2",
+             "--mle", "--renormalize", "5", "--samples", "40", *SHORT_FLAGS]
+    csv, meta = tools.run("spreading", *flags, "--lyapunov-vectors", "4", output="lyap")
+    keywords = dict(ic="velocity", beta=0.05, mle=True, renormalize=5, samples=40, **SHORT)
+    chain = gr.anderson(N=21, F0=0.01, seed=2)
+    run = gr.spreading(chain, lyapunov_vectors=4, **keywords)
+    spectrum = read_csv(tools.path("lyap-lyapunov.csv"))
+    header = ["t", "lambda_1", "lambda_2", "lambda_3", "lambda_4", "gali_2", "gali_3", "gali_4", "sali"]
+    assert list(spectrum) == header
+    lyap = run.lyapunov
+    assert lyap["exponents"].shape == (len(run.t), 4) and lyap["gali"].shape == (len(run.t), 3)
+    assert_identical(lyap["t"], run.t)
+    assert_identical(lyap["t"], spectrum["t"])
+    for j in range(4):
+        assert_identical(lyap["exponents"][:, j], spectrum[f"lambda_{j + 1}"])
+    for j in range(3):
+        assert_identical(lyap["gali"][:, j], spectrum[f"gali_{j + 2}"])
+    assert_identical(lyap["sali"], spectrum["sali"])
+    assert lyap["exponents"][-1, 0] > 0 and lyap["gali"][-1, 2] < lyap["gali"][0, 2] <= 1
+    assert meta["lyapunov_spectrum"]["file"].endswith("lyap-lyapunov.csv")
+    assert meta["lyapunov_spectrum"]["vectors"] == 4
+    assert run.metadata["lyapunov_spectrum"]["exponents_T_per_s"] == list(lyap["exponents"][-1])
+    assert run.metadata["parameters"]["lyapunov_spectrum"]["vectors"] == 4
+    plain = gr.spreading(chain, **keywords)
+    assert plain.lyapunov is None
+    for key in ("m2", "m2_centroid", "ipr", "energy_error", "mle"):
+        assert_identical(run[key], plain[key])
+    assert_identical(run.final_state["u"], plain.final_state["u"])
+    one = gr.spreading(chain, lyapunov_vectors=1, **keywords).lyapunov
+    assert one["exponents"].shape == (len(run.t), 1) and one["gali"].shape == (len(run.t), 0) and one["sali"] is None
+
+
+def test_lyapunov_vectors_are_refused_where_they_cannot_run():
+    """Needs mle (the same tangent map and its rules); 1..2N; one realization (no ensemble keyword)."""
+    c = gr.anderson(N=4)
+    with pytest.raises(ValueError, match="lyapunov_vectors: takes effect only with `?mle"):
+        gr.spreading(c, lyapunov_vectors=2, **SHORT)
+    with pytest.raises(ValueError, match="lyapunov_vectors 9: between 1 and 2N = 8"):
+        gr.spreading(c, mle=True, lyapunov_vectors=9, **SHORT)
+    with pytest.raises(ValueError, match="mle"):
+        gr.spreading(c, mle=True, lyapunov_vectors=2, damping_time=1e-3, **SHORT)
+    for function in (gr.transport, gr.exponent_table):
+        assert "lyapunov_vectors" not in inspect.signature(function).parameters
+    assert inspect.signature(gr.spreading).parameters["lyapunov_vectors"].default == 0
+    assert re.search(r"lyapunov_vectors", gr.spreading.__doc__)
+
+
 @pytest.mark.parametrize("flags,keywords", [
     (["--mle"], dict(mle=True)),
     (["--damping-time", "1e-3"], dict(damping_time=1e-3)),
@@ -355,12 +405,12 @@ def _keywords(table, skip=()):
 
 @pytest.mark.parametrize("function, tables", [
     (gr.spreading, [(gr._core.TransportCase, ("fit_begin", "fit_end")), (gr._core.ModeKick, ())]),
-    (gr.transport, [(gr._core.TransportCase, ("fit_begin", "fit_end", "deviation_samples",
+    (gr.transport, [(gr._core.TransportCase, ("fit_begin", "fit_end", "deviation_samples", "lyapunov_vectors",
                                               *gr._core._spreading_output_parameters)),
                     # an ensemble draws its chains: no files, no one realization; s1's N/m stiffness: none
                     (gr._core.ChainChoices, ("config", "radii", "realization", "k0_n_per_m")), (gr._core.ModeKick, ()),
                     (gr._core._RunOptions, ())]),
-    (gr.exponent_table, [(gr._core.TransportCase, ("fit_begin", "fit_end", "deviation_samples",
+    (gr.exponent_table, [(gr._core.TransportCase, ("fit_begin", "fit_end", "deviation_samples", "lyapunov_vectors",
                                                    *gr._core._spreading_output_parameters)),
                          (gr._core.ExponentChoices, ()),
                          (gr._core.ModeKick, ()), (gr._core._RunOptions, ())]),
@@ -385,12 +435,12 @@ def test_the_run_keywords_and_their_defaults_are_the_library_table(function):
     taken = inspect.signature(function).parameters
     # site None: the centre; fit: a pair; forces_at None or a list of beads
     python_forms = {"site": None, "fit_begin": None, "fit_end": None, "forces_at": None}
-    one_run = ("deviation_samples", *gr._core._spreading_output_parameters)
+    one_run = ("deviation_samples", "lyapunov_vectors", *gr._core._spreading_output_parameters)
     for name, word, _ in gr._core.TransportCase._parameters:
         if not hasattr(case, name) or name in python_forms:
             continue
         if name in one_run and function is not gr.spreading:
-            assert word not in taken, "an ensemble writes no deviation vector's file nor one run's outputs"
+            assert word not in taken, "an ensemble writes no deviation vector's file, spectrum nor one run's outputs"
             continue
         assert word in taken, f"{function.__name__} takes no keyword {word}"
         assert taken[word].kind == inspect.Parameter.KEYWORD_ONLY

@@ -16,7 +16,7 @@ import granular.plot as gp  # noqa: E402
 from conftest import BUILD, SOURCE  # noqa: E402
 
 DIMENSIONLESS = ("IPR", "P^{-1}", "rho", "L_d", "mode number", "bead", "g(", "log_{10}", "error", "distance", "size ratio", "exponent",
-                 "modes per bin", "P$^{-1}$", r"$\gamma$", r"$\eta$", r"$\mu$")
+                 "modes per bin", "P$^{-1}$", r"$\gamma$", r"$\eta$", r"$\mu$", "alignment index")
 
 
 def check_axes(fig):
@@ -139,6 +139,30 @@ def test_paper_comparison_figure():
 def cli(*args, cwd):
     env = dict(os.environ, PYTHONPATH=os.path.dirname(os.path.dirname(os.path.abspath(gr.__file__))))
     return subprocess.run([sys.executable, *map(str, args)], capture_output=True, text=True, cwd=cwd, env=env)
+
+
+def test_lyapunov_figure_from_a_run_and_from_the_tools_csv(tools):
+    """lambda_i(t) and GALI_k(t), SALI(t) on log axes, from granular.spreading(..., lyapunov_vectors=k) or from the
+    spreading tool's PREFIX-lyapunov.csv (its JSON beside it gives the title), also as `python3 -m granular.plot
+    lyapunov`; a run without the spectrum is a ValueError saying how to get one."""
+    keywords = dict(ic="velocity", beta=0.05, mle=True, T=1e-3, fit=(2e-4, 1e-3))
+    chain = gr.anderson(N=8, F0=0.01)
+    run = gr.spreading(chain, lyapunov_vectors=5, **keywords)
+    fig = gp.lyapunov(run)
+    check_axes(fig)
+    assert fig.axes[0].get_xscale() == "log" and fig.axes[1].get_yscale() == "log"
+    assert len(fig.axes[1].get_lines()) == 5  # GALI_2..GALI_5 and SALI
+    check_axes(gp.lyapunov(gr.spreading(chain, lyapunov_vectors=1, **keywords)))  # no index: the left panel only
+    with pytest.raises(ValueError, match="lyapunov_vectors"):
+        gp.lyapunov(gr.spreading(chain, **keywords))
+    tools.run("spreading", "--N", "8", "--F0", "0.01", "--ic", "velocity", "--beta", "0.05", "--T", "1e-3", "--fit",
+              "2e-4:1e-3", "--mle", "--lyapunov-vectors", "4", "--quiet", output="spec")
+    from_file = gp.lyapunov(tools.path("spec-lyapunov.csv"))
+    check_axes(from_file)
+    assert "N = 8" in from_file._suptitle.get_text(), from_file._suptitle.get_text()
+    done = cli("-m", "granular.plot", "lyapunov", "spec-lyapunov.csv", cwd=tools.folder)
+    assert done.returncode == 0, done.stderr
+    assert (tools.folder / "spec-lyapunov.png").stat().st_size > 10000
 
 
 def test_command_line_figures_from_the_tools_files(tools):

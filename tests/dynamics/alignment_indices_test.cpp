@@ -400,5 +400,45 @@ TEST(AlignmentIndices, OnARegularOrbitGaliIsBoundedUpToNAndDecaysAsAPowerLawBeyo
   }
 }
 
+// FactorAlignment: the indices of P = R_m … R_1 (unit columns kept) are those of P's columns as
+// vectors, whatever the scaling; and a small angle keeps its digits.
+TEST(FactorAlignment, TheIndicesOfTheProductOfTheFactorsAreThoseOfItsColumns) {
+  const std::size_t k = 4;  // N = 2 beads: 2N = k, so P's columns are whole deviation vectors
+  FactorAlignment alignment(k);
+  EXPECT_EQ(alignment.gali(), std::vector<double>(k - 1, 1.0));
+  EXPECT_NEAR(alignment.sali(), std::sqrt(2.0), 1e-15);
+  std::mt19937_64 draw(7);
+  std::uniform_real_distribution<double> entry(-1, 1);
+  std::vector<double> p(k * k, 0.0);  // P itself, column-major, unscaled
+  for (std::size_t j = 0; j < k; ++j) p[j * k + j] = 1;
+  for (int step = 0; step < 6; ++step) {
+    std::vector<double> r(k * k, 0.0);
+    for (std::size_t j = 0; j < k; ++j)
+      for (std::size_t i = 0; i <= j; ++i) r[j * k + i] = i == j ? 0.5 + entry(draw) * 0.4 : 3 * entry(draw);
+    alignment.multiply(r);
+    std::vector<double> next(k * k, 0.0);
+    for (std::size_t j = 0; j < k; ++j)
+      for (std::size_t i = 0; i < k; ++i)
+        for (std::size_t l = 0; l < k; ++l) next[j * k + i] += r[l * k + i] * p[j * k + l];
+    p = next;
+  }
+  std::vector<State> columns(k, State(2));
+  for (std::size_t j = 0; j < k; ++j)
+    for (std::size_t i = 0; i < 2; ++i) {
+      columns[j].u[i] = p[j * k + i];
+      columns[j].v[i] = p[j * k + 2 + i] / alignment_unit;
+    }
+  const std::vector<double> want = generalized_alignment_indices(columns), got = alignment.gali();
+  ASSERT_EQ(got.size(), k - 1);
+  for (std::size_t j = 0; j + 1 < k; ++j) EXPECT_NEAR(got[j], want[j], 1e-11 * want[j]) << "GALI_" << j + 2;
+  EXPECT_NEAR(alignment.sali(), smaller_alignment_index(columns[0], columns[1]), 1e-12);
+
+  FactorAlignment narrow(2);
+  narrow.multiply(std::vector<double>{1, 0, 1, 1e-12});  // column 2 = (1, 1e-12): 1e-12 rad from column 1
+  EXPECT_NEAR(narrow.sali(), 1e-12, 1e-24);
+  EXPECT_NEAR(narrow.gali().front(), 1e-12, 1e-24);
+  EXPECT_THROW(FactorAlignment(1), InvalidInput);
+}
+
 }  // namespace
 }  // namespace granular

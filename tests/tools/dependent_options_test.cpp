@@ -112,7 +112,8 @@ TEST(DependentOptions, RunOptionsAreRefusedWithoutTheChoiceTheyNeed) {
                {"reference_max_step", {"2e-8", "", "--integrator reference"}},
                {"energy_guard", {"warn", "--max-energy-error 0", ""}},
                {"renormalize", {"5", "", "--mle"}},
-               {"deviation_samples", {"3", "--deviation dev.csv", "--mle --deviation dev.csv"}}},
+               {"deviation_samples", {"3", "--deviation dev.csv", "--mle --deviation dev.csv"}},
+               {"lyapunov_vectors", {"2", "", "--mle"}}},
               {{"spreading", "exponents"}}, kick_run, kick_args);
   check_table(spreading_output_parameters(),
               {{"force_samples", {"50", "", "--forces-at 20"}},

@@ -70,6 +70,31 @@ TEST(SpreadingTool, WritesEveryOutputWithTheContractColumns) {
   fs::remove_all(dir);
 }
 
+// --lyapunov-vectors k (with --mle): PREFIX-lyapunov.csv with λ_1..λ_k, GALI_2..GALI_k and SALI at the
+// sample times, named in the JSON; PREFIX.csv is the run's without it, to the last digit.
+TEST(SpreadingTool, WritesTheLyapunovSpectrumOnlyWhenAsked) {
+  const fs::path dir = fresh_dir("lyapunov");
+  const std::string job =
+      "--N 8 --F0 0.01 --ic velocity --beta 0.05 --site 3 --T 2e-4 --dt 1e-7 --samples 20 "
+      "--fit 1e-4:2e-4 --fit-step 1e-5 --mle --quiet ";
+  const ToolRun r = run_spreading(job + "--lyapunov-vectors 3 --output out", dir);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(first_line(dir / "out-lyapunov.csv"), "t,lambda_1,lambda_2,lambda_3,gali_2,gali_3,sali");
+  std::ifstream json(dir / "out.json");
+  const auto meta = nlohmann::json::parse(json);
+  EXPECT_EQ(meta["lyapunov_spectrum"]["file"], "out-lyapunov.csv");  // as --output names it
+  EXPECT_EQ(meta["lyapunov_spectrum"]["vectors"], 3);
+  EXPECT_EQ(meta["lyapunov_spectrum"]["exponents_T_per_s"].size(), 3u);
+  EXPECT_EQ(meta["parameters"]["lyapunov_spectrum"]["vectors"], 3);
+  ASSERT_EQ(run_spreading(job + "--output plain", dir).code, 0);
+  EXPECT_FALSE(fs::exists(dir / "plain-lyapunov.csv"));
+  EXPECT_EQ(granular::testing::read_file((dir / "plain.csv").string()),
+            granular::testing::read_file((dir / "out.csv").string()));
+  ASSERT_EQ(run_spreading(job + "--lyapunov-vectors 1 --output one", dir).code, 0);
+  EXPECT_EQ(first_line(dir / "one-lyapunov.csv"), "t,lambda_1");
+  fs::remove_all(dir);
+}
+
 // The velocity kick's JSON holds the β used (the paper's 8e-3 by default) and no α; the spectrum of
 // the velocities is named as such.
 TEST(SpreadingTool, JsonHoldsTheKickUsedAndTheSpectrumSeries) {
@@ -154,7 +179,12 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"--fit 4e-5:1e-4 --fit-step 1.5e-6", "--fit-step"}, BadInput{"--t-star -1", "--t-star"},
         BadInput{"--bootstrap 1", "--bootstrap"}, BadInput{"--centre middle", "--centre"},
         BadInput{"--spectrum s.csv --spectrum-of force", "--spectrum-of"}, BadInput{"--fit 2e-3:1e-3", "--fit"},
-        BadInput{"--active-window maybe", "--active-window"}, BadInput{"--spectrum out.csv", "two outputs"}),
+        BadInput{"--active-window maybe", "--active-window"}, BadInput{"--spectrum out.csv", "two outputs"},
+        BadInput{"--mle --lyapunov-vectors 203", "--lyapunov-vectors 203: between 1 and 2N = 202"},
+        BadInput{"--lyapunov-vectors 4", "--lyapunov-vectors: takes effect only with"},
+        BadInput{"--mle --lyapunov-vectors -1", "--lyapunov-vectors"},
+        BadInput{"--mle --lyapunov-vectors 4 --realizations 2", "--lyapunov-vectors 4: one realization only"},
+        BadInput{"--mle --lyapunov-vectors 4 --damping-time 1e-3", "--mle"}),
     [](const auto& info) { return "case" + std::to_string(info.index); });
 
 // An energy map too large for this machine is refused before the run, naming the bytes it needs.

@@ -34,6 +34,9 @@ inline void add_kicked_case_options(CLI::App& app, KickedCaseOptions& o) {
   app.add_option("--deviation", o.deviation, "CSV t,site,share: the deviation vector along the chain (with --mle)");
   add_parameters(app, o.run, transport_parameters(), {.only = {"deviation_samples"}})["deviation_samples"]->description(
       "uniform times of --deviation");
+  auto spectrum = add_parameters(app, o.run, transport_parameters(), {.only = {"lyapunov_vectors"}});
+  spectrum["lyapunov_vectors"]->description(spectrum["lyapunov_vectors"]->get_description() +
+                                            ": PREFIX-lyapunov.csv (t, lambda_1.., gali_2.., sali)");
   add_option(app, "--realizations", o.realizations, "realizations to average (ensemble means and exponents)");
   auto* file = app.add_option("--case", o.case_file,
                               "JSON of a case: a replay file a failed ensemble wrote, or a spreading run's PREFIX.json "

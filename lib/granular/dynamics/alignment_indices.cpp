@@ -206,6 +206,43 @@ void AlignmentIndices::renormalize() {
 
 std::vector<State> AlignmentIndices::vectors() const { return tangent_->deviations(); }
 
+FactorAlignment::FactorAlignment(std::size_t vectors) : k_(vectors), p_(vectors * vectors, 0.0), next_(p_) {
+  if (vectors < 2) throw InvalidInput("vectors", " " + std::to_string(vectors) + ": at least 2 vectors");
+  for (std::size_t j = 0; j < k_; ++j) p_[j * k_ + j] = 1;
+}
+
+void FactorAlignment::multiply(std::span<const double> r) {
+  if (r.size() != k_ * k_) throw InvalidInput("r", ": must be k x k");
+  for (std::size_t j = 0; j < k_; ++j) {  // both upper triangular: (R P)_ij = Σ_{i≤l≤j} R_il P_lj
+    double norm = 0;
+    for (std::size_t i = 0; i < k_; ++i) {
+      double s = 0;
+      for (std::size_t l = i; l <= j; ++l) s += r[l * k_ + i] * p_[j * k_ + l];
+      next_[j * k_ + i] = s;
+      norm += s * s;
+    }
+    norm = std::sqrt(norm);
+    if (!(norm > 0) || !std::isfinite(norm))
+      throw NumericalError("alignment indices: deviation vector " + std::to_string(j + 1) + " became " +
+                           (std::isfinite(norm) ? "zero" : "non-finite"));
+    for (std::size_t i = 0; i < k_; ++i) next_[j * k_ + i] /= norm;
+  }
+  p_.swap(next_);
+}
+
+std::vector<double> FactorAlignment::gali() const {
+  std::vector<double> out(k_ - 1);
+  double product = std::abs(p_[0]);
+  for (std::size_t j = 1; j < k_; ++j) out[j - 1] = product *= std::abs(p_[j * k_ + j]);
+  return out;
+}
+
+double FactorAlignment::sali() const {
+  // p̂_1 = (±1, 0, …), p̂_2 = (a, b, 0, …): the angle from its sine |b|, so that small ones keep their digits.
+  const double theta = std::atan2(std::abs(p_[k_ + 1]), std::copysign(1.0, p_[0]) * p_[k_]);
+  return 2 * std::min(std::sin(theta / 2), std::cos(theta / 2));
+}
+
 AlignmentSeries alignment_series(const ForceLaw& law, const Chain& chain, const SplittingScheme& scheme,
                                  double time_step, const State& initial, const AlignmentConfig& config,
                                  const std::vector<std::uint64_t>& sample_steps) {

@@ -35,6 +35,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "granular/dynamics/tangent_map.hpp"
@@ -112,6 +113,27 @@ class AlignmentIndices {
   std::optional<double> sali_below_;
   std::uint64_t renormalized_at_ = 0;                  ///< the step of the last renormalization
   std::vector<double> matrix_, tau_, work_, du_, dv_;  ///< the QR's buffers, LAPACK's workspace
+};
+
+/// GALI_2 … GALI_k and SALI of k orthonormal starting vectors carried by the tangent map without
+/// orthonormalization, read from the R factors of the QR's that do orthonormalize them
+/// (LyapunovSpectrum::record_factors): with V(t) = Q(t) P(t), P the product of the R's, the unit
+/// vectors are Q p̂_j, so the indices are those of P with its columns scaled to unit length:
+/// GALI_j = Π_{i≤j} |p̂_ii|, and SALI = 2 min(sin(θ/2), cos(θ/2)) with θ the angle between p̂_1 and p̂_2.
+/// The same numbers as AlignmentIndices from the same start, without a second orbit; kept in P's
+/// basis they also keep their digits below its rounding floor of ~1e-15 (until they underflow).
+class FactorAlignment {
+ public:
+  /// P = 1: orthonormal vectors, every GALI 1 and SALI √2. Throws InvalidInput naming `vectors` for k < 2.
+  explicit FactorAlignment(std::size_t vectors);
+  /// P ← R P, its columns scaled back to unit length (r: k × k, column-major, upper triangular).
+  void multiply(std::span<const double> r);
+  std::vector<double> gali() const;  ///< GALI_2 … GALI_k now (entry j is GALI_{j+2})
+  double sali() const;               ///< SALI of the first two vectors now
+
+ private:
+  std::size_t k_;
+  std::vector<double> p_, next_;  ///< P̂ (column-major), and the product's scratch
 };
 
 /// GALI_2 … GALI_k and SALI of an AlignmentIndices run at the given sample steps (sorted, from 0:

@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <string>
 #include <utility>
 
+#include "granular/dynamics/alignment_indices.hpp"
 #include "granular/dynamics/detail/dense_lapack.hpp"
 #include "granular/dynamics/detail/random_deviations.hpp"
 #include "granular/error.hpp"
@@ -132,5 +134,30 @@ std::vector<double> LyapunovSpectrum::exponents() const {
 }
 
 std::vector<State> LyapunovSpectrum::vectors() const { return tangent_->deviations(); }
+
+LyapunovSeries lyapunov_series(const ForceLaw& law, const Chain& chain, const SplittingScheme& scheme, double time_step,
+                               const State& initial, const LyapunovSpectrumConfig& config,
+                               const std::vector<std::uint64_t>& sample_steps) {
+  if (!std::is_sorted(sample_steps.begin(), sample_steps.end())) throw InvalidInput("sample_steps", ": must be sorted");
+  LyapunovSpectrum run(law, chain, scheme, time_step, initial, config);
+  std::optional<FactorAlignment> alignment;
+  if (config.vectors >= 2) {
+    alignment.emplace(config.vectors);
+    run.record_factors([&alignment](std::span<const double> r) { alignment->multiply(r); });
+  }
+  LyapunovSeries out;
+  std::uint64_t done = 0;
+  for (const std::uint64_t step : sample_steps) {
+    run.advance(static_cast<std::size_t>(step - done));
+    done = step;
+    out.time.push_back(run.time());
+    out.exponents.push_back(run.exponents());
+    if (alignment) {
+      out.gali.push_back(alignment->gali());
+      out.sali.push_back(alignment->sali());
+    }
+  }
+  return out;
+}
 
 }  // namespace granular

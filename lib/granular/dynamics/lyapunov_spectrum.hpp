@@ -70,4 +70,17 @@ class LyapunovSpectrum {
   std::vector<double> factor_;                                    ///< the last R, for record_
 };
 
+/// λ_1 … λ_k of a LyapunovSpectrum run at the given sample steps (sorted, from 0: step 0 gives
+/// zeros), and with k ≥ 2 GALI_2 … GALI_k and SALI of its starting vectors carried along without
+/// orthonormalization (FactorAlignment of its R's, alignment_indices.hpp: no second orbit).
+struct LyapunovSeries {
+  std::vector<double> time;                    ///< [s]
+  std::vector<std::vector<double>> exponents;  ///< exponents[s][j] = λ_{j+1}(time[s]) [1/s]
+  std::vector<std::vector<double>> gali;       ///< gali[s][j] = GALI_{j+2}(time[s]); empty for k = 1
+  std::vector<double> sali;                    ///< SALI(time[s]); empty for k = 1
+};
+LyapunovSeries lyapunov_series(const ForceLaw& law, const Chain& chain, const SplittingScheme& scheme, double time_step,
+                               const State& initial, const LyapunovSpectrumConfig& config,
+                               const std::vector<std::uint64_t>& sample_steps);
+
 }  // namespace granular

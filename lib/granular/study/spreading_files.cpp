@@ -44,6 +44,26 @@ void write_deviation_csv(std::ostream& out, const SpreadingResult& r) {
     for (std::size_t i = 0; i < n; ++i) t.row(r.deviation_t[k], i + 1, r.deviation[k * n + i]);
 }
 
+void write_lyapunov_csv(std::ostream& out, const SpreadingResult& r) {
+  const LyapunovSeries& l = r.lyapunov;
+  const std::size_t k = l.exponents.empty() ? 0 : l.exponents.front().size();
+  std::vector<std::string> names{"t"};
+  for (std::size_t j = 1; j <= k; ++j) names.push_back("lambda_" + std::to_string(j));
+  for (std::size_t j = 2; j <= k; ++j) names.push_back("gali_" + std::to_string(j));
+  if (k >= 2) names.push_back("sali");
+  for (std::size_t j = 0; j < names.size(); ++j) out << (j ? "," : "") << names[j];
+  out << '\n';
+  for (std::size_t s = 0; s < l.time.size(); ++s) {
+    out << format_number(l.time[s]);
+    for (double x : l.exponents[s]) out << ',' << format_number(x);
+    if (k >= 2) {
+      for (double x : l.gali[s]) out << ',' << format_number(x);
+      out << ',' << format_number(l.sali[s]);
+    }
+    out << '\n';
+  }
+}
+
 void write_standard_errors_csv(std::ostream& out, const TransportSummary& m) {
   CsvWriter t(out, {"t", "m2_se", "ipr_se", "energy_error_se", "m2_centroid_se"});
   for (std::size_t i = 0; i < m.t.size(); ++i)
@@ -103,12 +123,24 @@ nlohmann::json describe_run(const SpreadingResult& r, const nlohmann::json& real
   return run;
 }
 
-std::vector<std::string> SpreadingPaths::all() const {
-  return {csv, json, final_state, energy_map, spectrum, profile, forces, sem, checkpoint, deviation};
+nlohmann::json describe_lyapunov(const SpreadingResult& r, const std::string& file) {
+  const LyapunovSeries& l = r.lyapunov;
+  nlohmann::json j = {{"vectors", l.exponents.empty() ? 0 : l.exponents.front().size()},
+                      {"starting_vectors", "random orthonormal (seed 1), norm (du, t_unit dv)"},
+                      {"exponents_T_per_s",
+                       l.exponents.empty() ? nlohmann::json(nullptr) : nlohmann::json(l.exponents.back())}};
+  if (!l.sali.empty()) j["gali_T"] = l.gali.back(), j["sali_T"] = l.sali.back();
+  if (!file.empty()) j["file"] = file;
+  return j;
 }
 
-SpreadingPaths spreading_paths(const std::string& prefix, bool ensemble, bool profile, bool forces) {
+std::vector<std::string> SpreadingPaths::all() const {
+  return {csv, json, final_state, energy_map, spectrum, profile, forces, sem, checkpoint, deviation, lyapunov};
+}
+
+SpreadingPaths spreading_paths(const std::string& prefix, bool ensemble, bool profile, bool forces, bool lyapunov) {
   SpreadingPaths p;
+  if (lyapunov) p.lyapunov = prefix + "-lyapunov.csv";
   p.csv = prefix + ".csv", p.json = prefix + ".json";
   if (ensemble) p.sem = prefix + "-sem.csv", p.checkpoint = prefix + ".checkpoint";
   if (profile) p.profile = prefix + "-profile.csv";
@@ -137,6 +169,7 @@ SpreadingFiles write_spreading_files(const SpreadingPaths& paths, const Spreadin
   if (!paths.energy_map.empty())
     files.energy_map = write_energy_map(paths.energy_map, run, config.energy_map ? config.energy_map->stride : 1);
   if (!paths.deviation.empty()) write_deviation_csv(open(paths.deviation), run);
+  if (!paths.lyapunov.empty()) write_lyapunov_csv(open(paths.lyapunov), run);
   return files;
 }
 

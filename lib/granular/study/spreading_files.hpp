@@ -35,10 +35,17 @@ void write_forces_csv(std::ostream& out, const SpreadingResult& run, const std::
 void write_spectrum_csv(std::ostream& out, const SpreadingResult& run);
 /// t,site,share: the deviation vector's distribution along the chain (with the tangent map).
 void write_deviation_csv(std::ostream& out, const SpreadingResult& run);
+/// t, lambda_1 … lambda_k [1/s], then with k ≥ 2 gali_2 … gali_k and sali: the run's Lyapunov
+/// spectrum and alignment indices (run.lyapunov) at its sample times.
+void write_lyapunov_csv(std::ostream& out, const SpreadingResult& run);
 /// The energy map as HDF5, whole or not at all: datasets energy [time][column] [J], t [s] and
 /// site (the first bead of each column, from 1; `stride` beads per column). Written under its
 /// temporary name and returned uncommitted, as AtomicFile is (Hdf5File::commit puts it in place).
 std::unique_ptr<Hdf5File> write_energy_map(const std::string& path, const SpreadingResult& run, std::size_t stride);
+
+/// The "lyapunov_spectrum" entry of a run's JSON: the vectors k, λ_j, GALI_j and SALI at T, and its
+/// `file` (none when empty).
+nlohmann::json describe_lyapunov(const SpreadingResult& run, const std::string& file);
 
 /// The "run" entry of a run's JSON: the realization, initial energy, worst energy error, steps,
 /// bond updates, integration time, final active window (beads from 1), wall energy; the energy
@@ -49,19 +56,22 @@ nlohmann::json describe_run(const SpreadingResult& run, const nlohmann::json& re
 struct SpreadingPaths {
   std::string csv, json, sem, profile, forces, checkpoint;   ///< under the prefix (spreading_paths)
   std::string final_state, energy_map, spectrum, deviation;  ///< named by the user, one realization each
+  std::string lyapunov;                                      ///< PREFIX-lyapunov.csv, one realization
   /// Every path, to be checked before the run (io/output_paths.hpp, check_outputs).
   std::vector<std::string> all() const;
 };
 
 /// The files under `prefix`: PREFIX.csv and PREFIX.json; with `ensemble` PREFIX-sem.csv (standard
-/// errors) and PREFIX.checkpoint; with `profile` PREFIX-profile.csv; with `forces` PREFIX-forces.csv.
-SpreadingPaths spreading_paths(const std::string& prefix, bool ensemble, bool profile, bool forces);
+/// errors) and PREFIX.checkpoint; with `profile` PREFIX-profile.csv; with `forces` PREFIX-forces.csv;
+/// with `lyapunov` PREFIX-lyapunov.csv.
+SpreadingPaths spreading_paths(const std::string& prefix, bool ensemble, bool profile, bool forces,
+                               bool lyapunov = false);
 
 /// Writes every file of `paths` but the JSON and the checkpoint: the means of `ensemble` where
 /// there is one (the curves, their standard errors, the profile), else those of `run`, and what
 /// only one realization has (forces at config.forces.sites, final state, g(ν), energy map with
-/// config.energy_map->stride, deviation vector) from `run`. Every file, the HDF5 map included, is returned
-/// under its temporary name, to be committed after the JSON (never an output without its metadata).
+/// config.energy_map->stride, deviation vector, Lyapunov spectrum) from `run`. Every file, the HDF5 map included, is
+/// returned under its temporary name, to be committed after the JSON (never an output without its metadata).
 struct SpreadingFiles {
   std::vector<std::unique_ptr<AtomicFile>> text;  ///< the CSVs
   std::unique_ptr<Hdf5File> energy_map;           ///< null without a map

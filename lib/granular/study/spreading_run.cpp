@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <optional>
+#include <string>
 
 #include "granular/dynamics/sampling.hpp"
 #include "granular/error.hpp"
@@ -26,6 +27,12 @@ LyapunovObserver::Settings lyapunov_settings(const SpreadingRunConfig& run) {
   return {run.spread, run.deviation_samples};
 }
 
+LyapunovSpectrumConfig lyapunov_spectrum_config(const SpreadingRunConfig& run) {
+  return {.vectors = run.lyapunov_vectors,
+          .orthonormalize_every = run.integration.lyapunov.renormalize_every,
+          .time_unit = run.integration.lyapunov.time_unit};
+}
+
 void validate(const SpreadingRunConfig& run, std::size_t beads) {
   validate(integration_config(run));
   const RunPlan plan = plan_of(run, beads);
@@ -36,6 +43,13 @@ void validate(const SpreadingRunConfig& run, std::size_t beads) {
   if (run.deviation_samples > 0 && !run.integration.lyapunov.enabled)
     throw InvalidInput("deviation_samples", ": needs the Lyapunov exponent switched on");
   if (run.integration.lyapunov.enabled) lyapunov_settings(run).validate(plan);
+  if (run.lyapunov_vectors > 0 && !run.integration.lyapunov.enabled)
+    throw InvalidInput("lyapunov_vectors", ": needs the Lyapunov exponent switched on");
+  if (run.lyapunov_vectors > 2 * beads)
+    throw InvalidInput("lyapunov_vectors", " " + std::to_string(run.lyapunov_vectors) +
+                                               ": between 1 and 2N = " + std::to_string(2 * beads) + " (0 = none)");
+  if (run.lyapunov_vectors > 0 && run.integration.lyapunov.renormalize_every < 1)
+    throw InvalidInput("renormalize", " 0: the spectrum's vectors are re-orthonormalized every >= 1 steps");
 }
 
 std::vector<std::uint64_t> sample_steps(const SpreadingRunConfig& run) {
@@ -70,6 +84,10 @@ SpreadingResult run_spreading(const Chain& chain, const State& initial, const Sp
     r.deviation_t = std::move(lyapunov->deviation_t);
     r.deviation = std::move(lyapunov->deviation);
   }
+  if (run.lyapunov_vectors > 0)  // the orbit once more, with the vectors (the rules: the tangent map's, validated)
+    r.lyapunov =
+        lyapunov_series(make_force_law(run.integration.force_law, chain), chain, run.integration.integrator.scheme,
+                        run.integration.time_step, initial, lyapunov_spectrum_config(run), sample_steps(run));
   r.initial_energy = info.initial_energy;
   r.max_energy_error = spread_observer.max_energy_error;
   r.wall_energy = spread_observer.wall_energy;

@@ -15,6 +15,7 @@
 #include <optional>
 #include <vector>
 
+#include "granular/dynamics/lyapunov_spectrum.hpp"
 #include "granular/dynamics/observers.hpp"
 #include "granular/dynamics/spread.hpp"
 #include "granular/dynamics/state.hpp"
@@ -33,11 +34,16 @@ struct SpreadingRunConfig {
   OptionalSettings<EnergyMapObserver::Settings> energy_map{};      ///< E_n(t) map; off: none
   OptionalSettings<SpectralDensityObserver::Settings> spectrum{};  ///< g(ν); off: none
   std::size_t deviation_samples = 0;  ///< uniform times of the deviation vector (integration.lyapunov on); 0 = none
+  /// k deviation vectors of a Lyapunov spectrum (lyapunov_spectrum.hpp) on the same orbit, 1 ≤ k ≤ 2N,
+  /// re-orthonormalized every integration.lyapunov.renormalize_every steps (integration.lyapunov on); 0 = none.
+  std::size_t lyapunov_vectors = 0;
 };
 
 /// The integration of a run, its deviation vector on the excited bead; and the settings of X1(t)'s observer.
 IntegrationConfig integration_config(const SpreadingRunConfig& run);
 LyapunovObserver::Settings lyapunov_settings(const SpreadingRunConfig& run);
+/// The spectrum's settings: run.lyapunov_vectors vectors, the tangent map's interval and norm.
+LyapunovSpectrumConfig lyapunov_spectrum_config(const SpreadingRunConfig& run);
 
 /// Throws InvalidInput naming the parameter (time_step, duration, samples, forces_at, …) on a bad run.
 void validate(const SpreadingRunConfig& run, std::size_t beads);
@@ -52,6 +58,7 @@ struct SpreadingResult {
   std::vector<double> mle;           ///< X1(t) [1/s] at the sample times; empty without the tangent map
   std::vector<double> deviation_t;   ///< times of the deviation-vector distribution rows [s]
   std::vector<double> deviation;     ///< rows × N, row-major: share of ‖w‖² on each bead
+  LyapunovSeries lyapunov;           ///< λ_j(t), GALI_j(t), SALI(t) at the times t; empty without lyapunov_vectors
   double initial_energy = 0;         ///< H(0) [J]
   double max_energy_error = 0;       ///< the largest of energy_error
   State final_state;
@@ -73,6 +80,8 @@ struct SpreadingResult {
 
 /// spread() with the energy spread, the final state, the force series, and whichever of the energy map,
 /// spectral density and X1(t) (with its deviation vector) `run` switches on, packed into one result.
+/// With run.lyapunov_vectors, the spectrum and the alignment indices are integrated after the run,
+/// from the same initial state by the same scheme: the same orbit once more, the observers' run untouched.
 SpreadingResult run_spreading(const Chain& chain, const State& initial, const SpreadingRunConfig& run);
 
 /// The sample steps of the energy spread of a run: those of sample_steps() outside the dense

@@ -134,6 +134,11 @@ const ParameterTable<TransportCase>& transport_parameters() {
           .needing("mle"),
       P{"deviation_samples", path<C>(&C::dynamics, &D::deviation_samples),
         "uniform times (0..T) of the deviation vector's distribution along the chain (with `mle`)"}
+          .needing("mle"),
+      P{"lyapunov_vectors", path<C>(&C::dynamics, &D::lyapunov_vectors),
+        "k deviation vectors of a Lyapunov spectrum on the same orbit, 1..2N (0 = none; one realization): "
+        "lambda_1..lambda_k(t) [1/s], GALI_2..GALI_k(t) and SALI(t) at the sample times, QR every `renormalize` "
+        "steps (with `mle`: the same tangent map and its rules)"}
           .needing("mle")};
   return table;
 }

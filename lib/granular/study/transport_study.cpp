@@ -46,6 +46,12 @@ double finite_non_negative(double value, const char* name) {
     throw InvalidInput(name, " " + format_number(value) + ": must be finite and >= 0");
   return value;
 }
+/// A Lyapunov spectrum is one realization's: an ensemble neither averages nor records it.
+void refuse_spectrum_in_ensemble(const SpreadingRunConfig& d) {
+  if (d.lyapunov_vectors > 0)
+    throw InvalidInput("lyapunov_vectors", " " + std::to_string(d.lyapunov_vectors) +
+                                               ": one realization only (an ensemble does not average the spectrum)");
+}
 /// The checks of the choices a front end sets straight in the case (transport_parameters()).
 void validate_choices(const TransportCase& c) {
   refuse_unmet_needs(c, transport_parameters());  // `energy_guard` with no guard is refused, not ignored
@@ -68,6 +74,7 @@ void validate_choices(const TransportCase& c) {
   if (d.integration.lyapunov.renormalize_every < 1)
     throw InvalidInput("renormalize", " " + std::to_string(d.integration.lyapunov.renormalize_every) + ": at least 1");
   if (d.deviation_samples == 1) throw InvalidInput("deviation_samples", " 1: 0 (none) or at least 2");
+  if (c.realizations > 1) refuse_spectrum_in_ensemble(d);
 }
 }  // namespace
 
@@ -190,6 +197,10 @@ nlohmann::json describe(const TransportCase& c) {
     j["lyapunov"] = {{"renormalize_every", d.integration.lyapunov.renormalize_every},
                      {"norm_time_unit_s", d.integration.lyapunov.time_unit},
                      {"initial_deviation", "du = 1, dv = 1/time_unit on the kicked bead"}};
+  if (d.lyapunov_vectors > 0)
+    j["lyapunov_spectrum"] = {{"vectors", d.lyapunov_vectors},
+                              {"orthonormalize_every", d.integration.lyapunov.renormalize_every},
+                              {"seed", LyapunovSpectrumConfig{}.seed}};
   return j;
 }
 
@@ -243,6 +254,8 @@ TransportCase parse_case(const nlohmann::json& j) {
       d.integration.lyapunov.renormalize_every = j.at("lyapunov").at("renormalize_every").get<std::size_t>();
       d.integration.lyapunov.time_unit = j.at("lyapunov").at("norm_time_unit_s").get<double>();
     }
+    if (j.contains("lyapunov_spectrum"))
+      d.lyapunov_vectors = j.at("lyapunov_spectrum").at("vectors").get<std::size_t>();
   } catch (const nlohmann::json::exception& e) {
     throw InvalidInput("case", std::string(": ") + e.what());
   }
@@ -453,6 +466,7 @@ void add_realization_errors(const TransportCase& c, const std::vector<double>& t
 
 TransportSummary run_transport_study(const TransportCase& c, const StudyRunOptions& options) {
   validate(c);
+  refuse_spectrum_in_ensemble(c.dynamics);  // even of one realization: an ensemble's records hold no spectrum
   const SpreadingRunConfig config = spreading_config(c);
   TransportSummary s;
   for (auto step : sample_steps(config)) s.t.push_back(static_cast<double>(step) * config.integration.time_step);

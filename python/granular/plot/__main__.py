@@ -68,6 +68,8 @@ def parser(prog=None):
     q = kind("forces", "force versus t at chosen beads beside the force profile at T (spreading --forces-at --profile)")
     q.add_argument("forces", help="PREFIX-forces.csv")
     q.add_argument("profile", nargs="?", help="PREFIX-profile.csv (optional)")
+    q = kind("lyapunov", "lambda_i(t) beside GALI_k(t) and SALI(t), log axes, from spreading --lyapunov-vectors")
+    q.add_argument("csv", help="PREFIX-lyapunov.csv")
     q = kind("spread", "m2(t) and P^-1(t), log-log, with L_d insets, from spreading CSVs")
     q.add_argument("csv", nargs="+")
     q.add_argument("--labels", help="comma list, one per CSV")
@@ -149,6 +151,8 @@ def main(argv=None, prog=None):
                                  floor=args.floor, metadata=args.json), args.output or _default_output(args.map))
         elif args.kind == "forces":
             save(plot.forces(args.forces, args.profile), args.output or _default_output(args.forces))
+        elif args.kind == "lyapunov":
+            save(plot.lyapunov(args.csv), args.output or _default_output(args.csv))
         elif args.kind == "spread":
             save(plot.spreading(args.csv, labels), args.output or _default_output(args.csv[0]))
         elif args.kind == "mode-kicks":

@@ -191,6 +191,78 @@ def spreading(sources, labels=None):
     return fig
 
 
+def _lyapunov_data(source):
+    """(t, exponents (times x k), gali (times x (k-1)), sali or None, metadata) of a run or of PREFIX-lyapunov.csv."""
+    if _io.is_path(source):
+        d = _io.read_csv(source)
+        lambdas = sorted((c for c in d if c.startswith("lambda_")), key=lambda c: int(c.split("_")[1]))
+        galis = sorted((c for c in d if c.startswith("gali_")), key=lambda c: int(c.split("_")[1]))
+        if not lambdas:
+            raise ValueError(f"{source}: no lambda_ columns (a spreading --lyapunov-vectors CSV?)")
+        t = np.asarray(d["t"])
+        exponents = np.column_stack([d[c] for c in lambdas])
+        gali = np.column_stack([d[c] for c in galis]) if galis else np.empty((len(t), 0))
+        beside = os.fspath(source)[:-len("-lyapunov.csv")] + ".json"
+        if os.fspath(source).endswith("-lyapunov.csv") and os.path.exists(beside):
+            with open(beside) as f:
+                return t, exponents, gali, d.get("sali"), json.load(f)
+        return t, exponents, gali, d.get("sali"), {}
+    if source.lyapunov is None:
+        raise ValueError("this run has no Lyapunov spectrum: run granular.spreading(..., mle=True, lyapunov_vectors=k)")
+    lyap = source.lyapunov
+    return lyap["t"], lyap["exponents"], lyap["gali"], lyap["sali"], source.metadata
+
+
+def lyapunov(source):
+    """The finite-time Lyapunov exponents lambda_1(t) .. lambda_k(t) beside the alignment indices
+    GALI_2(t) .. GALI_k(t) and SALI(t), both on log axes.
+
+    source: a granular.SpreadingRun made with mle=True, lyapunov_vectors=k, or the spreading tool's
+    PREFIX-lyapunov.csv. Negative exponents are drawn as |lambda| dashed; zeros (t = 0, or an
+    index that underflowed) are left out. GALI_k of a chaotic orbit falls as
+    exp(-sum_j (lambda_1 - lambda_j) t); of a regular one it stays of order 1 for k <= N.
+    """
+    t, exponents, gali, sali, meta = _lyapunov_data(source)
+    t, exponents, gali = np.asarray(t, float), np.asarray(exponents, float), np.asarray(gali, float)
+    keep = t > 0
+    _, chain = _chain_edges(meta)
+    k = exponents.shape[1]
+    with style():
+        fig = figure(11, 4.6)
+        ax, bx = fig.subplots(1, 2)
+        for j in range(k):
+            colour = matplotlib.cm.viridis(j / max(k - 1, 1))
+            lam = exponents[keep, j]
+            label = rf"$\lambda_{{{j + 1}}}$" if k <= 8 or j in (0, k - 1) else None
+            positive = np.where(lam > 0, lam, np.nan)
+            negative = np.where(lam < 0, -lam, np.nan)
+            ax.loglog(t[keep], positive, color=colour, lw=1.0, label=label)
+            if np.isfinite(negative).any():
+                ax.loglog(t[keep], negative, color=colour, lw=1.0, ls="--")
+        ax.set_xlabel("time t [s]")
+        ax.set_ylabel(r"finite-time exponent $|\lambda_i(t)|$ [1/s] (dashed: < 0)")
+        ax.legend(loc="lower left", fontsize=8, ncol=2)
+        for j in range(gali.shape[1]):
+            values = np.where(gali[keep, j] > 0, gali[keep, j], np.nan)
+            colour = matplotlib.cm.plasma(j / max(gali.shape[1], 1))
+            label = f"GALI$_{{{j + 2}}}$" if gali.shape[1] <= 8 or j in (0, gali.shape[1] - 1) else None
+            bx.loglog(t[keep], values, color=colour, lw=1.0, label=label)
+        if sali is not None:
+            values = np.asarray(sali, float)[keep]
+            bx.loglog(t[keep], np.where(values > 0, values, np.nan), color="0.2", lw=1.0, ls=":", label="SALI")
+        if gali.shape[1] or sali is not None:
+            bx.set_ylabel("alignment index")
+            bx.legend(loc="lower left", fontsize=8, ncol=2)
+            bx.set_xlabel("time t [s]")
+        else:
+            bx.set_visible(False)  # k = 1: no index
+        for axis in (ax, bx):
+            log_ticks(axis.xaxis)
+        title = chain_title(chain)
+        wrapped_suptitle(fig, f"Lyapunov spectrum, k = {k}" + (f": {title}" if title else ""))
+    return fig
+
+
 def _start_label(meta):
     """How a spreading run started, from its metadata: the linear mode or the single-site kick."""
     parameters = meta.get("parameters", {})
