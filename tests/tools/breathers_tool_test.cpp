@@ -179,8 +179,8 @@ TEST(BreathersTool, BadInputExitsWithOneLineAndWritesNothing) {
       {"--config " + config + " --xi 0.5 --seed-file " + dir + "/missing.txt --start-khz 30", "--seed-file", 2},
       {"--config " + config + " --xi 0.5 --seed-file " + config + " --start-khz 30 --mode 3", "--seed-file", 2},
       // Newton cannot reach a residual below rounding: a numerical failure.
-      {"--config " + config + " --xi 0.5 --near " + std::to_string(optical_edge_khz()) + " --tolerance 1e-30",
-       "Newton", 3},
+      {"--config " + config + " --xi 0.5 --near " + std::to_string(optical_edge_khz()) + " --tolerance 1e-30", "Newton",
+       3},
   };
   for (const auto& c : cases) {
     const auto r = run_tool_in(dir, "breathers", c.args + " --output out");

@@ -62,8 +62,7 @@ TEST(UnitSlip, HertzTypedAsKilohertzIsWarnedForEveryFrequencyOption) {
   const std::string dir = scratch_folder("unit-slip-every-frequency");
   const std::string breathers = "--N 21 --max-points 1 --quiet ";
   for (const auto& [tool, args, named] :
-       {std::tuple<std::string, std::string, std::string>{"breathers", breathers + "--near 33810",
-                                                          "--near 33810"},
+       {std::tuple<std::string, std::string, std::string>{"breathers", breathers + "--near 33810", "--near 33810"},
         {"breathers", breathers + "--start-khz 20000", "--start-khz 20000"},
         {"breathers", breathers + "--mode 21 --target-khz 20000", "--target-khz 20000"},
         {"ipr-map", "--N 10 --xi 0.5 --q 0.5 --realizations 2 --near 15000 --count 2 --quiet", "--near 15000"},
