@@ -8,7 +8,7 @@
 
 int main() {
   granular::TransportCase c;
-  c.chain = {.disorder = granular::Disorder::anderson, .N = 501};
+  c.chain = {.source = granular::TwoTypeDraw{.disorder = granular::Disorder::anderson}, .N = 501};
   c.site = 0;  // the centre bead (counting from 1; 0: the centre)
   c.realizations = 4;
   c.dynamics.integration.duration = 2e-3;

@@ -26,7 +26,7 @@ int main(int argc, char** argv) {
   bool quiet = false;
   tool::ChainOptions beads;  // only its --types/--type-masses/--polydisperse
   tool::add_option(app, "--disorder", disorder, "A | RDM1 | RDM2 (h has no correlation: one type only)");
-  tool::add_option(app, "--q", config.chain.q, "probability in [0,1]");
+  tool::add_option(app, "--q", config.chain.draw().q, "probability in [0,1]");
   tool::add_bead_distribution_options(app, beads);
   tool::add_integer(app, "--N", config.chain.N, "beads per chain (>= 2)");
   tool::add_integer(app, "--realizations", config.realizations, "chains averaged");
@@ -39,7 +39,7 @@ int main(int argc, char** argv) {
 
   return tool::run(app, argc, argv, [&] {
     tool::Metadata meta("correlations", argc, argv);
-    config.chain.disorder = parse_disorder(disorder);
+    config.chain.draw().disorder = parse_disorder(disorder);
     beads.disorder = disorder;  // the rule of --types
     set_chain_kind(config, beads);
     // The default must fit short chains (N = 2 has only d = 0, 1); a value typed is checked as typed.

@@ -60,7 +60,7 @@ int main(int argc, char** argv) {
 
   return tool::run(app, argc, argv, [&] {
     tool::Metadata meta("ipr-map", argc, argv);
-    config.chain.disorder = parse_disorder(disorder);
+    config.chain.draw().disorder = parse_disorder(disorder);
     config.xi_values = parse_number_list(xi_text, "--xi", 0.01);
     config.q_values = parse_number_list(q_text, "--q", 0.1);
     if (config.chain.N > 100000000)

@@ -167,14 +167,41 @@ void bind_dynamics(py::module_& m) {
   m.attr("_paper_table") = GRANULAR_SOURCE_DIR "/data/paper_table1_gamma.csv";  // compare_paper=True
   table_class(m, "ModeKick", mode_kick_parameters());
   using R = ChainRecipe;
-  config_class(m, "ChainRecipe", "q xi R1 N F0 material seed quasi given_radii given_types", &R::q, &R::xi, &R::R1,
-               &R::N, &R::F0, &R::material, &R::seed, &R::quasi, &R::given_radii, &R::given_types)
-      .def_property("disorder", word_getter(&R::disorder),
-                    word_setter(&R::disorder, [](const std::string& name) { return disorder_of(name); }))
+  // The source (a sum type in C++) as granular/_model.py fills it: setting `quasi`, `given_radii` or
+  // `given_types` chooses that source; `disorder`, `q` and `xi` set the two-type draw's (ξ: given types' too).
+  const auto draw_field = [](double TwoTypeDraw::*field) {
+    return [field](R& r, double value) { r.draw().*field = value; };
+  };
+  config_class(m, "ChainRecipe", "R1 N F0 material seed", &R::R1, &R::N, &R::F0, &R::material, &R::seed)
+      .def_property(
+          "disorder", [](const R& r) { return to_string(r.draw().disorder); },
+          [](R& r, const std::string& name) { r.draw().disorder = disorder_of(name); })
+      .def_property(
+          "q", [](const R& r) { return r.draw().q; }, draw_field(&TwoTypeDraw::q))
+      .def_property(
+          "xi", [](const R& r) { return r.xi(); },
+          [](R& r, double xi) {
+            if (auto* given = r.as<GivenTypes>()) given->xi = xi;
+            else r.draw().xi = xi;
+          })
+      .def_property(
+          "quasi",
+          [](const R& r) { return r.as<Quasiperiodic>() ? std::optional(*r.as<Quasiperiodic>()) : std::nullopt; },
+          [](R& r, const std::optional<Quasiperiodic>& q) {
+            r.source = q ? ChainSource(*q) : ChainSource(TwoTypeDraw{});
+          })
+      .def_property(
+          "given_radii",
+          [](const R& r) { return r.as<GivenRadii>() ? std::optional(r.as<GivenRadii>()->radii) : std::nullopt; },
+          [](R& r, const std::vector<double>& radii) { r.source = GivenRadii{.radii = radii}; })
+      .def_property(
+          "given_types",
+          [](const R& r) { return r.as<GivenTypes>() ? std::optional(r.as<GivenTypes>()->types) : std::nullopt; },
+          [](R& r, const Configuration& types) { r.source = GivenTypes{.types = types, .xi = r.xi()}; })
       .def_property(
           "walls", [](const R& r) { return r.walls == WallShape::flat ? "flat" : "sphere"; },
           [](R& r, const std::string& word) { r.walls = parse_wall_shape(word); })
-      .def("_validate_quasi", [](const R& r) { validate(*r.quasi, r.F0); });
+      .def("_validate_quasi", [](const R& r) { validate(std::get<Quasiperiodic>(r.source), r.F0); });
   using C = TransportCase;                    // an attribute per parameter row, and what the keywords give beyond them
   static const ParameterTable<C> rows = [] {  // the run's, then granular.spreading's outputs
     ParameterTable<C> all = transport_parameters();

@@ -58,10 +58,12 @@ void bind_model(py::module_& m) {
   // A chain of bead types 1 and 2 filled in granular/_model.py (drawn, or given types), checked by
   // the named chains' rules (ChainParameters) before its walls are read.
   m.def("_typed_chain", [](ChainRecipe r, std::uint64_t realization, const std::string& walls, const std::string& name) {
-    const std::size_t n = r.given_types ? std::max<std::size_t>(r.given_types->size(), 2) : r.N;
-    validate(ChainParameters{.N = n, .q = r.q, .xi = r.xi, .F0 = r.F0, .R1 = r.R1, .material = r.material});
-    if (r.given_types && r.given_types->size() < 2)
-      bad_value("types", ": " + std::to_string(r.given_types->size()) + " beads; a chain needs at least 2");
+    const GivenTypes* given = r.as<GivenTypes>();
+    const std::size_t n = given ? std::max<std::size_t>(given->types.size(), 2) : r.N;
+    const double q = given ? 0.5 : r.draw().q;
+    validate(ChainParameters{.N = n, .q = q, .xi = r.xi(), .F0 = r.F0, .R1 = r.R1, .material = r.material});
+    if (given && given->types.size() < 2)
+      bad_value("types", ": " + std::to_string(given->types.size()) + " beads; a chain needs at least 2");
     r.walls = parse_wall_shape(walls);
     return py_chain(r, realization, name);
   });

@@ -19,7 +19,7 @@ namespace {
 
 ChainRecipe onsite_transfer_recipe(double lambda, std::size_t n) {
   ChainRecipe r{.N = n, .F0 = 10};
-  r.quasi = Quasiperiodic{.kind = Quasiperiodic::Kind::s1, .modulation = lambda, .phase = 0.4};
+  r.source = Quasiperiodic{.kind = Quasiperiodic::Kind::s1, .modulation = lambda, .phase = 0.4};
   return r;
 }
 
@@ -58,7 +58,7 @@ TEST(OnsiteTransferMatrix, AboveTheTransitionLambdaIsTheAubryAndreValue) {
   // measured ≤ 1.7e-4, bound 1e-3.
   for (double lambda : {0.55, 0.7, 0.9}) {
     const ChainRecipe r = onsite_transfer_recipe(lambda, 200000);
-    const double expected = std::log(lambda * r.quasi->k0 / 2);
+    const double expected = std::log(lambda * r.as<Quasiperiodic>()->k0 / 2);
     const auto f = onsite_transfer_frequencies(lambda);
     const TransferMatrixScan scan = transfer_matrix_scan(*r.beads(0), f, onsite_transfer_config());
     double worst = 0;

@@ -23,7 +23,7 @@ constexpr double pi = std::numbers::pi;
 
 ChainRecipe quasi(Kind kind, double lambda, double beta, std::size_t n, double phase = 0.4) {
   ChainRecipe r{.N = n, .F0 = 10};
-  r.quasi = Quasiperiodic{.kind = kind, .modulation = lambda, .ratio = beta, .phase = phase};
+  r.source = Quasiperiodic{.kind = kind, .modulation = lambda, .ratio = beta, .phase = phase};
   return r;
 }
 
@@ -31,7 +31,7 @@ std::vector<double> omega2(const Chain& c) { return spectrum(dynamical_matrix(c)
 
 TEST(QuasiperiodicSpectrum, ZeroModulationIsTheHomogeneousChain) {
   const std::size_t n = 200;
-  ChainRecipe h{.disorder = Disorder::homogeneous, .N = n, .F0 = 10};
+  ChainRecipe h{.source = TwoTypeDraw{.disorder = Disorder::homogeneous}, .N = n, .F0 = 10};
   const auto hom = omega2(h.chain(0));
   const auto s2 = omega2(quasi(Kind::s2, 0, golden_mean, n).chain(0));
   const Chain s1_chain = quasi(Kind::s1, 0, golden_mean, n).chain(0);
@@ -145,7 +145,7 @@ TEST(QuasiperiodicSpectrum, S1LocalizationLengthIsTheAubryAndreValue) {
   for (double lambda : {0.7, 0.9}) {
     ChainRecipe r = quasi(Kind::s1, lambda, golden_mean, 610);
     const Chain c = r.chain(0);
-    const double K = linear_stiffness(c.contact[1], c.precompression), k0 = r.quasi->k0 * K, m = c.mass[0];
+    const double K = linear_stiffness(c.contact[1], c.precompression), k0 = r.as<Quasiperiodic>()->k0 * K, m = c.mass[0];
     const auto w = omega2(c);
     for (std::size_t j : {50, 200, 300, 450}) {
       double u0 = 0, u1 = 1, log_growth = 0;
@@ -158,7 +158,7 @@ TEST(QuasiperiodicSpectrum, S1LocalizationLengthIsTheAubryAndreValue) {
         log_growth += std::log(size);
         u0 /= size, u1 /= size;
       }
-      EXPECT_NEAR(log_growth / steps, std::log(lambda * r.quasi->k0 / 2), 0.01) << lambda << " mode " << j;
+      EXPECT_NEAR(log_growth / steps, std::log(lambda * r.as<Quasiperiodic>()->k0 / 2), 0.01) << lambda << " mode " << j;
     }
   }
 }

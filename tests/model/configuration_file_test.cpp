@@ -69,9 +69,8 @@ TEST(ConfigurationFile, AnEditedFileIsRefusedWhereACaseNamesIt) {
     const std::string path = testing::scratch_path("bead-file-hash", radii ? "chain.radii" : "chain.types");
     write(path, radii ? "0.00476\n0.00238\n0.00476\n" : "1\n2\n1\n");
     ChainRecipe r;
-    r.source = path;
-    if (radii) r.given_radii = read_radii_file(path);
-    else r.given_types = read_configuration_file(path);
+    if (radii) r.source = GivenRadii{.radii = read_radii_file(path), .file = path};
+    else r.source = GivenTypes{.types = read_configuration_file(path), .file = path};
     nlohmann::json fields;
     describe_fields(r, fields);
     ASSERT_TRUE(fields.contains(name + "_hash")) << fields.dump();

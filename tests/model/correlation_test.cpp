@@ -47,12 +47,11 @@ TEST(Correlation, MassesOfTwoTypesGiveTheIndicatorsCoefficient) {
 // The study on k types and polydisperse radii against the infinite-chain formulas, and the
 // two-type distribution against the paper's kinds (same chains, same coefficient to rounding).
 TEST(Correlation, StudyOfBeadDistributions) {
-  CorrelationConfig paper{.chain = {.disorder = Disorder::rdm2, .q = 0.3, .N = 400, .seed = 3},
+  CorrelationConfig paper{.chain = {.source = TwoTypeDraw{.disorder = Disorder::rdm2, .q = 0.3}, .N = 400, .seed = 3},
                           .realizations = 50,
                           .max_distance = 5};
   CorrelationConfig two = paper;
-  two.chain.distribution =
-      BeadDistribution{.radii = {4.76e-3, 2.38e-3}, .probabilities = {0.3, 0.7}, .rule = Disorder::rdm2};
+  two.chain.source = BeadDistribution{.radii = {4.76e-3, 2.38e-3}, .probabilities = {0.3, 0.7}, .rule = Disorder::rdm2};
   const CorrelationResult a = correlation_study(paper), b = correlation_study(two);
   for (std::size_t d = 0; d <= 5; ++d) {
     EXPECT_NEAR(b.mean[d], a.mean[d], 1e-12) << d;
@@ -67,7 +66,7 @@ TEST(Correlation, StudyOfBeadDistributions) {
   BeadDistribution dimers = three;
   dimers.rule = Disorder::rdm1;
   for (const BeadDistribution& beads : {three, uniform, dimers}) {
-    CorrelationConfig c{.chain = {.distribution = beads, .N = 2000, .seed = 5}, .realizations = 200, .max_distance = 4};
+    CorrelationConfig c{.chain = {.source = beads, .N = 2000, .seed = 5}, .realizations = 200, .max_distance = 4};
     const CorrelationResult r = correlation_study(c, {.threads = 2});
     EXPECT_EQ(r.used, 200u);
     EXPECT_NEAR(r.mean[0], 1, 1e-14);

@@ -20,7 +20,7 @@ constexpr double pi = std::numbers::pi;
 
 ChainRecipe recipe(Quasiperiodic::Kind kind, double lambda, std::optional<double> phase = std::nullopt) {
   ChainRecipe r{.N = 50, .F0 = 10, .seed = 5};
-  r.quasi = Quasiperiodic{.kind = kind, .modulation = lambda, .phase = phase};
+  r.source = Quasiperiodic{.kind = kind, .modulation = lambda, .phase = phase};
   return r;
 }
 
@@ -37,7 +37,7 @@ TEST(Quasiperiodic, S2MassesFollowTheCosine) {
 
 TEST(Quasiperiodic, S1SpringsAreInUnitsOfTheBondStiffness) {
   ChainRecipe r = recipe(Quasiperiodic::Kind::s1, 0.5, 1.0);
-  r.quasi->k0 = 3;
+  r.as<Quasiperiodic>()->k0 = 3;
   const Chain c = r.chain(0);
   const double K = linear_stiffness(c.contact[1], c.precompression);
   ASSERT_EQ(c.onsite.size(), c.size());
@@ -48,7 +48,7 @@ TEST(Quasiperiodic, S1SpringsAreInUnitsOfTheBondStiffness) {
 
 TEST(Quasiperiodic, CylinderBondsTakeTheirAngles) {
   ChainRecipe r = recipe(Quasiperiodic::Kind::cylinders, 0.3, 0.2);
-  r.quasi->angle = 50;
+  r.as<Quasiperiodic>()->angle = 50;
   const Chain c = r.chain(0);
   ASSERT_EQ(c.bonds(), c.size() + 1);
   for (std::size_t k = 0; k < c.bonds(); ++k) {
@@ -60,16 +60,17 @@ TEST(Quasiperiodic, CylinderBondsTakeTheirAngles) {
 
 TEST(Quasiperiodic, RealizationsArePhasesDrawnFromTheSeed) {
   const ChainRecipe r = recipe(Quasiperiodic::Kind::s2, 0.5);
-  const double p0 = quasiperiodic_phase(*r.quasi, r.seed, 0), p1 = quasiperiodic_phase(*r.quasi, r.seed, 1);
+  const double p0 = quasiperiodic_phase(*r.as<Quasiperiodic>(), r.seed, 0),
+               p1 = quasiperiodic_phase(*r.as<Quasiperiodic>(), r.seed, 1);
   EXPECT_NE(p0, p1);
   for (double p : {p0, p1}) EXPECT_TRUE(p >= 0 && p < 2 * pi);
-  EXPECT_EQ(p0, quasiperiodic_phase(*r.quasi, r.seed, 0));  // a pure function of (seed, r)
+  EXPECT_EQ(p0, quasiperiodic_phase(*r.as<Quasiperiodic>(), r.seed, 0));  // a pure function of (seed, r)
   ChainRecipe given = r;
-  given.quasi->phase = p1;
+  given.as<Quasiperiodic>()->phase = p1;
   EXPECT_EQ(given.chain(0).mass, r.chain(1).mass);
   // The phase is uniform: the mean of cos φ over many realizations is near 0.
   double mean = 0;
-  for (std::uint64_t k = 0; k < 4000; ++k) mean += std::cos(quasiperiodic_phase(*r.quasi, 9, k)) / 4000;
+  for (std::uint64_t k = 0; k < 4000; ++k) mean += std::cos(quasiperiodic_phase(*r.as<Quasiperiodic>(), 9, k)) / 4000;
   EXPECT_LT(std::fabs(mean), 0.05);
 }
 
@@ -84,28 +85,25 @@ TEST(Quasiperiodic, BadInputNamesTheField) {
   };
   auto r = recipe(Quasiperiodic::Kind::s2, 1.0);
   EXPECT_EQ(field(r), "modulation");
-  r.quasi->modulation = 0.5;
+  r.as<Quasiperiodic>()->modulation = 0.5;
   EXPECT_EQ(field(r), "none");
-  r.quasi->ratio = 0;
+  r.as<Quasiperiodic>()->ratio = 0;
   EXPECT_EQ(field(r), "ratio");
-  r.quasi->ratio = -1;
+  r.as<Quasiperiodic>()->ratio = -1;
   EXPECT_EQ(field(r), "ratio");
   r = recipe(Quasiperiodic::Kind::cylinders, 0.5);
-  r.quasi->angle = 150;  // 150 × 1.5 > 180
+  r.as<Quasiperiodic>()->angle = 150;  // 150 × 1.5 > 180
   EXPECT_EQ(field(r), "modulation");
-  r.quasi->angle = 0;
+  r.as<Quasiperiodic>()->angle = 0;
   EXPECT_EQ(field(r), "angle");
   r = recipe(Quasiperiodic::Kind::s1, -1.2);
   EXPECT_EQ(field(r), "modulation");
-  r.quasi->modulation = 0.2;
-  r.quasi->k0 = 0;
+  r.as<Quasiperiodic>()->modulation = 0.2;
+  r.as<Quasiperiodic>()->k0 = 0;
   EXPECT_EQ(field(r), "k0");
-  r.quasi->k0 = 1;
+  r.as<Quasiperiodic>()->k0 = 1;
   r.F0 = 0;
   EXPECT_EQ(field(r), "F0");
-  r = recipe(Quasiperiodic::Kind::s2, 0.2);
-  r.given_radii = std::vector<double>{1e-3, 1e-3};
-  EXPECT_EQ(field(r), "quasi");
   EXPECT_THROW(parse_ratio("0/3"), InvalidInput);
   EXPECT_THROW(parse_ratio("x"), InvalidInput);
   EXPECT_THROW(parse_quasi_kind("s3"), InvalidInput);
@@ -145,22 +143,24 @@ TEST(Quasiperiodic, CylinderContactEllipseStaysSmallAgainstTheCylinders) {
               extent(0.45, 0).semi_axis_over_radius);
 
   auto r = recipe(Quasiperiodic::Kind::cylinders, 0.5);
-  EXPECT_EQ(check_cylinder_contacts(*r.quasi, paper_r1, r.F0, steel), "");  // 22.5°: 0.05 R
-  r.quasi->modulation = 0.9;                                                // 4.5°: warned, naming the modulation
+  EXPECT_EQ(check_cylinder_contacts(*r.as<Quasiperiodic>(), paper_r1, r.F0, steel), "");  // 22.5°: 0.05 R
+  r.as<Quasiperiodic>()->modulation = 0.9;  // 4.5°: warned, naming the modulation
   EXPECT_EQ(field(r), "none");
-  const std::string warning = check_cylinder_contacts(*r.quasi, paper_r1, r.F0, steel, "--angle", "--modulation");
+  const std::string warning =
+      check_cylinder_contacts(*r.as<Quasiperiodic>(), paper_r1, r.F0, steel, "--angle", "--modulation");
   EXPECT_EQ(warning.rfind("--modulation 0.9: at 4.5 degrees", 0), 0u) << warning;
-  r.quasi->modulation = 0.99;  // 0.45°: refused, naming the modulation
+  r.as<Quasiperiodic>()->modulation = 0.99;  // 0.45°: refused, naming the modulation
   EXPECT_EQ(field(r), "modulation");
   EXPECT_THROW(r.chain(0), InvalidInput);
-  r.quasi->modulation = 0;
-  r.quasi->angle = 0.5;  // the angle alone
+  r.as<Quasiperiodic>()->modulation = 0;
+  r.as<Quasiperiodic>()->angle = 0.5;  // the angle alone
   EXPECT_EQ(field(r), "angle");
-  r.quasi->angle = 179.5;  // as near parallel the other way
+  r.as<Quasiperiodic>()->angle = 179.5;  // as near parallel the other way
   EXPECT_EQ(field(r), "angle");
-  r.quasi->angle = 5;  // warned, naming the angle
+  r.as<Quasiperiodic>()->angle = 5;  // warned, naming the angle
   EXPECT_EQ(field(r), "none");
-  EXPECT_EQ(check_cylinder_contacts(*r.quasi, paper_r1, r.F0, steel).rfind("angle 5: at 5 degrees", 0), 0u);
+  EXPECT_EQ(check_cylinder_contacts(*r.as<Quasiperiodic>(), paper_r1, r.F0, steel).rfind("angle 5: at 5 degrees", 0),
+            0u);
   // Quasiperiodic chains of spheres have no such limit.
   EXPECT_EQ(check_cylinder_contacts({.kind = Quasiperiodic::Kind::s2, .modulation = 0.99}, paper_r1, 10, steel), "");
 }
@@ -169,13 +169,13 @@ TEST(Quasiperiodic, DescriptionRoundTrips) {
   for (auto kind : {Quasiperiodic::Kind::s1, Quasiperiodic::Kind::s2, Quasiperiodic::Kind::cylinders})
     for (std::optional<double> phase : {std::optional<double>{}, std::optional<double>{0.7}}) {
       ChainRecipe r = recipe(kind, 0.35, phase);
-      r.quasi->ratio = 0.4;
-      r.quasi->angle = 60;
-      r.quasi->k0 = 2.5;
+      r.as<Quasiperiodic>()->ratio = 0.4;
+      r.as<Quasiperiodic>()->angle = 60;
+      r.as<Quasiperiodic>()->k0 = 2.5;
       nlohmann::json f;
       describe_fields(r, f);
       const ChainRecipe back = parse_recipe_fields(nlohmann::json::parse(f.dump()));
-      ASSERT_TRUE(back.quasi);
+      ASSERT_TRUE(back.as<Quasiperiodic>());
       EXPECT_EQ(back.chain(3).mass, r.chain(3).mass);
       EXPECT_EQ(back.chain(3).contact, r.chain(3).contact);
       EXPECT_EQ(back.chain(3).onsite, r.chain(3).onsite);
@@ -189,7 +189,7 @@ TEST(Quasiperiodic, LocalChainsBoundEveryRealization) {
   for (auto kind : {Quasiperiodic::Kind::s2, Quasiperiodic::Kind::cylinders}) {
     const ChainRecipe r = recipe(kind, 0.6);
     double lightest = INFINITY, stiffest = 0;
-    for (const Chain& c : quasiperiodic_local_chains(*r.quasi, r.R1, r.F0, r.material)) {
+    for (const Chain& c : quasiperiodic_local_chains(*r.as<Quasiperiodic>(), r.R1, r.F0, r.material)) {
       for (double m : c.mass) lightest = std::fmin(lightest, m);
       for (double a : c.contact) stiffest = std::fmax(stiffest, a);
     }

@@ -13,7 +13,7 @@ namespace {
 
 ChainRecipe anderson(std::size_t n) {
   ChainRecipe r;
-  r.N = n, r.q = 0.3, r.xi = 0.6, r.seed = 7;
+  r.N = n, r.draw().q = 0.3, r.draw().xi = 0.6, r.seed = 7;
   return r;
 }
 

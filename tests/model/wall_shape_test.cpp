@@ -15,7 +15,7 @@ namespace granular {
 namespace {
 
 ChainRecipe homogeneous_recipe(std::size_t n, WallShape walls) {
-  return {.disorder = Disorder::homogeneous, .N = n, .F0 = 10, .walls = walls};
+  return {.source = TwoTypeDraw{.disorder = Disorder::homogeneous}, .N = n, .F0 = 10, .walls = walls};
 }
 
 // The textbook fixed-end lattice: N equal masses m, N+1 equal springs B, both ends fixed,
@@ -55,10 +55,13 @@ TEST(WallShape, FlatWallsShiftTheLowestModeOfTheLattice) {
 
 TEST(WallShape, EveryRecipeKindTakesSphereWallsFromItsEndBeads) {
   ChainRecipe types = homogeneous_recipe(6, WallShape::sphere);
-  types.given_types = Configuration{2, 1, 1, 2, 1, 1};
+  types.source = GivenTypes{.types = {2, 1, 1, 2, 1, 1}};
   ChainRecipe radii = homogeneous_recipe(3, WallShape::sphere);
-  radii.given_radii = std::vector<double>{3e-3, 4e-3, 5e-3};
-  ChainRecipe drawn{.disorder = Disorder::anderson, .q = 0.5, .N = 40, .walls = WallShape::sphere, .seed = 4};
+  radii.source = GivenRadii{.radii = {3e-3, 4e-3, 5e-3}};
+  ChainRecipe drawn{.source = TwoTypeDraw{.disorder = Disorder::anderson, .q = 0.5},
+                    .N = 40,
+                    .walls = WallShape::sphere,
+                    .seed = 4};
   for (const ChainRecipe* r : {&types, &radii, &drawn}) {
     const Chain c = r->chain(2);
     const std::size_t n = c.size();
@@ -73,7 +76,10 @@ TEST(WallShape, EveryRecipeKindTakesSphereWallsFromItsEndBeads) {
 }
 
 TEST(WallShape, DescriptionsRoundTripAndBadWordsNameWalls) {
-  ChainRecipe r{.disorder = Disorder::rdm2, .q = 0.3, .N = 50, .walls = WallShape::sphere, .seed = 9};
+  ChainRecipe r{.source = TwoTypeDraw{.disorder = Disorder::rdm2, .q = 0.3},
+                .N = 50,
+                .walls = WallShape::sphere,
+                .seed = 9};
   nlohmann::json fields;
   describe_fields(r, fields);
   EXPECT_EQ(fields["walls"], walls_description(WallShape::sphere));

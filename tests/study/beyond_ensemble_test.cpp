@@ -16,7 +16,7 @@ namespace {
 
 TransportCase lyapunov_case() {
   TransportCase c;
-  c.chain.disorder = Disorder::anderson;
+  c.chain.draw().disorder = Disorder::anderson;
   c.chain.N = 201;
   c.site = 101;
   c.chain.F0 = 0.1;
@@ -42,10 +42,10 @@ TEST(BeyondEnsemble, MeanLyapunovExponentIsBitIdenticalForOneAndTwoThreads) {
   // The ensemble's X1 is the mean of the single runs'.
   double sum = 0;
   for (std::uint64_t r = 0; r < c.realizations; ++r) {
-    const Chain chain =
-        make_chain(radii_of(realization_configuration(c.chain.disorder, c.chain.q, c.chain.N, c.chain.seed, r),
-                            c.chain.R1, c.chain.xi),
-                   c.chain.F0);
+    const Chain chain = make_chain(radii_of(realization_configuration(c.chain.draw().disorder, c.chain.draw().q,
+                                                                      c.chain.N, c.chain.seed, r),
+                                            c.chain.R1, c.chain.xi()),
+                                   c.chain.F0);
     sum += run_spreading(chain, kick(c, chain).initial, spreading_config(c)).mle.back();
   }
   EXPECT_NEAR(one.mle.mean.back(), sum / 4, 1e-12 * std::abs(sum));

@@ -36,7 +36,7 @@ BreatherBranchConfig impurity_config() {
   std::vector<double> radii(21, r1);
   radii[10] = 0.5 * r1;
   BreatherBranchConfig c;
-  c.chain.given_radii = radii;
+  c.chain.source = GivenRadii{.radii = radii};
   c.chain.F0 = 10;
   c.mode = 21;
   c.max_points = 1;
@@ -62,8 +62,7 @@ long lowest_optical_mode(const Chain& chain, const BandEdges& edges) {
 // from the optical band's lowest mode.
 BreatherBranchConfig diatomic_gap_config(int centre_type, const BandEdges& edges) {
   BreatherBranchConfig c;
-  c.chain.given_types = alternating(41, centre_type);
-  c.chain.xi = 0.5;
+  c.chain.source = GivenTypes{.types = alternating(41, centre_type), .xi = 0.5};
   c.mode = lowest_optical_mode(c.chain.chain(0), edges);
   return c;
 }
@@ -131,7 +130,7 @@ TEST(BreatherBranch, LinearLimitIsTheLinearModeAtItsFrequency) { expect_linear_l
 // whose on-site springs enter the shooting map, its tangent map and the linear seed alike.
 TEST(BreatherBranch, LinearLimitOnAnOnsiteSpringChain) {
   BreatherBranchConfig c;
-  c.chain.quasi = Quasiperiodic{.kind = Quasiperiodic::Kind::s1, .modulation = 0.8, .phase = 0.4};
+  c.chain.source = Quasiperiodic{.kind = Quasiperiodic::Kind::s1, .modulation = 0.8, .phase = 0.4};
   c.chain.N = 101;
   c.chain.F0 = 10;
   c.mode = 101;
@@ -281,7 +280,7 @@ TEST(BreatherBranch, StableBreatherStaysPeriodicUnderDirectIntegration) {
 // slightly above 1 at the end of the branch) is not asked to.
 TEST(BreatherBranch, DisorderedChainBreathersFromAnImpurityModeStayPeriodic) {
   BreatherBranchConfig c;
-  c.chain.disorder = Disorder::rdm1;
+  c.chain.draw().disorder = Disorder::rdm1;
   c.chain.N = 100;
   c.mode = 100;
   c.max_points = 5;
@@ -488,7 +487,7 @@ TEST(BreatherBranch, ToleranceAndStabilityToleranceMustBePositive) {
 TEST(BreatherBranch, BadInputIsRefusedBeforeAnyWork) {
   const BandEdges edges = band_edges(steel, r1, 0.5, 10);
   BreatherBranchConfig c;
-  c.chain.given_types = alternating(41, 1);
+  c.chain.source = GivenTypes{.types = alternating(41, 1)};
   c.start_khz = 0.5 * edges.fb1 / 1e3;  // inside the acoustic band, no seed
   try {
     continue_breather(c);

@@ -29,7 +29,7 @@ constexpr std::size_t cradle_beads = 21, cradle_centre = 10;
 
 BreatherBranchConfig cradle_config(double offset) {
   BreatherBranchConfig c;
-  c.chain.quasi =
+  c.chain.source =
       Quasiperiodic{.kind = Quasiperiodic::Kind::s1, .modulation = 0, .phase = 0, .k0_n_per_m = cradle_spring};
   c.chain.N = cradle_beads;
   c.chain.F0 = 0;
@@ -199,7 +199,7 @@ TEST(BreatherCradle, BranchEndsExactlyAtTargetGoingUp) {
   const Chain chain = c.chain.chain(0);
   const double onsite_khz =
       std::sqrt(chain.onsite[cradle_centre] * chain.inverse_mass[cradle_centre]) / (2e3 * std::numbers::pi);
-  c.chain.quasi->k0_n_per_m = cradle_spring * std::pow(target / 1.004 / onsite_khz, 2);
+  c.chain.as<Quasiperiodic>()->k0_n_per_m = cradle_spring * std::pow(target / 1.004 / onsite_khz, 2);
   c.target_khz = target;
   c.max_points = 20;
   const auto branch = continue_breather(c);

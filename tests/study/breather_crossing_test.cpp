@@ -23,7 +23,7 @@ namespace {
 TEST(BreatherCrossing, ModesLocalizedElsewhereArePassedAndTheStopNamesTheOverlappingOne) {
   BreatherBranchConfig c;
   c.chain.N = 60;
-  c.chain.quasi = Quasiperiodic{.kind = Quasiperiodic::Kind::s1, .modulation = 0.8, .phase = 0.4};
+  c.chain.source = Quasiperiodic{.kind = Quasiperiodic::Kind::s1, .modulation = 0.8, .phase = 0.4};
   c.mode = 60;
   c.max_points = 12;
   const BreatherBranch branch = continue_breather(c);
@@ -50,7 +50,7 @@ TEST(BreatherCrossing, OverlapIsOneUnderTheModeAndSmallFarFromIt) {
   // A 60-bead S1 chain's top mode against a profile on its own peak bead and one 30 beads away.
   ChainRecipe r;
   r.N = 60;
-  r.quasi = Quasiperiodic{.kind = Quasiperiodic::Kind::s1, .modulation = 0.8, .phase = 0.4};
+  r.source = Quasiperiodic{.kind = Quasiperiodic::Kind::s1, .modulation = 0.8, .phase = 0.4};
   const DynamicalMatrix d = dynamical_matrix(r.chain(0));
   const Spectrum modes = spectrum(d, all_modes(), {.vectors = true});
   std::size_t peak = 0;
@@ -70,9 +70,9 @@ TEST(BreatherCrossing, OverlapIsOneUnderTheModeAndSmallFarFromIt) {
 // optical band: the first mode met from the gap is the band's edge.
 TEST(BreatherCrossing, TheEdgeOfABandEnteredFromTheGapIsCalledABandEdge) {
   BreatherBranchConfig c;
-  c.chain.given_types = Configuration(41);
-  for (std::size_t i = 0; i < 41; ++i) (*c.chain.given_types)[i] = static_cast<std::uint8_t>(i % 2 == 0 ? 1 : 2);
-  c.chain.xi = 0.5;
+  GivenTypes diatomic{.types = Configuration(41), .xi = 0.5};
+  for (std::size_t i = 0; i < 41; ++i) diatomic.types[i] = static_cast<std::uint8_t>(i % 2 == 0 ? 1 : 2);
+  c.chain.source = diatomic;
   c.mode = 22;  // the optical band's lowest mode
   c.continuation = Continuation::arclength;
   c.through_opening = true;
@@ -93,7 +93,7 @@ TEST(BreatherCrossing, ArclengthStopsAtAModeWhereTheCorrectorLands) {
   std::vector<double> radii(21, 4.76e-3);
   radii[10] = 0.95 * 4.76e-3;
   BreatherBranchConfig c;
-  c.chain.given_radii = radii;
+  c.chain.source = GivenRadii{.radii = radii};
   c.chain.F0 = 10;
   c.mode = 21;
   c.continuation = Continuation::arclength;

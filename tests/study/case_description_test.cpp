@@ -19,7 +19,11 @@ namespace {
 
 TransportCase base() {
   TransportCase c;
-  c.chain = {.disorder = Disorder::rdm2, .q = 0.3, .xi = 0.6, .R1 = 5e-3, .N = 301, .F0 = 0.5, .seed = 9};
+  c.chain = {.source = TwoTypeDraw{.disorder = Disorder::rdm2, .q = 0.3, .xi = 0.6},
+             .R1 = 5e-3,
+             .N = 301,
+             .F0 = 0.5,
+             .seed = 9};
   c.site = 121;
   c.realizations = 7;
   c.profile_realizations = 3;
@@ -38,14 +42,14 @@ std::vector<std::pair<std::string, TransportCase>> families(const std::string& d
     out.emplace_back(name, c);
   };
   add("types", [](TransportCase& c) {
-    c.chain.distribution =
+    c.chain.source =
         BeadDistribution{.radii = {4.76e-3, 3e-3, 2e-3}, .probabilities = {0.5, 0.3, 0.2}, .rule = Disorder::rdm1};
   });
   add("uniform", [](TransportCase& c) {
-    c.chain.distribution = BeadDistribution{.kind = BeadDistribution::Kind::uniform, .low = 2e-3, .high = 5.1e-3};
+    c.chain.source = BeadDistribution{.kind = BeadDistribution::Kind::uniform, .low = 2e-3, .high = 5.1e-3};
   });
   add("normal", [](TransportCase& c) {
-    c.chain.distribution =
+    c.chain.source =
         BeadDistribution{.kind = BeadDistribution::Kind::normal, .mean = 4e-3, .sd = 3e-4, .minimum = 3.3e-3};
   });
   {
@@ -53,17 +57,15 @@ std::vector<std::pair<std::string, TransportCase>> families(const std::string& d
     std::ofstream(dir + "/chain.radii") << "# radii\n4.76e-3\n3.1e-3\n0.0047\n";
   }
   add("types file", [&](TransportCase& c) {
-    c.chain.source = dir + "/chain.types";
-    c.chain.given_types = Configuration{1, 2, 2, 1, 1, 2};
+    c.chain.source = GivenTypes{.types = {1, 2, 2, 1, 1, 2}, .file = dir + "/chain.types"};
     c.site = 3;
   });
   add("radii file", [&](TransportCase& c) {
-    c.chain.source = dir + "/chain.radii";
-    c.chain.given_radii = std::vector<double>{4.76e-3, 3.1e-3, 0.0047};
+    c.chain.source = GivenRadii{.radii = {4.76e-3, 3.1e-3, 0.0047}, .file = dir + "/chain.radii"};
     c.site = 2;
   });
   add("centred", [](TransportCase& c) {
-    c.chain.centred = true;
+    c.chain.draw().centred = true;
     c.site = 151;
   });
   add("mode", [](TransportCase& c) {

@@ -20,7 +20,7 @@ namespace {
 
 TransportCase case_file_example() {
   TransportCase c;
-  c.chain = {.disorder = Disorder::rdm1, .q = 0.3, .xi = 0.6, .N = 101, .F0 = 0.5, .seed = 9};
+  c.chain = {.source = TwoTypeDraw{.disorder = Disorder::rdm1, .q = 0.3, .xi = 0.6}, .N = 101, .F0 = 0.5, .seed = 9};
   c.realizations = 40;
   c.profile_realizations = 40;
   c.dynamics.integration.duration = 2e-3;

@@ -75,7 +75,7 @@ TEST(CaseRules, AutoDecidesOnTheKTypesDrawn) {
   TransportCase paper = paper_case(alpha);
   EXPECT_TRUE(bonds_stay_closed(paper));
   TransportCase types = paper_case(alpha);
-  types.chain.distribution = BeadDistribution{.radii = radii, .probabilities = {0.5, 0.5}};
+  types.chain.source = BeadDistribution{.radii = radii, .probabilities = {0.5, 0.5}};
   EXPECT_FALSE(bonds_stay_closed(types));
   const nlohmann::json rule = settle_automatically(types);
   EXPECT_FALSE(rule["integrator_choice"]["bonds_stay_closed"].get<bool>()) << rule.dump();
@@ -88,8 +88,9 @@ TEST(CaseRules, AutoDecidesOnARadiiFilesChain) {
   const double alpha = alpha_between(big);
   ASSERT_GT(alpha, 0);
   TransportCase file = paper_case(alpha);  // a given chain: big beads at the wall, kicked there
-  file.chain.given_radii = std::vector<double>(101, 4.76e-3);
-  for (std::size_t i = 0; i < 11; ++i) (*file.chain.given_radii)[i] = 3 * 4.76e-3;
+  GivenRadii radii{.radii = std::vector<double>(101, 4.76e-3)};
+  for (std::size_t i = 0; i < 11; ++i) radii.radii[i] = 3 * 4.76e-3;
+  file.chain.source = radii;
   file.site = 1;
   const Chain chain = file.chain.chain(0);
   const ForceLaw law = make_force_law(ForceLawKind::hertz, chain);
@@ -115,7 +116,7 @@ TEST(CaseRules, AutoTakesTheRealModeOfAModeKick) {
   TransportCase given = c;  // before settling, which fixes c's step
   EXPECT_NO_THROW(settle_automatically(c));
   // On a given chain, with the amplitude α: the mode's own energy.
-  given.chain.given_radii = paper_case(1e-7).chain.radii(0);
+  given.chain.source = GivenRadii{.radii = paper_case(1e-7).chain.radii(0)};
   given.mode = {.mode = 2221};
   given.alpha = 1e-8;
   const Chain chain = given.chain.chain(0);

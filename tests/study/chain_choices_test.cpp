@@ -31,17 +31,21 @@ TEST(ChainChoices, GiveTheRecipeSpelledFieldByField) {
   std::vector<std::string> warnings;
   const ChainRecipe r = chain_recipe(o, warnings);
   EXPECT_TRUE(warnings.empty());
-  EXPECT_EQ(r.disorder, Disorder::rdm2);
-  EXPECT_EQ(r.q, 0.8);
-  EXPECT_EQ(r.xi, 0.6);
+  EXPECT_EQ(r.draw().disorder, Disorder::rdm2);
+  EXPECT_EQ(r.draw().q, 0.8);
+  EXPECT_EQ(r.xi(), 0.6);
   EXPECT_EQ(r.F0, 0.5);
   EXPECT_EQ(r.R1, 3e-3);
   EXPECT_EQ(r.N, 301u);
   EXPECT_EQ(r.seed, 7u);
   EXPECT_EQ(r.walls, WallShape::sphere);
-  EXPECT_FALSE(r.centred);
-  EXPECT_FALSE(r.distribution || r.quasi || r.given_types || r.given_radii);
-  ChainRecipe spelled{.disorder = Disorder::rdm2, .q = 0.8, .xi = 0.6, .R1 = 3e-3, .N = 301, .F0 = 0.5, .seed = 7};
+  EXPECT_FALSE(r.draw().centred);
+  EXPECT_FALSE(r.as<BeadDistribution>() || r.as<Quasiperiodic>() || r.as<GivenTypes>() || r.as<GivenRadii>());
+  ChainRecipe spelled{.source = TwoTypeDraw{.disorder = Disorder::rdm2, .q = 0.8, .xi = 0.6},
+                      .R1 = 3e-3,
+                      .N = 301,
+                      .F0 = 0.5,
+                      .seed = 7};
   spelled.walls = WallShape::sphere;
   EXPECT_EQ(r.chain(3).radius, spelled.chain(3).radius);
   o.realization = 3;
@@ -67,7 +71,7 @@ TEST(ChainChoices, ReadTheBeadDistributionsAndTheQuasiperiodicChain) {
   EXPECT_DOUBLE_EQ(q->ratio, 1.0 / 3);
   EXPECT_EQ(q->modulation, 0.2);
   std::vector<std::string> warnings;
-  EXPECT_TRUE(chain_recipe(o, warnings).quasi);
+  EXPECT_TRUE(chain_recipe(o, warnings).as<Quasiperiodic>());
 }
 
 TEST(ChainChoices, ErrorsNameTheChoice) {
@@ -109,9 +113,9 @@ TEST(ChainChoices, ReadARadiiFileWithItsWarnings) {
   o.radii = path;
   std::vector<std::string> warnings;
   const ChainRecipe r = chain_recipe(o, warnings);
-  ASSERT_TRUE(r.given_radii);
-  EXPECT_EQ(*r.given_radii, (std::vector<double>{4e-3, 4.76, 3e-3}));
-  EXPECT_EQ(r.source, path);
+  ASSERT_TRUE(r.as<GivenRadii>());
+  EXPECT_EQ(r.as<GivenRadii>()->radii, (std::vector<double>{4e-3, 4.76, 3e-3}));
+  EXPECT_EQ(r.as<GivenRadii>()->file, path);
   ASSERT_EQ(warnings.size(), 1u);
   EXPECT_NE(warnings[0].find(path + ":3"), std::string::npos) << warnings[0];
 }

@@ -18,7 +18,7 @@ namespace {
 
 TransportCase long_case(Disorder d, double f0, Kick kick, double duration) {
   TransportCase c;
-  c.chain.disorder = d;
+  c.chain.draw().disorder = d;
   c.chain.F0 = f0;
   c.kick = kick;
   c.dynamics.integration.duration = duration;
@@ -32,7 +32,7 @@ TransportCase sized(TransportCase c, double factor = 1) {
   const ChainLength length = automatic_chain_length(c);
   c.chain.N = 2 * static_cast<std::size_t>(std::ceil(factor * static_cast<double>(length.n - 1) / 2)) + 1;
   c.site = 0;  // the centre
-  c.chain.centred = true;
+  c.chain.draw().centred = true;
   validate(c);
   return c;
 }
@@ -101,7 +101,7 @@ TEST(ChainLengthRule, OneAndAHalfTimesTheLengthGivesTheSameSpread) {
       // The check can fail: drawn from the left wall, the two lengths put different beads
       // around the kick, and m̃2 parts.
       TransportCase plain_a = a, plain_b = b;
-      plain_a.chain.centred = plain_b.chain.centred = false;
+      plain_a.chain.draw().centred = plain_b.chain.draw().centred = false;
       EXPECT_GT(std::fabs(run(plain_a, 0).m2.back() / run(plain_b, 0).m2.back() - 1), 1e-6) << f0 << to_string(d);
     }
 }
@@ -122,7 +122,7 @@ TEST(ChainLengthRule, SizingForLongTimesKicksTheCentreOfACentredChain) {
   EXPECT_EQ(c.chain.N, expected.n);
   EXPECT_EQ(c.chain.N % 2, 1u);
   EXPECT_EQ(kicked_bead(c), (c.chain.N - 1) / 2);
-  EXPECT_TRUE(c.chain.centred);
+  EXPECT_TRUE(c.chain.draw().centred);
   EXPECT_NO_THROW(validate(c));
 }
 

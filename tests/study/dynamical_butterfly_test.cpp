@@ -16,7 +16,7 @@ namespace {
 DynamicalButterflyConfig dynbfly_config(Quasiperiodic::Kind kind, double modulation, std::size_t n) {
   DynamicalButterflyConfig c;
   c.chain.N = n;
-  c.chain.quasi = Quasiperiodic{.kind = kind, .modulation = modulation, .phase = 0.4};
+  c.chain.source = Quasiperiodic{.kind = kind, .modulation = modulation, .phase = 0.4};
   c.integration.duration = 2e-2;  // resolution 50 Hz, far below the level spacings of 12 beads
   c.spectrum_samples = 4001;      // Nyquist 100 kHz
   return c;
@@ -29,7 +29,7 @@ DynamicalButterflyConfig dynbfly_config(Quasiperiodic::Kind kind, double modulat
 // are the modes (and, far below 1e-6, the Hertz law's harmonics).
 void dynbfly_expect_peaks_on_modes(const DynamicalButterflyConfig& c, const DynamicalButterflyColumn& col) {
   ChainRecipe recipe = c.chain;
-  recipe.quasi->ratio = col.ratio;
+  recipe.as<Quasiperiodic>()->ratio = col.ratio;
   const Spectrum s = spectrum(dynamical_matrix(recipe.chain(c.realization)));
   const double resolution_khz = 1 / c.integration.duration / 1e3;
   const std::vector<double>& f = col.freq_khz;
@@ -107,7 +107,7 @@ TEST(DynamicalButterfly, BadInputsAreRefusedByName) {
   EXPECT_EQ(dynbfly_refused(c), "ratios");
   c = good, c.ratios.clear();
   EXPECT_EQ(dynbfly_refused(c), "ratios");
-  c = good, c.chain.quasi.reset();
+  c = good, c.chain.source = TwoTypeDraw{};
   EXPECT_EQ(dynbfly_refused(c), "quasi");
   c = good, c.amplitude = 0;
   EXPECT_EQ(dynbfly_refused(c), "amplitude");
@@ -123,7 +123,7 @@ TEST(DynamicalButterfly, BadInputsAreRefusedByName) {
   EXPECT_EQ(dynbfly_refused(c), "F0");
   c = good, c.integration.duration = -1;
   EXPECT_EQ(dynbfly_refused(c), "duration");
-  c = good, c.chain.quasi->modulation = 1.5;
+  c = good, c.chain.as<Quasiperiodic>()->modulation = 1.5;
   EXPECT_EQ(dynbfly_refused(c), "modulation");
 }
 

@@ -84,7 +84,7 @@ TEST(PaperComparison, ZScoresByHand) {
   ExponentCell cell;
   cell.definition.kick = Kick::velocity;
   cell.definition.chain.F0 = 0;
-  cell.definition.chain.disorder = Disorder::anderson;
+  cell.definition.chain.draw().disorder = Disorder::anderson;
   TransportExponents e;
   e.gamma_site.fit = {1.8, 0.01, {}};
   e.gamma_site.verdict.power_law = true;
@@ -106,7 +106,7 @@ TEST(PaperComparison, ZScoresByHand) {
   EXPECT_NEAR(rows[0].centroid.z, 0.0, 1e-12);
   // A homogeneous cell: no ± anywhere, only the paper's rounding: 2.0003 vs 2.000 is z = 0.0003/p ≈ 1.04.
   ExponentCell h = cell;
-  h.definition.chain.disorder = Disorder::homogeneous;
+  h.definition.chain.draw().disorder = Disorder::homogeneous;
   h.summary.exponents->gamma_site = ExponentReport{};
   h.summary.exponents->gamma_site.fit = {2.0003, 0.0, {}};
   h.summary.exponents->gamma_site.verdict.power_law = true;

@@ -36,8 +36,7 @@ GapBreather gap_breather(int centre_type, bool most_unstable) {
   Configuration types(101);
   for (std::size_t i = 0; i < types.size(); ++i)
     types[i] = static_cast<std::uint8_t>(i % 2 == 0 ? centre_type : 3 - centre_type);
-  c.chain.given_types = types;
-  c.chain.xi = 0.5;
+  c.chain.source = GivenTypes{.types = types, .xi = 0.5};
   const Chain chain = c.chain.chain(0);
   const Spectrum s = spectrum(dynamical_matrix(chain));
   long k = 0;

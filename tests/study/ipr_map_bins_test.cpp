@@ -18,7 +18,7 @@ namespace {
 IprMapConfig bins_config(Disorder disorder, std::vector<double> q, std::vector<double> xi, std::size_t N,
                          std::size_t realizations) {
   IprMapConfig c;
-  c.chain.disorder = disorder;
+  c.chain.draw().disorder = disorder;
   c.q_values = std::move(q);
   c.xi_values = std::move(xi);
   c.chain.N = N;

@@ -13,7 +13,7 @@ namespace {
 
 IprMapConfig small_config() {
   IprMapConfig c;
-  c.chain.disorder = Disorder::rdm1;
+  c.chain.draw().disorder = Disorder::rdm1;
   c.q_values = {0.5};
   c.xi_values = {0.5, 0.8};
   c.chain.N = 400;

@@ -35,8 +35,7 @@ BreatherBranchConfig diatomic_config(std::size_t n, int centre_type) {
   const std::size_t centre = n / 2;
   for (std::size_t i = 0; i < n; ++i)
     types[i] = static_cast<std::uint8_t>((i + centre) % 2 == 0 ? centre_type : 3 - centre_type);
-  c.chain.given_types = types;
-  c.chain.xi = 0.5;
+  c.chain.source = GivenTypes{.types = types, .xi = 0.5};
   const Spectrum s = spectrum(dynamical_matrix(c.chain.chain(0)));
   long k = 0;
   while (s.freq_khz[static_cast<std::size_t>(k)] < (edges.fb1 + edges.fb2) / 2e3) ++k;

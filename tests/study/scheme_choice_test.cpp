@@ -15,7 +15,7 @@ namespace {
 
 TransportCase homogeneous(double f0, double alpha) {
   TransportCase c;
-  c.chain.disorder = Disorder::homogeneous;
+  c.chain.draw().disorder = Disorder::homogeneous;
   c.chain.F0 = f0;
   c.alpha = alpha;
   c.chain.N = 3;

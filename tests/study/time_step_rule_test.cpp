@@ -110,11 +110,11 @@ TEST(TimeStepRule, ThePapersCasesKeepOneMicrosecondSmallXiDoesNot) {
   const ExponentTableConfig paper;  // h, A, RDM1, RDM2 × F0 10 … 0 × both kicks, ξ = q = 0.5
   for (const TransportCase& c : exponent_cases(paper)) {
     const TimeStepLimit limit = time_step_limit(c);
-    EXPECT_EQ(default_time_step(limit), 1e-6) << to_string(c.chain.disorder) << " F0 " << c.chain.F0;
+    EXPECT_EQ(default_time_step(limit), 1e-6) << to_string(c.chain.draw().disorder) << " F0 " << c.chain.F0;
     EXPECT_GT(limit.max_time_step, default_step_margin * 1e-6);
   }
   TransportCase small;
-  small.chain.xi = 0.05;
+  small.chain.draw().xi = 0.05;
   const TimeStepLimit limit = time_step_limit(small);
   EXPECT_LT(limit.max_time_step, 1e-6);
   const double tau = default_time_step(limit), bound = limit.max_time_step / default_step_margin;
@@ -131,18 +131,18 @@ TEST(TimeStepRule, ThePapersCasesKeepOneMicrosecondSmallXiDoesNot) {
 TEST(TimeStepRule, BeadDistributionsBoundTheirOwnRadii) {
   for (Kick kick : {Kick::displacement, Kick::velocity}) {
     TransportCase paper;
-    paper.chain.q = 0.3;
+    paper.chain.draw().q = 0.3;
     paper.kick = kick;
     TransportCase two = paper;
-    two.chain.distribution = BeadDistribution{.radii = {4.76e-3, 2.38e-3}, .probabilities = {0.3, 0.7}};
+    two.chain.source = BeadDistribution{.radii = {4.76e-3, 2.38e-3}, .probabilities = {0.3, 0.7}};
     EXPECT_EQ(time_step_limit(two).omega_max, time_step_limit(paper).omega_max);
     TransportCase three = two;
-    three.chain.distribution = BeadDistribution{.radii = {4.76e-3, 2.38e-3, 1e-3}, .probabilities = {0.3, 0.6, 0.1}};
+    three.chain.source = BeadDistribution{.radii = {4.76e-3, 2.38e-3, 1e-3}, .probabilities = {0.3, 0.6, 0.1}};
     EXPECT_GT(time_step_limit(three).omega_max, 1.2 * time_step_limit(paper).omega_max);
     TransportCase poly = paper;
-    poly.chain.distribution = BeadDistribution{.kind = BeadDistribution::Kind::uniform, .low = 1e-3, .high = 4.76e-3};
+    poly.chain.source = BeadDistribution{.kind = BeadDistribution::Kind::uniform, .low = 1e-3, .high = 4.76e-3};
     TransportCase ends = paper;  // the range's two ends: among the 9 radii the rule takes
-    ends.chain.distribution = BeadDistribution{.radii = {4.76e-3, 1e-3}, .probabilities = {0.5, 0.5}};
+    ends.chain.source = BeadDistribution{.radii = {4.76e-3, 1e-3}, .probabilities = {0.5, 0.5}};
     EXPECT_GE(time_step_limit(poly).omega_max, time_step_limit(ends).omega_max);
     EXPECT_LT(time_step_limit(poly).omega_max, 1.5 * time_step_limit(ends).omega_max);
   }
@@ -168,7 +168,7 @@ TEST(TimeStepRule, ModeKicksAreBoundedBeforeTheChainIsDrawn) {
   const TimeStepLimit from_alpha = time_step_limit(c);
   EXPECT_GT(from_alpha.omega_max, 0);
   const Chain chain = make_chain(radii_of(realization_configuration(Disorder::anderson, 0.5, c.chain.N, c.chain.seed, 0),
-                                          c.chain.R1, c.chain.xi),
+                                          c.chain.R1, c.chain.xi()),
                                  c.chain.F0);
   const ModeKickResult real = mode_kick(chain, ForceLawKind::hertz, {.mode = 200, .amplitude = 1e-7});
   const double bound_at_real = highest_frequency_bound(make_force_law(ForceLawKind::hertz, chain), chain, real.energy);

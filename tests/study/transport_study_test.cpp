@@ -26,7 +26,7 @@ TransportCase short_case(std::size_t N, std::size_t realizations, double T, std:
 
 TransportCase small_case(Disorder d, double f0) {
   TransportCase c = short_case(301, 6, 1e-3, 40, 4e-4);
-  c.chain.disorder = d;
+  c.chain.draw().disorder = d;
   c.chain.F0 = f0;
   return c;
 }
@@ -52,7 +52,7 @@ TEST(TransportStudy, HomogeneousPrecompressedEnsembleIsBallistic) {
   // docs/physics.md, "Nonlinear dynamics": homogeneous linear-like chains spread ballistically, γ = 2. N = 1401 keeps
   // the front off the walls for 10 ms (Ω T ≈ 1137).
   TransportCase c;
-  c.chain.disorder = Disorder::homogeneous;
+  c.chain.draw().disorder = Disorder::homogeneous;
   c.chain.N = 1401;
   c.site = 701;
   c.realizations = 2;
@@ -86,7 +86,7 @@ TEST(ExponentTable, CasesInTableOrderWithOneHomogeneousRealization) {
   std::size_t runs = 0;
   for (const auto& c : cases) runs += c.realizations;
   EXPECT_EQ(runs, 2u * 5u * (3u * 500u + 1u));  // the 15,000 runs, plus 10 homogeneous ones
-  EXPECT_EQ(cases[0].chain.disorder, Disorder::homogeneous);
+  EXPECT_EQ(cases[0].chain.draw().disorder, Disorder::homogeneous);
   EXPECT_EQ(cases[0].kick, Kick::displacement);
   EXPECT_EQ(cases[0].profile_realizations, 1u);
   EXPECT_EQ(cases[1].profile_realizations, 100u);  // F0 = 10: profile kept
@@ -106,12 +106,12 @@ TEST(ExponentTable, BeadChainsRunAfterTheKindsUnderTheirNames) {
   const auto cases = exponent_cases(config);
   ASSERT_EQ(cases.size(), 6u);
   EXPECT_EQ(chain_names(config), (std::vector<std::string>{"h", "RDM1", "K3"}));
-  for (std::size_t i : {0u, 1u, 3u, 4u}) EXPECT_FALSE(cases[i].chain.distribution) << i;
+  for (std::size_t i : {0u, 1u, 3u, 4u}) EXPECT_FALSE(cases[i].chain.as<BeadDistribution>()) << i;
   for (std::size_t i : {2u, 5u}) {
-    ASSERT_TRUE(cases[i].chain.distribution);
-    EXPECT_EQ(describe(*cases[i].chain.distribution), describe(three));
+    ASSERT_TRUE(cases[i].chain.as<BeadDistribution>());
+    EXPECT_EQ(describe(*cases[i].chain.as<BeadDistribution>()), describe(three));
     EXPECT_EQ(cases[i].realizations, 7u);
-    EXPECT_EQ(cases[i].chain.disorder, Disorder::rdm1);  // its rule, for the JSON
+    EXPECT_EQ(describe(cases[i])["disorder"], "RDM1");  // its rule, in the JSON
   }
   EXPECT_EQ(cases[0].realizations, 1u);
   EXPECT_EQ(cases[5].chain.F0, 0.0);
@@ -148,7 +148,7 @@ namespace {
 // beads to 10 ms in the sonic vacuum, where the active window is small).
 TEST(Long_TransportStudy, SonicVacuumVelocityKickMatchesTableI) {
   TransportCase c;
-  c.chain.disorder = Disorder::anderson;
+  c.chain.draw().disorder = Disorder::anderson;
   c.chain.F0 = 0;
   c.kick = Kick::velocity;
   c.realizations = 60;
@@ -173,8 +173,7 @@ namespace {
 // bit-identical for any thread count, and its realizations really differ.
 TEST(TransportStudy, PolydisperseEnsembleIsBitIdenticalForOneAndTwoThreads) {
   TransportCase c = short_case(201, 5, 5e-4, 30, 2e-4);
-  c.chain.distribution =
-      BeadDistribution{.kind = BeadDistribution::Kind::normal, .mean = 4e-3, .sd = 1e-3, .minimum = 2e-3};
+  c.chain.source = BeadDistribution{.kind = BeadDistribution::Kind::normal, .mean = 4e-3, .sd = 1e-3, .minimum = 2e-3};
   const TransportSummary one = run_transport_study(c, {1, "", false, nullptr});
   const TransportSummary two = run_transport_study(c, {2, "", false, nullptr});
   EXPECT_EQ(one.m2.mean, two.m2.mean);
@@ -182,7 +181,7 @@ TEST(TransportStudy, PolydisperseEnsembleIsBitIdenticalForOneAndTwoThreads) {
   EXPECT_EQ(one.profile.mean, two.profile.mean);
   EXPECT_GT(one.m2.standard_error.back(), 0.0);  // different chains, different spreading
   EXPECT_EQ(describe(c)["beads"], "normal(0.004,0.001,min 0.002)");
-  c.chain.distribution.reset();
+  c.chain.source = TwoTypeDraw{};
   EXPECT_FALSE(describe(c).contains("beads"));  // the paper's cases keep their identity
 }
 

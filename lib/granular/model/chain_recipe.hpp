@@ -2,10 +2,13 @@
 // One chain recipe: everything that says which chain "realization r" is, for every study, tool
 // and Python call. A recipe draws the paper's two bead types (radii R1 and ξ R1, by a disorder
 // rule with probability q), or beads from a distribution (k types, polydisperse radii), or holds
-// a given sequence of types or of radii (a configuration or radii file). Random recipes are pure
-// functions of (seed, r): the same chain on any machine, thread or rank.
+// a given sequence of types or of radii (a configuration or radii file), or makes a quasiperiodic
+// chain: exactly one source, a ChainSource. Random recipes are pure functions of (seed, r): the
+// same chain on any machine, thread or rank. A new kind of chain is one more alternative of
+// ChainSource and a case of each std::visit in chain_recipe.cpp (the compiler lists them).
 //
-//   granular::ChainRecipe recipe{.disorder = granular::Disorder::rdm2, .q = 0.8, .N = 1000, .seed = 7};
+//   granular::ChainRecipe recipe{.source = granular::TwoTypeDraw{.disorder = granular::Disorder::rdm2, .q = 0.8},
+//                                .N = 1000, .seed = 7};
 //   for (std::uint64_t r = 0; r < 100; ++r) { granular::Chain chain = recipe.chain(r); ... }
 //
 // Beads count from 0 here (chain.hpp); files and the tools count from 1.
@@ -14,6 +17,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include <nlohmann/json_fwd.hpp>
@@ -39,35 +43,64 @@ const char* walls_description(WallShape walls);
 /// "flat" or "sphere" (the tools' and Python's word); throws InvalidInput("walls") otherwise.
 WallShape parse_wall_shape(const std::string& word);
 
-struct ChainRecipe {
-  /// Where the beads come from. At most one of `distribution`, `given_types` and `given_radii`
-  /// is set; with none, the paper's two types are drawn by `disorder` with `q`.
-  Disorder disorder = Disorder::anderson;  ///< the two-type draw (also the rule of k types)
+/// The paper's chains: two bead types of radii R1 and ξ R1, drawn by a disorder rule.
+struct TwoTypeDraw {
+  Disorder disorder = Disorder::anderson;  ///< homogeneous, Anderson, random dimer 1 or 2
   double q = 0.5;        ///< probability of a type-1 bead (A), dimer "11" (RDM1) or "12" (RDM2), in [0, 1]
-  double xi = 0.5;       ///< size ratio R2/R1 in (0, 1] (two-type draws and a types file)
-  double R1 = paper_r1;  ///< type-1 radius [m]
-  bool centred = false;  ///< two-type draws outward from the centre bead (centred_configuration.hpp)
-  std::optional<BeadDistribution> distribution{};    ///< k types or polydisperse radii, per realization
-  std::optional<Configuration> given_types{};        ///< one given sequence of types 1 and 2
-  std::optional<std::vector<double>> given_radii{};  ///< one given sequence of radii [m]
-  std::string source{};                              ///< the file `given_types` or `given_radii` came from ("" if none)
-  std::size_t N = 100;                               ///< beads of a drawn chain (a given one has its own length)
-  double F0 = 10;                                    ///< static precompression [N], ≥ 0 (0: the sonic vacuum)
-  Material material = steel;                         ///< beads and walls
-  WallShape walls = WallShape::flat;                 ///< flat walls, or fixed spheres like the end beads
-  std::uint64_t seed = 1;                            ///< random seed of drawn chains
-  /// A quasiperiodic chain of N beads of radius R1 (quasiperiodic.hpp): realization r is the
-  /// phase φ drawn from (seed, r), or the given phase. Excludes the other bead sources.
-  std::optional<Quasiperiodic> quasi{};
+  double xi = 0.5;       ///< size ratio R2/R1 in (0, 1]
+  bool centred = false;  ///< drawn outward from the centre bead (centred_configuration.hpp)
+};
 
-  /// True when realization r matters (two-type draws, distributions, quasiperiodic phases).
-  bool drawn() const { return !given_types && !given_radii; }
+/// One given sequence of the two bead types 1 and 2 (a types file), radii R1 and ξ R1.
+struct GivenTypes {
+  Configuration types{};
+  double xi = 0.5;     ///< size ratio R2/R1 in (0, 1]
+  std::string file{};  ///< the file they were read from ("" when given in code)
+};
+
+/// One given sequence of radii [m] (a radii file).
+struct GivenRadii {
+  std::vector<double> radii{};
+  std::string file{};  ///< the file they were read from ("" when given in code)
+};
+
+/// Where a chain's beads come from: exactly one of the paper's two-type draw, a bead distribution
+/// (k types or polydisperse radii, drawn per realization), given types, given radii, or a
+/// quasiperiodic chain (quasiperiodic.hpp; its beads have radius R1, realization r its phase).
+using ChainSource = std::variant<TwoTypeDraw, BeadDistribution, GivenTypes, GivenRadii, Quasiperiodic>;
+
+struct ChainRecipe {
+  ChainSource source{};               ///< the beads (default: the paper's Anderson draw)
+  double R1 = paper_r1;               ///< type-1 radius [m] (two types); every bead's (quasiperiodic)
+  std::size_t N = 100;                ///< beads of a drawn chain (a given one has its own length)
+  double F0 = 10;                     ///< static precompression [N], ≥ 0 (0: the sonic vacuum)
+  Material material = steel;          ///< beads and walls
+  WallShape walls = WallShape::flat;  ///< flat walls, or fixed spheres like the end beads
+  std::uint64_t seed = 1;             ///< random seed of drawn chains
+
+  /// The source if it is an `S`, else null.
+  template <class S>
+  S* as() {
+    return std::get_if<S>(&source);
+  }
+  template <class S>
+  const S* as() const {
+    return std::get_if<S>(&source);
+  }
+  /// The two-type draw. Throws InvalidInput("chain") for another source (a study over q or ξ).
+  TwoTypeDraw& draw();
+  const TwoTypeDraw& draw() const;
+
+  /// True when realization r matters (draws, distributions, quasiperiodic phases).
+  bool drawn() const { return !as<GivenTypes>() && !as<GivenRadii>(); }
   /// The number of beads of every realization.
   std::size_t size() const;
-  /// True when realization r is a sequence of the two bead types (two-type draws, a types file):
+  /// True when realization r is a sequence of the two bead types (two-type draws, given types):
   /// what studies over (q, ξ) grids need.
-  bool typed() const { return !distribution && !given_radii && !quasi; }
-  /// The bead types (1 or 2) of realization r: two-type draws and a types file; empty otherwise.
+  bool typed() const { return as<TwoTypeDraw>() || as<GivenTypes>(); }
+  /// The size ratio ξ of a typed() recipe (NaN for another).
+  double xi() const;
+  /// The bead types (1 or 2) of realization r: two-type draws and given types; empty otherwise.
   Configuration types(std::uint64_t r) const;
   /// The radii [m] of realization r.
   std::vector<double> radii(std::uint64_t r) const;
@@ -80,7 +113,7 @@ struct ChainRecipe {
   /// a streamed() recipe costs memory O(1) whatever N (up to 1e12); the others store the chain.
   std::unique_ptr<BeadSource> beads(std::uint64_t r) const;
   /// True when beads() draws the chain a piece at a time: two-type draws between flat walls.
-  bool streamed() const { return drawn() && typed() && !centred && walls == WallShape::flat; }
+  bool streamed() const { return as<TwoTypeDraw>() && !as<TwoTypeDraw>()->centred && walls == WallShape::flat; }
   /// The largest N validate() should allow: 1e12 for a streamed() recipe walked once, else 1e8.
   std::size_t largest_walked_size() const { return streamed() ? 1000000000000 : 100000000; }
   /// Every radius a bead of any realization can have, sampled (the two types, the k types of

@@ -15,9 +15,9 @@ namespace granular {
 
 std::vector<std::string> radius_warnings(const ChainRecipe& recipe, const RadiusNames& names) {
   std::vector<std::string> out;
-  if (recipe.given_radii) {
-    if (!recipe.source.empty()) return out;  // read_radii_file warned, naming the line
-    const auto& radii = *recipe.given_radii;
+  if (const auto* given = recipe.as<GivenRadii>()) {
+    if (!given->file.empty()) return out;  // read_radii_file warned, naming the line
+    const auto& radii = given->radii;
     const auto bad = std::count_if(radii.begin(), radii.end(), [](double r) { return !plausible_radius(r); });
     if (bad == 0) return out;
     const auto first = std::find_if(radii.begin(), radii.end(), [](double r) { return !plausible_radius(r); });
@@ -27,7 +27,7 @@ std::vector<std::string> radius_warnings(const ChainRecipe& recipe, const Radius
     out.push_back(std::move(w));
     return out;
   }
-  if (const auto& d = recipe.distribution) {  // the radii the user typed, not the tail of a normal
+  if (const auto* d = recipe.as<BeadDistribution>()) {  // the radii the user typed, not the tail of a normal
     std::vector<double> typed = d->radii;
     if (d->kind == BeadDistribution::Kind::uniform) typed = {d->low, d->high};
     if (d->kind == BeadDistribution::Kind::normal) typed = {d->mean, d->minimum};
@@ -36,20 +36,19 @@ std::vector<std::string> radius_warnings(const ChainRecipe& recipe, const Radius
     return out;
   }
   if (!plausible_radius(recipe.R1)) out.push_back(implausible_radius_warning(names.r1, recipe.R1));
-  else if (!plausible_radius(recipe.xi * recipe.R1))
-    out.push_back(implausible_radius_warning(names.r1 + " times xi", recipe.xi * recipe.R1));
-  if (recipe.quasi)
-    if (std::string w = check_cylinder_contacts(*recipe.quasi, recipe.R1, recipe.F0, recipe.material, names.angle,
-                                                names.modulation);
+  else if (recipe.typed() && !plausible_radius(recipe.xi() * recipe.R1))
+    out.push_back(implausible_radius_warning(names.r1 + " times xi", recipe.xi() * recipe.R1));
+  if (const auto* quasi = recipe.as<Quasiperiodic>())
+    if (std::string w =
+            check_cylinder_contacts(*quasi, recipe.R1, recipe.F0, recipe.material, names.angle, names.modulation);
         !w.empty())
       out.push_back(std::move(w));
   return out;
 }
 
 double highest_frequency_bound_khz(const ChainRecipe& recipe) {
-  if (recipe.quasi && recipe.F0 > 0)
-    return quasiperiodic_omega_bound(*recipe.quasi, recipe.R1, recipe.F0, recipe.material) / (2 * std::numbers::pi) /
-           1000;
+  if (const auto* quasi = recipe.as<Quasiperiodic>(); quasi && recipe.F0 > 0)
+    return quasiperiodic_omega_bound(*quasi, recipe.R1, recipe.F0, recipe.material) / (2 * std::numbers::pi) / 1000;
   const std::vector<double> radii = recipe.possible_radii();
   if (radii.empty() || !(recipe.F0 > 0)) return 0;
   const auto [smallest, largest] = std::minmax_element(radii.begin(), radii.end());

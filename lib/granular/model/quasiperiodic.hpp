@@ -7,7 +7,7 @@
 // (random_stream.hpp), unless a phase is given.
 //
 //   granular::ChainRecipe recipe{.N = 987, .seed = 3};
-//   recipe.quasi = granular::Quasiperiodic{.kind = granular::Quasiperiodic::Kind::s2, .modulation = 0.5};
+//   recipe.source = granular::Quasiperiodic{.kind = granular::Quasiperiodic::Kind::s2, .modulation = 0.5};
 //   granular::Chain chain = recipe.chain(r);  // φ of realization r
 //
 // Beads count n = 1 … N and bonds k = 0 … N (bond k joins beads k and k+1; 0 and N are the walls).

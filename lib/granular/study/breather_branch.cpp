@@ -82,7 +82,8 @@ std::string to_string(Continuation continuation) { return std::string(continuati
 void validate(const BreatherBranchConfig& c) {
   validate(c.chain);
   const bool vacuum = !(c.chain.F0 > 0);
-  const bool springs = c.chain.quasi && c.chain.quasi->kind == Quasiperiodic::Kind::s1;
+  const auto* quasi = c.chain.as<Quasiperiodic>();
+  const bool springs = quasi && quasi->kind == Quasiperiodic::Kind::s1;
   if (vacuum && !springs)
     throw InvalidInput("F0",
                        " 0: the uncompressed Hertz chain has no breathers (James, Kevrekidis & Cuevas 2013); "

@@ -4,7 +4,7 @@
 // stability (dynamics/floquet.hpp) and the contacts that open, point by point.
 //
 //   granular::BreatherBranchConfig c;
-//   c.chain.given_types = {1, 2, 1, 2, ...};  // a diatomic chain
+//   c.chain.source = granular::GivenTypes{.types = {1, 2, 1, 2, ...}};  // a diatomic chain
 //   c.near_khz = 9.0;                          // seed: the linear mode nearest 9 kHz
 //   c.target_khz = 8.0;                        // continue down into the gap
 //   auto branch = granular::continue_breather(c);

@@ -14,12 +14,13 @@
 namespace granular {
 
 ChainRecipe at_ratio(ChainRecipe chain, double beta) {
-  chain.quasi->ratio = beta;
+  std::get<Quasiperiodic>(chain.source).ratio = beta;
   return chain;
 }
 
 void validate_ratios(const ChainRecipe& chain, const std::vector<double>& ratios) {
-  if (!chain.quasi) throw InvalidInput("quasi", ": a butterfly needs a quasiperiodic chain (s1, s2 or cylinders)");
+  if (!chain.as<Quasiperiodic>())
+    throw InvalidInput("quasi", ": a butterfly needs a quasiperiodic chain (s1, s2 or cylinders)");
   if (ratios.empty()) throw InvalidInput("ratios", ": no values");
   for (double beta : ratios) {
     if (!std::isfinite(beta) || !(beta > 0))

@@ -6,7 +6,7 @@
 //
 //   granular::ButterflyConfig c;
 //   c.chain.N = 1000;
-//   c.chain.quasi = granular::Quasiperiodic{.kind = granular::Quasiperiodic::Kind::s1, .modulation = 0.3};
+//   c.chain.source = granular::Quasiperiodic{.kind = granular::Quasiperiodic::Kind::s1, .modulation = 0.3};
 //   c.ratios = {0.01, 0.02, …};
 //   auto columns = granular::compute_butterfly(c, {});
 #include <cstdint>

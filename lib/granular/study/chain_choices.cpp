@@ -110,19 +110,16 @@ ChainRecipe chain_recipe(const ChainChoices& o, std::vector<std::string>& warnin
   if (o.seed < 0) throw InvalidInput("seed", " " + std::to_string(o.seed) + ": must be >= 0");
   if (o.realization < 0) throw InvalidInput("realization", " " + std::to_string(o.realization) + ": must be >= 0");
   if (o.n < 2) throw InvalidInput("N", " " + std::to_string(o.n) + ": a chain needs at least 2 beads");
-  ChainRecipe r{.disorder = parse_disorder(o.disorder),
-                .q = o.q,
-                .xi = o.xi,
-                .R1 = o.r1,
-                .centred = o.auto_n,
-                .N = static_cast<std::size_t>(o.n),
-                .F0 = o.f0,
-                .seed = static_cast<std::uint64_t>(o.seed)};
+  ChainRecipe r{.R1 = o.r1, .N = static_cast<std::size_t>(o.n), .F0 = o.f0, .seed = static_cast<std::uint64_t>(o.seed)};
   r.walls = parse_wall_shape(o.walls);
-  r.distribution = bead_distribution(o);
-  if (!o.config.empty()) r.given_types = read_configuration_file(r.source = o.config);
-  if (!o.radii.empty()) r.given_radii = read_radii_file(r.source = o.radii, &warnings);
-  r.quasi = quasiperiodic(o);
+  if (auto quasi = quasiperiodic(o)) r.source = *quasi;
+  else if (auto beads = bead_distribution(o)) r.source = *beads;
+  else if (!o.config.empty())
+    r.source = GivenTypes{.types = read_configuration_file(o.config), .xi = o.xi, .file = o.config};
+  else if (!o.radii.empty()) r.source = GivenRadii{.radii = read_radii_file(o.radii, &warnings), .file = o.radii};
+  else r.source = TwoTypeDraw{.disorder = parse_disorder(o.disorder), .q = o.q, .xi = o.xi, .centred = o.auto_n};
+  if (o.auto_n && !r.as<TwoTypeDraw>())
+    throw InvalidInput("N", ": a chain drawn from its centre (the automatic N) has two bead types, not a bead source");
   return r;
 }
 

@@ -19,7 +19,7 @@ ChainLength automatic_chain_length(const TransportCase& c) {
   TransportCase probe = c;  // ω_max depends on the chain and the kick, not on the scheme
   probe.dynamics.integration.integrator = saba2c();
   probe.chain.N = 3;
-  probe.chain.centred = false;
+  if (auto* draw = probe.chain.as<TwoTypeDraw>()) draw->centred = false;
   probe.site = 0;  // the centre
   ChainLength length;
   length.omega_max = time_step_limit(probe).omega_max;
@@ -37,7 +37,10 @@ ChainLength size_for_long_times(TransportCase& c) {
   const ChainLength length = automatic_chain_length(c);
   c.chain.N = length.n;
   c.site = 0;  // the centre
-  c.chain.centred = true;
+  auto* draw = c.chain.as<TwoTypeDraw>();
+  if (!draw)
+    throw InvalidInput("N", ": a chain drawn from its centre (the automatic N) has two bead types, not a bead source");
+  draw->centred = true;
   return length;
 }
 

@@ -13,14 +13,16 @@ void write_correlations_csv(std::ostream& out, const CorrelationResult& result) 
 
 nlohmann::json describe_correlations(const CorrelationConfig& config, const CorrelationResult& result) {
   nlohmann::json meta;
-  meta["parameters"] = {{"disorder", to_string(config.chain.disorder)},
-                        {"q", config.chain.q},
+  const auto* beads = config.chain.as<BeadDistribution>();
+  const TwoTypeDraw draw = beads ? TwoTypeDraw{.disorder = beads->rule} : config.chain.draw();
+  meta["parameters"] = {{"disorder", to_string(draw.disorder)},
+                        {"q", draw.q},
                         {"N", config.chain.N},
                         {"realizations", config.realizations},
                         {"seed", config.chain.seed},
                         {"max_distance", config.max_distance}};
-  if (config.chain.distribution) meta["parameters"]["beads"] = describe(*config.chain.distribution);
-  meta["correlated"] = config.chain.distribution ? "bead mass" : "bead type (type 1 -> 0, type 2 -> 1)";
+  if (beads) meta["parameters"]["beads"] = describe(*beads);
+  meta["correlated"] = beads ? "bead mass" : "bead type (type 1 -> 0, type 2 -> 1)";
   meta["realizations_used"] = result.used;
   return meta;
 }

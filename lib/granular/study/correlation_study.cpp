@@ -12,13 +12,13 @@
 namespace granular {
 
 void set_chain_kind(CorrelationConfig& c, const ChainChoices& beads) {
-  c.chain.distribution = bead_distribution(beads);
+  if (auto distribution = bead_distribution(beads)) c.chain.source = *distribution;
 }
 
 void validate(const CorrelationConfig& c) {
   const ChainRecipe& chain = c.chain;
   if (!chain.drawn()) throw InvalidInput("chain", ": an ensemble draws its chains; not a given chain");
-  if (!chain.distribution && chain.disorder == Disorder::homogeneous)
+  if (const auto* draw = chain.as<TwoTypeDraw>(); draw && draw->disorder == Disorder::homogeneous)
     throw InvalidInput("disorder", " h: a one-type chain has no correlation coefficient");
   validate(chain);
   if (c.realizations < 1) throw InvalidInput("realizations", " 0: must be >= 1");
@@ -33,7 +33,7 @@ CorrelationResult correlation_study(const CorrelationConfig& c, const RunOptions
   parallel_realizations(
       c.realizations, run.threads,
       [&](std::size_t r, int) {
-        if (!c.chain.distribution) {
+        if (!c.chain.as<BeadDistribution>()) {
           rho[r] = cyclic_correlation(c.chain.types(r), dmax);
           return;
         }
@@ -51,20 +51,21 @@ CorrelationResult correlation_study(const CorrelationConfig& c, const RunOptions
       sum2[d] += row[d] * row[d];
     }
   }
-  const auto& beads = c.chain.distribution;
+  const auto* beads = c.chain.as<BeadDistribution>();
   if (out.used == 0 && beads)
     throw InvalidInput("beads",
                        " " + describe(*beads) + ": every realization has one kind of bead only, no correlation");
   if (out.used == 0)
-    throw InvalidInput("q",
-                       " " + format_number(c.chain.q) + ": every realization has one bead type only, no correlation");
+    throw InvalidInput("q", " " + format_number(c.chain.draw().q) +
+                                ": every realization has one bead type only, no correlation");
   const double u = static_cast<double>(out.used);
   for (std::size_t d = 0; d <= dmax; ++d) {
     const double mean = sum[d] / u;
     const double var = out.used > 1 ? std::fmax(sum2[d] / u - mean * mean, 0.0) * u / (u - 1) : 0.0;
     out.mean.push_back(mean);
     out.deviation.push_back(std::sqrt(var));
-    out.theory.push_back(beads ? correlation_theory(*beads, d) : correlation_theory(c.chain.disorder, c.chain.q, d));
+    out.theory.push_back(beads ? correlation_theory(*beads, d)
+                               : correlation_theory(c.chain.draw().disorder, c.chain.draw().q, d));
   }
   return out;
 }

@@ -17,7 +17,7 @@
 //
 //   granular::DynamicalButterflyConfig c;
 //   c.chain.N = 100;
-//   c.chain.quasi = granular::Quasiperiodic{.kind = granular::Quasiperiodic::Kind::cylinders, .modulation = 0.3};
+//   c.chain.source = granular::Quasiperiodic{.kind = granular::Quasiperiodic::Kind::cylinders, .modulation = 0.3};
 //   c.ratios = {0.01, 0.02, …};
 //   auto columns = granular::compute_dynamical_butterfly(c, {});
 #include <cstdint>

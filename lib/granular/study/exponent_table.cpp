@@ -19,7 +19,7 @@ std::vector<std::string> chain_names(const ExponentTableConfig& config) {
 }
 
 std::string chain_name(const ExponentCell& cell) {
-  return cell.chain.empty() ? to_string(cell.definition.chain.disorder) : cell.chain;
+  return cell.chain.empty() ? to_string(cell.definition.chain.draw().disorder) : cell.chain;
 }
 
 void validate(const ExponentTableConfig& config) {
@@ -48,7 +48,7 @@ std::vector<TransportCase> exponent_cases(const ExponentTableConfig& config) {
     const bool profile = std::find(config.profile_precompressions.begin(), config.profile_precompressions.end(),
                                    c.chain.F0) != config.profile_precompressions.end();
     c.profile_realizations = profile ? std::min(config.profile_realizations, c.realizations) : 0;
-    if (config.automatic_length) size_for_long_times(c);  // (a bead chain is then refused by validate: no centred draw)
+    if (config.automatic_length) size_for_long_times(c);  // (refuses a bead chain: no centred draw)
     cases.push_back(c);
   };
   for (Kick kick : config.kicks)
@@ -56,17 +56,18 @@ std::vector<TransportCase> exponent_cases(const ExponentTableConfig& config) {
       TransportCase c = config.base;
       c.kick = kick;
       c.chain.F0 = f0;
+      const TwoTypeDraw* base = config.base.chain.as<TwoTypeDraw>();
       for (Disorder chain : config.chains) {
-        c.chain.disorder = chain;
+        TwoTypeDraw draw = base ? *base : TwoTypeDraw{};
+        draw.disorder = chain;
+        c.chain.source = draw;
         c.realizations = chain == Disorder::homogeneous ? 1 : config.base.realizations;  // one chain only
         add(c);
       }
       c.realizations = config.base.realizations;
       for (const BeadChain& b : config.bead_chains) {
-        c.chain.quasi = b.quasi;
-        if (b.quasi) c.chain.distribution.reset();
-        else c.chain.distribution = b.beads;
-        c.chain.disorder = b.beads.kind == BeadDistribution::Kind::types && !b.quasi ? b.beads.rule : Disorder::anderson;
+        if (b.quasi) c.chain.source = *b.quasi;
+        else c.chain.source = b.beads;
         add(c);
       }
     }

@@ -39,7 +39,8 @@ std::vector<std::string> frequency_slips(const ModeSelection& s, const ChainReci
 
 std::vector<std::string> frequency_slips(const IprMapConfig& c, const Told& told) {
   ChainRecipe highest = c.chain;
-  if (!c.xi_values.empty()) highest.xi = *std::min_element(c.xi_values.begin(), c.xi_values.end());
+  if (auto* draw = highest.as<TwoTypeDraw>(); draw && !c.xi_values.empty())
+    draw->xi = *std::min_element(c.xi_values.begin(), c.xi_values.end());
   return frequency_slips(c.selection, highest, told);
 }
 

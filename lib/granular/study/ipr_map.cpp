@@ -16,9 +16,10 @@ namespace granular {
 
 void set_chain_kind(IprMapConfig& c, const ChainChoices& beads) {
   c.chain.walls = parse_wall_shape(beads.walls);
-  c.chain.quasi = quasiperiodic(beads);
-  if ((c.chain.distribution = bead_distribution(beads)) || c.chain.quasi)
-    c.q_values = c.xi_values = {std::numeric_limits<double>::quiet_NaN()};  // one cell
+  if (auto quasi = quasiperiodic(beads)) c.chain.source = *quasi;
+  else if (auto distribution = bead_distribution(beads)) c.chain.source = *distribution;
+  else return;
+  c.q_values = c.xi_values = {std::numeric_limits<double>::quiet_NaN()};  // one cell
 }
 
 void set_solver(IprMapConfig& c, const std::string& solver, const std::optional<std::string>& method) {
@@ -77,14 +78,14 @@ namespace {
 /// from the bead distribution.
 DynamicalMatrix matrix_of(const IprMapConfig& c, const Configuration& types, double xi, std::size_t r) {
   ChainRecipe cell = c.chain;
-  cell.xi = xi;
+  if (auto* draw = cell.as<TwoTypeDraw>()) draw->xi = xi;
   return dynamical_matrix(cell.typed() ? cell.chain_of(types) : cell.chain(r));
 }
 
 /// The bead types of realization r at q (none with a bead distribution).
 Configuration types_of(const IprMapConfig& c, double q, std::size_t r) {
   ChainRecipe cell = c.chain;
-  cell.q = q;
+  if (auto* draw = cell.as<TwoTypeDraw>()) draw->q = q;
   return cell.types(r);
 }
 

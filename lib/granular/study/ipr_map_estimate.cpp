@@ -15,7 +15,7 @@ IprMapEstimate estimate_ipr_map(const IprMapConfig& c, int threads) {
   e.chains = (one_cell ? 1 : c.q_values.size() * c.xi_values.size()) * c.realizations;
   if (c.selection.kind != ModeSelection::Kind::all || c.chain.N < 4000) return e;  // short: not timed
   ChainRecipe first = c.chain;
-  if (!one_cell) first.q = c.q_values.front(), first.xi = c.xi_values.front();
+  if (!one_cell) first.draw().q = c.q_values.front(), first.draw().xi = c.xi_values.front();
   e.chain = estimate_every_mode_solve(dynamical_matrix(first.chain(0)), c.spectrum, c.selection);
   const auto rounds =
       static_cast<double>((e.chains + static_cast<std::size_t>(e.threads) - 1) / static_cast<std::size_t>(e.threads));

@@ -7,9 +7,10 @@
 namespace granular {
 
 std::string ipr_map_disorder(const IprMapConfig& config) {
-  if (config.chain.quasi) return "quasi-" + to_string(config.chain.quasi->kind);
-  if (!config.chain.distribution) return to_string(config.chain.disorder);
-  return config.chain.distribution->kind == BeadDistribution::Kind::types ? "types" : "polydisperse";
+  if (const auto* quasi = config.chain.as<Quasiperiodic>()) return "quasi-" + to_string(quasi->kind);
+  if (const auto* beads = config.chain.as<BeadDistribution>())
+    return beads->kind == BeadDistribution::Kind::types ? "types" : "polydisperse";
+  return to_string(config.chain.draw().disorder);
 }
 
 void write_ipr_map_csv(std::ostream& out, const IprMapConfig& config, const std::vector<IprMapCell>& cells) {
@@ -50,8 +51,8 @@ nlohmann::json describe_ipr_map(const IprMapConfig& config, const std::vector<Ip
                         {"seed", chain.seed},
                         {"threads", request.threads},
                         {"solver", request.solver}};
-  if (chain.distribution) meta["parameters"]["beads"] = describe(*chain.distribution);
-  if (chain.quasi) meta["parameters"]["quasiperiodic"] = describe(*chain.quasi);
+  if (const auto* beads = chain.as<BeadDistribution>()) meta["parameters"]["beads"] = describe(*beads);
+  if (const auto* quasi = chain.as<Quasiperiodic>()) meta["parameters"]["quasiperiodic"] = describe(*quasi);
   const ModeSelection& s = config.selection;
   if (s.kind == ModeSelection::Kind::all) {
     meta["averaging"] = config.bin_khz > 0 ? "frequency-bin" : "mode";

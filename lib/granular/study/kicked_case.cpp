@@ -11,7 +11,7 @@ namespace {
 void set_realizations(KickedCase& k, long long realizations, bool ensemble) {
   if (realizations < 1) throw InvalidInput("realizations", " " + std::to_string(realizations) + ": must be >= 1");
   const ChainRecipe& chain = k.c.chain;
-  if (ensemble && (chain.given_types || chain.given_radii))
+  if (ensemble && !chain.drawn())
     throw InvalidInput("`realizations`/`resume`: an ensemble draws random chains; `config`/`radii` give one chain");
   k.c.realizations = static_cast<std::size_t>(realizations);
   k.c.profile_realizations = 0;

@@ -96,8 +96,8 @@ std::vector<CellComparison> compare_with_paper(const std::vector<ExponentCell>& 
   for (const PaperCell& p : paper)
     for (const ExponentCell& c : cells) {
       const TransportCase& d = c.definition;
-      if (d.kick != p.kick || d.chain.F0 != p.precompression || d.chain.disorder != p.disorder) continue;
-      if (d.chain.distribution) continue;  // a chain of the user's own, not the paper's
+      const TwoTypeDraw* draw = d.chain.as<TwoTypeDraw>();  // other sources: chains of the user's own
+      if (!draw || d.kick != p.kick || d.chain.F0 != p.precompression || draw->disorder != p.disorder) continue;
       if (!c.summary.exponents) continue;
       CellComparison row;
       row.paper = p;

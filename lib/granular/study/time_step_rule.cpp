@@ -192,7 +192,8 @@ double highest_frequency_bound(const ForceLaw& law, const Chain& chain, double e
 std::vector<Chain> rule_chains(const TransportCase& c, const Chain* chain) {
   if (chain) return {*chain};
   if (!c.chain.drawn()) return {c.chain.chain(0)};
-  if (const auto& q = c.chain.quasi) return quasiperiodic_local_chains(*q, c.chain.R1, c.chain.F0, c.chain.material);
+  if (const auto* q = c.chain.as<Quasiperiodic>())
+    return quasiperiodic_local_chains(*q, c.chain.R1, c.chain.F0, c.chain.material);
   // Every local arrangement of the radii the chain can hold: three beads between walls hold
   // every neighbourhood of a bead (inside a chain, or next to a wall).
   std::vector<Chain> chains;

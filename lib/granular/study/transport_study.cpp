@@ -83,7 +83,7 @@ void validate_before_time_step(const TransportCase& c) {
   validate_choices(c);
   const std::size_t n = c.chain.size();
   const std::size_t site = kicked_bead(c);
-  if (c.chain.centred && site != (n - 1) / 2)
+  if (const auto* d = c.chain.as<TwoTypeDraw>(); d && d->centred && site != (n - 1) / 2)
     throw InvalidInput("site", " " + std::to_string(site + 1) + ": a chain drawn from its centre is kicked there (" +
                                    std::to_string((n + 1) / 2) + ")");
   if (c.realizations < 1) throw InvalidInput("realizations", ": must be >= 1");
