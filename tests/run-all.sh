@@ -5,7 +5,9 @@
 #   1. the Release build with warnings as errors: every GoogleTest suite and tool test (ctest),
 #      the Python suite, the documentation site and examples; not the label `manual` (the full
 #      `pip install .` build, 11 min: `ctest -L manual`);
-#      then the suites whose numbers pass through BLAS/LAPACK once more on the reference BLAS;
+#      then the suites whose numbers pass through BLAS/LAPACK once more on the reference BLAS
+#      (pass 1b; the long breather, Newton–Krylov and ARPACK ones do so in pass 1, as the ctest
+#      tests reference_blas.*, tests/CMakeLists.txt);
 #   2. the same suites built with clang, AddressSanitizer + UndefinedBehaviorSanitizer (any report fails);
 #   3. the threaded suites (ensembles, IPR map, localization, bootstrap) built with clang and
 #      ThreadSanitizer, OpenMP through LLVM's libomp with its archer tool (any report fails);

@@ -26,7 +26,8 @@ int main(int argc, char** argv) {
       "omega_rad_s,freq_khz,energy_J,amplitude_m,centre,max_multiplier,\n"
       "stable,complete,verdict_trusted,newton_iterations,residual,max_open_fraction; verdict_trusted 0 at --F0 0,\n"
       "where the Floquet verdict does not converge with the steps per period), PREFIX.h5 (profiles x0,\n"
-      "multipliers, open fractions per point) and PREFIX.json (parameters, Newton histories, multiplier checks).",
+      "multipliers, open fractions, verdict_trusted per point) and PREFIX.json (parameters, Newton\n"
+      "histories, multiplier checks).",
       "breathers"};
   tool::describe_common(app);
   tool::ChainOptions chain_options;

@@ -6,13 +6,15 @@
 # BLAS: the build links Debian's libblas.so.3 / liblapack.so.3, and libopenblas0-pthread makes
 # update-alternatives point both at OpenBLAS (priority 100 over the reference BLAS's 10), the
 # library anyone who cares about speed runs NumPy, SciPy and LAPACK on. The reference BLAS stays
-# installed: tests/run-all.sh runs the linear-algebra suites on it too (LD_LIBRARY_PATH), and
+# installed (libblas3, liblapack3, named here because the tests use their folders
+# /usr/lib/x86_64-linux-gnu/blas and …/lapack): tests/run-all.sh runs the linear-algebra suites on
+# it too (LD_LIBRARY_PATH; pass 1b, and the ctest tests reference_blas.* in pass 1), and
 # `TOOL --version` or any run's JSON ("blas") says which one a process used.
 set -euo pipefail
 
 packages=(
   build-essential cmake pkg-config git time help2man man-db
-  libeigen3-dev liblapack-dev libblas-dev libopenblas0-pthread libarpack2-dev
+  libeigen3-dev liblapack-dev libblas-dev libblas3 liblapack3 libopenblas0-pthread libarpack2-dev
   libfftw3-dev libhdf5-dev libboost-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   libcli11-dev nlohmann-json3-dev librandom123-dev

@@ -342,11 +342,41 @@ def test_breather_figure_draws_the_branch_from_the_result_and_the_tools_files(to
             assert np.allclose([bar.get_height() for bar in ax.patches], b.profiles[j] * 1e6, rtol=1e-12, atol=0)
         mu = circle.lines[1]
         assert np.allclose(mu.get_xdata() + 1j * mu.get_ydata(), b.multipliers[1], rtol=0, atol=1e-12)
+        # F0 > 0: every verdict trusted, nothing marked (the F0 = 0 test below marks them)
+        assert not any("untrusted" in line.get_label() for line in branch.lines)
+        assert not any("untrusted" in t.get_text() for t in branch.get_legend().get_texts())
+        assert "untrusted" not in circle.get_title()
     done = cli("-m", "granular.plot", "breathers", "br.csv", "--point", "0", cwd=tools.folder)
     assert done.returncode == 0, done.stderr
     assert (tools.folder / "br.png").stat().st_size > 10000
     bad = cli("-m", "granular.plot", "breathers", "br.csv", "--point", "7", cwd=tools.folder)
     assert bad.returncode == 2 and "Traceback" not in bad.stderr
+
+
+def test_breather_figure_marks_untrusted_verdicts_at_zero_precompression(tools):
+    """At F0 = 0 the Floquet verdicts are the discretized map's (verdict_trusted False): the branch panel rings every
+    point with its own legend entry and the multiplier panel says so, from the result and from the tool's files,
+    whose HDF5 carries the flag and the reason too."""
+    import h5py
+
+    onsite = ("--quasi", "s1", "--modulation", "0", "--phase", "0", "--k0-n-per-m", "1e7", "--F0", "0", "--N", "21")
+    tools.run("breathers", *onsite, "--start-offset", "1e-2", "--max-points", "3", "--quiet", output="cradle")
+    b = gr.breathers(gr.quasiperiodic("s1", N=21, modulation=0.0, phase=0.0, F0=0.0, k0_n_per_m=1e7), max_points=3,
+                     start_offset=1e-2)
+    assert not b.verdict_trusted.any()
+    with h5py.File(tools.folder / "cradle.h5", "r") as f:
+        assert np.array_equal(np.array(f["verdict_trusted"]), np.zeros(3))
+        assert "F0 = 0" in f.attrs["verdict_untrusted_reason"].decode()
+    for source in (b, tools.folder / "cradle.csv"):
+        fig = gp.breather_branch(source, point=1)
+        check_axes(fig)
+        branch, circle = fig.axes[:2]
+        rings = branch.lines[3]  # after the branch line, the stable and the unstable points
+        assert rings.get_label() == "verdict untrusted at F0 = 0: the discretized map's"
+        assert rings.get_marker() == "s" and rings.get_markerfacecolor() == "none"
+        assert np.array_equal(np.sort(rings.get_xdata()), np.sort(b.freq_khz))  # every point of the branch
+        assert rings.get_label() in [t.get_text() for t in branch.get_legend().get_texts()]
+        assert "untrusted" in circle.get_title()
 
 
 def test_quasiperiodic_figures_name_their_chain():

@@ -4,6 +4,7 @@
 // chain (docs/physics.md, "Band edges"), and direct integration by the library's propagator.
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <limits>
 #include <numbers>
@@ -382,7 +383,8 @@ TEST(BreatherBranch, SeedProfileLandsOnTheOrbitNearIt) {
   EXPECT_EQ(parameter_of(bad), "seed_profile");
 }
 
-// The HDF5 file holds what the branch holds: profiles and multipliers, point by point.
+// The HDF5 file holds what the branch holds: profiles, multipliers and verdict flags, point by
+// point (F0 > 0: every verdict trusted, no reason; F0 = 0 in BreatherCradle.Hdf5FileMarks…).
 TEST(BreatherBranch, Hdf5FileHoldsTheProfilesAndMultipliers) {
   auto c = impurity_config();
   c.max_points = 2;
@@ -413,6 +415,11 @@ TEST(BreatherBranch, Hdf5FileHoldsTheProfilesAndMultipliers) {
     }
     for (std::size_t k = 0; k <= n; ++k) EXPECT_EQ(open[j * (n + 1) + k], p.open_fraction[k]);
   }
+  const fixtures::Hdf5Verdicts verdicts = fixtures::read_hdf5_verdicts(path);
+  ASSERT_TRUE(verdicts.ok);
+  EXPECT_EQ(verdicts.trusted, (std::vector<std::uint64_t>{1, 1}));
+  EXPECT_EQ(verdicts.reason, "");
+  EXPECT_TRUE(branch.verdict_untrusted_reason.empty());
 }
 
 // A target ends the branch at exactly the frequency asked for. These six come back from

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <numbers>
 #include <string>
@@ -20,6 +21,7 @@
 #include "granular/dynamics/propagator.hpp"
 #include "granular/error.hpp"
 #include "granular/study/breather_branch.hpp"
+#include "scratch.hpp"
 
 namespace granular {
 namespace {
@@ -265,6 +267,23 @@ CradleDeparture cradle_departure(const Chain& chain, const BreatherPoint& p, std
   }
   out.growth = std::exp((m * sxy - sx * sy) / (m * sxx - sx * sx));
   return out;
+}
+
+// The branch's HDF5 file says what its CSV and JSON say: every F0 = 0 verdict untrusted (dataset
+// verdict_trusted all 0), with the branch's reason as the attribute verdict_untrusted_reason.
+TEST(BreatherCradle, Hdf5FileMarksEveryVerdictUntrusted) {
+  auto config = cradle_config(1e-2);
+  config.max_points = 3;
+  const auto branch = continue_breather(config);
+  ASSERT_EQ(branch.points.size(), 3u) << branch.stop_reason;
+  ASSERT_FALSE(branch.verdict_untrusted_reason.empty());
+  const std::string path = testing::scratch_path("breather_cradle_test", "cradle.h5");
+  write_breather_hdf5(path, branch)->commit();
+  const fixtures::Hdf5Verdicts verdicts = fixtures::read_hdf5_verdicts(path);
+  ASSERT_TRUE(verdicts.ok);
+  EXPECT_EQ(verdicts.trusted, (std::vector<std::uint64_t>{0, 0, 0}));
+  EXPECT_EQ(verdicts.reason, branch.verdict_untrusted_reason);
+  EXPECT_NE(verdicts.reason.find("F0 = 0"), std::string::npos);
 }
 
 // Issue 42, item 5: is the F0 = 0 branch's "real" instability (max|μ| 1.0074 at 128 steps per

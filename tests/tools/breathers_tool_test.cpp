@@ -2,6 +2,7 @@
 // with the tools' codes (2 bad input, 3 numerical failure), one line naming the problem, and
 // writes nothing.
 #include <algorithm>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
@@ -15,6 +16,7 @@
 
 #include "granular/linear/band_edges.hpp"
 #include "granular/model/named_chains.hpp"
+#include "study/breather_fixtures.hpp"
 #include "tool_runner.hpp"
 
 namespace granular::testing {
@@ -60,7 +62,11 @@ TEST(BreathersTool, ShortDiatomicBranchWritesCsvAndJson) {
   const auto meta = nlohmann::json::parse(read_file(dir + "/b.json"));
   EXPECT_EQ(meta["points"].size(), 4u);
   EXPECT_FALSE(meta["continuation"]["stop_reason"].get<std::string>().empty());
-  EXPECT_TRUE(meta["floquet"]["verdict_untrusted_reason"].is_null());  // F0 > 0: every verdict trusted
+  EXPECT_TRUE(meta["floquet"]["verdict_untrusted_reason"].is_null());             // F0 > 0: every verdict trusted
+  const fixtures::Hdf5Verdicts h5 = fixtures::read_hdf5_verdicts(dir + "/b.h5");  // and so says the HDF5
+  ASSERT_TRUE(h5.ok);
+  EXPECT_EQ(h5.trusted, std::vector<std::uint64_t>(4, 1));
+  EXPECT_EQ(h5.reason, "");
   EXPECT_EQ(meta["output"], dir + "/b.csv");
   std::filesystem::remove_all(dir);
 }
@@ -135,6 +141,10 @@ TEST(BreathersTool, OnsiteSpringChainAtZeroPrecompression) {
     ASSERT_EQ(v.size(), 12u);
     EXPECT_EQ(v[8], "0") << line;
   }
+  const fixtures::Hdf5Verdicts h5 = fixtures::read_hdf5_verdicts(dir + "/c.h5");  // the HDF5 says so too
+  ASSERT_TRUE(h5.ok);
+  EXPECT_EQ(h5.trusted, std::vector<std::uint64_t>(3, 0));
+  EXPECT_EQ(h5.reason, meta["floquet"]["verdict_untrusted_reason"].get<std::string>());
   double previous = onsite;
   for (const auto& p : meta["points"]) {
     EXPECT_FALSE(p["verdict_trusted"].get<bool>());

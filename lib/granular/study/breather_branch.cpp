@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <numbers>
 #include <ostream>
@@ -487,8 +488,10 @@ std::unique_ptr<Hdf5File> write_breather_hdf5(const std::string& path, const Bre
   std::size_t width = 0;  // 2N (dense), or the most multipliers ARPACK gave a point
   for (const auto& p : b.points) width = std::max(width, p.floquet.multipliers.size());
   std::vector<double> freq, omega, energy, x0, re, im, open;
+  std::vector<std::uint64_t> trusted;
   for (const auto& p : b.points) {
     freq.push_back(p.freq_khz);
+    trusted.push_back(p.verdict_trusted ? 1 : 0);
     omega.push_back(p.omega);
     energy.push_back(p.energy);
     x0.insert(x0.end(), p.x0.begin(), p.x0.end());
@@ -502,6 +505,7 @@ std::unique_ptr<Hdf5File> write_breather_hdf5(const std::string& path, const Bre
   file.write("freq_khz", freq);
   file.write("omega_rad_s", omega);
   file.write("energy_J", energy);
+  file.write("verdict_trusted", trusted);
   file.write("x0", x0.data(), rows, n);
   file.write("multipliers_real", re.data(), rows, width);
   file.write("multipliers_imag", im.data(), rows, width);
@@ -512,8 +516,11 @@ std::unique_ptr<Hdf5File> write_breather_hdf5(const std::string& path, const Bre
       "row j = point j of the branch (as in the CSV); x0: displacements [m] at the turning point "
       "(velocities 0); multipliers: the Floquet multipliers by modulus descending, all 2N (dense) or the largest "
       "(ARPACK, NaN-padded); open_fraction: "
-      "per bond 0..N (walls included), the fraction of the period it is open");
+      "per bond 0..N (walls included), the fraction of the period it is open; verdict_trusted: 1, or 0 where "
+      "the multipliers and the verdict are the discretized map's, not the orbit's (F0 = 0; "
+      "verdict_untrusted_reason says why)");
   file.attribute("stop_reason", b.stop_reason);
+  file.attribute("verdict_untrusted_reason", b.verdict_untrusted_reason);
   return out;
 }
 

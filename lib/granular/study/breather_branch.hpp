@@ -151,11 +151,12 @@ BreatherBranch continue_breather(const BreatherBranchConfig& config,
 /// max_multiplier are the discretized map's, not the orbit's (BreatherPoint::verdict_trusted; F0 = 0).
 void write_breather_csv(std::ostream& out, const BreatherBranch& branch);
 
-/// HDF5 of the branch (one row per point): freq_khz, omega_rad_s, energy_J; x0 (points × N, the
-/// turning-point profiles [m]); multipliers_real and multipliers_imag (points × 2N, by |μ|
-/// descending; ARPACK: points × the most multipliers of a point, NaN-padded); open_fraction (points × (N+1), per bond);
-/// linear_khz (N). Written under its temporary name and returned uncommitted, for RunMetadata::write to put in place
-/// after the JSON; throws IoError.
+/// HDF5 of the branch (one row per point): freq_khz, omega_rad_s, energy_J; verdict_trusted (uint64 1 or 0,
+/// as the CSV's column); x0 (points × N, the turning-point profiles [m]); multipliers_real and multipliers_imag
+/// (points × 2N, by |μ| descending; ARPACK: points × the most multipliers of a point, NaN-padded); open_fraction
+/// (points × (N+1), per bond); linear_khz (N); string attributes layout, stop_reason and verdict_untrusted_reason
+/// (BreatherBranch's; "" when every verdict is trusted). Written under its temporary name and returned
+/// uncommitted, for RunMetadata::write to put in place after the JSON; throws IoError.
 std::unique_ptr<Hdf5File> write_breather_hdf5(const std::string& path, const BreatherBranch& branch);
 
 /// The JSON entries of a branch run: parameters (chain, seed, continuation, shooting) and results

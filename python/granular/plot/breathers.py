@@ -9,12 +9,14 @@ from ._style import chain_title, figure, style, wrapped_suptitle
 
 
 def _branch_data(source):
-    """(freq_khz, energy [J], stable, profiles (points x N) [m], multipliers (points x 2N), linear_khz, metadata)
-    from a granular.Breathers or the breathers tool's CSV (its JSON and PREFIX.h5 beside it)."""
+    """(freq_khz, energy [J], stable, trusted, profiles (points x N) [m], multipliers (points x 2N), linear_khz,
+    metadata) from a granular.Breathers or the breathers tool's CSV (its JSON and PREFIX.h5 beside it). trusted:
+    the points' verdict_trusted (False where the verdict is the discretized map's, not the orbit's: F0 = 0); all
+    True for a CSV from before that column."""
     if not _io.is_path(source):
         return (np.asarray(source.freq_khz), np.asarray(source.energy), np.asarray(source.stable, bool),
-                np.asarray(source.profiles), np.asarray(source.multipliers), np.asarray(source.linear_khz),
-                source.metadata)
+                np.asarray(source.verdict_trusted, bool), np.asarray(source.profiles),
+                np.asarray(source.multipliers), np.asarray(source.linear_khz), source.metadata)
     columns = _io.read_csv(source)
     meta = _io.read_json_beside(source)
     h5 = meta.get("profiles") or os.path.splitext(os.fspath(source))[0] + ".h5"
@@ -26,8 +28,13 @@ def _branch_data(source):
         profiles = np.array(f["x0"]).reshape(len(columns["freq_khz"]), -1)
         multipliers = np.array(f["multipliers_real"]) + 1j * np.array(f["multipliers_imag"])
         linear = np.array(f["linear_khz"])
-    return (columns["freq_khz"], columns["energy_J"], columns["stable"].astype(bool), profiles,
+    trusted = columns.get("verdict_trusted", np.ones(len(columns["freq_khz"]))).astype(bool)
+    return (columns["freq_khz"], columns["energy_J"], columns["stable"].astype(bool), trusted, profiles,
             multipliers.reshape(len(profiles), -1), linear, meta)
+
+
+#: The branch panel's legend entry for the points whose Floquet verdict is untrusted (verdict_trusted False).
+UNTRUSTED_LABEL = "verdict untrusted at F0 = 0: the discretized map's"
 
 
 def _gaps(linear):
@@ -48,11 +55,13 @@ def _gaps(linear):
 def breather_branch(source, point=-1):
     """Top left: energy above the static state [µJ] against the breather frequency, filled where the orbit is stable
     (every Floquet multiplier on the unit circle), open where not, with the chain's linear mode frequencies as thin
-    lines and the band gaps shaded. Below it: the turning-point profiles x0 of the first, middle and last points.
-    Right: the Floquet multipliers of point `point` (default: the last) in the complex plane with the unit circle.
-    Axes, in order: branch, multipliers, then the profiles.
+    lines and the band gaps shaded; points whose verdict is untrusted (verdict_trusted False: at F0 = 0 the
+    verdict is the discretized map's, not the orbit's) are ringed by a grey square with their own legend entry
+    (UNTRUSTED_LABEL), and the multiplier panel's title says so. Below it: the turning-point profiles x0 of the
+    first, middle and last points. Right: the Floquet multipliers of point `point` (default: the last) in the
+    complex plane with the unit circle. Axes, in order: branch, multipliers, then the profiles.
     source: a granular.Breathers or the breathers tool's CSV (PREFIX.json and PREFIX.h5 beside it)."""
-    freq, energy, stable, profiles, multipliers, linear, meta = _branch_data(source)
+    freq, energy, stable, trusted, profiles, multipliers, linear, meta = _branch_data(source)
     if len(freq) == 0:
         raise ValueError("the branch has no points to draw")
     point = range(len(freq))[point]  # IndexError names a point the branch does not have
@@ -64,6 +73,9 @@ def breather_branch(source, point=-1):
         left.plot(freq, micro, "-", color="0.6", lw=0.8, zorder=1)
         left.plot(freq[stable], micro[stable], "o", ms=4, color="C0", label="stable", zorder=2)
         left.plot(freq[~stable], micro[~stable], "o", ms=4, mfc="none", color="C3", label="unstable", zorder=2)
+        if not trusted.all():  # drawn only then: a trusted branch's figure is unchanged
+            left.plot(freq[~trusted], micro[~trusted], "s", ms=9, mfc="none", mec="0.35", mew=0.9, ls="none",
+                      label=UNTRUSTED_LABEL, zorder=3)
         lo, hi = np.min(freq), np.max(freq)
         pad = max(0.15 * (hi - lo), 0.02 * max(abs(hi), 1e-9))
         left.set_xlim(lo - pad, hi + pad)
@@ -97,7 +109,7 @@ def breather_branch(source, point=-1):
         right.set_aspect("equal")
         right.set_xlabel(r"Re $\mu$")
         right.set_ylabel(r"Im $\mu$")
-        right.set_title(f"Floquet multipliers at {freq[point]:.5g} kHz "
-                        f"({'stable' if stable[point] else 'unstable'})", fontsize=10)
+        right.set_title(f"Floquet multipliers at {freq[point]:.5g} kHz ({'stable' if stable[point] else 'unstable'})"
+                        + ("" if trusted[point] else "\nverdict untrusted: the discretized map's"), fontsize=10)
         wrapped_suptitle(fig, "breathers: " + chain_title(meta.get("chain", {})))
     return fig
