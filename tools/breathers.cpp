@@ -11,8 +11,8 @@
 #include "granular/io/atomic_file.hpp"
 #include "granular/io/hdf5_file.hpp"
 #include "granular/model/configuration_file.hpp"
-#include "granular/study/breather_branch.hpp"
-#include "granular/study/breather_parameters.hpp"
+#include "granular/orbits/breather_branch.hpp"
+#include "granular/orbits/breather_parameters.hpp"
 #include "granular/study/frequency_slips.hpp"
 
 int main(int argc, char** argv) {

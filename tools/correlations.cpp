@@ -9,7 +9,7 @@
 #include "common/tool_main.hpp"
 #include "granular/ensemble/run_options.hpp"
 #include "granular/io/atomic_file.hpp"
-#include "granular/study/correlation_files.hpp"
+#include "granular/files/correlation_files.hpp"
 
 int main(int argc, char** argv) {
   using namespace granular;

@@ -14,7 +14,7 @@
 #include "granular/io/atomic_file.hpp"
 #include "granular/parallel/mpi_context.hpp"
 #include "granular/study/chain_length_rule.hpp"
-#include "granular/study/exponent_files.hpp"
+#include "granular/files/exponent_files.hpp"
 #include "granular/study/frequency_slips.hpp"
 
 int main(int argc, char** argv) {

@@ -15,7 +15,7 @@
 #include "granular/io/range_syntax.hpp"
 #include "granular/study/frequency_slips.hpp"
 #include "granular/study/ipr_map_estimate.hpp"
-#include "granular/study/ipr_map_files.hpp"
+#include "granular/files/ipr_map_files.hpp"
 
 int main(int argc, char** argv) {
   using namespace granular;

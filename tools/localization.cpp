@@ -13,7 +13,7 @@
 #include "granular/io/atomic_file.hpp"
 #include "granular/io/range_syntax.hpp"
 #include "granular/number_format.hpp"
-#include "granular/study/localization_files.hpp"
+#include "granular/files/localization_files.hpp"
 
 int main(int argc, char** argv) {
   using namespace granular;

@@ -17,7 +17,7 @@
 #include "granular/io/hdf5_file.hpp"
 #include "granular/parallel/mpi_context.hpp"
 #include "granular/study/solve_estimate.hpp"
-#include "granular/study/spectrum_file.hpp"
+#include "granular/files/spectrum_file.hpp"
 
 int main(int argc, char** argv) {
   using namespace granular;

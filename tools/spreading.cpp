@@ -14,7 +14,7 @@
 #include "granular/ensemble/checkpoint_log.hpp"
 #include "granular/io/hdf5_file.hpp"
 #include "granular/parallel/mpi_context.hpp"
-#include "granular/study/spreading_files.hpp"
+#include "granular/files/spreading_files.hpp"
 
 int main(int argc, char** argv) {
   using namespace granular;

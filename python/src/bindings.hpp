@@ -24,7 +24,7 @@
 #include "granular/model/quasiperiodic.hpp"
 #include "granular/model/selected_chain.hpp"
 #include "granular/parameter_table.hpp"
-#include "granular/study/resumed_checkpoint.hpp"
+#include "granular/ensemble/resumed_checkpoint.hpp"
 
 namespace granular::python {
 

@@ -1,5 +1,5 @@
 // granular.breathers (keywords, defaults, docstring and result class in granular/_breathers.py):
-// the library's breather branch (study/breather_branch.hpp) on a granular.Chain, its arrays and
+// the library's breather branch (orbits/breather_branch.hpp) on a granular.Chain, its arrays and
 // the breathers tool's JSON.
 #include <cmath>
 #include <complex>
@@ -8,8 +8,8 @@
 
 #include "bindings.hpp"
 #include "granular/dynamics/scheme.hpp"
-#include "granular/study/breather_branch.hpp"
-#include "granular/study/breather_parameters.hpp"
+#include "granular/orbits/breather_branch.hpp"
+#include "granular/orbits/breather_parameters.hpp"
 #include "granular/study/frequency_slips.hpp"
 
 namespace granular::python {

@@ -17,7 +17,7 @@
 #include "granular/linear/sym_tridiagonal.hpp"
 #include "granular/model/named_chains.hpp"
 #include "granular/model/plausibility.hpp"
-#include "granular/study/spectrum_file.hpp"
+#include "granular/files/spectrum_file.hpp"
 
 namespace granular::python {
 namespace {

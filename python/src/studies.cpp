@@ -14,11 +14,11 @@
 #include "granular/model/named_chains.hpp"
 #include "granular/model/plausibility.hpp"
 #include "granular/study/butterfly.hpp"
-#include "granular/study/correlation_files.hpp"
+#include "granular/files/correlation_files.hpp"
 #include "granular/study/dynamical_butterfly.hpp"
 #include "granular/study/frequency_slips.hpp"
-#include "granular/study/ipr_map_files.hpp"
-#include "granular/study/localization_files.hpp"
+#include "granular/files/ipr_map_files.hpp"
+#include "granular/files/localization_files.hpp"
 
 namespace granular::python {
 namespace {

@@ -14,7 +14,7 @@
 
 #include "granular/dynamics/damping.hpp"
 #include "granular/dynamics/initial_conditions.hpp"
-#include "granular/dynamics/lyapunov_spectrum.hpp"
+#include "granular/chaos/lyapunov_spectrum.hpp"
 #include "granular/dynamics/observables.hpp"
 #include "granular/dynamics/propagator.hpp"
 #include "granular/dynamics/tangent_map.hpp"

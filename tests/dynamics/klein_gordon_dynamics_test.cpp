@@ -14,7 +14,7 @@
 
 #include "dynamics_fixtures.hpp"
 #include "granular/dynamics/damping.hpp"
-#include "granular/dynamics/lyapunov_spectrum.hpp"
+#include "granular/chaos/lyapunov_spectrum.hpp"
 #include "granular/dynamics/observables.hpp"
 #include "granular/dynamics/tangent_map.hpp"
 #include "granular/error.hpp"

@@ -1,6 +1,6 @@
 // How a long run goes, as front ends set it by the rows of long_run_parameters(): the refusals,
 // each naming its parameter, and an interrupted run's checkpoint continued or discarded, never
-// overwritten (study/resumed_checkpoint.hpp).
+// overwritten (ensemble/resumed_checkpoint.hpp).
 #include "granular/ensemble/run_options.hpp"
 
 #include <gtest/gtest.h>
@@ -10,7 +10,7 @@
 #include <fstream>
 
 #include "granular/error.hpp"
-#include "granular/study/resumed_checkpoint.hpp"
+#include "granular/ensemble/resumed_checkpoint.hpp"
 
 namespace granular {
 namespace {

@@ -27,7 +27,7 @@
 #include "granular/linear/mode_ipr.hpp"
 #include "granular/linear/spectrum.hpp"
 #include "granular/model/named_chains.hpp"
-#include "granular/study/spectrum_file.hpp"
+#include "granular/files/spectrum_file.hpp"
 
 namespace granular {
 namespace {

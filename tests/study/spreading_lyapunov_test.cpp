@@ -11,9 +11,9 @@
 #include <gtest/gtest.h>
 
 #include "dynamics/dynamics_fixtures.hpp"
-#include "granular/dynamics/alignment_indices.hpp"
+#include "granular/chaos/alignment_indices.hpp"
 #include "granular/dynamics/initial_conditions.hpp"
-#include "granular/dynamics/lyapunov_spectrum.hpp"
+#include "granular/chaos/lyapunov_spectrum.hpp"
 #include "granular/error.hpp"
 #include "granular/study/spreading_run.hpp"
 #include "granular/study/transport_study.hpp"

@@ -7,8 +7,8 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "granular/study/exponent_files.hpp"
-#include "granular/study/spreading_files.hpp"
+#include "granular/files/exponent_files.hpp"
+#include "granular/files/spreading_files.hpp"
 #include "scratch.hpp"
 
 namespace granular {

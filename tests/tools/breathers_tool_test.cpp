@@ -16,7 +16,7 @@
 
 #include "granular/linear/band_edges.hpp"
 #include "granular/model/named_chains.hpp"
-#include "study/breather_fixtures.hpp"
+#include "orbits/breather_fixtures.hpp"
 #include "tool_runner.hpp"
 
 namespace granular::testing {

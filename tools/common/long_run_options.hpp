@@ -17,7 +17,7 @@
 #include "granular/io/shell_quote.hpp"
 #include "granular/parallel/mpi_context.hpp"
 #include "granular/study/case_file.hpp"
-#include "granular/study/resumed_checkpoint.hpp"
+#include "granular/ensemble/resumed_checkpoint.hpp"
 #include "granular/study/transport_study.hpp"
 #include "outputs.hpp"
 #include "tool_main.hpp"

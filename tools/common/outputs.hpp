@@ -18,7 +18,7 @@
 #include "granular/io/output_paths.hpp"
 #include "granular/io/run_metadata.hpp"
 #include "granular/io/shell_quote.hpp"
-#include "granular/study/resumed_checkpoint.hpp"
+#include "granular/ensemble/resumed_checkpoint.hpp"
 
 namespace granular::tool {
 

@@ -1,7 +1,7 @@
 #pragma once
 // The options of `spreading`'s outputs beyond PREFIX.csv: the final state, the profile, force
 // series, the energy map (HDF5) and the spectral density g(ν), with their sampling (the files
-// themselves: study/spreading_files.hpp; the sampling's rows over the case, shared with Python:
+// themselves: files/spreading_files.hpp; the sampling's rows over the case, shared with Python:
 // study/spreading_outputs.hpp).
 #include <set>
 #include <string>

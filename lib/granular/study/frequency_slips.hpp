@@ -9,7 +9,7 @@
 
 #include "granular/linear/spectrum.hpp"
 #include "granular/model/chain_recipe.hpp"
-#include "granular/study/breather_branch.hpp"
+#include "granular/orbits/breather_branch.hpp"
 #include "granular/study/ipr_map.hpp"
 #include "granular/study/mode_kick.hpp"
 #include "granular/study/transport_study.hpp"

@@ -5,7 +5,7 @@
 // spectrum), so the `spreading` tool binds its flags and granular.spreading its keywords straight
 // to the case, with the observers' own defaults. Errors name the parameter (`forces_at`,
 // `map_samples`, `spectrum_of`); each front end tells it in its own words. Which files they go to
-// is the tool's (study/spreading_files.hpp).
+// is the tool's (files/spreading_files.hpp).
 #include "granular/parameter_table.hpp"
 #include "granular/study/transport_study.hpp"
 

@@ -15,7 +15,7 @@
 #include <optional>
 #include <vector>
 
-#include "granular/dynamics/lyapunov_spectrum.hpp"
+#include "granular/chaos/lyapunov_spectrum.hpp"
 #include "granular/dynamics/observers.hpp"
 #include "granular/dynamics/spread.hpp"
 #include "granular/dynamics/state.hpp"
