@@ -29,4 +29,9 @@ if(BUILD_TESTING)
            COMMAND /usr/bin/python3 ${CMAKE_SOURCE_DIR}/tests/docs/run_examples.py ${CMAKE_SOURCE_DIR}
                    ${CMAKE_BINARY_DIR} ${CMAKE_BINARY_DIR}/tests/docs-examples)
   set_tests_properties(docs_examples PROPERTIES LABELS docs TIMEOUT 1200 COST 90)
+  # Its extractor and runner on a synthetic page: a command block in a list item (fenced, indented)
+  # or an indented block runs, a failing one fails, a formula does not run (a second).
+  add_test(NAME docs_examples_self_test
+           COMMAND /usr/bin/python3 ${CMAKE_SOURCE_DIR}/tests/docs/run_examples.py --self-test)
+  set_tests_properties(docs_examples_self_test PROPERTIES LABELS docs)
 endif()

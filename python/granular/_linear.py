@@ -20,9 +20,9 @@ _CONFIG_DOC = """\
 faster, no eigenvectors) | 'bisect' | 'arpack' | 'slepc' (nearest/window)
     driver: LAPACK driver for every mode: 'stevd' (default) | 'stevr' | 'stemr' | 'steqr'
     vectors: also return the unit eigenvectors w of D (N x K array, column j = mode j)
-    tolerance: arpack/slepc Ritz tolerance (0: the tightest default)
-    subspace: arpack/slepc Krylov basis size (0: max(2K + 1, 20))
-    lanes: bisect: eigenvectors computed together, 1..64
+    tolerance: arpack/slepc Ritz tolerance (0: the tightest default; refused with another method)
+    subspace: arpack/slepc Krylov basis size (0: max(2K + 1, 20); refused with another method)
+    lanes: bisect: eigenvectors computed together, 1..64 (selected modes only: refused with every mode)
 """
 
 _document(DynamicalMatrix, "The symmetric tridiagonal dynamical matrix D = M^(-1/2) K M^(-1/2) [1/s^2] of a chain "

@@ -39,6 +39,11 @@ def test_breathers_rejects_bad_input():
         gr.breathers(gr.diatomic(N=21))
     with pytest.raises(TypeError):
         gr.breathers("not a chain", mode=3)
+    # Two seeds, or an offset from the seed with the start given: one would be ignored, so both are refused.
+    with pytest.raises(ValueError, match=r"^near: give either a seed mode number \(mode\) or a frequency"):
+        gr.breathers(gr.diatomic(N=21, xi=0.5), mode=3, near=30.0, max_points=1)
+    with pytest.raises(ValueError, match=r"^start_offset: takes effect only without start_khz"):
+        gr.breathers(gr.diatomic(N=21, xi=0.5), mode=3, start_khz=30.0, start_offset=1e-2, max_points=1)
 
 
 @pytest.mark.parametrize("name", ["tolerance", "stability_tolerance"])

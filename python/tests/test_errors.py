@@ -79,6 +79,13 @@ def test_spectrum_keywords():
     raises_naming("driver", gr.spectrum, CHAIN, driver="dsyev")
     raises_naming("lanes", gr.spectrum, CHAIN, near=5.0, count=2, method="bisect", lanes=0)
     raises_naming("tolerance", gr.spectrum, CHAIN, near=5.0, count=2, method="arpack", tolerance=NAN)
+    # a setting of a solver that does not run is refused, not ignored
+    assert "not with every mode" in raises_naming("lanes", gr.spectrum, CHAIN, lanes=4)
+    assert "method arpack or slepc, not method lapack" in raises_naming(
+        "tolerance", gr.spectrum, CHAIN, near=5.0, count=2, tolerance=1e-8)
+    raises_naming("subspace", gr.spectrum, CHAIN, near=5.0, count=2, method="bisect", subspace=30)
+    gr.spectrum(CHAIN, near=5.0, count=2, method="bisect", lanes=4)  # where they act they are taken
+    gr.spectrum(CHAIN, near=5.0, count=2, method="arpack", tolerance=1e-8, subspace=30)
     raises_naming("F0", gr.spectrum, gr.anderson(N=10, F0=0.0))  # the sonic vacuum has no linear spectrum
     raises_naming("F0", gr.dynamical_matrix, gr.anderson(N=10, F0=0.0))
 

@@ -372,7 +372,8 @@ TEST(BreatherCradle, ZeroPrecompressionNeedsOnsiteSprings) {
   c.law = ForceLawKind::fpu;
   EXPECT_EQ(parameter_of(c), "law");
   c.law = ForceLawKind::hertz;
-  c.start_khz = 1;  // below the on-site frequency: these breathers lie above it
+  c.start_offset = BreatherBranchConfig{}.start_offset;  // an offset with start_khz is refused: it takes no effect
+  c.start_khz = 1;                                       // below the on-site frequency: these breathers lie above it
   EXPECT_EQ(parameter_of(c), "start_khz");
   auto pressed = cradle_config(1e-2);
   pressed.chain.F0 = 10;

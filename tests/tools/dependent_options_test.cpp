@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <map>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "granular/parameter_names.hpp"
@@ -131,6 +132,35 @@ TEST(DependentOptions, DeviationSamplesAreRefusedWithoutTheirFile) {
   EXPECT_EQ(r.exit_code, 2) << r.err;
   EXPECT_EQ(r.err, "spreading: error: --deviation-samples: takes effect only with --deviation FILE (and --mle)\n");
   EXPECT_TRUE(std::filesystem::is_empty(dir));
+}
+
+// Settings of a solver or a seed that would not act are refused naming what they need, and taken
+// where they act: spectrum's --lanes (selected modes), --tolerance (ARPACK, SLEPc); breathers'
+// --near beside --mode (two seeds) and --start-offset beside --start-khz (the start is given).
+TEST(DependentOptions, SolverAndSeedSettingsThatWouldNotActAreRefused) {
+  const std::string dir = scratch_folder("dependent-solver-seed");
+  for (const auto& [tool, args, message] : std::vector<std::tuple<std::string, std::string, std::string>>{
+           {"spectrum", "--N 20 --lanes 4",
+            "--lanes: takes effect only with selected modes (--near or --window), not with every mode"},
+           {"spectrum", "--N 20 --near 15 --count 3 --tolerance 1e-8",
+            "--tolerance: takes effect only with --method arpack or slepc, not --method lapack"},
+           {"spectrum", "--N 20 --near 15 --count 3 --method bisect --tolerance 1e-8",
+            "--tolerance: takes effect only with --method arpack or slepc, not --method bisect"},
+           {"breathers", "--N 21 --mode 3 --near 30",
+            "--near: give either a seed mode number (--mode) or a frequency to seed from (--near), not both"},
+           {"breathers", "--N 21 --mode 3 --start-khz 30 --start-offset 1e-2",
+            "--start-offset: takes effect only without --start-khz (it places the first frequency off the "
+            "seed's), which is given"}}) {
+    const ToolResult r = run_tool_in(dir, tool, args + " --output out");
+    EXPECT_EQ(r.exit_code, 2) << tool << " " << args << ": " << r.err;
+    EXPECT_EQ(r.err, tool + ": error: " + message + "\n");
+  }
+  EXPECT_TRUE(std::filesystem::is_empty(dir));
+  for (const std::string args : {"--N 20 --near 15 --count 3 --method bisect --lanes 4",
+                                 "--N 20 --near 15 --count 3 --method arpack --tolerance 1e-8"}) {
+    const ToolResult r = run_tool_in(dir, "spectrum", args + " --quiet --output met");
+    EXPECT_EQ(r.exit_code, 0) << args << ": " << r.err;
+  }
 }
 
 // The three commands, as typed.

@@ -76,6 +76,17 @@ void validate(const SpectrumConfig& c, const ModeSelection& s) {
   if (!std::isfinite(c.tolerance) || c.tolerance < 0)
     throw InvalidInput("tolerance", " " + format_number(c.tolerance) + ": must be finite and >= 0");
   if (c.subspace < 0) throw InvalidInput("subspace", " " + std::to_string(c.subspace) + ": must be >= 0");
+  // A setting of a solver that does not run is refused, never ignored (a partial solve of any
+  // method falls back to bisect, so lanes act there; the fallback is never arpack or slepc).
+  const SpectrumConfig defaults;
+  if (every && c.lanes != defaults.lanes)
+    throw InvalidInput("lanes", ": takes effect only with selected modes (`near` or `window`), not with every mode");
+  const bool shift_invert = c.method == SpectrumMethod::arpack || c.method == SpectrumMethod::slepc;
+  for (const auto& [name, given] : {std::pair{"tolerance", c.tolerance != defaults.tolerance},
+                                    std::pair{"subspace", c.subspace != defaults.subspace}})
+    if (given && !shift_invert)
+      throw InvalidInput(name, ": takes effect only with `method` arpack or slepc, not `method` " +
+                                   std::string(to_string(c.method)));
 }
 
 struct SpectrumSolver::Workspace {

@@ -91,7 +91,8 @@ struct SpectrumConfig {
 };
 
 /// Throws InvalidInput (naming the field) on a method that cannot do the selection, fast with
-/// vectors, or lanes outside 1…64.
+/// vectors, lanes outside 1…64, or a setting that would take no effect: lanes with every mode,
+/// tolerance or subspace with a method other than arpack and slepc.
 void validate(const SpectrumConfig& config, const ModeSelection& selection);
 
 /// Memory [bytes] of every mode by method lapack for an N-bead chain: the N × N eigenvectors, the

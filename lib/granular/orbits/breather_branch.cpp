@@ -115,6 +115,15 @@ void validate(const BreatherBranchConfig& c) {
     if (c.mode != 0 || !std::isnan(c.near_khz))
       throw InvalidInput("seed_profile", ": give either a seed profile or a seed mode (mode, near_khz), not both");
   }
+  // Two seeds, or an offset from a seed with the start given: one would be silently ignored.
+  if (c.mode != 0 && !std::isnan(c.near_khz))
+    throw InvalidInput("near_khz",
+                       ": give either a seed mode number (`mode`) or a frequency to seed from "
+                       "(`near_khz`), not both");
+  if (!std::isnan(c.start_khz) && c.start_offset != BreatherBranchConfig{}.start_offset)
+    throw InvalidInput("start_offset",
+                       ": takes effect only without `start_khz` (it places the first frequency "
+                       "off the seed's), which is given");
   if (!vacuum && c.mode == 0 && std::isnan(c.near_khz) && std::isnan(c.start_khz))
     throw InvalidInput("mode", ": no seed: give a mode number, a frequency to seed from (near_khz) or start_khz");
   if (!c.seed_profile.empty() && c.site != 0)
