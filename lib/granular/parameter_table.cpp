@@ -13,6 +13,10 @@ void detail::refuse_unmet(const std::string& name, const Needs& needs, const std
   throw InvalidInput(name, problem);
 }
 
+void detail::refuse_overridden(const std::string& name, const std::string& choice) {
+  throw InvalidInput(name, ": takes no effect with `" + choice + "`; leave one of them out");
+}
+
 std::string deprecation_note(const std::string& former, const std::string& now) {
   return former + " is deprecated: use " + now + " (the old spelling goes in the next minor version)";
 }

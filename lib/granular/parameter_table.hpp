@@ -76,6 +76,9 @@ struct Parameter {
   std::optional<TextForm<Choices>> text{};
   /// The choice the parameter takes effect with (`angle`: `quasi` cylinders); none: always.
   std::optional<Needs> needs{};
+  /// Choices that leave this parameter without effect when they are on (`q` with `quasi`: the
+  /// chain's beads come from it). Given with one of them, the parameter is refused, not ignored.
+  std::vector<std::string> overridden_by{};
 
   /// Whether the text form is also Python's attribute (a word standing for a typed value: an
   /// enum, `integrator`); other text forms are the command line's only.
@@ -100,6 +103,12 @@ struct Parameter {
   /// This row, taking effect only with `choice` (set to one of `values`, if any).
   Parameter needing(std::string choice, std::vector<std::string> values = {}) && {
     needs = Needs{std::move(choice), std::move(values)};
+    return std::move(*this);
+  }
+
+  /// This row, without effect (and so refused when given) while any of `choices` is on.
+  Parameter overridden(std::vector<std::string> choices) && {
+    overridden_by = std::move(choices);
     return std::move(*this);
   }
 };
@@ -144,6 +153,28 @@ bool is_on(const T& v) {
 /// word when it is on (a word not among the values); when it is off, "" for a choice not given (a
 /// word, an optional) and "off" for a flag or number (0).
 [[noreturn]] void refuse_unmet(const std::string& name, const Needs& needs, const std::string& state);
+/// The refusal of a parameter given with a choice that overrides it (Parameter::overridden_by).
+[[noreturn]] void refuse_overridden(const std::string& name, const std::string& choice);
+
+/// Whether the choice of row `p` is on in `o` (a word given, a flag set, a number not 0, an
+/// optional set), and its word, lowercase, when it is one; `flag`: a flag or number (off, not absent).
+template <class Choices>
+bool choice_on(const Choices& o, const Parameter<Choices>& p, std::string& word, bool& flag) {
+  return std::visit(
+      [&]<class Field>(const Field& field) {
+        if constexpr (std::is_same_v<Field, std::monostate>) {
+          if (p.text) word = lowercase(p.text->write(o));  // a word form (`integrator`)
+          return !word.empty();
+        } else {
+          const auto& value = field(const_cast<Choices&>(o));
+          using T = std::remove_cvref_t<decltype(value)>;
+          if constexpr (std::is_same_v<T, std::string>) word = lowercase(value);
+          flag = std::is_arithmetic_v<T>;
+          return is_on(value);
+        }
+      },
+      p.field);
+}
 }  // namespace detail
 
 /// Whether `o` sets `p` to other than its default in `defaults` (a text form compared as written).
@@ -159,29 +190,22 @@ bool given(const Choices& o, const Parameter<Choices>& p, const Choices& default
 }
 
 /// Refuses every parameter of `table` that `o` gives (not its default in `defaults`) without the
-/// choice it needs (Parameter::needs): throws InvalidInput naming it and that choice, so an option
-/// never is silently ignored ("`angle`: takes effect only with `quasi` cylinders, not `quasi` s1").
+/// choice it needs (Parameter::needs), or with a choice that overrides it (Parameter::overridden_by):
+/// throws InvalidInput naming it and that choice, so an option never is silently ignored ("`angle`:
+/// takes effect only with `quasi` cylinders, not `quasi` s1"; "`q`: takes no effect with `quasi`").
 template <class Choices>
 void refuse_unmet_needs(const Choices& o, const ParameterTable<Choices>& table, const Choices& defaults = Choices{}) {
   for (const Parameter<Choices>& p : table) {
-    if (!p.needs || !given(o, p, defaults)) continue;
-    const Parameter<Choices>& needed = parameter(table, p.needs->choice);
+    if ((!p.needs && p.overridden_by.empty()) || !given(o, p, defaults)) continue;
+    for (const std::string& choice : p.overridden_by) {
+      std::string word;
+      bool flag = false;
+      if (detail::choice_on(o, parameter(table, choice), word, flag)) detail::refuse_overridden(p.name, choice);
+    }
+    if (!p.needs) continue;
     std::string word;   // the needed choice's word, lowercase
     bool flag = false;  // a flag or number: off rather than not given
-    const bool on = std::visit(
-        [&]<class Field>(const Field& field) {
-          if constexpr (std::is_same_v<Field, std::monostate>) {
-            if (needed.text) word = detail::lowercase(needed.text->write(o));  // a word form (`integrator`)
-            return !word.empty();
-          } else {
-            const auto& value = field(const_cast<Choices&>(o));
-            using T = std::remove_cvref_t<decltype(value)>;
-            if constexpr (std::is_same_v<T, std::string>) word = detail::lowercase(value);
-            flag = std::is_arithmetic_v<T>;
-            return detail::is_on(value);
-          }
-        },
-        needed.field);
+    const bool on = detail::choice_on(o, parameter(table, p.needs->choice), word, flag);
     const auto& values = p.needs->values;
     if (on && (values.empty() || std::find(values.begin(), values.end(), word) != values.end())) continue;
     detail::refuse_unmet(p.name, *p.needs, on ? word : flag ? "off" : "");

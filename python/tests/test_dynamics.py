@@ -102,9 +102,12 @@ def test_ensemble_of_a_bead_distribution_equals_the_spreading_tool(tools, keywor
     """transport(types=...) / transport(polydisperse=...) is spreading --types/--polydisperse --realizations: the
     case made by the same library rule (kicked_case), the same chains drawn."""
     flag = "--" + keyword
-    csv, meta = tools.run("spreading", "--disorder", "RDM1", "--N", "121", "--realizations", "3", flag, text,
-                          *SHORT_FLAGS, output="dist")
-    t = gr.transport(disorder="RDM1", N=121, realizations=3, **{keyword: text}, **SHORT)
+    rule = {"disorder": "RDM1"} if keyword == "types" else {}  # how k types are drawn; polydisperse radii: per bead
+    csv, meta = tools.run("spreading", *[w for k, v in rule.items() for w in ("--" + k, v)], "--N", "121",
+                          "--realizations", "3", flag, text, *SHORT_FLAGS, output="dist")
+    t = gr.transport(**rule, N=121, realizations=3, **{keyword: text}, **SHORT)
+    with pytest.raises(ValueError, match=r"disorder: takes no effect with polydisperse"):
+        gr.transport(disorder="RDM1", polydisperse="uniform:3e-3:4e-3", **SHORT)
     for key in ("t", "m2", "ipr", "energy_error"):
         assert_identical(t[key], csv[key])
     assert without_process_keys(t.metadata) == without_process_keys(meta)

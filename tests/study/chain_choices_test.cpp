@@ -64,7 +64,7 @@ TEST(ChainChoices, ReadTheBeadDistributionsAndTheQuasiperiodicChain) {
   EXPECT_EQ(types->radii, (std::vector<double>{4e-3, 3e-3}));
   o.types.clear(), o.polydisperse = "uniform:3e-3:5e-3";
   EXPECT_EQ(bead_distribution(o)->kind, BeadDistribution::Kind::uniform);
-  o.polydisperse.clear(), o.quasi = "cylinders", o.ratio = "1/3", o.modulation = 0.2;
+  o.polydisperse.clear(), o.disorder = "A", o.quasi = "cylinders", o.ratio = "1/3", o.modulation = 0.2;
   const auto q = quasiperiodic(o);
   ASSERT_TRUE(q);
   EXPECT_EQ(q->kind, Quasiperiodic::Kind::cylinders);

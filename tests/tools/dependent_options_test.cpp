@@ -6,6 +6,7 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <map>
 #include <string>
 #include <tuple>
@@ -105,6 +106,45 @@ TEST(DependentOptions, ChainOptionsAreRefusedWithoutTheChainTheyNeed) {
     EXPECT_EQ(r.err, "butterfly: error: " + message + "\n");
   }
   EXPECT_TRUE(std::filesystem::is_empty(dir));
+}
+
+// A chain option that another chain choice overrides (Parameter::overridden_by: `q` with `quasi`,
+// `xi` with `radii`, ...) is refused with it, naming both, for every pair of the table.
+TEST(DependentOptions, ChainOptionsAreRefusedWithTheChoiceThatOverridesThem) {
+  const std::string dir = scratch_folder("dependent-overridden");
+  {
+    std::ofstream radii(dir + "/chain.radii");
+    radii << "4e-3\n3e-3\n4e-3\n";
+  }
+  const std::map<std::string, std::string> values{{"disorder", "RDM1"}, {"xi", "0.6"}, {"q", "0.3"},
+                                                  {"R1", "5e-3"},       {"seed", "7"}, {"realization", "2"}};
+  const std::map<std::string, std::string> choices{{"config",
+                                                    "--config " GRANULAR_DATA_DIR "/examples/diatomic-10.types"},
+                                                   {"radii", "--radii " + dir + "/chain.radii"},
+                                                   {"types", "--types 4e-3:0.5,3e-3:0.5"},
+                                                   {"type_masses", "--type-masses 3.5e-3:0.5,1e-3:0.5"},
+                                                   {"polydisperse", "--polydisperse uniform:3e-3:5e-3"},
+                                                   {"quasi", "--quasi s2"},
+                                                   {"phase", "--quasi s2 --phase 0.4"}};
+  int pairs = 0;
+  for (const Parameter<ChainChoices>& p : chain_parameters())
+    for (const std::string& choice : p.overridden_by) {
+      ASSERT_TRUE(values.contains(p.name)) << p.name << " has no value here";
+      ASSERT_TRUE(choices.contains(choice)) << choice << " has no arguments here";
+      const std::string args = flag_of(p.name) + " " + values.at(p.name) + " " + choices.at(choice);
+      const ToolResult r = run_tool_in(dir, chain_run, chain_args + " " + args + " --output out");
+      EXPECT_EQ(r.exit_code, 2) << args << ": " << r.err;
+      EXPECT_EQ(r.err, "spectrum: error: " + flag_of(p.name) + ": takes no effect with " + flag_of(choice) +
+                           "; leave one of them out\n")
+          << args;
+      EXPECT_FALSE(std::filesystem::exists(dir + "/out.csv")) << args;
+      ++pairs;
+    }
+  EXPECT_GE(pairs, 20);
+  // Each value alone runs (the refusal is the pair's, not the value's).
+  for (const auto& [name, value] : values)
+    EXPECT_EQ(run_tool_in(dir, chain_run, chain_args + " " + flag_of(name) + " " + value + " --output alone").exit_code, 0)
+        << name;
 }
 
 TEST(DependentOptions, RunOptionsAreRefusedWithoutTheChoiceTheyNeed) {

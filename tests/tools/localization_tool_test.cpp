@@ -133,12 +133,13 @@ TEST(LocalizationTool, FilesGiveTheSameChainAsTheRandomRealization) {
     for (auto v : types) t << int(v) << "\n";
     for (double v : radii) r << format_number(v) << "\n";
   }
-  const std::string common = " --xi 0.6 --f 1:40:1 --quiet --output ";
+  const std::string common = " --f 1:40:1 --quiet --output ";  // (--xi is the radii file's own)
   ASSERT_EQ(run_tool("localization",
-                     "--disorder RDM2 --q 0.3 --N 5000 --seed 4 --realization 2" + common + dir + "/random")
+                     "--disorder RDM2 --q 0.3 --N 5000 --seed 4 --realization 2 --xi 0.6" + common + dir + "/random")
                 .exit_code,
             0);
-  ASSERT_EQ(run_tool("localization", "--config " + dir + "/chain.types" + common + dir + "/types").exit_code, 0);
+  ASSERT_EQ(run_tool("localization", "--config " + dir + "/chain.types --xi 0.6" + common + dir + "/types").exit_code,
+            0);
   ASSERT_EQ(run_tool("localization", "--radii " + dir + "/chain.radii" + common + dir + "/radii").exit_code, 0);
   const std::string random = read_file(dir + "/random.csv");
   EXPECT_EQ(random, read_file(dir + "/types.csv"));

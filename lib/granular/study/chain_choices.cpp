@@ -12,24 +12,35 @@ const ParameterTable<ChainChoices>& chain_parameters() {
   using O = ChainChoices;
   using P = Parameter<O>;
   static const ParameterTable<O> table{
-      {"disorder", &O::disorder, "h | A | RDM1 | RDM2 (homogeneous, Anderson, random dimer 1/2)"},
-      {"xi", &O::xi, "size ratio R2/R1 in (0,1]"},
-      {"q", &O::q, "probability of a type-1 bead (A), dimer 11 (RDM1) or dimer 12 (RDM2), in [0,1]"},
+      P{"disorder", &O::disorder, "h | A | RDM1 | RDM2 (homogeneous, Anderson, random dimer 1/2)"}.overridden(
+          {"config", "radii", "polydisperse", "quasi"}),
+      P{"xi", &O::xi, "size ratio R2/R1 in (0,1]"}.overridden(
+          {"radii", "types", "type_masses", "polydisperse", "quasi"}),
+      P{"q", &O::q, "probability of a type-1 bead (A), dimer 11 (RDM1) or dimer 12 (RDM2), in [0,1]"}.overridden(
+          {"config", "radii", "types", "type_masses", "polydisperse", "quasi"}),
       {"N", &O::n, "beads in the chain (>= 2)"},
       {"F0", &O::f0, "static precompression [N]"},
-      {"R1", &O::r1, "radius of type-1 beads [m] (steel beads and steel walls; `quasi`: of every bead or cylinder)"},
+      P{"R1", &O::r1, "radius of type-1 beads [m] (steel beads and steel walls; `quasi`: of every bead or cylinder)"}
+          .overridden({"radii", "types", "type_masses", "polydisperse"}),
       {"walls", &O::walls,
        "flat (the paper's) | sphere: fixed spheres of the end beads' radius and material, the textbook fixed-end "
        "lattice"},
-      {"seed", &O::seed, "random seed"},
-      {"realization", &O::realization,
-       "which realization of the seed (0-based; `quasi`: which phase, unless `phase` fixes it)"},
-      {"config", &O::config, "file with one bead type (1 or 2) per line, '#' comments; overrides `disorder`/`q`/`N`",
+      P{"seed", &O::seed, "random seed"}.overridden({"config", "radii"}),
+      P{"realization", &O::realization,
+        "which realization of the seed (0-based; `quasi`: which phase, unless `phase` fixes it)"}
+          .overridden({"config", "radii", "phase"}),
+      {"config", &O::config,
+       "file with one bead type (1 or 2) per line, '#' comments; its length is N (not with `disorder`, `q`, `seed`, "
+       "`realization`)",
        false},
-      {"radii", &O::radii, "file with one radius [m] per line, '#' comments; overrides `disorder`/`q`/`N`/`xi`", false},
+      {"radii", &O::radii,
+       "file with one radius [m] per line, '#' comments; its length is N (not with `disorder`, `q`, `xi`, `R1`, "
+       "`seed`, "
+       "`realization`)",
+       false},
       {"types", &O::types,
        "k bead types 'R1:P1,R2:P2,...' (radius [m]: probability) drawn by `disorder` A (each bead), RDM1 (each "
-       "dimer) or RDM2 (two types); overrides `q`/`xi`/`R1`",
+       "dimer) or RDM2 (two types); not with `q`, `xi`, `R1`",
        false},
       {"type_masses", &O::type_masses, "as `types` with masses [kg] of steel spheres: 'M1:P1,M2:P2,...'", false},
       {"polydisperse", &O::polydisperse,

@@ -23,6 +23,8 @@ std::string comma_joined(const std::vector<std::string>& words) {
 /// The chain beyond the kinds that `o` asks for, if any, under its name.
 std::optional<BeadChain> chain_of_ones_own(const ExponentChoices& o) {
   ChainChoices drawn = o.beads;
+  const ChainChoices plain;  // the draw's own choices belong to the kinds' chains, not to this one
+  drawn.q = plain.q, drawn.xi = plain.xi, drawn.r1 = plain.r1;
   const bool typed = !drawn.types.empty() || !drawn.type_masses.empty();
   if (!o.types_rule.empty() && !typed)
     throw InvalidInput("types_rule", " '" + o.types_rule + "': only with `types` or `type_masses`");
