@@ -8,8 +8,8 @@
 #include "common/outputs.hpp"
 #include "common/tool_main.hpp"
 #include "granular/ensemble/run_options.hpp"
-#include "granular/io/atomic_file.hpp"
 #include "granular/files/correlation_files.hpp"
+#include "granular/io/atomic_file.hpp"
 
 int main(int argc, char** argv) {
   using namespace granular;

@@ -11,11 +11,11 @@
 #include "common/tool_main.hpp"
 #include "granular/ensemble/parallel_realizations.hpp"
 #include "granular/ensemble/run_options.hpp"
+#include "granular/files/ipr_map_files.hpp"
 #include "granular/io/atomic_file.hpp"
 #include "granular/io/range_syntax.hpp"
 #include "granular/study/frequency_slips.hpp"
 #include "granular/study/ipr_map_estimate.hpp"
-#include "granular/files/ipr_map_files.hpp"
 
 int main(int argc, char** argv) {
   using namespace granular;

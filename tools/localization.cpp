@@ -10,10 +10,10 @@
 #include "common/tool_main.hpp"
 #include "granular/ensemble/parallel_realizations.hpp"
 #include "granular/ensemble/run_options.hpp"
+#include "granular/files/localization_files.hpp"
 #include "granular/io/atomic_file.hpp"
 #include "granular/io/range_syntax.hpp"
 #include "granular/number_format.hpp"
-#include "granular/files/localization_files.hpp"
 
 int main(int argc, char** argv) {
   using namespace granular;

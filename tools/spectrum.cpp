@@ -13,11 +13,11 @@
 #include "common/outputs.hpp"
 #include "common/spectrum_options.hpp"
 #include "common/tool_main.hpp"
+#include "granular/files/spectrum_file.hpp"
 #include "granular/io/atomic_file.hpp"
 #include "granular/io/hdf5_file.hpp"
 #include "granular/parallel/mpi_context.hpp"
 #include "granular/study/solve_estimate.hpp"
-#include "granular/files/spectrum_file.hpp"
 
 int main(int argc, char** argv) {
   using namespace granular;

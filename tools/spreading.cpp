@@ -12,9 +12,9 @@
 #include "common/spreading_outputs.hpp"
 #include "common/tool_main.hpp"
 #include "granular/ensemble/checkpoint_log.hpp"
+#include "granular/files/spreading_files.hpp"
 #include "granular/io/hdf5_file.hpp"
 #include "granular/parallel/mpi_context.hpp"
-#include "granular/files/spreading_files.hpp"
 
 int main(int argc, char** argv) {
   using namespace granular;

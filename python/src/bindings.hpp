@@ -18,13 +18,13 @@
 #include <pybind11/stl.h>
 #include <nlohmann/json.hpp>
 
+#include "granular/ensemble/resumed_checkpoint.hpp"
 #include "granular/model/chain.hpp"
 #include "granular/model/chain_recipe.hpp"
 #include "granular/model/disorder.hpp"
 #include "granular/model/quasiperiodic.hpp"
 #include "granular/model/selected_chain.hpp"
 #include "granular/parameter_table.hpp"
-#include "granular/ensemble/resumed_checkpoint.hpp"
 
 namespace granular::python {
 

@@ -12,15 +12,15 @@
 
 #include "bindings.hpp"
 #include "granular/ensemble/checkpoint_log.hpp"
+#include "granular/files/exponent_files.hpp"
+#include "granular/files/spreading_files.hpp"
 #include "granular/model/quasiperiodic.hpp"
 #include "granular/study/case_settling.hpp"
 #include "granular/study/exponent_choices.hpp"
-#include "granular/files/exponent_files.hpp"
 #include "granular/study/exponent_table.hpp"
 #include "granular/study/frequency_slips.hpp"
 #include "granular/study/kicked_case.hpp"
 #include "granular/study/paper_comparison.hpp"
-#include "granular/files/spreading_files.hpp"
 #include "granular/study/spreading_outputs.hpp"
 #include "granular/study/transport_parameters.hpp"
 

@@ -10,6 +10,7 @@
 
 #include "bindings.hpp"
 #include "granular/error.hpp"
+#include "granular/files/spectrum_file.hpp"
 #include "granular/linear/band_edges.hpp"
 #include "granular/linear/dynamical_matrix.hpp"
 #include "granular/linear/mode_selection_choices.hpp"
@@ -17,7 +18,6 @@
 #include "granular/linear/sym_tridiagonal.hpp"
 #include "granular/model/named_chains.hpp"
 #include "granular/model/plausibility.hpp"
-#include "granular/files/spectrum_file.hpp"
 
 namespace granular::python {
 namespace {

@@ -10,15 +10,15 @@
 #include "granular/ensemble/parallel_realizations.hpp"
 #include "granular/ensemble/run_options.hpp"
 #include "granular/error.hpp"
+#include "granular/files/correlation_files.hpp"
+#include "granular/files/ipr_map_files.hpp"
+#include "granular/files/localization_files.hpp"
 #include "granular/model/bead_source.hpp"
 #include "granular/model/named_chains.hpp"
 #include "granular/model/plausibility.hpp"
 #include "granular/study/butterfly.hpp"
-#include "granular/files/correlation_files.hpp"
 #include "granular/study/dynamical_butterfly.hpp"
 #include "granular/study/frequency_slips.hpp"
-#include "granular/files/ipr_map_files.hpp"
-#include "granular/files/localization_files.hpp"
 
 namespace granular::python {
 namespace {

@@ -12,9 +12,9 @@
 #include <benchmark/benchmark.h>
 #include <boost/numeric/odeint.hpp>
 
+#include "granular/chaos/lyapunov_spectrum.hpp"
 #include "granular/dynamics/damping.hpp"
 #include "granular/dynamics/initial_conditions.hpp"
-#include "granular/chaos/lyapunov_spectrum.hpp"
 #include "granular/dynamics/observables.hpp"
 #include "granular/dynamics/propagator.hpp"
 #include "granular/dynamics/tangent_map.hpp"

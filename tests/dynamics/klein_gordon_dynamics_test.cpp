@@ -13,8 +13,8 @@
 #include <gtest/gtest.h>
 
 #include "dynamics_fixtures.hpp"
-#include "granular/dynamics/damping.hpp"
 #include "granular/chaos/lyapunov_spectrum.hpp"
+#include "granular/dynamics/damping.hpp"
 #include "granular/dynamics/observables.hpp"
 #include "granular/dynamics/tangent_map.hpp"
 #include "granular/error.hpp"

@@ -9,8 +9,8 @@
 #include <filesystem>
 #include <fstream>
 
-#include "granular/error.hpp"
 #include "granular/ensemble/resumed_checkpoint.hpp"
+#include "granular/error.hpp"
 
 namespace granular {
 namespace {

@@ -20,6 +20,7 @@
 #include <hdf5.h>
 
 #include "granular/error.hpp"
+#include "granular/files/spectrum_file.hpp"
 #include "granular/linear/band_edges.hpp"
 #include "granular/linear/detail/lapack_eigensolver.hpp"
 #include "granular/linear/detail/shift_invert_eigensolvers.hpp"
@@ -27,7 +28,6 @@
 #include "granular/linear/mode_ipr.hpp"
 #include "granular/linear/spectrum.hpp"
 #include "granular/model/named_chains.hpp"
-#include "granular/files/spectrum_file.hpp"
 
 namespace granular {
 namespace {

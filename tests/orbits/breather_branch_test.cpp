@@ -16,13 +16,13 @@
 
 #include "breather_fixtures.hpp"
 #include "granular/detail/euclidean_norm.hpp"
-#include "granular/orbits/periodic_orbit.hpp"
 #include "granular/dynamics/propagator.hpp"
 #include "granular/error.hpp"
 #include "granular/linear/band_edges.hpp"
 #include "granular/linear/dynamical_matrix.hpp"
 #include "granular/linear/spectrum.hpp"
 #include "granular/orbits/breather_branch.hpp"
+#include "granular/orbits/periodic_orbit.hpp"
 #include "scratch.hpp"
 
 namespace granular {

@@ -12,12 +12,12 @@
 
 #include <gtest/gtest.h>
 
-#include "granular/orbits/floquet.hpp"
 #include "granular/error.hpp"
 #include "granular/linear/band_edges.hpp"
 #include "granular/linear/dynamical_matrix.hpp"
 #include "granular/linear/spectrum.hpp"
 #include "granular/orbits/breather_branch.hpp"
+#include "granular/orbits/floquet.hpp"
 
 namespace granular {
 namespace {

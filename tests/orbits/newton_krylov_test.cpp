@@ -12,14 +12,14 @@
 #include <gtest/gtest.h>
 
 #include "granular/detail/euclidean_norm.hpp"
-#include "granular/orbits/detail/shooting_krylov.hpp"
-#include "granular/orbits/floquet.hpp"
-#include "granular/orbits/periodic_orbit.hpp"
 #include "granular/error.hpp"
 #include "granular/linear/band_edges.hpp"
 #include "granular/linear/dynamical_matrix.hpp"
 #include "granular/linear/spectrum.hpp"
 #include "granular/orbits/breather_branch.hpp"
+#include "granular/orbits/detail/shooting_krylov.hpp"
+#include "granular/orbits/floquet.hpp"
+#include "granular/orbits/periodic_orbit.hpp"
 
 namespace granular {
 namespace {

@@ -10,11 +10,11 @@
 #include <gtest/gtest.h>
 
 #include "dynamics/dynamics_fixtures.hpp"
-#include "granular/orbits/floquet.hpp"
-#include "granular/orbits/periodic_orbit.hpp"
 #include "granular/error.hpp"
 #include "granular/linear/dynamical_matrix.hpp"
 #include "granular/linear/spectrum.hpp"
+#include "granular/orbits/floquet.hpp"
+#include "granular/orbits/periodic_orbit.hpp"
 
 namespace granular {
 namespace {

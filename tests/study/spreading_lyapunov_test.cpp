@@ -12,8 +12,8 @@
 
 #include "dynamics/dynamics_fixtures.hpp"
 #include "granular/chaos/alignment_indices.hpp"
-#include "granular/dynamics/initial_conditions.hpp"
 #include "granular/chaos/lyapunov_spectrum.hpp"
+#include "granular/dynamics/initial_conditions.hpp"
 #include "granular/error.hpp"
 #include "granular/study/spreading_run.hpp"
 #include "granular/study/transport_study.hpp"

@@ -13,11 +13,11 @@
 #include <CLI/CLI.hpp>
 
 #include "granular/ensemble/interrupt.hpp"
+#include "granular/ensemble/resumed_checkpoint.hpp"
 #include "granular/ensemble/run_options.hpp"
 #include "granular/io/shell_quote.hpp"
 #include "granular/parallel/mpi_context.hpp"
 #include "granular/study/case_file.hpp"
-#include "granular/ensemble/resumed_checkpoint.hpp"
 #include "granular/study/transport_study.hpp"
 #include "outputs.hpp"
 #include "tool_main.hpp"

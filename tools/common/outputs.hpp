@@ -13,12 +13,12 @@
 
 #include <CLI/CLI.hpp>
 
+#include "granular/ensemble/resumed_checkpoint.hpp"
 #include "granular/error.hpp"
 #include "granular/io/output_claim.hpp"
 #include "granular/io/output_paths.hpp"
 #include "granular/io/run_metadata.hpp"
 #include "granular/io/shell_quote.hpp"
-#include "granular/ensemble/resumed_checkpoint.hpp"
 
 namespace granular::tool {
 

@@ -5,10 +5,10 @@
 #include <cstdio>
 #include <string>
 
+#include "granular/chaos/lyapunov_spectrum.hpp"
 #include "granular/detail/memory_limit.hpp"
 #include "granular/dynamics/detail/dense_lapack.hpp"
 #include "granular/dynamics/detail/random_deviations.hpp"
-#include "granular/chaos/lyapunov_spectrum.hpp"
 #include "granular/error.hpp"
 
 namespace granular {

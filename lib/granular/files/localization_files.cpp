@@ -1,8 +1,8 @@
 #include "granular/files/localization_files.hpp"
 
 #include <nlohmann/json.hpp>
-#include "granular/io/csv_writer.hpp"
 #include "granular/files/spectrum_file.hpp"
+#include "granular/io/csv_writer.hpp"
 
 namespace granular {
 

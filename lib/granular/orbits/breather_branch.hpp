@@ -23,11 +23,11 @@
 
 #include <nlohmann/json_fwd.hpp>
 
-#include "granular/orbits/floquet.hpp"
 #include "granular/dynamics/force_law.hpp"
-#include "granular/orbits/periodic_orbit.hpp"
 #include "granular/io/hdf5_file.hpp"
 #include "granular/model/chain_recipe.hpp"
+#include "granular/orbits/floquet.hpp"
+#include "granular/orbits/periodic_orbit.hpp"
 
 namespace granular {
 

@@ -4,8 +4,8 @@
 // flags and granular.breathers its keywords straight to the config, with its own defaults, and
 // validate(BreatherBranchConfig) checks them. Not rows: the chain (the chain options, a
 // granular.Chain) and the seed profile (the tool reads --seed-file, Python takes an array).
-#include "granular/parameter_table.hpp"
 #include "granular/orbits/breather_branch.hpp"
+#include "granular/parameter_table.hpp"
 
 namespace granular {
 

@@ -7,9 +7,9 @@
 
 #include "granular/detail/enum_names.hpp"
 #include "granular/dynamics/detail/dense_lapack.hpp"
-#include "granular/orbits/detail/floquet_verdict.hpp"
 #include "granular/dynamics/tangent_map.hpp"
 #include "granular/error.hpp"
+#include "granular/orbits/detail/floquet_verdict.hpp"
 
 namespace granular {
 namespace {

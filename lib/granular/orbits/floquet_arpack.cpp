@@ -11,9 +11,9 @@
 #include <vector>
 
 #include "granular/detail/euclidean_norm.hpp"
+#include "granular/error.hpp"
 #include "granular/orbits/detail/floquet_verdict.hpp"
 #include "granular/orbits/floquet.hpp"
-#include "granular/error.hpp"
 
 extern "C" {
 void dnaupd_(int* ido, const char* bmat, const int* n, const char* which, const int* nev, const double* tol,

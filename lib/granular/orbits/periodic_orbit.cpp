@@ -11,10 +11,10 @@
 #include "granular/detail/enum_names.hpp"
 #include "granular/detail/euclidean_norm.hpp"
 #include "granular/dynamics/detail/dense_lapack.hpp"
-#include "granular/orbits/detail/shooting_krylov.hpp"
 #include "granular/dynamics/tangent_map.hpp"
 #include "granular/error.hpp"
 #include "granular/number_format.hpp"
+#include "granular/orbits/detail/shooting_krylov.hpp"
 
 namespace granular {
 namespace {

@@ -19,11 +19,11 @@
 #include <Eigen/Sparse>
 #include <unsupported/Eigen/IterativeSolvers>
 
-#include "granular/orbits/detail/shooting_krylov.hpp"
 #include "granular/dynamics/tangent_map.hpp"
 #include "granular/error.hpp"
 #include "granular/linear/dynamical_matrix.hpp"
 #include "granular/linear/spectrum.hpp"
+#include "granular/orbits/detail/shooting_krylov.hpp"
 
 namespace granular::detail {
 namespace {
