@@ -49,7 +49,8 @@ struct KleinGordonRun {
 KleinGordonRun run_klein_gordon(const KleinGordonRunConfig& config, std::uint64_t realization);
 
 /// Realizations 0 … count − 1 and their means (index order; bit-identical for any `threads`,
-/// 0: resolve_threads' default).
+/// 0: resolve_threads' default). Throws as run_klein_gordon, and InvalidInput naming
+/// `realizations` for count 0.
 struct KleinGordonEnsemble {
   std::vector<double> time;
   std::vector<double> m2, participation, mle;  ///< means over the realizations
