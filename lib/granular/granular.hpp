@@ -31,6 +31,7 @@
 #include "granular/dynamics/force_law.hpp"
 #include "granular/dynamics/initial_conditions.hpp"
 #include "granular/dynamics/integrator.hpp"
+#include "granular/dynamics/klein_gordon_run.hpp"
 #include "granular/dynamics/observables.hpp"
 #include "granular/dynamics/observer.hpp"
 #include "granular/dynamics/observers.hpp"

@@ -21,7 +21,8 @@ const ParameterTable<RunOptions>& long_run_parameters() {
 
 void validate(const RunOptions& o) {
   if (o.threads < 0 || o.threads > 4096)
-    throw InvalidInput("threads", " " + std::to_string(o.threads) + ": 0 (every core) to 4096");
+    // append, not " " + to_string(…): GCC 12's -Wrestrict misfires on the latter in some unity batches.
+    throw InvalidInput("threads", std::string(" ").append(std::to_string(o.threads)).append(": 0 (every core) to 4096"));
   if (o.resuming() && o.fresh)
     throw InvalidInput("fresh", ": not with `resume` (continue, or start again: one of them)");
   if (o.resuming() && o.checkpoint.empty())
