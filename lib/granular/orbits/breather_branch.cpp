@@ -164,7 +164,7 @@ std::vector<double> onsite_breather_seed(const Chain& chain, double omega, std::
   const auto phi = [](double d) { return std::sqrt(std::abs(d)) * d; };
   const auto slope = [](double d) { return 1.5 * std::sqrt(std::abs(d)); };
   // The uniform chain's profile and its Λ = 2 (1 − s_1)^{3/2} (ω_b² − k/m = Λ c A a^{1/2} / m), to a
-  // few % (tests/study/breather_cradle_test.cpp solves it: Λ = 4.4537): Newton's first guess.
+  // few % (tests/orbits/breather_cradle_test.cpp solves it: Λ = 4.4537): Newton's first guess.
   constexpr std::array<double, 6> shape{1, -0.705, 0.237, -0.033, 0.0014, -1.2e-5};
   constexpr double lambda = 4.45;
   const double root = detuning / (c * lambda * 0.5 * (chain.contact[site] + chain.contact[site + 1]));
