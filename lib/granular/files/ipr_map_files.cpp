@@ -6,12 +6,7 @@
 
 namespace granular {
 
-std::string ipr_map_disorder(const IprMapConfig& config) {
-  if (const auto* quasi = config.chain.as<Quasiperiodic>()) return "quasi-" + to_string(quasi->kind);
-  if (const auto* beads = config.chain.as<BeadDistribution>())
-    return beads->kind == BeadDistribution::Kind::types ? "types" : "polydisperse";
-  return to_string(config.chain.draw().disorder);
-}
+std::string ipr_map_disorder(const IprMapConfig& config) { return source_name(config.chain); }
 
 void write_ipr_map_csv(std::ostream& out, const IprMapConfig& config, const std::vector<IprMapCell>& cells) {
   const std::string name = ipr_map_disorder(config);

@@ -182,6 +182,17 @@ std::vector<double> ChainRecipe::possible_radii() const {
       source);
 }
 
+std::string source_name(const ChainRecipe& c) {
+  return std::visit(Cases{[](const TwoTypeDraw& d) { return to_string(d.disorder); },
+                          [](const BeadDistribution& b) {
+                            return std::string(b.kind == BeadDistribution::Kind::types ? "types" : "polydisperse");
+                          },
+                          [](const GivenTypes&) { return std::string("config"); },
+                          [](const GivenRadii&) { return std::string("radii"); },
+                          [](const Quasiperiodic& q) { return "quasi-" + to_string(q.kind); }},
+                    c.source);
+}
+
 void validate(const ChainRecipe& c, std::size_t max_beads) {
   if (c.as<Quasiperiodic>() && c.walls != WallShape::flat)
     throw InvalidInput("walls", ": a quasiperiodic chain has its own walls (flat; fixed cylinders for the cylinders)");

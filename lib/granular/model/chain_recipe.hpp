@@ -122,6 +122,11 @@ struct ChainRecipe {
   std::vector<double> possible_radii() const;
 };
 
+/// The kind of chain a recipe's source makes, in one word (the IPR map's "disorder" column): the
+/// draw's rule (h, A, RDM1, RDM2), types or polydisperse (a distribution), config or radii (given
+/// beads), quasi-KIND.
+std::string source_name(const ChainRecipe& recipe);
+
 /// Throws InvalidInput naming the field (N, q, xi, F0, R1, material, beads, radii, types; the
 /// quasiperiodic fields of quasiperiodic.hpp).
 /// `max_beads`: the largest N allowed (a stored chain: 1e8; a streamed two-type draw: 1e12).
