@@ -57,7 +57,7 @@ int main(int argc, char** argv) {
           throw InvalidInput("segments", " " + std::to_string(segments) + ": must be in [2, 1e6]");
         validate(run);
         config.segments = static_cast<std::size_t>(segments);
-        const StreamedChain chain = tool::stream_chain(chain_options);
+        const StreamedChain chain = tool::stream_chain(chain_options, localization_chain());
         for (double f : config.frequency_khz)  // the first one above the chain's frequencies
           if (tool::warn({frequency_warning("--f", f, chain.highest_frequency_khz)})) break;
         validate(config);

@@ -63,7 +63,7 @@ py::dict localization(const PyChain* chain, const ChainChoices& choices, const L
     s.description = chain->description;
     s.highest_frequency_khz = highest_frequency_bound_khz(chain->recipe);
   } else {
-    s = stream_chain(choices, front_end_word);
+    s = stream_chain(choices, front_end_word, localization_chain());
     warn(s.warnings);
   }
   const std::unique_ptr<BeadSource>& beads = s.beads;

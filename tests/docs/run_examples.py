@@ -58,6 +58,8 @@ SKIP = {("README.md", "bash tools/install-deps.sh && cmake -S . -B build"): BUIL
         ("docs/performance.md", "cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DGRANULAR_WERROR=ON && cmake "
                                 "--build build -j2\nbuild/tests/test_linear"):
             BUILDS_THE_TREE + ", then the IPR-map comparison (minutes of timings)",
+        ("docs/chaos.md", "c++ -std=c++20 -O2 -I lib examples/dkg_weak_chaos.cpp"):
+            "the weak-chaos study (100 s of CPU); ctest install_downstream builds and runs the example",
         ("docs/performance.md", "build/benchmarks/ipr_map_benchmark"):
             "what run_ipr_map_comparison.sh runs, three times interleaved (minutes of timings)",
         ("docs/performance.md", "tests/benchmarks/partial_spectrum_scaling.sh"):

@@ -153,8 +153,11 @@ class SpreadingToolBadInput : public ::testing::TestWithParam<BadInput> {};
 
 TEST_P(SpreadingToolBadInput, ExitsWithCode2AndWritesNothing) {
   const fs::path dir = fresh_dir("bad");
+  const std::string& args = GetParam().args;
+  const bool file = args.find("--config") != std::string::npos || args.find("--radii") != std::string::npos;
   const ToolRun r =
-      run_spreading(std::string("--N 101 --T 1e-4 --output out --final-state final.csv ") + GetParam().args, dir);
+      run_spreading((file ? "" : "--N 101 ") + std::string("--T 1e-4 --output out --final-state final.csv ") + args,
+                    dir);
   EXPECT_EQ(r.code, 2) << r.err;
   EXPECT_NE(r.err.find(GetParam().names), std::string::npos) << r.err;
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;

@@ -52,9 +52,11 @@ inline RadiusNames radius_options(const ChainOptions& o) {
   return radius_names(o, [](const std::string& p) { return option_name(front_end_word(p)); });
 }
 
-/// The chain the options pick, streamed (granular::stream_chain), its warnings printed.
-inline StreamedChain stream_chain(const ChainOptions& o) {
-  StreamedChain s = granular::stream_chain(o, [](const std::string& p) { return option_name(front_end_word(p)); });
+/// The chain the options pick, streamed (granular::stream_chain), its warnings printed; `defaults`:
+/// the tool's own (what "given" is told against).
+inline StreamedChain stream_chain(const ChainOptions& o, const ChainOptions& defaults) {
+  StreamedChain s = granular::stream_chain(
+      o, [](const std::string& p) { return option_name(front_end_word(p)); }, defaults);
   warn(s.warnings);
   return s;
 }

@@ -18,7 +18,7 @@ const ParameterTable<ChainChoices>& chain_parameters() {
           {"radii", "types", "type_masses", "polydisperse", "quasi"}),
       P{"q", &O::q, "probability of a type-1 bead (A), dimer 11 (RDM1) or dimer 12 (RDM2), in [0,1]"}.overridden(
           {"config", "radii", "types", "type_masses", "polydisperse", "quasi"}),
-      {"N", &O::n, "beads in the chain (>= 2)"},
+      P{"N", &O::n, "beads in the chain (>= 2)"}.overridden({"config", "radii"}),
       {"F0", &O::f0, "static precompression [N]"},
       P{"R1", &O::r1, "radius of type-1 beads [m] (steel beads and steel walls; `quasi`: of every bead or cylinder)"}
           .overridden({"radii", "types", "type_masses", "polydisperse"}),
@@ -30,12 +30,12 @@ const ParameterTable<ChainChoices>& chain_parameters() {
         "which realization of the seed (0-based; `quasi`: which phase, unless `phase` fixes it)"}
           .overridden({"config", "radii", "phase"}),
       {"config", &O::config,
-       "file with one bead type (1 or 2) per line, '#' comments; its length is N (not with `disorder`, `q`, `seed`, "
-       "`realization`)",
+       "file with one bead type (1 or 2) per line, '#' comments; its length is the chain's (not with `N`, `disorder`, "
+       "`q`, `seed`, `realization`)",
        false},
       {"radii", &O::radii,
-       "file with one radius [m] per line, '#' comments; its length is N (not with `disorder`, `q`, `xi`, `R1`, "
-       "`seed`, "
+       "file with one radius [m] per line, '#' comments; its length is the chain's (not with `N`, `disorder`, `q`, "
+       "`xi`, `R1`, `seed`, "
        "`realization`)",
        false},
       {"types", &O::types,
@@ -83,9 +83,9 @@ void require_one_source(const ChainChoices& o) {
 
 }  // namespace
 
-std::optional<Quasiperiodic> quasiperiodic(const ChainChoices& o) {
+std::optional<Quasiperiodic> quasiperiodic(const ChainChoices& o, const ChainChoices& defaults) {
   require_one_source(o);
-  refuse_unmet_needs(o, chain_parameters());  // `angle` with `quasi` s1 is refused, not ignored
+  refuse_unmet_needs(o, chain_parameters(), defaults);  // `angle` with `quasi` s1 is refused, not ignored
   if (o.quasi.empty()) return std::nullopt;
   return Quasiperiodic{.kind = parse_quasi_kind(o.quasi),
                        .modulation = o.modulation,
@@ -109,21 +109,22 @@ RadiusNames radius_names(const ChainChoices& o, const std::function<std::string(
   return {told("R1"), told(distribution), told("radii"), told("angle"), told("modulation")};
 }
 
-StreamedChain stream_chain(const ChainChoices& o, const std::function<std::string(const std::string&)>& told) {
+StreamedChain stream_chain(const ChainChoices& o, const std::function<std::string(const std::string&)>& told,
+                           const ChainChoices& defaults) {
   std::vector<std::string> file_warnings;
-  const ChainRecipe recipe = chain_recipe(o, file_warnings);
+  const ChainRecipe recipe = chain_recipe(o, file_warnings, defaults);
   StreamedChain s = stream_chain(recipe, chain_realization(o), radius_names(o, told));
   s.warnings.insert(s.warnings.begin(), file_warnings.begin(), file_warnings.end());
   return s;
 }
 
-ChainRecipe chain_recipe(const ChainChoices& o, std::vector<std::string>& warnings) {
+ChainRecipe chain_recipe(const ChainChoices& o, std::vector<std::string>& warnings, const ChainChoices& defaults) {
   if (o.seed < 0) throw InvalidInput("seed", " " + std::to_string(o.seed) + ": must be >= 0");
   if (o.realization < 0) throw InvalidInput("realization", " " + std::to_string(o.realization) + ": must be >= 0");
   if (o.n < 2) throw InvalidInput("N", " " + std::to_string(o.n) + ": a chain needs at least 2 beads");
   ChainRecipe r{.R1 = o.r1, .N = static_cast<std::size_t>(o.n), .F0 = o.f0, .seed = static_cast<std::uint64_t>(o.seed)};
   r.walls = parse_wall_shape(o.walls);
-  if (auto quasi = quasiperiodic(o)) r.source = *quasi;
+  if (auto quasi = quasiperiodic(o, defaults)) r.source = *quasi;
   else if (auto beads = bead_distribution(o)) r.source = *beads;
   else if (!o.config.empty())
     r.source = GivenTypes{.types = read_configuration_file(o.config), .xi = o.xi, .file = o.config};

@@ -52,8 +52,11 @@ const ParameterTable<ChainChoices>& chain_parameters();
 
 /// The quasiperiodic chain of the choices, if `quasi` is given. Throws InvalidInput naming
 /// `quasi` or `ratio`, or naming the second of `config`, `radii`, `types`, `type_masses`,
-/// `polydisperse` and `quasi` given (a chain comes from one of them; bead_distribution too).
-std::optional<Quasiperiodic> quasiperiodic(const ChainChoices& o);
+/// `polydisperse` and `quasi` given (a chain comes from one of them; bead_distribution too), or a
+/// choice given without what it needs or with what overrides it (refuse_unmet_needs). `defaults`:
+/// the front end's own defaults of the choices, against which "given" is told (a kicked case's N
+/// is 2501, the localization tool's 1e6).
+std::optional<Quasiperiodic> quasiperiodic(const ChainChoices& o, const ChainChoices& defaults = {});
 
 /// The distribution of `types`, `type_masses` or `polydisperse` (the first given; rule:
 /// `disorder`), if one is. Throws InvalidInput naming the choice.
@@ -61,8 +64,8 @@ std::optional<BeadDistribution> bead_distribution(const ChainChoices& o);
 
 /// The recipe of the choices, files read (not yet validated: a streamed chain has its own limits;
 /// `seed`, `realization` and `n` are checked here). Each implausible radius of a radii file is
-/// a line of `warnings` (file and line named).
-ChainRecipe chain_recipe(const ChainChoices& o, std::vector<std::string>& warnings);
+/// a line of `warnings` (file and line named). `defaults`: as for quasiperiodic().
+ChainRecipe chain_recipe(const ChainChoices& o, std::vector<std::string>& warnings, const ChainChoices& defaults = {});
 
 /// How a front end's user names the choices that set radii, for the warnings about implausible
 /// ones (model/plausibility.hpp): `R1`, the bead distribution given (`types`, `type_masses` or
@@ -76,6 +79,8 @@ inline std::uint64_t chain_realization(const ChainChoices& o) { return static_ca
 /// model/selected_chain.hpp): a tool's chain options and a Python call's chain keywords make it
 /// by this one rule. Warnings (a radii file's implausible radii) name the choices as `told`
 /// tells them (a tool: its flag; Python: its keyword). Throws InvalidInput naming the choice.
-StreamedChain stream_chain(const ChainChoices& o, const std::function<std::string(const std::string&)>& told);
+/// `defaults`: as for quasiperiodic().
+StreamedChain stream_chain(const ChainChoices& o, const std::function<std::string(const std::string&)>& told,
+                           const ChainChoices& defaults = {});
 
 }  // namespace granular

@@ -35,7 +35,7 @@ std::optional<BeadChain> chain_of_ones_own(const ExponentChoices& o) {
     throw InvalidInput("types_rule", " '" + drawn.disorder + "': expected A, RDM1 or RDM2");
   }
   const std::string& name = o.chain_name;
-  if (const auto q = quasiperiodic(drawn))
+  if (const auto q = quasiperiodic(drawn, ExponentChoices{}.beads))
     return BeadChain{name.empty() ? "quasi-" + to_string(q->kind) : name, {}, *q};
   if (const auto beads = bead_distribution(drawn)) {
     const bool types = beads->kind == BeadDistribution::Kind::types;

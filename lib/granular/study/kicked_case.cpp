@@ -25,7 +25,7 @@ KickedCase kicked_case(const KickedCaseChoices& o, bool ensemble, const RadiusNa
   KickedCase k;  // (not an aggregate initializer: GCC 12 destroys its members twice when one throws)
   TransportCase& c = k.c;
   c = o.run;
-  c.chain = chain_recipe(o.chain, k.warnings);  // with auto_n, N 3 until sized below
+  c.chain = chain_recipe(o.chain, k.warnings, KickedCaseChoices{}.chain);  // with auto_n, N 3 until sized below
   c.kick = parse_kick(o.ic);
   apply(o.mode, {c.kick}, c);
   fit_within_duration(c);  // a window beyond T: no exponents, a note
