@@ -14,7 +14,10 @@ void detail::refuse_unmet(const std::string& name, const Needs& needs, const std
 }
 
 void detail::refuse_overridden(const std::string& name, const std::string& choice) {
-  throw InvalidInput(name, ": takes no effect with `" + choice + "`; leave one of them out");
+  const std::size_t space = choice.find(' ');  // "disorder h": the choice, then its word
+  const std::string told =
+      space == std::string::npos ? "`" + choice + "`" : "`" + choice.substr(0, space) + "` " + choice.substr(space + 1);
+  throw InvalidInput(name, ": takes no effect with " + told + "; leave one of them out");
 }
 
 std::string deprecation_note(const std::string& former, const std::string& now) {

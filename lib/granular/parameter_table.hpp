@@ -77,7 +77,8 @@ struct Parameter {
   /// The choice the parameter takes effect with (`angle`: `quasi` cylinders); none: always.
   std::optional<Needs> needs{};
   /// Choices that leave this parameter without effect when they are on (`q` with `quasi`: the
-  /// chain's beads come from it). Given with one of them, the parameter is refused, not ignored.
+  /// chain's beads come from it), or set to one of the words after the name ("disorder h
+  /// homogeneous": `q` with one bead type). Given with one, the parameter is refused, not ignored.
   std::vector<std::string> overridden_by{};
 
   /// Whether the text form is also Python's attribute (a word standing for a typed value: an
@@ -197,10 +198,16 @@ template <class Choices>
 void refuse_unmet_needs(const Choices& o, const ParameterTable<Choices>& table, const Choices& defaults = Choices{}) {
   for (const Parameter<Choices>& p : table) {
     if ((!p.needs && p.overridden_by.empty()) || !given(o, p, defaults)) continue;
-    for (const std::string& choice : p.overridden_by) {
+    for (const std::string& entry : p.overridden_by) {
+      const std::string choice = entry.substr(0, entry.find(' '));
       std::string word;
       bool flag = false;
-      if (detail::choice_on(o, parameter(table, choice), word, flag)) detail::refuse_overridden(p.name, choice);
+      if (!detail::choice_on(o, parameter(table, choice), word, flag)) continue;
+      const std::string values =
+          entry.size() > choice.size() ? detail::lowercase(entry.substr(choice.size())) + " " : "";
+      if (values.empty()) detail::refuse_overridden(p.name, choice);
+      else if (values.find(" " + word + " ") != std::string::npos)
+        detail::refuse_overridden(p.name, choice + " " + word);
     }
     if (!p.needs) continue;
     std::string word;   // the needed choice's word, lowercase

@@ -118,24 +118,27 @@ TEST(DependentOptions, ChainOptionsAreRefusedWithTheChoiceThatOverridesThem) {
   }
   const std::map<std::string, std::string> values{{"disorder", "RDM1"}, {"xi", "0.6"}, {"q", "0.3"},        {"N", "50"},
                                                   {"R1", "5e-3"},       {"seed", "7"}, {"realization", "2"}};
-  const std::map<std::string, std::string> choices{{"config",
-                                                    "--config " GRANULAR_DATA_DIR "/examples/diatomic-10.types"},
-                                                   {"radii", "--radii " + dir + "/chain.radii"},
-                                                   {"types", "--types 4e-3:0.5,3e-3:0.5"},
-                                                   {"type_masses", "--type-masses 3.5e-3:0.5,1e-3:0.5"},
-                                                   {"polydisperse", "--polydisperse uniform:3e-3:5e-3"},
-                                                   {"quasi", "--quasi s2"},
-                                                   {"phase", "--quasi s2 --phase 0.4"}};
+  // Each overriding choice: its arguments, and how the message tells it.
+  const std::map<std::string, std::pair<std::string, std::string>> choices{
+      {"config", {"--config " GRANULAR_DATA_DIR "/examples/diatomic-10.types", "--config"}},
+      {"radii", {"--radii " + dir + "/chain.radii", "--radii"}},
+      {"types", {"--types 4e-3:0.5,3e-3:0.5", "--types"}},
+      {"type_masses", {"--type-masses 3.5e-3:0.5,1e-3:0.5", "--type-masses"}},
+      {"polydisperse", {"--polydisperse uniform:3e-3:5e-3", "--polydisperse"}},
+      {"quasi", {"--quasi s2", "--quasi"}},
+      {"phase", {"--quasi s2 --phase 0.4", "--phase"}},
+      {"disorder h homogeneous", {"--disorder h", "--disorder h"}}};
   int pairs = 0;
   for (const Parameter<ChainChoices>& p : chain_parameters())
     for (const std::string& choice : p.overridden_by) {
       ASSERT_TRUE(values.contains(p.name)) << p.name << " has no value here";
       ASSERT_TRUE(choices.contains(choice)) << choice << " has no arguments here";
-      const std::string args = flag_of(p.name) + " " + values.at(p.name) + " " + choices.at(choice);
+      const auto& [choice_args, told] = choices.at(choice);
+      const std::string args = flag_of(p.name) + " " + values.at(p.name) + " " + choice_args;
       const ToolResult r = run_tool_in(dir, chain_run, "--quiet " + args + " --output out");
       EXPECT_EQ(r.exit_code, 2) << args << ": " << r.err;
-      EXPECT_EQ(r.err, "spectrum: error: " + flag_of(p.name) + ": takes no effect with " + flag_of(choice) +
-                           "; leave one of them out\n")
+      EXPECT_EQ(r.err,
+                "spectrum: error: " + flag_of(p.name) + ": takes no effect with " + told + "; leave one of them out\n")
           << args;
       EXPECT_FALSE(std::filesystem::exists(dir + "/out.csv")) << args;
       ++pairs;

@@ -40,7 +40,7 @@ TEST(IprMapTool, OneHomogeneousRealizationEqualsTheSpectrumTool) {
                          "/h.csv")
                 .exit_code,
             0);
-  ASSERT_EQ(run_tool("spectrum", "--disorder h --N 12 --xi 1 --output " + dir + "/s.csv").exit_code, 0);
+  ASSERT_EQ(run_tool("spectrum", "--disorder h --N 12 --output " + dir + "/s.csv").exit_code, 0);
   std::istringstream map(read_file(dir + "/h.csv")), spec(read_file(dir + "/s.csv"));
   std::string a, b;
   std::getline(map, a);

@@ -15,9 +15,9 @@ const ParameterTable<ChainChoices>& chain_parameters() {
       P{"disorder", &O::disorder, "h | A | RDM1 | RDM2 (homogeneous, Anderson, random dimer 1/2)"}.overridden(
           {"config", "radii", "polydisperse", "quasi"}),
       P{"xi", &O::xi, "size ratio R2/R1 in (0,1]"}.overridden(
-          {"radii", "types", "type_masses", "polydisperse", "quasi"}),
+          {"radii", "types", "type_masses", "polydisperse", "quasi", "disorder h homogeneous"}),
       P{"q", &O::q, "probability of a type-1 bead (A), dimer 11 (RDM1) or dimer 12 (RDM2), in [0,1]"}.overridden(
-          {"config", "radii", "types", "type_masses", "polydisperse", "quasi"}),
+          {"config", "radii", "types", "type_masses", "polydisperse", "quasi", "disorder h homogeneous"}),
       P{"N", &O::n, "beads in the chain (>= 2)"}.overridden({"config", "radii"}),
       {"F0", &O::f0, "static precompression [N]"},
       P{"R1", &O::r1, "radius of type-1 beads [m] (steel beads and steel walls; `quasi`: of every bead or cylinder)"}
@@ -25,10 +25,10 @@ const ParameterTable<ChainChoices>& chain_parameters() {
       {"walls", &O::walls,
        "flat (the paper's) | sphere: fixed spheres of the end beads' radius and material, the textbook fixed-end "
        "lattice"},
-      P{"seed", &O::seed, "random seed"}.overridden({"config", "radii"}),
+      P{"seed", &O::seed, "random seed"}.overridden({"config", "radii", "disorder h homogeneous"}),
       P{"realization", &O::realization,
         "which realization of the seed (0-based; `quasi`: which phase, unless `phase` fixes it)"}
-          .overridden({"config", "radii", "phase"}),
+          .overridden({"config", "radii", "phase", "disorder h homogeneous"}),
       {"config", &O::config,
        "file with one bead type (1 or 2) per line, '#' comments; its length is the chain's (not with `N`, `disorder`, "
        "`q`, `seed`, `realization`)",
