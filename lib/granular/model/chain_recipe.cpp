@@ -19,6 +19,8 @@ template <class... F>
 struct Cases : F... {
   using F::operator()...;
 };
+template <class... F>
+Cases(F...) -> Cases<F...>;  // Clang 14 does not deduce an aggregate's arguments (P1816) itself
 
 // What identifies a types or radii file in a case: the values read from it (types as integers,
 // radii to 17 digits, one a line; comments and spacing do not count), hashed (FNV-1a 64, hex).
