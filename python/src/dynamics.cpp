@@ -169,15 +169,12 @@ void bind_dynamics(py::module_& m) {
   using R = ChainRecipe;
   // The source (a sum type in C++) as granular/_model.py fills it: setting `quasi`, `given_radii` or
   // `given_types` chooses that source; `disorder`, `q` and `xi` set the two-type draw's (ξ: given types' too).
-  const auto draw_field = [](double TwoTypeDraw::*field) {
-    return [field](R& r, double value) { r.draw().*field = value; };
-  };
   config_class(m, "ChainRecipe", "R1 N F0 material seed", &R::R1, &R::N, &R::F0, &R::material, &R::seed)
       .def_property(
           "disorder", [](const R& r) { return to_string(r.draw().disorder); },
           [](R& r, const std::string& name) { r.draw().disorder = disorder_of(name); })
       .def_property(
-          "q", [](const R& r) { return r.draw().q; }, draw_field(&TwoTypeDraw::q))
+          "q", [](const R& r) { return r.draw().q; }, [](R& r, double q) { r.draw().q = q; })
       .def_property(
           "xi", [](const R& r) { return r.xi(); },
           [](R& r, double xi) {

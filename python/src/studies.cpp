@@ -46,7 +46,7 @@ py::dict ipr_map(IprMapConfig c, const ChainChoices& beads, const std::string& s
     out_cells.append(fields("q xi freq_khz ipr mode realization bin_modes bin_ipr", cell.q, cell.xi,
                             std::move(cell.freq_khz), std::move(cell.ipr), cell.mode, cell.realization, cell.bin_modes,
                             std::move(cell.bin_ipr)));
-  return fields("disorder N bin_khz q xi selection cells metadata", ipr_map_disorder(c), c.chain.N, c.bin_khz,
+  return fields("disorder N bin_khz q xi selection cells metadata", source_name(c.chain), c.chain.N, c.bin_khz,
                 c.q_values, c.xi_values, c.selection.kind != ModeSelection::Kind::all, out_cells, meta);
 }
 

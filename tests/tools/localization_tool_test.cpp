@@ -209,7 +209,7 @@ TEST(LocalizationTool, BadInputExitsTwoWithOneLineAndNoOutput) {
     { std::ofstream(dir + "/old.csv") << "precious\n"; }
     for (const std::string out : {"/new", "/old"}) {
       std::string baseline;  // a quick valid run, for the options the case leaves alone
-      const bool file = c.args.find("--config") != std::string::npos || c.args.find("--radii") != std::string::npos;
+      const bool file = reads_chain_file(c.args);
       if (c.args.find("--N ") == std::string::npos && !file) baseline += " --N 1000";  // (a file sets N)
       if (c.args.find("--f ") == std::string::npos) baseline += " --f 1:2";
       const ToolResult r = run_tool("localization", c.args + baseline + " --output " + dir + out);

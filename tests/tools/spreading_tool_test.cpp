@@ -154,7 +154,7 @@ class SpreadingToolBadInput : public ::testing::TestWithParam<BadInput> {};
 TEST_P(SpreadingToolBadInput, ExitsWithCode2AndWritesNothing) {
   const fs::path dir = fresh_dir("bad");
   const std::string& args = GetParam().args;
-  const bool file = args.find("--config") != std::string::npos || args.find("--radii") != std::string::npos;
+  const bool file = granular::testing::reads_chain_file(args);
   const ToolRun r =
       run_spreading((file ? "" : "--N 101 ") + std::string("--T 1e-4 --output out --final-state final.csv ") + args,
                     dir);

@@ -39,6 +39,11 @@ inline ToolResult run_tool_in(const std::string& dir, const std::string& tool, c
 
 inline ToolResult run_tool(const std::string& tool, const std::string& args) { return run_tool_in("", tool, args); }
 
+/// Whether `args` read the chain from a file (--config or --radii), which then sets N.
+inline bool reads_chain_file(const std::string& args) {
+  return args.find("--config") != std::string::npos || args.find("--radii") != std::string::npos;
+}
+
 inline std::string read_file(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   std::stringstream text;

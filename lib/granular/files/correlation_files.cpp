@@ -14,14 +14,13 @@ void write_correlations_csv(std::ostream& out, const CorrelationResult& result) 
 nlohmann::json describe_correlations(const CorrelationConfig& config, const CorrelationResult& result) {
   nlohmann::json meta;
   const auto* beads = config.chain.as<BeadDistribution>();
-  const TwoTypeDraw draw = beads ? TwoTypeDraw{.disorder = beads->rule} : config.chain.draw();
-  meta["parameters"] = {{"disorder", to_string(draw.disorder)},
-                        {"q", draw.q},
+  meta["parameters"] = {{"disorder", to_string(beads ? beads->rule : config.chain.draw().disorder)},
                         {"N", config.chain.N},
                         {"realizations", config.realizations},
                         {"seed", config.chain.seed},
                         {"max_distance", config.max_distance}};
   if (beads) meta["parameters"]["beads"] = describe(*beads);
+  else meta["parameters"]["q"] = config.chain.draw().q;  // a bead distribution has no q
   meta["correlated"] = beads ? "bead mass" : "bead type (type 1 -> 0, type 2 -> 1)";
   meta["realizations_used"] = result.used;
   return meta;

@@ -6,10 +6,8 @@
 
 namespace granular {
 
-std::string ipr_map_disorder(const IprMapConfig& config) { return source_name(config.chain); }
-
 void write_ipr_map_csv(std::ostream& out, const IprMapConfig& config, const std::vector<IprMapCell>& cells) {
-  const std::string name = ipr_map_disorder(config);
+  const std::string name = source_name(config.chain);
   if (config.selection.kind != ModeSelection::Kind::all) {  // modes differ between chains
     CsvWriter table(out, {"disorder", "q", "xi", "realization", "mode", "freq_khz", "ipr"});
     for (const auto& cell : cells)
@@ -34,7 +32,7 @@ nlohmann::json describe_ipr_map(const IprMapConfig& config, const std::vector<Ip
                                 const IprMapRequest& request) {
   const ChainRecipe& chain = config.chain;
   nlohmann::json meta;
-  meta["parameters"] = {{"disorder", ipr_map_disorder(config)},
+  meta["parameters"] = {{"disorder", source_name(config.chain)},
                         {"xi", config.xi_values},
                         {"q", config.q_values},
                         {"N", chain.N},

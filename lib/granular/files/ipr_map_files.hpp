@@ -11,10 +11,6 @@
 
 namespace granular {
 
-/// The name of the map's beads: the disorder rule (h, A, RDM1, RDM2), or "types" / "polydisperse"
-/// for a bead distribution, "quasi-s1" / "quasi-s2" / "quasi-cylinders" for a quasiperiodic chain.
-std::string ipr_map_disorder(const IprMapConfig& config);
-
 /// Every mode: disorder,q,xi,mode,freq_khz,ipr (means over realizations by mode number).
 /// With bin_khz > 0: disorder,q,xi,freq_lo_khz,freq_hi_khz,modes,ipr (modes of all realizations
 /// in the bin; empty bins: modes 0, ipr nan). With a selection: disorder,q,xi,realization,mode,
