@@ -9,6 +9,7 @@
 #include <Eigen/Core>
 
 #include "granular/error.hpp"
+#include "granular/linear/sparse_symmetric.hpp"
 #include "granular/linear/sym_tridiagonal.hpp"
 
 namespace granular {
@@ -45,6 +46,10 @@ ShiftInvertResult arpack_nearest(const SymTridiagonal& t, double sigma, const Sh
 /// and finalizes it at exit. Loads the SLEPc component (slepc_component.hpp) on first use: throws
 /// IoError when it is missing, InvalidInput when this build has no SLEPc.
 ShiftInvertResult slepc_nearest(const SymTridiagonal& t, double sigma, const ShiftInvertConfig& config);
+
+/// SLEPc shift-invert of a sparse symmetric matrix (a crystal's dynamical matrix), collective as
+/// above: every rank passes the same matrix and assembles only the rows PETSc gives it.
+ShiftInvertResult slepc_nearest(const SparseSymmetric& a, double sigma, const ShiftInvertConfig& config);
 
 /// True when the library was built with SLEPc (its component may still be missing at run time).
 bool have_slepc();

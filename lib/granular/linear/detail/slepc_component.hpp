@@ -11,6 +11,8 @@ struct SlepcComponent {
   /// slepc_nearest() itself: collective over MPI_COMM_WORLD, starts SLEPc on first use and
   /// ends it at exit.
   ShiftInvertResult (*nearest)(const SymTridiagonal& t, double sigma, const ShiftInvertConfig& config);
+  /// The same for a sparse symmetric matrix (each rank assembles the rows it owns).
+  ShiftInvertResult (*nearest_sparse)(const SparseSymmetric& a, double sigma, const ShiftInvertConfig& config);
 };
 
 }  // namespace granular::detail

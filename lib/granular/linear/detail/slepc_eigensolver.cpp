@@ -4,9 +4,11 @@
 // PETSc/SLEPc, compiled only when the build has SLEPc.
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <cstdlib>
 #include <numeric>
 #include <string>
+#include <vector>
 
 #include "granular/error.hpp"
 #include "granular/linear/detail/shift_invert_eigensolvers.hpp"
@@ -55,11 +57,13 @@ struct Owned {
 
 }  // namespace
 
+/// The eigenpairs of the assembled n × n matrix `a` nearest σ (the solve both matrix kinds share).
+ShiftInvertResult solve_nearest(Mat a, PetscInt n, double sigma, const ShiftInvertConfig& config);
+
 /// slepc_nearest() (shift_invert_eigensolvers.hpp), inside the component.
 ShiftInvertResult slepc_shift_invert(const SymTridiagonal& t, double sigma, const ShiftInvertConfig& config) {
   const PetscInt n = static_cast<PetscInt>(t.size());
-  const PetscInt nev = config.count;
-  require_nearest_count("SLEPc", t.size(), nev);
+  require_nearest_count("SLEPc", t.size(), config.count);
   if (!std::isfinite(sigma)) throw InvalidInput("SLEPc", ": the shift must be finite");
   ensure_started();
 
@@ -85,10 +89,48 @@ ShiftInvertResult slepc_shift_invert(const SymTridiagonal& t, double sigma, cons
   }
   check(MatAssemblyBegin(a.p, MAT_FINAL_ASSEMBLY), "MatAssemblyBegin");
   check(MatAssemblyEnd(a.p, MAT_FINAL_ASSEMBLY), "MatAssemblyEnd");
+  return solve_nearest(a.p, n, sigma, config);
+}
 
+/// slepc_nearest() of a sparse matrix, inside the component: each rank sets its own rows.
+ShiftInvertResult slepc_shift_invert_sparse(const SparseSymmetric& m, double sigma, const ShiftInvertConfig& config) {
+  const PetscInt n = static_cast<PetscInt>(m.size());
+  require_nearest_count("SLEPc", m.size(), config.count);
+  if (!std::isfinite(sigma)) throw InvalidInput("SLEPc", ": the shift must be finite");
+  ensure_started();
+
+  // PETSc's own split of the rows (PetscSplitOwnership), so that this rank can count its entries
+  // inside and outside its diagonal block and preallocate exactly before assembling.
+  PetscInt local = PETSC_DECIDE, global = n, first = 0;
+  check(PetscSplitOwnership(PETSC_COMM_WORLD, &local, &global), "PetscSplitOwnership");
+  check(MPI_Scan(&local, &first, 1, MPIU_INT, MPI_SUM, PETSC_COMM_WORLD), "MPI_Scan");
+  first -= local;
+  const PetscInt last = first + local;
+  std::vector<PetscInt> inside(static_cast<std::size_t>(local)), outside(inside.size());
+  for (PetscInt i = first; i < last; ++i)
+    for (std::size_t k = m.row_start[i]; k < m.row_start[i + 1]; ++k) {
+      const auto j = static_cast<PetscInt>(m.column[k]);
+      ++(j >= first && j < last ? inside : outside)[static_cast<std::size_t>(i - first)];
+    }
+  Owned<Mat, MatDestroy> a;
+  check(MatCreateAIJ(PETSC_COMM_WORLD, local, local, n, n, 0, inside.data(), 0, outside.data(), &a.p), "MatCreateAIJ");
+  std::vector<PetscInt> cols;
+  for (PetscInt i = first; i < last; ++i) {
+    const std::size_t b = m.row_start[i], e = m.row_start[i + 1];
+    cols.assign(m.column.begin() + static_cast<std::ptrdiff_t>(b), m.column.begin() + static_cast<std::ptrdiff_t>(e));
+    check(MatSetValues(a.p, 1, &i, static_cast<PetscInt>(e - b), cols.data(), m.value.data() + b, INSERT_VALUES),
+          "MatSetValues");
+  }
+  check(MatAssemblyBegin(a.p, MAT_FINAL_ASSEMBLY), "MatAssemblyBegin");
+  check(MatAssemblyEnd(a.p, MAT_FINAL_ASSEMBLY), "MatAssemblyEnd");
+  return solve_nearest(a.p, n, sigma, config);
+}
+
+ShiftInvertResult solve_nearest(Mat a, PetscInt n, double sigma, const ShiftInvertConfig& config) {
+  const PetscInt nev = config.count;
   Owned<EPS, EPSDestroy> eps;
   check(EPSCreate(PETSC_COMM_WORLD, &eps.p), "EPSCreate");
-  check(EPSSetOperators(eps.p, a.p, nullptr), "EPSSetOperators");
+  check(EPSSetOperators(eps.p, a, nullptr), "EPSSetOperators");
   check(EPSSetProblemType(eps.p, EPS_HEP), "EPSSetProblemType");
   check(EPSSetType(eps.p, EPSKRYLOVSCHUR), "EPSSetType");
   const PetscInt ncv = config.subspace > 0 ? std::min<PetscInt>(n, std::max<PetscInt>(config.subspace, nev + 1))
@@ -141,7 +183,7 @@ ShiftInvertResult slepc_shift_invert(const SymTridiagonal& t, double sigma, cons
   out.vectors.resize(n, nev);
   Owned<Vec, VecDestroy> x, all;
   Owned<VecScatter, VecScatterDestroy> scatter;
-  check(MatCreateVecs(a.p, &x.p, nullptr), "MatCreateVecs");
+  check(MatCreateVecs(a, &x.p, nullptr), "MatCreateVecs");
   check(VecScatterCreateToAll(x.p, &scatter.p, &all.p), "VecScatterCreateToAll");
   for (PetscInt j = 0; j < nev; ++j) {
     check(EPSGetEigenpair(eps.p, order[j], nullptr, nullptr, x.p, nullptr), "EPSGetEigenpair");
@@ -160,6 +202,7 @@ ShiftInvertResult slepc_shift_invert(const SymTridiagonal& t, double sigma, cons
 }  // namespace granular
 
 const granular::detail::SlepcComponent* granular_slepc_component() {
-  static const granular::detail::SlepcComponent component{&granular::slepc_shift_invert};
+  static const granular::detail::SlepcComponent component{&granular::slepc_shift_invert,
+                                                          &granular::slepc_shift_invert_sparse};
   return &component;
 }

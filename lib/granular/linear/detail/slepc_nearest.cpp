@@ -17,10 +17,19 @@ ShiftInvertResult slepc_nearest(const SymTridiagonal& t, double sigma, const Shi
   return component->nearest(t, sigma, config);
 }
 
+ShiftInvertResult slepc_nearest(const SparseSymmetric& a, double sigma, const ShiftInvertConfig& config) {
+  static const detail::SlepcComponent* const component =
+      GRANULAR_COMPONENT_TABLE(detail::SlepcComponent, slepc, "the SLEPc method");
+  return component->nearest_sparse(a, sigma, config);
+}
+
 #else  // no SLEPc in this build
 
 bool have_slepc() { return false; }
 ShiftInvertResult slepc_nearest(const SymTridiagonal&, double, const ShiftInvertConfig&) {
+  throw InvalidInput("method", " slepc: this build has no SLEPc (configure with -DGRANULAR_WITH_SLEPC=ON)");
+}
+ShiftInvertResult slepc_nearest(const SparseSymmetric&, double, const ShiftInvertConfig&) {
   throw InvalidInput("method", " slepc: this build has no SLEPc (configure with -DGRANULAR_WITH_SLEPC=ON)");
 }
 
