@@ -117,7 +117,8 @@ Packing make_packing(const PackingSpec& spec) {
     const auto wrap = [](long v, long n) { return static_cast<std::size_t>(((v % n) + n) % n); };
     const std::size_t c = wrap(j, spec.Ly) * Lx + wrap(i, spec.Lx);
     const double A = hertz_coefficient(p.material[b], p.radius[b], p.material[c], p.radius[c]);
-    p.contacts.push_back({b, c, ex, ey, A, (p.radius[b] - R) + (p.radius[c] - R) + p.uniform_overlap});
+    const int image_x = i < 0 ? -1 : i >= spec.Lx ? 1 : 0, image_y = j >= spec.Ly ? 1 : 0;
+    p.contacts.push_back({b, c, ex, ey, A, (p.radius[b] - R) + (p.radius[c] - R) + p.uniform_overlap, image_x, image_y});
   };
   const double c60 = 0.5, s60 = std::numbers::sqrt3 / 2;
   for (std::size_t b = 0; b < beads; ++b) {

@@ -57,13 +57,14 @@ struct PackingDisorder {
 /// `spec` with per-bead densities, materials or radii drawn; throws InvalidInput naming `width`.
 PackingSpec disordered(PackingSpec spec, const PackingDisorder& disorder);
 
-/// A Hertz contact between beads i and j. The vector from i's centre to j's in the reference lattice
-/// is length · (ex, ey); with periodic boundaries j may be an image (the torus closes the lattice).
+/// A Hertz contact between beads i and j. With periodic boundaries j may be an image: the torus
+/// closes the lattice, and j's centre seen from i is (x_j + image_x box_x, y_j + image_y box_y).
 struct BeadContact {
   std::size_t i = 0, j = 0;
-  double ex = 0, ey = 0;         ///< unit vector i → j of the reference lattice
+  double ex = 0, ey = 0;         ///< unit vector i → j of the reference lattice (spacing · e apart)
   double contact = 0;            ///< Hertz A [N/m^{3/2}] (model/contact_law.hpp)
   double reference_overlap = 0;  ///< R_i + R_j − reference distance [m]
+  int image_x = 0, image_y = 0;  ///< periodic image of j: −1, 0 or 1 torus periods
 };
 
 /// The four walls, each with its inward normal: left (+x), right (−x), bottom (+y), top (−y).
