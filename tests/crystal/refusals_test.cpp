@@ -75,5 +75,12 @@ TEST(CrystalRefusals, SquareWithWallsPastTheShearBound) {
   EXPECT_EQ(refusal(spec), "packing");
 }
 
+TEST(CrystalRefusals, PolydisperseBeyondTheStaticOverlap) {
+  // 1% of 4.76 mm is 48 µm, wider than Δ = 28 µm at 1 kN: rows lose their load.
+  PackingSpec spec;
+  spec.Lx = 8, spec.Ly = 8, spec.precompression = 1e3;
+  EXPECT_EQ(refusal(disordered(spec, {.kind = PackingDisorder::Kind::radius, .width = 0.01, .seed = 5})), "packing");
+}
+
 }  // namespace
 }  // namespace granular

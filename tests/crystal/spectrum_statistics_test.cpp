@@ -1,5 +1,6 @@
-// The level-spacing ratio ⟨r⟩ against its known values: uncorrelated (Poisson) levels and the
-// Gaussian orthogonal ensemble; and the vector IPR's limits (docs/crystals.md, "Spectra").
+// The statistics of a spectrum: the level-spacing ratio ⟨r⟩ against its known values for
+// uncorrelated (Poisson) levels and the Gaussian orthogonal ensemble, the vector IPR's limits and
+// the frequency histogram (docs/crystals.md, "Spectra").
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -89,6 +90,20 @@ TEST(VectorIpr, OneBeadIsOneAndAPlaneWaveIsOneOverN) {
   // Equal displacements (v = M^{-1/2} w) in any polarization: 1/N.
   for (std::size_t b = 0; b < 4; ++b) w[2 * b] = 0.6 / inverse_sqrt_mass[b], w[2 * b + 1] = 0.8 / inverse_sqrt_mass[b];
   EXPECT_DOUBLE_EQ(vector_ipr(w, inverse_sqrt_mass), 0.25);
+}
+
+TEST(FrequencyHistogram, CountsEveryModeInsideOnceAndIntegratesToTheirFraction) {
+  CrystalSpectrum s;
+  s.freq_hz = {-5, 0, 1, 2.5, 2.5, 9.99, 10, 12};
+  s.omega2.assign(s.freq_hz.size(), 0.0);
+  const FrequencyHistogram h = frequency_histogram(s, 4, 0, 10);
+  EXPECT_EQ(h.edges, (std::vector<double>{0, 2.5, 5, 7.5, 10}));
+  EXPECT_EQ(h.counts, (std::vector<std::size_t>{2, 2, 0, 2}));  // 10 is in the last bin
+  double integral = 0;
+  for (std::size_t k = 0; k < 4; ++k) integral += h.density[k] * 2.5;
+  EXPECT_DOUBLE_EQ(integral, 6.0 / 8);
+  EXPECT_THROW(frequency_histogram(s, 0, 0, 10), InvalidInput);
+  EXPECT_THROW(frequency_histogram(s, 4, 1, 1), InvalidInput);
 }
 
 }  // namespace

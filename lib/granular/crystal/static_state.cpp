@@ -165,7 +165,13 @@ StaticState static_state(const Packing& p, const StaticConfig& config) {
       not_rigid(p, "Newton's method left a force imbalance of " + format_number(s.imbalance) + " after " +
                        std::to_string(s.iterations) + " steps");
     ldlt.factorize(hessian(p, n, s));
-    if (ldlt.info() != Eigen::Success) not_rigid(p, "its Hessian is singular");
+    if (ldlt.info() != Eigen::Success) {
+      const auto open = std::count_if(s.overlap.begin(), s.overlap.end(), [](double d) { return d <= 0; }) +
+                        std::count_if(s.wall_overlap.begin(), s.wall_overlap.end(), [](double d) { return d <= 0; });
+      not_rigid(p, "its Hessian is singular after " + std::to_string(s.iterations) + " Newton steps, with " +
+                       std::to_string(open) +
+                       " contacts open (a bead or a row without load: radii spread wider than the static overlap?)");
+    }
     const Eigen::VectorXd step = ldlt.solve(-g);
     // Backtracking on the residual norm: the Newton step is a descent direction for it whenever
     // the Hessian is regular, even where the energy is not convex.
