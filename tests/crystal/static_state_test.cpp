@@ -8,6 +8,7 @@
 #include <cmath>
 #include <vector>
 
+#include "granular/error.hpp"
 #include "granular/model/contact_law.hpp"
 
 namespace granular {
@@ -79,8 +80,8 @@ TEST(StaticState, HexagonalWithWallsAndMaterialDisorderBalanceAt1e12) {
 
 TEST(StaticState, PolydisperseSquareWithWallsConvergesAndBalances) {
   // Radius spread w R must stay below the static overlap, or rows stop touching the walls: here
-  // F0 = 10 kN gives Δ = 128 µm and w = 1% spreads radii by ±48 µm (at 1 kN, Δ = 28 µm, it fails:
-  // rows without load make the Hessian singular). 12 beads per row stay below the shear bound.
+  // F0 = 10 kN gives Δ = 128 µm and w = 1% spreads radii by ±48 µm (at 100 N, Δ = 5.9 µm, it is
+  // refused: refusals_test). 12 beads per row stay below the shear bound.
   PackingSpec spec;
   spec.Lx = 12, spec.Ly = 12, spec.precompression = 1e4;
   const Packing p = make_packing(disordered(spec, {.kind = PackingDisorder::Kind::radius, .width = 0.01, .seed = 5}));
@@ -91,6 +92,32 @@ TEST(StaticState, PolydisperseSquareWithWallsConvergesAndBalances) {
   EXPECT_TRUE(s.open_contacts.empty());
   const auto [lo, hi] = std::minmax_element(s.force.begin(), s.force.end());
   EXPECT_LT(*lo, 0.99 * *hi);  // the forces are no longer uniform
+}
+
+TEST(StaticState, ReportsOrRefusesContactsThatOpen) {
+  // Radius spread 1e-3 R = 4.8 µm on a hexagonal torus with δ = 2Rε = 2.9 µm: some contacts open,
+  // and six contacts per bead keep the packing rigid.
+  PackingSpec spec;
+  spec.lattice = Lattice::hexagonal, spec.boundary = Boundary::periodic, spec.Lx = 8, spec.Ly = 8, spec.strain = 3e-4;
+  const Packing p = make_packing(disordered(spec, {.kind = PackingDisorder::Kind::radius, .width = 1e-3, .seed = 2}));
+  const StaticState s = static_state(p);
+  EXPECT_TRUE(s.rigid);
+  EXPECT_LE(worst_imbalance(p, s), 1e-12);
+  ASSERT_FALSE(s.open_contacts.empty());
+  std::size_t open = 0;
+  for (std::size_t k = 0; k < s.overlap.size(); ++k) {
+    open += s.overlap[k] <= 0;
+    if (s.overlap[k] <= 0) {
+      EXPECT_EQ(s.force[k], 0.0);
+    }
+  }
+  EXPECT_EQ(s.open_contacts.size(), open);
+  try {
+    static_state(p, {.refuse_open_contacts = true});
+    ADD_FAILURE() << "open contacts accepted";
+  } catch (const InvalidInput& e) {
+    EXPECT_EQ(e.parameter(), "packing");
+  }
 }
 
 }  // namespace

@@ -134,6 +134,21 @@ double imbalance(const Packing& p, const Unknowns& n, const StaticState& s, cons
   return worst;
 }
 
+double energy(const Packing& p, const Unknowns& n, const StaticState& s) {
+  double e = 0;
+  for (std::size_t k = 0; k < p.contacts.size(); ++k) e += hertz_energy(p.contacts[k].contact, s.overlap[k]);
+  for (std::size_t k = 0; k < p.wall_contacts.size(); ++k)
+    e += hertz_energy(p.wall_contacts[k].contact, s.wall_overlap[k]);
+  if (n.walls)
+    for (WallSide w : {WallSide::right, WallSide::top})
+      e -= p.wall_load[static_cast<std::size_t>(w)] * s.wall_shift[static_cast<std::size_t>(w)];
+  return e;
+}
+
+bool positive(const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>& ldlt) {
+  return ldlt.info() == Eigen::Success && (ldlt.vectorD().array() > 0).all();
+}
+
 [[noreturn]] void not_rigid(const Packing& p, const std::string& why) {
   throw InvalidInput("packing", ": the " + std::string(to_string(p.lattice)) + " " + std::to_string(p.Lx) + " x " +
                                     std::to_string(p.Ly) + " packing with " + std::string(to_string(p.boundary)) +
@@ -163,26 +178,37 @@ StaticState static_state(const Packing& p, const StaticConfig& config) {
   while (s.imbalance > config.tolerance) {
     if (s.iterations == config.max_iterations)
       not_rigid(p, "Newton's method left a force imbalance of " + format_number(s.imbalance) + " after " +
-                       std::to_string(s.iterations) + " steps");
-    ldlt.factorize(hessian(p, n, s));
-    if (ldlt.info() != Eigen::Success) {
-      const auto open = std::count_if(s.overlap.begin(), s.overlap.end(), [](double d) { return d <= 0; }) +
-                        std::count_if(s.wall_overlap.begin(), s.wall_overlap.end(), [](double d) { return d <= 0; });
-      not_rigid(p, "its Hessian is singular after " + std::to_string(s.iterations) + " Newton steps, with " +
-                       std::to_string(open) +
-                       " contacts open (a bead or a row without load: radii spread wider than the static overlap?)");
+                       std::to_string(s.iterations) + " steps" +
+                       (s.imbalance > 0.5 ? " (a bead pushed by contacts it cannot balance: radii spread wider than "
+                                            "the static overlap?)"
+                                          : ""));
+    // Newton's step where the Hessian is positive definite; elsewhere (a start with open contacts
+    // and beads that carry nothing, or a saddle) a Levenberg step (H + μI), μ raised until it is.
+    const Eigen::SparseMatrix<double> h = hessian(p, n, s);
+    ldlt.factorize(h);
+    if (!positive(ldlt)) {
+      Eigen::SparseMatrix<double> identity(h.rows(), h.cols());
+      identity.setIdentity();
+      const double scale = h.diagonal().cwiseAbs().maxCoeff();
+      for (double mu = 1e-10 * scale;; mu *= 100) {
+        if (mu > 1e4 * scale)
+          not_rigid(p, "no positive definite step from a force imbalance " + format_number(s.imbalance));
+        ldlt.factorize(h + mu * identity);
+        if (positive(ldlt)) break;
+      }
     }
     const Eigen::VectorXd step = ldlt.solve(-g);
-    // Backtracking on the residual norm: the Newton step is a descent direction for it whenever
-    // the Hessian is regular, even where the energy is not convex.
-    const double norm = g.norm();
+    // Backtracking: a step is taken when it lowers the energy (Armijo) or the force residual. The
+    // first guards the Levenberg steps, the second the last Newton steps, where energy changes are
+    // below its rounding.
+    const double norm = g.norm(), e0 = energy(p, n, s), slope = g.dot(step);
     double t = 1;
     StaticState trial = s;
     Eigen::VectorXd g_trial;
     for (;;) {
       evaluate(p, n, z + t * step, trial);
       g_trial = gradient(p, n, trial);
-      if (g_trial.norm() <= (1 - 1e-4 * t) * norm) break;
+      if (g_trial.norm() <= (1 - 1e-4 * t) * norm || energy(p, n, trial) <= e0 + 1e-4 * t * slope) break;
       t /= 2;
       if (t < 1e-12) break;
     }
@@ -198,13 +224,25 @@ StaticState static_state(const Packing& p, const StaticConfig& config) {
     s.imbalance = imbalance(p, n, s, g);
   }
   ldlt.factorize(hessian(p, n, s));
-  s.rigid = ldlt.info() == Eigen::Success && (ldlt.vectorD().array() > 0).all();
-  if (config.require_rigid && !s.rigid)
-    not_rigid(p, "its Hessian is not positive definite at equilibrium (docs/crystals.md, \"Rigidity\")");
+  s.rigid = positive(ldlt);
+  if (config.require_rigid && !s.rigid) {
+    std::vector<double> carried(n.beads, 0.0);
+    for (std::size_t k = 0; k < p.contacts.size(); ++k)
+      carried[p.contacts[k].i] += s.force[k], carried[p.contacts[k].j] += s.force[k];
+    for (std::size_t k = 0; k < p.wall_contacts.size(); ++k) carried[p.wall_contacts[k].bead] += s.wall_force[k];
+    const auto rattlers = std::count(carried.begin(), carried.end(), 0.0);
+    not_rigid(p, "its Hessian is not positive definite at equilibrium" +
+                     (rattlers > 0 ? " (" + std::to_string(rattlers) + " beads carry no load)" : std::string()) +
+                     " (docs/crystals.md, \"Rigidity\")");
+  }
   for (std::size_t k = 0; k < s.overlap.size(); ++k)
     if (s.overlap[k] <= 0) s.open_contacts.push_back(k);
   for (std::size_t k = 0; k < s.wall_overlap.size(); ++k)
     if (s.wall_overlap[k] <= 0) s.open_wall_contacts.push_back(k);
+  if (config.refuse_open_contacts && (!s.open_contacts.empty() || !s.open_wall_contacts.empty()))
+    throw InvalidInput("packing", ": " + std::to_string(s.open_contacts.size()) + " bead contacts and " +
+                                      std::to_string(s.open_wall_contacts.size()) +
+                                      " wall contacts open at equilibrium (refuse_open_contacts)");
   return s;
 }
 

@@ -2,7 +2,9 @@
 // The static state of a packing (docs/crystals.md, "The static state"): bead positions at which
 // every bead's Hertz normal contact forces F = A δ^{3/2} balance, found by Newton's method on the
 // contact network, with the energy Hessian as the Jacobian (a sparse LDLᵀ solve) and a backtracking
-// line search on the force residual, started from the packing's uniformly compressed lattice.
+// line search (a step must lower the energy or the force residual), started from the packing's
+// uniformly compressed lattice. Where the Hessian is not positive definite (open contacts at the
+// start leave beads that carry nothing) the step is a Levenberg one, H + μI.
 //
 // Loads. With walls, each wall pushes along its inward normal with F0 per bead it touches
 // (Packing::wall_load). The left and bottom walls are held where they are and the right and top
@@ -37,6 +39,9 @@ struct StaticConfig {
   /// Refuse (InvalidInput naming `packing`) a packing whose Hessian is not positive definite at the
   /// solution; false returns it with rigid = false (to study the unstable periodic square lattice).
   bool require_rigid = true;
+  /// Refuse (InvalidInput naming `packing`) a state in which contacts opened, rather than report
+  /// them (StaticState::open_contacts): for studies that need the lattice's contact network intact.
+  bool refuse_open_contacts = false;
 };
 
 struct StaticState {
