@@ -18,7 +18,7 @@ struct CrystalSpectrum {
   std::vector<double> omega2;   ///< eigenvalues ω² of D [1/s²], signed: < 0 for an unstable packing
   std::vector<double> freq_hz;  ///< f = sqrt(ω²)/2π [Hz]; −sqrt(−ω²)/2π for ω² < 0
   std::vector<double> ipr;      ///< vector IPR of each mode (vector_ipr), in [1/N, 1]
-  /// 2N × 2N unit eigenvectors w of D, column-major (mode k at [2N k, 2N (k+1))); empty unless asked.
+  /// 2N × size() unit eigenvectors w of D, column-major (mode k at [2N k, 2N (k+1))); empty unless asked.
   /// Displacements: (v_x, v_y) of bead b = m_b^{-1/2} (w_{2b}, w_{2b+1}).
   std::vector<double> vectors;
   std::size_t beads = 0;
