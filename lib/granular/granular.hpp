@@ -28,6 +28,7 @@
 
 #include "granular/crystal/crystal_matrix.hpp"
 #include "granular/crystal/crystal_spectrum.hpp"
+#include "granular/crystal/nearest_modes.hpp"
 #include "granular/crystal/packing.hpp"
 #include "granular/crystal/static_state.hpp"
 
