@@ -34,8 +34,10 @@
 namespace granular {
 
 struct StaticConfig {
-  double tolerance = 1e-13;  ///< stop when every bead's imbalance (below) is ≤ this [-]
-  int max_iterations = 60;   ///< Newton steps
+  /// Stop when every bead's imbalance (StaticState::imbalance) is ≤ this [-], or at the rounding
+  /// floor, when no step lowers the residual and the imbalance is ≤ 1e3 × this.
+  double tolerance = 1e-13;
+  int max_iterations = 60;  ///< Newton steps
   /// Refuse (InvalidInput naming `packing`) a packing whose Hessian is not positive definite at the
   /// solution; false returns it with rigid = false (to study the unstable periodic square lattice).
   bool require_rigid = true;
