@@ -7,9 +7,11 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <string>
 #include <vector>
 
 #include "granular/crystal/static_state.hpp"
+#include "granular/error.hpp"
 #include "granular/number_format.hpp"
 
 namespace granular {
@@ -86,6 +88,20 @@ TEST(CrystalSpectrum, ALightImpurityHasALocalizedModeAboveTheBand) {
   // Bloch waves spread over the torus; a degenerate level mixes them in a basis LAPACK picks, so
   // only a loose bound: 6/N.
   EXPECT_LT(widest, 6.0 / 72);
+}
+
+TEST(CrystalSpectrum, RefusesACrystalTooLargeForEveryModeBeforeAllocating) {
+  CrystalMatrix d;  // 20000 beads: dsyevd's workspace would pass 2^31 doubles
+  d.rows = 40000;
+  d.row_start.assign(d.rows + 1, 0);
+  d.inverse_sqrt_mass.assign(20000, 1.0);
+  try {
+    crystal_spectrum(d);
+    ADD_FAILURE() << "20000 beads accepted";
+  } catch (const InvalidInput& e) {
+    EXPECT_EQ(e.parameter(), "N");
+    EXPECT_NE(std::string(e.what()).find("crystal_nearest_modes"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace

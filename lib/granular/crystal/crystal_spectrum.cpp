@@ -2,9 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <numbers>
 #include <string>
 
+#include "granular/detail/memory_limit.hpp"
 #include "granular/error.hpp"
 #include "granular/linear/detail/lapack.hpp"
 #include "granular/number_format.hpp"
@@ -12,9 +15,23 @@
 namespace granular {
 
 CrystalSpectrum crystal_spectrum(const CrystalMatrix& d, const CrystalSpectrumConfig& config) {
+  // Refused before anything is allocated: dsyevd's workspace, 1 + 6n + 2n² doubles for n = 2N, must
+  // fit LAPACK's 32-bit sizes (N <= 16383), and it and the matrix (3n² doubles) this process's memory.
   const auto n64 = static_cast<std::int64_t>(d.rows);
-  const int n = detail::lapack_int(n64, "the dense 2N x 2N matrix's side");
-  detail::lapack_int(n64 * n64, "the dense 2N x 2N matrix");
+  const std::string instead = "; crystal_nearest_modes solves a few modes of a sparse crystal of any size";
+  if (1 + 6 * n64 + 2 * n64 * n64 > std::numeric_limits<int>::max())
+    throw InvalidInput("N", " " + std::to_string(d.beads()) +
+                                ": every mode needs dsyevd's workspace of 2(2N)^2 + 6(2N) + 1 doubles, past LAPACK's "
+                                "32-bit sizes (N <= 16383)" +
+                                instead);
+  const double bytes =
+      8.0 * (3.0 * static_cast<double>(n64) * static_cast<double>(n64) + 6.0 * static_cast<double>(n64));
+  if (const detail::MemoryLimit memory = detail::memory_limit(); memory.bytes > 0 && bytes > memory.bytes)
+    throw InvalidInput("N", " " + std::to_string(d.beads()) + ": every mode needs " +
+                                format_number(std::round(bytes / 1e8) / 10) + " GB, more than the " +
+                                format_number(std::round(memory.bytes / 1e8) / 10) + " GB this process may use (" +
+                                memory.source + ")" + instead);
+  const int n = static_cast<int>(n64);
   std::vector<double> a = dense(d);  // row-major and symmetric: LAPACK's column-major reads the same
   CrystalSpectrum out;
   out.beads = d.beads();

@@ -25,8 +25,9 @@ struct CrystalSpectrum {
   std::size_t size() const { return omega2.size(); }
 };
 
-/// Every mode of D by dense LAPACK (dsyevd). Throws InvalidInput naming `N` when 2N × 2N does not fit
-/// LAPACK's 32-bit sizes, NumericalError when LAPACK fails.
+/// Every mode of D by dense LAPACK (dsyevd): 24 (2N)² bytes. Throws InvalidInput naming `N`, before
+/// allocating, when its workspace exceeds LAPACK's 32-bit sizes (N > 16383) or the memory this
+/// process may use; NumericalError when LAPACK fails.
 CrystalSpectrum crystal_spectrum(const CrystalMatrix& d, const CrystalSpectrumConfig& config = {});
 
 /// Inverse participation ratio of a vector mode, in displacement form as the chain's mode_ipr:
