@@ -1,7 +1,7 @@
 #pragma once
 // Everything a program using the toolkit needs, in one include. The pipeline reads top to bottom:
-// a chain (model) → its dynamical matrix and spectrum (linear) → its nonlinear dynamics (dynamics)
-// → many realizations (ensemble) → what the averages say (analysis) → the paper's studies (study).
+// a chain (model) → its dynamical matrix and spectrum (linear; 2D packings: crystal) → its nonlinear dynamics
+// (dynamics) → many realizations (ensemble) → what the averages say (analysis) → the paper's studies (study).
 #include "granular/code_identity.hpp"
 #include "granular/error.hpp"
 #include "granular/number_format.hpp"
@@ -25,6 +25,12 @@
 #include "granular/linear/spectrum.hpp"
 #include "granular/linear/transfer_matrix.hpp"
 #include "granular/linear/tridiagonal_operator.hpp"
+
+#include "granular/crystal/crystal_matrix.hpp"
+#include "granular/crystal/crystal_spectrum.hpp"
+#include "granular/crystal/nearest_modes.hpp"
+#include "granular/crystal/packing.hpp"
+#include "granular/crystal/static_state.hpp"
 
 #include "granular/chaos/alignment_indices.hpp"
 #include "granular/chaos/lyapunov_spectrum.hpp"

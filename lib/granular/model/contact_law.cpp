@@ -18,6 +18,18 @@ double hertz_coefficient(const Material& a, double ra, const Material& b, double
 
 double static_overlap(double contact, double precompression) { return std::pow(precompression / contact, 2.0 / 3.0); }
 
+double hertz_force(double contact, double overlap) {
+  return overlap > 0 ? contact * overlap * std::sqrt(overlap) : 0.0;
+}
+
+double hertz_stiffness(double contact, double overlap) {
+  return overlap > 0 ? 1.5 * contact * std::sqrt(overlap) : 0.0;
+}
+
+double hertz_energy(double contact, double overlap) {
+  return overlap > 0 ? 0.4 * contact * overlap * overlap * std::sqrt(overlap) : 0.0;
+}
+
 double linear_stiffness(double contact, double precompression) {
   return 1.5 * std::cbrt(contact * contact * precompression);
 }

@@ -20,6 +20,15 @@ double hertz_coefficient(const Material& a, double radius_a, const Material& b, 
 /// Static overlap Δ = (F0/A)^{2/3} [m] of a bond with coefficient A under precompression F0 [N].
 double static_overlap(double contact, double precompression);
 
+/// Hertz force F = A [δ]_+^{3/2} [N] at overlap δ [m] (0 for an open contact, δ ≤ 0).
+double hertz_force(double contact, double overlap);
+
+/// Hertz normal stiffness k_n = dF/dδ = (3/2) A [δ]_+^{1/2} [N/m] at overlap δ [m].
+double hertz_stiffness(double contact, double overlap);
+
+/// Hertz energy (2/5) A [δ]_+^{5/2} [J] at overlap δ [m]: its δ-derivative is hertz_force.
+double hertz_energy(double contact, double overlap);
+
 /// Linear stiffness B = dF/dδ at Δ = (3/2) A^{2/3} F0^{1/3} [N/m]; 0 at F0 = 0.
 double linear_stiffness(double contact, double precompression);
 

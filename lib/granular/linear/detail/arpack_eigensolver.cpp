@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <numeric>
 #include <string>
 
@@ -39,14 +40,11 @@ void start_vector(double* x, int n) {
 
 }  // namespace
 
-ShiftInvertResult arpack_nearest(const SymTridiagonal& t, double sigma, const ShiftInvertConfig& config) {
-  const int n = static_cast<int>(t.size());
+ShiftInvertResult arpack_shift_invert(int n, double shift, const std::function<void(const double*, double*)>& solve,
+                                      const ShiftInvertConfig& config) {
   const int nev = config.count;
-  require_nearest_count("ARPACK", t.size(), nev);
+  require_nearest_count("ARPACK", static_cast<std::size_t>(n), nev);
   const int ncv = std::min(n, config.subspace > 0 ? std::max(config.subspace, nev + 1) : std::max(2 * nev + 1, 20));
-  ShiftInvertOperator op;
-  op.factorize(t, sigma);
-  const double shift = op.shift();
 
   const int ldv = n, lworkl = ncv * (ncv + 8);
   std::vector<double> resid(n), v(static_cast<std::size_t>(n) * ncv), workd(3 * static_cast<std::size_t>(n)),
@@ -63,7 +61,7 @@ ShiftInvertResult arpack_nearest(const SymTridiagonal& t, double sigma, const Sh
     dsaupd_(&ido, "I", &n, "LM", &nev, &tol, resid.data(), &ncv, v.data(), &ldv, iparam, ipntr, workd.data(),
             workl.data(), &lworkl, &info, 1, 2);
     if (ido == -1 || ido == 1) {
-      op.apply(&workd[ipntr[0] - 1], &workd[ipntr[1] - 1]);
+      solve(&workd[ipntr[0] - 1], &workd[ipntr[1] - 1]);
       ++out.operator_solves;
     } else {
       break;
@@ -97,6 +95,14 @@ ShiftInvertResult arpack_nearest(const SymTridiagonal& t, double sigma, const Sh
   }
   if (!out.vectors.allFinite()) throw NumericalError("ARPACK returned non-finite eigenvectors");
   return out;
+}
+
+ShiftInvertResult arpack_nearest(const SymTridiagonal& t, double sigma, const ShiftInvertConfig& config) {
+  require_nearest_count("ARPACK", t.size(), config.count);
+  ShiftInvertOperator op;
+  op.factorize(t, sigma);
+  return arpack_shift_invert(
+      static_cast<int>(t.size()), op.shift(), [&](const double* x, double* y) { op.apply(x, y); }, config);
 }
 
 }  // namespace granular

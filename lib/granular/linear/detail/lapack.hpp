@@ -47,6 +47,12 @@ void dstein_(const int* n, const double* d, const double* e, const int* m, const
              const int* isplit, double* z, const int* ldz, double* work, int* iwork, int* ifail, int* info);
 }
 
+// Dense symmetric eigenproblems (every mode of a small 2D crystal): divide and conquer.
+extern "C" {
+void dsyevd_(const char* jobz, const char* uplo, const int* n, double* a, const int* lda, double* w, double* work,
+             const int* lwork, int* iwork, const int* liwork, int* info, std::size_t, std::size_t);
+}
+
 // Partial spectra: general tridiagonal LU (shift-invert solves) and bisection + inverse iteration.
 extern "C" {
 void dgttrf_(const int* n, double* dl, double* d, double* du, double* du2, int* ipiv, int* info);

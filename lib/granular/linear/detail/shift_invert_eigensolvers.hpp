@@ -3,6 +3,7 @@
 // methods: ARPACK (dsaupd/dseupd, mode 3) and SLEPc (Krylov–Schur + ST sinvert on a PETSc
 // MPI matrix). Both see the matrix only through TridiagonalOperator / ShiftInvertOperator
 // (ARPACK) or its rows (SLEPc); partial_spectrum.hpp is the one call users make.
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -37,7 +38,13 @@ inline void require_nearest_count(const char* solver, std::size_t n, long count)
                                    " matrix; it needs 1 <= count <= N - 1 (use method lapack)");
 }
 
-/// ARPACK shift-invert. Throws InvalidInput unless 1 ≤ count ≤ N − 1, NumericalError when
+/// ARPACK shift-invert (dsaupd/dseupd, mode 3) on any symmetric operator of size n: `solve(x, y)`
+/// sets y = (A − shift I)⁻¹ x. The `count` eigenvalues of A nearest `shift`, ascending, with unit
+/// vectors. Throws InvalidInput unless 1 ≤ count ≤ n − 1, NumericalError when ARPACK fails.
+ShiftInvertResult arpack_shift_invert(int n, double shift, const std::function<void(const double*, double*)>& solve,
+                                      const ShiftInvertConfig& config);
+
+/// ARPACK shift-invert on a tridiagonal matrix. Throws InvalidInput unless 1 ≤ count ≤ N − 1, NumericalError when
 /// ARPACK fails or does not converge.
 ShiftInvertResult arpack_nearest(const SymTridiagonal& t, double sigma, const ShiftInvertConfig& config);
 
