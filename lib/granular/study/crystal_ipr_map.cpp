@@ -9,6 +9,7 @@
 #include "granular/crystal/crystal_matrix.hpp"
 #include "granular/crystal/crystal_spectrum.hpp"
 #include "granular/crystal/static_state.hpp"
+#include "granular/ensemble/parallel_realizations.hpp"
 #include "granular/error.hpp"
 #include "granular/number_format.hpp"
 
@@ -19,19 +20,25 @@ std::vector<CrystalIprMapCell> crystal_ipr_map(const CrystalIprMapConfig& c) {
   for (double w : c.widths)
     if (!(w >= 0 && w < 1)) throw InvalidInput("widths", " " + format_number(w) + ": must be in [0, 1)");
   if (c.realizations < 1) throw InvalidInput("realizations", " 0: must be >= 1");
+  if (c.threads < 0) throw InvalidInput("threads", " " + std::to_string(c.threads) + ": must be >= 0");
   if (!(c.bin_hz > 0) || !std::isfinite(c.bin_hz))
     throw InvalidInput("bin_hz", " " + format_number(c.bin_hz) + ": must be finite and > 0");
   make_packing(c.packing);  // its own checks, before any work
 
+  const std::size_t each = c.realizations;
+  std::vector<CrystalSpectrum> spectra(c.widths.size() * each);
+  parallel_realizations(spectra.size(), resolve_threads(c.threads), [&](std::size_t task, int) {
+    const double width = c.widths[task / each];
+    const Packing p = make_packing(disordered(c.packing, {c.kind, width, c.seed, task % each}));
+    spectra[task] = crystal_spectrum(crystal_matrix(p, static_state(p)));
+  });
+
   std::vector<CrystalIprMapCell> cells;
-  for (double width : c.widths) {
-    std::vector<CrystalSpectrum> spectra;
+  for (std::size_t w = 0; w < c.widths.size(); ++w) {
+    const double width = c.widths[w];
+    const std::span<const CrystalSpectrum> cell_spectra(spectra.data() + w * each, each);
     double top = 0;
-    for (std::uint64_t r = 0; r < c.realizations; ++r) {
-      const Packing p = make_packing(disordered(c.packing, {c.kind, width, c.seed, r}));
-      spectra.push_back(crystal_spectrum(crystal_matrix(p, static_state(p))));
-      top = std::max(top, spectra.back().freq_hz.back());
-    }
+    for (const CrystalSpectrum& s : cell_spectra) top = std::max(top, s.freq_hz.back());
     const auto bins = static_cast<std::size_t>(std::floor(top / c.bin_hz)) + 1;
     CrystalIprMapCell cell;
     cell.width = width;
@@ -39,7 +46,7 @@ std::vector<CrystalIprMapCell> crystal_ipr_map(const CrystalIprMapConfig& c) {
     cell.bin_ratios.assign(bins, 0);
     std::vector<double> ipr_sum(bins, 0.0), ratio_sum(bins, 0.0);
     auto bin_of = [&](double f) { return std::min(bins - 1, static_cast<std::size_t>(std::max(0.0, f) / c.bin_hz)); };
-    for (const CrystalSpectrum& s : spectra) {
+    for (const CrystalSpectrum& s : cell_spectra) {
       for (std::size_t k = 0; k < s.size(); ++k)
         ++cell.bin_modes[bin_of(s.freq_hz[k])], ipr_sum[bin_of(s.freq_hz[k])] += s.ipr[k];
       // ⟨r⟩ of each bin's run of levels: the levels are ascending, so a bin's are contiguous.

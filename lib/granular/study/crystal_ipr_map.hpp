@@ -18,6 +18,9 @@ struct CrystalIprMapConfig {
   std::size_t realizations = 10;              ///< ≥ 1
   std::uint64_t seed = 1;
   double bin_hz = 1000;  ///< bins [k W, (k + 1) W) [Hz], k = 0 … ⌊f_max/W⌋ over the cell's modes
+  /// Realizations solved at once; 0: OMP_NUM_THREADS, else every core. The map is bit-identical for
+  /// any count (each realization fills its own slot, and the slots are summed in order).
+  int threads = 1;
 };
 
 struct CrystalIprMapCell {
