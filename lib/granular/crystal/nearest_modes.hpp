@@ -13,9 +13,9 @@
 namespace granular {
 
 /// The `count` modes nearest `near_hz` [Hz], by increasing ω², with their IPRs (and unit
-/// eigenvectors with config.vectors), as crystal_spectrum gives them, and max_residual. Throws InvalidInput naming
-/// `near` (not finite or < 0) or `count` (outside 1 … 2N − 1), NumericalError when the
-/// factorization or ARPACK fails.
+/// eigenvectors with config.vectors), as crystal_spectrum gives them, and max_residual. Throws
+/// InvalidInput naming `near` (not finite or < 0) or `count` (outside 1 … 2N − 1), NumericalError
+/// when D − σI is singular or ARPACK fails.
 CrystalSpectrum crystal_nearest_modes(const CrystalMatrix& d, double near_hz, long count,
                                       const CrystalSpectrumConfig& config = {});
 
