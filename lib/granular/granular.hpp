@@ -64,6 +64,7 @@
 #include "granular/study/case_file.hpp"
 #include "granular/study/chain_choices.hpp"
 #include "granular/study/correlation_study.hpp"
+#include "granular/study/crystal_ipr_map.hpp"
 #include "granular/study/dynamical_butterfly.hpp"
 #include "granular/study/exponent_choices.hpp"
 #include "granular/study/exponent_table.hpp"

@@ -22,6 +22,8 @@ struct CrystalSpectrum {
   /// Displacements: (v_x, v_y) of bead b = m_b^{-1/2} (w_{2b}, w_{2b+1}).
   std::vector<double> vectors;
   std::size_t beads = 0;
+  /// crystal_nearest_modes: max ‖D w − ω² w‖ / max |D_ij| over the modes returned; 0 for every mode.
+  double max_residual = 0;
   std::size_t size() const { return omega2.size(); }
 };
 

@@ -60,7 +60,7 @@ PackingSpec disordered(PackingSpec spec, const PackingDisorder& disorder) {
     throw InvalidInput("width", " " + format_number(disorder.width) + ": must be in [0, 1)");
   validate(spec);
   const auto beads = static_cast<std::size_t>(spec.Lx * spec.Ly);
-  RandomStream stream(disorder.seed, 0);
+  RandomStream stream(disorder.seed, disorder.realization);
   auto draw = [&] { return 1 + disorder.width * (2 * stream.uniform() - 1); };
   if (disorder.kind == PackingDisorder::Kind::radius) {
     spec.radii.assign(beads, 0);

@@ -44,7 +44,8 @@ struct PackingSpec {
   double strain = 0;                      ///< periodic: ε in [0, 0.1): neighbour distance 2R(1 − ε)
 };
 
-/// Disorder drawn into a spec (reproducibly: bead b takes the b-th uniform of stream (seed, 0)).
+/// Disorder drawn into a spec, reproducibly: bead b takes the b-th uniform of the random stream
+/// (seed, realization), whatever thread or order draws it (model/random_stream.hpp).
 struct PackingDisorder {
   enum class Kind {
     mass,      ///< density ρ(1 + w u): same size and elastic constants, so the static state is the lattice's
@@ -53,6 +54,7 @@ struct PackingDisorder {
   } kind = Kind::mass;
   double width = 0.1;  ///< w in [0, 1): u is uniform on [−1, 1]
   std::uint64_t seed = 1;
+  std::uint64_t realization = 0;
 };
 /// `spec` with per-bead densities, materials or radii drawn; throws InvalidInput naming `width`.
 PackingSpec disordered(PackingSpec spec, const PackingDisorder& disorder);

@@ -1,0 +1,72 @@
+#include "granular/study/crystal_ipr_map.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <span>
+#include <string>
+
+#include "granular/crystal/crystal_matrix.hpp"
+#include "granular/crystal/crystal_spectrum.hpp"
+#include "granular/crystal/static_state.hpp"
+#include "granular/ensemble/parallel_realizations.hpp"
+#include "granular/error.hpp"
+#include "granular/number_format.hpp"
+
+namespace granular {
+
+std::vector<CrystalIprMapCell> crystal_ipr_map(const CrystalIprMapConfig& c) {
+  if (c.widths.empty()) throw InvalidInput("widths", ": no values");
+  for (double w : c.widths)
+    if (!(w >= 0 && w < 1)) throw InvalidInput("widths", " " + format_number(w) + ": must be in [0, 1)");
+  if (c.realizations < 1) throw InvalidInput("realizations", " 0: must be >= 1");
+  if (c.threads < 0) throw InvalidInput("threads", " " + std::to_string(c.threads) + ": must be >= 0");
+  if (!(c.bin_hz > 0) || !std::isfinite(c.bin_hz))
+    throw InvalidInput("bin_hz", " " + format_number(c.bin_hz) + ": must be finite and > 0");
+  make_packing(c.packing);  // its own checks, before any work
+
+  const std::size_t each = c.realizations;
+  std::vector<CrystalSpectrum> spectra(c.widths.size() * each);
+  parallel_realizations(spectra.size(), resolve_threads(c.threads), [&](std::size_t task, int) {
+    const double width = c.widths[task / each];
+    const Packing p = make_packing(disordered(c.packing, {c.kind, width, c.seed, task % each}));
+    spectra[task] = crystal_spectrum(crystal_matrix(p, static_state(p)));
+  });
+
+  std::vector<CrystalIprMapCell> cells;
+  for (std::size_t w = 0; w < c.widths.size(); ++w) {
+    const double width = c.widths[w];
+    const std::span<const CrystalSpectrum> cell_spectra(spectra.data() + w * each, each);
+    double top = 0;
+    for (const CrystalSpectrum& s : cell_spectra) top = std::max(top, s.freq_hz.back());
+    const auto bins = static_cast<std::size_t>(std::floor(top / c.bin_hz)) + 1;
+    CrystalIprMapCell cell;
+    cell.width = width;
+    cell.bin_modes.assign(bins, 0);
+    cell.bin_ratios.assign(bins, 0);
+    std::vector<double> ipr_sum(bins, 0.0), ratio_sum(bins, 0.0);
+    auto bin_of = [&](double f) { return std::min(bins - 1, static_cast<std::size_t>(std::max(0.0, f) / c.bin_hz)); };
+    for (const CrystalSpectrum& s : cell_spectra) {
+      for (std::size_t k = 0; k < s.size(); ++k)
+        ++cell.bin_modes[bin_of(s.freq_hz[k])], ipr_sum[bin_of(s.freq_hz[k])] += s.ipr[k];
+      // ⟨r⟩ of each bin's run of levels: the levels are ascending, so a bin's are contiguous.
+      for (std::size_t first = 0; first < s.size();) {
+        const std::size_t b = bin_of(s.freq_hz[first]);
+        std::size_t last = first;
+        while (last < s.size() && bin_of(s.freq_hz[last]) == b) ++last;
+        const SpacingRatio r = spacing_ratio(std::span<const double>(s.freq_hz.data() + first, last - first));
+        if (r.count > 0) ratio_sum[b] += r.mean * static_cast<double>(r.count), cell.bin_ratios[b] += r.count;
+        first = last;
+      }
+    }
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    for (std::size_t b = 0; b < bins; ++b) {
+      cell.bin_ipr.push_back(cell.bin_modes[b] > 0 ? ipr_sum[b] / static_cast<double>(cell.bin_modes[b]) : nan);
+      cell.bin_ratio.push_back(cell.bin_ratios[b] > 0 ? ratio_sum[b] / static_cast<double>(cell.bin_ratios[b]) : nan);
+    }
+    cells.push_back(std::move(cell));
+  }
+  return cells;
+}
+
+}  // namespace granular
