@@ -18,4 +18,5 @@ PYBIND11_MODULE(_core, m) {
   bind_dynamics(m);
   bind_observers(m);
   bind_breathers(m);
+  bind_crystal(m);
 }

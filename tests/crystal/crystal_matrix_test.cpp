@@ -75,13 +75,13 @@ TEST(CrystalMatrix, IsSymmetricToTheBitWithRowsSummingToTheWallsOnly) {
   spec.lattice = Lattice::hexagonal, spec.Lx = 6, spec.Ly = 4;
   const Packing p = make_packing(disordered(spec, {.kind = PackingDisorder::Kind::material, .width = 0.3, .seed = 9}));
   const CrystalMatrix d = crystal_matrix(p, static_state(p));
-  ASSERT_EQ(d.rows, 2 * p.size());
-  ASSERT_EQ(d.row_start.size(), d.rows + 1);
+  ASSERT_EQ(d.rows(), 2 * p.size());
+  ASSERT_EQ(d.matrix.row_start.size(), d.rows() + 1);
   const std::vector<double> a = dense(d);
-  for (std::size_t r = 0; r < d.rows; ++r) {
-    for (std::size_t c = 0; c < d.rows; ++c) ASSERT_EQ(a[r * d.rows + c], a[c * d.rows + r]);
-    for (auto k = d.row_start[r] + 1; k < d.row_start[r + 1]; ++k)
-      EXPECT_LT(d.column[static_cast<std::size_t>(k - 1)], d.column[static_cast<std::size_t>(k)]);
+  for (std::size_t r = 0; r < d.rows(); ++r) {
+    for (std::size_t c = 0; c < d.rows(); ++c) ASSERT_EQ(a[r * d.rows() + c], a[c * d.rows() + r]);
+    for (auto k = d.matrix.row_start[r] + 1; k < d.matrix.row_start[r + 1]; ++k)
+      EXPECT_LT(d.matrix.column[static_cast<std::size_t>(k - 1)], d.matrix.column[static_cast<std::size_t>(k)]);
   }
   // Rigid translations are free but for the walls: K·(1, 0, 1, 0, …) has only the wall terms.
   std::vector<double> wall_xx(p.size(), 0.0);
@@ -92,7 +92,7 @@ TEST(CrystalMatrix, IsSymmetricToTheBitWithRowsSummingToTheWallsOnly) {
   for (std::size_t b = 0; b < p.size(); ++b) {
     double row = 0, scale = 0;
     for (std::size_t c = 0; c < p.size(); ++c) {
-      const double v = a[2 * b * d.rows + 2 * c] / (d.inverse_sqrt_mass[b] * d.inverse_sqrt_mass[c]);
+      const double v = a[2 * b * d.rows() + 2 * c] / (d.inverse_sqrt_mass[b] * d.inverse_sqrt_mass[c]);
       row += v, scale += std::fabs(v);
     }
     if (wall_xx[b] == 0) {

@@ -23,7 +23,7 @@ TEST(CrystalSpectrum, EigenpairsOfADisorderedHexagonalCrystalWithWalls) {
   const Packing p = make_packing(disordered(spec, {.kind = PackingDisorder::Kind::mass, .width = 0.6, .seed = 8}));
   const CrystalMatrix d = crystal_matrix(p, static_state(p));
   const CrystalSpectrum s = crystal_spectrum(d, {.vectors = true});
-  const std::size_t n = d.rows;
+  const std::size_t n = d.rows();
   ASSERT_EQ(s.size(), n);
   ASSERT_EQ(s.vectors.size(), n * n);
   const std::vector<double> a = dense(d);
@@ -92,8 +92,8 @@ TEST(CrystalSpectrum, ALightImpurityHasALocalizedModeAboveTheBand) {
 
 TEST(CrystalSpectrum, RefusesACrystalTooLargeForEveryModeBeforeAllocating) {
   CrystalMatrix d;  // 20000 beads: dsyevd's workspace would pass 2^31 doubles
-  d.rows = 40000;
-  d.row_start.assign(d.rows + 1, 0);
+  d.matrix.n = 40000;
+  d.matrix.row_start.assign(d.rows() + 1, 0);
   d.inverse_sqrt_mass.assign(20000, 1.0);
   try {
     crystal_spectrum(d);

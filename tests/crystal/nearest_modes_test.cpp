@@ -24,7 +24,7 @@ TEST(NearestModes, EqualTheDenseModesOfADisorderedHexagonalCrystal) {
   const Packing p = make_packing(disordered(spec, {.kind = PackingDisorder::Kind::mass, .width = 0.5, .seed = 12}));
   const CrystalMatrix d = crystal_matrix(p, static_state(p));
   const CrystalSpectrum all = crystal_spectrum(d, {.vectors = true});
-  const std::size_t n = d.rows;
+  const std::size_t n = d.rows();
   for (double fraction : {0.05, 0.5, 0.9}) {
     // A target between two modes, so the selection is not decided by rounding.
     const auto m = static_cast<std::size_t>(fraction * static_cast<double>(n));
@@ -83,17 +83,18 @@ TEST(Long_NearestModes, TenThousandBeadHexagonalCrystal) {
   const CrystalSpectrum m = crystal_nearest_modes(d, 10e3, 20, {.vectors = true});
   ASSERT_EQ(m.size(), 20u);
   double scale = 0, worst = 0;
-  for (double v : d.value) scale = std::max(scale, std::fabs(v));
+  for (double v : d.matrix.value) scale = std::max(scale, std::fabs(v));
   for (std::size_t k = 0; k < m.size(); ++k) {
-    const double* w = m.vectors.data() + k * d.rows;
-    for (std::size_t r = 0; r < d.rows; ++r) {
+    const double* w = m.vectors.data() + k * d.rows();
+    for (std::size_t r = 0; r < d.rows(); ++r) {
       double dw = 0;
-      for (auto q = d.row_start[r]; q < d.row_start[r + 1]; ++q)
-        dw += d.value[static_cast<std::size_t>(q)] * w[static_cast<std::size_t>(d.column[static_cast<std::size_t>(q)])];
+      for (auto q = d.matrix.row_start[r]; q < d.matrix.row_start[r + 1]; ++q)
+        dw += d.matrix.value[static_cast<std::size_t>(q)] *
+              w[static_cast<std::size_t>(d.matrix.column[static_cast<std::size_t>(q)])];
       worst = std::max(worst, std::fabs(dw - m.omega2[k] * w[r]) / scale);
     }
     double norm = 0;
-    for (std::size_t r = 0; r < d.rows; ++r) norm += w[r] * w[r];
+    for (std::size_t r = 0; r < d.rows(); ++r) norm += w[r] * w[r];
     EXPECT_NEAR(norm, 1.0, 1e-12);
     EXPECT_NEAR(m.freq_hz[k], 10e3, 200.0);  // they lie within ±6 Hz: 200 Hz guards the selection only
   }

@@ -15,18 +15,21 @@ CrystalMatrix crystal_matrix(const Packing& p, const StaticState& s, const Cryst
     throw InvalidInput("state", ": does not belong to this packing (its bead or contact counts differ)");
   const std::size_t beads = p.size();
   CrystalMatrix d;
-  d.rows = 2 * beads;
   d.inverse_sqrt_mass.resize(beads);
   for (std::size_t b = 0; b < beads; ++b) d.inverse_sqrt_mass[b] = 1 / std::sqrt(p.mass[b]);
 
   // Triplets (row, column, value) of K, scaled by m^{-1/2} on both sides as they are made.
-  std::vector<std::tuple<std::int64_t, std::int64_t, double>> t;
-  t.reserve(16 * p.contacts.size() + 4 * p.wall_contacts.size());
+  std::vector<std::size_t> rows, columns;
+  std::vector<double> values;
+  const std::size_t entries = 16 * p.contacts.size() + 4 * p.wall_contacts.size();
+  rows.reserve(entries), columns.reserve(entries), values.reserve(entries);
   auto add_block = [&](std::size_t a, std::size_t b, const detail::Block2& k, double sign) {
     const double w = sign * d.inverse_sqrt_mass[a] * d.inverse_sqrt_mass[b];
-    const auto r = static_cast<std::int64_t>(2 * a), c = static_cast<std::int64_t>(2 * b);
-    t.emplace_back(r, c, w * k.xx), t.emplace_back(r, c + 1, w * k.xy);
-    t.emplace_back(r + 1, c, w * k.xy), t.emplace_back(r + 1, c + 1, w * k.yy);
+    const std::size_t r = 2 * a, c = 2 * b;
+    for (const auto& [dr, dc, v] : {std::tuple{0, 0, k.xx}, {0, 1, k.xy}, {1, 0, k.xy}, {1, 1, k.yy}}) {
+      rows.push_back(r + static_cast<std::size_t>(dr)), columns.push_back(c + static_cast<std::size_t>(dc));
+      values.push_back(w * v);
+    }
   };
   for (std::size_t k = 0; k < p.contacts.size(); ++k) {
     const BeadContact& c = p.contacts[k];
@@ -39,27 +42,18 @@ CrystalMatrix crystal_matrix(const Packing& p, const StaticState& s, const Cryst
     add_block(p.wall_contacts[k].bead, p.wall_contacts[k].bead,
               {kn * nw[0] * nw[0], kn * nw[0] * nw[1], kn * nw[1] * nw[1]}, 1);
   }
-  // Sorting fixes the order in which duplicates are summed, so D(r, c) and D(c, r) add the same
-  // numbers in the same order and the matrix is symmetric to the bit.
-  std::sort(t.begin(), t.end());
-  d.row_start.assign(d.rows + 1, 0);
-  for (std::size_t n = 0; n < t.size();) {
-    const auto [r, c, v0] = t[n];
-    double v = v0;
-    for (++n; n < t.size() && std::get<0>(t[n]) == r && std::get<1>(t[n]) == c; ++n) v += std::get<2>(t[n]);
-    d.column.push_back(c), d.value.push_back(v);
-    ++d.row_start[static_cast<std::size_t>(r) + 1];
-  }
-  for (std::size_t r = 0; r < d.rows; ++r) d.row_start[r + 1] += d.row_start[r];
+  // Summed in ascending order at each position: D(r, c) and D(c, r) add the same numbers in the
+  // same order, so the matrix is symmetric to the bit.
+  d.matrix = sparse_from_triplets(2 * beads, rows, columns, values);
   return d;
 }
 
 std::vector<double> dense(const CrystalMatrix& d) {
-  std::vector<double> a(d.rows * d.rows, 0.0);
-  for (std::size_t r = 0; r < d.rows; ++r)
-    for (auto k = d.row_start[r]; k < d.row_start[r + 1]; ++k)
-      a[r * d.rows + static_cast<std::size_t>(d.column[static_cast<std::size_t>(k)])] =
-          d.value[static_cast<std::size_t>(k)];
+  std::vector<double> a(d.rows() * d.rows(), 0.0);
+  for (std::size_t r = 0; r < d.rows(); ++r)
+    for (auto k = d.matrix.row_start[r]; k < d.matrix.row_start[r + 1]; ++k)
+      a[r * d.rows() + static_cast<std::size_t>(d.matrix.column[static_cast<std::size_t>(k)])] =
+          d.matrix.value[static_cast<std::size_t>(k)];
   return a;
 }
 

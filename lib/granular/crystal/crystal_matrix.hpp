@@ -17,6 +17,7 @@
 
 #include "granular/crystal/packing.hpp"
 #include "granular/crystal/static_state.hpp"
+#include "granular/linear/sparse_symmetric.hpp"
 
 namespace granular {
 
@@ -26,14 +27,12 @@ struct CrystalMatrixConfig {
   bool prestress = true;
 };
 
-/// D in compressed sparse rows: the columns of row r are column[row_start[r] … row_start[r+1]),
-/// ascending, with their values; structurally symmetric and numerically symmetric to the bit.
+/// D as a sparse symmetric matrix (linear/sparse_symmetric.hpp: compressed rows, both triangles,
+/// symmetric to the bit) with the masses that weight it.
 struct CrystalMatrix {
-  std::size_t rows = 0;                 ///< 2N
-  std::vector<std::int64_t> row_start;  ///< 2N + 1 offsets
-  std::vector<std::int64_t> column;
-  std::vector<double> value;              ///< [1/s²]
-  std::vector<double> inverse_sqrt_mass;  ///< m_b^{-1/2} [kg^{-1/2}], N entries
+  SparseSymmetric matrix;                        ///< D [1/s²], 2N × 2N
+  std::vector<double> inverse_sqrt_mass;         ///< m_b^{-1/2} [kg^{-1/2}], N entries
+  std::size_t rows() const { return matrix.n; }  ///< 2N
   std::size_t beads() const { return inverse_sqrt_mass.size(); }
 };
 

@@ -17,7 +17,7 @@ namespace granular {
 CrystalSpectrum crystal_spectrum(const CrystalMatrix& d, const CrystalSpectrumConfig& config) {
   // Refused before anything is allocated: dsyevd's workspace, 1 + 6n + 2n² doubles for n = 2N, must
   // fit LAPACK's 32-bit sizes (N <= 16383), and it and the matrix (3n² doubles) this process's memory.
-  const auto n64 = static_cast<std::int64_t>(d.rows);
+  const auto n64 = static_cast<std::int64_t>(d.rows());
   const std::string instead = "; crystal_nearest_modes solves a few modes of a sparse crystal of any size";
   if (1 + 6 * n64 + 2 * n64 * n64 > std::numeric_limits<int>::max())
     throw InvalidInput("N", " " + std::to_string(d.beads()) +
@@ -35,7 +35,7 @@ CrystalSpectrum crystal_spectrum(const CrystalMatrix& d, const CrystalSpectrumCo
   std::vector<double> a = dense(d);  // row-major and symmetric: LAPACK's column-major reads the same
   CrystalSpectrum out;
   out.beads = d.beads();
-  out.omega2.assign(d.rows, 0.0);
+  out.omega2.assign(d.rows(), 0.0);
   // Vectors always: the IPRs need them.
   const char jobz = 'V', uplo = 'L';
   int info = 0, lwork = -1, liwork = -1, iwork_query = 0;
@@ -49,12 +49,12 @@ CrystalSpectrum crystal_spectrum(const CrystalMatrix& d, const CrystalSpectrumCo
   if (n > 0)
     dsyevd_(&jobz, &uplo, &n, a.data(), &n, out.omega2.data(), work.data(), &lwork, iwork.data(), &liwork, &info, 1, 1);
   if (info != 0) throw NumericalError("dsyevd failed: info " + std::to_string(info));
-  out.freq_hz.resize(d.rows);
-  for (std::size_t k = 0; k < d.rows; ++k)
+  out.freq_hz.resize(d.rows());
+  for (std::size_t k = 0; k < d.rows(); ++k)
     out.freq_hz[k] = std::copysign(std::sqrt(std::fabs(out.omega2[k])), out.omega2[k]) / (2 * std::numbers::pi);
-  out.ipr.resize(d.rows);
-  for (std::size_t k = 0; k < d.rows; ++k)
-    out.ipr[k] = vector_ipr({a.data() + k * d.rows, d.rows}, d.inverse_sqrt_mass);
+  out.ipr.resize(d.rows());
+  for (std::size_t k = 0; k < d.rows(); ++k)
+    out.ipr[k] = vector_ipr({a.data() + k * d.rows(), d.rows()}, d.inverse_sqrt_mass);
   if (config.vectors) out.vectors = std::move(a);
   return out;
 }

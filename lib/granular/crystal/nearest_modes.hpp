@@ -1,10 +1,10 @@
 #pragma once
 // The modes of a crystal nearest a frequency (docs/crystals.md, "Spectra"), for crystals too large
-// for every mode: ARPACK's shift-invert Lanczos with (D − σI)⁻¹ applied by a sparse LDLᵀ
-// factorization (Eigen, fill-reducing ordering), σ = (2π f0)². LDLᵀ does not pivot, and D − σI is
-// indefinite: when the modes' residuals exceed 1e-9 of max |D_ij|, they are solved again on a
-// pivoted sparse LU. "Nearest" is nearest in ω² to σ; for a selection narrow beside f0 these are
-// the modes nearest in frequency too.
+// for every mode, by shift-invert at σ = (2π f0)²: in one process, ARPACK's Lanczos with (D − σI)⁻¹
+// applied by a sparse LDLᵀ factorization (Eigen, fill-reducing ordering) — LDLᵀ does not pivot,
+// and D − σI is indefinite: when the modes' residuals exceed 1e-9 of max |D_ij|, they are solved
+// again on a pivoted sparse LU; over MPI ranks, SLEPc's Krylov–Schur with MUMPS's pivoted LU. "Nearest" is nearest in
+// ω² to σ; for a selection narrow beside f0 these are the modes nearest in frequency too.
 #include <cstddef>
 
 #include "granular/crystal/crystal_matrix.hpp"
@@ -12,11 +12,18 @@
 
 namespace granular {
 
+enum class NearestMethod {
+  arpack,  ///< one process (Eigen's LDLᵀ or LU, ARPACK)
+  slepc,   ///< collective over MPI_COMM_WORLD: each rank assembles its rows; every rank gets the modes
+};
+
 /// The `count` modes nearest `near_hz` [Hz], by increasing ω², with their IPRs (and unit
 /// eigenvectors with config.vectors), as crystal_spectrum gives them, and max_residual. Throws
 /// InvalidInput naming `near` (not finite or < 0) or `count` (outside 1 … 2N − 1), NumericalError
-/// when D − σI is singular or ARPACK fails.
+/// when D − σI is singular or the solver fails; InvalidInput naming `method` for slepc in a build
+/// without SLEPc.
 CrystalSpectrum crystal_nearest_modes(const CrystalMatrix& d, double near_hz, long count,
-                                      const CrystalSpectrumConfig& config = {});
+                                      const CrystalSpectrumConfig& config = {},
+                                      NearestMethod method = NearestMethod::arpack);
 
 }  // namespace granular

@@ -28,12 +28,13 @@ SparseSymmetric sparse_from_triplets(std::size_t n, const std::vector<std::size_
                                        ") outside an n = " + std::to_string(n) + " matrix");
     if (!std::isfinite(values[k])) throw InvalidInput("matrix", ": a value is not finite");
   }
-  // Sort by (row, column), then sum repeats in that order: the sum does not depend on how the
-  // caller ordered its triplets beyond the order of repeats at one position.
+  // Sort by (row, column, value) and sum repeats in that order: the sum does not depend on the
+  // order of the triplets, so A(i, j) and A(j, i), made of the same numbers, are equal to the bit.
   std::vector<std::size_t> order(rows.size());
   std::iota(order.begin(), order.end(), std::size_t{0});
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-    return rows[a] != rows[b] ? rows[a] < rows[b] : columns[a] < columns[b];
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    if (rows[a] != rows[b]) return rows[a] < rows[b];
+    return columns[a] != columns[b] ? columns[a] < columns[b] : values[a] < values[b];
   });
   SparseSymmetric a;
   a.n = n;

@@ -20,9 +20,11 @@ struct SparseSymmetric {
 };
 
 /// The n × n matrix whose entries are the sums of the triplets (rows[k], columns[k], values[k])
-/// (repeated positions add, as contacts add their blocks to a bead's diagonal). Throws InvalidInput
-/// naming `matrix` when the lists differ in length, an index is ≥ n or a value is not finite, or
-/// when the sum is not exactly symmetric (A(i, j) ≠ A(j, i), the same bits).
+/// (repeated positions add, as contacts add their blocks to a bead's diagonal), each summed in
+/// ascending order of its values: independent of the triplets' order, so that A(j, i), made of the
+/// same numbers as A(i, j), is equal to it to the bit. Throws InvalidInput naming `matrix` when the
+/// lists differ in length, an index is ≥ n or a value is not finite, or when the sum is not exactly
+/// symmetric.
 SparseSymmetric sparse_from_triplets(std::size_t n, const std::vector<std::size_t>& rows,
                                      const std::vector<std::size_t>& columns, const std::vector<double>& values);
 

@@ -1,0 +1,67 @@
+"""granular.crystal: its keywords are the library's crystal_parameters() rows with CrystalCase's C++ defaults, and
+it returns what the crystal tool writes."""
+import inspect
+
+import numpy as np
+import pytest
+
+import granular as gr
+from granular import _core
+
+
+def test_signature_is_the_table_with_its_cpp_defaults():
+    rows = _core.CrystalCase._parameters
+    defaults = _core.CrystalCase()
+    signature = inspect.signature(gr.crystal).parameters
+    assert [keyword for _, keyword, _ in rows] == list(signature)
+    for name, keyword, help_text in rows:
+        value = getattr(defaults, name)
+        expected = None if value == "" or (isinstance(value, float) and np.isnan(value)) else value
+        assert signature[keyword].default == expected, keyword
+        assert signature[keyword].kind == inspect.Parameter.KEYWORD_ONLY
+        assert help_text.split(" (")[0][:30] in gr.crystal.__doc__, keyword
+
+
+def test_every_mode_of_a_small_crystal_and_its_displacements():
+    r = gr.crystal(lattice="hexagonal", Lx=6, Ly=6, width=0.2, vectors=True)
+    assert r.method == "lapack"
+    assert r.freq_khz.shape == (72,) and np.all(np.diff(r.freq_khz) >= 0) and r.freq_khz[0] > 0
+    np.testing.assert_allclose(r.omega2, (2 * np.pi * 1e3 * r.freq_khz) ** 2, rtol=1e-12)
+    assert r.vectors.shape == (72, 36, 2)
+    # the IPR is the displacements' (docs/crystals.md): sum |u_b|^4 / (sum |u_b|^2)^2
+    u2 = (r.vectors ** 2).sum(axis=2)
+    np.testing.assert_allclose(r.ipr, (u2 ** 2).sum(axis=1) / u2.sum(axis=1) ** 2, rtol=1e-12)
+    assert r.imbalance <= 1e-12
+    assert r.metadata["parameters"]["width"] == 0.2
+
+
+def test_nearest_modes_are_among_every_mode():
+    every = gr.crystal(lattice="hexagonal", Lx=8, Ly=8, width=0.3, seed=4)
+    target = float(every.freq_khz[64])
+    near = gr.crystal(lattice="hexagonal", Lx=8, Ly=8, width=0.3, seed=4, near=target, count=6)
+    assert near.method == "arpack" and near.freq_khz.shape == (6,)
+    for f in near.freq_khz:
+        assert np.min(np.abs(every.freq_khz - f)) <= 1e-10 * f
+
+
+@pytest.mark.parametrize("keywords, name", [
+    ({"Lx": 1}, "Lx"), ({"lattice": "cubic"}, "lattice"), ({"count": 3}, "count"), ({"width": 1.5}, "width"),
+    ({"method": "slepc"}, "method"), ({"boundary": "periodic", "strain": 0.01}, "packing"),
+])
+def test_bad_keywords_are_value_errors_naming_them(keywords, name):
+    with pytest.raises(ValueError, match=name):
+        gr.crystal(**keywords)
+
+
+def test_an_unknown_keyword_is_a_type_error():
+    with pytest.raises(TypeError, match="Lz"):
+        gr.crystal(Lz=3)
+
+
+def test_the_tool_writes_the_same_modes(tools):
+    csv, meta = tools.run("crystal", "--lattice", "square", "--Lx", "5", "--Ly", "7", "--disorder", "radius",
+                          "--width", "0.001", "--F0", "1000", "--quiet")
+    r = gr.crystal(lattice="square", Lx=5, Ly=7, disorder="radius", width=0.001, F0=1000.0)
+    np.testing.assert_array_equal(csv["freq_khz"], r.freq_khz)
+    np.testing.assert_array_equal(csv["ipr"], r.ipr)
+    assert meta["parameters"] == r.metadata["parameters"]

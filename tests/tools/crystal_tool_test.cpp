@@ -1,0 +1,142 @@
+// The `crystal` tool's contract: its options are crystal_parameters()'s rows, bad input is one
+// line naming the option with exit code 2 and nothing written, the JSON is the case's description
+// (its parameters parse back to the case), and SLEPc's nearest modes (also on two MPI ranks) are
+// the dense solver's.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "granular/crystal/crystal_case.hpp"
+#include "granular/parameter_json.hpp"
+#include "tool_runner.hpp"
+
+namespace granular::testing {
+namespace {
+
+/// The freq_khz column of a crystal CSV.
+std::vector<double> crystal_frequencies(const std::string& path) {
+  std::ifstream in(path);
+  std::string line;
+  std::getline(in, line);
+  EXPECT_EQ(line, "mode,freq_khz,omega2,ipr");
+  std::vector<double> f;
+  while (std::getline(in, line)) {
+    std::istringstream cells(line);
+    std::string mode, freq;
+    std::getline(cells, mode, ',');
+    std::getline(cells, freq, ',');
+    f.push_back(std::stod(freq));
+  }
+  return f;
+}
+
+TEST(CrystalTool, HelpListsEveryRowOfTheTable) {
+  const std::string dir = scratch_folder("crystal-help");
+  ASSERT_EQ(std::system(("'" + tool_path("crystal") + "' --help > " + dir + "/help.txt").c_str()), 0);
+  const std::string help = read_file(dir + "/help.txt");
+  for (const auto& p : crystal_parameters()) {
+    std::string flag = "--" + front_end_word(p.name);
+    std::replace(flag.begin(), flag.end(), '_', '-');
+    EXPECT_NE(help.find(flag + " "), std::string::npos) << p.name;
+  }
+  std::filesystem::remove_all(dir);
+}
+
+TEST(CrystalTool, WritesTheModesAndACaseThatParsesBack) {
+  const std::string dir = scratch_folder("crystal-run");
+  const std::string args = "--lattice hexagonal --Lx 6 --Ly 6 --F0 5 --disorder mass --width 0.2 --seed 3 --vectors";
+  const ToolResult r = run_tool("crystal", args + " --quiet --output " + dir + "/c");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto f = crystal_frequencies(dir + "/c.csv");
+  EXPECT_EQ(f.size(), 72U);  // every mode: 2 per bead
+  for (std::size_t k = 1; k < f.size(); ++k) EXPECT_LE(f[k - 1], f[k]);
+  EXPECT_GT(f.front(), 0);  // rigid under its walls
+  const auto meta = nlohmann::json::parse(read_file(dir + "/c.json"));
+  const CrystalCase c = parse_rows(meta.at("parameters"), crystal_parameters());
+  EXPECT_EQ(c.packing.lattice, Lattice::hexagonal);
+  EXPECT_EQ(c.packing.precompression, 5.0);
+  EXPECT_EQ(c.disorder.width, 0.2);
+  EXPECT_EQ(c.disorder.seed, 3U);
+  EXPECT_EQ(meta.at("spectrum").at("method"), "lapack");
+  EXPECT_LE(meta.at("static_state").at("max_imbalance").get<double>(), 1e-12);
+  // modes file: 72 modes × 36 beads, one header line
+  std::ifstream modes(dir + "/c-modes.csv");
+  std::size_t lines = 0;
+  for (std::string line; std::getline(modes, line);) ++lines;
+  EXPECT_EQ(lines, 1 + 72U * 36U);
+  std::filesystem::remove_all(dir);
+}
+
+/// Every frequency of `some` is one of `all` to 1e-10 relative.
+void expect_among(const std::vector<double>& some, const std::vector<double>& all, const std::string& what) {
+  for (double f : some) {
+    double closest = INFINITY;
+    for (double g : all) closest = std::fmin(closest, std::fabs(f - g));
+    EXPECT_LE(closest, 1e-10 * f) << what << ": " << f;
+  }
+}
+
+TEST(CrystalTool, NearestModesByArpackAndSlepcAreTheDenseOnes) {
+  const std::string dir = scratch_folder("crystal-near");
+  const std::string args = "--lattice hexagonal --Lx 12 --Ly 12 --disorder mass --width 0.3 --quiet";
+  ASSERT_EQ(run_tool("crystal", args + " --output " + dir + "/all").exit_code, 0);
+  const auto all = crystal_frequencies(dir + "/all.csv");
+  const std::string near = args + " --near " + std::to_string(all[all.size() / 2]) + " --count 10";
+  for (const std::string method : {"arpack", "slepc"}) {
+    const ToolResult r = run_tool("crystal", near + " --method " + method + " --output " + dir + "/" + method);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const auto some = crystal_frequencies(dir + "/" + method + ".csv");
+    ASSERT_EQ(some.size(), 10U);
+    expect_among(some, all, method);
+  }
+#ifdef GRANULAR_MPIEXEC_PATH
+  const std::string mpirun = "env OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 " +
+                             std::string(GRANULAR_MPIEXEC_PATH) + " --oversubscribe -np 2 ";
+  const std::string command =
+      mpirun + tool_path("crystal") + " " + near + " --method slepc --output " + dir + "/ranks > /dev/null 2>&1";
+  ASSERT_EQ(std::system(command.c_str()), 0);
+  const auto ranks = crystal_frequencies(dir + "/ranks.csv"), one = crystal_frequencies(dir + "/slepc.csv");
+  ASSERT_EQ(ranks.size(), one.size());
+  for (std::size_t k = 0; k < one.size(); ++k) EXPECT_NEAR(ranks[k], one[k], 1e-10 * one[k]);
+#endif
+  std::filesystem::remove_all(dir);
+}
+
+TEST(CrystalTool, BadInputIsOneLineNamingTheOptionAndWritesNothing) {
+  const std::string dir = scratch_folder("crystal-bad");
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"--Lx 1", "--Lx"},
+      {"--lattice cubic", "--lattice"},
+      {"--lattice hexagonal --Ly 5", "--Ly"},
+      {"--F0 -1", "--F0"},
+      {"--strain 0.01", "--strain"},                     // with walls: no effect, refused
+      {"--boundary periodic --strain 0.2", "--strain"},  // out of range
+      {"--width 1.5", "--width"},
+      {"--disorder radius", "--disorder"},  // without --width
+      {"--count 5", "--count"},             // without --near
+      {"--method slepc", "--method"},       // without --near
+      {"--near 20 --count 0", "--count"},
+      {"--near -3", "--near"},
+      {"--ratio-lo 30 --ratio-hi 10", "--ratio-hi"},
+      {"--boundary periodic --strain 0.01", "packing"},  // the compressed periodic square lattice is not rigid
+  };
+  for (const auto& [args, names] : cases) {
+    const ToolResult r = run_tool("crystal", args + " --output " + dir + "/out");
+    EXPECT_EQ(r.exit_code, 2) << args << ": " << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << args << ": " << r.err;
+    EXPECT_NE(r.err.find(names), std::string::npos) << args << ": " << r.err;
+    EXPECT_FALSE(std::filesystem::exists(dir + "/out.csv")) << args;
+    EXPECT_FALSE(std::filesystem::exists(dir + "/out.json")) << args;
+  }
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace granular::testing
