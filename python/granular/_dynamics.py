@@ -9,7 +9,6 @@ import numpy as np
 
 from . import _core
 from ._arguments import double_vector, number_list
-from ._model import _quasi
 from ._results import ExponentTable, SpreadingRun, Transport
 from ._schema import TableKeywords, split_keywords, with_keywords
 
@@ -25,6 +24,11 @@ _RUN = TableKeywords(_CASE, skip=_OWN + _OUTPUT_ROWS + _ONE_RUN_ROWS)
 _ONE_RUN = TableKeywords(_CASE, skip=_OWN + _OUTPUT_ROWS)  # granular.spreading: with both
 _OUTPUTS = TableKeywords(_CASE, only=_OUTPUT_ROWS, skip=("forces_at",))  # forces_at: a list of beads here
 _MODE = TableKeywords(_core.ModeKick())  # a mode kick's mode, near, energy (mode_khz: near's former keyword)
+# The chains of an ensemble: the rows of the library's chain table (chain_parameters()) that the spreading tool takes
+# with --realizations, each with the kicked case's C++ default (KickedCaseChoices().chain: N 2501). Not the files
+# (config, radii: one given chain, which an ensemble refuses) nor the realization (an ensemble runs 0..R-1).
+_ENSEMBLE_SKIP = ("config", "radii", "realization")
+_TRANSPORT_CHAIN = TableKeywords(_core.KickedCaseChoices().chain, skip=_ENSEMBLE_SKIP)
 
 _DYNAMICS_DOC = """\
     beta: velocity kick [m/s] (the paper's 8e-3 for every F0) or 'match' (the energy of alpha on each chain)
@@ -64,12 +68,16 @@ def _case(table, run, beta, site, dt, fit, c=None):
     return c
 
 
-_QUASI_DOC = """\
-    quasi: None, or a quasiperiodic chain instead of a random one (the tools' --quasi): 's1' (on-site springs), \
-'s2' (masses) or 'cylinders' (crossing angles), with modulation, ratio ('golden', 'p/q' or a number), phase [rad] \
-(None: drawn uniformly per seed and realization, the phase ensemble), angle [degrees] and k0 as \
-granular.quasiperiodic's; disorder, q and xi are then not used
-"""
+def _chain(table, out, given):
+    """`out` (a _core.ChainChoices) with the chain keywords `given` set by `table` (a TableKeywords of the library's
+    chain_parameters()), N and seed given checked here as sizes (N at most 1e8 beads, before a chain is drawn). The
+    rest is checked in C++ by the tools' rule (one source, no keyword that would take no effect)."""
+    table.set(out, given)
+    if "N" in given:
+        _core._size(out.N, "N", 2, _MAX)
+    if "seed" in given:
+        _core._size(out.seed, "seed")
+    return out
 
 
 def _distribution(text, keyword):
@@ -208,16 +216,12 @@ spreading.__doc__ = (
     "tool's PREFIX-lyapunov.csv; else None), warnings, metadata. Releases the GIL.")
 
 
-def transport(*, disorder="A", N=2501, q=0.5, xi=0.5, F0=10.0, R1=_core.paper_r1, seed=1, realizations=100,
-              ic="displacement", beta=_CASE.beta, site=None, dt=None, fit=(_CASE.fit_begin, _CASE.fit_end),
-              profile=False, threads=0, checkpoint=None, resume=False, resume_other_version=False, fresh=False,
-              skip_failed=False, progress=False, walls="flat", quasi=None, modulation=0.0, ratio="golden", phase=None,
-              angle=45.0, k0=4.0, types=None, type_masses=None, polydisperse=None, **run):
-    given, modes = split_keywords(run, [_RUN, _MODE], "transport")
+def transport(*, realizations=100, ic="displacement", beta=_CASE.beta, site=None, dt=None,
+              fit=(_CASE.fit_begin, _CASE.fit_end), profile=False, threads=0, checkpoint=None, resume=False,
+              resume_other_version=False, fresh=False, skip_failed=False, progress=False, **keywords):
+    chain, given, modes = split_keywords(keywords, [_TRANSPORT_CHAIN, _RUN, _MODE], "transport")
     k = _core.KickedCaseChoices()  # made a case by the spreading tool's rule, in C++
-    _chain_choices(k.chain, disorder=disorder, N=N, q=q, xi=xi, F0=F0, R1=R1, seed=seed, walls=walls, types=types,
-                   type_masses=type_masses, polydisperse=polydisperse)
-    _quasi_choices(k.chain, quasi, modulation, ratio, phase, angle, k0)
+    _chain(_TRANSPORT_CHAIN, k.chain, chain)
     k.ic, k.realizations = ic, _core._size(realizations, "realizations", 1)
     _MODE.set(k.mode, modes)
     k.run = _case(_RUN, given, beta, site, dt, fit)
@@ -246,12 +250,9 @@ def _transport(raw, profile):
 transport.__doc__ = (
     "An ensemble of spreading runs: realizations 0..R-1 of seed `seed` of a disordered chain, each "
     "kicked and integrated to T, averaged and fitted (the spreading tool's --realizations R).\n\n"
-    "    disorder, N, q, xi, F0 [N], R1 [m], seed, walls: the chains, as granular.random_chain's\n"
-    "    types, type_masses, polydisperse: None, or chains of k bead types 'R1:P1,R2:P2,...' (radius [m]: "
-    "probability, drawn by disorder 'A' (each bead), 'RDM1' (each dimer) or 'RDM2' (two types)), of k masses "
-    "'M1:P1,...' [kg] of steel spheres, or of radii drawn per bead 'uniform:LO:HI' or 'normal:MEAN:SD:MIN' [m] "
-    "instead of the two-type draw (the tools' --types, --type-masses, --polydisperse; one of them or quasi)\n"
-    "    realizations: R; ic: 'displacement' | 'velocity' | 'mode'\n" + _MODE_DOC + _QUASI_DOC + _DYNAMICS_DOC +
+    "    the chains: the chain keywords below (a random two-type draw, k types, polydisperse radii or a "
+    "quasiperiodic chain, as the spreading tool's chain options; None: none), realization r of seed `seed` each\n"
+    "    realizations: R; ic: 'displacement' | 'velocity' | 'mode'\n" + _MODE_DOC + _DYNAMICS_DOC +
     "    profile: also average the site energies E_n(T)\n"
     "    threads: worker threads (0: every core); results do not depend on it\n"
     "    checkpoint: a file logging each finished realization (removed once the run completes); resume=True "
@@ -340,3 +341,6 @@ with_keywords(spreading, [_OUTPUTS], "Output keywords (the library's spreading_o
               "observers' C++ defaults)")
 with_keywords(transport, [_RUN], _RUN_HEADING)
 with_keywords(exponent_table, [_RUN], _RUN_HEADING)
+_CHAIN_HEADING = "Chain keywords (the library's chain_parameters(), with the C++ defaults of {})"
+with_keywords(transport, [_TRANSPORT_CHAIN], _CHAIN_HEADING.format("the spreading tool's chains, "
+              "KickedCaseChoices().chain"), first=True)

@@ -74,12 +74,18 @@ class TableKeywords:
         return out
 
 
-def with_keywords(function, tables, doc_heading):
+def with_keywords(function, tables, doc_heading, first=False):
     """`function` (taking **keywords) given the signature of its own parameters followed by the keywords of
-    `tables` (TableKeywords), and a docstring section listing them: what help() and inspect show."""
+    `tables` (TableKeywords), and a docstring section listing them: what help() and inspect show. `first`: the
+    tables' keywords come before the function's own keyword-only ones (after its positional ones), as a job's
+    chain keywords come before its kick, dynamics and run."""
     own = [p for p in inspect.signature(function).parameters.values() if p.kind != inspect.Parameter.VAR_KEYWORD]
     made = [p for table in tables for p in table.parameters()]
-    function.__signature__ = inspect.Signature(own + made)
+    if first:
+        positional = [p for p in own if p.kind != inspect.Parameter.KEYWORD_ONLY]
+        function.__signature__ = inspect.Signature(positional + made + own[len(positional):])
+    else:
+        function.__signature__ = inspect.Signature(own + made)
     function.__doc__ = (function.__doc__ or "") + f"\n\n    {doc_heading}:\n" + "\n".join(t.doc() for t in tables)
     return function
 
