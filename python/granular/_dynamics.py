@@ -29,6 +29,9 @@ _MODE = TableKeywords(_core.ModeKick())  # a mode kick's mode, near, energy (mod
 # (config, radii: one given chain, which an ensemble refuses) nor the realization (an ensemble runs 0..R-1).
 _ENSEMBLE_SKIP = ("config", "radii", "realization")
 _TRANSPORT_CHAIN = TableKeywords(_core.KickedCaseChoices().chain, skip=_ENSEMBLE_SKIP)
+# exponent_table's chains: the rows the exponents tool takes, each with ExponentChoices().beads's C++ default. Not
+# disorder (the kinds are `chains`, the rule of k types `types_rule`), F0 (a list of the table's own) nor R1.
+_TABLE_CHAIN = TableKeywords(_core.ExponentChoices().beads, skip=_ENSEMBLE_SKIP + ("disorder", "F0", "R1"))
 
 _DYNAMICS_DOC = """\
     beta: velocity kick [m/s] (the paper's 8e-3 for every F0) or 'match' (the energy of alpha on each chain)
@@ -270,21 +273,17 @@ transport.__doc__ = (
 
 
 def exponent_table(*, chains=["h", "A", "RDM1", "RDM2"], F0=[10.0, 0.5, 0.1, 0.01, 0.0],  # noqa: B006 (read only)
-                   ic=["displacement", "velocity"], N=2501, xi=0.5, q=0.5, realizations=500, seed=1,
-                   beta=_CASE.beta, site=None, dt=None, fit=(_CASE.fit_begin, _CASE.fit_end),
-                   profile_F0=[10.0, 0.1, 0.0], profile_realizations=100, compare_paper=False, threads=0,
-                   checkpoint=None, resume=False, resume_other_version=False, fresh=False, skip_failed=False,
-                   progress=False, walls="flat", quasi=None, modulation=0.0, ratio="golden", phase=None, angle=45.0,
-                   k0=4.0, chain_name=None, types=None, type_masses=None, polydisperse=None, types_rule=None, **run):
-    given, modes = split_keywords(run, [_RUN, _MODE], "exponent_table")
+                   ic=["displacement", "velocity"], realizations=500, beta=_CASE.beta, site=None, dt=None,
+                   fit=(_CASE.fit_begin, _CASE.fit_end), profile_F0=[10.0, 0.1, 0.0], profile_realizations=100,
+                   compare_paper=False, threads=0, checkpoint=None, resume=False, resume_other_version=False,
+                   fresh=False, skip_failed=False, progress=False, chain_name=None, types_rule=None, **keywords):
+    chain, given, modes = split_keywords(keywords, [_TABLE_CHAIN, _RUN, _MODE], "exponent_table")
     words = _core.ExponentChoices()  # made the table's chains and kicks by the tool's rule, in C++
     words.chains = [] if chains is None or chains == "none" else chains
     words.ic = ic
     _MODE.set(words.mode, modes)
     # every kind's chains, and the chain of one's own: k types, polydisperse radii, or quasiperiodic
-    _chain_choices(words.beads, N=N, xi=xi, q=q, seed=seed, walls=walls, types=types, type_masses=type_masses,
-                   polydisperse=polydisperse)
-    _quasi_choices(words.beads, quasi, modulation, ratio, phase, angle, k0)
+    _chain(_TABLE_CHAIN, words.beads, chain)
     words.types_rule = "" if types_rule is None else str(types_rule)
     words.chain_name = "" if chain_name is None else str(chain_name)
     table = _core.ExponentTableConfig()
@@ -305,15 +304,10 @@ exponent_table.__doc__ = (
     "deterministic).\n\n"
     "    chains: kinds among 'h', 'A', 'RDM1', 'RDM2' ('none' or []: only the quasiperiodic chain); F0: "
     "precompressions [N] (0: sonic vacuum); ic: kicks among 'displacement', 'velocity', 'mode'\n" + _MODE_DOC +
-    "    N, xi, q, realizations, seed, walls ('flat' | 'sphere'): "
-    "the chains\n"
-    "    quasi: None, or one more chain after the kinds, quasiperiodic (the tool's --quasi): 's1', 's2' or "
-    "'cylinders', with modulation, ratio, phase (None: drawn per seed and realization, R phases), angle and k0 as "
-    "granular.quasiperiodic's\n"
-    "    types, type_masses, polydisperse: None, or one more chain after the kinds, of k bead types "
-    "'R1:P1,R2:P2,...' (radius [m]: probability), of k masses 'M1:P1,...' [kg] of steel spheres, or of radii drawn "
-    "per bead 'uniform:LO:HI' or 'normal:MEAN:SD:MIN' [m] (the tool's --types, --type-masses, --polydisperse; one of "
-    "them or quasi); types_rule: how types are drawn, 'A' (each bead, the default), 'RDM1' (each dimer) or 'RDM2' "
+    "    realizations: R per disordered case; the chains: the chain keywords below (N, xi, q, seed, walls of "
+    "every kind; quasi, or one of types, type_masses, polydisperse: one more chain after the kinds, as the tool's "
+    "chain options)\n"
+    "    types_rule: how types are drawn, 'A' (each bead, the default), 'RDM1' (each dimer) or 'RDM2' "
     "(two types: dimers 12 or 21)\n"
     "    chain_name: the name of that chain in the table (default 'types', 'polydisperse' or 'quasi-KIND')\n" +
     _DYNAMICS_DOC +
@@ -344,3 +338,5 @@ with_keywords(exponent_table, [_RUN], _RUN_HEADING)
 _CHAIN_HEADING = "Chain keywords (the library's chain_parameters(), with the C++ defaults of {})"
 with_keywords(transport, [_TRANSPORT_CHAIN], _CHAIN_HEADING.format("the spreading tool's chains, "
               "KickedCaseChoices().chain"), first=True)
+with_keywords(exponent_table, [_TABLE_CHAIN], _CHAIN_HEADING.format("the exponents tool's chains, "
+              "ExponentChoices().beads"), first=True)
