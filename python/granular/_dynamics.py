@@ -83,37 +83,6 @@ def _chain(table, out, given):
     return out
 
 
-def _distribution(text, keyword):
-    """A bead distribution in the tools' text ('R1:P1,R2:P2', 'uniform:LO:HI'), or "" for None."""
-    if text is None:
-        return ""
-    if not isinstance(text, str):
-        raise TypeError(f"{keyword}: expected a string such as the tool's --{keyword.replace('_', '-')}, got "
-                        f"{type(text).__name__}")
-    return text
-
-
-def _chain_choices(c, types=None, type_masses=None, polydisperse=None, **fields):
-    """Fills `c` (a _core.ChainChoices) with chain keywords: N and seed checked as sizes, the bead distributions in
-    the tools' texts (None: none), the other fields as given."""
-    if "N" in fields:
-        fields["N"] = _core._size(fields["N"], "N", 2, _MAX)
-    if "seed" in fields:
-        fields["seed"] = _core._size(fields["seed"], "seed")
-    for keyword, value in fields.items():
-        setattr(c, keyword, value)
-    c.types, c.type_masses = _distribution(types, "types"), _distribution(type_masses, "type_masses")
-    c.polydisperse = _distribution(polydisperse, "polydisperse")
-
-
-def _quasi_choices(c, quasi, modulation, ratio, phase, angle, k0):
-    """Makes `c` (a _core.ChainChoices) the quasiperiodic chain `quasi` of granular.quasiperiodic's keywords, as the
-    tools' --quasi takes them; None: none (its keywords are then refused by the tools' rule, not ignored)."""
-    c.quasi, c.modulation, c.phase, c.angle, c.k0 = "" if quasi is None else quasi, modulation, phase, angle, k0
-    if ratio is not None:  # None: the default (the golden mean)
-        c.ratio = ratio if isinstance(ratio, str) else repr(float(ratio))
-
-
 def _run(threads=0, checkpoint=None, resume=False, resume_other_version=False, progress=False, fresh=False,
          skip_failed=False):
     """The library's run options (their table: _core._RunOptions), where the run checkpoints and its progress bar."""

@@ -17,17 +17,30 @@
 #include "granular/model/named_chains.hpp"
 #include "granular/model/plausibility.hpp"
 #include "granular/study/butterfly.hpp"
+#include "granular/study/chain_choices.hpp"
 #include "granular/study/dynamical_butterfly.hpp"
 #include "granular/study/frequency_slips.hpp"
 
 namespace granular::python {
 namespace {
 
-/// `c` as granular/_studies.py fills it (the grid, the two-type draw, the selection); `beads`: the chain's
-/// kind (walls, a quasiperiodic chain or k types) and `solver`/`method`, by the ipr-map tool's rules.
+/// `chain`'s two-type draw (disorder, q, N, F0, R1, seed) from the chain keywords, as a study tool's
+/// flags set it (a map's q is each cell's).
+void set_draw(ChainRecipe& chain, const ChainChoices& beads) {
+  chain.draw().disorder = parse_disorder(beads.disorder);
+  chain.draw().q = beads.q;
+  chain.N = checked_size(beads.n, "N", 2, 100000000);
+  chain.F0 = beads.f0, chain.R1 = beads.r1;
+  chain.seed = checked_size(beads.seed, "seed");
+}
+
+/// `c` as granular/_studies.py fills it (the grid, the selection); `beads`: the chain keywords (the
+/// two-type draw's numbers, the walls, a quasiperiodic chain or k types) and `solver`/`method`, by the
+/// ipr-map tool's rules.
 py::dict ipr_map(IprMapConfig c, const ChainChoices& beads, const std::string& solver,
                  const std::optional<std::string>& method, const PyRun& options) {
   const int thread_request = options.thread_request();
+  set_draw(c.chain, beads);
   set_solver(c, solver, method);
   set_chain_kind(c, beads);
   validate(c);
@@ -91,10 +104,11 @@ py::dict localization(const PyChain* chain, const ChainChoices& choices, const L
                 std::move(scan.idos), std::move(scan.dos), scan.beads, meta);
 }
 
-/// `c` as granular/_studies.py fills it; `beads`: k types or polydisperse radii instead of the two types,
-/// by the correlations tool's rule.
+/// `c` as granular/_studies.py fills it; `beads`: the chain keywords (the two-type draw's numbers, or k
+/// types or polydisperse radii instead of the two types), by the correlations tool's rule.
 py::dict correlations(CorrelationConfig c, const ChainChoices& beads, const PyRun& options) {
   options.thread_request();
+  set_draw(c.chain, beads);
   set_chain_kind(c, beads);
   validate(c);
   CorrelationResult result;
@@ -155,6 +169,9 @@ void bind_studies(py::module_& m) {
   m.def("_ipr_map", &ipr_map);
   m.def("_localization", &localization);
   m.def("_localization_chain", &localization_chain);  // the chain keywords' defaults
+  // granular.ipr_map's and granular.correlations' chain keywords' defaults: their studies' default chain
+  m.def("_ipr_map_chain", [] { return chain_choices(IprMapConfig{}.chain); });
+  m.def("_correlation_chain", [] { return chain_choices(CorrelationConfig{}.chain); });
   m.attr("_localization_frequencies") = localization_frequencies;
   m.def("_correlations", &correlations);
   m.def("_butterfly", &butterfly);
