@@ -92,3 +92,13 @@ def test_a_row_new_to_a_job_reaches_the_library(call, keywords, message):
 def test_an_unknown_chain_keyword_is_a_type_error(function):
     with pytest.raises(TypeError, match="unexpected keyword argument 'Nbeads'"):
         function(Nbeads=10)
+
+
+@pytest.mark.parametrize("defaults, config", [(core._ipr_map_chain, core.IprMapConfig),
+                                              (core._correlation_chain, core.CorrelationConfig)])
+def test_a_studys_chain_defaults_are_its_configs_recipe(defaults, config):
+    """chain_choices() (chain_choices.hpp) says a study's default recipe in the chain table's words: the same
+    two-type draw, so the keywords' defaults are the study's own and not a second copy."""
+    choices, recipe = defaults(), config().chain
+    for name in ("disorder", "q", "xi", "N", "F0", "R1", "seed", "walls"):
+        assert getattr(choices, name) == getattr(recipe, name), name
