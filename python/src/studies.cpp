@@ -34,6 +34,17 @@ void set_draw(ChainRecipe& chain, const ChainChoices& beads) {
   chain.seed = checked_size(beads.seed, "seed");
 }
 
+/// The chain keywords as a study tool's chain-kind options hold them (walls, a quasiperiodic chain,
+/// a bead distribution and its rule): the draw's numbers, which set_draw put in the recipe, at
+/// ChainChoices' own, so that R1 beside `types` or `seed` with disorder h is taken as the tool
+/// takes --R1 and --seed, not refused by the chain table's overridden rule.
+ChainChoices chain_kind(ChainChoices beads) {
+  const ChainChoices plain;
+  beads.q = plain.q, beads.xi = plain.xi, beads.n = plain.n, beads.f0 = plain.f0, beads.r1 = plain.r1;
+  beads.seed = plain.seed;
+  return beads;
+}
+
 /// `c` as granular/_studies.py fills it (the grid, the selection); `beads`: the chain keywords (the
 /// two-type draw's numbers, the walls, a quasiperiodic chain or k types) and `solver`/`method`, by the
 /// ipr-map tool's rules.
@@ -42,7 +53,7 @@ py::dict ipr_map(IprMapConfig c, const ChainChoices& beads, const std::string& s
   const int thread_request = options.thread_request();
   set_draw(c.chain, beads);
   set_solver(c, solver, method);
-  set_chain_kind(c, beads);
+  set_chain_kind(c, chain_kind(beads));
   validate(c);
   warn(radius_warnings(c.chain, radius_names(beads, front_end_word)));  // implausible radii, as the tool warns
   warn(frequency_slips(c, front_end_word));  // near, window: Hz typed as kHz, as the tool warns
@@ -109,7 +120,7 @@ py::dict localization(const PyChain* chain, const ChainChoices& choices, const L
 py::dict correlations(CorrelationConfig c, const ChainChoices& beads, const PyRun& options) {
   options.thread_request();
   set_draw(c.chain, beads);
-  set_chain_kind(c, beads);
+  set_chain_kind(c, chain_kind(beads));
   validate(c);
   CorrelationResult result;
   run_long("correlations", c.realizations, options, [&](const RunOptions& run) { result = correlation_study(c, run); });

@@ -8,6 +8,7 @@ import math
 import pytest
 
 import granular as gr
+from conftest import assert_identical
 
 core = gr._core
 FILES = ("config", "radii", "realization")  # one given chain, or one realization: not an ensemble's
@@ -102,3 +103,19 @@ def test_a_studys_chain_defaults_are_its_configs_recipe(defaults, config):
     choices, recipe = defaults(), config().chain
     for name in ("disorder", "q", "xi", "N", "F0", "R1", "seed", "walls"):
         assert getattr(choices, name) == getattr(recipe, name), name
+
+
+@pytest.mark.parametrize("keywords, flags", [
+    ({"R1": 5e-3, "types": "4.76e-3:0.6,3e-3:0.4"}, ["--R1", "5e-3", "--types", "4.76e-3:0.6,3e-3:0.4"]),
+    ({"disorder": "h", "seed": 2}, ["--disorder", "h", "--seed", "2"]),
+])
+def test_ipr_map_takes_the_draws_numbers_as_its_tool(tools, keywords, flags):
+    """The ipr-map tool sets R1 and seed in the map's recipe, beside its chain-kind options: it takes --R1 with
+    --types and --seed with --disorder h, and so does ipr_map (the keywords made from the chain table are not
+    refused by its overridden rule here)."""
+    csv, meta = tools.run("ipr-map", "--N", "20", "--realizations", "2", "--xi", "0.5", "--q", "0.5", *flags,
+                          "--quiet")
+    grid = gr.ipr_map(N=20, realizations=2, xi=0.5, q=0.5, **keywords)
+    for key in ("mode", "freq_khz", "ipr"):
+        assert_identical(grid.rows()[key], csv[key])
+    assert grid.metadata["parameters"] == meta["parameters"]
