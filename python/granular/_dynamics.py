@@ -242,10 +242,11 @@ transport.__doc__ = (
 
 
 def exponent_table(*, chains=["h", "A", "RDM1", "RDM2"], F0=[10.0, 0.5, 0.1, 0.01, 0.0],  # noqa: B006 (read only)
-                   ic=["displacement", "velocity"], realizations=500, beta=_CASE.beta, site=None, dt=None,
-                   fit=(_CASE.fit_begin, _CASE.fit_end), profile_F0=[10.0, 0.1, 0.0], profile_realizations=100,
-                   compare_paper=False, threads=0, checkpoint=None, resume=False, resume_other_version=False,
-                   fresh=False, skip_failed=False, progress=False, chain_name=None, types_rule=None, **keywords):
+                   types_rule=None, chain_name=None, ic=["displacement", "velocity"], realizations=500,
+                   beta=_CASE.beta, site=None, dt=None, fit=(_CASE.fit_begin, _CASE.fit_end),
+                   profile_F0=[10.0, 0.1, 0.0], profile_realizations=100, compare_paper=False, threads=0,
+                   checkpoint=None, resume=False, resume_other_version=False, fresh=False, skip_failed=False,
+                   progress=False, **keywords):
     chain, given, modes = split_keywords(keywords, [_TABLE_CHAIN, _RUN, _MODE], "exponent_table")
     words = _core.ExponentChoices()  # made the table's chains and kicks by the tool's rule, in C++
     words.chains = [] if chains is None or chains == "none" else chains
@@ -297,14 +298,14 @@ exponent_table.__doc__ = (
 
 _RUN_HEADING = "Run keywords (the library's transport_parameters(), with the case's C++ defaults)"
 _MODE_HEADING = "Mode kick keywords (the library's mode_kick_parameters(), with ModeKick's C++ defaults)"
-for _job in (spreading, transport, exponent_table):
-    with_keywords(_job, [_MODE], _MODE_HEADING)
-with_keywords(spreading, [_ONE_RUN], _RUN_HEADING)
-with_keywords(spreading, [_OUTPUTS], "Output keywords (the library's spreading_output_parameters(), with the "
-              "observers' C++ defaults)")
-with_keywords(transport, [_RUN], _RUN_HEADING)
-with_keywords(exponent_table, [_RUN], _RUN_HEADING)
 _CHAIN_HEADING = "Chain keywords (the library's chain_parameters(), with the C++ defaults of {})"
+# Each signature as users think: the chain, the kick (ic, then the mode kick's), the dynamics (the run table after
+# fit), the outputs, how the run goes (threads, checkpoint, progress).
+for _job in (spreading, transport, exponent_table):
+    with_keywords(_job, [_MODE], _MODE_HEADING, after="ic")
+    with_keywords(_job, [_ONE_RUN if _job is spreading else _RUN], _RUN_HEADING, after="fit")
+with_keywords(spreading, [_OUTPUTS], "Output keywords (the library's spreading_output_parameters(), with the "
+              "observers' C++ defaults)", after="forces_at")
 with_keywords(transport, [_TRANSPORT_CHAIN], _CHAIN_HEADING.format("the spreading tool's chains, "
               "KickedCaseChoices().chain"), first=True)
 with_keywords(exponent_table, [_TABLE_CHAIN], _CHAIN_HEADING.format("the exponents tool's chains, "

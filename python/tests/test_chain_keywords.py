@@ -119,3 +119,16 @@ def test_ipr_map_takes_the_draws_numbers_as_its_tool(tools, keywords, flags):
     for key in ("mode", "freq_khz", "ipr"):
         assert_identical(grid.rows()[key], csv[key])
     assert grid.metadata["parameters"] == meta["parameters"]
+
+
+@pytest.mark.parametrize("function, landmarks", [
+    (gr.transport, ["N", "realizations", "ic", "mode", "beta", "fit", "T", "profile", "threads", "progress"]),
+    (gr.exponent_table, ["N", "chains", "ic", "mode", "beta", "fit", "T", "profile_F0", "threads", "progress"]),
+    (gr.spreading, ["chain", "ic", "mode", "beta", "fit", "T", "forces_at", "energy_map", "progress"]),
+])
+def test_keywords_are_grouped_as_users_think(function, landmarks):
+    """chain, kick (ic and the mode kick's), dynamics (the run table after fit), outputs, run: the tables' keywords
+    sit in their group, not after the function's own."""
+    names = list(inspect.signature(function).parameters)
+    at = [names.index(name) for name in landmarks]
+    assert at == sorted(at), [names[i] for i in sorted(at)]
