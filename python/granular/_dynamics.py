@@ -9,7 +9,6 @@ import numpy as np
 
 from . import _core
 from ._arguments import double_vector, number_list
-from ._model import _quasi
 from ._results import ExponentTable, SpreadingRun, Transport
 from ._schema import TableKeywords, split_keywords, with_keywords
 
@@ -25,6 +24,14 @@ _RUN = TableKeywords(_CASE, skip=_OWN + _OUTPUT_ROWS + _ONE_RUN_ROWS)
 _ONE_RUN = TableKeywords(_CASE, skip=_OWN + _OUTPUT_ROWS)  # granular.spreading: with both
 _OUTPUTS = TableKeywords(_CASE, only=_OUTPUT_ROWS, skip=("forces_at",))  # forces_at: a list of beads here
 _MODE = TableKeywords(_core.ModeKick())  # a mode kick's mode, near, energy (mode_khz: near's former keyword)
+# The chains of an ensemble: the rows of the library's chain table (chain_parameters()) that the spreading tool takes
+# with --realizations, each with the kicked case's C++ default (KickedCaseChoices().chain: N 2501). Not the files
+# (config, radii: one given chain, which an ensemble refuses) nor the realization (an ensemble runs 0..R-1).
+_ENSEMBLE_SKIP = ("config", "radii", "realization")
+_TRANSPORT_CHAIN = TableKeywords(_core.KickedCaseChoices().chain, skip=_ENSEMBLE_SKIP)
+# exponent_table's chains: the rows the exponents tool takes, each with ExponentChoices().beads's C++ default. Not
+# disorder (the kinds are `chains`, the rule of k types `types_rule`), F0 (a list of the table's own) nor R1.
+_TABLE_CHAIN = TableKeywords(_core.ExponentChoices().beads, skip=_ENSEMBLE_SKIP + ("disorder", "F0", "R1"))
 
 _DYNAMICS_DOC = """\
     beta: velocity kick [m/s] (the paper's 8e-3 for every F0) or 'match' (the energy of alpha on each chain)
@@ -64,43 +71,16 @@ def _case(table, run, beta, site, dt, fit, c=None):
     return c
 
 
-_QUASI_DOC = """\
-    quasi: None, or a quasiperiodic chain instead of a random one (the tools' --quasi): 's1' (on-site springs), \
-'s2' (masses) or 'cylinders' (crossing angles), with modulation, ratio ('golden', 'p/q' or a number), phase [rad] \
-(None: drawn uniformly per seed and realization, the phase ensemble), angle [degrees] and k0 as \
-granular.quasiperiodic's; disorder, q and xi are then not used
-"""
-
-
-def _distribution(text, keyword):
-    """A bead distribution in the tools' text ('R1:P1,R2:P2', 'uniform:LO:HI'), or "" for None."""
-    if text is None:
-        return ""
-    if not isinstance(text, str):
-        raise TypeError(f"{keyword}: expected a string such as the tool's --{keyword.replace('_', '-')}, got "
-                        f"{type(text).__name__}")
-    return text
-
-
-def _chain_choices(c, types=None, type_masses=None, polydisperse=None, **fields):
-    """Fills `c` (a _core.ChainChoices) with chain keywords: N and seed checked as sizes, the bead distributions in
-    the tools' texts (None: none), the other fields as given."""
-    if "N" in fields:
-        fields["N"] = _core._size(fields["N"], "N", 2, _MAX)
-    if "seed" in fields:
-        fields["seed"] = _core._size(fields["seed"], "seed")
-    for keyword, value in fields.items():
-        setattr(c, keyword, value)
-    c.types, c.type_masses = _distribution(types, "types"), _distribution(type_masses, "type_masses")
-    c.polydisperse = _distribution(polydisperse, "polydisperse")
-
-
-def _quasi_choices(c, quasi, modulation, ratio, phase, angle, k0):
-    """Makes `c` (a _core.ChainChoices) the quasiperiodic chain `quasi` of granular.quasiperiodic's keywords, as the
-    tools' --quasi takes them; None: none (its keywords are then refused by the tools' rule, not ignored)."""
-    c.quasi, c.modulation, c.phase, c.angle, c.k0 = "" if quasi is None else quasi, modulation, phase, angle, k0
-    if ratio is not None:  # None: the default (the golden mean)
-        c.ratio = ratio if isinstance(ratio, str) else repr(float(ratio))
+def _chain(table, out, given):
+    """`out` (a _core.ChainChoices) with the chain keywords `given` set by `table` (a TableKeywords of the library's
+    chain_parameters()), N and seed given checked here as sizes (N at most 1e8 beads, before a chain is drawn). The
+    rest is checked in C++ by the tools' rule (one source, no keyword that would take no effect)."""
+    table.set(out, given)
+    if "N" in given:
+        _core._size(out.N, "N", 2, _MAX)
+    if "seed" in given:
+        _core._size(out.seed, "seed")
+    return out
 
 
 def _run(threads=0, checkpoint=None, resume=False, resume_other_version=False, progress=False, fresh=False,
@@ -208,16 +188,12 @@ spreading.__doc__ = (
     "tool's PREFIX-lyapunov.csv; else None), warnings, metadata. Releases the GIL.")
 
 
-def transport(*, disorder="A", N=2501, q=0.5, xi=0.5, F0=10.0, R1=_core.paper_r1, seed=1, realizations=100,
-              ic="displacement", beta=_CASE.beta, site=None, dt=None, fit=(_CASE.fit_begin, _CASE.fit_end),
-              profile=False, threads=0, checkpoint=None, resume=False, resume_other_version=False, fresh=False,
-              skip_failed=False, progress=False, walls="flat", quasi=None, modulation=0.0, ratio="golden", phase=None,
-              angle=45.0, k0=4.0, types=None, type_masses=None, polydisperse=None, **run):
-    given, modes = split_keywords(run, [_RUN, _MODE], "transport")
+def transport(*, realizations=100, ic="displacement", beta=_CASE.beta, site=None, dt=None,
+              fit=(_CASE.fit_begin, _CASE.fit_end), profile=False, threads=0, checkpoint=None, resume=False,
+              resume_other_version=False, fresh=False, skip_failed=False, progress=False, **keywords):
+    chain, given, modes = split_keywords(keywords, [_TRANSPORT_CHAIN, _RUN, _MODE], "transport")
     k = _core.KickedCaseChoices()  # made a case by the spreading tool's rule, in C++
-    _chain_choices(k.chain, disorder=disorder, N=N, q=q, xi=xi, F0=F0, R1=R1, seed=seed, walls=walls, types=types,
-                   type_masses=type_masses, polydisperse=polydisperse)
-    _quasi_choices(k.chain, quasi, modulation, ratio, phase, angle, k0)
+    _chain(_TRANSPORT_CHAIN, k.chain, chain)
     k.ic, k.realizations = ic, _core._size(realizations, "realizations", 1)
     _MODE.set(k.mode, modes)
     k.run = _case(_RUN, given, beta, site, dt, fit)
@@ -246,12 +222,9 @@ def _transport(raw, profile):
 transport.__doc__ = (
     "An ensemble of spreading runs: realizations 0..R-1 of seed `seed` of a disordered chain, each "
     "kicked and integrated to T, averaged and fitted (the spreading tool's --realizations R).\n\n"
-    "    disorder, N, q, xi, F0 [N], R1 [m], seed, walls: the chains, as granular.random_chain's\n"
-    "    types, type_masses, polydisperse: None, or chains of k bead types 'R1:P1,R2:P2,...' (radius [m]: "
-    "probability, drawn by disorder 'A' (each bead), 'RDM1' (each dimer) or 'RDM2' (two types)), of k masses "
-    "'M1:P1,...' [kg] of steel spheres, or of radii drawn per bead 'uniform:LO:HI' or 'normal:MEAN:SD:MIN' [m] "
-    "instead of the two-type draw (the tools' --types, --type-masses, --polydisperse; one of them or quasi)\n"
-    "    realizations: R; ic: 'displacement' | 'velocity' | 'mode'\n" + _MODE_DOC + _QUASI_DOC + _DYNAMICS_DOC +
+    "    the chains: the chain keywords below (a random two-type draw, k types, polydisperse radii or a "
+    "quasiperiodic chain, as the spreading tool's chain options; None: none), realization r of seed `seed` each\n"
+    "    realizations: R; ic: 'displacement' | 'velocity' | 'mode'\n" + _MODE_DOC + _DYNAMICS_DOC +
     "    profile: also average the site energies E_n(T)\n"
     "    threads: worker threads (0: every core); results do not depend on it\n"
     "    checkpoint: a file logging each finished realization (removed once the run completes); resume=True "
@@ -269,21 +242,18 @@ transport.__doc__ = (
 
 
 def exponent_table(*, chains=["h", "A", "RDM1", "RDM2"], F0=[10.0, 0.5, 0.1, 0.01, 0.0],  # noqa: B006 (read only)
-                   ic=["displacement", "velocity"], N=2501, xi=0.5, q=0.5, realizations=500, seed=1,
+                   types_rule=None, chain_name=None, ic=["displacement", "velocity"], realizations=500,
                    beta=_CASE.beta, site=None, dt=None, fit=(_CASE.fit_begin, _CASE.fit_end),
                    profile_F0=[10.0, 0.1, 0.0], profile_realizations=100, compare_paper=False, threads=0,
                    checkpoint=None, resume=False, resume_other_version=False, fresh=False, skip_failed=False,
-                   progress=False, walls="flat", quasi=None, modulation=0.0, ratio="golden", phase=None, angle=45.0,
-                   k0=4.0, chain_name=None, types=None, type_masses=None, polydisperse=None, types_rule=None, **run):
-    given, modes = split_keywords(run, [_RUN, _MODE], "exponent_table")
+                   progress=False, **keywords):
+    chain, given, modes = split_keywords(keywords, [_TABLE_CHAIN, _RUN, _MODE], "exponent_table")
     words = _core.ExponentChoices()  # made the table's chains and kicks by the tool's rule, in C++
     words.chains = [] if chains is None or chains == "none" else chains
     words.ic = ic
     _MODE.set(words.mode, modes)
     # every kind's chains, and the chain of one's own: k types, polydisperse radii, or quasiperiodic
-    _chain_choices(words.beads, N=N, xi=xi, q=q, seed=seed, walls=walls, types=types, type_masses=type_masses,
-                   polydisperse=polydisperse)
-    _quasi_choices(words.beads, quasi, modulation, ratio, phase, angle, k0)
+    _chain(_TABLE_CHAIN, words.beads, chain)
     words.types_rule = "" if types_rule is None else str(types_rule)
     words.chain_name = "" if chain_name is None else str(chain_name)
     table = _core.ExponentTableConfig()
@@ -304,15 +274,10 @@ exponent_table.__doc__ = (
     "deterministic).\n\n"
     "    chains: kinds among 'h', 'A', 'RDM1', 'RDM2' ('none' or []: only the quasiperiodic chain); F0: "
     "precompressions [N] (0: sonic vacuum); ic: kicks among 'displacement', 'velocity', 'mode'\n" + _MODE_DOC +
-    "    N, xi, q, realizations, seed, walls ('flat' | 'sphere'): "
-    "the chains\n"
-    "    quasi: None, or one more chain after the kinds, quasiperiodic (the tool's --quasi): 's1', 's2' or "
-    "'cylinders', with modulation, ratio, phase (None: drawn per seed and realization, R phases), angle and k0 as "
-    "granular.quasiperiodic's\n"
-    "    types, type_masses, polydisperse: None, or one more chain after the kinds, of k bead types "
-    "'R1:P1,R2:P2,...' (radius [m]: probability), of k masses 'M1:P1,...' [kg] of steel spheres, or of radii drawn "
-    "per bead 'uniform:LO:HI' or 'normal:MEAN:SD:MIN' [m] (the tool's --types, --type-masses, --polydisperse; one of "
-    "them or quasi); types_rule: how types are drawn, 'A' (each bead, the default), 'RDM1' (each dimer) or 'RDM2' "
+    "    realizations: R per disordered case; the chains: the chain keywords below (N, xi, q, seed, walls of "
+    "every kind; quasi, or one of types, type_masses, polydisperse: one more chain after the kinds, as the tool's "
+    "chain options)\n"
+    "    types_rule: how types are drawn, 'A' (each bead, the default), 'RDM1' (each dimer) or 'RDM2' "
     "(two types: dimers 12 or 21)\n"
     "    chain_name: the name of that chain in the table (default 'types', 'polydisperse' or 'quasi-KIND')\n" +
     _DYNAMICS_DOC +
@@ -333,10 +298,15 @@ exponent_table.__doc__ = (
 
 _RUN_HEADING = "Run keywords (the library's transport_parameters(), with the case's C++ defaults)"
 _MODE_HEADING = "Mode kick keywords (the library's mode_kick_parameters(), with ModeKick's C++ defaults)"
+_CHAIN_HEADING = "Chain keywords (the library's chain_parameters(), with the C++ defaults of {})"
+# Each signature as users think: the chain, the kick (ic, then the mode kick's), the dynamics (the run table after
+# fit), the outputs, how the run goes (threads, checkpoint, progress).
 for _job in (spreading, transport, exponent_table):
-    with_keywords(_job, [_MODE], _MODE_HEADING)
-with_keywords(spreading, [_ONE_RUN], _RUN_HEADING)
+    with_keywords(_job, [_MODE], _MODE_HEADING, after="ic")
+    with_keywords(_job, [_ONE_RUN if _job is spreading else _RUN], _RUN_HEADING, after="fit")
 with_keywords(spreading, [_OUTPUTS], "Output keywords (the library's spreading_output_parameters(), with the "
-              "observers' C++ defaults)")
-with_keywords(transport, [_RUN], _RUN_HEADING)
-with_keywords(exponent_table, [_RUN], _RUN_HEADING)
+              "observers' C++ defaults)", after="forces_at")
+with_keywords(transport, [_TRANSPORT_CHAIN], _CHAIN_HEADING.format("the spreading tool's chains, "
+              "KickedCaseChoices().chain"), first=True)
+with_keywords(exponent_table, [_TABLE_CHAIN], _CHAIN_HEADING.format("the exponents tool's chains, "
+              "ExponentChoices().beads"), first=True)

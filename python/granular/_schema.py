@@ -74,12 +74,20 @@ class TableKeywords:
         return out
 
 
-def with_keywords(function, tables, doc_heading):
+def with_keywords(function, tables, doc_heading, first=False, after=None):
     """`function` (taking **keywords) given the signature of its own parameters followed by the keywords of
-    `tables` (TableKeywords), and a docstring section listing them: what help() and inspect show."""
+    `tables` (TableKeywords), and a docstring section listing them: what help() and inspect show. The keywords go
+    where users look for them (chain, kick, dynamics, outputs, run): `first` before the function's keyword-only
+    parameters (after its positional ones), `after` right after the parameter of that name."""
     own = [p for p in inspect.signature(function).parameters.values() if p.kind != inspect.Parameter.VAR_KEYWORD]
     made = [p for table in tables for p in table.parameters()]
-    function.__signature__ = inspect.Signature(own + made)
+    if first:
+        at = len([p for p in own if p.kind != inspect.Parameter.KEYWORD_ONLY])
+    elif after is not None:
+        at = [p.name for p in own].index(after) + 1
+    else:
+        at = len(own)
+    function.__signature__ = inspect.Signature(own[:at] + made + own[at:])
     function.__doc__ = (function.__doc__ or "") + f"\n\n    {doc_heading}:\n" + "\n".join(t.doc() for t in tables)
     return function
 

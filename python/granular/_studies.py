@@ -8,7 +8,7 @@ import numpy as np
 
 from . import _core
 from ._arguments import number_list
-from ._dynamics import _chain_choices, _quasi_choices, _run
+from ._dynamics import _chain, _run
 from ._linear import _selection
 from ._model import _quasi
 from ._schema import TableKeywords, split_keywords, with_keywords
@@ -80,20 +80,21 @@ class IprMap:
         return f"<granular.IprMap {self.disorder}, {len(self.q)} q x {len(self.xi)} xi, N={self.N}>"
 
 
-def ipr_map(*, disorder="A", xi="0.1:1", q="0.2,0.5,0.8", N=100, F0=10.0, R1=_core.paper_r1, realizations=100, seed=1,
-            solver="fast", near=None, count=None, window=None, method=None, bin_khz=0.0, threads=0, progress=False,
-            walls="flat", quasi=None, modulation=0.0, ratio="golden", phase=None, angle=45.0, k0=4.0, types=None,
-            type_masses=None, polydisperse=None):
+# granular.ipr_map's chain keywords: the rows of the library's chain table the ipr-map tool takes (not q, xi: the
+# grid's, the map's own keywords), each with the map's C++ default (chain_choices of IprMapConfig{}.chain: N 100).
+_IPR_MAP_CHAIN = TableKeywords(_core._ipr_map_chain(), skip=("q", "xi", "realization", "config", "radii"))
+
+
+def ipr_map(*, xi="0.1:1", q="0.2,0.5,0.8", realizations=100, solver="fast", near=None, count=None, window=None,
+            method=None, bin_khz=0.0, threads=0, progress=False, **chain_keywords):
     """Mean frequency [kHz] and displacement IPR of every mode of disordered chains over realizations, on a (q, xi)
     grid: the paper's IPR map, as the ipr-map tool computes it (same numbers for the same keywords).
 
-    disorder: 'h' | 'A' | 'RDM1' | 'RDM2'
     xi, q: size ratios R2/R1 in (0, 1] and probabilities in [0, 1]: sequences, numbers, or the tools' range
         strings ('0.1:1' = 0.1, 0.11, ..., 1; '0.1:1:0.05'; '0.2,0.5,0.8')
-    N: beads per chain; F0: precompression [N] (> 0); R1: type-1 radius [m]; walls: 'flat' | 'sphere' (as
-        granular.random_chain's)
-    realizations, seed: chains averaged per cell; realization r of seed s is always the same chain, and all xi of
+    realizations: chains averaged per cell; realization r of seed `seed` is always the same chain, and all xi of
         one q share the bead sequences
+    the chains: the chain keywords below (disorder, N, F0 > 0, R1, seed, walls, as granular.random_chain's)
     solver: 'fast' (default) | 'lapack' | 'lapack-stevr' | 'lapack-stemr' | 'lapack-stevd' | 'lapack-steqr'
     near, count / window: partial spectra (every selected mode of every realization, not averaged) by
         method = 'lapack' | 'bisect' | 'arpack'
@@ -101,30 +102,20 @@ def ipr_map(*, disorder="A", xi="0.1:1", q="0.2,0.5,0.8", N=100, F0=10.0, R1=_co
         IprMap.rows())
     threads: worker threads (0: every core); the result does not depend on it
     progress: draw a progress bar on stderr
-    quasi, modulation, ratio, phase, angle, k0: a quasiperiodic chain instead (the tools' --quasi, as
-        granular.quasiperiodic's keywords): one cell, q = xi = NaN; phase None averages over phases
-    types, type_masses, polydisperse: None, or chains of k bead types 'R1:P1,R2:P2,...' (radius [m]: probability),
-        of k masses 'M1:P1,...' [kg] of steel spheres, or of radii drawn per bead 'uniform:LO:HI' or
-        'normal:MEAN:SD:MIN' [m] instead (the tool's --types, --type-masses, --polydisperse; disorder is then
-        their rule): one cell, q = xi = NaN, realizations are draws
+    quasi and its keywords: a quasiperiodic chain instead (the tools' --quasi): one cell, q = xi = NaN; phase
+        None averages over phases. types, type_masses, polydisperse: k bead types, k masses or polydisperse radii
+        instead (disorder is then their rule): one cell, q = xi = NaN, realizations are draws
     Returns a granular.IprMap. Releases the GIL; Ctrl-C stops it (KeyboardInterrupt) after the cell in flight."""
+    (given,) = split_keywords(chain_keywords, [_IPR_MAP_CHAIN], "ipr_map")
     c = _core.IprMapConfig()
-    recipe = _core.ChainRecipe()
-    recipe.disorder = disorder
     c.xi_values = number_list(xi, "xi", 0.01)
     c.q_values = number_list(q, "q", 0.1)
-    recipe.N = _core._size(N, "N", 2, _MAX)
-    recipe.F0, recipe.R1 = F0, R1
     c.realizations = _core._size(realizations, "realizations", 1)
-    recipe.seed = _core._size(seed, "seed")
-    c.chain = recipe
     c.bin_khz = bin_khz
     _core._size(threads, "threads", 0, 4096)
-    # the chain's kind (walls, a quasiperiodic chain or k types: one cell) and the solver by the tool's rule, in C++
-    beads = _core.ChainChoices()
-    _chain_choices(beads, disorder=disorder, walls=walls, types=types, type_masses=type_masses,
-                   polydisperse=polydisperse)
-    _quasi_choices(beads, quasi, modulation, ratio, phase, angle, k0)
+    # the chain (its two-type draw; walls, a quasiperiodic chain or k types: one cell) and the solver by the tool's
+    # rule, in C++
+    beads = _chain(_IPR_MAP_CHAIN, _core._ipr_map_chain(), given)
     if near is not None or count is not None or window is not None:
         c.selection = _selection(near, count, window, got=False)
     return IprMap(_core._ipr_map(c, beads, solver, method, _run(threads, progress=progress)))
@@ -306,27 +297,32 @@ class Correlations:
         self.distance = np.arange(len(self.rho_mean), dtype=np.int64)
 
 
-def correlations(*, disorder="A", q=0.5, N=100, realizations=100, seed=1, max_distance=10, threads=0,
-                 progress=False, types=None, type_masses=None, polydisperse=None):
+# granular.correlations' chain keywords: the rows of the library's chain table the correlations tool takes, each
+# with the study's C++ default (chain_choices of CorrelationConfig{}.chain: N 100).
+_CORRELATION_CHAIN = TableKeywords(_core._correlation_chain(),
+                                   only=("disorder", "q", "N", "seed", "types", "type_masses", "polydisperse"))
+
+
+def correlations(*, realizations=100, max_distance=10, threads=0, progress=False, **chain_keywords):
     """Ensemble mean and spread of the Pearson coefficient rho(d) of bead types (type 1 -> 0, type 2 -> 1) with
     their cyclic shift by d, beside the infinite-chain formula: the correlations tool.
 
-    disorder: 'A' | 'RDM1' | 'RDM2'; q in [0, 1]; N beads; realizations, seed; max_distance < N
-    types, type_masses, polydisperse: None, or chains of k bead types 'R1:P1,R2:P2,...' (radius [m]: probability),
-        of k masses 'M1:P1,...' [kg], or of radii drawn per bead 'uniform:LO:HI' or 'normal:MEAN:SD:MIN' [m]
-        instead (the tool's --types, --type-masses, --polydisperse; disorder is their rule): rho(d) of the bead
-        masses
+    realizations; max_distance < N
+    the chains: the chain keywords below (disorder 'A' | 'RDM1' | 'RDM2', q, N, seed; or k bead types, k masses
+        or polydisperse radii instead, the tool's --types, --type-masses, --polydisperse, disorder their rule:
+        rho(d) of the bead masses)
     threads: worker threads (0: every core); progress: draw a progress bar
     Returns a granular.Correlations (distance, rho_mean, rho_std, rho_theory, used, metadata)."""
+    (given,) = split_keywords(chain_keywords, [_CORRELATION_CHAIN], "correlations")
     c = _core.CorrelationConfig()
-    recipe = _core.ChainRecipe()
-    recipe.disorder = disorder
-    recipe.q = q
-    recipe.N = _core._size(N, "N", 2, _MAX)
     c.realizations = _core._size(realizations, "realizations", 1)
-    recipe.seed = _core._size(seed, "seed")
-    c.chain = recipe
     c.max_distance = _core._size(max_distance, "max_distance")
-    beads = _core.ChainChoices()
-    _chain_choices(beads, disorder=disorder, types=types, type_masses=type_masses, polydisperse=polydisperse)
+    beads = _chain(_CORRELATION_CHAIN, _core._correlation_chain(), given)
     return Correlations(_core._correlations(c, beads, _run(threads, progress=progress)))
+
+
+_CHAIN_HEADING = "Chain keywords (the library's chain_parameters(), with the C++ defaults of {})"
+with_keywords(ipr_map, [_IPR_MAP_CHAIN], _CHAIN_HEADING.format("the ipr-map tool's chains, IprMapConfig().chain"),
+              first=True)
+with_keywords(correlations, [_CORRELATION_CHAIN], _CHAIN_HEADING.format("the correlations tool's chains, "
+              "CorrelationConfig().chain"), first=True)

@@ -17,19 +17,43 @@
 #include "granular/model/named_chains.hpp"
 #include "granular/model/plausibility.hpp"
 #include "granular/study/butterfly.hpp"
+#include "granular/study/chain_choices.hpp"
 #include "granular/study/dynamical_butterfly.hpp"
 #include "granular/study/frequency_slips.hpp"
 
 namespace granular::python {
 namespace {
 
-/// `c` as granular/_studies.py fills it (the grid, the two-type draw, the selection); `beads`: the chain's
-/// kind (walls, a quasiperiodic chain or k types) and `solver`/`method`, by the ipr-map tool's rules.
+/// `chain`'s two-type draw (disorder, q, N, F0, R1, seed) from the chain keywords, as a study tool's
+/// flags set it (a map's q is each cell's).
+void set_draw(ChainRecipe& chain, const ChainChoices& beads) {
+  chain.draw().disorder = parse_disorder(beads.disorder);
+  chain.draw().q = beads.q;
+  chain.N = checked_size(beads.n, "N", 2, 100000000);
+  chain.F0 = beads.f0, chain.R1 = beads.r1;
+  chain.seed = checked_size(beads.seed, "seed");
+}
+
+/// The chain keywords as a study tool's chain-kind options hold them (walls, a quasiperiodic chain,
+/// a bead distribution and its rule): the draw's numbers, which set_draw put in the recipe, at
+/// ChainChoices' own, so that R1 beside `types` or `seed` with disorder h is taken as the tool
+/// takes --R1 and --seed, not refused by the chain table's overridden rule.
+ChainChoices chain_kind(ChainChoices beads) {
+  const ChainChoices plain;
+  beads.q = plain.q, beads.xi = plain.xi, beads.n = plain.n, beads.f0 = plain.f0, beads.r1 = plain.r1;
+  beads.seed = plain.seed;
+  return beads;
+}
+
+/// `c` as granular/_studies.py fills it (the grid, the selection); `beads`: the chain keywords (the
+/// two-type draw's numbers, the walls, a quasiperiodic chain or k types) and `solver`/`method`, by the
+/// ipr-map tool's rules.
 py::dict ipr_map(IprMapConfig c, const ChainChoices& beads, const std::string& solver,
                  const std::optional<std::string>& method, const PyRun& options) {
   const int thread_request = options.thread_request();
+  set_draw(c.chain, beads);
   set_solver(c, solver, method);
-  set_chain_kind(c, beads);
+  set_chain_kind(c, chain_kind(beads));
   validate(c);
   warn(radius_warnings(c.chain, radius_names(beads, front_end_word)));  // implausible radii, as the tool warns
   warn(frequency_slips(c, front_end_word));  // near, window: Hz typed as kHz, as the tool warns
@@ -91,11 +115,12 @@ py::dict localization(const PyChain* chain, const ChainChoices& choices, const L
                 std::move(scan.idos), std::move(scan.dos), scan.beads, meta);
 }
 
-/// `c` as granular/_studies.py fills it; `beads`: k types or polydisperse radii instead of the two types,
-/// by the correlations tool's rule.
+/// `c` as granular/_studies.py fills it; `beads`: the chain keywords (the two-type draw's numbers, or k
+/// types or polydisperse radii instead of the two types), by the correlations tool's rule.
 py::dict correlations(CorrelationConfig c, const ChainChoices& beads, const PyRun& options) {
   options.thread_request();
-  set_chain_kind(c, beads);
+  set_draw(c.chain, beads);
+  set_chain_kind(c, chain_kind(beads));
   validate(c);
   CorrelationResult result;
   run_long("correlations", c.realizations, options, [&](const RunOptions& run) { result = correlation_study(c, run); });
@@ -155,6 +180,9 @@ void bind_studies(py::module_& m) {
   m.def("_ipr_map", &ipr_map);
   m.def("_localization", &localization);
   m.def("_localization_chain", &localization_chain);  // the chain keywords' defaults
+  // granular.ipr_map's and granular.correlations' chain keywords' defaults: their studies' default chain
+  m.def("_ipr_map_chain", [] { return chain_choices(IprMapConfig{}.chain); });
+  m.def("_correlation_chain", [] { return chain_choices(CorrelationConfig{}.chain); });
   m.attr("_localization_frequencies") = localization_frequencies;
   m.def("_correlations", &correlations);
   m.def("_butterfly", &butterfly);

@@ -118,6 +118,17 @@ StreamedChain stream_chain(const ChainChoices& o, const std::function<std::strin
   return s;
 }
 
+ChainChoices chain_choices(const ChainRecipe& r) {
+  const TwoTypeDraw& draw = r.draw();
+  ChainChoices o;
+  o.disorder = to_string(draw.disorder);
+  o.q = draw.q, o.xi = draw.xi;
+  o.f0 = r.F0, o.r1 = r.R1;
+  o.n = static_cast<long long>(r.N), o.seed = static_cast<long long>(r.seed);
+  o.walls = r.walls == WallShape::flat ? "flat" : "sphere";
+  return o;
+}
+
 ChainRecipe chain_recipe(const ChainChoices& o, std::vector<std::string>& warnings, const ChainChoices& defaults) {
   if (o.seed < 0) throw InvalidInput("seed", " " + std::to_string(o.seed) + ": must be >= 0");
   if (o.realization < 0) throw InvalidInput("realization", " " + std::to_string(o.realization) + ": must be >= 0");

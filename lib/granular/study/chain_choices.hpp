@@ -72,6 +72,12 @@ ChainRecipe chain_recipe(const ChainChoices& o, std::vector<std::string>& warnin
 /// `polydisperse`) and `radii`, each told by `told` (a tool: its flag; Python: its keyword).
 RadiusNames radius_names(const ChainChoices& o, const std::function<std::string(const std::string&)>& told);
 
+/// The choices of a two-type draw's recipe (disorder, q, ξ, N, F0, R1, seed, walls; the rest
+/// ChainChoices' own): a study's default chain (IprMapConfig{}.chain, CorrelationConfig{}.chain)
+/// in the words of the chain table, whose defaults a front end shows (granular.ipr_map's chain
+/// keywords). Throws InvalidInput("chain") for another source.
+ChainChoices chain_choices(const ChainRecipe& draw);
+
 /// The realization the choices pick (0-based).
 inline std::uint64_t chain_realization(const ChainChoices& o) { return static_cast<std::uint64_t>(o.realization); }
 
