@@ -14,7 +14,7 @@ set -euo pipefail
 
 packages=(
   build-essential cmake pkg-config git time help2man man-db
-  libeigen3-dev liblapack-dev libblas-dev libblas3 liblapack3 libopenblas0-pthread libarpack2-dev
+  libeigen3-dev liblapack-dev libblas-dev libblas3 liblapack3 libopenblas0-pthread libarpack2-dev libsuitesparse-dev
   libfftw3-dev libhdf5-dev libboost-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   libcli11-dev nlohmann-json3-dev librandom123-dev

@@ -1,5 +1,6 @@
 #include "granular/crystal/crystal_study.hpp"
 
+#include <chrono>
 #include <cmath>
 #include <numbers>
 
@@ -13,10 +14,13 @@ CrystalResult crystal_study(const CrystalCase& c) {
   CrystalResult r;
   r.packing = make_packing(c.disorder.width > 0 ? disordered(c.packing, c.disorder) : c.packing);
   r.state = static_state(r.packing);
-  const CrystalMatrix d = crystal_matrix(r.packing, r.state);
+  r.matrix = crystal_matrix(r.packing, r.state);
+  const CrystalMatrix& d = r.matrix;
   const CrystalSpectrumConfig modes{.vectors = c.vectors};
   r.method = !c.near ? "lapack" : c.method == NearestMethod::slepc ? "slepc" : "arpack";
+  const auto start = std::chrono::steady_clock::now();
   r.spectrum = c.near ? crystal_nearest_modes(d, *c.near * 1e3, c.count, modes, c.method) : crystal_spectrum(d, modes);
+  r.solve_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const std::vector<double>& f = r.spectrum.freq_hz;  // ascending; the window defaults to all of them
   r.ratio =
       spacing_ratio(r.spectrum, c.ratio_lo ? *c.ratio_lo * 1e3 : f.front(), c.ratio_hi ? *c.ratio_hi * 1e3 : f.back());
@@ -39,6 +43,7 @@ nlohmann::json describe(const CrystalCase& c, const CrystalResult& r) {
                           {"open_wall_contacts", s.open_wall_contacts.size()},
                           {"rigid", s.rigid}};
   meta["spectrum"] = {{"method", r.method},
+                      {"solve_seconds", r.solve_seconds},
                       {"modes", r.spectrum.size()},
                       {"spacing_ratio", r.ratio.count > 0 ? nlohmann::json(r.ratio.mean) : nlohmann::json(nullptr)},
                       {"spacing_ratios_averaged", r.ratio.count},

@@ -22,8 +22,10 @@ struct CrystalResult {
   StaticState state;
   /// The modes computed, by increasing ω²: every mode, or the `count` nearest `near`.
   CrystalSpectrum spectrum;
-  SpacingRatio ratio;  ///< ⟨r⟩ of the computed frequencies inside [ratio_lo, ratio_hi]
-  std::string method;  ///< "lapack" (every mode, dsyevd), "arpack" or "slepc" (nearest modes)
+  SpacingRatio ratio;        ///< ⟨r⟩ of the computed frequencies inside [ratio_lo, ratio_hi]
+  std::string method;        ///< "lapack" (every mode, dsyevd), "arpack" or "slepc" (nearest modes)
+  CrystalMatrix matrix;      ///< D, as solved (what `crystal --dump-matrix` writes)
+  double solve_seconds = 0;  ///< wall time of the eigensolver alone (not the packing, state or matrix)
 };
 
 /// Validates `c` and runs it. Throws InvalidInput naming the row of a bad value, or `packing` for a

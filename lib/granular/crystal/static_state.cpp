@@ -1,7 +1,7 @@
 #include "granular/crystal/static_state.hpp"
 
+#include <Eigen/CholmodSupport>
 #include <Eigen/Sparse>
-#include <Eigen/SparseCholesky>
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -145,9 +145,17 @@ double energy(const Packing& p, const Unknowns& n, const StaticState& s) {
   return e;
 }
 
-bool positive(const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>& ldlt) {
-  return ldlt.info() == Eigen::Success && (ldlt.vectorD().array() > 0).all();
+/// CHOLMOD's supernodal Cholesky (BLAS-3 on dense blocks of the factor): it succeeds exactly when
+/// the matrix is positive definite, which is both the Newton step's and the rigidity's test.
+using Cholesky = Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>>;
+
+/// Silenced: CHOLMOD prints "not positive definite" to stdout otherwise, a state reported here.
+void quiet(Cholesky& llt) {
+  llt.cholmod().print = 0;
+  llt.cholmod().error_handler = nullptr;
 }
+
+bool positive(const Cholesky& llt) { return llt.info() == Eigen::Success; }
 
 [[noreturn]] void not_rigid(const Packing& p, const std::string& why) {
   throw InvalidInput("packing", ": the " + std::string(to_string(p.lattice)) + " " + std::to_string(p.Lx) + " x " +
@@ -171,9 +179,10 @@ StaticState static_state(const Packing& p, const StaticConfig& config) {
   Eigen::VectorXd z = Eigen::VectorXd::Zero(static_cast<long>(n.size()));
   evaluate(p, n, z, s);
   Eigen::VectorXd g = gradient(p, n, s);
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt;
+  Cholesky cholesky;
+  quiet(cholesky);
   // The pattern is the contact network's: analyse it once.
-  ldlt.analyzePattern(hessian(p, n, s));
+  cholesky.analyzePattern(hessian(p, n, s));
   s.imbalance = imbalance(p, n, s, g);
   while (s.imbalance > config.tolerance) {
     if (s.iterations == config.max_iterations)
@@ -185,19 +194,19 @@ StaticState static_state(const Packing& p, const StaticConfig& config) {
     // Newton's step where the Hessian is positive definite; elsewhere (a start with open contacts
     // and beads that carry nothing, or a saddle) a Levenberg step (H + μI), μ raised until it is.
     const Eigen::SparseMatrix<double> h = hessian(p, n, s);
-    ldlt.factorize(h);
-    if (!positive(ldlt)) {
+    cholesky.factorize(h);
+    if (!positive(cholesky)) {
       Eigen::SparseMatrix<double> identity(h.rows(), h.cols());
       identity.setIdentity();
       const double scale = h.diagonal().cwiseAbs().maxCoeff();
       for (double mu = 1e-10 * scale;; mu *= 100) {
         if (mu > 1e4 * scale)
           not_rigid(p, "no positive definite step from a force imbalance " + format_number(s.imbalance));
-        ldlt.factorize(h + mu * identity);
-        if (positive(ldlt)) break;
+        cholesky.factorize(h + mu * identity);
+        if (positive(cholesky)) break;
       }
     }
-    const Eigen::VectorXd step = ldlt.solve(-g);
+    const Eigen::VectorXd step = cholesky.solve(-g);
     // Backtracking: a step is taken when it lowers the energy (Armijo) or the force residual. The
     // first guards the Levenberg steps, the second the last Newton steps, where energy changes are
     // below its rounding.
@@ -223,8 +232,8 @@ StaticState static_state(const Packing& p, const StaticConfig& config) {
     g = std::move(g_trial);
     s.imbalance = imbalance(p, n, s, g);
   }
-  ldlt.factorize(hessian(p, n, s));
-  s.rigid = positive(ldlt);
+  cholesky.factorize(hessian(p, n, s));
+  s.rigid = positive(cholesky);
   if (config.require_rigid && !s.rigid) {
     std::vector<double> carried(n.beads, 0.0);
     for (std::size_t k = 0; k < p.contacts.size(); ++k)

@@ -1,7 +1,7 @@
 #pragma once
 // The static state of a packing (docs/crystals.md, "The static state"): bead positions at which
 // every bead's Hertz normal contact forces F = A δ^{3/2} balance, found by Newton's method on the
-// contact network, with the energy Hessian as the Jacobian (a sparse LDLᵀ solve) and a backtracking
+// contact network, with the energy Hessian as the Jacobian (a supernodal sparse Cholesky, CHOLMOD) and a backtracking
 // line search (a step must lower the energy or the force residual), started from the packing's
 // uniformly compressed lattice. Where the Hessian is not positive definite (open contacts at the
 // start leave beads that carry nothing) the step is a Levenberg one, H + μI.

@@ -1,7 +1,9 @@
 #include "granular/files/crystal_files.hpp"
 
+#include <bit>
 #include <cmath>
 
+#include "granular/io/atomic_file.hpp"
 #include "granular/io/csv_writer.hpp"
 
 namespace granular {
@@ -22,6 +24,19 @@ void write_crystal_modes_csv(std::ostream& out, const CrystalResult& r) {
       table.row(k + 1, b + 1, r.packing.x[b], r.packing.y[b], scale * s.vectors[k * rows + 2 * b],
                 scale * s.vectors[k * rows + 2 * b + 1]);
     }
+}
+
+void write_crystal_matrix(const std::string& prefix, const CrystalMatrix& d) {
+  static_assert(std::endian::native == std::endian::little && sizeof(std::size_t) == 8);
+  const auto write = [&](const std::string& suffix, const auto& values) {
+    AtomicFile file(prefix + suffix);
+    file.stream().write(reinterpret_cast<const char*>(values.data()),
+                        static_cast<std::streamsize>(values.size() * sizeof(values[0])));
+    file.commit();
+  };
+  write(".row_start.u64", d.matrix.row_start);
+  write(".column.u64", d.matrix.column);
+  write(".value.f64", d.matrix.value);
 }
 
 }  // namespace granular

@@ -2,6 +2,7 @@
 // The files of the `crystal` job (its CSV tables), so that the tool and Python write alike; the
 // JSON is describe(case, result) (crystal/crystal_study.hpp).
 #include <ostream>
+#include <string>
 
 #include "granular/crystal/crystal_study.hpp"
 
@@ -14,5 +15,10 @@ void write_crystal_csv(std::ostream& out, const CrystalResult& r);
 /// mode,bead,x,y,ux,uy: each computed mode's displacement of every bead (reference centre x, y [m];
 /// displacement u = M^{-1/2} w of the unit eigenvector w [kg^{-1/2}]). Needs the eigenvectors.
 void write_crystal_modes_csv(std::ostream& out, const CrystalResult& r);
+
+/// D in raw little-endian arrays for another solver (tests/benchmarks/crystal_scipy.py):
+/// PREFIX.row_start.u64 (2N + 1 offsets), PREFIX.column.u64, PREFIX.value.f64 [1/s²], written
+/// atomically. Throws IoError when a file cannot be written.
+void write_crystal_matrix(const std::string& prefix, const CrystalMatrix& d);
 
 }  // namespace granular
