@@ -62,6 +62,8 @@ SKIP = {("README.md", "bash tools/install-deps.sh && cmake -S . -B build"): BUIL
             "the weak-chaos study (100 s of CPU); ctest install_downstream builds and runs the example",
         ("docs/performance.md", "build/benchmarks/ipr_map_benchmark"):
             "what run_ipr_map_comparison.sh runs, three times interleaved (minutes of timings)",
+        ("docs/performance.md", "tests/benchmarks/crystal_scaling.sh"):
+            "the crystals' scaling runs beside SciPy (10^5 beads: minutes of timings)",
         ("docs/performance.md", "tests/benchmarks/partial_spectrum_scaling.sh"):
             "the partial spectra's scaling runs (N up to 1e7: minutes and 10 GB)",
         ("docs/performance.md", "build/benchmarks/partial_spectrum_benchmark"):
