@@ -27,6 +27,7 @@ const ToolCase tool_cases[] = {
     {"correlations", "--N 20 --realizations 3 --max-distance 3 --threads 1"},
     {"localization", "--N 100 --f 1,2 --segments 2 --threads 1"},
     {"restitution", "--impact-speed 0.01 --kk-gamma 1e-6"},
+    {"crystal", "--lattice hexagonal --Lx 4 --Ly 4 --vectors"},
     {"spreading", "--N 51 --T 1e-4 --samples 5"},
     {"exponents",
      "--chains A --F0 10 --ic displacement --N 51 --T 2e-4 --fit 1e-4:2e-4 --t-star 1e-4 --realizations 2 "
