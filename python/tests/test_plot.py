@@ -391,3 +391,17 @@ def test_quasiperiodic_figures_name_their_chain():
     for part in ("cylinders quasiperiodic", r"$\lambda$ = 0.3", r"$\beta$ = 0.285714", r"$\alpha_0$ = 60°",
                  r"$\varphi$ drawn per realization"):
         assert part in title, (part, title)
+
+
+def test_crystal_figure_from_a_result_and_from_the_tools_files(tools):
+    r = gr.crystal(lattice="hexagonal", Lx=6, Ly=6, width=0.4, vectors=True)
+    fig = gr.plot.crystal(r)
+    assert len(fig.axes) == 2
+    assert "IPR = " in fig.axes[1].get_title()
+    assert len(fig.axes[1].collections[1].get_offsets()) == 36  # one arrow per bead
+    tools.run("crystal", "--lattice", "hexagonal", "--Lx", "6", "--Ly", "6", "--width", "0.4", "--vectors", "--quiet",
+              output="c.csv")
+    fig = gr.plot.crystal(tools.path("c.csv"), mode=3)
+    assert fig.axes[1].get_title().startswith("mode 3:")
+    with pytest.raises(ValueError, match="mode 99"):
+        gr.plot.crystal(r, mode=99)

@@ -115,6 +115,10 @@ def parser(prog=None):
     q.add_argument("csv", nargs="?", default="breathers.csv")
     q.add_argument("--point", type=int, default=-1, help="the point whose multipliers are drawn: 0 = first, "
                                                          "-1 = last (default)")
+    q = kind("crystal", "a 2D crystal's modes: IPR against frequency and one mode's displacements on the packing, "
+                        "from a crystal CSV (PREFIX-modes.csv beside it from --vectors)")
+    q.add_argument("csv", nargs="?", default="crystal.csv")
+    q.add_argument("--mode", type=int, help="the mode drawn, from 1 (default: the most localized)")
     q = kind("cost", "integrators' cost-accuracy curves, from dynamics_benchmark --benchmark_out JSON")
     q.add_argument("bench")
     return p
@@ -198,6 +202,8 @@ def main(argv=None, prog=None):
             save(fig, args.output or _default_output(args.csv))
         elif args.kind == "breathers":
             save(plot.breather_branch(args.csv, args.point), args.output or _default_output(args.csv))
+        elif args.kind == "crystal":
+            save(plot.crystal(args.csv, args.mode), args.output or _default_output(args.csv))
         elif args.kind == "cost":
             save(plot.cost(args.bench), args.output or _default_output(args.bench))
     except (OSError, ValueError, KeyError, IndexError) as error:  # a missing or wrong file: one line, exit code 2
