@@ -25,8 +25,8 @@ namespace granular {
 /// (throwing InvalidInput that names the parameter), `write` says the choices' value in it.
 template <class Choices>
 struct TextForm {
-  void (*read)(Choices&, const std::string&) = nullptr;
-  std::string (*write)(const Choices&) = nullptr;
+  std::function<void(Choices&, const std::string&)> read{};
+  std::function<std::string(const Choices&)> write{};
 };
 
 /// What a parameter takes effect with: another choice of its table on (a word given, a flag set, a
@@ -53,10 +53,10 @@ template <class Choices>
 struct Parameter {
   /// The value the parameter sets; none (monostate) when front ends read it in forms of their
   /// own (a fit window: `text` on the command line, a pair in Python) and set fields of it.
-  using Field =
-      std::variant<std::monostate, Ref<Choices, double>, Ref<Choices, int>, Ref<Choices, long long>, Ref<Choices, long>,
-                   Ref<Choices, unsigned long>, Ref<Choices, std::string>, Ref<Choices, bool>,
-                   Ref<Choices, std::optional<double>>, Ref<Choices, std::optional<long>>, Ref<Choices, std::vector<long>>>;
+  using Field = std::variant<std::monostate, Ref<Choices, double>, Ref<Choices, int>, Ref<Choices, long long>,
+                             Ref<Choices, long>, Ref<Choices, unsigned long>, Ref<Choices, std::string>,
+                             Ref<Choices, bool>, Ref<Choices, std::optional<double>>, Ref<Choices, std::optional<long>>,
+                             Ref<Choices, std::vector<long>>, Ref<Choices, std::vector<double>>>;
 
   Parameter(std::string name, Field field, std::string help, bool shows_default = true)
       : name(std::move(name)), field(field), help(std::move(help)), shows_default(shows_default) {}
@@ -217,6 +217,51 @@ void refuse_unmet_needs(const Choices& o, const ParameterTable<Choices>& table, 
     if (on && (values.empty() || std::find(values.begin(), values.end(), word) != values.end())) continue;
     detail::refuse_unmet(p.name, *p.needs, on ? word : flag ? "off" : "");
   }
+}
+
+/// The rows of `table` (over a part `Inner` of a case) as rows of the case `Outer` that holds it in
+/// `member`, for the rows named in `names` (all when empty), in the table's order: a job whose case
+/// nests another's (a crystal IPR map's crystal) takes that case's rows, help and checks as they
+/// are, written once. Needs and overrides keep their names (rows of the same nested table); those
+/// naming a row left out are dropped.
+template <class Outer, class Inner>
+ParameterTable<Outer> nested_rows(const ParameterTable<Inner>& table, Inner Outer::*member,
+                                  const std::vector<std::string>& names = {}) {
+  ParameterTable<Outer> out;
+  for (const Parameter<Inner>& p : table) {
+    if (!names.empty() && std::find(names.begin(), names.end(), p.name) == names.end()) continue;
+    typename Parameter<Outer>::Field field = std::visit(
+        [&]<class F>(const F& inner) -> typename Parameter<Outer>::Field {
+          if constexpr (std::is_same_v<F, std::monostate>) {
+            return std::monostate{};
+          } else {
+            using T = std::remove_cvref_t<decltype(inner(std::declval<Inner&>()))>;
+            return Ref<Outer, T>([inner, member](Outer& o) -> T& { return inner(o.*member); });
+          }
+        },
+        p.field);
+    Parameter<Outer> row(p.name, field, p.help, p.shows_default);
+    if (p.text)
+      row.text =
+          TextForm<Outer>{p.text->read
+                              ? [read = p.text->read, member](Outer& o, const std::string& t) { read(o.*member, t); }
+                              : std::function<void(Outer&, const std::string&)>{},
+                          p.text->write ? [write = p.text->write, member](const Outer& o) { return write(o.*member); }
+                                        : std::function<std::string(const Outer&)>{}};
+    // A need or an override of a row left out has nothing to look at: the outer case sets that
+    // choice its own way (a crystal IPR map's `widths` for the crystal's `width`).
+    const auto kept = [&](const std::string& entry) {
+      const std::string choice = entry.substr(0, entry.find(' '));
+      return names.empty() || std::find(names.begin(), names.end(), choice) != names.end();
+    };
+    if (p.needs && kept(p.needs->choice)) row.needs = Needs{p.needs->choice, p.needs->values};
+    for (const std::string& entry : p.overridden_by)
+      if (kept(entry)) row.overridden_by.push_back(entry);
+    row.python_text = p.python_text;
+    row.former_words = p.former_words;
+    out.push_back(std::move(row));
+  }
+  return out;
 }
 
 /// The note a front end gives when a parameter is set under its former word: "--mode-khz is

@@ -5,6 +5,8 @@
 
 #include "bindings.hpp"
 #include "granular/crystal/crystal_study.hpp"
+#include "granular/parameter_json.hpp"
+#include "granular/study/crystal_ipr_map.hpp"
 
 namespace granular::python {
 namespace {
@@ -25,11 +27,29 @@ py::dict crystal(const CrystalCase& c) {
                 r.ratio.mean, r.ratio.count, r.method, r.state.imbalance, meta);
 }
 
+/// The map's cells (one per width, its bins) and the JSON of the config (describe_rows).
+py::dict ipr_map_of_crystals(const CrystalIprMapConfig& c) {
+  std::vector<CrystalIprMapCell> cells;
+  {
+    py::gil_scoped_release free;
+    cells = granular::crystal_ipr_map(c);
+  }
+  nlohmann::json described;
+  described["parameters"] = describe_rows(c, crystal_ipr_map_parameters());
+  py::list out;
+  for (CrystalIprMapCell& cell : cells)
+    out.append(fields("width bin_modes bin_ipr bin_ratio bin_ratios", cell.width, std::move(cell.bin_modes),
+                      std::move(cell.bin_ipr), std::move(cell.bin_ratio), std::move(cell.bin_ratios)));
+  return fields("cells bin_hz metadata", out, c.bin_hz, metadata("crystal_ipr_map", described));
+}
+
 }  // namespace
 
 void bind_crystal(py::module_& m) {
   table_class(m, "CrystalCase", crystal_parameters());
   m.def("_crystal", &crystal);
+  table_class(m, "CrystalIprMapConfig", crystal_ipr_map_parameters());
+  m.def("_crystal_ipr_map", &ipr_map_of_crystals);
 }
 
 }  // namespace granular::python

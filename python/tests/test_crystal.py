@@ -65,3 +65,23 @@ def test_the_tool_writes_the_same_modes(tools):
     np.testing.assert_array_equal(csv["freq_khz"], r.freq_khz)
     np.testing.assert_array_equal(csv["ipr"], r.ipr)
     assert meta["parameters"] == r.metadata["parameters"]
+
+
+def test_ipr_map_signature_is_the_crystals_rows_then_its_own():
+    crystal_rows = [k for _, k, _ in _core.CrystalCase._parameters]
+    names = list(inspect.signature(gr.crystal_ipr_map).parameters)
+    assert names[-4:] == ["widths", "realizations", "bin_hz", "threads"]
+    assert all(n in crystal_rows for n in names[:-4])
+    assert inspect.signature(gr.crystal_ipr_map).parameters["widths"].default == list(_core.CrystalIprMapConfig().widths)
+
+
+def test_ipr_map_cells_count_every_mode_and_the_perfect_row_is_the_crystals():
+    m = gr.crystal_ipr_map(lattice="hexagonal", Lx=6, Ly=6, widths=[0.0, 0.8], realizations=3, bin_hz=2000.0)
+    assert m.modes.shape == m.ipr.shape == m.ratio.shape
+    assert (m.modes.sum(axis=1) == 3 * 72).all()
+    perfect = gr.crystal(lattice="hexagonal", Lx=6, Ly=6)
+    bins = np.minimum((np.maximum(perfect.freq_khz, 0) / 2).astype(int), m.modes.shape[1] - 1)
+    for b in np.unique(bins):
+        np.testing.assert_allclose(m.ipr[0, b], perfect.ipr[bins == b].mean(), rtol=1e-12)
+    with pytest.raises(ValueError, match="widths"):
+        gr.crystal_ipr_map(widths=[1.5])

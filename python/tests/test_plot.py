@@ -405,3 +405,11 @@ def test_crystal_figure_from_a_result_and_from_the_tools_files(tools):
     assert fig.axes[1].get_title().startswith("mode 3:")
     with pytest.raises(ValueError, match="mode 99"):
         gr.plot.crystal(r, mode=99)
+
+
+def test_crystal_ipr_map_figure_has_a_curve_per_width():
+    m = gr.crystal_ipr_map(lattice="hexagonal", Lx=6, Ly=6, widths=[0.0, 0.8], realizations=2, bin_hz=4000.0)
+    fig = gr.plot.crystal_ipr_map(m)
+    assert len(fig.axes) == 2
+    assert len(fig.axes[0].get_lines()) == 2
+    assert fig.axes[1].get_ylabel().startswith("<r>")

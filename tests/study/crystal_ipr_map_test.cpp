@@ -20,7 +20,7 @@ namespace {
 
 CrystalIprMapConfig crystal_map_config() {
   CrystalIprMapConfig c;
-  c.packing.lattice = Lattice::hexagonal, c.packing.Lx = 12, c.packing.Ly = 12;
+  c.crystal.packing.lattice = Lattice::hexagonal, c.crystal.packing.Lx = 12, c.crystal.packing.Ly = 12;
   c.widths = {0.0, 0.9}, c.realizations = 4, c.bin_hz = 4000;
   return c;
 }
@@ -42,7 +42,7 @@ TEST(CrystalIprMap, CountsEveryModeAndMatchesThePerfectCrystal) {
   for (const CrystalIprMapCell& cell : cells)
     EXPECT_EQ(std::accumulate(cell.bin_modes.begin(), cell.bin_modes.end(), std::size_t{0}), 2u * 144 * 4);
 
-  const Packing p = make_packing(c.packing);
+  const Packing p = make_packing(c.crystal.packing);
   const CrystalSpectrum s = crystal_spectrum(crystal_matrix(p, static_state(p)));
   const std::size_t bins = cells[0].bin_modes.size();
   std::vector<double> sum(bins, 0.0);
@@ -90,7 +90,7 @@ TEST(CrystalIprMap, RefusesBadWidthsRealizationsAndBins) {
   EXPECT_THROW(crystal_ipr_map(c), InvalidInput);
   c = crystal_map_config(), c.threads = -1;
   EXPECT_THROW(crystal_ipr_map(c), InvalidInput);
-  c = crystal_map_config(), c.packing.Lx = 1;
+  c = crystal_map_config(), c.crystal.packing.Lx = 1;
   try {
     crystal_ipr_map(c);
     ADD_FAILURE() << "Lx 1 accepted";

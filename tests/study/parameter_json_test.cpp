@@ -10,10 +10,12 @@
 #include <type_traits>
 #include <vector>
 
+#include "granular/crystal/crystal_case.hpp"
 #include "granular/ensemble/run_options.hpp"
 #include "granular/linear/mode_selection_choices.hpp"
 #include "granular/orbits/breather_parameters.hpp"
 #include "granular/study/chain_choices.hpp"
+#include "granular/study/crystal_ipr_map.hpp"
 #include "granular/study/dynamical_butterfly.hpp"
 #include "granular/study/exponent_choices.hpp"
 #include "granular/study/spreading_outputs.hpp"
@@ -78,6 +80,8 @@ TEST(ParameterJson, EveryRowOfEveryTableRoundTrips) {
   expect_every_row_round_trips(mode_selection_parameters(), "mode selection");
   expect_every_row_round_trips(long_run_parameters(), "long run");
   expect_every_row_round_trips(breather_parameters(), "breathers");
+  expect_every_row_round_trips(crystal_parameters(), "crystal");
+  expect_every_row_round_trips(crystal_ipr_map_parameters(), "crystal IPR map");
 }
 
 TEST(ParameterJson, AValueOfTheWrongKindIsRefusedNamingItsKey) {

@@ -15,6 +15,21 @@
 
 namespace granular {
 
+const ParameterTable<CrystalIprMapConfig>& crystal_ipr_map_parameters() {
+  using C = CrystalIprMapConfig;
+  static const ParameterTable<C> table = [] {
+    ParameterTable<C> t =
+        nested_rows(crystal_parameters(), &C::crystal,
+                    {"lattice", "boundary", "Lx", "Ly", "radius", "precompression", "strain", "disorder", "seed"});
+    t.push_back({"widths", &C::widths, "disorder strengths w in [0, 1), one map row each (comma list)"});
+    t.push_back({"realizations", &C::realizations, "crystals per width (>= 1)"});
+    t.push_back({"bin_hz", &C::bin_hz, "frequency bin width [Hz] of the IPR and <r> averages"});
+    t.push_back({"threads", &C::threads, "realizations solved at once (0: every core)"});
+    return t;
+  }();
+  return table;
+}
+
 std::vector<CrystalIprMapCell> crystal_ipr_map(const CrystalIprMapConfig& c) {
   if (c.widths.empty()) throw InvalidInput("widths", ": no values");
   for (double w : c.widths)
@@ -23,13 +38,14 @@ std::vector<CrystalIprMapCell> crystal_ipr_map(const CrystalIprMapConfig& c) {
   if (c.threads < 0) throw InvalidInput("threads", " " + std::to_string(c.threads) + ": must be >= 0");
   if (!(c.bin_hz > 0) || !std::isfinite(c.bin_hz))
     throw InvalidInput("bin_hz", " " + format_number(c.bin_hz) + ": must be finite and > 0");
-  make_packing(c.packing);  // its own checks, before any work
+  make_packing(c.crystal.packing);  // its own checks, before any work
 
   const std::size_t each = c.realizations;
   std::vector<CrystalSpectrum> spectra(c.widths.size() * each);
   parallel_realizations(spectra.size(), resolve_threads(c.threads), [&](std::size_t task, int) {
     const double width = c.widths[task / each];
-    const Packing p = make_packing(disordered(c.packing, {c.kind, width, c.seed, task % each}));
+    const Packing p = make_packing(
+        disordered(c.crystal.packing, {c.crystal.disorder.kind, width, c.crystal.disorder.seed, task % each}));
     spectra[task] = crystal_spectrum(crystal_matrix(p, static_state(p)));
   });
 

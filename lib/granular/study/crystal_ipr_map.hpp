@@ -7,21 +7,27 @@
 #include <cstdint>
 #include <vector>
 
+#include "granular/crystal/crystal_case.hpp"
 #include "granular/crystal/packing.hpp"
+#include "granular/parameter_table.hpp"
 
 namespace granular {
 
 struct CrystalIprMapConfig {
-  PackingSpec packing{};  ///< the crystal: lattice, boundary, Lx, Ly, radius, material, F0 or strain
-  PackingDisorder::Kind kind = PackingDisorder::Kind::mass;
+  /// The crystal: its packing (lattice, boundary, Lx, Ly, radius, F0 or strain) and its disorder's
+  /// kind and seed; `widths` sets the disorder's width, and the case's modes choice is not used.
+  CrystalCase crystal{};
   std::vector<double> widths{0.0, 0.5, 0.9};  ///< disorder strengths w in [0, 1)
-  std::size_t realizations = 10;              ///< ≥ 1
-  std::uint64_t seed = 1;
+  unsigned long realizations = 10;            ///< ≥ 1
   double bin_hz = 1000;  ///< bins [k W, (k + 1) W) [Hz], k = 0 … ⌊f_max/W⌋ over the cell's modes
   /// Realizations solved at once; 0: OMP_NUM_THREADS, else every core. The map is bit-identical for
   /// any count (each realization fills its own slot, and the slots are summed in order).
   int threads = 1;
 };
+
+/// The map's rows: the crystal's own (crystal_parameters(): packing, disorder kind, seed), then
+/// widths, realizations, bin_hz, threads. The front ends' options and keywords, and the JSON.
+const ParameterTable<CrystalIprMapConfig>& crystal_ipr_map_parameters();
 
 struct CrystalIprMapCell {
   double width = 0;

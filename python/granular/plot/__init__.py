@@ -31,6 +31,7 @@ look, _io the reading of results and files:
     breather_branch(result_or_csv, point)      energy vs f_b, stability, linear modes, profiles, multipliers
   crystals: two-dimensional crystals
     crystal(result_or_csv, mode)               IPR against f, <r>; one mode's displacements as arrows on the packing
+    crystal_ipr_map(result)                    mean IPR and <r> against f, one curve per disorder width
   quasiperiodic: quasiperiodic chains
     butterfly(result_or_csv)                   the Hofstadter butterfly coloured by IPR, its box-counting dimension
     dynamical_butterfly(result_or_csv, eigen)  the butterfly from the dynamics: power vs f and beta, modes overlaid
@@ -42,14 +43,14 @@ look, _io the reading of results and files:
     study_comparison(table, reference)         gamma and eta of two runs side by side (e.g. 100 ms, 10 ms)
 """
 from .breathers import breather_branch
-from .crystals import crystal
+from .crystals import crystal, crystal_ipr_map
 from .disorder import correlations, localization
 from .dynamics import cost, energy_map, forces, lyapunov, mode_kicks, spectral_densities, spreading
 from .modes import ipr_averaging, ipr_map, partial_spectrum_ipr, spectrum
 from .quasiperiodic import butterfly, dynamical_butterfly
 from .transport_exponents import centres, exponents, paper_comparison, profiles, study_comparison
 
-__all__ = ["breather_branch", "crystal", "ipr_map", "spectrum", "partial_spectrum_ipr", "ipr_averaging", "correlations", "localization", "energy_map",
+__all__ = ["breather_branch", "crystal", "crystal_ipr_map", "ipr_map", "spectrum", "partial_spectrum_ipr", "ipr_averaging", "correlations", "localization", "energy_map",
            "forces", "spreading", "lyapunov", "mode_kicks", "spectral_densities", "cost", "exponents", "centres",
            "paper_comparison", "profiles", "study_comparison", "butterfly",
            "dynamical_butterfly"]

@@ -64,3 +64,30 @@ def crystal(source, mode=None):
             ax2.set_ylabel("y [mm]")
             ax2.set_title(f"mode {k + 1}: f = {freq[k]:.3f} kHz, IPR = {ipr[k]:.3f}", fontsize=10)
     return fig
+
+
+def crystal_ipr_map(result):
+    """The 2D IPR map (granular.crystal_ipr_map): the mean vector IPR against frequency, one curve per disorder
+    width, beside the level-spacing ratio <r> per frequency bin with the Poisson (localized) and GOE (extended)
+    values dashed."""
+    centre = 0.5 * (result.freq_lo_khz + result.freq_hi_khz)
+    p = result.metadata.get("parameters", {})
+    with style():
+        fig = figure(10.5, 4.2)
+        ax_ipr, ax_r = fig.subplots(1, 2, sharex=True)
+        for i, w in enumerate(result.width):
+            some = result.modes[i] > 0
+            ax_ipr.semilogy(centre[some], result.ipr[i][some], "o-", ms=3, label=f"w = {w:g}")
+            enough = result.ratios[i] >= 20  # fewer ratios than this: noise, not statistics
+            ax_r.plot(centre[enough], result.ratio[i][enough], "o-", ms=3, label=f"w = {w:g}")
+        for value, name in ((0.3863, "Poisson"), (0.5307, "GOE")):
+            ax_r.axhline(value, ls="--", color="0.5", lw=0.8)
+            ax_r.text(centre[0], value, f" {name}", va="bottom", fontsize=8, color="0.4")
+        ax_ipr.set_xlabel("frequency f [kHz]")
+        ax_ipr.set_ylabel("mean IPR (displacements)")
+        ax_r.set_xlabel("frequency f [kHz]")
+        ax_r.set_ylabel("<r> (bins with >= 20 ratios)")
+        ax_ipr.legend(frameon=False, fontsize=8)
+        fig.suptitle(f"{p.get('lattice', '')} {p.get('Lx', '')} x {p.get('Ly', '')}, {p.get('disorder', '')} disorder, "
+                     f"{p.get('realizations', '')} realizations per width", fontsize=11)
+    return fig
