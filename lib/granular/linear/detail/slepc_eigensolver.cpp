@@ -99,21 +99,16 @@ ShiftInvertResult slepc_shift_invert_sparse(const SparseSymmetric& m, double sig
   if (!std::isfinite(sigma)) throw InvalidInput("SLEPc", ": the shift must be finite");
   ensure_started();
 
-  // PETSc's own split of the rows (PetscSplitOwnership), so that this rank can count its entries
-  // inside and outside its diagonal block and preallocate exactly before assembling.
-  PetscInt local = PETSC_DECIDE, global = n, first = 0;
-  check(PetscSplitOwnership(PETSC_COMM_WORLD, &local, &global), "PetscSplitOwnership");
-  check(MPI_Scan(&local, &first, 1, MPIU_INT, MPI_SUM, PETSC_COMM_WORLD), "MPI_Scan");
-  first -= local;
-  const PetscInt last = first + local;
-  std::vector<PetscInt> inside(static_cast<std::size_t>(local)), outside(inside.size());
-  for (PetscInt i = first; i < last; ++i)
-    for (std::size_t k = m.row_start[i]; k < m.row_start[i + 1]; ++k) {
-      const auto j = static_cast<PetscInt>(m.column[k]);
-      ++(j >= first && j < last ? inside : outside)[static_cast<std::size_t>(i - first)];
-    }
+  // Preallocated as the tridiagonal path is, by one count for every row: the longest row, inside
+  // and outside this rank's diagonal block (every rank holds the whole matrix, so no message).
+  PetscInt longest = 0;
+  for (std::size_t i = 0; i < m.size(); ++i)
+    longest = std::max(longest, static_cast<PetscInt>(m.row_start[i + 1] - m.row_start[i]));
   Owned<Mat, MatDestroy> a;
-  check(MatCreateAIJ(PETSC_COMM_WORLD, local, local, n, n, 0, inside.data(), 0, outside.data(), &a.p), "MatCreateAIJ");
+  check(MatCreateAIJ(PETSC_COMM_WORLD, PETSC_DECIDE, PETSC_DECIDE, n, n, longest, nullptr, longest, nullptr, &a.p),
+        "MatCreateAIJ");
+  PetscInt first = 0, last = 0;
+  check(MatGetOwnershipRange(a.p, &first, &last), "MatGetOwnershipRange");
   std::vector<PetscInt> cols;
   for (PetscInt i = first; i < last; ++i) {
     const std::size_t b = m.row_start[i], e = m.row_start[i + 1];
