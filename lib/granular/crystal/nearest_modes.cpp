@@ -76,6 +76,19 @@ CrystalSpectrum crystal_nearest_modes(const CrystalMatrix& d, double near_hz, lo
     throw InvalidInput("count", " " + std::to_string(count) + ": must be in 1 ... " + std::to_string(d.rows() - 1) +
                                     " (2N - 1) for a shift-invert Krylov method");
   const double sigma = std::pow(2 * std::numbers::pi * near_hz, 2);
+  // Every ω² lies below Gershgorin's bound max_r Σ_c |D_rc|: a shift beyond it is a slip (a unit,
+  // a digit), and shift-invert would quietly return the top modes as the "nearest".
+  double gershgorin = 0;
+  for (std::size_t row = 0; row < d.rows(); ++row) {
+    double sum = 0;
+    for (auto q = d.matrix.row_start[row]; q < d.matrix.row_start[row + 1]; ++q) sum += std::fabs(d.matrix.value[q]);
+    gershgorin = std::max(gershgorin, sum);
+  }
+  if (sigma > gershgorin)
+    throw InvalidInput("near", " " + format_number(near_hz * 1e-3) +
+                                   " kHz: above the crystal's spectrum (every mode is below " +
+                                   format_number(std::round(std::sqrt(gershgorin) / (2 * std::numbers::pi)) * 1e-3) +
+                                   " kHz, Gershgorin's bound)");
   double scale = 0;
   for (double v : d.matrix.value) scale = std::max(scale, std::fabs(v));
   auto worst_residual = [&](const ShiftInvertResult& r) {

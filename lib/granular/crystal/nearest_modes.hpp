@@ -19,8 +19,8 @@ enum class NearestMethod {
 
 /// The `count` modes nearest `near_hz` [Hz], by increasing ω², with their IPRs (and unit
 /// eigenvectors with config.vectors), as crystal_spectrum gives them, and max_residual. Throws
-/// InvalidInput naming `near` (not finite or < 0) or `count` (outside 1 … 2N − 1), NumericalError
-/// when D − σI is singular or the solver fails; InvalidInput naming `method` for slepc in a build
+/// InvalidInput naming `near` (not finite, < 0, or above Gershgorin's bound on the spectrum) or `count` (outside 1 … 2N
+/// − 1), NumericalError when D − σI is singular or the solver fails; InvalidInput naming `method` for slepc in a build
 /// without SLEPc.
 CrystalSpectrum crystal_nearest_modes(const CrystalMatrix& d, double near_hz, long count,
                                       const CrystalSpectrumConfig& config = {},
