@@ -9,6 +9,8 @@ set(GRANULAR_MAN_SUMMARY_spreading "energy spreading after a kick in a granular 
 set(GRANULAR_MAN_SUMMARY_exponents "the transport exponents gamma and eta of kicked disordered granular chains")
 set(GRANULAR_MAN_SUMMARY_restitution "coefficient of restitution of a two-bead collision")
 set(GRANULAR_MAN_SUMMARY_breathers "breathers of a granular chain: periodic orbits by shooting, continuation, Floquet stability")
+set(GRANULAR_MAN_SUMMARY_crystal "modes of a 2D granular crystal: every mode or those nearest a frequency, vector IPR, <r>")
+set(GRANULAR_MAN_SUMMARY_crystal-ipr-map "IPR map of disordered 2D granular crystals: mean IPR and <r> against frequency and disorder")
 set(GRANULAR_MAN_SUMMARY_butterfly "Hofstadter butterfly and box-counting dimension of quasiperiodic granular chains")
 
 find_program(GRANULAR_HELP2MAN help2man)

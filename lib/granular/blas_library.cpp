@@ -22,4 +22,23 @@ std::string blas_library() {
   return out;
 }
 
+namespace {
+using GetThreads = int (*)();
+using SetThreads = void (*)(int);
+}  // namespace
+
+SerialBlas::SerialBlas() {
+  const auto get = reinterpret_cast<GetThreads>(dlsym(RTLD_DEFAULT, "openblas_get_num_threads"));
+  const auto set = reinterpret_cast<SetThreads>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads"));
+  if (get == nullptr || set == nullptr) return;
+  previous_ = get();
+  set(1);
+}
+
+SerialBlas::~SerialBlas() {
+  if (previous_ < 1) return;
+  if (const auto set = reinterpret_cast<SetThreads>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads")); set != nullptr)
+    set(previous_);
+}
+
 }  // namespace granular

@@ -14,4 +14,21 @@ namespace granular {
 /// MAX_THREADS=64: …"); "unknown" when the symbol cannot be traced to a file.
 std::string blas_library();
 
+/// While alive, OpenBLAS runs on one thread (openblas_set_num_threads(1), the previous count
+/// restored after; another BLAS is left as it is). For ensembles that run their realizations on
+/// threads and ranks: OpenBLAS splits some sums (dsymv, in dsyevd's reduction) by its thread count,
+/// which differs between a process and an MPI rank bound to one core, so without this a
+/// realization's last bits would depend on where it ran. Not for concurrent use: make one around
+/// the whole ensemble, on the thread that starts it.
+class SerialBlas {
+ public:
+  SerialBlas();
+  ~SerialBlas();
+  SerialBlas(const SerialBlas&) = delete;
+  SerialBlas& operator=(const SerialBlas&) = delete;
+
+ private:
+  int previous_ = 0;  ///< OpenBLAS's thread count before; 0: not OpenBLAS
+};
+
 }  // namespace granular

@@ -4,6 +4,7 @@ nothing here repeats a default or a help line."""
 import numpy as np
 
 from . import _core
+from ._dynamics import _run
 from ._results import Result
 from ._schema import TableKeywords, split_keywords, with_keywords
 
@@ -51,13 +52,22 @@ class CrystalIprMap(Result):
     """
 
 
-def crystal_ipr_map(**keywords):
+def crystal_ipr_map(*, threads=0, checkpoint=None, resume=False, resume_other_version=False, fresh=False,
+                    progress=False, **keywords):
     """The 2D analogue of the paper's IPR map: every mode of `realizations` crystals per disorder width, binned
     in frequency, with the mean vector IPR and the level-spacing ratio <r> in each bin (Poisson 0.3863 for
     localized modes, GOE 0.5307 for extended ones). Every mode by dense LAPACK: crystals of up to a few thousand
-    beads. Returns a granular.CrystalIprMap."""
+    beads. Returns a granular.CrystalIprMap (the crystal-ipr-map tool's numbers for the same keywords).
+
+    threads: crystals solved at once (0: every core); the map does not depend on it
+    checkpoint: a file logging each solved crystal (removed once the map is complete); resume=True continues an
+        interrupted map from it and gives exactly the uninterrupted map (resume_other_version=True also accepts
+        a checkpoint another granular version made); fresh=True discards it and starts again
+    progress: draw a progress bar. Releases the GIL; Ctrl-C stops it after the crystals in flight
+        (KeyboardInterrupt), leaving the checkpoint to resume from."""
     (given,) = split_keywords(keywords, [_MAP], "crystal_ipr_map")
-    raw = _core._crystal_ipr_map(_MAP.make(given))
+    run = _run(threads, checkpoint, resume, resume_other_version, progress, fresh)
+    raw = _core._crystal_ipr_map(_MAP.make(given), run)
     cells = raw["cells"]
     bins = max(len(c["bin_modes"]) for c in cells)
 
@@ -74,4 +84,4 @@ def crystal_ipr_map(**keywords):
 
 
 with_keywords(crystal_ipr_map, [_MAP], "Keywords (the library's crystal_ipr_map_parameters(): the crystal's rows of "
-              "crystal_parameters(), then the map's own)")
+              "crystal_parameters(), then the map's own)", first=True)

@@ -5,6 +5,8 @@
 
 #include "bindings.hpp"
 #include "granular/crystal/crystal_study.hpp"
+#include "granular/ensemble/checkpoint_log.hpp"
+#include "granular/ensemble/parallel_realizations.hpp"
 #include "granular/parameter_json.hpp"
 #include "granular/study/crystal_ipr_map.hpp"
 
@@ -28,14 +30,15 @@ py::dict crystal(const CrystalCase& c) {
 }
 
 /// The map's cells (one per width, its bins) and the JSON of the config (describe_rows).
-py::dict ipr_map_of_crystals(const CrystalIprMapConfig& c) {
+py::dict ipr_map_of_crystals(const CrystalIprMapConfig& c, const PyRun& options) {
+  const int threads = options.thread_request();
   std::vector<CrystalIprMapCell> cells;
-  {
-    py::gil_scoped_release free;
-    cells = granular::crystal_ipr_map(c);
-  }
+  run_long("crystal_ipr_map", c.widths.size() * c.realizations, options,
+           [&](const RunOptions& run) { cells = granular::crystal_ipr_map(c, run); });
+  if (!options.checkpoint.empty()) CheckpointLog::remove_all(options.checkpoint);  // complete: the map is in memory
   nlohmann::json described;
   described["parameters"] = describe_rows(c, crystal_ipr_map_parameters());
+  described["threads"] = resolve_threads(threads);
   py::list out;
   for (CrystalIprMapCell& cell : cells)
     out.append(fields("width bin_modes bin_ipr bin_ratio bin_ratios", cell.width, std::move(cell.bin_modes),

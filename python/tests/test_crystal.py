@@ -1,6 +1,8 @@
 """granular.crystal: its keywords are the library's crystal_parameters() rows with CrystalCase's C++ defaults, and
 it returns what the crystal tool writes."""
 import inspect
+import subprocess
+import sys
 
 import numpy as np
 import pytest
@@ -70,8 +72,9 @@ def test_the_tool_writes_the_same_modes(tools):
 def test_ipr_map_signature_is_the_crystals_rows_then_its_own():
     crystal_rows = [k for _, k, _ in _core.CrystalCase._parameters]
     names = list(inspect.signature(gr.crystal_ipr_map).parameters)
-    assert names[-4:] == ["widths", "realizations", "bin_hz", "threads"]
-    assert all(n in crystal_rows for n in names[:-4])
+    run = ["threads", "checkpoint", "resume", "resume_other_version", "fresh", "progress"]  # how, after what
+    assert names[-9:] == ["widths", "realizations", "bin_hz"] + run
+    assert all(n in crystal_rows for n in names[:-9])
     assert inspect.signature(gr.crystal_ipr_map).parameters["widths"].default == list(_core.CrystalIprMapConfig().widths)
 
 
@@ -85,3 +88,31 @@ def test_ipr_map_cells_count_every_mode_and_the_perfect_row_is_the_crystals():
         np.testing.assert_allclose(m.ipr[0, b], perfect.ipr[bins == b].mean(), rtol=1e-12)
     with pytest.raises(ValueError, match="widths"):
         gr.crystal_ipr_map(widths=[1.5])
+
+
+def test_ipr_map_equals_the_crystal_ipr_map_tool_and_its_figure_reads_the_csv(tools):
+    args = dict(lattice="hexagonal", Lx=6, Ly=6, widths=[0.0, 0.7], realizations=2, bin_hz=2500.0)
+    m = gr.crystal_ipr_map(**args, threads=1)
+    csv, meta = tools.run("crystal-ipr-map", "--lattice", "hexagonal", "--Lx", "6", "--Ly", "6", "--widths", "0,0.7",
+                          "--realizations", "2", "--bin-hz", "2500", "--quiet")
+    assert meta["parameters"] == m.metadata["parameters"]
+    some = m.modes.ravel() > 0  # the tool writes each width's bins up to its own top
+    np.testing.assert_array_equal(csv["ipr"][csv["modes"] > 0], m.ipr.ravel()[some])
+    np.testing.assert_array_equal(csv["modes"][csv["modes"] > 0], m.modes.ravel()[some])
+    fig = gr.plot.crystal_ipr_map(tools.path("out.csv"))
+    assert len(fig.axes) == 2
+    done = subprocess.run([sys.executable, "-m", "granular.plot", "crystal-ipr-map", str(tools.path("out.csv"))],
+                          capture_output=True, text=True)
+    assert done.returncode == 0, done.stderr
+    assert tools.path("out.png").exists()
+
+
+def test_ipr_map_resumes_from_its_checkpoint_to_the_same_map(tmp_path):
+    args = dict(lattice="hexagonal", Lx=6, Ly=6, widths=[0.3], realizations=3, bin_hz=3000.0)
+    whole = gr.crystal_ipr_map(**args)
+    log = tmp_path / "map.checkpoint"
+    again = gr.crystal_ipr_map(**args, checkpoint=log)
+    assert not log.exists()  # removed once the map is complete
+    np.testing.assert_array_equal(again.ipr, whole.ipr)
+    with pytest.raises(ValueError, match="fresh"):
+        gr.crystal_ipr_map(**args, checkpoint=log, resume=True, fresh=True)

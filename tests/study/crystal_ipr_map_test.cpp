@@ -6,14 +6,19 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <filesystem>
 #include <numeric>
+#include <string>
 #include <vector>
 
 #include "granular/crystal/crystal_matrix.hpp"
 #include "granular/crystal/crystal_spectrum.hpp"
 #include "granular/crystal/static_state.hpp"
+#include "granular/ensemble/checkpoint_log.hpp"
 #include "granular/error.hpp"
+#include "granular/parameter_json.hpp"
 
 namespace granular {
 namespace {
@@ -60,20 +65,23 @@ TEST(CrystalIprMap, CountsEveryModeAndMatchesThePerfectCrystal) {
   }
 }
 
-TEST(CrystalIprMap, IsBitIdenticalOnTwoThreadsAndLocalizesTheTopOfTheBand) {
-  CrystalIprMapConfig c = crystal_map_config();
-  const auto a = crystal_ipr_map(c);
-  c.threads = 2;
-  const auto b = crystal_ipr_map(c);
+void expect_same_crystal_maps(const std::vector<CrystalIprMapCell>& a, const std::vector<CrystalIprMapCell>& b) {
   ASSERT_EQ(a.size(), b.size());
   for (std::size_t k = 0; k < a.size(); ++k) {
     EXPECT_EQ(a[k].bin_modes, b[k].bin_modes);
     EXPECT_EQ(a[k].bin_ratios, b[k].bin_ratios);
+    ASSERT_EQ(a[k].bin_ipr.size(), b[k].bin_ipr.size());
     for (std::size_t j = 0; j < a[k].bin_ipr.size(); ++j) {
       EXPECT_TRUE(crystal_map_same(a[k].bin_ipr[j], b[k].bin_ipr[j])) << "bin " << j;
       EXPECT_TRUE(crystal_map_same(a[k].bin_ratio[j], b[k].bin_ratio[j])) << "bin " << j;
     }
   }
+}
+
+TEST(CrystalIprMap, IsBitIdenticalOnTwoThreadsAndLocalizesTheTopOfTheBand) {
+  const CrystalIprMapConfig c = crystal_map_config();
+  const auto a = crystal_ipr_map(c, {.threads = 1});
+  expect_same_crystal_maps(a, crystal_ipr_map(c, {.threads = 2}));
   // Light beads (density down to 0.1 ρ) push modes above the perfect band and hold them: the top
   // bins' mean IPR is ~100/N against ≤ 2.2/N for every bin of the perfect crystal.
   EXPECT_GT(crystal_map_max(a[1].bin_ipr), 10 * crystal_map_max(a[0].bin_ipr));
@@ -88,8 +96,14 @@ TEST(CrystalIprMap, RefusesBadWidthsRealizationsAndBins) {
   EXPECT_THROW(crystal_ipr_map(c), InvalidInput);
   c = crystal_map_config(), c.bin_hz = 0;
   EXPECT_THROW(crystal_ipr_map(c), InvalidInput);
-  c = crystal_map_config(), c.threads = -1;
-  EXPECT_THROW(crystal_ipr_map(c), InvalidInput);
+  c = crystal_map_config();
+  EXPECT_THROW(crystal_ipr_map(c, {.threads = -1}), InvalidInput);
+  try {
+    crystal_ipr_map(c, {.skip_failed = true});
+    ADD_FAILURE() << "skip_failed accepted";
+  } catch (const InvalidInput& e) {
+    EXPECT_EQ(e.parameter(), "skip_failed");
+  }
   c = crystal_map_config(), c.crystal.packing.Lx = 1;
   try {
     crystal_ipr_map(c);
@@ -97,6 +111,33 @@ TEST(CrystalIprMap, RefusesBadWidthsRealizationsAndBins) {
   } catch (const InvalidInput& e) {
     EXPECT_EQ(e.parameter(), "Lx");
   }
+}
+
+// Stopped after some crystals (Ctrl-C in Python, SIGINT in the tool), then resumed: the crystals
+// already solved come from the checkpoint, and the map is the uninterrupted one to the bit.
+TEST(CrystalIprMap, ResumesAnInterruptedMapToTheUninterruptedOne) {
+  CrystalIprMapConfig c = crystal_map_config();
+  c.crystal.packing.Lx = 8, c.crystal.packing.Ly = 8, c.realizations = 5;
+  const auto whole = crystal_ipr_map(c, {.threads = 2});
+  const std::string log = (std::filesystem::temp_directory_path() / "granular-crystal-map.checkpoint").string();
+  CheckpointLog::remove_all(log);
+  std::atomic<int> started{0};
+  RunOptions run{.threads = 2, .checkpoint = log};
+  run.cancelled = [&] { return started++ >= 4; };
+  EXPECT_THROW(crystal_ipr_map(c, run), Cancelled);
+  const std::size_t kept = CheckpointLog::load(log, describe_rows(c, crystal_ipr_map_parameters()).dump()).size();
+  EXPECT_GE(kept, 4u);
+  EXPECT_LT(kept, 10u);
+  run.cancelled = nullptr;
+  try {  // not resuming: refused, the finished crystals kept
+    crystal_ipr_map(c, run);
+    ADD_FAILURE() << "a map not resuming wrote over an interrupted map's checkpoint";
+  } catch (const InvalidInput& e) {
+    EXPECT_EQ(e.parameter(), "checkpoint");
+  }
+  run.resume = true;
+  expect_same_crystal_maps(whole, crystal_ipr_map(c, run));
+  CheckpointLog::remove_all(log);
 }
 
 }  // namespace

@@ -1,8 +1,8 @@
 // The kill loop: a scaled-down run killed with SIGKILL at ten pseudo-random moments,
 // resumed after each, ends byte for byte where an uninterrupted run ends; the same under
-// mpirun -np 2 with one rank killed. Whatever moment a kill hits (a checkpoint line half written,
-// the header being replaced, the outputs being renamed), nothing finished is lost and nothing torn
-// is read back.
+// mpirun -np 2 with one rank killed (exponents, a spreading ensemble, the crystal IPR map). Whatever moment a kill hits
+// (a checkpoint line half written, the header being replaced, the outputs being renamed), nothing finished is lost and
+// nothing torn is read back.
 #include <dirent.h>
 #include <signal.h>
 
@@ -36,6 +36,11 @@ const Job spreading_job{"spreading",
                         "--disorder RDM1 --N 201 --T 1e-3 --fit 4e-4:1e-3 --samples 30 --F0 0.1 --realizations 600 "
                         "--bootstrap 100 --profile --quiet",
                         {".csv", "-sem.csv", "-profile.csv"}};
+
+const Job crystal_map_job{
+    "crystal-ipr-map",
+    "--lattice hexagonal --Lx 14 --Ly 14 --widths 0,0.5,0.9 --realizations 10 --bin-hz 2000 --quiet",
+    {".csv"}};
 
 std::string outputs(const Job& job, const std::string& prefix) {
   std::string all;
@@ -136,6 +141,12 @@ TEST(KillLoop, SpreadingEnsembleKilledTenTimesEndsByteIdentical) {
   std::filesystem::remove_all(dir);
 }
 
+TEST(KillLoop, CrystalIprMapKilledTenTimesEndsByteIdentical) {
+  const std::string dir = scratch_folder("kill-crystal-map");
+  kill_loop(crystal_map_job, "", dir, false);
+  std::filesystem::remove_all(dir);
+}
+
 #ifdef GRANULAR_MPIEXEC_PATH
 const std::string mpirun = "env OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 " +
                            std::string(GRANULAR_MPIEXEC_PATH) + " --oversubscribe -np 2 ";
@@ -151,6 +162,14 @@ TEST(KillLoop, ExponentsUnderTwoMpiRanksOneRankKilledEndsByteIdentical) {
 TEST(KillLoop, SpreadingUnderTwoMpiRanksOneRankKilledEndsByteIdentical) {
   const std::string dir = scratch_folder("kill-spreading-mpi");
   Job job = spreading_job;
+  job.args += " --threads 1";
+  kill_loop(job, mpirun, dir, true);
+  std::filesystem::remove_all(dir);
+}
+
+TEST(KillLoop, CrystalIprMapUnderTwoMpiRanksOneRankKilledEndsByteIdentical) {
+  const std::string dir = scratch_folder("kill-crystal-map-mpi");
+  Job job = crystal_map_job;
   job.args += " --threads 1";
   kill_loop(job, mpirun, dir, true);
   std::filesystem::remove_all(dir);

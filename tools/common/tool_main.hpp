@@ -105,8 +105,8 @@ struct Shown {
 /// Registers an option for every row of `table` (parameter_table.hpp) that is shown, bound to its
 /// field of `o`, or read by its text form (Parameter::text) as the command line is parsed: a flag
 /// for a bool, an integer that takes scientific notation for a long long or unsigned long, a
-/// number or word otherwise; its --help line is the row's help, each parameter it names told as
-/// this tool's flag. Returns them by parameter name.
+/// comma list for a vector, a number or word otherwise; its --help line is the row's help, each parameter it names told
+/// as this tool's flag. Returns them by parameter name.
 template <class Choices>
 std::map<std::string, CLI::Option*> add_parameters(CLI::App& app, Choices& o, const ParameterTable<Choices>& table,
                                                    const Shown& shown = {}) {
@@ -133,6 +133,9 @@ std::map<std::string, CLI::Option*> add_parameters(CLI::App& app, Choices& o, co
                                std::is_same_v<Field, Ref<Choices, long long>> ||
                                std::is_same_v<Field, Ref<Choices, unsigned long>>)
               return add_integer(app, name, field(o), description);
+            else if constexpr (std::is_same_v<Field, Ref<Choices, std::vector<double>>> ||
+                               std::is_same_v<Field, Ref<Choices, std::vector<long>>>)
+              return app.add_option(name, field(o), description)->delimiter(',');  // a,b,c (or a b c)
             else return app.add_option(name, field(o), description);
           },
           p.field);

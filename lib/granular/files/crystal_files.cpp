@@ -26,6 +26,16 @@ void write_crystal_modes_csv(std::ostream& out, const CrystalResult& r) {
     }
 }
 
+void write_crystal_ipr_map_csv(std::ostream& out, const CrystalIprMapConfig& config,
+                               const std::vector<CrystalIprMapCell>& cells) {
+  CsvWriter table(out, {"width", "freq_lo_khz", "freq_hi_khz", "modes", "ipr", "ratio", "ratios"});
+  const double bin_khz = config.bin_hz * 1e-3;
+  for (const CrystalIprMapCell& cell : cells)
+    for (std::size_t b = 0; b < cell.bin_modes.size(); ++b)
+      table.row(cell.width, static_cast<double>(b) * bin_khz, static_cast<double>(b + 1) * bin_khz, cell.bin_modes[b],
+                cell.bin_ipr[b], cell.bin_ratio[b], cell.bin_ratios[b]);
+}
+
 void write_crystal_matrix(const std::string& prefix, const CrystalMatrix& d) {
   static_assert(std::endian::native == std::endian::little && sizeof(std::size_t) == 8);
   const auto write = [&](const std::string& suffix, const auto& values) {

@@ -6,12 +6,15 @@
 #include <span>
 #include <string>
 
+#include "granular/blas_library.hpp"
 #include "granular/crystal/crystal_matrix.hpp"
 #include "granular/crystal/crystal_spectrum.hpp"
 #include "granular/crystal/static_state.hpp"
-#include "granular/ensemble/parallel_realizations.hpp"
+#include "granular/ensemble/ensemble_runner.hpp"
 #include "granular/error.hpp"
 #include "granular/number_format.hpp"
+#include "granular/parallel/mpi_context.hpp"
+#include "granular/parameter_json.hpp"
 
 namespace granular {
 
@@ -24,30 +27,57 @@ const ParameterTable<CrystalIprMapConfig>& crystal_ipr_map_parameters() {
     t.push_back({"widths", &C::widths, "disorder strengths w in [0, 1), one map row each (comma list)"});
     t.push_back({"realizations", &C::realizations, "crystals per width (>= 1)"});
     t.push_back({"bin_hz", &C::bin_hz, "frequency bin width [Hz] of the IPR and <r> averages"});
-    t.push_back({"threads", &C::threads, "realizations solved at once (0: every core)"});
     return t;
   }();
   return table;
 }
 
-std::vector<CrystalIprMapCell> crystal_ipr_map(const CrystalIprMapConfig& c) {
+void validate(const CrystalIprMapConfig& c) {
   if (c.widths.empty()) throw InvalidInput("widths", ": no values");
   for (double w : c.widths)
     if (!(w >= 0 && w < 1)) throw InvalidInput("widths", " " + format_number(w) + ": must be in [0, 1)");
   if (c.realizations < 1) throw InvalidInput("realizations", " 0: must be >= 1");
-  if (c.threads < 0) throw InvalidInput("threads", " " + std::to_string(c.threads) + ": must be >= 0");
   if (!(c.bin_hz > 0) || !std::isfinite(c.bin_hz))
     throw InvalidInput("bin_hz", " " + format_number(c.bin_hz) + ": must be finite and > 0");
-  make_packing(c.crystal.packing);  // its own checks, before any work
+  make_packing(c.crystal.packing);  // its own checks
+}
 
+std::vector<CrystalIprMapCell> crystal_ipr_map(const CrystalIprMapConfig& c, const RunOptions& run) {
+  validate(c);
+  validate(run);
+  if (run.skip_failed) throw InvalidInput("skip_failed", ": the crystal IPR map leaves no crystal out");
+
+  // Task t is realization t % each of width t / each; its row: the ascending frequencies [Hz],
+  // then their IPRs (what the bins need, and what a checkpoint keeps).
   const std::size_t each = c.realizations;
-  std::vector<CrystalSpectrum> spectra(c.widths.size() * each);
-  parallel_realizations(spectra.size(), resolve_threads(c.threads), [&](std::size_t task, int) {
+  EnsembleOptions ensemble;
+  ensemble.realizations = c.widths.size() * each;
+  ensemble.threads = run.threads;
+  ensemble.checkpoint = run.checkpoint;
+  ensemble.resume = run.resuming();
+  ensemble.fresh = run.fresh;
+  ensemble.accept_other_version = run.accept_other_version;
+  ensemble.parameters = describe_rows(c, crystal_ipr_map_parameters()).dump();
+  ensemble.progress = run.progress;
+  ensemble.cancelled = run.cancelled;
+  const SerialBlas serial;  // the crystals are the parallelism, and each the same bits on any rank
+  const std::vector<std::vector<double>> rows = run_ensemble(ensemble, [&](std::uint64_t task, int) {
     const double width = c.widths[task / each];
     const Packing p = make_packing(
         disordered(c.crystal.packing, {c.crystal.disorder.kind, width, c.crystal.disorder.seed, task % each}));
-    spectra[task] = crystal_spectrum(crystal_matrix(p, static_state(p)));
+    const CrystalSpectrum s = crystal_spectrum(crystal_matrix(p, static_state(p)));
+    std::vector<double> row = s.freq_hz;
+    row.insert(row.end(), s.ipr.begin(), s.ipr.end());
+    return row;
   });
+  if (!MpiContext::instance().root()) return {};
+  std::vector<CrystalSpectrum> spectra(rows.size());
+  for (std::size_t t = 0; t < rows.size(); ++t) {
+    const std::size_t modes = rows[t].size() / 2;
+    spectra[t].freq_hz.assign(rows[t].begin(), rows[t].begin() + static_cast<std::ptrdiff_t>(modes));
+    spectra[t].ipr.assign(rows[t].begin() + static_cast<std::ptrdiff_t>(modes), rows[t].end());
+    spectra[t].omega2.resize(modes);  // size() counts them; the bins read f and the IPR only
+  }
 
   std::vector<CrystalIprMapCell> cells;
   for (std::size_t w = 0; w < c.widths.size(); ++w) {

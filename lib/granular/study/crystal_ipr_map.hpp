@@ -9,6 +9,7 @@
 
 #include "granular/crystal/crystal_case.hpp"
 #include "granular/crystal/packing.hpp"
+#include "granular/ensemble/run_options.hpp"
 #include "granular/parameter_table.hpp"
 
 namespace granular {
@@ -20,13 +21,11 @@ struct CrystalIprMapConfig {
   std::vector<double> widths{0.0, 0.5, 0.9};  ///< disorder strengths w in [0, 1)
   unsigned long realizations = 10;            ///< ≥ 1
   double bin_hz = 1000;  ///< bins [k W, (k + 1) W) [Hz], k = 0 … ⌊f_max/W⌋ over the cell's modes
-  /// Realizations solved at once; 0: OMP_NUM_THREADS, else every core. The map is bit-identical for
-  /// any count (each realization fills its own slot, and the slots are summed in order).
-  int threads = 1;
 };
 
 /// The map's rows: the crystal's own (crystal_parameters(): packing, disorder kind, seed), then
-/// widths, realizations, bin_hz, threads. The front ends' options and keywords, and the JSON.
+/// widths, realizations, bin_hz. The front ends' options and keywords, and the JSON (which a
+/// checkpoint must match to be resumed).
 const ParameterTable<CrystalIprMapConfig>& crystal_ipr_map_parameters();
 
 struct CrystalIprMapCell {
@@ -39,10 +38,19 @@ struct CrystalIprMapCell {
   std::vector<std::size_t> bin_ratios;
 };
 
+/// Throws InvalidInput naming `widths`, `realizations`, `bin_hz` or the packing's field (what
+/// crystal_ipr_map checks before any work; front ends call it before claiming their outputs).
+void validate(const CrystalIprMapConfig& config);
+
 /// One cell per width, in the order given, each by every mode of each realization (crystal_spectrum:
-/// for crystals of up to a few thousand beads). Throws InvalidInput naming `widths`,
-/// `realizations`, `bin_hz` or the packing's field before any work, and `packing` when a
-/// realization is not rigid (static_state).
-std::vector<CrystalIprMapCell> crystal_ipr_map(const CrystalIprMapConfig& config);
+/// for crystals of up to a few thousand beads). The widths × realizations crystals run as one
+/// ensemble (ensemble_runner.hpp): on `run.threads` threads, dealt to the ranks under mpirun (rank 0
+/// alone gets the cells; the others an empty vector), each crystal's frequencies and IPRs logged to
+/// `run.checkpoint` as it finishes and not recomputed on `run.resume`. The cells are made from the
+/// crystals in index order, so they are bit-identical for any thread or rank count and across an
+/// interruption. Throws InvalidInput naming `widths`, `realizations`, `bin_hz`, the packing's
+/// field or the run option (`skip_failed` is refused: a crystal that is not rigid is a wrong case,
+/// not a numerical accident) before any work, and `packing` when a realization is not rigid.
+std::vector<CrystalIprMapCell> crystal_ipr_map(const CrystalIprMapConfig& config, const RunOptions& run = {});
 
 }  // namespace granular

@@ -66,10 +66,35 @@ def crystal(source, mode=None):
     return fig
 
 
+class _MapFromCsv:
+    """The crystal-ipr-map tool's CSV (width,freq_lo_khz,freq_hi_khz,modes,ipr,ratio,ratios; its JSON beside it)
+    as a granular.CrystalIprMap's arrays: widths x bins, NaN (modes 0) past a width's top bin."""
+
+    def __init__(self, path):
+        rows = _io.read_csv(path)
+        if "ratios" not in rows:
+            raise ValueError(f"{path}: no ratios column (a crystal-ipr-map CSV?)")
+        self.metadata = _io.read_json_beside(path)
+        self.width = np.unique(rows["width"])
+        lo = np.unique(rows["freq_lo_khz"])
+        step = rows["freq_hi_khz"][0] - rows["freq_lo_khz"][0]
+        self.freq_lo_khz, self.freq_hi_khz = lo, lo + step
+        shape = (len(self.width), len(lo))
+        self.modes, self.ratios = np.zeros(shape, dtype=np.int64), np.zeros(shape, dtype=np.int64)
+        self.ipr, self.ratio = np.full(shape, np.nan), np.full(shape, np.nan)
+        i = np.searchsorted(self.width, rows["width"])
+        j = np.searchsorted(lo, rows["freq_lo_khz"])
+        self.modes[i, j], self.ratios[i, j] = rows["modes"], rows["ratios"]
+        self.ipr[i, j], self.ratio[i, j] = rows["ipr"], rows["ratio"]
+
+
 def crystal_ipr_map(result):
-    """The 2D IPR map (granular.crystal_ipr_map): the mean vector IPR against frequency, one curve per disorder
-    width, beside the level-spacing ratio <r> per frequency bin with the Poisson (localized) and GOE (extended)
-    values dashed."""
+    """The 2D IPR map: the mean vector IPR against frequency, one curve per disorder width, beside the
+    level-spacing ratio <r> per frequency bin with the Poisson (localized) and GOE (extended) values dashed.
+
+    result: a granular.CrystalIprMap or the crystal-ipr-map tool's CSV (its JSON beside it)."""
+    if _io.is_path(result):
+        result = _MapFromCsv(result)
     centre = 0.5 * (result.freq_lo_khz + result.freq_hi_khz)
     p = result.metadata.get("parameters", {})
     with style():
