@@ -9,6 +9,7 @@ set(GRANULAR_MAN_SUMMARY_spreading "energy spreading after a kick in a granular 
 set(GRANULAR_MAN_SUMMARY_exponents "the transport exponents gamma and eta of kicked disordered granular chains")
 set(GRANULAR_MAN_SUMMARY_restitution "coefficient of restitution of a two-bead collision")
 set(GRANULAR_MAN_SUMMARY_breathers "breathers of a granular chain: periodic orbits by shooting, continuation, Floquet stability")
+set(GRANULAR_MAN_SUMMARY_klein-gordon "spreading and weak chaos (m2, P, finite-time mLE) in the disordered Klein-Gordon chain")
 set(GRANULAR_MAN_SUMMARY_butterfly "Hofstadter butterfly and box-counting dimension of quasiperiodic granular chains")
 
 find_program(GRANULAR_HELP2MAN help2man)
