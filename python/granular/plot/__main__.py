@@ -119,6 +119,9 @@ def parser(prog=None):
                         "from a crystal CSV (PREFIX-modes.csv beside it from --vectors)")
     q.add_argument("csv", nargs="?", default="crystal.csv")
     q.add_argument("--mode", type=int, help="the mode drawn, from 1 (default: the most localized)")
+    q = kind("klein-gordon", "m2(t), P(t) and the finite-time mLE Lambda(t) of the disordered Klein-Gordon chain, "
+                             "log-log, from a klein-gordon CSV")
+    q.add_argument("csv", nargs="?", default="klein-gordon.csv")
     q = kind("cost", "integrators' cost-accuracy curves, from dynamics_benchmark --benchmark_out JSON")
     q.add_argument("bench")
     return p
@@ -204,6 +207,8 @@ def main(argv=None, prog=None):
             save(plot.breather_branch(args.csv, args.point), args.output or _default_output(args.csv))
         elif args.kind == "crystal":
             save(plot.crystal(args.csv, args.mode), args.output or _default_output(args.csv))
+        elif args.kind == "klein-gordon":
+            save(plot.klein_gordon(args.csv), args.output or _default_output(args.csv))
         elif args.kind == "cost":
             save(plot.cost(args.bench), args.output or _default_output(args.bench))
     except (OSError, ValueError, KeyError, IndexError) as error:  # a missing or wrong file: one line, exit code 2
