@@ -18,20 +18,21 @@ def _kg_data(source):
             source.metadata)
 
 
-def _guide(ax, t, y, slope, label):
-    """A dashed power law t^slope through the last point of the curve (t, y)."""
+def _guide(ax, t, y, slope, label, ls="--"):
+    """A grey power law t^slope through the last point of the curve (t, y)."""
     ok = np.isfinite(y) & (y > 0) & (t > 0)
     if ok.sum() < 2:
         return
     t, y = t[ok], y[ok]
     ts = np.array([t[len(t) // 3], t[-1]])
-    ax.loglog(ts, y[-1] * (ts / t[-1]) ** slope, "--", color="0.5", lw=1, label=label)
+    ax.loglog(ts, y[-1] * (ts / t[-1]) ** slope, ls=ls, color="0.5", lw=1, label=label)
 
 
 def klein_gordon(source):
     """A DKG run: the second moment m2(t), the participation number P(t) and, when computed, the finite-time
-    maximal Lyapunov exponent Lambda(t), each on log-log axes, with guide slopes: m2 ~ t^(1/3) and Lambda ~ t^(-1/4)
-    (weak chaos: Flach, Krimer & Skokos 2009; Skokos, Gkolias & Flach 2013), Lambda ~ 1/t (a regular orbit).
+    maximal Lyapunov exponent Lambda(t), each on log-log axes, with guide slopes through each curve's last point: m2 ~ t^(1/3) and
+    Lambda ~ t^(-1/4) dashed (weak chaos: Flach, Krimer & Skokos 2009; Senyange, Many Manda & Skokos 2018),
+    Lambda ~ 1/t dotted (a regular orbit).
 
     source: a granular.KleinGordon or the klein-gordon tool's CSV (its JSON beside it for the title).
     """
@@ -50,7 +51,7 @@ def klein_gordon(source):
             keep = np.isfinite(lam) & (lam > 0)
             axes[2].loglog(t[keep], lam[keep], color="C3")
             _guide(axes[2], t, lam, -0.25, r"$t^{-1/4}$")
-            _guide(axes[2], t, lam, -1.0, r"$t^{-1}$ (regular)")
+            _guide(axes[2], t, lam, -1.0, r"$t^{-1}$ (regular)", ls=":")
             several = meta.get("parameters", {}).get("realizations", 1) > 1
             axes[2].set_ylabel(r"$10^{\langle \log_{10} \Lambda \rangle}$ [$\omega_0$]" if several
                                else r"finite-time mLE $\Lambda$ [$\omega_0$]")
