@@ -58,6 +58,7 @@ TEST(KleinGordonCase, JsonRoundTripGivesTheSameCase) {
 TEST(KleinGordonCase, RefusalsNameTheRow) {
   const std::vector<std::pair<std::function<void(KleinGordonCase&)>, std::string>> cases = {
       {[](KleinGordonCase& c) { c.run.chain.N = 1; }, "N"},
+      {[](KleinGordonCase& c) { c.run.chain.N = 100000001; }, "N"},
       {[](KleinGordonCase& c) { c.run.chain.W = 0; }, "W"},
       {[](KleinGordonCase& c) { c.run.energy = -1; }, "energy"},
       {[](KleinGordonCase& c) { c.run.block = 1001; }, "block"},
@@ -66,6 +67,7 @@ TEST(KleinGordonCase, RefusalsNameTheRow) {
       {[](KleinGordonCase& c) { c.duration = 1e14; }, "duration"},
       {[](KleinGordonCase& c) { c.samples = 0; }, "samples"},
       {[](KleinGordonCase& c) { c.realizations = 0; }, "realizations"},
+      {[](KleinGordonCase& c) { c.realizations = 1000001; }, "realizations"},
       {[](KleinGordonCase& c) { c.threads = -1; }, "threads"},
   };
   for (const auto& [change, name] : cases) {

@@ -138,6 +138,8 @@ TEST(KleinGordonTool, BadInputIsOneLineNamingTheOptionAndWritesNothing) {
       {"--T 1e14", "--T"},
       {"--samples 0", "--samples"},
       {"--realizations 0", "--realizations"},
+      {"--realizations 1e20", "--realizations"},
+      {"--N 1e9", "--N"},
       {"--threads -1", "--threads"},
       {"--bogus 3", "bogus"},
       {"--case " + dir + "/none.json", "--case"},

@@ -13,7 +13,7 @@ const ParameterTable<KleinGordonCase>& klein_gordon_parameters() {
   using R = KleinGordonRunConfig;
   using K = KleinGordonParameters;
   static const ParameterTable<C> table{
-      {"N", path<C>(&C::run, &R::chain, &K::N), "sites (>= 2), fixed ends"},
+      {"N", path<C>(&C::run, &R::chain, &K::N), "sites, 2 to 10^8, fixed ends"},
       {"W", path<C>(&C::run, &R::chain, &K::W),
        "disorder strength W > 0: bonds of stiffness 1/W, on-site "
        "e_l uniform in [1/2, 3/2]"},
@@ -30,7 +30,7 @@ const ParameterTable<KleinGordonCase>& klein_gordon_parameters() {
       {"mle", path<C>(&C::run, &R::mle),
        "also the finite-time maximal Lyapunov exponent Lambda(t) [omega0] (tangent map, deviation on the "
        "centre site)"},
-      {"realizations", &C::realizations, "realizations 0 .. count-1 of `seed` (>= 1); more than one: their means"},
+      {"realizations", &C::realizations, "realizations 0 .. count-1 of `seed` (1 to 10^6); more than one: their means"},
       {"threads", &C::threads, "threads over realizations (0 = all cores); results do not depend on it"}};
   return table;
 }
@@ -71,7 +71,9 @@ void validate(const KleinGordonCase& c) {
                                        ": must be finite, at least `time_step` and at most 10^12 steps of it");
   if (c.samples < 1 || c.samples > 1000000)
     throw InvalidInput("samples", " " + std::to_string(c.samples) + ": must be in [1, 10^6]");
-  if (c.realizations < 1) throw InvalidInput("realizations", " 0: at least 1");
+  // Every realization's curves are kept (the means are summed in index order afterwards).
+  if (c.realizations < 1 || c.realizations > 1000000)
+    throw InvalidInput("realizations", " " + std::to_string(c.realizations) + ": must be in [1, 10^6]");
   if (c.threads < 0 || c.threads > 4096)
     throw InvalidInput("threads", " " + std::to_string(c.threads) + ": 0 (every core) to 4096");
 }
