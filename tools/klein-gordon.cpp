@@ -38,7 +38,7 @@ int main(int argc, char** argv) {
       "  H = sum p^2/2 + e_l x^2/2 + x^4/4 + (x_{l+1} - x_l)^2/(2W), e_l uniform in [1/2, 3/2],\n"
       "in its dimensionless units (time 1/omega0, energy in units of H): one central site of energy E\n"
       "(--block 0) or L central sites at energy density h, integrated by SABA2C up to --T.\n"
-      "Writes PREFIX.csv (t,m2,P and, with --mle, mle,mean_log10_mle: one realization's curves or the\n"
+      "Writes PREFIX.csv (t,m2,P and, unless --mle=false, mle,mean_log10_mle: one realization's curves or the\n"
       "means of --realizations) and PREFIX.json (every parameter, the sample rule, the energy error).",
       "klein-gordon"};
   tool::describe_common(app);

@@ -28,8 +28,8 @@ const ParameterTable<KleinGordonCase>& klein_gordon_parameters() {
       {"duration", &C::duration, "final time T [1/omega0], >= `time_step`"},
       {"samples", &C::samples, "sample times, log-spaced from `time_step` to T (1 to 10^6; repeated steps dropped)"},
       {"mle", path<C>(&C::run, &R::mle),
-       "also the finite-time maximal Lyapunov exponent Lambda(t) [omega0] (tangent map, deviation on the "
-       "centre site)"},
+       "also the finite-time maximal Lyapunov exponent Lambda(t) [omega0] (tangent map, deviation on the centre "
+       "site); on unless `mle`=false"},
       {"realizations", &C::realizations, "realizations 0 .. count-1 of `seed` (1 to 10^6); more than one: their means"},
       {"threads", &C::threads, "threads over realizations (0 = all cores); results do not depend on it"}};
   return table;
