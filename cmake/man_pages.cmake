@@ -11,6 +11,7 @@ set(GRANULAR_MAN_SUMMARY_restitution "coefficient of restitution of a two-bead c
 set(GRANULAR_MAN_SUMMARY_breathers "breathers of a granular chain: periodic orbits by shooting, continuation, Floquet stability")
 set(GRANULAR_MAN_SUMMARY_crystal "modes of a 2D granular crystal: every mode or those nearest a frequency, vector IPR, <r>")
 set(GRANULAR_MAN_SUMMARY_crystal-ipr-map "IPR map of disordered 2D granular crystals: mean IPR and <r> against frequency and disorder")
+set(GRANULAR_MAN_SUMMARY_klein-gordon "spreading and weak chaos (m2, P, finite-time mLE) in the disordered Klein-Gordon chain")
 set(GRANULAR_MAN_SUMMARY_butterfly "Hofstadter butterfly and box-counting dimension of quasiperiodic granular chains")
 
 find_program(GRANULAR_HELP2MAN help2man)

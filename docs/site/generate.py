@@ -17,11 +17,11 @@ if not TOOLS:
 
 os.makedirs(os.path.join(pages, "tools"), exist_ok=True)
 index = ["# The command-line tools", "",
-         "Every tool takes `--help` and `--version`, works in SI units, reports frequencies in kHz and",
-         "writes `PREFIX.csv` with `PREFIX.json` beside it (every parameter, the seed, the version, the",
-         "command line). Bad input: a one-line message naming the option, exit code 2, no file written;",
-         "an unwritable folder: 1; a numerical failure: 3. After `cmake --install`, `man TOOL` shows the",
-         "page below.", "", "| tool | what it computes |", "|---|---|"]
+         "Every tool takes `--help` and `--version`, works in SI units, reports frequencies in kHz",
+         "(`klein-gordon`: the DKG chain's dimensionless units) and writes `PREFIX.csv` with",
+         "`PREFIX.json` beside it (every parameter, the seed, the version, the command line). Bad input:",
+         "a one-line message naming the option, exit code 2, no file written; an unwritable folder: 1; a",
+         "numerical failure: 3. After `cmake --install`, `man TOOL` shows the page below.", "", "| tool | what it computes |", "|---|---|"]
 toc = []
 for tool, summary in TOOLS.items():
     exe = os.path.join(build, tool)

@@ -110,6 +110,7 @@ if _core is not None:
     )
     from ._breathers import Breathers, breathers  # noqa: F401
     from ._crystal import Crystal, CrystalIprMap, crystal, crystal_ipr_map  # noqa: F401
+    from ._klein_gordon import KleinGordon, klein_gordon  # noqa: F401
     from ._results import ExponentTable, SpreadingRun, Transport  # noqa: F401
 
     __version__ = _core.__version__

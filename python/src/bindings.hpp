@@ -91,6 +91,7 @@ void bind_dynamics(py::module_& m);
 void bind_observers(py::module_& m);
 void bind_breathers(py::module_& m);
 void bind_crystal(py::module_& m);
+void bind_klein_gordon(py::module_& m);
 
 // --- a chain as Python holds it ------------------------------------------------------------
 /// A chain with what made it: the bead types (when it has them) and the description the tools

@@ -19,4 +19,5 @@ PYBIND11_MODULE(_core, m) {
   bind_observers(m);
   bind_breathers(m);
   bind_crystal(m);
+  bind_klein_gordon(m);
 }

@@ -89,6 +89,9 @@ const std::vector<Tool>& tools() {
         "--window-threshold",
         "--reference-max-step",
         "--max-energy-error"}},
+      {"klein-gordon",
+       {{"--N", "32"}, {"--T", "10"}, {"--samples", "4"}},
+       {"--N", "--W", "--seed", "--energy", "--block", "--dt", "--T", "--samples", "--realizations", "--threads"}},
       {"localization",
        {{"--N", "1000"}, {"--f", "1:5"}},
        {"--xi", "--q", "--N", "--F0", "--R1", "--seed", "--realization", "--segments", "--threads"}},
@@ -192,7 +195,9 @@ TEST_P(InputRejection, ExitCodeOneLineNoOutput) {
 }
 
 INSTANTIATE_TEST_SUITE_P(AllTools, InputRejection, ::testing::ValuesIn(matrix()), [](const auto& info) {
-  return std::string(info.param.tool == "ipr-map" ? "ipr_map" : info.param.tool) + "_" + std::to_string(info.index);
+  std::string name = info.param.tool;  // a test name takes no '-' (ipr-map, klein-gordon)
+  std::replace(name.begin(), name.end(), '-', '_');
+  return name + "_" + std::to_string(info.index);
 });
 
 TEST(InputRejectionMatrix, Size) {

@@ -29,6 +29,7 @@ const ToolCase tool_cases[] = {
     {"restitution", "--impact-speed 0.01 --kk-gamma 1e-6"},
     {"crystal", "--lattice hexagonal --Lx 4 --Ly 4 --vectors"},
     {"spreading", "--N 51 --T 1e-4 --samples 5"},
+    {"klein-gordon", "--N 32 --T 10 --samples 4 --realizations 2 --threads 1"},
     {"exponents",
      "--chains A --F0 10 --ic displacement --N 51 --T 2e-4 --fit 1e-4:2e-4 --t-star 1e-4 --realizations 2 "
      "--bootstrap 5 --profile-F0 none --threads 1"},

@@ -17,9 +17,8 @@
 #include "granular/number_format.hpp"
 
 namespace granular {
-namespace {
 
-void check_kg_run_config(const KleinGordonRunConfig& c) {
+void validate(const KleinGordonRunConfig& c) {
   validate(c.chain);
   if (!(c.energy > 0) || !std::isfinite(c.energy))
     throw InvalidInput("energy", " " + format_number(c.energy) + ": must be finite and > 0");
@@ -32,10 +31,8 @@ void check_kg_run_config(const KleinGordonRunConfig& c) {
     throw InvalidInput("sample_steps", ": must be sorted");
 }
 
-}  // namespace
-
 KleinGordonRun run_klein_gordon(const KleinGordonRunConfig& config, std::uint64_t realization) {
-  check_kg_run_config(config);
+  validate(config);
   KleinGordonParameters p = config.chain;
   p.realization = realization;
   const Chain chain = klein_gordon(p);
@@ -71,7 +68,7 @@ KleinGordonRun run_klein_gordon(const KleinGordonRunConfig& config, std::uint64_
 }
 
 KleinGordonEnsemble klein_gordon_ensemble(const KleinGordonRunConfig& config, std::size_t count, int threads) {
-  check_kg_run_config(config);
+  validate(config);
   if (count < 1) throw InvalidInput("realizations", ": at least 1");
   KleinGordonEnsemble out;
   out.runs.resize(count);

@@ -35,6 +35,10 @@ struct KleinGordonRunConfig {
   bool mle = true;                          ///< also the finite-time mLE Λ(t)
 };
 
+/// Throws InvalidInput naming `N`, `W`, `energy`, `block`, `time_step` or `sample_steps` unless
+/// `config` is one run_klein_gordon takes.
+void validate(const KleinGordonRunConfig& config);
+
 /// One realization's curves at the sample times.
 struct KleinGordonRun {
   std::vector<double> time;           ///< [1/ω₀]
@@ -44,8 +48,7 @@ struct KleinGordonRun {
   double max_energy_error = 0;        ///< max over samples of |H − H(0)| / H(0)
 };
 
-/// Realization `realization` of `config`. Throws InvalidInput naming `N`, `W`, `energy`,
-/// `block`, `time_step` or `sample_steps`.
+/// Realization `realization` of `config`. Throws as validate.
 KleinGordonRun run_klein_gordon(const KleinGordonRunConfig& config, std::uint64_t realization);
 
 /// Realizations 0 … count − 1 and their means (index order; bit-identical for any `threads`,

@@ -12,6 +12,8 @@ namespace granular {
 
 void validate(const KleinGordonParameters& p) {
   if (p.N < 2) throw InvalidInput("N", " " + std::to_string(p.N) + ": a chain needs at least 2 sites");
+  if (p.N > 100000000)  // the granular chains' limit (named_chains.cpp)
+    throw InvalidInput("N", " " + std::to_string(p.N) + ": more than 1e8 sites");
   if (!(p.W > 0) || !std::isfinite(p.W))
     throw InvalidInput("W", " " + format_number(p.W) + ": the disorder strength must be finite and > 0");
 }

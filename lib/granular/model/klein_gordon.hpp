@@ -23,7 +23,7 @@
 namespace granular {
 
 struct KleinGordonParameters {
-  std::size_t N = 1000;           ///< sites, ≥ 2
+  std::size_t N = 1000;           ///< sites, 2 … 10⁸
   double W = 4;                   ///< disorder strength W > 0, finite: bonds of stiffness 1/W
   std::uint64_t seed = 1;         ///< random seed
   std::uint64_t realization = 0;  ///< which realization of the seed

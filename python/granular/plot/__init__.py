@@ -29,6 +29,8 @@ look, _io the reading of results and files:
     cost(benchmark_json)                       integrators' cost-accuracy curves
   breathers: time-periodic localized orbits
     breather_branch(result_or_csv, point)      energy vs f_b, stability, linear modes, profiles, multipliers
+  klein_gordon: the disordered Klein-Gordon chain
+    klein_gordon(result_or_csv)                m2(t), P(t) and the finite-time mLE Lambda(t), log-log, with guide slopes
   crystals: two-dimensional crystals
     crystal(result_or_csv, mode)               IPR against f, <r>; one mode's displacements as arrows on the packing
     crystal_ipr_map(result)                    mean IPR and <r> against f, one curve per disorder width
@@ -45,12 +47,13 @@ look, _io the reading of results and files:
 from .breathers import breather_branch
 from .crystals import crystal, crystal_ipr_map
 from .disorder import correlations, localization
+from .klein_gordon import klein_gordon
 from .dynamics import cost, energy_map, forces, lyapunov, mode_kicks, spectral_densities, spreading
 from .modes import ipr_averaging, ipr_map, partial_spectrum_ipr, spectrum
 from .quasiperiodic import butterfly, dynamical_butterfly
 from .transport_exponents import centres, exponents, paper_comparison, profiles, study_comparison
 
-__all__ = ["breather_branch", "crystal", "crystal_ipr_map", "ipr_map", "spectrum", "partial_spectrum_ipr", "ipr_averaging", "correlations", "localization", "energy_map",
+__all__ = ["breather_branch", "crystal", "crystal_ipr_map", "klein_gordon", "ipr_map", "spectrum", "partial_spectrum_ipr", "ipr_averaging", "correlations", "localization", "energy_map",
            "forces", "spreading", "lyapunov", "mode_kicks", "spectral_densities", "cost", "exponents", "centres",
            "paper_comparison", "profiles", "study_comparison", "butterfly",
            "dynamical_butterfly"]

@@ -122,6 +122,9 @@ def parser(prog=None):
     q = kind("crystal-ipr-map", "the 2D IPR map: mean IPR and <r> against frequency per disorder width, from a "
                                 "crystal-ipr-map CSV")
     q.add_argument("csv", nargs="?", default="crystal-ipr-map.csv")
+    q = kind("klein-gordon", "m2(t), P(t) and the finite-time mLE Lambda(t) of the disordered Klein-Gordon chain, "
+                             "log-log, from a klein-gordon CSV")
+    q.add_argument("csv", nargs="?", default="klein-gordon.csv")
     q = kind("cost", "integrators' cost-accuracy curves, from dynamics_benchmark --benchmark_out JSON")
     q.add_argument("bench")
     return p
@@ -209,6 +212,8 @@ def main(argv=None, prog=None):
             save(plot.crystal(args.csv, args.mode), args.output or _default_output(args.csv))
         elif args.kind == "crystal-ipr-map":
             save(plot.crystal_ipr_map(args.csv), args.output or _default_output(args.csv))
+        elif args.kind == "klein-gordon":
+            save(plot.klein_gordon(args.csv), args.output or _default_output(args.csv))
         elif args.kind == "cost":
             save(plot.cost(args.bench), args.output or _default_output(args.bench))
     except (OSError, ValueError, KeyError, IndexError) as error:  # a missing or wrong file: one line, exit code 2

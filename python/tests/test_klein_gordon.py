@@ -1,0 +1,91 @@
+"""granular.klein_gordon: its keywords are the library's klein_gordon_parameters() rows with KleinGordonCase's C++
+defaults, it returns what the klein-gordon tool writes, and granular.plot draws it from either."""
+import inspect
+import os
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+import granular as gr
+from granular import _core
+
+from conftest import assert_identical
+
+
+def test_signature_is_the_table_with_its_cpp_defaults():
+    rows = _core.KleinGordonCase._parameters
+    defaults = _core.KleinGordonCase()
+    signature = inspect.signature(gr.klein_gordon).parameters
+    assert [keyword for _, keyword, _ in rows] == list(signature)
+    assert {"N", "W", "seed", "energy", "block", "dt", "T", "samples", "mle", "realizations", "threads"} == set(signature)
+    for name, keyword, help_text in rows:
+        assert signature[keyword].default == getattr(defaults, name), keyword
+        assert signature[keyword].kind == inspect.Parameter.KEYWORD_ONLY
+        assert help_text.split(" (")[0][:30] in gr.klein_gordon.__doc__, keyword
+    assert signature["dt"].default == 0.2 and signature["W"].default == 4.0
+
+
+def test_the_tool_writes_the_same_run(tools):
+    args = dict(N=96, W=3.0, seed=2, energy=0.4, T=300.0, samples=20)
+    csv, meta = tools.run("klein-gordon", *[f"--{k}={v}" for k, v in args.items()], "--quiet")
+    r = gr.klein_gordon(**args)
+    for column, key in (("t", "t"), ("m2", "m2"), ("P", "P"), ("mle", "mle"), ("mean_log10_mle", "mean_log10_mle")):
+        assert_identical(csv[column], r[key])
+    assert meta["parameters"] == r.metadata["parameters"]
+    assert meta["max_energy_error"] == r.max_energy_error < 1e-4
+    assert r.runs_m2.shape == (1, len(r.t))
+    assert_identical(r.runs_m2[0], r.m2)
+
+
+def test_an_ensemble_is_its_realizations_means_on_any_thread_count(tools):
+    args = dict(N=64, block=21, energy=0.1, seed=7, T=200.0, samples=10, realizations=3)
+    one = gr.klein_gordon(threads=1, **args)
+    two = gr.klein_gordon(threads=2, **args)
+    for key in ("t", "m2", "P", "mle", "mean_log10_mle", "runs_m2", "runs_mle"):
+        assert_identical(one[key], two[key])
+    assert one.runs_P.shape == (3, len(one.t))
+    # the means in index order, as the library sums them
+    expected = one.runs_m2[0] / 3 + one.runs_m2[1] / 3 + one.runs_m2[2] / 3
+    np.testing.assert_allclose(one.m2, expected, rtol=1e-15)
+    csv, _ = tools.run("klein-gordon", "--N", 64, "--block", 21, "--energy", 0.1, "--seed", 7, "--T", 200,
+                       "--samples", 10, "--realizations", 3, "--threads", 2, "--quiet")
+    assert_identical(csv["m2"], one.m2)
+    assert_identical(csv["mean_log10_mle"], one.mean_log10_mle)
+
+
+def test_without_mle_there_is_no_lambda():
+    r = gr.klein_gordon(N=32, T=20.0, samples=4, mle=False)
+    assert r.mle is None and r.mean_log10_mle is None and r.runs_mle is None
+    assert len(r.m2) == 4
+
+
+@pytest.mark.parametrize("keywords, name", [
+    ({"N": 1}, "N"), ({"W": 0.0}, "W"), ({"energy": -1.0}, "energy"), ({"N": 10, "block": 11}, "block"),
+    ({"dt": 0.0}, "dt"), ({"T": 0.01}, "T"), ({"samples": 0}, "samples"), ({"realizations": 0}, "realizations"),
+    ({"threads": -1}, "threads"), ({"N": 2.5}, "N"),
+])
+def test_bad_keywords_are_value_errors_naming_them(keywords, name):
+    with pytest.raises(ValueError, match=name):
+        gr.klein_gordon(**keywords)
+
+
+def test_an_unknown_keyword_is_a_type_error():
+    with pytest.raises(TypeError, match="tau"):
+        gr.klein_gordon(tau=0.1)
+
+
+def test_figure_from_a_result_and_from_the_tools_csv(tools):
+    r = gr.klein_gordon(N=64, T=100.0, samples=15, realizations=2, threads=1)
+    fig = gr.plot.klein_gordon(r)
+    assert len(fig.axes) == 3
+    assert all(ax.get_xscale() == "log" and ax.get_yscale() == "log" for ax in fig.axes)
+    assert "langle" in fig.axes[2].get_ylabel()  # 10^<log10 Lambda> of an ensemble
+    tools.run("klein-gordon", "--N", 64, "--T", 100, "--samples", 15, "--mle=false", "--quiet", output="kg.csv")
+    assert len(gr.plot.klein_gordon(tools.path("kg.csv")).axes) == 2  # no Lambda: m2 and P
+    env = dict(os.environ, PYTHONPATH=os.path.dirname(os.path.dirname(os.path.abspath(gr.__file__))))
+    done = subprocess.run([sys.executable, "-m", "granular.plot", "klein-gordon", "kg.csv"], capture_output=True,
+                          text=True, cwd=tools.folder, env=env)
+    assert done.returncode == 0, done.stderr
+    assert (tools.folder / "kg.png").stat().st_size > 0

@@ -1,0 +1,160 @@
+// The `klein-gordon` tool's contract: its options are klein_gordon_parameters()'s rows, its CSV is
+// the library's run (one realization) or ensemble means printed at full precision, the same on
+// one thread and on two, its JSON parses back to the case and replays it (--case), and bad input
+// is one line naming the option with exit code 2 and nothing written.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "granular/dynamics/klein_gordon_case.hpp"
+#include "granular/dynamics/klein_gordon_run.hpp"
+#include "granular/parameter_json.hpp"
+#include "tool_runner.hpp"
+
+namespace granular::testing {
+namespace {
+
+/// The columns of a klein-gordon CSV by header name, each cell read back exactly (shortest round trip).
+std::map<std::string, std::vector<double>> kg_columns(const std::string& path) {
+  std::ifstream in(path);
+  std::string line, cell;
+  std::getline(in, line);
+  std::vector<std::string> names;
+  for (std::istringstream header(line); std::getline(header, cell, ',');) names.push_back(cell);
+  std::map<std::string, std::vector<double>> columns;
+  while (std::getline(in, line)) {
+    std::istringstream cells(line);
+    for (const std::string& name : names) {
+      std::getline(cells, cell, ',');
+      columns[name].push_back(std::strtod(cell.c_str(), nullptr));
+    }
+  }
+  return columns;
+}
+
+/// Equal bit for bit, NaN (log10 of Λ ≤ 0) equal to NaN.
+void expect_same(const std::vector<double>& a, const std::vector<double>& b, const std::string& what) {
+  ASSERT_EQ(a.size(), b.size()) << what;
+  for (std::size_t k = 0; k < a.size(); ++k)
+    if (!(std::isnan(a[k]) && std::isnan(b[k]))) {
+      EXPECT_EQ(a[k], b[k]) << what << " at sample " << k;
+    }
+}
+
+KleinGordonCase kg_tool_case(const std::string& dir, const std::string& prefix) {
+  const auto meta = nlohmann::json::parse(read_file(dir + "/" + prefix + ".json"));
+  return parse_rows(meta.at("parameters"), klein_gordon_parameters());
+}
+
+TEST(KleinGordonTool, HelpListsEveryRowOfTheTable) {
+  const std::string dir = scratch_folder("kg-help");
+  ASSERT_EQ(std::system(("'" + tool_path("klein-gordon") + "' --help > " + dir + "/help.txt").c_str()), 0);
+  const std::string help = read_file(dir + "/help.txt");
+  for (const auto& p : klein_gordon_parameters()) {
+    std::string flag = "--" + front_end_word(p.name);
+    std::replace(flag.begin(), flag.end(), '_', '-');
+    EXPECT_NE(help.find(flag + " "), std::string::npos) << p.name;
+  }
+  std::filesystem::remove_all(dir);
+}
+
+TEST(KleinGordonTool, SingleSiteRunIsTheLibrarysRunAndItsJsonParsesBack) {
+  const std::string dir = scratch_folder("kg-single");
+  const ToolResult r =
+      run_tool("klein-gordon",
+               "--N 128 --W 3 --seed 5 --energy 0.4 --T 500 --samples 12 --quiet --output " + dir + "/a");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const KleinGordonCase c = kg_tool_case(dir, "a");
+  EXPECT_EQ(c.run.chain.N, 128U);
+  EXPECT_EQ(c.run.chain.W, 3.0);
+  EXPECT_EQ(c.run.chain.seed, 5U);
+  EXPECT_EQ(c.duration, 500.0);
+  EXPECT_EQ(c.samples, 12);
+  const KleinGordonRun run = run_klein_gordon(run_config(c), 0);
+  auto csv = kg_columns(dir + "/a.csv");
+  expect_same(csv["t"], run.time, "t");
+  expect_same(csv["m2"], run.m2, "m2");
+  expect_same(csv["P"], run.participation, "P");
+  expect_same(csv["mle"], run.mle, "mle");
+  const auto meta = nlohmann::json::parse(read_file(dir + "/a.json"));
+  EXPECT_EQ(meta.at("max_energy_error").get<double>(), run.max_energy_error);
+  EXPECT_LT(run.max_energy_error, 1e-4);
+  EXPECT_EQ(meta.at("samples").at("count").get<std::size_t>(), run.time.size());
+  std::filesystem::remove_all(dir);
+}
+
+TEST(KleinGordonTool, EnsembleIsTheLibrarysOnOneAndTwoThreadsAndReplays) {
+  const std::string dir = scratch_folder("kg-ensemble");
+  const std::string args = "--N 64 --block 21 --energy 0.1 --seed 7 --T 400 --samples 15 --realizations 4 --quiet";
+  ASSERT_EQ(run_tool("klein-gordon", args + " --threads 1 --output " + dir + "/one").exit_code, 0);
+  ASSERT_EQ(run_tool("klein-gordon", args + " --threads 2 --output " + dir + "/two").exit_code, 0);
+  const std::string one = read_file(dir + "/one.csv");
+  EXPECT_EQ(one, read_file(dir + "/two.csv"));  // byte for byte
+  const KleinGordonCase c = kg_tool_case(dir, "one");
+  const KleinGordonEnsemble e = klein_gordon_ensemble(run_config(c), c.realizations, 1);
+  auto csv = kg_columns(dir + "/one.csv");
+  expect_same(csv["t"], e.time, "t");
+  expect_same(csv["m2"], e.m2, "m2");
+  expect_same(csv["P"], e.participation, "P");
+  expect_same(csv["mle"], e.mle, "mle");
+  expect_same(csv["mean_log10_mle"], e.mean_log10_mle, "mean_log10_mle");
+  // The run's JSON replays it.
+  const ToolResult replay = run_tool("klein-gordon", "--case " + dir + "/one.json --quiet --output " + dir + "/again");
+  ASSERT_EQ(replay.exit_code, 0) << replay.err;
+  EXPECT_EQ(read_file(dir + "/again.csv"), one);
+  std::filesystem::remove_all(dir);
+}
+
+TEST(KleinGordonTool, WithoutMleThereAreNoLambdaColumns) {
+  const std::string dir = scratch_folder("kg-nomle");
+  ASSERT_EQ(run_tool("klein-gordon", "--N 32 --T 20 --samples 4 --mle=false --quiet --output " + dir + "/a").exit_code,
+            0);
+  const std::string csv = read_file(dir + "/a.csv");
+  EXPECT_EQ(csv.substr(0, csv.find('\n')), "t,m2,P");
+  std::filesystem::remove_all(dir);
+}
+
+TEST(KleinGordonTool, BadInputIsOneLineNamingTheOptionAndWritesNothing) {
+  const std::string dir = scratch_folder("kg-bad");
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"--N 1", "--N"},
+      {"--N -5", "--N"},
+      {"--W 0", "--W"},
+      {"--W nan", "--W"},
+      {"--energy 0", "--energy"},
+      {"--N 64 --block 65", "--block"},
+      {"--dt 0", "--dt"},
+      {"--dt inf", "--dt"},
+      {"--T 0.1", "--T"},  // below one step
+      {"--T 1e14", "--T"},
+      {"--samples 0", "--samples"},
+      {"--realizations 0", "--realizations"},
+      {"--realizations 1e20", "--realizations"},
+      {"--N 1e9", "--N"},
+      {"--threads -1", "--threads"},
+      {"--bogus 3", "bogus"},
+      {"--case " + dir + "/none.json", "--case"},
+      {"--case " + dir + "/none.json --N 10", "--case"},  // the file's case or the flags, not both
+  };
+  for (const auto& [args, names] : cases) {
+    const ToolResult r = run_tool("klein-gordon", args + " --output " + dir + "/out");
+    EXPECT_EQ(r.exit_code, 2) << args << ": " << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << args << ": " << r.err;
+    EXPECT_NE(r.err.find(names), std::string::npos) << args << ": " << r.err;
+    EXPECT_FALSE(std::filesystem::exists(dir + "/out.csv")) << args;
+    EXPECT_FALSE(std::filesystem::exists(dir + "/out.json")) << args;
+  }
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace granular::testing

@@ -1,0 +1,79 @@
+// klein-gordon: energy spreading and weak chaos in the disordered Klein–Gordon chain (docs/chaos.md,
+// "The DKG chain from the shell and Python"): one site of energy E or a block of L sites at energy
+// density h, SABA2C, and at log-spaced times the second moment m2, the participation number P and
+// the finite-time maximal Lyapunov exponent Λ, of one realization or the means of an ensemble.
+#include <cstdio>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "common/outputs.hpp"
+#include "common/tool_main.hpp"
+#include "granular/dynamics/klein_gordon_study.hpp"
+#include "granular/files/klein_gordon_files.hpp"
+#include "granular/io/atomic_file.hpp"
+#include "granular/io/output_paths.hpp"
+#include "granular/parameter_json.hpp"
+
+namespace {
+
+/// The case a run's PREFIX.json describes (its "parameters"), `threads` kept from the command line.
+granular::KleinGordonCase case_from_file(const std::string& path, int threads) {
+  std::ifstream in(path);
+  if (!in) throw granular::InvalidInput("--case", " " + path + ": cannot be read");
+  const nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
+  if (j.is_discarded() || !j.is_object() || !j.contains("parameters") || !j.at("parameters").is_object())
+    throw granular::InvalidInput("--case", " " + path + ": not the JSON of a klein-gordon run (no \"parameters\")");
+  granular::KleinGordonCase c = granular::parse_rows(j.at("parameters"), granular::klein_gordon_parameters());
+  c.threads = threads;
+  return c;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  using namespace granular;
+  CLI::App app{
+      "Spreading and weak chaos in the disordered Klein-Gordon chain (docs/physics.md),\n"
+      "  H = sum p^2/2 + e_l x^2/2 + x^4/4 + (x_{l+1} - x_l)^2/(2W), e_l uniform in [1/2, 3/2],\n"
+      "in its dimensionless units (time 1/omega0, energy in units of H): one central site of energy E\n"
+      "(--block 0) or L central sites at energy density h, integrated by SABA2C up to --T.\n"
+      "Writes PREFIX.csv (t,m2,P and, unless --mle=false, mle,mean_log10_mle: one realization's curves or the\n"
+      "means of --realizations) and PREFIX.json (every parameter, the sample rule, the energy error).",
+      "klein-gordon"};
+  tool::describe_common(app);
+  KleinGordonCase c;
+  std::string output = "klein-gordon", case_file;
+  bool quiet = false;
+  const auto options = tool::add_parameters(app, c, klein_gordon_parameters());
+  tool::add_output_option(app, output);
+  auto* file = app.add_option("--case", case_file,
+                              "a klein-gordon run's PREFIX.json: its parameters instead of the flags (--threads "
+                              "still chooses the threads)");
+  for (const auto& [name, option] : options)
+    if (name != "threads") option->excludes(file);
+  app.add_flag("--quiet", quiet, "no summary on stderr");
+
+  return tool::run(app, argc, argv, [&] {
+    tool::Metadata meta("klein-gordon", argc, argv);
+    if (!case_file.empty()) c = case_from_file(case_file, c.threads);
+    validate(c);
+    const TableOutputs paths{output + ".csv", output + ".json"};
+    const auto claim = tool::claim_output(output, meta.command());
+    check_writable(paths.csv);
+    check_writable(paths.json);
+    const KleinGordonResult r = klein_gordon_study(c);
+    if (!quiet) {
+      const KleinGordonEnsemble& e = r.ensemble;
+      std::fprintf(stderr, "klein-gordon: %zu realization(s), t = %.4g: m2 = %.4g, P = %.4g", e.runs.size(),
+                   e.time.back(), e.m2.back(), e.participation.back());
+      if (!e.mle.empty()) std::fprintf(stderr, ", Lambda = %.4g", e.mle.back());
+      std::fprintf(stderr, "; max energy error %.2e\n", r.max_energy_error);
+    }
+    AtomicFile csv(paths.csv);
+    write_klein_gordon_csv(csv.stream(), r);
+    meta.merge(describe(c, r));
+    meta["output"] = paths.csv;
+    meta.write(paths.json, {&csv});
+  });
+}
