@@ -28,6 +28,7 @@ const ToolCase tool_cases[] = {
     {"localization", "--N 100 --f 1,2 --segments 2 --threads 1"},
     {"restitution", "--impact-speed 0.01 --kk-gamma 1e-6"},
     {"crystal", "--lattice hexagonal --Lx 4 --Ly 4 --vectors"},
+    {"crystal-ipr-map", "--Lx 4 --Ly 4 --widths 0,0.5 --realizations 2 --threads 1"},
     {"spreading", "--N 51 --T 1e-4 --samples 5"},
     {"klein-gordon", "--N 32 --T 10 --samples 4 --realizations 2 --threads 1"},
     {"exponents",
