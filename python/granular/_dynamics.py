@@ -19,7 +19,7 @@ _CASE = _core.TransportCase()
 _OWN = ("beta", "site", "time_step", "fit", "fit_begin", "fit_end")
 _OUTPUT_ROWS = tuple(_core._spreading_output_parameters)  # one run's force series, energy map and g(nu)
 # One realization's tangent-space outputs: an ensemble writes no deviation vector and averages no spectrum.
-_ONE_RUN_ROWS = ("deviation_samples", "lyapunov_vectors")
+_ONE_RUN_ROWS = ("deviation_samples", "lyapunov_vectors", "covariant_vectors", "covariant_transient")
 _RUN = TableKeywords(_CASE, skip=_OWN + _OUTPUT_ROWS + _ONE_RUN_ROWS)
 _ONE_RUN = TableKeywords(_CASE, skip=_OWN + _OUTPUT_ROWS)  # granular.spreading: with both
 _OUTPUTS = TableKeywords(_CASE, only=_OUTPUT_ROWS, skip=("forces_at",))  # forces_at: a list of beads here

@@ -409,11 +409,13 @@ def _keywords(table, skip=()):
 @pytest.mark.parametrize("function, tables", [
     (gr.spreading, [(gr._core.TransportCase, ("fit_begin", "fit_end")), (gr._core.ModeKick, ())]),
     (gr.transport, [(gr._core.TransportCase, ("fit_begin", "fit_end", "deviation_samples", "lyapunov_vectors",
+                                              "covariant_vectors", "covariant_transient",
                                               *gr._core._spreading_output_parameters)),
                     # an ensemble draws its chains: no files, no one realization; s1's N/m stiffness: none
                     (gr._core.ChainChoices, ("config", "radii", "realization", "k0_n_per_m")), (gr._core.ModeKick, ()),
                     (gr._core._RunOptions, ())]),
     (gr.exponent_table, [(gr._core.TransportCase, ("fit_begin", "fit_end", "deviation_samples", "lyapunov_vectors",
+                                                   "covariant_vectors", "covariant_transient",
                                                    *gr._core._spreading_output_parameters)),
                          (gr._core.ExponentChoices, ()),
                          (gr._core.ModeKick, ()), (gr._core._RunOptions, ())]),
@@ -438,7 +440,8 @@ def test_the_run_keywords_and_their_defaults_are_the_library_table(function):
     taken = inspect.signature(function).parameters
     # site None: the centre; fit: a pair; forces_at None or a list of beads
     python_forms = {"site": None, "fit_begin": None, "fit_end": None, "forces_at": None}
-    one_run = ("deviation_samples", "lyapunov_vectors", *gr._core._spreading_output_parameters)
+    one_run = ("deviation_samples", "lyapunov_vectors", "covariant_vectors", "covariant_transient",
+               *gr._core._spreading_output_parameters)
     for name, word, _ in gr._core.TransportCase._parameters:
         if not hasattr(case, name) or name in python_forms:
             continue
