@@ -48,10 +48,11 @@ int main(int argc, char** argv) {
                      c.profile_realizations = more.profile ? c.realizations : 0;
                      const SpreadingRunConfig& d = c.dynamics;
                      tool::ask_outputs(more, options.run, c);
-                     if (!more.energy_map_file.empty()) load_hdf5_writer();  // before the run, not after it
+                     if (!more.energy_map_file.empty() || d.covariant_vectors > 0)
+                       load_hdf5_writer();  // before the run, not after it
                      const nlohmann::json step_rule = tool::validate_and_settle(c);
                      SpreadingPaths paths = spreading_paths(output, ensemble, more.profile, !d.forces.sites.empty(),
-                                                            d.lyapunov_vectors > 0);
+                                                            d.lyapunov_vectors > 0, d.covariant_vectors > 0);
                      paths.final_state = more.final_state, paths.energy_map = more.energy_map_file,
                      paths.spectrum = more.spectrum_file;
                      paths.deviation = options.deviation;
@@ -82,6 +83,8 @@ int main(int argc, char** argv) {
                      if (!more.spectrum_file.empty())
                        (meta["spectrum"] = describe_spectral_density(*d.spectrum))["file"] = more.spectrum_file;
                      if (!paths.lyapunov.empty()) meta["lyapunov_spectrum"] = describe_lyapunov(r, paths.lyapunov);
+                     if (!paths.covariant.empty())
+                       meta["covariant_vectors"] = describe_covariant(r, d, paths.covariant);
                      meta["parameters"] = describe_parameters(c, selected.description, kicked, ensemble);
                      meta["seed"] = c.chain.seed;
                      if (!resumed.is_null()) meta["resumed_checkpoint"] = resumed;

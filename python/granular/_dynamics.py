@@ -19,7 +19,7 @@ _CASE = _core.TransportCase()
 _OWN = ("beta", "site", "time_step", "fit", "fit_begin", "fit_end")
 _OUTPUT_ROWS = tuple(_core._spreading_output_parameters)  # one run's force series, energy map and g(nu)
 # One realization's tangent-space outputs: an ensemble writes no deviation vector and averages no spectrum.
-_ONE_RUN_ROWS = ("deviation_samples", "lyapunov_vectors")
+_ONE_RUN_ROWS = ("deviation_samples", "lyapunov_vectors", "covariant_vectors", "covariant_transient")
 _RUN = TableKeywords(_CASE, skip=_OWN + _OUTPUT_ROWS + _ONE_RUN_ROWS)
 _ONE_RUN = TableKeywords(_CASE, skip=_OWN + _OUTPUT_ROWS)  # granular.spreading: with both
 _OUTPUTS = TableKeywords(_CASE, only=_OUTPUT_ROWS, skip=("forces_at",))  # forces_at: a list of beads here
@@ -149,6 +149,17 @@ def _spreading_run(raw, N, case, sites):
         out["lyapunov"] = {"t": t, "exponents": np.asarray(s.exponents, dtype=float).reshape(len(t), k),
                            "gali": np.asarray(s.gali, dtype=float).reshape(len(t), k - 1),
                            "sali": np.asarray(s.sali, dtype=float) if k >= 2 else None}
+    out["covariant"] = None
+    if case.covariant_vectors > 0:  # the arrays of the tool's PREFIX-clv.h5, under its names
+        c, k = r.covariant, case.covariant_vectors
+        t = np.asarray(c.time, dtype=float)
+        out["covariant"] = {"t": t, "vectors": np.asarray(c.rows, dtype=float).reshape(len(t), k, 2 * N),
+                            "growth_rates": np.asarray(c.growth_rates, dtype=float),
+                            "exponents": np.asarray(c.exponents, dtype=float),
+                            "split_angles": np.asarray(c.split_angles, dtype=float).reshape(len(t), k - 1)
+                            if k >= 2 else None,
+                            "participation": np.asarray(c.participation, dtype=float).reshape(len(t), k),
+                            "centre": np.asarray(c.centre, dtype=float).reshape(len(t), k)}
     out["forces"] = None
     if sites:
         t = r.force_t
@@ -185,7 +196,11 @@ spreading.__doc__ = (
     "beads: the share of |w|^2 = |du|^2 + (t_unit dv)^2, t_unit = 1 us, on each bead, rows summing to 1; "
     "share.ravel() is the tool's --deviation column) or None), lyapunov (with lyapunov_vectors=k: t [s], exponents "
     "(times x k: lambda_1..lambda_k(t) [1/s]), gali (times x (k-1): GALI_2..GALI_k), sali (None for k = 1), the "
-    "tool's PREFIX-lyapunov.csv; else None), warnings, metadata. Releases the GIL.")
+    "tool's PREFIX-lyapunov.csv; else None), covariant (with covariant_vectors=k: t [s] (the samples from "
+    "covariant_transient to T), vectors (samples x k x 2N: du [dimensionless] then dv [1/s], unit norm in (du, "
+    "t_unit dv)), growth_rates and exponents (k) [1/s], split_angles (samples x (k-1)) [rad] or None for k = 1, "
+    "participation [beads] and centre [bead index, from 0] (samples x k), the tool's PREFIX-clv.h5; else None), "
+    "warnings, metadata. Releases the GIL.")
 
 
 def transport(*, realizations=100, ic="displacement", beta=_CASE.beta, site=None, dt=None,

@@ -87,7 +87,9 @@ class SpreadingRun(Result):
     (mle=True; else None); deviation: dict t [s], site (from 1), share (times x beads, the share of
     the deviation vector's norm^2 on each bead; deviation_samples) or None; lyapunov: dict t [s],
     exponents (times x k, lambda_1..lambda_k [1/s]), gali (times x (k-1), GALI_2..GALI_k), sali (None
-    for k = 1) of a Lyapunov spectrum on the same orbit (lyapunov_vectors=k) or None; warnings; reached_walls,
+    for k = 1) of a Lyapunov spectrum on the same orbit (lyapunov_vectors=k) or None; covariant: dict t [s],
+    vectors (samples x k x 2N), growth_rates, exponents [1/s], split_angles [rad], participation,
+    centre of k covariant Lyapunov vectors (covariant_vectors=k, as PREFIX-clv.h5) or None; warnings; reached_walls,
     wall_energy, steps, seconds; metadata (the spreading tool's JSON).
     """
 

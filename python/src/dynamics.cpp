@@ -66,6 +66,7 @@ py::dict spreading(const PyChain& chain, TransportCase c, const PyRun& options) 
   meta["run"] = describe_run(r, chain.description.value("realization", nlohmann::json(0)));
   if (d.spectrum) meta["spectrum"] = describe_spectral_density(*d.spectrum);
   if (d.lyapunov_vectors > 0) meta["lyapunov_spectrum"] = describe_lyapunov(r, "");
+  if (d.covariant_vectors > 0) meta["covariant_vectors"] = describe_covariant(r, d, "");
 
   std::vector<std::string> said = notes(c);
   for (const auto& w : warnings(r, d)) said.push_back(w);
@@ -239,17 +240,21 @@ void bind_dynamics(py::module_& m) {
   // What granular/_dynamics.py makes a SpreadingRun and a Transport of (copies of the arrays).
   readonly(py::class_<LyapunovSeries>(m, "_LyapunovSeries"), "time exponents gali sali", &LyapunovSeries::time,
            &LyapunovSeries::exponents, &LyapunovSeries::gali, &LyapunovSeries::sali);
+  using Clv = CovariantVectors;  // the vectors as PREFIX-clv.h5 holds them (covariant_rows)
+  readonly(py::class_<Clv>(m, "_CovariantVectors"), "time growth_rates exponents split_angles participation centre",
+           &Clv::time, &Clv::growth_rates, &Clv::exponents, &Clv::split_angles, &Clv::participation, &Clv::centre)
+      .def_property_readonly("rows", [](const Clv& c) { return to_py(covariant_rows(c)); });
   using Run = SpreadingResult;
   readonly(py::class_<Run>(m, "_SpreadingResult"),
-           "t m2 m2_centroid ipr energy_error dissipated mle deviation_t deviation lyapunov initial_energy "
+           "t m2 m2_centroid ipr energy_error dissipated mle deviation_t deviation lyapunov covariant initial_energy "
            "max_energy_error "
            "final_state final_energy final_force force_t forces map_t map_energy map_columns spectrum_khz spectrum "
            "wall_energy reached_walls energy_guard_time steps seconds",
            &Run::t, &Run::m2, &Run::m2_centroid, &Run::ipr, &Run::energy_error, &Run::dissipated, &Run::mle,
-           &Run::deviation_t, &Run::deviation, &Run::lyapunov, &Run::initial_energy, &Run::max_energy_error,
-           &Run::final_state, &Run::final_energy, &Run::final_force, &Run::force_t, &Run::forces, &Run::map_t,
-           &Run::map_energy, &Run::map_columns, &Run::spectrum_khz, &Run::spectrum, &Run::wall_energy,
-           &Run::reached_walls, &Run::energy_guard_time, &Run::steps, &Run::seconds);
+           &Run::deviation_t, &Run::deviation, &Run::lyapunov, &Run::covariant, &Run::initial_energy,
+           &Run::max_energy_error, &Run::final_state, &Run::final_energy, &Run::final_force, &Run::force_t,
+           &Run::forces, &Run::map_t, &Run::map_energy, &Run::map_columns, &Run::spectrum_khz, &Run::spectrum,
+           &Run::wall_energy, &Run::reached_walls, &Run::energy_guard_time, &Run::steps, &Run::seconds);
   readonly(py::class_<SeriesSummary>(m, "_SeriesSummary"), "mean standard_error", &SeriesSummary::mean,
            &SeriesSummary::standard_error);
   using Sum = TransportSummary;

@@ -328,6 +328,44 @@ def test_lyapunov_spectrum_equals_the_spreading_tool(tools):
     assert one["exponents"].shape == (len(run.t), 1) and one["gali"].shape == (len(run.t), 0) and one["sali"] is None
 
 
+def test_covariant_vectors_equal_the_spreading_tools_h5(tools):
+    """covariant_vectors=k (with mle=True) is --covariant-vectors k: run.covariant holds PREFIX-clv.h5's arrays under
+    its names, bit for bit; the run's own curves are those of a run without it."""
+    h5py = pytest.importorskip("h5py")
+    flags = ["--N", "8", "--F0", "0.01", "--ic", "velocity", "--beta", "0.05", "--mle", "--renormalize", "7",
+             "--T", "2e-4", "--dt", "1e-7", "--samples", "20", "--fit", "1e-4:2e-4", "--fit-step", "1e-5", "--quiet"]
+    _, meta = tools.run("spreading", *flags, "--covariant-vectors", "4", "--covariant-transient", "5e-5",
+                        output="clv")
+    keywords = dict(ic="velocity", beta=0.05, mle=True, renormalize=7, T=2e-4, dt=1e-7, samples=20,
+                    fit=(1e-4, 2e-4), fit_step=1e-5)
+    chain = gr.anderson(N=8, F0=0.01)
+    run = gr.spreading(chain, covariant_vectors=4, covariant_transient=5e-5, **keywords)
+    clv = run.covariant
+    with h5py.File(tools.path("clv-clv.h5"), "r") as f:
+        samples = len(f["t"])
+        assert clv["vectors"].shape == (samples, 4, 16)
+        assert_identical(clv["vectors"].reshape(-1, 16), np.array(f["vectors"]))
+        for name in ("t", "growth_rates", "exponents", "split_angles", "participation", "centre"):
+            assert_identical(clv[name], np.array(f[name]))
+        units = f.attrs["vectors_units"]
+        assert "t_unit = 1e-06 s" in (units.decode() if isinstance(units, bytes) else units)
+    assert clv["t"][0] >= 5e-5 and clv["t"][-1] == run.t[-1]
+    assert meta["covariant_vectors"]["file"].endswith("clv-clv.h5")
+    assert run.metadata["covariant_vectors"]["growth_rates_per_s"] == list(clv["growth_rates"])
+    plain = gr.spreading(chain, **keywords)
+    assert plain.covariant is None
+    for key in ("m2", "m2_centroid", "ipr", "energy_error", "mle"):
+        assert_identical(run[key], plain[key])
+    one = gr.spreading(chain, covariant_vectors=1, **keywords).covariant
+    assert one["vectors"].shape[1:] == (1, 16) and one["split_angles"] is None
+    with pytest.raises(ValueError, match="covariant_vectors: takes effect only with `?mle"):
+        gr.spreading(chain, covariant_vectors=2, T=2e-4, dt=1e-7, fit=(1e-4, 2e-4))
+    with pytest.raises(ValueError, match="covariant_vectors 17: between 1 and 2N = 16"):
+        gr.spreading(chain, covariant_vectors=17, **keywords)
+    for function in (gr.transport, gr.exponent_table):
+        assert "covariant_vectors" not in inspect.signature(function).parameters
+
+
 def test_lyapunov_vectors_are_refused_where_they_cannot_run():
     """Needs mle (the same tangent map and its rules); 1..2N; one realization (no ensemble keyword)."""
     c = gr.anderson(N=4)
@@ -409,11 +447,13 @@ def _keywords(table, skip=()):
 @pytest.mark.parametrize("function, tables", [
     (gr.spreading, [(gr._core.TransportCase, ("fit_begin", "fit_end")), (gr._core.ModeKick, ())]),
     (gr.transport, [(gr._core.TransportCase, ("fit_begin", "fit_end", "deviation_samples", "lyapunov_vectors",
+                                              "covariant_vectors", "covariant_transient",
                                               *gr._core._spreading_output_parameters)),
                     # an ensemble draws its chains: no files, no one realization; s1's N/m stiffness: none
                     (gr._core.ChainChoices, ("config", "radii", "realization", "k0_n_per_m")), (gr._core.ModeKick, ()),
                     (gr._core._RunOptions, ())]),
     (gr.exponent_table, [(gr._core.TransportCase, ("fit_begin", "fit_end", "deviation_samples", "lyapunov_vectors",
+                                                   "covariant_vectors", "covariant_transient",
                                                    *gr._core._spreading_output_parameters)),
                          (gr._core.ExponentChoices, ()),
                          (gr._core.ModeKick, ()), (gr._core._RunOptions, ())]),
@@ -438,7 +478,8 @@ def test_the_run_keywords_and_their_defaults_are_the_library_table(function):
     taken = inspect.signature(function).parameters
     # site None: the centre; fit: a pair; forces_at None or a list of beads
     python_forms = {"site": None, "fit_begin": None, "fit_end": None, "forces_at": None}
-    one_run = ("deviation_samples", "lyapunov_vectors", *gr._core._spreading_output_parameters)
+    one_run = ("deviation_samples", "lyapunov_vectors", "covariant_vectors", "covariant_transient",
+               *gr._core._spreading_output_parameters)
     for name, word, _ in gr._core.TransportCase._parameters:
         if not hasattr(case, name) or name in python_forms:
             continue

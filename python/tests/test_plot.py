@@ -16,7 +16,7 @@ import granular.plot as gp  # noqa: E402
 from conftest import BUILD, SOURCE  # noqa: E402
 
 DIMENSIONLESS = ("IPR", "P^{-1}", "rho", "L_d", "mode number", "bead", "g(", "log_{10}", "error", "distance", "size ratio", "exponent",
-                 "modes per bin", "P$^{-1}$", r"$\gamma$", r"$\eta$", r"$\mu$", "alignment index")
+                 "modes per bin", "P$^{-1}$", r"$\gamma$", r"$\eta$", r"$\mu$", "alignment index", "CLV index")
 
 
 def check_axes(fig):
@@ -163,6 +163,28 @@ def test_lyapunov_figure_from_a_run_and_from_the_tools_csv(tools):
     done = cli("-m", "granular.plot", "lyapunov", "spec-lyapunov.csv", cwd=tools.folder)
     assert done.returncode == 0, done.stderr
     assert (tools.folder / "spec-lyapunov.png").stat().st_size > 10000
+
+
+def test_covariant_figure_from_a_run_and_from_the_tools_h5(tools):
+    """The CLVs' localization map (CLV index x bead) beside participation against growth rate, from
+    granular.spreading(..., covariant_vectors=k) or the spreading tool's PREFIX-clv.h5, also as `python3 -m
+    granular.plot covariant`, which writes a PNG; a run without the CLVs is a ValueError saying how to get them."""
+    pytest.importorskip("h5py")
+    keywords = dict(ic="velocity", beta=0.05, mle=True, T=1e-3, fit=(2e-4, 1e-3))
+    chain = gr.anderson(N=8, F0=0.01)
+    fig = gp.covariant(gr.spreading(chain, covariant_vectors=16, **keywords))
+    check_axes(fig)
+    assert fig.axes[0].get_images()[0].get_array().shape == (16, 8)
+    with pytest.raises(ValueError, match="covariant_vectors"):
+        gp.covariant(gr.spreading(chain, **keywords))
+    tools.run("spreading", "--N", "8", "--F0", "0.01", "--ic", "velocity", "--beta", "0.05", "--T", "1e-3", "--fit",
+              "2e-4:1e-3", "--mle", "--covariant-vectors", "6", "--quiet", output="clv")
+    from_file = gp.covariant(tools.path("clv-clv.h5"), sample=0)
+    check_axes(from_file)
+    assert "N = 8" in from_file._suptitle.get_text(), from_file._suptitle.get_text()
+    done = cli("-m", "granular.plot", "covariant", "clv-clv.h5", cwd=tools.folder)
+    assert done.returncode == 0, done.stderr
+    assert (tools.folder / "clv-clv.png").stat().st_size > 10000
 
 
 def test_command_line_figures_from_the_tools_files(tools):

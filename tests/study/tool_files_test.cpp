@@ -18,12 +18,12 @@ std::string scratch(const std::string& name) { return testing::scratch_path("too
 
 TEST(SpreadingFiles, PathsUnderThePrefixAndTheUsersOwn) {
   SpreadingPaths one = spreading_paths("run", false, false, false);
-  EXPECT_EQ(one.all(), (std::vector<std::string>{"run.csv", "run.json", "", "", "", "", "", "", "", "", ""}));
-  SpreadingPaths all = spreading_paths("d/run", true, true, true, true);
+  EXPECT_EQ(one.all(), (std::vector<std::string>{"run.csv", "run.json", "", "", "", "", "", "", "", "", "", ""}));
+  SpreadingPaths all = spreading_paths("d/run", true, true, true, true, true);
   all.final_state = "final.csv";
   EXPECT_EQ(all.all(), (std::vector<std::string>{"d/run.csv", "d/run.json", "final.csv", "", "", "d/run-profile.csv",
                                                  "d/run-forces.csv", "d/run-sem.csv", "d/run.checkpoint", "",
-                                                 "d/run-lyapunov.csv"}));
+                                                 "d/run-lyapunov.csv", "d/run-clv.h5"}));
 }
 
 TEST(SpreadingFiles, WritesTheRunsFilesUncommittedUntilTold) {

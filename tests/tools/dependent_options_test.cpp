@@ -157,7 +157,9 @@ TEST(DependentOptions, RunOptionsAreRefusedWithoutTheChoiceTheyNeed) {
                {"energy_guard", {"warn", "--max-energy-error 0", ""}},
                {"renormalize", {"5", "", "--mle"}},
                {"deviation_samples", {"3", "--deviation dev.csv", "--mle --deviation dev.csv"}},
-               {"lyapunov_vectors", {"2", "", "--mle"}}},
+               {"lyapunov_vectors", {"2", "", "--mle"}},
+               {"covariant_vectors", {"2", "", "--mle"}},
+               {"covariant_transient", {"2e-5", "", "--mle --covariant-vectors 2"}}},
               {{"spreading", "exponents"}}, kick_run, kick_args);
   check_table(spreading_output_parameters(),
               {{"force_samples", {"50", "", "--forces-at 20"}},

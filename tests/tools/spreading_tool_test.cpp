@@ -3,16 +3,24 @@
 #include <sys/wait.h>
 #include <unistd.h>
 #include <algorithm>
+#include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <gtest/gtest.h>
+#include <hdf5.h>
 
 #include <nlohmann/json.hpp>
+#include "dynamics/dynamics_fixtures.hpp"
+#include "granular/chaos/covariant_vectors.hpp"
+#include "granular/dynamics/initial_conditions.hpp"
 #include "tool_runner.hpp"
 
 namespace {
@@ -93,6 +101,97 @@ TEST(SpreadingTool, WritesTheLyapunovSpectrumOnlyWhenAsked) {
   ASSERT_EQ(run_spreading(job + "--lyapunov-vectors 1 --output one", dir).code, 0);
   EXPECT_EQ(first_line(dir / "one-lyapunov.csv"), "t,lambda_1");
   fs::remove_all(dir);
+}
+
+// A dataset of an HDF5 file, whole (empty if absent).
+std::vector<double> dataset(const fs::path& file, const char* name) {
+  const hid_t f = H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  if (f < 0) return {};
+  std::vector<double> data;
+  if (H5Lexists(f, name, H5P_DEFAULT) > 0) {
+    const hid_t set = H5Dopen2(f, name, H5P_DEFAULT);
+    const hid_t space = H5Dget_space(set);
+    data.resize(static_cast<std::size_t>(H5Sget_simple_extent_npoints(space)));
+    if (H5Dread(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()) < 0) data.clear();
+    H5Sclose(space);
+    H5Dclose(set);
+  }
+  H5Fclose(f);
+  return data;
+}
+
+// --covariant-vectors k (with --mle): PREFIX-clv.h5 holds the CLVs of a direct covariant_vectors() call on
+// the same orbit, bit for bit; PREFIX.csv is the run's without it; the case JSON runs them again.
+TEST(SpreadingTool, WritesTheCovariantVectorsOnlyWhenAsked) {
+  const fs::path dir = fresh_dir("covariant");
+  const std::string job =
+      "--N 8 --F0 0.01 --ic velocity --beta 0.05 --site 3 --T 2e-4 --dt 1e-7 --samples 20 "
+      "--fit 1e-4:2e-4 --fit-step 1e-5 --mle --renormalize 7 --quiet ";
+  const ToolRun r = run_spreading(job + "--covariant-vectors 4 --covariant-transient 5e-5 --output out", dir);
+  ASSERT_EQ(r.code, 0) << r.err;
+  const fs::path h5 = dir / "out-clv.h5";
+  const std::vector<double> t = dataset(h5, "t"), vectors = dataset(h5, "vectors"), growth = dataset(h5, "growth_rates");
+
+  // The library's call: the tool's chain and kick (seed 1, bead 3), samples at the run's times from 50 µs on.
+  const granular::Chain chain = granular::fixtures::anderson(8, 0.01);
+  std::vector<std::uint64_t> steps;
+  for (double x : t) steps.push_back(static_cast<std::uint64_t>(std::llround(x / 1e-7)) - 500);
+  ASSERT_GE(steps.size(), 2u);
+  const granular::CovariantVectors direct = granular::covariant_vectors(
+      granular::make_force_law(granular::ForceLawKind::hertz, chain), chain, granular::saba2c(), 1e-7,
+      granular::velocity_kick(chain, 2, 0.05),
+      {.vectors = 4, .orthonormalize_every = 7, .forward_transient = 500, .backward_transient = 500}, steps);
+  EXPECT_EQ(t, direct.time);
+  EXPECT_EQ(growth, direct.growth_rates);
+  EXPECT_EQ(dataset(h5, "exponents"), direct.exponents);
+  ASSERT_EQ(vectors.size(), t.size() * 4 * 16);
+  for (std::size_t s = 0; s < t.size(); ++s)
+    for (std::size_t i = 0; i < 4; ++i)
+      for (std::size_t b = 0; b < 8; ++b) {
+        ASSERT_EQ(vectors[(s * 4 + i) * 16 + b], direct.vectors[s][i].u[b]) << s << " " << i << " " << b;
+        ASSERT_EQ(vectors[(s * 4 + i) * 16 + 8 + b], direct.vectors[s][i].v[b]) << s << " " << i << " " << b;
+      }
+  EXPECT_EQ(dataset(h5, "split_angles").size(), t.size() * 3);
+  EXPECT_EQ(dataset(h5, "participation").size(), t.size() * 4);
+  EXPECT_EQ(dataset(h5, "centre").size(), t.size() * 4);
+
+  std::ifstream json(dir / "out.json");
+  const auto meta = nlohmann::json::parse(json);
+  EXPECT_EQ(meta["covariant_vectors"]["file"], "out-clv.h5");
+  EXPECT_EQ(meta["covariant_vectors"]["vectors"], 4);
+  EXPECT_EQ(meta["covariant_vectors"]["forward_transient_steps"], 500);
+  EXPECT_EQ(meta["covariant_vectors"]["growth_rates_per_s"].get<std::vector<double>>(), growth);
+  EXPECT_GT(meta["covariant_vectors"]["stored_bytes"].get<double>(), 0);
+  EXPECT_EQ(meta["parameters"]["covariant_vectors"]["vectors"], 4);
+  ASSERT_EQ(run_spreading(job + "--output plain", dir).code, 0);
+  EXPECT_FALSE(fs::exists(dir / "plain-clv.h5"));
+  EXPECT_EQ(granular::testing::read_file((dir / "plain.csv").string()),
+            granular::testing::read_file((dir / "out.csv").string()));
+  // --case reads the CLVs' settings back: the same file's numbers.
+  const ToolRun again = run_spreading("--case out.json --quiet --output again", dir);
+  ASSERT_EQ(again.code, 0) << again.err;
+  EXPECT_EQ(dataset(dir / "again-clv.h5", "vectors"), vectors);
+  EXPECT_EQ(dataset(dir / "again-clv.h5", "growth_rates"), growth);
+  fs::remove_all(dir);
+}
+
+// What the CLVs cannot run with: exit 2, one line naming the option, before anything is written.
+TEST(SpreadingTool, RefusesCovariantVectorsThatCannotRun) {
+  const std::string job = "--N 8 --F0 0.01 --ic velocity --beta 0.05 --dt 1e-7 --samples 20 --quiet ";
+  for (const auto& [args, named] : std::initializer_list<std::pair<std::string, std::string>>{
+           {"--T 2e-4 --covariant-vectors 2", "--covariant-vectors: takes effect only with --mle"},
+           {"--T 2e-4 --mle --covariant-vectors 17", "--covariant-vectors 17: between 1 and 2N = 16"},
+           {"--T 2e-4 --mle --covariant-vectors 2 --realizations 2", "--covariant-vectors 2: one realization only"},
+           {"--T 2e-4 --mle --covariant-vectors 2 --covariant-transient 3e-4", "--covariant-transient"},
+           // 1e9 steps of 0.1 µs: ~1.6e11 bytes of R's, refused before the first step
+           {"--mle --covariant-vectors 16 --T 100", "--covariant-vectors 16: the stored factors and vectors need"}}) {
+    const fs::path dir = fresh_dir("covariant-refused");
+    const ToolRun r = run_spreading(job + args + " --output out", dir);
+    EXPECT_EQ(r.code, 2) << args << ": " << r.err;
+    EXPECT_NE(r.err.find(named), std::string::npos) << args << ": " << r.err;
+    EXPECT_TRUE(fs::is_empty(dir)) << args << " wrote an output";
+    fs::remove_all(dir);
+  }
 }
 
 // The velocity kick's JSON holds the β used (the paper's 8e-3 by default) and no α; the spectrum of

@@ -29,7 +29,8 @@ inline void add_mle_options(CLI::App& app, TransportCase& o, const std::string& 
 /// transport_parameters), the guards and damping; the tangent map as each tool adds it.
 inline void add_dynamics_options(CLI::App& app, TransportCase& run) {
   add_parameters(app, run, transport_parameters(),
-                 {.except = {"fit_begin", "fit_end", "mle", "renormalize", "deviation_samples", "lyapunov_vectors"}});
+                 {.except = {"fit_begin", "fit_end", "mle", "renormalize", "deviation_samples", "lyapunov_vectors",
+                             "covariant_vectors", "covariant_transient"}});
 }
 
 /// granular::validate_and_settle (case_settling.hpp): the cases validated with the errors in the

@@ -37,6 +37,10 @@ inline void add_kicked_case_options(CLI::App& app, KickedCaseOptions& o) {
   auto spectrum = add_parameters(app, o.run, transport_parameters(), {.only = {"lyapunov_vectors"}});
   spectrum["lyapunov_vectors"]->description(spectrum["lyapunov_vectors"]->get_description() +
                                             ": PREFIX-lyapunov.csv (t, lambda_1.., gali_2.., sali)");
+  auto clv = add_parameters(app, o.run, transport_parameters(), {.only = {"covariant_vectors", "covariant_transient"}});
+  clv["covariant_vectors"]->description(clv["covariant_vectors"]->get_description() +
+                                        ": PREFIX-clv.h5 (t, vectors, growth_rates, exponents, split_angles, "
+                                        "participation, centre)");
   add_option(app, "--realizations", o.realizations, "realizations to average (ensemble means and exponents)");
   auto* file = app.add_option("--case", o.case_file,
                               "JSON of a case: a replay file a failed ensemble wrote, or a spreading run's PREFIX.json "

@@ -123,6 +123,20 @@ double smallest_subspace_angle(const std::vector<State>& a, const std::vector<St
   return angle;
 }
 
+CovariantMemory covariant_memory(const CovariantVectorsConfig& config, std::size_t beads,
+                                 const std::vector<std::uint64_t>& sample_steps) {
+  if (sample_steps.empty()) throw InvalidInput("sample_steps", ": at least one sample");
+  CovariantMemory m{.bytes = clv_bytes(config, beads, sample_steps),
+                    .limit = config.memory_limit,
+                    .source = "memory_limit"};
+  if (m.limit == 0) {
+    const detail::MemoryLimit memory = detail::memory_limit();
+    m.limit = memory.bytes / 2;
+    m.source = "half of " + memory.source;
+  }
+  return m;
+}
+
 CovariantVectors covariant_vectors(const ForceLaw& law, const Chain& chain, const SplittingScheme& scheme,
                                    double time_step, const State& initial, const CovariantVectorsConfig& config,
                                    const std::vector<std::uint64_t>& sample_steps) {
@@ -130,22 +144,15 @@ CovariantVectors covariant_vectors(const ForceLaw& law, const Chain& chain, cons
   check_clv_config(config, n, sample_steps);
   // Refuse what cannot fit now, not hours in with bad_alloc (as the energy map does): half of
   // what this process may use leaves room for the run and the caller's copies.
-  const double bytes = clv_bytes(config, n, sample_steps);
-  double limit = config.memory_limit;
-  std::string source = "memory_limit";
-  if (limit == 0) {
-    const detail::MemoryLimit memory = detail::memory_limit();
-    limit = memory.bytes / 2;
-    source = "half of " + memory.source;
-  }
-  if (limit > 0 && bytes > limit) {
+  const CovariantMemory memory = covariant_memory(config, n, sample_steps);
+  if (!memory.fits()) {
     char text[400];
     std::snprintf(text, sizeof text,
                   " up to %llu with `backward_transient` %zu: the stored factors and vectors need %.3g bytes, more "
                   "than the %.3g allowed (%s); take a shorter window, fewer vectors or a longer "
                   "`orthonormalize_every`",
-                  static_cast<unsigned long long>(sample_steps.back()), config.backward_transient, bytes, limit,
-                  source.c_str());
+                  static_cast<unsigned long long>(sample_steps.back()), config.backward_transient, memory.bytes,
+                  memory.limit, memory.source.c_str());
     throw InvalidInput("sample_steps", text);
   }
 

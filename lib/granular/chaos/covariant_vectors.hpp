@@ -34,6 +34,7 @@
 //   clv.growth_rates;    // ≈ λ_1 … λ_4
 #include <cstddef>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "granular/dynamics/tangent_map.hpp"
@@ -81,6 +82,17 @@ struct CovariantVectors {
 CovariantVectors covariant_vectors(const ForceLaw& law, const Chain& chain, const SplittingScheme& scheme,
                                    double time_step, const State& initial, const CovariantVectorsConfig& config,
                                    const std::vector<std::uint64_t>& sample_steps);
+
+/// What covariant_vectors would keep at most for these settings [bytes] (the bound above), and the limit
+/// it holds that to [bytes; config.memory_limit, or half of what the process may use] with the limit's
+/// source: a front end refuses a run, naming its own keyword, before anything runs. Needs samples.
+struct CovariantMemory {
+  double bytes = 0, limit = 0;
+  std::string source;
+  bool fits() const { return !(limit > 0) || bytes <= limit; }
+};
+CovariantMemory covariant_memory(const CovariantVectorsConfig& config, std::size_t beads,
+                                 const std::vector<std::uint64_t>& sample_steps);
 
 /// The smallest principal angle between span(a) and span(b) [rad, 0 … π/2], in the norm
 /// (δu, t_unit δv): atan2 of the smallest singular value of b's orthonormal basis with its part in

@@ -108,6 +108,62 @@ std::unique_ptr<Hdf5File> write_energy_map(const std::string& path, const Spread
   return file;
 }
 
+std::vector<double> covariant_rows(const CovariantVectors& clv) {
+  std::vector<double> rows;
+  for (const auto& sample : clv.vectors)
+    for (const State& w : sample)
+      rows.insert(rows.end(), w.u.begin(), w.u.end()), rows.insert(rows.end(), w.v.begin(), w.v.end());
+  return rows;
+}
+
+namespace {
+std::vector<double> flat(const std::vector<std::vector<double>>& table) {
+  std::vector<double> all;
+  for (const auto& row : table) all.insert(all.end(), row.begin(), row.end());
+  return all;
+}
+}  // namespace
+
+std::unique_ptr<Hdf5File> write_covariant_vectors(const std::string& path, const SpreadingResult& r,
+                                                  const SpreadingRunConfig& config) {
+  const CovariantVectors& c = r.covariant;
+  const std::size_t samples = c.time.size(), k = c.growth_rates.size(), n = r.final_state.size();
+  auto file = std::make_unique<Hdf5File>(path);
+  file->write("t", c.time);
+  const std::vector<double> rows = covariant_rows(c);
+  file->write("vectors", rows.data(), samples * k, 2 * n);
+  file->write("growth_rates", c.growth_rates);
+  file->write("exponents", c.exponents);
+  if (k >= 2) file->write("split_angles", flat(c.split_angles).data(), samples, k - 1);
+  file->write("participation", flat(c.participation).data(), samples, k);
+  file->write("centre", flat(c.centre).data(), samples, k);
+  file->attribute("vectors_layout", "row s*k + i: CLV_{i+1} at sample s (t[s]); columns du_1..du_N, dv_1..dv_N; k = " +
+                                        std::to_string(k) + ", N = " + std::to_string(n));
+  file->attribute("vectors_units", "du dimensionless, dv [1/s]; unit norm in (du, t_unit dv), t_unit = " +
+                                       format_number(config.integration.lyapunov.time_unit) + " s");
+  file->attribute("units",
+                  "t [s], growth_rates and exponents [1/s] over t[0]..t[-1], split_angles [rad], "
+                  "participation [beads], centre [bead index, from 0]");
+  return file;
+}
+
+nlohmann::json describe_covariant(const SpreadingResult& r, const SpreadingRunConfig& config, const std::string& file) {
+  const CovariantVectorsConfig clv = covariant_config(config);
+  const CovariantVectors& c = r.covariant;
+  nlohmann::json j = {{"vectors", clv.vectors},
+                      {"forward_transient_steps", clv.forward_transient},
+                      {"backward_transient_steps", clv.backward_transient},
+                      {"transient_s", static_cast<double>(clv.forward_transient) * config.integration.time_step},
+                      {"samples", c.time.size()},
+                      {"window_s",
+                       c.time.empty() ? nlohmann::json(nullptr) : nlohmann::json({c.time.front(), c.time.back()})},
+                      {"growth_rates_per_s", c.growth_rates},
+                      {"exponents_per_s", c.exponents},
+                      {"stored_bytes", c.stored_bytes}};
+  if (!file.empty()) j["file"] = file;
+  return j;
+}
+
 nlohmann::json describe_run(const SpreadingResult& r, const nlohmann::json& realization) {
   nlohmann::json run = {{"realization", realization},
                         {"initial_energy_J", r.initial_energy},
@@ -135,11 +191,14 @@ nlohmann::json describe_lyapunov(const SpreadingResult& r, const std::string& fi
 }
 
 std::vector<std::string> SpreadingPaths::all() const {
-  return {csv, json, final_state, energy_map, spectrum, profile, forces, sem, checkpoint, deviation, lyapunov};
+  return {csv,    json, final_state, energy_map, spectrum, profile,
+          forces, sem,  checkpoint,  deviation,  lyapunov, covariant};
 }
 
-SpreadingPaths spreading_paths(const std::string& prefix, bool ensemble, bool profile, bool forces, bool lyapunov) {
+SpreadingPaths spreading_paths(const std::string& prefix, bool ensemble, bool profile, bool forces, bool lyapunov,
+                               bool covariant) {
   SpreadingPaths p;
+  if (covariant) p.covariant = prefix + "-clv.h5";
   if (lyapunov) p.lyapunov = prefix + "-lyapunov.csv";
   p.csv = prefix + ".csv", p.json = prefix + ".json";
   if (ensemble) p.sem = prefix + "-sem.csv", p.checkpoint = prefix + ".checkpoint";
@@ -151,6 +210,7 @@ SpreadingPaths spreading_paths(const std::string& prefix, bool ensemble, bool pr
 void SpreadingFiles::commit() {
   for (auto& f : text) f->commit();
   if (energy_map) energy_map->commit();
+  if (covariant) covariant->commit();
 }
 
 SpreadingFiles write_spreading_files(const SpreadingPaths& paths, const SpreadingResult& run,
@@ -170,6 +230,7 @@ SpreadingFiles write_spreading_files(const SpreadingPaths& paths, const Spreadin
     files.energy_map = write_energy_map(paths.energy_map, run, config.energy_map ? config.energy_map->stride : 1);
   if (!paths.deviation.empty()) write_deviation_csv(open(paths.deviation), run);
   if (!paths.lyapunov.empty()) write_lyapunov_csv(open(paths.lyapunov), run);
+  if (!paths.covariant.empty()) files.covariant = write_covariant_vectors(paths.covariant, run, config);
   return files;
 }
 

@@ -43,6 +43,19 @@ void write_lyapunov_csv(std::ostream& out, const SpreadingResult& run);
 /// temporary name and returned uncommitted, as AtomicFile is (Hdf5File::commit puts it in place).
 std::unique_ptr<Hdf5File> write_energy_map(const std::string& path, const SpreadingResult& run, std::size_t stride);
 
+/// The CLVs of a run (run.covariant) as rows, sample by sample and in each CLV by CLV: row s k + i is
+/// CLV_{i+1} at sample s, δu_1..δu_N [dimensionless] then δv_1..δv_N [1/s] (what PREFIX-clv.h5 holds).
+std::vector<double> covariant_rows(const CovariantVectors& clv);
+/// PREFIX-clv.h5, whole or not at all: datasets t [s] (samples), vectors (covariant_rows: samples·k rows of
+/// 2N), growth_rates and exponents [1/s] (k), with k ≥ 2 split_angles [rad] (samples × (k − 1)),
+/// participation [beads] and centre [bead index, from 0] (samples × k); the units and layout as
+/// attributes. Returned uncommitted, as write_energy_map's.
+std::unique_ptr<Hdf5File> write_covariant_vectors(const std::string& path, const SpreadingResult& run,
+                                                  const SpreadingRunConfig& config);
+/// The "covariant_vectors" entry of a run's JSON: k, the transients, the samples, the growth rates and
+/// exponents [1/s], stored_bytes, and its `file` (none when empty).
+nlohmann::json describe_covariant(const SpreadingResult& run, const SpreadingRunConfig& config, const std::string& file);
+
 /// The "lyapunov_spectrum" entry of a run's JSON: the vectors k, λ_j, GALI_j and SALI at T, and its
 /// `file` (none when empty).
 nlohmann::json describe_lyapunov(const SpreadingResult& run, const std::string& file);
@@ -57,24 +70,26 @@ struct SpreadingPaths {
   std::string csv, json, sem, profile, forces, checkpoint;   ///< under the prefix (spreading_paths)
   std::string final_state, energy_map, spectrum, deviation;  ///< named by the user, one realization each
   std::string lyapunov;                                      ///< PREFIX-lyapunov.csv, one realization
+  std::string covariant;                                     ///< PREFIX-clv.h5, one realization
   /// Every path, to be checked before the run (io/output_paths.hpp, check_outputs).
   std::vector<std::string> all() const;
 };
 
 /// The files under `prefix`: PREFIX.csv and PREFIX.json; with `ensemble` PREFIX-sem.csv (standard
 /// errors) and PREFIX.checkpoint; with `profile` PREFIX-profile.csv; with `forces` PREFIX-forces.csv;
-/// with `lyapunov` PREFIX-lyapunov.csv.
+/// with `lyapunov` PREFIX-lyapunov.csv; with `covariant` PREFIX-clv.h5.
 SpreadingPaths spreading_paths(const std::string& prefix, bool ensemble, bool profile, bool forces,
-                               bool lyapunov = false);
+                               bool lyapunov = false, bool covariant = false);
 
 /// Writes every file of `paths` but the JSON and the checkpoint: the means of `ensemble` where
 /// there is one (the curves, their standard errors, the profile), else those of `run`, and what
 /// only one realization has (forces at config.forces.sites, final state, g(ν), energy map with
-/// config.energy_map->stride, deviation vector, Lyapunov spectrum) from `run`. Every file, the HDF5 map included, is
-/// returned under its temporary name, to be committed after the JSON (never an output without its metadata).
+/// config.energy_map->stride, deviation vector, Lyapunov spectrum, CLVs) from `run`. Every file, the HDF5 map included,
+/// is returned under its temporary name, to be committed after the JSON (never an output without its metadata).
 struct SpreadingFiles {
   std::vector<std::unique_ptr<AtomicFile>> text;  ///< the CSVs
   std::unique_ptr<Hdf5File> energy_map;           ///< null without a map
+  std::unique_ptr<Hdf5File> covariant;            ///< null without the CLVs
   /// Puts every file in place (after the JSON); throws IoError.
   void commit();
 };

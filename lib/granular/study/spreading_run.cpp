@@ -1,6 +1,7 @@
 #include "granular/study/spreading_run.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <optional>
 #include <string>
 
@@ -33,6 +34,54 @@ LyapunovSpectrumConfig lyapunov_spectrum_config(const SpreadingRunConfig& run) {
           .time_unit = run.integration.lyapunov.time_unit};
 }
 
+CovariantVectorsConfig covariant_config(const SpreadingRunConfig& run) {
+  const IntegrationConfig& i = run.integration;
+  const auto transient =
+      static_cast<std::size_t>(std::llround(run.covariant_transient.value_or(i.duration / 2) / i.time_step));
+  return {.vectors = run.covariant_vectors,
+          .orthonormalize_every = i.lyapunov.renormalize_every,
+          .forward_transient = transient,
+          .backward_transient = transient,
+          .time_unit = i.lyapunov.time_unit};
+}
+
+std::vector<std::uint64_t> covariant_sample_steps(const SpreadingRunConfig& run) {
+  const std::uint64_t forward = covariant_config(run).forward_transient;
+  std::vector<std::uint64_t> steps;
+  for (const std::uint64_t s : sample_steps(run))
+    if (s >= forward) steps.push_back(s - forward);
+  return steps;
+}
+
+namespace {
+// Refused before the run, each naming the keyword: what covariant_vectors() would refuse only once it starts.
+void validate_covariant(const SpreadingRunConfig& run, std::size_t beads) {
+  const std::size_t k = run.covariant_vectors;
+  if (k > 0 && !run.integration.lyapunov.enabled)
+    throw InvalidInput("covariant_vectors", ": needs the Lyapunov exponent switched on");
+  if (k > 2 * beads)
+    throw InvalidInput("covariant_vectors",
+                       " " + std::to_string(k) + ": between 1 and 2N = " + std::to_string(2 * beads) + " (0 = none)");
+  const double transient = run.covariant_transient.value_or(0);
+  if (!(transient >= 0) || !std::isfinite(transient))
+    throw InvalidInput("covariant_transient", ": must be finite and >= 0 [s]");
+  if (k == 0) return;
+  if (run.integration.lyapunov.renormalize_every < 1)
+    throw InvalidInput("renormalize", " 0: the covariant vectors' QR comes every >= 1 steps");
+  const std::vector<std::uint64_t> steps = covariant_sample_steps(run);
+  if (steps.empty()) throw InvalidInput("covariant_transient", ": leaves no sample time between it and T (none: T/2)");
+  const CovariantMemory m = covariant_memory(covariant_config(run), beads, steps);
+  if (!m.fits()) {
+    char need[120];
+    std::snprintf(need, sizeof need, ": the stored factors and vectors need %.3g bytes, more than the %.3g allowed (",
+                  m.bytes, m.limit);
+    throw InvalidInput("covariant_vectors", " " + std::to_string(k) + need + m.source +
+                                                "); take fewer vectors, a shorter T or `covariant_transient`, or a "
+                                                "longer `renormalize`");
+  }
+}
+}  // namespace
+
 void validate(const SpreadingRunConfig& run, std::size_t beads) {
   validate(integration_config(run));
   const RunPlan plan = plan_of(run, beads);
@@ -50,6 +99,7 @@ void validate(const SpreadingRunConfig& run, std::size_t beads) {
                                                ": between 1 and 2N = " + std::to_string(2 * beads) + " (0 = none)");
   if (run.lyapunov_vectors > 0 && run.integration.lyapunov.renormalize_every < 1)
     throw InvalidInput("renormalize", " 0: the spectrum's vectors are re-orthonormalized every >= 1 steps");
+  validate_covariant(run, beads);
 }
 
 std::vector<std::uint64_t> sample_steps(const SpreadingRunConfig& run) {
@@ -88,6 +138,10 @@ SpreadingResult run_spreading(const Chain& chain, const State& initial, const Sp
     r.lyapunov =
         lyapunov_series(make_force_law(run.integration.force_law, chain), chain, run.integration.integrator.scheme,
                         run.integration.time_step, initial, lyapunov_spectrum_config(run), sample_steps(run));
+  if (run.covariant_vectors > 0)  // that orbit again, on past T by the backward transient
+    r.covariant =
+        covariant_vectors(make_force_law(run.integration.force_law, chain), chain, run.integration.integrator.scheme,
+                          run.integration.time_step, initial, covariant_config(run), covariant_sample_steps(run));
   r.initial_energy = info.initial_energy;
   r.max_energy_error = spread_observer.max_energy_error;
   r.wall_energy = spread_observer.wall_energy;

@@ -15,6 +15,7 @@
 #include <optional>
 #include <vector>
 
+#include "granular/chaos/covariant_vectors.hpp"
 #include "granular/chaos/lyapunov_spectrum.hpp"
 #include "granular/dynamics/observers.hpp"
 #include "granular/dynamics/spread.hpp"
@@ -37,6 +38,10 @@ struct SpreadingRunConfig {
   /// k deviation vectors of a Lyapunov spectrum (lyapunov_spectrum.hpp) on the same orbit, 1 ≤ k ≤ 2N,
   /// re-orthonormalized every integration.lyapunov.renormalize_every steps (integration.lyapunov on); 0 = none.
   std::size_t lyapunov_vectors = 0;
+  /// k covariant Lyapunov vectors (covariant_vectors.hpp) on the same orbit, 1 ≤ k ≤ 2N, at the sample
+  /// times in [transient, T], the backward phase from T + transient (integration.lyapunov on); 0 = none.
+  std::size_t covariant_vectors = 0;
+  std::optional<double> covariant_transient{};  ///< forward and backward transient [s]; none: T/2
 };
 
 /// The integration of a run, its deviation vector on the excited bead; and the settings of X1(t)'s observer.
@@ -44,6 +49,12 @@ IntegrationConfig integration_config(const SpreadingRunConfig& run);
 LyapunovObserver::Settings lyapunov_settings(const SpreadingRunConfig& run);
 /// The spectrum's settings: run.lyapunov_vectors vectors, the tangent map's interval and norm.
 LyapunovSpectrumConfig lyapunov_spectrum_config(const SpreadingRunConfig& run);
+
+/// The CLVs' settings: run.covariant_vectors vectors, the tangent map's interval and norm, both
+/// transients the steps nearest run.covariant_transient (none: T/2).
+CovariantVectorsConfig covariant_config(const SpreadingRunConfig& run);
+/// The CLVs' samples: those of sample_steps(run) from the forward transient on, counted from its end.
+std::vector<std::uint64_t> covariant_sample_steps(const SpreadingRunConfig& run);
 
 /// Throws InvalidInput naming the parameter (time_step, duration, samples, forces_at, …) on a bad run.
 void validate(const SpreadingRunConfig& run, std::size_t beads);
@@ -59,6 +70,7 @@ struct SpreadingResult {
   std::vector<double> deviation_t;   ///< times of the deviation-vector distribution rows [s]
   std::vector<double> deviation;     ///< rows × N, row-major: share of ‖w‖² on each bead
   LyapunovSeries lyapunov;           ///< λ_j(t), GALI_j(t), SALI(t) at the times t; empty without lyapunov_vectors
+  CovariantVectors covariant;        ///< the CLVs at covariant_sample_steps; empty without covariant_vectors
   double initial_energy = 0;         ///< H(0) [J]
   double max_energy_error = 0;       ///< the largest of energy_error
   State final_state;
@@ -82,6 +94,8 @@ struct SpreadingResult {
 /// spectral density and X1(t) (with its deviation vector) `run` switches on, packed into one result.
 /// With run.lyapunov_vectors, the spectrum and the alignment indices are integrated after the run,
 /// from the same initial state by the same scheme: the same orbit once more, the observers' run untouched.
+/// So are the CLVs with run.covariant_vectors: that orbit to rounding (their forward transient is one
+/// advance, the run stops at its samples), carried on past T by the backward transient.
 SpreadingResult run_spreading(const Chain& chain, const State& initial, const SpreadingRunConfig& run);
 
 /// The sample steps of the energy spread of a run: those of sample_steps() outside the dense

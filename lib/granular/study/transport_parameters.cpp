@@ -139,7 +139,15 @@ const ParameterTable<TransportCase>& transport_parameters() {
         "k deviation vectors of a Lyapunov spectrum on the same orbit, 1..2N (0 = none; one realization): "
         "lambda_1..lambda_k(t) [1/s], GALI_2..GALI_k(t) and SALI(t) at the sample times, QR every `renormalize` "
         "steps (with `mle`: the same tangent map and its rules)"}
-          .needing("mle")};
+          .needing("mle"),
+      P{"covariant_vectors", path<C>(&C::dynamics, &D::covariant_vectors),
+        "k covariant Lyapunov vectors (Ginelli's method) on the same orbit, 1..2N (0 = none; one realization): at "
+        "the sample times from `covariant_transient` to T, QR every `renormalize` steps (with `mle`)"}
+          .needing("mle"),
+      P{"covariant_transient", path<C>(&C::dynamics, &D::covariant_transient),
+        "forward and backward transient of the covariant vectors [s]: their samples start there, the backward "
+        "phase that long after T (default T/2)"}
+          .needing("covariant_vectors")};
   return table;
 }
 

@@ -51,6 +51,9 @@ void refuse_spectrum_in_ensemble(const SpreadingRunConfig& d) {
   if (d.lyapunov_vectors > 0)
     throw InvalidInput("lyapunov_vectors", " " + std::to_string(d.lyapunov_vectors) +
                                                ": one realization only (an ensemble does not average the spectrum)");
+  if (d.covariant_vectors > 0)
+    throw InvalidInput("covariant_vectors", " " + std::to_string(d.covariant_vectors) +
+                                                ": one realization only (an ensemble does not average the vectors)");
 }
 /// The checks of the choices a front end sets straight in the case (transport_parameters()).
 void validate_choices(const TransportCase& c) {
@@ -201,6 +204,15 @@ nlohmann::json describe(const TransportCase& c) {
     j["lyapunov_spectrum"] = {{"vectors", d.lyapunov_vectors},
                               {"orthonormalize_every", d.integration.lyapunov.renormalize_every},
                               {"seed", LyapunovSpectrumConfig{}.seed}};
+  if (d.covariant_vectors > 0 || d.covariant_transient) {  // a transient alone is refused, but not unsaid
+    const CovariantVectorsConfig clv = covariant_config(d);
+    j["covariant_vectors"] = {{"vectors", d.covariant_vectors},
+                              {"transient_s", d.covariant_transient ? nlohmann::json(*d.covariant_transient)
+                                                                    : nlohmann::json(nullptr)},
+                              {"transient_steps", clv.forward_transient},
+                              {"orthonormalize_every", clv.orthonormalize_every},
+                              {"seed", clv.seed}};
+  }
   return j;
 }
 
@@ -256,6 +268,11 @@ TransportCase parse_case(const nlohmann::json& j) {
     }
     if (j.contains("lyapunov_spectrum"))
       d.lyapunov_vectors = j.at("lyapunov_spectrum").at("vectors").get<std::size_t>();
+    if (j.contains("covariant_vectors")) {
+      d.covariant_vectors = j.at("covariant_vectors").at("vectors").get<std::size_t>();
+      if (const auto& t = j.at("covariant_vectors").at("transient_s"); !t.is_null())
+        d.covariant_transient = t.get<double>();
+    }
   } catch (const nlohmann::json::exception& e) {
     throw InvalidInput("case", std::string(": ") + e.what());
   }

@@ -24,6 +24,7 @@ look, _io the reading of results and files:
     forces(run_or_csv, profile)                force versus t at chosen beads, force profile at T
     spreading(runs_or_csvs)                    m2(t) and P^-1(t), log-log, with L_d insets
     lyapunov(run_or_csv)                       lambda_i(t) beside GALI_k(t) and SALI(t), log axes
+    covariant(run_or_h5, sample)               CLVs along the chain (index x bead), participation vs growth rate
     mode_kicks(runs_or_csvs)                   m2(t) and P^-1(t) from linear modes beside a site kick
     spectral_densities(pairs, titles)          g(nu) of the displacements beside that of the velocities
     cost(benchmark_json)                       integrators' cost-accuracy curves
@@ -48,12 +49,12 @@ from .breathers import breather_branch
 from .crystals import crystal, crystal_ipr_map
 from .disorder import correlations, localization
 from .klein_gordon import klein_gordon
-from .dynamics import cost, energy_map, forces, lyapunov, mode_kicks, spectral_densities, spreading
+from .dynamics import cost, covariant, energy_map, forces, lyapunov, mode_kicks, spectral_densities, spreading
 from .modes import ipr_averaging, ipr_map, partial_spectrum_ipr, spectrum
 from .quasiperiodic import butterfly, dynamical_butterfly
 from .transport_exponents import centres, exponents, paper_comparison, profiles, study_comparison
 
 __all__ = ["breather_branch", "crystal", "crystal_ipr_map", "klein_gordon", "ipr_map", "spectrum", "partial_spectrum_ipr", "ipr_averaging", "correlations", "localization", "energy_map",
-           "forces", "spreading", "lyapunov", "mode_kicks", "spectral_densities", "cost", "exponents", "centres",
+           "forces", "spreading", "lyapunov", "covariant", "mode_kicks", "spectral_densities", "cost", "exponents", "centres",
            "paper_comparison", "profiles", "study_comparison", "butterfly",
            "dynamical_butterfly"]

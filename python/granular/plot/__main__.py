@@ -70,6 +70,10 @@ def parser(prog=None):
     q.add_argument("profile", nargs="?", help="PREFIX-profile.csv (optional)")
     q = kind("lyapunov", "lambda_i(t) beside GALI_k(t) and SALI(t), log axes, from spreading --lyapunov-vectors")
     q.add_argument("csv", help="PREFIX-lyapunov.csv")
+    q = kind("covariant", "covariant Lyapunov vectors along the chain (CLV index x bead) beside their participation "
+                          "against growth rate, from spreading --covariant-vectors")
+    q.add_argument("h5", help="PREFIX-clv.h5")
+    q.add_argument("--sample", type=int, default=-1, help="index of the CLVs' sample shown (default -1: the last, T)")
     q = kind("spread", "m2(t) and P^-1(t), log-log, with L_d insets, from spreading CSVs")
     q.add_argument("csv", nargs="+")
     q.add_argument("--labels", help="comma list, one per CSV")
@@ -163,6 +167,8 @@ def main(argv=None, prog=None):
             save(plot.forces(args.forces, args.profile), args.output or _default_output(args.forces))
         elif args.kind == "lyapunov":
             save(plot.lyapunov(args.csv), args.output or _default_output(args.csv))
+        elif args.kind == "covariant":
+            save(plot.covariant(args.h5, sample=args.sample), args.output or _default_output(args.h5))
         elif args.kind == "spread":
             save(plot.spreading(args.csv, labels), args.output or _default_output(args.csv[0]))
         elif args.kind == "mode-kicks":

@@ -263,6 +263,68 @@ def lyapunov(source):
     return fig
 
 
+def _covariant_data(source):
+    """The CLVs of a run or of PREFIX-clv.h5 as a dict (t, vectors samples x k x 2N, growth_rates, participation,
+    centre) and the run's metadata (the JSON beside the file, if any)."""
+    if _io.is_path(source):
+        import h5py  # only for files
+
+        with h5py.File(source, "r") as f:
+            d = {name: np.array(f[name]) for name in ("t", "vectors", "growth_rates", "participation", "centre")}
+        k = len(d["growth_rates"])
+        d["vectors"] = d["vectors"].reshape(len(d["t"]), k, -1)
+        beside = os.fspath(source)[:-len("-clv.h5")] + ".json"
+        meta = {}
+        if os.fspath(source).endswith("-clv.h5") and os.path.exists(beside):
+            with open(beside) as f:
+                meta = json.load(f)
+        return d, meta
+    if source.covariant is None:
+        raise ValueError("this run has no covariant vectors: run granular.spreading(..., mle=True, "
+                         "covariant_vectors=k)")
+    return source.covariant, source.metadata
+
+
+def covariant(source, sample=-1, floor=-8.0):
+    """Where each covariant Lyapunov vector lives: its share of |w|^2 = |du|^2 + (t_unit dv)^2 on each bead at one
+    sample (CLV index x bead, log colour) beside each CLV's participation number [beads] against its growth rate
+    [1/s], coloured by its centre [bead].
+
+    source: a granular.SpreadingRun made with mle=True, covariant_vectors=k, or the spreading tool's PREFIX-clv.h5
+    (the JSON beside it titles the figure). sample: index into the CLVs' samples (default the last, t = T).
+    floor: the lowest log10 share shown.
+    """
+    d, meta = _covariant_data(source)
+    w = np.asarray(d["vectors"], float)[sample]  # k x 2N
+    k, n = w.shape[0], w.shape[1] // 2
+    t_unit = meta.get("parameters", {}).get("lyapunov", {}).get("norm_time_unit_s", 1e-6)
+    share = w[:, :n] ** 2 + (t_unit * w[:, n:]) ** 2
+    share /= share.sum(axis=1, keepdims=True)
+    t = float(np.asarray(d["t"])[sample])
+    growth = np.asarray(d["growth_rates"], float)
+    participation = np.asarray(d["participation"], float)[sample]
+    centre = np.asarray(d["centre"], float)[sample]
+    _, chain = _chain_edges(meta)
+    with style():
+        fig = figure(11, 4.6)
+        ax, bx = fig.subplots(1, 2)
+        image = ax.imshow(np.log10(np.maximum(share, 10.0**floor)), aspect="auto", origin="lower", cmap="magma",
+                          vmin=floor, vmax=0, extent=(0.5, n + 0.5, 0.5, k + 0.5), interpolation="nearest")
+        fig.colorbar(image, ax=ax, label=r"$\log_{10}$ share of $\|w\|^2$ on the bead")
+        ax.set_xlabel("bead n (from 1)")
+        ax.set_ylabel("CLV index i (by exponent, largest first)")
+        ax.set_title(f"t = {t:.4g} s", fontsize=10)
+        points = bx.scatter(growth, participation, c=centre + 1, cmap="viridis", vmin=1, vmax=n, s=30)
+        fig.colorbar(points, ax=bx, label="centre (bead, from 1)")
+        bx.axvline(0, color="0.6", lw=0.8, ls=":")
+        bx.set_xlabel(r"growth rate $\gamma_i$ [1/s] over the window")
+        bx.set_ylabel("participation [beads]")
+        bx.set_ylim(0, n + 0.5)
+        title = chain_title(chain)
+        wrapped_suptitle(fig, f"covariant Lyapunov vectors, k = {k}" + (f": {title}" if title else ""))
+    return fig
+
+
 def _start_label(meta):
     """How a spreading run started, from its metadata: the linear mode or the single-site kick."""
     parameters = meta.get("parameters", {})
