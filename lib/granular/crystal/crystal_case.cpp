@@ -93,6 +93,10 @@ const ParameterTable<CrystalCase>& crystal_parameters() {
 
 void validate(const CrystalCase& c) {
   refuse_unmet_needs(c, crystal_parameters());
+  // Here, not only in disordered(): a width that is not > 0 (NaN, −inf) would otherwise pass as
+  // "no disorder" and run the perfect crystal.
+  if (!(c.disorder.width >= 0 && c.disorder.width < 1))
+    throw InvalidInput("width", " " + format_number(c.disorder.width) + ": must be in [0, 1)");
   if (c.near && (!std::isfinite(*c.near) || *c.near < 0))
     throw InvalidInput("near", " " + format_number(*c.near) + ": must be a finite frequency >= 0 [kHz]");
   const long dof = 2 * c.packing.Lx * c.packing.Ly;
