@@ -60,6 +60,8 @@ SKIP = {("README.md", "bash tools/install-deps.sh && cmake -S . -B build"): BUIL
             BUILDS_THE_TREE + ", then the IPR-map comparison (minutes of timings)",
         ("docs/crystals.md", "PYTHONPATH=build/python /usr/bin/python3 docs/results/crystal_finite_size.py"):
             "the finite-size study (2 min, most of it 2304-bead dense solves); it rewrites docs/results and docs/figures",
+        ("docs/chaos.md", "PYTHONPATH=build/python /usr/bin/python3 docs/results/chaos_studies.py"):
+            "the three chaos studies (a minute of CPU); they rewrite docs/results and docs/figures",
         ("docs/chaos.md", "c++ -std=c++20 -O2 -I lib examples/dkg_weak_chaos.cpp"):
             "the weak-chaos study (100 s of CPU); ctest install_downstream builds and runs the example",
         ("docs/performance.md", "build/benchmarks/ipr_map_benchmark"):
