@@ -80,21 +80,18 @@ int main(int argc, char** argv) {
                      for (const auto& note : run.quiet ? std::vector<std::string>{} : spreading_notes(c, r, means))
                        std::fprintf(stderr, "spreading: %s\n", note.c_str());
                      auto files = write_spreading_files(paths, r, means, d);
-                     if (!more.spectrum_file.empty())
-                       (meta["spectrum"] = describe_spectral_density(*d.spectrum))["file"] = more.spectrum_file;
-                     if (!paths.lyapunov.empty()) meta["lyapunov_spectrum"] = describe_lyapunov(r, paths.lyapunov);
-                     if (!paths.covariant.empty())
-                       meta["covariant_vectors"] = describe_covariant(r, d, paths.covariant);
-                     meta["parameters"] = describe_parameters(c, selected.description, kicked, ensemble);
-                     meta["seed"] = c.chain.seed;
-                     if (!resumed.is_null()) meta["resumed_checkpoint"] = resumed;
-                     meta["time_step_rule"] = step_rule;
-                     meta.merge(describe_exponents(exponents, c.centre));
-                     if (summary) {
-                       tool::report_excluded(c, *summary, meta, run, "spreading", output, argv[0]);
-                       meta["ensemble"] = describe_ensemble(*summary, static_cast<int>(run.threads));
-                     }
-                     if (!summary || single) meta["run"] = describe_run(r, options.chain.realization);
+                     meta.merge(describe_spreading({.c = c,
+                                                    .chain = selected.description,
+                                                    .kicked = kicked,
+                                                    .step_rule = step_rule,
+                                                    .exponents = exponents,
+                                                    .run = !summary || single ? &r : nullptr,
+                                                    .realization = options.chain.realization,
+                                                    .ensemble = means,
+                                                    .threads = static_cast<int>(run.threads),
+                                                    .resumed = resumed,
+                                                    .paths = &paths}));
+                     if (summary) tool::report_excluded(c, *summary, meta, run, "spreading", output, argv[0]);
                      meta["output"] = paths.csv;
                      meta.write(paths.json);  // the JSON first, then the rest: never an output without its metadata
                      files.commit();

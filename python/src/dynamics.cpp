@@ -57,16 +57,15 @@ py::dict spreading(const PyChain& chain, TransportCase c, const PyRun& options) 
     run.progress->advance();
   });
 
-  nlohmann::json meta;
-  meta["parameters"] = describe_parameters(c, chain.description, kicked, false);
-  meta["seed"] = c.chain.seed;
+  const nlohmann::json meta =
+      describe_spreading({.c = c,
+                          .chain = chain.description,
+                          .kicked = kicked,
+                          .step_rule = step_rule,
+                          .exponents = exponents,
+                          .run = &r,
+                          .realization = chain.description.value("realization", nlohmann::json(0))});
   const nlohmann::json fitted = describe_exponents(exponents, c.centre);
-  meta.update(fitted);
-  meta["time_step_rule"] = step_rule;
-  meta["run"] = describe_run(r, chain.description.value("realization", nlohmann::json(0)));
-  if (d.spectrum) meta["spectrum"] = describe_spectral_density(*d.spectrum);
-  if (d.lyapunov_vectors > 0) meta["lyapunov_spectrum"] = describe_lyapunov(r, "");
-  if (d.covariant_vectors > 0) meta["covariant_vectors"] = describe_covariant(r, d, "");
 
   std::vector<std::string> said = notes(c);
   for (const auto& w : warnings(r, d)) said.push_back(w);
@@ -97,14 +96,15 @@ py::dict transport(const KickedCaseChoices& choices, bool profile, const PyRun& 
   run_long("transport", c.realizations, options, [&](const RunOptions& run) { s = run_transport_study(c, run); });
   if (!log.empty()) CheckpointLog::remove_all(log);  // finished: the result is in memory, as the tool's in files
 
-  nlohmann::json meta;
-  meta["parameters"] = describe_parameters(c, k.selected.description, first, true);
-  meta["seed"] = c.chain.seed;
-  if (!resumed.is_null()) meta["resumed_checkpoint"] = resumed;
+  const nlohmann::json meta = describe_spreading({.c = c,
+                                                  .chain = k.selected.description,
+                                                  .kicked = first,
+                                                  .step_rule = step_rule,
+                                                  .exponents = s.exponents,
+                                                  .ensemble = &s,
+                                                  .threads = thread_request,
+                                                  .resumed = resumed});
   const nlohmann::json fitted = describe_exponents(s.exponents, c.centre);
-  meta.update(fitted);
-  meta["ensemble"] = describe_ensemble(s, thread_request);
-  meta["time_step_rule"] = step_rule;
 
   std::vector<std::string> said = notes(c);
   for (const auto& w : warnings(s, c.dynamics)) said.push_back(w);

@@ -269,4 +269,27 @@ nlohmann::json describe_exponents(const std::optional<TransportExponents>& expon
   return entries;
 }
 
+nlohmann::json describe_spreading(const SpreadingDescription& d) {
+  const bool ensemble = d.ensemble != nullptr;
+  nlohmann::json j;
+  j["parameters"] = describe_parameters(d.c, d.chain, d.kicked, ensemble);
+  j["seed"] = d.c.chain.seed;
+  if (!d.resumed.is_null()) j["resumed_checkpoint"] = d.resumed;
+  j["time_step_rule"] = d.step_rule;
+  j.update(describe_exponents(d.exponents, d.c.centre));
+  if (ensemble) j["ensemble"] = describe_ensemble(*d.ensemble, d.threads);
+  if (d.run == nullptr) return j;
+  const SpreadingRunConfig& config = d.c.dynamics;
+  const auto file = [&](std::string SpreadingPaths::*path) { return d.paths ? d.paths->*path : std::string(); };
+  j["run"] = describe_run(*d.run, d.realization);
+  if (config.spectrum) {
+    j["spectrum"] = describe_spectral_density(*config.spectrum);
+    if (const std::string f = file(&SpreadingPaths::spectrum); !f.empty()) j["spectrum"]["file"] = f;
+  }
+  if (config.lyapunov_vectors > 0) j["lyapunov_spectrum"] = describe_lyapunov(*d.run, file(&SpreadingPaths::lyapunov));
+  if (config.covariant_vectors > 0)
+    j["covariant_vectors"] = describe_covariant(*d.run, config, file(&SpreadingPaths::covariant));
+  return j;
+}
+
 }  // namespace granular

@@ -118,4 +118,24 @@ nlohmann::json describe_spectral_density(const SpectralDensityObserver::Settings
 /// eta_real_err, power_law, exponents): to_json(exponents, shown), each null when none were fitted.
 nlohmann::json describe_exponents(const std::optional<TransportExponents>& exponents, SpreadCentre shown);
 
+/// What the spreading tool's JSON and granular.spreading / granular.transport's metadata say of a
+/// run, in one place for both front ends.
+struct SpreadingDescription {
+  const TransportCase& c;
+  const nlohmann::json& chain;  ///< the chain as built (the selected chain's description)
+  const KickedChain& kicked;    ///< the kick of the run, or of realization 0 of an ensemble
+  const nlohmann::json& step_rule;
+  const std::optional<TransportExponents>& exponents;
+  const SpreadingResult* run = nullptr;        ///< one realization run, or null (an ensemble alone)
+  nlohmann::json realization{};                ///< with `run`: its realization number
+  const TransportSummary* ensemble = nullptr;  ///< the ensemble's means, or null
+  int threads = 0;                             ///< with `ensemble`: the threads asked for
+  nlohmann::json resumed{};                    ///< resumed_code of its checkpoint, or null
+  const SpreadingPaths* paths = nullptr;       ///< the files named in the entries; null: none (Python)
+};
+/// parameters, seed, time_step_rule, the exponents' entries, with an ensemble `ensemble` (and
+/// resumed_checkpoint when resumed), with a run `run` and the entries of what it recorded
+/// (spectrum, lyapunov_spectrum, covariant_vectors), each with its file where `paths` names one.
+nlohmann::json describe_spreading(const SpreadingDescription& d);
+
 }  // namespace granular
