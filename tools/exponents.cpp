@@ -87,11 +87,8 @@ int main(int argc, char** argv) {
     const auto files = write_exponent_files(paths, cells, rows);
     for (const auto& c : cells)
       tool::report_excluded(c.definition, c.summary, meta, run_options, "exponents", output, argv[0]);
-    meta["parameters"] = describe_table_parameters(chain_list(choices), config, kick_list(choices),
-                                                   static_cast<int>(run_options.threads));
-    meta["cases"] = describe_cells(cells);
-    meta["time_step_rule"] = step_rule;
-    if (!resumed.is_null()) meta["resumed_checkpoint"] = resumed;
+    meta.merge(describe_exponent_study(chain_list(choices), config, kick_list(choices),
+                                       static_cast<int>(run_options.threads), cells, step_rule, resumed));
     if (auto_n) meta["chain_length_rule"] = rules;
     if (compare) meta["paper_table"] = paper_table;
     meta["output"] = paths.csv;

@@ -139,12 +139,8 @@ py::dict exponent_table(const ExponentChoices& words, ExponentTableConfig config
     for (const std::string& log : case_checkpoints(prefix, cells.size())) CheckpointLog::remove_all(log);
 
   for (const ExponentCell& c : cells) warn({excluded_note(c.definition, c.summary)});  // "" when none
-  const nlohmann::json described = describe_cells(cells);
-  nlohmann::json meta;
-  meta["parameters"] = describe_table_parameters(chain_list(words), config, kick_list(words), thread_request);
-  meta["cases"] = described;
-  meta["time_step_rule"] = step_rule;
-  if (!resumed.is_null()) meta["resumed_checkpoint"] = resumed;
+  nlohmann::json meta =
+      describe_exponent_study(chain_list(words), config, kick_list(words), thread_request, cells, step_rule, resumed);
   py::dict out;
   // The tool's three CSV files, written by the library's own writers (granular._results reads them).
   out["table_csv"] = csv_text([&](std::ostream& o) { write_exponents_csv(o, cells); });

@@ -59,4 +59,15 @@ nlohmann::json describe_cells(const std::vector<ExponentCell>& cells) {
   return all;
 }
 
+nlohmann::json describe_exponent_study(const std::string& chains, const ExponentTableConfig& config,
+                                       const std::string& kicks, int threads, const std::vector<ExponentCell>& cells,
+                                       const nlohmann::json& step_rule, const nlohmann::json& resumed) {
+  nlohmann::json j;
+  j["parameters"] = describe_table_parameters(chains, config, kicks, threads);
+  j["cases"] = describe_cells(cells);
+  j["time_step_rule"] = step_rule;
+  if (!resumed.is_null()) j["resumed_checkpoint"] = resumed;
+  return j;
+}
+
 }  // namespace granular

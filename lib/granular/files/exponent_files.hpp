@@ -42,4 +42,11 @@ nlohmann::json describe_cells(const std::vector<ExponentCell>& cells);
 nlohmann::json describe_table_parameters(const std::string& chains, const ExponentTableConfig& config,
                                          const std::string& kicks, int threads);
 
+/// The study's JSON as the exponents tool and granular.exponent_table write it: `parameters`
+/// (describe_table_parameters), `cases` (describe_cells), `time_step_rule`, and
+/// `resumed_checkpoint` when `resumed` is not null.
+nlohmann::json describe_exponent_study(const std::string& chains, const ExponentTableConfig& config,
+                                       const std::string& kicks, int threads, const std::vector<ExponentCell>& cells,
+                                       const nlohmann::json& step_rule, const nlohmann::json& resumed);
+
 }  // namespace granular
