@@ -29,6 +29,9 @@ def crystal(**keywords):
     Newton on the Hertz contact network, then every mode by dense LAPACK or the `count` modes nearest `near`
     [kHz] by SLEPc shift-invert. A bad value is a ValueError naming its keyword; a packing that is not rigid
     under its load (a compressed square packing's shear instability) is refused. Returns a granular.Crystal."""
+    if isinstance(keywords.get("window"), (tuple, list)):  # (lo, hi) [kHz]: the row's text form lo:hi
+        lo, hi = keywords["window"]
+        keywords["window"] = f"{float(lo)!r}:{float(hi)!r}"
     (given,) = split_keywords(keywords, [_CASE], "crystal")
     raw = _core._crystal(_CASE.make(given))
     beads = len(raw["x"])

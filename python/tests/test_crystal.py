@@ -116,3 +116,14 @@ def test_ipr_map_resumes_from_its_checkpoint_to_the_same_map(tmp_path):
     np.testing.assert_array_equal(again.ipr, whole.ipr)
     with pytest.raises(ValueError, match="fresh"):
         gr.crystal_ipr_map(**args, checkpoint=log, resume=True, fresh=True)
+
+
+def test_window_by_spectrum_slicing_is_every_dense_mode_inside_it():
+    every = gr.crystal(lattice="hexagonal", Lx=10, Ly=10, width=0.4)
+    lo, hi = (every.freq_khz[60] + every.freq_khz[61]) / 2, (every.freq_khz[90] + every.freq_khz[91]) / 2
+    sliced = gr.crystal(lattice="hexagonal", Lx=10, Ly=10, width=0.4, window=(lo, hi))
+    assert sliced.method == "slepc-slicing"
+    np.testing.assert_allclose(sliced.freq_khz, every.freq_khz[61:91], rtol=1e-10)
+    np.testing.assert_allclose(sliced.ipr, every.ipr[61:91], rtol=1e-8)
+    with pytest.raises(ValueError, match="window"):
+        gr.crystal(near=10.0, window=(1.0, 2.0))

@@ -127,6 +127,27 @@ void expect_nearest_match_dense(const SparseSymmetric& a, int count) {
   EXPECT_GE(overlap.singularValues().minCoeff(), 1 - 1e-10);
 }
 
+/// Spectrum slicing over an interval between levels of the dense spectrum: the same 26 eigenvalues
+/// to 1e-10 relative and the same 26-dimensional eigenspace.
+void expect_window_matches_dense(const SparseSymmetric& a) {
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> reference(dense(a));
+  const Eigen::VectorXd& all = reference.eigenvalues();
+  const Eigen::Index first = all.size() / 3, last = first + 25;
+  const double lo = 0.5 * (all(first - 1) + all(first)), hi = 0.5 * (all(last) + all(last + 1));
+  const ShiftInvertResult r = slepc_window(a, lo, hi);
+  ASSERT_EQ(r.values.size(), 26U);
+  for (Eigen::Index j = 0; j < 26; ++j)
+    EXPECT_NEAR(r.values[static_cast<std::size_t>(j)], all(first + j), 1e-10 * std::fabs(all(first + j))) << j;
+  const Eigen::JacobiSVD<Eigen::MatrixXd> overlap(reference.eigenvectors().middleCols(first, 26).transpose() * r.vectors);
+  EXPECT_GE(overlap.singularValues().minCoeff(), 1 - 1e-10);
+}
+
+TEST(SlepcSparseWindow, EqualsTheDenseSolverOnARandomNet) {
+  if (!have_slepc()) GTEST_SKIP() << "this build has no SLEPc";
+  expect_window_matches_dense(sparse_net(24, 25, 7));
+  EXPECT_THROW(slepc_window(sparse_net(3, 3, 1), 2.0, 1.0), InvalidInput);
+}
+
 TEST(SlepcSparseNearest, EqualsTheDenseSolverOnARandomNet) {
   if (!have_slepc()) GTEST_SKIP() << "this build has no SLEPc";
   expect_nearest_match_dense(sparse_net(24, 25, 7), 12);  // 1200 rows
@@ -143,10 +164,11 @@ TEST(SlepcSparseNearest, RefusesTooManyPairsAndAnInfiniteShift) {
 }
 
 // Run by SlepcSparseNearest.EqualsTheDenseSolverOnTwoMpiRanks under mpiexec -np 2 (skipped when
-// run alone): every rank assembles its own rows and receives every vector.
+// run alone): every rank assembles its own rows and receives every vector, nearest σ and by slicing.
 TEST(SlepcSparseNearestOnRanks, Child) {
   if (!std::getenv("GRANULAR_SPARSE_RANK_CHILD")) GTEST_SKIP() << "run by EqualsTheDenseSolverOnTwoMpiRanks";
   expect_nearest_match_dense(sparse_net(24, 25, 7), 12);
+  expect_window_matches_dense(sparse_net(24, 25, 7));
 }
 
 #ifdef GRANULAR_MPIEXEC_PATH

@@ -1,7 +1,7 @@
 // The `crystal` tool's contract: its options are crystal_parameters()'s rows, bad input is one
 // line naming the option with exit code 2 and nothing written, the JSON is the case's description
-// (its parameters parse back to the case), and SLEPc's nearest modes (also on two MPI ranks) are
-// the dense solver's.
+// (its parameters parse back to the case), and SLEPc's nearest modes and spectrum slicing (also on
+// two MPI ranks) are the dense solver's.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -98,6 +98,16 @@ TEST(CrystalTool, NearestModesByArpackAndSlepcAreTheDenseOnes) {
     ASSERT_EQ(some.size(), 10U);
     expect_among(some, all, method);
   }
+  // Spectrum slicing: every dense mode inside the window, none outside, each to 1e-10.
+  const double lo = 0.5 * (all[100] + all[101]), hi = 0.5 * (all[130] + all[131]);
+  const std::string window = args + " --window " + std::to_string(lo) + ":" + std::to_string(hi);
+  const ToolResult sliced = run_tool("crystal", window + " --output " + dir + "/window");
+  ASSERT_EQ(sliced.exit_code, 0) << sliced.err;
+  const auto inside = crystal_frequencies(dir + "/window.csv");
+  EXPECT_EQ(inside.size(), static_cast<std::size_t>(std::count_if(all.begin(), all.end(), [&](double f) {
+              return f >= std::stod(std::to_string(lo)) && f <= std::stod(std::to_string(hi));
+            })));
+  expect_among(inside, all, "window");
 #ifdef GRANULAR_MPIEXEC_PATH
   const std::string mpirun = "env OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 " +
                              std::string(GRANULAR_MPIEXEC_PATH) + " --oversubscribe -np 2 ";
@@ -107,6 +117,12 @@ TEST(CrystalTool, NearestModesByArpackAndSlepcAreTheDenseOnes) {
   const auto ranks = crystal_frequencies(dir + "/ranks.csv"), one = crystal_frequencies(dir + "/slepc.csv");
   ASSERT_EQ(ranks.size(), one.size());
   for (std::size_t k = 0; k < one.size(); ++k) EXPECT_NEAR(ranks[k], one[k], 1e-10 * one[k]);
+  const std::string sliced_on_ranks =
+      mpirun + tool_path("crystal") + " " + window + " --output " + dir + "/window-ranks > /dev/null 2>&1";
+  ASSERT_EQ(std::system(sliced_on_ranks.c_str()), 0);
+  const auto inside_ranks = crystal_frequencies(dir + "/window-ranks.csv");
+  ASSERT_EQ(inside_ranks.size(), inside.size());
+  for (std::size_t k = 0; k < inside.size(); ++k) EXPECT_NEAR(inside_ranks[k], inside[k], 1e-10 * inside[k]);
 #endif
   std::filesystem::remove_all(dir);
 }
@@ -127,6 +143,11 @@ TEST(CrystalTool, BadInputIsOneLineNamingTheOptionAndWritesNothing) {
       {"--near 20 --count 0", "--count"},
       {"--near -3", "--near"},
       {"--near 500", "--near 500 kHz: above"},  // a slip: every mode of the 8 x 8 default is below 18 kHz
+      {"--window 5", "--window"},
+      {"--window 3:1", "--window"},
+      {"--near 10 --window 1:2", "--window"},
+      {"--window 100:200", "--window from 100 kHz: above"},
+      {"--window 0.001:0.002", "--window"},  // no mode in it (the lowest is near 1 kHz)
       {"--ratio-lo 30 --ratio-hi 10", "--ratio-hi"},
       {"--boundary periodic --strain 0.01", "packing"},  // the compressed periodic square lattice is not rigid
   };

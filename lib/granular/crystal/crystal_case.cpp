@@ -6,6 +6,7 @@
 
 #include "granular/detail/enum_names.hpp"
 #include "granular/error.hpp"
+#include "granular/io/range_syntax.hpp"
 #include "granular/number_format.hpp"
 
 namespace granular {
@@ -25,6 +26,16 @@ constexpr auto disorder_names =
 
 constexpr auto method_names =
     detail::enum_names<NearestMethod>("method", {{NearestMethod::arpack, "arpack"}, {NearestMethod::slepc, "slepc"}});
+
+// The window's text form, lo:hi [kHz] (parse_interval: finite, lo < hi); empty: none.
+void read_window(C& c, const std::string& text) {
+  if (text.empty()) return c.window.reset();
+  const Interval i = parse_interval(text, "window");
+  c.window = {i.start, i.stop};
+}
+std::string write_window(const C& c) {
+  return c.window ? format_number(c.window->first) + ":" + format_number(c.window->second) : "";
+}
 
 void read_lattice(C& c, const std::string& word) { c.packing.lattice = lattice_names.parse(word); }
 std::string write_lattice(const C& c) { return std::string(lattice_names.name_of(c.packing.lattice)); }
@@ -84,6 +95,13 @@ const ParameterTable<CrystalCase>& crystal_parameters() {
         "mpirun)"}
           .as_word()
           .needing("near"),
+      P{"window",
+        {},
+        {read_window, write_window},
+        "every mode in lo:hi [kHz] by SLEPc's spectrum slicing (the count from the factorization's inertia, "
+        "so none is missed; over the MPI ranks of mpirun), instead of `near`",
+        false}
+          .as_word(),
       {"ratio_lo", &C::ratio_lo, "lower end [kHz] of the window of the level-spacing ratio <r> (default: no limit)",
        false},
       {"ratio_hi", &C::ratio_hi, "upper end [kHz] of that window (default: no limit)", false},
@@ -97,6 +115,9 @@ void validate(const CrystalCase& c) {
   // "no disorder" and run the perfect crystal.
   if (!(c.disorder.width >= 0 && c.disorder.width < 1))
     throw InvalidInput("width", " " + format_number(c.disorder.width) + ": must be in [0, 1)");
+  if (c.near && c.window) throw InvalidInput("window", ": not with `near` (one choice of modes)");
+  if (c.window && c.window->first < 0)
+    throw InvalidInput("window", " " + write_window(c) + ": frequencies are >= 0 [kHz]");
   if (c.near && (!std::isfinite(*c.near) || *c.near < 0))
     throw InvalidInput("near", " " + format_number(*c.near) + ": must be a finite frequency >= 0 [kHz]");
   const long dof = 2 * c.packing.Lx * c.packing.Ly;

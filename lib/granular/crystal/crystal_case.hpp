@@ -9,6 +9,7 @@
 //   c.disorder = {.kind = granular::PackingDisorder::Kind::mass, .width = 0.3};
 //   c.near = 30.0;                                 // the 20 modes nearest 30 kHz instead of all
 #include <optional>
+#include <utility>
 
 #include "granular/crystal/nearest_modes.hpp"
 #include "granular/crystal/packing.hpp"
@@ -27,6 +28,8 @@ struct CrystalCase {
   std::optional<double> near{};
   long count = 20;                               ///< with `near`: how many modes, 1 ≤ count < 2N
   NearestMethod method = NearestMethod::arpack;  ///< with `near`: ARPACK (one process) or SLEPc (MPI ranks)
+  /// Every mode in [lo, hi] [kHz] instead (not with `near`): SLEPc's spectrum slicing, over MPI ranks.
+  std::optional<std::pair<double, double>> window{};
   /// The window [kHz] of the level-spacing ratio ⟨r⟩; unset: every mode computed.
   std::optional<double> ratio_lo{}, ratio_hi{};
   /// Also the eigenvectors, written as each bead's displacement (PREFIX-modes.csv).

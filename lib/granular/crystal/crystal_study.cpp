@@ -6,6 +6,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "granular/error.hpp"
+#include "granular/number_format.hpp"
 #include "granular/parameter_json.hpp"
 
 namespace granular {
@@ -17,9 +19,14 @@ CrystalResult crystal_study(const CrystalCase& c) {
   r.matrix = crystal_matrix(r.packing, r.state);
   const CrystalMatrix& d = r.matrix;
   const CrystalSpectrumConfig modes{.vectors = c.vectors};
-  r.method = !c.near ? "lapack" : c.method == NearestMethod::slepc ? "slepc" : "arpack";
+  r.method = c.window ? "slepc-slicing" : !c.near ? "lapack" : c.method == NearestMethod::slepc ? "slepc" : "arpack";
   const auto start = std::chrono::steady_clock::now();
-  r.spectrum = c.near ? crystal_nearest_modes(d, *c.near * 1e3, c.count, modes, c.method) : crystal_spectrum(d, modes);
+  r.spectrum = c.window ? crystal_window_modes(d, c.window->first * 1e3, c.window->second * 1e3, modes)
+               : c.near ? crystal_nearest_modes(d, *c.near * 1e3, c.count, modes, c.method)
+                        : crystal_spectrum(d, modes);
+  if (r.spectrum.size() == 0)
+    throw InvalidInput("window", " " + format_number(c.window->first) + ":" + format_number(c.window->second) +
+                                     ": no mode of the crystal in it");
   r.solve_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const std::vector<double>& f = r.spectrum.freq_hz;  // ascending; the window defaults to all of them
   r.ratio =

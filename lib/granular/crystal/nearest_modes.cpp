@@ -68,53 +68,39 @@ ShiftInvertResult arpack_ldlt_or_lu(const CrystalMatrix& d, double sigma, const 
 
 }  // namespace
 
-CrystalSpectrum crystal_nearest_modes(const CrystalMatrix& d, double near_hz, long count,
-                                      const CrystalSpectrumConfig& config, NearestMethod method) {
-  if (!std::isfinite(near_hz) || near_hz < 0)
-    throw InvalidInput("near", " " + format_number(near_hz) + ": must be finite and >= 0 [Hz]");
-  if (count < 1 || count > static_cast<long>(d.rows()) - 1)
-    throw InvalidInput("count", " " + std::to_string(count) + ": must be in 1 ... " + std::to_string(d.rows() - 1) +
-                                    " (2N - 1) for a shift-invert Krylov method");
-  const double sigma = std::pow(2 * std::numbers::pi * near_hz, 2);
-  // Every ω² lies below Gershgorin's bound max_r Σ_c |D_rc|: a shift beyond it is a slip (a unit,
-  // a digit), and shift-invert would quietly return the top modes as the "nearest".
-  double gershgorin = 0;
+namespace {
+
+/// max_r Σ_c |D_rc|: every ω² lies below it (Gershgorin).
+double gershgorin_bound(const CrystalMatrix& d) {
+  double bound = 0;
   for (std::size_t row = 0; row < d.rows(); ++row) {
     double sum = 0;
     for (auto q = d.matrix.row_start[row]; q < d.matrix.row_start[row + 1]; ++q) sum += std::fabs(d.matrix.value[q]);
-    gershgorin = std::max(gershgorin, sum);
+    bound = std::max(bound, sum);
   }
-  if (sigma > gershgorin)
-    throw InvalidInput("near", " " + format_number(near_hz * 1e-3) +
-                                   " kHz: above the crystal's spectrum (every mode is below " +
-                                   format_number(std::round(std::sqrt(gershgorin) / (2 * std::numbers::pi)) * 1e-3) +
-                                   " kHz, Gershgorin's bound)");
+  return bound;
+}
+
+/// max ‖D w − ω² w‖ / max |D_ij| over the pairs of `r`.
+double worst_residual(const CrystalMatrix& d, const ShiftInvertResult& r) {
   double scale = 0;
   for (double v : d.matrix.value) scale = std::max(scale, std::fabs(v));
-  auto worst_residual = [&](const ShiftInvertResult& r) {
-    double worst = 0;
-    for (long k = 0; k < r.vectors.cols(); ++k) {
-      const double* w = r.vectors.col(k).data();
-      for (std::size_t row = 0; row < d.rows(); ++row) {
-        double dw = -r.values[static_cast<std::size_t>(k)] * w[row];
-        for (auto q = d.matrix.row_start[row]; q < d.matrix.row_start[row + 1]; ++q)
-          dw += d.matrix.value[static_cast<std::size_t>(q)] * w[d.matrix.column[static_cast<std::size_t>(q)]];
-        worst = std::max(worst, std::fabs(dw) / scale);
-      }
+  double worst = 0;
+  for (long k = 0; k < r.vectors.cols(); ++k) {
+    const double* w = r.vectors.col(k).data();
+    for (std::size_t row = 0; row < d.rows(); ++row) {
+      double dw = -r.values[static_cast<std::size_t>(k)] * w[row];
+      for (auto q = d.matrix.row_start[row]; q < d.matrix.row_start[row + 1]; ++q)
+        dw += d.matrix.value[q] * w[d.matrix.column[q]];
+      worst = std::max(worst, std::fabs(dw) / scale);
     }
-    return worst;
-  };
-  ShiftInvertConfig solver;
-  solver.count = static_cast<int>(count);
-  ShiftInvertResult r;
-  double residual = 0;
-  if (method == NearestMethod::slepc) {  // MUMPS's LU pivots: no second try needed
-    r = slepc_nearest(d.matrix, sigma, solver);
-    residual = worst_residual(r);
-  } else {
-    r = arpack_ldlt_or_lu(d, sigma, solver, worst_residual, residual);
   }
+  return worst;
+}
 
+/// The pairs of `r` as crystal_spectrum gives modes: frequencies, IPRs, vectors if asked.
+CrystalSpectrum spectrum_of(const CrystalMatrix& d, const ShiftInvertResult& r, double residual,
+                            const CrystalSpectrumConfig& config) {
   CrystalSpectrum out;
   out.beads = d.beads();
   out.omega2 = r.values;
@@ -126,6 +112,52 @@ CrystalSpectrum crystal_nearest_modes(const CrystalMatrix& d, double near_hz, lo
   out.max_residual = residual;
   if (config.vectors) out.vectors.assign(r.vectors.data(), r.vectors.data() + r.vectors.size());
   return out;
+}
+
+std::string khz(double hz) { return format_number(std::round(hz) * 1e-3); }
+
+}  // namespace
+
+CrystalSpectrum crystal_nearest_modes(const CrystalMatrix& d, double near_hz, long count,
+                                      const CrystalSpectrumConfig& config, NearestMethod method) {
+  if (!std::isfinite(near_hz) || near_hz < 0)
+    throw InvalidInput("near", " " + format_number(near_hz) + ": must be finite and >= 0 [Hz]");
+  if (count < 1 || count > static_cast<long>(d.rows()) - 1)
+    throw InvalidInput("count", " " + std::to_string(count) + ": must be in 1 ... " + std::to_string(d.rows() - 1) +
+                                    " (2N - 1) for a shift-invert Krylov method");
+  const double sigma = std::pow(2 * std::numbers::pi * near_hz, 2);
+  // A shift beyond Gershgorin's bound is a slip (a unit, a digit), and shift-invert would quietly
+  // return the top modes as the "nearest".
+  if (const double bound = gershgorin_bound(d); sigma > bound)
+    throw InvalidInput("near", " " + format_number(near_hz * 1e-3) +
+                                   " kHz: above the crystal's spectrum (every mode is below " +
+                                   khz(std::sqrt(bound) / (2 * std::numbers::pi)) + " kHz, Gershgorin's bound)");
+  const auto residual_of = [&](const ShiftInvertResult& r) { return worst_residual(d, r); };
+  ShiftInvertConfig solver;
+  solver.count = static_cast<int>(count);
+  ShiftInvertResult r;
+  double residual = 0;
+  if (method == NearestMethod::slepc) {  // MUMPS's LU pivots: no second try needed
+    r = slepc_nearest(d.matrix, sigma, solver);
+    residual = residual_of(r);
+  } else {
+    r = arpack_ldlt_or_lu(d, sigma, solver, residual_of, residual);
+  }
+  return spectrum_of(d, r, residual, config);
+}
+
+CrystalSpectrum crystal_window_modes(const CrystalMatrix& d, double lo_hz, double hi_hz,
+                                     const CrystalSpectrumConfig& config) {
+  if (!(std::isfinite(lo_hz) && std::isfinite(hi_hz) && lo_hz >= 0 && lo_hz < hi_hz))
+    throw InvalidInput("window", " " + format_number(lo_hz * 1e-3) + ":" + format_number(hi_hz * 1e-3) +
+                                     ": needs 0 <= lo < hi [kHz]");
+  const double top = std::sqrt(gershgorin_bound(d)) / (2 * std::numbers::pi);
+  if (lo_hz > top)
+    throw InvalidInput("window", " from " + format_number(lo_hz * 1e-3) + " kHz: above the crystal's spectrum (every " +
+                                     "mode is below " + khz(top) + " kHz, Gershgorin's bound)");
+  const auto omega2 = [](double hz) { return std::pow(2 * std::numbers::pi * hz, 2); };
+  const ShiftInvertResult r = slepc_window(d.matrix, omega2(lo_hz), omega2(hi_hz));
+  return spectrum_of(d, r, worst_residual(d, r), config);
 }
 
 }  // namespace granular

@@ -26,4 +26,12 @@ CrystalSpectrum crystal_nearest_modes(const CrystalMatrix& d, double near_hz, lo
                                       const CrystalSpectrumConfig& config = {},
                                       NearestMethod method = NearestMethod::arpack);
 
+/// Every mode with its frequency in [lo_hz, hi_hz] [Hz], ascending, as crystal_nearest_modes gives
+/// them, by SLEPc's spectrum slicing (slepc_window: the count comes from the inertia of MUMPS's
+/// LDLᵀ, so no mode of the window is missed and none needs guessing); collective over the MPI ranks
+/// as NearestMethod::slepc. Throws InvalidInput naming `window` unless 0 ≤ lo < hi, or when lo is
+/// above Gershgorin's bound on the spectrum; naming `method` in a build without SLEPc.
+CrystalSpectrum crystal_window_modes(const CrystalMatrix& d, double lo_hz, double hi_hz,
+                                     const CrystalSpectrumConfig& config = {});
+
 }  // namespace granular

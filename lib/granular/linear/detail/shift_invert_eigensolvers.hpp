@@ -58,6 +58,13 @@ ShiftInvertResult slepc_nearest(const SymTridiagonal& t, double sigma, const Shi
 /// above: every rank passes the same matrix and assembles only the rows PETSc gives it.
 ShiftInvertResult slepc_nearest(const SparseSymmetric& a, double sigma, const ShiftInvertConfig& config);
 
+/// Every eigenpair of a sparse symmetric matrix with its eigenvalue in [lo, hi], ascending, by
+/// SLEPc's spectrum slicing (Krylov–Schur, shift-and-invert at shifts across the interval, the count
+/// below each shift from the inertia of MUMPS's LDLᵀ), collective as slepc_nearest: no count to
+/// guess, and none missed. Throws InvalidInput naming `window` unless lo < hi (both finite),
+/// naming `method` in a build without SLEPc.
+ShiftInvertResult slepc_window(const SparseSymmetric& a, double lo, double hi);
+
 /// True when the library was built with SLEPc (its component may still be missing at run time).
 bool have_slepc();
 

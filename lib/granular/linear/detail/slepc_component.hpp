@@ -13,6 +13,8 @@ struct SlepcComponent {
   ShiftInvertResult (*nearest)(const SymTridiagonal& t, double sigma, const ShiftInvertConfig& config);
   /// The same for a sparse symmetric matrix (each rank assembles the rows it owns).
   ShiftInvertResult (*nearest_sparse)(const SparseSymmetric& a, double sigma, const ShiftInvertConfig& config);
+  /// slepc_window(): every eigenpair of a sparse symmetric matrix in [lo, hi], by spectrum slicing.
+  ShiftInvertResult (*window_sparse)(const SparseSymmetric& a, double lo, double hi);
 };
 
 }  // namespace granular::detail

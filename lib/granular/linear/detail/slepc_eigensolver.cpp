@@ -92,6 +92,29 @@ ShiftInvertResult slepc_shift_invert(const SymTridiagonal& t, double sigma, cons
   return solve_nearest(a.p, n, sigma, config);
 }
 
+/// `m` as a PETSc MPIAIJ matrix over MPI_COMM_WORLD, each rank setting only the rows it owns.
+void assemble_sparse(const SparseSymmetric& m, Mat* out) {
+  const auto n = static_cast<PetscInt>(m.size());
+  // Preallocated as the tridiagonal path is, by one count for every row: the longest row, inside
+  // and outside this rank's diagonal block (every rank holds the whole matrix, so no message).
+  PetscInt longest = 0;
+  for (std::size_t i = 0; i < m.size(); ++i)
+    longest = std::max(longest, static_cast<PetscInt>(m.row_start[i + 1] - m.row_start[i]));
+  check(MatCreateAIJ(PETSC_COMM_WORLD, PETSC_DECIDE, PETSC_DECIDE, n, n, longest, nullptr, longest, nullptr, out),
+        "MatCreateAIJ");
+  PetscInt first = 0, last = 0;
+  check(MatGetOwnershipRange(*out, &first, &last), "MatGetOwnershipRange");
+  std::vector<PetscInt> cols;
+  for (PetscInt i = first; i < last; ++i) {
+    const std::size_t b = m.row_start[i], e = m.row_start[i + 1];
+    cols.assign(m.column.begin() + static_cast<std::ptrdiff_t>(b), m.column.begin() + static_cast<std::ptrdiff_t>(e));
+    check(MatSetValues(*out, 1, &i, static_cast<PetscInt>(e - b), cols.data(), m.value.data() + b, INSERT_VALUES),
+          "MatSetValues");
+  }
+  check(MatAssemblyBegin(*out, MAT_FINAL_ASSEMBLY), "MatAssemblyBegin");
+  check(MatAssemblyEnd(*out, MAT_FINAL_ASSEMBLY), "MatAssemblyEnd");
+}
+
 /// slepc_nearest() of a sparse matrix, inside the component: each rank sets its own rows.
 ShiftInvertResult slepc_shift_invert_sparse(const SparseSymmetric& m, double sigma, const ShiftInvertConfig& config) {
   const PetscInt n = static_cast<PetscInt>(m.size());
@@ -99,25 +122,8 @@ ShiftInvertResult slepc_shift_invert_sparse(const SparseSymmetric& m, double sig
   if (!std::isfinite(sigma)) throw InvalidInput("SLEPc", ": the shift must be finite");
   ensure_started();
 
-  // Preallocated as the tridiagonal path is, by one count for every row: the longest row, inside
-  // and outside this rank's diagonal block (every rank holds the whole matrix, so no message).
-  PetscInt longest = 0;
-  for (std::size_t i = 0; i < m.size(); ++i)
-    longest = std::max(longest, static_cast<PetscInt>(m.row_start[i + 1] - m.row_start[i]));
   Owned<Mat, MatDestroy> a;
-  check(MatCreateAIJ(PETSC_COMM_WORLD, PETSC_DECIDE, PETSC_DECIDE, n, n, longest, nullptr, longest, nullptr, &a.p),
-        "MatCreateAIJ");
-  PetscInt first = 0, last = 0;
-  check(MatGetOwnershipRange(a.p, &first, &last), "MatGetOwnershipRange");
-  std::vector<PetscInt> cols;
-  for (PetscInt i = first; i < last; ++i) {
-    const std::size_t b = m.row_start[i], e = m.row_start[i + 1];
-    cols.assign(m.column.begin() + static_cast<std::ptrdiff_t>(b), m.column.begin() + static_cast<std::ptrdiff_t>(e));
-    check(MatSetValues(a.p, 1, &i, static_cast<PetscInt>(e - b), cols.data(), m.value.data() + b, INSERT_VALUES),
-          "MatSetValues");
-  }
-  check(MatAssemblyBegin(a.p, MAT_FINAL_ASSEMBLY), "MatAssemblyBegin");
-  check(MatAssemblyEnd(a.p, MAT_FINAL_ASSEMBLY), "MatAssemblyEnd");
+  assemble_sparse(m, &a.p);
   return solve_nearest(a.p, n, sigma, config);
 }
 
@@ -194,10 +200,73 @@ ShiftInvertResult solve_nearest(Mat a, PetscInt n, double sigma, const ShiftInve
   return out;
 }
 
+/// slepc_window() (shift_invert_eigensolvers.hpp), inside the component: Krylov–Schur's spectrum
+/// slicing. It counts the eigenvalues below each shift from the inertia of the LDLᵀ of A − σI, so
+/// the factorization is MUMPS's Cholesky (LDLᵀ for an indefinite matrix), with ICNTL(13) = 1: MUMPS
+/// then factors the root node itself and can report the inertia on any number of ranks.
+ShiftInvertResult slepc_window_sparse(const SparseSymmetric& m, double lo, double hi) {
+  if (!(std::isfinite(lo) && std::isfinite(hi) && lo < hi)) throw InvalidInput("window", ": needs finite lo < hi");
+  const auto n = static_cast<PetscInt>(m.size());
+  ensure_started();
+  Owned<Mat, MatDestroy> a;
+  assemble_sparse(m, &a.p);
+  check(MatSetOption(a.p, MAT_SYMMETRIC, PETSC_TRUE), "MatSetOption");
+  Owned<EPS, EPSDestroy> eps;
+  check(EPSCreate(PETSC_COMM_WORLD, &eps.p), "EPSCreate");
+  check(EPSSetOperators(eps.p, a.p, nullptr), "EPSSetOperators");
+  check(EPSSetProblemType(eps.p, EPS_HEP), "EPSSetProblemType");
+  check(EPSSetType(eps.p, EPSKRYLOVSCHUR), "EPSSetType");
+  check(EPSSetWhichEigenpairs(eps.p, EPS_ALL), "EPSSetWhichEigenpairs");
+  check(EPSSetInterval(eps.p, lo, hi), "EPSSetInterval");
+  check(EPSSetTolerances(eps.p, 1e-14, PETSC_DEFAULT), "EPSSetTolerances");
+  ST st;
+  KSP ksp;
+  PC pc;
+  check(EPSGetST(eps.p, &st), "EPSGetST");
+  check(STSetType(st, STSINVERT), "STSetType");
+  check(STGetKSP(st, &ksp), "STGetKSP");
+  check(KSPSetType(ksp, KSPPREONLY), "KSPSetType");
+  check(KSPGetPC(ksp, &pc), "KSPGetPC");
+  check(PCSetType(pc, PCCHOLESKY), "PCSetType");
+  check(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS), "PCFactorSetMatSolverType");
+  // The slicing's inner solver takes its MUMPS options from the database (set, used, cleared).
+  check(PetscOptionsSetValue(nullptr, "-st_mat_mumps_icntl_13", "1"), "PetscOptionsSetValue");
+  check(EPSSetFromOptions(eps.p), "EPSSetFromOptions");
+  const PetscErrorCode solved = EPSSolve(eps.p);
+  PetscOptionsClearValue(nullptr, "-st_mat_mumps_icntl_13");
+  check(solved, "EPSSolve (spectrum slicing)");
+
+  PetscInt nconv = 0;
+  check(EPSGetConverged(eps.p, &nconv), "EPSGetConverged");
+  ShiftInvertResult out;
+  out.values.resize(static_cast<std::size_t>(nconv));
+  out.vectors.resize(n, nconv);
+  Owned<Vec, VecDestroy> x, all;
+  Owned<VecScatter, VecScatterDestroy> scatter;
+  check(MatCreateVecs(a.p, &x.p, nullptr), "MatCreateVecs");
+  check(VecScatterCreateToAll(x.p, &scatter.p, &all.p), "VecScatterCreateToAll");
+  for (PetscInt j = 0; j < nconv; ++j) {  // slicing returns them ascending
+    PetscScalar value = 0;
+    check(EPSGetEigenpair(eps.p, j, &value, nullptr, x.p, nullptr), "EPSGetEigenpair");
+    out.values[static_cast<std::size_t>(j)] = value;
+    check(VecScatterBegin(scatter.p, x.p, all.p, INSERT_VALUES, SCATTER_FORWARD), "VecScatterBegin");
+    check(VecScatterEnd(scatter.p, x.p, all.p, INSERT_VALUES, SCATTER_FORWARD), "VecScatterEnd");
+    const PetscScalar* p = nullptr;
+    check(VecGetArrayRead(all.p, &p), "VecGetArrayRead");
+    std::copy(p, p + n, out.vectors.col(j).data());
+    check(VecRestoreArrayRead(all.p, &p), "VecRestoreArrayRead");
+  }
+  if (!std::is_sorted(out.values.begin(), out.values.end()))
+    throw NumericalError("SLEPc spectrum slicing returned eigenvalues out of order");
+  if (!out.vectors.allFinite()) throw NumericalError("SLEPc returned non-finite eigenvectors");
+  return out;
+}
+
 }  // namespace granular
 
 const granular::detail::SlepcComponent* granular_slepc_component() {
   static const granular::detail::SlepcComponent component{&granular::slepc_shift_invert,
-                                                          &granular::slepc_shift_invert_sparse};
+                                                          &granular::slepc_shift_invert_sparse,
+                                                          &granular::slepc_window_sparse};
   return &component;
 }

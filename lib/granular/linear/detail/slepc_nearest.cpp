@@ -23,6 +23,12 @@ ShiftInvertResult slepc_nearest(const SparseSymmetric& a, double sigma, const Sh
   return component->nearest_sparse(a, sigma, config);
 }
 
+ShiftInvertResult slepc_window(const SparseSymmetric& a, double lo, double hi) {
+  static const detail::SlepcComponent* const component =
+      GRANULAR_COMPONENT_TABLE(detail::SlepcComponent, slepc, "the SLEPc method");
+  return component->window_sparse(a, lo, hi);
+}
+
 #else  // no SLEPc in this build
 
 bool have_slepc() { return false; }
@@ -30,6 +36,9 @@ ShiftInvertResult slepc_nearest(const SymTridiagonal&, double, const ShiftInvert
   throw InvalidInput("method", " slepc: this build has no SLEPc (configure with -DGRANULAR_WITH_SLEPC=ON)");
 }
 ShiftInvertResult slepc_nearest(const SparseSymmetric&, double, const ShiftInvertConfig&) {
+  throw InvalidInput("method", " slepc: this build has no SLEPc (configure with -DGRANULAR_WITH_SLEPC=ON)");
+}
+ShiftInvertResult slepc_window(const SparseSymmetric&, double, double) {
   throw InvalidInput("method", " slepc: this build has no SLEPc (configure with -DGRANULAR_WITH_SLEPC=ON)");
 }
 
