@@ -39,7 +39,8 @@ int main(int argc, char** argv) {
       "in its dimensionless units (time 1/omega0, energy in units of H): one central site of energy E\n"
       "(--block 0) or L central sites at energy density h, integrated by SABA2C up to --T.\n"
       "Writes PREFIX.csv (t,m2,P and, unless --mle=false, mle,mean_log10_mle: one realization's curves or the\n"
-      "means of --realizations) and PREFIX.json (every parameter, the sample rule, the energy error).",
+      "means of --realizations) and PREFIX.json (every parameter, the sample rule, the energy error and, with\n"
+      "--fit t0:t1, the exponents of m2, P and Lambda over that window).",
       "klein-gordon"};
   tool::describe_common(app);
   KleinGordonCase c;
@@ -69,6 +70,9 @@ int main(int argc, char** argv) {
                    e.time.back(), e.m2.back(), e.participation.back());
       if (!e.mle.empty()) std::fprintf(stderr, ", Lambda = %.4g", e.mle.back());
       std::fprintf(stderr, "; max energy error %.2e\n", r.max_energy_error);
+      if (const auto& x = r.exponents)
+        std::fprintf(stderr, "klein-gordon: on [%g, %g]: alpha = %.4g, alpha_P = %.4g, alpha_Lambda = %.4g\n", x->begin,
+                     x->end, x->alpha.curve, x->alpha_P.curve, x->alpha_Lambda.curve);
     }
     AtomicFile csv(paths.csv);
     write_klein_gordon_csv(csv.stream(), r);
