@@ -4,8 +4,10 @@
 // the finite-time maximal Lyapunov exponent Λ, of one realization or the means of an ensemble.
 #include <cstdio>
 #include <fstream>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 #include "common/outputs.hpp"
 #include "common/tool_main.hpp"
@@ -40,7 +42,8 @@ int main(int argc, char** argv) {
       "(--block 0) or L central sites at energy density h, integrated by SABA2C up to --T.\n"
       "Writes PREFIX.csv (t,m2,P and, unless --mle=false, mle,mean_log10_mle: one realization's curves or the\n"
       "means of --realizations) and PREFIX.json (every parameter, the sample rule, the energy error and, with\n"
-      "--fit t0:t1, the exponents of m2, P and Lambda over that window).",
+      "--fit t0:t1, the exponents of m2, P and Lambda over that window); with --energy-map, PREFIX-energy.h5\n"
+      "(realization 0's site energies E_l at every sample, the spreading tool's layout: energy, t, site).",
       "klein-gordon"};
   tool::describe_common(app);
   KleinGordonCase c;
@@ -63,6 +66,11 @@ int main(int argc, char** argv) {
     const auto claim = tool::claim_output(output, meta.command());
     check_writable(paths.csv);
     check_writable(paths.json);
+    const std::string map_path = output + "-energy.h5";
+    if (c.run.energy_map) {
+      check_writable(map_path);
+      load_hdf5_writer();  // before the run, not after it
+    }
     const KleinGordonResult r = klein_gordon_study(c);
     if (!quiet) {
       const KleinGordonEnsemble& e = r.ensemble;
@@ -78,6 +86,13 @@ int main(int argc, char** argv) {
     write_klein_gordon_csv(csv.stream(), r);
     meta.merge(describe(c, r));
     meta["output"] = paths.csv;
-    meta.write(paths.json, {&csv});
+    std::vector<PendingOutput*> files{&csv};
+    std::unique_ptr<Hdf5File> map;
+    if (c.run.energy_map) {
+      map = write_klein_gordon_energy_map(map_path, r);
+      files.push_back(map.get());
+      meta["energy_map_file"] = map_path;
+    }
+    meta.write(paths.json, files);
   });
 }

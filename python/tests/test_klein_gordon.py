@@ -20,7 +20,7 @@ def test_signature_is_the_table_with_its_cpp_defaults():
     signature = inspect.signature(gr.klein_gordon).parameters
     assert [keyword for _, keyword, _ in rows] == list(signature)
     assert {"N", "W", "seed", "energy", "block", "dt", "T", "samples", "mle", "realizations", "threads",
-            "fit"} == set(signature)
+            "fit", "energy_map"} == set(signature)
     for name, keyword, help_text in rows:
         assert signature[keyword].default == (getattr(defaults, name) or None if name == "fit" else
                                               getattr(defaults, name)), keyword
@@ -82,6 +82,26 @@ def test_exponents_are_the_tools_and_the_slopes_of_the_curves(tools):
 def test_a_bad_fit_window_is_a_value_error_naming_it(fit):
     with pytest.raises(ValueError, match="fit"):
         gr.klein_gordon(N=32, fit=fit)
+
+
+def test_energy_map_rows_sum_to_the_energy_and_equal_the_tools_file(tools):
+    import h5py
+
+    args = dict(N=64, energy=0.4, seed=3, T=300.0, samples=20, realizations=2)
+    r = gr.klein_gordon(energy_map=True, threads=2, **args)
+    assert r.energy_map.shape == (len(r.t), 64)
+    # a single site of energy E: H = E, and each row sums to it within the scheme's energy error
+    sums = r.energy_map.sum(axis=1)
+    assert np.all(np.abs(sums - 0.4) / 0.4 <= r.max_energy_error + 1e-13)
+    assert r.energy_map[0].argmax() == 31  # the excited centre site (from 0)
+    tools.run("klein-gordon", *[f"--{k}={v}" for k, v in args.items()], "--energy-map", "--quiet", output="kg")
+    with h5py.File(tools.path("kg-energy.h5"), "r") as f:
+        assert_identical(f["energy"][...], r.energy_map)
+        assert_identical(f["t"][...], r.t)
+        assert list(f["site"][...]) == list(range(1, 65))
+    assert gr.klein_gordon(N=32, T=20.0, samples=4).energy_map is None
+    with pytest.raises(ValueError, match="energy_map"):
+        gr.klein_gordon(N=10**7, samples=100, energy_map=True)
 
 
 def test_without_mle_there_is_no_lambda():

@@ -46,6 +46,7 @@ TEST(KleinGordonCase, JsonRoundTripGivesTheSameCase) {
   c.realizations = 3;
   c.threads = 2;
   c.fit = {10, 100};
+  c.run.energy_map = true;
   const nlohmann::json described = describe_rows(c, klein_gordon_parameters());
   EXPECT_EQ(described.size(), klein_gordon_parameters().size());  // every row has a key
   const KleinGordonCase back = parse_rows(nlohmann::json::parse(described.dump()), klein_gordon_parameters());
@@ -55,6 +56,7 @@ TEST(KleinGordonCase, JsonRoundTripGivesTheSameCase) {
   EXPECT_EQ(back.duration, c.duration);
   EXPECT_FALSE(back.run.mle);
   EXPECT_EQ(back.fit, c.fit);
+  EXPECT_TRUE(back.run.energy_map);
   EXPECT_EQ(described.at("fit"), nlohmann::json({10.0, 100.0}));
   EXPECT_EQ(sample_steps(back), sample_steps(c));
 }

@@ -95,7 +95,9 @@ TEST(KleinGordonExponents, BadWindowsAreRefusedNamingFit) {
   KleinGordonEnsemble e;
   e.time = kg_log_times();
   e.m2 = e.participation = kg_power_law(e.time, 1, 0.3);
-  e.runs.push_back({.time = e.time, .m2 = e.m2, .participation = e.participation, .mle = {}, .max_energy_error = 0});
+  KleinGordonRun run;  // without Λ
+  run.time = e.time, run.m2 = e.m2, run.participation = e.participation;
+  e.runs.push_back(run);
   for (const auto& [t0, t1] : std::vector<std::pair<double, double>>{{0, 10}, {10, 5}, {10, 10}, {1.1e3, 1.9e3}}) {
     try {
       klein_gordon_exponents(e, t0, t1);

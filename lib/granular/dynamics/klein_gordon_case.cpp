@@ -44,6 +44,8 @@ const ParameterTable<KleinGordonCase>& klein_gordon_parameters() {
       {"mle", path<C>(&C::run, &R::mle),
        "also the finite-time maximal Lyapunov exponent Lambda(t) [omega0] (tangent map, deviation on the centre "
        "site); on unless `mle`=false"},
+      {"energy_map", path<C>(&C::run, &R::energy_map),
+       "also the site energies E_l of realization 0 at every sample (samples x N values, at most 2e8)"},
       {"realizations", &C::realizations, "realizations 0 .. count-1 of `seed` (1 to 10^6); more than one: their means"},
       {"threads", &C::threads, "threads over realizations (0 = all cores); results do not depend on it"},
       {"fit",
@@ -91,6 +93,7 @@ void validate(const KleinGordonCase& c) {
                                        ": must be finite, at least `time_step` and at most 10^12 steps of it");
   if (c.samples < 1 || c.samples > 1000000)
     throw InvalidInput("samples", " " + std::to_string(c.samples) + ": must be in [1, 10^6]");
+  if (c.run.energy_map) validate(run_config(c));  // the map's size: samples taken × N
   // Every realization's curves are kept (the means are summed in index order afterwards).
   if (c.realizations < 1 || c.realizations > 1000000)
     throw InvalidInput("realizations", " " + std::to_string(c.realizations) + ": must be in [1, 10^6]");

@@ -41,8 +41,8 @@ std::vector<std::uint64_t> sample_steps(const KleinGordonCase& c);
 KleinGordonRunConfig run_config(const KleinGordonCase& c);
 
 /// Throws InvalidInput naming the row of a value out of range (`duration`, `samples`,
-/// `realizations`, `threads`, `fit`, and those validate(KleinGordonRunConfig) names). A `fit`
-/// window is refused unless it is {t0, t1} with 0 < t0 < t1 ≤ T holding at least 3 samples.
+/// `realizations`, `threads`, `fit`, `energy_map` (samples × N above its limit), and those validate(KleinGordonRunConfig)
+/// names). A `fit` window is refused unless it is {t0, t1} with 0 < t0 < t1 ≤ T holding at least 3 samples.
 void validate(const KleinGordonCase& c);
 
 }  // namespace granular
