@@ -4,8 +4,10 @@
 // the finite-time maximal Lyapunov exponent Λ, of one realization or the means of an ensemble.
 #include <cstdio>
 #include <fstream>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 #include "common/outputs.hpp"
 #include "common/tool_main.hpp"
@@ -39,7 +41,9 @@ int main(int argc, char** argv) {
       "in its dimensionless units (time 1/omega0, energy in units of H): one central site of energy E\n"
       "(--block 0) or L central sites at energy density h, integrated by SABA2C up to --T.\n"
       "Writes PREFIX.csv (t,m2,P and, unless --mle=false, mle,mean_log10_mle: one realization's curves or the\n"
-      "means of --realizations) and PREFIX.json (every parameter, the sample rule, the energy error).",
+      "means of --realizations) and PREFIX.json (every parameter, the sample rule, the energy error and, with\n"
+      "--fit t0:t1, the exponents of m2, P and Lambda over that window); with --energy-map, PREFIX-energy.h5\n"
+      "(realization 0's site energies E_l at every sample, the spreading tool's layout: energy, t, site).",
       "klein-gordon"};
   tool::describe_common(app);
   KleinGordonCase c;
@@ -62,6 +66,11 @@ int main(int argc, char** argv) {
     const auto claim = tool::claim_output(output, meta.command());
     check_writable(paths.csv);
     check_writable(paths.json);
+    const std::string map_path = output + "-energy.h5";
+    if (c.run.energy_map) {
+      check_writable(map_path);
+      load_hdf5_writer();  // before the run, not after it
+    }
     const KleinGordonResult r = klein_gordon_study(c);
     if (!quiet) {
       const KleinGordonEnsemble& e = r.ensemble;
@@ -69,11 +78,21 @@ int main(int argc, char** argv) {
                    e.time.back(), e.m2.back(), e.participation.back());
       if (!e.mle.empty()) std::fprintf(stderr, ", Lambda = %.4g", e.mle.back());
       std::fprintf(stderr, "; max energy error %.2e\n", r.max_energy_error);
+      if (const auto& x = r.exponents)
+        std::fprintf(stderr, "klein-gordon: on [%g, %g]: alpha = %.4g, alpha_P = %.4g, alpha_Lambda = %.4g\n", x->begin,
+                     x->end, x->alpha.curve, x->alpha_P.curve, x->alpha_Lambda.curve);
     }
     AtomicFile csv(paths.csv);
     write_klein_gordon_csv(csv.stream(), r);
     meta.merge(describe(c, r));
     meta["output"] = paths.csv;
-    meta.write(paths.json, {&csv});
+    std::vector<PendingOutput*> files{&csv};
+    std::unique_ptr<Hdf5File> map;
+    if (c.run.energy_map) {
+      map = write_klein_gordon_energy_map(map_path, r);
+      files.push_back(map.get());
+      meta["energy_map_file"] = map_path;
+    }
+    meta.write(paths.json, files);
   });
 }

@@ -17,6 +17,10 @@ class KleinGordon(Result):
     mle [omega0] (the finite-time maximal Lyapunov exponent Lambda; None with mle=False): one realization's curves,
     or their means over the realizations; mean_log10_mle: <log10 Lambda> (NaN where a Lambda <= 0); runs_m2, runs_P,
     runs_mle: each realization's, shape (realizations, samples); max_energy_error: the largest |H - H(0)| / H(0);
+    exponents: with fit=(t0, t1), the dict the tool's JSON holds under "exponents" (alpha, alpha_P, alpha_Lambda: the
+    log-log slopes of the mean curves over the window; with realizations >= 2 also each one's realization mean and
+    standard error, alpha_mean, alpha_error, ...), else None; energy_map: with energy_map=True, realization 0's site
+    energies E_l (in units of H), shape (samples, N), each row summing to H (the tool's PREFIX-energy.h5), else None;
     metadata: the tool's JSON.
     """
 
@@ -33,6 +37,9 @@ def klein_gordon(**keywords):
         raw[key] = np.asarray(raw[key], dtype=float).reshape(-1, samples) if len(raw[key]) else None
     for key in ("mle", "mean_log10_mle"):
         raw[key] = raw[key] if len(raw[key]) else None
+    raw["energy_map"] = np.asarray(raw["energy_map"], dtype=float).reshape(samples, -1) if len(raw["energy_map"]) \
+        else None
+    raw["exponents"] = raw["metadata"].get("exponents")  # the library's describe(), as the tool writes it
     return KleinGordon(raw)
 
 

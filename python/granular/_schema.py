@@ -9,8 +9,8 @@ import warnings
 
 
 def _python_default(value):
-    """A C++ default as a Python keyword shows it: an empty text or a NaN (the C++ 'none') is None."""
-    return None if value == "" or (isinstance(value, float) and math.isnan(value)) else value
+    """A C++ default as a Python keyword shows it: an empty text or list, or a NaN (the C++ 'none'), is None."""
+    return None if value == "" or value == [] or (isinstance(value, float) and math.isnan(value)) else value
 
 
 class TableKeywords:
@@ -57,6 +57,8 @@ class TableKeywords:
             value, current = given[keyword], getattr(self._defaults, name)
             if value is None and isinstance(current, str):
                 value = ""
+            elif value is None and isinstance(current, list):
+                value = []  # a window or list that may be none
             elif value is None and isinstance(current, float) and math.isnan(current):
                 value = math.nan  # a number that may be none
             elif isinstance(current, str) and isinstance(value, numbers.Real) and not isinstance(value, bool):

@@ -24,9 +24,12 @@ py::dict klein_gordon(const KleinGordonCase& c) {
     participation.insert(participation.end(), run.participation.begin(), run.participation.end());
     mle.insert(mle.end(), run.mle.begin(), run.mle.end());
   }
-  return fields("t m2 P mle mean_log10_mle runs_m2 runs_P runs_mle max_energy_error metadata", std::move(e.time),
-                std::move(e.m2), std::move(e.participation), std::move(e.mle), std::move(e.mean_log10_mle),
-                std::move(m2), std::move(participation), std::move(mle), r.max_energy_error, meta);
+  // Realization 0's site energies, sample-major (reshaped to (samples, N) in Python); empty without.
+  std::vector<double> energy_map = std::move(e.runs.front().energy_map);
+  return fields("t m2 P mle mean_log10_mle runs_m2 runs_P runs_mle energy_map max_energy_error metadata",
+                std::move(e.time), std::move(e.m2), std::move(e.participation), std::move(e.mle),
+                std::move(e.mean_log10_mle), std::move(m2), std::move(participation), std::move(mle),
+                std::move(energy_map), r.max_energy_error, meta);
 }
 
 }  // namespace

@@ -19,9 +19,11 @@ def test_signature_is_the_table_with_its_cpp_defaults():
     defaults = _core.KleinGordonCase()
     signature = inspect.signature(gr.klein_gordon).parameters
     assert [keyword for _, keyword, _ in rows] == list(signature)
-    assert {"N", "W", "seed", "energy", "block", "dt", "T", "samples", "mle", "realizations", "threads"} == set(signature)
+    assert {"N", "W", "seed", "energy", "block", "dt", "T", "samples", "mle", "realizations", "threads",
+            "fit", "energy_map"} == set(signature)
     for name, keyword, help_text in rows:
-        assert signature[keyword].default == getattr(defaults, name), keyword
+        assert signature[keyword].default == (getattr(defaults, name) or None if name == "fit" else
+                                              getattr(defaults, name)), keyword
         assert signature[keyword].kind == inspect.Parameter.KEYWORD_ONLY
         assert help_text.split(" (")[0][:30] in gr.klein_gordon.__doc__, keyword
     assert signature["dt"].default == 0.2 and signature["W"].default == 4.0
@@ -53,6 +55,53 @@ def test_an_ensemble_is_its_realizations_means_on_any_thread_count(tools):
                        "--samples", 10, "--realizations", 3, "--threads", 2, "--quiet")
     assert_identical(csv["m2"], one.m2)
     assert_identical(csv["mean_log10_mle"], one.mean_log10_mle)
+
+
+def test_exponents_are_the_tools_and_the_slopes_of_the_curves(tools):
+    args = dict(N=64, block=21, energy=0.1, seed=7, T=400.0, samples=30, realizations=3)
+    r = gr.klein_gordon(fit=(10, 400), threads=2, **args)
+    _, meta = tools.run("klein-gordon", *[f"--{k}={v}" for k, v in args.items()], "--fit", "10:400", "--quiet")
+    assert r.exponents == meta["exponents"] == r.metadata["exponents"]
+    assert r.metadata["parameters"]["fit"] == [10.0, 400.0]
+    inside = (r.t >= 10) & (r.t <= 400)
+    assert r.exponents["samples"] == inside.sum() >= 3
+    # the same least squares as numpy's, to rounding
+    log_t = np.log10(r.t[inside])
+    for key, curve in (("alpha", np.log10(r.m2)), ("alpha_P", np.log10(r.P)), ("alpha_Lambda", r.mean_log10_mle)):
+        assert r.exponents[key] == pytest.approx(np.polyfit(log_t, curve[inside], 1)[0], abs=1e-10), key
+    slopes = [np.polyfit(log_t, np.log10(m2[inside]), 1)[0] for m2 in r.runs_m2]
+    assert r.exponents["alpha_mean"] == pytest.approx(np.mean(slopes), abs=1e-10)
+    assert r.exponents["alpha_error"] == pytest.approx(np.std(slopes, ddof=1) / np.sqrt(3), abs=1e-10)
+    assert gr.klein_gordon(N=32, T=20.0, samples=4).exponents is None
+    assert gr.klein_gordon(N=32, T=20.0, samples=8, fit=None).exponents is None
+    one = gr.klein_gordon(N=32, T=20.0, samples=8, fit=[1, 20])
+    assert set(one.exponents) == {"fit", "samples", "alpha", "alpha_P", "alpha_Lambda", "definition"}
+
+
+@pytest.mark.parametrize("fit", [(0, 10), (10, 5), (10, 2e4), (100, 110), (1, 2, 3), (5,), "a:b"])
+def test_a_bad_fit_window_is_a_value_error_naming_it(fit):
+    with pytest.raises(ValueError, match="fit"):
+        gr.klein_gordon(N=32, fit=fit)
+
+
+def test_energy_map_rows_sum_to_the_energy_and_equal_the_tools_file(tools):
+    import h5py
+
+    args = dict(N=64, energy=0.4, seed=3, T=300.0, samples=20, realizations=2)
+    r = gr.klein_gordon(energy_map=True, threads=2, **args)
+    assert r.energy_map.shape == (len(r.t), 64)
+    # a single site of energy E: H = E, and each row sums to it within the scheme's energy error
+    sums = r.energy_map.sum(axis=1)
+    assert np.all(np.abs(sums - 0.4) / 0.4 <= r.max_energy_error + 1e-13)
+    assert r.energy_map[0].argmax() == 31  # the excited centre site (from 0)
+    tools.run("klein-gordon", *[f"--{k}={v}" for k, v in args.items()], "--energy-map", "--quiet", output="kg")
+    with h5py.File(tools.path("kg-energy.h5"), "r") as f:
+        assert_identical(f["energy"][...], r.energy_map)
+        assert_identical(f["t"][...], r.t)
+        assert list(f["site"][...]) == list(range(1, 65))
+    assert gr.klein_gordon(N=32, T=20.0, samples=4).energy_map is None
+    with pytest.raises(ValueError, match="energy_map"):
+        gr.klein_gordon(N=10**7, samples=100, energy_map=True)
 
 
 def test_without_mle_there_is_no_lambda():

@@ -1,5 +1,6 @@
 // The `klein-gordon` job's case (dynamics/klein_gordon_case.hpp): its samples' rule, its JSON round
 // trip through its table, and refusals naming the row.
+#include <cmath>
 #include <functional>
 #include <string>
 #include <utility>
@@ -44,6 +45,8 @@ TEST(KleinGordonCase, JsonRoundTripGivesTheSameCase) {
   c.samples = 7;
   c.realizations = 3;
   c.threads = 2;
+  c.fit = {10, 100};
+  c.run.energy_map = true;
   const nlohmann::json described = describe_rows(c, klein_gordon_parameters());
   EXPECT_EQ(described.size(), klein_gordon_parameters().size());  // every row has a key
   const KleinGordonCase back = parse_rows(nlohmann::json::parse(described.dump()), klein_gordon_parameters());
@@ -52,6 +55,9 @@ TEST(KleinGordonCase, JsonRoundTripGivesTheSameCase) {
   EXPECT_EQ(back.run.time_step, c.run.time_step);
   EXPECT_EQ(back.duration, c.duration);
   EXPECT_FALSE(back.run.mle);
+  EXPECT_EQ(back.fit, c.fit);
+  EXPECT_TRUE(back.run.energy_map);
+  EXPECT_EQ(described.at("fit"), nlohmann::json({10.0, 100.0}));
   EXPECT_EQ(sample_steps(back), sample_steps(c));
 }
 
@@ -69,6 +75,36 @@ TEST(KleinGordonCase, RefusalsNameTheRow) {
       {[](KleinGordonCase& c) { c.realizations = 0; }, "realizations"},
       {[](KleinGordonCase& c) { c.realizations = 1000001; }, "realizations"},
       {[](KleinGordonCase& c) { c.threads = -1; }, "threads"},
+      // T = 1e4 at τ = 0.2 with 50 log-spaced samples: a window inside (0, T] with 3 of them ([100, 110]: none)
+      {[](KleinGordonCase& c) {
+         c.fit = {0, 100};
+       },
+       "fit"},
+      {[](KleinGordonCase& c) {
+         c.fit = {100, 10};
+       },
+       "fit"},
+      {[](KleinGordonCase& c) {
+         c.fit = {100, 100};
+       },
+       "fit"},
+      {[](KleinGordonCase& c) {
+         c.fit = {100, 2e4};
+       },
+       "fit"},
+      {[](KleinGordonCase& c) {
+         c.fit = {100, 110};
+       },
+       "fit"},
+      {[](KleinGordonCase& c) { c.fit = {100}; }, "fit"},
+      {[](KleinGordonCase& c) {
+         c.fit = {1, 2, 3};
+       },
+       "fit"},
+      {[](KleinGordonCase& c) {
+         c.fit = {NAN, 100};
+       },
+       "fit"},
   };
   for (const auto& [change, name] : cases) {
     KleinGordonCase c;
@@ -81,6 +117,9 @@ TEST(KleinGordonCase, RefusalsNameTheRow) {
     }
   }
   EXPECT_NO_THROW(validate(KleinGordonCase{}));
+  KleinGordonCase whole;
+  whole.fit = {0.2, 1e4};  // the first sample to the last
+  EXPECT_NO_THROW(validate(whole));
 }
 
 }  // namespace

@@ -1,6 +1,8 @@
 // The DKG chain's library entry point (dynamics/klein_gordon_run.hpp): one realization from its
 // (config, index) alone, and an ensemble whose means are bit-identical on 1 and 2 threads.
+#include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <cstdio>
 #include <vector>
 
@@ -85,6 +87,42 @@ TEST(KleinGordonRun, ObservablesAreThoseOfThePlainRun) {
   EXPECT_EQ(with.participation.back(), 1 / spread.ipr);
 }
 
+// The energy map: realization 0's site energies at each sample, each row summing to H within the
+// scheme's energy error, asked without changing the run; the other realizations keep none. On 128
+// sites the energy does not reach the walls by t = 400, whose halves of the end bonds no site owns
+// (observables.hpp: unowned_wall_energy): on kg_run_case's 64 sites they hold 4e-7 of H.
+TEST(KleinGordonRun, EnergyMapRowsSumToTheEnergyWithinTheSchemesError) {
+  KleinGordonRunConfig c = kg_run_case();
+  c.chain.N = 128;
+  c.energy_map = true;
+  const KleinGordonEnsemble e = klein_gordon_ensemble(c, 3, 2);
+  const KleinGordonRun& run = e.runs[0];
+  const std::size_t n = 128, samples = run.time.size();
+  ASSERT_EQ(run.energy_map.size(), samples * n);
+  EXPECT_TRUE(e.runs[1].energy_map.empty() && e.runs[2].energy_map.empty());
+  c.energy_map = false;
+  const KleinGordonRun plain = run_klein_gordon(c, 0);
+  EXPECT_TRUE(plain.energy_map.empty());
+  EXPECT_EQ(plain.m2, run.m2);
+  EXPECT_EQ(plain.mle, run.mle);
+  const Chain chain = klein_gordon({.N = 128, .W = 4, .seed = 7, .realization = 0});
+  const ForceLaw law = make_force_law(ForceLawKind::linear, chain);
+  const double h0 = total_energy(law, chain, block_energy_kick(chain, 53, 21, 0.1, 7, 0));  // sites 53 … 73
+  double worst = 0;
+  for (std::size_t s = 0; s < samples; ++s) {
+    const std::vector<double> row(run.energy_map.begin() + static_cast<std::ptrdiff_t>(s * n),
+                                  run.energy_map.begin() + static_cast<std::ptrdiff_t>((s + 1) * n));
+    double sum = 0;
+    for (const double x : row) sum += x;
+    worst = std::max(worst, std::abs(sum - h0) / h0);
+    EXPECT_LE(std::abs(sum - h0) / h0, run.max_energy_error + 1e-13) << s;
+    const EnergySpread spread = energy_spread(row, 63);  // the row is what m2 and P were made of
+    EXPECT_EQ(spread.m2_centroid, run.m2[s]) << s;
+  }
+  std::printf("  H(0) = %.6f (21 sites at h = 0.1): rows off by at most %.2e, max_energy_error %.2e\n", h0, worst,
+              run.max_energy_error);
+}
+
 TEST(KleinGordonRun, RefusesBadInput) {
   KleinGordonRunConfig c = kg_run_case();
   c.energy = 0;
@@ -101,6 +139,16 @@ TEST(KleinGordonRun, RefusesBadInput) {
   c.time_step = 0;
   EXPECT_THROW(run_klein_gordon(c, 0), InvalidInput);
   EXPECT_THROW(klein_gordon_ensemble(kg_run_case(), 0, 1), InvalidInput);
+  c = kg_run_case();
+  c.energy_map = true;
+  c.chain.N = 100000000;
+  c.sample_steps = {1, 2, 3};  // 3e8 values
+  try {
+    run_klein_gordon(c, 0);
+    ADD_FAILURE() << "a map of 3e8 values taken";
+  } catch (const InvalidInput& e) {
+    EXPECT_EQ(e.parameter(), "energy_map") << e.what();
+  }
 }
 
 }  // namespace

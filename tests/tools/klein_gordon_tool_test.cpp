@@ -3,9 +3,11 @@
 // one thread and on two, its JSON parses back to the case and replays it (--case), and bad input
 // is one line naming the option with exit code 2 and nothing written.
 #include <gtest/gtest.h>
+#include <hdf5.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -15,7 +17,9 @@
 #include <string>
 #include <vector>
 
+#include "granular/analysis/power_law_fit.hpp"
 #include "granular/dynamics/klein_gordon_case.hpp"
+#include "granular/dynamics/klein_gordon_exponents.hpp"
 #include "granular/dynamics/klein_gordon_run.hpp"
 #include "granular/parameter_json.hpp"
 #include "tool_runner.hpp"
@@ -114,6 +118,84 @@ TEST(KleinGordonTool, EnsembleIsTheLibrarysOnOneAndTwoThreadsAndReplays) {
   std::filesystem::remove_all(dir);
 }
 
+TEST(KleinGordonTool, FitExponentsAreTheSlopesOfTheCsvsColumnsAndReplay) {
+  const std::string dir = scratch_folder("kg-fit");
+  const ToolResult r = run_tool("klein-gordon",
+                                "--N 64 --block 21 --energy 0.1 --seed 7 --T 400 --samples 30 --realizations 3 "
+                                "--threads 2 --fit 10:400 --output " +
+                                    dir + "/a");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("alpha = "), std::string::npos) << r.err;
+  const auto meta = nlohmann::json::parse(read_file(dir + "/a.json"));
+  const nlohmann::json& x = meta.at("exponents");
+  EXPECT_EQ(x.at("fit"), nlohmann::json({10.0, 400.0}));
+  EXPECT_EQ(meta.at("parameters").at("fit"), x.at("fit"));
+  auto csv = kg_columns(dir + "/a.csv");
+  const double alpha = x.at("alpha").get<double>(), alpha_p = x.at("alpha_P").get<double>();
+  EXPECT_EQ(alpha, loglog_slope(csv["t"], csv["m2"], 10, 400));
+  EXPECT_EQ(alpha_p, loglog_slope(csv["t"], csv["P"], 10, 400));
+  EXPECT_EQ(x.at("alpha_Lambda").get<double>(), log_time_slope(csv["t"], csv["mean_log10_mle"], 10, 400));
+  EXPECT_EQ(x.at("samples").get<std::size_t>(), samples_inside(csv["t"], 10, 400));
+  std::printf("  alpha = %.4f, alpha_P = %.4f, alpha_Lambda = %.4f on [10, 400]\n", alpha, alpha_p,
+              x.at("alpha_Lambda").get<double>());
+  // The realizations' slopes: the library's from the same case.
+  const KleinGordonCase c = kg_tool_case(dir, "a");
+  const KleinGordonExponents lib = klein_gordon_exponents(klein_gordon_ensemble(run_config(c), 3, 1), 10, 400);
+  EXPECT_EQ(x.at("alpha_mean").get<double>(), lib.alpha.mean);
+  EXPECT_EQ(x.at("alpha_error").get<double>(), lib.alpha.error);
+  EXPECT_EQ(x.at("alpha_P_mean").get<double>(), lib.alpha_P.mean);
+  EXPECT_EQ(x.at("alpha_Lambda_error").get<double>(), lib.alpha_Lambda.error);
+  // The window is a parameter: --case replays it.
+  const ToolResult replay = run_tool("klein-gordon", "--case " + dir + "/a.json --quiet --output " + dir + "/b");
+  ASSERT_EQ(replay.exit_code, 0) << replay.err;
+  EXPECT_EQ(nlohmann::json::parse(read_file(dir + "/b.json")).at("exponents"), x);
+  // Without --fit, no exponents.
+  ASSERT_EQ(run_tool("klein-gordon", "--N 32 --T 20 --samples 4 --quiet --output " + dir + "/c").exit_code, 0);
+  EXPECT_FALSE(nlohmann::json::parse(read_file(dir + "/c.json")).contains("exponents"));
+  std::filesystem::remove_all(dir);
+}
+
+/// A dataset of an HDF5 file, whole (empty if absent).
+std::vector<double> kg_dataset(const std::string& file, const char* name) {
+  const hid_t f = H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  if (f < 0) return {};
+  std::vector<double> data;
+  if (H5Lexists(f, name, H5P_DEFAULT) > 0) {
+    const hid_t set = H5Dopen2(f, name, H5P_DEFAULT);
+    const hid_t space = H5Dget_space(set);
+    data.resize(static_cast<std::size_t>(H5Sget_simple_extent_npoints(space)));
+    if (H5Dread(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()) < 0) data.clear();
+    H5Sclose(space);
+    H5Dclose(set);
+  }
+  H5Fclose(f);
+  return data;
+}
+
+TEST(KleinGordonTool, EnergyMapIsTheLibrarysRealizationZeroInTheSpreadingLayout) {
+  const std::string dir = scratch_folder("kg-map");
+  const ToolResult r = run_tool("klein-gordon",
+                                "--N 64 --block 21 --energy 0.1 --seed 7 --T 400 --samples 15 --realizations 2 "
+                                "--energy-map --quiet --output " +
+                                    dir + "/a");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const KleinGordonCase c = kg_tool_case(dir, "a");
+  EXPECT_TRUE(c.run.energy_map);
+  const KleinGordonRun run = run_klein_gordon(run_config(c), 0);
+  const std::string map = dir + "/a-energy.h5";
+  EXPECT_EQ(kg_dataset(map, "energy"), run.energy_map);  // bit for bit
+  EXPECT_EQ(kg_dataset(map, "t"), run.time);
+  const std::vector<double> site = kg_dataset(map, "site");
+  ASSERT_EQ(site.size(), 64U);
+  EXPECT_EQ(site.front(), 1.0);
+  EXPECT_EQ(site.back(), 64.0);
+  EXPECT_EQ(nlohmann::json::parse(read_file(dir + "/a.json")).at("energy_map_file").get<std::string>(), map);
+  // Without --energy-map, no file.
+  ASSERT_EQ(run_tool("klein-gordon", "--N 32 --T 20 --samples 4 --quiet --output " + dir + "/b").exit_code, 0);
+  EXPECT_FALSE(std::filesystem::exists(dir + "/b-energy.h5"));
+  std::filesystem::remove_all(dir);
+}
+
 TEST(KleinGordonTool, WithoutMleThereAreNoLambdaColumns) {
   const std::string dir = scratch_folder("kg-nomle");
   ASSERT_EQ(run_tool("klein-gordon", "--N 32 --T 20 --samples 4 --mle=false --quiet --output " + dir + "/a").exit_code,
@@ -141,6 +223,13 @@ TEST(KleinGordonTool, BadInputIsOneLineNamingTheOptionAndWritesNothing) {
       {"--realizations 1e20", "--realizations"},
       {"--N 1e9", "--N"},
       {"--threads -1", "--threads"},
+      {"--fit 0:100", "--fit"},
+      {"--fit 100:10", "--fit"},
+      {"--fit 100:2e4", "--fit"},  // past T = 1e4
+      {"--fit 100:110", "--fit"},  // no sample inside
+      {"--fit 100", "--fit"},
+      {"--fit a:b", "--fit"},
+      {"--energy-map --N 1e7 --samples 100", "--energy-map"},  // about 8.5e8 values
       {"--bogus 3", "bogus"},
       {"--case " + dir + "/none.json", "--case"},
       {"--case " + dir + "/none.json --N 10", "--case"},  // the file's case or the flags, not both
@@ -152,6 +241,7 @@ TEST(KleinGordonTool, BadInputIsOneLineNamingTheOptionAndWritesNothing) {
     EXPECT_NE(r.err.find(names), std::string::npos) << args << ": " << r.err;
     EXPECT_FALSE(std::filesystem::exists(dir + "/out.csv")) << args;
     EXPECT_FALSE(std::filesystem::exists(dir + "/out.json")) << args;
+    EXPECT_FALSE(std::filesystem::exists(dir + "/out-energy.h5")) << args;
   }
   std::filesystem::remove_all(dir);
 }

@@ -1,6 +1,7 @@
 #include "granular/analysis/power_law_fit.hpp"
 
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "granular/analysis/log_derivative.hpp"
@@ -34,32 +35,67 @@ ExponentEstimate over_sub_windows(double lo, double hi, const Estimate& estimate
   return e;
 }
 
-}  // namespace
-
-LineFit fit_power_law(const std::vector<double>& t, const std::vector<double>& y, double lo, double hi) {
-  if (t.size() != y.size()) throw InvalidInput("fit_power_law: t and y differ in length");
+// The least-squares line through the points (x_i, y_i), i < n, of the sums Σx, Σy, Σx², Σxy:
+// the one home of the formula that fit_power_law and log_time_slope share.
+struct LineSums {
   double sx = 0, sy = 0, sxx = 0, sxy = 0;
   std::size_t n = 0;
-  for (std::size_t i = 0; i < t.size(); ++i) {
-    if (!(inside(t[i], lo, hi) && t[i] > 0 && y[i] > 0)) continue;
-    const double x = std::log(t[i]), v = std::log(y[i]);
+  void add(double x, double v) {
     sx += x;
     sy += v;
     sxx += x * x;
     sxy += x * v;
     ++n;
   }
-  if (n < 2)
-    throw InvalidInput("fit window [" + std::to_string(lo) + ", " + std::to_string(hi) + "] s holds " +
-                       std::to_string(n) + " usable samples; need 2 (more samples or a wider fit interval)");
-  const double nn = static_cast<double>(n);
-  const double denominator = nn * sxx - sx * sx;
-  if (!(denominator > 0)) throw InvalidInput("fit window has a single distinct time");
-  LineFit f;
-  f.slope = (nn * sxy - sx * sy) / denominator;
-  f.intercept = (sy - f.slope * sx) / nn;
-  f.points = n;
-  return f;
+  LineFit line(double lo, double hi) const {
+    if (n < 2)
+      throw InvalidInput("fit window [" + std::to_string(lo) + ", " + std::to_string(hi) + "] holds " +
+                         std::to_string(n) + " usable samples; need 2 (more samples or a wider fit interval)");
+    const double nn = static_cast<double>(n);
+    const double denominator = nn * sxx - sx * sx;
+    if (!(denominator > 0)) throw InvalidInput("fit window has a single distinct time");
+    LineFit f;
+    f.slope = (nn * sxy - sx * sy) / denominator;
+    f.intercept = (sy - f.slope * sx) / nn;
+    f.points = n;
+    return f;
+  }
+};
+
+}  // namespace
+
+LineFit fit_power_law(const std::vector<double>& t, const std::vector<double>& y, double lo, double hi) {
+  if (t.size() != y.size()) throw InvalidInput("fit_power_law: t and y differ in length");
+  LineSums sums;
+  for (std::size_t i = 0; i < t.size(); ++i)
+    if (inside(t[i], lo, hi) && t[i] > 0 && y[i] > 0) sums.add(std::log(t[i]), std::log(y[i]));
+  return sums.line(lo, hi);
+}
+
+std::size_t samples_inside(const std::vector<double>& t, double lo, double hi) {
+  std::size_t n = 0;
+  for (const double x : t) n += inside(x, lo, hi) ? 1 : 0;
+  return n;
+}
+
+double log_time_slope(const std::vector<double>& t, const std::vector<double>& v, double lo, double hi) {
+  if (t.size() != v.size()) throw InvalidInput("log_time_slope: t and v differ in length");
+  LineSums sums;
+  bool finite = true;
+  for (std::size_t i = 0; i < t.size(); ++i)
+    if (inside(t[i], lo, hi) && t[i] > 0) {
+      finite = finite && std::isfinite(v[i]);
+      sums.add(std::log10(t[i]), v[i]);
+    }
+  const LineFit f = sums.line(lo, hi);
+  return finite ? f.slope : std::numeric_limits<double>::quiet_NaN();
+}
+
+double loglog_slope(const std::vector<double>& t, const std::vector<double>& y, double lo, double hi) {
+  std::vector<double> v(y.size());
+  for (std::size_t i = 0; i < y.size(); ++i)
+    v[i] = y[i] > 0 ? std::log10(y[i]) : std::numeric_limits<double>::quiet_NaN();
+  return log_time_slope(t, v, lo, hi);
 }
 
 ExponentEstimate windowed_exponent(const std::vector<double>& t, const std::vector<double>& y, double lo, double hi) {

@@ -26,6 +26,18 @@ struct LineFit {
 /// Throws InvalidInput if fewer than 2 points qualify.
 LineFit fit_power_law(const std::vector<double>& t, const std::vector<double>& y, double lo, double hi);
 
+/// How many of the times t lie in [lo, hi] (edges as above).
+std::size_t samples_inside(const std::vector<double>& t, double lo, double hi);
+
+/// Least-squares slope of v against log10 t over the samples with lo ≤ t ≤ hi (edges as above;
+/// every t > 0): how fast a logarithm such as ⟨log10 Λ⟩ grows per decade. NaN if a v there is
+/// not finite. Throws InvalidInput if fewer than 2 samples (or a single distinct time) are inside.
+double log_time_slope(const std::vector<double>& t, const std::vector<double>& v, double lo, double hi);
+
+/// The exponent s of y ∝ t^s: log_time_slope of log10 y, NaN if a y inside is ≤ 0 (unlike
+/// fit_power_law, which skips such samples, a curve that touches 0 in the window has no exponent).
+double loglog_slope(const std::vector<double>& t, const std::vector<double>& y, double lo, double hi);
+
 struct ExponentEstimate {
   double value = 0;            ///< the estimate
   double error = 0;            ///< standard deviation over the six sub-windows

@@ -23,6 +23,8 @@ struct KleinGordonCase {
   long samples = 50;               ///< sample times, log-spaced from τ to T (repeated steps dropped)
   unsigned long realizations = 1;  ///< realizations 0 … count − 1 of `seed`; more than one: their means
   int threads = 0;                 ///< over realizations; 0: every core. Results do not depend on it
+  /// The exponents' window {t0, t1} [1/ω₀] (klein_gordon_exponents.hpp); empty: no exponents.
+  std::vector<double> fit{};
 };
 
 /// The case's rows, in the order front ends show them: the chain, the excitation, the run, the ensemble.
@@ -39,7 +41,8 @@ std::vector<std::uint64_t> sample_steps(const KleinGordonCase& c);
 KleinGordonRunConfig run_config(const KleinGordonCase& c);
 
 /// Throws InvalidInput naming the row of a value out of range (`duration`, `samples`,
-/// `realizations`, `threads`, and those validate(KleinGordonRunConfig) names).
+/// `realizations`, `threads`, `fit`, `energy_map` (samples × N above its limit), and those validate(KleinGordonRunConfig)
+/// names). A `fit` window is refused unless it is {t0, t1} with 0 < t0 < t1 ≤ T holding at least 3 samples.
 void validate(const KleinGordonCase& c);
 
 }  // namespace granular

@@ -29,6 +29,11 @@ void validate(const KleinGordonRunConfig& c) {
   if (c.sample_steps.empty()) throw InvalidInput("sample_steps", ": at least one sample");
   if (!std::is_sorted(c.sample_steps.begin(), c.sample_steps.end()))
     throw InvalidInput("sample_steps", ": must be sorted");
+  const double values = static_cast<double>(c.sample_steps.size()) * static_cast<double>(c.chain.N);
+  if (c.energy_map && values > klein_gordon_energy_map_limit)
+    throw InvalidInput("energy_map", ": " + std::to_string(c.sample_steps.size()) + " samples x N = " +
+                                         std::to_string(c.chain.N) + " sites = " + format_number(values) +
+                                         " values, above 2e8 (1.6 GB): fewer `samples` or sites");
 }
 
 KleinGordonRun run_klein_gordon(const KleinGordonRunConfig& config, std::uint64_t realization) {
@@ -62,6 +67,7 @@ KleinGordonRun run_klein_gordon(const KleinGordonRunConfig& config, std::uint64_
     out.m2.push_back(spread.m2_centroid);
     out.participation.push_back(spread.ipr > 0 ? 1 / spread.ipr : 0.0);
     if (config.mle) out.mle.push_back(tangent->mle());
+    if (config.energy_map) out.energy_map.insert(out.energy_map.end(), energy.begin(), energy.end());
     out.max_energy_error = std::max(out.max_energy_error, std::abs(total_energy(law, chain, s) - h0) / h0);
   }
   return out;
@@ -72,7 +78,10 @@ KleinGordonEnsemble klein_gordon_ensemble(const KleinGordonRunConfig& config, st
   if (count < 1) throw InvalidInput("realizations", ": at least 1");
   KleinGordonEnsemble out;
   out.runs.resize(count);
-  parallel_realizations(count, threads, [&](std::size_t r, int) { out.runs[r] = run_klein_gordon(config, r); });
+  KleinGordonRunConfig others = config;  // realization 0's map only: the rest would cost R times the memory
+  others.energy_map = false;
+  parallel_realizations(count, threads,
+                        [&](std::size_t r, int) { out.runs[r] = run_klein_gordon(r == 0 ? config : others, r); });
   const std::size_t samples = config.sample_steps.size();
   out.time = out.runs.front().time;
   out.m2.assign(samples, 0.0);

@@ -33,10 +33,16 @@ struct KleinGordonRunConfig {
   double time_step = 0.2;                   ///< τ [1/ω₀], > 0
   std::vector<std::uint64_t> sample_steps;  ///< steps from the start, increasing, at least one
   bool mle = true;                          ///< also the finite-time mLE Λ(t)
+  /// Also the site energies E_l at every sample (KleinGordonRun::energy_map); an ensemble keeps
+  /// realization 0's only. At most klein_gordon_energy_map_limit values (samples × N).
+  bool energy_map = false;
 };
 
-/// Throws InvalidInput naming `N`, `W`, `energy`, `block`, `time_step` or `sample_steps` unless
-/// `config` is one run_klein_gordon takes.
+/// The most values (samples × N) an energy map may hold: 2e8 doubles, 1.6 GB.
+inline constexpr double klein_gordon_energy_map_limit = 2e8;
+
+/// Throws InvalidInput naming `N`, `W`, `energy`, `block`, `time_step`, `sample_steps` or
+/// `energy_map` (beyond its limit) unless `config` is one run_klein_gordon takes.
 void validate(const KleinGordonRunConfig& config);
 
 /// One realization's curves at the sample times.
@@ -46,6 +52,11 @@ struct KleinGordonRun {
   std::vector<double> participation;  ///< P [sites]
   std::vector<double> mle;            ///< Λ(t) [ω₀]; empty without `mle`
   double max_energy_error = 0;        ///< max over samples of |H − H(0)| / H(0)
+  /// With `energy_map`: E_l at sample s as energy_map[s N + l] (samples × N, row-major, l from 0):
+  /// the site energies m2 and P are made of, each row summing to H but for the walls' halves of the
+  /// two end bonds (observables.hpp: unowned_wall_energy, nil until the energy reaches an end);
+  /// empty otherwise.
+  std::vector<double> energy_map;
 };
 
 /// Realization `realization` of `config`. Throws as validate.

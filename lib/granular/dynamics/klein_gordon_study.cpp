@@ -16,6 +16,7 @@ KleinGordonResult klein_gordon_study(const KleinGordonCase& c) {
   r.ensemble = klein_gordon_ensemble(config, c.realizations, c.threads);
   for (const KleinGordonRun& run : r.ensemble.runs)
     r.max_energy_error = std::max(r.max_energy_error, run.max_energy_error);
+  if (c.fit.size() == 2) r.exponents = klein_gordon_exponents(r.ensemble, c.fit[0], c.fit[1]);
   return r;
 }
 
@@ -34,6 +35,7 @@ nlohmann::json describe(const KleinGordonCase& c, const KleinGordonResult& r) {
       {"mean_log10_mle", "<log10 Lambda> over the realizations"}};
   meta["realizations"] = r.ensemble.runs.size();
   meta["max_energy_error"] = r.max_energy_error;
+  if (r.exponents) meta["exponents"] = describe(*r.exponents, r.ensemble.runs.size(), !r.ensemble.mle.empty());
   return meta;
 }
 

@@ -99,11 +99,16 @@ void write_spectrum_csv(std::ostream& out, const SpreadingResult& r) {
 }
 
 std::unique_ptr<Hdf5File> write_energy_map(const std::string& path, const SpreadingResult& r, std::size_t stride) {
+  return write_energy_map(path, r.map_t, r.map_energy, r.map_columns, stride);
+}
+
+std::unique_ptr<Hdf5File> write_energy_map(const std::string& path, const std::vector<double>& t,
+                                           const std::vector<double>& energy, std::size_t columns, std::size_t stride) {
   std::vector<double> sites;
-  for (std::size_t k = 0; k < r.map_columns; ++k) sites.push_back(static_cast<double>(k * stride + 1));
+  for (std::size_t k = 0; k < columns; ++k) sites.push_back(static_cast<double>(k * stride + 1));
   auto file = std::make_unique<Hdf5File>(path);
-  file->write("energy", r.map_energy.data(), r.map_t.size(), r.map_columns);
-  file->write("t", r.map_t);
+  file->write("energy", energy.data(), t.size(), columns);
+  file->write("t", t);
   file->write("site", sites);
   return file;
 }

@@ -42,6 +42,10 @@ void write_lyapunov_csv(std::ostream& out, const SpreadingResult& run);
 /// site (the first bead of each column, from 1; `stride` beads per column). Written under its
 /// temporary name and returned uncommitted, as AtomicFile is (Hdf5File::commit puts it in place).
 std::unique_ptr<Hdf5File> write_energy_map(const std::string& path, const SpreadingResult& run, std::size_t stride);
+/// The same layout of any chain's map, the one writer of both: `energy` rows × columns (row k at t[k]),
+/// t and site (the first site of each column, from 1; `stride` sites per column), in the caller's units.
+std::unique_ptr<Hdf5File> write_energy_map(const std::string& path, const std::vector<double>& t,
+                                           const std::vector<double>& energy, std::size_t columns, std::size_t stride);
 
 /// The CLVs of a run (run.covariant) as rows, sample by sample and in each CLV by CLV: row s k + i is
 /// CLV_{i+1} at sample s, δu_1..δu_N [dimensionless] then δv_1..δv_N [1/s] (what PREFIX-clv.h5 holds).
