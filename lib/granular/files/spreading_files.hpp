@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include <nlohmann/json_fwd.hpp>
+#include <nlohmann/json.hpp>  // SpreadingDescription holds json values
 
 #include "granular/io/atomic_file.hpp"
 #include "granular/io/hdf5_file.hpp"
