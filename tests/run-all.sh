@@ -104,7 +104,7 @@ if ! quick; then
   export LSAN_OPTIONS=suppressions="$top/tests/lsan-suppressions.txt"
   export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
   # Tests that start MPI (mpirun, or PETSc/SLEPc in-process).
-  mpi_tests='MpiRanks|slepc_mpi|PartialSpectrum|MethodsAgree|partial_spectrum|NodeCountCheck|tool_components|SlepcSparse|CrystalTool.NearestModes|CrystalIprMapTool.WritesTheLibrarysMap'
+  mpi_tests='MpiRanks|slepc_mpi|PartialSpectrum|MethodsAgree|partial_spectrum|NodeCountCheck|tool_components|SlepcSparse|CrystalTool.NearestModes|CrystalTool.BadInput|CrystalIprMapTool.WritesTheLibrarysMap'
   ctest --test-dir build-sanitize -j"$jobs" --output-on-failure -LE long -E "$mpi_tests" | tee "$logs/pass2"
   count "$logs/pass2"
   # Once MPI is initialised (mpirun, or PETSc/SLEPc in-process), Open MPI's dlopen'ed plugins and

@@ -147,7 +147,7 @@ TEST(CrystalTool, BadInputIsOneLineNamingTheOptionAndWritesNothing) {
       {"--window 3:1", "--window"},
       {"--near 10 --window 1:2", "--window"},
       {"--window 100:200", "--window from 100 kHz: above"},
-      {"--window 0.001:0.002", "--window"},  // no mode in it (the lowest is near 1 kHz)
+      {"--window 0.001:0.002", "--window"},  // no mode in it (the lowest is near 1 kHz): SLEPc, so MPI, ran
       {"--ratio-lo 30 --ratio-hi 10", "--ratio-hi"},
       {"--boundary periodic --strain 0.01", "packing"},  // the compressed periodic square lattice is not rigid
   };
