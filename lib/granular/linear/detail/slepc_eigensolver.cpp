@@ -127,6 +127,50 @@ ShiftInvertResult slepc_shift_invert_sparse(const SparseSymmetric& m, double sig
   return solve_nearest(a.p, n, sigma, config);
 }
 
+namespace {
+
+/// Shift-and-invert with a direct factorization (`factor`: PCLU or PCCHOLESKY) by MUMPS, which
+/// pivots (A − σI is indefinite) and runs on any number of ranks.
+void use_mumps_shift_invert(EPS eps, PCType factor) {
+  ST st;
+  KSP ksp;
+  PC pc;
+  check(EPSGetST(eps, &st), "EPSGetST");
+  check(STSetType(st, STSINVERT), "STSetType");
+  check(STGetKSP(st, &ksp), "STGetKSP");
+  check(KSPSetType(ksp, KSPPREONLY), "KSPSetType");
+  check(KSPGetPC(ksp, &pc), "KSPGetPC");
+  check(PCSetType(pc, factor), "PCSetType");
+  check(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS), "PCFactorSetMatSolverType");
+}
+
+/// Eigenpairs `which` of the solved `eps` (on matrix `a`) into `out`, in that order: the values,
+/// and every vector gathered on every rank.
+void gather_pairs(EPS eps, Mat a, const std::vector<PetscInt>& which, ShiftInvertResult& out) {
+  PetscInt n = 0;
+  check(MatGetSize(a, &n, nullptr), "MatGetSize");
+  out.values.resize(which.size());
+  out.vectors.resize(n, static_cast<Eigen::Index>(which.size()));
+  Owned<Vec, VecDestroy> x, all;
+  Owned<VecScatter, VecScatterDestroy> scatter;
+  check(MatCreateVecs(a, &x.p, nullptr), "MatCreateVecs");
+  check(VecScatterCreateToAll(x.p, &scatter.p, &all.p), "VecScatterCreateToAll");
+  for (std::size_t j = 0; j < which.size(); ++j) {
+    PetscScalar value = 0;
+    check(EPSGetEigenpair(eps, which[j], &value, nullptr, x.p, nullptr), "EPSGetEigenpair");
+    out.values[j] = value;
+    check(VecScatterBegin(scatter.p, x.p, all.p, INSERT_VALUES, SCATTER_FORWARD), "VecScatterBegin");
+    check(VecScatterEnd(scatter.p, x.p, all.p, INSERT_VALUES, SCATTER_FORWARD), "VecScatterEnd");
+    const PetscScalar* p = nullptr;
+    check(VecGetArrayRead(all.p, &p), "VecGetArrayRead");
+    std::copy(p, p + n, out.vectors.col(static_cast<Eigen::Index>(j)).data());
+    check(VecRestoreArrayRead(all.p, &p), "VecRestoreArrayRead");
+  }
+  if (!out.vectors.allFinite()) throw NumericalError("SLEPc returned non-finite eigenvectors");
+}
+
+}  // namespace
+
 ShiftInvertResult solve_nearest(Mat a, PetscInt n, double sigma, const ShiftInvertConfig& config) {
   const PetscInt nev = config.count;
   Owned<EPS, EPSDestroy> eps;
@@ -142,18 +186,7 @@ ShiftInvertResult solve_nearest(Mat a, PetscInt n, double sigma, const ShiftInve
   // 1e-14: tight enough for 1e-10 relative eigenvalues; machine precision would not converge.
   check(EPSSetTolerances(eps.p, config.tolerance > 0 ? config.tolerance : 1e-14, config.max_restarts),
         "EPSSetTolerances");
-  ST st;
-  KSP ksp;
-  PC pc;
-  check(EPSGetST(eps.p, &st), "EPSGetST");
-  check(STSetType(st, STSINVERT), "STSetType");
-  check(STGetKSP(st, &ksp), "STGetKSP");
-  check(KSPSetType(ksp, KSPPREONLY), "KSPSetType");
-  check(KSPGetPC(ksp, &pc), "KSPGetPC");
-  check(PCSetType(pc, PCLU), "PCSetType");
-  // MUMPS pivots (T − σI is indefinite) and runs on any number of ranks, so -np 1 and -np P
-  // use the same factorization.
-  check(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS), "PCFactorSetMatSolverType");
+  use_mumps_shift_invert(eps.p, PCLU);  // the same factorization on -np 1 and -np P
   check(EPSSetFromOptions(eps.p), "EPSSetFromOptions");
   check(EPSSolve(eps.p), "EPSSolve");
 
@@ -180,23 +213,7 @@ ShiftInvertResult solve_nearest(Mat a, PetscInt n, double sigma, const ShiftInve
 
   ShiftInvertResult out;
   out.restarts = static_cast<int>(its);
-  out.values.resize(nev);
-  out.vectors.resize(n, nev);
-  Owned<Vec, VecDestroy> x, all;
-  Owned<VecScatter, VecScatterDestroy> scatter;
-  check(MatCreateVecs(a, &x.p, nullptr), "MatCreateVecs");
-  check(VecScatterCreateToAll(x.p, &scatter.p, &all.p), "VecScatterCreateToAll");
-  for (PetscInt j = 0; j < nev; ++j) {
-    check(EPSGetEigenpair(eps.p, order[j], nullptr, nullptr, x.p, nullptr), "EPSGetEigenpair");
-    out.values[j] = values[order[j]];
-    check(VecScatterBegin(scatter.p, x.p, all.p, INSERT_VALUES, SCATTER_FORWARD), "VecScatterBegin");
-    check(VecScatterEnd(scatter.p, x.p, all.p, INSERT_VALUES, SCATTER_FORWARD), "VecScatterEnd");
-    const PetscScalar* p = nullptr;
-    check(VecGetArrayRead(all.p, &p), "VecGetArrayRead");
-    std::copy(p, p + n, out.vectors.col(j).data());
-    check(VecRestoreArrayRead(all.p, &p), "VecRestoreArrayRead");
-  }
-  if (!out.vectors.allFinite()) throw NumericalError("SLEPc returned non-finite eigenvectors");
+  gather_pairs(eps.p, a, order, out);
   return out;
 }
 
@@ -206,7 +223,6 @@ ShiftInvertResult solve_nearest(Mat a, PetscInt n, double sigma, const ShiftInve
 /// then factors the root node itself and can report the inertia on any number of ranks.
 ShiftInvertResult slepc_window_sparse(const SparseSymmetric& m, double lo, double hi) {
   if (!(std::isfinite(lo) && std::isfinite(hi) && lo < hi)) throw InvalidInput("window", ": needs finite lo < hi");
-  const auto n = static_cast<PetscInt>(m.size());
   ensure_started();
   Owned<Mat, MatDestroy> a;
   assemble_sparse(m, &a.p);
@@ -219,16 +235,7 @@ ShiftInvertResult slepc_window_sparse(const SparseSymmetric& m, double lo, doubl
   check(EPSSetWhichEigenpairs(eps.p, EPS_ALL), "EPSSetWhichEigenpairs");
   check(EPSSetInterval(eps.p, lo, hi), "EPSSetInterval");
   check(EPSSetTolerances(eps.p, 1e-14, PETSC_DEFAULT), "EPSSetTolerances");
-  ST st;
-  KSP ksp;
-  PC pc;
-  check(EPSGetST(eps.p, &st), "EPSGetST");
-  check(STSetType(st, STSINVERT), "STSetType");
-  check(STGetKSP(st, &ksp), "STGetKSP");
-  check(KSPSetType(ksp, KSPPREONLY), "KSPSetType");
-  check(KSPGetPC(ksp, &pc), "KSPGetPC");
-  check(PCSetType(pc, PCCHOLESKY), "PCSetType");
-  check(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS), "PCFactorSetMatSolverType");
+  use_mumps_shift_invert(eps.p, PCCHOLESKY);  // LDLᵀ: its inertia counts the eigenvalues below a shift
   // The slicing's inner solver takes its MUMPS options from the database (set, used, cleared).
   check(PetscOptionsSetValue(nullptr, "-st_mat_mumps_icntl_13", "1"), "PetscOptionsSetValue");
   check(EPSSetFromOptions(eps.p), "EPSSetFromOptions");
@@ -238,27 +245,12 @@ ShiftInvertResult slepc_window_sparse(const SparseSymmetric& m, double lo, doubl
 
   PetscInt nconv = 0;
   check(EPSGetConverged(eps.p, &nconv), "EPSGetConverged");
+  std::vector<PetscInt> every(static_cast<std::size_t>(nconv));
+  std::iota(every.begin(), every.end(), 0);  // slicing returns them ascending
   ShiftInvertResult out;
-  out.values.resize(static_cast<std::size_t>(nconv));
-  out.vectors.resize(n, nconv);
-  Owned<Vec, VecDestroy> x, all;
-  Owned<VecScatter, VecScatterDestroy> scatter;
-  check(MatCreateVecs(a.p, &x.p, nullptr), "MatCreateVecs");
-  check(VecScatterCreateToAll(x.p, &scatter.p, &all.p), "VecScatterCreateToAll");
-  for (PetscInt j = 0; j < nconv; ++j) {  // slicing returns them ascending
-    PetscScalar value = 0;
-    check(EPSGetEigenpair(eps.p, j, &value, nullptr, x.p, nullptr), "EPSGetEigenpair");
-    out.values[static_cast<std::size_t>(j)] = value;
-    check(VecScatterBegin(scatter.p, x.p, all.p, INSERT_VALUES, SCATTER_FORWARD), "VecScatterBegin");
-    check(VecScatterEnd(scatter.p, x.p, all.p, INSERT_VALUES, SCATTER_FORWARD), "VecScatterEnd");
-    const PetscScalar* p = nullptr;
-    check(VecGetArrayRead(all.p, &p), "VecGetArrayRead");
-    std::copy(p, p + n, out.vectors.col(j).data());
-    check(VecRestoreArrayRead(all.p, &p), "VecRestoreArrayRead");
-  }
+  gather_pairs(eps.p, a.p, every, out);
   if (!std::is_sorted(out.values.begin(), out.values.end()))
     throw NumericalError("SLEPc spectrum slicing returned eigenvalues out of order");
-  if (!out.vectors.allFinite()) throw NumericalError("SLEPc returned non-finite eigenvectors");
   return out;
 }
 
