@@ -184,6 +184,10 @@ StaticState static_state(const Packing& p, const StaticConfig& config) {
   // The pattern is the contact network's: analyse it once.
   cholesky.analyzePattern(hessian(p, n, s));
   s.imbalance = imbalance(p, n, s, g);
+  // A chord Newton: the Hessian is factored again only when the last step was not a full Newton
+  // step that cut the imbalance tenfold; otherwise the next step reuses the factors (one solve, not
+  // a factorization: the Hessian moves little near the solution, and its factorization dominates).
+  bool refactor = true;
   while (s.imbalance > config.tolerance) {
     if (s.iterations == config.max_iterations)
       not_rigid(p, "Newton's method left a force imbalance of " + format_number(s.imbalance) + " after " +
@@ -193,17 +197,22 @@ StaticState static_state(const Packing& p, const StaticConfig& config) {
                                           : ""));
     // Newton's step where the Hessian is positive definite; elsewhere (a start with open contacts
     // and beads that carry nothing, or a saddle) a Levenberg step (H + μI), μ raised until it is.
-    const Eigen::SparseMatrix<double> h = hessian(p, n, s);
-    cholesky.factorize(h);
-    if (!positive(cholesky)) {
-      Eigen::SparseMatrix<double> identity(h.rows(), h.cols());
-      identity.setIdentity();
-      const double scale = h.diagonal().cwiseAbs().maxCoeff();
-      for (double mu = 1e-10 * scale;; mu *= 100) {
-        if (mu > 1e4 * scale)
-          not_rigid(p, "no positive definite step from a force imbalance " + format_number(s.imbalance));
-        cholesky.factorize(h + mu * identity);
-        if (positive(cholesky)) break;
+    const bool fresh = refactor;
+    bool levenberg = false;
+    if (fresh) {
+      const Eigen::SparseMatrix<double> h = hessian(p, n, s);
+      cholesky.factorize(h);
+      if (!positive(cholesky)) {
+        levenberg = true;
+        Eigen::SparseMatrix<double> identity(h.rows(), h.cols());
+        identity.setIdentity();
+        const double scale = h.diagonal().cwiseAbs().maxCoeff();
+        for (double mu = 1e-10 * scale;; mu *= 100) {
+          if (mu > 1e4 * scale)
+            not_rigid(p, "no positive definite step from a force imbalance " + format_number(s.imbalance));
+          cholesky.factorize(h + mu * identity);
+          if (positive(cholesky)) break;
+        }
       }
     }
     const Eigen::VectorXd step = cholesky.solve(-g);
@@ -222,15 +231,21 @@ StaticState static_state(const Packing& p, const StaticConfig& config) {
       if (t < 1e-12) break;
     }
     if (t < 1e-12) {
+      if (!fresh) {  // the old factors no longer give a useful step: factor the Hessian here
+        refactor = true;
+        continue;
+      }
       // At the rounding floor no step lowers the residual any more: accept a balanced state.
       if (s.imbalance <= 1e3 * config.tolerance) break;
       not_rigid(p, "no Newton step lowers its force imbalance " + format_number(s.imbalance));
     }
     z += t * step;
     trial.iterations = s.iterations + 1;
+    const double before = s.imbalance;
     s = std::move(trial);
     g = std::move(g_trial);
     s.imbalance = imbalance(p, n, s, g);
+    refactor = levenberg || t < 1 || s.imbalance > 0.25 * before;
   }
   cholesky.factorize(hessian(p, n, s));
   s.rigid = positive(cholesky);

@@ -2,7 +2,8 @@
 // The static state of a packing (docs/crystals.md, "The static state"): bead positions at which
 // every bead's Hertz normal contact forces F = A δ^{3/2} balance, found by Newton's method on the
 // contact network, with the energy Hessian as the Jacobian (a supernodal sparse Cholesky, CHOLMOD) and a backtracking
-// line search (a step must lower the energy or the force residual), started from the packing's
+// line search (a step must lower the energy or the force residual); a step reuses the last factors
+// while steps keep cutting the imbalance fourfold (a chord step), started from the packing's
 // uniformly compressed lattice. Where the Hessian is not positive definite (open contacts at the
 // start leave beads that carry nothing) the step is a Levenberg one, H + μI.
 //
@@ -59,7 +60,7 @@ struct StaticState {
   std::vector<double> wall_overlap, wall_force, wall_stiffness;  ///< δ [m], f [N], k_n [N/m]
   std::vector<std::size_t> open_contacts;                        ///< indices of contacts with δ ≤ 0
   std::vector<std::size_t> open_wall_contacts;                   ///< indices of wall contacts with δ ≤ 0
-  int iterations = 0;                                            ///< Newton steps taken
+  int iterations = 0;                                            ///< Newton steps taken, chord steps included
   double imbalance = 0;  ///< max over beads of |Σ forces| / Σ |forces| (and over free walls, / load)
   bool rigid = false;    ///< the Hessian is positive definite at the solution
 };
