@@ -137,7 +137,7 @@ CrystalSpectrum crystal_nearest_modes(const CrystalMatrix& d, double near_hz, lo
   solver.count = static_cast<int>(count);
   ShiftInvertResult r;
   double residual = 0;
-  if (method == NearestMethod::slepc) {  // MUMPS's LU pivots: no second try needed
+  if (method == NearestMethod::slepc) {  // MUMPS's LDLᵀ pivots: no second try needed
     r = slepc_nearest(d.matrix, sigma, solver);
     residual = residual_of(r);
   } else {

@@ -3,7 +3,7 @@
 // for every mode, by shift-invert at σ = (2π f0)²: in one process, ARPACK's Lanczos with (D − σI)⁻¹
 // applied by a sparse LDLᵀ factorization (Eigen, fill-reducing ordering) — LDLᵀ does not pivot,
 // and D − σI is indefinite: when the modes' residuals exceed 1e-9 of max |D_ij|, they are solved
-// again on a pivoted sparse LU; over MPI ranks, SLEPc's Krylov–Schur with MUMPS's pivoted LU. "Nearest" is nearest in
+// again on a pivoted sparse LU; over MPI ranks, SLEPc's Krylov–Schur with MUMPS's pivoted LDLᵀ. "Nearest" is nearest in
 // ω² to σ; for a selection narrow beside f0 these are the modes nearest in frequency too.
 #include <cstddef>
 
