@@ -8,6 +8,7 @@
 #include <variant>
 
 #include "granular/dynamics/detail/blocked_kernels.hpp"
+#include "granular/dynamics/detail/vector_expm1.hpp"
 #include "granular/error.hpp"
 #include "granular/number_format.hpp"
 
@@ -28,7 +29,8 @@ double twice_kinetic(const double* __restrict m, const double* __restrict v, std
 // 1 − q of the exact pair flow g ← q g, q = e^{−2y} (y = hλ/2), without cancellation for small y.
 // The flow is L-stable: q → 0 for stiff contacts, where Crank–Nicolson's (1 − y)/(1 + y) → −1 made
 // the pair's relative velocity flip sign every step.
-inline double pair_loss(double y) { return -std::expm1(-2 * y); }
+// detail::expm1_nonpositive rather than std::expm1, so that the bond loops that call it vectorize.
+inline double pair_loss(double y) { return -detail::expm1_nonpositive(-2 * y); }
 
 // One exact pair step on the bonds k ∈ [lo, hi) of one parity; vp is padded (vp[k] is
 // bead k−1, vp[0] = vp[n+1] = 0 the walls, which take no share and stay 0); share is

@@ -1,0 +1,53 @@
+#include "granular/dynamics/detail/vector_expm1.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+namespace {
+
+using granular::detail::expm1_nonpositive;
+
+// |value − exact| in units of the last place of `exact` rounded to double.
+double ulps(double value, long double exact) {
+  const double rounded = static_cast<double>(exact);
+  const double ulp = std::nextafter(std::fabs(rounded), std::numeric_limits<double>::infinity()) - std::fabs(rounded);
+  return static_cast<double>(std::fabs(static_cast<long double>(value) - exact) / ulp);
+}
+
+std::vector<double> arguments() {
+  std::vector<double> x;
+  for (double a = 1e-320; a < 800; a *= 1.0007) x.push_back(-a);      // tiny (subnormal) to past underflow
+  for (int i = 0; i <= 200000; ++i) x.push_back(-40.0 * i / 200000);  // dense where the damping lives
+  for (int k = -60; k <= 0; ++k)  // both sides of each range-reduction boundary (k + 1/2) ln 2
+    for (double d : {-1e-12, 0.0, 1e-12}) x.push_back(std::min(0.0, (k + 0.5) * std::log(2.0) + d));
+  return x;
+}
+
+TEST(VectorExpm1, WithinOneUlpOfTheExtendedPrecisionValue) {
+  double worst = 0, worst_glibc = 0;
+  for (double x : arguments()) {
+    const long double exact = std::expm1l(static_cast<long double>(x));
+    worst = std::max(worst, ulps(expm1_nonpositive(x), exact));
+    worst_glibc = std::max(worst_glibc, ulps(std::expm1(x), exact));
+  }
+  EXPECT_LE(worst, 1.0) << "glibc's expm1: " << worst_glibc << " ulp";
+}
+
+TEST(VectorExpm1, ZerosInfinitiesAndNaN) {
+  EXPECT_EQ(expm1_nonpositive(0.0), 0.0);
+  EXPECT_TRUE(std::signbit(expm1_nonpositive(-0.0)));
+  EXPECT_FALSE(std::signbit(expm1_nonpositive(0.0)));
+  EXPECT_EQ(expm1_nonpositive(-std::numeric_limits<double>::infinity()), -1.0);
+  EXPECT_EQ(expm1_nonpositive(-1e300), -1.0);
+  EXPECT_EQ(expm1_nonpositive(-50.0), std::expm1(-50.0));  // −1 + 2e-22 rounds to −1
+  EXPECT_TRUE(std::isnan(expm1_nonpositive(std::numeric_limits<double>::quiet_NaN())));
+  const double tiny = -std::numeric_limits<double>::denorm_min();
+  EXPECT_EQ(expm1_nonpositive(tiny), tiny);  // no cancellation: e^x − 1 = x to the last bit
+}
+
+}  // namespace
