@@ -23,7 +23,8 @@ int main(int argc, char** argv) {
   CLI::App app{
       "IPR map of 2D granular crystals: every mode (dense LAPACK) of --realizations crystals per disorder width\n"
       "(--widths), binned in frequency (--bin-hz): the mean vector IPR and the level-spacing ratio <r> per bin\n"
-      "(Poisson 0.3863: localized; GOE 0.5307: extended). Crystals of up to a few thousand beads; the crystals\n"
+      "(Poisson 0.3863: localized; GOE 0.5307: extended). Crystals of up to a few thousand beads, or larger ones\n"
+      "with --near F --count K: the K modes nearest F kHz of each (sparse shift-invert, ARPACK); the crystals\n"
       "are shared by --threads and by the ranks of mpirun, and the map does not depend on either. Writes\n"
       "PREFIX.csv (width,freq_lo_khz,freq_hi_khz,modes,ipr,ratio,ratios) and PREFIX.json (every parameter);\n"
       "PREFIX.checkpoint logs each solved crystal until the map is written: --resume continues a killed run.",

@@ -90,6 +90,17 @@ def test_ipr_map_cells_count_every_mode_and_the_perfect_row_is_the_crystals():
         gr.crystal_ipr_map(widths=[1.5])
 
 
+def test_ipr_map_of_the_modes_nearest_a_frequency_counts_count_per_crystal():
+    m = gr.crystal_ipr_map(lattice="hexagonal", Lx=8, Ly=8, widths=[0.3], realizations=2, bin_hz=1000.0,
+                           near=10.0, count=12)
+    assert m.modes.sum() == 2 * 12
+    filled = np.flatnonzero(m.modes[0])
+    assert 8 <= filled.min() and filled.max() <= 11  # the 12 modes nearest 10 kHz sit near it
+    assert m.metadata["parameters"]["near"] == 10.0
+    with pytest.raises(ValueError, match="count"):
+        gr.crystal_ipr_map(Lx=4, Ly=4, near=5.0, count=32)
+
+
 def test_ipr_map_equals_the_crystal_ipr_map_tool_and_its_figure_reads_the_csv(tools):
     args = dict(lattice="hexagonal", Lx=6, Ly=6, widths=[0.0, 0.7], realizations=2, bin_hz=2500.0)
     m = gr.crystal_ipr_map(**args, threads=1)

@@ -15,6 +15,7 @@
 
 #include "granular/crystal/crystal_matrix.hpp"
 #include "granular/crystal/crystal_spectrum.hpp"
+#include "granular/crystal/packing.hpp"
 #include "granular/crystal/static_state.hpp"
 #include "granular/ensemble/checkpoint_log.hpp"
 #include "granular/error.hpp"
@@ -86,6 +87,51 @@ TEST(CrystalIprMap, IsBitIdenticalOnTwoThreadsAndLocalizesTheTopOfTheBand) {
   // bins' mean IPR is ~100/N against ≤ 2.2/N for every bin of the perfect crystal.
   EXPECT_GT(crystal_map_max(a[1].bin_ipr), 10 * crystal_map_max(a[0].bin_ipr));
   EXPECT_GT(a[1].bin_modes.size(), a[0].bin_modes.size());
+}
+
+// With `near`, each crystal's `count` modes nearest the target by ARPACK: the same modes, bins and
+// IPRs as those picked from every mode (dense LAPACK) of the same crystals.
+TEST(CrystalIprMap, NearestModesAreThoseOfTheDenseSpectrum) {
+  CrystalIprMapConfig c = crystal_map_config();
+  c.widths = {0.5}, c.realizations = 2, c.bin_hz = 1000;
+  c.crystal.near = 10.0, c.crystal.count = 30;  // 10 kHz: inside the band (about 0.5 ... 20 kHz)
+  const auto cells = crystal_ipr_map(c, {.threads = 1});
+  ASSERT_EQ(cells.size(), 1u);
+  const std::size_t bins = cells[0].bin_modes.size();
+  std::vector<double> sum(bins, 0.0);
+  std::vector<std::size_t> count(bins, 0);
+  const double sigma = std::pow(2 * std::acos(-1.0) * 10e3, 2);
+  for (std::uint64_t r = 0; r < c.realizations; ++r) {
+    const Packing p =
+        make_packing(disordered(c.crystal.packing, {c.crystal.disorder.kind, 0.5, c.crystal.disorder.seed, r}));
+    const CrystalSpectrum s = crystal_spectrum(crystal_matrix(p, static_state(p)));
+    std::vector<std::size_t> order(s.size());
+    std::iota(order.begin(), order.end(), std::size_t{0});
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+      return std::fabs(s.omega2[a] - sigma) < std::fabs(s.omega2[b] - sigma);
+    });
+    for (std::size_t j = 0; j < 30; ++j) {
+      const auto b = static_cast<std::size_t>(s.freq_hz[order[j]] / c.bin_hz);
+      ASSERT_LT(b, bins);
+      sum[b] += s.ipr[order[j]], ++count[b];
+    }
+  }
+  for (std::size_t b = 0; b < bins; ++b) {
+    EXPECT_EQ(cells[0].bin_modes[b], count[b]) << "bin " << b;
+    if (count[b] > 0) {
+      EXPECT_NEAR(cells[0].bin_ipr[b], sum[b] / static_cast<double>(count[b]), 1e-10) << "bin " << b;
+    }
+  }
+  // ARPACK keeps its state in Fortran SAVE variables: the threads' solves take turns (they crashed in malloc).
+  c.realizations = 16;
+  expect_same_crystal_maps(crystal_ipr_map(c, {.threads = 1}), crystal_ipr_map(c, {.threads = 2}));
+  c.crystal.count = 2 * 144;  // every degree of freedom: not for a Krylov method
+  try {
+    crystal_ipr_map(c);
+    ADD_FAILURE() << "count 2N accepted";
+  } catch (const InvalidInput& e) {
+    EXPECT_EQ(e.parameter(), "count");
+  }
 }
 
 TEST(CrystalIprMap, RefusesBadWidthsRealizationsAndBins) {

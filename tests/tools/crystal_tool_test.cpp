@@ -194,10 +194,11 @@ TEST(CrystalIprMapTool, WritesTheLibrarysMapTheSameOnThreadsAndRanks) {
 TEST(CrystalIprMapTool, BadInputIsOneLineNamingTheOptionAndWritesNothing) {
   const std::string dir = scratch_folder("crystal-map-bad");
   const std::vector<std::pair<std::string, std::string>> cases = {
-      {"--widths 1.2", "--widths"},       {"--realizations 0", "--realizations"},
-      {"--bin-hz 0", "--bin-hz"},         {"--Lx 1", "--Lx"},
-      {"--threads -2", "--threads"},      {"--resume --fresh", "--fresh"},
-      {"--skip-failed", "--skip-failed"}, {"--near 10", "--near"},  // not a map's option: the crystal tool's
+      {"--widths 1.2", "--widths"},         {"--realizations 0", "--realizations"},
+      {"--bin-hz 0", "--bin-hz"},           {"--Lx 1", "--Lx"},
+      {"--threads -2", "--threads"},        {"--resume --fresh", "--fresh"},
+      {"--skip-failed", "--skip-failed"},   {"--near -1", "--near"},
+      {"--near 10 --count 128", "--count"},  // 8 x 8 beads: 128 degrees of freedom
   };
   for (const auto& [args, names] : cases) {
     const ToolResult r = run_tool("crystal-ipr-map", args + " --output " + dir + "/out");

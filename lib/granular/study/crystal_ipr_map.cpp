@@ -9,6 +9,7 @@
 #include "granular/blas_library.hpp"
 #include "granular/crystal/crystal_matrix.hpp"
 #include "granular/crystal/crystal_spectrum.hpp"
+#include "granular/crystal/nearest_modes.hpp"
 #include "granular/crystal/static_state.hpp"
 #include "granular/ensemble/ensemble_runner.hpp"
 #include "granular/error.hpp"
@@ -21,9 +22,9 @@ namespace granular {
 const ParameterTable<CrystalIprMapConfig>& crystal_ipr_map_parameters() {
   using C = CrystalIprMapConfig;
   static const ParameterTable<C> table = [] {
-    ParameterTable<C> t =
-        nested_rows(crystal_parameters(), &C::crystal,
-                    {"lattice", "boundary", "Lx", "Ly", "radius", "precompression", "strain", "disorder", "seed"});
+    ParameterTable<C> t = nested_rows(crystal_parameters(), &C::crystal,
+                                      {"lattice", "boundary", "Lx", "Ly", "radius", "precompression", "strain",
+                                       "disorder", "seed", "near", "count"});
     t.push_back({"widths", &C::widths, "disorder strengths w in [0, 1), one map row each (comma list)"});
     t.push_back({"realizations", &C::realizations, "crystals per width (>= 1)"});
     t.push_back({"bin_hz", &C::bin_hz, "frequency bin width [Hz] of the IPR and <r> averages"});
@@ -40,6 +41,7 @@ void validate(const CrystalIprMapConfig& c) {
   if (!(c.bin_hz > 0) || !std::isfinite(c.bin_hz))
     throw InvalidInput("bin_hz", " " + format_number(c.bin_hz) + ": must be finite and > 0");
   make_packing(c.crystal.packing);  // its own checks
+  validate(c.crystal);              // near and count
 }
 
 std::vector<CrystalIprMapCell> crystal_ipr_map(const CrystalIprMapConfig& c, const RunOptions& run) {
@@ -65,7 +67,10 @@ std::vector<CrystalIprMapCell> crystal_ipr_map(const CrystalIprMapConfig& c, con
     const double width = c.widths[task / each];
     const Packing p = make_packing(
         disordered(c.crystal.packing, {c.crystal.disorder.kind, width, c.crystal.disorder.seed, task % each}));
-    const CrystalSpectrum s = crystal_spectrum(crystal_matrix(p, static_state(p)));
+    const CrystalMatrix d = crystal_matrix(p, static_state(p));
+    // ARPACK, one process per crystal: the crystals, not the ranks, share the work.
+    const CrystalSpectrum s =
+        c.crystal.near ? crystal_nearest_modes(d, *c.crystal.near * 1e3, c.crystal.count) : crystal_spectrum(d);
     std::vector<double> row = s.freq_hz;
     row.insert(row.end(), s.ipr.begin(), s.ipr.end());
     return row;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 #include <functional>
+#include <mutex>
 #include <numeric>
 #include <string>
 
@@ -38,6 +39,11 @@ void start_vector(double* x, int n) {
   }
 }
 
+/// ARPACK 3.8 keeps its iteration's state in Fortran SAVE variables (dsaupd, dsaup2, dsaitr):
+/// two solves at once in one process corrupt each other's (a threaded crystal IPR map crashed in
+/// malloc). One at a time, then; the caller's factorization, before the call, still runs in parallel.
+std::mutex arpack_state;
+
 }  // namespace
 
 ShiftInvertResult arpack_shift_invert(int n, double shift, const std::function<void(const double*, double*)>& solve,
@@ -57,6 +63,7 @@ ShiftInvertResult arpack_shift_invert(int n, double shift, const std::function<v
   int ido = 0, info = 1;  // info = 1: use resid as the start vector
   const double tol = config.tolerance;
   ShiftInvertResult out;
+  const std::lock_guard<std::mutex> one_at_a_time(arpack_state);
   for (;;) {
     dsaupd_(&ido, "I", &n, "LM", &nev, &tol, resid.data(), &ncv, v.data(), &ldv, iparam, ipntr, workd.data(),
             workl.data(), &lworkl, &info, 1, 2);

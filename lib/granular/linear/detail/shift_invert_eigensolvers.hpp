@@ -41,6 +41,7 @@ inline void require_nearest_count(const char* solver, std::size_t n, long count)
 /// ARPACK shift-invert (dsaupd/dseupd, mode 3) on any symmetric operator of size n: `solve(x, y)`
 /// sets y = (A − shift I)⁻¹ x. The `count` eigenvalues of A nearest `shift`, ascending, with unit
 /// vectors. Throws InvalidInput unless 1 ≤ count ≤ n − 1, NumericalError when ARPACK fails.
+/// ARPACK is not reentrant: calls from several threads run one after another (a process-wide lock).
 ShiftInvertResult arpack_shift_invert(int n, double shift, const std::function<void(const double*, double*)>& solve,
                                       const ShiftInvertConfig& config);
 
