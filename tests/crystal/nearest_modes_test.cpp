@@ -12,8 +12,10 @@
 #include <tuple>
 #include <vector>
 
+#include "granular/crystal/crystal_case.hpp"
 #include "granular/crystal/static_state.hpp"
 #include "granular/error.hpp"
+#include "granular/linear/detail/shift_invert_eigensolvers.hpp"
 
 namespace granular {
 namespace {
@@ -103,6 +105,23 @@ TEST(Long_NearestModes, TenThousandBeadHexagonalCrystal) {
     EXPECT_NEAR(m.freq_hz[k], 10e3, 200.0);  // they lie within ±6 Hz: 200 Hz guards the selection only
   }
   EXPECT_LT(worst, 1e-10);
+}
+
+}  // namespace
+}  // namespace granular
+
+namespace granular {
+namespace {
+
+// automatic: ARPACK below 10⁵ beads (the faster there), SLEPc from 10⁵ where the build has it; a
+// method named stays itself.
+TEST(NearestModes, AutomaticMethodTakesSlepcFromOneHundredThousandBeads) {
+  EXPECT_EQ(nearest_method_for(NearestMethod::automatic, slepc_from_beads - 1), NearestMethod::arpack);
+  EXPECT_EQ(nearest_method_for(NearestMethod::automatic, slepc_from_beads),
+            have_slepc() ? NearestMethod::slepc : NearestMethod::arpack);
+  EXPECT_EQ(nearest_method_for(NearestMethod::arpack, 10 * slepc_from_beads), NearestMethod::arpack);
+  EXPECT_EQ(nearest_method_for(NearestMethod::slepc, 4), NearestMethod::slepc);
+  EXPECT_EQ(CrystalCase{}.method, NearestMethod::automatic);
 }
 
 }  // namespace

@@ -26,8 +26,9 @@ struct CrystalCase {
   /// Every mode (dense LAPACK, small crystals) unless set: then the `count` modes nearest this
   /// frequency [kHz] by sparse shift-invert.
   std::optional<double> near{};
-  long count = 20;                               ///< with `near`: how many modes, 1 ≤ count < 2N
-  NearestMethod method = NearestMethod::arpack;  ///< with `near`: ARPACK (one process) or SLEPc (MPI ranks)
+  long count = 20;  ///< with `near`: how many modes, 1 ≤ count < 2N
+  /// With `near`: ARPACK (one process), SLEPc (MPI ranks), or automatic: SLEPc from 10⁵ beads.
+  NearestMethod method = NearestMethod::automatic;
   /// Every mode in [lo, hi] [kHz] instead (not with `near`): SLEPc's spectrum slicing, over MPI ranks.
   std::optional<std::pair<double, double>> window{};
   /// The window [kHz] of the level-spacing ratio ⟨r⟩; unset: every mode computed.

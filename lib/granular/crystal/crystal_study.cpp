@@ -19,7 +19,10 @@ CrystalResult crystal_study(const CrystalCase& c) {
   r.matrix = crystal_matrix(r.packing, r.state);
   const CrystalMatrix& d = r.matrix;
   const CrystalSpectrumConfig modes{.vectors = c.vectors};
-  r.method = c.window ? "slepc-slicing" : !c.near ? "lapack" : c.method == NearestMethod::slepc ? "slepc" : "arpack";
+  r.method = c.window                                                                 ? "slepc-slicing"
+             : !c.near                                                                ? "lapack"
+             : nearest_method_for(c.method, r.packing.size()) == NearestMethod::slepc ? "slepc"
+                                                                                      : "arpack";
   const auto start = std::chrono::steady_clock::now();
   r.spectrum = c.window ? crystal_window_modes(d, c.window->first * 1e3, c.window->second * 1e3, modes)
                : c.near ? crystal_nearest_modes(d, *c.near * 1e3, c.count, modes, c.method)

@@ -118,6 +118,11 @@ std::string khz(double hz) { return format_number(std::round(hz) * 1e-3); }
 
 }  // namespace
 
+NearestMethod nearest_method_for(NearestMethod method, std::size_t beads) {
+  if (method != NearestMethod::automatic) return method;
+  return have_slepc() && beads >= slepc_from_beads ? NearestMethod::slepc : NearestMethod::arpack;
+}
+
 CrystalSpectrum crystal_nearest_modes(const CrystalMatrix& d, double near_hz, long count,
                                       const CrystalSpectrumConfig& config, NearestMethod method) {
   if (!std::isfinite(near_hz) || near_hz < 0)
@@ -137,7 +142,7 @@ CrystalSpectrum crystal_nearest_modes(const CrystalMatrix& d, double near_hz, lo
   solver.count = static_cast<int>(count);
   ShiftInvertResult r;
   double residual = 0;
-  if (method == NearestMethod::slepc) {  // MUMPS's LDLᵀ pivots: no second try needed
+  if (nearest_method_for(method, d.beads()) == NearestMethod::slepc) {  // MUMPS's LDLᵀ pivots: no second try needed
     r = slepc_nearest(d.matrix, sigma, solver);
     residual = residual_of(r);
   } else {

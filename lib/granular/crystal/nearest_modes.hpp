@@ -13,9 +13,20 @@
 namespace granular {
 
 enum class NearestMethod {
-  arpack,  ///< one process (Eigen's LDLᵀ or LU, ARPACK)
-  slepc,   ///< collective over MPI_COMM_WORLD: each rank assembles its rows; every rank gets the modes
+  arpack,     ///< one process (Eigen's LDLᵀ or LU, ARPACK)
+  slepc,      ///< collective over MPI_COMM_WORLD: each rank assembles its rows; every rank gets the modes
+  automatic,  ///< the faster for the crystal's size: nearest_method_for (docs/performance.md, "Crystals")
 };
+
+/// Crystals of at least this many beads take SLEPc when automatic: below it ARPACK's path is the
+/// faster (PETSc's and MPI's start-up), above it SLEPc's (MUMPS's supernodal LDLᵀ against Eigen's
+/// simplicial one): 7.4 s against 7.3 s at 10⁵ beads, 27 s against 53 s at 4·10⁵, 81 s against
+/// 194 s at 10⁶ (one rank, idle 2-core VM, 2026-11-30).
+inline constexpr std::size_t slepc_from_beads = 100000;
+
+/// `method` itself, or for automatic: slepc for crystals of slepc_from_beads or more beads in a
+/// build with SLEPc, else arpack. Every rank resolves it alike (SLEPc is collective).
+NearestMethod nearest_method_for(NearestMethod method, std::size_t beads);
 
 /// The `count` modes nearest `near_hz` [Hz], by increasing ω², with their IPRs (and unit
 /// eigenvectors with config.vectors), as crystal_spectrum gives them, and max_residual. Throws
