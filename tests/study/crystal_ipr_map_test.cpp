@@ -125,7 +125,11 @@ TEST(CrystalIprMap, NearestModesAreThoseOfTheDenseSpectrum) {
   // ARPACK keeps its state in Fortran SAVE variables: the threads' solves take turns (they crashed in malloc).
   c.realizations = 16;
   expect_same_crystal_maps(crystal_ipr_map(c, {.threads = 1}), crystal_ipr_map(c, {.threads = 2}));
-  c.crystal.count = 2 * 144;  // every degree of freedom: not for a Krylov method
+  c.crystal.disorder.seed = 5;  // a seed goes with the map's widths, not the crystal's own width
+  EXPECT_NO_THROW(validate(c));
+  c.crystal.near.reset(), c.crystal.count = 12;
+  EXPECT_THROW(validate(c), InvalidInput);           // count without near
+  c.crystal.near = 10.0, c.crystal.count = 2 * 144;  // every degree of freedom: not for a Krylov method
   try {
     crystal_ipr_map(c);
     ADD_FAILURE() << "count 2N accepted";

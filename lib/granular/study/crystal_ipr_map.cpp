@@ -41,7 +41,12 @@ void validate(const CrystalIprMapConfig& c) {
   if (!(c.bin_hz > 0) || !std::isfinite(c.bin_hz))
     throw InvalidInput("bin_hz", " " + format_number(c.bin_hz) + ": must be finite and > 0");
   make_packing(c.crystal.packing);  // its own checks
-  validate(c.crystal);              // near and count
+  // near and count, as the crystal checks them (the rest of its case is the map's widths' business)
+  CrystalCase modes;
+  modes.packing = c.crystal.packing, modes.near = c.crystal.near, modes.count = c.crystal.count;
+  if (!modes.near && modes.count != CrystalCase{}.count)
+    throw InvalidInput("count", " " + std::to_string(modes.count) + ": takes effect only with `near`");
+  validate(modes);
 }
 
 std::vector<CrystalIprMapCell> crystal_ipr_map(const CrystalIprMapConfig& c, const RunOptions& run) {
