@@ -19,9 +19,8 @@ enum class NearestMethod {
 };
 
 /// Crystals of at least this many beads take SLEPc when automatic: below it ARPACK's path is the
-/// faster (PETSc's and MPI's start-up), above it SLEPc's (MUMPS's supernodal LDLᵀ against Eigen's
-/// simplicial one): 7.4 s against 7.3 s at 10⁵ beads, 27 s against 53 s at 4·10⁵, 81 s against
-/// 194 s at 10⁶ (one rank, idle 2-core VM, 2026-11-30).
+/// faster (no PETSc or MPI start-up), above it SLEPc's (MUMPS's supernodal LDLᵀ against Eigen's
+/// simplicial one); the two cost the same near 10⁵ beads (docs/performance.md, "Crystals").
 inline constexpr std::size_t slepc_from_beads = 100000;
 
 /// `method` itself, or for automatic: slepc for crystals of slepc_from_beads or more beads in a
