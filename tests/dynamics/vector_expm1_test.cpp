@@ -44,6 +44,7 @@ TEST(VectorExpm1, ZerosInfinitiesAndNaN) {
   EXPECT_FALSE(std::signbit(expm1_nonpositive(0.0)));
   EXPECT_EQ(expm1_nonpositive(-std::numeric_limits<double>::infinity()), -1.0);
   EXPECT_EQ(expm1_nonpositive(-1e300), -1.0);
+  EXPECT_EQ(expm1_nonpositive(1e300), 0.0);                // outside its domain, but defined (no integer overflow)
   EXPECT_EQ(expm1_nonpositive(-50.0), std::expm1(-50.0));  // −1 + 2e-22 rounds to −1
   EXPECT_TRUE(std::isnan(expm1_nonpositive(std::numeric_limits<double>::quiet_NaN())));
   const double tiny = -std::numeric_limits<double>::denorm_min();

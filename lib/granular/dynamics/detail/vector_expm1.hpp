@@ -10,12 +10,14 @@
 namespace granular::detail {
 
 /// e^x − 1 for x ≤ 0 (−1 below −745, where e^x underflows; NaN in, NaN out), with no cancellation
-/// for small |x|.
+/// for small |x|. x > 0 is outside its domain: it gives 0.
 inline double expm1_nonpositive(double x) {
   constexpr double ln2_hi = 6.93147180369123816490e-01;  // Cody–Waite split of ln 2: k·ln2_hi is exact
   constexpr double ln2_lo = 1.90821492927058770002e-10;
   constexpr double inv_ln2 = 1.44269504088896338700e+00;
-  const double xc = x < -745.0 ? -745.0 : x;           // keeps 2^k a normal number's exponent (k ≥ −1075)
+  // Clamped into [−745, 0], NaN to −745: keeps 2^k a normal number's exponent (k ≥ −1075) and the
+  // conversion of k to an integer defined (NaN or ±∞ there is undefined behaviour).
+  const double xc = x >= -745.0 ? (x <= 0.0 ? x : 0.0) : -745.0;
   const double k = __builtin_nearbyint(xc * inv_ln2);  // x = k ln 2 + r, |r| ≤ ln2/2 (+ rounding)
   const double hi = xc - k * ln2_hi, lo = k * ln2_lo;  // hi exact
   const double r = hi - lo, c = (hi - r) - lo;         // x = k ln 2 + r + c: c is r's rounding
