@@ -21,7 +21,7 @@ int main(int argc, char** argv) {
       "Modes of a 2D granular crystal: Lx x Ly steel beads in a square or hexagonal packing, held by four walls\n"
       "(each pushing with --F0 per bead it touches) or periodic under --strain, its static state solved by\n"
       "Newton (Hertz normal contacts). Every mode by dense LAPACK, or --count modes nearest --near [kHz] by\n"
-      "ARPACK, or by SLEPc with --method slepc, or every mode in --window lo:hi [kHz] by SLEPc's spectrum\n"
+      "ARPACK (SLEPc from 1e5 beads; --method chooses), or every mode in --window lo:hi [kHz] by SLEPc's spectrum\n"
       "slicing (under mpirun -n P the ranks share the matrix's rows).\n"
       "Writes PREFIX.csv (mode,freq_khz,omega2,ipr)\n"
       "and PREFIX.json (every parameter, the static state, <r>); with --vectors PREFIX-modes.csv.",
