@@ -10,11 +10,11 @@
 #include "common/long_run_options.hpp"
 #include "common/outputs.hpp"
 #include "common/tool_main.hpp"
+#include "granular/case/chain_length_rule.hpp"
 #include "granular/ensemble/checkpoint_log.hpp"
 #include "granular/files/exponent_files.hpp"
 #include "granular/io/atomic_file.hpp"
 #include "granular/parallel/mpi_context.hpp"
-#include "granular/study/chain_length_rule.hpp"
 #include "granular/study/frequency_slips.hpp"
 
 int main(int argc, char** argv) {

@@ -11,10 +11,10 @@
 
 #include "common/outputs.hpp"
 #include "common/tool_main.hpp"
-#include "granular/dynamics/klein_gordon_study.hpp"
 #include "granular/files/klein_gordon_files.hpp"
 #include "granular/io/atomic_file.hpp"
 #include "granular/io/output_paths.hpp"
+#include "granular/klein_gordon/klein_gordon_study.hpp"
 #include "granular/parameter_json.hpp"
 
 namespace {

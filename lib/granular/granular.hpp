@@ -1,7 +1,8 @@
 #pragma once
 // Everything a program using the toolkit needs, in one include. The pipeline reads top to bottom:
 // a chain (model) → its dynamical matrix and spectrum (linear; 2D packings: crystal) → its nonlinear dynamics
-// (dynamics) → many realizations (ensemble) → what the averages say (analysis) → the paper's studies (study).
+// (dynamics; the Klein–Gordon chain: klein_gordon) → many realizations (ensemble) → what the averages say
+// (analysis) → a run's typed case (case) → the paper's studies (study).
 #include "granular/code_identity.hpp"
 #include "granular/error.hpp"
 #include "granular/number_format.hpp"
@@ -13,7 +14,6 @@
 #include "granular/model/contact_law.hpp"
 #include "granular/model/correlation.hpp"
 #include "granular/model/disorder.hpp"
-#include "granular/model/klein_gordon.hpp"
 #include "granular/model/material.hpp"
 #include "granular/model/named_chains.hpp"
 #include "granular/model/selected_chain.hpp"
@@ -37,7 +37,6 @@
 #include "granular/dynamics/force_law.hpp"
 #include "granular/dynamics/initial_conditions.hpp"
 #include "granular/dynamics/integrator.hpp"
-#include "granular/dynamics/klein_gordon_run.hpp"
 #include "granular/dynamics/observables.hpp"
 #include "granular/dynamics/observer.hpp"
 #include "granular/dynamics/observers.hpp"
@@ -46,6 +45,9 @@
 #include "granular/dynamics/scheme.hpp"
 #include "granular/dynamics/spectral_density.hpp"
 #include "granular/dynamics/spread.hpp"
+
+#include "granular/klein_gordon/klein_gordon.hpp"
+#include "granular/klein_gordon/klein_gordon_run.hpp"
 
 #include "granular/ensemble/parallel_realizations.hpp"
 #include "granular/ensemble/run_options.hpp"
@@ -56,13 +58,20 @@
 #include "granular/analysis/power_law_fit.hpp"
 #include "granular/analysis/summary_statistics.hpp"
 
+#include "granular/case/case_file.hpp"
+#include "granular/case/chain_choices.hpp"
+#include "granular/case/mode_kick.hpp"
+#include "granular/case/spreading_outputs.hpp"
+#include "granular/case/spreading_run.hpp"
+#include "granular/case/time_step_rule.hpp"
+#include "granular/case/transport_case.hpp"
+#include "granular/case/transport_parameters.hpp"
+
 #include "granular/ensemble/resumed_checkpoint.hpp"
 #include "granular/files/exponent_files.hpp"
 #include "granular/files/spectrum_file.hpp"
 #include "granular/files/spreading_files.hpp"
 #include "granular/study/butterfly.hpp"
-#include "granular/study/case_file.hpp"
-#include "granular/study/chain_choices.hpp"
 #include "granular/study/correlation_study.hpp"
 #include "granular/study/crystal_ipr_map.hpp"
 #include "granular/study/dynamical_butterfly.hpp"
@@ -70,10 +79,5 @@
 #include "granular/study/exponent_table.hpp"
 #include "granular/study/ipr_map.hpp"
 #include "granular/study/localization_scan.hpp"
-#include "granular/study/mode_kick.hpp"
 #include "granular/study/paper_comparison.hpp"
-#include "granular/study/spreading_outputs.hpp"
-#include "granular/study/spreading_run.hpp"
-#include "granular/study/time_step_rule.hpp"
-#include "granular/study/transport_parameters.hpp"
 #include "granular/study/transport_study.hpp"

@@ -1,7 +1,7 @@
 """granular.spreading, granular.transport and granular.exponent_table: their keywords, defaults and
 docstrings. Each fills the library's structs (granular._core.TransportCase, whose attributes are the rows of
 transport_parameters(), ...; C++ defaults) and makes one call to granular._core, which completes the case by
-the rule the tools use (study/transport_parameters.hpp), runs it and returns the library's result and
+the rule the tools use (case/transport_parameters.hpp), runs it and returns the library's result and
 metadata; the result dicts (SpreadingRun, Transport) are shaped here."""
 import math
 

@@ -3,7 +3,7 @@
 // structs (TransportCase with its ModeKick, its parameters' attributes made from transport_parameters() and
 // spreading_output_parameters(), ChainRecipe, ExponentChoices, ExponentTableConfig) bound with their C++
 // defaults, and one call per job that takes them, completes the case by the tools' rules
-// (study/transport_parameters.hpp, exponent_choices.hpp), runs it and returns the library's result
+// (case/transport_parameters.hpp, exponent_choices.hpp), runs it and returns the library's result
 // (granular/_dynamics.py shapes it) or the tool's CSV text, with the library's own JSON.
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -11,18 +11,18 @@
 #include <string>
 
 #include "bindings.hpp"
+#include "granular/case/case_settling.hpp"
+#include "granular/case/kicked_case.hpp"
+#include "granular/case/spreading_outputs.hpp"
+#include "granular/case/transport_parameters.hpp"
 #include "granular/ensemble/checkpoint_log.hpp"
 #include "granular/files/exponent_files.hpp"
 #include "granular/files/spreading_files.hpp"
 #include "granular/model/quasiperiodic.hpp"
-#include "granular/study/case_settling.hpp"
 #include "granular/study/exponent_choices.hpp"
 #include "granular/study/exponent_table.hpp"
 #include "granular/study/frequency_slips.hpp"
-#include "granular/study/kicked_case.hpp"
 #include "granular/study/paper_comparison.hpp"
-#include "granular/study/spreading_outputs.hpp"
-#include "granular/study/transport_parameters.hpp"
 
 namespace granular::python {
 namespace {

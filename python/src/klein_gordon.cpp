@@ -4,7 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include "bindings.hpp"
-#include "granular/dynamics/klein_gordon_study.hpp"
+#include "granular/klein_gordon/klein_gordon_study.hpp"
 
 namespace granular::python {
 namespace {

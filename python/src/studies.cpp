@@ -7,6 +7,7 @@
 #include <string>
 
 #include "bindings.hpp"
+#include "granular/case/chain_choices.hpp"
 #include "granular/ensemble/parallel_realizations.hpp"
 #include "granular/ensemble/run_options.hpp"
 #include "granular/error.hpp"
@@ -17,7 +18,6 @@
 #include "granular/model/named_chains.hpp"
 #include "granular/model/plausibility.hpp"
 #include "granular/study/butterfly.hpp"
-#include "granular/study/chain_choices.hpp"
 #include "granular/study/dynamical_butterfly.hpp"
 #include "granular/study/frequency_slips.hpp"
 

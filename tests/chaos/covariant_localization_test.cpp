@@ -20,7 +20,7 @@
 #include "granular/dynamics/force_law.hpp"
 #include "granular/dynamics/initial_conditions.hpp"
 #include "granular/dynamics/scheme.hpp"
-#include "granular/model/klein_gordon.hpp"
+#include "granular/klein_gordon/klein_gordon.hpp"
 
 namespace granular {
 namespace {

@@ -5,10 +5,10 @@
 
 #include <gtest/gtest.h>
 
+#include "granular/case/spreading_run.hpp"
 #include "granular/error.hpp"
 #include "granular/model/chain.hpp"
 #include "granular/model/disorder.hpp"
-#include "granular/study/spreading_run.hpp"
 #include "granular/study/transport_study.hpp"
 
 namespace granular {

@@ -10,16 +10,16 @@
 #include <type_traits>
 #include <vector>
 
+#include "granular/case/chain_choices.hpp"
+#include "granular/case/spreading_outputs.hpp"
+#include "granular/case/transport_parameters.hpp"
 #include "granular/crystal/crystal_case.hpp"
 #include "granular/ensemble/run_options.hpp"
 #include "granular/linear/mode_selection_choices.hpp"
 #include "granular/orbits/breather_parameters.hpp"
-#include "granular/study/chain_choices.hpp"
 #include "granular/study/crystal_ipr_map.hpp"
 #include "granular/study/dynamical_butterfly.hpp"
 #include "granular/study/exponent_choices.hpp"
-#include "granular/study/spreading_outputs.hpp"
-#include "granular/study/transport_parameters.hpp"
 
 namespace granular {
 namespace {

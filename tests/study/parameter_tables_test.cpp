@@ -11,15 +11,15 @@
 #include <utility>
 #include <vector>
 
+#include "granular/case/chain_choices.hpp"
+#include "granular/case/chain_length_rule.hpp"
+#include "granular/case/spreading_outputs.hpp"
+#include "granular/case/transport_parameters.hpp"
 #include "granular/ensemble/run_options.hpp"
 #include "granular/error.hpp"
 #include "granular/linear/mode_selection_choices.hpp"
-#include "granular/study/chain_choices.hpp"
-#include "granular/study/chain_length_rule.hpp"
 #include "granular/study/dynamical_butterfly.hpp"
 #include "granular/study/exponent_choices.hpp"
-#include "granular/study/spreading_outputs.hpp"
-#include "granular/study/transport_parameters.hpp"
 
 namespace granular {
 namespace {

@@ -12,10 +12,10 @@
 #include <tuple>
 #include <vector>
 
+#include "granular/case/chain_choices.hpp"
+#include "granular/case/spreading_outputs.hpp"
+#include "granular/case/transport_parameters.hpp"
 #include "granular/parameter_names.hpp"
-#include "granular/study/chain_choices.hpp"
-#include "granular/study/spreading_outputs.hpp"
-#include "granular/study/transport_parameters.hpp"
 #include "tool_runner.hpp"
 
 namespace granular::testing {

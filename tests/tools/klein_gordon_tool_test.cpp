@@ -18,9 +18,9 @@
 #include <vector>
 
 #include "granular/analysis/power_law_fit.hpp"
-#include "granular/dynamics/klein_gordon_case.hpp"
-#include "granular/dynamics/klein_gordon_exponents.hpp"
-#include "granular/dynamics/klein_gordon_run.hpp"
+#include "granular/klein_gordon/klein_gordon_case.hpp"
+#include "granular/klein_gordon/klein_gordon_exponents.hpp"
+#include "granular/klein_gordon/klein_gordon_run.hpp"
 #include "granular/parameter_json.hpp"
 #include "tool_runner.hpp"
 

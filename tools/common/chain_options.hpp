@@ -8,13 +8,13 @@
 
 #include <CLI/CLI.hpp>
 
+#include "granular/case/chain_choices.hpp"
 #include "granular/model/selected_chain.hpp"
-#include "granular/study/chain_choices.hpp"
 #include "tool_main.hpp"
 
 namespace granular::tool {
 
-/// The chain's options bind straight into the library's choices (study/chain_choices.hpp).
+/// The chain's options bind straight into the library's choices (case/chain_choices.hpp).
 using ChainOptions = ChainChoices;
 
 /// --types, --type-masses, --polydisperse. `rule_flag`: the tool's flag that says how types are drawn.

@@ -11,8 +11,8 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
-#include "granular/study/case_settling.hpp"
-#include "granular/study/transport_parameters.hpp"
+#include "granular/case/case_settling.hpp"
+#include "granular/case/transport_parameters.hpp"
 #include "granular/study/transport_study.hpp"
 #include "tool_main.hpp"
 

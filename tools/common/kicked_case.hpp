@@ -1,6 +1,6 @@
 #pragma once
 // The kicked-chain case as `spreading` reads it: from its flags — the chain (chain_options.hpp,
-// --N auto: study/chain_length_rule.hpp), the kick (--ic, the mode options), the dynamics and the tangent map — or
+// --N auto: case/chain_length_rule.hpp), the kick (--ic, the mode options), the dynamics and the tangent map — or
 // whole from a case file (--case: a case description, as a replay file or a run's JSON holds it).
 #include <set>
 #include <string>
@@ -9,9 +9,9 @@
 
 #include "chain_options.hpp"
 #include "dynamics_options.hpp"
-#include "granular/study/chain_length_rule.hpp"
+#include "granular/case/chain_length_rule.hpp"
+#include "granular/case/kicked_case.hpp"
 #include "granular/study/frequency_slips.hpp"
-#include "granular/study/kicked_case.hpp"
 #include "tool_main.hpp"
 
 namespace granular::tool {
@@ -53,7 +53,7 @@ inline void add_kicked_case_options(CLI::App& app, KickedCaseOptions& o) {
 }
 
 /// The case the options give, before validation (outputs may still add observers to it): the
-/// library's kicked_case (study/kicked_case.hpp), its warnings printed. `ensemble` when it
+/// library's kicked_case (case/kicked_case.hpp), its warnings printed. `ensemble` when it
 /// averages realizations.
 inline KickedCase kicked_case(const KickedCaseOptions& o, bool ensemble) {
   KickedCaseChoices choices = o;

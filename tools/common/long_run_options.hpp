@@ -12,12 +12,12 @@
 
 #include <CLI/CLI.hpp>
 
+#include "granular/case/case_file.hpp"
 #include "granular/ensemble/interrupt.hpp"
 #include "granular/ensemble/resumed_checkpoint.hpp"
 #include "granular/ensemble/run_options.hpp"
 #include "granular/io/shell_quote.hpp"
 #include "granular/parallel/mpi_context.hpp"
-#include "granular/study/case_file.hpp"
 #include "granular/study/transport_study.hpp"
 #include "outputs.hpp"
 #include "tool_main.hpp"
@@ -36,7 +36,7 @@ inline void add_long_run_options(CLI::App& app, LongRunOptions& o) {
 }
 
 /// The `spreading` command that computes realization `r` of case `c` alone, from its replay file
-/// (study/case_file.hpp) beside the outputs on `prefix`; `argv0` (how this tool was called) says
+/// (case/case_file.hpp) beside the outputs on `prefix`; `argv0` (how this tool was called) says
 /// where `spreading` is. When the file cannot be written, a sentence saying why.
 inline std::string replay_text(const TransportCase& c, std::uint64_t r, const std::string& prefix,
                                const std::string& argv0) {

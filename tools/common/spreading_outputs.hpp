@@ -2,13 +2,13 @@
 // The options of `spreading`'s outputs beyond PREFIX.csv: the final state, the profile, force
 // series, the energy map (HDF5) and the spectral density g(ν), with their sampling (the files
 // themselves: files/spreading_files.hpp; the sampling's rows over the case, shared with Python:
-// study/spreading_outputs.hpp).
+// case/spreading_outputs.hpp).
 #include <set>
 #include <string>
 
 #include <CLI/CLI.hpp>
 
-#include "granular/study/spreading_outputs.hpp"
+#include "granular/case/spreading_outputs.hpp"
 #include "tool_main.hpp"
 
 namespace granular::tool {

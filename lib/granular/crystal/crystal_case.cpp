@@ -12,8 +12,8 @@
 namespace granular {
 namespace {
 
-using C = CrystalCase;
-using P = Parameter<C>;
+using Crystal = CrystalCase;
+using P = Parameter<Crystal>;
 
 constexpr auto lattice_names =
     detail::enum_names<Lattice>("lattice", {{Lattice::square, "square"}, {Lattice::hexagonal, "hexagonal"}});
@@ -29,30 +29,30 @@ constexpr auto method_names = detail::enum_names<NearestMethod>("method", {{Near
                                                                            {NearestMethod::slepc, "slepc"}});
 
 // The window's text form, lo:hi [kHz] (parse_interval: finite, lo < hi); empty: none.
-void read_window(C& c, const std::string& text) {
+void read_window(Crystal& c, const std::string& text) {
   if (text.empty()) return c.window.reset();
   const Interval i = parse_interval(text, "window");
   c.window = {i.start, i.stop};
 }
-std::string write_window(const C& c) {
+std::string write_window(const Crystal& c) {
   return c.window ? format_number(c.window->first) + ":" + format_number(c.window->second) : "";
 }
 
-void read_lattice(C& c, const std::string& word) { c.packing.lattice = lattice_names.parse(word); }
-std::string write_lattice(const C& c) { return std::string(lattice_names.name_of(c.packing.lattice)); }
-void read_boundary(C& c, const std::string& word) { c.packing.boundary = boundary_names.parse(word); }
-std::string write_boundary(const C& c) { return std::string(boundary_names.name_of(c.packing.boundary)); }
-void read_disorder(C& c, const std::string& word) { c.disorder.kind = disorder_names.parse(word); }
-std::string write_disorder(const C& c) { return std::string(disorder_names.name_of(c.disorder.kind)); }
-void read_method(C& c, const std::string& word) { c.method = method_names.parse(word); }
-std::string write_method(const C& c) { return std::string(method_names.name_of(c.method)); }
+void read_lattice(Crystal& c, const std::string& word) { c.packing.lattice = lattice_names.parse(word); }
+std::string write_lattice(const Crystal& c) { return std::string(lattice_names.name_of(c.packing.lattice)); }
+void read_boundary(Crystal& c, const std::string& word) { c.packing.boundary = boundary_names.parse(word); }
+std::string write_boundary(const Crystal& c) { return std::string(boundary_names.name_of(c.packing.boundary)); }
+void read_disorder(Crystal& c, const std::string& word) { c.disorder.kind = disorder_names.parse(word); }
+std::string write_disorder(const Crystal& c) { return std::string(disorder_names.name_of(c.disorder.kind)); }
+void read_method(Crystal& c, const std::string& word) { c.method = method_names.parse(word); }
+std::string write_method(const Crystal& c) { return std::string(method_names.name_of(c.method)); }
 
 }  // namespace
 
 const ParameterTable<CrystalCase>& crystal_parameters() {
   using S = PackingSpec;
   using D = PackingDisorder;
-  static const ParameterTable<C> table{
+  static const ParameterTable<Crystal> table{
       P{"lattice",
         {},
         {read_lattice, write_lattice},
@@ -64,13 +64,13 @@ const ParameterTable<CrystalCase>& crystal_parameters() {
         "walls (four flat walls pushing with `precompression` per bead they touch) | periodic (a torus under "
         "`strain`)"}
           .as_word(),
-      {"Lx", path<C>(&C::packing, &S::Lx), "beads per row (>= 2; periodic >= 3)"},
-      {"Ly", path<C>(&C::packing, &S::Ly), "rows (>= 2; periodic >= 3; hexagonal: even)"},
-      {"radius", path<C>(&C::packing, &S::radius), "nominal bead radius R [m] (steel beads, steel walls)"},
-      P{"precompression", path<C>(&C::packing, &S::precompression),
+      {"Lx", path<Crystal>(&Crystal::packing, &S::Lx), "beads per row (>= 2; periodic >= 3)"},
+      {"Ly", path<Crystal>(&Crystal::packing, &S::Ly), "rows (>= 2; periodic >= 3; hexagonal: even)"},
+      {"radius", path<Crystal>(&Crystal::packing, &S::radius), "nominal bead radius R [m] (steel beads, steel walls)"},
+      P{"precompression", path<Crystal>(&Crystal::packing, &S::precompression),
         "walls: static force F0 [N] each wall applies per bead it touches"}
           .needing("boundary", {"walls"}),
-      P{"strain", path<C>(&C::packing, &S::strain),
+      P{"strain", path<Crystal>(&Crystal::packing, &S::strain),
         "periodic: uniform compressive strain, neighbours 2R(1 - strain) apart, in (0, 0.1)"}
           .needing("boundary", {"periodic"}),
       P{"disorder",
@@ -80,15 +80,15 @@ const ParameterTable<CrystalCase>& crystal_parameters() {
         "(polydisperse: the static state is solved)"}
           .as_word()
           .needing("width"),
-      {"width", path<C>(&C::disorder, &D::width),
+      {"width", path<Crystal>(&Crystal::disorder, &D::width),
        "relative disorder w in [0, 1): each bead's value is nominal x (1 + w u), u uniform on [-1, 1]; 0: a "
        "perfect crystal"},
-      P{"seed", path<C>(&C::disorder, &D::seed), "random seed of the disorder (bead b takes the b-th draw)"}.needing(
-          "width"),
-      {"near", &C::near,
+      P{"seed", path<Crystal>(&Crystal::disorder, &D::seed), "random seed of the disorder (bead b takes the b-th draw)"}
+          .needing("width"),
+      {"near", &Crystal::near,
        "the `count` modes nearest this frequency [kHz] by sparse shift-invert (default: every mode, dense LAPACK)",
        false},
-      P{"count", &C::count, "with `near`: how many modes (1 <= count < 2 Lx Ly)"}.needing("near"),
+      P{"count", &Crystal::count, "with `near`: how many modes (1 <= count < 2 Lx Ly)"}.needing("near"),
       P{"method",
         {},
         {read_method, write_method},
@@ -103,10 +103,10 @@ const ParameterTable<CrystalCase>& crystal_parameters() {
         "so none is missed; over the MPI ranks of mpirun), instead of `near`",
         false}
           .as_word(),
-      {"ratio_lo", &C::ratio_lo, "lower end [kHz] of the window of the level-spacing ratio <r> (default: no limit)",
-       false},
-      {"ratio_hi", &C::ratio_hi, "upper end [kHz] of that window (default: no limit)", false},
-      {"vectors", &C::vectors, "also write every computed mode's bead displacements (PREFIX-modes.csv)"}};
+      {"ratio_lo", &Crystal::ratio_lo,
+       "lower end [kHz] of the window of the level-spacing ratio <r> (default: no limit)", false},
+      {"ratio_hi", &Crystal::ratio_hi, "upper end [kHz] of that window (default: no limit)", false},
+      {"vectors", &Crystal::vectors, "also write every computed mode's bead displacements (PREFIX-modes.csv)"}};
   return table;
 }
 

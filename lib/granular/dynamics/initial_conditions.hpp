@@ -24,7 +24,7 @@ State velocity_kick(const Chain& chain, std::size_t site, double beta);
 double matched_velocity(const ForceLaw& law, const Chain& chain, std::size_t site, double alpha);
 
 /// u = a · shape / max|shape|, v = 0: a whole-chain displacement profile (e.g. a linear mode's
-/// displacements, from study/mode_kick.hpp) whose largest |u_n| is `amplitude` a [m], the chain at
+/// displacements, from case/mode_kick.hpp) whose largest |u_n| is `amplitude` a [m], the chain at
 /// a turning point. Throws InvalidInput (naming `shape` or `amplitude`) on a shape of the wrong
 /// length, all zero or not finite, on a ≤ 0 or not finite, or when a bond's static overlap plus
 /// its strain reaches a bead radius.

@@ -1,12 +1,12 @@
 #pragma once
 // The table of the `klein-gordon` job, so that the tool and Python write alike; the JSON is
-// describe(case, result) (dynamics/klein_gordon_study.hpp).
+// describe(case, result) (klein_gordon/klein_gordon_study.hpp).
 #include <memory>
 #include <ostream>
 #include <string>
 
-#include "granular/dynamics/klein_gordon_study.hpp"
 #include "granular/io/hdf5_file.hpp"
+#include "granular/klein_gordon/klein_gordon_study.hpp"
 
 namespace granular {
 

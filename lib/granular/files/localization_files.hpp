@@ -5,8 +5,8 @@
 
 #include <nlohmann/json_fwd.hpp>
 
+#include "granular/case/chain_choices.hpp"
 #include "granular/model/material.hpp"
-#include "granular/study/chain_choices.hpp"
 #include "granular/study/localization_scan.hpp"
 
 namespace granular {

@@ -10,9 +10,9 @@
 
 #include <nlohmann/json.hpp>  // SpreadingDescription holds json values
 
+#include "granular/case/spreading_run.hpp"
 #include "granular/io/atomic_file.hpp"
 #include "granular/io/hdf5_file.hpp"
-#include "granular/study/spreading_run.hpp"
 #include "granular/study/transport_study.hpp"
 
 namespace granular {

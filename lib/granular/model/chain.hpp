@@ -40,7 +40,7 @@ struct Chain {
   /// docs/physics.md, "Quasiperiodic chains"); empty when the beads have none (every other chain).
   std::vector<double> onsite;
   /// q_n [N/m³] of a quartic part of those springs: force −k_n u − q_n u³, energy ½ k_n u² + ¼ q_n u⁴
-  /// (the disordered Klein–Gordon chain, model/klein_gordon.hpp); empty when they are linear.
+  /// (the disordered Klein–Gordon chain, klein_gordon/klein_gordon.hpp); empty when they are linear.
   std::vector<double> onsite_quartic;
   /// Linear bond springs B_k [N/m] given directly, N+1 bonds, in place of Hertz contacts (the
   /// Klein–Gordon chain's 1/W; there contact, overlap and F0 are 0); empty for every granular chain,

@@ -9,9 +9,9 @@
 #include <optional>
 #include <vector>
 
+#include "granular/case/chain_choices.hpp"
 #include "granular/ensemble/run_options.hpp"
 #include "granular/model/chain_recipe.hpp"
-#include "granular/study/chain_choices.hpp"
 
 namespace granular {
 

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 #include <numbers>
 
+#include "granular/case/time_step_rule.hpp"
 #include "granular/dynamics/force_law.hpp"
 #include "granular/dynamics/observables.hpp"
 #include "granular/dynamics/sampling.hpp"
@@ -15,7 +16,6 @@
 #include "granular/model/random_stream.hpp"
 #include "granular/number_format.hpp"
 #include "granular/study/butterfly.hpp"
-#include "granular/study/time_step_rule.hpp"
 
 namespace granular {
 namespace {

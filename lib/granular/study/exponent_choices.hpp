@@ -7,9 +7,9 @@
 #include <string>
 #include <vector>
 
-#include "granular/study/chain_choices.hpp"
+#include "granular/case/chain_choices.hpp"
+#include "granular/case/transport_parameters.hpp"
 #include "granular/study/exponent_table.hpp"
-#include "granular/study/transport_parameters.hpp"
 
 namespace granular {
 

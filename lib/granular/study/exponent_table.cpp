@@ -5,9 +5,9 @@
 #include <cstdio>
 #include <nlohmann/json.hpp>
 
+#include "granular/case/chain_length_rule.hpp"
 #include "granular/ensemble/checkpoint_log.hpp"
 #include "granular/io/csv_writer.hpp"
-#include "granular/study/chain_length_rule.hpp"
 
 namespace granular {
 

@@ -7,11 +7,11 @@
 #include <string>
 #include <vector>
 
+#include "granular/case/mode_kick.hpp"
 #include "granular/linear/spectrum.hpp"
 #include "granular/model/chain_recipe.hpp"
 #include "granular/orbits/breather_branch.hpp"
 #include "granular/study/ipr_map.hpp"
-#include "granular/study/mode_kick.hpp"
 #include "granular/study/transport_study.hpp"
 
 namespace granular {

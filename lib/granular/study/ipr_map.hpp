@@ -8,10 +8,10 @@
 #include <string>
 #include <vector>
 
+#include "granular/case/chain_choices.hpp"
 #include "granular/ensemble/run_options.hpp"
 #include "granular/linear/spectrum.hpp"
 #include "granular/model/chain_recipe.hpp"
-#include "granular/study/chain_choices.hpp"
 
 namespace granular {
 

@@ -1,0 +1,38 @@
+#pragma once
+// The parameters of a kicked-chain run, described over the typed TransportCase itself: each row
+// of transport_parameters() reaches its field of the case (c.alpha, c.dynamics.integration.duration,
+// …), so the `spreading` and `exponents` tools bind their flags and granular.spreading, transport
+// and exponent_table their keywords straight to the case, with the case's own defaults (the
+// paper's: α = 1e-7 m, β = 8e-3 m/s, the centre bead, m̃2 about the kicked site, fits on 4–10 ms
+// every 10 µs, t* = 4 ms, κ = 0.1), and validate(TransportCase) checks them. Errors name the
+// parameter (`site`, `window_threshold`, `fit`); each front end tells it in its own words.
+#include <vector>
+
+#include "granular/case/transport_case.hpp"
+#include "granular/parameter_table.hpp"
+
+namespace granular {
+
+/// Each parameter of a kicked run: meaning, units, where it lives in the case, how a command line
+/// writes it (`beta` a velocity or 'match', `fit` start:stop, `active_window` on|off, the enums as
+/// words) and which choice it takes effect with (`energy_guard`: `max_energy_error`). Beyond the
+/// paper (docs/physics.md, "Nonlinear dynamics"): dissipation and the tangent map.
+const ParameterTable<TransportCase>& transport_parameters();
+
+/// The fields of a mode kick a front end sets (not `amplitude`: a run's `alpha` gives it).
+const ParameterTable<ModeKick>& mode_kick_parameters();
+
+/// Whether any of a mode kick's own fields (mode, near_khz, energy) is set: what only a mode kick
+/// may use.
+inline bool chosen(const ModeKick& kick) { return kick.mode != 0 || kick.near_khz || kick.energy != 0; }
+
+/// Sets c.mode to `kick`. Only a mode kick may use its fields: throws InvalidInput naming them
+/// unless `kicks` (the kicks the case runs: an exponent table runs several) holds Kick::mode.
+void apply(const ModeKick& kick, const std::vector<Kick>& kicks, TransportCase& c);
+
+/// Sets c.fit: whether the fit window ends by T (1e-12 relative slack). A single run or an
+/// ensemble whose window ends past T gives no exponents, only a note (the exponent table refuses
+/// such a window instead: validate).
+void fit_within_duration(TransportCase& c);
+
+}  // namespace granular

@@ -1,0 +1,107 @@
+#include "granular/klein_gordon/klein_gordon_run.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <string>
+
+#include "granular/dynamics/force_law.hpp"
+#include "granular/dynamics/initial_conditions.hpp"
+#include "granular/dynamics/observables.hpp"
+#include "granular/dynamics/propagator.hpp"
+#include "granular/dynamics/scheme.hpp"
+#include "granular/dynamics/tangent_map.hpp"
+#include "granular/ensemble/parallel_realizations.hpp"
+#include "granular/error.hpp"
+#include "granular/number_format.hpp"
+
+namespace granular {
+
+void validate(const KleinGordonRunConfig& c) {
+  validate(c.chain);
+  if (!(c.energy > 0) || !std::isfinite(c.energy))
+    throw InvalidInput("energy", " " + format_number(c.energy) + ": must be finite and > 0");
+  if (c.block > c.chain.N)
+    throw InvalidInput("block", " " + std::to_string(c.block) + ": at most N = " + std::to_string(c.chain.N));
+  if (!(c.time_step > 0) || !std::isfinite(c.time_step))
+    throw InvalidInput("time_step", " " + format_number(c.time_step) + ": must be finite and > 0");
+  if (c.sample_steps.empty()) throw InvalidInput("sample_steps", ": at least one sample");
+  if (!std::is_sorted(c.sample_steps.begin(), c.sample_steps.end()))
+    throw InvalidInput("sample_steps", ": must be sorted");
+  const double values = static_cast<double>(c.sample_steps.size()) * static_cast<double>(c.chain.N);
+  if (c.energy_map && values > klein_gordon_energy_map_limit)
+    throw InvalidInput("energy_map", ": " + std::to_string(c.sample_steps.size()) + " samples x N = " +
+                                         std::to_string(c.chain.N) + " sites = " + format_number(values) +
+                                         " values, above 2e8 (1.6 GB): fewer `samples` or sites");
+}
+
+KleinGordonRun run_klein_gordon(const KleinGordonRunConfig& config, std::uint64_t realization) {
+  validate(config);
+  KleinGordonParameters p = config.chain;
+  p.realization = realization;
+  const Chain chain = klein_gordon(p);
+  const ForceLaw law = make_force_law(ForceLawKind::linear, chain);
+  const std::size_t n = chain.size(), centre = centre_site(n);
+  const State start = config.block == 0 ? site_energy_kick(chain, centre, config.energy)
+                                        : block_energy_kick(chain, centre - std::min(centre, (config.block - 1) / 2),
+                                                            config.block, config.energy, p.seed, realization);
+  std::unique_ptr<Propagator> plain;
+  std::unique_ptr<TangentPropagator> tangent;
+  if (config.mle)
+    tangent = make_tangent_propagator(law, chain, saba2c(), config.time_step, start, localized_deviation(n, centre, 1),
+                                      {.enabled = true, .renormalize_every = 10, .time_unit = 1});
+  else plain = make_splitting_propagator(law, chain, saba2c(), config.time_step, start, {.enabled = false});
+  Propagator& run = config.mle ? static_cast<Propagator&>(*tangent) : *plain;
+
+  const double h0 = total_energy(law, chain, start);
+  KleinGordonRun out;
+  std::uint64_t done = 0;
+  for (const std::uint64_t step : config.sample_steps) {
+    if (step > done) run.advance(static_cast<std::size_t>(step - done));
+    done = std::max(done, step);
+    const State s = run.state();
+    const std::vector<double> energy = site_energies(law, chain, s);
+    const EnergySpread spread = energy_spread(energy, centre);
+    out.time.push_back(run.time());
+    out.m2.push_back(spread.m2_centroid);
+    out.participation.push_back(spread.ipr > 0 ? 1 / spread.ipr : 0.0);
+    if (config.mle) out.mle.push_back(tangent->mle());
+    if (config.energy_map) out.energy_map.insert(out.energy_map.end(), energy.begin(), energy.end());
+    out.max_energy_error = std::max(out.max_energy_error, std::abs(total_energy(law, chain, s) - h0) / h0);
+  }
+  return out;
+}
+
+KleinGordonEnsemble klein_gordon_ensemble(const KleinGordonRunConfig& config, std::size_t count, int threads) {
+  validate(config);
+  if (count < 1) throw InvalidInput("realizations", ": at least 1");
+  KleinGordonEnsemble out;
+  out.runs.resize(count);
+  KleinGordonRunConfig others = config;  // realization 0's map only: the rest would cost R times the memory
+  others.energy_map = false;
+  parallel_realizations(count, threads,
+                        [&](std::size_t r, int) { out.runs[r] = run_klein_gordon(r == 0 ? config : others, r); });
+  const std::size_t samples = config.sample_steps.size();
+  out.time = out.runs.front().time;
+  out.m2.assign(samples, 0.0);
+  out.participation.assign(samples, 0.0);
+  if (config.mle) {
+    out.mle.assign(samples, 0.0);
+    out.mean_log10_mle.assign(samples, 0.0);
+  }
+  const double scale = 1 / static_cast<double>(count);
+  for (const KleinGordonRun& run : out.runs)  // index order: the same sums for any thread count
+    for (std::size_t s = 0; s < samples; ++s) {
+      out.m2[s] += run.m2[s] * scale;
+      out.participation[s] += run.participation[s] * scale;
+      if (config.mle) {
+        out.mle[s] += run.mle[s] * scale;
+        out.mean_log10_mle[s] +=
+            run.mle[s] > 0 ? std::log10(run.mle[s]) * scale : std::numeric_limits<double>::quiet_NaN();
+      }
+    }
+  return out;
+}
+
+}  // namespace granular
