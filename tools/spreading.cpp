@@ -39,7 +39,7 @@ int main(int argc, char** argv) {
   return tool::run(app, argc, argv,
                    [&] {
                      tool::Metadata meta("spreading", argc, argv);
-                     const bool ensemble = options.realizations > 1 || run.resuming();
+                     const bool ensemble = options.run.realizations > 1 || run.resuming();
                      run.checkpoint = output + ".checkpoint";  // where an interrupted ensemble resumes from
                      validate(run);
                      KickedCase k = tool::kicked_case(options, ensemble);

@@ -25,10 +25,10 @@ _ONE_RUN = TableKeywords(_CASE, skip=_OWN + _OUTPUT_ROWS)  # granular.spreading:
 _OUTPUTS = TableKeywords(_CASE, only=_OUTPUT_ROWS, skip=("forces_at",))  # forces_at: a list of beads here
 _MODE = TableKeywords(_core.ModeKick())  # a mode kick's mode, near, energy (mode_khz: near's former keyword)
 # The chains of an ensemble: the rows of the library's chain table (chain_parameters()) that the spreading tool takes
-# with --realizations, each with the kicked case's C++ default (KickedCaseChoices().chain: N 2501). Not the files
+# with --realizations, each with the kicked case's C++ default (kicked_chain_defaults(): N 2501). Not the files
 # (config, radii: one given chain, which an ensemble refuses) nor the realization (an ensemble runs 0..R-1).
 _ENSEMBLE_SKIP = ("config", "radii", "realization")
-_TRANSPORT_CHAIN = TableKeywords(_core.KickedCaseChoices().chain, skip=_ENSEMBLE_SKIP)
+_TRANSPORT_CHAIN = TableKeywords(_core._kicked_chain_defaults(), skip=_ENSEMBLE_SKIP)
 # exponent_table's chains: the rows the exponents tool takes, each with ExponentChoices().beads's C++ default. Not
 # disorder (the kinds are `chains`, the rule of k types `types_rule`), F0 (a list of the table's own) nor R1.
 _TABLE_CHAIN = TableKeywords(_core.ExponentChoices().beads, skip=_ENSEMBLE_SKIP + ("disorder", "F0", "R1"))
@@ -207,13 +207,14 @@ def transport(*, realizations=100, ic="displacement", beta=_CASE.beta, site=None
               fit=(_CASE.fit_begin, _CASE.fit_end), profile=False, threads=0, checkpoint=None, resume=False,
               resume_other_version=False, fresh=False, skip_failed=False, progress=False, **keywords):
     chain, given, modes = split_keywords(keywords, [_TRANSPORT_CHAIN, _RUN, _MODE], "transport")
-    k = _core.KickedCaseChoices()  # made a case by the spreading tool's rule, in C++
-    _chain(_TRANSPORT_CHAIN, k.chain, chain)
-    k.ic, k.realizations = ic, _core._size(realizations, "realizations", 1)
-    _MODE.set(k.mode, modes)
-    k.run = _case(_RUN, given, beta, site, dt, fit)
+    words = _core._kicked_chain_defaults()  # made one case with `case` by the spreading tool's rule, in C++
+    _chain(_TRANSPORT_CHAIN, words, chain)
+    realizations = _core._size(realizations, "realizations", 1)
+    case = _case(_RUN, given, beta, site, dt, fit)
+    case.kick, case.realizations = ic, realizations
+    _MODE.set(case.mode, modes)
     run = _run(threads, checkpoint, resume, resume_other_version, progress, fresh, skip_failed)
-    return _transport(_core._transport(k, profile, run), profile)
+    return _transport(_core._transport(words, case, profile, run), profile)
 
 
 def _transport(raw, profile):
@@ -322,6 +323,6 @@ for _job in (spreading, transport, exponent_table):
 with_keywords(spreading, [_OUTPUTS], "Output keywords (the library's spreading_output_parameters(), with the "
               "observers' C++ defaults)", after="forces_at")
 with_keywords(transport, [_TRANSPORT_CHAIN], _CHAIN_HEADING.format("the spreading tool's chains, "
-              "KickedCaseChoices().chain"), first=True)
+              "kicked_chain_defaults()"), first=True)
 with_keywords(exponent_table, [_TABLE_CHAIN], _CHAIN_HEADING.format("the exponents tool's chains, "
               "ExponentChoices().beads"), first=True)

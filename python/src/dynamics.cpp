@@ -39,7 +39,7 @@ py::dict spreading(const PyChain& chain, TransportCase c, const PyRun& options) 
   c.chain = chain.recipe;
   SpreadingRunConfig& d = c.dynamics;
   fit_within_duration(c);                                  // a window beyond T: no exponents
-  granular::apply(ModeKick(c.mode), {c.kick}, c);          // only a mode kick takes mode, near_khz, energy
+  refuse_mode_without_mode_kick(c.mode, {c.kick});         // only a mode kick takes mode, near_khz, energy
   warn(frequency_slips(c.mode, c.chain, front_end_word));  // near_khz: Hz typed as kHz
   // τ by the stability rule on the chain's recipe: every realization of a random chain (as the
   // tool's --disorder), this very chain for a given one (as the tool's --config/--radii); a dt past
@@ -74,10 +74,10 @@ py::dict spreading(const PyChain& chain, TransportCase c, const PyRun& options) 
                 metadata("spreading", meta));
 }
 
-/// `choices`: the case as granular/_dynamics.py fills them, made a case by the tool's rule (kicked_case);
-/// `profile`: average E_n(T) over every realization.
-py::dict transport(const KickedCaseChoices& choices, bool profile, const PyRun& options) {
-  KickedCase k = kicked_case(choices, true, radius_names(choices.chain, front_end_word));
+/// `chain` and `given`: the case as granular/_dynamics.py fills them, made one case by the tool's rule
+/// (kicked_case); `profile`: average E_n(T) over every realization.
+py::dict transport(const ChainChoices& chain, const TransportCase& given, bool profile, const PyRun& options) {
+  KickedCase k = kicked_case(chain, given, true, radius_names(chain, front_end_word));
   warn(k.warnings);  // implausible radii, before the run as the tool says them
   warn(frequency_slips(k.c.mode, k.c.chain, front_end_word));  // near_khz: Hz typed as kHz
   TransportCase& c = k.c;
@@ -225,10 +225,8 @@ void bind_dynamics(py::module_& m) {
   // The quasiperiodic chain of the choices (None without `quasi`) by the tools' rule: a keyword
   // that takes no effect on it (angle with s1) is refused.
   m.def("_quasiperiodic", [](const ChainChoices& c) { return quasiperiodic(c); });
-  using K = KickedCaseChoices;  // granular.transport's case, made by the spreading tool's rule
-  config_class(m, "KickedCaseChoices", "chain ic mode run realizations", &K::chain, &K::ic, &K::mode, &K::run,
-               &K::realizations);
-  table_class(m, "_RunOptions", long_run_parameters());  // the library's rows
+  m.def("_kicked_chain_defaults", &kicked_chain_defaults);  // granular.transport's chain keywords' defaults
+  table_class(m, "_RunOptions", long_run_parameters());     // the library's rows
   py::class_<PyRun, RunOptions>(m, "RunOptions")
       .def(py::init<>())
       .def_readwrite("checkpoint", &PyRun::checkpoint)

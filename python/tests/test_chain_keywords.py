@@ -16,7 +16,7 @@ FILES = ("config", "radii", "realization")  # one given chain, or one realizatio
 # Each job: its defaults (a ChainChoices made in C++) and which rows its tool takes as chain keywords, by the
 # rows it leaves out (so that a new row is taken), or (correlations, whose tool names them) the rows it takes.
 JOBS = [
-    pytest.param(gr.transport, lambda: core.KickedCaseChoices().chain, dict(skip=FILES), id="transport"),
+    pytest.param(gr.transport, lambda: core._kicked_chain_defaults(), dict(skip=FILES), id="transport"),
     # disorder: the kinds are `chains`; F0: the table's own list; R1: the exponents tool takes none
     pytest.param(gr.exponent_table, lambda: core.ExponentChoices().beads,
                  dict(skip=FILES + ("disorder", "F0", "R1")), id="exponent_table"),
@@ -60,7 +60,7 @@ def test_chain_keywords_are_the_chain_table_with_the_jobs_defaults(function, def
 @pytest.mark.parametrize("function, N", [(gr.transport, 2501), (gr.exponent_table, 2501), (gr.ipr_map, 100),
                                          (gr.correlations, 100)])
 def test_each_job_has_its_own_chain_length(function, N):
-    """The job's own default, made in C++ (KickedCaseChoices, ExponentChoices, IprMapConfig, CorrelationConfig)."""
+    """The job's own default, made in C++ (kicked_chain_defaults, ExponentChoices, IprMapConfig, CorrelationConfig)."""
     assert inspect.signature(function).parameters["N"].default == N
 
 

@@ -1,5 +1,5 @@
 // The kicked case a front end chooses (case/kicked_case.hpp): the case is the one the parts'
-// own rules give (chain_recipe, apply), --N auto sizes the chain around a centre kick and says
+// own rules give (chain_recipe, the typed case as set), --N auto sizes the chain around a centre kick and says
 // by which rule, an ensemble refuses a chain that is not random, and a case file gives back the
 // case that was written, with the realizations asked for.
 #include "granular/case/kicked_case.hpp"
@@ -20,9 +20,23 @@ namespace {
 
 const RadiusNames names{"R1", "beads", "radii"};
 
-std::string refused_parameter(const KickedCaseChoices& o, bool ensemble) {
+/// The chain in words and the typed case, as a front end fills them.
+struct KickedChoices {
+  ChainChoices chain = kicked_chain_defaults();
+  TransportCase run = [] {
+    TransportCase c;
+    c.realizations = 1;
+    return c;
+  }();
+};
+
+KickedCase kicked_case_of(const KickedChoices& o, bool ensemble) {
+  return kicked_case(o.chain, o.run, ensemble, names);
+}
+
+std::string refused_parameter(const KickedChoices& o, bool ensemble) {
   try {
-    kicked_case(o, ensemble, names);
+    kicked_case_of(o, ensemble);
   } catch (const InvalidInput& e) {
     return e.parameter().empty() ? e.what() : e.parameter();
   }
@@ -30,12 +44,12 @@ std::string refused_parameter(const KickedCaseChoices& o, bool ensemble) {
 }
 
 TEST(KickedCase, IsTheCaseThePartsRulesGive) {
-  KickedCaseChoices o;
+  KickedChoices o;
   o.chain.disorder = "RDM1", o.chain.n = 201, o.chain.seed = 4, o.chain.realization = 2;
-  o.ic = "velocity", o.run.dynamics.integration.duration = 2e-3, o.run.fit_begin = 1e-3, o.run.fit_end = 3e-3,
-  o.realizations = 7;
+  o.run.kick = Kick::velocity, o.run.dynamics.integration.duration = 2e-3, o.run.fit_begin = 1e-3, o.run.fit_end = 3e-3,
+  o.run.realizations = 7;
   o.run.dynamics.integration.damping.time = 1e-2;
-  const KickedCase k = kicked_case(o, true, names);
+  const KickedCase k = kicked_case_of(o, true);
 
   TransportCase expected = o.run;
   std::vector<std::string> warnings;
@@ -53,10 +67,10 @@ TEST(KickedCase, IsTheCaseThePartsRulesGive) {
 }
 
 TEST(KickedCase, AutomaticLengthSizesTheChainAroundACentreKick) {
-  KickedCaseChoices o;
+  KickedChoices o;
   o.chain.auto_n = true, o.chain.n = 3, o.run.dynamics.integration.duration = 1e-3, o.run.fit_begin = 4e-4,
   o.run.fit_end = 1e-3;
-  const KickedCase k = kicked_case(o, false, names);
+  const KickedCase k = kicked_case_of(o, false);
   const std::size_t n = automatic_chain_length(k.c).n;
   EXPECT_GT(n, 3u);
   EXPECT_EQ(k.c.chain.N, n);
@@ -70,21 +84,44 @@ TEST(KickedCase, AutomaticLengthSizesTheChainAroundACentreKick) {
 TEST(KickedCase, AnEnsembleDrawsRandomChains) {
   const std::string radii = testing::scratch_path("kicked-case", "radii.txt");
   std::ofstream(radii) << "4.76e-3\n3e-3\n4.76e-3\n3e-3\n4.76e-3\n";
-  KickedCaseChoices o;
+  KickedChoices o;
   o.chain.radii = radii, o.run.dynamics.integration.duration = 1e-4, o.run.fit_begin = 5e-5, o.run.fit_end = 1e-4;
   EXPECT_EQ(refused_parameter(o, false), "(accepted)");
   const std::string refusal = refused_parameter(o, true);
   EXPECT_NE(refusal.find("`realizations`"), std::string::npos) << refusal;
-  o.chain.radii.clear(), o.realizations = 0;
+  o.chain.radii.clear(), o.run.realizations = 0;
   EXPECT_EQ(refused_parameter(o, false), "realizations");
 }
 
+TEST(KickedCase, AModeIsChosenOnlyForAModeKick) {
+  KickedChoices o;
+  o.chain.n = 51, o.run.dynamics.integration.duration = 1e-4, o.run.fit_begin = 5e-5, o.run.fit_end = 1e-4;
+  o.run.mode.mode = 3;
+  const std::string refusal = refused_parameter(o, false);
+  EXPECT_NE(refusal.find("only with `ic` mode"), std::string::npos) << refusal;
+  o.run.kick = Kick::mode;
+  EXPECT_EQ(refused_parameter(o, false), "(accepted)");
+}
+
+TEST(KickedCase, ItsRowsReachTheCaseFields) {
+  TransportCase c;
+  const ParameterTable<TransportCase>& rows = kicked_case_parameters();
+  ASSERT_EQ(rows.size(), 2u);
+  parameter(rows, "ic").text->read(c, "mode");
+  std::get<Ref<TransportCase, unsigned long>>(parameter(rows, "realizations").field)(c) = 12;
+  EXPECT_EQ(c.kick, Kick::mode);
+  EXPECT_EQ(c.realizations, 12u);
+  EXPECT_EQ(parameter(rows, "ic").text->write(c), "mode");
+  EXPECT_THROW(parameter(rows, "ic").text->read(c, "kick"), InvalidInput) << "not a kick";
+}
+
 TEST(KickedCase, ACaseFileGivesBackTheCaseWritten) {
-  KickedCaseChoices o;
-  o.chain.disorder = "A", o.chain.n = 51, o.chain.seed = 3, o.ic = "displacement",
+  KickedChoices o;
+  o.chain.disorder = "A", o.chain.n = 51, o.chain.seed = 3, o.run.kick = Kick::displacement,
   o.run.dynamics.integration.duration = 5e-4;
-  o.run.fit_begin = 2e-4, o.run.fit_end = 5e-4, o.run.dynamics.integration.lyapunov.enabled = true, o.realizations = 5;
-  const KickedCase written = kicked_case(o, true, names);
+  o.run.fit_begin = 2e-4, o.run.fit_end = 5e-4, o.run.dynamics.integration.lyapunov.enabled = true,
+  o.run.realizations = 5;
+  const KickedCase written = kicked_case_of(o, true);
   const std::string path = write_replay_case(written.c, 3, testing::scratch_path("kicked-case", "run"));
   const KickedCase read = kicked_case(path, 3, 5, 20, true);
   TransportCase expected = written.c;

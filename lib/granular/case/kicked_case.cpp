@@ -18,25 +18,41 @@ void set_realizations(KickedCase& k, long long realizations, bool ensemble) {
   k.warnings.insert(k.warnings.end(), k.selected.warnings.begin(), k.selected.warnings.end());
 }
 
+void read_kick(TransportCase& c, const std::string& word) { c.kick = parse_kick(word); }
+std::string write_kick(const TransportCase& c) { return to_string(c.kick); }
+
 }  // namespace
 
-KickedCase kicked_case(const KickedCaseChoices& o, bool ensemble, const RadiusNames& names) {
-  if (o.chain.auto_n) require_centre_kick(o.run.site);
+ChainChoices kicked_chain_defaults() { return ChainChoices{.n = 2501}; }
+
+const ParameterTable<TransportCase>& kicked_case_parameters() {
+  using C = TransportCase;
+  static const ParameterTable<C> table{
+      Parameter<C>{"ic",
+                   {},
+                   {read_kick, write_kick},
+                   "initial condition: displacement | velocity | mode (a linear mode: `mode`, `near`)"}
+          .as_word(),
+      {"realizations", &C::realizations, "realizations to average (ensemble means and exponents; >= 1)"}};
+  return table;
+}
+
+KickedCase kicked_case(const ChainChoices& chain, const TransportCase& run, bool ensemble, const RadiusNames& names) {
+  if (chain.auto_n) require_centre_kick(static_cast<long long>(run.site));
   KickedCase k;  // (not an aggregate initializer: GCC 12 destroys its members twice when one throws)
   TransportCase& c = k.c;
-  c = o.run;
-  c.chain = chain_recipe(o.chain, k.warnings, KickedCaseChoices{}.chain);  // with auto_n, N 3 until sized below
-  c.kick = parse_kick(o.ic);
-  apply(o.mode, {c.kick}, c);
+  c = run;
+  c.chain = chain_recipe(chain, k.warnings, kicked_chain_defaults());  // with auto_n, N 3 until sized below
+  refuse_mode_without_mode_kick(c.mode, {c.kick});
   fit_within_duration(c);  // a window beyond T: no exponents, a note
   nlohmann::json rule;
-  if (o.chain.auto_n) {
+  if (chain.auto_n) {
     validate(c.chain);                       // a drawn two-type chain
     rule = to_json(size_for_long_times(c));  // N, the centre kick, the centred draw
   }
-  k.selected = select_chain(c.chain, chain_realization(o.chain), names);
-  if (o.chain.auto_n) k.selected.description["N_rule"] = rule;
-  set_realizations(k, o.realizations, ensemble);
+  k.selected = select_chain(c.chain, chain_realization(chain), names);
+  if (chain.auto_n) k.selected.description["N_rule"] = rule;
+  set_realizations(k, static_cast<long long>(run.realizations), ensemble);
   return k;
 }
 

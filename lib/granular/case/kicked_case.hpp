@@ -1,10 +1,10 @@
 #pragma once
-// A kicked-chain case as front ends choose it — the chain, the kick, the run's choices and how
-// many realizations — turned into a TransportCase by one rule, for the `spreading` tool and
-// granular.transport alike; or whole from a case file (a replay file, a run's JSON). With
-// chain.auto_n (the tool's --N auto) N is sized from T so that no wave reaches a wall
-// (chain_length_rule.hpp). Errors name the choice in the library's words (`realizations`,
-// `site`, `radii`); each front end tells it in its own.
+// A kicked-chain case as front ends choose it — the chain in words (chain_choices.hpp) and the
+// TransportCase their other options set, its kick and realizations included — made one case by
+// one rule, for the `spreading` tool and granular.transport alike; or whole from a case file (a
+// replay file, a run's JSON). With chain.auto_n (the tool's --N auto) N is sized from T so that
+// no wave reaches a wall (chain_length_rule.hpp). Errors name the choice in the library's words
+// (`realizations`, `site`, `radii`, `ic`); each front end tells it in its own.
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -13,18 +13,9 @@
 #include "granular/case/transport_case.hpp"
 #include "granular/case/transport_parameters.hpp"
 #include "granular/model/selected_chain.hpp"
+#include "granular/parameter_table.hpp"
 
 namespace granular {
-
-struct KickedCaseChoices {
-  ChainChoices chain{.n = 2501};    ///< the chains (realization: the one a single run integrates)
-  std::string ic = "displacement";  ///< the kick: displacement | velocity | mode
-  ModeKick mode{};                  ///< a mode kick's mode
-  /// The run as transport_parameters() sets it: where the kick lands, the scheme, samples, fit,
-  /// guards, damping and the tangent map (its chain, kick, mode and realizations come from here).
-  TransportCase run{};
-  long long realizations = 1;  ///< realizations averaged (≥ 1)
-};
 
 struct KickedCase {
   TransportCase c;
@@ -32,12 +23,24 @@ struct KickedCase {
   std::vector<std::string> warnings;  ///< implausible radii, in the caller's names
 };
 
-/// The case the choices give, before validation (outputs may still add observers to it;
-/// validate_and_settle then settles the step and, for integrator auto, the scheme: the case stands
-/// for SABA2C until then). `ensemble`: it averages realizations, so its chains must be random
-/// (not a types or radii file). `names`: how the caller's user names the radii, for the warnings.
-/// E_n(T) is averaged over no realization unless the caller sets c.profile_realizations.
-KickedCase kicked_case(const KickedCaseChoices& o, bool ensemble, const RadiusNames& names);
+/// The chain choices of a kicked case before any is given: ChainChoices' own, with N = 2501 (the
+/// paper's). Against them a choice counts as given (chain_recipe's `defaults`), and front ends
+/// show them as their defaults (the spreading tool's --N, granular.transport's N).
+ChainChoices kicked_chain_defaults();
+
+/// The rows a kicked case takes beyond transport_parameters(): the kick `ic` (displacement,
+/// velocity or mode: the mode of `run.mode`, mode_kick_parameters()) and the `realizations`
+/// averaged (>= 1), each reaching its field of TransportCase.
+const ParameterTable<TransportCase>& kicked_case_parameters();
+
+/// The case `run` is with the chain `chain` (realization chain.realization), before validation
+/// (outputs may still add observers to it; validate_and_settle then settles the step and, for
+/// integrator auto, the scheme: the case stands for SABA2C until then). `run` gives the kick, its
+/// mode, the dynamics and the realizations. `ensemble`: it averages realizations, so its chains
+/// must be random (not a types or radii file). `names`: how the caller's user names the radii, for
+/// the warnings. E_n(T) is averaged over no realization unless the caller sets
+/// c.profile_realizations. With chain.auto_n, N is sized from T so that no wave reaches a wall.
+KickedCase kicked_case(const ChainChoices& chain, const TransportCase& run, bool ensemble, const RadiusNames& names);
 
 /// The case of the case file at `path` (read_case_file), realization `realization` of its chains,
 /// run over `realizations`, its deviation vector sampled `deviation_samples` times (0: none).

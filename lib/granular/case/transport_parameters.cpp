@@ -162,10 +162,9 @@ const ParameterTable<ModeKick>& mode_kick_parameters() {
   return table;
 }
 
-void apply(const ModeKick& kick, const std::vector<Kick>& kicks, TransportCase& c) {
+void refuse_mode_without_mode_kick(const ModeKick& kick, const std::vector<Kick>& kicks) {
   if (chosen(kick) && std::find(kicks.begin(), kicks.end(), Kick::mode) == kicks.end())
     throw InvalidInput("`mode`/`near_khz`/`energy`: only with `ic` mode");
-  c.mode = kick;
 }
 
 void fit_within_duration(TransportCase& c) { c.fit = c.fit_end <= c.dynamics.integration.duration * (1 + 1e-12); }

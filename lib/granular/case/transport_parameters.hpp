@@ -26,9 +26,9 @@ const ParameterTable<ModeKick>& mode_kick_parameters();
 /// may use.
 inline bool chosen(const ModeKick& kick) { return kick.mode != 0 || kick.near_khz || kick.energy != 0; }
 
-/// Sets c.mode to `kick`. Only a mode kick may use its fields: throws InvalidInput naming them
-/// unless `kicks` (the kicks the case runs: an exponent table runs several) holds Kick::mode.
-void apply(const ModeKick& kick, const std::vector<Kick>& kicks, TransportCase& c);
+/// Only a mode kick may use a ModeKick's fields: throws InvalidInput naming them if `kick` is
+/// chosen and `kicks` (the kicks the case runs: an exponent table runs several) lacks Kick::mode.
+void refuse_mode_without_mode_kick(const ModeKick& kick, const std::vector<Kick>& kicks);
 
 /// Sets c.fit: whether the fit window ends by T (1e-12 relative slack). A single run or an
 /// ensemble whose window ends past T gives no exponents, only a note (the exponent table refuses

@@ -95,7 +95,8 @@ void apply(const ExponentChoices& o, ExponentTableConfig& config) {
   kinds.angle = plain.angle, kinds.k0 = plain.k0, kinds.k0_n_per_m = plain.k0_n_per_m;
   std::vector<std::string> no_file_read;
   config.base.chain = chain_recipe(kinds, no_file_read);
-  apply(o.mode, config.kicks, config.base);
+  refuse_mode_without_mode_kick(o.mode, config.kicks);
+  config.base.mode = o.mode;
   validate(config);
 }
 
