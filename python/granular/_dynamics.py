@@ -16,6 +16,8 @@ from ._schema import TableKeywords, split_keywords, with_keywords
 # integrator, samples, fit_step, window_threshold, damping, mle, ...), each with the case's own C++ default and the
 # table's help; those below are the ones Python takes in forms of its own.
 _CASE = _core.TransportCase()
+_TABLE = _core.ExponentTableConfig()  # the exponent table's C++ defaults: F0s, realizations, profiles
+_TABLE_WORDS = _core.ExponentChoices()  # its chain kinds and kicks in words
 _OWN = ("beta", "site", "time_step", "fit", "fit_begin", "fit_end")
 _OUTPUT_ROWS = tuple(_core._spreading_output_parameters)  # one run's force series, energy map and g(nu)
 # One realization's tangent-space outputs: an ensemble writes no deviation vector and averages no spectrum.
@@ -94,7 +96,7 @@ def _run(threads=0, checkpoint=None, resume=False, resume_other_version=False, p
     return r
 
 
-def spreading(chain, *, ic="displacement", beta=_CASE.beta, site=None, dt=None, fit=(_CASE.fit_begin, _CASE.fit_end),
+def spreading(chain, *, ic=_CASE.kick, beta=_CASE.beta, site=None, dt=None, fit=(_CASE.fit_begin, _CASE.fit_end),
               forces_at=None, progress=False, **run):
     if not isinstance(chain, _core.Chain):
         raise TypeError(f"spreading: chain must be a granular.Chain, got {type(chain).__name__}")
@@ -203,7 +205,7 @@ spreading.__doc__ = (
     "warnings, metadata. Releases the GIL.")
 
 
-def transport(*, realizations=100, ic="displacement", beta=_CASE.beta, site=None, dt=None,
+def transport(*, realizations=100, ic=_CASE.kick, beta=_CASE.beta, site=None, dt=None,
               fit=(_CASE.fit_begin, _CASE.fit_end), profile=False, threads=0, checkpoint=None, resume=False,
               resume_other_version=False, fresh=False, skip_failed=False, progress=False, **keywords):
     chain, given, modes = split_keywords(keywords, [_TRANSPORT_CHAIN, _RUN, _MODE], "transport")
@@ -257,10 +259,11 @@ transport.__doc__ = (
     "Ctrl-C stops it after the realizations in flight (KeyboardInterrupt), leaving the checkpoint to resume from.")
 
 
-def exponent_table(*, chains=["h", "A", "RDM1", "RDM2"], F0=[10.0, 0.5, 0.1, 0.01, 0.0],  # noqa: B006 (read only)
-                   types_rule=None, chain_name=None, ic=["displacement", "velocity"], realizations=500,
+def exponent_table(*, chains=_TABLE_WORDS.chains, F0=_TABLE.precompressions,
+                   types_rule=None, chain_name=None, ic=_TABLE_WORDS.ic, realizations=_TABLE.base.realizations,
                    beta=_CASE.beta, site=None, dt=None, fit=(_CASE.fit_begin, _CASE.fit_end),
-                   profile_F0=[10.0, 0.1, 0.0], profile_realizations=100, compare_paper=False, threads=0,
+                   profile_F0=_TABLE.profile_precompressions, profile_realizations=_TABLE.profile_realizations,
+                   compare_paper=False, threads=0,
                    checkpoint=None, resume=False, resume_other_version=False, fresh=False, skip_failed=False,
                    progress=False, **keywords):
     chain, given, modes = split_keywords(keywords, [_TABLE_CHAIN, _RUN, _MODE], "exponent_table")

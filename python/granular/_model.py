@@ -11,6 +11,7 @@ from ._arguments import double_vector
 from ._core import Chain, FpuCoefficients, Material, flat_wall, paper_r1, steel
 
 _MAX = 100000000  # beads of a stored chain
+_C = _core.ChainChoices()  # the chain table's C++ defaults (chain_parameters()), every constructor's
 
 
 def _document(cls, doc, **properties):
@@ -82,8 +83,8 @@ Keywords (as the tools' options):
 Returns a granular.Chain. Raises ValueError naming the keyword when a value is out of range."""
 
 
-def random_chain(disorder="A", N=100, q=0.5, xi=0.5, seed=1, realization=0, F0=10.0, R1=paper_r1, material=steel,
-                 walls="flat"):
+def random_chain(disorder=_C.disorder, N=_C.N, q=_C.q, xi=_C.xi, seed=_C.seed, realization=_C.realization, F0=_C.F0,
+                 R1=paper_r1, material=steel, walls=_C.walls):
     recipe = _core.ChainRecipe()
     recipe.disorder = disorder
     recipe.N = _core._size(N, "N", 2, _MAX)
@@ -96,7 +97,8 @@ def random_chain(disorder="A", N=100, q=0.5, xi=0.5, seed=1, realization=0, F0=1
 
 def _kind(disorder, name, summary):
     """random_chain with its disorder fixed: the named constructors below."""
-    def make(N=100, q=0.5, xi=0.5, seed=1, realization=0, F0=10.0, R1=paper_r1, material=steel, walls="flat"):
+    def make(N=_C.N, q=_C.q, xi=_C.xi, seed=_C.seed, realization=_C.realization, F0=_C.F0, R1=paper_r1,
+             material=steel, walls=_C.walls):
         return random_chain(disorder, N, q, xi, seed, realization, F0, R1, material, walls)
     make.__name__ = make.__qualname__ = name
     make.__doc__ = summary + _CHAIN_KEYWORDS
@@ -114,7 +116,7 @@ random_chain.__doc__ = ("Realization `realization` of seed `seed` of a disorder 
                         "'RDM2' (the tools' --disorder)." + _CHAIN_KEYWORDS)
 
 
-def diatomic(N=100, xi=0.5, F0=10.0, R1=paper_r1, material=steel, walls="flat"):
+def diatomic(N=_C.N, xi=_C.xi, F0=_C.F0, R1=paper_r1, material=steel, walls=_C.walls):
     """Alternating types 1, 2, 1, 2, ...: the ordered chain whose band edges fb1, fb2, fb3 granular.band_edges
     gives. N beads, xi = R2/R1 in (0, 1], F0 [N], R1 [m], walls "flat" or "sphere" (as random_chain)."""
     recipe = _core.ChainRecipe()
@@ -133,7 +135,7 @@ def _types(values):
     return [int(x) for x in numbers]
 
 
-def from_types(types, xi=0.5, F0=10.0, R1=paper_r1, material=steel, walls="flat"):
+def from_types(types, xi=_C.xi, F0=_C.F0, R1=paper_r1, material=steel, walls=_C.walls):
     """A chain of given bead types: `types` is any array-like of 1 and 2 (type 1 has radius R1 [m], type 2 xi*R1),
     as a --config file holds them. F0 [N]; walls "flat" or "sphere" (as random_chain)."""
     recipe = _core.ChainRecipe()
@@ -143,7 +145,7 @@ def from_types(types, xi=0.5, F0=10.0, R1=paper_r1, material=steel, walls="flat"
     return _core._typed_chain(recipe, 0, walls, "")
 
 
-def from_radii(radii, F0=10.0, material=steel, walls="flat"):
+def from_radii(radii, F0=_C.F0, material=steel, walls=_C.walls):
     """A chain of beads of given radii [m] (any 1-D array-like, each finite and > 0) of one material under
     precompression F0 [N], between walls of the same material: "flat", or "sphere" (fixed spheres of the end beads'
     radii)."""
@@ -175,8 +177,9 @@ def _quasi(kind, modulation, ratio, phase, angle, k0, k0_n_per_m=0.0, keyword="q
         raise ValueError(re.sub(r"\bquasi\b", keyword, str(e))) from None
 
 
-def quasiperiodic(kind="s2", N=100, modulation=0.0, ratio="golden", phase=None, angle=45.0, k0=4.0, seed=1,
-                  realization=0, F0=10.0, R1=paper_r1, material=steel, k0_n_per_m=0.0):
+def quasiperiodic(kind="s2", N=_C.N, modulation=_C.modulation, ratio=_C.ratio, phase=None, angle=_C.angle, k0=_C.k0,
+                  seed=_C.seed, realization=_C.realization, F0=_C.F0, R1=paper_r1, material=steel,
+                  k0_n_per_m=_C.k0_n_per_m):
     """A quasiperiodic chain (docs/physics.md, "Quasiperiodic chains"), modulated by 1 + modulation*cos(2 pi ratio n
     + phase): kind = 's1' (on-site springs k0*K each, K the bond stiffness), 's2' (masses of spheres of radius R1) or
     'cylinders' (crossing angles angle*(...) [degrees] of cylinders of radius R1, length 2 R1); the tools' --quasi.
@@ -193,7 +196,7 @@ def quasiperiodic(kind="s2", N=100, modulation=0.0, ratio="golden", phase=None, 
     return _core._chain(recipe, _core._size(realization, "realization"))
 
 
-def configuration(disorder="A", q=0.5, N=100, seed=1, realization=0):
+def configuration(disorder=_C.disorder, q=_C.q, N=_C.N, seed=_C.seed, realization=_C.realization):
     """The bead types (uint8 array of 1 and 2) of realization `realization` of seed `seed`: what random_chain builds
     its chain from. All xi of one (disorder, q, N, seed, realization) share it."""
     return _core._configuration(disorder, q, _core._size(N, "N", 2, 100000000), _core._size(seed, "seed"),

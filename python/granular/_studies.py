@@ -85,8 +85,12 @@ class IprMap:
 _IPR_MAP_CHAIN = TableKeywords(_core._ipr_map_chain(), skip=("q", "xi", "realization", "config", "radii"))
 
 
-def ipr_map(*, xi="0.1:1", q="0.2,0.5,0.8", realizations=100, solver="fast", near=None, count=None, window=None,
-            method=None, bin_khz=0.0, threads=0, progress=False, **chain_keywords):
+_C = _core.ChainChoices()  # the chain table's C++ defaults (chain_parameters())
+_DB = _core.DynamicalButterflyConfig()  # dynamical_butterfly_parameters()' C++ defaults
+
+def ipr_map(*, xi="0.1:1", q="0.2,0.5,0.8", realizations=_core.IprMapConfig().realizations, solver="fast",
+            near=None, count=None, window=None, method=None, bin_khz=0.0, threads=0, progress=False,
+            **chain_keywords):
     """Mean frequency [kHz] and displacement IPR of every mode of disordered chains over realizations, on a (q, xi)
     grid: the paper's IPR map, as the ipr-map tool computes it (same numbers for the same keywords).
 
@@ -142,9 +146,9 @@ class Butterfly:
         return f"<granular.Butterfly {len(self.ratios)} ratios, {len(self.freq_khz)} modes>"
 
 
-def butterfly(kind="s1", *, ratios="0.005:0.995:0.005", N=100, modulation=0.0, phase=None, angle=45.0, k0=4.0,
-              seed=1, realization=0, F0=10.0, R1=_core.paper_r1, largest_box=0.0, smallest_box=4.0, box_sizes=12,
-              threads=0, progress=False):
+def butterfly(kind="s1", *, ratios="0.005:0.995:0.005", N=_C.N, modulation=_C.modulation, phase=None,
+              angle=_C.angle, k0=_C.k0, seed=_C.seed, realization=_C.realization, F0=_C.F0, R1=_core.paper_r1,
+              largest_box=0.0, smallest_box=4.0, box_sizes=12, threads=0, progress=False):
     """The Hofstadter butterfly of a quasiperiodic chain (docs/physics.md, "Quasiperiodic chains"): every mode's
     frequency [kHz] and displacement IPR for each incommensurate ratio of `ratios` (a sequence, a number or the
     tools' range string), one chain (one phase) per ratio, and the box-counting dimension of each spectrum fitted
@@ -189,10 +193,11 @@ class DynamicalButterfly:
         return f"<granular.DynamicalButterfly {len(self.ratios)} ratios x {len(self.freq_khz)} frequencies>"
 
 
-def dynamical_butterfly(kind="s1", *, ratios="0.005:0.995:0.005", N=100, modulation=0.0, phase=None,
-                        angle=45.0, k0=4.0, seed=1, realization=0, F0=10.0, R1=_core.paper_r1, T=1e-2, dt=1e-6,
-                        amplitude=1e-5, velocity_seed=1, spectrum_samples=2001, spectrum_of="velocity",
-                        integrator="saba2c", force_law="hertz", max_energy_error=1e-3, threads=0, progress=False):
+def dynamical_butterfly(kind="s1", *, ratios="0.005:0.995:0.005", N=_C.N, modulation=_C.modulation, phase=None,
+                        angle=_C.angle, k0=_C.k0, seed=_C.seed, realization=_C.realization, F0=_C.F0,
+                        R1=_core.paper_r1, T=1e-2, dt=1e-6, amplitude=_DB.amplitude, velocity_seed=_DB.velocity_seed,
+                        spectrum_samples=_DB.spectrum_samples, spectrum_of="velocity", integrator="saba2c",
+                        force_law="hertz", max_energy_error=_DB.max_energy_error, threads=0, progress=False):
     """The Hofstadter butterfly recovered from the dynamics (docs/quasiperiodic.md, "The butterfly from the
     dynamics"): for each ratio beta of `ratios` (a sequence, a number or the tools' range string) the chain is
     started from u = 0 and velocities uniform in [-amplitude, amplitude] [m/s] on every bead (seed velocity_seed,
@@ -299,11 +304,13 @@ class Correlations:
 
 # granular.correlations' chain keywords: the rows of the library's chain table the correlations tool takes, each
 # with the study's C++ default (chain_choices of CorrelationConfig{}.chain: N 100).
+_CORRELATIONS = _core.CorrelationConfig()  # its C++ defaults: realizations, max_distance
 _CORRELATION_CHAIN = TableKeywords(_core._correlation_chain(),
                                    only=("disorder", "q", "N", "seed", "types", "type_masses", "polydisperse"))
 
 
-def correlations(*, realizations=100, max_distance=10, threads=0, progress=False, **chain_keywords):
+def correlations(*, realizations=_CORRELATIONS.realizations, max_distance=_CORRELATIONS.max_distance, threads=0,
+                 progress=False, **chain_keywords):
     """Ensemble mean and spread of the Pearson coefficient rho(d) of bead types (type 1 -> 0, type 2 -> 1) with
     their cyclic shift by d, beside the infinite-chain formula: the correlations tool.
 
