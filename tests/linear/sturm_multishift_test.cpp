@@ -137,5 +137,46 @@ TEST(ManyShiftBisection, EigenvaluesMatchDstebzOnRandomAndClusteredMatrices) {
   }
 }
 
+// With `nearest` = K, the bisection may stop lanes that K others are certainly nearer to the centre
+// (in √λ): the K nearest and their index neighbours still reach full precision, and every stopped
+// lane's value, a coarse midpoint, is farther from the centre than each of the K nearest.
+TEST(ManyShiftBisection, OnlyTheNearestAndTheirNeighboursAreRefined) {
+  for (const auto& [t, what] : {std::pair{multishift_random_chain(Disorder::anderson, 4000, 8), "anderson"},
+                                std::pair{multishift_random_chain(Disorder::homogeneous, 3000, 1), "homogeneous"},
+                                std::pair{multishift_twin_blocks(1500, 10), "twin blocks"}}) {
+    const int n = static_cast<int>(t.size());
+    const double scale = std::max(std::fabs(gershgorin_bounds(t).first), std::fabs(gershgorin_bounds(t).second));
+    const int first = n / 2 - 21, last = n / 2 + 22;  // 44 lanes, as a nearest selection of 20 asks
+    const std::vector<double> lapack = multishift_dstebz(t, first, last);
+    const double centre = 0.5 * (lapack[20] + lapack[21]);
+    constexpr std::size_t K = 20;
+    std::vector<double> brackets;
+    const std::vector<double> ours = bisect_eigenvalues(t, first, last, 1e-14, 0, &brackets, centre, K);
+    ASSERT_EQ(ours.size(), lapack.size()) << what;
+    auto distance = [&](double v) { return std::fabs(std::sqrt(v) - std::sqrt(centre)); };
+    std::vector<std::size_t> order(lapack.size());
+    for (std::size_t j = 0; j < order.size(); ++j) order[j] = j;
+    std::sort(order.begin(), order.end(),
+              [&](std::size_t a, std::size_t b) { return distance(lapack[a]) < distance(lapack[b]); });
+    std::vector<bool> nearest(lapack.size(), false);
+    for (std::size_t q = 0; q < K; ++q) nearest[order[q]] = true;
+    std::size_t stopped = 0;
+    for (std::size_t j = 0; j < ours.size(); ++j) {
+      const bool needed = nearest[j] || (j > 0 && nearest[j - 1]) || (j + 1 < ours.size() && nearest[j + 1]);
+      const double width = brackets[2 * j + 1] - brackets[2 * j];
+      EXPECT_LE(brackets[2 * j], lapack[j] + 1e-13 * scale) << what << " lane " << j;
+      EXPECT_GE(brackets[2 * j + 1], lapack[j] - 1e-13 * scale) << what << " lane " << j;
+      if (needed) {
+        EXPECT_NEAR(ours[j], lapack[j], 1e-13 * scale) << what << " lane " << j << " (wanted)";
+        continue;
+      }
+      stopped += width > 1e-12 * scale;
+      for (std::size_t q = 0; q < K; ++q)
+        EXPECT_GT(distance(ours[j]), distance(ours[order[q]])) << what << " stopped lane " << j;
+    }
+    EXPECT_GT(stopped, 0u) << what << ": no lane was spared";
+  }
+}
+
 }  // namespace
 }  // namespace granular

@@ -139,7 +139,8 @@ std::vector<long> count_below_many(const SymTridiagonal& t, const std::vector<do
 }
 
 std::vector<double> bisect_eigenvalues(const SymTridiagonal& t, int first, int last, double relative_width,
-                                       double isolated_width, std::vector<double>* brackets, double centre) {
+                                       double isolated_width, std::vector<double>* brackets, double centre,
+                                       std::size_t nearest) {
   const int n = static_cast<int>(t.size());
   if (first < 1 || last < first || last > n)
     throw InvalidInput("eigenvalue index range " + std::to_string(first) + ".." + std::to_string(last) +
@@ -153,19 +154,42 @@ std::vector<double> bisect_eigenvalues(const SymTridiagonal& t, int first, int l
   // Lane j brackets eigenvalue number first + j: count(lo) < first + j <= count(hi).
   std::vector<double> lo(m, glo), hi(m, ghi);
   std::vector<long> count_lo(m, 0), count_hi(m, n);  // counts at the bracket ends
+  // With `nearest`: the lanes still wanted, those that may be among the K nearest the centre in
+  // √λ and their neighbours by index (recomputed every pass; a lane once unwanted stays so).
+  std::vector<char> wanted(m, 1);
+  const bool ranked = nearest > 0 && std::isfinite(centre) && static_cast<std::size_t>(m) > nearest + 2;
+  const double root_centre = std::sqrt(std::max(0.0, centre));
+  auto settle_wanted = [&] {
+    std::vector<double> near(m), far(m);  // each bracket's least and greatest distance in √λ
+    for (int j = 0; j < m; ++j) {
+      const double a = std::sqrt(std::max(0.0, lo[j])) - root_centre, b = std::sqrt(std::max(0.0, hi[j])) - root_centre;
+      near[j] = a <= 0 && b >= 0 ? 0 : std::min(std::fabs(a), std::fabs(b));
+      far[j] = std::max(std::fabs(a), std::fabs(b));
+    }
+    std::vector<char> may(m, 0);  // fewer than K lanes certainly nearer
+    for (int j = 0; j < m; ++j) {
+      std::size_t nearer = 0;
+      for (int i = 0; i < m; ++i) nearer += i != j && far[i] < near[j];
+      may[j] = nearer < nearest;
+    }
+    for (int j = 0; j < m; ++j) wanted[j] = wanted[j] && (may[j] || (j > 0 && may[j - 1]) || (j + 1 < m && may[j + 1]));
+  };
   auto done = [&](int j) {
+    if (!wanted[j]) return true;
     const double scale = std::max(std::fabs(lo[j]), std::fabs(hi[j])), width = hi[j] - lo[j];
     if (width <= relative_width * scale + 4 * pivmin) return true;
     // Coarse is enough when the bracket holds this eigenvalue alone and the neighbouring lanes'
-    // brackets are ≥ 8 widths away: inverse iteration from the midpoint then gains ≥ 16× a sweep.
+    // brackets are ≥ 2 widths away: inverse iteration from the midpoint then gains ≥ 5× a sweep
+    // and the Rayleigh quotient, kept inside the bracket, converges cubically from there.
     const bool alone = count_lo[j] == first + j - 1 && count_hi[j] == first + j;
-    const double below = j > 0 ? lo[j] - hi[j - 1] : 8 * width, above = j + 1 < m ? lo[j + 1] - hi[j] : 8 * width;
-    return alone && width <= isolated_width * scale && std::min(below, above) >= 8 * width;
+    const double below = j > 0 ? lo[j] - hi[j - 1] : 2 * width, above = j + 1 < m ? lo[j + 1] - hi[j] : 2 * width;
+    return alone && width <= isolated_width * scale && std::min(below, above) >= 2 * width;
   };
   std::vector<double> shifts;
   std::vector<long> counts;
   std::vector<std::pair<int, int>> groups;
   for (int pass = 0; pass < 4000; ++pass) {
+    if (ranked && pass > 0) settle_wanted();
     shifts.clear();
     // Lanes with the same bracket form a group; its g lanes spread g shifts evenly over it.
     groups.clear();

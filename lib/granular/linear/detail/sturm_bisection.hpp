@@ -19,15 +19,21 @@ namespace granular {
 
 /// Eigenvalues number first … last (1-based, inclusive), ascending, each bracketed to a width of
 /// `relative_width` × max|bracket end| (or ~ the pivot floor near 0) — or only to `isolated_width`
-/// (relative) once the bracket holds that eigenvalue alone, which is all a Rayleigh-quotient
-/// refinement needs (lane_inverse_iteration). Throws InvalidInput on a bad range.
-/// `brackets`, if given, receives each eigenvalue's final bracket [lo, hi] (2 m entries).
+/// (relative) once the bracket holds that eigenvalue alone and the neighbouring lanes' brackets are
+/// at least twice its width away, which is all a Rayleigh-quotient refinement needs
+/// (lane_inverse_iteration: its shift stays in the bracket, ≥ 5× nearer this eigenvalue than another). Throws
+/// InvalidInput on a bad range. `brackets`, if given, receives each eigenvalue's final bracket [lo, hi] (2 m entries).
 /// `centre` (finite): where the eigenvalues are expected (e.g. the shift of a nearest selection);
 /// the first sweep then probes around it instead of evenly over the spectrum. Results do not
 /// depend on it beyond the brackets' last bits.
+/// `nearest` = K > 0 (with a finite centre): only the K eigenvalues nearest the centre in √λ (in
+/// frequency) and their neighbours by index are wanted. A lane stops as soon as K others are
+/// certainly nearer than all of its bracket, and so does every lane not beside one that may still
+/// be among the K nearest; its value is then its bracket's midpoint, never nearer than the K.
 std::vector<double> bisect_eigenvalues(const SymTridiagonal& t, int first, int last, double relative_width,
                                        double isolated_width = 0, std::vector<double>* brackets = nullptr,
-                                       double centre = std::numeric_limits<double>::quiet_NaN());
+                                       double centre = std::numeric_limits<double>::quiet_NaN(),
+                                       std::size_t nearest = 0);
 
 /// Unit eigenvectors (N × values.size()) for accurate eigenvalues `values` (ascending) by inverse
 /// iteration: one O(N) pivoted LU of T − λI (dgttrf), then solves until the residual
