@@ -32,19 +32,17 @@ int main(int argc, char** argv) {
   tool::describe_common(app);
   ExponentTableConfig config;  // the dynamics flags set its base case
   ExponentChoices choices;
-  std::string f0_text = "10,0.5,0.1,0.01,0", output = "exponents", profile_f0 = "10,0.1,0";
+  std::string output = "exponents";
   std::string paper_table = std::string(GRANULAR_SOURCE_DIR) + "/data/paper_table1_gamma.csv";
-  long long realizations = 500, profile_realizations = 100;
   tool::LongRunOptions run_options;
   bool compare = false;
-  tool::add_option(app, "--F0", f0_text, "precompressions [N], comma list (0 = sonic vacuum)");
-  tool::add_exponent_choices(app, choices, config.base);
+  tool::add_parameters(app, config, exponent_table_parameters(), {.only = {"F0"}});
+  tool::add_exponent_choices(app, choices, config);
   tool::add_parameters(app, choices.beads, long_run_chain_parameters(), {.only = {"N", "xi", "q", "walls"}});
   tool::add_dynamics_options(app, config.base);
-  tool::add_option(app, "--realizations", realizations, "realizations per disordered case (h always runs 1)");
+  tool::add_parameters(app, config, exponent_table_parameters(), {.only = {"realizations"}});
   tool::add_parameters(app, choices.beads, chain_parameters(), {.only = {"seed"}});
-  tool::add_option(app, "--profile-F0", profile_f0, "F0s whose energy profile E_n(T) is averaged (list; 'none')");
-  tool::add_option(app, "--profile-realizations", profile_realizations, "realizations averaged in those profiles");
+  tool::add_parameters(app, config, exponent_table_parameters(), {.only = {"profile_F0", "profile_realizations"}});
   app.add_flag("--compare-paper", compare,
                "also print (and write PREFIX-paper.csv) our gamma beside the paper's Table I");
   tool::add_option(app, "--paper-table", paper_table, "the paper's Table I (CSV ic,F0_N,disorder,gamma,err,star)");
@@ -54,17 +52,10 @@ int main(int argc, char** argv) {
   const auto body = [&] {
     tool::Metadata meta("exponents", argc, argv);
     const MpiContext& mpi = MpiContext::instance();
-    granular::apply(choices, config);
-    config.precompressions = parse_number_list(f0_text, "--F0");
-    config.profile_precompressions =
-        profile_f0 == "none" ? std::vector<double>{} : parse_number_list(profile_f0, "--profile-F0");
-    if (profile_realizations < 0) throw InvalidInput("--profile-realizations: must be >= 0");
-    config.profile_realizations = static_cast<std::size_t>(profile_realizations);
-    if (realizations < 1) throw InvalidInput("--realizations " + std::to_string(realizations) + ": must be >= 1");
+    set_chains(choices, config);
     run_options.checkpoint = output + ".checkpoint";  // where an interrupted table resumes from
     validate(run_options);
     TransportCase& base = config.base;
-    base.realizations = static_cast<std::size_t>(realizations);
     const bool auto_n = config.automatic_length = choices.beads.auto_n;
     std::vector<TransportCase> cases = exponent_cases(config);
     const nlohmann::json rules = length_rules(cases, auto_n, static_cast<long long>(base.site));
@@ -87,8 +78,7 @@ int main(int argc, char** argv) {
     const auto files = write_exponent_files(paths, cells, rows);
     for (const auto& c : cells)
       tool::report_excluded(c.definition, c.summary, meta, run_options, "exponents", output, argv[0]);
-    meta.merge(describe_exponent_study(chain_list(choices), config, kick_list(choices),
-                                       static_cast<int>(run_options.threads), cells, step_rule, resumed));
+    meta.merge(describe_exponent_study(config, static_cast<int>(run_options.threads), cells, step_rule, resumed));
     if (auto_n) meta["chain_length_rule"] = rules;
     if (compare) meta["paper_table"] = paper_table;
     meta["output"] = paths.csv;

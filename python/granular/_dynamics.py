@@ -16,8 +16,7 @@ from ._schema import TableKeywords, split_keywords, with_keywords
 # integrator, samples, fit_step, window_threshold, damping, mle, ...), each with the case's own C++ default and the
 # table's help; those below are the ones Python takes in forms of its own.
 _CASE = _core.TransportCase()
-_TABLE = _core.ExponentTableConfig()  # the exponent table's C++ defaults: F0s, realizations, profiles
-_TABLE_WORDS = _core.ExponentChoices()  # its chain kinds and kicks in words
+_TABLE = _core.ExponentTableConfig()  # the exponent table's C++ defaults: kinds, kicks, F0s, realizations, profiles
 _OWN = ("beta", "site", "time_step", "fit", "fit_begin", "fit_end")
 _OUTPUT_ROWS = tuple(_core._spreading_output_parameters)  # one run's force series, energy map and g(nu)
 # One realization's tangent-space outputs: an ensemble writes no deviation vector and averages no spectrum.
@@ -259,23 +258,22 @@ transport.__doc__ = (
     "Ctrl-C stops it after the realizations in flight (KeyboardInterrupt), leaving the checkpoint to resume from.")
 
 
-def exponent_table(*, chains=_TABLE_WORDS.chains, F0=_TABLE.precompressions,
-                   types_rule=None, chain_name=None, ic=_TABLE_WORDS.ic, realizations=_TABLE.base.realizations,
+def exponent_table(*, chains=_TABLE.chains, F0=_TABLE.precompressions,
+                   types_rule=None, chain_name=None, ic=_TABLE.ic, realizations=_TABLE.base.realizations,
                    beta=_CASE.beta, site=None, dt=None, fit=(_CASE.fit_begin, _CASE.fit_end),
                    profile_F0=_TABLE.profile_precompressions, profile_realizations=_TABLE.profile_realizations,
                    compare_paper=False, threads=0,
                    checkpoint=None, resume=False, resume_other_version=False, fresh=False, skip_failed=False,
                    progress=False, **keywords):
     chain, given, modes = split_keywords(keywords, [_TABLE_CHAIN, _RUN, _MODE], "exponent_table")
-    words = _core.ExponentChoices()  # made the table's chains and kicks by the tool's rule, in C++
-    words.chains = [] if chains is None or chains == "none" else chains
-    words.ic = ic
-    _MODE.set(words.mode, modes)
-    # every kind's chains, and the chain of one's own: k types, polydisperse radii, or quasiperiodic
-    _chain(_TABLE_CHAIN, words.beads, chain)
+    table = _core.ExponentTableConfig()  # the kinds and kicks read by the tool's rows, in C++
+    table.chains = [] if chains is None or chains == "none" else chains
+    table.ic = ic
+    _MODE.set(table.base.mode, modes)
+    words = _core.ExponentChoices()  # every kind's chains, and the chain of one's own: k types, polydisperse
+    _chain(_TABLE_CHAIN, words.beads, chain)  # radii, or quasiperiodic (made the table's by the tool's rule)
     words.types_rule = "" if types_rule is None else str(types_rule)
     words.chain_name = "" if chain_name is None else str(chain_name)
-    table = _core.ExponentTableConfig()
     table.precompressions = number_list(F0, "F0", 0)
     table.profile_precompressions = [] if profile_F0 is None else number_list(profile_F0, "profile_F0", 0)
     table.profile_realizations = _core._size(profile_realizations, "profile_realizations")

@@ -114,11 +114,11 @@ py::dict transport(const ChainChoices& chain, const TransportCase& given, bool p
                 metadata("transport", meta));
 }
 
-/// `words`: the chains and kicks as granular/_dynamics.py fills them (the tool's rule makes config's of
-/// them); config.base: the dynamics keywords.
+/// `words`: the chains as granular/_dynamics.py fills them (the tool's rule makes config's of them);
+/// config: the kinds, kicks, F0s and profiles; config.base: the dynamics keywords and the mode.
 py::dict exponent_table(const ExponentChoices& words, ExponentTableConfig config, const std::string& paper_path,
                         const PyRun& options) {
-  granular::apply(words, config);
+  set_chains(words, config);
   TransportCase& base = config.base;
   auto cases = exponent_cases(config);
   std::string t_warning;  // one is enough: the cases share T
@@ -139,8 +139,7 @@ py::dict exponent_table(const ExponentChoices& words, ExponentTableConfig config
     for (const std::string& log : case_checkpoints(prefix, cells.size())) CheckpointLog::remove_all(log);
 
   for (const ExponentCell& c : cells) warn({excluded_note(c.definition, c.summary)});  // "" when none
-  nlohmann::json meta =
-      describe_exponent_study(chain_list(words), config, kick_list(words), thread_request, cells, step_rule, resumed);
+  nlohmann::json meta = describe_exponent_study(config, thread_request, cells, step_rule, resumed);
   py::dict out;
   // The tool's three CSV files, written by the library's own writers (granular._results reads them).
   out["table_csv"] = csv_text([&](std::ostream& o) { write_exponents_csv(o, cells); });
@@ -214,13 +213,25 @@ void bind_dynamics(py::module_& m) {
       .def_property("kick", word_getter(&C::kick), word_setter(&C::kick, parse_kick));
   using E = ExponentTableConfig;
   config_class(m, "ExponentTableConfig", "precompressions profile_precompressions profile_realizations base",
-               &E::precompressions, &E::profile_precompressions, &E::profile_realizations, &E::base);
-  using W = ExponentChoices;  // the chains and kicks in words; beads: the chain of one's own
-  table_class(m, "ExponentChoices", exponent_parameters())
-      .def_readwrite("chains", &W::chains)
-      .def_readwrite("ic", &W::ic)
-      .def_readwrite("beads", &W::beads)
-      .def_readwrite("mode", &W::mode);
+               &E::precompressions, &E::profile_precompressions, &E::profile_realizations, &E::base)
+      .def_property(  // the kinds in words, as the table's `chains` row reads them ("none" alone: no kind)
+          "chains",
+          [](const E& e) {
+            std::vector<std::string> words;
+            for (Disorder d : e.chains) words.push_back(to_string(d));
+            return words;
+          },
+          [](E& e, const std::vector<std::string>& words) { e.chains = parse_chain_kinds(words); })
+      .def_property(
+          "ic",
+          [](const E& e) {
+            std::vector<std::string> words;
+            for (Kick k : e.kicks) words.push_back(to_string(k));
+            return words;
+          },
+          [](E& e, const std::vector<std::string>& words) { e.kicks = parse_kicks(words); });
+  using W = ExponentChoices;  // the chain of one's own in words; beads: every chain's choices
+  table_class(m, "ExponentChoices", exponent_parameters()).def_readwrite("beads", &W::beads);
   table_class(m, "ChainChoices", chain_parameters());
   // The quasiperiodic chain of the choices (None without `quasi`) by the tools' rule: a keyword
   // that takes no effect on it (angle with s1) is refused.

@@ -2,6 +2,7 @@
 // a case with that row changed from its default is described and parsed back to the same case
 // (compared through its description, so a row added to a table is covered without a new test).
 #include "granular/parameter_json.hpp"
+#include "granular/case/kicked_case.hpp"
 
 #include <gtest/gtest.h>
 
@@ -76,6 +77,8 @@ TEST(ParameterJson, EveryRowOfEveryTableRoundTrips) {
   expect_every_row_round_trips(mode_kick_parameters(), "mode kick");
   expect_every_row_round_trips(dynamical_butterfly_parameters(), "butterfly");
   expect_every_row_round_trips(exponent_parameters(), "exponents");
+  expect_every_row_round_trips(exponent_table_parameters(), "exponent table");
+  expect_every_row_round_trips(kicked_case_parameters(), "kicked case");
   expect_every_row_round_trips(spreading_output_parameters(), "spreading outputs");
   expect_every_row_round_trips(mode_selection_parameters(), "mode selection");
   expect_every_row_round_trips(long_run_parameters(), "long run");

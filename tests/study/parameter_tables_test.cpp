@@ -13,6 +13,7 @@
 
 #include "granular/case/chain_choices.hpp"
 #include "granular/case/chain_length_rule.hpp"
+#include "granular/case/kicked_case.hpp"
 #include "granular/case/spreading_outputs.hpp"
 #include "granular/case/transport_parameters.hpp"
 #include "granular/ensemble/run_options.hpp"
@@ -62,6 +63,8 @@ TEST(ParameterTables, NameEachParameterOnceAndReferOnlyToParametersTheyDescribe)
   collect_names(mode_kick_parameters(), names);
   collect_names(dynamical_butterfly_parameters(), names);
   collect_names(exponent_parameters(), names);
+  collect_names(exponent_table_parameters(), names);
+  collect_names(kicked_case_parameters(), names);
   collect_names(spreading_output_parameters(), names);
   collect_names(mode_selection_parameters(), names);
   collect_names(long_run_parameters(), names);
@@ -71,6 +74,8 @@ TEST(ParameterTables, NameEachParameterOnceAndReferOnlyToParametersTheyDescribe)
   expect_references_known(mode_kick_parameters(), names);
   expect_references_known(dynamical_butterfly_parameters(), names);
   expect_references_known(exponent_parameters(), names);
+  expect_references_known(exponent_table_parameters(), names);
+  expect_references_known(kicked_case_parameters(), names);
   expect_references_known(spreading_output_parameters(), names);
   expect_references_known(mode_selection_parameters(), names);
   expect_references_known(long_run_parameters(), names);
@@ -101,7 +106,8 @@ int expect_text_forms_read_what_they_write(const ParameterTable<Choices>& table,
 TEST(ParameterTables, TextFormsReadWhatTheyWriteAndNameTheirParameter) {
   // beta, fit, active_window and the words centre, integrator, force_law, sampling, energy_guard
   EXPECT_EQ(expect_text_forms_read_what_they_write(transport_parameters(), "1:x"), 8);
-  EXPECT_EQ(expect_text_forms_read_what_they_write(exponent_parameters(), "h,,A"), 2);         // chains, ic
+  EXPECT_EQ(expect_text_forms_read_what_they_write(exponent_table_parameters(), "h,,A"), 4);   // chains, ic, F0s
+  EXPECT_EQ(expect_text_forms_read_what_they_write(kicked_case_parameters(), "1:x"), 1);       // ic
   EXPECT_EQ(expect_text_forms_read_what_they_write(spreading_output_parameters(), "1:x"), 2);  // forces_at, spectrum_of
   EXPECT_EQ(expect_text_forms_read_what_they_write(mode_selection_parameters(), "1:x"), 1);    // window
   EXPECT_EQ(expect_text_forms_read_what_they_write(long_run_chain_parameters(), "1:x"), 1);    // N

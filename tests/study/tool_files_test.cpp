@@ -87,7 +87,9 @@ TEST(SpreadingFiles, EnsembleAndSpectralDensityEntries) {
 TEST(ExponentFiles, TableParametersAsListed) {
   ExponentTableConfig config;
   config.precompressions = {10, 0.1};
-  EXPECT_EQ(describe_table_parameters("none", config, "displacement,mode", 2),
+  config.chains.clear();
+  config.kicks = {Kick::displacement, Kick::mode};
+  EXPECT_EQ(describe_table_parameters(config, 2),
             (nlohmann::json{
                 {"chains", "none"}, {"F0", {10, 0.1}}, {"ic", "displacement,mode"}, {"threads", 2}, {"mpi_ranks", 1}}));
 }

@@ -3,6 +3,7 @@
 #include <nlohmann/json.hpp>
 
 #include "granular/parallel/mpi_context.hpp"
+#include "granular/study/exponent_choices.hpp"
 
 namespace granular {
 
@@ -34,11 +35,10 @@ std::vector<std::unique_ptr<AtomicFile>> write_exponent_files(const ExponentPath
   return files;
 }
 
-nlohmann::json describe_table_parameters(const std::string& chains, const ExponentTableConfig& config,
-                                         const std::string& kicks, int threads) {
-  return {{"chains", chains},
+nlohmann::json describe_table_parameters(const ExponentTableConfig& config, int threads) {
+  return {{"chains", chain_list(config)},
           {"F0", config.precompressions},
-          {"ic", kicks},
+          {"ic", kick_list(config)},
           {"threads", threads},
           {"mpi_ranks", MpiContext::instance().size()}};
 }
@@ -59,11 +59,11 @@ nlohmann::json describe_cells(const std::vector<ExponentCell>& cells) {
   return all;
 }
 
-nlohmann::json describe_exponent_study(const std::string& chains, const ExponentTableConfig& config,
-                                       const std::string& kicks, int threads, const std::vector<ExponentCell>& cells,
-                                       const nlohmann::json& step_rule, const nlohmann::json& resumed) {
+nlohmann::json describe_exponent_study(const ExponentTableConfig& config, int threads,
+                                       const std::vector<ExponentCell>& cells, const nlohmann::json& step_rule,
+                                       const nlohmann::json& resumed) {
   nlohmann::json j;
-  j["parameters"] = describe_table_parameters(chains, config, kicks, threads);
+  j["parameters"] = describe_table_parameters(config, threads);
   j["cases"] = describe_cells(cells);
   j["time_step_rule"] = step_rule;
   if (!resumed.is_null()) j["resumed_checkpoint"] = resumed;

@@ -36,17 +36,16 @@ std::vector<std::unique_ptr<AtomicFile>> write_exponent_files(const ExponentPath
 /// `exponents` (gamma_site, gamma_centroid, eta: to_json of each report) and `mle` (X1 at T).
 nlohmann::json describe_cells(const std::vector<ExponentCell>& cells);
 
-/// The "parameters" entry of the JSON beside the cases: the chain kinds and the kicks as the user
-/// listed them (`chains`, `kicks`: comma lists; "none" for no kind), the precompressions F0 [N] of
-/// `config`, the threads as requested (0: every core) and the MPI ranks.
-nlohmann::json describe_table_parameters(const std::string& chains, const ExponentTableConfig& config,
-                                         const std::string& kicks, int threads);
+/// The "parameters" entry of the JSON beside the cases: the chain kinds and the kicks of `config`
+/// (`chains`, `ic`: comma lists, chain_list / kick_list; "none" for no kind), its precompressions
+/// F0 [N], the threads as requested (0: every core) and the MPI ranks.
+nlohmann::json describe_table_parameters(const ExponentTableConfig& config, int threads);
 
 /// The study's JSON as the exponents tool and granular.exponent_table write it: `parameters`
 /// (describe_table_parameters), `cases` (describe_cells), `time_step_rule`, and
 /// `resumed_checkpoint` when `resumed` is not null.
-nlohmann::json describe_exponent_study(const std::string& chains, const ExponentTableConfig& config,
-                                       const std::string& kicks, int threads, const std::vector<ExponentCell>& cells,
-                                       const nlohmann::json& step_rule, const nlohmann::json& resumed);
+nlohmann::json describe_exponent_study(const ExponentTableConfig& config, int threads,
+                                       const std::vector<ExponentCell>& cells, const nlohmann::json& step_rule,
+                                       const nlohmann::json& resumed);
 
 }  // namespace granular

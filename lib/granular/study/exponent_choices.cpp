@@ -6,12 +6,10 @@
 #include "granular/error.hpp"
 #include "granular/io/range_syntax.hpp"
 #include "granular/model/disorder.hpp"
+#include "granular/number_format.hpp"
 
 namespace granular {
 namespace {
-
-/// The chain kinds `chains` names: none for "none" alone.
-bool no_chain_kinds(const std::vector<std::string>& chains) { return chains.size() == 1 && chains[0] == "none"; }
 
 /// `words` joined by commas.
 std::string comma_joined(const std::vector<std::string>& words) {
@@ -46,21 +44,31 @@ std::optional<BeadChain> chain_of_ones_own(const ExponentChoices& o) {
   return std::nullopt;
 }
 
-void read_chains(ExponentChoices& o, const std::string& text) { o.chains = parse_word_list(text, "chains"); }
-std::string write_chains(const ExponentChoices& o) { return chain_list(o); }
-void read_kicks(ExponentChoices& o, const std::string& text) { o.ic = parse_word_list(text, "ic"); }
-std::string write_kicks(const ExponentChoices& o) { return kick_list(o); }
+using T = ExponentTableConfig;
+
+void read_chains(T& c, const std::string& text) { c.chains = parse_chain_kinds(parse_word_list(text, "chains")); }
+std::string write_chains(const T& c) { return chain_list(c); }
+void read_kicks(T& c, const std::string& text) { c.kicks = parse_kicks(parse_word_list(text, "ic")); }
+std::string write_kicks(const T& c) { return kick_list(c); }
+std::string number_list_text(const std::vector<double>& values) {
+  std::vector<std::string> words;
+  for (double v : values) words.push_back(format_number(v));
+  return comma_joined(words);
+}
+void read_f0(T& c, const std::string& text) { c.precompressions = parse_number_list(text, "F0"); }
+std::string write_f0(const T& c) { return number_list_text(c.precompressions); }
+void read_profile_f0(T& c, const std::string& text) {
+  c.profile_precompressions = text == "none" ? std::vector<double>{} : parse_number_list(text, "profile_F0");
+}
+std::string write_profile_f0(const T& c) {
+  return c.profile_precompressions.empty() ? "none" : number_list_text(c.profile_precompressions);
+}
 
 }  // namespace
 
 const ParameterTable<ExponentChoices>& exponent_parameters() {
   using O = ExponentChoices;
   static const ParameterTable<O> table{
-      {"chains",
-       {},
-       {read_chains, write_chains},
-       "chain kinds: comma list of h, A, RDM1, RDM2, or 'none' (only the chain of `types`/`polydisperse`)"},
-      {"ic", {}, {read_kicks, write_kicks}, "kicks: comma list of displacement, velocity, mode (`mode` or `near_khz`)"},
       {"types_rule", &O::types_rule,
        "how `types`/`type_masses` are drawn: A (each bead, the default), RDM1 (each dimer), RDM2 (two types: dimers "
        "12 or 21)",
@@ -73,18 +81,44 @@ const ParameterTable<ExponentChoices>& exponent_parameters() {
   return table;
 }
 
-void apply(const ExponentChoices& o, ExponentTableConfig& config) {
-  config.chains.clear();
-  for (const std::string& name : no_chain_kinds(o.chains) ? std::vector<std::string>{} : o.chains) {
+const ParameterTable<ExponentTableConfig>& exponent_table_parameters() {
+  static const ParameterTable<T> table{
+      {"chains",
+       {},
+       {read_chains, write_chains},
+       "chain kinds: comma list of h, A, RDM1, RDM2, or 'none' (only the chain of `types`/`polydisperse`)"},
+      {"ic", {}, {read_kicks, write_kicks}, "kicks: comma list of displacement, velocity, mode (`mode` or `near_khz`)"},
+      {"F0", {}, {read_f0, write_f0}, "precompressions [N], comma list (0 = sonic vacuum)"},
+      {"realizations", path<T>(&T::base, &TransportCase::realizations),
+       "realizations per disordered case (h always runs 1)"},
+      {"profile_F0",
+       {},
+       {read_profile_f0, write_profile_f0},
+       "F0s whose energy profile E_n(T) is averaged (list; 'none')"},
+      {"profile_realizations", &T::profile_realizations, "realizations averaged in those profiles"}};
+  return table;
+}
+
+std::vector<Disorder> parse_chain_kinds(const std::vector<std::string>& words) {
+  std::vector<Disorder> kinds;
+  if (words.size() == 1 && words[0] == "none") return kinds;
+  for (const std::string& name : words) {
     try {
-      config.chains.push_back(parse_disorder(name));
+      kinds.push_back(parse_disorder(name));
     } catch (const InvalidInput& e) {  // the parser names a single chain's `disorder`
       throw InvalidInput("chains", e.problem());
     }
   }
-  config.kicks.clear();
-  for (const std::string& name : o.ic) config.kicks.push_back(parse_kick(name));
-  if (config.kicks.empty()) throw InvalidInput("ic", ": none given");
+  return kinds;
+}
+
+std::vector<Kick> parse_kicks(const std::vector<std::string>& words) {
+  std::vector<Kick> kicks;
+  for (const std::string& name : words) kicks.push_back(parse_kick(name));
+  return kicks;
+}
+
+void set_chains(const ExponentChoices& o, ExponentTableConfig& config) {
   config.bead_chains.clear();
   if (auto chain = chain_of_ones_own(o)) config.bead_chains.push_back(std::move(*chain));
   ChainChoices kinds = o.beads;  // the kinds' chains, by the one chain rule: without the chain of one's own
@@ -95,15 +129,19 @@ void apply(const ExponentChoices& o, ExponentTableConfig& config) {
   kinds.angle = plain.angle, kinds.k0 = plain.k0, kinds.k0_n_per_m = plain.k0_n_per_m;
   std::vector<std::string> no_file_read;
   config.base.chain = chain_recipe(kinds, no_file_read);
-  refuse_mode_without_mode_kick(o.mode, config.kicks);
-  config.base.mode = o.mode;
   validate(config);
 }
 
-std::string chain_list(const ExponentChoices& o) {
-  return o.chains.empty() || no_chain_kinds(o.chains) ? "none" : comma_joined(o.chains);
+std::string chain_list(const ExponentTableConfig& config) {
+  std::vector<std::string> names;
+  for (Disorder d : config.chains) names.push_back(to_string(d));
+  return names.empty() ? "none" : comma_joined(names);
 }
 
-std::string kick_list(const ExponentChoices& o) { return comma_joined(o.ic); }
+std::string kick_list(const ExponentTableConfig& config) {
+  std::vector<std::string> names;
+  for (Kick k : config.kicks) names.push_back(to_string(k));
+  return comma_joined(names);
+}
 
 }  // namespace granular

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "granular/case/chain_length_rule.hpp"
+#include "granular/case/transport_parameters.hpp"
 #include "granular/ensemble/checkpoint_log.hpp"
 #include "granular/io/csv_writer.hpp"
 
@@ -24,6 +25,9 @@ std::string chain_name(const ExponentCell& cell) {
 
 void validate(const ExponentTableConfig& config) {
   if (config.chains.empty() && config.bead_chains.empty()) throw InvalidInput("chains", ": none given");
+  if (config.kicks.empty()) throw InvalidInput("ic", ": none given");
+  refuse_mode_without_mode_kick(config.base.mode, config.kicks);
+  if (config.base.realizations < 1) throw InvalidInput("realizations", " 0: must be >= 1");
   for (std::size_t i = 0; i < config.bead_chains.size(); ++i) {
     const std::string& name = config.bead_chains[i].name;
     if (name.empty() || name.find_first_of(",\"\n\r") != std::string::npos)

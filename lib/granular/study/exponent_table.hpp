@@ -47,9 +47,10 @@ std::vector<std::string> chain_names(const ExponentTableConfig& config);
 /// The name of a cell's chain (ExponentCell::chain, else its disorder's).
 std::string chain_name(const ExponentCell& cell);
 
-/// Throws InvalidInput naming `chains` for no chain at all, `chain_name` for a bead chain's name
-/// that is empty, not CSV-safe or taken (by a disorder kind or another bead chain), or the field
-/// of a bad distribution.
+/// Throws InvalidInput naming `chains` for no chain at all, `ic` for no kick, `mode` (and the mode
+/// kick's other fields) chosen without the mode kick, `realizations` below 1, `chain_name` for a
+/// bead chain's name that is empty, not CSV-safe or taken (by a disorder kind or another bead
+/// chain), or the field of a bad distribution.
 void validate(const ExponentTableConfig& config);
 
 /// The checkpoint logs of a study's first `cases` cases: case i logs to `prefix`.<i>.
