@@ -24,7 +24,7 @@ int main(int argc, char** argv) {
       "Writes PREFIX.csv (columns disorder,q,xi,mode,freq_khz,ipr) and PREFIX.json (every parameter).",
       "ipr-map"};
   tool::describe_common(app);
-  std::string disorder = "A", xi_text = "0.1:1", q_text = "0.2,0.5,0.8", output = "ipr-map", solver = "fast";
+  std::string disorder = "A", output = "ipr-map", solver = "fast";
   std::string method = "lapack";  // with --near/--count or --window
   IprMapConfig config;
   tool::ChainOptions beads;  // --walls, --types/--type-masses/--polydisperse (with --disorder as their rule)
@@ -32,14 +32,13 @@ int main(int argc, char** argv) {
   ModeSelectionChoices selection;
   bool quiet = false;
   tool::add_option(app, "--disorder", disorder, "h | A | RDM1 | RDM2 (homogeneous, Anderson, random dimer 1/2)");
-  tool::add_option(app, "--xi", xi_text, "size ratios R2/R1 in (0,1]: start:stop[:step] (step 0.01) or a,b,c");
-  tool::add_option(app, "--q", q_text, "probabilities of type 1 (or of dimer 11 / 12) in [0,1]: list or range");
+  tool::add_parameters(app, config, ipr_map_parameters(), {.only = {"xi", "q"}});
   tool::add_integer(app, "--N", config.chain.N, "beads per chain (>= 2)");
   tool::add_option(app, "--F0", config.chain.F0, "static precompression [N], > 0");
   tool::add_option(app, "--R1", config.chain.R1,
                    "radius of type-1 beads [m]; type 2 has xi*R1 (steel beads, steel walls)");
   tool::add_parameters(app, beads, chain_parameters(), {.only = {"walls"}});
-  tool::add_integer(app, "--realizations", config.realizations, "chains averaged per (q, xi)");
+  tool::add_parameters(app, config, ipr_map_parameters(), {.only = {"realizations"}});
   tool::add_integer(app, "--seed", config.chain.seed, "random seed; realization r of seed s is always the same chain");
   tool::add_parameters(app, run, long_run_parameters(), {.only = {"threads"}});
   tool::add_option(
@@ -51,9 +50,7 @@ int main(int argc, char** argv) {
   tool::add_selection_options(app, selection, "partial spectra: ");
   tool::add_option(app, "--method", method,
                    "partial spectra: lapack | bisect | arpack | slepc (arpack/slepc: one thread)");
-  app.add_option("--bin-khz", config.bin_khz,
-                 "average in frequency bins of this width [kHz] instead of by mode number: "
-                 "columns disorder,q,xi,freq_lo_khz,freq_hi_khz,modes,ipr (empty bins: modes 0, ipr nan)");
+  tool::add_parameters(app, config, ipr_map_parameters(), {.only = {"bin_khz"}});
   tool::add_quasiperiodic_options(app, beads);  // one cell: realizations are phases
   tool::add_bead_distribution_options(app, beads);
   app.add_flag("--quiet", quiet, "no progress line on stderr");
@@ -61,8 +58,6 @@ int main(int argc, char** argv) {
   return tool::run(app, argc, argv, [&] {
     tool::Metadata meta("ipr-map", argc, argv);
     config.chain.draw().disorder = parse_disorder(disorder);
-    config.xi_values = parse_number_list(xi_text, "--xi", 0.01);
-    config.q_values = parse_number_list(q_text, "--q", 0.1);
     if (config.chain.N > 100000000)
       throw InvalidInput("N", " " + std::to_string(config.chain.N) + ": more than 1e8 beads");
     validate(run);

@@ -88,14 +88,14 @@ _IPR_MAP_CHAIN = TableKeywords(_core._ipr_map_chain(), skip=("q", "xi", "realiza
 _C = _core.ChainChoices()  # the chain table's C++ defaults (chain_parameters())
 _DB = _core.DynamicalButterflyConfig()  # dynamical_butterfly_parameters()' C++ defaults
 
-def ipr_map(*, xi="0.1:1", q="0.2,0.5,0.8", realizations=_core.IprMapConfig().realizations, solver="fast",
-            near=None, count=None, window=None, method=None, bin_khz=0.0, threads=0, progress=False,
-            **chain_keywords):
+def ipr_map(*, xi=_core._ipr_map_defaults["xi"], q=_core._ipr_map_defaults["q"],
+            realizations=_core.IprMapConfig().realizations, solver="fast", near=None, count=None, window=None,
+            method=None, bin_khz=_core.IprMapConfig().bin_khz, threads=0, progress=False, **chain_keywords):
     """Mean frequency [kHz] and displacement IPR of every mode of disordered chains over realizations, on a (q, xi)
     grid: the paper's IPR map, as the ipr-map tool computes it (same numbers for the same keywords).
 
     xi, q: size ratios R2/R1 in (0, 1] and probabilities in [0, 1]: sequences, numbers, or the tools' range
-        strings ('0.1:1' = 0.1, 0.11, ..., 1; '0.1:1:0.05'; '0.2,0.5,0.8')
+        strings ('0.1:1:0.01' = 0.1, 0.11, ..., 1 (step 0.01 for xi, 0.1 for q by default); '0.2,0.5,0.8')
     realizations: chains averaged per cell; realization r of seed `seed` is always the same chain, and all xi of
         one q share the bead sequences
     the chains: the chain keywords below (disorder, N, F0 > 0, R1, seed, walls, as granular.random_chain's)

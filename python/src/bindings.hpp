@@ -73,6 +73,17 @@ py::class_<C> table_class(py::module_& m, const char* name, const ParameterTable
   return c;
 }
 
+/// The text form of every row of `table` that has one, written from C's defaults: {name: text}
+/// (what the tools' --help shows as the default, Python's keyword default in the same form).
+template <class C>
+py::dict text_defaults(const ParameterTable<C>& table) {
+  py::dict out;
+  const C defaults{};
+  for (const Parameter<C>& p : table)
+    if (p.text && p.text->write) out[py::str(p.name)] = p.text->write(defaults);
+  return out;
+}
+
 /// A getter and a setter of an enum member spelled as the tools' word (to_string / `parse`).
 template <class C, class T>
 auto word_getter(T C::*member) {

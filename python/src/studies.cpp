@@ -182,6 +182,7 @@ void bind_studies(py::module_& m) {
   m.def("_localization_chain", &localization_chain);  // the chain keywords' defaults
   // granular.ipr_map's and granular.correlations' chain keywords' defaults: their studies' default chain
   m.def("_ipr_map_chain", [] { return chain_choices(IprMapConfig{}.chain); });
+  m.attr("_ipr_map_defaults") = text_defaults(ipr_map_parameters());  // xi, q as the tool's --help shows them
   m.def("_correlation_chain", [] { return chain_choices(CorrelationConfig{}.chain); });
   m.attr("_localization_frequencies") = localization_frequencies;
   m.def("_correlations", &correlations);

@@ -23,8 +23,7 @@ STILL_LITERAL = {
     "_observers.displacement_kick.alpha", "_observers.velocity_kick.beta", "_observers.spread.T",
     "_observers.spread.dt", "_observers.spread.integrator", "_observers.spread.force_law",
     "_progress.run_long.interrupted",
-    # ipr-map has no table yet: its grids, solver and bins are the tool's defaults written again
-    "_studies.ipr_map.xi", "_studies.ipr_map.q", "_studies.ipr_map.solver", "_studies.ipr_map.bin_khz",
+    "_studies.ipr_map.solver",  # the map's solver words (set_solver: no row yet)
     # the butterflies' ratios, boxes and run (their tables hold the rest)
     "_studies.butterfly.kind", "_studies.butterfly.ratios", "_studies.butterfly.largest_box",
     "_studies.butterfly.smallest_box", "_studies.butterfly.box_sizes",

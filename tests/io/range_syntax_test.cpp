@@ -19,6 +19,19 @@ TEST(RangeSyntax, RangesIncludeStopAndRoundCleanly) {
   EXPECT_EQ(parse_number_list("4e-3:1e-2:2e-3", "--fit"), (std::vector<double>{4e-3, 6e-3, 8e-3, 1e-2}));
 }
 
+TEST(RangeSyntax, AListIsWrittenAsTheTextThatReadsItBack) {
+  const std::vector<double> grid = parse_number_list("0.1:1", "xi", 0.01);
+  EXPECT_EQ(format_number_list(grid), "0.1:1:0.01") << "a range, when shorter than its list";
+  EXPECT_EQ(parse_number_list(format_number_list(grid), "xi"), grid);
+  EXPECT_EQ(format_number_list({0.2, 0.5, 0.8}), "0.2,0.5,0.8") << "as short as its range: a list";
+  EXPECT_EQ(format_number_list({10, 0.5, 0.1, 0.01, 0}), "10,0.5,0.1,0.01,0");
+  EXPECT_EQ(format_number_list({1, 2, 4, 5, 6, 7}), "1,2,4,5,6,7") << "not one step";
+  EXPECT_EQ(format_number_list({}), "");
+  for (const auto& values : {std::vector<double>{0.3, 0.1, 0.2}, std::vector<double>{1e-3, 2e-3, 3e-3, 4e-3},
+                             parse_number_list("0.005:0.995:0.005", "r")})
+    EXPECT_EQ(parse_number_list(format_number_list(values), "x"), values) << format_number_list(values);
+}
+
 TEST(RangeSyntax, RejectsMalformedInputNamingTheOption) {
   for (const char* bad :
        {"", "a", "1:", ":1", "1:2:0", "1:2:-1", "2:1", "1:2:3:4", "nan", "1,inf", "1,,2", "0.1:1:1e-9"}) {

@@ -3,6 +3,7 @@
 // (compared through its description, so a row added to a table is covered without a new test).
 #include "granular/parameter_json.hpp"
 #include "granular/case/kicked_case.hpp"
+#include "granular/study/ipr_map.hpp"
 
 #include <gtest/gtest.h>
 
@@ -79,6 +80,7 @@ TEST(ParameterJson, EveryRowOfEveryTableRoundTrips) {
   expect_every_row_round_trips(exponent_parameters(), "exponents");
   expect_every_row_round_trips(exponent_table_parameters(), "exponent table");
   expect_every_row_round_trips(kicked_case_parameters(), "kicked case");
+  expect_every_row_round_trips(ipr_map_parameters(), "IPR map");
   expect_every_row_round_trips(spreading_output_parameters(), "spreading outputs");
   expect_every_row_round_trips(mode_selection_parameters(), "mode selection");
   expect_every_row_round_trips(long_run_parameters(), "long run");

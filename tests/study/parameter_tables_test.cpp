@@ -21,6 +21,7 @@
 #include "granular/linear/mode_selection_choices.hpp"
 #include "granular/study/dynamical_butterfly.hpp"
 #include "granular/study/exponent_choices.hpp"
+#include "granular/study/ipr_map.hpp"
 
 namespace granular {
 namespace {
@@ -65,6 +66,7 @@ TEST(ParameterTables, NameEachParameterOnceAndReferOnlyToParametersTheyDescribe)
   collect_names(exponent_parameters(), names);
   collect_names(exponent_table_parameters(), names);
   collect_names(kicked_case_parameters(), names);
+  collect_names(ipr_map_parameters(), names);
   collect_names(spreading_output_parameters(), names);
   collect_names(mode_selection_parameters(), names);
   collect_names(long_run_parameters(), names);
@@ -76,6 +78,7 @@ TEST(ParameterTables, NameEachParameterOnceAndReferOnlyToParametersTheyDescribe)
   expect_references_known(exponent_parameters(), names);
   expect_references_known(exponent_table_parameters(), names);
   expect_references_known(kicked_case_parameters(), names);
+  expect_references_known(ipr_map_parameters(), names);
   expect_references_known(spreading_output_parameters(), names);
   expect_references_known(mode_selection_parameters(), names);
   expect_references_known(long_run_parameters(), names);
@@ -108,6 +111,7 @@ TEST(ParameterTables, TextFormsReadWhatTheyWriteAndNameTheirParameter) {
   EXPECT_EQ(expect_text_forms_read_what_they_write(transport_parameters(), "1:x"), 8);
   EXPECT_EQ(expect_text_forms_read_what_they_write(exponent_table_parameters(), "h,,A"), 4);   // chains, ic, F0s
   EXPECT_EQ(expect_text_forms_read_what_they_write(kicked_case_parameters(), "1:x"), 1);       // ic
+  EXPECT_EQ(expect_text_forms_read_what_they_write(ipr_map_parameters(), "1:x"), 2);           // xi, q
   EXPECT_EQ(expect_text_forms_read_what_they_write(spreading_output_parameters(), "1:x"), 2);  // forces_at, spectrum_of
   EXPECT_EQ(expect_text_forms_read_what_they_write(mode_selection_parameters(), "1:x"), 1);    // window
   EXPECT_EQ(expect_text_forms_read_what_they_write(long_run_chain_parameters(), "1:x"), 1);    // N

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "granular/error.hpp"
+#include "granular/number_format.hpp"
 
 namespace granular {
 namespace {
@@ -67,6 +68,27 @@ std::vector<double> parse_number_list(const std::string& text, const std::string
     if (values.size() > max_count) throw InvalidInput(option, ": more than " + std::to_string(max_count) + " values");
   }
   return values;
+}
+
+std::string format_number_list(const std::vector<double>& values) {
+  std::string list;
+  for (double v : values) {
+    if (!list.empty()) list.push_back(',');
+    list.append(format_number(v));
+  }
+  if (values.size() < 3) return list;
+  const double step = round12(values[1] - values[0]);
+  if (!(step > 0)) return list;
+  std::string range = format_number(values.front());
+  range.push_back(':');
+  range.append(format_number(values.back()));
+  range.push_back(':');
+  range.append(format_number(step));
+  try {
+    if (range.size() < list.size() && parse_number_list(range, "range", 0, values.size()) == values) return range;
+  } catch (const InvalidInput&) {  // not a range after all: the list says it
+  }
+  return list;
 }
 
 std::vector<long> parse_integer_list(const std::string& text, const std::string& option) {

@@ -13,6 +13,10 @@ namespace granular {
 std::vector<double> parse_number_list(const std::string& text, const std::string& option, double default_step = 0,
                                       std::size_t max_count = 1000000);
 
+/// The text parse_number_list reads back as `values`: "start:stop:step" when they are that range
+/// and it is the shorter, else a comma list (format_number's shortest forms); "" for none.
+std::string format_number_list(const std::vector<double>& values);
+
 /// Parses a comma list of positive integers (e.g. particle numbers).
 std::vector<long> parse_integer_list(const std::string& text, const std::string& option);
 

@@ -50,18 +50,13 @@ void read_chains(T& c, const std::string& text) { c.chains = parse_chain_kinds(p
 std::string write_chains(const T& c) { return chain_list(c); }
 void read_kicks(T& c, const std::string& text) { c.kicks = parse_kicks(parse_word_list(text, "ic")); }
 std::string write_kicks(const T& c) { return kick_list(c); }
-std::string number_list_text(const std::vector<double>& values) {
-  std::vector<std::string> words;
-  for (double v : values) words.push_back(format_number(v));
-  return comma_joined(words);
-}
 void read_f0(T& c, const std::string& text) { c.precompressions = parse_number_list(text, "F0"); }
-std::string write_f0(const T& c) { return number_list_text(c.precompressions); }
+std::string write_f0(const T& c) { return format_number_list(c.precompressions); }
 void read_profile_f0(T& c, const std::string& text) {
   c.profile_precompressions = text == "none" ? std::vector<double>{} : parse_number_list(text, "profile_F0");
 }
 std::string write_profile_f0(const T& c) {
-  return c.profile_precompressions.empty() ? "none" : number_list_text(c.profile_precompressions);
+  return c.profile_precompressions.empty() ? "none" : format_number_list(c.profile_precompressions);
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 
 #include "granular/ensemble/parallel_realizations.hpp"
 #include "granular/error.hpp"
+#include "granular/io/range_syntax.hpp"
 #include "granular/linear/dynamical_matrix.hpp"
 #include "granular/model/chain.hpp"
 #include "granular/number_format.hpp"
@@ -20,6 +21,30 @@ void set_chain_kind(IprMapConfig& c, const ChainChoices& beads) {
   else if (auto distribution = bead_distribution(beads)) c.chain.source = *distribution;
   else return;
   c.q_values = c.xi_values = {std::numeric_limits<double>::quiet_NaN()};  // one cell
+}
+
+std::vector<double> paper_xi_values() { return parse_number_list("0.1:1:0.01", "xi"); }
+
+namespace {
+void read_map_xi(IprMapConfig& c, const std::string& text) { c.xi_values = parse_number_list(text, "xi", 0.01); }
+std::string write_map_xi(const IprMapConfig& c) { return format_number_list(c.xi_values); }
+void read_map_q(IprMapConfig& c, const std::string& text) { c.q_values = parse_number_list(text, "q", 0.1); }
+std::string write_map_q(const IprMapConfig& c) { return format_number_list(c.q_values); }
+}  // namespace
+
+const ParameterTable<IprMapConfig>& ipr_map_parameters() {
+  using C = IprMapConfig;
+  static const ParameterTable<C> table{
+      {"xi", {}, {read_map_xi, write_map_xi}, "size ratios R2/R1 in (0,1]: start:stop[:step] (step 0.01) or a,b,c"},
+      {"q",
+       {},
+       {read_map_q, write_map_q},
+       "probabilities of type 1 (or of dimer 11 / 12) in [0,1]: list or range (step 0.1)"},
+      {"realizations", &C::realizations, "chains averaged per (q, xi)"},
+      {"bin_khz", &C::bin_khz,
+       "average in frequency bins of this width [kHz] instead of by mode number: columns "
+       "disorder,q,xi,freq_lo_khz,freq_hi_khz,modes,ipr (empty bins: modes 0, ipr nan); 0: by mode number"}};
+  return table;
 }
 
 void set_solver(IprMapConfig& c, const std::string& solver, const std::optional<std::string>& method) {

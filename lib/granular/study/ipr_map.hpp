@@ -12,15 +12,20 @@
 #include "granular/ensemble/run_options.hpp"
 #include "granular/linear/spectrum.hpp"
 #include "granular/model/chain_recipe.hpp"
+#include "granular/parameter_table.hpp"
 
 namespace granular {
+
+/// The paper's ξ axis of the IPR map: 0.1, 0.11, …, 1 (the range "0.1:1:0.01", rounded as
+/// range_syntax.hpp rounds a range).
+std::vector<double> paper_xi_values();
 
 struct IprMapConfig {
   /// The chains (N, F0 > 0, seed, R1, material; the disorder rule or a bead distribution); its
   /// q and ξ are those of each cell, from the lists below.
   ChainRecipe chain{};
-  std::vector<double> q_values{0.2, 0.5, 0.8};  ///< probabilities in [0, 1]
-  std::vector<double> xi_values;                ///< size ratios R2/R1 in (0, 1]
+  std::vector<double> q_values{0.2, 0.5, 0.8};        ///< probabilities in [0, 1]
+  std::vector<double> xi_values = paper_xi_values();  ///< size ratios R2/R1 in (0, 1]
   std::size_t realizations = 100;
   /// Every mode (averaged over realizations by mode number) or a nearest/window selection (every
   /// selected mode of every realization, not averaged: mode numbers and counts differ between chains).
@@ -56,6 +61,12 @@ struct IprMapCell {
   /// basis the solver chose inside the cluster.
   std::size_t solved_modes = 0, clustered_modes = 0;
 };
+
+/// The map's own parameters over IprMapConfig: `xi` and `q` (the grid: "start:stop[:step]",
+/// step 0.01 and 0.1 by default, or comma lists), `realizations` (chains averaged per cell) and
+/// `bin_khz`. The chain, the modes and the solver are set by their own rules (set_chain_kind,
+/// choose_modes, set_solver).
+const ParameterTable<IprMapConfig>& ipr_map_parameters();
 
 /// Throws InvalidInput (naming the field) on a bad config, before any work starts.
 void validate(const IprMapConfig& config);
