@@ -106,18 +106,18 @@ _document(SpectralDensity, "g(nu) of u_n(t) (of_='displacement', the paper's) or
 _document(FinalState, "The state at T with its site energies and bead forces.")
 
 
-def displacement_kick(chain, site, alpha=1e-7):
+def displacement_kick(chain, site, alpha=_RUN.alpha):
     """u_n = alpha at bead `site` (0-based), the rest at rest: the paper's displacement kick [m]."""
     return _core._displacement_kick(chain, _site(site, "site"), alpha)
 
 
-def velocity_kick(chain, site, beta=8e-3):
+def velocity_kick(chain, site, beta=_core.paper_beta):
     """v_n = beta at bead `site` (0-based), the rest at rest: the paper's velocity kick [m/s]."""
     return _core._velocity_kick(chain, _site(site, "site"), beta)
 
 
-def spread(chain, initial, observers=[], *, T=1e-2, dt=1e-6, integrator="saba2c",  # noqa: B006 (read only)
-           force_law="hertz", active_window=True, window_threshold=_RUN.window_threshold,
+def spread(chain, initial, observers=[], *, T=_RUN.duration, dt=1e-6, integrator=_RUN.integrator,  # noqa: B006
+           force_law=_RUN.force_law, active_window=True, window_threshold=_RUN.window_threshold,
            reference_max_step=_RUN.reference_max_step):
     """Integrates `chain` from `initial` (a granular.State, e.g. granular.velocity_kick(chain, site, 8e-3)) to T [s]
     with steps dt [s], calling each observer at the steps it scheduled; the observers keep what they measured.

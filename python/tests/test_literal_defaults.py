@@ -19,9 +19,7 @@ STILL_LITERAL = {
     "_linear.spectrum.lanes", "_linear.band_edges.xi", "_linear.band_edges.F0",
     "_model.quasiperiodic.kind",  # a choice of this constructor's: the tools have no default kind
     "_model.cyclic_correlation.max_distance",
-    # the observers' keywords (EnergySpread's settings: no table yet) and the kicks
-    "_observers.displacement_kick.alpha", "_observers.velocity_kick.beta", "_observers.spread.T",
-    "_observers.spread.dt", "_observers.spread.integrator", "_observers.spread.force_law",
+    "_observers.spread.dt",  # the preferred step (IntegrationConfig's 1 us; the case's own dt is optional)
     "_progress.run_long.interrupted",
     "_studies.ipr_map.solver",  # the map's solver words (set_solver: no row yet)
     # the butterflies' ratios, boxes and run (their tables hold the rest)
