@@ -21,6 +21,7 @@
 #include "granular/case/mode_kick.hpp"
 #include "granular/case/spreading_run.hpp"
 #include "granular/dynamics/observables.hpp"
+#include "granular/dynamics/sampling.hpp"
 #include "granular/model/chain_recipe.hpp"
 #include "granular/model/disorder.hpp"
 #include "granular/model/material.hpp"
@@ -60,7 +61,7 @@ struct TransportCase {
       std::numeric_limits<std::size_t>::max();  ///< E_n(T) averaged over the first this many (0: none)
   bool fit = true;                              ///< fit γ and η (needs fit_end ≤ T)
   double fit_begin = 4e-3, fit_end = 1e-2;      ///< exponents fitted on [fit_begin, fit_end] s
-  double fit_step = 1e-5;                       ///< spacing of the samples inside the fit window [s]
+  double fit_step = DenseGrid{}.step;           ///< spacing of the samples inside the fit window [s]
   PowerLawCriterion criterion;                  ///< κ and t* of the power-law check
   BootstrapConfig bootstrap;                    ///< realization errors (threads: those of the run)
 };
