@@ -23,7 +23,9 @@ std::string write_kick(const TransportCase& c) { return to_string(c.kick); }
 
 }  // namespace
 
-ChainChoices kicked_chain_defaults() { return ChainChoices{.n = 2501}; }
+ChainChoices kicked_chain_defaults() {  // the case's own N (TransportCase{}.chain: the paper's 2501)
+  return ChainChoices{.n = static_cast<long long>(TransportCase{}.chain.N)};
+}
 
 const ParameterTable<TransportCase>& kicked_case_parameters() {
   using C = TransportCase;

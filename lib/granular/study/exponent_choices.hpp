@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "granular/case/chain_choices.hpp"
+#include "granular/case/kicked_case.hpp"
 #include "granular/case/transport_parameters.hpp"
 #include "granular/study/exponent_table.hpp"
 
@@ -20,7 +21,7 @@ struct ExponentChoices {
   /// The chains: N, xi, q, R1, seed and walls of every kind, and one more chain after the kinds:
   /// its types, type_masses, polydisperse, or quasi and that chain's parameters (not read:
   /// `disorder`, F0, the realization and the files).
-  ChainChoices beads{.n = 2501};
+  ChainChoices beads = kicked_chain_defaults();
   std::string types_rule{};  ///< how types / type_masses are drawn: A, RDM1 or RDM2; empty: A
   std::string chain_name{};  ///< that chain's name in the outputs; empty: types, polydisperse or quasi-KIND
 };
