@@ -7,7 +7,7 @@
 //
 // BM_ModeIpr/<solver>: the solvers behind `ipr-map --solver` (LAPACK drivers with eigenvectors,
 // then Σv⁴/(Σv²)²; the fast twisted-factorization solver), one chain per call.
-// BM_ModeIprBatch/<solver>_batch4: four chains per solve_batch call, as ipr-map calls it.
+// BM_ModeIprBatch/<solver>_batch/N/B: B chains per solve_batch call, as ipr-map calls it.
 // BM_EigenvaluesOnly/dsterf and /dqds: the O(N²) eigenvalue floor under any solver that needs every
 // mode (LAPACK's root-free QL, and dqds — dlasq2 on T's L D Lᵀ —, the fastest eigenvalue-only
 // algorithm LAPACK has). BM_BuildChain: making the chain and its dynamical matrix, the
@@ -20,6 +20,7 @@
 
 #include "granular/linear/detail/lapack.hpp"
 #include "granular/linear/detail/mode_ipr_solver.hpp"
+#include "granular/linear/detail/rational_ql.hpp"
 #include "granular/linear/detail/twisted_ipr_solver.hpp"
 #include "granular/linear/dynamical_matrix.hpp"
 #include "granular/linear/mode_ipr.hpp"
@@ -83,14 +84,14 @@ void BM_ModeIpr(benchmark::State& state, std::string method) {
   }
 }
 
-// Four chains per solve_batch call, as ipr-map calls it (the fast solver interleaves their QL
-// sweeps); time per chain = time per iteration / 4.
+// range(1) chains per solve_batch call, as ipr-map calls it (the fast solver runs their QL
+// iterations in vector lanes); us_per_chain = time per iteration / batch.
 void BM_ModeIprBatch(benchmark::State& state, std::string method) {
-  const Job& job = job_of(100);
+  const Job& job = job_of(static_cast<std::size_t>(state.range(0)));
   auto solver = make_mode_ipr_solver(method);
-  constexpr std::size_t batch = 4;
-  std::vector<double> omega2[batch], ipr[batch];
-  ModeIprTask tasks[batch];
+  const auto batch = static_cast<std::size_t>(state.range(1));
+  std::vector<std::vector<double>> omega2(batch), ipr(batch);
+  std::vector<ModeIprTask> tasks(batch);
   std::size_t i = 0;
   for (auto _ : state) {
     for (std::size_t j = 0; j < batch; ++j) {
@@ -140,6 +141,32 @@ void BM_EigenvaluesOnly(benchmark::State& state, bool dqds) {
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()));
 }
 
+// The fast solver's eigenvalue phase alone: rational_ql on one chain per call, or
+// rational_ql_lanes on range(1) chains per call (their QL iterations in vector lanes).
+void BM_RationalQl(benchmark::State& state) {
+  const auto beads = static_cast<std::size_t>(state.range(0)), batch = static_cast<std::size_t>(state.range(1));
+  const Job& job = job_of(beads);
+  std::vector<std::vector<double>> d(batch, std::vector<double>(beads)), e2(batch, std::vector<double>(beads));
+  std::vector<detail::QlChain> chains(batch);
+  detail::QlLaneWork work;
+  std::size_t i = 0;
+  for (auto _ : state) {
+    for (std::size_t j = 0; j < batch; ++j) {
+      const SymTridiagonal& t = job.matrices[i];
+      const double inv = 1.0 / t.max_abs();
+      for (std::size_t k = 0; k < beads; ++k) d[j][k] = t.diagonal[k] * inv;
+      for (std::size_t k = 0; k + 1 < beads; ++k) e2[j][k] = (t.off_diagonal[k] * inv) * (t.off_diagonal[k] * inv);
+      chains[j] = {d[j].data(), e2[j].data(), beads};
+      if (++i == job.matrices.size()) i = 0;
+    }
+    if (batch == 1) detail::rational_ql(chains[0]);
+    else detail::rational_ql_lanes(chains, work);
+    benchmark::DoNotOptimize(d[0].data());
+  }
+  state.counters["us_per_chain"] = benchmark::Counter(static_cast<double>(state.iterations() * batch),
+                                                      benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+
 void BM_BuildChain(benchmark::State& state) {
   const Job& job = job_of(100);
   std::size_t i = 0;
@@ -161,14 +188,25 @@ BENCHMARK_CAPTURE(BM_ModeIpr, lapack_stemr, std::string("lapack-stemr"))->Arg(10
 BENCHMARK_CAPTURE(BM_ModeIpr, lapack_stevd, std::string("lapack-stevd"))->Arg(100)->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_ModeIpr, lapack_steqr, std::string("lapack-steqr"))->Arg(100)->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_ModeIpr, fast, std::string("fast"))->Arg(100)->Unit(benchmark::kMicrosecond);
-BENCHMARK_CAPTURE(BM_ModeIprBatch, lapack_stevd_batch4, std::string("lapack-stevd"))->Unit(benchmark::kMicrosecond);
-BENCHMARK_CAPTURE(BM_ModeIprBatch, fast_batch4, std::string("fast"))->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_ModeIprBatch, lapack_stevd_batch, std::string("lapack-stevd"))
+    ->Args({100, 4})
+    ->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_ModeIprBatch, fast_batch, std::string("fast"))
+    ->Args({100, 4})
+    ->Args({100, 16})
+    ->Args({100, 32})
+    ->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_EigenvaluesOnly, dsterf, false)->Arg(100)->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_EigenvaluesOnly, dqds, true)->Arg(100)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_RationalQl)->Args({100, 1})->Args({100, 32})->Args({1000, 1})->Args({1000, 32})->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_BuildChain)->Unit(benchmark::kMicrosecond);
 // N = 1000 (the 30 s map of 27,300 chains on 2 cores needs ≤ 2.2 ms of CPU per chain).
 BENCHMARK_CAPTURE(BM_ModeIpr, lapack_stevd_N1000, std::string("lapack-stevd"))->Arg(1000)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_ModeIpr, fast_N1000, std::string("fast"))->Arg(1000)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_ModeIprBatch, fast_batch_N1000, std::string("fast"))
+    ->Args({1000, 4})
+    ->Args({1000, 32})
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_EigenvaluesOnly, dsterf_N1000, false)->Arg(1000)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_EigenvaluesOnly, dqds_N1000, true)->Arg(1000)->Unit(benchmark::kMillisecond);
 

@@ -7,6 +7,7 @@
 
 #include "granular/error.hpp"
 #include "granular/linear/detail/lapack.hpp"
+#include "granular/linear/detail/rational_ql.hpp"
 
 namespace granular {
 
@@ -24,80 +25,6 @@ struct Sums {
     v2 += vv;
     v4 += vv * vv;
   }
-};
-
-// Root-free QL iteration on one chain, advanced one inner step at a time so that several chains
-// can be interleaved. d: diagonal, e2: squared off-diagonal; eigenvalues end up in d (unsorted).
-class RationalQl {
- public:
-  RationalQl(double* d, double* e2, std::size_t n)
-      : d_(d), e2_(e2), n_(static_cast<long>(n)), max_iterations_(30 * n_) {}
-
-  /// Deflates what has converged and sets up the next sweep; false when finished (or failed).
-  bool prepare() {
-    constexpr double eps2 = std::numeric_limits<double>::epsilon() * std::numeric_limits<double>::epsilon();
-    while (l_ < n_) {
-      long m = l_;
-      while (m + 1 < n_ && !(e2_[m] <= eps2 * std::fabs(d_[m] * d_[m + 1]))) ++m;
-      if (m + 1 < n_) e2_[m] = 0;
-      if (m == l_) {
-        ++l_;
-        continue;
-      }
-      if (m == l_ + 1) {  // a 2×2 block
-        const double mean = 0.5 * (d_[l_] + d_[l_ + 1]), half = 0.5 * (d_[l_] - d_[l_ + 1]);
-        const double radius = std::hypot(half, std::sqrt(e2_[l_]));
-        d_[l_] = mean + radius;
-        d_[l_ + 1] = mean - radius;
-        e2_[l_] = 0;
-        l_ += 2;
-        continue;
-      }
-      if (++iterations_ > max_iterations_) {
-        failed_ = true;
-        return false;
-      }
-      // Wilkinson shift from the leading 2×2 of the block [l, m]
-      const double root_e = std::sqrt(e2_[l_]);
-      const double g = (d_[l_ + 1] - d_[l_]) / (2 * root_e);
-      sigma_ = d_[l_] - root_e / (g + std::copysign(std::hypot(g, 1.0), g));
-      m_ = m;
-      i_ = m - 1;
-      c_ = 1;
-      s_ = 0;
-      gamma_ = d_[m] - sigma_;
-      p_ = gamma_ * gamma_;
-      return true;
-    }
-    return false;
-  }
-  /// One inner step of the sweep; true while the sweep goes on.
-  bool step() {
-    const long i = i_;
-    const double bb = e2_[i];
-    const double r = p_ + bb;
-    const double r_inv = 1.0 / r, p_inv = 1.0 / p_;  // independent divisions
-    if (i != m_ - 1) e2_[i + 1] = s_ * r;
-    const double old_c = c_, old_gamma = gamma_, alpha = d_[i];
-    c_ = p_ * r_inv;
-    s_ = bb * r_inv;
-    gamma_ = c_ * (alpha - sigma_) - s_ * old_gamma;
-    d_[i + 1] = old_gamma + (alpha - gamma_);
-    p_ = p_ != 0 ? gamma_ * gamma_ * (r * p_inv) : old_c * bb;  // γ²/c
-    if (--i_ >= l_) return true;
-    e2_[l_] = s_ * p_;
-    d_[l_] = sigma_ + gamma_;
-    return false;
-  }
-  bool failed() const { return failed_; }
-
- private:
-  double* d_;
-  double* e2_;
-  long n_, max_iterations_;
-  long l_ = 0, m_ = 0, i_ = 0, iterations_ = 0;
-  double sigma_ = 0, c_ = 1, s_ = 0, gamma_ = 0, p_ = 0;
-  bool failed_ = false;
 };
 
 }  // namespace
@@ -130,8 +57,8 @@ void TwistedModeIpr::solve(const SymTridiagonal& t, const std::vector<double>& s
 }
 
 void TwistedModeIpr::solve_batch(std::span<const ModeIprTask> tasks) {
-  for (std::size_t first = 0; first < tasks.size(); first += interleave)
-    solve_group(tasks.subspan(first, std::min(interleave, tasks.size() - first)));
+  for (std::size_t first = 0; first < tasks.size(); first += group)
+    solve_group(tasks.subspan(first, std::min(group, tasks.size() - first)));
 }
 
 bool TwistedModeIpr::load(Slot& slot, const ModeIprTask& task) {
@@ -171,26 +98,21 @@ void TwistedModeIpr::solve_group(std::span<const ModeIprTask> tasks) {
   reserve(n_max);
   for (std::size_t j = 0; j < count; ++j) slots_[j].ok = load(slots_[j], tasks[j]);
 
-  // 1. eigenvalues: the QL sweeps of all chains in lock-step
-  std::optional<RationalQl> ql[interleave];
-  bool sweeping[interleave] = {};
-  std::size_t busy = 0;
+  // 1. eigenvalues: the chains' QL iterations in vector lanes
+  detail::QlChain ql[group];
+  std::size_t loaded = 0;
   for (std::size_t j = 0; j < count; ++j)
-    if (slots_[j].ok) {
-      ql[j].emplace(slots_[j].lambda.data(), slots_[j].e2.data(), slots_[j].n);
-      sweeping[j] = ql[j]->prepare();
-      busy += sweeping[j];
-    }
-  while (busy > 0)
-    for (std::size_t j = 0; j < count; ++j)
-      if (sweeping[j] && !ql[j]->step() && !(sweeping[j] = ql[j]->prepare())) --busy;
+    if (slots_[j].ok) ql[loaded++] = {slots_[j].lambda.data(), slots_[j].e2.data(), slots_[j].n};
+  if (loaded == 1) detail::rational_ql(ql[0]);
+  else detail::rational_ql_lanes({ql, loaded}, ql_work_);
 
   // 2.-4. modes, per chain
-  for (std::size_t j = 0; j < count; ++j) {
+  for (std::size_t j = 0, q = 0; j < count; ++j) {
     Slot& slot = slots_[j];
     const ModeIprTask& task = tasks[j];
     ++info_.solves;
-    bool ok = slot.ok && !ql[j]->failed();
+    bool ok = slot.ok && ql[q].converged;
+    q += slot.ok;
     if (ok) {
       std::sort(slot.lambda.begin(), slot.lambda.begin() + static_cast<long>(slot.n));
       task.ipr->resize(slot.n);

@@ -4,12 +4,11 @@
 // Method (one chain, N beads, D the dynamical matrix):
 //  1. T = D / max|D_ij| (unit largest entry, as for the LAPACK path); its eigenvalues by the
 //     root-free (Pal–Walker–Kahan) QL iteration with Wilkinson shifts, the algorithm of LAPACK's
-//     dsterf, O(N²), absolute accuracy ~ε‖T‖. It is implemented here rather than called because
-//     each QL step is a serial chain of two divisions (~40 cycles, the solver's bottleneck):
-//     solve_batch() runs the QL sweeps of up to `interleave` independent chains in lock-step so
-//     the CPU overlaps their chains (written so 1/r and 1/p are independent: one division on
-//     the critical path). Results do not depend on the batch: a chain's arithmetic is the same
-//     alone or interleaved. More than 30·N QL iterations counts as failure (see 4).
+//     dsterf, O(N²), absolute accuracy ~ε‖T‖ (rational_ql.hpp). Each QL step is a serial chain
+//     of divisions, so solve_batch() runs the iterations of up to `group` chains in vector lanes,
+//     each lane taking the next chain when its own is done. Results do not depend on the batch:
+//     a chain's arithmetic is the same alone or in lanes. More than 30·N QL iterations counts as
+//     failure (see 4).
 //  2. For each eigenvalue λ that is isolated (see the cluster criterion below), one twisted
 //     factorization of T − λI, as in LAPACK's dlar1v (MRRR): the stationary LDLᵀ from the
 //     top, the progressive UDUᵀ from the bottom, the twist index r minimizing
@@ -60,6 +59,7 @@
 #include <vector>
 
 #include "granular/linear/detail/mode_ipr_solver.hpp"
+#include "granular/linear/detail/rational_ql.hpp"
 #include "granular/linear/detail/twisted_lanes.hpp"
 
 namespace granular {
@@ -88,8 +88,8 @@ class TwistedModeIpr final : public ModeIprSolver {
 
   /// Batch width of the vectorized twisted factorizations.
   static constexpr std::size_t lanes = detail::twisted_lane_count;
-  /// Chains whose QL iterations run interleaved.
-  static constexpr std::size_t interleave = 4;
+  /// Chains solved together: their QL iterations share the vector lanes of rational_ql_lanes.
+  static constexpr std::size_t group = 2 * detail::ql_lane_count;
 
  private:
   struct Slot {  // one chain's scaled matrix, eigenvalues and scaled m^{-1/2}
@@ -111,7 +111,8 @@ class TwistedModeIpr final : public ModeIprSolver {
   LapackModeIpr fallback_;
   std::size_t capacity_ = 0;
   double residual_limit_ = 0;
-  Slot slots_[interleave];
+  Slot slots_[group];
+  detail::QlLaneWork ql_work_;
   detail::TwistedLaneWork lane_work_;  // the batched factorizations
   std::vector<std::size_t> isolated_;
   // dstein workspace

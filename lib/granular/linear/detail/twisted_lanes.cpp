@@ -1,8 +1,9 @@
 #include "granular/linear/detail/twisted_lanes.hpp"
 
+#include "granular/linear/detail/vector_lanes.hpp"
+
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 
 namespace granular::detail {
 
@@ -13,43 +14,10 @@ constexpr double pivot_floor = 1e-290;  // a zero pivot becomes -pivot_floor (|e
 constexpr double node_ratio = 1e3;      // |L⁺| or |U⁻| above this: a near-zero pivot, a node of z
 constexpr double negligible = 1e-60;    // |z| below this (z_r = 1) ends a recurrence
 
-// The lanes are H native vectors of W doubles (generic vectors wider than the hardware's were
-// lowered element by element through the stack: 3× slower than scalar code). Vectors are only
-// ever locals or references, so no calling convention depends on their width.
-#if defined(__AVX512F__)
-constexpr std::size_t W = 8;
-#elif defined(__AVX__)
-constexpr std::size_t W = 4;
-#else
-constexpr std::size_t W = 2;
-#endif
+// The lanes are H native vectors of W doubles (vector_lanes.hpp).
+using namespace lanes;
 constexpr std::size_t H = L / W;
 static_assert(L % W == 0);
-typedef double V __attribute__((vector_size(W * sizeof(double))));
-typedef long M __attribute__((vector_size(W * sizeof(long))));
-static_assert(sizeof(long) == sizeof(double));
-
-constexpr long sign_bits = 0x7fffffffffffffffL;
-
-V vabs(const V& x) { return (V)((M)x & sign_bits); }
-
-template <std::size_t K>
-bool any(const M (&mask)[K]) {
-  M acc = mask[0];
-  for (std::size_t h = 1; h < K; ++h) acc |= mask[h];
-  long out = 0;
-  for (std::size_t w = 0; w < W; ++w) out |= acc[w];
-  return out != 0;
-}
-
-// memcpy: an unaligned load or store on every compiler (Clang ignored aligned(8) on the vector
-// typedef and emitted aligned moves)
-V load(const double* p) {
-  V x;
-  std::memcpy(&x, p, sizeof x);
-  return x;
-}
-void store(double* p, const V& x) { std::memcpy(p, &x, sizeof x); }
 
 // One z sweep away from the twist (z_r = 1 in every lane) for the G vectors from `first`. Up:
 // i = max r − 1 … 0 with z_i = −L⁺_i z_{i+1}; down: i = min r … n − 2 with z_{i+1} = −U_i z_i.
