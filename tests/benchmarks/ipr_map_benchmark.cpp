@@ -195,6 +195,7 @@ BENCHMARK_CAPTURE(BM_ModeIprBatch, fast_batch, std::string("fast"))
     ->Args({100, 4})
     ->Args({100, 16})
     ->Args({100, 32})
+    ->Args({100, 50})
     ->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_EigenvaluesOnly, dsterf, false)->Arg(100)->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_EigenvaluesOnly, dqds, true)->Arg(100)->Unit(benchmark::kMicrosecond);

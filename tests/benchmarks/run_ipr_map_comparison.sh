@@ -29,8 +29,9 @@ echo "run_ipr_map_comparison: $(date -u +%FT%TZ), $(nproc) cores, load $(cut -d'
 best=$("$python" - "$out/benchmark.json" <<'EOF'
 import json, sys
 rows = json.load(open(sys.argv[1]))["benchmarks"]
-med = {r["run_name"].split("/")[-1]: r["cpu_time"] for r in rows if r.get("aggregate_name", "median") == "median"}
-print(min((t, k) for k, t in med.items() if k.startswith("lapack_"))[1].replace("lapack_", ""))
+med = {r["run_name"].split("/", 1)[-1]: r["cpu_time"] for r in rows if r.get("aggregate_name", "median") == "median"}
+print(min((t, k) for k, t in med.items() if k.startswith("lapack_") and k.endswith("/100") and "batch" not in k)[1]
+      .replace("lapack_", "").replace("/100", ""))
 EOF
 )
 echo "best LAPACK driver per solve: $best"
@@ -68,14 +69,19 @@ def parse(path):
     return wall, rss, cpu
 
 rows = json.load(open(f"{out}/benchmark.json"))["benchmarks"]
-med = {r["run_name"].split("/")[-1]: r["cpu_time"] for r in rows if r.get("aggregate_name", "median") == "median"}
-for k in list(med):
-    if k.endswith("_batch4"):
-        med[k] /= 4  # per chain
+# name after the benchmark's function: solver/N or solver_batch/N/chains per call (per chain: us_per_chain)
+import re
+med = {re.sub("^BM_(ModeIpr|ModeIprBatch|EigenvaluesOnly)/", "", r["run_name"]):
+       (1e6 * r["us_per_chain"] if "us_per_chain" in r else r["cpu_time"])
+       for r in rows if r.get("aggregate_name", "median") == "median"}
+runs = "fast_batch/100/50"  # what ipr-map runs on 2 threads: 50 chains per call
 print("\nper solve (N = 100, CPU time per chain, median of %d):" % repeats)
-for k in ["lapack_stevr", "lapack_stemr", "lapack_stevd", "lapack_steqr", "fast", "lapack_stevd_batch4", "fast_batch4"]:
-    print(f"  {k:20s} {med[k]:8.1f} us   {med[k] / med['fast_batch4']:5.2f}x fast_batch4 (what ipr-map runs)")
-print(f"  (dsterf eigenvalues only: {med.get('dsterf', float('nan')):.1f} us; chain + matrix build: {med.get('BM_BuildChain', float('nan')):.1f} us)")
+for k in ["lapack_stevr/100", "lapack_stemr/100", "lapack_stevd/100", "lapack_steqr/100", "fast/100",
+          "lapack_stevd_batch/100/4", "fast_batch/100/4", runs]:
+    print(f"  {k:26s} {med[k]:8.1f} us   {med[k] / med[runs]:5.2f}x {runs} (what ipr-map runs)")
+print(f"  (eigenvalues only: dsterf {med.get('dsterf/100', float('nan')):.1f} us, ours in lanes "
+      f"{med.get('BM_RationalQl/100/32', float('nan')):.1f} us; chain + matrix build: "
+      f"{med.get('BM_BuildChain', float('nan')):.1f} us)")
 
 names = {"fast": "ipr-map --solver fast --threads 2", "lapack": f"ipr-map --solver lapack-{best} --threads 2",
          "scipy1": "ipr_map_scipy.py (1 process)", "scipy2": "ipr_map_scipy.py --processes 2"}

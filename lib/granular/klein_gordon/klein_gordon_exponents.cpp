@@ -33,7 +33,8 @@ nlohmann::json number(double x) { return std::isnan(x) ? nlohmann::json(nullptr)
 }  // namespace
 
 KleinGordonExponents klein_gordon_exponents(const KleinGordonEnsemble& e, double t0, double t1) {
-  const std::string window = " " + format_number(t0) + ":" + format_number(t1);
+  std::string window = " ";  // appended, not `" " + a + ":" + b`: GCC 12 reports a false -Wrestrict
+  window.append(format_number(t0)).append(":").append(format_number(t1));
   if (!(t0 > 0 && t0 < t1)) throw InvalidInput("fit", window + ": must satisfy 0 < t0 < t1");
   KleinGordonExponents x;
   x.begin = t0, x.end = t1;
