@@ -4,8 +4,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <optional>
+#include <type_traits>
 
 namespace granular::detail {
 
@@ -81,11 +83,45 @@ static_assert(ql_lane_count % W == 0);
 // The lanes' state: one sweep per lane, as rational_ql's locals, plus the split test of prepare()
 // done on the rows as the sweep writes them: d_prev is the d[i + 2] the step before wrote (NaN at
 // a sweep's first step: no test), row is i, split the lowest row i + 1 found negligible (m if
-// none); left counts the steps left in the sweep (idle lanes never reach 0).
+// none), next_split the one above it; left counts the steps left in the sweep (idle lanes never
+// reach 0). Only ever a local whose address is not taken, so that it lives in registers.
 struct QlLanes {
   V c[ql_vectors], s[ql_vectors], gamma[ql_vectors], p[ql_vectors], sigma[ql_vectors], d_prev[ql_vectors];
   M left[ql_vectors], row[ql_vectors], split[ql_vectors], next_split[ql_vectors];
 };
+
+// One lane's start of a sweep.
+struct QlLaneStart {
+  double gamma = 0, p = 1, sigma = 0;
+  long left = std::numeric_limits<long>::max(), row = 0, split = 0;
+};
+
+// Element j of the lanes v (through a copy: indexing v itself would keep its owner in memory).
+template <class T, class E = std::remove_cvref_t<decltype(T{}[0])>>
+[[gnu::always_inline]] inline E lane_of(const T (&v)[ql_vectors], std::size_t j) {
+  E copy[ql_lane_count];
+  for (std::size_t h = 0; h < ql_vectors; ++h) std::memcpy(copy + h * W, &v[h], sizeof v[h]);
+  return copy[j];
+}
+
+// Lane j of x starts the sweep `start` (c = 1, s = 0), by blends: no element is addressed.
+[[gnu::always_inline]] inline void start_lane(QlLanes& x, std::size_t j, const QlLaneStart& start) {
+  M lane;
+  for (std::size_t w = 0; w < W; ++w) lane[w] = static_cast<long>(w);
+  for (std::size_t h = 0; h < ql_vectors; ++h) {
+    const M here = lane == static_cast<long>(j - h * W);
+    x.c[h] = here ? V{} + 1.0 : x.c[h];
+    x.s[h] = here ? V{} : x.s[h];
+    x.gamma[h] = here ? V{} + start.gamma : x.gamma[h];
+    x.p[h] = here ? V{} + start.p : x.p[h];
+    x.sigma[h] = here ? V{} + start.sigma : x.sigma[h];
+    x.d_prev[h] = here ? V{} + std::numeric_limits<double>::quiet_NaN() : x.d_prev[h];
+    x.left[h] = here ? M{} + start.left : x.left[h];
+    x.row[h] = here ? M{} + start.row : x.row[h];
+    x.split[h] = here ? M{} + start.split : x.split[h];
+    x.next_split[h] = here ? M{} + start.split : x.next_split[h];
+  }
+}
 
 }  // namespace
 
@@ -141,16 +177,6 @@ void rational_ql_lanes(std::span<QlChain> chains, QlLaneWork& work) {
     long copied = 0;  // global steps before this have been copied back
   };
   Lane lanes[L];
-  QlLanes st;  // the lanes' state between chunks and at sweep ends
-  constexpr long idle = std::numeric_limits<long>::max();
-  constexpr double nan = std::numeric_limits<double>::quiet_NaN();
-  for (std::size_t h = 0; h < ql_vectors; ++h) {
-    st.c[h] = st.p[h] = V{} + 1.0;
-    st.s[h] = st.gamma[h] = st.sigma[h] = V{};
-    st.d_prev[h] = V{} + nan;
-    st.left[h] = M{} + idle;
-    st.row[h] = st.split[h] = st.next_split[h] = M{};
-  }
 
   // Lane j's rows for its global steps [from, to) into the ring, and its results back; both ranges
   // lie inside one chunk, so slot = step mod slots runs without wrapping.
@@ -189,55 +215,40 @@ void rational_ql_lanes(std::span<QlChain> chains, QlLaneWork& work) {
 
   std::size_t next = 0, active = 0;
   // Lane j's next sweep (of its chain, or of the next chain in `chains`) from global step `step`,
-  // staged up to `chunk_end`; the lane goes idle when no chain is left.
-  auto begin_sweep = [&](std::size_t j, long step, long chunk_end, long known_from, long known_to, long known_next) {
-    const std::size_t h = j / W, w = j % W;
+  // staged up to `chunk_end`; an idle start when no chain is left.
+  auto begin_sweep = [&](std::size_t j, long step, long chunk_end, long known_from, long known_to,
+                         long known_next) -> QlLaneStart {
     for (;;) {
       std::optional<QlControl>& q = lanes[j].control;
       if (q && q->prepare(known_from, known_to, known_next)) {
         const long length = q->m - q->l;
         lanes[j].start = lanes[j].copied = step;
         stage(j, step, std::min(step + length, chunk_end));
-        st.c[h][w] = 1.0;
-        st.s[h][w] = 0.0;
-        st.gamma[h][w] = q->gamma;
-        st.p[h][w] = q->p;
-        st.sigma[h][w] = q->sigma;
-        st.left[h][w] = length;
-        st.d_prev[h][w] = nan;
-        st.row[h][w] = q->m - 1;
-        st.split[h][w] = q->m;
-        return;
+        return {q->gamma, q->p, q->sigma, length, q->m - 1, q->m};
       }
       if (q) {
         q.reset();
         --active;
       }
       while (next < chains.size() && chains[next].n < 2) chains[next++].converged = true;
-      if (next == chains.size()) {  // idle: harmless values, never finishing
-        st.c[h][w] = st.p[h][w] = 1.0;
-        st.s[h][w] = st.gamma[h][w] = st.sigma[h][w] = 0.0;
-        st.left[h][w] = idle;
-        return;
-      }
+      if (next == chains.size()) return {};  // idle: harmless values, never finishing
       q.emplace(chains[next++]);
       ++active;
       known_from = known_to = known_next = 0;
     }
   };
-  // Lane j's sweep ended with global step `last`: the rest of its results back into its chain.
-  auto end_sweep = [&](std::size_t j, long last) {
-    const std::size_t h = j / W, w = j % W;
+  // Lane j's sweep ended with global step `last`, leaving s, p, σ, γ: its results back into its chain.
+  auto end_sweep = [&](std::size_t j, long last, double s, double p, double sigma, double gamma) {
     copy_back(j, last + 1);
     const QlControl& q = *lanes[j].control;
-    q.e2_[q.l] = st.s[h][w] * st.p[h][w];
-    q.d_[q.l] = st.sigma[h][w] + st.gamma[h][w];
+    q.e2_[q.l] = s * p;
+    q.d_[q.l] = sigma + gamma;
   };
 
-  for (std::size_t j = 0; j < L; ++j) begin_sweep(j, 0, slots, 0, 0, 0);
+  QlLanes x{};  // the lanes' state
+  for (std::size_t j = 0; j < L; ++j) start_lane(x, j, begin_sweep(j, 0, slots, 0, 0, 0));
   for (long chunk_start = 0; active > 0; chunk_start += slots) {
     const long chunk_end = chunk_start + slots;
-    QlLanes x = st;  // a local copy the compiler can keep in registers
     for (long step = chunk_start; step < chunk_end && active > 0; ++step) {
       double* row_d = ring_d + static_cast<std::size_t>(step - chunk_start) * L;
       double* row_e2 = ring_e2 + static_cast<std::size_t>(step - chunk_start) * L;
@@ -266,18 +277,17 @@ void rational_ql_lanes(std::span<QlChain> chains, QlLaneWork& work) {
       }
       long any_ended = 0;
       for (std::size_t w = 0; w < W; ++w) any_ended |= ended[w];
-      if (any_ended != 0) {
-        st = x;
-        for (std::size_t j = 0; j < L; ++j)
-          if (st.left[j / W][j % W] == 0) {
-            end_sweep(j, step);
-            begin_sweep(j, step + 1, chunk_end, lanes[j].control->l + 1, st.split[j / W][j % W],
-                        st.next_split[j / W][j % W]);
-          }
-        x = st;
+      if (any_ended == 0) continue;
+      unsigned ended_lanes = 0;
+      for (std::size_t j = 0; j < L; ++j) ended_lanes |= (lane_of(x.left, j) == 0 ? 1u : 0u) << j;
+      while (ended_lanes != 0) {
+        const auto j = static_cast<std::size_t>(__builtin_ctz(ended_lanes));
+        ended_lanes &= ended_lanes - 1;
+        const long split = lane_of(x.split, j), next_split = lane_of(x.next_split, j);
+        end_sweep(j, step, lane_of(x.s, j), lane_of(x.p, j), lane_of(x.sigma, j), lane_of(x.gamma, j));
+        start_lane(x, j, begin_sweep(j, step + 1, chunk_end, lanes[j].control->l + 1, split, next_split));
       }
     }
-    st = x;
     for (std::size_t j = 0; j < L; ++j)
       if (lanes[j].control) {
         copy_back(j, chunk_end);
