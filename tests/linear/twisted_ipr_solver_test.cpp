@@ -396,6 +396,14 @@ TEST(TwistedModeIpr, BatchedSolvesEqualSingleSolves) {
     const auto types = realization_configuration(r % 2 ? Disorder::anderson : Disorder::rdm1, 0.8, n, 13, r);
     refs.push_back(make_reference(make_chain(radii_of(types, 4.76e-3, 0.1 + 0.1 * static_cast<double>(r % 10)), 10.0)));
   }
+  // and two copies of one chain joined by a vanishing bond: every mode in an exactly degenerate pair
+  const Reference half = refs[7];
+  Reference doubled = half;
+  doubled.d.diagonal.insert(doubled.d.diagonal.end(), half.d.diagonal.begin(), half.d.diagonal.end());
+  doubled.d.off_diagonal.push_back(0.0);
+  doubled.d.off_diagonal.insert(doubled.d.off_diagonal.end(), half.d.off_diagonal.begin(), half.d.off_diagonal.end());
+  doubled.s.insert(doubled.s.end(), half.s.begin(), half.s.end());
+  refs.insert(refs.begin() + 20, doubled);
   std::vector<Solution> batched(refs.size());
   std::vector<ModeIprTask> tasks;
   for (std::size_t i = 0; i < refs.size(); ++i)
@@ -408,6 +416,8 @@ TEST(TwistedModeIpr, BatchedSolvesEqualSingleSolves) {
     EXPECT_EQ(batched[i].ipr, single.ipr) << "chain " << i;
   }
   EXPECT_EQ(batch_solver.info().solves, refs.size());
+  EXPECT_GE(batch_solver.info().cluster_modes, 2 * half.d.size());  // the pairs went through clusters
+  EXPECT_EQ(batch_solver.info().fallbacks, 0u);
 }
 
 TEST(TwistedModeIpr, IsRegisteredAsFast) {
