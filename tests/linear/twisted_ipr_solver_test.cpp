@@ -97,10 +97,14 @@ Solution dense_eigen(const Reference& r) {
 /// objective the solver maximizes, Σ_i (x_i⁴ + y_i⁴) over the displacements x = m^{-1/2} w. That
 /// objective is c₀ + A cos(4θ − φ): one maximum up to swapping and signs, so the two IPRs it gives
 /// are the cluster's, whatever basis a solver started from. Pairs with A below 1e-12 c₀ (no
-/// preferred basis) are skipped. Returns (first mode index, sorted IPRs) per pair.
+/// preferred basis) are skipped. Returns (first mode index, sorted IPRs) per pair, and the IPRs in
+/// the order of the localized vectors' Rayleigh quotients, which number the modes, with how far
+/// apart those quotients are (relative to max|λ|; 0 when they are equal).
 struct PairIpr {
   std::size_t first;
   double lo, hi;
+  double lower_quotient, upper_quotient;  // the IPR of the vector with the lower Rayleigh quotient, the other's
+  double quotient_separation;
 };
 std::vector<PairIpr> localized_pairs(const Reference& r) {
   const Eigen::Index n = static_cast<Eigen::Index>(r.d.size());
@@ -150,20 +154,32 @@ std::vector<PairIpr> localized_pairs(const Reference& r) {
     }
     const double ip = displacement_ipr(p.data(), r.s.data(), x.size());
     const double iq = displacement_ipr(q.data(), r.s.data(), x.size());
-    out.push_back({static_cast<std::size_t>(k), std::min(ip, iq), std::max(ip, iq)});
+    // c w_k + s w_{k+1} has the quotient c² λ_k + s² λ_{k+1}: p's is the lower when c² > s²
+    const bool p_lower = c * c > sn * sn;
+    const double separation = std::fabs(c * c - sn * sn) * (w[k + 1] - w[k]) / norm;
+    out.push_back({static_cast<std::size_t>(k), std::min(ip, iq), std::max(ip, iq), p_lower ? ip : iq,
+                   p_lower ? iq : ip, separation});
   }
   return out;
 }
 
 /// The solver's IPRs of each isolated pair must be the localized pair's (a wrong rotation, or
-/// none — any other basis of the pair — fails). Returns the number of pairs checked.
-std::size_t check_pairs(const std::vector<double>& ipr, const Reference& r, const std::string& what) {
+/// none — any other basis of the pair — fails), and where the two vectors' Rayleigh quotients are
+/// apart (by 1e-13 max|λ|, far above their rounding) in the quotients' order: the mode numbers.
+/// Returns the number of pairs checked; `ordered` counts those whose order was checked too.
+std::size_t check_pairs(const std::vector<double>& ipr, const Reference& r, const std::string& what,
+                        std::size_t* ordered = nullptr) {
   std::size_t checked = 0;
   for (const PairIpr& pair : localized_pairs(r)) {
     const double a = std::min(ipr[pair.first], ipr[pair.first + 1]);
     const double b = std::max(ipr[pair.first], ipr[pair.first + 1]);
     EXPECT_NEAR(a, pair.lo, 1e-8) << what << " pair at mode " << pair.first + 1;
     EXPECT_NEAR(b, pair.hi, 1e-8) << what << " pair at mode " << pair.first + 1;
+    if (pair.quotient_separation > 1e-13 && pair.hi - pair.lo > 1e-6) {
+      EXPECT_NEAR(ipr[pair.first], pair.lower_quotient, 1e-8) << what << " pair at mode " << pair.first + 1;
+      EXPECT_NEAR(ipr[pair.first + 1], pair.upper_quotient, 1e-8) << what << " pair at mode " << pair.first + 1;
+      if (ordered) ++*ordered;
+    }
     ++checked;
   }
   return checked;
@@ -234,7 +250,7 @@ TEST(TwistedModeIpr, AgreesWithStevrAndDenseEigenOnRandomChains) {
   TwistedModeIpr fast;
   RandomStream xi_stream(2024, 7);
   Tally vs_stevr, vs_eigen;
-  std::size_t chains = 0, pairs = 0;
+  std::size_t chains = 0, pairs = 0, ordered = 0;
   for (Disorder disorder : all_disorders)
     for (double q : {0.2, 0.5, 0.8})
       for (std::uint64_t r = 0; r < 24; ++r) {
@@ -247,13 +263,15 @@ TEST(TwistedModeIpr, AgreesWithStevrAndDenseEigenOnRandomChains) {
             to_string(disorder) + " q=" + std::to_string(q) + " xi=" + std::to_string(xi) + " r=" + std::to_string(r);
         compare(got, ref.stevr, "fast vs stevr, " + what, vs_stevr);
         compare(got, dense_eigen(ref), "fast vs Eigen, " + what, vs_eigen);
-        pairs += check_pairs(got.ipr, ref, "fast, " + what);
+        pairs += check_pairs(got.ipr, ref, "fast, " + what, &ordered);
         ++chains;
       }
   EXPECT_EQ(fast.info().fallbacks, 0u);
   EXPECT_GT(fast.info().clusters, 0u) << "the sample should contain small-ξ clusters";
   EXPECT_GT(pairs, 0u) << "isolated degenerate pairs should have been checked against the localized basis";
-  std::printf("[ info ] isolated pairs checked against the independently localized basis: %zu\n", pairs);
+  EXPECT_GT(ordered, 0u) << "some pairs should have had their numbering checked";
+  std::printf("[ info ] isolated pairs checked against the independently localized basis: %zu (numbering: %zu)\n",
+              pairs, ordered);
   EXPECT_GT(vs_stevr.checked_strict, 50u * chains);
   RecordProperty("worst_ipr_vs_stevr", std::to_string(vs_stevr.worst_strict));
   RecordProperty("worst_ipr_vs_eigen", std::to_string(vs_eigen.worst_strict));

@@ -4,8 +4,10 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <tuple>
 
 #include "granular/error.hpp"
+#include "granular/linear/detail/cluster_basis.hpp"
 #include "granular/linear/detail/lapack.hpp"
 #include "granular/linear/detail/rational_ql.hpp"
 
@@ -210,20 +212,44 @@ void TwistedModeIpr::localize(const Slot& slot, std::size_t count) {
 
 bool TwistedModeIpr::cluster(const Slot& slot, std::size_t first, std::size_t count, std::vector<double>& ipr) {
   const std::size_t n = slot.n;
-  const int ni = static_cast<int>(n), m = static_cast<int>(count);
-  for (std::size_t j = 0; j < count; ++j) {
-    stein_w_[j] = slot.lambda[first + j];
-    stein_iblock_[j] = 1;
-  }
-  stein_isplit_[0] = ni;
   if (stein_z_.size() < n * count) stein_z_.resize(n * count);  // the cluster's vectors only
-  int info = 0;
-  dstein_(&ni, slot.d.data(), slot.e.data(), &m, stein_w_.data(), stein_iblock_.data(), stein_isplit_.data(),
-          stein_z_.data(), &ni, stein_work_.data(), stein_iwork_.data(), stein_ifail_.data(), &info);
-  if (info != 0) return false;
+  const double tolerance = residual_limit_ * std::sqrt(static_cast<double>(count));
+  if (!detail::cluster_basis(slot.d.data(), slot.e.data(), n, slot.lambda.data() + first, count, tolerance,
+                             stein_z_.data(), cluster_work_)) {
+    ++info_.cluster_dstein;  // LAPACK's dstein instead: inverse iteration vector by vector
+    const int ni = static_cast<int>(n), m = static_cast<int>(count);
+    for (std::size_t j = 0; j < count; ++j) {
+      stein_w_[j] = slot.lambda[first + j];
+      stein_iblock_[j] = 1;
+    }
+    stein_isplit_[0] = ni;
+    int info = 0;
+    dstein_(&ni, slot.d.data(), slot.e.data(), &m, stein_w_.data(), stein_iblock_.data(), stein_isplit_.data(),
+            stein_z_.data(), &ni, stein_work_.data(), stein_iwork_.data(), stein_ifail_.data(), &info);
+    if (info != 0) return false;
+  }
   localize(slot, count);
+  // Mode numbers count by frequency. Inside a cluster the localized vectors are numbered by their
+  // Rayleigh quotients zᵀTz / zᵀz (exact ties by where |z| is largest): which IPR goes with which
+  // mode number then depends on the subspace, not on the basis the cluster's solve started from.
+  cluster_order_.clear();
   for (std::size_t j = 0; j < count; ++j) {
     const double* z = stein_z_.data() + j * n;
+    double zz = 0, ztz = 0, largest = -1;
+    std::size_t centre = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      double tz = slot.d[i] * z[i];
+      if (i > 0) tz += slot.e[i - 1] * z[i - 1];
+      if (i + 1 < n) tz += slot.e[i] * z[i + 1];
+      zz += z[i] * z[i];
+      ztz += z[i] * tz;
+      if (std::fabs(z[i]) > largest) largest = std::fabs(z[i]), centre = i;
+    }
+    cluster_order_.push_back({ztz / zz, centre, j});
+  }
+  std::sort(cluster_order_.begin(), cluster_order_.end());
+  for (std::size_t j = 0; j < count; ++j) {
+    const double* z = stein_z_.data() + std::get<2>(cluster_order_[j]) * n;
     Sums sums;
     for (std::size_t i = 0; i < n; ++i) sums.add(z[i], slot.mass[i]);
     const double p = sums.v4 / (sums.v2 * sums.v2);
