@@ -24,8 +24,9 @@ class QlControl {
       : chain_(&chain), d_(chain.d), e2_(chain.e2), n_(static_cast<long>(chain.n)), max_iterations_(30 * n_) {}
 
   /// Deflates what has converged and sets up the next sweep over [l, m]; false when the chain is
-  /// finished (converged or failed, recorded in the chain). Rows [known_from, known_to) are known
-  /// not to be negligible (the caller tested them), so the search for a split skips them.
+  /// finished (converged or failed, recorded in the chain). Rows [known_from, known_to) and
+  /// (known_to, known_next) are known not to be negligible (the caller tested them), so the search
+  /// for a split skips them.
   bool prepare(long known_from = 0, long known_to = 0, long known_next = 0) {
     while (l < n_) {
       long end = l;
