@@ -230,8 +230,8 @@ bool TwistedModeIpr::cluster(const Slot& slot, std::size_t first, std::size_t co
   }
   localize(slot, count);
   // Mode numbers count by frequency. Inside a cluster the localized vectors are numbered by their
-  // Rayleigh quotients zᵀTz / zᵀz (exact ties by where |z| is largest): which IPR goes with which
-  // mode number then depends on the subspace, not on the basis the cluster's solve started from.
+  // Rayleigh quotients zᵀTz / zᵀz: which IPR goes with which mode number then depends on the
+  // subspace, not on the basis the cluster's solve started from.
   cluster_order_.clear();
   for (std::size_t j = 0; j < count; ++j) {
     const double* z = stein_z_.data() + j * n;
@@ -248,6 +248,16 @@ bool TwistedModeIpr::cluster(const Slot& slot, std::size_t first, std::size_t co
     cluster_order_.push_back({ztz / zz, centre, j});
   }
   std::sort(cluster_order_.begin(), cluster_order_.end());
+  // Quotients closer than their rounding (here 1e-13 max|λ|) give no order: such vectors are
+  // numbered by where they sit, so that a rounding-level change anywhere cannot swap them.
+  const double tie = 1e-13 * std::fmax(std::fabs(slot.lambda[0]), std::fabs(slot.lambda[n - 1]));
+  for (std::size_t b = 0; b < count;) {
+    std::size_t e = b + 1;
+    while (e < count && std::get<0>(cluster_order_[e]) - std::get<0>(cluster_order_[e - 1]) < tie) ++e;
+    std::sort(cluster_order_.begin() + static_cast<long>(b), cluster_order_.begin() + static_cast<long>(e),
+              [](const auto& x, const auto& y) { return std::get<1>(x) < std::get<1>(y); });
+    b = e;
+  }
   for (std::size_t j = 0; j < count; ++j) {
     const double* z = stein_z_.data() + std::get<2>(cluster_order_[j]) * n;
     Sums sums;

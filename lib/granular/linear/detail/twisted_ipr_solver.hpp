@@ -37,7 +37,8 @@
 //     `max_residual`·N·ε·max|λ|·√count, then two more solves; LAPACK's dstein, vector by
 //     vector, if it does not get there). That basis is rotated to the most localized one
 //     (Jacobi sweeps maximizing Σ v⁴, see localize()), its vectors numbered by their Rayleigh
-//     quotients, and their IPRs used. The rotated basis belongs to the subspace, not to the
+//     quotients (quotients within 1e-13 max|λ|, equal to rounding, by position), and their IPRs
+//     used. The rotated basis belongs to the subspace, not to the
 //     solver: from dstein's start vectors and from the block iteration's the IPRs agree to
 //     2e-8 (400 clusters at N = 1000, ξ = 0.1); other solvers (dstevr, Eigen) may return less
 //     localized bases.
