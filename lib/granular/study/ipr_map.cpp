@@ -174,9 +174,8 @@ std::vector<IprMapCell> compute_ipr_map(const IprMapConfig& config, const RunOpt
 
   const std::size_t n = c.chain.N, realizations = c.realizations;
   // Chains per solve_all call: the fast solver runs a call's chains in vector lanes, which stay
-  // fuller the more chains a call has; one call per thread and cell measured fastest (N = 100:
-  // 1.02 s against 1.25 s with 4 per call, N = 1000: 9.8 s against 12.2 s, docs/performance.md).
-  // Results do not depend on it.
+  // fuller the more chains a call has; one call per thread and cell measured fastest
+  // (docs/performance.md, "Chains in vector lanes"). Results do not depend on it.
   const std::size_t batch =
       std::clamp<std::size_t>((realizations + static_cast<std::size_t>(threads) - 1) / static_cast<std::size_t>(threads),
                               1, 64);

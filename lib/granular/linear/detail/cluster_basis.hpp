@@ -7,11 +7,13 @@
 // once by LAPACK's dgttrf (LU with partial pivoting; an exactly zero pivot, σ on an eigenvalue,
 // becomes ε‖T‖ as in dlagtf); then X ← (T − σI)⁻¹ X and an orthonormalization (modified
 // Gram–Schmidt, twice) repeat from deterministic pseudo-random starts until the subspace's
-// residual ‖T X − X (Xᵀ T X)‖_F ≤ tolerance. Each step amplifies the cluster's components by
-// gap/width (the distance to the nearest other eigenvalue over the cluster's width, ≥ 1e3 in the
-// solver's use), so two or three steps suffice. The solves run every right-hand side of a row in
-// vector lanes (X is stored by rows), where LAPACK's dstein did one vector at a time with a
-// factorization, a random start and reorthogonalization each: ~10× its cost at N = 1000.
+// residual ‖T X − X (Xᵀ T X)‖_F ≤ tolerance, then two more solves: the residual bounds the angle
+// to the subspace only by residual / gap. Each solve shrinks the rest of the spectrum's components
+// by (half the cluster's width) / (its distance from σ); the solver's clusters can sit as close as
+// one width to their neighbours, so up to 40 solves are allowed (3–4 sufficed on 400 clusters at
+// N = 1000, ξ = 0.1). The solves run every right-hand side of a row in vector lanes (X is stored
+// by rows), where LAPACK's dstein did one vector at a time with a factorization and a random
+// start each (docs/performance.md, "Clusters by block inverse iteration").
 #include <cstddef>
 #include <vector>
 

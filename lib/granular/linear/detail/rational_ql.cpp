@@ -3,6 +3,7 @@
 #include "granular/linear/detail/vector_lanes.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -97,12 +98,12 @@ struct QlLaneStart {
   long left = std::numeric_limits<long>::max(), row = 0, split = 0;
 };
 
-// Element j of the lanes v (through a copy: indexing v itself would keep its owner in memory).
+// The lanes v as an array (a copy: indexing v itself would keep its owner in memory).
 template <class T, class E = std::remove_cvref_t<decltype(T{}[0])>>
-[[gnu::always_inline]] inline E lane_of(const T (&v)[ql_vectors], std::size_t j) {
-  E copy[ql_lane_count];
-  for (std::size_t h = 0; h < ql_vectors; ++h) std::memcpy(copy + h * W, &v[h], sizeof v[h]);
-  return copy[j];
+[[gnu::always_inline]] inline std::array<E, ql_lane_count> lane_array(const T (&v)[ql_vectors]) {
+  std::array<E, ql_lane_count> out;
+  for (std::size_t h = 0; h < ql_vectors; ++h) std::memcpy(out.data() + h * W, &v[h], sizeof v[h]);
+  return out;
 }
 
 // Lane j of x starts the sweep `start` (c = 1, s = 0), by blends: no element is addressed.
@@ -279,15 +280,14 @@ void rational_ql_lanes(std::span<QlChain> chains, QlLaneWork& work) {
       long any_ended = 0;
       for (std::size_t w = 0; w < W; ++w) any_ended |= ended[w];
       if (any_ended == 0) continue;
-      unsigned ended_lanes = 0;
-      for (std::size_t j = 0; j < L; ++j) ended_lanes |= (lane_of(x.left, j) == 0 ? 1u : 0u) << j;
-      while (ended_lanes != 0) {
-        const auto j = static_cast<std::size_t>(__builtin_ctz(ended_lanes));
-        ended_lanes &= ended_lanes - 1;
-        const long split = lane_of(x.split, j), next_split = lane_of(x.next_split, j);
-        end_sweep(j, step, lane_of(x.s, j), lane_of(x.p, j), lane_of(x.sigma, j), lane_of(x.gamma, j));
-        start_lane(x, j, begin_sweep(j, step + 1, chunk_end, lanes[j].control->l + 1, split, next_split));
-      }
+      // the lanes whose sweep ended, read once: start_lane changes only the lane it starts
+      const auto left = lane_array(x.left), split = lane_array(x.split), next_split = lane_array(x.next_split);
+      const auto s = lane_array(x.s), p = lane_array(x.p), sigma = lane_array(x.sigma), gamma = lane_array(x.gamma);
+      for (std::size_t j = 0; j < L; ++j)
+        if (left[j] == 0) {
+          end_sweep(j, step, s[j], p[j], sigma[j], gamma[j]);
+          start_lane(x, j, begin_sweep(j, step + 1, chunk_end, lanes[j].control->l + 1, split[j], next_split[j]));
+        }
     }
     for (std::size_t j = 0; j < L; ++j)
       if (lanes[j].control) {
