@@ -69,7 +69,7 @@ int main(int argc, char** argv) {
     // Read before the run, which rewrites them.
     const nlohmann::json resumed = resumed_code(run_options, case_checkpoints(output + ".checkpoint", cases.size()));
     const auto cells = tool::run_study(total_realizations(cases), run_options, output, "exponents", argc, argv,
-                                       [&](const RunOptions& o) { return run_exponent_table(config, o); });
+                                       [&](const RunOptions& o) { return run_exponent_table(config, cases, o); });
     if (!mpi.root()) return;
 
     std::printf("%s", markdown_tables(cells, config).c_str());

@@ -15,26 +15,27 @@
 
 namespace granular {
 
-/// {row name: value} for every row of `table` that has a field or a text form.
+/// {row name: value} for every row of `table` that has a field or a text form (not a shorthand).
 template <class Case>
 nlohmann::json describe_rows(const Case& c, const ParameterTable<Case>& table) {
   nlohmann::json j = nlohmann::json::object();
   for (const Parameter<Case>& p : table)
-    std::visit(
-        [&]<class Field>(const Field& field) {
-          if constexpr (std::is_same_v<Field, std::monostate>) {
-            if (p.text && p.text->write) j[p.name] = p.text->write(c);  // a word or a text form
-          } else {
-            const auto& value = field(const_cast<Case&>(c));
-            using T = std::remove_cvref_t<decltype(value)>;
-            if constexpr (requires { value.has_value(); })
-              j[p.name] = value ? nlohmann::json(*value) : nlohmann::json(nullptr);
-            else if constexpr (std::is_floating_point_v<T>)  // NaN, a number's "none", is null in JSON
-              j[p.name] = value == value ? nlohmann::json(value) : nlohmann::json(nullptr);
-            else j[p.name] = value;
-          }
-        },
-        p.field);
+    if (p.described)
+      std::visit(
+          [&]<class Field>(const Field& field) {
+            if constexpr (std::is_same_v<Field, std::monostate>) {
+              if (p.text && p.text->write) j[p.name] = p.text->write(c);  // a word or a text form
+            } else {
+              const auto& value = field(const_cast<Case&>(c));
+              using T = std::remove_cvref_t<decltype(value)>;
+              if constexpr (requires { value.has_value(); })
+                j[p.name] = value ? nlohmann::json(*value) : nlohmann::json(nullptr);
+              else if constexpr (std::is_floating_point_v<T>)  // NaN, a number's "none", is null in JSON
+                j[p.name] = value == value ? nlohmann::json(value) : nlohmann::json(nullptr);
+              else j[p.name] = value;
+            }
+          },
+          p.field);
   return j;
 }
 
@@ -44,7 +45,7 @@ nlohmann::json describe_rows(const Case& c, const ParameterTable<Case>& table) {
 template <class Case>
 Case parse_rows(const nlohmann::json& j, const ParameterTable<Case>& table, Case c = Case{}) {
   for (const Parameter<Case>& p : table) {
-    if (!j.contains(p.name)) continue;
+    if (!p.described || !j.contains(p.name)) continue;
     const nlohmann::json& v = j.at(p.name);
     try {
       if (std::holds_alternative<std::monostate>(p.field)) {

@@ -85,6 +85,10 @@ struct Parameter {
   /// enum, `integrator`); other text forms are the command line's only.
   bool python_text = false;
 
+  /// Whether the JSON holds this row (describe_rows): not a command line's shorthand for other
+  /// rows (`fit` start:stop for `fit_begin` and `fit_end`), which they describe.
+  bool described = true;
+
   /// Words front ends took for this parameter before it was renamed (`mode_khz`: the tools'
   /// --mode-khz, Python's mode_khz=), still taken for one minor version with a deprecation note.
   std::vector<std::string> former_words{};
@@ -92,6 +96,12 @@ struct Parameter {
   /// This row, also taken under its former front-end `word` (deprecated).
   Parameter formerly(std::string word) && {
     former_words.push_back(std::move(word));
+    return std::move(*this);
+  }
+
+  /// This row, a shorthand for other rows that the JSON holds instead (`described`).
+  Parameter shorthand() && {
+    described = false;
     return std::move(*this);
   }
 
@@ -258,6 +268,7 @@ ParameterTable<Outer> nested_rows(const ParameterTable<Inner>& table, Inner Oute
     for (const std::string& entry : p.overridden_by)
       if (kept(entry)) row.overridden_by.push_back(entry);
     row.python_text = p.python_text;
+    row.described = p.described;
     row.former_words = p.former_words;
     out.push_back(std::move(row));
   }

@@ -309,7 +309,7 @@ exponent_table.__doc__ = (
     "Returns a granular.ExponentTable: table (the tool's CSV columns as arrays; with mle also mle, mle_real_err, "
     "mle_sd: the mean X1(T) [1/s], its standard error over realizations, their standard deviation), curves (with "
     "mle also mle, mle_se: <X1(t)> [1/s] and its standard error), profiles, markdown, paper (the comparison, with "
-    "compare_paper), metadata (with mle, X1(T) under each case's 'mle'). Releases the GIL; Ctrl-C stops it "
+    "compare_paper), metadata (with mle, X1(T) under each case's 'mle_at_T'). Releases the GIL; Ctrl-C stops it "
     "resumably (KeyboardInterrupt).")
 
 

@@ -134,7 +134,7 @@ py::dict exponent_table(const ExponentChoices& words, ExponentTableConfig config
   const nlohmann::json resumed = resumed_code(options, case_checkpoints(prefix, cases.size()));  // before the run
   std::vector<ExponentCell> cells;
   run_long("exponent_table", total_realizations(cases), options,
-           [&](const RunOptions& o) { cells = run_exponent_table(config, o); });
+           [&](const RunOptions& o) { cells = run_exponent_table(config, cases, o); });
   if (!prefix.empty())
     for (const std::string& log : case_checkpoints(prefix, cells.size())) CheckpointLog::remove_all(log);
 

@@ -5,12 +5,14 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "granular/case/transport_parameters.hpp"
 #include "granular/error.hpp"
 #include "granular/study/transport_study.hpp"
 
@@ -95,7 +97,10 @@ std::vector<std::pair<std::string, TransportCase>> families(const std::string& d
     c.dynamics.integration.integrator = parse_integrator("reference");
     c.dynamics.integration.integrator.tolerance.max_step = 2e-8;
   });
-  add("no fit", [](TransportCase& c) { c.fit = false; });
+  add("no fit", [](TransportCase& c) {  // a window past T: no exponents
+    c.fit_end = 3e-3;
+    fit_within_duration(c);
+  });
   add("window threshold", [](TransportCase& c) { c.dynamics.integration.window.threshold = 1e-20; });
   add("observed otherwise", [](TransportCase& c) {
     c.centre = SpreadCentre::centroid;
@@ -153,13 +158,48 @@ TEST(CaseDescription, BeadDistributionsReadBackExactly) {
 }
 
 TEST(CaseDescription, AMissingKeyIsNamed) {
+  for (const Parameter<TransportCase>& p : case_parameters()) {
+    if (!p.described) continue;
+    nlohmann::json described = describe(base());
+    described.erase(p.name);
+    try {
+      parse_case(described);
+      ADD_FAILURE() << "parsed without " << p.name;
+    } catch (const InvalidInput& e) {
+      EXPECT_EQ(e.parameter(), p.name);
+      EXPECT_NE(std::string(e.what()).find("not in the case"), std::string::npos) << e.what();
+    }
+  }
+}
+
+// The JSON is the table: one key per described row of case_parameters(), under the row's name
+// (the tools' --name, Python's name=), beside the chain's own fields.
+TEST(CaseDescription, TheKeysAreTheRowsNames) {
+  const TransportCase c = base();
+  nlohmann::json chain;
+  describe_fields(c.chain, chain);
+  std::set<std::string> expected{"profile_realizations"};
+  for (const auto& [key, value] : chain.items()) expected.insert(key);
+  for (const Parameter<TransportCase>& p : case_parameters())
+    if (p.described) {
+      EXPECT_TRUE(expected.insert(p.name).second) << p.name << " is also a chain field";
+    }
+  std::set<std::string> keys;
+  const nlohmann::json described = describe(c);
+  for (const auto& [key, value] : described.items()) keys.insert(key);
+  EXPECT_EQ(keys, expected);
+}
+
+// A case file of 0.2.0 spelled its keys with units (dt_s, alpha_m): named as such, not misread.
+TEST(CaseDescription, ACaseOfTheFormerKeysIsRefusedNamingTheVersion) {
   nlohmann::json described = describe(base());
-  described.erase("dt_s");
+  described["dt_s"] = described.at("time_step");
+  described.erase("time_step");
   try {
     parse_case(described);
-    FAIL() << "parsed without dt_s";
+    FAIL() << "a 0.2.0 case parsed";
   } catch (const InvalidInput& e) {
-    EXPECT_NE(std::string(e.what()).find("dt_s"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("0.2.0"), std::string::npos) << e.what();
   }
 }
 

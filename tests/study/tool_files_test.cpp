@@ -107,7 +107,7 @@ TEST(ExponentFiles, PathsAndCases) {
   EXPECT_EQ(cases[0].at("failed_excluded"), nlohmann::json({4, 7}));
   EXPECT_EQ(cases[0].at("chain"), chain_name(cell));
   EXPECT_FALSE(cases[0].contains("exponents"));
-  EXPECT_FALSE(cases[0].contains("mle"));
+  EXPECT_FALSE(cases[0].contains("mle_at_T"));
 }
 
 }  // namespace

@@ -45,7 +45,7 @@ TEST(RenamedOptions, TheFormerSpellingRunsTheSameCaseWithANote) {
     return nlohmann::json::parse(read_file(dir + "/" + name + ".json"))["parameters"];
   };
   EXPECT_EQ(parameters("now"), parameters("before"));
-  EXPECT_EQ(parameters("now")["mode_kick"]["near_khz"], 20.0);
+  EXPECT_EQ(parameters("now")["near_khz"], 20.0);
 }
 
 // breathers' seed frequency was --near-khz: now --near as well.

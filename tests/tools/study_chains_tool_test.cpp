@@ -101,7 +101,7 @@ TEST(ExponentsChains, MleIsTheMeanOfSpreadingRuns) {
   EXPECT_EQ(curves.at("mle").back(), e.at("mle")[0]);
   EXPECT_EQ(curves.at("mle_se").size(), curves.at("t").size());
   const auto meta = nlohmann::json::parse(read_file(dir + "/e.json"));
-  EXPECT_EQ(meta["cases"][0]["mle"]["X1_at_T_per_s"], number(e.at("mle")[0]));
+  EXPECT_EQ(meta["cases"][0]["mle_at_T"]["X1_at_T_per_s"], number(e.at("mle")[0]));
   // Without --mle the columns stay those of a conservative study.
   ASSERT_EQ(
       run_tool("exponents", study + " --chains A --ic velocity --realizations 2 --output " + dir + "/plain").exit_code,

@@ -58,7 +58,6 @@ def merge(folder):
             c.pop("exponents", None)
             cases.append(c)
     merged = {k: meta[k] for k in ("tool", "version", "parameters", "time_step_rule") if k in meta}
-    merged["parameters"] = dict(merged.get("parameters", {}), fit_s=cases[0]["fit_s"])
     merged["cases"] = cases
     merged["merged_from"] = [os.path.basename(p) for p in prefixes]
     with open(os.path.join(folder, "all.json"), "w") as f:
@@ -104,7 +103,7 @@ def main():
         wall = float(run.get("wall_s", "nan"))
         shared = c["disorder"] == "h"  # the ten homogeneous cases share one timed run
         wall_text = f"{wall:.1f}" + (" (10 cases)" if shared else "")
-        print(f"| {k[0]} | {k[1]:g} | {k[2]} | {c['N']} | {c['integrator']}, {c['dt_s'] * 1e6:g} µs "
+        print(f"| {k[0]} | {k[1]:g} | {k[2]} | {c['N']} | {c['integrator']}, {c.get('time_step', c.get('dt_s')) * 1e6:g} µs "
               f"| {cell(s, 'gamma') if s else '—'} | {cell(r, 'gamma')} | {shift(s, r, 'gamma') if s else '—'} "
               f"| {cell(s, 'eta') if s else '—'} | {cell(r, 'eta')} | {shift(s, r, 'eta') if s else '—'} "
               f"| {r['realizations']} ({len(c.get('failed_excluded', []))}) | {float(r['max_energy_error']):.1e} "

@@ -11,7 +11,10 @@ nlohmann::json validate_and_settle(std::vector<TransportCase>& cases, const std:
                                    std::string& warning, const Chain* chain) {
   for (const TransportCase& c : cases) validate_before_time_step(c);
   nlohmann::json rule = settle_scheme_and_step(cases, chain);
-  for (const TransportCase& c : cases) validate(c);  // on the settled τ's grid
+  for (TransportCase& c : cases) {
+    validate(c);                  // on the settled τ's grid
+    c.site = kicked_bead(c) + 1;  // the centre's number where 0 stood for it: the JSON names the bead
+  }
   // The rule's ω_max: the largest of the cases (a bound for each), as settle_time_step found it.
   const double omega_max = rule.at("omega_max_rad_s").get<double>();
   warning.clear();

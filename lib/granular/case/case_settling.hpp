@@ -18,7 +18,8 @@ namespace granular {
 
 /// validate_before_time_step on every case, settle_scheme_and_step (scheme_choice.hpp: what the
 /// cases leave to settle, their time step and an automatic scheme, is resolved), validate on every
-/// case, then duration_warning with the largest ω_max of the cases (they share T: one warning, of
+/// case (and the kicked `site` set to its bead's number, where 0 stood
+/// for the centre), then duration_warning with the largest ω_max of the cases (they share T: one warning, of
 /// the first case that draws it). `chain` as settle_scheme_and_step; `duration_option` names T in
 /// the warning ("--T", "T"), which goes to `warning` ("" when T is plausible). Returns
 /// settle_scheme_and_step's rule, for the JSON.

@@ -18,25 +18,10 @@ void set_realizations(KickedCase& k, long long realizations, bool ensemble) {
   k.warnings.insert(k.warnings.end(), k.selected.warnings.begin(), k.selected.warnings.end());
 }
 
-void read_kick(TransportCase& c, const std::string& word) { c.kick = parse_kick(word); }
-std::string write_kick(const TransportCase& c) { return to_string(c.kick); }
-
 }  // namespace
 
 ChainChoices kicked_chain_defaults() {  // the case's own N (TransportCase{}.chain: the paper's 2501)
   return ChainChoices{.n = static_cast<long long>(TransportCase{}.chain.N)};
-}
-
-const ParameterTable<TransportCase>& kicked_case_parameters() {
-  using C = TransportCase;
-  static const ParameterTable<C> table{
-      Parameter<C>{"ic",
-                   {},
-                   {read_kick, write_kick},
-                   "initial condition: displacement | velocity | mode (a linear mode: `mode`, `near`)"}
-          .as_word(),
-      {"realizations", &C::realizations, "realizations to average (ensemble means and exponents; >= 1)"}};
-  return table;
 }
 
 KickedCase kicked_case(const ChainChoices& chain, const TransportCase& run, bool ensemble, const RadiusNames& names) {

@@ -28,11 +28,6 @@ struct KickedCase {
 /// show them as their defaults (the spreading tool's --N, granular.transport's N).
 ChainChoices kicked_chain_defaults();
 
-/// The rows a kicked case takes beyond transport_parameters(): the kick `ic` (displacement,
-/// velocity or mode: the mode of `run.mode`, mode_kick_parameters()) and the `realizations`
-/// averaged (>= 1), each reaching its field of TransportCase.
-const ParameterTable<TransportCase>& kicked_case_parameters();
-
 /// The case `run` is with the chain `chain` (realization chain.realization), before validation
 /// (outputs may still add observers to it; validate_and_settle then settles the step and, for
 /// integrator auto, the scheme: the case stands for SABA2C until then). `run` gives the kick, its

@@ -13,6 +13,7 @@
 #include "granular/error.hpp"
 #include "granular/model/chain.hpp"
 #include "granular/number_format.hpp"
+#include "granular/parameter_json.hpp"
 
 namespace granular {
 
@@ -147,130 +148,31 @@ KickedChain kick(const TransportCase& c, const Chain& chain) {
   return {velocity_kick(chain, site, beta), beta, {}};
 }
 
-static nlohmann::json describe_conservative(const TransportCase& c) {
-  const SpreadingRunConfig& d = c.dynamics;
-  const bool uses_alpha = c.kick == Kick::displacement || !c.beta || (c.kick == Kick::mode && c.mode.energy == 0);
-  nlohmann::json beta = nullptr;  // the values used: α only where the kick uses it, β only for a velocity kick
-  if (c.kick == Kick::velocity) beta = c.beta ? nlohmann::json(*c.beta) : nlohmann::json("match");
-  nlohmann::json described = {{"ic", to_string(c.kick)},
-                              {"alpha_m", uses_alpha ? nlohmann::json(c.alpha) : nullptr},
-                              {"beta_m_s", beta},
-                              {"site", kicked_bead(c) + 1},
-                              {"m2_centre", to_string(c.centre)},
-                              {"T_s", d.integration.duration},
-                              {"dt_s", c.time_step.value_or(d.integration.time_step)},  // settled: the same
-                              {"integrator", d.integration.integrator.name()},
-                              {"force_law", to_string(d.integration.force_law)},
-                              {"samples", d.spread.samples},
-                              {"sampling", to_string(d.spread.sampling)},
-                              {"fit_s", c.fit ? nlohmann::json({c.fit_begin, c.fit_end}) : nlohmann::json(nullptr)},
-                              {"fit_step_s", c.fit_step},
-                              {"kappa", c.criterion.kappa},
-                              {"t_star_s", c.criterion.t_start},
-                              {"bootstrap_resamples", c.bootstrap.resamples},
-                              {"bootstrap_seed", c.bootstrap.seed},
-                              {"active_window", d.integration.window.enabled},
-                              {"window_threshold", d.integration.window.threshold},
-                              {"max_energy_error", d.spread.max_energy_error},
-                              {"stop_on_energy_error", d.spread.stop_on_energy_error},
-                              {"realizations", c.realizations},
-                              {"profile_realizations", std::min(c.profile_realizations, c.realizations)}};
-  describe_fields(c.chain, described);
-  if (c.kick == Kick::mode)  // only then: every other case keeps its identity (and its checkpoints)
-    described["mode_kick"] = {{"mode", c.mode.mode == 0 ? nlohmann::json(nullptr) : nlohmann::json(c.mode.mode)},
-                              {"near_khz", c.mode.near_khz ? nlohmann::json(*c.mode.near_khz) : nlohmann::json(nullptr)},
-                              {"energy_J", c.mode.energy == 0 ? nlohmann::json(nullptr) : nlohmann::json(c.mode.energy)}};
-  return described;
-}
-
 nlohmann::json describe(const TransportCase& c) {
-  nlohmann::json j = describe_conservative(c);
-  // Only when switched on, so that conservative runs keep their parameters (and checkpoints).
-  const SpreadingRunConfig& d = c.dynamics;
-  if (d.integration.damping.any())
-    j["damping"] = {{"time_s", d.integration.damping.time}, {"kk_gamma_s", d.integration.damping.kk_gamma}};
-  if (d.integration.integrator.reference)
-    j["reference_max_step_s"] = d.integration.integrator.tolerance.max_step;  // only then it matters
-  if (d.integration.lyapunov.enabled)
-    j["lyapunov"] = {{"renormalize_every", d.integration.lyapunov.renormalize_every},
-                     {"norm_time_unit_s", d.integration.lyapunov.time_unit},
-                     {"initial_deviation", "du = 1, dv = 1/time_unit on the kicked bead"}};
-  if (d.lyapunov_vectors > 0)
-    j["lyapunov_spectrum"] = {{"vectors", d.lyapunov_vectors},
-                              {"orthonormalize_every", d.integration.lyapunov.renormalize_every},
-                              {"seed", LyapunovSpectrumConfig{}.seed}};
-  if (d.covariant_vectors > 0 || d.covariant_transient) {  // a transient alone is refused, but not unsaid
-    const CovariantVectorsConfig clv = covariant_config(d);
-    j["covariant_vectors"] = {{"vectors", d.covariant_vectors},
-                              {"transient_s", d.covariant_transient ? nlohmann::json(*d.covariant_transient)
-                                                                    : nlohmann::json(nullptr)},
-                              {"transient_steps", clv.forward_transient},
-                              {"orthonormalize_every", clv.orthonormalize_every},
-                              {"seed", clv.seed}};
-  }
+  nlohmann::json j = describe_rows(c, case_parameters());
+  describe_fields(c.chain, j);
+  // Set by the study rather than a front end (profiles are long; checkpoints hold every row).
+  j["profile_realizations"] = std::min(c.profile_realizations, c.realizations);
   return j;
 }
 
 TransportCase parse_case(const nlohmann::json& j) {
+  const ParameterTable<TransportCase>& rows = case_parameters();
+  for (const Parameter<TransportCase>& p : rows)
+    if (p.described && !j.contains(p.name))
+      throw InvalidInput(p.name, j.contains("dt_s") ? ": not in the case, which is granular 0.2.0's (its keys were "
+                                                      "renamed since: CHANGELOG.md); replay it with 0.2.0"
+                                                    : ": not in the case");
   TransportCase c;
+  c.chain = parse_recipe_fields(j);
+  c = parse_rows(j, rows, std::move(c));
   try {
-    c.chain = parse_recipe_fields(j);
-    c.kick = parse_kick(j.at("ic").get<std::string>());
-    if (!j.at("alpha_m").is_null()) c.alpha = j.at("alpha_m").get<double>();
-    const auto& beta = j.at("beta_m_s");
-    if (beta.is_string() && beta.get<std::string>() != "match") throw InvalidInput("beta_m_s", ": a number or 'match'");
-    if (beta.is_string()) c.beta.reset();
-    if (beta.is_number()) c.beta = beta.get<double>();
-    c.site = j.at("site").get<std::size_t>();
-    c.centre = parse_spread_centre(j.at("m2_centre").get<std::string>());
-    SpreadingRunConfig& d = c.dynamics;
-    d.integration.duration = j.at("T_s").get<double>();
-    d.integration.time_step = j.at("dt_s").get<double>();
-    c.time_step = d.integration.time_step;  // a described case was settled: its τ is given
-    d.integration.integrator = parse_integrator(j.at("integrator").get<std::string>());
-    if (j.contains("reference_max_step_s"))
-      d.integration.integrator.tolerance.max_step = j.at("reference_max_step_s").get<double>();
-    d.integration.force_law = parse_force_law(j.at("force_law").get<std::string>());
-    d.spread.samples = j.at("samples").get<std::size_t>();
-    d.spread.sampling = parse_sampling(j.at("sampling").get<std::string>());
-    c.fit = !j.at("fit_s").is_null();
-    if (c.fit) c.fit_begin = j.at("fit_s").at(0).get<double>(), c.fit_end = j.at("fit_s").at(1).get<double>();
-    c.fit_step = j.at("fit_step_s").get<double>();
-    c.criterion.kappa = j.at("kappa").get<double>();
-    c.criterion.t_start = j.at("t_star_s").get<double>();
-    c.bootstrap.resamples = j.at("bootstrap_resamples").get<std::size_t>();
-    c.bootstrap.seed = j.at("bootstrap_seed").get<std::uint64_t>();
-    d.integration.window.enabled = j.at("active_window").get<bool>();
-    d.integration.window.threshold = j.at("window_threshold").get<double>();
-    d.spread.max_energy_error = j.at("max_energy_error").get<double>();
-    d.spread.stop_on_energy_error = j.at("stop_on_energy_error").get<bool>();
-    c.realizations = j.at("realizations").get<std::size_t>();
     c.profile_realizations = j.at("profile_realizations").get<std::size_t>();
-    if (j.contains("mode_kick")) {
-      const auto& m = j.at("mode_kick");
-      if (!m.at("mode").is_null()) c.mode.mode = m.at("mode").get<long>();
-      if (!m.at("near_khz").is_null()) c.mode.near_khz = m.at("near_khz").get<double>();
-      if (!m.at("energy_J").is_null()) c.mode.energy = m.at("energy_J").get<double>();
-    }
-    if (j.contains("damping")) {
-      d.integration.damping.time = j.at("damping").at("time_s").get<double>();
-      d.integration.damping.kk_gamma = j.at("damping").at("kk_gamma_s").get<double>();
-    }
-    if (j.contains("lyapunov")) {
-      d.integration.lyapunov.enabled = true;
-      d.integration.lyapunov.renormalize_every = j.at("lyapunov").at("renormalize_every").get<std::size_t>();
-      d.integration.lyapunov.time_unit = j.at("lyapunov").at("norm_time_unit_s").get<double>();
-    }
-    if (j.contains("lyapunov_spectrum"))
-      d.lyapunov_vectors = j.at("lyapunov_spectrum").at("vectors").get<std::size_t>();
-    if (j.contains("covariant_vectors")) {
-      d.covariant_vectors = j.at("covariant_vectors").at("vectors").get<std::size_t>();
-      if (const auto& t = j.at("covariant_vectors").at("transient_s"); !t.is_null())
-        d.covariant_transient = t.get<double>();
-    }
   } catch (const nlohmann::json::exception& e) {
-    throw InvalidInput("case", std::string(": ") + e.what());
+    throw InvalidInput("profile_realizations", std::string(": ") + e.what());
   }
+  if (c.time_step) c.dynamics.integration.time_step = *c.time_step;  // a settled case: its τ is given
+  fit_within_duration(c);
   return c;
 }
 

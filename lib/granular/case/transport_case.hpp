@@ -83,10 +83,13 @@ void validate_before_time_step(const TransportCase& c);
 void refuse_spectrum_in_ensemble(const SpreadingRunConfig& run);
 
 /// Every parameter that determines the result, as JSON (the checkpoint's identity, the run's
-/// "parameters", Python's metadata, the case file that replays a failed realization).
+/// "parameters", Python's metadata, the case file that replays a failed realization): one key per
+/// row of case_parameters() under the row's name (`alpha`, `time_step`, `ic`, …; units in the
+/// rows' help), the chain's fields (describe_fields) and `profile_realizations`.
 nlohmann::json describe(const TransportCase& c);
-/// The inverse of describe: parse_case(describe(c)) describes as c does. Throws InvalidInput
-/// naming the key.
+/// The inverse of describe: parse_case(describe(c)) describes as c does (c.fit follows from the
+/// window and T: fit_within_duration). Throws InvalidInput naming a key that is missing or of the
+/// wrong kind, and saying so of a case of granular 0.2.0 (keys with units: dt_s, alpha_m, …).
 TransportCase parse_case(const nlohmann::json& described);
 
 /// The spreading run of one realization of `c`: its dynamics with the kicked site and the dense

@@ -56,6 +56,8 @@ void read_guard(C& c, const std::string& word) {
   c.dynamics.spread.stop_on_energy_error = word == "stop";
 }
 std::string write_guard(const C& c) { return c.dynamics.spread.stop_on_energy_error ? "stop" : "warn"; }
+void read_kick(C& c, const std::string& word) { c.kick = parse_kick(word); }
+std::string write_kick(const C& c) { return to_string(c.kick); }
 
 }  // namespace
 
@@ -91,7 +93,8 @@ const ParameterTable<TransportCase>& transport_parameters() {
       P{"force_law", {}, {read_force_law, write_force_law}, "hertz | fpu | linear"}.as_word(),
       {"samples", samples, "log-spaced sample times (tau..T) outside the fit window"},
       P{"sampling", {}, {read_sampling, write_sampling}, "log (tau..T) | uniform (0..T) for those samples"}.as_word(),
-      {"fit", {}, {read_fit, write_fit}, "fit window start:stop [s] of gamma (m2 ~ t^gamma) and eta (P^-1 ~ t^-eta)"},
+      P{"fit", {}, {read_fit, write_fit}, "fit window start:stop [s] of gamma (m2 ~ t^gamma) and eta (P^-1 ~ t^-eta)"}
+          .shorthand(),
       {"fit_begin", &C::fit_begin, "start of the fit window [s]"},
       {"fit_end", &C::fit_end, "end of the fit window [s]"},
       {"fit_step", &C::fit_step, "spacing of the samples inside the fit window [s], a multiple of `time_step`"},
@@ -159,6 +162,29 @@ const ParameterTable<ModeKick>& mode_kick_parameters() {
           .formerly("mode_khz"),
       {"energy", &ModeKick::energy,
        "a mode kick: total energy of the initial state [J] (without it `alpha` is the largest |u_n|)", false}};
+  return table;
+}
+
+const ParameterTable<TransportCase>& kicked_case_parameters() {
+  static const ParameterTable<C> table{
+      Parameter<C>{"ic",
+                   {},
+                   {read_kick, write_kick},
+                   "initial condition: displacement | velocity | mode (a linear mode: `mode`, `near`)"}
+          .as_word(),
+      {"realizations", &C::realizations, "realizations to average (ensemble means and exponents; >= 1)"}};
+  return table;
+}
+
+const ParameterTable<TransportCase>& case_parameters() {
+  static const ParameterTable<C> table = [] {
+    ParameterTable<C> all = kicked_case_parameters();
+    const ParameterTable<C>& run = transport_parameters();
+    const ParameterTable<C> mode = nested_rows(mode_kick_parameters(), &C::mode);
+    all.insert(all.end(), run.begin(), run.end());
+    all.insert(all.end(), mode.begin(), mode.end());
+    return all;
+  }();
   return table;
 }
 

@@ -19,6 +19,16 @@ namespace granular {
 /// paper (docs/physics.md, "Nonlinear dynamics"): dissipation and the tangent map.
 const ParameterTable<TransportCase>& transport_parameters();
 
+/// The rows a kicked case takes beyond transport_parameters(): the kick `ic` (displacement,
+/// velocity or mode: the mode of `run.mode`, mode_kick_parameters()) and the `realizations`
+/// averaged (>= 1), each reaching its field of TransportCase.
+const ParameterTable<TransportCase>& kicked_case_parameters();
+
+/// Every row of a kicked case, the rows its JSON is made of (describe, parse_case): the kick and
+/// the realizations, transport_parameters(), and the mode kick's own (mode_kick_parameters(),
+/// reaching TransportCase::mode).
+const ParameterTable<TransportCase>& case_parameters();
+
 /// The fields of a mode kick a front end sets (not `amplitude`: a run's `alpha` gives it).
 const ParameterTable<ModeKick>& mode_kick_parameters();
 

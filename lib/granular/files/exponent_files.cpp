@@ -52,7 +52,7 @@ nlohmann::json describe_cells(const std::vector<ExponentCell>& cells) {
       one["exponents"] = {{"gamma_site", to_json(e->gamma_site)},
                           {"gamma_centroid", to_json(e->gamma_centroid)},
                           {"eta", to_json(e->eta)}};
-    if (!c.summary.mle.mean.empty()) one["mle"] = to_json(mle_at_end(c.summary));
+    if (!c.summary.mle.mean.empty()) one["mle_at_T"] = to_json(mle_at_end(c.summary));
     one["chain"] = chain_name(c);
     all.push_back(one);
   }

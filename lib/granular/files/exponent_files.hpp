@@ -33,7 +33,8 @@ std::vector<std::unique_ptr<AtomicFile>> write_exponent_files(const ExponentPath
 
 /// The "cases" entry of the study's JSON, one object per cell: describe(definition), `chain`
 /// (its name), `failed_excluded` (the realizations left out), and where the cell has them
-/// `exponents` (gamma_site, gamma_centroid, eta: to_json of each report) and `mle` (X1 at T).
+/// `exponents` (gamma_site, gamma_centroid, eta: to_json of each report) and `mle_at_T` (X1 at T; the case's own `mle`
+/// is whether the tangent map ran).
 nlohmann::json describe_cells(const std::vector<ExponentCell>& cells);
 
 /// The "parameters" entry of the JSON beside the cases: the chain kinds and the kicks of `config`

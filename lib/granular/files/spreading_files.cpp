@@ -156,6 +156,7 @@ nlohmann::json describe_covariant(const SpreadingResult& r, const SpreadingRunCo
   const CovariantVectorsConfig clv = covariant_config(config);
   const CovariantVectors& c = r.covariant;
   nlohmann::json j = {{"vectors", clv.vectors},
+                      {"seed", clv.seed},
                       {"forward_transient_steps", clv.forward_transient},
                       {"backward_transient_steps", clv.backward_transient},
                       {"transient_s", static_cast<double>(clv.forward_transient) * config.integration.time_step},
@@ -184,10 +185,11 @@ nlohmann::json describe_run(const SpreadingResult& r, const nlohmann::json& real
   return run;
 }
 
-nlohmann::json describe_lyapunov(const SpreadingResult& r, const std::string& file) {
+nlohmann::json describe_lyapunov(const SpreadingResult& r, const SpreadingRunConfig& config, const std::string& file) {
   const LyapunovSeries& l = r.lyapunov;
   nlohmann::json j = {{"vectors", l.exponents.empty() ? 0 : l.exponents.front().size()},
-                      {"starting_vectors", "random orthonormal (seed 1), norm (du, t_unit dv)"},
+                      {"starting_vectors", "random orthonormal, norm (du, t_unit dv)"},
+                      {"seed", lyapunov_spectrum_config(config).seed},
                       {"exponents_T_per_s",
                        l.exponents.empty() ? nlohmann::json(nullptr) : nlohmann::json(l.exponents.back())}};
   if (!l.sali.empty()) j["gali_T"] = l.gali.back(), j["sali_T"] = l.sali.back();
@@ -261,7 +263,7 @@ nlohmann::json describe_parameters(const TransportCase& c, const nlohmann::json&
                                    bool ensemble) {
   nlohmann::json parameters = describe(c);
   parameters["chain"] = chain;
-  if (c.kick == Kick::velocity && (!ensemble || c.beta)) parameters["beta_m_s"] = kicked.beta;  // the β used
+  if (c.kick == Kick::velocity && (!ensemble || c.beta)) parameters["beta_used"] = kicked.beta;  // the β used
   if (c.kick == Kick::mode) parameters["mode_used"] = to_json(kicked.mode);
   return parameters;
 }
@@ -291,7 +293,8 @@ nlohmann::json describe_spreading(const SpreadingDescription& d) {
     j["spectrum"] = describe_spectral_density(*config.spectrum);
     if (const std::string f = file(&SpreadingPaths::spectrum); !f.empty()) j["spectrum"]["file"] = f;
   }
-  if (config.lyapunov_vectors > 0) j["lyapunov_spectrum"] = describe_lyapunov(*d.run, file(&SpreadingPaths::lyapunov));
+  if (config.lyapunov_vectors > 0)
+    j["lyapunov_spectrum"] = describe_lyapunov(*d.run, config, file(&SpreadingPaths::lyapunov));
   if (config.covariant_vectors > 0)
     j["covariant_vectors"] = describe_covariant(*d.run, config, file(&SpreadingPaths::covariant));
   return j;

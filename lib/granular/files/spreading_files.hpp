@@ -56,13 +56,13 @@ std::vector<double> covariant_rows(const CovariantVectors& clv);
 /// attributes. Returned uncommitted, as write_energy_map's.
 std::unique_ptr<Hdf5File> write_covariant_vectors(const std::string& path, const SpreadingResult& run,
                                                   const SpreadingRunConfig& config);
-/// The "covariant_vectors" entry of a run's JSON: k, the transients, the samples, the growth rates and
-/// exponents [1/s], stored_bytes, and its `file` (none when empty).
+/// The "covariant_vectors" entry of a run's JSON: k, the `seed` of the starting vectors, the transients, the samples,
+/// the growth rates and exponents [1/s], stored_bytes, and its `file` (none when empty).
 nlohmann::json describe_covariant(const SpreadingResult& run, const SpreadingRunConfig& config, const std::string& file);
 
-/// The "lyapunov_spectrum" entry of a run's JSON: the vectors k, λ_j, GALI_j and SALI at T, and its
-/// `file` (none when empty).
-nlohmann::json describe_lyapunov(const SpreadingResult& run, const std::string& file);
+/// The "lyapunov_spectrum" entry of a run's JSON: the vectors k, the `seed` of their random
+/// starting vectors, λ_j, GALI_j and SALI at T, and its `file` (none when empty).
+nlohmann::json describe_lyapunov(const SpreadingResult& run, const SpreadingRunConfig& config, const std::string& file);
 
 /// The "run" entry of a run's JSON: the realization, initial energy, worst energy error, steps,
 /// bond updates, integration time, final active window (beads from 1), wall energy; the energy
@@ -106,7 +106,7 @@ std::vector<std::string> spreading_notes(const TransportCase& c, const Spreading
                                          const TransportSummary* ensemble);
 
 /// The "parameters" entry of the JSON: describe(c), the chain as built (`chain`), and what the kick
-/// used: beta_m_s [m/s] for a velocity kick (unless an ensemble matched it chain by chain), mode_used.
+/// used: beta_used [m/s] for a velocity kick (unless an ensemble matched it chain by chain), mode_used.
 nlohmann::json describe_parameters(const TransportCase& c, const nlohmann::json& chain, const KickedChain& kicked,
                                    bool ensemble);
 

@@ -84,8 +84,8 @@ std::size_t total_realizations(const std::vector<TransportCase>& cases) {
   return total;
 }
 
-std::vector<ExponentCell> run_exponent_table(const ExponentTableConfig& config, const RunOptions& options) {
-  const auto cases = exponent_cases(config);
+std::vector<ExponentCell> run_exponent_table(const ExponentTableConfig& config, const std::vector<TransportCase>& cases,
+                                             const RunOptions& options) {
   for (const auto& c : cases) validate(c);  // every case checked before the first one runs
   const std::vector<std::string> names = chain_names(config);
   std::vector<ExponentCell> cells;

@@ -63,11 +63,13 @@ std::vector<TransportCase> exponent_cases(const ExponentTableConfig& config);
 /// Every case's realizations: the total of the progress meter run_exponent_table advances.
 std::size_t total_realizations(const std::vector<TransportCase>& cases);
 
-/// Runs every case; under mpirun only rank 0 gets filled summaries. Memory: one case's
+/// Runs every case of `cases`, exponent_cases(config) as settled (validate_and_settle: each
+/// with its time step, scheme and kicked bead); under mpirun only rank 0 gets filled summaries. Memory: one case's
 /// records at a time (transport_study.hpp), then its summary. `options.checkpoint` is the prefix
 /// of the cases' logs (case i logs to <prefix>.<i>; empty: no checkpoints), `options.progress`
 /// (optional) counts every case's realizations (total_realizations).
-std::vector<ExponentCell> run_exponent_table(const ExponentTableConfig& config, const RunOptions& options);
+std::vector<ExponentCell> run_exponent_table(const ExponentTableConfig& config, const std::vector<TransportCase>& cases,
+                                             const RunOptions& options);
 
 /// One table cell: "1.763 ± 0.012 (± 0.020 real.)", the shown value ± its sub-window spread and
 /// (when an ensemble gave one) its realization error; a trailing * marks a starred cell (not a

@@ -11,6 +11,17 @@ def is_path(x):
     return isinstance(x, (str, bytes, os.PathLike))
 
 
+def fit_window(case):
+    """(start, stop) [s] of a kicked case's fit window (its JSON: fit_begin, fit_end), None when the case
+    was not fitted (the window ends past its duration T). Files of granular 0.2.0 spelled it fit_s."""
+    if "fit_s" in case:
+        return tuple(case["fit_s"]) if case["fit_s"] else None
+    if "fit_end" not in case:
+        return None
+    fitted = case.get("duration") is None or case["fit_end"] <= case["duration"] * (1 + 1e-12)
+    return (case["fit_begin"], case["fit_end"]) if fitted else None
+
+
 def read_csv(path, allow_empty=False):
     """Columns of a CSV file: numeric ones as float arrays, others as lists of str. A file of no
     rows is a ValueError, or {} with allow_empty."""

@@ -159,7 +159,7 @@ def spreading(sources, labels=None):
         for i, (_, _, _, meta) in enumerate(data):
             chain = meta.get("parameters", {}).get("chain", {})
             labels.append(chain.get("disorder", f"run {i + 1}"))
-    fit = next((m.get("parameters", {}).get("fit_s") for _, _, _, m in data if m.get("parameters")), None)
+    fit = next((_io.fit_window(m["parameters"]) for _, _, _, m in data if m.get("parameters")), None)
     with style():
         fig = figure(11, 4.6)
         ax, bx = fig.subplots(1, 2)

@@ -48,14 +48,11 @@ def _exponent_data(source):
 
 
 def _fit_window(meta):
-    """(start, stop) [s] of the fit window, from a run's metadata (each case carries its own, as
-    fit_s; None where no case was fitted)."""
-    parameters = meta.get("parameters", {})
-    if parameters.get("fit_s"):
-        return tuple(parameters["fit_s"])
-    for case in meta.get("cases", []):
-        if case.get("fit_s"):
-            return tuple(case["fit_s"])
+    """(start, stop) [s] of the fit window, from a run's metadata (a run's parameters or each case of a
+    table carry their own; None where no case was fitted)."""
+    for case in [meta.get("parameters", {})] + meta.get("cases", []):
+        if _io.fit_window(case):
+            return _io.fit_window(case)
     return None
 
 
@@ -264,7 +261,7 @@ def _study_label(meta, rows):
     """('10 ms', '10 ms (fit 4–10 ms, 500 real.)'): T and the fit window of an exponents run, from its
     metadata, and the realizations of its rows; (None, None) when the metadata does not say."""
     case = (meta.get("cases") or [{}])[0]
-    T, fit = case.get("T_s"), meta.get("parameters", {}).get("fit_s") or case.get("fit_s")
+    T, fit = case.get("duration", case.get("T_s")), _fit_window(meta)
     if T is None or not fit:
         return None, None
     realizations = max(int(float(r["realizations"])) for r in rows)
