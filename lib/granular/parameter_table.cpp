@@ -1,6 +1,9 @@
 #include "granular/parameter_table.hpp"
 
+#include <limits>
+
 #include "granular/error.hpp"
+#include "granular/number_format.hpp"
 
 namespace granular {
 
@@ -11,6 +14,15 @@ void detail::refuse_unmet(const std::string& name, const Needs& needs, const std
              : state == "off" ? ", which is off"
                               : ", not `" + needs.choice + "` " + state;
   throw InvalidInput(name, problem);
+}
+
+void detail::refuse_out_of_range(const std::string& name, double value, const Range& range) {
+  std::string bounds;
+  if (range.low > -std::numeric_limits<double>::infinity())
+    bounds += (range.low_open ? " and > " : " and >= ") + format_number(range.low);
+  if (range.high < std::numeric_limits<double>::infinity())
+    bounds += (range.high_open ? " and < " : " and <= ") + format_number(range.high);
+  throw InvalidInput(name, " " + format_number(value) + ": must be finite" + bounds);
 }
 
 void detail::refuse_overridden(const std::string& name, const std::string& choice) {

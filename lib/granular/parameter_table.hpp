@@ -5,8 +5,10 @@
 // reaches all of them, in each front end's words (parameter_names.hpp).
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <functional>
 #include <iterator>
+#include <limits>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -49,6 +51,14 @@ auto path(Members... members) {
   return [members...](Root & c) -> auto& { return (c.*....*members); };
 }
 
+/// The values a number may take: finite, and within [low, high] (an end `open`: excluded).
+struct Range {
+  double low = -std::numeric_limits<double>::infinity();
+  double high = std::numeric_limits<double>::infinity();
+  bool low_open = false;
+  bool high_open = false;
+};
+
 template <class Choices>
 struct Parameter {
   /// The value the parameter sets; none (monostate) when front ends read it in forms of their
@@ -85,6 +95,9 @@ struct Parameter {
   /// enum, `integrator`); other text forms are the command line's only.
   bool python_text = false;
 
+  /// The values the number may take (an optional: when set), which check_ranges enforces; none: any.
+  std::optional<Range> range{};
+
   /// Whether the JSON holds this row (describe_rows): not a command line's shorthand for other
   /// rows (`fit` start:stop for `fit_begin` and `fit_end`), which they describe.
   bool described = true;
@@ -96,6 +109,18 @@ struct Parameter {
   /// This row, also taken under its former front-end `word` (deprecated).
   Parameter formerly(std::string word) && {
     former_words.push_back(std::move(word));
+    return std::move(*this);
+  }
+
+  /// This row, its number finite and > 0.
+  Parameter positive() && {
+    range = Range{.low = 0, .low_open = true};
+    return std::move(*this);
+  }
+
+  /// This row, its number finite and >= `low`.
+  Parameter at_least(double low) && {
+    range = Range{.low = low};
     return std::move(*this);
   }
 
@@ -229,6 +254,40 @@ void refuse_unmet_needs(const Choices& o, const ParameterTable<Choices>& table, 
   }
 }
 
+namespace detail {
+/// The refusal of `value` outside `range`, naming `name`: "`fit_step` -1: must be finite and > 0".
+[[noreturn]] void refuse_out_of_range(const std::string& name, double value, const Range& range);
+}  // namespace detail
+
+/// Refuses a number of `o` outside its row's range (Parameter::range; an unset optional passes):
+/// throws InvalidInput naming the row. A row's checks live in its row, so a new row is validated
+/// without another line.
+template <class Choices>
+void check_ranges(const Choices& o, const ParameterTable<Choices>& table) {
+  for (const Parameter<Choices>& p : table) {
+    if (!p.range) continue;
+    std::visit(
+        [&]<class Field>(const Field& field) {
+          if constexpr (!std::is_same_v<Field, std::monostate>) {
+            const auto& value = field(const_cast<Choices&>(o));
+            using T = std::remove_cvref_t<decltype(value)>;
+            const auto check = [&](double x) {
+              const Range& r = *p.range;
+              const bool below = r.low_open ? !(x > r.low) : !(x >= r.low);
+              const bool above = r.high_open ? !(x < r.high) : !(x <= r.high);
+              if (below || above || !std::isfinite(x)) detail::refuse_out_of_range(p.name, x, r);
+            };
+            if constexpr (std::is_arithmetic_v<T> && !std::is_same_v<T, bool>) check(static_cast<double>(value));
+            else if constexpr (requires { value.has_value(); }) {
+              if constexpr (std::is_arithmetic_v<typename T::value_type>)
+                if (value) check(static_cast<double>(*value));
+            }
+          }
+        },
+        p.field);
+  }
+}
+
 /// The rows of `table` (over a part `Inner` of a case) as rows of the case `Outer` that holds it in
 /// `member`, for the rows named in `names` (all when empty), in the table's order: a job whose case
 /// nests another's (a crystal IPR map's crystal) takes that case's rows, help and checks as they
@@ -269,6 +328,7 @@ ParameterTable<Outer> nested_rows(const ParameterTable<Inner>& table, Inner Oute
       if (kept(entry)) row.overridden_by.push_back(entry);
     row.python_text = p.python_text;
     row.described = p.described;
+    row.range = p.range;
     row.former_words = p.former_words;
     out.push_back(std::move(row));
   }

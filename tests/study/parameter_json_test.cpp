@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
 #include <optional>
 #include <string>
 #include <type_traits>
@@ -87,6 +88,54 @@ TEST(ParameterJson, EveryRowOfEveryTableRoundTrips) {
   expect_every_row_round_trips(breather_parameters(), "breathers");
   expect_every_row_round_trips(crystal_parameters(), "crystal");
   expect_every_row_round_trips(crystal_ipr_map_parameters(), "crystal IPR map");
+}
+
+/// Every row with a range (Parameter::range): its default passes check_ranges, and a value past its
+/// low end (the end itself when open) or a NaN is refused naming the row.
+template <class Case>
+std::size_t expect_ranges_enforced(const ParameterTable<Case>& table, const char* name) {
+  std::size_t checked = 0;
+  EXPECT_NO_THROW(check_ranges(Case{}, table)) << name;
+  for (const Parameter<Case>& p : table) {
+    if (!p.range) continue;
+    const double below = p.range->low_open ? p.range->low : p.range->low - 1;
+    for (const double bad : {below, std::numeric_limits<double>::quiet_NaN()}) {
+      Case c{};
+      const bool set = std::visit(
+          [&]<class Field>(const Field& field) {
+            if constexpr (std::is_same_v<Field, std::monostate>) {
+              return false;
+            } else {
+              auto& value = field(c);
+              using T = std::remove_cvref_t<decltype(value)>;
+              if constexpr (std::is_floating_point_v<T>) value = bad;
+              else if constexpr (std::is_arithmetic_v<T> && !std::is_same_v<T, bool>) {
+                if (bad != bad || bad < static_cast<double>(std::numeric_limits<T>::lowest())) return false;
+                value = static_cast<T>(bad);
+              } else if constexpr (requires { value.has_value(); }) {
+                if constexpr (std::is_floating_point_v<typename T::value_type>) value = bad;
+                else return false;
+              } else return false;
+              return true;
+            }
+          },
+          p.field);
+      if (!set) continue;
+      ++checked;
+      try {
+        check_ranges(c, table);
+        ADD_FAILURE() << name << ": " << p.name << " = " << bad << " accepted";
+      } catch (const InvalidInput& e) {
+        EXPECT_EQ(e.parameter(), p.name) << e.what();
+      }
+    }
+  }
+  return checked;
+}
+
+TEST(ParameterJson, EveryRowsRangeIsEnforcedNamingIt) {
+  EXPECT_GE(expect_ranges_enforced(transport_parameters(), "transport"), 8U);  // 4 rows, each below and NaN
+  expect_ranges_enforced(case_parameters(), "kicked case");
 }
 
 TEST(ParameterJson, AValueOfTheWrongKindIsRefusedNamingItsKey) {

@@ -46,14 +46,10 @@ void refuse_spectrum_in_ensemble(const SpreadingRunConfig& d) {
 std::size_t kicked_bead(const TransportCase& c) { return c.site == 0 ? (c.chain.size() - 1) / 2 : c.site - 1; }
 
 namespace {
-double finite_non_negative(double value, const char* name) {
-  if (!(value >= 0) || !std::isfinite(value))
-    throw InvalidInput(name, " " + format_number(value) + ": must be finite and >= 0");
-  return value;
-}
 /// The checks of the choices a front end sets straight in the case (transport_parameters()).
 void validate_choices(const TransportCase& c) {
   refuse_unmet_needs(c, transport_parameters());  // `energy_guard` with no guard is refused, not ignored
+  check_ranges(c, transport_parameters());        // the rows' own ranges (`kappa` > 0, …)
   validate_outputs(c);
   const std::size_t n = c.chain.size();
   if (c.site > n)
@@ -61,9 +57,6 @@ void validate_choices(const TransportCase& c) {
                                    " beads (1..N, 0 = centre)");
   const SpreadingRunConfig& d = c.dynamics;
   if (d.spread.samples < 2) throw InvalidInput("samples", " " + std::to_string(d.spread.samples) + ": at least 2");
-  finite_non_negative(d.integration.window.threshold, "window_threshold");
-  finite_non_negative(d.integration.integrator.tolerance.max_step, "reference_max_step");
-  finite_non_negative(d.spread.max_energy_error, "max_energy_error");
   if (!(c.fit_begin > 0) || !(c.fit_end > c.fit_begin) || !std::isfinite(c.fit_end))
     throw InvalidInput("fit", " " + format_number(c.fit_begin) + ":" + format_number(c.fit_end) +
                                   ": expected start:stop with 0 < start < stop [s]");
@@ -92,8 +85,6 @@ void validate_before_time_step(const TransportCase& c) {
   if (c.fit && c.fit_end > c.dynamics.integration.duration * (1 + 1e-12))
     throw InvalidInput("fit", " " + format_number(c.fit_begin) + ":" + format_number(c.fit_end) +
                                   ": reaches beyond the duration T = " + format_number(c.dynamics.integration.duration));
-  if (!(c.criterion.kappa > 0) || !std::isfinite(c.criterion.kappa))
-    throw InvalidInput("kappa", " " + format_number(c.criterion.kappa) + ": must be finite and > 0");
   if (!(c.criterion.t_start >= 0) || !std::isfinite(c.criterion.t_start))
     throw InvalidInput("t_star", " " + format_number(c.criterion.t_start) + " s: must be finite and >= 0");
   if (c.kick == Kick::mode) validate(mode_of(c), n);

@@ -100,8 +100,9 @@ const ParameterTable<TransportCase>& transport_parameters() {
       {"fit_step", &C::fit_step, "spacing of the samples inside the fit window [s], a multiple of `time_step`"},
       {"t_star", path<C>(&C::criterion, &PowerLawCriterion::t_start),
        "t*: from here on, |L_d - gamma| >= `kappa` means 'not a power law' [s]"},
-      {"kappa", path<C>(&C::criterion, &PowerLawCriterion::kappa),
-       "largest |L_d - gamma| of a power law after `t_star`"},
+      P{"kappa", path<C>(&C::criterion, &PowerLawCriterion::kappa),
+        "largest |L_d - gamma| of a power law after `t_star`"}
+          .positive(),
       {"bootstrap", path<C>(&C::bootstrap, &BootstrapConfig::resamples),
        "resamples of the realization bootstrap of gamma and eta"},
       {"bootstrap_seed", path<C>(&C::bootstrap, &BootstrapConfig::seed),
@@ -113,14 +114,17 @@ const ParameterTable<TransportCase>& transport_parameters() {
        "integrate only where the wave has arrived, on or off (results equal the whole chain's)"},
       P{"window_threshold", path<C>(&C::dynamics, integration, &IntegrationConfig::window, &ActiveWindow::threshold),
         "relative kinetic energy that grows the window"}
-          .needing("active_window"),
+          .needing("active_window")
+          .at_least(0),
       P{"reference_max_step",
         path<C>(&C::dynamics, integration, &IntegrationConfig::integrator, &Integrator::tolerance,
                 &ReferenceTolerance::max_step),
         "largest step of the reference integrator [s], 0 = none"}
-          .needing("integrator", {"reference"}),
-      {"max_energy_error", path<C>(&C::dynamics, &D::spread, &EnergySpreadObserver::Settings::max_energy_error),
-       "guard: relative energy error that stops (or is reported), 0 = off"},
+          .needing("integrator", {"reference"})
+          .at_least(0),
+      P{"max_energy_error", path<C>(&C::dynamics, &D::spread, &EnergySpreadObserver::Settings::max_energy_error),
+        "guard: relative energy error that stops (or is reported), 0 = off"}
+          .at_least(0),
       P{"energy_guard", {}, {read_guard, write_guard}, "stop | warn: what passing `max_energy_error` does"}
           .as_word()
           .needing("max_energy_error"),
