@@ -157,6 +157,7 @@ nlohmann::json describe_covariant(const SpreadingResult& r, const SpreadingRunCo
   const CovariantVectors& c = r.covariant;
   nlohmann::json j = {{"vectors", clv.vectors},
                       {"seed", clv.seed},
+                      {"time_unit_s", clv.time_unit},
                       {"forward_transient_steps", clv.forward_transient},
                       {"backward_transient_steps", clv.backward_transient},
                       {"transient_s", static_cast<double>(clv.forward_transient) * config.integration.time_step},

@@ -56,8 +56,8 @@ std::vector<double> covariant_rows(const CovariantVectors& clv);
 /// attributes. Returned uncommitted, as write_energy_map's.
 std::unique_ptr<Hdf5File> write_covariant_vectors(const std::string& path, const SpreadingResult& run,
                                                   const SpreadingRunConfig& config);
-/// The "covariant_vectors" entry of a run's JSON: k, the `seed` of the starting vectors, the transients, the samples,
-/// the growth rates and exponents [1/s], stored_bytes, and its `file` (none when empty).
+/// The "covariant_vectors" entry of a run's JSON: k, the `seed` of the starting vectors, the norm's t_unit, the
+/// transients, the samples, the growth rates and exponents [1/s], stored_bytes, and its `file` (none when empty).
 nlohmann::json describe_covariant(const SpreadingResult& run, const SpreadingRunConfig& config, const std::string& file);
 
 /// The "lyapunov_spectrum" entry of a run's JSON: the vectors k, the `seed` of their random

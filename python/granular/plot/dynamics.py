@@ -297,7 +297,8 @@ def covariant(source, sample=-1, floor=-8.0):
     d, meta = _covariant_data(source)
     w = np.asarray(d["vectors"], float)[sample]  # k x 2N
     k, n = w.shape[0], w.shape[1] // 2
-    t_unit = meta.get("parameters", {}).get("lyapunov", {}).get("norm_time_unit_s", 1e-6)
+    t_unit = meta.get("covariant_vectors", {}).get("time_unit_s") or \
+        meta.get("parameters", {}).get("lyapunov", {}).get("norm_time_unit_s", 1e-6)  # (0.2.0's key)
     share = w[:, :n] ** 2 + (t_unit * w[:, n:]) ** 2
     share /= share.sum(axis=1, keepdims=True)
     t = float(np.asarray(d["t"])[sample])
