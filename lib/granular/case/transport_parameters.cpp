@@ -139,6 +139,11 @@ const ParameterTable<TransportCase>& transport_parameters() {
       P{"renormalize", path<C>(&C::dynamics, integration, &IntegrationConfig::lyapunov, &Lyapunov::renormalize_every),
         "steps between renormalizations of the deviation vector"}
           .needing("mle"),
+      P{"norm_time_unit", path<C>(&C::dynamics, integration, &IntegrationConfig::lyapunov, &Lyapunov::time_unit),
+        "t_unit [s] of the deviation vectors' norm |(du, t_unit dv)| (with `mle`): X1(t) at finite t depends on it, "
+        "its limit does not"}
+          .needing("mle")
+          .positive(),
       P{"deviation_samples", path<C>(&C::dynamics, &D::deviation_samples),
         "uniform times (0..T) of the deviation vector's distribution along the chain (with `mle`)"}
           .needing("mle"),
