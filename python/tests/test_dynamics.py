@@ -293,6 +293,23 @@ def test_mle_and_deviation_vector_equal_the_spreading_tool(tools):
     assert without_process_keys(run.metadata) == without_process_keys(meta)
 
 
+def test_norm_time_unit_equals_the_spreading_tool(tools):
+    """norm_time_unit= is --norm-time-unit: the tangent map's norm |(du, t_unit dv)|, so X1(t) changes and the orbit
+    does not; it is in the metadata, and without mle or at 0 it is refused naming the keyword."""
+    csv, meta = tools.run("spreading", "--disorder", "A", "--N", "101", "--mle", "--norm-time-unit", "1e-5",
+                          *SHORT_FLAGS, output="unit")
+    run = gr.spreading(gr.anderson(N=101), mle=True, norm_time_unit=1e-5, **SHORT)
+    plain = gr.spreading(gr.anderson(N=101), mle=True, **SHORT)
+    assert_identical(run.mle, csv["mle"])
+    assert_identical(run.m2, plain.m2) and not np.array_equal(run.mle, plain.mle)
+    assert run.metadata["parameters"]["norm_time_unit"] == 1e-5
+    assert without_process_keys(run.metadata) == without_process_keys(meta)
+    with pytest.raises(ValueError, match="norm_time_unit"):
+        gr.spreading(gr.anderson(N=101), mle=True, norm_time_unit=0, **SHORT)
+    with pytest.raises(ValueError, match="norm_time_unit"):
+        gr.spreading(gr.anderson(N=101), norm_time_unit=1e-5, **SHORT)
+
+
 def test_lyapunov_spectrum_equals_the_spreading_tool(tools):
     """lyapunov_vectors=k (with mle=True) is --lyapunov-vectors k: PREFIX-lyapunov.csv holds t, lambda_1..lambda_k,
     gali_2..gali_k and sali at the run's sample times; the run's own curves are those of a run without it."""

@@ -156,6 +156,7 @@ TEST(DependentOptions, RunOptionsAreRefusedWithoutTheChoiceTheyNeed) {
                {"reference_max_step", {"2e-8", "", "--integrator reference"}},
                {"energy_guard", {"warn", "--max-energy-error 0", ""}},
                {"renormalize", {"5", "", "--mle"}},
+               {"norm_time_unit", {"2e-6", "", "--mle"}},
                {"deviation_samples", {"3", "--deviation dev.csv", "--mle --deviation dev.csv"}},
                {"lyapunov_vectors", {"2", "", "--mle"}},
                {"covariant_vectors", {"2", "", "--mle"}},

@@ -406,3 +406,44 @@ TEST(SpreadingToolCase, ACaseFileRerunsTheRunItDescribes) {
   }
   fs::remove_all(dir);
 }
+
+// --norm-time-unit (a row of transport_parameters() and nothing else): it reaches the tangent map
+// (X1 at finite t depends on the norm), the JSON and the replay, and its range and need are checked.
+TEST(SpreadingToolCase, TheNormTimeUnitReachesTheTangentMapTheJsonAndTheReplay) {
+  using granular::testing::read_file;
+  const fs::path dir = fresh_dir("norm-unit");
+  const std::string run = "--N 61 --F0 1 --T 2e-4 --samples 10 --mle --quiet ";
+  ASSERT_EQ(run_spreading(run + "--output plain", dir).code, 0);
+  ASSERT_EQ(run_spreading(run + "--norm-time-unit 1e-5 --output unit", dir).code, 0);
+  const auto column = [&](const std::string& name, const std::string& key) {  // the CSV's column, as written
+    std::istringstream in(read_file((dir / (name + ".csv")).string()));
+    std::string line, cell;
+    std::getline(in, line);
+    std::istringstream header(line);
+    std::size_t index = 0;
+    while (std::getline(header, cell, ',') && cell != key) ++index;
+    std::vector<std::string> out;
+    while (std::getline(in, line)) {
+      std::istringstream row(line);
+      for (std::size_t i = 0; i <= index; ++i) std::getline(row, cell, ',');
+      out.push_back(cell);
+    }
+    return out;
+  };
+  EXPECT_EQ(column("unit", "mle").size(), column("plain", "mle").size());
+  EXPECT_NE(column("unit", "mle"), column("plain", "mle"));
+  EXPECT_EQ(column("unit", "m2"), column("plain", "m2")) << "the orbit does not depend on the tangent map's norm";
+  const nlohmann::json meta = nlohmann::json::parse(read_file((dir / "unit.json").string()));
+  EXPECT_EQ(meta["parameters"]["norm_time_unit"], 1e-5);
+  ASSERT_EQ(run_spreading("--case unit.json --quiet --output again", dir).code, 0);
+  EXPECT_EQ(read_file((dir / "again.csv").string()), read_file((dir / "unit.csv").string()));
+  for (const auto& [args, message] :
+       {std::pair{"--mle --norm-time-unit 0", "--norm-time-unit 0: must be finite and > 0"},
+        {"--norm-time-unit 1e-5", "--norm-time-unit: takes effect only with --mle"}}) {
+    const ToolRun bad = run_spreading("--N 61 --T 2e-4 --quiet --output bad " + std::string(args), dir);
+    EXPECT_EQ(bad.code, 2) << args;
+    EXPECT_NE(bad.err.find(message), std::string::npos) << bad.err;
+    EXPECT_FALSE(fs::exists(dir / "bad.csv")) << args;
+  }
+  fs::remove_all(dir);
+}
