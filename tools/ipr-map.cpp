@@ -24,8 +24,7 @@ int main(int argc, char** argv) {
       "Writes PREFIX.csv (columns disorder,q,xi,mode,freq_khz,ipr) and PREFIX.json (every parameter).",
       "ipr-map"};
   tool::describe_common(app);
-  std::string disorder = "A", output = "ipr-map", solver = "fast";
-  std::string method = "lapack";  // with --near/--count or --window
+  std::string disorder = "A", output = "ipr-map";
   IprMapConfig config;
   tool::ChainOptions beads;  // --walls, --types/--type-masses/--polydisperse (with --disorder as their rule)
   RunOptions run;            // of how a long run goes, --threads alone
@@ -41,15 +40,10 @@ int main(int argc, char** argv) {
   tool::add_parameters(app, config, ipr_map_parameters(), {.only = {"realizations"}});
   tool::add_integer(app, "--seed", config.chain.seed, "random seed; realization r of seed s is always the same chain");
   tool::add_parameters(app, run, long_run_parameters(), {.only = {"threads"}});
-  tool::add_option(
-      app, "--solver", solver,
-      "mode solver: fast (eigenvalues + one twisted factorization per mode, no eigenvector matrix; IPRs as "
-      "LAPACK's to 1e-10 outside tight eigenvalue clusters) | lapack (= lapack-stevd) | lapack-stevr | "
-      "lapack-stemr | lapack-stevd | lapack-steqr");
+  tool::add_parameters(app, config, ipr_map_parameters(), {.only = {"solver"}});
   tool::add_output_option(app, output);
   tool::add_selection_options(app, selection, "partial spectra: ");
-  tool::add_option(app, "--method", method,
-                   "partial spectra: lapack | bisect | arpack | slepc (arpack/slepc: one thread)");
+  tool::add_parameters(app, config, ipr_map_parameters(), {.only = {"method"}});
   tool::add_parameters(app, config, ipr_map_parameters(), {.only = {"bin_khz"}});
   tool::add_quasiperiodic_options(app, beads);  // one cell: realizations are phases
   tool::add_bead_distribution_options(app, beads);
@@ -62,7 +56,7 @@ int main(int argc, char** argv) {
       throw InvalidInput("N", " " + std::to_string(config.chain.N) + ": more than 1e8 beads");
     validate(run);
     config.selection = choose_modes(selection);
-    set_solver(config, solver, app.count("--method") > 0 ? std::optional<std::string>(method) : std::nullopt);
+    set_solver(config);
     beads.disorder = disorder;
     set_chain_kind(config, beads);  // --quasi or a bead distribution: one cell
     validate(config);
@@ -83,7 +77,7 @@ int main(int argc, char** argv) {
 
     AtomicFile csv(paths.csv);
     write_ipr_map_csv(csv.stream(), config, cells);
-    meta.merge(describe_ipr_map(config, cells, {solver, method, resolve_threads(run.threads)}));
+    meta.merge(describe_ipr_map(config, cells, resolve_threads(run.threads)));
     meta["output"] = paths.csv;
     meta.write(paths.json, {&csv});
   });

@@ -89,7 +89,7 @@ _C = _core.ChainChoices()  # the chain table's C++ defaults (chain_parameters())
 _DB = _core.DynamicalButterflyConfig()  # dynamical_butterfly_parameters()' C++ defaults
 
 def ipr_map(*, xi=_core._ipr_map_defaults["xi"], q=_core._ipr_map_defaults["q"],
-            realizations=_core.IprMapConfig().realizations, solver="fast", near=None, count=None, window=None,
+            realizations=_core.IprMapConfig().realizations, solver=_core.IprMapConfig().solver, near=None, count=None, window=None,
             method=None, bin_khz=_core.IprMapConfig().bin_khz, threads=0, progress=False, **chain_keywords):
     """Mean frequency [kHz] and displacement IPR of every mode of disordered chains over realizations, on a (q, xi)
     grid: the paper's IPR map, as the ipr-map tool computes it (same numbers for the same keywords).
@@ -116,13 +116,14 @@ def ipr_map(*, xi=_core._ipr_map_defaults["xi"], q=_core._ipr_map_defaults["q"],
     c.q_values = number_list(q, "q", 0.1)
     c.realizations = _core._size(realizations, "realizations", 1)
     c.bin_khz = bin_khz
+    c.solver, c.method = solver, "" if method is None else method
     _core._size(threads, "threads", 0, 4096)
     # the chain (its two-type draw; walls, a quasiperiodic chain or k types: one cell) and the solver by the tool's
     # rule, in C++
     beads = _chain(_IPR_MAP_CHAIN, _core._ipr_map_chain(), given)
     if near is not None or count is not None or window is not None:
         c.selection = _selection(near, count, window, got=False)
-    return IprMap(_core._ipr_map(c, beads, solver, method, _run(threads, progress=progress)))
+    return IprMap(_core._ipr_map(c, beads, _run(threads, progress=progress)))
 
 
 class Butterfly:

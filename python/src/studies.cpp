@@ -45,14 +45,13 @@ ChainChoices chain_kind(ChainChoices beads) {
   return beads;
 }
 
-/// `c` as granular/_studies.py fills it (the grid, the selection); `beads`: the chain keywords (the
-/// two-type draw's numbers, the walls, a quasiperiodic chain or k types) and `solver`/`method`, by the
+/// `c` as granular/_studies.py fills it (the grid, the selection, the solver's words); `beads`: the
+/// chain keywords (the two-type draw's numbers, the walls, a quasiperiodic chain or k types), by the
 /// ipr-map tool's rules.
-py::dict ipr_map(IprMapConfig c, const ChainChoices& beads, const std::string& solver,
-                 const std::optional<std::string>& method, const PyRun& options) {
+py::dict ipr_map(IprMapConfig c, const ChainChoices& beads, const PyRun& options) {
   const int thread_request = options.thread_request();
   set_draw(c.chain, beads);
-  set_solver(c, solver, method);
+  set_solver(c);
   set_chain_kind(c, chain_kind(beads));
   validate(c);
   warn(radius_warnings(c.chain, radius_names(beads, front_end_word)));  // implausible radii, as the tool warns
@@ -62,9 +61,7 @@ py::dict ipr_map(IprMapConfig c, const ChainChoices& beads, const std::string& s
   run_long("ipr_map", c.q_values.size() * c.xi_values.size() * c.realizations, options,
            [&](const RunOptions& run) { cells = compute_ipr_map(c, run); });
 
-  const py::object meta =
-      metadata("ipr_map",
-               describe_ipr_map(c, cells, {solver, method.value_or("lapack"), resolve_threads(thread_request)}));
+  const py::object meta = metadata("ipr_map", describe_ipr_map(c, cells, resolve_threads(thread_request)));
   py::list out_cells;
   for (auto& cell : cells)
     out_cells.append(fields("q xi freq_khz ipr mode realization bin_modes bin_ipr", cell.q, cell.xi,
@@ -168,8 +165,9 @@ py::dict dynamical_butterfly(DynamicalButterflyConfig c, double duration, double
 
 void bind_studies(py::module_& m) {
   using I = IprMapConfig;
-  config_class(m, "IprMapConfig", "chain q_values xi_values realizations bin_khz selection spectrum", &I::chain,
-               &I::q_values, &I::xi_values, &I::realizations, &I::bin_khz, &I::selection, &I::spectrum);
+  config_class(m, "IprMapConfig", "chain q_values xi_values realizations bin_khz selection spectrum solver method",
+               &I::chain, &I::q_values, &I::xi_values, &I::realizations, &I::bin_khz, &I::selection, &I::spectrum,
+               &I::solver, &I::method);
   using C = CorrelationConfig;
   config_class(m, "LocalizationScanConfig", "frequency_khz segments", &LocalizationScanConfig::frequency_khz,
                &LocalizationScanConfig::segments);

@@ -21,7 +21,6 @@ STILL_LITERAL = {
     "_model.cyclic_correlation.max_distance",
     "_observers.spread.dt",  # the preferred step (IntegrationConfig's 1 us; the case's own dt is optional)
     "_progress.run_long.interrupted",
-    "_studies.ipr_map.solver",  # the map's solver words (set_solver: no row yet)
     # the butterflies' ratios, boxes and run (their tables hold the rest)
     "_studies.butterfly.kind", "_studies.butterfly.ratios", "_studies.butterfly.largest_box",
     "_studies.butterfly.smallest_box", "_studies.butterfly.box_sizes",

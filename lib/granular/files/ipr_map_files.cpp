@@ -28,8 +28,7 @@ void write_ipr_map_csv(std::ostream& out, const IprMapConfig& config, const std:
   }
 }
 
-nlohmann::json describe_ipr_map(const IprMapConfig& config, const std::vector<IprMapCell>& cells,
-                                const IprMapRequest& request) {
+nlohmann::json describe_ipr_map(const IprMapConfig& config, const std::vector<IprMapCell>& cells, int threads) {
   const ChainRecipe& chain = config.chain;
   nlohmann::json meta;
   meta["parameters"] = {{"disorder", source_name(config.chain)},
@@ -42,8 +41,8 @@ nlohmann::json describe_ipr_map(const IprMapConfig& config, const std::vector<Ip
                         {"walls", walls_description(chain.walls)},
                         {"realizations", config.realizations},
                         {"seed", chain.seed},
-                        {"threads", request.threads},
-                        {"solver", request.solver}};
+                        {"threads", threads},
+                        {"solver", config.solver}};
   if (const auto* beads = chain.as<BeadDistribution>()) meta["parameters"]["beads"] = describe(*beads);
   if (const auto* quasi = chain.as<Quasiperiodic>()) meta["parameters"]["quasiperiodic"] = describe(*quasi);
   const ModeSelection& s = config.selection;
@@ -52,7 +51,7 @@ nlohmann::json describe_ipr_map(const IprMapConfig& config, const std::vector<Ip
     if (config.bin_khz > 0) meta["bin_khz"] = config.bin_khz;
   } else {
     const bool by_window = s.kind == ModeSelection::Kind::window;
-    meta["selection"] = {{"method", request.method},
+    meta["selection"] = {{"method", config.method.empty() ? "lapack" : config.method},
                          {"near_khz", by_window ? nlohmann::json(nullptr) : nlohmann::json(s.near_khz)},
                          {"count", by_window ? nlohmann::json(nullptr) : nlohmann::json(s.count)},
                          {"window_khz", by_window ? nlohmann::json{s.lo_khz, s.hi_khz} : nlohmann::json(nullptr)}};

@@ -17,19 +17,10 @@ namespace granular {
 /// freq_khz,ipr (one row per selected mode of each realization).
 void write_ipr_map_csv(std::ostream& out, const IprMapConfig& config, const std::vector<IprMapCell>& cells);
 
-/// How the map was asked for beyond its config: the solver of every mode as named (fast, lapack,
-/// lapack-<driver>), the method of a selection as named, the worker threads used.
-struct IprMapRequest {
-  std::string solver = "fast";
-  std::string method = "lapack";
-  int threads = 1;
-};
-
 /// The map's JSON entries: parameters (disorder, xi, q, N, F0_N, R1_m, material, walls,
 /// realizations, seed, threads, solver; beads for a distribution), averaging ("mode" or
 /// "frequency-bin", with bin_khz) or selection (method, near_khz, count, window_khz: null when not
-/// given), clustered (relative_gap, modes, fraction).
-nlohmann::json describe_ipr_map(const IprMapConfig& config, const std::vector<IprMapCell>& cells,
-                                const IprMapRequest& request);
+/// given), clustered (relative_gap, modes, fraction). `threads`: the worker threads used.
+nlohmann::json describe_ipr_map(const IprMapConfig& config, const std::vector<IprMapCell>& cells, int threads);
 
 }  // namespace granular

@@ -41,13 +41,20 @@ const ParameterTable<IprMapConfig>& ipr_map_parameters() {
        {read_map_q, write_map_q},
        "probabilities of type 1 (or of dimer 11 / 12) in [0,1]: list or range (step 0.1)"},
       {"realizations", &C::realizations, "chains averaged per (q, xi)"},
+      {"solver", &C::solver,
+       "mode solver: fast (eigenvalues + one twisted factorization per mode, no eigenvector matrix; IPRs as "
+       "LAPACK's to 1e-10 outside tight eigenvalue clusters) | lapack (= lapack-stevd) | lapack-stevr | "
+       "lapack-stemr | lapack-stevd | lapack-steqr"},
+      {"method", &C::method, "partial spectra: lapack (the default) | bisect | arpack (one thread)", false},
       {"bin_khz", &C::bin_khz,
        "average in frequency bins of this width [kHz] instead of by mode number: columns "
        "disorder,q,xi,freq_lo_khz,freq_hi_khz,modes,ipr (empty bins: modes 0, ipr nan); 0: by mode number"}};
   return table;
 }
 
-void set_solver(IprMapConfig& c, const std::string& solver, const std::optional<std::string>& method) {
+void set_solver(IprMapConfig& c) {
+  const std::string& solver = c.solver;
+  const std::optional<std::string> method = c.method.empty() ? std::nullopt : std::optional(c.method);
   const std::string expected = "': expected fast, lapack or lapack-<stevr|stemr|stevd|steqr>";
   if (solver != "fast" && solver != "lapack" && !solver.starts_with("lapack-"))
     throw InvalidInput("solver", " '" + solver + expected);

@@ -34,6 +34,11 @@ struct IprMapConfig {
   /// (arpack runs on one thread: ARPACK keeps state in Fortran SAVE variables; slepc is refused:
   /// the map solves one chain per thread, while SLEPc is collective over MPI ranks).
   SpectrumConfig spectrum{.method = SpectrumMethod::fast};
+  /// The solver as a front end names it, which set_solver turns into `spectrum`: fast | lapack |
+  /// lapack-<stevr|stemr|stevd|steqr> for every mode; and for a selection, `method` lapack |
+  /// bisect | arpack ("": lapack).
+  std::string solver = "fast";
+  std::string method{};
   /// Every mode only: 0 averages over realizations by mode number (the default); W > 0 [kHz]
   /// averages in frequency bins [k W, (k + 1) W), k = 0 … ⌊f_max / W⌋, f_max the highest mode
   /// of the cell's realizations: the ensemble's IPR as a function of f, which is what a reader
@@ -63,9 +68,9 @@ struct IprMapCell {
 };
 
 /// The map's own parameters over IprMapConfig: `xi` and `q` (the grid: "start:stop[:step]",
-/// step 0.01 and 0.1 by default, or comma lists), `realizations` (chains averaged per cell) and
-/// `bin_khz`. The chain, the modes and the solver are set by their own rules (set_chain_kind,
-/// choose_modes, set_solver).
+/// step 0.01 and 0.1 by default, or comma lists), `realizations` (chains averaged per cell),
+/// `solver`, `method` and `bin_khz`. The chain and the modes are set by their own rules
+/// (set_chain_kind, choose_modes), the spectrum's config from the solver's words by set_solver.
 const ParameterTable<IprMapConfig>& ipr_map_parameters();
 
 /// Throws InvalidInput (naming the field) on a bad config, before any work starts.
@@ -79,11 +84,10 @@ void validate(const IprMapConfig& config);
 /// Throws InvalidInput naming the choice.
 void set_chain_kind(IprMapConfig& c, const ChainChoices& beads);
 
-/// The map's solver: `solver` fast | lapack | lapack-<stevr|stemr|stevd|steqr> for every mode; for
-/// a partial selection (c.selection set first: near/count or window) `method` lapack | bisect |
-/// arpack (none: lapack), which only a selection takes. Throws InvalidInput naming `solver` or
-/// `method`.
-void set_solver(IprMapConfig& c, const std::string& solver, const std::optional<std::string>& method);
+/// c.spectrum from the words c.solver (every mode) and, for a partial selection (c.selection set
+/// first: near/count or window), c.method ("": lapack), which only a selection takes. Throws
+/// InvalidInput naming `solver` or `method`.
+void set_solver(IprMapConfig& c);
 
 /// One cell per (q, ξ), q-major. Bit-identical for any thread count. Uses run.threads and
 /// run.progress (advanced once per chain solved); no checkpoints (the default map takes seconds).
