@@ -31,21 +31,16 @@ int main(int argc, char** argv) {
   tool::describe_common(app);
   tool::ChainOptions o;
   o.quasi = "s1";
-  std::string ratios = "0.005:0.995:0.005", output = "butterfly";
+  std::string output = "butterfly";
   ButterflyConfig config;
   RunOptions run;  // of how a long run goes, --threads alone
   bool quiet = false;
   tool::DynamicalButterflyOptions d;
   tool::add_quasiperiodic_options(app, o);
   app.remove_option(app.get_option("--ratio"));  // the ratios come from --ratios
-  tool::add_option(app, "--ratios", ratios, "ratios beta > 0: start:stop[:step] (step 0.005) or a,b,c");
+  tool::add_parameters(app, config, butterfly_parameters(), {.only = {"ratios"}});
   tool::add_parameters(app, o, chain_parameters(), {.only = {"N", "F0", "R1", "seed", "realization"}});
-  tool::add_option(app, "--largest-box", config.largest_box,
-                   "largest box of the dimension fit, as a fraction of the spectrum's extent (0: 5 %, or 8 smallest "
-                   "boxes if more)");
-  tool::add_option(app, "--smallest-box", config.smallest_box_spacings,
-                   "smallest box of the fit, in mean level spacings (extent / N)");
-  tool::add_integer(app, "--box-sizes", config.box_sizes, "box sizes fitted, evenly spaced in log");
+  tool::add_parameters(app, config, butterfly_parameters(), {.except = {"ratios"}});
   tool::add_parameters(app, run, long_run_parameters(), {.only = {"threads"}});
   tool::add_dynamical_butterfly_options(app, d);
   tool::add_output_option(app, output);
@@ -55,7 +50,6 @@ int main(int argc, char** argv) {
     tool::Metadata meta("butterfly", argc, argv);
     validate(run);
     const bool dynamics = tool::from_dynamics(app, d, {"--largest-box", "--smallest-box", "--box-sizes"});
-    config.ratios = parse_number_list(ratios, "--ratios", 0.005);
     config.chain = tool::chain_recipe(o);
     config.realization = chain_realization(o);
     DynamicalButterflyConfig& from_run = d.config;

@@ -16,6 +16,7 @@
 #include "granular/files/spectrum_file.hpp"
 #include "granular/io/atomic_file.hpp"
 #include "granular/io/hdf5_file.hpp"
+#include "granular/linear/spectrum_parameters.hpp"
 #include "granular/parallel/mpi_context.hpp"
 #include "granular/study/solve_estimate.hpp"
 
@@ -32,17 +33,10 @@ int main(int argc, char** argv) {
   tool::add_chain_options(app, chain_options);
   ModeSelectionChoices selection_choices;
   tool::add_selection_options(app, selection_choices, "");
-  std::string method = "lapack", output = "spectrum", vectors_file, dump_matrix;
+  std::string output = "spectrum", vectors_file, dump_matrix;
   SpectrumConfig config;
   bool quiet = false, clusters = false;
-  tool::add_option(app, "--method", method,
-                   "every mode: lapack (dstevd) | fast (no eigenvectors); --near/--window: lapack (dstemr by index) |\n"
-                   "bisect (Sturm bisection + inverse iteration, the fastest for long chains) | arpack | slepc\n"
-                   "(shift-invert; slepc runs on every mpirun rank)");
-  tool::add_option(app, "--tolerance", config.tolerance, "ARPACK/SLEPc Ritz tolerance (0 = tightest default)");
-  tool::add_integer(app, "--lanes", config.lanes,
-                    "bisect: eigenvectors computed together, 1..64 (2 N x lanes doubles on a whole-chain "
-                    "solve; localized modes of long chains are solved on windows)");
+  tool::add_parameters(app, config, spectrum_parameters(), {.except = {"vectors"}});  // a file here
   app.add_option("--vectors", vectors_file, "also write the eigenvectors to this HDF5 file");
   app.add_option("--dump-matrix", dump_matrix,
                  "also write the dynamical matrix as raw little-endian doubles PREFIX.diag.f64 (N) and "
@@ -55,9 +49,8 @@ int main(int argc, char** argv) {
 
   return tool::run(app, argc, argv, [&] {
     tool::Metadata meta("spectrum", argc, argv);
-    config.method = parse_spectrum_method(method);
     config.vectors = !vectors_file.empty();
-    const SpectrumRequest request{choose_modes(selection_choices), config, method};
+    const SpectrumRequest request{choose_modes(selection_choices), config};
     const ModeSelection& selection = request.selection;
     validate(request.config, selection);
     if (config.vectors) load_hdf5_writer();  // before the solve, not after it

@@ -7,6 +7,7 @@ import numpy as np
 
 from . import _core
 from ._arguments import double_vector
+from ._schema import TableKeywords, split_keywords, with_keywords
 
 from ._core import DynamicalMatrix
 from ._model import _document, paper_r1, steel
@@ -15,15 +16,9 @@ _SELECTION_DOC = """\
     near, count: the `count` modes nearest `near` [kHz] in frequency (both or neither)
     window: (lo, hi) [kHz]: every mode with lo <= f <= hi (may be empty)
 """
-_CONFIG_DOC = """\
-    method: 'lapack' (default) | 'fast' (every mode: eigenvalues + one twisted factorization per mode, ~5x \
-faster, no eigenvectors) | 'bisect' | 'arpack' | 'slepc' (nearest/window)
-    driver: LAPACK driver for every mode: 'stevd' (default) | 'stevr' | 'stemr' | 'steqr'
-    vectors: also return the unit eigenvectors w of D (N x K array, column j = mode j)
-    tolerance: arpack/slepc Ritz tolerance (0: the tightest default; refused with another method)
-    subspace: arpack/slepc Krylov basis size (0: max(2K + 1, 20); refused with another method)
-    lanes: bisect: eigenvectors computed together, 1..64 (selected modes only: refused with every mode)
-"""
+# The solver's keywords: the rows of the library's table over SpectrumConfig (spectrum_parameters(): method, driver,
+# vectors, tolerance, subspace, lanes), with its own C++ defaults and help.
+_SOLVER = TableKeywords(_core.SpectrumConfig())
 
 _document(DynamicalMatrix, "The symmetric tridiagonal dynamical matrix D = M^(-1/2) K M^(-1/2) [1/s^2] of a chain "
           "(docs/physics.md, 'The linear spectrum'): eigenvalues omega^2, eigenvectors w; the displacement mode is v = w * inverse_sqrt_mass. "
@@ -114,33 +109,30 @@ def _system(system):
     return (system, None) if isinstance(system, _core.Chain) else (None, system)
 
 
-def _config(method, driver, vectors, tolerance, subspace, lanes):
-    """The _core.SpectrumConfig of the solver keywords."""
-    c = _core.SpectrumConfig()
-    c.method, c.driver, c.vectors, c.tolerance = method, driver, vectors, tolerance
-    if subspace < 0 or subspace > 1000000000:
-        raise ValueError(f"subspace {subspace}: must be >= 0")
-    c.subspace = subspace
-    c.lanes = _core._size(lanes, "lanes", 1, 64)
-    return c
+def _config(keywords, function):
+    """The _core.SpectrumConfig of the solver keywords (TypeError naming one no row takes)."""
+    (given,) = split_keywords(keywords, [_SOLVER], function)
+    return _SOLVER.make(given)
 
 
 class SpectrumSolver(_core._SpectrumSolver):
     __doc__ = ("A spectrum solver that keeps its workspaces between calls: for loops over many chains of one size "
                "(what the IPR map does per thread). solve() gives exactly what granular.spectrum gives.\n\n"
-               "SpectrumSolver(*, method='lapack', driver='stevd', vectors=False, tolerance=0.0, subspace=0, "
-               "lanes=8): keywords as granular.spectrum's:\n" + _CONFIG_DOC)
+               "SpectrumSolver(**solver keywords): keywords as granular.spectrum's:\n" + _SOLVER.doc())
 
-    def __init__(self, *, method="lapack", driver="stevd", vectors=False, tolerance=0.0, subspace=0, lanes=8):
-        super().__init__(_config(method, driver, vectors, tolerance, subspace, lanes))
-        self._method, self._busy = method, threading.Lock()  # its workspace serves one call at a time
+    def __init__(self, **solver):
+        super().__init__(_config(solver, "SpectrumSolver"))
+        self._busy = threading.Lock()  # its workspace serves one call at a time
 
     def solve(self, system, *, near=None, count=None, window=None):
         """The selected modes of a granular.Chain or granular.DynamicalMatrix (near, count / window as
         granular.spectrum's). Returns a granular.Spectrum."""
         system, selection = _system(system), _selection(near, count, window)
         with self._busy:
-            return Spectrum(*self._solve(self._method, *system, selection, False))
+            return Spectrum(*self._solve(*system, selection, False))
+
+
+with_keywords(SpectrumSolver.__init__, [_SOLVER], "The solver")
 
 
 def dynamical_matrix(chain):
@@ -158,19 +150,19 @@ def omega2_of_khz(khz):
     return _core._omega2_of_khz(khz)
 
 
-def spectrum(system, *, near=None, count=None, window=None, method="lapack", driver="stevd", vectors=False,
-             tolerance=0.0, subspace=0, lanes=8):
+def spectrum(system, *, near=None, count=None, window=None, **solver):
     selection = _selection(near, count, window)
-    config = _config(method, driver, vectors, tolerance, subspace, lanes)
-    return Spectrum(*_core._SpectrumSolver(config)._solve(method, *_system(system), selection, True))
+    config = _config(solver, "spectrum")
+    return Spectrum(*_core._SpectrumSolver(config)._solve(*_system(system), selection, True))
 
 
 spectrum.__doc__ = (
     "The linear spectrum of a granular.Chain or granular.DynamicalMatrix (docs/physics.md, 'The linear spectrum'), as the spectrum tool computes "
-    "it: every mode by default, or\n" + _SELECTION_DOC + _CONFIG_DOC +
+    "it: every mode by default, or\n" + _SELECTION_DOC +
     "Returns a granular.Spectrum (mode, freq_khz [kHz], ipr, omega2 [1/s^2], residual, vectors; info, metadata). "
     "Releases the GIL while it solves. ValueError names the keyword of a bad value; granular.NumericalError when "
     "every solver failed.")
+with_keywords(spectrum, [_SOLVER], "The solver")
 
 
 class BandEdges:

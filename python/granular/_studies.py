@@ -87,6 +87,8 @@ _IPR_MAP_CHAIN = TableKeywords(_core._ipr_map_chain(), skip=("q", "xi", "realiza
 
 _C = _core.ChainChoices()  # the chain table's C++ defaults (chain_parameters())
 _DB = _core.DynamicalButterflyConfig()  # dynamical_butterfly_parameters()' C++ defaults
+_B = _core.ButterflyConfig()  # butterfly_parameters()' C++ defaults (the ratios as text: _butterfly_defaults)
+_RATIOS = _core._butterfly_defaults["ratios"]
 
 def ipr_map(*, xi=_core._ipr_map_defaults["xi"], q=_core._ipr_map_defaults["q"],
             realizations=_core.IprMapConfig().realizations, solver=_core.IprMapConfig().solver, near=None, count=None, window=None,
@@ -147,9 +149,10 @@ class Butterfly:
         return f"<granular.Butterfly {len(self.ratios)} ratios, {len(self.freq_khz)} modes>"
 
 
-def butterfly(kind="s1", *, ratios="0.005:0.995:0.005", N=_C.N, modulation=_C.modulation, phase=None,
+def butterfly(kind="s1", *, ratios=_RATIOS, N=_C.N, modulation=_C.modulation, phase=None,
               angle=_C.angle, k0=_C.k0, seed=_C.seed, realization=_C.realization, F0=_C.F0, R1=_core.paper_r1,
-              largest_box=0.0, smallest_box=4.0, box_sizes=12, threads=0, progress=False):
+              largest_box=_B.largest_box, smallest_box=_B.smallest_box_spacings, box_sizes=_B.box_sizes, threads=0,
+              progress=False):
     """The Hofstadter butterfly of a quasiperiodic chain (docs/physics.md, "Quasiperiodic chains"): every mode's
     frequency [kHz] and displacement IPR for each incommensurate ratio of `ratios` (a sequence, a number or the
     tools' range string), one chain (one phase) per ratio, and the box-counting dimension of each spectrum fitted
@@ -194,7 +197,7 @@ class DynamicalButterfly:
         return f"<granular.DynamicalButterfly {len(self.ratios)} ratios x {len(self.freq_khz)} frequencies>"
 
 
-def dynamical_butterfly(kind="s1", *, ratios="0.005:0.995:0.005", N=_C.N, modulation=_C.modulation, phase=None,
+def dynamical_butterfly(kind="s1", *, ratios=_RATIOS, N=_C.N, modulation=_C.modulation, phase=None,
                         angle=_C.angle, k0=_C.k0, seed=_C.seed, realization=_C.realization, F0=_C.F0,
                         R1=_core.paper_r1, T=1e-2, dt=1e-6, amplitude=_DB.amplitude, velocity_seed=_DB.velocity_seed,
                         spectrum_samples=_DB.spectrum_samples, spectrum_of="velocity", integrator="saba2c",

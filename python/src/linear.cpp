@@ -15,6 +15,7 @@
 #include "granular/linear/dynamical_matrix.hpp"
 #include "granular/linear/mode_selection_choices.hpp"
 #include "granular/linear/spectrum.hpp"
+#include "granular/linear/spectrum_parameters.hpp"
 #include "granular/linear/sym_tridiagonal.hpp"
 #include "granular/model/named_chains.hpp"
 #include "granular/model/plausibility.hpp"
@@ -75,11 +76,7 @@ void bind_linear(py::module_& m) {
   table_class(m, "ModeSelectionChoices", mode_selection_parameters())  // near, count; window (lo, hi): no field
       .def_readwrite("window", &ModeSelectionChoices::window);
   m.def("_choose_modes", py::overload_cast<const ModeSelectionChoices&>(&choose_modes));  // the tools' rule
-  using C = SpectrumConfig;
-  config_class(m, "SpectrumConfig", "vectors tolerance subspace lanes", &C::vectors, &C::tolerance, &C::subspace,
-               &C::lanes)
-      .def_property("method", word_getter(&C::method), word_setter(&C::method, parse_spectrum_method))
-      .def_property("driver", word_getter(&C::driver), word_setter(&C::driver, parse_lapack_driver));
+  table_class(m, "SpectrumConfig", spectrum_parameters());
 
   // granular.spectrum and granular.SpectrumSolver: one solve of a Chain or of a DynamicalMatrix
   // (the other None: granular/_linear.py); `check_units` warns of a frequency keyword beyond the
@@ -87,9 +84,9 @@ void bind_linear(py::module_& m) {
   // granular/_linear.py holds a lock around it.
   py::class_<SpectrumSolver>(m, "_SpectrumSolver")
       .def(py::init<const SpectrumConfig&>())
-      .def("_solve", [](SpectrumSolver& solver, const std::string& method, const PyChain* chain,
-                        const DynamicalMatrix* matrix, const ModeSelection& selection, bool check_units) {
-        const SpectrumRequest q{selection, solver.config(), method};
+      .def("_solve", [](SpectrumSolver& solver, const PyChain* chain, const DynamicalMatrix* matrix,
+                        const ModeSelection& selection, bool check_units) {
+        const SpectrumRequest q{selection, solver.config()};
         validate(q.config, q.selection);
         if (check_units && q.selection.kind != ModeSelection::Kind::all) {
           const bool by_near = q.selection.kind == ModeSelection::Kind::nearest;

@@ -185,6 +185,7 @@ void bind_studies(py::module_& m) {
   m.attr("_localization_frequencies") = localization_frequencies;
   m.def("_correlations", &correlations);
   m.def("_butterfly", &butterfly);
+  m.attr("_butterfly_defaults") = text_defaults(butterfly_parameters());  // ratios as the tool's --help shows them
   using D = DynamicalButterflyConfig;  // the table's parameters; the chain, ratios, realization: granular/_studies.py
   table_class(m, "DynamicalButterflyConfig", dynamical_butterfly_parameters())
       .def_readwrite("chain", &D::chain)

@@ -153,3 +153,20 @@ def test_metadata_is_the_spectrum_tools_json(tools, selection, keywords):
     process = ("tool", "function", "command", "started_utc", "wall_time_s", "output", "vectors")
     assert {k: v for k, v in result.metadata.items() if k not in process} == \
         {k: v for k, v in meta.items() if k not in process}
+
+
+@pytest.mark.parametrize("function", [gr.spectrum, gr.SpectrumSolver.__init__])
+def test_solver_keywords_are_the_spectrum_table_with_its_cpp_defaults(function):
+    """spectrum's and SpectrumSolver's solver keywords are the rows of spectrum_parameters(), with SpectrumConfig's
+    own defaults and help (the spectrum tool's --method, --driver, --tolerance, --subspace, --lanes)."""
+    from granular import _core
+    defaults = _core.SpectrumConfig()
+    signature = inspect.signature(function).parameters
+    rows = _core.SpectrumConfig._parameters
+    assert [keyword for _, keyword, _ in rows] == [k for k in signature if k in {r[1] for r in rows}]
+    for name, keyword, help_text in rows:
+        assert signature[keyword].default == getattr(defaults, name), keyword
+        assert signature[keyword].kind == inspect.Parameter.KEYWORD_ONLY
+        assert help_text[:30] in function.__doc__, keyword
+    with pytest.raises(TypeError, match="solver_kind"):
+        gr.spectrum(gr.anderson(N=10), solver_kind=1)

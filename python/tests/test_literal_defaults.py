@@ -14,17 +14,14 @@ PACKAGE = pathlib.Path(gr.__file__).parent
 # module.function.keyword of each literal default left (see the module docstring)
 STILL_LITERAL = {
     "_dynamics.transport.realizations",  # the ensemble's 100 (the tool: 1, the exponent table: 500)
-    # the spectrum solver's keywords (SpectrumSolver: no table yet)
-    "_linear.spectrum.method", "_linear.spectrum.driver", "_linear.spectrum.tolerance", "_linear.spectrum.subspace",
-    "_linear.spectrum.lanes", "_linear.band_edges.xi", "_linear.band_edges.F0",
+    "_linear.band_edges.xi", "_linear.band_edges.F0",
     "_model.quasiperiodic.kind",  # a choice of this constructor's: the tools have no default kind
     "_model.cyclic_correlation.max_distance",
     "_observers.spread.dt",  # the preferred step (IntegrationConfig's 1 us; the case's own dt is optional)
     "_progress.run_long.interrupted",
     # the butterflies' ratios, boxes and run (their tables hold the rest)
-    "_studies.butterfly.kind", "_studies.butterfly.ratios", "_studies.butterfly.largest_box",
-    "_studies.butterfly.smallest_box", "_studies.butterfly.box_sizes",
-    "_studies.dynamical_butterfly.kind", "_studies.dynamical_butterfly.ratios", "_studies.dynamical_butterfly.T",
+    "_studies.butterfly.kind",
+    "_studies.dynamical_butterfly.kind", "_studies.dynamical_butterfly.T",
     "_studies.dynamical_butterfly.dt", "_studies.dynamical_butterfly.spectrum_of",
     "_studies.dynamical_butterfly.integrator", "_studies.dynamical_butterfly.force_law",
 }

@@ -19,7 +19,9 @@
 #include "granular/crystal/crystal_case.hpp"
 #include "granular/ensemble/run_options.hpp"
 #include "granular/linear/mode_selection_choices.hpp"
+#include "granular/linear/spectrum_parameters.hpp"
 #include "granular/orbits/breather_parameters.hpp"
+#include "granular/study/butterfly.hpp"
 #include "granular/study/crystal_ipr_map.hpp"
 #include "granular/study/dynamical_butterfly.hpp"
 #include "granular/study/exponent_choices.hpp"
@@ -84,6 +86,8 @@ TEST(ParameterJson, EveryRowOfEveryTableRoundTrips) {
   expect_every_row_round_trips(ipr_map_parameters(), "IPR map");
   expect_every_row_round_trips(spreading_output_parameters(), "spreading outputs");
   expect_every_row_round_trips(mode_selection_parameters(), "mode selection");
+  expect_every_row_round_trips(spectrum_parameters(), "spectrum solver");
+  expect_every_row_round_trips(butterfly_parameters(), "butterfly (linear)");
   expect_every_row_round_trips(long_run_parameters(), "long run");
   expect_every_row_round_trips(breather_parameters(), "breathers");
   expect_every_row_round_trips(crystal_parameters(), "crystal");

@@ -65,7 +65,7 @@ nlohmann::json describe_spectrum(const Spectrum& r, const SpectrumRequest& q, co
   const auto flagged = static_cast<std::size_t>(std::count(r.clustered.begin(), r.clustered.end(), 1));
   meta["clustered"] = {{"relative_gap", cluster_relative_gap}, {"modes", flagged}};
   if (!chain.is_null()) meta["chain"] = chain;
-  meta["method"] = q.method;
+  meta["method"] = to_string(q.config.method);
   meta["solver"] = {{"method", r.info.method}, {"fallbacks", r.info.fallbacks}};
   const ModeSelection& sel = q.selection;
   if (sel.kind != ModeSelection::Kind::all) {

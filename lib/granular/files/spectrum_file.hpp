@@ -41,7 +41,6 @@ nlohmann::json band_edges_of(const nlohmann::json& chain, const Material& materi
 struct SpectrumRequest {
   ModeSelection selection = all_modes();
   SpectrumConfig config{};
-  std::string method = "lapack";
 };
 
 /// The spectrum's JSON entries: clustered (relative_gap, modes), method, solver (method that ran,

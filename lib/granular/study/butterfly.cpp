@@ -7,11 +7,31 @@
 #include "granular/ensemble/parallel_realizations.hpp"
 #include "granular/error.hpp"
 #include "granular/io/csv_writer.hpp"
+#include "granular/io/range_syntax.hpp"
 #include "granular/linear/dynamical_matrix.hpp"
 #include "granular/linear/spectrum.hpp"
 #include "granular/number_format.hpp"
 
 namespace granular {
+
+std::vector<double> default_butterfly_ratios() { return parse_number_list("0.005:0.995:0.005", "ratios", 0.005); }
+
+namespace {
+void read_ratios(ButterflyConfig& c, const std::string& text) { c.ratios = parse_number_list(text, "ratios", 0.005); }
+std::string write_ratios(const ButterflyConfig& c) { return format_number_list(c.ratios); }
+}  // namespace
+
+const ParameterTable<ButterflyConfig>& butterfly_parameters() {
+  using C = ButterflyConfig;
+  static const ParameterTable<C> table{
+      {"ratios", {}, {read_ratios, write_ratios}, "ratios beta > 0: start:stop[:step] (step 0.005) or a,b,c"},
+      {"largest_box", &C::largest_box,
+       "largest box of the dimension fit, as a fraction of the spectrum's extent (0: 5 %, or 8 smallest boxes if "
+       "more)"},
+      {"smallest_box", &C::smallest_box_spacings, "smallest box of the fit, in mean level spacings (extent / N)"},
+      {"box_sizes", &C::box_sizes, "box sizes fitted, evenly spaced in log"}};
+  return table;
+}
 
 ChainRecipe at_ratio(ChainRecipe chain, double beta) {
   std::get<Quasiperiodic>(chain.source).ratio = beta;

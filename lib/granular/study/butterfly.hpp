@@ -18,13 +18,17 @@
 #include "granular/analysis/box_counting.hpp"
 #include "granular/ensemble/run_options.hpp"
 #include "granular/model/chain_recipe.hpp"
+#include "granular/parameter_table.hpp"
 
 namespace granular {
 
+/// The ratios a butterfly scans by default: β = 0.005, 0.010, …, 0.995.
+std::vector<double> default_butterfly_ratios();
+
 struct ButterflyConfig {
-  ChainRecipe chain;              ///< a quasiperiodic recipe (chain.quasi set); its ratio is replaced by each β
-  std::vector<double> ratios;     ///< β values, each finite and > 0
-  std::uint64_t realization = 0;  ///< which phase of chain.seed (or the given phase)
+  ChainRecipe chain;  ///< a quasiperiodic recipe (chain.quasi set); its ratio is replaced by each β
+  std::vector<double> ratios = default_butterfly_ratios();  ///< β values, each finite and > 0
+  std::uint64_t realization = 0;                            ///< which phase of chain.seed (or the given phase)
   /// The largest box, as a fraction of each spectrum's extent f_max − f_min; 0: automatic, 5 % of
   /// it or 8 smallest boxes if more (few beads). Boxes near the extent count the ends of the set
   /// (N(ε) = ⌊L/ε⌋ + 1 for evenly spaced points): from half the extent an interval came out 0.949.
@@ -32,6 +36,11 @@ struct ButterflyConfig {
   double smallest_box_spacings = 4;  ///< the smallest box, in mean level spacings (extent / N)
   std::size_t box_sizes = 12;        ///< sizes, evenly spaced in ln ε
 };
+
+/// The butterfly's own parameters over ButterflyConfig: `ratios` ("start:stop[:step]", step 0.005,
+/// or a comma list), `largest_box`, `smallest_box` and `box_sizes` of the dimension fit. The chain
+/// and its realization come from the chain table (the quasiperiodic rows).
+const ParameterTable<ButterflyConfig>& butterfly_parameters();
 
 /// The largest box of `config` as a fraction of the extent, for a spectrum of `modes` levels
 /// (resolving largest_box = 0).
