@@ -199,9 +199,10 @@ class DynamicalButterfly:
 
 def dynamical_butterfly(kind="s1", *, ratios=_RATIOS, N=_C.N, modulation=_C.modulation, phase=None,
                         angle=_C.angle, k0=_C.k0, seed=_C.seed, realization=_C.realization, F0=_C.F0,
-                        R1=_core.paper_r1, T=1e-2, dt=1e-6, amplitude=_DB.amplitude, velocity_seed=_DB.velocity_seed,
-                        spectrum_samples=_DB.spectrum_samples, spectrum_of="velocity", integrator="saba2c",
-                        force_law="hertz", max_energy_error=_DB.max_energy_error, threads=0, progress=False):
+                        R1=_core.paper_r1, T=_DB.duration, dt=_DB.time_step, amplitude=_DB.amplitude,
+                        velocity_seed=_DB.velocity_seed, spectrum_samples=_DB.spectrum_samples,
+                        spectrum_of=_DB.spectrum_of, integrator=_DB.integrator, force_law=_DB.force_law,
+                        max_energy_error=_DB.max_energy_error, threads=0, progress=False):
     """The Hofstadter butterfly recovered from the dynamics (docs/quasiperiodic.md, "The butterfly from the
     dynamics"): for each ratio beta of `ratios` (a sequence, a number or the tools' range string) the chain is
     started from u = 0 and velocities uniform in [-amplitude, amplitude] [m/s] on every bead (seed velocity_seed,
@@ -227,10 +228,9 @@ def dynamical_butterfly(kind="s1", *, ratios=_RATIOS, N=_C.N, modulation=_C.modu
     c.velocity_seed = _core._size(velocity_seed, "velocity_seed")
     c.spectrum_samples = _core._size(spectrum_samples, "spectrum_samples", 2, _MAX)
     c.max_energy_error = _core._finite(max_energy_error, "max_energy_error")
-    if spectrum_of not in ("displacement", "velocity"):
-        raise ValueError(f"spectrum_of '{spectrum_of}': displacement or velocity")
-    values = _core._dynamical_butterfly(c, _core._finite(T, "T"), _core._finite(dt, "dt"), integrator, force_law,
-                                        spectrum_of, _run(threads, progress=progress))
+    c.duration, c.time_step = _core._finite(T, "T"), _core._finite(dt, "dt")
+    c.integrator, c.force_law, c.spectrum_of = integrator, force_law, spectrum_of
+    values = _core._dynamical_butterfly(c, _run(threads, progress=progress))
     return DynamicalButterfly(values)
 
 

@@ -140,14 +140,7 @@ py::dict butterfly(const ButterflyConfig& c, const PyRun& options) {
 }
 
 /// The integration's words and numbers are set here (the config's IntegrationConfig is not bound).
-py::dict dynamical_butterfly(DynamicalButterflyConfig c, double duration, double time_step,
-                             const std::string& integrator, const std::string& force_law,
-                             const std::string& spectrum_of, const PyRun& options) {
-  c.integration.duration = duration;
-  c.integration.time_step = time_step;
-  c.integration.integrator = parse_integrator(integrator);
-  c.integration.force_law = parse_force_law(force_law);
-  c.source = parse_spectrum_source(spectrum_of);
+py::dict dynamical_butterfly(const DynamicalButterflyConfig& c, const PyRun& options) {
   validate(c);
   std::vector<DynamicalButterflyColumn> columns;
   run_long("dynamical_butterfly", c.ratios.size(), options,

@@ -19,11 +19,9 @@ STILL_LITERAL = {
     "_model.cyclic_correlation.max_distance",
     "_observers.spread.dt",  # the preferred step (IntegrationConfig's 1 us; the case's own dt is optional)
     "_progress.run_long.interrupted",
-    # the butterflies' ratios, boxes and run (their tables hold the rest)
+    # the butterflies' quasiperiodic kind (the tools' --quasi, which has no default elsewhere)
     "_studies.butterfly.kind",
-    "_studies.dynamical_butterfly.kind", "_studies.dynamical_butterfly.T",
-    "_studies.dynamical_butterfly.dt", "_studies.dynamical_butterfly.spectrum_of",
-    "_studies.dynamical_butterfly.integrator", "_studies.dynamical_butterfly.force_law",
+    "_studies.dynamical_butterfly.kind",
 }
 
 

@@ -16,7 +16,7 @@
 namespace granular::tool {
 
 struct DynamicalButterflyOptions {
-  std::string from = "eigen", integrator = "saba2c", force_law = "hertz";
+  std::string from = "eigen";
   DynamicalButterflyConfig config;            ///< the caller sets the chain, ratios and realization
   std::vector<std::string> dynamics_flags{};  ///< the flags only --from dynamics reads
 };
@@ -30,14 +30,10 @@ inline void add_dynamical_butterfly_options(CLI::App& app, DynamicalButterflyOpt
     option->description("--from dynamics: " + option->get_description());
     o.dynamics_flags.push_back(option->get_name());
   };
-  dynamics_only(add_option(app, "--T", c.integration.duration, "duration [s]; the frequency resolution is 1/T"));
-  dynamics_only(add_option(app, "--dt", c.integration.time_step, "time step tau [s]"));
-  dynamics_only(add_option(app, "--integrator", o.integrator, "saba2c | saba2 | aba864 | srkn14a | reference"));
-  dynamics_only(add_option(app, "--force-law", o.force_law, "hertz | fpu | linear"));
   for (const auto& [name, option] : add_parameters(app, c, dynamical_butterfly_parameters())) dynamics_only(option);
 }
 
-/// Whether --from asks for dynamics, its scheme and force law read into the config. Throws
+/// Whether --from asks for dynamics. Throws
 /// InvalidInput naming --from, or a flag given to the mode that does not read it.
 inline bool from_dynamics(const CLI::App& app, DynamicalButterflyOptions& o,
                           const std::vector<std::string>& eigen_only_flags) {
@@ -46,8 +42,6 @@ inline bool from_dynamics(const CLI::App& app, DynamicalButterflyOptions& o,
   for (const std::string& flag : dynamics ? eigen_only_flags : o.dynamics_flags)
     if (app.count(flag) > 0)
       throw InvalidInput(flag, ": only with --from " + std::string(dynamics ? "eigen" : "dynamics"));
-  o.config.integration.integrator = parse_integrator(o.integrator);
-  o.config.integration.force_law = parse_force_law(o.force_law);
   return dynamics;
 }
 

@@ -58,13 +58,36 @@ double opening_energy(const Chain& chain) {
 
 }  // namespace
 
+namespace {
+using O = DynamicalButterflyConfig;
+void read_integrator(O& c, const std::string& word) { c.integration.integrator = parse_integrator(word); }
+std::string write_integrator(const O& c) { return c.integration.integrator.name(); }
+void read_force_law(O& c, const std::string& word) { c.integration.force_law = parse_force_law(word); }
+std::string write_force_law(const O& c) { return to_string(c.integration.force_law); }
+void read_source(O& c, const std::string& word) {
+  try {
+    c.source = parse_spectrum_source(word);
+  } catch (const InvalidInput&) {  // the library names its own field; the row is `spectrum_of`
+    throw InvalidInput("spectrum_of", " '" + word + "': displacement or velocity");
+  }
+}
+std::string write_source(const O& c) { return to_string(c.source); }
+}  // namespace
+
 const ParameterTable<DynamicalButterflyConfig>& dynamical_butterfly_parameters() {
-  using O = DynamicalButterflyConfig;
+  using P = Parameter<O>;
   static const ParameterTable<O> table{
+      {"duration", path<O>(&O::integration, &IntegrationConfig::duration),
+       "duration [s]; the frequency resolution is 1/T"},
+      {"time_step", path<O>(&O::integration, &IntegrationConfig::time_step), "time step tau [s]"},
+      P{"integrator", {}, {read_integrator, write_integrator}, "saba2c | saba2 | aba864 | srkn14a | reference"}.as_word(),
+      P{"force_law", {}, {read_force_law, write_force_law}, "hertz | fpu | linear"}.as_word(),
       {"amplitude", &O::amplitude, "initial velocities uniform in [-a, a] [m/s], small enough to stay linear"},
       {"velocity_seed", &O::velocity_seed, "seed of the initial velocities"},
       {"spectrum_samples", &O::spectrum_samples, "uniform samples of [0, T] transformed (Nyquist about samples/(2T))"},
-      {"max_energy_error", &O::max_energy_error, "relative energy error that stops a run, 0 = off"}};
+      {"max_energy_error", &O::max_energy_error, "relative energy error that stops a run, 0 = off"},
+      P{"spectrum_of", {}, {read_source, write_source}, "velocity | displacement: whose power is summed over beads"}
+          .as_word()};
   return table;
 }
 

@@ -51,9 +51,9 @@ struct DynamicalButterflyConfig {
   double max_energy_error = 1e-3;  ///< guard on the relative energy error; 0 = unwatched
 };
 
-/// The meaning and units of the run's own numbers (parameter_table.hpp): amplitude, velocity_seed,
-/// spectrum_samples, max_energy_error. Not the chain, ratios and realization (the chain's words
-/// are a front end's), nor the integration's fields (members of `integration`, not of the config).
+/// The meaning and units of the run's own settings (parameter_table.hpp): T and τ, the integrator
+/// and force law (words), amplitude, velocity_seed, spectrum_samples, max_energy_error and
+/// spectrum_of. Not the chain, ratios and realization (the chain's words are a front end's).
 const ParameterTable<DynamicalButterflyConfig>& dynamical_butterfly_parameters();
 
 /// Throws InvalidInput naming the field: quasi, ratios, F0, amplitude (zero, not finite, or an
