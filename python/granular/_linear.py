@@ -10,7 +10,7 @@ from ._arguments import double_vector
 from ._schema import TableKeywords, split_keywords, with_keywords
 
 from ._core import DynamicalMatrix
-from ._model import _document, paper_r1, steel
+from ._model import _C, _document, paper_r1, steel
 
 _SELECTION_DOC = """\
     near, count: the `count` modes nearest `near` [kHz] in frequency (both or neither)
@@ -183,6 +183,6 @@ class BandEdges:
         return f"BandEdges({values}) [kHz]"
 
 
-def band_edges(xi=0.5, F0=10.0, R1=paper_r1, material=steel):
+def band_edges(xi=_C.xi, F0=_C.F0, R1=paper_r1, material=steel):
     """Band edges [kHz] of beads of radius R1 [m] and xi*R1 of one material under precompression F0 > 0 [N]."""
     return BandEdges(*_core._band_edges(xi, F0, R1, material))

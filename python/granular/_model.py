@@ -255,7 +255,7 @@ def nonlinearity_ratio(alpha, contact, F0):
                                      _core._finite(F0, "F0"))
 
 
-def cyclic_correlation(types, max_distance=10):
+def cyclic_correlation(types, max_distance=_core.CorrelationConfig().max_distance):
     """Pearson coefficient rho(d), d = 0..max_distance (< N), of the bead types (type 1 -> 0, type 2 -> 1) with their
     cyclic shift by d; `types` is a granular.Chain or an array of 1 and 2. NaN when the chain has one type only."""
     types = (types.types.tolist() if types.types is not None else []) if isinstance(types, Chain) else _types(types)
