@@ -24,21 +24,19 @@ int main(int argc, char** argv) {
       "Writes PREFIX.csv (columns disorder,q,xi,mode,freq_khz,ipr) and PREFIX.json (every parameter).",
       "ipr-map"};
   tool::describe_common(app);
-  std::string disorder = "A", output = "ipr-map";
+  std::string output = "ipr-map";
   IprMapConfig config;
-  tool::ChainOptions beads;  // --walls, --types/--type-masses/--polydisperse (with --disorder as their rule)
-  RunOptions run;            // of how a long run goes, --threads alone
+  // The chains: the two-type draw's --disorder, --N, --F0, --R1, --seed, --walls, or instead --quasi
+  // or --types/--type-masses/--polydisperse (with --disorder as their rule), at the map's defaults.
+  tool::ChainOptions beads = ipr_map_chain_defaults();
+  RunOptions run;  // of how a long run goes, --threads alone
   ModeSelectionChoices selection;
   bool quiet = false;
-  tool::add_option(app, "--disorder", disorder, "h | A | RDM1 | RDM2 (homogeneous, Anderson, random dimer 1/2)");
+  tool::add_parameters(app, beads, chain_parameters(), {.only = {"disorder"}});
   tool::add_parameters(app, config, ipr_map_parameters(), {.only = {"xi", "q"}});
-  tool::add_integer(app, "--N", config.chain.N, "beads per chain (>= 2)");
-  tool::add_option(app, "--F0", config.chain.F0, "static precompression [N], > 0");
-  tool::add_option(app, "--R1", config.chain.R1,
-                   "radius of type-1 beads [m]; type 2 has xi*R1 (steel beads, steel walls)");
-  tool::add_parameters(app, beads, chain_parameters(), {.only = {"walls"}});
+  tool::add_parameters(app, beads, chain_parameters(), {.only = {"N", "F0", "R1", "walls"}});
   tool::add_parameters(app, config, ipr_map_parameters(), {.only = {"realizations"}});
-  tool::add_integer(app, "--seed", config.chain.seed, "random seed; realization r of seed s is always the same chain");
+  tool::add_parameters(app, beads, chain_parameters(), {.only = {"seed"}});
   tool::add_parameters(app, run, long_run_parameters(), {.only = {"threads"}});
   tool::add_parameters(app, config, ipr_map_parameters(), {.only = {"solver"}});
   tool::add_output_option(app, output);
@@ -51,14 +49,10 @@ int main(int argc, char** argv) {
 
   return tool::run(app, argc, argv, [&] {
     tool::Metadata meta("ipr-map", argc, argv);
-    config.chain.draw().disorder = parse_disorder(disorder);
-    if (config.chain.N > 100000000)
-      throw InvalidInput("N", " " + std::to_string(config.chain.N) + ": more than 1e8 beads");
     validate(run);
     config.selection = choose_modes(selection);
     set_solver(config);
-    beads.disorder = disorder;
-    set_chain_kind(config, beads);  // --quasi or a bead distribution: one cell
+    set_chain(config, beads);  // --quasi or a bead distribution: one cell
     validate(config);
     tool::warn(radius_warnings(config.chain, tool::radius_options(beads)));
     tool::warn(frequency_slips(config, [](const std::string& p) { return tool::option_name(p); }));  // Hz as kHz

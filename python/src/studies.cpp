@@ -24,35 +24,13 @@
 namespace granular::python {
 namespace {
 
-/// `chain`'s two-type draw (disorder, q, N, F0, R1, seed) from the chain keywords, as a study tool's
-/// flags set it (a map's q is each cell's).
-void set_draw(ChainRecipe& chain, const ChainChoices& beads) {
-  chain.draw().disorder = parse_disorder(beads.disorder);
-  chain.draw().q = beads.q;
-  chain.N = checked_size(beads.n, "N", 2, 100000000);
-  chain.F0 = beads.f0, chain.R1 = beads.r1;
-  chain.seed = checked_size(beads.seed, "seed");
-}
-
-/// The chain keywords as a study tool's chain-kind options hold them (walls, a quasiperiodic chain,
-/// a bead distribution and its rule): the draw's numbers, which set_draw put in the recipe, at
-/// ChainChoices' own, so that R1 beside `types` or `seed` with disorder h is taken as the tool
-/// takes --R1 and --seed, not refused by the chain table's overridden rule.
-ChainChoices chain_kind(ChainChoices beads) {
-  const ChainChoices plain;
-  beads.q = plain.q, beads.xi = plain.xi, beads.n = plain.n, beads.f0 = plain.f0, beads.r1 = plain.r1;
-  beads.seed = plain.seed;
-  return beads;
-}
-
 /// `c` as granular/_studies.py fills it (the grid, the selection, the solver's words); `beads`: the
 /// chain keywords (the two-type draw's numbers, the walls, a quasiperiodic chain or k types), by the
 /// ipr-map tool's rules.
 py::dict ipr_map(IprMapConfig c, const ChainChoices& beads, const PyRun& options) {
   const int thread_request = options.thread_request();
-  set_draw(c.chain, beads);
   set_solver(c);
-  set_chain_kind(c, chain_kind(beads));
+  set_chain(c, beads);
   validate(c);
   warn(radius_warnings(c.chain, radius_names(beads, front_end_word)));  // implausible radii, as the tool warns
   warn(frequency_slips(c, front_end_word));  // near, window: Hz typed as kHz, as the tool warns
@@ -116,8 +94,8 @@ py::dict localization(const PyChain* chain, const ChainChoices& choices, const L
 /// types or polydisperse radii instead of the two types), by the correlations tool's rule.
 py::dict correlations(CorrelationConfig c, const ChainChoices& beads, const PyRun& options) {
   options.thread_request();
-  set_draw(c.chain, beads);
-  set_chain_kind(c, chain_kind(beads));
+  set_study_draw(c.chain, beads);
+  set_chain_kind(c, chain_kind_choices(beads));
   validate(c);
   CorrelationResult result;
   run_long("correlations", c.realizations, options, [&](const RunOptions& run) { result = correlation_study(c, run); });
@@ -172,7 +150,7 @@ void bind_studies(py::module_& m) {
   m.def("_localization", &localization);
   m.def("_localization_chain", &localization_chain);  // the chain keywords' defaults
   // granular.ipr_map's and granular.correlations' chain keywords' defaults: their studies' default chain
-  m.def("_ipr_map_chain", [] { return chain_choices(IprMapConfig{}.chain); });
+  m.def("_ipr_map_chain", &ipr_map_chain_defaults);
   m.attr("_ipr_map_defaults") = text_defaults(ipr_map_parameters());  // xi, q as the tool's --help shows them
   m.def("_correlation_chain", [] { return chain_choices(CorrelationConfig{}.chain); });
   m.attr("_localization_frequencies") = localization_frequencies;

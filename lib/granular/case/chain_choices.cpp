@@ -118,6 +118,25 @@ StreamedChain stream_chain(const ChainChoices& o, const std::function<std::strin
   return s;
 }
 
+void set_study_draw(ChainRecipe& chain, const ChainChoices& o) {
+  chain.draw().disorder = parse_disorder(o.disorder);
+  chain.draw().q = o.q;
+  if (o.n < 2) throw InvalidInput("N", " " + std::to_string(o.n) + ": a chain needs at least 2 beads");
+  if (o.n > 100000000) throw InvalidInput("N", " " + std::to_string(o.n) + ": more than 1e8 beads");
+  if (o.seed < 0) throw InvalidInput("seed", " " + std::to_string(o.seed) + ": must be >= 0");
+  chain.N = static_cast<std::size_t>(o.n);
+  chain.F0 = o.f0, chain.R1 = o.r1;
+  chain.seed = static_cast<std::uint64_t>(o.seed);
+  chain.walls = parse_wall_shape(o.walls);
+}
+
+ChainChoices chain_kind_choices(ChainChoices o) {
+  const ChainChoices plain;
+  o.q = plain.q, o.xi = plain.xi, o.n = plain.n, o.f0 = plain.f0, o.r1 = plain.r1;
+  o.seed = plain.seed;
+  return o;
+}
+
 ChainChoices chain_choices(const ChainRecipe& r) {
   const TwoTypeDraw& draw = r.draw();
   ChainChoices o;

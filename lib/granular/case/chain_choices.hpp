@@ -78,6 +78,18 @@ RadiusNames radius_names(const ChainChoices& o, const std::function<std::string(
 /// keywords). Throws InvalidInput("chain") for another source.
 ChainChoices chain_choices(const ChainRecipe& draw);
 
+/// The two-type draw of a study's chains from the choices (the study tools' --disorder, --q, --N,
+/// --F0, --R1, --seed and --walls; granular.ipr_map's and correlations' keywords): those numbers
+/// into `chain` (N 2 … 1e8; its ξ stays the recipe's, a map's q and ξ are each cell's). Throws
+/// InvalidInput naming the choice.
+void set_study_draw(ChainRecipe& chain, const ChainChoices& o);
+
+/// The choices with the draw's own numbers (q, ξ, N, F0, R1, seed) at ChainChoices' defaults: what
+/// a study reads its chain kind from (a quasiperiodic chain, a bead distribution), so that R1
+/// beside `types`, or a seed with disorder h, is taken as set_study_draw takes it rather than
+/// refused by the chain table's overrides.
+ChainChoices chain_kind_choices(ChainChoices o);
+
 /// The realization the choices pick (0-based).
 inline std::uint64_t chain_realization(const ChainChoices& o) { return static_cast<std::uint64_t>(o.realization); }
 

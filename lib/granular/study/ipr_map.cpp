@@ -15,10 +15,13 @@
 
 namespace granular {
 
-void set_chain_kind(IprMapConfig& c, const ChainChoices& beads) {
-  c.chain.walls = parse_wall_shape(beads.walls);
-  if (auto quasi = quasiperiodic(beads)) c.chain.source = *quasi;
-  else if (auto distribution = bead_distribution(beads)) c.chain.source = *distribution;
+ChainChoices ipr_map_chain_defaults() { return chain_choices(IprMapConfig{}.chain); }
+
+void set_chain(IprMapConfig& c, const ChainChoices& beads) {
+  set_study_draw(c.chain, beads);
+  const ChainChoices kind = chain_kind_choices(beads);
+  if (auto quasi = quasiperiodic(kind)) c.chain.source = *quasi;
+  else if (auto distribution = bead_distribution(kind)) c.chain.source = *distribution;
   else return;
   c.q_values = c.xi_values = {std::numeric_limits<double>::quiet_NaN()};  // one cell
 }

@@ -70,19 +70,23 @@ struct IprMapCell {
 /// The map's own parameters over IprMapConfig: `xi` and `q` (the grid: "start:stop[:step]",
 /// step 0.01 and 0.1 by default, or comma lists), `realizations` (chains averaged per cell),
 /// `solver`, `method` and `bin_khz`. The chain and the modes are set by their own rules
-/// (set_chain_kind, choose_modes), the spectrum's config from the solver's words by set_solver.
+/// (set_chain, choose_modes), the spectrum's config from the solver's words by set_solver.
 const ParameterTable<IprMapConfig>& ipr_map_parameters();
 
 /// Throws InvalidInput (naming the field) on a bad config, before any work starts.
 void validate(const IprMapConfig& config);
 
 /// The map's chain from a front end's chain choices (the ipr-map tool's chain options,
-/// granular.ipr_map's chain keywords), by one rule: the walls, and a quasiperiodic chain or a bead
-/// distribution (`types`, `type_masses`, `polydisperse`; `disorder` their rule) instead of the
-/// two-type draw, each a map of one cell (q = ξ = NaN) whose realizations are phases or draws. The
-/// two-type draw's own numbers (disorder, N, F0, R1, seed) are the caller's to set in c.chain.
-/// Throws InvalidInput naming the choice.
-void set_chain_kind(IprMapConfig& c, const ChainChoices& beads);
+/// granular.ipr_map's chain keywords; their defaults: ipr_map_chain_defaults()), by one rule: the
+/// two-type draw's disorder, N (2 … 1e8), F0, R1 and seed (q and ξ are each cell's), the walls,
+/// and a quasiperiodic chain or a bead distribution (`types`, `type_masses`, `polydisperse`;
+/// `disorder` their rule) instead of the two-type draw, each a map of one cell (q = ξ = NaN) whose
+/// realizations are phases or draws. Throws InvalidInput naming the choice.
+void set_chain(IprMapConfig& c, const ChainChoices& beads);
+
+/// The chain choices of IprMapConfig{}.chain (chain_choices): what front ends show as the map's
+/// chain defaults.
+ChainChoices ipr_map_chain_defaults();
 
 /// c.spectrum from the words c.solver (every mode) and, for a partial selection (c.selection set
 /// first: near/count or window), c.method ("": lapack), which only a selection takes. Throws
