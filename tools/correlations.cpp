@@ -20,28 +20,27 @@ int main(int argc, char** argv) {
       "for two types the same coefficient (Pearson is invariant under the affine map type -> mass).",
       "correlations"};
   tool::describe_common(app);
-  std::string disorder = "A", output = "correlations";
+  std::string output = "correlations";
   CorrelationConfig config;
   RunOptions run;  // of how a long run goes, --threads alone
   bool quiet = false;
-  tool::ChainOptions beads;  // only its --types/--type-masses/--polydisperse
-  tool::add_option(app, "--disorder", disorder, "A | RDM1 | RDM2 (h has no correlation: one type only)");
-  tool::add_option(app, "--q", config.chain.draw().q, "probability in [0,1]");
+  // The chains: the two-type draw's --disorder (h has no correlation: one type only), --q, --N,
+  // --seed, or --types/--type-masses/--polydisperse (drawn by --disorder), at the study's defaults.
+  tool::ChainOptions beads = correlation_chain_defaults();
+  tool::add_parameters(app, beads, chain_parameters(), {.only = {"disorder", "q"}});
   tool::add_bead_distribution_options(app, beads);
-  tool::add_integer(app, "--N", config.chain.N, "beads per chain (>= 2)");
-  tool::add_integer(app, "--realizations", config.realizations, "chains averaged");
-  tool::add_integer(app, "--seed", config.chain.seed, "random seed");
+  tool::add_parameters(app, beads, chain_parameters(), {.only = {"N"}});
+  tool::add_parameters(app, config, correlation_parameters(), {.only = {"realizations"}});
+  tool::add_parameters(app, beads, chain_parameters(), {.only = {"seed"}});
   CLI::Option* max_distance =
-      tool::add_integer(app, "--max-distance", config.max_distance, "largest shift d (< N; default capped at N-1)");
+      tool::add_parameters(app, config, correlation_parameters(), {.only = {"max_distance"}})["max_distance"];
   tool::add_parameters(app, run, long_run_parameters(), {.only = {"threads"}});
   tool::add_output_option(app, output);
   app.add_flag("--quiet", quiet, "no final report on stderr");
 
   return tool::run(app, argc, argv, [&] {
     tool::Metadata meta("correlations", argc, argv);
-    config.chain.draw().disorder = parse_disorder(disorder);
-    beads.disorder = disorder;  // the rule of --types
-    set_chain_kind(config, beads);
+    set_chain(config, beads);
     // The default must fit short chains (N = 2 has only d = 0, 1); a value typed is checked as typed.
     if (max_distance->count() == 0 && config.chain.N >= 2 && config.max_distance > config.chain.N - 1)
       config.max_distance = config.chain.N - 1;

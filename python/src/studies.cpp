@@ -94,8 +94,7 @@ py::dict localization(const PyChain* chain, const ChainChoices& choices, const L
 /// types or polydisperse radii instead of the two types), by the correlations tool's rule.
 py::dict correlations(CorrelationConfig c, const ChainChoices& beads, const PyRun& options) {
   options.thread_request();
-  set_study_draw(c.chain, beads);
-  set_chain_kind(c, chain_kind_choices(beads));
+  set_chain(c, beads);
   validate(c);
   CorrelationResult result;
   run_long("correlations", c.realizations, options, [&](const RunOptions& run) { result = correlation_study(c, run); });
@@ -152,7 +151,7 @@ void bind_studies(py::module_& m) {
   // granular.ipr_map's and granular.correlations' chain keywords' defaults: their studies' default chain
   m.def("_ipr_map_chain", &ipr_map_chain_defaults);
   m.attr("_ipr_map_defaults") = text_defaults(ipr_map_parameters());  // xi, q as the tool's --help shows them
-  m.def("_correlation_chain", [] { return chain_choices(CorrelationConfig{}.chain); });
+  m.def("_correlation_chain", &correlation_chain_defaults);
   m.attr("_localization_frequencies") = localization_frequencies;
   m.def("_correlations", &correlations);
   m.def("_butterfly", &butterfly);

@@ -22,6 +22,7 @@
 #include "granular/linear/spectrum_parameters.hpp"
 #include "granular/orbits/breather_parameters.hpp"
 #include "granular/study/butterfly.hpp"
+#include "granular/study/correlation_study.hpp"
 #include "granular/study/crystal_ipr_map.hpp"
 #include "granular/study/dynamical_butterfly.hpp"
 #include "granular/study/exponent_choices.hpp"
@@ -88,6 +89,7 @@ TEST(ParameterJson, EveryRowOfEveryTableRoundTrips) {
   expect_every_row_round_trips(mode_selection_parameters(), "mode selection");
   expect_every_row_round_trips(spectrum_parameters(), "spectrum solver");
   expect_every_row_round_trips(butterfly_parameters(), "butterfly (linear)");
+  expect_every_row_round_trips(correlation_parameters(), "correlations");
   expect_every_row_round_trips(long_run_parameters(), "long run");
   expect_every_row_round_trips(breather_parameters(), "breathers");
   expect_every_row_round_trips(crystal_parameters(), "crystal");

@@ -17,6 +17,7 @@
 #include "granular/orbits/breather_parameters.hpp"
 #include "granular/parameter_names.hpp"
 #include "granular/study/butterfly.hpp"
+#include "granular/study/correlation_study.hpp"
 #include "granular/study/crystal_ipr_map.hpp"
 #include "granular/study/dynamical_butterfly.hpp"
 #include "granular/study/exponent_choices.hpp"
@@ -90,6 +91,7 @@ TEST(HelpFromTables, EveryRowATakesIsAFlagWithTheRowsHelp) {
   expect_rows_in_help("crystal-ipr-map", crystal_ipr_map_parameters());
   expect_rows_in_help("klein-gordon", klein_gordon_parameters());
   expect_rows_in_help("breathers", breather_parameters());
+  expect_rows_in_help("correlations", correlation_parameters());
 }
 
 }  // namespace

@@ -11,8 +11,19 @@
 
 namespace granular {
 
-void set_chain_kind(CorrelationConfig& c, const ChainChoices& beads) {
-  if (auto distribution = bead_distribution(beads)) c.chain.source = *distribution;
+const ParameterTable<CorrelationConfig>& correlation_parameters() {
+  using C = CorrelationConfig;
+  static const ParameterTable<C> table{{"realizations", &C::realizations, "chains averaged"},
+                                       {"max_distance", &C::max_distance,
+                                        "largest shift d (< N; default capped at N-1)"}};
+  return table;
+}
+
+ChainChoices correlation_chain_defaults() { return chain_choices(CorrelationConfig{}.chain); }
+
+void set_chain(CorrelationConfig& c, const ChainChoices& beads) {
+  set_study_draw(c.chain, beads);
+  if (auto distribution = bead_distribution(chain_kind_choices(beads))) c.chain.source = *distribution;
 }
 
 void validate(const CorrelationConfig& c) {

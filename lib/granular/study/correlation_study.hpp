@@ -12,6 +12,7 @@
 #include "granular/case/chain_choices.hpp"
 #include "granular/ensemble/run_options.hpp"
 #include "granular/model/chain_recipe.hpp"
+#include "granular/parameter_table.hpp"
 
 namespace granular {
 
@@ -33,11 +34,18 @@ struct CorrelationResult {
 /// Throws InvalidInput (naming the field) on a bad config.
 void validate(const CorrelationConfig& config);
 
-/// The chains' kind from a front end's chain choices (the correlations tool's options,
-/// granular.correlations' keywords), by one rule: a bead distribution (`types`, `type_masses`,
-/// `polydisperse`; `disorder` their rule) instead of the two types. Throws InvalidInput naming the
-/// choice.
-void set_chain_kind(CorrelationConfig& c, const ChainChoices& beads);
+/// The study's own parameters over CorrelationConfig: `realizations` and `max_distance`.
+const ParameterTable<CorrelationConfig>& correlation_parameters();
+
+/// The chains from a front end's chain choices (the correlations tool's options,
+/// granular.correlations' keywords; their defaults: correlation_chain_defaults()), by one rule:
+/// the two-type draw's disorder, q, N and seed (set_study_draw), or a bead distribution (`types`,
+/// `type_masses`, `polydisperse`; `disorder` their rule) instead of the two types. Throws
+/// InvalidInput naming the choice.
+void set_chain(CorrelationConfig& c, const ChainChoices& beads);
+
+/// The chain choices of CorrelationConfig{}.chain: what front ends show as the study's chain defaults.
+ChainChoices correlation_chain_defaults();
 
 /// Bit-identical for any thread count (run.threads; run.progress advanced per realization).
 /// Throws InvalidInput when every realization has one bead type only.
