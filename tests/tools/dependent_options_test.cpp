@@ -21,23 +21,6 @@
 namespace granular::testing {
 namespace {
 
-std::string help_of(const std::string& tool) {
-  std::string out;
-  if (FILE* p = ::popen(("'" + tool_path(tool) + "' --help").c_str(), "r")) {
-    char buffer[4096];
-    for (std::size_t n; (n = std::fread(buffer, 1, sizeof buffer, p)) > 0;) out.append(buffer, n);
-    ::pclose(p);
-  }
-  return out;
-}
-
-std::string flag_of(const std::string& parameter) {
-  std::string flag = "--" + front_end_word(parameter);
-  for (std::size_t i = 2; i < flag.size(); ++i)
-    if (flag[i] == '_') flag[i] = '-';
-  return flag;
-}
-
 /// A dependent option's test: a value other than its default, what leaves its need unmet (added
 /// to the option), and what meets it.
 struct Case {
@@ -64,11 +47,11 @@ void check_table(const ParameterTable<Choices>& table, const std::map<std::strin
     ASSERT_NE(it, cases.end()) << p.name << " needs `" << p.needs->choice << "` but has no case here";
     const Case& c = it->second;
     const auto named = takers.flags.find(p.needs->choice);
-    const std::string flag = flag_of(p.name),
-                      needed = named != takers.flags.end() ? named->second : flag_of(p.needs->choice);
+    const std::string flag = flag_for(p.name),
+                      needed = named != takers.flags.end() ? named->second : flag_for(p.needs->choice);
     int taken = 0;
     for (const std::string& tool : takers.tools) {
-      if (help_of(tool).find(flag + " ") == std::string::npos) continue;  // a tool may take part of a table
+      if (tool_help(tool).find(flag + " ") == std::string::npos) continue;  // a tool may take part of a table
       ++taken;
       const std::string dir = scratch_folder("dependent-" + p.name + "-" + tool);
       const ToolResult r = run_tool_in(dir, tool, flag + " " + c.value + " " + c.unmet + " --output out");
@@ -134,11 +117,11 @@ TEST(DependentOptions, ChainOptionsAreRefusedWithTheChoiceThatOverridesThem) {
       ASSERT_TRUE(values.contains(p.name)) << p.name << " has no value here";
       ASSERT_TRUE(choices.contains(choice)) << choice << " has no arguments here";
       const auto& [choice_args, told] = choices.at(choice);
-      const std::string args = flag_of(p.name) + " " + values.at(p.name) + " " + choice_args;
+      const std::string args = flag_for(p.name) + " " + values.at(p.name) + " " + choice_args;
       const ToolResult r = run_tool_in(dir, chain_run, "--quiet " + args + " --output out");
       EXPECT_EQ(r.exit_code, 2) << args << ": " << r.err;
       EXPECT_EQ(r.err,
-                "spectrum: error: " + flag_of(p.name) + ": takes no effect with " + told + "; leave one of them out\n")
+                "spectrum: error: " + flag_for(p.name) + ": takes no effect with " + told + "; leave one of them out\n")
           << args;
       EXPECT_FALSE(std::filesystem::exists(dir + "/out.csv")) << args;
       ++pairs;
@@ -146,7 +129,7 @@ TEST(DependentOptions, ChainOptionsAreRefusedWithTheChoiceThatOverridesThem) {
   EXPECT_GE(pairs, 20);
   // Each value alone runs (the refusal is the pair's, not the value's).
   for (const auto& [name, value] : values)
-    EXPECT_EQ(run_tool_in(dir, chain_run, "--quiet " + flag_of(name) + " " + value + " --output alone").exit_code, 0)
+    EXPECT_EQ(run_tool_in(dir, chain_run, "--quiet " + flag_for(name) + " " + value + " --output alone").exit_code, 0)
         << name;
 }
 

@@ -27,26 +27,6 @@
 namespace granular::testing {
 namespace {
 
-std::string tool_help(const std::string& tool) {
-  std::string command = "'";
-  command.append(tool_path(tool)).append("' --help");
-  std::string out;
-  if (FILE* p = ::popen(command.c_str(), "r")) {
-    char buffer[4096];
-    for (std::size_t n; (n = std::fread(buffer, 1, sizeof buffer, p)) > 0;) out.append(buffer, n);
-    ::pclose(p);
-  }
-  return out;
-}
-
-std::string flag_for(const std::string& parameter) {
-  std::string flag = "--";
-  flag.append(front_end_word(parameter));
-  for (std::size_t i = 2; i < flag.size(); ++i)
-    if (flag[i] == '_') flag[i] = '-';
-  return flag;
-}
-
 /// Each row of `table` but `skip` is a flag of `tool`'s --help followed (on its line) by the row's help.
 template <class C>
 void expect_rows_in_help(const std::string& tool, const ParameterTable<C>& table,

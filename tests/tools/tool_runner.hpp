@@ -11,6 +11,8 @@
 #include <sstream>
 #include <string>
 
+#include "granular/parameter_names.hpp"
+
 namespace granular::testing {
 
 struct ToolResult {
@@ -42,6 +44,28 @@ inline ToolResult run_tool(const std::string& tool, const std::string& args) { r
 /// Whether `args` read the chain from a file (--config or --radii), which then sets N.
 inline bool reads_chain_file(const std::string& args) {
   return args.find("--config") != std::string::npos || args.find("--radii") != std::string::npos;
+}
+
+/// What `tool --help` prints.
+inline std::string tool_help(const std::string& tool) {
+  std::string command = "'";  // (append: GCC 12 warns falsely of overlap in a chain of +)
+  command.append(tool_path(tool)).append("' --help");
+  std::string out;
+  if (FILE* p = ::popen(command.c_str(), "r")) {
+    char buffer[4096];
+    for (std::size_t n; (n = std::fread(buffer, 1, sizeof buffer, p)) > 0;) out.append(buffer, n);
+    ::pclose(p);
+  }
+  return out;
+}
+
+/// A tool's flag for the library's parameter `parameter` (its front-end word, '_' as '-').
+inline std::string flag_for(const std::string& parameter) {
+  std::string flag = "--";
+  flag.append(front_end_word(parameter));
+  for (std::size_t i = 2; i < flag.size(); ++i)
+    if (flag[i] == '_') flag[i] = '-';
+  return flag;
 }
 
 inline std::string read_file(const std::string& path) {
