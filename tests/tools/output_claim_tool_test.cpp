@@ -148,6 +148,27 @@ TEST(OutputClaim, FreshRemovesOnlyTheCheckpointsARunWrites) {
   std::filesystem::remove_all(dir);
 }
 
+TEST(OutputClaim, AKilledRunsHeaderTemporaryIsNotACheckpoint) {
+  // A kill between creating the checkpoint header's temporary and renaming it leaves only
+  // PREFIX.checkpoint.tmp.<pid>: nothing was finished, so --resume is refused saying so, and a run
+  // without it goes ahead and clears the leftover.
+  const std::string dir = scratch_folder("header-temporary"), prefix = dir + "/run";
+  const std::string job =
+      "--disorder A --N 101 --T 5e-4 --samples 20 --F0 0.1 --realizations 3 --bootstrap 20 --threads 1 --quiet";
+  const std::string leftover = prefix + ".checkpoint.tmp.4242";
+  std::ofstream(leftover) << "#granular-checkpoint {\"half\n";
+  const ToolResult resumed = run_tool("spreading", job + " --resume --output " + prefix);
+  EXPECT_EQ(resumed.exit_code, 2) << resumed.err;
+  EXPECT_NE(resumed.err.find("stopped before it finished anything"), std::string::npos) << resumed.err;
+  EXPECT_EQ(std::count(resumed.err.begin(), resumed.err.end(), '\n'), 1) << resumed.err;
+  EXPECT_FALSE(std::filesystem::exists(prefix + ".csv"));
+  const ToolResult again = run_tool("spreading", job + " --output " + prefix);
+  ASSERT_EQ(again.exit_code, 0) << again.err;
+  EXPECT_TRUE(std::filesystem::exists(prefix + ".csv"));
+  EXPECT_FALSE(std::filesystem::exists(leftover));
+  std::filesystem::remove_all(dir);
+}
+
 TEST(OutputClaim, ASymlinkAtTheLockIsRefusedAndItsTargetKept) {
   const std::string dir = scratch_folder("lock-link"), victim = dir + "/victim";
   std::ofstream(victim) << "a file of the user's\n";

@@ -255,10 +255,17 @@ std::vector<std::string> family(const std::string& base) { return CheckpointLog:
 }  // namespace
 
 CheckpointRecords CheckpointLog::load(const std::string& base, const std::string& parameters, bool accept_other_version) {
-  const auto files = family(base);
-  if (files.empty()) throw InvalidInput("resume", ": no checkpoint '" + base + "' to resume from");
+  const auto logs = family(base);
+  if (logs.empty()) {
+    // A kill before the header's rename leaves only its temporary: the run had finished nothing.
+    const bool started = !CheckpointLog::files(base, {.temporaries = true}).empty();
+    throw InvalidInput("resume", ": no checkpoint '" + base + "' to resume from" +
+                                     (started ? std::string(" (a run was stopped before it finished anything; start it "
+                                                            "again without it)")
+                                              : std::string()));
+  }
   CheckpointRecords all;
-  for (const std::string& path : files) {
+  for (const std::string& path : logs) {
     std::ifstream in(path, std::ios::binary);
     if (!in) throw IoError("cannot read checkpoint '" + path + "'");
     std::stringstream text;
