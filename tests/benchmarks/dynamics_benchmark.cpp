@@ -15,6 +15,7 @@
 #include "granular/chaos/lyapunov_spectrum.hpp"
 #include "granular/dynamics/damping.hpp"
 #include "granular/dynamics/initial_conditions.hpp"
+#include "granular/dynamics/lane_propagator.hpp"
 #include "granular/dynamics/observables.hpp"
 #include "granular/dynamics/propagator.hpp"
 #include "granular/dynamics/tangent_map.hpp"
@@ -207,6 +208,56 @@ void BM_RealizationSaba2c(benchmark::State& state) {
   state.counters["final_state_error"] = state_error;
 }
 BENCHMARK(BM_RealizationSaba2c)->Arg(0)->Arg(1)->ArgName("window")->Unit(benchmark::kMillisecond)->MinTime(2.0);
+
+// The same in vector lanes (lane_propagator.hpp): W = LanePropagator::width() realizations of the
+// paper's problem side by side (Anderson seed 1, realizations 0 … W − 1), so that a lane's rate
+// compares with BM_Saba2cStep and BM_BareBondKernel, and the time per realization with
+// BM_RealizationSaba2c.
+struct PaperLanes {
+  std::vector<Chain> chains;
+  std::vector<ForceLaw> laws;
+  std::vector<State> kicks;
+  PaperLanes() {
+    for (std::size_t l = 0; l < LanePropagator::width(); ++l) {
+      chains.push_back(
+          make_chain(radii_of(realization_configuration(Disorder::anderson, 0.5, beads, 1, l), 4.76e-3, 0.5), 10.0));
+      laws.push_back(make_force_law(ForceLawKind::hertz, chains.back()));
+      kicks.push_back(displacement_kick(chains.back(), centre_site(beads), 1e-7));
+    }
+  }
+};
+const PaperLanes& paper_lanes() {
+  static const PaperLanes lanes;
+  return lanes;
+}
+
+// Whole SABA2C steps on the full chains (window off): bond force evaluations per second per lane.
+void BM_LaneSaba2cStep(benchmark::State& state) {
+  const PaperLanes& b = paper_lanes();
+  LanePropagator p(b.laws, b.chains, saba2c(), tau, b.kicks, {false});
+  p.advance(2000);
+  const auto before = p.bond_updates(0);
+  for (auto _ : state) p.advance(100);
+  state.counters["bond_updates_per_s_per_lane"] =
+      benchmark::Counter(static_cast<double>(p.bond_updates(0) - before), benchmark::Counter::kIsRate);
+  state.counters["lanes"] = static_cast<double>(LanePropagator::width());
+}
+BENCHMARK(BM_LaneSaba2cStep)->Unit(benchmark::kMicrosecond);
+
+// W realizations of BM_RealizationSaba2c side by side: the time per realization is this / W.
+void BM_LaneRealizationsSaba2c(benchmark::State& state) {
+  const bool window = state.range(0) != 0;
+  const PaperLanes& b = paper_lanes();
+  for (auto _ : state) {
+    LanePropagator p(b.laws, b.chains, saba2c(), tau, b.kicks, {window});
+    p.advance(10000);
+    benchmark::DoNotOptimize(p.steps_done());
+  }
+  state.counters["ms_per_realization"] =
+      benchmark::Counter(1e3 / static_cast<double>(LanePropagator::width()),
+                         benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+}
+BENCHMARK(BM_LaneRealizationsSaba2c)->Arg(0)->Arg(1)->ArgName("window")->Unit(benchmark::kMillisecond)->MinTime(2.0);
 
 // Boost.Odeint's 4th-order symplectic RKN (McLachlan sb3a) with the same Hertz force kernel.
 class OdeintSb3a {

@@ -48,6 +48,24 @@ TEST(EnergySpread, HandValuesOfAOneSidedProfile) {
   EXPECT_DOUBLE_EQ(energy_spread(std::vector<double>{0, 0, 1, 3, 0}, 0).m2_site, (4.0 * 1 + 9.0 * 3) / 4);
 }
 
+TEST(EnergySpread, ReadingOnlyTheBeadsThatHoldEnergyGivesTheSameBits) {
+  // What the observers do with an active window: beads outside [begin, end) hold no energy.
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  for (int trial = 0; trial < 100; ++trial) {
+    const std::size_t n = 20 + trial % 50, begin = trial % 7, end = n - trial % 5;
+    std::vector<double> e(n, 0.0);
+    for (std::size_t i = begin; i < end; ++i) e[i] = std::pow(u(rng), 5) * 1e-9;
+    const std::size_t site = (begin + end) / 2;
+    const EnergySpread whole = energy_spread(e, site), part = energy_spread(e, site, begin, end);
+    EXPECT_EQ(part.total, whole.total);
+    EXPECT_EQ(part.centroid, whole.centroid);
+    EXPECT_EQ(part.m2_site, whole.m2_site);
+    EXPECT_EQ(part.m2_centroid, whole.m2_centroid);
+    EXPECT_EQ(part.ipr, whole.ipr);
+  }
+}
+
 TEST(EnergySpread, SiteMomentIsCentroidMomentPlusSquaredOffset) {
   // m̃2_site = m̃2_centroid + (n̄ − n0)² for any profile and any n0 (the parallel-axis theorem);
   // equal for a profile symmetric about n0. The code sums both moments directly.

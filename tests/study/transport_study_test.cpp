@@ -1,8 +1,12 @@
 #include "granular/study/transport_study.hpp"
 
+#include <string>
+#include <tuple>
+
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "granular/dynamics/lane_propagator.hpp"
 #include "granular/error.hpp"
 #include "granular/study/exponent_table.hpp"
 
@@ -46,6 +50,71 @@ TEST(TransportStudy, BitIdenticalForOneAndTwoThreads) {
   EXPECT_EQ(one.exponents->eta.mean_ld_realization_error, two.exponents->eta.mean_ld_realization_error);
   EXPECT_EQ(one.realizations, 6u);
   EXPECT_EQ(one.profile.mean.size(), 301u);
+}
+
+// Realizations side by side in vector lanes (spread_in_lanes.hpp) against one at a time: the same
+// bits in every mean, error and exponent, for two kicks and disorders, with batches and a tail.
+void expect_same_summary(const TransportSummary& a, const TransportSummary& b, const std::string& what) {
+  EXPECT_EQ(a.m2.mean, b.m2.mean) << what;
+  EXPECT_EQ(a.m2.standard_error, b.m2.standard_error) << what;
+  EXPECT_EQ(a.m2_centroid.mean, b.m2_centroid.mean) << what;
+  EXPECT_EQ(a.ipr.mean, b.ipr.mean) << what;
+  EXPECT_EQ(a.profile.mean, b.profile.mean) << what;
+  EXPECT_EQ(a.max_energy_error, b.max_energy_error) << what;
+  EXPECT_EQ(a.excluded, b.excluded) << what;
+  ASSERT_EQ(a.exponents.has_value(), b.exponents.has_value()) << what;
+  if (a.exponents) {
+    EXPECT_EQ(a.exponents->gamma_site.fit.value, b.exponents->gamma_site.fit.value) << what;
+    EXPECT_EQ(a.exponents->gamma_site.fit_realization_error, b.exponents->gamma_site.fit_realization_error) << what;
+    EXPECT_EQ(a.exponents->eta.fit.value, b.exponents->eta.fit.value) << what;
+  }
+}
+
+TEST(TransportStudy, RealizationsInLanesAreTheSameBitsAsOneAtATime) {
+  const std::size_t w = LanePropagator::width();
+  for (const auto& [disorder, f0, kick] :
+       {std::tuple{Disorder::anderson, 0.1, Kick::displacement}, std::tuple{Disorder::rdm2, 10.0, Kick::velocity}}) {
+    TransportCase c = small_case(disorder, f0);
+    c.kick = kick;
+    c.realizations = 2 * w + 3;  // two batches and a tail of three, one at a time
+    c.profile_realizations = w + 1;
+    RunOptions alone{.threads = 2};
+    alone.one_at_a_time = true;
+    const TransportSummary lanes = run_transport_study(c, {.threads = 2});
+    expect_same_summary(lanes, run_transport_study(c, alone), to_string(disorder));
+  }
+}
+
+TEST(TransportStudy, AFailedRealizationInALaneIsNamedOrLeftOutAsOneAtATime) {
+  TransportCase c = small_case(Disorder::anderson, 0.1);
+  c.realizations = 9;                           // a batch and one more (two batches of four on AVX)
+  c.dynamics.spread.max_energy_error = 1e-300;  // every realization's first sample trips the guard
+  RunOptions alone{.threads = 1};
+  alone.one_at_a_time = true;
+  std::string lanes_message, alone_message;
+  try {
+    run_transport_study(c, {.threads = 1});
+  } catch (const RealizationFailed& e) {
+    lanes_message = e.what();
+  }
+  try {
+    run_transport_study(c, alone);
+  } catch (const RealizationFailed& e) {
+    alone_message = e.what();
+  }
+  EXPECT_FALSE(lanes_message.empty());
+  EXPECT_EQ(lanes_message, alone_message);
+  // Skipped instead: every one left out, in both ways of running.
+  RunOptions skip{.threads = 1, .skip_failed = true};
+  alone.skip_failed = true;
+  for (const RunOptions& o : {skip, alone}) {
+    try {
+      run_transport_study(c, o);
+      ADD_FAILURE() << "a study of failed realizations only ran";
+    } catch (const NumericalError& e) {
+      EXPECT_NE(std::string(e.what()).find("every one of the 9 realizations failed"), std::string::npos) << e.what();
+    }
+  }
 }
 
 TEST(TransportStudy, HomogeneousPrecompressedEnsembleIsBallistic) {

@@ -70,19 +70,66 @@ class OnsiteSprings {
   std::vector<double> k_, q_;
 };
 
+/// The formulas below are written once for a value type T: double for one bond, or a native
+/// vector of doubles for one bond of several chains side by side (dynamics/detail/lane_kernels.hpp,
+/// which supplies ValueMath for its vector), so both give the same bits in every lane.
+template <class T>
+struct ValueMath;
+template <>
+struct ValueMath<double> {
+  static double root(double x) { return std::sqrt(x); }
+  static double positive_part(double x) { return std::max(x, 0.0); }  // branch-free (maxsd)
+};
+
+/// The restoring force k u + q u³ [N] of an on-site spring (the force is its negative) and its
+/// stiffness k + 3 q u² [N/m], with (`quartic`) or without the quartic part.
+template <bool quartic, class T>
+inline T onsite_restoring_of(T k, T q, T u) {
+  if constexpr (quartic) return (k + q * u * u) * u;
+  else return k * u;
+}
+template <bool quartic, class T>
+inline T onsite_hessian_of(T k, T q, T u) {
+  if constexpr (quartic) return k + 3 * q * u * u;
+  else return k;
+}
+
+/// Hertz's force beyond the static one, A [Δ + x]_+^{3/2} − rest, and (with it) its stiffness
+/// 1.5 A [Δ + x]_+^{1/2}, of a bond of contact factor A, overlap Δ and rest force `rest`.
+template <class T>
+inline T hertz_force_of(T contact, T overlap, T rest, T x) {
+  const T d = ValueMath<T>::positive_part(overlap + x);
+  return contact * d * ValueMath<T>::root(d) - rest;
+}
+template <class T>
+inline void hertz_force_stiffness_of(T contact, T overlap, T rest, T x, T& f, T& stiff) {
+  const T d = ValueMath<T>::positive_part(overlap + x);
+  const T s = ValueMath<T>::root(d);
+  f = contact * d * s - rest;
+  stiff = 1.5 * contact * s;
+}
+
+/// The polynomial force c1 x + c2 x² + c3 x³ and its stiffness c1 + 2 c2 x + 3 c3 x².
+template <class T>
+inline T polynomial_force_of(T c1, T c2, T c3, T x) {
+  return x * (c1 + x * (c2 + x * c3));
+}
+template <class T>
+inline T polynomial_stiffness_of(T c1, T c2, T c3, T x) {
+  return c1 + x * (2 * c2 + x * 3 * c3);
+}
+
 /// The restoring force k_n u + q_n u³ [N] of bead n's on-site spring (the force is its negative),
 /// its stiffness k_n + 3 q_n u² [N/m] and curvature 6 q_n u [N/m²], for kernels compiled with
 /// (`quartic`) or without the quartic part; without it they read k alone (q may be null) and are
 /// the expressions the linear springs always had.
 template <bool quartic>
 inline double onsite_restoring(const double* k, const double* q, std::size_t n, double u) {
-  if constexpr (quartic) return (k[n] + q[n] * u * u) * u;
-  else return k[n] * u;
+  return onsite_restoring_of<quartic>(k[n], quartic ? q[n] : 0.0, u);
 }
 template <bool quartic>
 inline double onsite_hessian(const double* k, const double* q, std::size_t n, double u) {
-  if constexpr (quartic) return k[n] + 3 * q[n] * u * u;
-  else return k[n];
+  return onsite_hessian_of<quartic>(k[n], quartic ? q[n] : 0.0, u);
 }
 inline double onsite_curvature(const double* q, std::size_t n, double u) { return 6 * q[n] * u; }
 
@@ -96,22 +143,18 @@ class HertzLaw : public OnsiteSprings {
     const double* __restrict rest;
     const double* onsite;          ///< k_n [N/m] per bead, null when the chain has no on-site springs
     const double* onsite_quartic;  ///< q_n [N/m³] per bead, null when the springs are linear
-    double force(std::size_t k, double x) const {
-      const double d = std::max(overlap[k] + x, 0.0);  // [δ]_+ branch-free (maxsd)
-      return contact[k] * d * std::sqrt(d) - rest[k];
-    }
+    double force(std::size_t k, double x) const { return hertz_force_of(contact[k], overlap[k], rest[k], x); }
     void force_stiffness(std::size_t k, double x, double& f, double& stiff) const {
-      const double d = std::max(overlap[k] + x, 0.0);
-      const double s = std::sqrt(d);
-      f = contact[k] * d * s - rest[k];
-      stiff = 1.5 * contact[k] * s;
+      hertz_force_stiffness_of(contact[k], overlap[k], rest[k], x, f, stiff);
     }
   };
   View view() const { return {contact_.data(), overlap_.data(), rest_.data(), onsite_data(), onsite_quartic_data()}; }
 
   double force(std::size_t k, double x) const { return view().force(k, x); }
   double stiffness(std::size_t k, double x) const {
-    return 1.5 * contact_[k] * std::sqrt(std::max(overlap_[k] + x, 0.0));
+    double f, stiff;
+    hertz_force_stiffness_of(contact_[k], overlap_[k], rest_[k], x, f, stiff);
+    return stiff;
   }
   double potential(std::size_t k, double x) const;
   double contact_force(std::size_t k, double x) const { return force(k, x) + rest_[k]; }
@@ -133,16 +176,16 @@ class PolynomialLaw : public OnsiteSprings {
     const double* __restrict c3;
     const double* onsite;          ///< k_n [N/m] per bead, null when the chain has no on-site springs
     const double* onsite_quartic;  ///< q_n [N/m³] per bead, null when the springs are linear
-    double force(std::size_t k, double x) const { return x * (c1[k] + x * (c2[k] + x * c3[k])); }
+    double force(std::size_t k, double x) const { return polynomial_force_of(c1[k], c2[k], c3[k], x); }
     void force_stiffness(std::size_t k, double x, double& f, double& stiff) const {
       f = force(k, x);
-      stiff = c1[k] + x * (2 * c2[k] + x * 3 * c3[k]);
+      stiff = polynomial_stiffness_of(c1[k], c2[k], c3[k], x);
     }
   };
   View view() const { return {c1_.data(), c2_.data(), c3_.data(), onsite_data(), onsite_quartic_data()}; }
 
   double force(std::size_t k, double x) const { return view().force(k, x); }
-  double stiffness(std::size_t k, double x) const { return c1_[k] + x * (2 * c2_[k] + x * 3 * c3_[k]); }
+  double stiffness(std::size_t k, double x) const { return polynomial_stiffness_of(c1_[k], c2_[k], c3_[k], x); }
   double potential(std::size_t k, double x) const { return x * x * (c1_[k] / 2 + x * (c2_[k] / 3 + x * c3_[k] / 4)); }
   double contact_force(std::size_t k, double x) const { return precompression_ + force(k, x); }
   std::size_t bonds() const { return c1_.size(); }

@@ -54,10 +54,12 @@ SpreadCentre parse_spread_centre(const std::string& name) { return spread_centre
 
 std::string to_string(SpreadCentre centre) { return std::string(spread_centre_names.name_of(centre)); }
 
-EnergySpread energy_spread(std::span<const double> energy, std::size_t site) {
+EnergySpread energy_spread(std::span<const double> energy, std::size_t site, std::size_t begin, std::size_t end) {
+  end = std::min(end, energy.size());
+  begin = std::min(begin, end);
   EnergySpread s;
   double weighted = 0, squares = 0;
-  for (std::size_t i = 0; i < energy.size(); ++i) {
+  for (std::size_t i = begin; i < end; ++i) {
     s.total += energy[i];
     weighted += static_cast<double>(i) * energy[i];
     squares += energy[i] * energy[i];
@@ -68,7 +70,7 @@ EnergySpread energy_spread(std::span<const double> energy, std::size_t site) {
   // identity m2_site = m2_centroid + (n̄ − n0)² is a test of the code, not of algebra.
   const double n0 = static_cast<double>(site);
   double about_centroid = 0, about_site = 0;
-  for (std::size_t i = 0; i < energy.size(); ++i) {
+  for (std::size_t i = begin; i < end; ++i) {
     const double n = static_cast<double>(i);
     about_centroid += (n - s.centroid) * (n - s.centroid) * energy[i];
     about_site += (n - n0) * (n - n0) * energy[i];

@@ -49,8 +49,11 @@ struct EnergySpread {
   double m2(SpreadCentre c) const { return c == SpreadCentre::site ? m2_site : m2_centroid; }
 };
 /// Spread of the energy profile `energy` about the excited bead `site` (0-based) and about its
-/// centroid. All zero when Σ E_n is not positive.
-EnergySpread energy_spread(std::span<const double> energy, std::size_t site);
+/// centroid. All zero when Σ E_n is not positive. Only beads [begin, end) are read: those outside
+/// must hold no energy (an active window's resting beads), and then the result is the whole
+/// profile's to the last bit (adding +0 changes no sum).
+EnergySpread energy_spread(std::span<const double> energy, std::size_t site, std::size_t begin = 0,
+                           std::size_t end = static_cast<std::size_t>(-1));
 
 /// Force on each bead: the mean of its two compressive contact forces (static + dynamic),
 /// (f_n + f_{n+1})/2, what a sensor embedded in the bead reads. At rest it is F0.

@@ -71,7 +71,9 @@ std::vector<std::uint64_t> EnergySpreadObserver::schedule(const RunPlan& plan) {
 void EnergySpreadObserver::observe(const Snapshot& now) {
   const auto energy = now.energy();
   const std::size_t n = energy.size();
-  const EnergySpread s = energy_spread(energy, site_);
+  // Only the window's beads and the one just outside each edge (half an edge bond) hold energy.
+  const EnergySpread s =
+      energy_spread(energy, site_, now.window_begin > 0 ? now.window_begin - 1 : 0, now.window_end + 1);
   const double h0 = now.initial_energy();
   const double h = s.total + unowned_wall_energy(now.law(), now.u) + now.dissipated;
   const double error = std::abs(h - h0) / h0;

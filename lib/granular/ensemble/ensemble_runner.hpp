@@ -4,7 +4,9 @@
 // resume. Returns the rows in realization order, so any reduction over them is independent of
 // thread count, interruption and resumption.
 #include <cstdint>
+#include <exception>
 #include <functional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -32,5 +34,19 @@ struct EnsembleOptions {
 /// (CheckpointLog::remove_all) once the outputs are written.
 std::vector<std::vector<double>> run_ensemble(
     const EnsembleOptions& options, const std::function<std::vector<double>(std::uint64_t r, int thread)>& work);
+
+/// One realization's outcome in a batch: its row, or what stopped it.
+struct BatchedRow {
+  std::vector<double> row;
+  std::exception_ptr failure;  ///< rethrown once the batch's other rows are logged
+};
+
+/// run_ensemble computing several realizations per call: `work(rs, thread)` returns one outcome
+/// per element of `rs` (up to `batch` of them, in order). The rows are logged as each batch ends;
+/// a failure in a batch is rethrown after its finished rows are kept. The result is run_ensemble's
+/// whenever each row is a function of its realization alone.
+std::vector<std::vector<double>> run_ensemble_in_batches(
+    const EnsembleOptions& options, std::size_t batch,
+    const std::function<std::vector<BatchedRow>(std::span<const std::uint64_t> rs, int thread)>& work);
 
 }  // namespace granular

@@ -27,6 +27,10 @@ struct RunOptions {
   /// Start afresh over the checkpoint an interrupted run left: without it (or `resume`) a run
   /// refuses to write over finished realizations (granular::InvalidInput naming `checkpoint`).
   bool fresh = false;
+  /// Integrate the realizations one at a time rather than side by side in vector lanes, where a
+  /// run can use them (spread_in_lanes.hpp: the ensembles of a splitting scheme without damping or
+  /// tangent map). The results are the same bits either way; the lanes are faster.
+  bool one_at_a_time = false;
 
   /// Whether the run continues from its checkpoint (`resume` or `accept_other_version`).
   bool resuming() const { return resume || accept_other_version; }

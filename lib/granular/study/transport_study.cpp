@@ -2,11 +2,17 @@
 
 #include <algorithm>
 #include <cmath>
+#include <exception>
+#include <optional>
 #include <span>
+#include <utility>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
+#include "granular/dynamics/lane_propagator.hpp"
 #include "granular/dynamics/spread.hpp"
+#include "granular/dynamics/spread_in_lanes.hpp"
 #include "granular/ensemble/ensemble_runner.hpp"
 #include "granular/error.hpp"
 #include "granular/model/chain.hpp"
@@ -139,15 +145,32 @@ struct RealizationRecord {
 
 /// One realization of `c`, measured by what the ensemble keeps: the energy spread, X1(t) with the
 /// tangent map, and E_n(T) when profiled.
+/// What the ensemble keeps of one realization, measured by these observers.
+struct RealizationObservers {
+  EnergySpreadObserver energy;
+  FinalStateObserver final_state;
+  std::optional<LyapunovObserver> lyapunov;
+
+  explicit RealizationObservers(const SpreadingRunConfig& run) : energy(run.spread) {
+    if (run.integration.lyapunov.enabled) lyapunov.emplace(lyapunov_settings(run));
+  }
+  std::vector<Observer*> list() {
+    std::vector<Observer*> out{&energy, &final_state};
+    if (lyapunov) out.push_back(&*lyapunov);
+    return out;
+  }
+  RealizationRecord record(const TransportCase& c, std::uint64_t r);
+};
+
 RealizationRecord measure_realization(const TransportCase& c, std::uint64_t r) {
   const Chain chain = c.chain.chain(r);
   const SpreadingRunConfig run = spreading_config(c);
-  EnergySpreadObserver energy(run.spread);
-  FinalStateObserver final_state;
-  std::optional<LyapunovObserver> lyapunov;
-  std::vector<Observer*> observers{&energy, &final_state};
-  if (run.integration.lyapunov.enabled) observers.push_back(&lyapunov.emplace(lyapunov_settings(run)));
-  spread(chain, kick(c, chain).initial, integration_config(run), observers);
+  RealizationObservers observers(run);
+  spread(chain, kick(c, chain).initial, integration_config(run), observers.list());
+  return observers.record(c, r);
+}
+
+RealizationRecord RealizationObservers::record(const TransportCase& c, std::uint64_t r) {
   RealizationRecord record{.m2_site = std::move(energy.m2),
                            .m2_centroid = std::move(energy.m2_centroid),
                            .ipr = std::move(energy.ipr),
@@ -159,6 +182,29 @@ RealizationRecord measure_realization(const TransportCase& c, std::uint64_t r) {
   if (lyapunov) record.mle = std::move(lyapunov->mle);
   if (r < c.profile_realizations) record.profile = std::move(final_state.energy);
   return record;
+}
+
+/// Realizations `rs` of `c` (as many as LanePropagator::width() at most), side by side in vector
+/// lanes: each record (or failure) the same bits as measure_realization's.
+std::vector<std::pair<RealizationRecord, std::exception_ptr>> measure_realizations_in_lanes(
+    const TransportCase& c, std::span<const std::uint64_t> rs) {
+  const SpreadingRunConfig run = spreading_config(c);
+  std::vector<Chain> chains;
+  std::vector<State> initials;
+  std::vector<RealizationObservers> observers;
+  std::vector<std::vector<Observer*>> lists;
+  chains.reserve(rs.size());
+  observers.reserve(rs.size());  // list() points into them
+  for (const std::uint64_t r : rs) {
+    chains.push_back(c.chain.chain(r));
+    initials.push_back(kick(c, chains.back()).initial);
+    lists.push_back(observers.emplace_back(run).list());
+  }
+  const std::vector<LaneRun> runs = spread_in_lanes(chains, initials, integration_config(run), lists);
+  std::vector<std::pair<RealizationRecord, std::exception_ptr>> out;
+  for (std::size_t l = 0; l < rs.size(); ++l)
+    out.emplace_back(runs[l].failure ? RealizationRecord{} : observers[l].record(c, rs[l]), runs[l].failure);
+  return out;
 }
 
 /// The non-empty `field` of every record, in order (views: the records hold the series).
@@ -235,15 +281,32 @@ TransportSummary run_transport_study(const TransportCase& c, const StudyRunOptio
   ensemble.parameters = describe(c).dump();
   ensemble.progress = options.progress;
   ensemble.cancelled = options.cancelled;
-  std::vector<std::vector<double>> rows = run_ensemble(ensemble, [&](std::uint64_t r, int) {
+  // A failed realization says which chain, so it can be replayed alone; or is logged as failed
+  // (an empty row): left out, listed.
+  const auto failed = [&](std::uint64_t r, const std::exception_ptr& failure) -> BatchedRow {
     try {
-      return measure_realization(c, r).row();
+      std::rethrow_exception(failure);
     } catch (const NumericalError& e) {
-      // Say which chain, so it can be replayed alone; or log it as failed: left out, listed.
-      if (options.skip_failed) return std::vector<double>{};
-      throw RealizationFailed(c, r, e.what());
+      if (options.skip_failed) return {};
+      return {{}, std::make_exception_ptr(RealizationFailed(c, r, e.what()))};
     }
-  });
+  };
+  const bool lanes = !options.one_at_a_time && runs_in_lanes(integration_config(config));
+  std::vector<std::vector<double>> rows =
+      run_ensemble_in_batches(ensemble, lanes ? LanePropagator::width() : 1, [&](std::span<const std::uint64_t> rs, int) {
+        std::vector<BatchedRow> out;
+        if (rs.size() > 1) {
+          for (auto& [record, failure] : measure_realizations_in_lanes(c, rs))
+            out.push_back(failure ? failed(rs[out.size()], failure) : BatchedRow{record.row(), nullptr});
+          return out;
+        }
+        try {
+          out.push_back({measure_realization(c, rs[0]).row(), nullptr});
+        } catch (const NumericalError&) {
+          out.push_back(failed(rs[0], std::current_exception()));
+        }
+        return out;
+      });
   if (!MpiContext::instance().root()) return s;
 
   const bool with_mle = c.dynamics.integration.lyapunov.enabled;

@@ -1,6 +1,6 @@
 #include "granular/linear/detail/twisted_lanes.hpp"
 
-#include "granular/linear/detail/vector_lanes.hpp"
+#include "granular/parallel/detail/vector_lanes.hpp"
 
 #include <algorithm>
 #include <cmath>

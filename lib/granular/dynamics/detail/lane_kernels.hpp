@@ -1,0 +1,152 @@
+#pragma once
+// The drift–kick kernels of blocked_kernels.hpp for W chains of one length side by side, one chain
+// per vector lane (parallel/detail/vector_lanes.hpp). Arrays are interleaved: element i of lane l
+// is at [i · W + l]. Each lane has its own active window [lo_l, hi_l): the loops run over the
+// union of the windows, and a lane's beads outside its own window are left exactly as they are,
+// its accelerations there read as 0 — what the one-chain kernels do by not visiting them. Every
+// lane therefore gets the bits the one-chain kernel gives its chain (the force laws' formulas are
+// written once for both, force_law.hpp; no FMA contraction in this library), which
+// tests/dynamics/lane_propagator_test.cpp checks for every scheme, law and window.
+//
+// Unlike the one-chain kernels these run fused, bond and bead in one pass: a lane's previous bond
+// force stays in a register instead of being stored and read back, which in one chain would read
+// a vector's neighbour element right after storing it (blocked_kernels.hpp).
+#include <cstddef>
+
+#include "granular/dynamics/force_law.hpp"
+#include "granular/parallel/detail/vector_lanes.hpp"
+
+namespace granular {
+
+template <>
+struct ValueMath<detail::lanes::V> {
+  static detail::lanes::V root(const detail::lanes::V& x) { return detail::lanes::root(x); }
+  static detail::lanes::V positive_part(const detail::lanes::V& x) { return detail::lanes::positive_part(x); }
+};
+
+namespace detail::lane_kernels {
+
+using lanes::load;
+using lanes::M;
+using lanes::select;
+using lanes::store;
+using lanes::V;
+using lanes::W;
+
+/// The bond laws of W chains, interleaved: Hertz's (contact, overlap, rest) or the polynomial's
+/// (c1, c2, c3) per bond; k_n and q_n of the on-site springs per bead (null when none).
+struct LaneLaw {
+  const double* __restrict p1;
+  const double* __restrict p2;
+  const double* __restrict p3;
+  const double* __restrict onsite;
+  const double* __restrict onsite_quartic;
+};
+
+template <bool hertz>
+inline V bond_force(const LaneLaw& law, std::size_t k, const V& x) {
+  const std::size_t at = k * W;
+  if constexpr (hertz) return hertz_force_of<V>(load(law.p1 + at), load(law.p2 + at), load(law.p3 + at), x);
+  else return polynomial_force_of<V>(load(law.p1 + at), load(law.p2 + at), load(law.p3 + at), x);
+}
+
+template <bool hertz>
+inline void bond_force_stiffness(const LaneLaw& law, std::size_t k, const V& x, V& f, V& stiff) {
+  const std::size_t at = k * W;
+  const V p1 = load(law.p1 + at), p2 = load(law.p2 + at), p3 = load(law.p3 + at);
+  if constexpr (hertz) {
+    hertz_force_stiffness_of<V>(p1, p2, p3, x, f, stiff);
+  } else {
+    f = polynomial_force_of<V>(p1, p2, p3, x);
+    stiff = polynomial_stiffness_of<V>(p1, p2, p3, x);
+  }
+}
+
+template <bool quartic>
+inline V onsite_restoring_lanes(const LaneLaw& law, std::size_t bead, const V& u) {
+  return onsite_restoring_of<quartic, V>(load(law.onsite + bead * W),
+                                         quartic ? load(law.onsite_quartic + bead * W) : V{}, u);
+}
+template <bool quartic>
+inline V onsite_hessian_lanes(const LaneLaw& law, std::size_t bead, const V& u) {
+  return onsite_hessian_of<quartic, V>(load(law.onsite + bead * W), quartic ? load(law.onsite_quartic + bead * W) : V{},
+                                       u);
+}
+
+/// The lanes whose window holds bead `i`.
+inline M inside(std::size_t i, const M& lo, const M& hi) {
+  const M at = M{} + static_cast<long>(i);
+  return (at >= lo) & (at < hi);
+}
+
+// v += h F/m, then u += d v, on beads [LO, HI) (the union of the windows lo, hi). u is padded as
+// in blocked_kernels.hpp: u[(k)·W + l] is bead k−1 of lane l, rows 0 and N+1 the walls.
+template <bool hertz, bool grounded, bool quartic>
+void kick_and_drift(const LaneLaw& law, double* __restrict u, double* __restrict v, const double* __restrict im,
+                    const M& lo, const M& hi, std::size_t LO, std::size_t HI, double h, double d) {
+  V previous = bond_force<hertz>(law, LO, load(u + LO * W) - load(u + (LO + 1) * W));
+  for (std::size_t k = LO + 1; k <= HI; ++k) {
+    const V uk = load(u + k * W);  // bead k − 1, before its drift
+    const V fk = bond_force<hertz>(law, k, uk - load(u + (k + 1) * W));
+    V force = previous - fk;
+    if constexpr (grounded) force -= onsite_restoring_lanes<quartic>(law, k - 1, uk);
+    const V v_old = load(v + (k - 1) * W);
+    const V v_new = select(inside(k - 1, lo, hi), v_old + h * load(im + (k - 1) * W) * force, v_old);
+    store(v + (k - 1) * W, v_new);
+    store(u + k * W, uk + d * v_new);  // v = 0 outside a lane's window: u stays
+    previous = fk;
+  }
+}
+
+// The corrector of blocked_kernels.hpp (docs/physics.md, "Nonlinear dynamics"), then u += d v, on
+// beads [LO, HI). A lane's accelerations outside its window are 0, as the one-chain kernel's
+// never-written a[lo] and a[hi+1] are.
+template <bool hertz, bool grounded, bool quartic>
+void correct_and_drift(const LaneLaw& law, double* __restrict u, double* __restrict v, const double* __restrict im,
+                       const M& lo, const M& hi, std::size_t LO, std::size_t HI, double c, double d) {
+  // Bond j + 1 joins beads j and j + 1 (padded rows j + 1 and j + 2); bead j's acceleration needs
+  // bonds j and j + 1, and bead j − 1's correction needs the accelerations of beads j − 2 … j.
+  V f_left, s_left;  // bond j
+  bond_force_stiffness<hertz>(law, LO, load(u + LO * W) - load(u + (LO + 1) * W), f_left, s_left);
+  V s_before{};               // bond j − 1
+  V a_before2{}, a_before{};  // beads j − 2, j − 1
+  V u_before{};               // bead j − 1, before its drift
+  for (std::size_t j = LO; j < HI; ++j) {
+    const V uj = load(u + (j + 1) * W);
+    V f_right, s_right;
+    bond_force_stiffness<hertz>(law, j + 1, uj - load(u + (j + 2) * W), f_right, s_right);
+    V force = f_left - f_right;
+    if constexpr (grounded) force -= onsite_restoring_lanes<quartic>(law, j, uj);
+    const V a = select(inside(j, lo, hi), load(im + j * W) * force, V{});
+    if (j > LO) {  // bead j − 1, now that a_j is known
+      const std::size_t i = j - 1;
+      V g = s_before * (a_before2 - a_before) - s_left * (a_before - a);
+      if constexpr (grounded) g -= onsite_hessian_lanes<quartic>(law, i, u_before) * a_before;
+      const V v_old = load(v + i * W);
+      const V v_new = select(inside(i, lo, hi), v_old + c * load(im + i * W) * g, v_old);
+      store(v + i * W, v_new);
+      store(u + j * W, u_before + d * v_new);
+    }
+    s_before = s_left;
+    f_left = f_right;
+    s_left = s_right;
+    a_before2 = a_before;
+    a_before = a;
+    u_before = uj;
+  }
+  // The last bead, HI − 1: the acceleration beyond it (another lane's bead, or the wall) is 0.
+  const std::size_t i = HI - 1;
+  V g = s_before * (a_before2 - a_before) - s_left * (a_before - V{});
+  if constexpr (grounded) g -= onsite_hessian_lanes<quartic>(law, i, u_before) * a_before;
+  const V v_old = load(v + i * W);
+  const V v_new = select(inside(i, lo, hi), v_old + c * load(im + i * W) * g, v_old);
+  store(v + i * W, v_new);
+  store(u + HI * W, u_before + d * v_new);
+}
+
+inline void drift_only(double* __restrict u, const double* __restrict v, std::size_t LO, std::size_t HI, double d) {
+  for (std::size_t i = LO; i < HI; ++i) store(u + (i + 1) * W, load(u + (i + 1) * W) + d * load(v + i * W));
+}
+
+}  // namespace detail::lane_kernels
+}  // namespace granular

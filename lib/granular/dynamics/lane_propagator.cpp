@@ -1,0 +1,222 @@
+// The splitting scheme on W chains side by side (lane_propagator.hpp): the step sequence of
+// splitting_propagator.cpp, with the lane kernels of detail/lane_kernels.hpp.
+#include "granular/dynamics/lane_propagator.hpp"
+
+#include <algorithm>
+#include <string>
+#include <variant>
+
+#include "granular/dynamics/detail/lane_kernels.hpp"
+#include "granular/dynamics/observables.hpp"
+#include "granular/error.hpp"
+
+namespace granular {
+
+namespace {
+
+namespace lk = detail::lane_kernels;
+using lk::W;
+
+/// Calls `run(hertz, grounded, quartic)` with the three as compile-time constants.
+template <class Run>
+void with_kernel(bool hertz, bool grounded, bool quartic, Run&& run) {
+  const auto on = [&](auto h) {
+    if (quartic) run(h, std::true_type{}, std::true_type{});
+    else if (grounded) run(h, std::true_type{}, std::false_type{});
+    else run(h, std::false_type{}, std::false_type{});
+  };
+  if (hertz) on(std::true_type{});
+  else on(std::false_type{});
+}
+
+lk::M as_lanes(const std::vector<std::size_t>& x) {
+  lk::M out{};
+  for (std::size_t l = 0; l < W; ++l) out[l] = static_cast<long>(x[l]);
+  return out;
+}
+
+}  // namespace
+
+std::size_t LanePropagator::width() { return W; }
+
+LanePropagator::LanePropagator(std::span<const ForceLaw> laws, std::span<const Chain> chains,
+                               const SplittingScheme& scheme, double time_step, std::span<const State> initials,
+                               const ActiveWindow& window)
+    : scheme_(scheme), tau_(time_step), n_(chains.empty() ? 0 : chains.front().size()), lanes_(chains.size()),
+      window_(window) {
+  if (chains.empty() || chains.size() > W)
+    throw InvalidInput("lanes", " " + std::to_string(chains.size()) + ": between 1 and " + std::to_string(W) +
+                                    " chains side by side on this CPU");
+  if (laws.size() != lanes_ || initials.size() != lanes_)
+    throw InvalidInput("lanes: " + std::to_string(lanes_) + " chains, " + std::to_string(laws.size()) + " laws, " +
+                       std::to_string(initials.size()) + " initial states");
+  if (scheme.drift.size() != scheme.kick.size() + 1 || scheme.kick.empty())
+    throw InvalidInput("scheme " + scheme.name + ": needs s kicks and s+1 drifts");
+  if (window.enabled && !(window.threshold >= 0)) throw InvalidInput("active window threshold must be >= 0");
+  hertz_ = std::holds_alternative<HertzLaw>(laws[0]);
+  grounded_ = granular::grounded(laws[0]);
+  quartic_ = std::visit([](const auto& l) { return l.quartic(); }, laws[0]);
+  for (std::size_t l = 0; l < lanes_; ++l) {
+    if (chains[l].size() != n_)
+      throw InvalidInput("lanes: chain " + std::to_string(l) + " has " + std::to_string(chains[l].size()) +
+                         " beads, chain 0 " + std::to_string(n_) + "; side by side they must have one length");
+    const bool same_kind = std::holds_alternative<HertzLaw>(laws[l]) == hertz_ &&
+                           granular::grounded(laws[l]) == grounded_ &&
+                           std::visit([](const auto& x) { return x.quartic(); }, laws[l]) == quartic_;
+    if (!same_kind) throw InvalidInput("lanes: the laws of chains 0 and " + std::to_string(l) + " are of other kinds");
+    validate_propagation(chains[l], time_step, initials[l]);
+  }
+
+  u_.assign((n_ + 2) * W, 0.0);
+  v_.assign(n_ * W, 0.0);
+  im_.assign(n_ * W, 0.0);
+  p1_.assign((n_ + 1) * W, 0.0);
+  p2_.assign((n_ + 1) * W, 0.0);
+  p3_.assign((n_ + 1) * W, 0.0);
+  if (grounded_) k_.assign(n_ * W, 0.0);
+  if (quartic_) q_.assign(n_ * W, 0.0);
+  lo_.assign(W, 0);
+  hi_.assign(W, 0);  // idle lanes: an empty window, never touched
+  kinetic_limit_.assign(W, 0.0);
+  bond_updates_.assign(W, 0);
+  // Idle lanes carry lane 0's coefficients at rest: finite numbers, every force 0.
+  for (std::size_t l = 0; l < W; ++l) {
+    const std::size_t from = l < lanes_ ? l : 0;
+    std::visit(
+        [&](const auto& law) {
+          const auto view = law.view();
+          const double* p[3];
+          if constexpr (std::is_same_v<std::decay_t<decltype(law)>, HertzLaw>)
+            p[0] = view.contact, p[1] = view.overlap, p[2] = view.rest;
+          else p[0] = view.c1, p[1] = view.c2, p[2] = view.c3;
+          for (std::size_t k = 0; k <= n_; ++k) {
+            p1_[k * W + l] = p[0][k];
+            p2_[k * W + l] = p[1][k];
+            p3_[k * W + l] = p[2][k];
+          }
+          for (std::size_t i = 0; i < n_; ++i) {
+            if (grounded_) k_[i * W + l] = view.onsite[i];
+            if (quartic_) q_[i * W + l] = view.onsite_quartic[i];
+          }
+        },
+        laws[from]);
+    for (std::size_t i = 0; i < n_; ++i) im_[i * W + l] = chains[from].inverse_mass[i];
+    if (l >= lanes_) continue;
+    const State& s = initials[l];
+    for (std::size_t i = 0; i < n_; ++i) {
+      u_[(i + 1) * W + l] = s.u[i];
+      v_[i * W + l] = s.v[i];
+    }
+    // The window as make_splitting_propagator opens it (splitting_propagator.cpp).
+    lo_[l] = 0;
+    hi_[l] = n_;
+    if (window_.enabled && window_.guard > 0) {
+      std::size_t first = n_, last = 0;
+      for (std::size_t i = 0; i < n_; ++i)
+        if (s.u[i] != 0 || s.v[i] != 0) {
+          first = std::min(first, i);
+          last = i;
+        }
+      if (first < n_) {
+        lo_[l] = first > window_.guard ? first - window_.guard : 0;
+        hi_[l] = std::min(n_, last + 1 + window_.guard);
+      }
+      kinetic_limit_[l] = 2 * window_.threshold * total_energy(laws[l], chains[l], s);
+    }
+  }
+  union_lo_ = *std::min_element(lo_.begin(), lo_.begin() + static_cast<long>(lanes_));
+  union_hi_ = *std::max_element(hi_.begin(), hi_.begin() + static_cast<long>(lanes_));
+}
+
+void LanePropagator::advance(std::size_t steps) {
+  if (steps == 0) return;
+  const double tau = tau_;
+  const double g = scheme_.corrector * tau * tau * tau;
+  const auto& a = scheme_.drift;
+  const auto& b = scheme_.kick;
+  const std::size_t last = b.size() - 1;
+  // The sequence of SplittingPropagator::advance, merged drifts and correctors alike.
+  if (g != 0) correct(g, a[0] * tau);
+  else drift(a[0] * tau);
+  for (std::size_t step = 0; step < steps; ++step) {
+    const bool more = step + 1 < steps;
+    for (std::size_t j = 0; j <= last; ++j) {
+      double after = a[j + 1] * tau;
+      if (j == last && g == 0 && more) after += a[0] * tau;
+      kick(b[j] * tau, after);
+    }
+    if (g != 0) correct(more ? 2 * g : g, more ? a[0] * tau : 0.0);
+    if (window_.enabled) grow_windows();
+  }
+  steps_ += steps;
+}
+
+void LanePropagator::drift(double d) { lk::drift_only(u_.data(), v_.data(), union_lo_, union_hi_, d); }
+
+void LanePropagator::kick(double h, double d) {
+  const lk::LaneLaw law{p1_.data(), p2_.data(), p3_.data(), k_.data(), q_.data()};
+  const lk::M lo = as_lanes(lo_), hi = as_lanes(hi_);
+  with_kernel(hertz_, grounded_, quartic_, [&](auto hz, auto gr, auto qu) {
+    lk::kick_and_drift<decltype(hz)::value, decltype(gr)::value, decltype(qu)::value>(law, u_.data(), v_.data(),
+                                                                                      im_.data(), lo, hi, union_lo_,
+                                                                                      union_hi_, h, d);
+  });
+  count_updates();
+}
+
+void LanePropagator::correct(double c, double d) {
+  const lk::LaneLaw law{p1_.data(), p2_.data(), p3_.data(), k_.data(), q_.data()};
+  const lk::M lo = as_lanes(lo_), hi = as_lanes(hi_);
+  with_kernel(hertz_, grounded_, quartic_, [&](auto hz, auto gr, auto qu) {
+    lk::correct_and_drift<decltype(hz)::value, decltype(gr)::value, decltype(qu)::value>(law, u_.data(), v_.data(),
+                                                                                         im_.data(), lo, hi, union_lo_,
+                                                                                         union_hi_, c, d);
+  });
+  count_updates();
+}
+
+void LanePropagator::count_updates() {
+  for (std::size_t l = 0; l < lanes_; ++l) bond_updates_[l] += hi_[l] - lo_[l] + 1;
+}
+
+bool LanePropagator::disturbed(std::size_t lane, std::size_t begin, std::size_t end) const {
+  for (std::size_t i = begin; i < end; ++i) {
+    const double v = v_[i * W + lane];
+    if (v * v > kinetic_limit_[lane] * im_[i * W + lane]) return true;
+  }
+  return false;
+}
+
+void LanePropagator::grow_windows() {
+  const std::size_t guard = window_.guard;
+  bool grew = false;
+  for (std::size_t l = 0; l < lanes_; ++l) {
+    std::size_t& lo = lo_[l];
+    std::size_t& hi = hi_[l];
+    if (lo == 0 && hi == n_) continue;
+    const std::size_t lo_was = lo, hi_was = hi;
+    if (lo > 0 && disturbed(l, lo, std::min(lo + guard, hi))) lo = lo > guard ? lo - guard : 0;
+    if (hi < n_ && disturbed(l, hi > lo + guard ? hi - guard : lo, hi)) hi = std::min(n_, hi + guard);
+    grew = grew || lo != lo_was || hi != hi_was;
+  }
+  if (!grew) return;
+  union_lo_ = *std::min_element(lo_.begin(), lo_.begin() + static_cast<long>(lanes_));
+  union_hi_ = *std::max_element(hi_.begin(), hi_.begin() + static_cast<long>(lanes_));
+}
+
+void LanePropagator::copy_lane(std::size_t lane, std::vector<double>& u, std::vector<double>& v) const {
+  u.assign(n_, 0.0);
+  v.assign(n_, 0.0);
+  refresh_lane(lane, u, v);
+}
+
+void LanePropagator::refresh_lane(std::size_t lane, std::vector<double>& u, std::vector<double>& v) const {
+  if (lane >= lanes_) throw InvalidInput("lane", " " + std::to_string(lane) + ": only " + std::to_string(lanes_));
+  if (u.size() != n_ || v.size() != n_) throw InvalidInput("lane", ": vectors of another length to refresh");
+  for (std::size_t i = lo_[lane]; i < hi_[lane]; ++i) {
+    u[i] = u_[(i + 1) * W + lane];
+    v[i] = v_[i * W + lane];
+  }
+}
+
+}  // namespace granular
