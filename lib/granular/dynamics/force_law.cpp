@@ -46,12 +46,6 @@ HertzLaw::HertzLaw(const Chain& chain)
   }
 }
 
-double HertzLaw::potential(std::size_t k, double x) const {
-  // φ = (2/5) A [δ]_+^{5/2} − (2/5) A Δ^{5/2} − F0 x, with F0 the rest force of this bond.
-  const double d = std::max(overlap_[k] + x, 0.0);
-  return 0.4 * contact_[k] * d * d * std::sqrt(d) - rest_potential_[k] - rest_[k] * x;
-}
-
 PolynomialLaw::PolynomialLaw(const Chain& chain, int degree)
     : OnsiteSprings(chain), precompression_(chain.precompression) {
   const std::size_t n = chain.bonds();

@@ -188,17 +188,40 @@ bool LanePropagator::disturbed(std::size_t lane, std::size_t begin, std::size_t 
 }
 
 void LanePropagator::grow_windows() {
+  // SplittingPropagator::grow_window for every lane: the outermost `guard` beads on the left, the
+  // window widened where one is disturbed, then on the right (from the new left edge). When the
+  // lanes' edges lie close together (an ensemble kicked at one site) their rows are read once, as
+  // vectors; else lane by lane.
   const std::size_t guard = window_.guard;
+  std::vector<std::size_t> begin(W, 0), end(W, 0);
+  const auto check = [&](bool left) {
+    lk::M active{}, hit{};
+    std::size_t first = n_, last = 0;
+    for (std::size_t l = 0; l < lanes_; ++l) {
+      const std::size_t lo = lo_[l], hi = hi_[l];
+      const bool open = left ? lo > 0 : hi < n_;
+      begin[l] = !open ? 0 : left ? lo : (hi > lo + guard ? hi - guard : lo);
+      end[l] = !open ? 0 : left ? std::min(lo + guard, hi) : hi;
+      if (begin[l] == end[l]) continue;
+      active[l] = -1;
+      first = std::min(first, begin[l]);
+      last = std::max(last, end[l]);
+    }
+    if (first >= last) return hit;
+    if (last - first <= 4 * guard)
+      return lk::disturbed(v_.data(), im_.data(), lk::load(kinetic_limit_.data()), as_lanes(begin), as_lanes(end),
+                           active, first, last);
+    for (std::size_t l = 0; l < lanes_; ++l)
+      if (active[l] && disturbed(l, begin[l], end[l])) hit[l] = -1;
+    return hit;
+  };
   bool grew = false;
-  for (std::size_t l = 0; l < lanes_; ++l) {
-    std::size_t& lo = lo_[l];
-    std::size_t& hi = hi_[l];
-    if (lo == 0 && hi == n_) continue;
-    const std::size_t lo_was = lo, hi_was = hi;
-    if (lo > 0 && disturbed(l, lo, std::min(lo + guard, hi))) lo = lo > guard ? lo - guard : 0;
-    if (hi < n_ && disturbed(l, hi > lo + guard ? hi - guard : lo, hi)) hi = std::min(n_, hi + guard);
-    grew = grew || lo != lo_was || hi != hi_was;
-  }
+  const lk::M left = check(true);
+  for (std::size_t l = 0; l < lanes_; ++l)
+    if (left[l]) lo_[l] = lo_[l] > guard ? lo_[l] - guard : 0, grew = true;
+  const lk::M right = check(false);
+  for (std::size_t l = 0; l < lanes_; ++l)
+    if (right[l]) hi_[l] = std::min(n_, hi_[l] + guard), grew = true;
   if (!grew) return;
   union_lo_ = *std::min_element(lo_.begin(), lo_.begin() + static_cast<long>(lanes_));
   union_hi_ = *std::max_element(hi_.begin(), hi_.begin() + static_cast<long>(lanes_));

@@ -144,6 +144,19 @@ void correct_and_drift(const LaneLaw& law, double* __restrict u, double* __restr
   store(u + HI * W, u_before + d * v_new);
 }
 
+/// The lanes (of those in `active`) with a bead in their own [begin, end) whose kinetic energy
+/// passes the window's threshold: v² > limit / m, as SplittingPropagator's disturbed() judges it.
+/// Rows first … last − 1 must cover every active lane's range.
+inline M disturbed(const double* __restrict v, const double* __restrict im, const V& limit, const M& begin,
+                   const M& end, const M& active, std::size_t first, std::size_t last) {
+  M hit{};
+  for (std::size_t i = first; i < last; ++i) {
+    const V vi = load(v + i * W);
+    hit |= (vi * vi > limit * load(im + i * W)) & inside(i, begin, end);
+  }
+  return hit & active;
+}
+
 inline void drift_only(double* __restrict u, const double* __restrict v, std::size_t LO, std::size_t HI, double d) {
   for (std::size_t i = LO; i < HI; ++i) store(u + (i + 1) * W, load(u + (i + 1) * W) + d * load(v + i * W));
 }
