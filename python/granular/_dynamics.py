@@ -85,13 +85,13 @@ def _chain(table, out, given):
 
 
 def _run(threads=0, checkpoint=None, resume=False, resume_other_version=False, progress=False, fresh=False,
-         skip_failed=False):
+         skip_failed=False, one_at_a_time=False):
     """The library's run options (their table: _core._RunOptions), where the run checkpoints and its progress bar."""
     r = _core.RunOptions()
     r.threads = threads
     r.checkpoint = "" if checkpoint is None else str(checkpoint)
     r.resume, r.resume_other_version, r.progress, r.fresh = resume, resume_other_version, progress, fresh
-    r.skip_failed = skip_failed
+    r.skip_failed, r.one_at_a_time = skip_failed, one_at_a_time
     return r
 
 
@@ -206,7 +206,8 @@ spreading.__doc__ = (
 
 def transport(*, realizations=100, ic=_CASE.kick, beta=_CASE.beta, site=None, dt=None,
               fit=(_CASE.fit_begin, _CASE.fit_end), profile=False, threads=0, checkpoint=None, resume=False,
-              resume_other_version=False, fresh=False, skip_failed=False, progress=False, **keywords):
+              resume_other_version=False, fresh=False, skip_failed=False, one_at_a_time=False, progress=False,
+              **keywords):
     chain, given, modes = split_keywords(keywords, [_TRANSPORT_CHAIN, _RUN, _MODE], "transport")
     words = _core._kicked_chain_defaults()  # made one case with `case` by the spreading tool's rule, in C++
     _chain(_TRANSPORT_CHAIN, words, chain)
@@ -214,7 +215,7 @@ def transport(*, realizations=100, ic=_CASE.kick, beta=_CASE.beta, site=None, dt
     case = _case(_RUN, given, beta, site, dt, fit)
     case.kick, case.realizations = ic, realizations
     _MODE.set(case.mode, modes)
-    run = _run(threads, checkpoint, resume, resume_other_version, progress, fresh, skip_failed)
+    run = _run(threads, checkpoint, resume, resume_other_version, progress, fresh, skip_failed, one_at_a_time)
     return _transport(_core._transport(words, case, profile, run), profile)
 
 
@@ -250,6 +251,8 @@ transport.__doc__ = (
     "neither resuming nor fresh=True (discard it) refuses to start over a checkpoint an interrupted run left\n"
     "    skip_failed: leave a realization that fails numerically out of the means (a warning and "
     "metadata['ensemble']['failed_excluded'] say which) instead of raising granular.NumericalError\n"
+    "    one_at_a_time: integrate the realizations one at a time instead of side by side in vector lanes (the "
+    "same results to the last bit; the lanes are faster)\n"
     "    progress: draw a progress bar\n"
     "Returns a granular.Transport: t [s], m2, m2_centroid, ipr, energy_error with their standard errors (_se), "
     "profile, gamma, eta (with realization errors gamma_real_err, eta_real_err from the bootstrap) and every report "
@@ -264,7 +267,7 @@ def exponent_table(*, chains=_TABLE.chains, F0=_TABLE.precompressions,
                    profile_F0=_TABLE.profile_precompressions, profile_realizations=_TABLE.profile_realizations,
                    compare_paper=False, threads=0,
                    checkpoint=None, resume=False, resume_other_version=False, fresh=False, skip_failed=False,
-                   progress=False, **keywords):
+                   one_at_a_time=False, progress=False, **keywords):
     chain, given, modes = split_keywords(keywords, [_TABLE_CHAIN, _RUN, _MODE], "exponent_table")
     table = _core.ExponentTableConfig()  # the kinds and kicks read by the tool's rows, in C++
     table.chains = [] if chains is None or chains == "none" else chains
@@ -279,7 +282,7 @@ def exponent_table(*, chains=_TABLE.chains, F0=_TABLE.precompressions,
     table.profile_realizations = _core._size(profile_realizations, "profile_realizations")
     table.base.realizations = _core._size(realizations, "realizations", 1)
     _case(_RUN, given, beta, site, dt, fit, table.base)
-    run = _run(threads, checkpoint, resume, resume_other_version, progress, fresh, skip_failed)
+    run = _run(threads, checkpoint, resume, resume_other_version, progress, fresh, skip_failed, one_at_a_time)
     # compare_paper: the path of a table in the paper's format, or True for the paper's own ("": no comparison)
     paper = compare_paper if isinstance(compare_paper, str) else _core._paper_table if compare_paper else ""
     return ExponentTable(_core._exponent_table(words, table, paper, run))
@@ -305,7 +308,9 @@ exponent_table.__doc__ = (
     "resume=True continues an interrupted table (resume_other_version=True: also one another granular version "
     "or commit made; fresh=True: discard it and start again, which a run not resuming otherwise refuses); skip_failed: "
     "leave a realization that fails numerically out of its cell's means (a warning and the case's "
-    "failed_excluded in metadata say which) instead of raising granular.NumericalError; progress: a progress bar\n"
+    "failed_excluded in metadata say which) instead of raising granular.NumericalError; one_at_a_time: the "
+    "realizations one at a time instead of side by side in vector lanes (the same bits; lanes are faster); "
+    "progress: a progress bar\n"
     "Returns a granular.ExponentTable: table (the tool's CSV columns as arrays; with mle also mle, mle_real_err, "
     "mle_sd: the mean X1(T) [1/s], its standard error over realizations, their standard deviation), curves (with "
     "mle also mle, mle_se: <X1(t)> [1/s] and its standard error), profiles, markdown, paper (the comparison, with "

@@ -96,6 +96,17 @@ def test_ensemble_equals_the_spreading_tool(tools):
     assert t.gamma_real_err == meta["gamma_real_err"] > 0  # the realization bootstrap
 
 
+def test_realizations_in_lanes_are_the_same_bits_as_one_at_a_time():
+    # 19 realizations: whole batches of 8 (4, 2: the CPU's lanes) side by side, and the rest alone.
+    lanes = gr.transport(disorder="RDM1", N=151, realizations=19, threads=2, profile=True, **SHORT)
+    alone = gr.transport(disorder="RDM1", N=151, realizations=19, threads=1, profile=True, one_at_a_time=True,
+                         **SHORT)
+    for key in ("m2", "m2_se", "ipr", "energy_error", "m2_centroid"):
+        assert_identical(lanes[key], alone[key])
+    assert_identical(lanes.profile["energy"], alone.profile["energy"])
+    assert lanes.gamma == alone.gamma and lanes.gamma_real_err == alone.gamma_real_err
+
+
 @pytest.mark.parametrize("keyword, text", [("types", "4.76e-3:0.5,2.38e-3:0.5"),
                                            ("polydisperse", "uniform:3e-3:4.76e-3")])
 def test_ensemble_of_a_bead_distribution_equals_the_spreading_tool(tools, keyword, text):
