@@ -37,6 +37,7 @@
 #include "granular/dynamics/force_law.hpp"
 #include "granular/dynamics/initial_conditions.hpp"
 #include "granular/dynamics/integrator.hpp"
+#include "granular/dynamics/lane_propagator.hpp"
 #include "granular/dynamics/observables.hpp"
 #include "granular/dynamics/observer.hpp"
 #include "granular/dynamics/observers.hpp"
@@ -45,6 +46,7 @@
 #include "granular/dynamics/scheme.hpp"
 #include "granular/dynamics/spectral_density.hpp"
 #include "granular/dynamics/spread.hpp"
+#include "granular/dynamics/spread_in_lanes.hpp"
 
 #include "granular/klein_gordon/klein_gordon.hpp"
 #include "granular/klein_gordon/klein_gordon_run.hpp"
