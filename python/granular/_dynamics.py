@@ -25,6 +25,9 @@ _RUN = TableKeywords(_CASE, skip=_OWN + _OUTPUT_ROWS + _ONE_RUN_ROWS)
 _ONE_RUN = TableKeywords(_CASE, skip=_OWN + _OUTPUT_ROWS)  # granular.spreading: with both
 _OUTPUTS = TableKeywords(_CASE, only=_OUTPUT_ROWS, skip=("forces_at",))  # forces_at: a list of beads here
 _MODE = TableKeywords(_core.ModeKick())  # a mode kick's mode, near, energy (mode_khz: near's former keyword)
+# How an ensemble runs: the rows of the library's long_run_parameters() (threads, resume, resume_other_version,
+# fresh, skip_failed, one_at_a_time), each with RunOptions' C++ default. The checkpoint is the front end's.
+_LONG_RUN = TableKeywords(_core.RunOptions(), skip=("checkpoint", "progress"))
 # The chains of an ensemble: the rows of the library's chain table (chain_parameters()) that the spreading tool takes
 # with --realizations, each with the kicked case's C++ default (kicked_chain_defaults(): N 2501). Not the files
 # (config, radii: one given chain, which an ensemble refuses) nor the realization (an ensemble runs 0..R-1).
@@ -84,15 +87,19 @@ def _chain(table, out, given):
     return out
 
 
-def _run(threads=0, checkpoint=None, resume=False, resume_other_version=False, progress=False, fresh=False,
-         skip_failed=False, one_at_a_time=False):
-    """The library's run options (their table: _core._RunOptions), where the run checkpoints and its progress bar."""
-    r = _core.RunOptions()
-    r.threads = threads
+def _run_options(given, checkpoint=None, progress=False):
+    """The library's run options: the rows of `given` (keyword: value, _LONG_RUN's), where the run checkpoints and
+    its progress bar."""
+    r = _LONG_RUN.make(given)
     r.checkpoint = "" if checkpoint is None else str(checkpoint)
-    r.resume, r.resume_other_version, r.progress, r.fresh = resume, resume_other_version, progress, fresh
-    r.skip_failed, r.one_at_a_time = skip_failed, one_at_a_time
+    r.progress = progress
     return r
+
+
+def _run(threads=0, checkpoint=None, resume=False, resume_other_version=False, progress=False, fresh=False):
+    """_run_options for the studies that spell their run keywords themselves."""
+    return _run_options(dict(threads=threads, resume=resume, resume_other_version=resume_other_version, fresh=fresh),
+                        checkpoint, progress)
 
 
 def spreading(chain, *, ic=_CASE.kick, beta=_CASE.beta, site=None, dt=None, fit=(_CASE.fit_begin, _CASE.fit_end),
@@ -205,17 +212,15 @@ spreading.__doc__ = (
 
 
 def transport(*, realizations=100, ic=_CASE.kick, beta=_CASE.beta, site=None, dt=None,
-              fit=(_CASE.fit_begin, _CASE.fit_end), profile=False, threads=0, checkpoint=None, resume=False,
-              resume_other_version=False, fresh=False, skip_failed=False, one_at_a_time=False, progress=False,
-              **keywords):
-    chain, given, modes = split_keywords(keywords, [_TRANSPORT_CHAIN, _RUN, _MODE], "transport")
+              fit=(_CASE.fit_begin, _CASE.fit_end), profile=False, checkpoint=None, progress=False, **keywords):
+    chain, given, modes, long_run = split_keywords(keywords, [_TRANSPORT_CHAIN, _RUN, _MODE, _LONG_RUN], "transport")
     words = _core._kicked_chain_defaults()  # made one case with `case` by the spreading tool's rule, in C++
     _chain(_TRANSPORT_CHAIN, words, chain)
     realizations = _core._size(realizations, "realizations", 1)
     case = _case(_RUN, given, beta, site, dt, fit)
     case.kick, case.realizations = ic, realizations
     _MODE.set(case.mode, modes)
-    run = _run(threads, checkpoint, resume, resume_other_version, progress, fresh, skip_failed, one_at_a_time)
+    run = _run_options(long_run, checkpoint, progress)
     return _transport(_core._transport(words, case, profile, run), profile)
 
 
@@ -244,16 +249,13 @@ transport.__doc__ = (
     "quasiperiodic chain, as the spreading tool's chain options; None: none), realization r of seed `seed` each\n"
     "    realizations: R; ic: 'displacement' | 'velocity' | 'mode'\n" + _MODE_DOC + _DYNAMICS_DOC +
     "    profile: also average the site energies E_n(T)\n"
-    "    threads: worker threads (0: every core); results do not depend on it\n"
     "    checkpoint: a file logging each finished realization (removed once the run completes); resume=True "
     "continues an interrupted run from it and gives exactly the uninterrupted result; a checkpoint another "
     "granular version made is refused unless resume_other_version=True (both are named in metadata); a run "
     "neither resuming nor fresh=True (discard it) refuses to start over a checkpoint an interrupted run left\n"
-    "    skip_failed: leave a realization that fails numerically out of the means (a warning and "
-    "metadata['ensemble']['failed_excluded'] say which) instead of raising granular.NumericalError\n"
-    "    one_at_a_time: integrate the realizations one at a time instead of side by side in vector lanes (the "
-    "same results to the last bit; the lanes are faster)\n"
     "    progress: draw a progress bar\n"
+    "    threads, resume, ..., skip_failed (a failed realization left out: metadata['ensemble']['failed_excluded'] "
+    "says which), one_at_a_time: the run-control keywords below\n"
     "Returns a granular.Transport: t [s], m2, m2_centroid, ipr, energy_error with their standard errors (_se), "
     "profile, gamma, eta (with realization errors gamma_real_err, eta_real_err from the bootstrap) and every report "
     "under 'exponents', mle and mle_se (the mean X1(t) [1/s] over realizations and its standard error; None "
@@ -265,10 +267,9 @@ def exponent_table(*, chains=_TABLE.chains, F0=_TABLE.precompressions,
                    types_rule=None, chain_name=None, ic=_TABLE.ic, realizations=_TABLE.base.realizations,
                    beta=_CASE.beta, site=None, dt=None, fit=(_CASE.fit_begin, _CASE.fit_end),
                    profile_F0=_TABLE.profile_precompressions, profile_realizations=_TABLE.profile_realizations,
-                   compare_paper=False, threads=0,
-                   checkpoint=None, resume=False, resume_other_version=False, fresh=False, skip_failed=False,
-                   one_at_a_time=False, progress=False, **keywords):
-    chain, given, modes = split_keywords(keywords, [_TABLE_CHAIN, _RUN, _MODE], "exponent_table")
+                   compare_paper=False, checkpoint=None, progress=False, **keywords):
+    chain, given, modes, long_run = split_keywords(keywords, [_TABLE_CHAIN, _RUN, _MODE, _LONG_RUN],
+                                                   "exponent_table")
     table = _core.ExponentTableConfig()  # the kinds and kicks read by the tool's rows, in C++
     table.chains = [] if chains is None or chains == "none" else chains
     table.ic = ic
@@ -282,7 +283,7 @@ def exponent_table(*, chains=_TABLE.chains, F0=_TABLE.precompressions,
     table.profile_realizations = _core._size(profile_realizations, "profile_realizations")
     table.base.realizations = _core._size(realizations, "realizations", 1)
     _case(_RUN, given, beta, site, dt, fit, table.base)
-    run = _run(threads, checkpoint, resume, resume_other_version, progress, fresh, skip_failed, one_at_a_time)
+    run = _run_options(long_run, checkpoint, progress)
     # compare_paper: the path of a table in the paper's format, or True for the paper's own ("": no comparison)
     paper = compare_paper if isinstance(compare_paper, str) else _core._paper_table if compare_paper else ""
     return ExponentTable(_core._exponent_table(words, table, paper, run))
@@ -304,13 +305,9 @@ exponent_table.__doc__ = (
     "    profile_F0, profile_realizations: F0s whose E_n(T) is averaged, over how many realizations (None: none)\n"
     "    compare_paper: True (or the path of a table in its format) to compare gamma with the paper's Table I "
     "(z-scores with both error sources)\n"
-    "    threads (0: every core); checkpoint: a prefix, case i logs to <prefix>.<i> (removed once done); "
-    "resume=True continues an interrupted table (resume_other_version=True: also one another granular version "
-    "or commit made; fresh=True: discard it and start again, which a run not resuming otherwise refuses); skip_failed: "
-    "leave a realization that fails numerically out of its cell's means (a warning and the case's "
-    "failed_excluded in metadata say which) instead of raising granular.NumericalError; one_at_a_time: the "
-    "realizations one at a time instead of side by side in vector lanes (the same bits; lanes are faster); "
-    "progress: a progress bar\n"
+    "    checkpoint: a prefix, case i logs to <prefix>.<i> (removed once done); resume=True continues an "
+    "interrupted table (the run-control keywords below; a failed realization skipped with skip_failed is named "
+    "by the case's failed_excluded in metadata); progress: a progress bar\n"
     "Returns a granular.ExponentTable: table (the tool's CSV columns as arrays; with mle also mle, mle_real_err, "
     "mle_sd: the mean X1(T) [1/s], its standard error over realizations, their standard deviation), curves (with "
     "mle also mle, mle_se: <X1(t)> [1/s] and its standard error), profiles, markdown, paper (the comparison, with "
@@ -328,6 +325,9 @@ for _job in (spreading, transport, exponent_table):
     with_keywords(_job, [_ONE_RUN if _job is spreading else _RUN], _RUN_HEADING, after="fit")
 with_keywords(spreading, [_OUTPUTS], "Output keywords (the library's spreading_output_parameters(), with the "
               "observers' C++ defaults)", after="forces_at")
+_LONG_RUN_HEADING = "Run-control keywords (the library's long_run_parameters(), with RunOptions' C++ defaults)"
+for _job in (transport, exponent_table):
+    with_keywords(_job, [_LONG_RUN], _LONG_RUN_HEADING, after="checkpoint")
 with_keywords(transport, [_TRANSPORT_CHAIN], _CHAIN_HEADING.format("the spreading tool's chains, "
               "kicked_chain_defaults()"), first=True)
 with_keywords(exponent_table, [_TABLE_CHAIN], _CHAIN_HEADING.format("the exponents tool's chains, "

@@ -132,3 +132,16 @@ def test_keywords_are_grouped_as_users_think(function, landmarks):
     names = list(inspect.signature(function).parameters)
     at = [names.index(name) for name in landmarks]
     assert at == sorted(at), [names[i] for i in sorted(at)]
+
+
+@pytest.mark.parametrize("function", [gr.transport, gr.exponent_table])
+def test_run_control_keywords_are_the_long_run_tables_rows(function):
+    """threads, resume, ..., one_at_a_time: each row of the library's long_run_parameters() (but the checkpoint,
+    the front end's) is a keyword with RunOptions' C++ default, and the docstring says so: a row added in lib/
+    reaches both with no line written in python/granular."""
+    signature = inspect.signature(function).parameters
+    defaults = core.RunOptions()
+    for name, keyword, help_text in core._RunOptions._parameters:
+        assert keyword in signature, f"{function.__name__} takes no run keyword {keyword}"
+        assert signature[keyword].default == getattr(defaults, name), keyword
+        assert f"{keyword}: {help_text}" in function.__doc__
