@@ -4,10 +4,12 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <span>
 #include <string>
 
 #include "granular/dynamics/force_law.hpp"
 #include "granular/dynamics/initial_conditions.hpp"
+#include "granular/dynamics/lane_propagator.hpp"
 #include "granular/dynamics/observables.hpp"
 #include "granular/dynamics/propagator.hpp"
 #include "granular/dynamics/scheme.hpp"
@@ -36,16 +38,75 @@ void validate(const KleinGordonRunConfig& c) {
                                          " values, above 2e8 (1.6 GB): fewer `samples` or sites");
 }
 
-KleinGordonRun run_klein_gordon(const KleinGordonRunConfig& config, std::uint64_t realization) {
-  validate(config);
+namespace {
+
+/// Realization r's chain and its start, as run_klein_gordon integrates them.
+struct KleinGordonStart {
+  Chain chain;
+  State start;
+};
+KleinGordonStart klein_gordon_start(const KleinGordonRunConfig& config, std::uint64_t realization) {
   KleinGordonParameters p = config.chain;
   p.realization = realization;
-  const Chain chain = klein_gordon(p);
+  Chain chain = klein_gordon(p);
+  const std::size_t n = chain.size(), centre = centre_site(n);
+  State start = config.block == 0 ? site_energy_kick(chain, centre, config.energy)
+                                  : block_energy_kick(chain, centre - std::min(centre, (config.block - 1) / 2),
+                                                      config.block, config.energy, p.seed, realization);
+  return {std::move(chain), std::move(start)};
+}
+
+/// What a run keeps of the state `s` at time t (mle: Λ(t), with the tangent map).
+void sample(const KleinGordonRunConfig& config, const ForceLaw& law, const Chain& chain, double h0, const State& s,
+            double t, const double* mle, KleinGordonRun& out) {
+  const std::vector<double> energy = site_energies(law, chain, s);
+  const EnergySpread spread = energy_spread(energy, centre_site(chain.size()));
+  out.time.push_back(t);
+  out.m2.push_back(spread.m2_centroid);
+  out.participation.push_back(spread.ipr > 0 ? 1 / spread.ipr : 0.0);
+  if (mle) out.mle.push_back(*mle);
+  if (config.energy_map) out.energy_map.insert(out.energy_map.end(), energy.begin(), energy.end());
+  out.max_energy_error = std::max(out.max_energy_error, std::abs(total_energy(law, chain, s) - h0) / h0);
+}
+
+/// Realizations `rs` of `config` (not mle; at most LanePropagator::width()) side by side in vector
+/// lanes, each run the same bits as run_klein_gordon's; `maps[i]`: whether rs[i] keeps its energy map.
+std::vector<KleinGordonRun> run_klein_gordon_in_lanes(const KleinGordonRunConfig& config,
+                                                      std::span<const std::uint64_t> rs, const std::vector<bool>& maps) {
+  std::vector<Chain> chains;
+  std::vector<State> starts;
+  std::vector<ForceLaw> laws;
+  std::vector<double> h0;
+  for (const std::uint64_t r : rs) {
+    KleinGordonStart k = klein_gordon_start(config, r);
+    chains.push_back(std::move(k.chain));
+    starts.push_back(std::move(k.start));
+    laws.push_back(make_force_law(ForceLawKind::linear, chains.back()));
+    h0.push_back(total_energy(laws.back(), chains.back(), starts.back()));
+  }
+  LanePropagator lanes(laws, chains, saba2c(), config.time_step, starts, {.enabled = false});
+  std::vector<KleinGordonRun> out(rs.size());
+  KleinGordonRunConfig plain = config, mapped = config;
+  plain.energy_map = false, mapped.energy_map = true;
+  State s;
+  for (const std::uint64_t step : config.sample_steps) {
+    if (step > lanes.steps_done()) lanes.advance(static_cast<std::size_t>(step - lanes.steps_done()));
+    const double t = static_cast<double>(lanes.steps_done()) * config.time_step;  // Propagator::time()
+    for (std::size_t l = 0; l < rs.size(); ++l) {
+      lanes.copy_lane(l, s.u, s.v);
+      sample(maps[l] ? mapped : plain, laws[l], chains[l], h0[l], s, t, nullptr, out[l]);
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+KleinGordonRun run_klein_gordon(const KleinGordonRunConfig& config, std::uint64_t realization) {
+  validate(config);
+  const auto [chain, start] = klein_gordon_start(config, realization);
   const ForceLaw law = make_force_law(ForceLawKind::linear, chain);
   const std::size_t n = chain.size(), centre = centre_site(n);
-  const State start = config.block == 0 ? site_energy_kick(chain, centre, config.energy)
-                                        : block_energy_kick(chain, centre - std::min(centre, (config.block - 1) / 2),
-                                                            config.block, config.energy, p.seed, realization);
   std::unique_ptr<Propagator> plain;
   std::unique_ptr<TangentPropagator> tangent;
   if (config.mle)
@@ -60,15 +121,8 @@ KleinGordonRun run_klein_gordon(const KleinGordonRunConfig& config, std::uint64_
   for (const std::uint64_t step : config.sample_steps) {
     if (step > done) run.advance(static_cast<std::size_t>(step - done));
     done = std::max(done, step);
-    const State s = run.state();
-    const std::vector<double> energy = site_energies(law, chain, s);
-    const EnergySpread spread = energy_spread(energy, centre);
-    out.time.push_back(run.time());
-    out.m2.push_back(spread.m2_centroid);
-    out.participation.push_back(spread.ipr > 0 ? 1 / spread.ipr : 0.0);
-    if (config.mle) out.mle.push_back(tangent->mle());
-    if (config.energy_map) out.energy_map.insert(out.energy_map.end(), energy.begin(), energy.end());
-    out.max_energy_error = std::max(out.max_energy_error, std::abs(total_energy(law, chain, s) - h0) / h0);
+    const double mle = config.mle ? tangent->mle() : 0.0;
+    sample(config, law, chain, h0, run.state(), run.time(), config.mle ? &mle : nullptr, out);
   }
   return out;
 }
@@ -80,8 +134,25 @@ KleinGordonEnsemble klein_gordon_ensemble(const KleinGordonRunConfig& config, st
   out.runs.resize(count);
   KleinGordonRunConfig others = config;  // realization 0's map only: the rest would cost R times the memory
   others.energy_map = false;
-  parallel_realizations(count, threads,
-                        [&](std::size_t r, int) { out.runs[r] = run_klein_gordon(r == 0 ? config : others, r); });
+  if (config.mle) {
+    parallel_realizations(count, threads,
+                          [&](std::size_t r, int) { out.runs[r] = run_klein_gordon(r == 0 ? config : others, r); });
+  } else {  // LanePropagator::width() realizations at a time, the rest one by one (threads share them)
+    const std::size_t width = LanePropagator::width(), batches = count / width;
+    parallel_realizations(batches + count % width, threads, [&](std::size_t b, int) {
+      if (b >= batches) {
+        const std::size_t r = batches * width + (b - batches);
+        out.runs[r] = run_klein_gordon(r == 0 ? config : others, r);
+        return;
+      }
+      std::vector<std::uint64_t> rs(width);
+      std::vector<bool> maps(width, false);
+      for (std::size_t l = 0; l < width; ++l) rs[l] = b * width + l;
+      maps[0] = b == 0 && config.energy_map;
+      auto runs = run_klein_gordon_in_lanes(config, rs, maps);
+      for (std::size_t l = 0; l < width; ++l) out.runs[rs[l]] = std::move(runs[l]);
+    });
+  }
   const std::size_t samples = config.sample_steps.size();
   out.time = out.runs.front().time;
   out.m2.assign(samples, 0.0);
