@@ -4,9 +4,12 @@
 
 #include <algorithm>
 #include <string>
+#include <tuple>
 #include <variant>
 
 #include "granular/dynamics/detail/lane_kernels.hpp"
+#include "granular/dynamics/detail/splitting_sequence.hpp"
+#include "granular/dynamics/detail/window_rule.hpp"
 #include "granular/dynamics/observables.hpp"
 #include "granular/error.hpp"
 
@@ -107,20 +110,8 @@ LanePropagator::LanePropagator(std::span<const ForceLaw> laws, std::span<const C
       u_[(i + 1) * W + l] = s.u[i];
       v_[i * W + l] = s.v[i];
     }
-    // The window as make_splitting_propagator opens it (splitting_propagator.cpp).
-    lo_[l] = 0;
-    hi_[l] = n_;
+    std::tie(lo_[l], hi_[l]) = detail::opened_window(s, window_);
     if (window_.enabled && window_.guard > 0) {
-      std::size_t first = n_, last = 0;
-      for (std::size_t i = 0; i < n_; ++i)
-        if (s.u[i] != 0 || s.v[i] != 0) {
-          first = std::min(first, i);
-          last = i;
-        }
-      if (first < n_) {
-        lo_[l] = first > window_.guard ? first - window_.guard : 0;
-        hi_[l] = std::min(n_, last + 1 + window_.guard);
-      }
       kinetic_limit_[l] = 2 * window_.threshold * total_energy(laws[l], chains[l], s);
     }
   }
@@ -130,24 +121,12 @@ LanePropagator::LanePropagator(std::span<const ForceLaw> laws, std::span<const C
 
 void LanePropagator::advance(std::size_t steps) {
   if (steps == 0) return;
-  const double tau = tau_;
-  const double g = scheme_.corrector * tau * tau * tau;
-  const auto& a = scheme_.drift;
-  const auto& b = scheme_.kick;
-  const std::size_t last = b.size() - 1;
-  // The sequence of SplittingPropagator::advance, merged drifts and correctors alike.
-  if (g != 0) correct(g, a[0] * tau);
-  else drift(a[0] * tau);
-  for (std::size_t step = 0; step < steps; ++step) {
-    const bool more = step + 1 < steps;
-    for (std::size_t j = 0; j <= last; ++j) {
-      double after = a[j + 1] * tau;
-      if (j == last && g == 0 && more) after += a[0] * tau;
-      kick(b[j] * tau, after);
-    }
-    if (g != 0) correct(more ? 2 * g : g, more ? a[0] * tau : 0.0);
-    if (window_.enabled) grow_windows();
-  }
+  detail::splitting_sequence(
+      scheme_, tau_, steps, [&](double h, double d) { kick(h, d); }, [&](double c, double d) { correct(c, d); },
+      [&](double d) { drift(d); },
+      [&] {
+        if (window_.enabled) grow_windows();
+      });
   steps_ += steps;
 }
 
@@ -181,8 +160,7 @@ void LanePropagator::count_updates() {
 
 bool LanePropagator::disturbed(std::size_t lane, std::size_t begin, std::size_t end) const {
   for (std::size_t i = begin; i < end; ++i) {
-    const double v = v_[i * W + lane];
-    if (v * v > kinetic_limit_[lane] * im_[i * W + lane]) return true;
+    if (detail::disturbs(v_[i * W + lane], kinetic_limit_[lane], im_[i * W + lane])) return true;
   }
   return false;
 }
@@ -198,11 +176,12 @@ void LanePropagator::grow_windows() {
     lk::M active{}, hit{};
     std::size_t first = n_, last = 0;
     for (std::size_t l = 0; l < lanes_; ++l) {
-      const std::size_t lo = lo_[l], hi = hi_[l];
-      const bool open = left ? lo > 0 : hi < n_;
-      begin[l] = !open ? 0 : left ? lo : (hi > lo + guard ? hi - guard : lo);
-      end[l] = !open ? 0 : left ? std::min(lo + guard, hi) : hi;
-      if (begin[l] == end[l]) continue;
+      std::tie(begin[l], end[l]) =
+          left ? detail::left_edge(lo_[l], hi_[l], guard) : detail::right_edge(lo_[l], hi_[l], n_, guard);
+      if (begin[l] >= end[l]) {
+        begin[l] = end[l] = 0;
+        continue;
+      }
       active[l] = -1;
       first = std::min(first, begin[l]);
       last = std::max(last, end[l]);
@@ -218,10 +197,10 @@ void LanePropagator::grow_windows() {
   bool grew = false;
   const lk::M left = check(true);
   for (std::size_t l = 0; l < lanes_; ++l)
-    if (left[l]) lo_[l] = lo_[l] > guard ? lo_[l] - guard : 0, grew = true;
+    if (left[l]) lo_[l] = detail::grown_lo(lo_[l], guard), grew = true;
   const lk::M right = check(false);
   for (std::size_t l = 0; l < lanes_; ++l)
-    if (right[l]) hi_[l] = std::min(n_, hi_[l] + guard), grew = true;
+    if (right[l]) hi_[l] = detail::grown_hi(hi_[l], n_, guard), grew = true;
   if (!grew) return;
   union_lo_ = *std::min_element(lo_.begin(), lo_.begin() + static_cast<long>(lanes_));
   union_hi_ = *std::max_element(hi_.begin(), hi_.begin() + static_cast<long>(lanes_));

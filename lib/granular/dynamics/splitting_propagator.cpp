@@ -4,8 +4,11 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <tuple>
 
 #include "granular/dynamics/detail/blocked_kernels.hpp"
+#include "granular/dynamics/detail/splitting_sequence.hpp"
+#include "granular/dynamics/detail/window_rule.hpp"
 #include "granular/dynamics/observables.hpp"
 #include "granular/dynamics/propagator.hpp"
 #include "granular/error.hpp"
@@ -41,19 +44,8 @@ class SplittingPropagator final : public Propagator {
     std::copy(initial.u.begin(), initial.u.end(), up_.begin() + 1);
     f_.assign(n_ + 1, 0.0);
     stiff_.assign(n_ + 1, 0.0);
-    lo_ = 0;
-    hi_ = n_;
+    std::tie(lo_, hi_) = detail::opened_window(initial, window_);
     if (window_.enabled && window_.guard > 0) {
-      std::size_t first = n_, last = 0;
-      for (std::size_t i = 0; i < n_; ++i)
-        if (initial.u[i] != 0 || initial.v[i] != 0) {
-          first = std::min(first, i);
-          last = i;
-        }
-      if (first < n_) {
-        lo_ = first > window_.guard ? first - window_.guard : 0;
-        hi_ = std::min(n_, last + 1 + window_.guard);
-      }
       // Compare m v² / 2 > θ H0 as v² > 2 θ H0 / m without a division per bead.
       kinetic_limit_ = 2 * window_.threshold * initial_energy;
     }
@@ -61,26 +53,12 @@ class SplittingPropagator final : public Propagator {
 
   void advance(std::size_t steps) override {
     if (steps == 0) return;
-    const double tau = tau_;
-    const double g = scheme_.corrector * tau * tau * tau;
-    const auto& a = scheme_.drift;
-    const auto& b = scheme_.kick;
-    const std::size_t last = b.size() - 1;
-    // Every drift follows a kick or a corrector and is fused into its velocity loop; the last
-    // drift of a step merges with the first of the next (no corrector), and the end corrector
-    // of a step merges with the start corrector of the next (2 g τ³).
-    if (g != 0) correct(g, a[0] * tau);
-    else drift(a[0] * tau);
-    for (std::size_t step = 0; step < steps; ++step) {
-      const bool more = step + 1 < steps;
-      for (std::size_t j = 0; j <= last; ++j) {
-        double after = a[j + 1] * tau;
-        if (j == last && g == 0 && more) after += a[0] * tau;
-        kick(b[j] * tau, after);
-      }
-      if (g != 0) correct(more ? 2 * g : g, more ? a[0] * tau : 0.0);
-      if (window_.enabled && (lo_ > 0 || hi_ < n_)) grow_window();
-    }
+    detail::splitting_sequence(
+        scheme_, tau_, steps, [&](double h, double d) { kick(h, d); }, [&](double c, double d) { correct(c, d); },
+        [&](double d) { drift(d); },
+        [&] {
+          if (window_.enabled && (lo_ > 0 || hi_ < n_)) grow_window();
+        });
     steps_ += steps;
   }
 
@@ -108,14 +86,16 @@ class SplittingPropagator final : public Propagator {
 
   bool disturbed(std::size_t begin, std::size_t end) const {
     for (std::size_t i = begin; i < end; ++i)
-      if (v_[i] * v_[i] > kinetic_limit_ * im_[i]) return true;
+      if (detail::disturbs(v_[i], kinetic_limit_, im_[i])) return true;
     return false;
   }
 
   void grow_window() {
     const std::size_t guard = window_.guard;
-    if (lo_ > 0 && disturbed(lo_, std::min(lo_ + guard, hi_))) lo_ = lo_ > guard ? lo_ - guard : 0;
-    if (hi_ < n_ && disturbed(hi_ > lo_ + guard ? hi_ - guard : lo_, hi_)) hi_ = std::min(n_, hi_ + guard);
+    if (const auto [b, e] = detail::left_edge(lo_, hi_, guard); b < e && disturbed(b, e))
+      lo_ = detail::grown_lo(lo_, guard);
+    if (const auto [b, e] = detail::right_edge(lo_, hi_, n_, guard); b < e && disturbed(b, e))
+      hi_ = detail::grown_hi(hi_, n_, guard);
   }
 
   Law law_;

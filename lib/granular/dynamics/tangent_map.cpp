@@ -8,6 +8,7 @@
 #include <variant>
 
 #include "granular/dynamics/detail/blocked_kernels.hpp"
+#include "granular/dynamics/detail/splitting_sequence.hpp"
 #include "granular/error.hpp"
 
 namespace granular {
@@ -278,43 +279,34 @@ class SplittingTangentPropagator final : public TangentPropagator {
     const double* qs = view.onsite_quartic;
     // The Hessian entries further vectors read: k_n, or k_n + 3 q_n u_n² as the orbit's pass left them.
     const double* hs = quartic ? onsite_hessian_.data() : ks;
-    const double tau = tau_;
-    const double g = scheme_.corrector * tau * tau * tau;
-    const auto& a = scheme_.drift;
-    const auto& b = scheme_.kick;
-    const std::size_t last = b.size() - 1;
-    // The conservative stepper's merging (splitting_propagator.cpp): every drift is fused into the
-    // kick or corrector before it, the last drift of a step merges with the first of the next when
-    // there is no corrector, and the correctors of two steps merge (2 g τ³). A renormalization
-    // inside a merged boundary scales w a fraction of a step early; the map is linear, so the sum
-    // of the logarithms telescopes to the same X1.
-    if (g != 0) correct<grounded, quartic, several>(view, g, a[0] * tau);
-    else {
-      drift(up_.data(), dup_.data(), v_.data(), dv_.data(), n_, a[0] * tau);
-      for (std::size_t e = 0; e < extra_; ++e)
-        for (std::size_t i = 0; i < n_; ++i) xdu(e)[i + 1] += a[0] * tau * xdv(e)[i];
-    }
-    for (std::size_t step = 0; step < steps; ++step) {
-      const bool more = step + 1 < steps;
-      for (std::size_t j = 0; j <= last; ++j) {
-        double after = a[j + 1] * tau;
-        if (j == last && g == 0 && more) after += a[0] * tau;
-        kick_and_drift<grounded, quartic, several>(view, ks, qs, up_.data(), dup_.data(), f_.data(), kx_.data(),
-                                                   v_.data(), dv_.data(), im_.data(), n_, b[j] * tau, after,
-                                                   stiff_.data(), onsite_hessian_.data());
-        if constexpr (several)
+    // The conservative stepper's sequence (detail/splitting_sequence.hpp). A renormalization inside
+    // a merged boundary scales w a fraction of a step early; the map is linear, so the sum of the
+    // logarithms telescopes to the same X1.
+    detail::splitting_sequence(
+        scheme_, tau_, steps,
+        [&](double h, double after) {
+          kick_and_drift<grounded, quartic, several>(view, ks, qs, up_.data(), dup_.data(), f_.data(), kx_.data(),
+                                                     v_.data(), dv_.data(), im_.data(), n_, h, after, stiff_.data(),
+                                                     onsite_hessian_.data());
+          if constexpr (several)
+            for (std::size_t e = 0; e < extra_; ++e)
+              deviation_kick_and_drift<grounded>(stiff_.data(), hs, xdu(e), xkx_.data(), xdv(e), im_.data(), n_, h,
+                                                 after);
+          bond_updates_ += n_ + 1;
+        },
+        [&](double c, double after) { correct<grounded, quartic, several>(view, c, after); },
+        [&](double d) {
+          drift(up_.data(), dup_.data(), v_.data(), dv_.data(), n_, d);
           for (std::size_t e = 0; e < extra_; ++e)
-            deviation_kick_and_drift<grounded>(stiff_.data(), hs, xdu(e), xkx_.data(), xdv(e), im_.data(), n_,
-                                               b[j] * tau, after);
-        bond_updates_ += n_ + 1;
-      }
-      if (g != 0) correct<grounded, quartic, several>(view, more ? 2 * g : g, more ? a[0] * tau : 0.0);
-      ++steps_;
-      if (config_.renormalize_every > 0 && steps_ % config_.renormalize_every == 0) {
-        if (extra_ > 0) orthonormalize_(*this);  // the owner's, between steps as renormalize()
-        else renormalize();
-      }
-    }
+            for (std::size_t i = 0; i < n_; ++i) xdu(e)[i + 1] += d * xdv(e)[i];
+        },
+        [&] {
+          ++steps_;
+          if (config_.renormalize_every > 0 && steps_ % config_.renormalize_every == 0) {
+            if (extra_ > 0) orthonormalize_(*this);  // the owner's, between steps as renormalize()
+            else renormalize();
+          }
+        });
   }
 
   std::span<const double> displacement() const override { return {up_.data() + 1, n_}; }

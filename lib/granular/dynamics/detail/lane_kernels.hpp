@@ -13,6 +13,7 @@
 // a vector's neighbour element right after storing it (blocked_kernels.hpp).
 #include <cstddef>
 
+#include "granular/dynamics/detail/window_rule.hpp"
 #include "granular/dynamics/force_law.hpp"
 #include "granular/parallel/detail/vector_lanes.hpp"
 
@@ -155,14 +156,13 @@ void correct_and_drift(const LaneLaw& law, double* __restrict u, double* __restr
 }
 
 /// The lanes (of those in `active`) with a bead in their own [begin, end) whose kinetic energy
-/// passes the window's threshold: v² > limit / m, as SplittingPropagator's disturbed() judges it.
+/// passes the window's threshold (window_rule.hpp), as SplittingPropagator's disturbed() judges it.
 /// Rows first … last − 1 must cover every active lane's range.
 inline M disturbed(const double* __restrict v, const double* __restrict im, const V& limit, const M& begin,
                    const M& end, const M& active, std::size_t first, std::size_t last) {
   M hit{};
   for (std::size_t i = first; i < last; ++i) {
-    const V vi = load(v + i * W);
-    hit |= (vi * vi > limit * load(im + i * W)) & inside(i, begin, end);
+    hit |= disturbs(load(v + i * W), limit, load(im + i * W)) & inside(i, begin, end);
   }
   return hit & active;
 }
