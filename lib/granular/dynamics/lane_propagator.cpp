@@ -3,6 +3,7 @@
 #include "granular/dynamics/lane_propagator.hpp"
 
 #include <algorithm>
+#include <array>
 #include <string>
 #include <tuple>
 #include <variant>
@@ -32,7 +33,7 @@ void with_kernel(bool hertz, bool grounded, bool quartic, Run&& run) {
   else on(std::false_type{});
 }
 
-lk::M as_lanes(const std::vector<std::size_t>& x) {
+lk::M as_lanes(const std::size_t* x) {
   lk::M out{};
   for (std::size_t l = 0; l < W; ++l) out[l] = static_cast<long>(x[l]);
   return out;
@@ -122,8 +123,8 @@ LanePropagator::LanePropagator(std::span<const ForceLaw> laws, std::span<const C
 void LanePropagator::advance(std::size_t steps) {
   if (steps == 0) return;
   detail::splitting_sequence(
-      scheme_, tau_, steps, [&](double h, double d) { kick(h, d); }, [&](double c, double d) { correct(c, d); },
-      [&](double d) { drift(d); },
+      scheme_, tau_, steps, [&](double h, double d) { pass(false, h, d); },
+      [&](double c, double d) { pass(true, c, d); }, [&](double d) { drift(d); },
       [&] {
         if (window_.enabled) grow_windows();
       });
@@ -132,24 +133,17 @@ void LanePropagator::advance(std::size_t steps) {
 
 void LanePropagator::drift(double d) { lk::drift_only(u_.data(), v_.data(), union_lo_, union_hi_, d); }
 
-void LanePropagator::kick(double h, double d) {
+void LanePropagator::pass(bool corrector, double weight, double d) {
   const lk::LaneLaw law{p1_.data(), p2_.data(), p3_.data(), k_.data(), q_.data()};
-  const lk::M lo = as_lanes(lo_), hi = as_lanes(hi_);
+  const lk::M lo = as_lanes(lo_.data()), hi = as_lanes(hi_.data());
   with_kernel(hertz_, grounded_, quartic_, [&](auto hz, auto gr, auto qu) {
-    lk::kick_and_drift<decltype(hz)::value, decltype(gr)::value, decltype(qu)::value>(law, u_.data(), v_.data(),
-                                                                                      im_.data(), lo, hi, union_lo_,
-                                                                                      union_hi_, h, d);
-  });
-  count_updates();
-}
-
-void LanePropagator::correct(double c, double d) {
-  const lk::LaneLaw law{p1_.data(), p2_.data(), p3_.data(), k_.data(), q_.data()};
-  const lk::M lo = as_lanes(lo_), hi = as_lanes(hi_);
-  with_kernel(hertz_, grounded_, quartic_, [&](auto hz, auto gr, auto qu) {
-    lk::correct_and_drift<decltype(hz)::value, decltype(gr)::value, decltype(qu)::value>(law, u_.data(), v_.data(),
-                                                                                         im_.data(), lo, hi, union_lo_,
-                                                                                         union_hi_, c, d);
+    constexpr bool hertz = decltype(hz)::value, grounded = decltype(gr)::value, quartic = decltype(qu)::value;
+    if (corrector)
+      lk::correct_and_drift<hertz, grounded, quartic>(law, u_.data(), v_.data(), im_.data(), lo, hi, union_lo_,
+                                                      union_hi_, weight, d);
+    else
+      lk::kick_and_drift<hertz, grounded, quartic>(law, u_.data(), v_.data(), im_.data(), lo, hi, union_lo_, union_hi_,
+                                                   weight, d);
   });
   count_updates();
 }
@@ -171,7 +165,7 @@ void LanePropagator::grow_windows() {
   // lanes' edges lie close together (an ensemble kicked at one site) their rows are read once, as
   // vectors; else lane by lane.
   const std::size_t guard = window_.guard;
-  std::vector<std::size_t> begin(W, 0), end(W, 0);
+  std::array<std::size_t, W> begin{}, end{};  // per lane; no allocation per step
   const auto check = [&](bool left) {
     lk::M active{}, hit{};
     std::size_t first = n_, last = 0;
@@ -188,8 +182,8 @@ void LanePropagator::grow_windows() {
     }
     if (first >= last) return hit;
     if (last - first <= 4 * guard)
-      return lk::disturbed(v_.data(), im_.data(), lk::load(kinetic_limit_.data()), as_lanes(begin), as_lanes(end),
-                           active, first, last);
+      return lk::disturbed(v_.data(), im_.data(), lk::load(kinetic_limit_.data()), as_lanes(begin.data()),
+                           as_lanes(end.data()), active, first, last);
     for (std::size_t l = 0; l < lanes_; ++l)
       if (active[l] && disturbed(l, begin[l], end[l])) hit[l] = -1;
     return hit;

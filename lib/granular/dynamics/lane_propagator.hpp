@@ -54,8 +54,8 @@ class LanePropagator {
   std::uint64_t bond_updates(std::size_t lane) const { return bond_updates_[lane]; }
 
  private:
-  void kick(double h, double d);
-  void correct(double c, double d);
+  /// A kick (v += h F/m) or, with `corrector`, the corrector of weight `weight`; then u += d v.
+  void pass(bool corrector, double weight, double d);
   void drift(double d);
   void count_updates();
   void grow_windows();

@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "granular/dynamics/detail/observation_events.hpp"
 #include "granular/dynamics/initial_conditions.hpp"
 #include "granular/dynamics/observables.hpp"
 #include "granular/error.hpp"
@@ -53,6 +54,22 @@ std::unique_ptr<Propagator> make_propagator(const IntegrationConfig& config, con
   return make_propagator(config.integrator, law, chain, config.time_step, initial, config.window);
 }
 
+namespace detail {
+
+std::vector<std::pair<std::uint64_t, std::size_t>> observation_events(std::span<Observer* const> observers,
+                                                                      const RunPlan& plan) {
+  std::vector<std::pair<std::uint64_t, std::size_t>> events;  // (step, observer); observers.size(): none
+  for (std::size_t i = 0; i < observers.size(); ++i)
+    for (std::uint64_t s : observers[i]->schedule(plan))
+      if (s <= plan.total_steps) events.emplace_back(s, i);
+  events.emplace_back(plan.total_steps, observers.size());
+  std::sort(events.begin(), events.end());
+  events.erase(std::unique(events.begin(), events.end()), events.end());
+  return events;
+}
+
+}  // namespace detail
+
 RunInfo spread(const Chain& chain, const State& initial, const IntegrationConfig& config,
                std::span<Observer* const> observers) {
   validate(config);
@@ -61,14 +78,7 @@ RunInfo spread(const Chain& chain, const State& initial, const IntegrationConfig
   const RunPlan plan{chain.size(), static_cast<std::uint64_t>(std::llround(config.duration / tau)), tau,
                      config.duration};
 
-  // The union of the schedules, each step with the observers that asked for it, and always T.
-  std::vector<std::pair<std::uint64_t, std::size_t>> events;  // (step, observer); observers.size(): none
-  for (std::size_t i = 0; i < observers.size(); ++i)
-    for (std::uint64_t s : observers[i]->schedule(plan))
-      if (s <= plan.total_steps) events.emplace_back(s, i);
-  events.emplace_back(plan.total_steps, observers.size());
-  std::sort(events.begin(), events.end());
-  events.erase(std::unique(events.begin(), events.end()), events.end());
+  const auto events = detail::observation_events(observers, plan);
 
   const ForceLaw law = make_force_law(config.force_law, chain);
   RunInfo info;

@@ -8,6 +8,7 @@
 #include <string>
 #include <tuple>
 
+#include "granular/dynamics/detail/observation_events.hpp"
 #include "granular/dynamics/lane_propagator.hpp"
 #include "granular/dynamics/observables.hpp"
 #include "granular/error.hpp"
@@ -32,16 +33,11 @@ std::vector<LaneRun> spread_in_lanes(std::span<const Chain> chains, std::span<co
   const RunPlan plan{chains.empty() ? 0 : chains.front().size(),
                      static_cast<std::uint64_t>(std::llround(config.duration / tau)), tau, config.duration};
 
-  // spread()'s union of schedules, per lane: (step, lane, observer); observers[lane].size(): none.
+  // spread()'s stops, per lane, merged: (step, lane, observer); observers[lane].size(): none.
   std::vector<std::tuple<std::uint64_t, std::size_t, std::size_t>> events;
-  for (std::size_t l = 0; l < lanes; ++l) {
-    for (std::size_t i = 0; i < observers[l].size(); ++i)
-      for (std::uint64_t s : observers[l][i]->schedule(plan))
-        if (s <= plan.total_steps) events.emplace_back(s, l, i);
-    events.emplace_back(plan.total_steps, l, observers[l].size());
-  }
+  for (std::size_t l = 0; l < lanes; ++l)
+    for (const auto& [step, who] : detail::observation_events(observers[l], plan)) events.emplace_back(step, l, who);
   std::sort(events.begin(), events.end());
-  events.erase(std::unique(events.begin(), events.end()), events.end());
 
   std::vector<ForceLaw> laws;
   std::vector<LaneRun> runs(lanes);
