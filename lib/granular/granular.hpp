@@ -38,6 +38,7 @@
 #include "granular/dynamics/initial_conditions.hpp"
 #include "granular/dynamics/integrator.hpp"
 #include "granular/dynamics/lane_propagator.hpp"
+#include "granular/dynamics/lane_tangent_propagator.hpp"
 #include "granular/dynamics/observables.hpp"
 #include "granular/dynamics/observer.hpp"
 #include "granular/dynamics/observers.hpp"

@@ -16,6 +16,7 @@
 #include "granular/dynamics/damping.hpp"
 #include "granular/dynamics/initial_conditions.hpp"
 #include "granular/dynamics/lane_propagator.hpp"
+#include "granular/dynamics/lane_tangent_propagator.hpp"
 #include "granular/dynamics/observables.hpp"
 #include "granular/dynamics/propagator.hpp"
 #include "granular/dynamics/tangent_map.hpp"
@@ -108,7 +109,10 @@ void BM_TangentSaba2cStep(benchmark::State& state) {
   auto p = make_tangent_propagator(paper_law(), paper_chain(), saba2c(), tau, paper_kick(),
                                    localized_deviation(beads, centre_site(beads)));
   p->advance(1000);
+  const auto before = p->bond_updates();
   for (auto _ : state) p->advance(100);  // 100 steps per iteration, as BM_Saba2cStep
+  state.counters["bond_updates_per_s"] =
+      benchmark::Counter(static_cast<double>(p->bond_updates() - before), benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_TangentSaba2cStep)->Unit(benchmark::kMicrosecond);
 
@@ -244,6 +248,21 @@ void BM_LaneSaba2cStep(benchmark::State& state) {
   state.counters["lanes"] = static_cast<double>(LanePropagator::width());
 }
 BENCHMARK(BM_LaneSaba2cStep)->Arg(beads)->Arg(401)->ArgName("beads")->Unit(benchmark::kMicrosecond);
+
+// BM_TangentSaba2cStep in vector lanes (lane_tangent_propagator.hpp): W orbits of the paper's
+// problem, each with its deviation vector, 100 steps per iteration; bond updates per second per lane.
+void BM_LaneTangentSaba2cStep(benchmark::State& state) {
+  const PaperLanes& b = paper_lanes();
+  const std::vector<State> deviations(b.chains.size(), localized_deviation(beads, centre_site(beads)));
+  LaneTangentPropagator p(b.laws, b.chains, saba2c(), tau, b.kicks, deviations, {.enabled = true});
+  p.advance(1000);
+  const auto before = p.bond_updates(0);
+  for (auto _ : state) p.advance(100);
+  state.counters["bond_updates_per_s_per_lane"] =
+      benchmark::Counter(static_cast<double>(p.bond_updates(0) - before), benchmark::Counter::kIsRate);
+  state.counters["lanes"] = static_cast<double>(LaneTangentPropagator::width());
+}
+BENCHMARK(BM_LaneTangentSaba2cStep)->Unit(benchmark::kMicrosecond);
 
 // W realizations of BM_RealizationSaba2c side by side: the time per realization is this / W.
 void BM_LaneRealizationsSaba2c(benchmark::State& state) {

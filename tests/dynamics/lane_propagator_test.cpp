@@ -15,18 +15,13 @@
 #include "granular/dynamics/propagator.hpp"
 #include "granular/dynamics/scheme.hpp"
 #include "granular/error.hpp"
-#include "granular/klein_gordon/klein_gordon.hpp"
-#include "granular/model/material.hpp"
-#include "granular/model/quasiperiodic.hpp"
+#include "lane_batch.hpp"
 
 namespace granular {
 namespace {
 
-struct Batch {
-  std::vector<Chain> chains;
-  std::vector<State> initials;
-  std::vector<ForceLaw> laws;
-};
+using fixtures::Batch;
+using fixtures::granular_batch;
 
 /// Advances the lanes and each chain alone by the same pieces (so that merged correctors and
 /// window growth between calls are covered) and asserts every lane's state, window and bond count
@@ -61,26 +56,6 @@ bool expect_lanes_equal_alone(const Batch& b, const SplittingScheme& scheme, dou
   return false;
 }
 
-/// Up to `count` Anderson chains of n beads, kicked at sites spread over the chain (so their windows
-/// open apart), the last lane over the whole chain when `one_spread`.
-Batch granular_batch(std::size_t count, std::size_t n, double f0, ForceLawKind kind, bool one_spread,
-                     std::size_t site_step = 37) {
-  Batch b;
-  for (std::size_t l = 0; l < count; ++l) {
-    b.chains.push_back(fixtures::anderson(n, f0, l));
-    const std::size_t site = (l * site_step + n / 3) % n;
-    if (one_spread && l + 1 == count) {  // every bead displaced: the window is the whole chain
-      std::vector<double> shape(n);
-      for (std::size_t i = 0; i < n; ++i) shape[i] = std::sin(0.3 * static_cast<double>(i + 1));
-      b.initials.push_back(shaped_displacement(b.chains.back(), shape, 1e-8));
-    } else {
-      b.initials.push_back(velocity_kick(b.chains.back(), site, 0.01 * static_cast<double>(l + 1)));
-    }
-    b.laws.push_back(make_force_law(kind, b.chains.back()));
-  }
-  return b;
-}
-
 TEST(LanePropagator, EveryLaneIsItsChainAloneForEverySchemeAndLaw) {
   const std::size_t w = LanePropagator::width();
   for (const auto& scheme : {saba2c(), saba2(), aba864(), srkn14a()})
@@ -113,17 +88,8 @@ TEST(LanePropagator, FewerChainsThanLanesLeaveTheOthersIdle) {
 }
 
 TEST(LanePropagator, OnsiteSpringsLinearAndQuartic) {
-  const std::size_t w = LanePropagator::width();
-  Batch springs, kg;
-  for (std::size_t l = 0; l < w; ++l) {
-    const Quasiperiodic q{.kind = Quasiperiodic::Kind::s1, .modulation = 0.7, .phase = 0.1 * static_cast<double>(l)};
-    springs.chains.push_back(quasiperiodic_chain(q, 150, fixtures::r1, 10.0, steel, 0.4));
-    springs.initials.push_back(velocity_kick(springs.chains.back(), 40 + 9 * l, 0.02));
-    springs.laws.push_back(make_force_law(ForceLawKind::hertz, springs.chains.back()));
-    kg.chains.push_back(klein_gordon({.N = 120, .W = 4, .seed = 3, .realization = l}));
-    kg.initials.push_back(site_energy_kick(kg.chains.back(), 30 + 7 * l, 0.4));
-    kg.laws.push_back(make_force_law(ForceLawKind::linear, kg.chains.back()));
-  }
+  const Batch springs = fixtures::s1_batch(LanePropagator::width());
+  const Batch kg = fixtures::klein_gordon_batch(LanePropagator::width());
   expect_lanes_equal_alone(springs, saba2c(), 2e-7, {}, "on-site springs");
   expect_lanes_equal_alone(kg, saba2c(), 0.05, {}, "Klein-Gordon");
   expect_lanes_equal_alone(kg, aba864(), 0.1, {}, "Klein-Gordon ABA864");

@@ -59,29 +59,36 @@ TEST(KleinGordonRun, EnsembleIsBitIdenticalOnOneAndTwoThreads) {
   EXPECT_EQ(lambda, two.mle.back());
 }
 
-// Without the mLE an ensemble runs LanePropagator::width() realizations side by side in vector
-// lanes (the rest one by one): every run is run_klein_gordon's for its index, bit for bit, energy
-// map included, and so are the means on any thread count.
+// An ensemble runs LanePropagator::width() realizations side by side in vector lanes (the rest one
+// by one), with the mLE (each lane its deviation vector) or without: every run is run_klein_gordon's
+// for its index, bit for bit, energy map and Λ(t) included, and so are the means on any thread count.
 TEST(KleinGordonRun, AnEnsembleInLanesIsEachRealizationAloneBitForBit) {
-  KleinGordonRunConfig c = kg_run_case();
-  c.mle = false;
-  c.energy_map = true;
-  const std::size_t count = 2 * LanePropagator::width() + 3;
-  const KleinGordonEnsemble one = klein_gordon_ensemble(c, count, 1), two = klein_gordon_ensemble(c, count, 2);
-  EXPECT_EQ(one.m2, two.m2);
-  EXPECT_EQ(one.participation, two.participation);
-  for (std::size_t r = 0; r < count; ++r) {
-    KleinGordonRunConfig alone_config = c;
-    alone_config.energy_map = r == 0;  // an ensemble keeps realization 0's map only
-    const KleinGordonRun alone = run_klein_gordon(alone_config, r);
-    EXPECT_EQ(alone.time, two.runs[r].time) << r;
-    EXPECT_EQ(alone.m2, two.runs[r].m2) << r;
-    EXPECT_EQ(alone.participation, two.runs[r].participation) << r;
-    EXPECT_EQ(alone.max_energy_error, two.runs[r].max_energy_error) << r;
-    EXPECT_EQ(alone.energy_map, two.runs[r].energy_map) << r;
-    EXPECT_TRUE(two.runs[r].mle.empty());
+  for (const bool mle : {false, true}) {
+    KleinGordonRunConfig c = kg_run_case();
+    c.mle = mle;
+    c.energy_map = true;
+    const std::size_t count = 2 * LanePropagator::width() + 3;
+    const KleinGordonEnsemble one = klein_gordon_ensemble(c, count, 1), two = klein_gordon_ensemble(c, count, 2);
+    EXPECT_EQ(one.m2, two.m2);
+    EXPECT_EQ(one.participation, two.participation);
+    EXPECT_EQ(one.mle, two.mle);
+    for (std::size_t r = 0; r < count; ++r) {
+      KleinGordonRunConfig alone_config = c;
+      alone_config.energy_map = r == 0;  // an ensemble keeps realization 0's map only
+      const KleinGordonRun alone = run_klein_gordon(alone_config, r);
+      EXPECT_EQ(alone.time, two.runs[r].time) << r;
+      EXPECT_EQ(alone.m2, two.runs[r].m2) << r;
+      EXPECT_EQ(alone.participation, two.runs[r].participation) << r;
+      EXPECT_EQ(alone.max_energy_error, two.runs[r].max_energy_error) << r;
+      EXPECT_EQ(alone.energy_map, two.runs[r].energy_map) << r;
+      EXPECT_EQ(alone.mle, two.runs[r].mle) << r;
+      EXPECT_EQ(two.runs[r].mle.empty(), !mle);
+    }
+    EXPECT_NE(two.runs[0].m2.back(), two.runs[1].m2.back());
+    if (mle) {
+      EXPECT_NE(two.runs[0].mle.back(), two.runs[1].mle.back());
+    }
   }
-  EXPECT_NE(two.runs[0].m2.back(), two.runs[1].m2.back());
 }
 
 // The observables against their definitions from an independent plain run of the same

@@ -63,6 +63,8 @@ void expect_same_summary(const TransportSummary& a, const TransportSummary& b, c
   EXPECT_EQ(a.profile.mean, b.profile.mean) << what;
   EXPECT_EQ(a.max_energy_error, b.max_energy_error) << what;
   EXPECT_EQ(a.excluded, b.excluded) << what;
+  EXPECT_EQ(a.mle.mean, b.mle.mean) << what;
+  EXPECT_EQ(a.mle.standard_error, b.mle.standard_error) << what;
   ASSERT_EQ(a.exponents.has_value(), b.exponents.has_value()) << what;
   if (a.exponents) {
     EXPECT_EQ(a.exponents->gamma_site.fit.value, b.exponents->gamma_site.fit.value) << what;
@@ -83,6 +85,11 @@ TEST(TransportStudy, RealizationsInLanesAreTheSameBitsAsOneAtATime) {
     alone.one_at_a_time = true;
     const TransportSummary lanes = run_transport_study(c, {.threads = 1});
     expect_same_summary(lanes, run_transport_study(c, alone), to_string(disorder));
+    // With the tangent map each lane carries its deviation vector: X1(t) too.
+    c.dynamics.integration.lyapunov.enabled = true;
+    const TransportSummary with_mle = run_transport_study(c, {.threads = 1});
+    ASSERT_FALSE(with_mle.mle.mean.empty());
+    expect_same_summary(with_mle, run_transport_study(c, alone), to_string(disorder) + " with the mLE");
   }
 }
 

@@ -19,6 +19,7 @@
 #include <cmath>
 #include <concepts>
 #include <cstddef>
+#include <limits>
 #include <string>
 #include <string_view>
 #include <variant>
@@ -79,6 +80,7 @@ template <>
 struct ValueMath<double> {
   static double root(double x) { return std::sqrt(x); }
   static double positive_part(double x) { return std::max(x, 0.0); }  // branch-free (maxsd)
+  static double at_least(double x, double low) { return std::max(x, low); }
 };
 
 /// The restoring force k u + q u³ [N] of an on-site spring (the force is its negative) and its
@@ -92,6 +94,11 @@ template <bool quartic, class T>
 inline T onsite_hessian_of(T k, T q, T u) {
   if constexpr (quartic) return k + 3 * q * u * u;
   else return k;
+}
+/// The quartic on-site spring's curvature 6 q u [N/m²] (the tangent map's corrector needs it).
+template <class T>
+inline T onsite_curvature_of(T q, T u) {
+  return 6 * q * u;
 }
 
 /// Hertz's force beyond the static one, A [Δ + x]_+^{3/2} − rest, and (with it) its stiffness
@@ -109,6 +116,14 @@ inline void hertz_force_stiffness_of(T contact, T overlap, T rest, T x, T& f, T&
   stiff = 1.5 * contact * s;
 }
 
+/// Hertz's curvature f'' = (3/4) A [Δ + x]_+^{−1/2} = K / (2 δ), from the stiffness K just
+/// computed: no second square root, branch-free, 0 for an open contact (K = 0 there; unbounded as
+/// a contact closes, where the orbit itself is only C¹). The tangent map's corrector needs it.
+template <class T>
+inline T hertz_curvature_of(T overlap, T x, T stiff) {
+  return stiff / (2 * ValueMath<T>::at_least(overlap + x, std::numeric_limits<double>::min()));
+}
+
 /// The polynomial force c1 x + c2 x² + c3 x³ and its stiffness c1 + 2 c2 x + 3 c3 x².
 template <class T>
 inline T polynomial_force_of(T c1, T c2, T c3, T x) {
@@ -117,6 +132,11 @@ inline T polynomial_force_of(T c1, T c2, T c3, T x) {
 template <class T>
 inline T polynomial_stiffness_of(T c1, T c2, T c3, T x) {
   return c1 + x * (2 * c2 + x * 3 * c3);
+}
+/// Its curvature 2 c2 + 6 c3 x.
+template <class T>
+inline T polynomial_curvature_of(T c2, T c3, T x) {
+  return 2 * c2 + 6 * c3 * x;
 }
 
 /// The restoring force k_n u + q_n u³ [N] of bead n's on-site spring (the force is its negative),
@@ -131,7 +151,7 @@ template <bool quartic>
 inline double onsite_hessian(const double* k, const double* q, std::size_t n, double u) {
   return onsite_hessian_of<quartic>(k[n], quartic ? q[n] : 0.0, u);
 }
-inline double onsite_curvature(const double* q, std::size_t n, double u) { return 6 * q[n] * u; }
+inline double onsite_curvature(const double* q, std::size_t n, double u) { return onsite_curvature_of(q[n], u); }
 
 class HertzLaw : public OnsiteSprings {
  public:

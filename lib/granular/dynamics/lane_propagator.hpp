@@ -15,6 +15,7 @@
 #include <span>
 #include <vector>
 
+#include "granular/dynamics/detail/lane_chains.hpp"
 #include "granular/dynamics/force_law.hpp"
 #include "granular/dynamics/propagator.hpp"
 #include "granular/dynamics/scheme.hpp"
@@ -38,8 +39,8 @@ class LanePropagator {
   /// Advances every lane by `steps` × τ.
   void advance(std::size_t steps);
 
-  std::size_t lanes() const { return lanes_; }
-  std::size_t beads() const { return n_; }
+  std::size_t lanes() const { return c_.lanes; }
+  std::size_t beads() const { return c_.n; }
   std::uint64_t steps_done() const { return steps_; }
   /// Lane l's displacements [m] and velocities [m/s] now, into u and v (resized to the length).
   void copy_lane(std::size_t lane, std::vector<double>& u, std::vector<double>& v) const;
@@ -63,12 +64,8 @@ class LanePropagator {
 
   SplittingScheme scheme_;
   double tau_;
-  std::size_t n_, lanes_;
   ActiveWindow window_;
-  bool hertz_ = true, grounded_ = false, quartic_ = false;
-  // Interleaved, element i of lane l at [i · W + l]: u padded with the walls (row i + 1 is bead
-  // i), v and 1/m per bead, the law's three coefficients per bond, on-site k and q per bead.
-  std::vector<double> u_, v_, im_, p1_, p2_, p3_, k_, q_;
+  detail::LaneChains c_;              // the chains, their laws and states, interleaved
   std::vector<std::size_t> lo_, hi_;  // per lane
   std::vector<double> kinetic_limit_;
   std::size_t union_lo_ = 0, union_hi_ = 0;

@@ -41,14 +41,16 @@ void validate(const IntegrationConfig& c) {
     throw InvalidInput("lyapunov", ": the tangent map is of the conservative flow; switch the damping off");
 }
 
+State starting_deviation(const IntegrationConfig& config, std::size_t beads) {
+  const std::size_t site = config.deviation_site < beads ? config.deviation_site : centre_site(beads);
+  return localized_deviation(beads, site, config.lyapunov.time_unit);
+}
+
 std::unique_ptr<Propagator> make_propagator(const IntegrationConfig& config, const ForceLaw& law, const Chain& chain,
                                             const State& initial) {
-  const std::size_t n = chain.size();
-  if (config.lyapunov.enabled) {
-    const std::size_t site = config.deviation_site < n ? config.deviation_site : centre_site(n);
+  if (config.lyapunov.enabled)
     return make_tangent_propagator(law, chain, config.integrator.scheme, config.time_step, initial,
-                                   localized_deviation(n, site, config.lyapunov.time_unit), config.lyapunov);
-  }
+                                   starting_deviation(config, chain.size()), config.lyapunov);
   if (config.damping.any())
     return make_damped_propagator(law, chain, config.integrator.scheme, config.time_step, initial, config.damping);
   return make_propagator(config.integrator, law, chain, config.time_step, initial, config.window);

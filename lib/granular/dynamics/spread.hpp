@@ -50,6 +50,10 @@ void validate_step_and_duration(const IntegrationConfig& config);
 std::unique_ptr<Propagator> make_propagator(const IntegrationConfig& config, const ForceLaw& law, const Chain& chain,
                                             const State& initial);
 
+/// The deviation vector a run with the tangent map starts from (config.lyapunov on): δu = 1 and
+/// δv = 1/t_unit on config.deviation_site, or the centre bead when that is past the chain.
+State starting_deviation(const IntegrationConfig& config, std::size_t beads);
+
 /// What the run did, besides what the observers measured.
 struct RunInfo {
   double initial_energy = 0;  ///< H(0) [J]

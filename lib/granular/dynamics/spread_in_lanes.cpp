@@ -8,47 +8,70 @@
 #include <string>
 #include <tuple>
 
+#include <stdexcept>
+#include <type_traits>
 #include "granular/dynamics/detail/observation_events.hpp"
+
 #include "granular/dynamics/lane_propagator.hpp"
+#include "granular/dynamics/lane_tangent_propagator.hpp"
 #include "granular/dynamics/observables.hpp"
 #include "granular/error.hpp"
 
 namespace granular {
 
-bool runs_in_lanes(const IntegrationConfig& config) {
-  return !config.integrator.reference && !config.damping.any() && !config.lyapunov.enabled;
-}
+namespace {
 
-std::vector<LaneRun> spread_in_lanes(std::span<const Chain> chains, std::span<const State> initials,
-                                     const IntegrationConfig& config, std::span<const std::vector<Observer*>> observers) {
-  validate(config);
-  if (!runs_in_lanes(config))
-    throw InvalidInput("integrator", ": the reference integrator, damping and the tangent map run one chain at a time");
+/// One lane of a LaneTangentPropagator as observers see a run's tangent map (Snapshot::tangent):
+/// what TangentPropagator would answer at the snapshot's step, copied when the snapshot is made.
+class LaneTangentView final : public TangentPropagator {
+ public:
+  void take(const LaneTangentPropagator& p, std::size_t lane, std::span<const double> u, std::span<const double> v) {
+    u_ = u, v_ = v;
+    p.copy_deviation(lane, du_, dv_);
+    log_stretch_ = p.log_stretch(lane);
+    tau_ = p.time_step(), time_unit_ = p.time_unit();
+    steps_ = p.steps_done(), bond_updates_ = p.bond_updates(lane);
+  }
+  void advance(std::size_t) override { throw std::logic_error("a lane's tangent map is advanced by its lanes"); }
+  std::span<const double> displacement() const override { return u_; }
+  std::span<const double> velocity() const override { return v_; }
+  double time_step() const override { return tau_; }
+  std::uint64_t steps_done() const override { return steps_; }
+  std::uint64_t bond_updates() const override { return bond_updates_; }
+  std::span<const double> deviation_displacement() const override { return du_; }
+  std::span<const double> deviation_velocity() const override { return dv_; }
+  std::size_t deviation_count() const override { return 1; }
+  std::span<const double> deviation_displacement(std::size_t) const override { return du_; }
+  std::span<const double> deviation_velocity(std::size_t) const override { return dv_; }
+  void set_deviation(std::size_t, std::span<const double>, std::span<const double>) override {
+    throw std::logic_error("a lane's tangent map carries one vector, set by its lanes");
+  }
+  double log_stretch() const override { return log_stretch_; }
+  double time_unit() const override { return time_unit_; }
+
+ private:
+  std::span<const double> u_, v_;
+  std::vector<double> du_, dv_;
+  double log_stretch_ = 0, tau_ = 0, time_unit_ = 1;
+  std::uint64_t steps_ = 0, bond_updates_ = 0;
+};
+
+/// spread()'s loop over `p` (a LanePropagator, or a LaneTangentPropagator for the tangent map).
+template <class Lanes>
+std::vector<LaneRun> drive(Lanes& p, std::span<const Chain> chains, std::span<const ForceLaw> laws,
+                           std::vector<LaneRun> runs, const RunPlan& plan,
+                           std::span<const std::vector<Observer*>> observers) {
+  constexpr bool tangent = std::is_same_v<Lanes, LaneTangentPropagator>;
   const std::size_t lanes = chains.size();
-  if (initials.size() != lanes || observers.size() != lanes)
-    throw InvalidInput("lanes: " + std::to_string(lanes) + " chains, " + std::to_string(initials.size()) +
-                       " initial states, " + std::to_string(observers.size()) + " observer lists");
-  for (std::size_t l = 0; l < lanes; ++l) validate_propagation(chains[l], config.time_step, initials[l]);
-  const double tau = config.time_step;
-  const RunPlan plan{chains.empty() ? 0 : chains.front().size(),
-                     static_cast<std::uint64_t>(std::llround(config.duration / tau)), tau, config.duration};
-
+  const double tau = plan.time_step;
   // spread()'s stops, per lane, merged: (step, lane, observer); observers[lane].size(): none.
   std::vector<std::tuple<std::uint64_t, std::size_t, std::size_t>> events;
   for (std::size_t l = 0; l < lanes; ++l)
     for (const auto& [step, who] : detail::observation_events(observers[l], plan)) events.emplace_back(step, l, who);
   std::sort(events.begin(), events.end());
 
-  std::vector<ForceLaw> laws;
-  std::vector<LaneRun> runs(lanes);
-  for (std::size_t l = 0; l < lanes; ++l) {
-    laws.push_back(make_force_law(config.force_law, chains[l]));
-    runs[l].info.initial_energy = total_energy(laws[l], chains[l], initials[l]);
-    if (!(runs[l].info.initial_energy > 0)) throw InvalidInput("initial state: carries no energy");
-  }
-  LanePropagator p(laws, chains, config.integrator.scheme, tau, initials, config.window);
-
   std::vector<std::unique_ptr<Snapshot>> now;
+  std::vector<LaneTangentView> views(tangent ? lanes : 0);
   std::vector<std::vector<double>> u(lanes), v(lanes);
   std::vector<bool> current(lanes, false);
   for (std::size_t l = 0; l < lanes; ++l)
@@ -56,15 +79,22 @@ std::vector<LaneRun> spread_in_lanes(std::span<const Chain> chains, std::span<co
   double seconds = 0;
   const auto bring_up = [&](std::size_t l) {  // lane l's snapshot at the propagator's step
     if (current[l]) return;
-    if (u[l].empty()) p.copy_lane(l, u[l], v[l]);
-    else p.refresh_lane(l, u[l], v[l]);
     Snapshot& s = *now[l];
+    if constexpr (tangent) {
+      p.copy_lane(l, u[l], v[l]);
+      views[l].take(p, l, u[l], v[l]);
+      s.tangent = &views[l];
+      s.window_begin = 0, s.window_end = p.beads();
+    } else {
+      if (u[l].empty()) p.copy_lane(l, u[l], v[l]);
+      else p.refresh_lane(l, u[l], v[l]);
+      s.window_begin = p.window_begin(l);
+      s.window_end = p.window_end(l);
+    }
     s.step = p.steps_done();
     s.t = static_cast<double>(s.step) * tau;
     s.u = u[l];
     s.v = v[l];
-    s.window_begin = p.window_begin(l);
-    s.window_end = p.window_end(l);
     s.dissipated = 0;
     s.moved();
     current[l] = true;
@@ -77,6 +107,10 @@ std::vector<LaneRun> spread_in_lanes(std::span<const Chain> chains, std::span<co
       seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       std::fill(current.begin(), current.end(), false);
       first = false;
+      if constexpr (tangent)  // where the lane's own TangentPropagator throws, its run stops
+        for (std::size_t l = 0; l < lanes; ++l)
+          if (!runs[l].failure && !p.failure(l).empty())
+            runs[l].failure = std::make_exception_ptr(NumericalError(p.failure(l)));
     }
     if (who >= observers[lane].size() || runs[lane].failure) continue;
     bring_up(lane);
@@ -98,11 +132,45 @@ std::vector<LaneRun> spread_in_lanes(std::span<const Chain> chains, std::span<co
     }
     run.info.steps = p.steps_done();
     run.info.bond_updates = p.bond_updates(l);
-    run.info.window_begin = p.window_begin(l);
-    run.info.window_end = p.window_end(l);
+    if constexpr (tangent) run.info.window_begin = 0, run.info.window_end = p.beads();
+    else run.info.window_begin = p.window_begin(l), run.info.window_end = p.window_end(l);
     run.info.seconds = seconds;
   }
   return runs;
+}
+
+}  // namespace
+
+bool runs_in_lanes(const IntegrationConfig& config) { return !config.integrator.reference && !config.damping.any(); }
+
+std::vector<LaneRun> spread_in_lanes(std::span<const Chain> chains, std::span<const State> initials,
+                                     const IntegrationConfig& config, std::span<const std::vector<Observer*>> observers) {
+  validate(config);
+  if (!runs_in_lanes(config))
+    throw InvalidInput("integrator", ": the reference integrator and damping run one chain at a time");
+  const std::size_t lanes = chains.size();
+  if (initials.size() != lanes || observers.size() != lanes)
+    throw InvalidInput("lanes: " + std::to_string(lanes) + " chains, " + std::to_string(initials.size()) +
+                       " initial states, " + std::to_string(observers.size()) + " observer lists");
+  for (std::size_t l = 0; l < lanes; ++l) validate_propagation(chains[l], config.time_step, initials[l]);
+  const double tau = config.time_step;
+  const RunPlan plan{chains.empty() ? 0 : chains.front().size(),
+                     static_cast<std::uint64_t>(std::llround(config.duration / tau)), tau, config.duration};
+  std::vector<ForceLaw> laws;
+  std::vector<LaneRun> runs(lanes);
+  for (std::size_t l = 0; l < lanes; ++l) {
+    laws.push_back(make_force_law(config.force_law, chains[l]));
+    runs[l].info.initial_energy = total_energy(laws[l], chains[l], initials[l]);
+    if (!(runs[l].info.initial_energy > 0)) throw InvalidInput("initial state: carries no energy");
+  }
+  if (config.lyapunov.enabled) {
+    std::vector<State> deviations;
+    for (const Chain& chain : chains) deviations.push_back(starting_deviation(config, chain.size()));
+    LaneTangentPropagator p(laws, chains, config.integrator.scheme, tau, initials, deviations, config.lyapunov);
+    return drive(p, chains, laws, std::move(runs), plan, observers);
+  }
+  LanePropagator p(laws, chains, config.integrator.scheme, tau, initials, config.window);
+  return drive(p, chains, laws, std::move(runs), plan, observers);
 }
 
 }  // namespace granular

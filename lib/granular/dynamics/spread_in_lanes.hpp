@@ -1,8 +1,8 @@
 #pragma once
 // spread() (spread.hpp) for several chains of one length at once, side by side in vector lanes
-// (lane_propagator.hpp): what an ensemble uses to run LanePropagator::width() realizations for
-// the cost of about one. Each chain gets its own observers, called exactly as spread() would call
-// them, and every number they see is the one spread() would show them: the results are the same
+// (lane_propagator.hpp; lane_tangent_propagator.hpp with the tangent map): what an ensemble uses to run
+// LanePropagator::width() realizations for the cost of about one. Each chain gets its own observers, called exactly as
+// spread() would call them, and every number they see is the one spread() would show them: the results are the same
 // bits as running the chains one at a time.
 //
 //   std::vector<granular::EnergySpreadObserver> energy(chains.size());
@@ -17,8 +17,10 @@
 
 namespace granular {
 
-/// Whether spread_in_lanes can run `config`: a splitting scheme, without damping or the tangent
-/// map (those run one chain at a time, with spread()).
+/// Whether spread_in_lanes can run `config`: a splitting scheme without damping (the reference
+/// integrator and damped runs go one chain at a time, with spread()). With the tangent map
+/// (config.lyapunov) each lane carries its deviation vector (lane_tangent_propagator.hpp) and its
+/// observers see it in Snapshot::tangent, as spread()'s do.
 bool runs_in_lanes(const IntegrationConfig& config);
 
 /// One chain's run in a batch.

@@ -14,14 +14,12 @@
 namespace granular {
 namespace {
 
-// f_k''(x), the bond curvature the corrector's derivative needs, from the stiffness just computed.
-// Hertz: (3/4) A [δ]_+^{−1/2} = K/(2δ), 0 for an open contact (K = 0 there; unbounded as a contact
-// closes, where the orbit itself is only C¹); no second square root, and branch-free.
+// f_k''(x), the bond curvature the corrector's derivative needs (force_law.hpp's formulas).
 inline double curvature(const HertzLaw::View& l, std::size_t k, double x, double stiff) {
-  return stiff / (2 * std::max(l.overlap[k] + x, std::numeric_limits<double>::min()));
+  return hertz_curvature_of(l.overlap[k], x, stiff);
 }
 inline double curvature(const PolynomialLaw::View& l, std::size_t k, double x, double) {
-  return 2 * l.c2[k] + 6 * l.c3[k] * x;
+  return polynomial_curvature_of(l.c2[k], l.c3[k], x);
 }
 
 // The conservative stepper's blocked kernels (detail/blocked_kernels.hpp) carrying the deviation

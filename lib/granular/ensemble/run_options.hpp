@@ -28,8 +28,8 @@ struct RunOptions {
   /// refuses to write over finished realizations (granular::InvalidInput naming `checkpoint`).
   bool fresh = false;
   /// Integrate the realizations one at a time rather than side by side in vector lanes, where a
-  /// run can use them (spread_in_lanes.hpp: the ensembles of a splitting scheme without damping or
-  /// tangent map). The results are the same bits either way; the lanes are faster.
+  /// run can use them (spread_in_lanes.hpp: the ensembles of a splitting scheme without damping,
+  /// with or without the tangent map). The results are the same bits either way; the lanes are faster.
   bool one_at_a_time = false;
 
   /// Whether the run continues from its checkpoint (`resume` or `accept_other_version`).

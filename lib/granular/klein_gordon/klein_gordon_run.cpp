@@ -10,6 +10,7 @@
 #include "granular/dynamics/force_law.hpp"
 #include "granular/dynamics/initial_conditions.hpp"
 #include "granular/dynamics/lane_propagator.hpp"
+#include "granular/dynamics/lane_tangent_propagator.hpp"
 #include "granular/dynamics/observables.hpp"
 #include "granular/dynamics/propagator.hpp"
 #include "granular/dynamics/scheme.hpp"
@@ -69,12 +70,17 @@ void sample(const KleinGordonRunConfig& config, const ForceLaw& law, const Chain
   out.max_energy_error = std::max(out.max_energy_error, std::abs(total_energy(law, chain, s) - h0) / h0);
 }
 
-/// Realizations `rs` of `config` (not mle; at most LanePropagator::width()) side by side in vector
-/// lanes, each run the same bits as run_klein_gordon's; `maps[i]`: whether rs[i] keeps its energy map.
+/// The tangent map of a run with the mLE: its deviation vector starts on the centre bead, norm with
+/// time unit 1, renormalized every 10 steps.
+constexpr LyapunovConfig klein_gordon_lyapunov{.enabled = true, .renormalize_every = 10, .time_unit = 1};
+
+/// Realizations `rs` of `config` (at most LanePropagator::width()) side by side in vector lanes,
+/// each run the same bits as run_klein_gordon's; `maps[i]`: whether rs[i] keeps its energy map.
+/// With the mLE a lane whose deviation vector fails throws NumericalError, as run_klein_gordon does.
 std::vector<KleinGordonRun> run_klein_gordon_in_lanes(const KleinGordonRunConfig& config,
                                                       std::span<const std::uint64_t> rs, const std::vector<bool>& maps) {
   std::vector<Chain> chains;
-  std::vector<State> starts;
+  std::vector<State> starts, deviations;
   std::vector<ForceLaw> laws;
   std::vector<double> h0;
   for (const std::uint64_t r : rs) {
@@ -83,19 +89,33 @@ std::vector<KleinGordonRun> run_klein_gordon_in_lanes(const KleinGordonRunConfig
     starts.push_back(std::move(k.start));
     laws.push_back(make_force_law(ForceLawKind::linear, chains.back()));
     h0.push_back(total_energy(laws.back(), chains.back(), starts.back()));
+    const std::size_t n = chains.back().size();
+    deviations.push_back(localized_deviation(n, centre_site(n), klein_gordon_lyapunov.time_unit));
   }
-  LanePropagator lanes(laws, chains, saba2c(), config.time_step, starts, {.enabled = false});
   std::vector<KleinGordonRun> out(rs.size());
   KleinGordonRunConfig plain = config, mapped = config;
   plain.energy_map = false, mapped.energy_map = true;
   State s;
-  for (const std::uint64_t step : config.sample_steps) {
-    if (step > lanes.steps_done()) lanes.advance(static_cast<std::size_t>(step - lanes.steps_done()));
-    const double t = static_cast<double>(lanes.steps_done()) * config.time_step;  // Propagator::time()
-    for (std::size_t l = 0; l < rs.size(); ++l) {
-      lanes.copy_lane(l, s.u, s.v);
-      sample(maps[l] ? mapped : plain, laws[l], chains[l], h0[l], s, t, nullptr, out[l]);
+  const auto run = [&](auto& lanes, auto&& mle_of) {
+    for (const std::uint64_t step : config.sample_steps) {
+      if (step > lanes.steps_done()) lanes.advance(static_cast<std::size_t>(step - lanes.steps_done()));
+      const double t = static_cast<double>(lanes.steps_done()) * config.time_step;  // Propagator::time()
+      for (std::size_t l = 0; l < rs.size(); ++l) {
+        lanes.copy_lane(l, s.u, s.v);
+        const double mle = mle_of(l, t);
+        sample(maps[l] ? mapped : plain, laws[l], chains[l], h0[l], s, t, config.mle ? &mle : nullptr, out[l]);
+      }
     }
+  };
+  if (config.mle) {
+    LaneTangentPropagator lanes(laws, chains, saba2c(), config.time_step, starts, deviations, klein_gordon_lyapunov);
+    run(lanes, [&](std::size_t l, double t) {
+      if (!lanes.failure(l).empty()) throw NumericalError(lanes.failure(l));
+      return t > 0 ? lanes.log_stretch(l) / t : 0.0;  // TangentPropagator::mle()
+    });
+  } else {
+    LanePropagator lanes(laws, chains, saba2c(), config.time_step, starts, {.enabled = false});
+    run(lanes, [](std::size_t, double) { return 0.0; });
   }
   return out;
 }
@@ -110,8 +130,9 @@ KleinGordonRun run_klein_gordon(const KleinGordonRunConfig& config, std::uint64_
   std::unique_ptr<Propagator> plain;
   std::unique_ptr<TangentPropagator> tangent;
   if (config.mle)
-    tangent = make_tangent_propagator(law, chain, saba2c(), config.time_step, start, localized_deviation(n, centre, 1),
-                                      {.enabled = true, .renormalize_every = 10, .time_unit = 1});
+    tangent =
+        make_tangent_propagator(law, chain, saba2c(), config.time_step, start,
+                                localized_deviation(n, centre, klein_gordon_lyapunov.time_unit), klein_gordon_lyapunov);
   else plain = make_splitting_propagator(law, chain, saba2c(), config.time_step, start, {.enabled = false});
   Propagator& run = config.mle ? static_cast<Propagator&>(*tangent) : *plain;
 
@@ -134,10 +155,7 @@ KleinGordonEnsemble klein_gordon_ensemble(const KleinGordonRunConfig& config, st
   out.runs.resize(count);
   KleinGordonRunConfig others = config;  // realization 0's map only: the rest would cost R times the memory
   others.energy_map = false;
-  if (config.mle) {
-    parallel_realizations(count, threads,
-                          [&](std::size_t r, int) { out.runs[r] = run_klein_gordon(r == 0 ? config : others, r); });
-  } else {  // LanePropagator::width() realizations at a time, the rest one by one (threads share them)
+  {  // LanePropagator::width() realizations at a time, the rest one by one (threads share them)
     const std::size_t width = LanePropagator::width(), batches = count / width;
     parallel_realizations(batches + count % width, threads, [&](std::size_t b, int) {
       if (b >= batches) {

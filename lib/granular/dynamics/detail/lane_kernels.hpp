@@ -23,6 +23,10 @@ template <>
 struct ValueMath<detail::lanes::V> {
   static detail::lanes::V root(const detail::lanes::V& x) { return detail::lanes::root(x); }
   static detail::lanes::V positive_part(const detail::lanes::V& x) { return detail::lanes::positive_part(x); }
+  static detail::lanes::V at_least(const detail::lanes::V& x, double low) {  // std::max(x, low) in every lane
+    const detail::lanes::V floor = detail::lanes::V{} + low;
+    return x < floor ? floor : x;
+  }
 };
 
 namespace detail::lane_kernels {
