@@ -12,10 +12,10 @@
 //   lanes.copy_lane(2, u, v);  // the third chain at t = 1000 τ
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <vector>
 
-#include "granular/dynamics/detail/lane_chains.hpp"
 #include "granular/dynamics/force_law.hpp"
 #include "granular/dynamics/propagator.hpp"
 #include "granular/dynamics/scheme.hpp"
@@ -23,6 +23,10 @@
 #include "granular/model/chain.hpp"
 
 namespace granular {
+
+namespace detail {
+struct LaneChains;  // the chains interleaved (detail/lane_chains.hpp)
+}
 
 class LanePropagator {
  public:
@@ -39,8 +43,12 @@ class LanePropagator {
   /// Advances every lane by `steps` × τ.
   void advance(std::size_t steps);
 
-  std::size_t lanes() const { return c_.lanes; }
-  std::size_t beads() const { return c_.n; }
+  ~LanePropagator();
+  LanePropagator(LanePropagator&&) noexcept;
+  LanePropagator& operator=(LanePropagator&&) noexcept;
+
+  std::size_t lanes() const { return lanes_; }
+  std::size_t beads() const { return n_; }
   std::uint64_t steps_done() const { return steps_; }
   /// Lane l's displacements [m] and velocities [m/s] now, into u and v (resized to the length).
   void copy_lane(std::size_t lane, std::vector<double>& u, std::vector<double>& v) const;
@@ -65,7 +73,8 @@ class LanePropagator {
   SplittingScheme scheme_;
   double tau_;
   ActiveWindow window_;
-  detail::LaneChains c_;              // the chains, their laws and states, interleaved
+  std::unique_ptr<detail::LaneChains> c_;  // the chains, their laws and states, interleaved
+  std::size_t n_ = 0, lanes_ = 0;
   std::vector<std::size_t> lo_, hi_;  // per lane
   std::vector<double> kinetic_limit_;
   std::size_t union_lo_ = 0, union_hi_ = 0;

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <string>
 
+#include "granular/dynamics/detail/lane_chains.hpp"
 #include "granular/dynamics/detail/lane_tangent_kernels.hpp"
 #include "granular/dynamics/detail/splitting_sequence.hpp"
 #include "granular/error.hpp"
@@ -16,24 +17,29 @@ using lk::W;
 
 std::size_t LaneTangentPropagator::width() { return W; }
 
+LaneTangentPropagator::~LaneTangentPropagator() = default;
+LaneTangentPropagator::LaneTangentPropagator(LaneTangentPropagator&&) noexcept = default;
+LaneTangentPropagator& LaneTangentPropagator::operator=(LaneTangentPropagator&&) noexcept = default;
+
 LaneTangentPropagator::LaneTangentPropagator(std::span<const ForceLaw> laws, std::span<const Chain> chains,
                                              const SplittingScheme& scheme, double time_step,
                                              std::span<const State> initials, std::span<const State> deviations,
                                              const LyapunovConfig& config)
     : scheme_(scheme), tau_(time_step), config_(config),
-      c_(detail::interleave(laws, chains, scheme, time_step, initials, W)) {
-  if (deviations.size() != c_.lanes)
+      c_(std::make_unique<detail::LaneChains>(detail::interleave(laws, chains, scheme, time_step, initials, W))),
+      n_(c_->n), lanes_(c_->lanes) {
+  if (deviations.size() != c_->lanes)
     throw InvalidInput("deviation", ": " + std::to_string(deviations.size()) + " vectors for " +
-                                        std::to_string(c_.lanes) + " chains (one each)");
+                                        std::to_string(c_->lanes) + " chains (one each)");
   if (!(config.time_unit > 0) || !std::isfinite(config.time_unit))
     throw InvalidInput("time_unit", ": must be finite and > 0");
-  du_.assign(c_.u.size(), 0.0);
-  dv_.assign(c_.v.size(), 0.0);
+  du_.assign(c_->u.size(), 0.0);
+  dv_.assign(c_->v.size(), 0.0);
   logs_.assign(W, 0.0);
   initial_log_norm_.assign(W, 0.0);
   failures_.assign(W, "");
-  for (std::size_t l = 0; l < c_.lanes; ++l) {
-    if (deviations[l].u.size() != c_.n || deviations[l].v.size() != c_.n)
+  for (std::size_t l = 0; l < c_->lanes; ++l) {
+    if (deviations[l].u.size() != c_->n || deviations[l].v.size() != c_->n)
       throw InvalidInput("deviation", ": must have one entry per bead");
     detail::put_lane(du_, l, deviations[l].u, 1, W);
     detail::put_lane(dv_, l, deviations[l].v, 0, W);
@@ -45,12 +51,12 @@ LaneTangentPropagator::LaneTangentPropagator(std::span<const ForceLaw> laws, std
 
 void LaneTangentPropagator::advance(std::size_t steps) {
   if (steps == 0) return;
-  const lk::LaneLaw law{c_.p1.data(), c_.p2.data(), c_.p3.data(), c_.k.data(), c_.q.data()};
-  double* u = c_.u.data();
-  double* v = c_.v.data();
-  const double* im = c_.im.data();
-  const std::size_t n = c_.n;
-  detail::with_kernel(c_, [&](auto hz, auto gr, auto qu) {
+  const lk::LaneLaw law{c_->p1.data(), c_->p2.data(), c_->p3.data(), c_->k.data(), c_->q.data()};
+  double* u = c_->u.data();
+  double* v = c_->v.data();
+  const double* im = c_->im.data();
+  const std::size_t n = c_->n;
+  detail::with_kernel(*c_, [&](auto hz, auto gr, auto qu) {
     constexpr bool hertz = decltype(hz)::value, grounded = decltype(gr)::value, quartic = decltype(qu)::value;
     detail::splitting_sequence(
         scheme_, tau_, steps,
@@ -71,17 +77,17 @@ void LaneTangentPropagator::advance(std::size_t steps) {
 }
 
 double LaneTangentPropagator::norm(std::size_t lane) const {
-  const lk::V squares = lk::squared_norms(du_.data(), dv_.data(), c_.n, config_.time_unit);
+  const lk::V squares = lk::squared_norms(du_.data(), dv_.data(), c_->n, config_.time_unit);
   return std::sqrt(squares[lane]);
 }
 
 void LaneTangentPropagator::renormalize() {
   // TangentPropagator::renormalize per lane: w back to its initial norm, ln of the stretch summed.
-  const lk::V squares = lk::squared_norms(du_.data(), dv_.data(), c_.n, config_.time_unit);
+  const lk::V squares = lk::squared_norms(du_.data(), dv_.data(), c_->n, config_.time_unit);
   lk::V scale{};
   for (std::size_t l = 0; l < W; ++l) {
     scale[l] = 1;
-    if (l >= c_.lanes || !failures_[l].empty()) continue;
+    if (l >= c_->lanes || !failures_[l].empty()) continue;
     const double w = std::sqrt(squares[l]);
     if (!(w > 0) || !std::isfinite(w)) {
       failures_[l] = "tangent map: the deviation vector became " + std::string(std::isfinite(w) ? "zero" : "non-finite");
@@ -99,20 +105,20 @@ double LaneTangentPropagator::log_stretch(std::size_t lane) const {
 }
 
 void LaneTangentPropagator::copy_lane(std::size_t lane, std::vector<double>& u, std::vector<double>& v) const {
-  if (lane >= c_.lanes) throw InvalidInput("lane", " " + std::to_string(lane) + ": only " + std::to_string(c_.lanes));
-  u.resize(c_.n);
-  v.resize(c_.n);
-  for (std::size_t i = 0; i < c_.n; ++i) {
-    u[i] = c_.u[(i + 1) * W + lane];
-    v[i] = c_.v[i * W + lane];
+  if (lane >= c_->lanes) throw InvalidInput("lane", " " + std::to_string(lane) + ": only " + std::to_string(c_->lanes));
+  u.resize(c_->n);
+  v.resize(c_->n);
+  for (std::size_t i = 0; i < c_->n; ++i) {
+    u[i] = c_->u[(i + 1) * W + lane];
+    v[i] = c_->v[i * W + lane];
   }
 }
 
 void LaneTangentPropagator::copy_deviation(std::size_t lane, std::vector<double>& du, std::vector<double>& dv) const {
-  if (lane >= c_.lanes) throw InvalidInput("lane", " " + std::to_string(lane) + ": only " + std::to_string(c_.lanes));
-  du.resize(c_.n);
-  dv.resize(c_.n);
-  for (std::size_t i = 0; i < c_.n; ++i) {
+  if (lane >= c_->lanes) throw InvalidInput("lane", " " + std::to_string(lane) + ": only " + std::to_string(c_->lanes));
+  du.resize(c_->n);
+  dv.resize(c_->n);
+  for (std::size_t i = 0; i < c_->n; ++i) {
     du[i] = du_[(i + 1) * W + lane];
     dv[i] = dv_[i * W + lane];
   }

@@ -12,11 +12,11 @@
 //   double x1 = lanes.log_stretch(3) / (100000 * 1e-7);  // the fourth chain's X1(t) [1/s]
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <string>
 #include <vector>
 
-#include "granular/dynamics/detail/lane_chains.hpp"
 #include "granular/dynamics/force_law.hpp"
 #include "granular/dynamics/scheme.hpp"
 #include "granular/dynamics/state.hpp"
@@ -24,6 +24,10 @@
 #include "granular/model/chain.hpp"
 
 namespace granular {
+
+namespace detail {
+struct LaneChains;  // the chains interleaved (detail/lane_chains.hpp)
+}
 
 class LaneTangentPropagator {
  public:
@@ -42,8 +46,12 @@ class LaneTangentPropagator {
   /// Advances every lane by `steps` × τ.
   void advance(std::size_t steps);
 
-  std::size_t lanes() const { return c_.lanes; }
-  std::size_t beads() const { return c_.n; }
+  ~LaneTangentPropagator();
+  LaneTangentPropagator(LaneTangentPropagator&&) noexcept;
+  LaneTangentPropagator& operator=(LaneTangentPropagator&&) noexcept;
+
+  std::size_t lanes() const { return lanes_; }
+  std::size_t beads() const { return n_; }
   std::uint64_t steps_done() const { return steps_; }
   double time_step() const { return tau_; }
   double time_unit() const { return config_.time_unit; }
@@ -66,7 +74,8 @@ class LaneTangentPropagator {
   SplittingScheme scheme_;
   double tau_;
   LyapunovConfig config_;
-  detail::LaneChains c_;
+  std::unique_ptr<detail::LaneChains> c_;  // the chains, their laws and states, interleaved
+  std::size_t n_ = 0, lanes_ = 0;
   std::vector<double> du_, dv_;  // interleaved as c_.u and c_.v
   std::vector<double> logs_, initial_log_norm_;
   std::vector<std::string> failures_;
