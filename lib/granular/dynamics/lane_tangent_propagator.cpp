@@ -43,6 +43,9 @@ LaneTangentPropagator::LaneTangentPropagator(std::span<const ForceLaw> laws, std
       throw InvalidInput("deviation", ": must have one entry per bead");
     detail::put_lane(du_, l, deviations[l].u, 1, W);
     detail::put_lane(dv_, l, deviations[l].v, 0, W);
+  }
+  norms_.assign(W, 0.0);
+  for (std::size_t l = 0; l < c_->lanes; ++l) {
     initial_log_norm_[l] = std::log(norm(l));
     if (!std::isfinite(initial_log_norm_[l]))
       throw InvalidInput("deviation", ": the initial deviation vector must be finite and non-zero");
@@ -77,8 +80,12 @@ void LaneTangentPropagator::advance(std::size_t steps) {
 }
 
 double LaneTangentPropagator::norm(std::size_t lane) const {
-  const lk::V squares = lk::squared_norms(du_.data(), dv_.data(), c_->n, config_.time_unit);
-  return std::sqrt(squares[lane]);
+  if (norms_step_ != steps_) {  // every lane's at once, once per step they are asked at
+    const lk::V squares = lk::squared_norms(du_.data(), dv_.data(), c_->n, config_.time_unit);
+    for (std::size_t l = 0; l < W; ++l) norms_[l] = std::sqrt(squares[l]);
+    norms_step_ = steps_;
+  }
+  return norms_[lane];
 }
 
 void LaneTangentPropagator::renormalize() {

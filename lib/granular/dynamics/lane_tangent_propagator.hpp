@@ -78,6 +78,9 @@ class LaneTangentPropagator {
   std::size_t n_ = 0, lanes_ = 0;
   std::vector<double> du_, dv_;  // interleaved as c_.u and c_.v
   std::vector<double> logs_, initial_log_norm_;
+  // Every lane's ‖w‖ at step norms_step_ (the vectors change only as steps are taken).
+  mutable std::vector<double> norms_;
+  mutable std::uint64_t norms_step_ = static_cast<std::uint64_t>(-1);
   std::vector<std::string> failures_;
   std::uint64_t steps_ = 0, bond_updates_ = 0;
 };

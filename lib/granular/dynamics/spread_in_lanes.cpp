@@ -7,6 +7,7 @@
 #include <memory>
 #include <string>
 #include <tuple>
+#include <utility>
 
 #include <stdexcept>
 #include <type_traits>
@@ -26,34 +27,36 @@ namespace {
 class LaneTangentView final : public TangentPropagator {
  public:
   void take(const LaneTangentPropagator& p, std::size_t lane, std::span<const double> u, std::span<const double> v) {
-    u_ = u, v_ = v;
-    p.copy_deviation(lane, du_, dv_);
-    log_stretch_ = p.log_stretch(lane);
-    tau_ = p.time_step(), time_unit_ = p.time_unit();
-    steps_ = p.steps_done(), bond_updates_ = p.bond_updates(lane);
+    p_ = &p, lane_ = lane, u_ = u, v_ = v;
+    copied_ = false;  // the deviation vector is copied only if an observer asks for it
   }
   void advance(std::size_t) override { throw std::logic_error("a lane's tangent map is advanced by its lanes"); }
   std::span<const double> displacement() const override { return u_; }
   std::span<const double> velocity() const override { return v_; }
-  double time_step() const override { return tau_; }
-  std::uint64_t steps_done() const override { return steps_; }
-  std::uint64_t bond_updates() const override { return bond_updates_; }
-  std::span<const double> deviation_displacement() const override { return du_; }
-  std::span<const double> deviation_velocity() const override { return dv_; }
+  double time_step() const override { return p_->time_step(); }
+  std::uint64_t steps_done() const override { return p_->steps_done(); }
+  std::uint64_t bond_updates() const override { return p_->bond_updates(lane_); }
+  std::span<const double> deviation_displacement() const override { return copy().first; }
+  std::span<const double> deviation_velocity() const override { return copy().second; }
   std::size_t deviation_count() const override { return 1; }
-  std::span<const double> deviation_displacement(std::size_t) const override { return du_; }
-  std::span<const double> deviation_velocity(std::size_t) const override { return dv_; }
+  std::span<const double> deviation_displacement(std::size_t) const override { return copy().first; }
+  std::span<const double> deviation_velocity(std::size_t) const override { return copy().second; }
   void set_deviation(std::size_t, std::span<const double>, std::span<const double>) override {
     throw std::logic_error("a lane's tangent map carries one vector, set by its lanes");
   }
-  double log_stretch() const override { return log_stretch_; }
-  double time_unit() const override { return time_unit_; }
+  double log_stretch() const override { return p_->log_stretch(lane_); }
+  double time_unit() const override { return p_->time_unit(); }
 
  private:
+  std::pair<std::span<const double>, std::span<const double>> copy() const {
+    if (!copied_) p_->copy_deviation(lane_, du_, dv_), copied_ = true;
+    return {du_, dv_};
+  }
+  const LaneTangentPropagator* p_ = nullptr;
+  std::size_t lane_ = 0;
   std::span<const double> u_, v_;
-  std::vector<double> du_, dv_;
-  double log_stretch_ = 0, tau_ = 0, time_unit_ = 1;
-  std::uint64_t steps_ = 0, bond_updates_ = 0;
+  mutable std::vector<double> du_, dv_;
+  mutable bool copied_ = false;
 };
 
 /// spread()'s loop over `p` (a LanePropagator, or a LaneTangentPropagator for the tangent map).
