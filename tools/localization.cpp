@@ -13,7 +13,6 @@
 #include "granular/files/localization_files.hpp"
 #include "granular/io/atomic_file.hpp"
 #include "granular/io/range_syntax.hpp"
-#include "granular/number_format.hpp"
 
 int main(int argc, char** argv) {
   using namespace granular;
@@ -28,52 +27,41 @@ int main(int argc, char** argv) {
   tool::ChainOptions chain_options = localization_chain();
   tool::add_chain_options(app, chain_options);
   std::string frequencies = localization_frequencies, output = "localization";
-  long long segments = static_cast<long long>(LocalizationScanConfig{}.segments);
-  RunOptions run;  // of how a long run goes, --threads alone
+  LocalizationScanConfig config;  // its frequencies from --f
+  RunOptions run;                 // of how a long run goes, --threads alone
   bool quiet = false;
   tool::add_option(app, "--f", frequencies,
                    "frequencies [kHz]: start:stop[:step] (step 0.01, stop included) or a,b,c; increasing");
-  tool::add_integer(app, "--segments", segments,
+  tool::add_integer(app, "--segments", config.segments,
                     "chain pieces whose exponents give lyapunov_err (2 ... 1e6, at most N)");
   tool::add_parameters(app, run, long_run_parameters(), {.only = {"threads"}});
   tool::add_output_option(app, output);
   app.add_flag("--quiet", quiet, "no progress line and no final report on stderr");
 
-  return tool::run(
-      app, argc, argv,
-      [&] {
-        tool::Metadata meta("localization", argc, argv);
-        LocalizationScanConfig config;
-        config.frequency_khz = parse_number_list(frequencies, "--f", 0.01);
-        for (std::size_t k = 0; k < config.frequency_khz.size(); ++k) {
-          const double f = config.frequency_khz[k];
-          if (f < 0)
-            throw InvalidInput("--f", " " + frequencies + ": frequency " + format_number(f) + " kHz is negative");
-          if (k > 0 && !(f > config.frequency_khz[k - 1]))
-            throw InvalidInput("--f",
-                               " " + frequencies + ": frequencies must increase (the DOS differences neighbours)");
-        }
-        if (segments < 2 || segments > 1000000)
-          throw InvalidInput("segments", " " + std::to_string(segments) + ": must be in [2, 1e6]");
-        validate(run);
-        config.segments = static_cast<std::size_t>(segments);
-        const StreamedChain chain = tool::stream_chain(chain_options, localization_chain());
-        for (double f : config.frequency_khz)  // the first one above the chain's frequencies
-          if (tool::warn({frequency_warning("--f", f, chain.highest_frequency_khz)})) break;
-        validate(config);
-        const auto claim = tool::claim_output(output, meta.command());
-        const TableOutputs paths = table_outputs(output);
+  return tool::run(app, argc, argv,
+                   [&] {
+                     tool::Metadata meta("localization", argc, argv);
+                     config.frequency_khz = parse_number_list(frequencies, "--f", 0.01);
+                     validate(config);
+                     validate(run);
+                     const StreamedChain chain = tool::stream_chain(chain_options, localization_chain());
+                     for (double f : config.frequency_khz)  // the first one above the chain's frequencies
+                       if (tool::warn({frequency_warning("--f", f, chain.highest_frequency_khz)})) break;
+                     const auto claim = tool::claim_output(output, meta.command());
+                     const TableOutputs paths = table_outputs(output);
 
-        ProgressMeter progress(chain.beads->size() * config.frequency_khz.size(), "localization", quiet ? 0 : -1);
-        run.progress = &progress;
-        const LocalizationScan scan = localization_scan(*chain.beads, config, run);
-        progress.finish();
+                     ProgressMeter progress(chain.beads->size() * config.frequency_khz.size(), "localization",
+                                            quiet ? 0 : -1);
+                     run.progress = &progress;
+                     const LocalizationScan scan = localization_scan(*chain.beads, config, run);
+                     progress.finish();
 
-        AtomicFile csv(paths.csv);
-        write_localization_csv(csv.stream(), scan);
-        meta.merge(describe_localization(scan, chain.description, frequencies, resolve_threads(run.threads), steel));
-        meta["output"] = paths.csv;
-        meta.write(paths.json, {&csv});
-      },
-      {{"frequencies", "--f"}});
+                     AtomicFile csv(paths.csv);
+                     write_localization_csv(csv.stream(), scan);
+                     meta.merge(describe_localization(scan, chain.description, frequencies,
+                                                      resolve_threads(run.threads), steel));
+                     meta["output"] = paths.csv;
+                     meta.write(paths.json, {&csv});
+                   },
+                   {{"frequencies", "--f"}});
 }

@@ -276,15 +276,10 @@ def localization(chain=None, *, f=_core._localization_frequencies, segments=_cor
         raise ValueError("F0 0: the sonic vacuum has no linear limit (needs F0 > 0)")
     (given,) = split_keywords(chain_keywords, [_LOCALIZATION_CHAIN], "localization")
     choices = _LOCALIZATION_CHAIN.make(given)
-    frequencies = number_list(f, "f", 0.01)
-    for k, v in enumerate(frequencies):
-        if v < 0:
-            raise ValueError(f"f: frequency {_core._format_number(v)} kHz is negative")
-        if k > 0 and not v > frequencies[k - 1]:
-            raise ValueError("f: frequencies must increase (the DOS differences neighbours)")
     config = _core.LocalizationScanConfig()
-    config.frequency_khz = frequencies
-    config.segments = _core._size(segments, "segments", 2, 1000000)
+    config.frequency_khz = number_list(f, "f", 0.01)
+    config.segments = _core._size(segments, "segments")
+    _core._validate_localization(config)  # the tool's check of f and segments, in C++
     return Localization(_core._localization(chain, choices, config, f, _run(threads, progress=progress)))
 
 

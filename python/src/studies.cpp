@@ -147,6 +147,7 @@ void bind_studies(py::module_& m) {
                &B::ratios, &B::realization, &B::largest_box, &B::smallest_box_spacings, &B::box_sizes);
   m.def("_ipr_map", &ipr_map);
   m.def("_localization", &localization);
+  m.def("_validate_localization", py::overload_cast<const LocalizationScanConfig&>(&validate));  // f, segments
   m.def("_localization_chain", &localization_chain);  // the chain keywords' defaults
   // granular.ipr_map's and granular.correlations' chain keywords' defaults: their studies' default chain
   m.def("_ipr_map_chain", &ipr_map_chain_defaults);

@@ -29,16 +29,17 @@ const char* localization_resolved_rule() {
 
 void validate(const LocalizationScanConfig& config) {
   const auto& f = config.frequency_khz;
-  if (f.empty()) throw InvalidInput("frequencies", ": the list is empty");
+  if (f.empty()) throw InvalidInput("f", ": the list of frequencies is empty");
   for (std::size_t k = 0; k < f.size(); ++k) {
     if (!std::isfinite(f[k]) || f[k] < 0)
-      throw InvalidInput("frequencies", ": value " + std::to_string(k + 1) + " = " + format_number(f[k]) +
-                                            " kHz (must be finite and >= 0)");
+      throw InvalidInput("f", ": " + format_number(f[k]) + " kHz (value " + std::to_string(k + 1) +
+                                  "): frequencies must be finite and >= 0");
     if (k > 0 && !(f[k] > f[k - 1]))
-      throw InvalidInput("frequencies", ": must increase strictly (value " + std::to_string(k + 1) + " = " +
-                                            format_number(f[k]) + " kHz after " + format_number(f[k - 1]) + ")");
+      throw InvalidInput("f", ": frequencies must increase (the DOS differences neighbours): " + format_number(f[k]) +
+                                  " kHz after " + format_number(f[k - 1]));
   }
-  if (config.segments < 2) throw InvalidInput("segments", " " + std::to_string(config.segments) + ": must be >= 2");
+  if (config.segments < 2 || config.segments > 1000000)
+    throw InvalidInput("segments", " " + std::to_string(config.segments) + ": must be in [2, 1e6]");
 }
 
 LocalizationScan localization_scan(const BeadSource& chain, const LocalizationScanConfig& config, const RunOptions& run) {

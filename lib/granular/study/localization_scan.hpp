@@ -15,7 +15,7 @@ namespace granular {
 
 struct LocalizationScanConfig {
   std::vector<double> frequency_khz;  ///< [kHz], finite, ≥ 0, strictly increasing (the DOS differences them)
-  std::size_t segments = 32;          ///< pieces of the chain for λ's error, ≥ 2 (see TransferMatrixScan)
+  std::size_t segments = 32;          ///< pieces of the chain for λ's error, 2 … 1e6 (see TransferMatrixScan)
 };
 
 struct LocalizationScan {
@@ -44,14 +44,15 @@ const char* localization_resolved_rule();
 /// for (node counts at f ± step/2, one-sided from f at f < step/2).
 inline constexpr double kSingleFrequencyDosStepKhz = 0.01;
 
-/// Throws InvalidInput naming `frequencies` or `segments`.
+/// Throws InvalidInput naming `f` (the frequencies: finite, >= 0, increasing) or `segments` (2 … 1e6):
+/// the one check of the localization tool and granular.localization.
 void validate(const LocalizationScanConfig& config);
 
 /// One walk of the chain per thread (run.threads; results do not depend on it). run.progress, if
 /// set, advances by bead × frequency steps: size it N × frequencies. Checkpoints are not used
 /// (one chain takes seconds). The DOS differences neighbouring frequencies; with one frequency it
 /// counts modes at f ± kSingleFrequencyDosStepKhz / 2 as well (two more walks of the chain). Throws InvalidInput naming
-/// `frequencies`, `segments` or `threads`.
+/// `f`, `segments` or `threads`.
 LocalizationScan localization_scan(const BeadSource& chain, const LocalizationScanConfig& config,
                                    const RunOptions& run = {});
 
