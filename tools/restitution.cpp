@@ -66,7 +66,7 @@ int main(int argc, char** argv) {
                                            {"steps_per_collision", config.steps_per_collision},
                                            {"integrator", integrator},
                                            {"damping_splitting",
-                                            "Strang: contact pairs (Crank-Nicolson) half step, scheme, half step"}};
+                                            "Strang: each contact pair's exact flow (parity split) half step, scheme, half step"}};
                      meta["output"] = csv_path;
                      meta.write(json_path, {&csv});
                    },
