@@ -37,38 +37,39 @@ int main(int argc, char** argv) {
   bool quiet = false;
   app.add_flag("--quiet", quiet, "no final report on stderr");
 
-  return tool::run(app, argc, argv,
-                   [&] {
-                     tool::Metadata meta("restitution", argc, argv);
-                     const std::vector<double> v = parse_number_list(speeds, "--impact-speed");
-                     const std::vector<double> g = parse_number_list(gammas, "--kk-gamma");
-                     config.integrator = integrator;
-                     const std::string csv_path = output + ".csv", json_path = output + ".json";
-                     check_writable(csv_path);
-                     check_writable(json_path);
-                     std::vector<std::vector<double>> rows;
-                     for (double gamma : g)
-                       for (double speed : v) {
-                         config.impact_speed = speed;
-                         config.kk_gamma = gamma;
-                         const Collision c = two_bead_collision(config);
-                         rows.push_back({speed, gamma, c.restitution, restitution_deficit_small_damping(config),
-                                         c.contact_time, c.hertz_time});
-                       }
-                     AtomicFile csv(csv_path);
-                     CsvWriter table(csv.stream(), {"impact_speed", "kk_gamma", "restitution", "deficit_small_damping",
-                                                    "contact_time", "hertz_time"});
-                     for (const auto& r : rows) table.row(r[0], r[1], r[2], r[3], r[4], r[5]);
-                     meta["parameters"] = {{"impact_speed_m_s", v},
-                                           {"kk_gamma_s", g},
-                                           {"R_m", config.radius},
-                                           {"material", describe(config.material)},
-                                           {"steps_per_collision", config.steps_per_collision},
-                                           {"integrator", integrator},
-                                           {"damping_splitting",
-                                            "Strang: each contact pair's exact flow (parity split) half step, scheme, half step"}};
-                     meta["output"] = csv_path;
-                     meta.write(json_path, {&csv});
-                   },
-                   {{"impact_speed", "--impact-speed"}, {"radius", "--R1"}});
+  return tool::run(
+      app, argc, argv,
+      [&] {
+        tool::Metadata meta("restitution", argc, argv);
+        const std::vector<double> v = parse_number_list(speeds, "--impact-speed");
+        const std::vector<double> g = parse_number_list(gammas, "--kk-gamma");
+        config.integrator = integrator;
+        const std::string csv_path = output + ".csv", json_path = output + ".json";
+        check_writable(csv_path);
+        check_writable(json_path);
+        std::vector<std::vector<double>> rows;
+        for (double gamma : g)
+          for (double speed : v) {
+            config.impact_speed = speed;
+            config.kk_gamma = gamma;
+            const Collision c = two_bead_collision(config);
+            rows.push_back(
+                {speed, gamma, c.restitution, restitution_deficit_small_damping(config), c.contact_time, c.hertz_time});
+          }
+        AtomicFile csv(csv_path);
+        CsvWriter table(csv.stream(), {"impact_speed", "kk_gamma", "restitution", "deficit_small_damping",
+                                       "contact_time", "hertz_time"});
+        for (const auto& r : rows) table.row(r[0], r[1], r[2], r[3], r[4], r[5]);
+        meta["parameters"] = {{"impact_speed_m_s", v},
+                              {"kk_gamma_s", g},
+                              {"R_m", config.radius},
+                              {"material", describe(config.material)},
+                              {"steps_per_collision", config.steps_per_collision},
+                              {"integrator", integrator},
+                              {"damping_splitting",
+                               "Strang: each contact pair's exact flow (parity split) half step, scheme, half step"}};
+        meta["output"] = csv_path;
+        meta.write(json_path, {&csv});
+      },
+      {{"impact_speed", "--impact-speed"}, {"radius", "--R1"}});
 }

@@ -66,6 +66,13 @@ const ParameterTable<ChainChoices>& chain_parameters() {
 
 namespace {
 
+/// The draw's whole numbers as every chain takes them: N ≥ 2, seed ≥ 0 (N's upper limit is the
+/// recipe's: validate(ChainRecipe) or a study's own).
+void check_counts(const ChainChoices& o) {
+  if (o.n < 2) throw InvalidInput("N", " " + std::to_string(o.n) + ": a chain needs at least 2 beads");
+  if (o.seed < 0) throw InvalidInput("seed", " " + std::to_string(o.seed) + ": must be >= 0");
+}
+
 /// A chain comes from one source: refuses a second one given (the two named).
 void require_one_source(const ChainChoices& o) {
   const std::pair<const char*, const std::string*> sources[]{{"config", &o.config},
@@ -121,9 +128,8 @@ StreamedChain stream_chain(const ChainChoices& o, const std::function<std::strin
 void set_study_draw(ChainRecipe& chain, const ChainChoices& o) {
   chain.draw().disorder = parse_disorder(o.disorder);
   chain.draw().q = o.q;
-  if (o.n < 2) throw InvalidInput("N", " " + std::to_string(o.n) + ": a chain needs at least 2 beads");
+  check_counts(o);
   if (o.n > 100000000) throw InvalidInput("N", " " + std::to_string(o.n) + ": more than 1e8 beads");
-  if (o.seed < 0) throw InvalidInput("seed", " " + std::to_string(o.seed) + ": must be >= 0");
   chain.N = static_cast<std::size_t>(o.n);
   chain.F0 = o.f0, chain.R1 = o.r1;
   chain.seed = static_cast<std::uint64_t>(o.seed);
@@ -149,9 +155,8 @@ ChainChoices chain_choices(const ChainRecipe& r) {
 }
 
 ChainRecipe chain_recipe(const ChainChoices& o, std::vector<std::string>& warnings, const ChainChoices& defaults) {
-  if (o.seed < 0) throw InvalidInput("seed", " " + std::to_string(o.seed) + ": must be >= 0");
+  check_counts(o);
   if (o.realization < 0) throw InvalidInput("realization", " " + std::to_string(o.realization) + ": must be >= 0");
-  if (o.n < 2) throw InvalidInput("N", " " + std::to_string(o.n) + ": a chain needs at least 2 beads");
   ChainRecipe r{.R1 = o.r1, .N = static_cast<std::size_t>(o.n), .F0 = o.f0, .seed = static_cast<std::uint64_t>(o.seed)};
   r.walls = parse_wall_shape(o.walls);
   if (auto quasi = quasiperiodic(o, defaults)) r.source = *quasi;
