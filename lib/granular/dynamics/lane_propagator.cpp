@@ -143,12 +143,10 @@ void LanePropagator::copy_lane(std::size_t lane, std::vector<double>& u, std::ve
 }
 
 void LanePropagator::refresh_lane(std::size_t lane, std::vector<double>& u, std::vector<double>& v) const {
-  if (lane >= c_->lanes) throw InvalidInput("lane", " " + std::to_string(lane) + ": only " + std::to_string(c_->lanes));
+  detail::check_lane(*c_, lane);
   if (u.size() != c_->n || v.size() != c_->n) throw InvalidInput("lane", ": vectors of another length to refresh");
-  for (std::size_t i = lo_[lane]; i < hi_[lane]; ++i) {
-    u[i] = c_->u[(i + 1) * W + lane];
-    v[i] = c_->v[i * W + lane];
-  }
+  detail::take_lane(c_->u, lane, 1, W, u, lo_[lane], hi_[lane]);
+  detail::take_lane(c_->v, lane, 0, W, v, lo_[lane], hi_[lane]);
 }
 
 }  // namespace granular

@@ -112,23 +112,19 @@ double LaneTangentPropagator::log_stretch(std::size_t lane) const {
 }
 
 void LaneTangentPropagator::copy_lane(std::size_t lane, std::vector<double>& u, std::vector<double>& v) const {
-  if (lane >= c_->lanes) throw InvalidInput("lane", " " + std::to_string(lane) + ": only " + std::to_string(c_->lanes));
+  detail::check_lane(*c_, lane);
   u.resize(c_->n);
   v.resize(c_->n);
-  for (std::size_t i = 0; i < c_->n; ++i) {
-    u[i] = c_->u[(i + 1) * W + lane];
-    v[i] = c_->v[i * W + lane];
-  }
+  detail::take_lane(c_->u, lane, 1, W, u, 0, c_->n);
+  detail::take_lane(c_->v, lane, 0, W, v, 0, c_->n);
 }
 
 void LaneTangentPropagator::copy_deviation(std::size_t lane, std::vector<double>& du, std::vector<double>& dv) const {
-  if (lane >= c_->lanes) throw InvalidInput("lane", " " + std::to_string(lane) + ": only " + std::to_string(c_->lanes));
+  detail::check_lane(*c_, lane);
   du.resize(c_->n);
   dv.resize(c_->n);
-  for (std::size_t i = 0; i < c_->n; ++i) {
-    du[i] = du_[(i + 1) * W + lane];
-    dv[i] = dv_[i * W + lane];
-  }
+  detail::take_lane(du_, lane, 1, W, du, 0, c_->n);
+  detail::take_lane(dv_, lane, 0, W, dv, 0, c_->n);
 }
 
 }  // namespace granular

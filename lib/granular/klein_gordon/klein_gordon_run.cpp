@@ -90,7 +90,7 @@ std::vector<KleinGordonRun> run_klein_gordon_in_lanes(const KleinGordonRunConfig
     laws.push_back(make_force_law(ForceLawKind::linear, chains.back()));
     h0.push_back(total_energy(laws.back(), chains.back(), starts.back()));
     const std::size_t n = chains.back().size();
-    deviations.push_back(localized_deviation(n, centre_site(n), klein_gordon_lyapunov.time_unit));
+    if (config.mle) deviations.push_back(localized_deviation(n, centre_site(n), klein_gordon_lyapunov.time_unit));
   }
   std::vector<KleinGordonRun> out(rs.size());
   KleinGordonRunConfig plain = config, mapped = config;

@@ -78,4 +78,13 @@ void put_lane(std::vector<double>& to, std::size_t lane, std::span<const double>
   for (std::size_t i = 0; i < values.size(); ++i) to[(i + pad) * width + lane] = values[i];
 }
 
+void take_lane(const std::vector<double>& from, std::size_t lane, std::size_t pad, std::size_t width,
+               std::vector<double>& to, std::size_t begin, std::size_t end) {
+  for (std::size_t i = begin; i < end; ++i) to[i] = from[(i + pad) * width + lane];
+}
+
+void check_lane(const LaneChains& c, std::size_t lane) {
+  if (lane >= c.lanes) throw InvalidInput("lane", " " + std::to_string(lane) + ": only " + std::to_string(c.lanes));
+}
+
 }  // namespace granular::detail

@@ -36,6 +36,14 @@ LaneChains interleave(std::span<const ForceLaw> laws, std::span<const Chain> cha
 void put_lane(std::vector<double>& to, std::size_t lane, std::span<const double> values, std::size_t pad,
               std::size_t width);
 
+/// Rows [begin, end) of lane `lane` of the interleaved `from` (row i at i + `pad`) into to[begin, end):
+/// put_lane's inverse.
+void take_lane(const std::vector<double>& from, std::size_t lane, std::size_t pad, std::size_t width,
+               std::vector<double>& to, std::size_t begin, std::size_t end);
+
+/// Throws InvalidInput("lane") unless `lane` holds one of the chains.
+void check_lane(const LaneChains& c, std::size_t lane);
+
 /// Calls `run(hertz, grounded, quartic)` with the three as compile-time constants
 /// (std::true_type / std::false_type).
 template <class Run>
