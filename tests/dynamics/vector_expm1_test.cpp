@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <limits>
 #include <vector>
 
@@ -11,6 +12,8 @@
 namespace {
 
 using granular::detail::expm1_nonpositive;
+using granular::detail::expm1_small_bound;
+using granular::detail::expm1_small_nonpositive;
 
 // |value − exact| in units of the last place of `exact` rounded to double.
 double ulps(double value, long double exact) {
@@ -49,6 +52,48 @@ TEST(VectorExpm1, ZerosInfinitiesAndNaN) {
   EXPECT_TRUE(std::isnan(expm1_nonpositive(std::numeric_limits<double>::quiet_NaN())));
   const double tiny = -std::numeric_limits<double>::denorm_min();
   EXPECT_EQ(expm1_nonpositive(tiny), tiny);  // no cancellation: e^x − 1 = x to the last bit
+}
+
+// The short series on its domain [−1/16, 0]: tiny (subnormal) to the bound, dense near it.
+std::vector<double> small_arguments() {
+  std::vector<double> x;
+  for (double a = 1e-320; a <= -expm1_small_bound; a *= 1.0003) x.push_back(-a);
+  for (int i = 0; i <= 200000; ++i) x.push_back(expm1_small_bound * i / 200000);
+  return x;
+}
+
+TEST(VectorExpm1, ShortSeriesWithinOneUlpOnItsDomain) {
+  double worst = 0;
+  std::size_t same = 0;
+  const std::vector<double> x = small_arguments();
+  for (double a : x) {
+    worst = std::max(worst, ulps(expm1_small_nonpositive(a), std::expm1l(static_cast<long double>(a))));
+    same += expm1_small_nonpositive(a) == expm1_nonpositive(a);
+  }
+  std::printf("  short series: worst %.3f ulp; the same bits as the whole formula for %zu of %zu arguments\n", worst,
+              same, x.size());
+  EXPECT_LE(worst, 1.0);
+  EXPECT_EQ(expm1_small_nonpositive(0.0), 0.0);
+  EXPECT_TRUE(std::signbit(expm1_small_nonpositive(-0.0)));
+}
+
+// The array form takes the short series only when every argument is in its domain, and is otherwise
+// the whole formula element by element, bit for bit (NaN included).
+TEST(VectorExpm1, ArrayFormChoosesThePathByItsWholeArgument) {
+  std::vector<double> inside = {0.0, -1e-300, -1e-9, -0.01, expm1_small_bound};
+  std::vector<double> outside = inside;
+  outside.push_back(std::nextafter(expm1_small_bound, -1.0));
+  std::vector<double> with_nan = inside;
+  with_nan.push_back(std::numeric_limits<double>::quiet_NaN());
+  std::vector<double> a = inside;
+  expm1_nonpositive(a.data(), a.size());
+  for (std::size_t i = 0; i < a.size(); ++i) EXPECT_EQ(a[i], expm1_small_nonpositive(inside[i])) << i;
+  for (const std::vector<double>& given : {outside, with_nan}) {
+    a = given;
+    expm1_nonpositive(a.data(), a.size());
+    for (std::size_t i = 0; i + 1 < a.size(); ++i) EXPECT_EQ(a[i], expm1_nonpositive(given[i])) << i;
+    EXPECT_EQ(std::isnan(a.back()), std::isnan(given.back()));
+  }
 }
 
 }  // namespace

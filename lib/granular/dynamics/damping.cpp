@@ -16,21 +16,44 @@ namespace granular {
 namespace {
 
 // Σ m v² with eight independent partial sums (a fixed order, so deterministic): a single
-// accumulator would make the sum latency-bound and cost more than the damping itself.
-double twice_kinetic(const double* __restrict m, const double* __restrict v, std::size_t n) {
+// accumulator would make the sum latency-bound and cost more than the damping itself. `before`
+// and `after` run on each element just before and just after it is summed (the step boundary's
+// neighbouring updates, fused into the one pass over v).
+template <class Before, class After>
+double twice_kinetic(const double* __restrict m, double* __restrict v, std::size_t n, Before before, After after) {
   double part[8] = {0, 0, 0, 0, 0, 0, 0, 0};
   std::size_t i = 0;
   for (; i + 8 <= n; i += 8)
-    for (std::size_t j = 0; j < 8; ++j) part[j] += m[i + j] * v[i + j] * v[i + j];
-  for (; i < n; ++i) part[0] += m[i] * v[i] * v[i];
+    for (std::size_t j = 0; j < 8; ++j) {
+      before(i + j);
+      part[j] += m[i + j] * v[i + j] * v[i + j];
+      after(i + j);
+    }
+  for (; i < n; ++i) {
+    before(i);
+    part[0] += m[i] * v[i] * v[i];
+    after(i);
+  }
   return ((part[0] + part[1]) + (part[2] + part[3])) + ((part[4] + part[5]) + (part[6] + part[7]));
 }
+constexpr auto nothing = [](std::size_t) {};
+double twice_kinetic(const double* __restrict m, double* __restrict v, std::size_t n) {
+  return twice_kinetic(m, v, n, nothing, nothing);
+}
 
-// 1 − q of the exact pair flow g ← q g, q = e^{−2y} (y = hλ/2), without cancellation for small y.
-// The flow is L-stable: q → 0 for stiff contacts, where Crank–Nicolson's (1 − y)/(1 + y) → −1 made
-// the pair's relative velocity flip sign every step.
-// detail::expm1_nonpositive rather than std::expm1, so that the bond loops that call it vectorize.
-inline double pair_loss(double y) { return -detail::expm1_nonpositive(-2 * y); }
+// 1 − q of the exact pair flow g ← q g, q = e^{−2y} (y = hλ/2), without cancellation for small y,
+// for bonds [lo, hi): on entry loss[k] holds y. The flow is L-stable: q → 0 for stiff contacts,
+// where Crank–Nicolson's (1 − y)/(1 + y) → −1 made the pair's relative velocity flip sign every
+// step. detail::expm1_nonpositive rather than std::expm1, so that the loops vectorize (and take
+// the short series when every contact's y ≤ 1/32, as usual). loss2 (if not null): 1 − q², two
+// pair steps.
+void pair_losses(double* __restrict loss, double* __restrict loss2, std::size_t lo, std::size_t hi) {
+  for (std::size_t k = lo; k < hi; ++k) loss[k] = -2 * loss[k];
+  detail::expm1_nonpositive(loss + lo, hi - lo);
+  for (std::size_t k = lo; k < hi; ++k) loss[k] = -loss[k];
+  if (loss2)
+    for (std::size_t k = lo; k < hi; ++k) loss2[k] = loss[k] * (2 - loss[k]);
+}
 
 // One exact pair step on the bonds k ∈ [lo, hi) of one parity; vp is padded (vp[k] is
 // bead k−1, vp[0] = vp[n+1] = 0 the walls, which take no share and stay 0); share is
@@ -109,8 +132,9 @@ double DampingFlow::sweep(std::span<const double> u, std::span<double> v, double
     for (const std::size_t parity : parities) {
       for (std::size_t k = 0; k <= n; ++k) {
         const double x = (k > 0 ? u[k - 1] : 0.0) - (k < n ? u[k] : 0.0);
-        loss_[k] = pair_loss(*fraction * rate_[k] * std::sqrt(std::max(overlap_[k] + x, 0.0)));
+        loss_[k] = *fraction * rate_[k] * std::sqrt(std::max(overlap_[k] + x, 0.0));
       }
+      pair_losses(loss_.data(), nullptr, 0, n + 1);
       pair_damping(vp_.data(), pair_share(parity), loss_.data(), 0, n + 1, parity);
       ++fraction;
     }
@@ -130,24 +154,43 @@ namespace {
 // losses of the contact damping (loss2 = 1 − q², two pair steps). For Hertz the damping's
 // [δ]_+^{1/2} is the one in the stiffness K = (3/2) A [δ]_+^{1/2}: one square root per bond
 // serves both (`rate` is then DampingFlow::rate_per_stiffness()).
+// −2y of bond k at strain x, e^{−2y} its pair flow's factor: y = rate · K for Hertz (the stiffness
+// just computed), else rate · [δ]_+^{1/2}.
+template <bool hertz>
+inline double pair_exponent(const double* __restrict rate, const double* __restrict stiff,
+                            const double* __restrict overlap, std::size_t k, double x) {
+  if constexpr (hertz) return -2 * (rate[k] * stiff[k]);
+  else return -2 * (rate[k] * std::sqrt(std::max(overlap[k] + x, 0.0)));
+}
+
 template <bool corrector, bool contact, class View>
 void boundary_bonds([[maybe_unused]] const View law, const double* __restrict u, [[maybe_unused]] double* __restrict f,
                     [[maybe_unused]] double* __restrict stiff, [[maybe_unused]] double* __restrict loss,
                     [[maybe_unused]] double* __restrict loss2, [[maybe_unused]] const double* __restrict rate,
                     [[maybe_unused]] const double* __restrict overlap, std::size_t lo, std::size_t hi) {
   constexpr bool hertz = std::is_same_v<View, HertzLaw::View>;
+  // The losses by the short series of e^x − 1 in the same pass, and again by the whole formula in
+  // the rare block with a contact past its domain (the rule of detail::expm1_nonpositive's array
+  // form).
+  unsigned outside = 0;  // an integer OR, which GCC vectorizes (a bool AND it does not)
   for (std::size_t k = lo; k < hi; ++k) {
     const double x = u[k] - u[k + 1];
     if constexpr (corrector || (contact && hertz)) law.force_stiffness(k, x, f[k], stiff[k]);
     if constexpr (contact) {
-      double y;
-      if constexpr (hertz) y = rate[k] * stiff[k];
-      else y = rate[k] * std::sqrt(std::max(overlap[k] + x, 0.0));
-      const double l = pair_loss(y);
+      const double a = pair_exponent<hertz>(rate, stiff, overlap, k, x);
+      outside |= a < detail::expm1_small_bound ? 1u : 0u;
+      const double l = -detail::expm1_small_nonpositive(a);
       loss[k] = l;
       loss2[k] = l * (2 - l);
     }
   }
+  if constexpr (contact)
+    if (outside != 0)
+      for (std::size_t k = lo; k < hi; ++k) {
+        const double l = -detail::expm1_nonpositive(pair_exponent<hertz>(rate, stiff, overlap, k, u[k] - u[k + 1]));
+        loss[k] = l;
+        loss2[k] = l * (2 - l);
+      }
 }
 
 // a_p = F/m of bead p − 1 (padded: a[0] = a[n+1] = 0 stay untouched, the walls). On-site springs
@@ -185,24 +228,8 @@ void corrector_change(const double* __restrict stiff, const double* __restrict a
       dv[p] = c * im[p - 1] * (stiff[p - 1] * (a[p - 1] - a[p]) - stiff[p] * (a[p] - a[p + 1]));
 }
 
-void add(double* __restrict v, const double* __restrict dv, std::size_t lo, std::size_t hi) {
-  for (std::size_t p = lo; p < hi; ++p) v[p] += dv[p];
-}
-
 void scale(double* __restrict v, std::size_t lo, std::size_t hi, double factor) {
   for (std::size_t p = lo; p < hi; ++p) v[p] *= factor;
-}
-
-void add_and_drift(double* __restrict u, double* __restrict v, const double* __restrict dv, std::size_t lo,
-                   std::size_t hi, double d) {
-  for (std::size_t p = lo; p < hi; ++p) {
-    v[p] += dv[p];
-    u[p] += d * v[p];
-  }
-}
-
-void drift(double* __restrict u, const double* __restrict v, std::size_t lo, std::size_t hi, double d) {
-  for (std::size_t p = lo; p < hi; ++p) u[p] += d * v[p];
 }
 
 constexpr std::size_t boundary_block = 512;
@@ -299,11 +326,15 @@ class DampedPropagator final : public Propagator {
         accelerations(f_.data(), ap_.data(), im_.data(), view.onsite, view.onsite_quartic, u, b0, e0);
         const auto [b1, e1] = range(1, 1);
         corrector_change(stiff_.data(), ap_.data(), dv, im_.data(), view.onsite, view.onsite_quartic, u, b1, e1, g);
-        if (end) add(v, dv, b1, e1);
       }
       {
         const auto [b, e] = range(1, 1);
-        before += twice_kinetic(mass_.data() + b - 1, v + b, e - b);
+        double* __restrict vb = v + b;
+        const double* __restrict dvb = dv + b;
+        if (g != 0 && end)  // the end of a step's corrector, then the kinetic energy before the damping
+          before += twice_kinetic(
+              mass_.data() + b - 1, vb, e - b, [=](std::size_t i) { vb[i] += dvb[i]; }, nothing);
+        else before += twice_kinetic(mass_.data() + b - 1, vb, e - b);
       }
       for (std::size_t s = 0; s < pairs; ++s) {
         const auto [b, e] = range(2 + s, 0);
@@ -312,11 +343,18 @@ class DampedPropagator final : public Propagator {
       {
         const auto [b, e] = range(final_lag, 1);
         if (onsite_ != 1.0) scale(v, b, e, twice ? onsite_ * onsite_ : onsite_);
-        after += twice_kinetic(mass_.data() + b - 1, v + b, e - b);
-        if (start) {
-          if (g != 0) add_and_drift(u, v, dv, b, e, d);
-          else drift(u, v, b, e, d);
-        }
+        double* __restrict vb = v + b;
+        double* __restrict ub = u + b;
+        const double* __restrict dvb = dv + b;
+        const double* mb = mass_.data() + b - 1;
+        // The kinetic energy after the damping, then the next step's corrector and first drift.
+        if (start && g != 0)
+          after += twice_kinetic(mb, vb, e - b, nothing, [=](std::size_t i) {
+            vb[i] += dvb[i];
+            ub[i] += d * vb[i];
+          });
+        else if (start) after += twice_kinetic(mb, vb, e - b, nothing, [=](std::size_t i) { ub[i] += d * vb[i]; });
+        else after += twice_kinetic(mb, vb, e - b);
       }
       if (last) break;
     }
