@@ -177,7 +177,7 @@ def _quasi(kind, modulation, ratio, phase, angle, k0, k0_n_per_m=0.0, keyword="q
         raise ValueError(re.sub(r"\bquasi\b", keyword, str(e))) from None
 
 
-def quasiperiodic(kind="s2", N=_C.N, modulation=_C.modulation, ratio=_C.ratio, phase=None, angle=_C.angle, k0=_C.k0,
+def quasiperiodic(kind=_core.Quasiperiodic().kind, N=_C.N, modulation=_C.modulation, ratio=_C.ratio, phase=None, angle=_C.angle, k0=_C.k0,
                   seed=_C.seed, realization=_C.realization, F0=_C.F0, R1=paper_r1, material=steel,
                   k0_n_per_m=_C.k0_n_per_m):
     """A quasiperiodic chain (docs/physics.md, "Quasiperiodic chains"), modulated by 1 + modulation*cos(2 pi ratio n

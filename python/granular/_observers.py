@@ -116,7 +116,7 @@ def velocity_kick(chain, site, beta=_core.paper_beta):
     return _core._velocity_kick(chain, _site(site, "site"), beta)
 
 
-def spread(chain, initial, observers=[], *, T=_RUN.duration, dt=1e-6, integrator=_RUN.integrator,  # noqa: B006
+def spread(chain, initial, observers=[], *, T=_RUN.duration, dt=_core._preferred_time_step, integrator=_RUN.integrator,  # noqa: B006
            force_law=_RUN.force_law, active_window=True, window_threshold=_RUN.window_threshold,
            reference_max_step=_RUN.reference_max_step):
     """Integrates `chain` from `initial` (a granular.State, e.g. granular.velocity_kick(chain, site, 8e-3)) to T [s]

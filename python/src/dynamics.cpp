@@ -160,6 +160,7 @@ py::dict exponent_table(const ExponentChoices& words, ExponentTableConfig config
 
 void bind_dynamics(py::module_& m) {
   m.attr("paper_beta") = paper_beta;
+  m.attr("_preferred_time_step") = IntegrationConfig{}.time_step;  // granular.spread's dt, the paper's 1 us
   m.attr("_paper_table") = GRANULAR_SOURCE_DIR "/data/paper_table1_gamma.csv";  // compare_paper=True
   table_class(m, "ModeKick", mode_kick_parameters());
   using R = ChainRecipe;

@@ -14,8 +14,6 @@ PACKAGE = pathlib.Path(gr.__file__).parent
 # module.function.keyword of each literal default left (see the module docstring)
 STILL_LITERAL = {
     "_dynamics.transport.realizations",  # the ensemble's 100 (the tool: 1, the exponent table: 500)
-    "_model.quasiperiodic.kind",  # a choice of this constructor's: the tools have no default kind
-    "_observers.spread.dt",  # the preferred step (IntegrationConfig's 1 us; the case's own dt is optional)
     "_progress.run_long.interrupted",
     # the butterflies' quasiperiodic kind (the tools' --quasi, which has no default elsewhere)
     "_studies.butterfly.kind",
