@@ -14,6 +14,8 @@ namespace {
 using granular::detail::expm1_nonpositive;
 using granular::detail::expm1_small_bound;
 using granular::detail::expm1_small_nonpositive;
+using granular::detail::expm1_unreduced_bound;
+using granular::detail::expm1_unreduced_nonpositive;
 
 // |value − exact| in units of the last place of `exact` rounded to double.
 double ulps(double value, long double exact) {
@@ -77,18 +79,33 @@ TEST(VectorExpm1, ShortSeriesWithinOneUlpOnItsDomain) {
   EXPECT_TRUE(std::signbit(expm1_small_nonpositive(-0.0)));
 }
 
+// Without the range reduction where it is the identity: the whole formula's bits, every one.
+TEST(VectorExpm1, UnreducedFormIsTheWholeFormulaBitForBit) {
+  std::size_t differ = 0, count = 0;
+  for (double a = 1e-320; a <= -expm1_unreduced_bound; a *= 1.0003, ++count)
+    differ += expm1_unreduced_nonpositive(-a) != expm1_nonpositive(-a);
+  for (int i = 0; i <= 200000; ++i, ++count) {
+    const double x = expm1_unreduced_bound * i / 200000;
+    differ += expm1_unreduced_nonpositive(x) != expm1_nonpositive(x);
+  }
+  EXPECT_EQ(differ, 0u) << "of " << count;
+  EXPECT_TRUE(std::signbit(expm1_unreduced_nonpositive(-0.0)));
+}
+
 // The array form takes the short series only when every argument is in its domain, and is otherwise
-// the whole formula element by element, bit for bit (NaN included).
+// the whole formula element by element, bit for bit (NaN included), with or without the reduction.
 TEST(VectorExpm1, ArrayFormChoosesThePathByItsWholeArgument) {
   std::vector<double> inside = {0.0, -1e-300, -1e-9, -0.01, expm1_small_bound};
   std::vector<double> outside = inside;
   outside.push_back(std::nextafter(expm1_small_bound, -1.0));
+  std::vector<double> far = outside;
+  far.push_back(std::nextafter(expm1_unreduced_bound, -1.0));
   std::vector<double> with_nan = inside;
   with_nan.push_back(std::numeric_limits<double>::quiet_NaN());
   std::vector<double> a = inside;
   expm1_nonpositive(a.data(), a.size());
   for (std::size_t i = 0; i < a.size(); ++i) EXPECT_EQ(a[i], expm1_small_nonpositive(inside[i])) << i;
-  for (const std::vector<double>& given : {outside, with_nan}) {
+  for (const std::vector<double>& given : {outside, far, with_nan}) {
     a = given;
     expm1_nonpositive(a.data(), a.size());
     for (std::size_t i = 0; i + 1 < a.size(); ++i) EXPECT_EQ(a[i], expm1_nonpositive(given[i])) << i;

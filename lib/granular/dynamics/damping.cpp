@@ -169,28 +169,37 @@ void boundary_bonds([[maybe_unused]] const View law, const double* __restrict u,
                     [[maybe_unused]] double* __restrict loss2, [[maybe_unused]] const double* __restrict rate,
                     [[maybe_unused]] const double* __restrict overlap, std::size_t lo, std::size_t hi) {
   constexpr bool hertz = std::is_same_v<View, HertzLaw::View>;
-  // The losses by the short series of e^x − 1 in the same pass, and again by the whole formula in
-  // the rare block with a contact past its domain (the rule of detail::expm1_nonpositive's array
-  // form).
-  unsigned outside = 0;  // an integer OR, which GCC vectorizes (a bool AND it does not)
+  // The losses by the short series of e^x − 1 in the same pass, and again by the longer one (or
+  // the whole formula) in a block with a contact past its domain (the rule of
+  // detail::expm1_nonpositive's array form).
+  unsigned beyond_small = 0, beyond_unreduced = 0;  // integer ORs, which GCC vectorizes (a bool AND it does not)
   for (std::size_t k = lo; k < hi; ++k) {
     const double x = u[k] - u[k + 1];
     if constexpr (corrector || (contact && hertz)) law.force_stiffness(k, x, f[k], stiff[k]);
     if constexpr (contact) {
       const double a = pair_exponent<hertz>(rate, stiff, overlap, k, x);
-      outside |= a < detail::expm1_small_bound ? 1u : 0u;
+      beyond_small |= a >= detail::expm1_small_bound ? 0u : 1u;
+      beyond_unreduced |= a >= detail::expm1_unreduced_bound ? 0u : 1u;
       const double l = -detail::expm1_small_nonpositive(a);
       loss[k] = l;
       loss2[k] = l * (2 - l);
     }
   }
-  if constexpr (contact)
-    if (outside != 0)
+  if constexpr (contact) {
+    if (beyond_small != 0 && beyond_unreduced == 0)
+      for (std::size_t k = lo; k < hi; ++k) {
+        const double a = pair_exponent<hertz>(rate, stiff, overlap, k, u[k] - u[k + 1]);
+        const double l = -detail::expm1_unreduced_nonpositive(a);
+        loss[k] = l;
+        loss2[k] = l * (2 - l);
+      }
+    else if (beyond_unreduced != 0)
       for (std::size_t k = lo; k < hi; ++k) {
         const double l = -detail::expm1_nonpositive(pair_exponent<hertz>(rate, stiff, overlap, k, u[k] - u[k + 1]));
         loss[k] = l;
         loss2[k] = l * (2 - l);
       }
+  }
 }
 
 // a_p = F/m of bead p − 1 (padded: a[0] = a[n+1] = 0 stay untouched, the walls). On-site springs
