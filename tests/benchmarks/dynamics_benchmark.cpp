@@ -15,11 +15,11 @@
 #include "granular/chaos/lyapunov_spectrum.hpp"
 #include "granular/dynamics/damping.hpp"
 #include "granular/dynamics/initial_conditions.hpp"
-#include "granular/dynamics/lane_propagator.hpp"
-#include "granular/dynamics/lane_tangent_propagator.hpp"
 #include "granular/dynamics/observables.hpp"
 #include "granular/dynamics/propagator.hpp"
 #include "granular/dynamics/tangent_map.hpp"
+#include "granular/lanes/lane_propagator.hpp"
+#include "granular/lanes/lane_tangent_propagator.hpp"
 #include "granular/model/chain.hpp"
 #include "granular/model/disorder.hpp"
 

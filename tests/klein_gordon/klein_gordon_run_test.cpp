@@ -10,12 +10,12 @@
 
 #include "granular/dynamics/force_law.hpp"
 #include "granular/dynamics/initial_conditions.hpp"
-#include "granular/dynamics/lane_propagator.hpp"
 #include "granular/dynamics/observables.hpp"
 #include "granular/dynamics/propagator.hpp"
 #include "granular/dynamics/scheme.hpp"
 #include "granular/error.hpp"
 #include "granular/klein_gordon/klein_gordon_run.hpp"
+#include "granular/lanes/lane_propagator.hpp"
 
 namespace granular {
 namespace {

@@ -6,8 +6,8 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "granular/dynamics/lane_propagator.hpp"
 #include "granular/error.hpp"
+#include "granular/lanes/lane_propagator.hpp"
 #include "granular/study/exponent_table.hpp"
 
 namespace granular {

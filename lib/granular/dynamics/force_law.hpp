@@ -72,7 +72,7 @@ class OnsiteSprings {
 };
 
 /// The formulas below are written once for a value type T: double for one bond, or a native
-/// vector of doubles for one bond of several chains side by side (dynamics/detail/lane_kernels.hpp,
+/// vector of doubles for one bond of several chains side by side (lanes/detail/lane_kernels.hpp,
 /// which supplies ValueMath for its vector), so both give the same bits in every lane.
 template <class T>
 struct ValueMath;

@@ -9,14 +9,14 @@
 
 #include "granular/dynamics/force_law.hpp"
 #include "granular/dynamics/initial_conditions.hpp"
-#include "granular/dynamics/lane_propagator.hpp"
-#include "granular/dynamics/lane_tangent_propagator.hpp"
 #include "granular/dynamics/observables.hpp"
 #include "granular/dynamics/propagator.hpp"
 #include "granular/dynamics/scheme.hpp"
 #include "granular/dynamics/tangent_map.hpp"
 #include "granular/ensemble/parallel_realizations.hpp"
 #include "granular/error.hpp"
+#include "granular/lanes/lane_propagator.hpp"
+#include "granular/lanes/lane_tangent_propagator.hpp"
 #include "granular/number_format.hpp"
 
 namespace granular {

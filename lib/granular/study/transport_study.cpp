@@ -10,11 +10,11 @@
 
 #include <nlohmann/json.hpp>
 
-#include "granular/dynamics/lane_propagator.hpp"
 #include "granular/dynamics/spread.hpp"
-#include "granular/dynamics/spread_in_lanes.hpp"
 #include "granular/ensemble/ensemble_runner.hpp"
 #include "granular/error.hpp"
+#include "granular/lanes/lane_propagator.hpp"
+#include "granular/lanes/spread_in_lanes.hpp"
 #include "granular/model/chain.hpp"
 #include "granular/number_format.hpp"
 #include "granular/parallel/mpi_context.hpp"

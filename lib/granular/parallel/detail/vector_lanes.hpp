@@ -1,6 +1,6 @@
 #pragma once
 // The native vector of doubles that the lane-batched kernels (linear/detail/twisted_lanes.cpp,
-// rational_ql.cpp; dynamics/detail/lane_kernels.hpp) are written in: GCC/Clang vector extensions as wide as this build's
+// rational_ql.cpp; lanes/detail/lane_kernels.hpp) are written in: GCC/Clang vector extensions as wide as this build's
 // CPU has (generic vectors wider than the hardware's were lowered element by element through the stack: 3× slower than
 // scalar code). Vectors are only ever locals or references, so no calling convention depends on
 // their width.

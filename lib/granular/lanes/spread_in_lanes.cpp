@@ -1,5 +1,5 @@
 // The driver of spread.cpp over a LanePropagator: the same schedule, the same snapshots, per lane.
-#include "granular/dynamics/spread_in_lanes.hpp"
+#include "granular/lanes/spread_in_lanes.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -13,10 +13,10 @@
 #include <type_traits>
 #include "granular/dynamics/detail/observation_events.hpp"
 
-#include "granular/dynamics/lane_propagator.hpp"
-#include "granular/dynamics/lane_tangent_propagator.hpp"
 #include "granular/dynamics/observables.hpp"
 #include "granular/error.hpp"
+#include "granular/lanes/lane_propagator.hpp"
+#include "granular/lanes/lane_tangent_propagator.hpp"
 
 namespace granular {
 

@@ -6,7 +6,7 @@
 // its accelerations there read as 0 — what the one-chain kernels do by not visiting them. Every
 // lane therefore gets the bits the one-chain kernel gives its chain (the force laws' formulas are
 // written once for both, force_law.hpp; no FMA contraction in this library), which
-// tests/dynamics/lane_propagator_test.cpp checks for every scheme, law and window.
+// tests/lanes/lane_propagator_test.cpp checks for every scheme, law and window.
 //
 // Unlike the one-chain kernels these run fused, bond and bead in one pass: a lane's previous bond
 // force stays in a register instead of being stored and read back, which in one chain would read

@@ -1,4 +1,4 @@
-// Chains side by side in vector lanes (dynamics/lane_propagator.hpp) against the one-chain
+// Chains side by side in vector lanes (lanes/lane_propagator.hpp) against the one-chain
 // propagator they must reproduce bit for bit: every scheme, every force law, on-site springs
 // linear and quartic, windows that open at different beads and grow at different times, a lane
 // whose window is the whole chain, and batches with idle lanes.
@@ -8,13 +8,13 @@
 
 #include <gtest/gtest.h>
 
-#include "dynamics_fixtures.hpp"
+#include "dynamics/dynamics_fixtures.hpp"
 #include "granular/dynamics/force_law.hpp"
 #include "granular/dynamics/initial_conditions.hpp"
-#include "granular/dynamics/lane_propagator.hpp"
 #include "granular/dynamics/propagator.hpp"
 #include "granular/dynamics/scheme.hpp"
 #include "granular/error.hpp"
+#include "granular/lanes/lane_propagator.hpp"
 #include "lane_batch.hpp"
 
 namespace granular {

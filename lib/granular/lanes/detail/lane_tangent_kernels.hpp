@@ -2,12 +2,12 @@
 // The tangent map's kernels (tangent_map.cpp) for W chains side by side, one per vector lane
 // (lane_kernels.hpp): each lane's orbit and its one deviation vector w = (δu, δv) by the
 // expressions of the one-chain kernels, so every lane is, bit for bit, its chain's
-// TangentPropagator (tests/dynamics/lane_tangent_propagator_test.cpp). The tangent map runs on the
+// TangentPropagator (tests/lanes/lane_tangent_propagator_test.cpp). The tangent map runs on the
 // whole chain (no active window), so no lane is masked. Arrays are interleaved as in
 // lane_kernels.hpp; u and δu are padded with the walls (row i + 1 is bead i).
 #include <cstddef>
 
-#include "granular/dynamics/detail/lane_kernels.hpp"
+#include "granular/lanes/detail/lane_kernels.hpp"
 
 namespace granular::detail::lane_kernels {
 

@@ -1,6 +1,6 @@
 // The splitting scheme on W chains side by side (lane_propagator.hpp): the step sequence of
 // splitting_propagator.cpp, with the lane kernels of detail/lane_kernels.hpp.
-#include "granular/dynamics/lane_propagator.hpp"
+#include "granular/lanes/lane_propagator.hpp"
 
 #include <algorithm>
 #include <array>
@@ -8,12 +8,12 @@
 #include <tuple>
 #include <variant>
 
-#include "granular/dynamics/detail/lane_chains.hpp"
-#include "granular/dynamics/detail/lane_kernels.hpp"
 #include "granular/dynamics/detail/splitting_sequence.hpp"
 #include "granular/dynamics/detail/window_rule.hpp"
 #include "granular/dynamics/observables.hpp"
 #include "granular/error.hpp"
+#include "granular/lanes/detail/lane_chains.hpp"
+#include "granular/lanes/detail/lane_kernels.hpp"
 
 namespace granular {
 

@@ -1,4 +1,4 @@
-// The tangent map in vector lanes (dynamics/lane_tangent_propagator.hpp) against the one-chain
+// The tangent map in vector lanes (lanes/lane_tangent_propagator.hpp) against the one-chain
 // TangentPropagator it must reproduce bit for bit: each lane's orbit, deviation vector and
 // log-stretch, for every scheme, every force law, on-site springs linear and quartic, every
 // renormalization interval, and batches with idle lanes; and a lane whose deviation vector fails
@@ -11,13 +11,13 @@
 
 #include <gtest/gtest.h>
 
-#include "dynamics_fixtures.hpp"
+#include "dynamics/dynamics_fixtures.hpp"
 #include "granular/dynamics/force_law.hpp"
 #include "granular/dynamics/initial_conditions.hpp"
-#include "granular/dynamics/lane_tangent_propagator.hpp"
 #include "granular/dynamics/scheme.hpp"
 #include "granular/dynamics/tangent_map.hpp"
 #include "granular/error.hpp"
+#include "granular/lanes/lane_tangent_propagator.hpp"
 #include "lane_batch.hpp"
 
 namespace granular {

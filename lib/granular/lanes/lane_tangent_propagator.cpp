@@ -1,14 +1,14 @@
 // The tangent map on W chains side by side (lane_tangent_propagator.hpp): tangent_map.cpp's step
 // sequence and renormalization, with the kernels of detail/lane_tangent_kernels.hpp.
-#include "granular/dynamics/lane_tangent_propagator.hpp"
+#include "granular/lanes/lane_tangent_propagator.hpp"
 
 #include <cmath>
 #include <string>
 
-#include "granular/dynamics/detail/lane_chains.hpp"
-#include "granular/dynamics/detail/lane_tangent_kernels.hpp"
 #include "granular/dynamics/detail/splitting_sequence.hpp"
 #include "granular/error.hpp"
+#include "granular/lanes/detail/lane_chains.hpp"
+#include "granular/lanes/detail/lane_tangent_kernels.hpp"
 
 namespace granular {
 

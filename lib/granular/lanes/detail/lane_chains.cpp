@@ -1,4 +1,4 @@
-#include "granular/dynamics/detail/lane_chains.hpp"
+#include "granular/lanes/detail/lane_chains.hpp"
 
 #include <type_traits>
 #include <variant>

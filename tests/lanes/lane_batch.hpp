@@ -5,7 +5,7 @@
 #include <cstddef>
 #include <vector>
 
-#include "dynamics_fixtures.hpp"
+#include "dynamics/dynamics_fixtures.hpp"
 #include "granular/dynamics/force_law.hpp"
 #include "granular/dynamics/initial_conditions.hpp"
 #include "granular/dynamics/state.hpp"
