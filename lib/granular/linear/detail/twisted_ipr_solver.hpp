@@ -124,6 +124,9 @@ class TwistedModeIpr final : public ModeIprSolver {
   detail::ClusterWork cluster_work_;
   std::vector<std::size_t> isolated_;
   std::vector<std::tuple<double, std::size_t, std::size_t>> cluster_order_;  // (ρ, centre, vector)
+  std::vector<std::size_t> support_;  // localize(): the beads where the cluster's vectors are not negligible
+  std::vector<double> gathered_;      // localize(): the vectors on them, then the masses
+  std::vector<double> row_largest_;   // localize(): per bead, the largest |z| of the cluster's vectors
   // dstein workspace
   std::vector<double> stein_w_, stein_z_, stein_work_;
   std::vector<int> stein_iblock_, stein_isplit_, stein_iwork_, stein_ifail_;
